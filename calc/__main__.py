@@ -1,0 +1,36 @@
+"""Command line: ``python -m calc evaluate CASE.toml [--json]``."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from .errors import CalcError
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m calc", description="Servo drive-train sizing workbook.")
+    sub = parser.add_subparsers(dest="command", required=True)
+    ev = sub.add_parser("evaluate", help="evaluate a design case and print its results")
+    ev.add_argument("case", help="the design-case TOML file")
+    ev.add_argument("--json", action="store_true", help="print the results as JSON (the contract of spec/case-format.md)")
+    args = parser.parse_args(argv)
+
+    from .case import read_case
+    from .evaluate import evaluate, summary
+
+    try:
+        results = evaluate(read_case(args.case))
+    except CalcError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    if args.json:
+        print(json.dumps(results, indent=2, ensure_ascii=False, allow_nan=False))
+    else:
+        print(summary(results))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

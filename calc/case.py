@@ -1,0 +1,146 @@
+"""Reading a design-case file (TOML, ``../shared/spec/case-format.md``).
+
+The file is parsed by the standard library's ``tomllib``; every dimensional value is a string
+parsed by :func:`calc.units.parse_quantity` and checked for its kind. Nothing is evaluated. Each
+error names the file and the key (``profile[2].duration``).
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .errors import CalcError
+from .profile import Profile
+from .units import parse_quantity
+
+
+class Section:
+    """One table of the case file, read key by key; unknown keys are an error."""
+
+    def __init__(self, path: Path, name: str, data, allowed: tuple[str, ...]):
+        self.path, self.name = path, name
+        if not isinstance(data, dict):
+            raise CalcError(f"{path}: {name}: expected a table of keys, found {type(data).__name__}")
+        self.data = data
+        for key in data:
+            if key not in allowed:
+                raise CalcError(f"{path}: {self.key(key)}: unknown key; {name} takes {', '.join(allowed)}")
+
+    def key(self, key: str) -> str:
+        return f"{self.name}.{key}" if self.name else key
+
+    def where(self, key: str) -> str:
+        return f"{self.path}: {self.key(key)}"
+
+    def has(self, key: str) -> bool:
+        return key in self.data
+
+    def quantity(self, key: str, kind: str, required: bool = False, default=None):
+        if key not in self.data:
+            if required:
+                raise CalcError(f"{self.where(key)}: expected a value, found none")
+            return default
+        return parse_quantity(self.data[key], kind, self.where(key))
+
+    def text(self, key: str, required: bool = False, default=None):
+        if key not in self.data:
+            if required:
+                raise CalcError(f"{self.where(key)}: expected a value, found none")
+            return default
+        value = self.data[key]
+        if not isinstance(value, str):
+            raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
+        return value
+
+    def table(self, key: str, allowed: tuple[str, ...]) -> "Section | None":
+        if key not in self.data:
+            return None
+        return Section(self.path, self.key(key), self.data[key], allowed)
+
+    def tables(self, key: str, allowed: tuple[str, ...]) -> list["Section"]:
+        items = self.data.get(key, [])
+        if not isinstance(items, list):
+            raise CalcError(f"{self.where(key)}: expected an array of tables ([[{self.key(key)}]]), found {type(items).__name__}")
+        return [Section(self.path, f"{self.key(key)}[{k}]", item, allowed) for k, item in enumerate(items, start=1)]
+
+
+TOP_KEYS = ("title", "motor", "load", "gearbox", "profile", "coupling", "accuracy")
+
+
+@dataclass
+class Case:
+    """A design case as read from its file: quantities checked, sections kept for their modules."""
+
+    path: Path
+    title: str
+    profile: Profile
+    motor_peak_torque: object = None
+    motor_inertia: object = None
+    load_inertia: object = None
+    ratio: object = None
+    gearbox_catalog: str | None = None
+    gearbox_part: str | None = None
+    sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
+    raw: bytes = b""
+
+    @property
+    def folder(self) -> Path:
+        return self.path.parent
+
+
+def read_case(path) -> Case:
+    """Read and check a case file; raise :class:`CalcError` naming the file and key on bad input."""
+    path = Path(path)
+    if not path.is_file():
+        raise CalcError(f"{path}: the case file does not exist")
+    raw = path.read_bytes()
+    try:
+        data = tomllib.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise CalcError(f"{path}: expected a UTF-8 TOML file, found bytes that are not UTF-8") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise CalcError(f"{path}: TOML syntax error: {exc}") from None
+    top = Section(path, "", data, TOP_KEYS)
+    title = top.text("title", default=path.stem)
+
+    if "profile" not in data:
+        raise CalcError(f"{path}: profile: expected one [[profile]] table per segment, found none")
+    segments = []
+    for seg in top.tables("profile", ("phase", "duration", "speed", "torque")):
+        phase = seg.text("phase", required=True)
+        segments.append(
+            (
+                phase,
+                seg.quantity("duration", "time", required=True),
+                seg.quantity("speed", "speed"),
+                seg.quantity("torque", "torque"),
+            )
+        )
+    profile = Profile.from_segments(segments, where=f"{path}: profile")
+
+    case = Case(path=path, title=title, profile=profile, raw=raw)
+    motor = top.table("motor", ("peak_torque", "inertia"))
+    if motor:
+        case.motor_peak_torque = motor.quantity("peak_torque", "torque")
+        case.motor_inertia = motor.quantity("inertia", "inertia")
+    load = top.table("load", ("inertia",))
+    if load:
+        case.load_inertia = load.quantity("inertia", "inertia")
+    gearbox = top.table("gearbox", ("ratio", "catalog", "part"))
+    if gearbox:
+        case.ratio = gearbox.quantity("ratio", "dimensionless", required=not gearbox.has("part"))
+        if case.ratio is not None and not case.ratio.m_as("") > 0:
+            raise CalcError(f"{gearbox.where('ratio')}: expected a ratio above zero, found {case.ratio.m_as(''):g}")
+        case.gearbox_catalog = gearbox.text("catalog", default="gearboxes")
+        case.gearbox_part = gearbox.text("part")
+    for name in ("coupling", "accuracy"):
+        if name in data:
+            case.sections[name] = data[name]
+    for name, value in (("motor", case.motor_inertia), ("load", case.load_inertia)):
+        if value is not None and not value.magnitude > 0:
+            raise CalcError(f"{path}: {name}.inertia: expected an inertia above zero, found {value:~P}")
+    if case.motor_peak_torque is not None and not case.motor_peak_torque.magnitude > 0:
+        raise CalcError(f"{path}: motor.peak_torque: expected a torque above zero, found {case.motor_peak_torque:~P}")
+    return case

@@ -1,0 +1,252 @@
+"""Technical-data catalogs: CSV files with the unit in each column header, and one loader.
+
+A catalog file has a header row such as ``part,series,ratio [1],T_2N [N*m],...,source``. Each
+numeric column's unit is read from its header (any unit of the right kind: a maker's table in
+lbf·in loads as well as one in N·m), each cell is parsed as a plain number (never evaluated) and
+every problem is reported with the file, the row (its line number in the file) and the column.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from .errors import CalcError
+from .units import Q_, kind, ureg
+
+CATALOG_DIR = Path(__file__).resolve().parent.parent / "catalogs"
+
+_HEADER = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\[(.*)\])?\s*$")
+_FLOAT = re.compile(r"^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
+
+
+@dataclass(frozen=True)
+class Column:
+    """A numeric column: its name, kind, whether every row needs a value, and its lower bound."""
+
+    name: str
+    kind: str
+    description: str
+    required: bool = True
+    positive: bool = True
+
+
+@dataclass(frozen=True)
+class Rule:
+    """A relation between columns that every row must satisfy, e.g. ``T_2B >= T_2N``."""
+
+    text: str
+    holds: Callable  # (values: dict[str, Quantity array]) -> bool array; NaN cells hold vacuously
+    column: str  # the column named in the error
+
+
+@dataclass(frozen=True)
+class Schema:
+    """What a catalog of one kind of part must hold."""
+
+    kind: str
+    columns: tuple[Column, ...]
+    text_columns: tuple[str, ...] = ("part", "source")
+    optional_text: tuple[str, ...] = ()
+    rules: tuple[Rule, ...] = ()
+
+
+@dataclass
+class Catalog:
+    """A validated catalog: parts, numeric columns as quantity arrays (NaN where a cell is empty)."""
+
+    name: str
+    path: Path
+    sha256: str
+    schema: Schema
+    parts: np.ndarray
+    values: dict = field(default_factory=dict)
+    text: dict = field(default_factory=dict)
+    lines: np.ndarray = None  # line number of each row in the file
+
+    def __len__(self):
+        return len(self.parts)
+
+    def __getitem__(self, column: str):
+        return self.values[column]
+
+    def rows(self, mask) -> "Catalog":
+        """A catalog of the rows where ``mask`` is true (or at the given indices)."""
+        return Catalog(
+            self.name, self.path, self.sha256, self.schema, self.parts[mask],
+            {k: v[mask] for k, v in self.values.items()}, {k: v[mask] for k, v in self.text.items()},
+            self.lines[mask],
+        )
+
+    def index(self, part: str, where: str) -> int:
+        hits = np.flatnonzero(self.parts == part)
+        if not len(hits):
+            raise CalcError(f"{where}: no part {part!r} in catalog {self.path}; it has {_some(self.parts)}")
+        return int(hits[0])
+
+    def to_frame(self):
+        """The catalog as a pandas DataFrame, units in the column names (for display)."""
+        import pandas as pd
+
+        data = {"part": self.parts}
+        for c in self.schema.columns:
+            q = self.values[c.name]
+            data[f"{c.name} [{q.units:~P}]"] = q.magnitude
+        data.update({k: v for k, v in self.text.items() if k != "part"})
+        return pd.DataFrame(data)
+
+
+def _some(parts) -> str:
+    shown = ", ".join(map(str, parts[:6]))
+    return shown + (f" and {len(parts) - 6} more" if len(parts) > 6 else "")
+
+
+def display_path(path: Path) -> str:
+    """A path as shown in results: relative to the project when inside it, so output is the same
+    on every machine."""
+    path = Path(path).resolve()
+    try:
+        return str(path.relative_to(CATALOG_DIR.parent))
+    except ValueError:
+        return str(path)
+
+
+def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
+    """A catalog by name (``"gearboxes"`` → ``catalogs/gearboxes.csv``) or by path (relative to
+    ``base``, the case file's folder)."""
+    if not isinstance(name_or_path, str) or not name_or_path.strip():
+        raise CalcError(f"{where}: expected a catalog name or a path to a CSV file, found {name_or_path!r}")
+    if "/" not in name_or_path and not name_or_path.endswith(".csv"):
+        path = CATALOG_DIR / f"{name_or_path}.csv"
+    else:
+        path = Path(name_or_path)
+        if not path.is_absolute() and base is not None:
+            path = base / path
+    if not path.is_file():
+        raise CalcError(f"{where}: the catalog {name_or_path!r} does not exist (looked for {path})")
+    return path
+
+
+def load_catalog(path: Path, schema: Schema) -> Catalog:
+    """Read and validate a catalog file against ``schema``.
+
+    Raises :class:`CalcError` naming the file, row and column for: a missing column, a header
+    unit of the wrong kind, an empty required cell, a non-numeric cell, a value at or below zero
+    where it must be positive, a duplicate part, or a row that breaks one of the schema's rules.
+    """
+    path = Path(path)
+    raw = path.read_bytes()
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise CalcError(f"{path}: expected a UTF-8 CSV file, found bytes that are not UTF-8") from None
+    reader = csv.reader(text.splitlines())
+    try:
+        header = next(reader)
+    except StopIteration:
+        raise CalcError(f"{path}: expected a header row, found an empty file") from None
+    columns = {}  # name -> (index, unit text)
+    for i, cell in enumerate(header):
+        m = _HEADER.match(cell)
+        if not m:
+            raise CalcError(f"{path}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
+        if m.group(1) in columns:
+            raise CalcError(f"{path}: the column {m.group(1)!r} appears twice in the header")
+        columns[m.group(1)] = (i, m.group(2))
+    for name in schema.text_columns:
+        if name not in columns:
+            raise CalcError(f"{path}: expected a column {name!r}, found columns {', '.join(columns)}")
+    units = {}
+    for c in schema.columns:
+        if c.name not in columns:
+            raise CalcError(f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}")
+        unit_text = columns[c.name][1]
+        units[c.name] = _header_unit(path, c, unit_text)
+
+    rows = [(n, r) for n, r in enumerate(reader, start=2) if any(cell.strip() for cell in r)]
+    if not rows:
+        raise CalcError(f"{path}: expected at least one row of data, found none")
+    cols = {c.name: np.empty(len(rows)) for c in schema.columns}
+    texts = {name: [] for name in (*schema.text_columns, *schema.optional_text) if name in columns}
+    for j, (line, row) in enumerate(rows):
+        if len(row) != len(header):
+            raise CalcError(f"{path}, row {line}: expected {len(header)} cells as in the header, found {len(row)}")
+        for name in texts:
+            cell = row[columns[name][0]].strip()
+            if name in schema.text_columns and not cell:
+                raise CalcError(f"{path}, row {line}, column {name}: expected a value, found an empty cell")
+            texts[name].append(cell)
+        for c in schema.columns:
+            cell = row[columns[c.name][0]].strip()
+            where = f"{path}, row {line} ({texts['part'][-1]}), column {c.name}"
+            if not cell:
+                if c.required:
+                    raise CalcError(f"{where}: expected a number, found an empty cell")
+                cols[c.name][j] = math.nan
+                continue
+            if not _FLOAT.match(cell):
+                raise CalcError(f"{where}: expected a number, found {cell!r}")
+            value = float(cell)
+            if c.positive and not value > 0:
+                raise CalcError(f"{where}: expected a value above zero, found {cell}")
+            if not c.positive and value < 0:
+                raise CalcError(f"{where}: expected a value of zero or more, found {cell}")
+            cols[c.name][j] = value
+    parts = np.array(texts["part"], dtype=object)
+    seen = {}
+    for j, p in enumerate(parts):
+        if p in seen:
+            raise CalcError(f"{path}, row {rows[j][0]}, column part: the part {p!r} already stands in row {seen[p]}")
+        seen[p] = rows[j][0]
+    values = {c.name: Q_(cols[c.name], units[c.name]) for c in schema.columns}
+    lines = np.array([line for line, _ in rows])
+    for rule in schema.rules:
+        with np.errstate(invalid="ignore"):
+            ok = np.asarray(rule.holds(values), dtype=bool)
+        if not ok.all():
+            j = int(np.flatnonzero(~ok)[0])
+            raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected {rule.text}")
+    return Catalog(
+        name=path.stem,
+        path=path,
+        sha256=hashlib.sha256(raw).hexdigest(),
+        schema=schema,
+        parts=parts,
+        values=values,
+        text={k: np.array(v, dtype=object) for k, v in texts.items()},
+        lines=lines,
+    )
+
+
+def _header_unit(path: Path, c: Column, unit_text):
+    where = f"{path}, header, column {c.name}"
+    k = kind(c.kind)
+    if unit_text is None:
+        raise CalcError(f"{where}: expected a unit in brackets such as '{c.name} [{k.si_unit or 1}]', found none")
+    text = unit_text.strip()
+    try:
+        units = ureg.parse_units(text) if text not in ("", "1", "-") else ureg.dimensionless
+    except Exception as exc:  # pint raises several types for unknown or malformed units
+        raise CalcError(f"{where}: the unit {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
+    if not k.accepts(units):
+        from .units import describe_units
+
+        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {text!r}, which is {describe_units(units)}")
+    return units
+
+
+def no_less(a: str, b: str) -> Callable:
+    """Rule helper: column ``a`` is at least column ``b`` where both are given."""
+
+    def holds(v):
+        x, y = v[a].magnitude, v[b].m_as(v[a].units)
+        return np.isnan(x) | np.isnan(y) | (x >= y)
+
+    return holds

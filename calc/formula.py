@@ -1,0 +1,257 @@
+"""One definition per formula: a sympy expression, and everything derived from it.
+
+A :class:`Formula` holds the right-hand side of one formula of the source document as a sympy
+expression over named :class:`Symbol` s. From that one object come
+
+* its LaTeX (:meth:`Formula.latex`), for docstrings, notebooks and reports;
+* its numeric evaluation (:meth:`Formula.__call__`): quantities in, each checked for its kind
+  (dimension and angle, errata E15), converted to coherent SI magnitudes, evaluated by a
+  ``lambdify``-generated numpy function over scalars or whole arrays, and the unit reattached;
+* its dimensional check (:meth:`Formula.check_dimensions`), run over every formula by the tests;
+* its display with substituted values (:meth:`Formula.step`), ``symbol = expression = numbers =
+  result``, printed from the expression tree, never from source text.
+
+Sums over the segments of a load profile are written with :func:`segment_sum` (Σ over k); the
+numeric form sums over the last axis, so a batch of profiles evaluates at once.
+
+sympy is imported on first use of a formula's expression, not when ``calc`` is imported.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+from types import SimpleNamespace
+from typing import Callable
+
+import numpy as np
+
+from .errors import CalcError
+from .units import Q_, as_kind, kind, latex_unit, pretty_unit, sig, ureg
+
+REGISTRY: list["Formula"] = []
+
+
+@dataclass(frozen=True)
+class Symbol:
+    """A quantity in a formula: its name in code, its LaTeX, its kind and the unit it is shown in."""
+
+    name: str
+    latex: str
+    kind: str
+    unit: str
+    description: str
+    per_segment: bool = False
+
+
+@functools.cache
+def _sympy() -> SimpleNamespace:
+    """sympy, and the Σ-over-segments function, built on first use."""
+    import sympy as sp
+    from sympy.printing.precedence import PRECEDENCE
+
+    class SegmentSum(sp.Function):
+        """Σ_k of its argument over the segments k of a load profile."""
+
+        nargs = 1
+
+        def _latex(self, printer, exp=None):
+            body = printer.parenthesize(self.args[0], PRECEDENCE["Mul"])
+            out = r"\sum_{k} " + body
+            return rf"\left({out}\right)^{{{exp}}}" if exp else out
+
+    class Value(sp.Symbol):
+        """A number with its unit, standing in for a symbol in the substituted display."""
+
+        def __new__(cls, key, tex, has_unit):
+            obj = super().__new__(cls, key)
+            obj._tex = tex
+            obj.precedence = PRECEDENCE["Mul"] if has_unit else PRECEDENCE["Atom"]
+            return obj
+
+        def _latex(self, printer):
+            return self._tex
+
+    return SimpleNamespace(sp=sp, SegmentSum=SegmentSum, Value=Value)
+
+
+def segment_sum(x):
+    """Σ over the profile's segments k (for use inside a formula's builder)."""
+    return _sympy().SegmentSum(x)
+
+
+def _sum_last_axis(x):
+    return np.sum(x, axis=-1)
+
+
+class Formula:
+    """One formula of the source document, defined once.
+
+    Parameters
+    ----------
+    result : Symbol
+        The left-hand side.
+    inputs : tuple of Symbol
+        The symbols of the right-hand side, in the order of ``build``'s parameters.
+    build : callable
+        ``build(sp, *symbols)`` returns the right-hand side as a sympy expression; ``sp`` is the
+        sympy module.
+    reference : str
+        Where the formula comes from (source section, errata entry).
+    """
+
+    def __init__(self, result: Symbol, inputs: tuple[Symbol, ...], build: Callable, reference: str):
+        self.result = result
+        self.inputs = tuple(inputs)
+        self._build = build
+        self.reference = reference
+        REGISTRY.append(self)
+
+    def __repr__(self):
+        return f"Formula({self.result.name} = …, {self.reference})"
+
+    @property
+    def name(self) -> str:
+        return self.result.name
+
+    @functools.cached_property
+    def _symbols(self):
+        sp = _sympy().sp
+        return tuple(sp.Symbol(s.name) for s in self.inputs)
+
+    @functools.cached_property
+    def expr(self):
+        """The right-hand side as a sympy expression."""
+        return self._build(_sympy().sp, *self._symbols)
+
+    @functools.cached_property
+    def _symbol_names(self):
+        return {sym: s.latex for sym, s in zip(self._symbols, self.inputs)}
+
+    def latex(self) -> str:
+        """``lhs = rhs`` in LaTeX."""
+        return f"{self.result.latex} = {self._latex(self.expr)}"
+
+    def _latex(self, expr) -> str:
+        return _sympy().sp.latex(expr, symbol_names=self._symbol_names, mul_symbol="dot")
+
+    def _repr_latex_(self):
+        return f"$${self.latex()}$$"
+
+    @functools.cached_property
+    def numeric(self) -> Callable:
+        """The right-hand side as a numpy function of SI magnitudes, in the order of ``inputs``."""
+        s = _sympy()
+        return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": _sum_last_axis}, "numpy"])
+
+    def _si_args(self, values: dict) -> list:
+        unknown = set(values) - {s.name for s in self.inputs}
+        if unknown:
+            raise CalcError(
+                f"{self.name}: unknown argument {sorted(unknown)[0]!r}; the formula takes {', '.join(s.name for s in self.inputs)}"
+            )
+        args = []
+        for s in self.inputs:
+            if s.name not in values:
+                raise CalcError(f"{self.name}: missing argument {s.name!r} ({s.description}, {kind(s.kind).name})")
+            q = as_kind(values[s.name], s.kind, f"{self.name}: argument {s.name!r}")
+            args.append(q.m_as(kind(s.kind).si_unit))
+        return args
+
+    def __call__(self, **values):
+        """Evaluate with quantities (scalars or arrays); returns a quantity in the result's unit."""
+        out = self.numeric(*self._si_args(values))
+        return Q_(out, kind(self.result.kind).si_unit).to(self.result.unit)
+
+    def check_dimensions(self) -> None:
+        """Evaluate the expression on quantities of the declared units and check the result's kind.
+
+        The check is on dimension and on the power of angle (errata E15), so a formula that
+        loses or gains an angle fails. Raises :class:`CalcError` on a mismatch.
+        """
+        args = []
+        for s in self.inputs:
+            unit = kind(s.kind).si_unit
+            args.append(Q_(np.array([1.0, 2.0]) if s.per_segment else 1.5, unit))
+        out = self.numeric(*args)
+        if not hasattr(out, "units"):
+            out = Q_(out, "")
+        if not kind(self.result.kind).accepts(out.units):
+            raise CalcError(
+                f"{self.name}: the expression gives {out.units:~P}, expected {kind(self.result.kind).name} ({self.result.unit})"
+            )
+
+    def step(self, result=None, **values) -> "Step":
+        """Evaluate (unless ``result`` is given) and return the displayable step."""
+        if result is None:
+            result = self(**values)
+        return Step(self, values, result)
+
+    def substituted_latex(self, values: dict) -> str:
+        """The right-hand side with each symbol replaced by its value and unit."""
+        s = _sympy()
+        expr = self.expr
+        segment_syms = {sym: spec for sym, spec in zip(self._symbols, self.inputs) if spec.per_segment}
+        if segment_syms:
+            n_seg = {len(np.atleast_1d(values[spec.name].magnitude)) for spec in segment_syms.values()}
+            if len(n_seg) != 1:
+                raise CalcError(f"{self.name}: the per-segment arguments differ in length")
+            count = n_seg.pop()
+
+            def expand(node):
+                terms = []
+                for k in range(count):
+                    repl = {sym: _value(s, values[spec.name][k], spec, f"{spec.name}_{k}") for sym, spec in segment_syms.items()}
+                    terms.append(node.args[0].xreplace(repl))
+                return s.sp.Add(*terms, evaluate=False)
+
+            expr = expr.replace(lambda e: isinstance(e, s.SegmentSum), expand)
+        repl = {
+            sym: _value(s, values[spec.name], spec, spec.name)
+            for sym, spec in zip(self._symbols, self.inputs)
+            if not spec.per_segment
+        }
+        return self._latex(expr.xreplace(repl))
+
+
+def _value(s, q, spec: Symbol, key: str):
+    q = as_kind(q, spec.kind, spec.name)
+    magnitude = q.m_as(spec.unit) if spec.unit else q.m_as("")
+    number = sig(magnitude)
+    tex = number if not spec.unit else rf"{number}\,{latex_unit(spec.unit)}"
+    if magnitude < 0:
+        tex = rf"\left({tex}\right)"
+    return s.Value(f"v_{key}", tex, bool(spec.unit))
+
+
+@dataclass
+class Step:
+    """One evaluated formula: what a notebook or report shows as a line of the calculation."""
+
+    formula: Formula
+    values: dict
+    result: object
+
+    @property
+    def result_text(self) -> str:
+        return _quantity_text(self.result, self.formula.result.unit)
+
+    def latex(self) -> str:
+        f = self.formula
+        res = self.result
+        number = sig(res.m_as(f.result.unit))
+        unit = latex_unit(f.result.unit)
+        return (
+            f"{f.result.latex} = {f._latex(f.expr)} = {f.substituted_latex(self.values)} "
+            f"= {number}" + (rf"\,{unit}" if unit else "")
+        )
+
+    def _repr_latex_(self):
+        return f"$${self.latex()}$$"
+
+    def __str__(self):
+        return f"{self.formula.result.name} = {self.result_text}"
+
+
+def _quantity_text(q, unit: str) -> str:
+    return f"{sig(q.m_as(unit))} {pretty_unit(unit)}".rstrip()

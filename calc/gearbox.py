@@ -1,0 +1,283 @@
+"""Gearbox selection for continuous (S1) and cyclic (S5) operation.
+
+Source: "Selection of Optimum Gearbox for a Continuous Operation (S1)" and "... for a Cycle
+Operation (S5)", read with errata E1 to E6. Every row of a catalog at the desired ratio is
+evaluated at once (numpy arrays over the rows, no per-row Python loop); each criterion is kept
+with its required value, rated value, utilization (required / rated) and verdict.
+
+Ranking rule (:func:`rank`): passing candidates first; among them the smallest adequate size,
+measured by the governing torque rating (``T_2B`` in S5, ``T_2N`` in S1), then the larger margin
+(lower worst utilization of the governing checks); failing candidates after, closest to passing
+first (lowest worst utilization). Ties go by part name.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .catalog import Catalog, Column, Rule, Schema, no_less
+from .errors import CalcError
+from .formula import Formula, Symbol
+from .profile import Profile, T_2m, Z_h, duty, n_2m
+from .units import Q_, as_kind, fmt, sig
+
+SCHEMA = Schema(
+    kind="gearbox",
+    columns=(
+        Column("ratio", "dimensionless", "ratio i"),
+        Column("T_2N", "torque", "nominal output torque"),
+        Column("T_2B", "torque", "maximum acceleration output torque"),
+        Column("T_2Not", "torque", "emergency-stop output torque", required=False),
+        Column("n_1N", "speed", "nominal input speed"),
+        Column("n_1max", "speed", "maximum input speed"),
+        Column("eta", "dimensionless", "efficiency at full load"),
+        Column("backlash", "angle", "torsional backlash", required=False, positive=False),
+        Column("C_t21", "stiffness", "torsional stiffness, output", required=False),
+        Column("J_1", "inertia", "mass moment of inertia referred to the input", required=False),
+    ),
+    text_columns=("part", "series", "source"),
+    optional_text=("illustrative",),
+    rules=(
+        Rule("T_2B >= T_2N", no_less("T_2B", "T_2N"), "T_2B"),
+        Rule("T_2Not >= T_2B", no_less("T_2Not", "T_2B"), "T_2Not"),
+        Rule("n_1max >= n_1N", no_less("n_1max", "n_1N"), "n_1max"),
+        Rule("efficiency eta in (0, 1]", lambda v: (v["eta"].m_as("") <= 1.0), "eta"),
+    ),
+)
+
+#: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary).
+#: Each row is (lowest Z_h of the band, f_s).
+SHOCK_FACTORS = ((0, 1.0), (1000, 1.1), (1500, 1.3), (2000, 1.6), (3000, 2.0))
+
+_n_2 = Symbol("n_2", "n_{2}", "speed", "rpm", "output speed")
+_i = Symbol("i", "i", "dimensionless", "", "ratio")
+
+n_1 = Formula(
+    Symbol("n_1", "n_{1}", "speed", "rpm", "input speed"),
+    (_n_2, _i),
+    lambda sp, n_2, i: n_2 * i,
+    "source, S1 criterion 1 (errata E1: n_2m · i <= n_1N) and S5 criterion 1 (errata E5: n_2max · i <= n_1max)",
+)
+
+T_2max = Formula(
+    Symbol("T_2max", r"T_{2\,\mathrm{max}}", "torque", "N*m", "maximum output torque"),
+    (
+        Symbol("T_1B", "T_{1B}", "torque", "N*m", "maximum torque of the motor"),
+        _i,
+        Symbol("f_s", "f_{s}", "dimensionless", "", "shock factor"),
+        Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the gearbox"),
+    ),
+    lambda sp, T_1B, i, f_s, eta: T_1B * i * f_s * eta,
+    "source, S5 calculation 2",
+)
+
+inertia_ratio = Formula(
+    Symbol("lambda", r"\lambda", "dimensionless", "", "load to motor inertia ratio"),
+    (
+        Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia at the input"),
+        Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load inertia at the output"),
+        _i,
+        Symbol("J_motor", r"J_{\mathrm{motor}}", "inertia", "kg*cm**2", "motor inertia"),
+    ),
+    lambda sp, J_1, J_L, i, J_motor: (J_1 + J_L / i**2) / J_motor,
+    "source, S5 criterion 3 (J_motor ≈ J_1 + J_L / i²); errata E6 (reported as a ratio, 1 is ideal)",
+)
+
+
+def shock_factor(cycles_per_hour):
+    """Shock factor ``f_s`` for ``Z_h`` cycles per hour (errata E4), scalar or array.
+
+    >>> [float(shock_factor(Q_(z, "1/hour"))) for z in (999, 1000, 1499, 1500, 2000, 3000)]
+    [1.0, 1.1, 1.1, 1.3, 1.6, 2.0]
+    """
+    z = as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as("1/hour")
+    if np.any(np.asarray(z) < 0):
+        raise CalcError(f"cycles_per_hour: expected zero or more cycles per hour, found {z}")
+    bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
+    factors = np.array([f for _, f in SHOCK_FACTORS])
+    return factors[np.searchsorted(bounds, z, side="right") - 1]
+
+
+@dataclass(frozen=True)
+class CheckArray:
+    """One criterion over all candidates: required and rated values as quantity arrays."""
+
+    name: str
+    mode: str
+    text: str
+    required: object
+    rated: object
+
+    @property
+    def utilization(self) -> np.ndarray:
+        """required / rated; NaN where the catalog gives no rated value."""
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return (self.required / self.rated).m_as("")
+
+    @property
+    def passes(self) -> np.ndarray:
+        return self.utilization <= 1.0  # NaN compares false: no rating, no pass
+
+
+@dataclass
+class Candidate:
+    """One gearbox with its checks, as listed in results and notebooks."""
+
+    part: str
+    ratio: float
+    passes: bool
+    checks: list
+    T_2max: object
+    inertia_ratio: float | None
+    reasons: list
+    illustrative: bool
+
+
+@dataclass
+class GearboxSelection:
+    """The catalog rows at the desired ratio, checked and ranked.
+
+    Arrays are over the rows of ``catalog`` in catalog order; ``order`` ranks them best first.
+    """
+
+    catalog: Catalog
+    mode: str
+    checks: list
+    T_2max: object  # quantity array, or None without the motor's peak torque
+    inertia_ratio: object  # float array, or None without the inertias
+    passes: np.ndarray
+    order: np.ndarray
+
+    @property
+    def governing(self) -> list:
+        return [c for c in self.checks if c.mode == self.mode]
+
+    @property
+    def selected(self) -> str | None:
+        """Part number of the best passing candidate, or None."""
+        if len(self.order) and self.passes[self.order[0]]:
+            return str(self.catalog.parts[self.order[0]])
+        return None
+
+    def reasons(self, row: int) -> list[str]:
+        """Why a row fails: each failing governing check with its excess."""
+        out = []
+        for c in self.governing:
+            if c.passes[row]:
+                continue
+            req, rated = c.required[row], c.rated[row]
+            unit = "rpm" if c.name.startswith("n_") else "N*m"
+            if np.isnan(rated.magnitude):
+                out.append(f"{c.name}: the catalog gives no rated value")
+            else:
+                u = c.utilization[row]
+                out.append(f"{c.text}: required {fmt(req, unit)} > rated {fmt(rated, unit)}, {sig(100 * (u - 1), 3)} % over")
+        return out
+
+    def candidates(self) -> list[Candidate]:
+        """Every row as a :class:`Candidate`, best first."""
+        out = []
+        for row in self.order:
+            checks = [
+                {
+                    "name": c.name,
+                    "mode": c.mode,
+                    "governs": c.mode == self.mode,
+                    "text": c.text,
+                    "required": c.required[row],
+                    "rated": c.rated[row],
+                    "utilization": float(c.utilization[row]),
+                    "passes": bool(c.passes[row]),
+                }
+                for c in self.checks
+            ]
+            lam = None if self.inertia_ratio is None else float(self.inertia_ratio[row])
+            out.append(
+                Candidate(
+                    part=str(self.catalog.parts[row]),
+                    ratio=float(self.catalog["ratio"][row].m_as("")),
+                    passes=bool(self.passes[row]),
+                    checks=checks,
+                    T_2max=None if self.T_2max is None else self.T_2max[row],
+                    inertia_ratio=None if lam is None or np.isnan(lam) else lam,
+                    reasons=self.reasons(row),
+                    illustrative=str(self.catalog.text.get("illustrative", np.array(["no"] * len(self.catalog)))[row]).lower() == "yes",
+                )
+            )
+        return out
+
+
+def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
+    """The rows of ``catalog`` whose ratio equals ``ratio`` (to 1 part in 10⁶)."""
+    i = as_kind(ratio, "dimensionless", where).m_as("")
+    if not i > 0:
+        raise CalcError(f"{where}: expected a ratio above zero, found {i:g}")
+    mask = np.isclose(catalog["ratio"].m_as(""), i, rtol=1e-6, atol=0)
+    if not mask.any():
+        ratios = ", ".join(f"{r:g}" for r in sorted(set(catalog["ratio"].m_as("").tolist())))
+        raise CalcError(f"{where}: no gearbox in catalog {catalog.path} has ratio {i:g}; its ratios are {ratios}")
+    return catalog.rows(mask)
+
+
+def select_gearbox(
+    profile: Profile,
+    catalog: Catalog,
+    motor_peak_torque=None,
+    motor_inertia=None,
+    load_inertia=None,
+) -> GearboxSelection:
+    """Check every row of ``catalog`` (already narrowed to the desired ratio, or to one part).
+
+    S1 checks (always): ``n_2m · i <= n_1N`` (E1), ``T_2m <= T_2N`` (E2). S5 checks (when the
+    motor's peak torque ``T_1B`` is given): ``n_2max · i <= n_1max`` (E5), ``T_2max <= T_2B``
+    with ``T_2max = T_1B · i · f_s · η`` (E4). The operating mode of the profile (E3) says which
+    group governs ``passes``; the other group is reported for information. The inertia ratio
+    (E6) is given when both inertias are.
+
+    Raises :class:`CalcError` if the cycle is S5 and no peak torque is given: the governing
+    torque check cannot be made.
+    """
+    d = duty(profile)
+    i = catalog["ratio"]
+    seg = profile.moving_values()
+    checks = [
+        CheckArray("n_1N", "S1", "n_2m · i <= n_1N", n_1(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i), catalog["n_1N"]),
+        CheckArray("T_2N", "S1", "T_2m <= T_2N", T_2m(**seg) * np.ones(len(catalog)), catalog["T_2N"]),
+    ]
+    t2max = None
+    if motor_peak_torque is not None:
+        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle))
+        t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
+        checks += [
+            CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"]),
+            CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"]),
+        ]
+    elif d.mode == "S5":
+        raise CalcError(
+            f"motor_peak_torque: the cycle is S5 (ED {sig(d.ED.m_as('percent'), 3)} %), whose check T_2max <= T_2B "
+            "needs the motor's peak torque T_1B, found none"
+        )
+    lam = None
+    if motor_inertia is not None and load_inertia is not None:
+        lam = inertia_ratio(J_1=catalog["J_1"], J_L=load_inertia, i=i, J_motor=motor_inertia).m_as("")
+    selection = GearboxSelection(catalog, d.mode, checks, t2max, lam, np.zeros(len(catalog), bool), np.arange(len(catalog)))
+    governing = selection.governing
+    selection.passes = np.logical_and.reduce([c.passes for c in governing])
+    selection.order = rank(
+        selection.passes,
+        catalog["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m"),
+        np.max([c.utilization for c in governing], axis=0),
+        catalog.parts,
+    )
+    return selection
+
+
+def rank(passes, size, worst_utilization, parts) -> np.ndarray:
+    """Indices best first: passing first, then smallest size and larger margin; failing rows after,
+    closest to passing first (see the module's docstring)."""
+    passes = np.asarray(passes, bool)
+    worst = np.where(np.isnan(worst_utilization), np.inf, worst_utilization)
+    size_key = np.where(passes, size, 0.0)
+    return np.lexsort((parts.astype(str), worst, size_key, ~passes))

@@ -1,0 +1,204 @@
+"""The package's one unit registry, and the checks that guard its traps.
+
+pint treats angles as dimensionless (errata E15). So a torque converts silently to a torsional
+stiffness (``"0.24 N*m"`` to N·m/arcmin), a bare number converts to an angle (read as radians) and
+``"300 rpm"`` converts to 31.4 Hz. Every input therefore declares a :class:`Kind`: its
+dimensionality *and* the power of angle its unit must carry, and :func:`as_kind` checks both.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+from dataclasses import dataclass
+
+import numpy as np
+import pint
+
+from .errors import CalcError
+
+ureg = pint.UnitRegistry(cache_folder=":auto:")
+ureg.formatter.default_format = "~P"
+pint.set_application_registry(ureg)
+Q_ = ureg.Quantity
+
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+@dataclass(frozen=True)
+class Kind:
+    """What an input must be: a dimensionality, the power of angle its unit carries, a unit to
+    compute in (coherent SI, angles in radians) and an example for error messages."""
+
+    name: str
+    dimensionality: str
+    angle: int
+    si_unit: str
+    example: str
+
+    def accepts(self, units) -> bool:
+        return _signature(units) == _signature(self.si_unit)
+
+
+@functools.lru_cache(maxsize=512)
+def _signature(units) -> tuple:
+    """Dimensionality and angle power of a unit (cached: a unit is checked once per process)."""
+    units = ureg.parse_units(units) if isinstance(units, str) else units
+    return ureg.Quantity(1, units).dimensionality, angle_power(units)
+
+
+def angle_power(units) -> int:
+    """The power of angle a unit carries, read from its root units (rpm → 1, N·m/arcmin → −1)."""
+    _, root = ureg.get_root_units(units)
+    return int(round(float(root._units.get("radian", 0))))
+
+
+KINDS: dict[str, Kind] = {
+    k.name: k
+    for k in (
+        Kind("time", "[time]", 0, "s", '"0.2 s"'),
+        Kind("speed", "1/[time]", 1, "rad/s", '"300 rpm"'),
+        Kind("frequency", "1/[time]", 0, "Hz", '"40 Hz"'),
+        Kind("torque", "[mass]*[length]**2/[time]**2", 0, "N*m", '"12 N*m"'),
+        Kind("inertia", "[mass]*[length]**2", 0, "kg*m**2", '"1.2 kg*cm**2"'),
+        Kind("stiffness", "[mass]*[length]**2/[time]**2", -1, "N*m/rad", '"1.3 N*m/arcmin"'),
+        Kind("angle", "", 1, "rad", '"3 arcmin"'),
+        Kind("length", "[length]", 0, "m", '"14 mm"'),
+        Kind("dimensionless", "", 0, "", "10"),
+        Kind("per_hour", "1/[time]", 0, "1/s", '"1800 / hour"'),
+    )
+}
+
+
+def kind(name: str | Kind) -> Kind:
+    return name if isinstance(name, Kind) else KINDS[name]
+
+
+def describe_units(units) -> str:
+    """Name what a unit measures, for error messages ("a torque", "a bare number", ...)."""
+    if units == ureg.dimensionless or str(units) == "":
+        return "a bare number"
+    for k in KINDS.values():
+        if k.name not in ("dimensionless", "per_hour") and k.accepts(units):
+            return f"{_article(k.name)} {k.name}"
+    return f"a quantity of dimension {ureg.Quantity(1, units).dimensionality} with angle power {angle_power(units)}"
+
+
+def _article(word: str) -> str:
+    return "an" if word[0] in "aeiou" else "a"
+
+
+def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
+    """Parse a case-file or catalog value such as ``"12 N*m"`` and check its kind.
+
+    The number and the unit are split by a regular expression and the unit is parsed by the
+    registry's own unit parser; nothing is evaluated as code. Offset units (``"60 degC"``) are
+    built as a quantity of that temperature, not multiplied.
+    """
+    k = kind(expected)
+    if isinstance(text, bool):
+        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {text!r}")
+    if isinstance(text, (int, float)):
+        if k.name == "dimensionless":
+            return ureg.Quantity(float(text), "")
+        raise CalcError(
+            f"{where}: expected {_article(k.name)} {k.name} with its unit such as {k.example}, found the bare number {text!r}"
+        )
+    if not isinstance(text, str):
+        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {text!r}")
+    match = _NUMBER.match(text)
+    if not match:
+        raise CalcError(f"{where}: expected a number followed by a unit such as {k.example}, found {text!r}")
+    number, unit_text = match.groups()
+    try:
+        units = ureg.parse_units(unit_text) if unit_text else ureg.dimensionless
+    except (pint.errors.PintError, ValueError, AttributeError, TypeError, SyntaxError) as exc:
+        raise CalcError(f"{where}: the unit {unit_text!r} in {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
+    quantity = ureg.Quantity(float(number), units)
+    return as_kind(quantity, k, where, found=text)
+
+
+def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -> pint.Quantity:
+    """Check that ``value`` is a quantity of the expected kind; return it unchanged.
+
+    A bare number is accepted only for dimensionless kinds; anything else raises
+    :class:`CalcError` naming ``where``.
+    """
+    k = kind(expected)
+    if not isinstance(value, pint.Quantity):
+        if k.name == "dimensionless" and isinstance(value, (int, float, np.ndarray, np.number)) and not isinstance(value, bool):
+            return ureg.Quantity(np.asarray(value, dtype=float) if isinstance(value, np.ndarray) else float(value), "")
+        raise CalcError(
+            f"{where}: expected {_article(k.name)} {k.name} as a quantity with a unit such as {k.example}, found {type(value).__name__} {value!r}"
+        )
+    if value._REGISTRY is not ureg:
+        raise CalcError(f"{where}: the quantity {value} was made with another unit registry; use calc.ureg or calc.Q_")
+    if not k.accepts(value.units):
+        shown = found if found is not None else f"{value:~P}"
+        what = describe_units(value.units)
+        hint = ""
+        if k.angle and angle_power(value.units) != k.angle and value.dimensionality == ureg.Quantity(1, k.si_unit).dimensionality:
+            hint = " (its unit must carry the angle, errata E15)"
+        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {shown!r}, which is {what}{hint}")
+    return value
+
+
+def to_si(value, expected: str | Kind, where: str):
+    """Magnitude of a checked quantity in the kind's coherent SI unit (float or array)."""
+    k = kind(expected)
+    return as_kind(value, k, where).m_as(k.si_unit)
+
+
+def revolutions_per_second(speed) -> pint.Quantity:
+    """Rotational frequency of a shaft: ``n / 60 s`` per revolution (errata E15).
+
+    pint would turn 300 rpm into 31.4 Hz (it treats Hz as rad/s); a shaft at 300 rpm turns
+    five times a second.
+
+    >>> revolutions_per_second(Q_(300, "rpm"))
+    <Quantity(5.0, 'hertz')>
+    """
+    n = as_kind(speed, "speed", "speed")
+    return ureg.Quantity(n.m_as("rpm") / 60.0, "Hz")
+
+
+def fmt(q, unit: str, digits: int = 4) -> str:
+    """Format a scalar quantity in ``unit`` with ``digits`` significant figures (``21.33 N·m``)."""
+    return f"{sig(q.m_as(unit), digits)} {pretty_unit(unit)}".rstrip()
+
+
+def sig(x: float, digits: int = 4) -> str:
+    """A number to ``digits`` significant figures, trailing zeros dropped (``0.2``, ``35.41``).
+
+    >>> sig(35.40764), sig(0.2), sig(2400.0), sig(1.5e-7)
+    ('35.41', '0.2', '2400', '1.500e-07')
+    """
+    x = float(x)
+    if x == 0 or not math.isfinite(x):
+        return f"{x:g}"
+    if 1e-4 <= abs(x) < 1e9:
+        decimals = max(digits - 1 - int(math.floor(math.log10(abs(x)))), 0)
+        text = f"{round(x, decimals):.{decimals}f}"
+        return text.rstrip("0").rstrip(".") if "." in text else text
+    return f"{x:.{digits - 1}e}"
+
+
+_PRETTY = {"**2": "²", "**3": "³", "**-1": "⁻¹", "*": "·", "percent": "%", "degC": "°C", "deg": "°"}
+
+
+def pretty_unit(unit: str) -> str:
+    """Our own unit strings as a reader writes them: ``kg*cm**2`` → ``kg·cm²``."""
+    out = unit
+    for a, b in _PRETTY.items():
+        out = out.replace(a, b)
+    return out
+
+
+def latex_unit(unit: str) -> str:
+    """Our own unit strings in LaTeX: ``N*m/arcmin`` → ``\\mathrm{N\\,m/arcmin}``."""
+    if not unit:
+        return ""
+    body = unit.replace("percent", r"\%").replace("degC", r"^{\circ}C")
+    body = re.sub(r"\*\*(-?\d+)", r"^{\1}", body).replace("*", r"\,")
+    return r"\mathrm{" + body + "}"
