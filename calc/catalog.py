@@ -19,7 +19,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, kind, ureg
+from .units import Q_, describe_units, kind, pretty_unit, ureg
 
 CATALOG_DIR = Path(__file__).resolve().parent.parent / "catalogs"
 
@@ -70,6 +70,7 @@ class Catalog:
     values: dict = field(default_factory=dict)
     text: dict = field(default_factory=dict)
     lines: np.ndarray = None  # line number of each row in the file
+    header_units: dict = field(default_factory=dict)  # each numeric column's unit as the file writes it
 
     def __len__(self):
         return len(self.parts)
@@ -82,7 +83,7 @@ class Catalog:
         return Catalog(
             self.name, self.path, self.sha256, self.schema, self.parts[mask],
             {k: v[mask] for k, v in self.values.items()}, {k: v[mask] for k, v in self.text.items()},
-            self.lines[mask],
+            self.lines[mask], self.header_units,
         )
 
     def index(self, part: str, where: str) -> int:
@@ -97,8 +98,7 @@ class Catalog:
 
         data = {"part": self.parts}
         for c in self.schema.columns:
-            q = self.values[c.name]
-            data[f"{c.name} [{q.units:~P}]"] = q.magnitude
+            data[f"{c.name} [{pretty_unit(self.header_units[c.name])}]"] = self.values[c.name].magnitude
         data.update({k: v for k, v in self.text.items() if k != "part"})
         return pd.DataFrame(data)
 
@@ -222,6 +222,7 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
         values=values,
         text={k: np.array(v, dtype=object) for k, v in texts.items()},
         lines=lines,
+        header_units={c.name: columns[c.name][1].strip() for c in schema.columns},
     )
 
 
@@ -236,8 +237,6 @@ def _header_unit(path: Path, c: Column, unit_text):
     except Exception as exc:  # pint raises several types for unknown or malformed units
         raise CalcError(f"{where}: the unit {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
     if not k.accepts(units):
-        from .units import describe_units
-
         raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {text!r}, which is {describe_units(units)}")
     return units
 

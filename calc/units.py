@@ -19,6 +19,7 @@ import pint
 from .errors import CalcError
 
 ureg = pint.UnitRegistry(cache_folder=":auto:")
+ureg.define("@alias revolution = rev")  # "rev/s" and "rev/min" as speed units engineers write
 ureg.formatter.default_format = "~P"
 pint.set_application_registry(ureg)
 Q_ = ureg.Quantity
@@ -113,7 +114,7 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
     number, unit_text = match.groups()
     try:
         units = ureg.parse_units(unit_text) if unit_text else ureg.dimensionless
-    except (pint.errors.PintError, ValueError, AttributeError, TypeError, SyntaxError) as exc:
+    except Exception as exc:  # pint's parser raises many types for malformed text, AssertionError among them
         raise CalcError(f"{where}: the unit {unit_text!r} in {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
     quantity = ureg.Quantity(float(number), units)
     return as_kind(quantity, k, where, found=text)

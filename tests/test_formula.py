@@ -1,0 +1,93 @@
+"""The formula machinery: one sympy definition gives LaTeX, evaluation, dimension check, display."""
+
+import importlib
+import pkgutil
+
+import numpy as np
+import pytest
+
+import calc
+from calc import CalcError, Q_
+from calc.formula import REGISTRY, Formula, Symbol
+from calc.gearbox import T_2max
+from calc.profile import T_2m
+
+
+def _import_all_modules():
+    for info in pkgutil.iter_modules(calc.__path__):
+        if info.name != "__main__":
+            importlib.import_module(f"calc.{info.name}")
+
+
+def test_every_formula_of_the_package_is_dimensionally_consistent():
+    _import_all_modules()
+    assert len(REGISTRY) >= 7
+    for formula in REGISTRY:
+        formula.check_dimensions()
+
+
+def test_dimension_check_catches_a_lost_angle():
+    # A "stiffness" that forgot the angle: torque over time is neither dimension nor angle right.
+    wrong = Formula(
+        Symbol("C", "C", "stiffness", "N*m/arcmin", "stiffness"),
+        (Symbol("T", "T", "torque", "N*m", "torque"),),
+        lambda sp, T: T,  # a torque, not a torque per angle (the trap of E15)
+        "test",
+    )
+    try:
+        with pytest.raises(CalcError, match="expected stiffness"):
+            wrong.check_dimensions()
+    finally:
+        REGISTRY.remove(wrong)
+
+
+def test_latex_comes_from_the_expression():
+    assert T_2max.latex() == r"T_{2\,\mathrm{max}} = T_{1B} \cdot \eta \cdot f_{s} \cdot i"
+    assert r"\sqrt[3]" in T_2m.latex() and r"\sum_{k}" in T_2m.latex()
+
+
+def test_step_shows_symbol_expression_numbers_result():
+    step = T_2max.step(T_1B=Q_(12, "N*m"), i=Q_(10, ""), f_s=Q_(1.3, ""), eta=Q_(0.97, ""))
+    # Hand calculation: 12 N·m × 10 × 1.3 × 0.97 = 151.32 N·m.
+    assert step.result.m_as("N*m") == pytest.approx(151.32)
+    assert step.latex() == (
+        r"T_{2\,\mathrm{max}} = T_{1B} \cdot \eta \cdot f_{s} \cdot i = "
+        r"12\,\mathrm{N\,m} \cdot 0.97 \cdot 1.3 \cdot 10 = 151.3\,\mathrm{N\,m}"
+    )
+    assert str(step) == "T_2max = 151.3 N·m"
+
+
+def test_step_expands_segment_sums_with_every_segment():
+    values = {"n_2k": Q_(np.array([100.0, 200.0]), "rpm"), "t_k": Q_(np.array([1.0, 2.0]), "s"), "T_2k": Q_(np.array([10.0, -5.0]), "N*m")}
+    tex = T_2m.step(**values).latex()
+    for number in ("100", "200", r"\left(-5\,\mathrm{N\,m}\right)", "10"):
+        assert number in tex
+
+
+def test_evaluation_is_vectorized_and_matches_scalars():
+    i = Q_(np.array([3.0, 5.0, 10.0]), "")
+    eta = Q_(np.array([0.97, 0.95, 0.9]), "")
+    vector = T_2max(T_1B=Q_(2, "N*m"), i=i, f_s=Q_(1.1, ""), eta=eta)
+    for k in range(3):
+        scalar = T_2max(T_1B=Q_(2, "N*m"), i=i[k], f_s=Q_(1.1, ""), eta=eta[k])
+        assert vector[k].m_as("N*m") == pytest.approx(scalar.m_as("N*m"))
+
+
+def test_arguments_are_checked_by_name():
+    with pytest.raises(CalcError, match=r"T_2max: argument 'T_1B': expected a torque"):
+        T_2max(T_1B=12.0, i=Q_(10, ""), f_s=Q_(1.3, ""), eta=Q_(0.97, ""))
+    with pytest.raises(CalcError, match=r"missing argument 'eta'"):
+        T_2max(T_1B=Q_(12, "N*m"), i=Q_(10, ""), f_s=Q_(1.3, ""))
+    with pytest.raises(CalcError, match=r"unknown argument 'x'"):
+        T_2max(T_1B=Q_(12, "N*m"), i=Q_(10, ""), f_s=Q_(1.3, ""), eta=Q_(0.97, ""), x=1)
+    # Bare numbers are fine where the symbol is dimensionless.
+    assert T_2max(T_1B=Q_(1, "N*m"), i=2, f_s=1, eta=1).m_as("N*m") == pytest.approx(2)
+
+
+def test_import_calc_does_not_load_sympy_pandas_or_matplotlib():
+    import subprocess
+    import sys
+
+    code = "import sys, calc.evaluate, calc.case; print(sorted(m for m in ('sympy', 'pandas', 'matplotlib') if m in sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"

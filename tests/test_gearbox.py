@@ -1,0 +1,132 @@
+"""Gearbox selection: shock factor (E4), T_2max, checks (E1, E5), inertia ratio (E6), ranking."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from calc import CalcError, Q_
+from calc.catalog import load_catalog
+from calc.gearbox import SCHEMA, T_2max, inertia_ratio, n_1, rank, rows_at_ratio, select_gearbox, shock_factor
+from calc.profile import Profile
+
+from .conftest import GEARBOXES
+from .test_profile import example_profile
+
+
+@pytest.fixture(scope="module")
+def catalog():
+    return load_catalog(GEARBOXES, SCHEMA)
+
+
+@pytest.mark.parametrize(
+    "zh, fs",
+    [(0, 1.0), (999.9, 1.0), (1000, 1.1), (1499, 1.1), (1500, 1.3), (1999, 1.3), (2000, 1.6), (2999, 1.6), (3000, 2.0), (10000, 2.0)],
+)
+def test_shock_factor_table_with_e4_boundaries(zh, fs):
+    # E4: the higher factor applies at each boundary 1000, 1500, 2000, 3000.
+    assert shock_factor(Q_(zh, "1/hour")) == fs
+
+
+@given(st.lists(st.floats(0, 1e5), min_size=2, max_size=20))
+def test_shock_factor_never_falls_as_cycles_rise(zs):
+    zs = np.sort(np.array(zs))
+    fs = shock_factor(Q_(zs, "1/hour"))
+    assert np.all(np.diff(fs) >= 0)
+
+
+def test_example_s5_selection_by_hand(catalog):
+    rows = rows_at_ratio(catalog, Q_(10, ""))
+    sel = select_gearbox(example_profile(), rows, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2"))
+    assert sel.mode == "S5"
+    # Hand calculation: Z_h = 3600/2 = 1800 → f_s = 1.3 (E4); T_2max = 12 · 10 · 1.3 · 0.97 = 151.32 N·m.
+    # Against T_2B: NPT035-10 220 → 0.688 (pass), TP010-10 126 → 1.201 (fail), SP075-10 102 → 1.484 (fail).
+    by_part = {c.part: c for c in sel.candidates()}
+    t2b = {c["name"]: c for c in by_part["NPT035-10"].checks}["T_2B"]
+    assert t2b["required"].m_as("N*m") == pytest.approx(151.32)
+    assert t2b["utilization"] == pytest.approx(151.32 / 220)
+    assert [c.part for c in sel.candidates()] == ["NPT035-10", "TP010-10", "SP075-10"]
+    assert sel.selected == "NPT035-10"
+    assert by_part["TP010-10"].reasons == ["T_2max <= T_2B: required 151.3 N·m > rated 126 N·m, 20.1 % over"]
+    # E5: n_2max · i = 300 · 10 = 3000 rpm against n_1max 6000 → 0.5.
+    n1max = {c["name"]: c for c in by_part["NPT035-10"].checks}["n_1max"]
+    assert n1max["utilization"] == pytest.approx(0.5)
+    # E1 (information in S5): n_2m · i = 240 · 10 = 2400 rpm > n_1N 2300 → fails but does not govern.
+    n1n = {c["name"]: c for c in by_part["NPT035-10"].checks}["n_1N"]
+    assert n1n["passes"] is False and n1n["governs"] is False and by_part["NPT035-10"].passes
+    # E6: λ = (J_1 + J_L/i²)/J_motor = (0.93 + 1500/100)/4.2 = 3.7929.
+    assert by_part["NPT035-10"].inertia_ratio == pytest.approx((0.93 + 15) / 4.2)
+    # SP075-10 has no J_1 in the catalog: no ratio rather than a wrong one.
+    assert by_part["SP075-10"].inertia_ratio is None
+
+
+def s1_profile():
+    # The example's motion with a 0.2 s pause: ED = 1.0/1.2 = 83 % → S1 (E3).
+    return Profile.from_segments(
+        [
+            ("accel", Q_(0.2, "s"), Q_(150, "rpm"), Q_(60, "N*m")),
+            ("const", Q_(0.6, "s"), Q_(300, "rpm"), Q_(20, "N*m")),
+            ("decel", Q_(0.2, "s"), Q_(150, "rpm"), Q_(-45, "N*m")),
+            ("pause", Q_(0.2, "s"), None, None),
+        ]
+    )
+
+
+def test_s1_selection_by_hand(catalog):
+    rows = rows_at_ratio(catalog, Q_(10, ""))
+    sel = select_gearbox(s1_profile(), rows)
+    assert sel.mode == "S1"
+    assert sel.T_2max is None
+    # E1: n_2m · i = 240 · 10 = 2400 rpm; NPT035-10 n_1N = 2300 → 1.043 fails; TP010-10 3100 → 0.774;
+    # SP075-10 2900 → 0.828. E2: T_2m = 35.41 N·m against T_2N 81 (TP010) and 63 (SP075).
+    # Ranking in S1: passing by T_2N ascending: SP075-10 (63) before TP010-10 (81).
+    assert [c.part for c in sel.candidates()] == ["SP075-10", "TP010-10", "NPT035-10"]
+    rejected = sel.candidates()[-1]
+    assert not rejected.passes
+    assert rejected.reasons == ["n_2m · i <= n_1N: required 2400 rpm > rated 2300 rpm, 4.35 % over"]
+
+
+def test_s5_without_peak_torque_is_an_error(catalog):
+    with pytest.raises(CalcError, match="needs the motor's peak torque"):
+        select_gearbox(example_profile(), rows_at_ratio(catalog, Q_(10, "")))
+
+
+def test_ratio_not_in_catalog(catalog):
+    with pytest.raises(CalcError, match=r"no gearbox in catalog .* has ratio 9; its ratios are 3, 4, 5, 7, 8, 10"):
+        rows_at_ratio(catalog, Q_(9, ""))
+    with pytest.raises(CalcError, match="above zero"):
+        rows_at_ratio(catalog, Q_(0, ""))
+
+
+def test_formulas_by_hand():
+    assert n_1(n_2=Q_(300, "rpm"), i=Q_(10, "")).m_as("rpm") == pytest.approx(3000)
+    assert T_2max(T_1B=Q_(4, "N*m"), i=Q_(5, ""), f_s=Q_(2, ""), eta=Q_(0.9, "")).m_as("N*m") == pytest.approx(36)
+    lam = inertia_ratio(J_1=Q_(1, "kg*cm**2"), J_L=Q_(400, "kg*cm**2"), i=Q_(10, ""), J_motor=Q_(2.5, "kg*cm**2"))
+    assert lam.m_as("") == pytest.approx((1 + 4) / 2.5)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.floats(0.5, 50), st.floats(1.5, 100))
+def test_inertia_ratio_reflects_with_i_squared(J_L, i):
+    a = inertia_ratio(J_1=Q_(0, "kg*cm**2") + Q_(1e-12, "kg*cm**2"), J_L=Q_(J_L, "kg*cm**2"), i=Q_(i, ""), J_motor=Q_(1, "kg*cm**2"))
+    b = inertia_ratio(J_1=Q_(1e-12, "kg*cm**2"), J_L=Q_(J_L, "kg*cm**2"), i=Q_(2 * i, ""), J_motor=Q_(1, "kg*cm**2"))
+    assert a.m_as("") == pytest.approx(4 * b.m_as(""), rel=1e-6)
+
+
+def test_vectorized_selection_equals_part_by_part(catalog):
+    # Checking all rows at once and checking each part alone must agree, row for row.
+    rows = rows_at_ratio(catalog, Q_(10, ""))
+    together = {c.part: c for c in select_gearbox(example_profile(), rows, Q_(12, "N*m")).candidates()}
+    for k in range(len(rows)):
+        alone = select_gearbox(example_profile(), rows.rows([k]), Q_(12, "N*m")).candidates()[0]
+        assert alone.passes == together[alone.part].passes
+        assert [c["utilization"] for c in alone.checks] == pytest.approx([c["utilization"] for c in together[alone.part].checks])
+
+
+def test_rank_rule():
+    passes = np.array([False, True, True, False])
+    size = np.array([50.0, 200.0, 100.0, 80.0])
+    worst = np.array([1.5, 0.5, 0.9, 1.1])
+    parts = np.array(["a", "b", "c", "d"], dtype=object)
+    # Passing first, smallest size first (c before b); failing closest-to-passing first (d before a).
+    assert list(rank(passes, size, worst, parts)) == [2, 1, 3, 0]

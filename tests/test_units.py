@@ -1,0 +1,117 @@
+"""The unit registry and the guards against pint's angle traps (errata E14, E15)."""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from calc import CalcError, Q_, ureg
+from calc.units import angle_power, as_kind, latex_unit, parse_quantity, pretty_unit, revolutions_per_second, sig
+
+
+def test_one_application_registry():
+    import pint
+
+    assert pint.get_application_registry().get() is ureg or pint.get_application_registry() is ureg
+
+
+@pytest.mark.parametrize(
+    "text, kind, unit, value",
+    [
+        ("300 rpm", "speed", "rpm", 300.0),
+        ("1.2 kg*cm**2", "inertia", "kg*m**2", 1.2e-4),  # 1 kg·cm² = 1e-4 kg·m²
+        ("1.3 N*m/arcmin", "stiffness", "N*m/rad", 1.3 * 10800 / math.pi),  # E14: 1 N·m/arcmin = 10800/π N·m/rad
+        ("60 arcsec", "angle", "arcmin", 1.0),
+        ("40 Hz", "frequency", "Hz", 40.0),
+        ("1.00 in", "length", "mm", 25.4),
+        ("0.2 s", "time", "ms", 200.0),
+        ("12 N*m", "torque", "N*m", 12.0),
+        ("106.2 lbf*in", "torque", "N*m", 106.2 * 0.1129848290276167),
+    ],
+)
+def test_parse_quantity_converts(text, kind, unit, value):
+    assert parse_quantity(text, kind, "k").m_as(unit) == pytest.approx(value, rel=1e-12)
+
+
+def test_stiffness_conversion_factor_e14():
+    # E14: 1 N·m/arcmin = 10800/π ≈ 3437.75 N·m/rad.
+    assert Q_(1, "N*m/arcmin").m_as("N*m/rad") == pytest.approx(3437.7467707849396, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "text, kind, fragment",
+    [
+        ("0.24 N*m", "stiffness", "a torque"),  # E15 (a): a torque accepted as a stiffness
+        ("3", "angle", "bare number"),  # E15 (a): a bare number read as radians
+        (3, "angle", "bare number"),
+        ("300 rpm", "frequency", "a speed"),  # E15 (b): rpm silently turned into Hz
+        ("5 Hz", "speed", "a frequency"),
+        ("12 N", "torque", "dimension"),  # a force given for a torque
+        ("3 arcmin", "speed", "an angle"),  # an angle given for a speed
+        ("12 N*m", "time", "a torque"),
+    ],
+)
+def test_wrong_kind_is_one_clear_error(text, kind, fragment):
+    with pytest.raises(CalcError) as err:
+        parse_quantity(text, kind, "case.toml: key")
+    message = str(err.value)
+    assert message.startswith("case.toml: key: expected")
+    assert fragment in message
+    assert "\n" not in message
+
+
+@pytest.mark.parametrize("text", ["12 N*mm*", "12 furlongs_per_blip", "N*m", "12 N*m; import os", "__import__('os')", ""])
+def test_unparseable_values_are_errors_not_tracebacks(text):
+    with pytest.raises(CalcError):
+        parse_quantity(text, "torque", "k")
+
+
+def test_bare_number_only_where_dimensionless():
+    assert parse_quantity(10, "dimensionless", "ratio").m_as("") == 10
+    with pytest.raises(CalcError, match="bare number"):
+        parse_quantity(12, "torque", "motor.peak_torque")
+
+
+def test_offset_temperature_is_built_not_multiplied():
+    # E15: "60 degC" must be a temperature of 60 °C (333.15 K), not 60 × 1 °C.
+    q = ureg.Quantity(60.0, ureg.parse_units("degC"))
+    assert q.to("K").magnitude == pytest.approx(333.15)
+
+
+def test_speed_to_rotational_frequency_e15():
+    # A shaft at 300 rpm turns 5 times a second; pint alone says 31.4 Hz.
+    assert Q_(300, "rpm").to("Hz").magnitude == pytest.approx(10 * math.pi)  # the trap, documented
+    assert revolutions_per_second(Q_(300, "rpm")).m_as("Hz") == pytest.approx(5.0)
+    with pytest.raises(CalcError):
+        revolutions_per_second(Q_(5, "Hz"))
+
+
+def test_angle_power():
+    assert angle_power(ureg.parse_units("rpm")) == 1
+    assert angle_power(ureg.parse_units("N*m/arcmin")) == -1
+    assert angle_power(ureg.parse_units("N*m")) == 0
+
+
+def test_as_kind_names_the_argument_for_a_bare_float():
+    with pytest.raises(CalcError, match=r"^T_1B: expected a torque as a quantity"):
+        as_kind(12.0, "torque", "T_1B")
+
+
+def test_as_kind_accepts_arrays():
+    q = as_kind(Q_(np.array([1.0, 2.0]), "N*m"), "torque", "x")
+    assert q.shape == (2,)
+
+
+@given(st.floats(min_value=1e-3, max_value=1e5, allow_nan=False))
+def test_metric_and_inch_inertia_agree(x):
+    # 1 lb·in² = 2.9264 kg·cm² (0.45359237 kg × 2.54² cm²).
+    lbin2 = parse_quantity(f"{x!r} lb*in**2", "inertia", "k")
+    assert lbin2.m_as("kg*cm**2") == pytest.approx(x * 0.45359237 * 2.54**2, rel=1e-12)
+
+
+def test_formatting():
+    assert sig(35.40764860744718) == "35.41"
+    assert pretty_unit("kg*cm**2") == "kg·cm²"
+    assert latex_unit("N*m/arcmin") == r"\mathrm{N\,m/arcmin}"
