@@ -236,15 +236,15 @@ class Step:
     def result_text(self) -> str:
         return _quantity_text(self.result, self.formula.result.unit)
 
-    def latex(self) -> str:
+    def parts(self) -> tuple[str, str, str, str]:
+        """The step's four sides in LaTeX: symbol, expression, substituted values, result."""
         f = self.formula
-        res = self.result
-        number = sig(res.m_as(f.result.unit))
+        number = sig(self.result.m_as(f.result.unit))
         unit = latex_unit(f.result.unit)
-        return (
-            f"{f.result.latex} = {f._latex(f.expr)} = {f.substituted_latex(self.values)} "
-            f"= {number}" + (rf"\,{unit}" if unit else "")
-        )
+        return f.result.latex, f._latex(f.expr), f.substituted_latex(self.values), number + (rf"\,{unit}" if unit else "")
+
+    def latex(self) -> str:
+        return " = ".join(self.parts())
 
     def _repr_latex_(self):
         return f"$${self.latex()}$$"
