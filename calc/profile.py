@@ -156,7 +156,7 @@ def duty(profile: Profile) -> Duty:
     """Duty cycle and operating mode of a profile.
 
     >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
-    >>> d = duty(p); (round(d.ED.m_as("percent"), 6), d.mode)
+    >>> d = duty(p); (float(d.ED.m_as("percent")), d.mode)
     (50.0, 'S5')
     """
     ed = ED(t_on=profile.t_on, t_cycle=profile.t_cycle)
