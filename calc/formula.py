@@ -181,6 +181,15 @@ class Formula:
                 f"{self.name}: the expression gives {out.units:~P}, expected {kind(self.result.kind).name} ({self.result.unit})"
             )
 
+    def documentation(self) -> str:
+        """A numpydoc text of the formula: what it gives, its equation, its symbols, its source."""
+        r = self.result
+        lines = [f"{r.name}: {r.description} [{pretty_unit(r.unit) or '-'}]", "", f".. math:: {self.latex()}", "", "Parameters", "----------"]
+        for s in self.inputs:
+            lines += [f"{s.name} : {s.kind} [{pretty_unit(s.unit) or '-'}]{', per segment' if s.per_segment else ''}", f"    {s.description}"]
+        lines += ["", "References", "----------", self.reference]
+        return "\n".join(lines)
+
     def step(self, result=None, **values) -> "Step":
         """Evaluate (unless ``result`` is given) and return the displayable step."""
         if result is None:
@@ -212,6 +221,17 @@ class Formula:
             if not spec.per_segment
         }
         return self._latex(expr.xreplace(repl))
+
+
+class _Doc:
+    """``help(formula)`` and ``formula?`` show the formula's own documentation."""
+
+    def __get__(self, obj, cls):
+        return cls._class_doc if obj is None else obj.documentation()
+
+
+Formula._class_doc = Formula.__doc__
+Formula.__doc__ = _Doc()
 
 
 def _value(s, q, spec: Symbol, key: str):

@@ -91,3 +91,13 @@ def test_import_calc_does_not_load_sympy_pandas_or_matplotlib():
     code = "import sys, calc.evaluate, calc.case; print(sorted(m for m in ('sympy', 'pandas', 'matplotlib') if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_documentation_comes_from_the_formula_object():
+    import inspect
+
+    doc = inspect.getdoc(T_2max)
+    assert doc.startswith("T_2max: maximum output torque [N·m]")
+    assert T_2max.latex() in doc
+    assert "T_1B : torque [N·m]" in doc and "source, S5 calculation 2" in doc
+    assert inspect.getdoc(Formula).startswith("One formula of the source document, defined once.")
