@@ -34,7 +34,12 @@ REGISTRY: list["Formula"] = []
 
 @dataclass(frozen=True)
 class Symbol:
-    """A quantity in a formula: its name in code, its LaTeX, its kind and the unit it is shown in."""
+    """A quantity in a formula: its name in code, its LaTeX, its kind and the unit it is shown in.
+
+    A symbol with a ``value`` (such as ``"1 rad"``) is a constant of the formula: callers do not
+    pass it, the formula supplies it. It makes a unit convention explicit where strict angle
+    bookkeeping needs one (errata E15), and is shown in the expression and its substitution.
+    """
 
     name: str
     latex: str
@@ -42,6 +47,7 @@ class Symbol:
     unit: str
     description: str
     per_segment: bool = False
+    value: str | None = None
 
 
 @functools.cache
@@ -145,13 +151,15 @@ class Formula:
         return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": _sum_last_axis}, "numpy"])
 
     def _si_args(self, values: dict) -> list:
-        unknown = set(values) - {s.name for s in self.inputs}
+        takes = [s.name for s in self.inputs if s.value is None]
+        unknown = set(values) - set(takes)
         if unknown:
-            raise CalcError(
-                f"{self.name}: unknown argument {sorted(unknown)[0]!r}; the formula takes {', '.join(s.name for s in self.inputs)}"
-            )
+            raise CalcError(f"{self.name}: unknown argument {sorted(unknown)[0]!r}; the formula takes {', '.join(takes)}")
         args = []
         for s in self.inputs:
+            if s.value is not None:
+                args.append(Q_(s.value).m_as(kind(s.kind).si_unit))
+                continue
             if s.name not in values:
                 raise CalcError(f"{self.name}: missing argument {s.name!r} ({s.description}, {kind(s.kind).name})")
             q = as_kind(values[s.name], s.kind, f"{self.name}: argument {s.name!r}")
@@ -200,6 +208,7 @@ class Formula:
         """The right-hand side with each symbol replaced by its value and unit."""
         s = _sympy()
         expr = self.expr
+        values = {**{c.name: Q_(c.value) for c in self.inputs if c.value is not None}, **values}
         segment_syms = {sym: spec for sym, spec in zip(self._symbols, self.inputs) if spec.per_segment}
         if segment_syms:
             n_seg = {len(np.atleast_1d(values[spec.name].magnitude)) for spec in segment_syms.values()}
