@@ -21,7 +21,7 @@ from .catalog import Catalog, Column, Rule, Schema, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
 from .profile import Profile, T_2m, Z_h, duty, n_2m
-from .units import Q_, as_kind, fmt, sig
+from .units import Q_, as_kind, fmt, kind, pretty_unit, sig
 
 SCHEMA = Schema(
     kind="gearbox",
@@ -281,3 +281,87 @@ def rank(passes, size, worst_utilization, parts) -> np.ndarray:
     worst = np.where(np.isnan(worst_utilization), np.inf, worst_utilization)
     size_key = np.where(passes, size, 0.0)
     return np.lexsort((parts.astype(str), worst, size_key, ~passes))
+
+
+def _display_unit(q) -> str:
+    """rpm for a speed, N·m for a torque: the units the tables and results show."""
+    return "rpm" if kind("speed").accepts(q.units) else "N*m"
+
+
+def candidates_table(selection: GearboxSelection):
+    """Every check of every candidate as a pandas DataFrame, best candidate first.
+
+    Columns: ``rank`` (1 is best), ``part``, ``check`` (the criterion), ``governs`` (the check
+    belongs to the governing mode, E3), ``required``, ``rated`` and ``unit`` (rpm or N·m),
+    ``utilization`` (required / rated; NaN where the catalog gives no rating) and ``verdict``
+    (``pass`` or ``FAIL``). Values are not rounded; round them for display.
+
+    >>> from calc.catalog import load_catalog, resolve
+    >>> from calc.profile import Profile
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(240, "rpm"), Q_(40, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> rows = rows_at_ratio(load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA), 10)
+    >>> t = candidates_table(select_gearbox(p, rows, motor_peak_torque=Q_(12, "N*m")))
+    >>> t.loc[t.part == "NPT035-10", ["check", "verdict"]].values.tolist()
+    [['n_2m · i <= n_1N', 'FAIL'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass'], ['T_2max <= T_2B', 'pass']]
+
+    ``T_2max`` = 12 N·m · 10 · 1.3 (Z_h = 1800 1/h) · 0.97 = 151.32 N·m against ``T_2B`` = 220 N·m:
+
+    >>> t.loc[(t.part == "NPT035-10") & t.governs, ["required", "rated", "utilization"]].round(4).values.tolist()
+    [[2400.0, 6000.0, 0.4], [151.32, 220.0, 0.6878]]
+    """
+    import pandas as pd
+
+    order = selection.order
+    n = len(order)
+    frames = []
+    for position, c in enumerate(selection.checks):
+        unit = _display_unit(c.rated)
+        frames.append(
+            pd.DataFrame(
+                {
+                    "rank": np.arange(1, n + 1),
+                    "part": selection.catalog.parts[order].astype(str),
+                    "check": c.text,
+                    "governs": c.mode == selection.mode,
+                    "required": c.required[order].m_as(unit),
+                    "rated": c.rated[order].m_as(unit),
+                    "unit": pretty_unit(unit),
+                    "utilization": c.utilization[order],
+                    "verdict": np.where(c.passes[order], "pass", "FAIL"),
+                    "_position": position,
+                }
+            )
+        )
+    table = pd.concat(frames).sort_values(["rank", "_position"], kind="stable")
+    return table.drop(columns="_position").reset_index(drop=True)
+
+
+def candidates_summary(selection: GearboxSelection):
+    """One row per candidate, best first, as a pandas DataFrame: the verdict and why.
+
+    Columns: ``rank``, ``part``, ``verdict`` (``PASS``/``FAIL`` on the governing checks),
+    ``worst utilization`` (highest of the governing checks), ``T_2max [N·m]`` (S5, when the motor's
+    peak torque is given), ``inertia ratio`` (E6, when both inertias are given), ``illustrative``
+    (the catalog row is marked as illustrative) and ``reasons`` (each failed governing check with
+    its excess; empty for a pass).
+    """
+    import pandas as pd
+
+    order = selection.order
+    with np.errstate(invalid="ignore"):
+        worst = np.max([c.utilization for c in selection.governing], axis=0)[order]
+    n = len(order)
+    illustrative = selection.catalog.text.get("illustrative", np.full(len(selection.catalog), "no"))
+    table = pd.DataFrame(
+        {
+            "rank": np.arange(1, n + 1),
+            "part": selection.catalog.parts[order].astype(str),
+            "verdict": np.where(selection.passes[order], "PASS", "FAIL"),
+            "worst utilization": worst,
+            "T_2max [N·m]": np.full(n, np.nan) if selection.T_2max is None else selection.T_2max[order].m_as("N*m"),
+            "inertia ratio": np.full(n, np.nan) if selection.inertia_ratio is None else selection.inertia_ratio[order],
+            "illustrative": np.char.lower(illustrative[order].astype(str)) == "yes",
+            "reasons": ["; ".join(selection.reasons(row)) for row in order],
+        }
+    )
+    return table

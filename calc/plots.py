@@ -1,0 +1,242 @@
+"""Figures of the gearbox selection: the load cycle, the shock-factor table and the utilizations.
+
+Each function returns a :class:`matplotlib.figure.Figure` built without pyplot, so no global
+figure state is left behind: a notebook shows it (after ``%matplotlib inline``), a report saves it
+with ``fig.savefig``. matplotlib is imported inside each function, so ``import calc`` stays light.
+Figures are deterministic (fixed sizes, colours and text) and labelled for a printed page: axes
+with symbol and unit, a title, a legend.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .gearbox import SHOCK_FACTORS, GearboxSelection, shock_factor
+from .profile import S5_MAX_ED, S5_MAX_ON_TIME, Duty, Profile
+from .profile import duty as profile_duty
+from .units import as_kind, fmt, sig
+
+SPEED_COLOR = "#1f5fa8"
+TORQUE_COLOR = "#b2222a"
+ON_COLOR = "#d7e6f5"
+PAUSE_COLOR = "#e4e4e4"
+CASE_COLOR = "#d95f02"
+CHECK_COLORS = ("#1f5fa8", "#e08a1e", "#5a9e3a", "#8e5ba8")
+
+#: A segment narrower than this share of the cycle gets no value or phase label (they would overlap).
+_LABEL_MIN_SHARE = 0.06
+
+
+def load_cycle_figure(profile: Profile, duty: Duty | None = None):
+    """Output speed and output torque against time over one cycle, on-time and pauses shaded.
+
+    The profile gives each segment's *mean* output speed, so each segment is drawn as a step at
+    the value the profile holds: an acceleration from 0 to 300 rpm appears at its mean, 150 rpm,
+    not as a ramp (the figure says so). Torques keep their sign. The title gives ED, the on-time,
+    the cycle time and the operating mode (errata E3).
+
+    Parameters
+    ----------
+    profile : Profile
+        The load cycle.
+    duty : Duty, optional
+        Its duty cycle; computed with :func:`calc.profile.duty` when not given.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two axes sharing time: speed [rpm] above, torque [N·m] below.
+
+    Examples
+    --------
+    >>> from calc import Q_
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> [ax.get_ylabel() for ax in load_cycle_figure(p).axes]
+    ['mean output speed $n_2$ [rpm]', 'output torque $T_2$ [N·m]']
+    """
+    from matplotlib.figure import Figure
+    from matplotlib.patches import Patch
+    from matplotlib.transforms import blended_transform_factory
+
+    d = profile_duty(profile) if duty is None else duty
+    edges = np.concatenate([[0.0], np.cumsum(profile.durations.m_as("s"))])
+    cycle = edges[-1]
+    moving = profile.moving
+    speeds = profile.speeds.m_as("rpm")
+    torques = profile.torques.m_as("N*m")
+
+    fig = Figure(figsize=(8.0, 6.2), layout="constrained")
+    ax_n, ax_T = fig.subplots(2, 1, sharex=True)
+    series = (
+        (ax_n, speeds, SPEED_COLOR, "mean output speed $n_2$ [rpm]", "rpm"),
+        (ax_T, torques, TORQUE_COLOR, "output torque $T_2$ [N·m]", "N·m"),
+    )
+    steps = []
+    for ax, values, color, ylabel, unit in series:
+        for k in range(len(values)):
+            ax.axvspan(edges[k], edges[k + 1], color=ON_COLOR if moving[k] else PAUSE_COLOR, linewidth=0, zorder=0)
+        ax.axhline(0.0, color="black", linewidth=0.8, zorder=1)
+        steps.append(ax.stairs(values, edges, baseline=None, color=color, linewidth=2.2, zorder=3, label=ylabel))
+        ax.set_ylabel(ylabel)
+        low, high = min(0.0, values.min()), max(0.0, values.max())
+        pad = 0.18 * (high - low) if high > low else 1.0
+        ax.set_ylim(low - pad, high + pad)
+        ax.grid(True, axis="y", color="white", linewidth=0.8, zorder=0)
+        for k in np.flatnonzero(moving & (np.diff(edges) >= _LABEL_MIN_SHARE * cycle)):
+            v = values[k]
+            ax.annotate(
+                f"{sig(v, 3)} {unit}", ((edges[k] + edges[k + 1]) / 2, v), xytext=(0, 5 if v >= 0 else -5),
+                textcoords="offset points", ha="center", va="bottom" if v >= 0 else "top", fontsize=8, color=color,
+            )
+    top = blended_transform_factory(ax_n.transData, ax_n.transAxes)
+    for k in np.flatnonzero(np.diff(edges) >= _LABEL_MIN_SHARE * cycle):
+        ax_n.text((edges[k] + edges[k + 1]) / 2, 1.02, profile.phases[k], transform=top, ha="center", va="bottom", fontsize=8)
+    ax_T.set_xlabel("time $t$ [s]")
+    ax_T.set_xlim(0.0, cycle)
+
+    ed, t_on, t_cycle = d.ED.m_as("percent"), d.t_on, d.t_cycle
+    fig.suptitle(
+        f"Load cycle: ED = {sig(ed, 3)} % (on-time {fmt(t_on, 's')} of a {fmt(t_cycle, 's')} cycle), mode {d.mode}\n"
+        f"E3: S5 if and only if ED < {sig(S5_MAX_ED.m_as('percent'))} % and on-time < {sig(S5_MAX_ON_TIME.m_as('min'))} min, "
+        "otherwise S1",
+        fontsize=10,
+    )
+    ax_n.set_title("speed: each segment at its mean, as the profile gives it (accel and decel are not drawn as ramps)", fontsize=8, pad=16)
+    handles = [
+        *steps,
+        Patch(color=ON_COLOR, label=f"on-time (moving), {fmt(t_on, 's')}"),
+        Patch(color=PAUSE_COLOR, label=f"pause, {fmt(t_cycle - t_on, 's')}"),
+    ]
+    fig.legend(handles=handles, loc="outside lower center", ncols=4, fontsize=8, frameon=False)
+    return fig
+
+
+def shock_factor_figure(cycles_per_hour=None):
+    """The shock-factor table (errata E4) as a step plot against ``Z_h``, the case's point marked.
+
+    Each band of :data:`calc.gearbox.SHOCK_FACTORS` is a horizontal line from its lowest ``Z_h``
+    (filled marker: the boundary belongs to this band) to the next band's lowest ``Z_h`` (open
+    marker: excluded), so a boundary takes the higher factor, as E4 reads the source's table.
+
+    Parameters
+    ----------
+    cycles_per_hour : Quantity [1/time], optional
+        The case's ``Z_h``; marked with its factor from :func:`calc.gearbox.shock_factor`.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes; the case's point is the line with gid ``"case"``.
+
+    Examples
+    --------
+    >>> from calc import Q_
+    >>> case = next(l for l in shock_factor_figure(Q_(1800, "1/hour")).axes[0].lines if l.get_gid() == "case")
+    >>> float(case.get_xdata()[0]), float(case.get_ydata()[0])
+    (1800.0, 1.3)
+    """
+    from matplotlib.figure import Figure
+    from matplotlib.lines import Line2D
+
+    bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
+    factors = np.array([f for _, f in SHOCK_FACTORS], dtype=float)
+    z_case = None
+    if cycles_per_hour is not None:
+        z_case = float(as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as("1/hour"))
+        f_case = float(shock_factor(cycles_per_hour))
+    x_end = bounds[-1] + (bounds[-1] - bounds[-2])
+    if z_case is not None and z_case > 0.9 * x_end:
+        x_end = 1.15 * z_case
+
+    fig = Figure(figsize=(7.5, 4.6), layout="constrained")
+    ax = fig.subplots()
+    right = np.append(bounds[1:], x_end)
+    ax.hlines(factors, bounds, right, color=SPEED_COLOR, linewidth=2.5, zorder=2)
+    ax.vlines(bounds[1:], factors[:-1], factors[1:], color=SPEED_COLOR, linewidth=0.8, linestyles=":", zorder=1)
+    ax.plot(bounds, factors, "o", color=SPEED_COLOR, markersize=7, zorder=3, gid="included")
+    ax.plot(bounds[1:], factors[:-1], "o", markerfacecolor="white", markeredgecolor=SPEED_COLOR, markersize=7, zorder=3, gid="excluded")
+    ax.annotate("", (x_end, factors[-1]), xytext=(x_end - 0.06 * x_end, factors[-1]),
+                arrowprops=dict(arrowstyle="->", color=SPEED_COLOR, linewidth=2.5))
+    for lo, hi, f in zip(bounds, right, factors):
+        ax.text((lo + hi) / 2, f + 0.03, f"$f_s$ = {f:.1f}", ha="center", va="bottom", fontsize=9)
+
+    handles = [
+        Line2D([], [], marker="o", color=SPEED_COLOR, linestyle="none", label="boundary included in the band"),
+        Line2D([], [], marker="o", markerfacecolor="white", markeredgecolor=SPEED_COLOR, linestyle="none",
+               label="boundary excluded (the higher factor applies, E4)"),
+    ]
+    if z_case is not None:
+        ax.vlines(z_case, 0.0, f_case, color=CASE_COLOR, linewidth=1, linestyles="--", zorder=2)
+        ax.hlines(f_case, 0.0, z_case, color=CASE_COLOR, linewidth=1, linestyles="--", zorder=2)
+        label = f"this case: $Z_h$ = {sig(z_case)} 1/h, $f_s$ = {f_case:g}"
+        ax.plot([z_case], [f_case], marker="*", markersize=16, color=CASE_COLOR, markeredgecolor="black",
+                linestyle="none", zorder=4, gid="case", label=label)
+        handles.append(ax.lines[-1])
+
+    ax.set_xlim(-0.02 * x_end, x_end)
+    ax.set_ylim(0.9, factors[-1] + 0.2)
+    ax.set_xticks(bounds)
+    ax.set_yticks(factors)
+    ax.grid(True, color="#dddddd", linewidth=0.6, zorder=0)
+    ax.set_xlabel("cycles per hour $Z_h$ = 3600 s / $t_{cycle}$ [1/h]")
+    ax.set_ylabel("shock factor $f_s$ [–]")
+    ax.set_title("Shock factor against cycles per hour (source S5 table, read with errata E4)\n"
+                 "makers rate $T_{2B}$ for up to 1000 cycles per hour; $f_s$ covers more", fontsize=10)
+    ax.legend(handles=handles, loc="upper left", fontsize=8)
+    return fig
+
+
+def utilization_figure(selection: GearboxSelection, limit: int = 12):
+    """Bar chart of each candidate's governing-check utilizations (required / rated), best first.
+
+    The dashed line at 1 is the limit; a bar above it is a failed check (hatched). A check whose
+    rated value the catalog leaves empty has no bar and is labelled "no rating".
+
+    Parameters
+    ----------
+    selection : GearboxSelection
+        The checked and ranked catalog rows.
+    limit : int
+        Draw at most this many candidates, best first (the title says how many there are).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes, one bar group per candidate, one bar per governing check.
+    """
+    from matplotlib.figure import Figure
+
+    candidates = selection.candidates()[:limit]
+    total = len(selection.order)
+    checks = [c for c in candidates[0].checks if c["governs"]]
+    x = np.arange(len(candidates))
+    width = 0.8 / len(checks)
+
+    fig = Figure(figsize=(max(6.5, 1.15 * len(candidates) + 2.5), 4.8), layout="constrained")
+    ax = fig.subplots()
+    top = 1.0
+    for j, check in enumerate(checks):
+        u = np.array([next(k["utilization"] for k in c.checks if k["name"] == check["name"]) for c in candidates])
+        bars = ax.bar(x + (j - (len(checks) - 1) / 2) * width, np.nan_to_num(u, nan=0.0), width, color=CHECK_COLORS[j % len(CHECK_COLORS)],
+                      label=check["text"], zorder=2)
+        for bar, value in zip(bars, u):
+            if value > 1.0:
+                bar.set_hatch("///")
+                bar.set_edgecolor("black")
+        ax.bar_label(bars, labels=["no rating" if np.isnan(v) else f"{v:.2f}" for v in u], fontsize=8, padding=2)
+        top = max(top, np.nanmax(u, initial=0.0))
+    ax.axhline(1.0, color="black", linestyle="--", linewidth=1.2, zorder=3, label="limit: utilization 1")
+    labels = []
+    for c in candidates:
+        verdict = "PASS" if c.passes else "FAIL"
+        mark = " (selected)" if c.part == selection.selected else ""
+        labels.append(f"{c.part}\n{verdict}{mark}" + ("\nillustrative" if c.illustrative else ""))
+    ax.set_xticks(x, labels, fontsize=8)
+    ax.set_ylim(0.0, 1.18 * top)
+    ax.set_ylabel("utilization = required / rated [–]")
+    ax.set_xlabel("catalog candidate, best first")
+    shown = f"best {len(candidates)} of {total}" if total > len(candidates) else f"{total} candidate{'s' if total != 1 else ''}"
+    ax.set_title(f"Utilization of the governing {selection.mode} checks, {shown} (hatched: over the limit)", fontsize=10)
+    ax.grid(True, axis="y", color="#dddddd", linewidth=0.6, zorder=0)
+    ax.legend(loc="upper left", fontsize=8)
+    return fig

@@ -1,0 +1,185 @@
+"""Figures (load cycle, shock factor, utilization) and the candidate tables of a selection."""
+
+import numpy as np
+import pytest
+from matplotlib.patches import StepPatch
+
+from calc import Q_
+from calc.catalog import load_catalog
+from calc.gearbox import SCHEMA, SHOCK_FACTORS, candidates_summary, candidates_table, rows_at_ratio, select_gearbox
+from calc.plots import load_cycle_figure, shock_factor_figure, utilization_figure
+from calc.profile import Profile, Z_h, duty
+
+from .conftest import GEARBOXES
+from .test_profile import example_profile
+
+
+@pytest.fixture(scope="module")
+def selection():
+    """The example case at ratio 10 (S5): NPT035-10 passes, TP010-10 and SP075-10 fail on T_2B."""
+    rows = rows_at_ratio(load_catalog(GEARBOXES, SCHEMA), Q_(10, ""))
+    return select_gearbox(example_profile(), rows, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2"))
+
+
+def _texts(fig):
+    out = [fig.get_suptitle()]
+    for ax in fig.axes:
+        out += [ax.get_title(), ax.get_xlabel(), ax.get_ylabel(), *(t.get_text() for t in ax.texts)]
+    for legend in fig.legends + [ax.get_legend() for ax in fig.axes if ax.get_legend()]:
+        out += [t.get_text() for t in legend.get_texts()]
+    return "\n".join(out)
+
+
+def test_load_cycle_figure_draws_the_profile_as_given():
+    p = example_profile()
+    fig = load_cycle_figure(p)
+    ax_n, ax_T = fig.axes
+    steps = [[a for a in ax.patches if isinstance(a, StepPatch)] for ax in (ax_n, ax_T)]
+    assert [len(s) for s in steps] == [1, 1]
+    # Each segment at its value: mean speeds 150, 300, 150, 0 rpm; torques 60, 20, -45, 0 N·m;
+    # segment edges at 0, 0.2, 0.8, 1.0 and 2.0 s.
+    speed, torque = steps[0][0].get_data(), steps[1][0].get_data()
+    np.testing.assert_allclose(speed.values, [150, 300, 150, 0])
+    np.testing.assert_allclose(torque.values, [60, 20, -45, 0])
+    np.testing.assert_allclose(speed.edges, [0, 0.2, 0.8, 1.0, 2.0])
+    assert ax_n.get_shared_x_axes().joined(ax_n, ax_T)
+    assert ax_n.get_ylabel() == "mean output speed $n_2$ [rpm]"
+    assert ax_T.get_ylabel() == "output torque $T_2$ [N·m]"
+    assert ax_T.get_xlabel() == "time $t$ [s]"
+    text = _texts(fig)
+    # ED = (0.2 + 0.6 + 0.2) / 2.0 = 50 % → S5 (E3); the legend names on-time and pause.
+    assert "ED = 50 %" in text and "mode S5" in text
+    assert "on-time (moving), 1 s" in text and "pause, 1 s" in text
+    assert "mean" in ax_n.get_title()
+    for name in ("accel", "const", "decel", "pause"):
+        assert name in text
+
+
+def test_load_cycle_figure_shades_on_time_and_pause():
+    p = example_profile()
+    fig = load_cycle_figure(p)
+    for ax in fig.axes:
+        spans = [a for a in ax.patches if not isinstance(a, StepPatch)]
+        assert len(spans) == 4  # one span per segment: three moving, one pause
+        colors = [a.get_facecolor() for a in spans]
+        assert colors[0] == colors[1] == colors[2] != colors[3]
+
+
+def test_load_cycle_figure_takes_a_given_duty_and_s1():
+    # An S1 variant: pause 0.5 s → ED = 1 / 1.5 = 66.7 % ≥ 60 % → S1 (E3).
+    p = Profile.from_segments(
+        [
+            ("const", Q_(1, "s"), Q_(-100, "rpm"), Q_(10, "N*m")),
+            ("pause", Q_(0.5, "s"), None, None),
+        ]
+    )
+    fig = load_cycle_figure(p, duty(p))
+    assert "ED = 66.7 %" in fig.get_suptitle() and "mode S1" in fig.get_suptitle()
+    low, high = fig.axes[0].get_ylim()
+    assert low < -100 and high > 0  # a negative speed stays negative and zero stays in view
+
+
+def test_shock_factor_figure_draws_the_table_with_e4_boundaries():
+    fig = shock_factor_figure()
+    (ax,) = fig.axes
+    lines = {line.get_gid(): line for line in ax.lines}
+    assert "case" not in lines
+    bounds = [b for b, _ in SHOCK_FACTORS]
+    factors = [f for _, f in SHOCK_FACTORS]
+    # E4: each boundary is included (filled) in the band it starts and excluded (open) from the one it ends.
+    np.testing.assert_array_equal(lines["included"].get_xdata(), bounds)
+    np.testing.assert_array_equal(lines["included"].get_ydata(), factors)
+    np.testing.assert_array_equal(lines["excluded"].get_xdata(), bounds[1:])
+    np.testing.assert_array_equal(lines["excluded"].get_ydata(), factors[:-1])
+    assert lines["excluded"].get_markerfacecolor() == "white"
+    assert "$Z_h$" in ax.get_xlabel() and "[1/h]" in ax.get_xlabel()
+    assert "$f_s$" in ax.get_ylabel()
+    assert "E4" in ax.get_title()
+
+
+@pytest.mark.parametrize("t_cycle, z, fs", [(2.0, 1800, 1.3), (2.4, 1500, 1.3), (7.2, 500, 1.0), (0.5, 7200, 2.0)])
+def test_shock_factor_figure_marks_the_case(t_cycle, z, fs):
+    # Z_h = 3600 s / t_cycle; a point on a boundary (1500) takes the higher factor (E4).
+    fig = shock_factor_figure(Z_h(t_cycle=Q_(t_cycle, "s")))
+    (ax,) = fig.axes
+    (case,) = [line for line in ax.lines if line.get_gid() == "case"]
+    assert case.get_xdata()[0] == pytest.approx(z)
+    assert case.get_ydata()[0] == fs
+    assert ax.get_xlim()[1] > z  # the point is inside the plot, also far to the right
+    assert f"this case: $Z_h$ = {z} 1/h, $f_s$ = {fs:g}" in _texts(fig)
+
+
+def test_utilization_figure_bars_the_governing_checks(selection):
+    fig = utilization_figure(selection)
+    (ax,) = fig.axes
+    bars = {c.get_label(): c for c in ax.containers}
+    assert set(bars) == {"n_2max · i <= n_1max", "T_2max <= T_2B"}  # S5 governs: the S1 checks are not drawn
+    # Best first: NPT035-10, TP010-10, SP075-10; T_2max = 151.32 N·m against T_2B 220, 126, 102.
+    heights = [b.get_height() for b in bars["T_2max <= T_2B"]]
+    np.testing.assert_allclose(heights, [151.32 / 220, 151.32 / 126, 151.32 / 102])
+    np.testing.assert_allclose([b.get_height() for b in bars["n_2max · i <= n_1max"]], [3000 / 6000, 3000 / 7500, 3000 / 7500])
+    assert [b.get_hatch() for b in bars["T_2max <= T_2B"]] == [None, "///", "///"]
+    labels = [t.get_text() for t in ax.get_xticklabels()]
+    assert labels == ["NPT035-10\nPASS (selected)", "TP010-10\nFAIL", "SP075-10\nFAIL\nillustrative"]
+    limit = [line for line in ax.lines if line.get_label() == "limit: utilization 1"]
+    assert limit and limit[0].get_ydata()[0] == 1.0
+    assert "S5" in ax.get_title() and "[–]" in ax.get_ylabel()
+
+
+def test_utilization_figure_limits_the_candidates(selection):
+    fig = utilization_figure(selection, limit=2)
+    (ax,) = fig.axes
+    assert len(ax.get_xticks()) == 2
+    assert "best 2 of 3" in ax.get_title()
+
+
+def test_utilization_figure_marks_a_missing_rating():
+    # A catalog row without n_1N: the S1 speed check has no rated value → no bar, "no rating".
+    from calc.catalog import Catalog
+
+    rows = rows_at_ratio(load_catalog(GEARBOXES, SCHEMA), Q_(10, ""))
+    values = dict(rows.values)
+    n_1N = rows["n_1N"].m_as("rpm").copy()
+    n_1N[rows.parts == "NPT035-10"] = np.nan
+    values["n_1N"] = Q_(n_1N, "rpm")
+    rows = Catalog(rows.name, rows.path, rows.sha256, rows.schema, rows.parts, values, rows.text, rows.lines)
+    p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m"))])  # ED 100 % → S1
+    sel = select_gearbox(p, rows)
+    fig = utilization_figure(sel)
+    texts = [t.get_text() for t in fig.axes[0].texts]
+    assert "no rating" in texts
+    table = candidates_table(sel)
+    missing = table[(table.part == "NPT035-10") & (table.check == "n_2m · i <= n_1N")]
+    assert np.isnan(missing.utilization.iloc[0]) and missing.verdict.iloc[0] == "FAIL"
+
+
+def test_candidates_table_rows_and_values(selection):
+    t = candidates_table(selection)
+    assert list(t.columns) == ["rank", "part", "check", "governs", "required", "rated", "unit", "utilization", "verdict"]
+    assert len(t) == 3 * 4  # three candidates at ratio 10, four checks each
+    assert t.part.tolist()[::4] == ["NPT035-10", "TP010-10", "SP075-10"]
+    assert t["rank"].tolist()[::4] == [1, 2, 3]
+    row = t[(t.part == "TP010-10") & (t.check == "T_2max <= T_2B")].iloc[0]
+    # Hand calculation: T_2max = 12 · 10 · 1.3 · 0.97 = 151.32 N·m against T_2B = 126 N·m → 1.201, FAIL.
+    assert row.required == pytest.approx(151.32)
+    assert row.rated == 126
+    assert row.unit == "N·m"
+    assert row.utilization == pytest.approx(151.32 / 126)
+    assert row.verdict == "FAIL" and bool(row.governs)
+    row = t[(t.part == "NPT035-10") & (t.check == "n_2m · i <= n_1N")].iloc[0]
+    # E1, for information in S5: n_2m · i = 240 · 10 = 2400 rpm against n_1N = 2300 rpm.
+    assert (row.required, row.rated, row.unit, row.verdict, bool(row.governs)) == (2400, 2300, "rpm", "FAIL", False)
+
+
+def test_candidates_summary_gives_verdict_and_reasons(selection):
+    s = candidates_summary(selection)
+    assert s.part.tolist() == ["NPT035-10", "TP010-10", "SP075-10"]
+    assert s.verdict.tolist() == ["PASS", "FAIL", "FAIL"]
+    np.testing.assert_allclose(s["worst utilization"], [151.32 / 220, 151.32 / 126, 151.32 / 102])
+    np.testing.assert_allclose(s["T_2max [N·m]"], 151.32)
+    # E6: λ = (J_1 + J_L / i²) / J_motor = (0.93 + 1500 / 100) / 4.2 = 3.793; SP075-10 has no J_1.
+    assert s["inertia ratio"].iloc[0] == pytest.approx(15.93 / 4.2)
+    assert np.isnan(s["inertia ratio"].iloc[2])
+    assert s.illustrative.tolist() == [False, False, True]
+    assert s.reasons.iloc[0] == ""
+    assert s.reasons.iloc[1] == "T_2max <= T_2B: required 151.3 N·m > rated 126 N·m, 20.1 % over"
