@@ -130,6 +130,28 @@ class Profile:
         m = self.moving
         return {"n_2k": self.speeds[m], "t_k": self.durations[m], "T_2k": self.torques[m]}
 
+    def to_frame(self):
+        """The segments as a pandas DataFrame, units in the column names (for display).
+
+        >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+        >>> f = p.to_frame()
+        >>> list(f.columns)
+        ['segment', 'phase', 'duration t [s]', 'mean output speed n_2 [rpm]', 'output torque T_2 [N·m]']
+        >>> f["duration t [s]"].tolist(), f["mean output speed n_2 [rpm]"].tolist()
+        ([1.0, 1.0], [100.0, 0.0])
+        """
+        import pandas as pd
+
+        return pd.DataFrame(
+            {
+                "segment": np.arange(1, len(self.phases) + 1),
+                "phase": self.phases,
+                "duration t [s]": np.asarray(self.durations.m_as("s"), dtype=float),
+                "mean output speed n_2 [rpm]": np.asarray(self.speeds.m_as("rpm"), dtype=float),
+                "output torque T_2 [N·m]": np.asarray(self.torques.m_as("N*m"), dtype=float),
+            }
+        )
+
 
 def operating_mode(duty_cycle, on_time) -> str:
     """``"S5"`` if and only if ``ED < 60 %`` and ``t_on < 20 min``; every other case ``"S1"`` (E3).
