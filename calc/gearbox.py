@@ -20,7 +20,7 @@ import numpy as np
 from .catalog import Catalog, Column, Rule, Schema, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
-from .profile import Profile, T_2m, Z_h, duty, n_2m
+from .profile import BOUNDARY_RTOL, Profile, T_2m, Z_h, duty, n_2m
 from .units import Q_, as_kind, fmt, kind, pretty_unit, sig
 
 SCHEMA = Schema(
@@ -89,15 +89,20 @@ inertia_ratio = Formula(
 def shock_factor(cycles_per_hour):
     """Shock factor ``f_s`` for ``Z_h`` cycles per hour (errata E4), scalar or array.
 
+    A value within :data:`calc.profile.BOUNDARY_RTOL` below a boundary counts as on it: a cycle of
+    0.1 + 0.1 + 0.1 + 2.1 s = 2.4000000000000004 s gives 1499.9999999999998 cycles per hour, which is 1500.
+
     >>> [float(shock_factor(Q_(z, "1/hour"))) for z in (999, 1000, 1499, 1500, 2000, 3000)]
     [1.0, 1.1, 1.1, 1.3, 1.6, 2.0]
+    >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
+    1.3
     """
     z = as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as("1/hour")
     if np.any(np.asarray(z) < 0):
         raise CalcError(f"cycles_per_hour: expected zero or more cycles per hour, found {z}")
     bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
     factors = np.array([f for _, f in SHOCK_FACTORS])
-    return factors[np.searchsorted(bounds, z, side="right") - 1]
+    return factors[np.searchsorted(bounds, z * (1 + BOUNDARY_RTOL), side="right") - 1]
 
 
 @dataclass(frozen=True)

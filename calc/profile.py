@@ -21,6 +21,11 @@ PHASES = ("accel", "const", "decel", "pause")
 S5_MAX_ED = Q_(60, "percent")
 S5_MAX_ON_TIME = Q_(20, "min")
 
+#: A value within this relative distance below a boundary of E3 or E4 counts as on it: a sum of
+#: durations carries rounding (0.6 s + 0.7 s + 0.2 s = 1.4999999999999998 s, an ED of 1.5 s / 2.5 s
+#: would fall just below 60 %).
+BOUNDARY_RTOL = 1e-9
+
 t_on = Symbol("t_on", r"t_{\mathrm{on}}", "time", "s", "on-time, t_a + t_c + t_d (moving segments)")
 t_cycle = Symbol("t_cycle", r"t_{\mathrm{cycle}}", "time", "s", "cycle time, pauses included")
 t_k = Symbol("t_k", "t_{k}", "time", "s", "duration of moving segment k", per_segment=True)
@@ -156,12 +161,17 @@ class Profile:
 def operating_mode(duty_cycle, on_time) -> str:
     """``"S5"`` if and only if ``ED < 60 %`` and ``t_on < 20 min``; every other case ``"S1"`` (E3).
 
+    A value within :data:`BOUNDARY_RTOL` below a boundary counts as on it (rounding of sums).
+
     >>> operating_mode(Q_(50, "percent"), Q_(1, "s")), operating_mode(Q_(60, "percent"), Q_(1, "s"))
     ('S5', 'S1')
+    >>> operating_mode(Q_((0.6 + 0.7 + 0.2) / 2.5, ""), Q_(1.5, "s"))  # 1.5 s of 2.5 s is 60 %
+    'S1'
     """
-    ed = as_kind(duty_cycle, "dimensionless", "duty_cycle")
-    t = as_kind(on_time, "time", "on_time")
-    return "S5" if (ed < S5_MAX_ED and t < S5_MAX_ON_TIME) else "S1"
+    ed = as_kind(duty_cycle, "dimensionless", "duty_cycle").m_as("")
+    t = as_kind(on_time, "time", "on_time").m_as("s")
+    below = 1 - BOUNDARY_RTOL
+    return "S5" if (ed < S5_MAX_ED.m_as("") * below and t < S5_MAX_ON_TIME.m_as("s") * below) else "S1"
 
 
 @dataclass(frozen=True)
