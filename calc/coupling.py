@@ -1,0 +1,678 @@
+"""Couplings and safety couplings: sizing torque, temperature factor, resonance, selection, order.
+
+Source: "Sizing and Selecting for Couplings and Safety Couplings", read with errata E7 to E10,
+E14 and E15. The coupling sees the acceleration torque ``M_a`` of the motor split by the inertias
+on its two sides; the load factor ``S_A`` (E8) gives its nominal torque ``M_N``, and an
+elastomer coupling's torque is further multiplied by a temperature factor (E9). The coupling is
+the spring of a two-mass system whose natural frequency ``f_e`` must be at least twice the
+excitation frequency of the drive (E7). A line shaft's stiffness comes from its two bellows and
+its tube at the case's shaft distance; a safety coupling's disengagement torque ``T_A`` must lie
+in the size's adjustable range and above the peak torque of normal operation (E10).
+
+Every row of a catalog (or of the requested type) is checked at once, as numpy arrays over the
+rows. The case's inertias are those of the machine without the coupling: each candidate's own
+inertia is added, half to each side (E7).
+
+Ranking rule: passing candidates first; among them the smallest adequate size, measured by the
+rated torque ``T_KN``, then the larger margin (lower worst utilization); failing candidates
+after, closest to passing first. Ties go by part name (:func:`calc.gearbox.rank`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .case import Case, Section
+from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, no_less, resolve
+from .errors import CalcError
+from .fits import Bore, parse_bore
+from .formula import Formula, Symbol
+from .gearbox import CheckArray, rank
+from .units import Q_, as_kind, fmt, pretty_unit, sig
+
+TYPES = ("bellows", "elastomer", "safety", "line-shaft")
+
+#: How the source's ordering examples head each kind of coupling.
+ORDER_TITLES = {
+    "bellows": "Standard coupling",
+    "elastomer": "Standard coupling",
+    "safety": "Safety coupling",
+    "line-shaft": "Drive shaft coupling",
+}
+
+#: S_A when the case gives none (errata E8: servo drives on machine tools 2 to 3).
+DEFAULT_SERVICE_FACTOR = 2.5
+
+#: Temperature factor of elastomer couplings (source, Sizing 3; errata E9: the higher factor at a
+#: boundary). Each row is (lowest temperature of the band in °C, factor). Another maker's table
+#: can be passed to :func:`temperature_factor` instead.
+TEMPERATURE_FACTORS = ((-math.inf, 1.0), (50.0, 1.3), (70.0, 1.6), (90.0, 1.8), (110.0, 2.0))
+
+SCHEMA = Schema(
+    kind="coupling",
+    columns=(
+        Column("T_KN", "torque", "rated torque"),
+        Column("T_Kmax", "torque", "maximum torque", required=False),
+        Column("C_T", "stiffness", "torsional stiffness (of the two bellows for a line shaft)", required=False),
+        Column("C_tube", "stiffness_length", "tube stiffness per unit length (line shafts)", required=False),
+        Column("J", "inertia", "inertia of the whole coupling", required=False),
+        Column("n_max", "speed", "maximum speed", required=False),
+        Column("d_1min", "length", "smallest bore of hub 1", required=False),
+        Column("d_1max", "length", "largest bore of hub 1", required=False),
+        Column("d_2min", "length", "smallest bore of hub 2", required=False),
+        Column("d_2max", "length", "largest bore of hub 2", required=False),
+        Column("T_Amin", "torque", "smallest disengagement torque (safety couplings)", required=False),
+        Column("T_Amax", "torque", "largest disengagement torque (safety couplings)", required=False),
+        Column("H", "length", "hub length (line shafts)", required=False),
+        Column("A_max", "length", "longest distance between shafts (line shafts)", required=False),
+    ),
+    text_columns=("part", "series", "size", "type", "source"),
+    optional_text=("illustrative",),
+    rules=(
+        Rule("T_Kmax >= T_KN", no_less("T_Kmax", "T_KN"), "T_Kmax"),
+        Rule("d_1max >= d_1min", no_less("d_1max", "d_1min"), "d_1max"),
+        Rule("d_2max >= d_2min", no_less("d_2max", "d_2min"), "d_2max"),
+        Rule("T_Amax >= T_Amin", no_less("T_Amax", "T_Amin"), "T_Amax"),
+        Rule("A_max > 2 H", lambda v: np.isnan(v["A_max"].magnitude) | (v["A_max"] > 2 * v["H"]), "A_max"),
+    ),
+)
+
+#: Columns a row of each type must fill (besides T_KN).
+_TYPE_NEEDS = {"safety": ("T_Amin", "T_Amax"), "line-shaft": ("C_T", "C_tube", "H")}
+
+# Symbols of the source's sizing section.
+_M_a = Symbol("M_a", "M_{a}", "torque", "N*m", "acceleration torque of the motor")
+_J_load = Symbol("J_load", r"J_{\mathrm{load}}", "inertia", "kg*cm**2", "load-side inertia as the coupling sees it")
+_J_drive = Symbol("J_drive", r"J_{\mathrm{drive}}", "inertia", "kg*cm**2", "drive-side inertia")
+_S_A = Symbol("S_A", "S_{A}", "dimensionless", "", "load (shock) factor")
+_M_N = Symbol("M_N", "M_{N}", "torque", "N*m", "nominal torque of the coupling")
+_K_T = Symbol("K_T", r"K_{\vartheta}", "dimensionless", "", "temperature factor (elastomer couplings)")
+_J_K = Symbol("J_K", "J_{K}", "inertia", "kg*cm**2", "inertia of the coupling")
+_J_A = Symbol("J_A", "J_{A}", "inertia", "kg*cm**2", "drive side with half the coupling")
+_J_L = Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load side with half the coupling")
+_C_T = Symbol("C_T", "C_{T}", "stiffness", "N*m/rad", "torsional stiffness of the coupling")
+_f_er = Symbol("f_er", "f_{er}", "frequency", "Hz", "excitation frequency of the drive")
+_A = Symbol("A", "A", "length", "mm", "distance between the shafts")
+_H = Symbol("H", "H", "length", "mm", "hub length")
+_Z = Symbol("Z", "Z", "length", "mm", "tube length")
+_C_B = Symbol("C_B", "C_{B}", "stiffness", "N*m/rad", "stiffness of the two bellows together")
+_C_tube = Symbol("C_tube", r"C_{\mathrm{tube}}", "stiffness_length", "N*m**2/rad", "tube stiffness per unit length")
+_T = Symbol("T", "T", "torque", "N*m", "torque through the coupling")
+
+#: The radian as a constant of a formula. With angles counted as a dimension (errata E15), the
+#: law of rotation reads J·α = T·rad: a torque of 1 N·m accelerates 1 kg·m² at 1 rad/s². So a
+#: spring rate in N·m/rad over an inertia gives 1/s² only after that factor; pint, which drops
+#: angles, computes the same number.
+RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad with angles as a dimension, E15)", value="1 rad")
+
+M_N = Formula(
+    _M_N,
+    (_M_a, _J_load, _J_drive, _S_A),
+    lambda sp, M_a, J_load, J_drive, S_A: M_a * J_load / (J_load + J_drive) * S_A,
+    "source, Couplings, Sizing 1; errata E8 (the factor 2.5 is the load factor S_A, default 2.5)",
+)
+
+M_Nt = Formula(
+    Symbol("M_Nt", r"M_{N\vartheta}", "torque", "N*m", "nominal torque with the temperature factor"),
+    (_M_N, _K_T),
+    lambda sp, M_N, K_T: M_N * K_T,
+    "source, Couplings, Sizing 3 (multiply M_N by the temperature factor); errata E9 (elastomer couplings only)",
+)
+
+
+def _with_half_coupling(result: Symbol, side: Symbol) -> Formula:
+    return Formula(
+        result,
+        (side, _J_K),
+        lambda sp, J, J_K: J + J_K / 2,
+        "source, Couplings (J_mot, J_moch: inertia + 1/2 coupling inertia); errata E7",
+    )
+
+
+J_A = _with_half_coupling(_J_A, _J_drive)
+J_L = _with_half_coupling(_J_L, _J_load)
+
+f_e = Formula(
+    Symbol("f_e", "f_{e}", "frequency", "Hz", "natural frequency of the two-mass system"),
+    (_C_T, RADIAN, _J_A, _J_L),
+    lambda sp, C_T, rad, J_A, J_L: sp.sqrt(C_T * rad * (J_A + J_L) / (J_A * J_L)) / (2 * sp.pi),
+    "source, Couplings, Sizing 2 (garbled there); errata E7 (two-mass system, coupling as the spring)",
+)
+
+f_e_min = Formula(
+    Symbol("f_e_min", r"f_{e,\mathrm{min}}", "frequency", "Hz", "lowest natural frequency allowed"),
+    (_f_er,),
+    lambda sp, f_er: 2 * f_er,
+    "source, Couplings (f_coupling >= 2 f_drive); errata E7",
+)
+
+Z = Formula(
+    _Z,
+    (_A, _H),
+    lambda sp, A, H: A - 2 * H,
+    "R+W ZA line shaft catalog: tube length Z = A - 2 H",
+)
+
+C_T_line = Formula(
+    _C_T,
+    (_C_B, _Z, _C_tube),
+    lambda sp, C_B, Z, C_tube: 1 / (1 / C_B + Z / C_tube),
+    "R+W ZA line shaft catalog: the bellows and the tube of length Z in series",
+)
+
+phi = Formula(
+    Symbol("phi", r"\varphi", "angle", "deg", "angle of twist"),
+    (_T, _C_T),
+    lambda sp, T, C_T: T / C_T,
+    "R+W ZA line shaft catalog, worked example (angle of twist under torque)",
+)
+
+
+def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "temperature"):
+    """Temperature factor of an elastomer coupling (errata E9), scalar or array.
+
+    Parameters
+    ----------
+    temperature : Quantity [temperature]
+        Operating temperature (``Q_(60, "degC")``; a temperature difference is refused).
+    table : sequence of (float, float)
+        (lowest temperature of the band in °C, factor), ascending; the higher factor applies at
+        a boundary. Default: the source's table, :data:`TEMPERATURE_FACTORS`.
+
+    Returns
+    -------
+    float or ndarray
+        The factor ``K_ϑ`` that multiplies ``M_N``.
+
+    Examples
+    --------
+    >>> [float(temperature_factor(Q_(t, "degC"))) for t in (49.9, 50, 69.9, 70, 90, 110, 140)]
+    [1.0, 1.3, 1.3, 1.6, 1.8, 2.0, 2.0]
+    """
+    t = as_kind(temperature, "temperature", where)
+    if any(name.startswith("delta_") for name in t.units._units):
+        raise CalcError(f"{where}: expected a temperature such as \"60 degC\", found {t:~P}, which is a temperature difference")
+    celsius = t.m_as("degC")
+    bounds = np.array([b for b, _ in table], dtype=float)
+    factors = np.array([f for _, f in table], dtype=float)
+    return factors[np.searchsorted(bounds, celsius, side="right") - 1]
+
+
+@dataclass(frozen=True)
+class CouplingCheck(CheckArray):
+    """A :class:`calc.gearbox.CheckArray` that may apply to some rows only (a safety coupling's
+    T_A range), with the unit it is shown in and why it cannot be made where a value is missing."""
+
+    unit: str = ""
+    applies: object = None  # bool array over the rows; None: every row
+    missing: object = "the catalog gives no rated value"  # text, or one text per row
+    lower_bound: bool = False  # "least <= value": the rated side is the value checked
+
+    @property
+    def passes(self) -> np.ndarray:
+        ok = super().passes
+        return ok if self.applies is None else ok | ~self.applies
+
+    def applies_to(self, row: int) -> bool:
+        return True if self.applies is None else bool(self.applies[row])
+
+    def reason(self, row: int) -> str:
+        """Why the row fails this check: the excess, or what is missing."""
+        u = self.utilization[row]
+        if np.isnan(u):
+            missing = self.missing if isinstance(self.missing, str) else self.missing[row]
+            return f"{self.text}: not checked, {missing}"
+        if self.lower_bound:
+            return (
+                f"{self.text}: {fmt(self.rated[row], self.unit)} is below the least {fmt(self.required[row], self.unit)}, "
+                f"{sig(100 * (1 - 1 / u), 3)} % short"
+            )
+        return (
+            f"{self.text}: required {fmt(self.required[row], self.unit)} > rated {fmt(self.rated[row], self.unit)}, "
+            f"{sig(100 * (u - 1), 3)} % over"
+        )
+
+
+@dataclass
+class CouplingSelection:
+    """The candidate couplings, checked and ranked. Arrays run over the rows of ``catalog``."""
+
+    catalog: Catalog
+    M_N: object  # scalar quantity, before the temperature factor
+    T_op: object  # peak torque of normal operation, M_N with S_A = 1
+    temperature_factor: np.ndarray  # per row (1 for all but elastomer couplings)
+    M_Nt: object  # required torque per row
+    C_T: object  # torsional stiffness per row (a line shaft's at the case's shaft distance)
+    J_A: object
+    J_L: object
+    f_e: object
+    checks: list
+    passes: np.ndarray
+    order: np.ndarray
+    notes: list
+
+    @property
+    def selected(self) -> str | None:
+        """Part of the best passing candidate, or None."""
+        if len(self.order) and self.passes[self.order[0]]:
+            return str(self.catalog.parts[self.order[0]])
+        return None
+
+    def reasons(self, row: int) -> list[str]:
+        return [c.reason(row) for c in self.checks if c.applies_to(row) and not c.passes[row]]
+
+    def row_type(self, row: int) -> str:
+        return str(self.catalog.text["type"][row])
+
+
+def _positive(q, where: str, what: str):
+    if q is not None and not np.all(q.magnitude > 0):
+        raise CalcError(f"{where}: expected {what} above zero, found {fmt(q, f'{q.units}')}")
+
+
+def _as_bore(value, where: str) -> Bore:
+    return value if isinstance(value, Bore) else parse_bore(value, where)
+
+
+def select_coupling(
+    catalog: Catalog,
+    accel_torque,
+    drive_inertia,
+    load_inertia,
+    excitation_frequency,
+    shaft_1,
+    shaft_2,
+    service_factor=DEFAULT_SERVICE_FACTOR,
+    temperature=None,
+    speed=None,
+    disengagement_torque=None,
+    shaft_distance=None,
+    where: str = "coupling",
+) -> CouplingSelection:
+    """Check every coupling of ``catalog`` (already narrowed to a type or a part) and rank them.
+
+    Checks, each with required, rated, utilization and verdict:
+
+    * torque: ``M_N · K_ϑ <= T_KN``, ``K_ϑ`` the temperature factor for elastomer couplings
+      (E9), 1 for the others; ``M_N = M_a · J_load / (J_load + J_drive) · S_A`` (E8);
+    * resonance: ``2 f_er <= f_e`` (E7), ``J_A`` and ``J_L`` each with half the coupling;
+    * speed: ``n <= n_max`` (when ``speed`` is given);
+    * bores: ``d_min <= D <= d_max`` for each hub, on the nominal diameter;
+    * safety couplings: ``T_Amin <= T_A <= T_Amax`` and ``T_op <= T_A``, ``T_op`` the peak torque
+      of normal operation, ``M_N`` with ``S_A = 1`` (E10);
+    * line shafts: ``2 H <= A <= A_max``; ``C_T`` from the bellows and the tube of length
+      ``A - 2 H``.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+    accel_torque : Quantity [torque]
+        ``M_a``, acceleration torque of the motor.
+    drive_inertia, load_inertia : Quantity [inertia]
+        ``J_drive`` and ``J_load`` without the coupling (with a coupling between motor and
+        gearbox, ``J_load`` is ``J_L / i² + J_1``, E8).
+    excitation_frequency : Quantity [frequency]
+        ``f_er`` of the drive (E7).
+    shaft_1, shaft_2 : Bore or str
+        The shafts as ordered (``"19 mm k6"``, see :func:`calc.fits.parse_bore`).
+    service_factor : float or Quantity [dimensionless]
+        ``S_A`` (E8), 1 or more; default 2.5.
+    temperature : Quantity [temperature], optional
+        Operating temperature; needed when elastomer couplings are among the candidates.
+    speed : Quantity [speed], optional
+        Highest speed of the coupling.
+    disengagement_torque : Quantity [torque], optional
+        ``T_A``; only, and always, for safety couplings.
+    shaft_distance : Quantity [length], optional
+        ``A``; only, and always, for line shafts.
+    where : str
+        Prefix of error messages (the case file and section).
+
+    Returns
+    -------
+    CouplingSelection
+
+    Examples
+    --------
+    The example case: motor 12 N·m, 4.2 kg·cm²; load 1500 kg·cm² through i = 10 plus the
+    gearbox's 0.93 kg·cm² gives J_load = 15.93 kg·cm² (E8):
+
+    >>> cat = load_catalog(resolve("couplings", None, "catalog"), SCHEMA)
+    >>> bellows = cat.rows(cat.text["type"] == "bellows")
+    >>> s = select_coupling(bellows, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"), Q_(15.93, "kg*cm**2"),
+    ...                     Q_(150, "Hz"), "19 mm k6", "16 mm h7", speed=Q_(3000, "rpm"))
+    >>> fmt(s.M_N, "N*m"), s.selected, fmt(s.f_e[cat.index("AKD-30", "part")], "Hz")
+    ('23.74 N·m', 'AKD-30', '1316 Hz')
+    """
+    if not len(catalog):
+        raise CalcError(f"{where}: no coupling to check, the catalog has no rows")
+    types = catalog.text["type"]
+    is_el, is_safety, is_line = (types == "elastomer"), (types == "safety"), (types == "line-shaft")
+    n = len(catalog)
+    M_a = as_kind(accel_torque, "torque", f"{where}.accel_torque")
+    J_drive = as_kind(drive_inertia, "inertia", f"{where}.drive_inertia")
+    J_load = as_kind(load_inertia, "inertia", f"{where}.load_inertia")
+    f_er = as_kind(excitation_frequency, "frequency", f"{where}.excitation_frequency")
+    S_A = as_kind(service_factor, "dimensionless", f"{where}.service_factor")
+    _positive(M_a, f"{where}.accel_torque", "a torque")
+    _positive(J_drive, f"{where}.drive_inertia", "an inertia")
+    _positive(J_load, f"{where}.load_inertia", "an inertia")
+    _positive(f_er, f"{where}.excitation_frequency", "a frequency")
+    if not S_A.m_as("") >= 1:
+        raise CalcError(f"{where}.service_factor: expected a load factor S_A of 1 or more (E8), found {sig(S_A.m_as(''))}")
+    bore_1, bore_2 = _as_bore(shaft_1, f"{where}.shaft_1"), _as_bore(shaft_2, f"{where}.shaft_2")
+    if speed is not None:
+        speed = as_kind(speed, "speed", f"{where}.speed")
+        _positive(speed, f"{where}.speed", "a speed")
+    T_A = None if disengagement_torque is None else as_kind(disengagement_torque, "torque", f"{where}.disengagement_torque")
+    A = None if shaft_distance is None else as_kind(shaft_distance, "length", f"{where}.shaft_distance")
+    _positive(T_A, f"{where}.disengagement_torque", "a torque")
+    _positive(A, f"{where}.shaft_distance", "a distance")
+    _only_for(T_A, is_safety, types, "safety", f"{where}.disengagement_torque", "a disengagement torque T_A (E10)")
+    _only_for(A, is_line, types, "line-shaft", f"{where}.shaft_distance", "a distance between shafts")
+    if A is not None:
+        two_hubs = 2 * catalog["H"][is_line]
+        if not np.any(A >= two_hubs):
+            raise CalcError(
+                f"{where}.shaft_distance: {fmt(A, 'mm')} is shorter than the two hubs of every line shaft "
+                f"(2 H = {', '.join(fmt(h, 'mm') for h in two_hubs)}); expected A >= 2 H"
+            )
+
+    notes = []
+    K_T = np.ones(n)
+    if is_el.any():
+        if temperature is None:
+            raise CalcError(
+                f"{where}.temperature: elastomer couplings need the operating temperature for their factor (E9), found none; "
+                "give it, or a type that is not elastomer"
+            )
+        K_T = np.where(is_el, temperature_factor(temperature, where=f"{where}.temperature"), 1.0)
+    elif temperature is not None:
+        temperature_factor(temperature, where=f"{where}.temperature")  # checked, though no candidate uses it
+
+    m_n = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=S_A)
+    t_op = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=Q_(1.0, ""))
+    m_nt = M_Nt(M_N=m_n, K_T=Q_(K_T, ""))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        j_a = J_A(J_drive=J_drive, J_K=catalog["J"])
+        j_l = J_L(J_load=J_load, J_K=catalog["J"])
+        c_t = catalog["C_T"].to("N*m/rad")
+        if A is not None:
+            c_line = C_T_line(C_B=catalog["C_T"], Z=Z(A=A, H=catalog["H"]), C_tube=catalog["C_tube"])
+            c_t = Q_(np.where(is_line & (A >= 2 * catalog["H"]), c_line.m_as("N*m/rad"), c_t.magnitude), "N*m/rad")
+        fe = f_e(C_T=c_t, J_A=j_a, J_L=j_l)
+
+    def full(q):
+        return q * np.ones(n)
+
+    def bore_checks(k: int, bore: Bore) -> list:
+        missing = f"the catalog gives no bore range for hub {k}"
+        return [
+            CouplingCheck(f"d_{k}min", "coupling", f"d_{k}min <= D_{k}", catalog[f"d_{k}min"], full(bore.nominal), "mm", None, missing, True),
+            CouplingCheck(f"d_{k}max", "coupling", f"D_{k} <= d_{k}max", full(bore.nominal), catalog[f"d_{k}max"], "mm", None, missing),
+        ]
+
+    no_f_e = np.where(
+        is_line & (A is None),
+        "a line shaft's stiffness needs coupling.shaft_distance",
+        "f_e needs the coupling's torsional stiffness C_T and inertia J, which the catalog leaves empty",
+    )
+    checks = [
+        CouplingCheck("T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m"),
+        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e),
+    ]
+    if speed is not None:
+        checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", full(speed), catalog["n_max"], "rpm", None, "the catalog gives no maximum speed"))
+    else:
+        notes.append("coupling.speed not given: the speed check n <= n_max is not made")
+    checks += bore_checks(1, bore_1) + bore_checks(2, bore_2)
+    if is_safety.any():
+        nan_torque = Q_(np.full(n, np.nan), "N*m")
+        t_a = nan_torque if T_A is None else full(T_A)
+        missing = "needs coupling.disengagement_torque (E10)"
+        checks += [
+            CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", is_safety, missing, True),
+            CouplingCheck("T_Amax", "coupling", "T_A <= T_Amax", t_a, catalog["T_Amax"], "N*m", is_safety, missing),
+            CouplingCheck("T_A", "coupling", "T_op <= T_A", full(t_op), t_a, "N*m", is_safety, missing),
+        ]
+    if is_line.any():
+        a = Q_(np.full(n, np.nan), "mm") if A is None else full(A)
+        missing = "needs coupling.shaft_distance" if A is None else "the catalog gives no longest shaft distance A_max"
+        checks += [
+            CouplingCheck("A_min", "coupling", "2 H <= A", 2 * catalog["H"], a, "mm", is_line, "needs coupling.shaft_distance", True),
+            CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", is_line, missing),
+        ]
+    passes = np.logical_and.reduce([c.passes for c in checks])
+    with np.errstate(invalid="ignore"):
+        utilizations = np.array([np.where(c.applies if c.applies is not None else True, c.utilization, 0.0) for c in checks])
+        worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
+    order = rank(passes, catalog["T_KN"].m_as("N*m"), worst, catalog.parts)
+    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, c_t, j_a, j_l, fe, checks, passes, order, notes)
+
+
+def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str) -> None:
+    """``value`` (T_A or A) is for couplings of one type: given, every candidate must be of that
+    type; not given, a catalog of that type alone cannot be checked."""
+    if value is not None and not rows_of_type.all():
+        others = sorted(set(types[~rows_of_type]))
+        raise CalcError(
+            f"{where}: {what} is for {type_name} couplings only, but the candidates include {', '.join(others)} couplings; "
+            f"set type = \"{type_name}\" or remove the key"
+        )
+    if value is None and rows_of_type.all():
+        raise CalcError(f"{where}: {type_name} couplings need {what}, found none")
+
+
+def order_lines(part: str, coupling_type: str, bores, disengagement_torque=None, shaft_distance=None) -> list[str]:
+    """The order text of a coupling, line by line, as the source's ordering examples write it.
+
+    Series and size, each shaft with its fit or limits and keyway (``D1 = 14 mm k6``), the
+    disengagement torque ``T_A`` for a safety coupling (E10), the distance between shafts for a
+    line shaft.
+
+    Examples
+    --------
+    >>> from calc.fits import parse_bore
+    >>> order_lines("SKB-30", "safety", [parse_bore("19 mm k6")], disengagement_torque=Q_(25, "N*m"))
+    ['Safety coupling SKB-30', 'D1 = 19 mm k6', 'T_A (disengagement torque) = 25 N·m']
+    """
+    if coupling_type not in TYPES:
+        raise CalcError(f"coupling type: expected one of {', '.join(TYPES)}, found {coupling_type!r}")
+    if (disengagement_torque is not None) != (coupling_type == "safety"):
+        raise CalcError(f"{part}: a disengagement torque T_A is given for safety couplings, and only for them (E10)")
+    if (shaft_distance is not None) != (coupling_type == "line-shaft"):
+        raise CalcError(f"{part}: the distance between shafts is given for line shafts, and only for them")
+    lines = [f"{ORDER_TITLES[coupling_type]} {part}"]
+    lines += [f"D{k} = {bore.text}" for k, bore in enumerate(bores, start=1)]
+    if disengagement_torque is not None:
+        lines.append(f"T_A (disengagement torque) = {fmt(as_kind(disengagement_torque, 'torque', f'{part}: T_A'), 'N*m')}")
+    if shaft_distance is not None:
+        distance = as_kind(shaft_distance, "length", f"{part}: distance between shafts")
+        lines.append(f"Distance between shafts = {sig(distance.magnitude)} {distance.units:~}")  # in the unit given
+    return lines
+
+
+# ---------------------------------------------------------------------------------------------
+# The case's [coupling] section and its results (spec/case-format.md).
+
+KEYS = (
+    "catalog", "type", "part", "accel_torque", "drive_inertia", "load_inertia", "service_factor", "temperature",
+    "excitation_frequency", "speed", "shaft_1", "shaft_2", "disengagement_torque", "shaft_distance",
+)
+
+
+@dataclass
+class CouplingCase:
+    """The ``[coupling]`` section as read: the candidates and the arguments of
+    :func:`select_coupling`."""
+
+    catalog: Catalog
+    type: str | None
+    inputs: dict
+    bores: tuple
+
+
+def read_section(case: Case) -> CouplingCase:
+    """Read ``[coupling]`` key by key; errors name the file and the key."""
+    s = Section(case.path, "coupling", case.sections["coupling"], KEYS)
+    catalog = load_catalog(resolve(s.text("catalog", default="couplings"), case.folder, s.where("catalog")), SCHEMA)
+    _check_types(catalog)
+    wanted = s.text("type")
+    if wanted is not None and wanted not in TYPES:
+        raise CalcError(f"{s.where('type')}: unknown coupling type {wanted!r}; expected one of {', '.join(TYPES)}")
+    part = s.text("part")
+    if part is not None:
+        row = catalog.index(part, s.where("part"))
+        if wanted is not None and catalog.text["type"][row] != wanted:
+            raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, but coupling.type is {wanted!r}")
+        catalog = catalog.rows([row])
+    elif wanted is not None:
+        mask = catalog.text["type"] == wanted
+        if not mask.any():
+            raise CalcError(f"{s.where('type')}: the catalog {display_path(catalog.path)} has no {wanted} coupling")
+        catalog = catalog.rows(mask)
+    for key in ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "shaft_1", "shaft_2"):
+        if not s.has(key):
+            raise CalcError(f"{s.where(key)}: expected a value, found none")
+    bores = tuple(parse_bore(s.data[key], s.where(key)) for key in ("shaft_1", "shaft_2"))
+    inputs = dict(
+        accel_torque=s.quantity("accel_torque", "torque"),
+        drive_inertia=s.quantity("drive_inertia", "inertia"),
+        load_inertia=s.quantity("load_inertia", "inertia"),
+        excitation_frequency=s.quantity("excitation_frequency", "frequency"),
+        service_factor=s.quantity("service_factor", "dimensionless", default=Q_(DEFAULT_SERVICE_FACTOR, "")),
+        temperature=s.quantity("temperature", "temperature"),
+        speed=s.quantity("speed", "speed"),
+        disengagement_torque=s.quantity("disengagement_torque", "torque"),
+        shaft_distance=s.quantity("shaft_distance", "length"),
+    )
+    return CouplingCase(catalog, wanted, inputs, bores)
+
+
+def _check_types(catalog: Catalog) -> None:
+    """Each row's type is known and the row fills the columns its type needs."""
+    for j, t in enumerate(catalog.text["type"]):
+        where = f"{catalog.path}, row {catalog.lines[j]} ({catalog.parts[j]})"
+        if t not in TYPES:
+            raise CalcError(f"{where}, column type: expected one of {', '.join(TYPES)}, found {t!r}")
+        for column in _TYPE_NEEDS.get(t, ()):
+            if np.isnan(catalog[column][j].magnitude):
+                raise CalcError(f"{where}, column {column}: a {t} coupling needs a value, found an empty cell")
+
+
+def section_results(case: Case) -> dict:
+    """The ``coupling`` results of the JSON contract for ``case``."""
+    from .evaluate import number, quantity
+
+    cc = read_section(case)
+    where = f"{case.path}: coupling"
+    sel = select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], where=where, **cc.inputs)
+    types = cc.catalog.text["type"]
+    notes = list(sel.notes)
+    for k, bore in enumerate(cc.bores, start=1):
+        if bore.tolerance is None:
+            notes.append(f"coupling.shaft_{k} gives no tolerance; state one when ordering (the source asks for shaft sizes and tolerances)")
+    candidates = []
+    for row in sel.order:
+        candidates.append(
+            {
+                "part": str(cc.catalog.parts[row]),
+                "type": str(types[row]),
+                "illustrative": str(cc.catalog.text.get("illustrative", np.full(len(types), "no"))[row]).lower() == "yes",
+                "passes": bool(sel.passes[row]),
+                "f_e": quantity(sel.f_e[row], "Hz"),
+                "C_T": quantity(sel.C_T[row], "N*m/rad"),
+                "temperature_factor": float(sel.temperature_factor[row]),
+                "required_torque": quantity(sel.M_Nt[row], "N*m"),
+                "checks": [
+                    {
+                        "name": c.name,
+                        "criterion": c.text,
+                        "required": quantity(c.required[row], c.unit),
+                        "rated": quantity(c.rated[row], c.unit),
+                        "utilization": number(c.utilization[row]),
+                        "passes": bool(c.passes[row]),
+                    }
+                    for c in sel.checks
+                    if c.applies_to(row)
+                ],
+                "reasons": sel.reasons(row),
+            }
+        )
+    selected = sel.selected
+    order = None
+    if selected is not None:
+        row = sel.order[0]
+        t = str(types[row])
+        order = "; ".join(
+            order_lines(
+                selected, t, cc.bores,
+                cc.inputs["disengagement_torque"] if t == "safety" else None,
+                cc.inputs["shaft_distance"] if t == "line-shaft" else None,
+            )
+        )
+    temperature = cc.inputs["temperature"]
+    return {
+        "catalog": display_path(cc.catalog.path),
+        "catalog_sha256": cc.catalog.sha256,
+        "type": cc.type,
+        "M_N": quantity(sel.M_N, "N*m"),
+        "service_factor": float(cc.inputs["service_factor"].m_as("")),
+        "T_op": quantity(sel.T_op, "N*m"),
+        "temperature": None if temperature is None else quantity(temperature, "degC"),
+        "temperature_factor": float(sel.temperature_factor[types == "elastomer"][0]) if (types == "elastomer").any() else 1.0,
+        "f_e_min": quantity(f_e_min(f_er=cc.inputs["excitation_frequency"]), "Hz"),
+        "bores": [
+            {
+                "key": f"shaft_{k}",
+                "text": bore.text,
+                "nominal": quantity(bore.nominal, "mm"),
+                "tolerance": bore.tolerance,
+                "limits": bore.limits_text(),
+                "lower": None if bore.lower is None else quantity(bore.lower, "mm"),
+                "upper": None if bore.upper is None else quantity(bore.upper, "mm"),
+                "keyway": None if bore.keyway is None else quantity(bore.keyway, "mm"),
+            }
+            for k, bore in enumerate(cc.bores, start=1)
+        ],
+        "ranking": "passing first; then smallest rated torque T_KN; then lowest worst utilization",
+        "candidates": candidates,
+        "selected": selected,
+        "order": order,
+        "notes": notes,
+    }
+
+
+def _q(d) -> str:
+    return "n/a" if d is None or d["value"] is None else f"{sig(d['value'])} {pretty_unit(d['unit'])}".rstrip()
+
+
+def summary_lines(section: dict) -> list[str]:
+    """The coupling results as lines of the terminal summary."""
+    lines = [
+        f"Coupling candidates (catalog {section['catalog']}{', type ' + section['type'] if section['type'] else ''}):",
+        f"  M_N = {_q(section['M_N'])} (S_A = {section['service_factor']:g}, E8); temperature factor "
+        f"{section['temperature_factor']:g} (E9); 2 f_er = {_q(section['f_e_min'])} (E7)",
+    ]
+    for b in section["bores"]:
+        lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
+    for c in section["candidates"]:
+        verdict = "PASS" if c["passes"] else "FAIL"
+        lines.append(f"  {verdict}  {c['part']} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {_q(c['f_e'])}")
+        for k in c["checks"]:
+            util = "n/a" if k["utilization"] is None else f"{k['utilization']:.2f}"
+            lines.append(
+                f"        {k['criterion']:<20} required {_q(k['required']):>12}  rated {_q(k['rated']):>12}  "
+                f"utilization {util:>5}  {'ok' if k['passes'] else 'FAIL'}"
+            )
+        for r in c["reasons"]:
+            lines.append(f"        rejected: {r}")
+    lines.append(f"Selected coupling: {section['selected'] or 'none passes'}")
+    if section["order"]:
+        lines.append(f"Order: {section['order']}")
+    lines += [f"Note: {n}" for n in section["notes"]]
+    return lines
