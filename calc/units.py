@@ -49,10 +49,14 @@ def _signature(units) -> tuple:
     return ureg.Quantity(1, units).dimensionality, angle_power(units)
 
 
-def angle_power(units) -> int:
-    """The power of angle a unit carries, read from its root units (rpm → 1, N·m/arcmin → −1)."""
+def angle_power(units) -> float:
+    """The power of angle a unit carries, read from its root units (rpm → 1, N·m/arcmin → −1).
+
+    Not rounded: the square root of a stiffness over an inertia carries rad^-1/2, which is no
+    frequency (E15).
+    """
     _, root = ureg.get_root_units(units)
-    return int(round(float(root._units.get("radian", 0))))
+    return float(root._units.get("radian", 0))
 
 
 KINDS: dict[str, Kind] = {
