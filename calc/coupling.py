@@ -416,10 +416,12 @@ def select_coupling(
             CouplingCheck(f"d_{k}max", "coupling", f"D_{k} <= d_{k}max", full(bore.nominal), catalog[f"d_{k}max"], "mm", None, missing),
         ]
 
+    no_c, no_j = np.isnan(c_t.magnitude), np.isnan(catalog["J"].magnitude)
+    empty = np.where(no_c & no_j, "torsional stiffness C_T and inertia J", np.where(no_c, "torsional stiffness C_T", "inertia J"))
     no_f_e = np.where(
         is_line & (A is None),
         "a line shaft's stiffness needs coupling.shaft_distance",
-        "f_e needs the coupling's torsional stiffness C_T and inertia J, which the catalog leaves empty",
+        np.char.add(np.char.add("f_e needs the coupling's ", empty.astype(str)), ", which the catalog leaves empty"),
     )
     checks = [
         CouplingCheck("T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m"),

@@ -212,7 +212,7 @@ class Bore:
 
 
 _NUM = r"(?:\d+(?:\.\d*)?|\.\d+)"
-_UNIT = r'(?:"|[A-Za-z]+)'
+_UNIT = r'(?:"|(?!x\b)[A-Za-z]+)'  # "x" is the keyway's "by", never a unit
 _DEV = rf"(?:[-+]\s*{_NUM}|0+(?:\.0*)?)"  # a limit deviation: signed, or a bare zero
 _BORE = re.compile(
     rf"""^\s*(?P<size>{_NUM})\s*(?P<unit>{_UNIT})
