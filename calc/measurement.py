@@ -1,0 +1,180 @@
+"""Measured data as a test rig records it: a CSV file of numeric columns, units in the header.
+
+A measurement file opens with any number of comment lines (``#`` ...) that say where the data
+come from, then a header row such as ``torque [N*m],twist [arcmin]``, then one row per sample.
+Each column's unit is read from its header and checked for its kind (errata E15: a twist column
+in ``[1]`` or a torque column in ``[N*m/arcmin]`` is refused). Every problem is reported with the
+file, the row (its line number in the file) and the column. Further columns (a time stamp, a
+channel the calculation does not use) are allowed and left out.
+
+pandas' C parser reads a million rows in a fraction of a second; it is imported on first use.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .catalog import _HEADER, Column, _header_unit
+from .errors import CalcError
+from .units import Q_
+
+_COMMENT = "#"
+
+
+@dataclass(frozen=True)
+class Measurement:
+    """The columns of a measurement file as quantity arrays, with its comment lines."""
+
+    path: Path
+    columns: dict
+    comments: tuple[str, ...]
+
+    def __getitem__(self, name: str):
+        return self.columns[name]
+
+    def __len__(self):
+        return len(next(iter(self.columns.values())))
+
+
+def measurement_path(text, base: Path | None, where: str) -> Path:
+    """The file a case names (relative to the case file's folder); an error if it is missing."""
+    if not isinstance(text, str) or not text.strip():
+        raise CalcError(f"{where}: expected the path of a CSV file in quotes, found {text!r}")
+    path = Path(text)
+    if not path.is_absolute() and base is not None:
+        path = base / path
+    if not path.is_file():
+        raise CalcError(f"{where}: the measurement file {text!r} does not exist (looked for {path})")
+    return path
+
+
+def read_measurement(path, columns: tuple[Column, ...]) -> Measurement:
+    """Read a measurement file and check it against ``columns`` (name, kind, description).
+
+    Raises :class:`CalcError` naming the file, row and column for: a missing column, a header
+    unit of the wrong kind, an empty or non-numeric cell, a value that is not finite, or a row
+    with too few cells. Cells may hold any sign (a twist, an error).
+    """
+    import pandas as pd
+
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError:
+        raise CalcError(f"{path}: expected a UTF-8 CSV file, found bytes that are not UTF-8") from None
+    except OSError as exc:
+        raise CalcError(f"{path}: the measurement file cannot be read ({exc.strerror})") from None
+    comments, header_line, header_end = [], None, 0
+    for line_number, line in enumerate(text.splitlines(keepends=True), start=1):
+        header_end += len(line)
+        if line.lstrip().startswith(_COMMENT):
+            comments.append(line.strip().lstrip(_COMMENT).strip())
+        elif line.strip():
+            header_line = line_number
+            header = line
+            break
+    if header_line is None:
+        raise CalcError(f"{path}: expected a header row such as 'torque [N*m],twist [arcmin]', found none")
+    names = {}
+    for i, cell in enumerate(header.strip().split(",")):
+        m = _HEADER.match(cell)
+        if not m:
+            raise CalcError(f"{path}, row {header_line}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
+        names[m.group(1)] = (i, m.group(2))
+    units = {}
+    for c in columns:
+        if c.name not in names:
+            raise CalcError(
+                f"{path}, row {header_line}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(names)}"
+            )
+        units[c.name] = _header_unit(path, c, names[c.name][1])
+
+    body = text[header_end:].rstrip()
+    if not body:
+        raise CalcError(f"{path}: expected rows of data after the header (row {header_line}), found none")
+    try:
+        frame = pd.read_csv(
+            io.StringIO(body + "\n"), header=None, usecols=[names[c.name][0] for c in columns],
+            skip_blank_lines=False, keep_default_na=False, engine="c",
+        )
+    except pd.errors.ParserError as exc:
+        raise CalcError(f"{path}: rows must have the header's {len(names)} cells ({_parser_detail(exc, header_line)})") from None
+    first_row = header_line + 1
+    out = {}
+    for c in columns:
+        col = frame[names[c.name][0]]
+        values = _numeric(col, path, first_row, c.name)
+        out[c.name] = Q_(values, units[c.name])
+    return Measurement(path=path, columns=out, comments=tuple(comments))
+
+
+def _numeric(col, path: Path, first_row: int, name: str) -> np.ndarray:
+    """A column as floats, or the error naming the first bad cell's row."""
+    import pandas as pd
+
+    if col.dtype.kind in "fi":
+        values = col.to_numpy(dtype=float)
+        bad = ~np.isfinite(values)
+        if bad.any():
+            j = int(np.flatnonzero(bad)[0])
+            found = "an empty cell" if np.isnan(values[j]) else repr(float(values[j]))
+            raise CalcError(f"{path}, row {first_row + j}, column {name}: expected a number, found {found}")
+        return values
+    coerced = pd.to_numeric(col, errors="coerce").to_numpy(dtype=float)
+    bad = ~np.isfinite(coerced)
+    if not bad.any():
+        return coerced
+    j = int(np.flatnonzero(bad)[0])
+    cell = col.iloc[j]
+    found = "an empty cell" if not isinstance(cell, str) or not cell.strip() else repr(cell)
+    raise CalcError(f"{path}, row {first_row + j}, column {name}: expected a number, found {found}")
+
+
+def write_measurement(path, columns: dict, units: dict, comments: tuple[str, ...], digits: int = 6) -> None:
+    """Write quantity arrays as a measurement file: comment lines, a header with units, rows.
+
+    ``columns`` maps a name to a quantity array, ``units`` the name to the unit it is written in.
+    """
+    path = Path(path)
+    arrays = [np.asarray(q.m_as(units[name]), dtype=float) for name, q in columns.items()]
+    header = "\n".join([*(f"# {c}".rstrip() for c in comments), ",".join(f"{name} [{units[name]}]" for name in columns)])
+    np.savetxt(path, np.column_stack(arrays), fmt=f"%.{digits}g", delimiter=",", header=header, comments="", encoding="utf-8")
+
+
+def _parser_detail(exc, header_line: int) -> str:
+    """pandas counts lines from the data's first row; the message counts them in the file."""
+    m = re.search(r"line (\d+), saw (\d+)", str(exc))
+    if not m:
+        return str(exc).strip()
+    return f"row {header_line + int(m.group(1))} has {m.group(2)}"
+
+
+def travel_direction(values: np.ndarray) -> np.ndarray:
+    """+1 where a recorded signal rises, -1 where it falls, for each sample (0 where it holds).
+
+    The sign of the mean of the next ``k`` samples minus the mean of the previous ``k``
+    (``k = max(2, n // 500)``): noise shrinks as ``1/√k`` while the trend grows as ``k``. A run of
+    fewer than ``k`` samples between two runs of the other sign is noise, and takes their sign.
+    """
+    n = len(values)
+    k = max(2, n // 500)
+    c = np.concatenate(([0.0], np.cumsum(values)))
+    idx = np.arange(n)
+    ahead_end, behind_start = np.minimum(idx + 1 + k, n), np.maximum(idx - k, 0)
+    ahead = (c[ahead_end] - c[np.minimum(idx + 1, n)]) / np.maximum(ahead_end - idx - 1, 1)
+    behind = (c[idx] - c[behind_start]) / np.maximum(idx - behind_start, 1)
+    ahead = np.where(idx + 1 < n, ahead, values)
+    behind = np.where(idx > 0, behind, values)
+    direction = np.sign(ahead - behind).astype(int)
+    starts = np.flatnonzero(np.concatenate(([True], direction[1:] != direction[:-1])))
+    lengths = np.diff(np.concatenate((starts, [n])))
+    labels = direction[starts]
+    inner = np.arange(1, len(starts) - 1)
+    flip = inner[(lengths[inner] < k) & (labels[inner - 1] == labels[inner + 1])]
+    labels[flip] = labels[flip - 1]
+    return np.repeat(labels, lengths)

@@ -1,0 +1,231 @@
+"""Torsional stiffness of a drive train: springs in series, referred to the output shaft.
+
+Source: "Torsional Stiffness" ("How can I use it?"), read with errata E11. The components of a
+drive train (couplings, gearbox, shafts, line shafts) carry the same torque one after the other,
+so their twists add and their compliances ``1/C`` add. That sum holds only when every ``C`` is
+seen from the same shaft (E11): a component on the input side of a gearbox of ratio ``i`` turns
+``i`` times as far under ``1/i`` of the torque, so seen from the output it is ``i²`` times as
+stiff, and its backlash is ``1/i`` as large. Every figure here is referred to the output.
+
+A :class:`Chain` holds the components from drive to load, each on the ``input`` or ``output``
+side of the gearbox; its arrays run over the components (one formula call for all of them).
+
+The source's example, ``1/C_total = 1/1.3 + 1/0.24`` (N·m/arcmin), with both parts on the output:
+
+>>> print(series_stiffness.step(C_k=Q_([1.3, 0.24], "N*m/arcmin")))
+C_total = 0.2026 N·m/arcmin
+
+A motor-side coupling of 0.24 N·m/arcmin behind a 10:1 gearbox, seen from the output (E11):
+
+>>> print(stiffness_at_output.step(C_1=Q_(0.24, "N*m/arcmin"), i=Q_(10, "")))
+C_2 = 24 N·m/arcmin
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import CalcError
+from .formula import Formula, Symbol, segment_sum
+from .units import Q_, as_kind
+
+SIDES = ("input", "output")
+
+_i = Symbol("i", "i", "dimensionless", "", "gearbox ratio (input speed / output speed)")
+
+series_stiffness = Formula(
+    Symbol("C_total", r"C_{\mathrm{total}}", "stiffness", "N*m/arcmin", "total torsional stiffness, at the output"),
+    (Symbol("C_k", "C_{k}", "stiffness", "N*m/arcmin", "stiffness of component k, at the output", per_segment=True),),
+    lambda sp, C: 1 / segment_sum(1 / C),
+    "source, Torsional Stiffness: 1/C_total = 1/C_1 + ... + 1/C_n; errata E11 (every C_k at the output)",
+)
+
+stiffness_at_output = Formula(
+    Symbol("C_2", "C_{2}", "stiffness", "N*m/arcmin", "stiffness referred to the output"),
+    (Symbol("C_1", "C_{1}", "stiffness", "N*m/arcmin", "stiffness of an input-side component"), _i),
+    lambda sp, C_1, i: C_1 * i**2,
+    "errata E11: an input-side component appears at the output with stiffness C · i²",
+)
+
+angle_at_output = Formula(
+    Symbol("phi_2", r"\varphi_{2}", "angle", "arcmin", "angle referred to the output"),
+    (Symbol("phi_1", r"\varphi_{1}", "angle", "arcmin", "angle at the input (a backlash, an error)"), _i),
+    lambda sp, phi_1, i: phi_1 / i,
+    "errata E11: an input-side backlash appears at the output as backlash / i",
+)
+
+torque_at_output = Formula(
+    Symbol("T_2", "T_{2}", "torque", "N*m", "torque referred to the output"),
+    (Symbol("T_1", "T_{1}", "torque", "N*m", "torque at the input"), _i),
+    lambda sp, T_1, i: T_1 * i,
+    "torque through an ideal gearbox (losses left out: a rating at the input limits the output to T_1 · i)",
+)
+
+
+@dataclass(frozen=True)
+class Component:
+    """One member of a drive train, with its figures as seen from its own shaft.
+
+    Parameters
+    ----------
+    name : str
+        What it is (``"EKM-15 coupling"``, a catalog part).
+    side : {"input", "output"}
+        Which side of the gearbox it sits on; the gearbox itself gives its figures at its output
+        (``C_t21``), so it is an ``"output"`` component.
+    stiffness : Quantity [torque / angle]
+        Torsional stiffness, above zero.
+    backlash : Quantity [angle]
+        Torsional backlash, zero or more.
+    transmission_accuracy : Quantity [angle], optional
+        Angular transmission accuracy (range of the transmission error over one revolution).
+    nominal_torque : Quantity [torque], optional
+        Nominal torque (the 3 % rule of positioning accuracy, E13).
+    source : str
+        Where the figures come from (the case, a catalog row, a measured loop).
+    """
+
+    name: str
+    side: str
+    stiffness: object
+    backlash: object
+    transmission_accuracy: object = None
+    nominal_torque: object = None
+    source: str = ""
+
+    def __post_init__(self):
+        where = f"component {self.name!r}"
+        if self.side not in SIDES:
+            raise CalcError(f"{where}: side: expected input or output, found {self.side!r}")
+        c = as_kind(self.stiffness, "stiffness", f"{where}: stiffness")
+        if not np.all(c.magnitude > 0):
+            raise CalcError(f"{where}: stiffness: expected a stiffness above zero, found {c:~P}")
+        for key, kind in (("backlash", "angle"), ("transmission_accuracy", "angle"), ("nominal_torque", "torque")):
+            q = getattr(self, key)
+            if q is None:
+                continue
+            q = as_kind(q, kind, f"{where}: {key}")
+            if key == "nominal_torque" and not q.magnitude > 0:
+                raise CalcError(f"{where}: {key}: expected a torque above zero, found {q:~P}")
+            if not q.magnitude >= 0:
+                raise CalcError(f"{where}: {key}: expected an angle of zero or more, found {q:~P}")
+        if self.backlash is None:
+            raise CalcError(f"{where}: backlash: expected an angle such as \"3 arcmin\" (0 arcmin for none), found none")
+
+
+@dataclass(frozen=True)
+class Chain:
+    """Components from drive to load, every figure referred to the output shaft (E11).
+
+    ``ratio`` is the gearbox's ratio ``i``; it is needed as soon as one component sits on the
+    input side.
+
+    >>> coupling = Component("EKM-15", "output", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin"))
+    >>> gearbox = Component("EPL-W-064 10:1", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"))
+    >>> round(float(Chain((coupling, gearbox)).stiffness.m_as("N*m/arcmin")), 2)
+    0.2
+    >>> motor_side = Component("EKM-15", "input", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin"))
+    >>> round(float(Chain((motor_side, gearbox), ratio=Q_(10, "")).stiffness.m_as("N*m/arcmin")), 2)
+    1.23
+    """
+
+    components: tuple
+    ratio: object = None
+
+    def __post_init__(self):
+        if not self.components:
+            raise CalcError("chain: expected at least one component, found none")
+        if self.ratio is not None:
+            i = as_kind(self.ratio, "dimensionless", "chain: ratio").m_as("")
+            if not i > 0:
+                raise CalcError(f"chain: ratio: expected a ratio above zero, found {i:g}")
+        elif any(c.side == "input" for c in self.components):
+            first = next(c for c in self.components if c.side == "input")
+            raise CalcError(
+                f"component {first.name!r}: sits on the input side, which is referred to the output through the gearbox ratio (E11), found no ratio"
+            )
+
+    def with_component(self, component: Component) -> "Chain":
+        """The chain with one more component at its load end."""
+        return Chain((*self.components, component), self.ratio)
+
+    @functools.cached_property
+    def _i(self):
+        """Each component's ratio to the output: ``i`` on the input side, 1 on the output side."""
+        i = 1.0 if self.ratio is None else self.ratio.m_as("")
+        return Q_(np.array([i if c.side == "input" else 1.0 for c in self.components]), "")
+
+    def _column(self, key: str, unit: str) -> object:
+        return Q_(np.array([np.nan if getattr(c, key) is None else getattr(c, key).m_as(unit) for c in self.components]), unit)
+
+    @property
+    def names(self) -> list[str]:
+        return [c.name for c in self.components]
+
+    @functools.cached_property
+    def stiffness_at_output(self):
+        """Each component's stiffness seen from the output, ``C · i²`` on the input side (E11)."""
+        return stiffness_at_output(C_1=self._column("stiffness", "N*m/arcmin"), i=self._i)
+
+    @functools.cached_property
+    def backlash_at_output(self):
+        """Each component's backlash seen from the output, ``backlash / i`` on the input side (E11)."""
+        return angle_at_output(phi_1=self._column("backlash", "arcmin"), i=self._i)
+
+    @functools.cached_property
+    def transmission_accuracy_at_output(self):
+        """Each component's angular transmission accuracy at the output (NaN where not given)."""
+        return angle_at_output(phi_1=self._column("transmission_accuracy", "arcsec"), i=self._i).to("arcsec")
+
+    @functools.cached_property
+    def nominal_torque_at_output(self):
+        """Each component's nominal torque at the output, ``T · i`` on the input side (NaN where not given)."""
+        return torque_at_output(T_1=self._column("nominal_torque", "N*m"), i=self._i)
+
+    @functools.cached_property
+    def stiffness(self):
+        """Total stiffness at the output, ``1 / Σ 1/C_k`` (E11)."""
+        return series_stiffness(C_k=self.stiffness_at_output)
+
+    @property
+    def compliance_shares(self) -> np.ndarray:
+        """Each component's share of the total compliance, ``(1/C_k) / Σ 1/C`` (sums to 1); it is
+        also its share of the twist under any torque, since every component carries the same."""
+        compliance = 1.0 / self.stiffness_at_output.m_as("N*m/arcmin")
+        return compliance / compliance.sum()
+
+    def twist(self, torque):
+        """Each component's twist under ``torque`` at the output, ``|T| / C_k`` (the sum is ``|T| / C_total``)."""
+        t = as_kind(torque, "torque", "torque")
+        return (abs(t) / self.stiffness_at_output).to("arcmin")
+
+    @property
+    def backlash(self):
+        """Total backlash at the output: the sum of the components' (E11, E12)."""
+        return self.backlash_at_output.sum()
+
+    @property
+    def transmission_accuracy(self):
+        """Worst-case angular transmission accuracy at the output: the sum over the components
+        that give one (a coupling transmits the angle one to one and gives none)."""
+        return Q_(np.nansum(self.transmission_accuracy_at_output.m_as("arcsec")), "arcsec")
+
+    @property
+    def transmission_accuracy_from(self) -> list[str]:
+        """Names of the components that give a transmission accuracy."""
+        return [n for n, v in zip(self.names, self.transmission_accuracy_at_output.magnitude) if not np.isnan(v)]
+
+    @property
+    def nominal_torque(self):
+        """The chain's nominal torque at the output: the lowest of those given (None if none is)."""
+        t = self.nominal_torque_at_output.m_as("N*m")
+        return None if np.isnan(t).all() else Q_(float(np.nanmin(t)), "N*m")
+
+    @property
+    def nominal_torque_from(self) -> str | None:
+        """Name of the component whose nominal torque is the chain's."""
+        t = self.nominal_torque_at_output.m_as("N*m")
+        return None if np.isnan(t).all() else self.names[int(np.nanargmin(t))]
