@@ -1,0 +1,145 @@
+"""``python -m calc evaluate`` with a ``[coupling]`` section: the contract, and one-line errors."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from calc.__main__ import main
+
+from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML
+
+COUPLING_TOML = """
+[coupling]
+type = "bellows"
+accel_torque = "12 N*m"
+drive_inertia = "4.2 kg*cm**2"
+load_inertia = "15.93 kg*cm**2"
+excitation_frequency = "150 Hz"
+speed = "3000 rpm"
+shaft_1 = "19 mm k6"
+shaft_2 = "16 mm h7"
+"""
+
+
+def run(capsys, *args):
+    code = main(["evaluate", *map(str, args)])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def case_with(write_case, coupling: str):
+    return write_case(HEAD_TOML + PROFILE_TOML + coupling)
+
+
+def test_example_gets_a_coupling_with_its_order_line():
+    proc = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(EXAMPLE), "--json"], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    c = json.loads(proc.stdout)["coupling"]
+    assert set(c) >= {"M_N", "temperature_factor", "candidates", "selected", "order"}
+    # Hand calculation (tests/test_coupling.py): M_N = 12 · 15.93 / 20.13 · 2.5 = 23.7407 N·m.
+    assert c["M_N"] == {"value": pytest.approx(23.7407, abs=1e-4), "unit": "N*m"}
+    assert c["temperature_factor"] == 1.0  # a metal bellows coupling gets no factor (E9)
+    assert c["selected"] == "AKD-30"
+    assert c["order"] == "Standard coupling AKD-30; D1 = 19 mm k6; D2 = 16 mm h7"
+    first = c["candidates"][0]
+    assert first["part"] == "AKD-30" and first["passes"] is True
+    assert first["f_e"] == {"value": pytest.approx(1316.35, abs=0.01), "unit": "Hz"}
+    assert set(first["checks"][0]) >= {"name", "required", "rated", "utilization", "passes"}
+    assert [k["name"] for k in first["checks"]] == ["T_KN", "f_e", "n_max", "d_1min", "d_1max", "d_2min", "d_2max"]
+    assert c["bores"][0]["lower"] == {"value": pytest.approx(19.002), "unit": "mm"}
+
+
+def test_summary_shows_the_coupling(capsys):
+    code, out, err = run(capsys, EXAMPLE)
+    assert code == 0 and err == ""
+    assert "Selected coupling: AKD-30" in out
+    assert "Order: Standard coupling AKD-30; D1 = 19 mm k6; D2 = 16 mm h7" in out
+    assert "rejected: M_N · K_ϑ <= T_KN: required 23.74 N·m > rated 22 N·m, 7.91 % over" in out
+
+
+def test_the_spec_example_section_is_accepted(capsys, write_case):
+    # The [coupling] table of spec/case-format.md, as written there.
+    spec = """
+[coupling]
+catalog = "couplings"
+type = "elastomer"
+accel_torque = "12 N*m"
+drive_inertia = "1.5 kg*cm**2"
+load_inertia = "30 kg*cm**2"
+service_factor = 2.5
+temperature = "60 degC"
+excitation_frequency = "40 Hz"
+shaft_1 = "14 mm k6"
+shaft_2 = "1.000 in"
+"""
+    code, out, err = run(capsys, case_with(write_case, spec), "--json")
+    assert code == 0, err
+    c = json.loads(out)["coupling"]
+    # E9: 60 °C lies in 50 <= T < 70, factor 1.3. M_N = 12 · 30 / 31.5 · 2.5 = 28.571 N·m.
+    assert c["temperature_factor"] == 1.3
+    assert c["M_N"]["value"] == pytest.approx(28.5714, abs=1e-4)
+    assert c["candidates"][0]["required_torque"]["value"] == pytest.approx(28.5714 * 1.3, abs=1e-3)
+    assert c["selected"] is None and c["order"] is None
+    assert any("shaft_2 gives no tolerance" in n for n in c["notes"])
+
+
+def test_safety_coupling_order_carries_its_disengagement_torque(capsys, write_case):
+    text = COUPLING_TOML.replace('"bellows"', '"safety"') + 'disengagement_torque = "25 N*m"\n'
+    code, out, err = run(capsys, case_with(write_case, text), "--json")
+    c = json.loads(out)["coupling"]
+    assert c["selected"] == "SKB-30"
+    assert c["order"] == "Safety coupling SKB-30; D1 = 19 mm k6; D2 = 16 mm h7; T_A (disengagement torque) = 25 N·m"
+
+
+def test_a_named_part_is_checked_alone(capsys, write_case):
+    text = COUPLING_TOML.replace('type = "bellows"', 'part = "AKD-18"')
+    c = json.loads(run(capsys, case_with(write_case, text), "--json")[1])["coupling"]
+    assert [k["part"] for k in c["candidates"]] == ["AKD-18"] and c["selected"] is None
+
+
+def test_a_bore_outside_every_hub_is_a_failing_check(capsys, write_case):
+    code, out, err = run(capsys, case_with(write_case, COUPLING_TOML.replace('"19 mm k6"', '"90 mm k6"')), "--json")
+    assert code == 0
+    c = json.loads(out)["coupling"]
+    assert c["selected"] is None
+    akd30 = next(k for k in c["candidates"] if k["part"] == "AKD-30")
+    assert akd30["reasons"] == ["D_1 <= d_1max: required 90 mm > rated 30 mm, 200 % over"]
+
+
+@pytest.mark.parametrize(
+    "old, new, fragment",
+    [
+        ('"4.2 kg*cm**2"\nload', '"-4.2 kg*cm**2"\nload', "coupling.drive_inertia: expected an inertia above zero"),
+        ('"15.93 kg*cm**2"', '"0 kg*cm**2"', "coupling.load_inertia: expected an inertia above zero"),
+        ('"15.93 kg*cm**2"', '"15.93 kg"', "coupling.load_inertia: expected an inertia such as"),
+        ('"150 Hz"', '"150 Hz"\ntemperature = "60 C"', "coupling.temperature: expected a temperature such as"),
+        ('"bellows"', '"rubber"', "coupling.type: unknown coupling type 'rubber'; expected one of bellows, elastomer, safety, line-shaft"),
+        ('"19 mm k6"', '"14 mm q99"', "coupling.shaft_1 ('14 mm q99'): unknown ISO 286 tolerance class 'q99'"),
+        ('"19 mm k6"', '"14 mm k"', "coupling.shaft_1: expected a shaft size with its tolerance such as"),
+        ('"150 Hz"', '"150 Hz"\ndisengagement_torque = "25 N*m"', "coupling.disengagement_torque: a disengagement torque T_A (E10) is for safety couplings only"),
+        ('"bellows"', '"safety"', "coupling.disengagement_torque: safety couplings need a disengagement torque T_A (E10), found none"),
+        ('"bellows"', '"line-shaft"', "coupling.shaft_distance: line-shaft couplings need a distance between shafts, found none"),
+        ('type = "bellows"', 'type = "line-shaft"\nshaft_distance = "120 mm"', "coupling.shaft_distance: 120 mm is shorter than the two hubs of every line shaft"),
+        ('"150 Hz"', '"150 Hz"\nshaft_distance = "915 mm"', "coupling.shaft_distance: a distance between shafts is for line-shaft couplings only"),
+        ('"150 Hz"', '"3000 rpm"', "coupling.excitation_frequency: expected a frequency such as"),
+        ('excitation_frequency = "150 Hz"\n', "", "coupling.excitation_frequency: expected a value, found none"),
+        ('shaft_2 = "16 mm h7"\n', "", "coupling.shaft_2: expected a value, found none"),
+        ('type = "bellows"', 'type = "bellows"\nservice_factor = 0.5', "coupling.service_factor: expected a load factor S_A of 1 or more (E8), found 0.5"),
+        ('type = "bellows"', 'type = "bellows"\ncolour = "red"', "coupling.colour: unknown key"),
+        ('type = "bellows"', 'part = "XK-1"', "coupling.part: no part 'XK-1' in catalog"),
+        ('type = "bellows"', 'type = "bellows"\npart = "SKB-30"', "coupling.part: SKB-30 is a safety coupling, but coupling.type is 'bellows'"),
+        ('type = "bellows"', 'type = "bellows"\ncatalog = "nosuch"', "coupling.catalog: the catalog 'nosuch' does not exist"),
+        ('type = "bellows"', 'type = "elastomer"', "coupling.temperature: elastomer couplings need the operating temperature"),
+    ],
+)
+def test_bad_coupling_input_gives_one_line_naming_file_and_key(capsys, write_case, old, new, fragment):
+    assert old in COUPLING_TOML
+    path = case_with(write_case, COUPLING_TOML.replace(old, new, 1))
+    code, out, err = run(capsys, path, "--json")
+    assert code != 0
+    assert out == ""
+    assert err.count("\n") == 1 and err.startswith("error: ")
+    assert str(path) in err
+    assert fragment in err
