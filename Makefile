@@ -8,7 +8,7 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed-$(shell sha256sum environment.txt | cut -c1-12)
 EXAMPLE := cases/indexing-table.toml
 
-.PHONY: setup test report bench notebooks clean
+.PHONY: setup tex test report bench notebooks clean
 
 setup: $(STAMP)
 
@@ -19,14 +19,34 @@ $(STAMP): environment.txt
 	$(PY) -m ipykernel install --sys-prefix --name python3 >/dev/null
 	@rm -f $(VENV)/.installed-* && touch $@
 
-test: setup
+# The PDF reports need XeLaTeX, pandoc (nbconvert), the DejaVu fonts (Greek, ≤ ≥ · ° µ in text and
+# math) and poppler (pdftotext, pdftoppm: the report tests read and render the PDF). On Debian they
+# are installed here when missing (as root); elsewhere this says what to install.
+TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic lmodern pandoc poppler-utils \
+            fonts-dejavu-core fonts-dejavu-extra fontconfig
+tex:
+	@missing=""; \
+	for tool in xelatex pandoc pdftotext pdftoppm; do command -v $$tool >/dev/null || missing="$$missing $$tool"; done; \
+	command -v fc-list >/dev/null && fc-list : family | grep -q "DejaVu Math TeX Gyre" || missing="$$missing DejaVu-fonts"; \
+	test -z "$$missing" && exit 0; \
+	if command -v apt-get >/dev/null && [ "$$(id -u)" = 0 ]; then \
+	  echo "installing the TeX tools for the PDF reports (missing:$$missing)"; \
+	  export DEBIAN_FRONTEND=noninteractive; \
+	  apt-get update -qq && apt-get install -y -qq --no-install-recommends $(TEX_DEBS) >/dev/null || exit 1; \
+	else \
+	  echo "The PDF reports need:$$missing." >&2; \
+	  echo "  Debian/Ubuntu (as root): apt-get install --no-install-recommends $(TEX_DEBS)" >&2; \
+	  echo "  Fedora: dnf install texlive-xetex texlive-collection-latexextra pandoc poppler-utils dejavu-fonts-all" >&2; \
+	  echo "  macOS (Homebrew): brew install --cask mactex-no-gui; brew install pandoc poppler; brew install --cask font-dejavu" >&2; \
+	  echo "  Windows: MiKTeX (or TeX Live), pandoc, poppler and the DejaVu fonts" >&2; \
+	  exit 1; \
+	fi
+
+test: setup tex
 	$(PY) -m pytest
 
-report: setup
-	@mkdir -p reports
-	$(PY) -m calc evaluate $(EXAMPLE) > reports/indexing-table.txt
-	@cat reports/indexing-table.txt
-	@echo "written: reports/indexing-table.txt"
+report: setup tex
+	$(PY) -m calc report $(EXAMPLE) -o reports/indexing-table.pdf
 
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
 notebooks: setup

@@ -1,4 +1,5 @@
-"""Command line: ``python -m calc evaluate CASE.toml [--json]``."""
+"""Command line: ``python -m calc evaluate CASE.toml [--json]`` and
+``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf]``."""
 
 from __future__ import annotations
 
@@ -15,7 +16,14 @@ def main(argv=None) -> int:
     ev = sub.add_parser("evaluate", help="evaluate a design case and print its results")
     ev.add_argument("case", help="the design-case TOML file")
     ev.add_argument("--json", action="store_true", help="print the results as JSON (the contract of spec/case-format.md)")
+    rp = sub.add_parser("report", help="build the PDF calc report of one or more design cases")
+    rp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one PDF each")
+    rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
     args = parser.parse_args(argv)
+    if args.command == "report":
+        from .publish import main as report
+
+        return report(args.cases, args.output)
 
     from .case import read_case
     from .evaluate import evaluate, summary

@@ -1,0 +1,130 @@
+"""Calc reports as PDF: ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf]``.
+
+For each case the report notebook (``reports/calc-report.ipynb``) is executed by papermill with the
+case as its parameter, then exported by nbconvert through xelatex with the code hidden, using our
+LaTeX template (``reports/template/calc-report``). A progress bar runs over the cases; at the end
+one line per case gives its verdict and its PDF. A case that fails its checks, or cannot be
+evaluated, still gets its PDF (saying FAIL and why); only a PDF that cannot be built is an error.
+"""
+
+from __future__ import annotations
+
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+from .catalog import CATALOG_DIR, display_path
+from .errors import CalcError
+
+REPORTS_DIR = CATALOG_DIR.parent / "reports"
+NOTEBOOK = REPORTS_DIR / "calc-report.ipynb"
+TEMPLATE_DIRS = [str(REPORTS_DIR / "template")]
+TEMPLATE = "calc-report"
+#: The programs the PDF needs and where they come from (Debian package names).
+TOOLS = {"xelatex": "texlive-xetex", "pandoc": "pandoc"}
+
+
+def check_tools() -> None:
+    """Raise :class:`CalcError` naming each missing program and what to install."""
+    missing = [f"{tool} ({package})" for tool, package in TOOLS.items() if shutil.which(tool) is None]
+    if missing:
+        raise CalcError(
+            f"the PDF report needs {', '.join(missing)}, not found on this machine; on Debian run `make report` as root "
+            "(it installs them), elsewhere install a TeX distribution with XeLaTeX, pandoc and the DejaVu fonts"
+        )
+
+
+def output_paths(cases: list[Path], output: str | None) -> list[Path]:
+    """Where each case's PDF goes: ``reports/<case name>.pdf``, or ``output`` (a file for one case,
+    a folder for several)."""
+    if output is None:
+        paths = [Path("reports") / f"{c.stem}.pdf" for c in cases]
+    elif len(cases) == 1 and output.endswith(".pdf"):
+        paths = [Path(output)]
+    elif output.endswith(".pdf"):
+        raise CalcError(f"-o {output}: with {len(cases)} cases, expected a folder for their PDFs, found a file name")
+    else:
+        paths = [Path(output) / f"{c.stem}.pdf" for c in cases]
+    seen = {}
+    for case, pdf in zip(cases, paths):
+        if pdf in seen:
+            raise CalcError(f"{case}: its report {pdf} would overwrite the report of {seen[pdf]}; give the case files distinct names")
+        seen[pdf] = case
+    return paths
+
+
+def exporter():
+    """nbconvert's PDF exporter with our template, code and prompts hidden."""
+    from nbconvert import PDFExporter
+    from traitlets.config import Config
+
+    c = Config()
+    c.PDFExporter.extra_template_basedirs = TEMPLATE_DIRS
+    c.PDFExporter.template_name = TEMPLATE
+    c.PDFExporter.exclude_input = True
+    c.PDFExporter.exclude_input_prompt = True
+    c.PDFExporter.exclude_output_prompt = True
+    c.TagRemovePreprocessor.enabled = True
+    c.TagRemovePreprocessor.remove_cell_tags = {"remove"}
+    return PDFExporter(config=c)
+
+
+def render_pdf(case: Path, pdf: Path, workdir: Path) -> None:
+    """Execute the report notebook for ``case`` and write its PDF to ``pdf``.
+
+    The kernel talks over local sockets in ``workdir`` (IPC), not over TCP.
+    """
+    import papermill
+    from jupyter_client.manager import KernelManager
+    from nbconvert.exporters.pdf import LatexFailed
+
+    executed = workdir / f"{pdf.stem}.ipynb"
+    km = KernelManager(kernel_name="python3", transport="ipc", ip=str(workdir / "kernel"))
+    try:
+        nb = papermill.execute_notebook(
+            str(NOTEBOOK), str(executed), parameters={"case": str(case.resolve())},
+            cwd=str(NOTEBOOK.parent), progress_bar=False, log_output=False, kernel_name="python3", km=km,
+        )
+    except papermill.PapermillExecutionError as exc:
+        raise CalcError(f"{case}: the report notebook stopped: {exc.ename}: {exc.evalue}") from None
+    finally:
+        if km.has_kernel:  # a kernel manager handed to papermill is ours to shut down
+            km.shutdown_kernel()
+    try:
+        body, _ = exporter().from_notebook_node(nb, resources={"metadata": {"name": pdf.stem}})
+    except LatexFailed as exc:
+        tail = "\n".join(exc.output.splitlines()[-15:])
+        raise CalcError(f"{case}: xelatex could not typeset the report:\n{tail}") from None
+    pdf.parent.mkdir(parents=True, exist_ok=True)
+    pdf.write_bytes(body)
+
+
+def main(cases: list[str], output: str | None = None) -> int:
+    """Build one PDF per case with a progress bar; print one line per case; 0 if every PDF was built."""
+    from tqdm import tqdm
+
+    from .report import build_report
+
+    paths = [Path(c) for c in cases]
+    try:
+        for p in paths:
+            if not p.is_file():
+                raise CalcError(f"{p}: the case file does not exist")
+        pdfs = output_paths(paths, output)
+        check_tools()
+    except CalcError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    lines, failed = [], 0
+    with tempfile.TemporaryDirectory(prefix="calc-report-") as tmp:
+        for case, pdf in zip(tqdm(paths, desc="calc reports", unit="case", file=sys.stderr), pdfs):
+            try:
+                render_pdf(case, pdf, Path(tmp))
+            except CalcError as exc:
+                failed += 1
+                lines.append(f"ERROR {display_path(case)}: no PDF: {exc}")
+                continue
+            lines.append(f"{build_report(case).summary_line()}  ->  {pdf}")
+    print("\n".join(lines))
+    return 1 if failed else 0

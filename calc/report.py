@@ -1,0 +1,694 @@
+"""The calc report of a design case: what it holds, collected once and laid out in LaTeX.
+
+:func:`build_report` reads and evaluates a case and collects what a reviewer reads, in the order
+they read it (efficalc's order): the verdict and the chosen parts; the title block (the case file
+and each catalog with its SHA-256, the build date, the package version, the commit); method and
+assumptions (the source's sections and the errata readings that apply); the inputs; each
+calculation as ``symbol = formula = substituted values = result`` from the
+:class:`calc.formula.Formula` objects; the checks; the candidate tables; the figures; the order
+lines. Each part is a :class:`Latex` block: the report notebook (``reports/calc-report.ipynb``)
+displays it and nbconvert passes it unchanged into the PDF (:mod:`calc.publish`).
+
+Text from a case file or a catalog goes through :func:`latex_escape`, so it prints as written. A
+case that fails its checks, or cannot be evaluated at all, still gives a report: its verdict is
+FAIL and it says why.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import re
+import subprocess
+from dataclasses import dataclass, field
+from datetime import datetime, timezone
+from pathlib import Path
+
+import numpy as np
+
+from . import __version__
+from .case import Case, read_case
+from .catalog import CATALOG_DIR, display_path
+from .errors import CalcError
+from .evaluate import SECTIONS, evaluate, gearbox_selection
+from .formula import REGISTRY, Step
+from .gearbox import SHOCK_FACTORS, T_2max, inertia_ratio, n_1
+from .profile import ED, T_2m, Z_h, n_2m
+from .profile import t_k as t_k_symbol
+from .units import Q_, latex_unit, pretty_unit, sig
+
+PROJECT_DIR = CATALOG_DIR.parent
+
+#: The sections of the source document each part of a case is computed from.
+SOURCE_SECTIONS = {
+    "gearbox": (
+        "Determination of the Duty Cycle (ED)",
+        "Selection of Optimum Gearbox for a Continuous Operation (S1)",
+        "Selection of Optimum Gearbox for a Cycle Operation (S5)",
+    ),
+    "coupling": ("Sizing and Selecting for Couplings and Safety Couplings",),
+    "accuracy": ("Accuracy in Gearboxes and Couplings: Definitions (torsional stiffness, backlash, lost motion)",),
+}
+
+#: The errata readings (``errata.md``), one line each, and the part of a case each applies to.
+ERRATA = {
+    "E1": ("gearbox", "The S1 speed criterion is on the input side: n_2m · i ≤ n_1N."),
+    "E2": ("gearbox", "T_2m is the speed-weighted cubic mean of torque magnitudes and n_2m averages over the "
+           "moving time only (pauses drop out), for any number of segments."),
+    "E3": ("gearbox", "S5 if and only if ED < 60 % and the on-time t_a + t_c + t_d < 20 min; every other case S1. "
+           "The cycle time includes the pauses."),
+    "E4": ("gearbox", "Shock factor f_s: at a band boundary of Z_h (1000, 1500, 2000, 3000 per hour) the higher factor applies."),
+    "E5": ("gearbox", "The S5 speed check uses the highest output speed of the cycle: n_2max · i ≤ n_1max."),
+    "E6": ("gearbox", "The inertia match is reported as the ratio λ = (J_1 + J_L / i²) / J_motor; 1 is the ideal match."),
+    "E7": ("coupling", "Coupling resonance: the two-mass natural frequency f_e = 1/(2π) · √(C_T (J_A + J_L) / (J_A J_L)), "
+           "checked as f_e ≥ 2 f_er."),
+    "E8": ("coupling", "The factor 2.5 in M_N is the service factor S_A (default 2.5); between motor and gearbox "
+           "the coupling sees the load reflected to the input, J_L / i² + J_1."),
+    "E9": ("coupling", "The temperature factor applies to elastomer couplings only; at a band boundary the higher factor applies."),
+    "E10": ("coupling", "A safety coupling's disengagement torque T_A lies inside the size's adjustable range and "
+            "above the highest torque of normal operation."),
+    "E11": ("accuracy", "Stiffness and backlash are referred to the output: an input-side component counts with C · i² "
+            "and backlash / i."),
+    "E12": ("accuracy", "Stiffness, backlash and lost motion from a hysteresis curve: slope between 50 % and 100 % of "
+            "nominal torque, loop width at 0 N·m, deflection span within ±3 % of nominal torque."),
+    "E13": ("accuracy", "Positioning accuracy by the source's rule: up to 3 % of nominal torque, transmission accuracy "
+            "+ backlash; above, transmission accuracy + T / C."),
+    "E14": (None, "Units: stiffness in N·m/arcmin, inertia in kg·cm², speed in rpm; every conversion goes through "
+            "the one unit registry."),
+    "E15": (None, "Every angle, speed and stiffness input is checked for the angle in its unit (the unit library "
+            "treats angles as dimensionless); a shaft's frequency is n / 60 s per revolution."),
+}
+
+_UNIT = {"n_1N": "rpm", "n_1max": "rpm", "T_2N": "N*m", "T_2B": "N*m"}
+
+
+class Latex(str):
+    """A block of LaTeX: Jupyter shows it, nbconvert's LaTeX export passes it into the PDF as is."""
+
+    def _repr_latex_(self):
+        return str(self)
+
+
+_SPECIAL = {
+    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
+    "^": r"\textasciicircum{}", "_": r"\_", "%": r"\%", "~": r"\textasciitilde{}",
+}
+_LIGATURE = re.compile(r"(?<=[-`',<>!?])(?=[-`',<>!?])")
+
+
+def latex_escape(text) -> str:
+    r"""Text as LaTeX that prints exactly as written.
+
+    The ten special characters are escaped, line breaks become spaces, and ``{}`` is put between
+    characters that TeX would join (``--`` into a dash, ``''`` into a quote).
+
+    >>> print(latex_escape("Axis #3 — 50% load & T_2 {v2} \\ 100$"))
+    Axis \#3 — 50\% load \& T\_2 \{v2\} \textbackslash{} 100\$
+    >>> print(latex_escape("a--b"))
+    a-{}-b
+    """
+    out = "".join(_SPECIAL.get(c, c) for c in " ".join(str(text).splitlines()))
+    return _LIGATURE.sub("{}", out)
+
+
+_SYMBOL = re.compile(r"\b([A-Za-z])_([A-Za-z0-9]+)\b")
+
+
+def prose(text: str) -> str:
+    """Our own running text (readings, assumptions, reasons) as LaTeX: escaped, with each symbol
+    written as in code (``n_2m``, ``J_motor``) set in math and ``<=``, ``>=`` as ≤, ≥.
+
+    >>> print(prose("n_2m · i <= n_1N, 100%"))
+    $n_{\\mathrm{2m}}$ · i ≤ $n_{\\mathrm{1N}}$, 100\\%
+    """
+    out, last = [], 0
+    text = text.replace("<=", "≤").replace(">=", "≥")
+    for m in _SYMBOL.finditer(text):
+        out += [latex_escape(text[last:m.start()]), rf"${m.group(1)}_{{\mathrm{{{m.group(2)}}}}}$"]
+        last = m.end()
+    return "".join(out) + latex_escape(text[last:])
+
+
+def _text_math(text: str) -> str:
+    """A criterion written in plain text (``n_2m · i <= n_1N``) as LaTeX math."""
+    out = re.sub(r"\b([A-Za-z])_([A-Za-z0-9]+)", r"\1_{\\mathrm{\2}}", text)
+    return "$" + out.replace("<=", r"\le").replace(">=", r"\ge").replace("·", r"\cdot") + "$"
+
+
+def _q(d) -> str:
+    """A result quantity ``{"value", "unit"}`` as text (``151.3 N·m``)."""
+    if d is None or d.get("value") is None:
+        return "n/a"
+    return latex_escape(f"{sig(d['value'])} {pretty_unit(d['unit'])}".rstrip())
+
+
+def _num(q, unit: str) -> str:
+    return sig(q.m_as(unit))
+
+
+def _util(u) -> str:
+    if u is None or (isinstance(u, float) and np.isnan(u)):
+        return "no rating"
+    text = f"{u:.2f}"
+    return rf"\textcolor{{failred}}{{\textbf{{{text}}}}}" if u > 1 else text
+
+
+def _verdict(passes: bool) -> str:
+    return r"\pass" if passes else r"\fail"
+
+
+def sha256(path: Path) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def git_commit(folder: Path = PROJECT_DIR) -> str:
+    """The commit the package was built from, marked when calc/ or catalogs/ differ from it."""
+    try:
+        head = subprocess.run(["git", "-C", str(folder), "rev-parse", "HEAD"], capture_output=True, text=True, check=True)
+        dirty = subprocess.run(
+            ["git", "-C", str(folder), "status", "--porcelain", "--untracked-files=no", "--", "calc", "catalogs"],
+            capture_output=True, text=True, check=True,
+        )
+    except (OSError, subprocess.CalledProcessError):
+        return "not under version control"
+    return head.stdout.strip() + (" (with uncommitted changes in calc/ or catalogs/)" if dirty.stdout.strip() else "")
+
+
+def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "") -> str:
+    """A booktabs longtable: a long one breaks across pages with its header repeated, a short one
+    (up to 15 rows) stays on one page. Cells are LaTeX already; the note goes below the table."""
+    head = " & ".join(rf"\textbf{{{h}}}" for h in header) + r" \\"
+    end = r" \\*" if len(rows) <= 15 else r" \\"
+    body = "\n".join(" & ".join(r) + end for r in rows)
+    cap = rf"\caption{{{caption}}}\\*" if caption else ""
+    out = (
+        rf"\begin{{longtable}}{{{columns}}}" "\n" rf"{cap}\toprule {head}* \midrule\endfirsthead" "\n"
+        rf"\toprule {head} \midrule\endhead" "\n" r"\bottomrule\endlastfoot" "\n"
+        f"{body}\n" r"\end{longtable}"
+    )
+    if not caption:
+        out += r"\addtocounter{table}{-1}"  # longtable counts every table; only captioned ones are numbered
+    if note:
+        out += "\n" rf"\vspace{{-4pt}}{{\par\noindent\footnotesize {note}\par}}\vspace{{6pt}}"
+    return out
+
+
+def step_block(title: str, step: Step, note: str = "") -> str:
+    """One calculation: a heading, ``symbol = formula = values = result`` aligned on the equals
+    signs (scaled down only if wider than the page), and its reference."""
+    lhs, expr, values, result = step.parts()
+    f = step.formula
+    lines = rf"{lhs} &= {expr} \\ &= {values} \\ &= {result}"
+    ref = prose(f.reference + (f"; {note}" if note else ""))
+    return (
+        rf"\calcstep{{{latex_escape(title)}}}{{${f.result.latex}$}}"
+        "\n" r"\begin{adjustbox}{max width=\linewidth,center}$\displaystyle\begin{aligned}" f"{lines}"
+        r"\end{aligned}$\end{adjustbox}" "\n" rf"\calcref{{{ref}}}"
+    )
+
+
+def _symbols() -> dict:
+    """Every symbol of every formula, by its name in code."""
+    return {s.name: s for f in REGISTRY for s in (f.result, *f.inputs)}
+
+
+@dataclass
+class Report:
+    """Everything a calc report holds, collected from one case file."""
+
+    path: Path
+    title: str
+    built: str
+    commit: str
+    case: Case | None = None
+    results: dict | None = None
+    selection: object = None  # GearboxSelection
+    error: str | None = None  # why the case could not be evaluated
+    files: list = field(default_factory=list)  # (label, path text, sha256)
+
+    # -- the verdict -------------------------------------------------------------------------
+
+    @property
+    def chosen(self) -> list[tuple[str, str, str]]:
+        """(what, part, detail) of each chosen part; part is None where none passes."""
+        out = []
+        if self.results is None:
+            return out
+        g = self.results.get("gearbox")
+        if g:
+            best = g["candidates"][0] if g["candidates"] else None
+            detail = f"ratio {best['ratio']:g}, {self.selection.mode} checks, catalog {g['catalog']}" if best else ""
+            out.append(("Gearbox", g["selected"], detail))
+        for name in SECTIONS:
+            s = self.results.get(name)
+            if s and "selected" in s:
+                out.append((name.capitalize(), s["selected"], f"catalog {s['catalog']}" if s.get("catalog") else ""))
+        return out
+
+    @property
+    def reasons(self) -> list[str]:
+        """Why the case fails, one plain sentence each (empty when it passes)."""
+        if self.error is not None:
+            return [f"The case cannot be evaluated: {self.error}"]
+        if self.results is None:
+            return []
+        out = []
+        g = self.results.get("gearbox")
+        if g is None:
+            out.append("The case names no gearbox ratio or part, so no gearbox is checked.")
+        elif g["selected"] is None:
+            ratio = ", ".join(sorted({f"{c['ratio']:g}" for c in g["candidates"]}))
+            out.append(f"No gearbox of ratio {ratio} in {g['catalog']} passes the {g['mode']} checks:")
+            out += [f"{c['part']}: {'; '.join(c['reasons'])}" for c in g["candidates"]]
+        for name in SECTIONS:
+            s = self.results.get(name)
+            if not s:
+                continue
+            if "selected" in s and s["selected"] is None:
+                out.append(f"No {name} passes its checks:")
+                for c in s.get("candidates", []):
+                    why = c.get("reasons") or [k["name"] for k in c.get("checks", []) if not k.get("passes", True)]
+                    out.append(f"{c.get('part', '?')}: {'; '.join(map(str, why))}")
+            elif s.get("passes") is False:
+                why = s.get("reasons") or [k["name"] for k in s.get("checks", []) if not k.get("passes", True)]
+                out.append(f"The {name} requirement is not met: {'; '.join(map(str, why))}")
+        return out
+
+    @property
+    def passes(self) -> bool:
+        return self.error is None and not self.reasons
+
+    @property
+    def verdict(self) -> str:
+        return "PASS" if self.passes else "FAIL"
+
+    def summary_line(self) -> str:
+        """One line for a terminal: verdict, case, chosen parts or the first reason."""
+        if self.passes:
+            what = ", ".join(f"{w.lower()} {p}" for w, p, _ in self.chosen)
+        else:
+            what = " ".join(self.reasons[:2])
+        return f"{self.verdict}  {display_path(self.path)}: {what}"
+
+    # -- the blocks, in the order of the report ------------------------------------------------
+
+    def front_page(self) -> Latex:
+        """Title, verdict with its reasons, chosen parts, title block and signature lines."""
+        title = latex_escape(self.title)
+        out = [
+            rf"\renewcommand{{\reporttitle}}{{{title}}}",
+            rf"\renewcommand{{\reportcase}}{{{latex_escape(display_path(self.path))}}}",
+            rf"\hypersetup{{pdftitle={{{title}}}}}",
+            rf"\reportheading{{{title}}}{{{latex_escape(display_path(self.path))}}}",
+        ]
+        if self.passes:
+            body = "Every governing check passes." + self._governing_lines()
+        else:
+            render = latex_escape if self.error else prose  # an error message quotes the case file as written
+            items = "\n".join(rf"\item {render(r)}" for r in self.reasons)
+            body = r"The design does not pass. Why:" "\n" rf"\begin{{itemize}}{items}\end{{itemize}}"
+        out.append(rf"\verdictbox{{{self.verdict}}}{{{'passgreen' if self.passes else 'failred'}}}{{{body}}}")
+        if self.chosen:
+            rows = [[w, latex_escape(p) if p else r"\textcolor{failred}{none passes}", latex_escape(d)] for w, p, d in self.chosen]
+            out.append(r"\subsection*{Chosen parts}" + table(r"@{}l l p{0.55\linewidth}@{}", ["Part", "Chosen", "Basis"], rows))
+        rows = [
+            ["Case file", rf"\texttt{{{latex_escape(display_path(self.path))}}}"],
+            ["SHA-256", rf"\texttt{{\footnotesize {self.files[0][2]}}}" if self.files else "unreadable"],
+        ]
+        for label, path, digest in self.files[1:]:
+            rows += [[latex_escape(label), rf"\texttt{{{latex_escape(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
+        rows += [
+            ["Built", latex_escape(self.built)],
+            ["Package", latex_escape(f"calc {__version__}")],
+            ["Commit", rf"\texttt{{\footnotesize {latex_escape(self.commit)}}}"],
+        ]
+        out.append(r"\subsection*{Title block}" + table(r"@{}l p{0.78\linewidth}@{}", ["Item", "Value"], rows))
+        out.append(r"\signatures")
+        return Latex("\n".join(out))
+
+    def _governing_lines(self) -> str:
+        """The governing checks of each chosen part, one line each with its utilization."""
+        lines = []
+        for name in ("gearbox", *SECTIONS):
+            s = (self.results or {}).get(name)
+            if not s or not s.get("candidates") or not s.get("selected"):
+                continue
+            c = s["candidates"][0]
+            for k in c.get("checks", []):
+                if k.get("governs", True):
+                    crit = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+                    lines.append(rf"\item {latex_escape(name.capitalize())} {latex_escape(c['part'])}: {crit}: "
+                                 rf"{_q(k['required'])} against {_q(k['rated'])}, utilization {_util(k['utilization'])}")
+        return (r"\begin{itemize}" + "".join(lines) + r"\end{itemize}") if lines else ""
+
+    def method(self) -> Latex:
+        """The source's sections, the errata readings that apply, and the assumptions."""
+        if self.case is None:
+            return Latex("")
+        parts = {"gearbox"} | {name for name in SECTIONS if self.case.sections.get(name) is not None}
+        sections = [s for p in ("gearbox", *SECTIONS) if p in parts for s in SOURCE_SECTIONS[p]]
+        out = [r"\section{Method and assumptions}", r"\paragraph{Source.} The project's source document, sections:"]
+        out.append(r"\begin{itemize}" + "".join(rf"\item {latex_escape(s)}" for s in sections) + r"\end{itemize}")
+        out.append(r"\paragraph{Readings of the source (errata) applied in this report.}")
+        applied = [(k, text) for k, (part, text) in ERRATA.items() if part is None or part in parts]
+        if self.selection is None or self.selection.inertia_ratio is None:
+            applied = [(k, t) for k, t in applied if k != "E6"]
+        out.append(
+            r"\begin{description}[font=\normalfont\bfseries,leftmargin=3em,style=sameline]"
+            + "".join(rf"\item[{k}] {prose(t)}" for k, t in applied)
+            + r"\end{description}"
+        )
+        assumptions = [
+            "The load cycle is given at the gearbox output: each segment's mean output speed and output torque, "
+            "pauses by their duration.",
+            "Ratings are the catalog's published figures (each row names its source); rows marked illustrative are not "
+            "a maker's own figures and are never chosen without a look at the maker's data.",
+            "The operating mode decides which checks govern the verdict; the checks of the other mode are reported "
+            "for information only.",
+        ]
+        for name in ("gearbox", *SECTIONS):
+            s = (self.results or {}).get(name)
+            if s and s.get("ranking"):
+                assumptions.append(f"Ranking of the {name} candidates: {s['ranking']}.")
+        out.append(r"\paragraph{Assumptions.}" r"\begin{itemize}" + "".join(rf"\item {prose(a)}" for a in assumptions) + r"\end{itemize}")
+        return Latex("\n".join(out))
+
+    def inputs(self) -> Latex:
+        """The inputs as tables: symbol, value, unit, description (and where in the case file)."""
+        if self.case is None:
+            return Latex("")
+        c, sym = self.case, _symbols()
+        rows = []
+
+        def add(name, q, key):
+            if q is None:
+                return
+            s = sym[name]
+            unit = s.unit
+            rows.append([f"${s.latex}$", sig(q.m_as(unit) if unit else q.m_as("")), latex_escape(pretty_unit(unit)) or "–",
+                         latex_escape(s.description), rf"\texttt{{{latex_escape(key)}}}"])
+
+        add("T_1B", c.motor_peak_torque, "motor.peak_torque")
+        add("J_motor", c.motor_inertia, "motor.inertia")
+        add("J_L", c.load_inertia, "load.inertia")
+        add("i", c.ratio, "gearbox.ratio")
+        if c.gearbox_part:
+            rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", r"\texttt{gearbox.part}"])
+        if c.gearbox_catalog and (c.ratio is not None or c.gearbox_part):
+            rows.append(["–", latex_escape(c.gearbox_catalog), "–", "gearbox catalog", r"\texttt{gearbox.catalog}"])
+        out = [r"\section{Inputs}"]
+        if rows:
+            out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
+        p = c.profile
+        prow = []
+        for k, (phase, t, n, T) in enumerate(zip(p.phases, p.durations, p.speeds, p.torques), start=1):
+            moving = phase != "pause"
+            prow.append([str(k), phase, _num(t, "s"), _num(n, "rpm") if moving else "–", _num(T, "N*m") if moving else "–"])
+        s = _symbols()
+        out.append(table(
+            r"@{}r l r r r@{}",
+            ["k", "Phase", f"${t_k_symbol.latex}$ [s]", rf"${s['n_2k'].latex}$ [rpm]", rf"${s['T_2k'].latex}$ [N·m]"],
+            prow,
+            caption="Load cycle at the gearbox output (case key \\texttt{[[profile]]})",
+            note="Speeds are the mean output speed of each segment; a negative torque brakes.",
+        ))
+        for name in SECTIONS:
+            raw = c.sections.get(name)
+            if raw is not None:
+                out.append(_raw_section_tables(name, raw))
+        return Latex("\n".join(out))
+
+    def calculations(self) -> Latex:
+        """Every formula used, as ``symbol = formula = values = result`` with its reference."""
+        if self.results is None:
+            return Latex("")
+        p = self.case.profile
+        seg = p.moving_values()
+        out = [r"\section{Calculations}", r"\subsection{Duty cycle and operating mode}"]
+        d = self.results["duty"]
+        out.append(step_block("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle),
+                              f"operating mode {d['mode']} (E3)"))
+        out.append(r"\subsection{Continuous operation (S1)}")
+        s_n2m = n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])
+        out.append(step_block("Mean output speed", s_n2m))
+        out.append(step_block("Cubic mean output torque", T_2m.step(**seg)))
+        out.append(r"\subsection{Cycle operation (S5)}")
+        s_zh = Z_h.step(t_cycle=p.t_cycle)
+        out.append(step_block("Cycles per hour", s_zh))
+        fs = self.results["cyclic"]["fs"]
+        out.append(_shock_factor_block(s_zh.result.m_as("1/hour"), fs))
+        sel = self.selection
+        if sel is None:
+            return Latex("\n".join(out))
+        row = int(sel.order[0])
+        cat = sel.catalog
+        part = latex_escape(str(cat.parts[row]))
+        i = cat["ratio"][row]
+        chosen = "the chosen gearbox" if sel.selected else "the closest candidate (none passes)"
+        out.append(rf"\subsection{{Checks of {chosen}, {part}}}")
+        out.append(step_block("Input speed at the mean output speed (S1)", n_1.step(n_2=s_n2m.result, i=i), "compared with n_1N"))
+        out.append(step_block("Input speed at the highest output speed (S5)", n_1.step(n_2=p.n_2max, i=i), "compared with n_1max"))
+        if self.case.motor_peak_torque is not None:
+            out.append(step_block("Maximum output torque", T_2max.step(T_1B=self.case.motor_peak_torque, i=i, f_s=Q_(fs, ""),
+                                                                      eta=cat["eta"][row]), "compared with T_2B"))
+        if sel.inertia_ratio is not None and not np.isnan(cat["J_1"][row].magnitude):
+            out.append(step_block("Load to motor inertia ratio", inertia_ratio.step(
+                J_1=cat["J_1"][row], J_L=self.case.load_inertia, i=i, J_motor=self.case.motor_inertia), "errata E6"))
+        return Latex("\n".join(out))
+
+    def checks(self) -> Latex:
+        """The checks of each chosen part (or the closest candidate) with required, rated,
+        utilization and verdict."""
+        if not self.results or "gearbox" not in self.results:
+            return Latex("")
+        g = self.results["gearbox"]
+        c = g["candidates"][0]
+        out = [r"\section{Checks}"]
+        out.append(_checks_table(c, f"Checks of gearbox {c['part']}" + (" (chosen)" if g["selected"] else " (the closest candidate; none passes)")))
+        for name in SECTIONS:
+            s = self.results.get(name)
+            if s and s.get("candidates"):
+                first = s["candidates"][0]
+                if first.get("checks"):
+                    out.append(_checks_table(first, f"Checks of {name} {first.get('part', '')}"))
+        return Latex("\n".join(out))
+
+    def candidates(self) -> Latex:
+        """Every candidate at the ratio: its catalog ratings, and the utilization of each check."""
+        if not self.results or "gearbox" not in self.results:
+            return Latex("")
+        g, sel = self.results["gearbox"], self.selection
+        cat = sel.catalog
+        out = [r"\section{Candidates}"]
+        illustrative = False
+        rows = []
+        for r in sel.order:
+            c = next(x for x in g["candidates"] if x["part"] == str(cat.parts[r]))
+            illustrative |= c["illustrative"]
+            j1 = cat["J_1"][r]
+            rows.append([
+                latex_escape(c["part"]) + (r"$^{*}$" if c["illustrative"] else ""),
+                latex_escape(str(cat.text["series"][r])) if "series" in cat.text else "",
+                _num(cat["T_2N"][r], "N*m"), _num(cat["T_2B"][r], "N*m"),
+                _num(cat["n_1N"][r], "rpm"), _num(cat["n_1max"][r], "rpm"),
+                _num(cat["eta"][r], "percent"), "–" if np.isnan(j1.magnitude) else _num(j1, "kg*cm**2"),
+            ])
+        sources = sorted({str(cat.text["source"][r]) for r in sel.order})
+        note = "Sources: " + "; ".join(latex_escape(s) for s in sources)
+        if illustrative:
+            note = r"$^{*}$ illustrative row: not a maker's own figures. " + note
+        out.append(table(
+            r"@{}l l r r r r r r@{}",
+            ["Part", "Series", "$T_{2N}$ [N·m]", "$T_{2B}$ [N·m]", "$n_{1N}$ [rpm]", "$n_{1\\mathrm{max}}$ [rpm]", r"$\eta$ [\%]", "$J_1$ [kg·cm²]"],
+            rows, caption=latex_escape(f"Catalog ratings of the candidates ({g['catalog']}), best first"), note=note,
+        ))
+        out.append(_candidates_table(g, f"Utilization of each check (required / rated), {g['mode']} governs; "
+                                        "checks in grey are for information", inertia=True))
+        rejected = [c for c in g["candidates"] if c["reasons"]]
+        if rejected:
+            items = "".join(rf"\item \textbf{{{latex_escape(c['part'])}}}: {prose('; '.join(c['reasons']))}" for c in rejected)
+            out.append(r"\paragraph{Why the others are rejected.}" r"\begin{itemize}" + items + r"\end{itemize}")
+        for name in SECTIONS:
+            s = self.results.get(name)
+            if s and s.get("candidates"):
+                out.append(rf"\subsection*{{{name.capitalize()}}}")
+                out.append(_candidates_table(s, latex_escape(f"{name.capitalize()} candidates, best first")))
+        return Latex("\n".join(out))
+
+    def section_results(self) -> Latex:
+        """The results of the further sections (coupling, accuracy) as tables of their values."""
+        if not self.results:
+            return Latex("")
+        out = []
+        for name in SECTIONS:
+            s = self.results.get(name)
+            if s:
+                out.append(_section_values(name, s))
+        return Latex("\n".join(out))
+
+    def figures(self) -> list:
+        """(figure, caption) pairs: the load cycle, the shock factor, the utilizations; the caption
+        is LaTeX, for the output's ``caption`` metadata that our LaTeX template reads."""
+        if self.case is None:
+            return []
+        from .plots import load_cycle_figure, shock_factor_figure, utilization_figure
+
+        p = self.case.profile
+        out = [
+            (load_cycle_figure(p), "Load cycle at the gearbox output, with ED and the operating mode (E3)."),
+            (shock_factor_figure(Z_h(t_cycle=p.t_cycle)), "Shock factor against cycles per hour; the case's point marked (E4)."),
+        ]
+        if self.selection is not None:
+            out.append((utilization_figure(self.selection), "Utilization of the governing checks of each candidate, best first."))
+        return out
+
+    def figures_heading(self) -> Latex:
+        return Latex(r"\section{Figures}") if self.case is not None else Latex("")
+
+    def order_lines(self) -> Latex:
+        """What to order: one line per chosen part."""
+        if not self.results:
+            return Latex("")
+        lines = []
+        g = self.results.get("gearbox")
+        if g and g["selected"]:
+            sel = self.selection
+            r = int(sel.order[0])
+            lines.append(rf"Gearbox \textbf{{{latex_escape(g['selected'])}}}, ratio $i = {sig(sel.catalog['ratio'][r].m_as(''))}$"
+                         rf" (series {latex_escape(str(sel.catalog.text['series'][r]))})")
+        for name in SECTIONS:
+            s = self.results.get(name)
+            if s and s.get("order"):
+                lines.append(latex_escape(s["order"]))
+        out = [r"\section{Order}"]
+        if lines:
+            out.append(r"\begin{itemize}" + "".join(rf"\item {x}" for x in lines) + r"\end{itemize}")
+        else:
+            out.append(r"\textcolor{failred}{\textbf{Nothing to order: no part passes.}}")
+        return Latex("\n".join(out))
+
+
+def _shock_factor_block(zh: float, fs: float) -> str:
+    bounds = [b for b, _ in SHOCK_FACTORS]
+    k = int(np.searchsorted(bounds, zh, side="right") - 1)
+    low = bounds[k]
+    band = rf"{low} \le Z_h" + (rf" < {bounds[k + 1]}" if k + 1 < len(bounds) else "")
+    return (
+        r"\calcstep{Shock factor}{$f_{s}$, from the source's table}" "\n"
+        rf"\[ f_{{s}} = {fs:g} \quad\text{{for }} {band} \text{{ per hour }} (Z_h = {sig(zh)}) \]" "\n"
+        r"\calcref{source, S5 calculation 1; errata E4 (the higher factor at a band boundary)}"
+    )
+
+
+def _checks_table(candidate: dict, caption: str) -> str:
+    rows = []
+    for k in candidate["checks"]:
+        grey = "" if k.get("governs", True) else r"\color{infogrey}"
+        name = k.get("criterion") or k["name"]
+        mode = k.get("mode", "")
+        rows.append([
+            grey + (_text_math(name) if k.get("criterion") else latex_escape(name)), grey + latex_escape(mode),
+            grey + _q(k["required"]), grey + _q(k["rated"]), grey + _util(k["utilization"]),
+            (grey + _verdict(k["passes"])) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)"),
+        ])
+    return table(r"@{}l l r r r l@{}", ["Criterion", "Mode", "Required", "Rated", "Utilization", "Verdict"], rows,
+                 caption=latex_escape(caption), note="Utilization = required / rated; a check passes at 1.00 or below.")
+
+
+def _candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
+    names = [k["name"] for k in section["candidates"][0].get("checks", [])] if section["candidates"] else []
+    governs = {k["name"]: k.get("governs", True) for k in section["candidates"][0].get("checks", [])} if names else {}
+    header = ["Part"] + [
+        (r"\color{infogrey}" if not governs[n] else "") + _text_math(n) for n in names
+    ] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
+    rows = []
+    for c in section["candidates"]:
+        by = {k["name"]: k for k in c.get("checks", [])}
+        cells = [latex_escape(c.get("part", ""))]
+        cells += [(r"\color{infogrey}" if not governs[n] else "") + _util(by[n]["utilization"]) if n in by else "–" for n in names]
+        if inertia:
+            cells.append("–" if c.get("inertia_ratio") is None else f"{c['inertia_ratio']:.2f}")
+        cells.append(_verdict(c.get("passes", False)) + (r"{} \footnotesize(chosen)" if c.get("part") == section.get("selected") else ""))
+        rows.append(cells)
+    cols = "@{}l " + "r " * (len(names) + (1 if inertia else 0)) + "l@{}"
+    note = r"$\lambda = (J_1 + J_L / i^2) / J_{\mathrm{motor}}$, load to motor inertia ratio (E6)." if inertia else ""
+    return table(cols, header, rows, caption=caption, note=note)
+
+
+def _is_quantity(v) -> bool:
+    return isinstance(v, dict) and set(v) == {"value", "unit"}
+
+
+def _section_values(name: str, s: dict) -> str:
+    """A section's scalar results (quantities, numbers, texts) and its lists of records as tables."""
+    sym = _symbols()
+    rows, lists = [], []
+    for key, v in s.items():
+        if key in ("candidates", "selected", "order", "catalog", "catalog_sha256", "ranking"):
+            continue
+        label = f"${sym[key].latex}$" if key in sym else latex_escape(key)
+        desc = latex_escape(sym[key].description) if key in sym else ""
+        if _is_quantity(v):
+            rows.append([label, _q(v), desc])
+        elif isinstance(v, (int, float, str)) and not isinstance(v, bool):
+            rows.append([label, latex_escape(f"{v:g}" if isinstance(v, float) else v), desc])
+        elif isinstance(v, bool):
+            rows.append([label, _verdict(v), desc])
+        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            lists.append((key, v))
+    out = [rf"\section{{{latex_escape(name.capitalize())}: results}}"]
+    if rows:
+        out.append(table(r"@{}l >{\raggedleft\arraybackslash}p{0.25\linewidth} p{0.5\linewidth}@{}", ["Quantity", "Value", "Description"], rows))
+    for key, records in lists:
+        cols = [k for k in records[0] if not isinstance(records[0][k], (list, dict)) or _is_quantity(records[0][k])]
+        body = [[_q(r[k]) if _is_quantity(r.get(k)) else latex_escape("–" if r.get(k) is None else r[k]) for k in cols] for r in records]
+        out.append(table("@{}" + "l" * len(cols) + "@{}", [latex_escape(k) for k in cols], body, caption=latex_escape(key)))
+    return "\n".join(out)
+
+
+def _raw_section_tables(name: str, raw: dict) -> str:
+    """A further section of the case as written: key and value, sub-tables as their own tables."""
+    rows, subtables = [], []
+    for key, v in raw.items():
+        if isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            subtables.append((key, v))
+        else:
+            rows.append([rf"\texttt{{{latex_escape(f'{name}.{key}')}}}", latex_escape(v)])
+    out = []
+    if rows:
+        out.append(table(r"@{}l l@{}", ["Case key", "Value as written"], rows, caption=latex_escape(f"[{name}]")))
+    for key, records in subtables:
+        cols = list(dict.fromkeys(k for r in records for k in r))
+        body = [[latex_escape(r.get(k, "–")) for k in cols] for r in records]
+        out.append(table("@{}" + "l" * len(cols) + "@{}", [latex_escape(k) for k in cols], body,
+                         caption=latex_escape(f"[[{name}.{key}]]")))
+    return "\n".join(out)
+
+
+def build_report(case_path) -> Report:
+    """Read and evaluate a case and collect its report; a case that cannot be evaluated gives a
+    report whose verdict is FAIL with the reason (never an exception for bad input)."""
+    path = Path(case_path)
+    report = Report(
+        path=path,
+        title=path.stem,
+        built=datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        commit=git_commit(),
+    )
+    if path.is_file():
+        report.files.append(("Case file", display_path(path), sha256(path)))
+    try:
+        case = read_case(path)
+        report.case, report.title = case, case.title
+        results = evaluate(case)
+        if "gearbox" in results:
+            report.selection = gearbox_selection(case)
+    except CalcError as exc:
+        report.error = str(exc)
+        return report
+    report.results = results
+    for name in ("gearbox", *SECTIONS):
+        s = results.get(name)
+        if s and s.get("catalog") and s.get("catalog_sha256"):
+            report.files.append((f"{name.capitalize()} catalog", s["catalog"], s["catalog_sha256"]))
+    return report
+

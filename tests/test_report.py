@@ -1,0 +1,167 @@
+"""``python -m calc report``: the PDF calc report, its text, escaping, failing cases and batches.
+
+The PDFs are built once per module (each build runs the report notebook and xelatex, about 10 s)
+and read back with pdftotext. Expected numbers are the example's, worked by hand in
+tests/test_cli.py: T_2max = 12 N·m · 10 · 1.3 · 0.97 = 151.32 N·m, T_2m = 35.41 N·m.
+"""
+
+import re
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from calc.errors import CalcError
+from calc.publish import output_paths
+from calc.report import build_report, latex_escape, prose
+
+from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML
+
+TITLE = r"Axis #3 — 50% load & T_2 {v2} \ 100$"
+needs_tex = pytest.mark.skipif(
+    any(shutil.which(t) is None for t in ("xelatex", "pandoc", "pdftotext")),
+    reason="the PDF report needs xelatex, pandoc and pdftotext: run `make tex` (Debian) or install them",
+)
+
+
+def pdf_text(path) -> str:
+    out = subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True, check=True).stdout
+    return out
+
+
+def report(*args):
+    return subprocess.run([sys.executable, "-m", "calc", "report", *map(str, args)], capture_output=True, text=True)
+
+
+# -- without TeX ------------------------------------------------------------------------------
+
+
+def test_latex_escape_of_every_special_character():
+    assert latex_escape(TITLE) == r"Axis \#3 — 50\% load \& T\_2 \{v2\} \textbackslash{} 100\$"
+    assert latex_escape("~^") == r"\textasciitilde{}\textasciicircum{}"
+    # TeX would join these into a dash and a quote; they print as typed.
+    assert latex_escape("a--b ''c''") == "a-{}-b '{}'c'{}'"
+    assert latex_escape("two\nlines") == "two lines"
+
+
+def test_prose_sets_symbols_in_math_and_escapes_the_rest():
+    assert prose("T_2max <= T_2B: 20 % over") == r"$T_{\mathrm{2max}}$ ≤ $T_{\mathrm{2B}}$: 20 \% over"
+
+
+def test_a_passing_case_names_its_parts(write_case):
+    r = build_report(EXAMPLE)
+    assert r.verdict == "PASS" and r.reasons == []
+    assert ("Gearbox", "NPT035-10") in [(w, p) for w, p, _ in r.chosen]
+    assert r.summary_line().startswith("PASS  cases/indexing-table.toml: gearbox NPT035-10")
+    # Title block: the case file and each catalog with its SHA-256.
+    assert [label for label, _, _ in r.files][:2] == ["Case file", "Gearbox catalog"]
+    assert all(re.fullmatch(r"[0-9a-f]{64}", digest) for _, _, digest in r.files)
+
+
+def test_a_failing_case_says_why(write_case):
+    # T_1B = 30 N·m: T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m, above every T_2B at ratio 10 (at most 220 N·m).
+    r = build_report(write_case(HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML))
+    assert r.verdict == "FAIL"
+    assert r.reasons[0] == "No gearbox of ratio 10 in catalogs/gearboxes.csv passes the S5 checks:"
+    assert any(x.startswith("NPT035-10: T_2max <= T_2B: required 378.3 N·m > rated 220 N·m") for x in r.reasons)
+    assert r.front_page().count(r"\item") >= 4
+
+
+def test_a_case_that_cannot_be_evaluated_gives_a_fail_report(write_case):
+    r = build_report(write_case(HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML))
+    assert r.verdict == "FAIL"
+    assert "no gearbox in catalog" in r.reasons[0] and "has ratio 13" in r.reasons[0]
+    assert r.front_page()  # still a title page: title, verdict, the case file and its checksum
+    assert "motor.peak" in r.inputs()  # the inputs as read, for the reviewer to see what was asked
+    assert r.calculations() == r.checks() == r.candidates() == r.order_lines() == ""
+
+
+def test_output_paths(tmp_path):
+    a, b = tmp_path / "a.toml", tmp_path / "x" / "a.toml"
+    assert output_paths([a], None) == [tmp_path.__class__("reports/a.pdf")]
+    assert output_paths([a], "out/r.pdf")[0].name == "r.pdf"
+    with pytest.raises(CalcError, match="expected a folder"):
+        output_paths([a, a.with_name("c.toml")], "out/r.pdf")
+    with pytest.raises(CalcError, match="would overwrite the report of"):
+        output_paths([a, b], "out")
+
+
+def test_a_missing_case_file_is_an_error_before_anything_is_built(tmp_path):
+    proc = report(tmp_path / "nothing.toml", "-o", tmp_path)
+    assert proc.returncode == 2
+    assert proc.stderr.strip() == f"error: {tmp_path / 'nothing.toml'}: the case file does not exist"
+    assert list(tmp_path.iterdir()) == []
+
+
+# -- the PDFs ---------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def example_pdf(tmp_path_factory):
+    pdf = tmp_path_factory.mktemp("example") / "example.pdf"
+    proc = report(EXAMPLE, "-o", pdf)
+    assert proc.returncode == 0, proc.stderr
+    return pdf, proc
+
+
+@pytest.fixture(scope="module")
+def batch(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("batch")
+    cases = {
+        "escape": f"title = '{TITLE}'\n" + HEAD_TOML.replace('title = "test axis"', "") + PROFILE_TOML,
+        "failing": HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML,
+        "broken": HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML,
+    }
+    for name, text in cases.items():
+        (folder / f"{name}.toml").write_text(text, encoding="utf-8")
+    out = folder / "pdf"
+    proc = report(*(folder / f"{n}.toml" for n in cases), "-o", out)
+    assert proc.returncode == 0, proc.stderr
+    return out, proc
+
+
+@needs_tex
+def test_example_pdf_has_title_verdict_parts_and_numbers(example_pdf):
+    pdf, proc = example_pdf
+    text = pdf_text(pdf)
+    assert "Rotary indexing table, axis 3" in text
+    assert "Verdict: PASS" in text
+    assert "NPT035-10" in text
+    assert "151.3 N·m" in text  # T_2max = 12 · 10 · 1.3 · 0.97
+    assert "35.41 N·m" in text  # T_2m
+    for heading in ("Method and assumptions", "Inputs", "Calculations", "Checks", "Candidates", "Figures", "Order"):
+        assert re.search(rf"^\s*\d+\s+{heading}", text, re.M), heading
+    assert re.search(r"SHA-256\s+[0-9a-f]{64}", text)
+    pages = int(re.search(r"Page 1 of (\d+)", text).group(1))
+    assert pages >= 5
+    assert proc.stdout.strip().startswith("PASS  cases/indexing-table.toml: gearbox NPT035-10")
+
+
+@needs_tex
+def test_title_from_the_case_prints_exactly_as_written(batch):
+    out, _ = batch
+    text = pdf_text(out / "escape.pdf")
+    assert TITLE in text
+
+
+@needs_tex
+def test_failing_case_report_says_fail_and_why(batch):
+    out, _ = batch
+    text = pdf_text(out / "failing.pdf")
+    assert "Verdict: FAIL" in text
+    assert "The design does not pass. Why:" in text
+    assert "No gearbox of ratio 10 in catalogs/gearboxes.csv passes the S5 checks" in text
+    assert "Nothing to order: no part passes." in text
+    text = pdf_text(out / "broken.pdf")
+    assert "Verdict: FAIL" in text and "The case cannot be evaluated" in text
+
+
+@needs_tex
+def test_batch_builds_one_pdf_each_with_a_progress_bar_and_a_summary(batch):
+    out, proc = batch
+    assert sorted(p.name for p in out.iterdir()) == ["broken.pdf", "escape.pdf", "failing.pdf"]
+    assert "calc reports" in proc.stderr and "3/3" in proc.stderr
+    lines = proc.stdout.strip().splitlines()
+    assert [line.split()[0] for line in lines] == ["PASS", "FAIL", "FAIL"]
+    assert lines[0].endswith(str(out / "escape.pdf"))
