@@ -49,9 +49,10 @@ report: setup tex
 	$(PY) -m calc report $(EXAMPLE) -o reports/indexing-table.pdf
 
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
+# No execution times are recorded, so a re-run changes only what the calculation changed.
 notebooks: setup
 	for nb in notebooks/*.ipynb; do \
-	  $(PY) -m jupyter nbconvert --to notebook --execute --inplace "$$nb" || exit 1; done
+	  $(PY) -m jupyter nbconvert --to notebook --execute --inplace --ExecutePreprocessor.record_timing=False "$$nb" || exit 1; done
 
 clean:
 	rm -rf $(VENV) .pytest_cache .hypothesis
