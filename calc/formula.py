@@ -70,7 +70,9 @@ def _sympy() -> SimpleNamespace:
         """A number with its unit, standing in for a symbol in the substituted display."""
 
         def __new__(cls, key, tex, has_unit):
-            obj = super().__new__(cls, key)
+            # The text is part of the name: sympy caches symbols and products by name, and a
+            # product cached with an earlier value of the same key would print that value.
+            obj = super().__new__(cls, f"{key}={tex}")
             obj._tex = tex
             obj.precedence = PRECEDENCE["Mul"] if has_unit else PRECEDENCE["Atom"]
             return obj
