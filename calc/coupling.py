@@ -115,6 +115,17 @@ M_N = Formula(
     "source, Couplings, Sizing 1; errata E8 (the factor 2.5 is the load factor S_A, default 2.5)",
 )
 
+J_load_at_input = Formula(
+    _J_load,
+    (
+        Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load inertia at the gearbox output"),
+        Symbol("i", "i", "dimensionless", "", "ratio of the gearbox"),
+        Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia referred to its input"),
+    ),
+    lambda sp, J_L, i, J_1: J_L / i**2 + J_1,
+    "errata E8 (a coupling between motor and gearbox sees the load reflected to the input plus the gearbox's J_1)",
+)
+
 M_Nt = Formula(
     Symbol("M_Nt", r"M_{N\vartheta}", "torque", "N*m", "nominal torque with the temperature factor"),
     (_M_N, _K_T),
@@ -251,6 +262,7 @@ class CouplingSelection:
     f_e: object
     checks: list
     passes: np.ndarray
+    worst: np.ndarray  # highest utilization of the checks that apply (inf where one cannot be made)
     order: np.ndarray
     notes: list
 
@@ -266,6 +278,31 @@ class CouplingSelection:
 
     def row_type(self, row: int) -> str:
         return str(self.catalog.text["type"][row])
+
+
+def candidates_frame(selection: CouplingSelection):
+    """One row per candidate, best first, as a pandas DataFrame: verdict, the key figures and why.
+
+    Columns: ``rank``, ``part``, ``type``, ``verdict`` (PASS/FAIL), ``M_N·K_ϑ [N·m]``,
+    ``T_KN [N·m]``, ``f_e [Hz]`` (NaN where the catalog lacks C_T or J), ``worst utilization``
+    and ``reasons`` (each failed check; empty for a pass). Values are not rounded.
+    """
+    import pandas as pd
+
+    order = selection.order
+    return pd.DataFrame(
+        {
+            "rank": np.arange(1, len(order) + 1),
+            "part": selection.catalog.parts[order].astype(str),
+            "type": selection.catalog.text["type"][order].astype(str),
+            "verdict": np.where(selection.passes[order], "PASS", "FAIL"),
+            "M_N·K_ϑ [N·m]": selection.M_Nt[order].m_as("N*m"),
+            "T_KN [N·m]": selection.catalog["T_KN"][order].m_as("N*m"),
+            "f_e [Hz]": selection.f_e[order].m_as("Hz"),
+            "worst utilization": selection.worst[order],
+            "reasons": ["; ".join(selection.reasons(row)) for row in order],
+        }
+    )
 
 
 def _positive(q, where: str, what: str):
@@ -449,11 +486,10 @@ def select_coupling(
             CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", is_line, missing),
         ]
     passes = np.logical_and.reduce([c.passes for c in checks])
-    with np.errstate(invalid="ignore"):
-        utilizations = np.array([np.where(c.applies if c.applies is not None else True, c.utilization, 0.0) for c in checks])
-        worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
+    utilizations = np.array([np.where(c.applies if c.applies is not None else True, c.utilization, 0.0) for c in checks])
+    worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
     order = rank(passes, catalog["T_KN"].m_as("N*m"), worst, catalog.parts)
-    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, c_t, j_a, j_l, fe, checks, passes, order, notes)
+    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, c_t, j_a, j_l, fe, checks, passes, worst, order, notes)
 
 
 def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str) -> None:

@@ -400,3 +400,32 @@ def test_bad_coupling_catalogs_name_row_and_column(tmp_path, edit, fragment):
     with pytest.raises(CalcError) as err:
         _check_types(load_catalog(path, SCHEMA))
     assert str(path) in str(err.value) and fragment in str(err.value)
+
+
+def test_a_step_shows_its_own_numbers_after_sympy_forgets_a_symbol():
+    # M_N with S_A = 2.5, then with S_A = 1 (the peak torque of normal operation, E10) after
+    # enough other symbols to evict sympy's cached value symbol: the second step must print 1.
+    import sympy as sp
+
+    values = dict(M_a=Q_(12, "N*m"), J_load=Q_(15.93, "kg*cm**2"), J_drive=Q_(4.2, "kg*cm**2"))
+    M_N.step(S_A=Q_(2.5, ""), **values).latex()
+    for k in range(3000):
+        sp.Symbol(f"churn_{k}")
+    assert r"12\,\mathrm{N\,m} \cdot 1}" in M_N.step(S_A=Q_(1, ""), **values).latex()
+
+
+def test_load_inertia_seen_through_the_gearbox():
+    # E8, hand calculation for the example: 1500 kg·cm² / 10² + 0.93 kg·cm² = 15.93 kg·cm².
+    from calc.coupling import J_load_at_input
+
+    assert J_load_at_input(J_L=Q_(1500, "kg*cm**2"), i=10, J_1=Q_(0.93, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(15.93)
+
+
+def test_candidates_frame_lists_the_ranked_candidates():
+    from calc.coupling import candidates_frame
+
+    frame = candidates_frame(select_coupling(of_type("bellows"), **EXAMPLE))
+    assert frame["part"].tolist()[:3] == ["AKD-30", "AKD-60", "AKD-150"]
+    assert frame["verdict"].tolist().count("PASS") == 3
+    assert frame.loc[0, "worst utilization"] == pytest.approx(23.7407 / 36, abs=1e-5)  # the torque check governs
+    assert frame.loc[3, "reasons"].startswith("M_N · K_ϑ <= T_KN: required 23.74 N·m > rated 22 N·m")
