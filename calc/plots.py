@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .errors import CalcError
 from .gearbox import SHOCK_FACTORS, GearboxSelection, shock_factor
 from .profile import S5_MAX_ED, S5_MAX_ON_TIME, Duty, Profile
 from .profile import duty as profile_duty
@@ -142,13 +143,16 @@ def shock_factor_figure(cycles_per_hour=None):
     factors = np.array([f for _, f in SHOCK_FACTORS], dtype=float)
     z_case = None
     if cycles_per_hour is not None:
-        z_case = float(as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as("1/hour"))
+        z = as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as("1/hour")
+        if np.ndim(z) != 0:
+            raise CalcError(f"cycles_per_hour: expected one number of cycles per hour, found {np.size(z)} of them")
+        z_case = float(z)
         f_case = float(shock_factor(cycles_per_hour))
     x_end = bounds[-1] + (bounds[-1] - bounds[-2])
     if z_case is not None and z_case > 0.9 * x_end:
         x_end = 1.15 * z_case
 
-    fig = Figure(figsize=(7.5, 4.6), layout="constrained")
+    fig = Figure(figsize=(7.5, 5.2), layout="constrained")
     ax = fig.subplots()
     right = np.append(bounds[1:], x_end)
     ax.hlines(factors, bounds, right, color=SPEED_COLOR, linewidth=2.5, zorder=2)
@@ -182,7 +186,7 @@ def shock_factor_figure(cycles_per_hour=None):
     ax.set_ylabel("shock factor $f_s$ [–]")
     ax.set_title("Shock factor against cycles per hour (source S5 table, read with errata E4)\n"
                  "makers rate $T_{2B}$ for up to 1000 cycles per hour; $f_s$ covers more", fontsize=10)
-    ax.legend(handles=handles, loc="upper left", fontsize=8)
+    fig.legend(handles=handles, loc="outside lower center", ncols=1, fontsize=8, frameon=False)
     return fig
 
 
@@ -238,5 +242,5 @@ def utilization_figure(selection: GearboxSelection, limit: int = 12):
     shown = f"best {len(candidates)} of {total}" if total > len(candidates) else f"{total} candidate{'s' if total != 1 else ''}"
     ax.set_title(f"Utilization of the governing {selection.mode} checks, {shown} (hatched: over the limit)", fontsize=10)
     ax.grid(True, axis="y", color="#dddddd", linewidth=0.6, zorder=0)
-    ax.legend(loc="upper left", fontsize=8)
+    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=len(checks) + 1, fontsize=8, frameon=False)
     return fig

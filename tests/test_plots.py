@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from matplotlib.patches import StepPatch
 
-from calc import Q_
+from calc import CalcError, Q_
 from calc.catalog import load_catalog
 from calc.gearbox import SCHEMA, SHOCK_FACTORS, candidates_summary, candidates_table, rows_at_ratio, select_gearbox
 from calc.plots import load_cycle_figure, shock_factor_figure, utilization_figure
@@ -107,6 +107,13 @@ def test_shock_factor_figure_marks_the_case(t_cycle, z, fs):
     assert case.get_ydata()[0] == fs
     assert ax.get_xlim()[1] > z  # the point is inside the plot, also far to the right
     assert f"this case: $Z_h$ = {z} 1/h, $f_s$ = {fs:g}" in _texts(fig)
+
+
+def test_shock_factor_figure_takes_one_point():
+    with pytest.raises(CalcError, match="cycles_per_hour: expected one number"):
+        shock_factor_figure(Q_(np.array([1000.0, 2000.0]), "1/hour"))
+    with pytest.raises(CalcError, match="cycles_per_hour"):
+        shock_factor_figure(Q_(2, "s"))
 
 
 def test_utilization_figure_bars_the_governing_checks(selection):
