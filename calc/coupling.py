@@ -305,9 +305,9 @@ def candidates_frame(selection: CouplingSelection):
     )
 
 
-def _positive(q, where: str, what: str):
+def _positive(q, where: str, what: str, unit: str):
     if q is not None and not np.all(q.magnitude > 0):
-        raise CalcError(f"{where}: expected {what} above zero, found {fmt(q, f'{q.units}')}")
+        raise CalcError(f"{where}: expected {what} above zero, found {fmt(q, unit)}")
 
 
 def _as_bore(value, where: str) -> Bore:
@@ -395,20 +395,20 @@ def select_coupling(
     J_load = as_kind(load_inertia, "inertia", f"{where}.load_inertia")
     f_er = as_kind(excitation_frequency, "frequency", f"{where}.excitation_frequency")
     S_A = as_kind(service_factor, "dimensionless", f"{where}.service_factor")
-    _positive(M_a, f"{where}.accel_torque", "a torque")
-    _positive(J_drive, f"{where}.drive_inertia", "an inertia")
-    _positive(J_load, f"{where}.load_inertia", "an inertia")
-    _positive(f_er, f"{where}.excitation_frequency", "a frequency")
+    _positive(M_a, f"{where}.accel_torque", "a torque", "N*m")
+    _positive(J_drive, f"{where}.drive_inertia", "an inertia", "kg*cm**2")
+    _positive(J_load, f"{where}.load_inertia", "an inertia", "kg*cm**2")
+    _positive(f_er, f"{where}.excitation_frequency", "a frequency", "Hz")
     if not S_A.m_as("") >= 1:
         raise CalcError(f"{where}.service_factor: expected a load factor S_A of 1 or more (E8), found {sig(S_A.m_as(''))}")
     bore_1, bore_2 = _as_bore(shaft_1, f"{where}.shaft_1"), _as_bore(shaft_2, f"{where}.shaft_2")
     if speed is not None:
         speed = as_kind(speed, "speed", f"{where}.speed")
-        _positive(speed, f"{where}.speed", "a speed")
+        _positive(speed, f"{where}.speed", "a speed", "rpm")
     T_A = None if disengagement_torque is None else as_kind(disengagement_torque, "torque", f"{where}.disengagement_torque")
     A = None if shaft_distance is None else as_kind(shaft_distance, "length", f"{where}.shaft_distance")
-    _positive(T_A, f"{where}.disengagement_torque", "a torque")
-    _positive(A, f"{where}.shaft_distance", "a distance")
+    _positive(T_A, f"{where}.disengagement_torque", "a torque", "N*m")
+    _positive(A, f"{where}.shaft_distance", "a distance", "mm")
     _only_for(T_A, is_safety, types, "safety", f"{where}.disengagement_torque", "a disengagement torque T_A (E10)")
     _only_for(A, is_line, types, "line-shaft", f"{where}.shaft_distance", "a distance between shafts")
     if A is not None:
@@ -437,10 +437,12 @@ def select_coupling(
     with np.errstate(invalid="ignore", divide="ignore"):
         j_a = J_A(J_drive=J_drive, J_K=catalog["J"])
         j_l = J_L(J_load=J_load, J_K=catalog["J"])
-        c_t = catalog["C_T"].to("N*m/rad")
+        # A line shaft's catalog C_T is its bellows alone; its own stiffness needs the tube's length.
+        c_line = np.full(n, np.nan)
         if A is not None:
-            c_line = C_T_line(C_B=catalog["C_T"], Z=Z(A=A, H=catalog["H"]), C_tube=catalog["C_tube"])
-            c_t = Q_(np.where(is_line & (A >= 2 * catalog["H"]), c_line.m_as("N*m/rad"), c_t.magnitude), "N*m/rad")
+            fits_in = A >= 2 * catalog["H"]
+            c_line = np.where(fits_in, C_T_line(C_B=catalog["C_T"], Z=Z(A=A, H=catalog["H"]), C_tube=catalog["C_tube"]).m_as("N*m/rad"), np.nan)
+        c_t = Q_(np.where(is_line, c_line, catalog["C_T"].m_as("N*m/rad")), "N*m/rad")
         fe = f_e(C_T=c_t, J_A=j_a, J_L=j_l)
 
     def full(q):

@@ -429,3 +429,16 @@ def test_candidates_frame_lists_the_ranked_candidates():
     assert frame["verdict"].tolist().count("PASS") == 3
     assert frame.loc[0, "worst utilization"] == pytest.approx(23.7407 / 36, abs=1e-5)  # the torque check governs
     assert frame.loc[3, "reasons"].startswith("M_N · K_ϑ <= T_KN: required 23.74 N·m > rated 22 N·m")
+
+
+def test_a_line_shaft_without_its_distance_is_not_checked_as_bellows_alone(tmp_path):
+    # Without the shaft distance, the catalog's C_T (the two bellows) must not stand in for the
+    # line shaft's stiffness: f_e cannot be computed and the check fails with its reason.
+    text = (resolve("couplings", None, "catalog").read_text().splitlines()[0] + "\n"
+            "LS-150,LS,150,line-shaft,150,,87500,20230,20,3000,10,40,10,40,,,78,3000,yes,test row\n"
+            "AKD-30,AKD,30,bellows,36,,25000,,1,10200,10,30,10,30,,,,,no,test row\n")
+    (tmp_path / "mixed.csv").write_text(text)
+    s = select_coupling(load_catalog(tmp_path / "mixed.csv", SCHEMA), **EXAMPLE)
+    assert np.isnan(s.f_e[0].magnitude) and not s.passes[0]
+    assert "2 f_er <= f_e: not checked, a line shaft's stiffness needs coupling.shaft_distance" in s.reasons(0)
+    assert s.selected == "AKD-30"
