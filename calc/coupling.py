@@ -387,6 +387,7 @@ def select_coupling(
     """
     if not len(catalog):
         raise CalcError(f"{where}: no coupling to check, the catalog has no rows")
+    check_types(catalog)
     types = catalog.text["type"]
     is_el, is_safety, is_line = (types == "elastomer"), (types == "safety"), (types == "line-shaft")
     n = len(catalog)
@@ -560,7 +561,7 @@ def read_section(case: Case) -> CouplingCase:
     """Read ``[coupling]`` key by key; errors name the file and the key."""
     s = Section(case.path, "coupling", case.sections["coupling"], KEYS)
     catalog = load_catalog(resolve(s.text("catalog", default="couplings"), case.folder, s.where("catalog")), SCHEMA)
-    _check_types(catalog)
+    check_types(catalog)
     wanted = s.text("type")
     if wanted is not None and wanted not in TYPES:
         raise CalcError(f"{s.where('type')}: unknown coupling type {wanted!r}; expected one of {', '.join(TYPES)}")
@@ -593,15 +594,23 @@ def read_section(case: Case) -> CouplingCase:
     return CouplingCase(catalog, wanted, inputs, bores)
 
 
-def _check_types(catalog: Catalog) -> None:
-    """Each row's type is known and the row fills the columns its type needs."""
-    for j, t in enumerate(catalog.text["type"]):
-        where = f"{catalog.path}, row {catalog.lines[j]} ({catalog.parts[j]})"
-        if t not in TYPES:
-            raise CalcError(f"{where}, column type: expected one of {', '.join(TYPES)}, found {t!r}")
-        for column in _TYPE_NEEDS.get(t, ()):
-            if np.isnan(catalog[column][j].magnitude):
-                raise CalcError(f"{where}, column {column}: a {t} coupling needs a value, found an empty cell")
+def check_types(catalog: Catalog) -> None:
+    """Each row's type is known and the row fills the columns its type needs; raises
+    :class:`CalcError` naming the file, row and column."""
+    types = catalog.text["type"]
+
+    def where(j):
+        return f"{catalog.path}, row {catalog.lines[j]} ({catalog.parts[j]})"
+
+    unknown = np.flatnonzero(~np.isin(types, TYPES))
+    if len(unknown):
+        j = unknown[0]
+        raise CalcError(f"{where(j)}, column type: expected one of {', '.join(TYPES)}, found {types[j]!r}")
+    for t, columns in _TYPE_NEEDS.items():
+        for column in columns:
+            empty = np.flatnonzero((types == t) & np.isnan(catalog[column].magnitude))
+            if len(empty):
+                raise CalcError(f"{where(empty[0])}, column {column}: a {t} coupling needs a value, found an empty cell")
 
 
 def section_results(case: Case) -> dict:

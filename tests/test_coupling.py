@@ -393,12 +393,12 @@ def test_catalog_rows_say_their_source_and_safety_rows_are_illustrative():
     ],
 )
 def test_bad_coupling_catalogs_name_row_and_column(tmp_path, edit, fragment):
-    from calc.coupling import _check_types
+    from calc.coupling import check_types
 
     path = tmp_path / "c.csv"
     path.write_text(edit(resolve("couplings", None, "catalog").read_text()))
     with pytest.raises(CalcError) as err:
-        _check_types(load_catalog(path, SCHEMA))
+        check_types(load_catalog(path, SCHEMA))
     assert str(path) in str(err.value) and fragment in str(err.value)
 
 

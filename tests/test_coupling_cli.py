@@ -143,3 +143,14 @@ def test_bad_coupling_input_gives_one_line_naming_file_and_key(capsys, write_cas
     assert err.count("\n") == 1 and err.startswith("error: ")
     assert str(path) in err
     assert fragment in err
+
+
+def test_a_bad_coupling_catalog_names_file_row_and_column(capsys, write_case, tmp_path):
+    from calc.catalog import resolve
+
+    good = resolve("couplings", None, "catalog").read_text()
+    (tmp_path / "my.csv").write_text(good.replace("AKD-30,AKD,30,bellows,36,", "AKD-30,AKD,30,bellows,3x6,"))
+    path = case_with(write_case, COUPLING_TOML.replace('type = "bellows"', 'type = "bellows"\ncatalog = "my.csv"'))
+    code, out, err = run(capsys, path, "--json")
+    assert code != 0 and out == ""
+    assert f"{tmp_path / 'my.csv'}, row 3 (AKD-30), column T_KN: expected a number, found '3x6'" in err
