@@ -333,7 +333,7 @@ def read_accuracy(case: Case) -> AccuracyCase:
 def _positive(sec: Section, key: str, kind: str):
     q = sec.quantity(key, kind)
     if q is not None and not q.magnitude > 0:
-        raise CalcError(f"{sec.where(key)}: expected {'a torque' if kind == 'torque' else 'an angle'} above zero, found {sec.data[key]!r}")
+        raise CalcError(f"{sec.where(key)}: expected {'an' if kind == 'angle' else 'a'} {kind} above zero, found {sec.data[key]!r}")
     return q
 
 

@@ -82,7 +82,7 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
         ft, fp = fit.torque.m_as("N*m"), fit.twist.m_as("arcmin")
         ax.plot(ft, fp, color=FIT_COLOR, linewidth=2.4, zorder=3)
         ax.annotate(
-            f"$C_t$ = {fmt(stiff, 'N*m/arcmin', 3)}\n({fit.samples} loading samples)", (ft.mean(), fp.mean()), xytext=(0, -22 * sign),
+            f"$C_t$ = {fmt(stiff, 'N*m/arcmin', 4)}\n({fit.samples} loading samples)", (ft.mean(), fp.mean()), xytext=(0, -22 * sign),
             textcoords="offset points", ha="center", va="top" if sign > 0 else "bottom", fontsize=8, color=FIT_COLOR,
         )
     ax.set_ylabel("twist at the output $\\varphi$ [arcmin]")

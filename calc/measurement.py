@@ -99,7 +99,7 @@ def read_measurement(path, columns: tuple[Column, ...]) -> Measurement:
         raise CalcError(f"{path}: expected rows of data after the header (row {header_line}), found none")
     try:
         frame = pd.read_csv(
-            io.StringIO(body + "\n"), header=None, usecols=[names[c.name][0] for c in columns],
+            io.StringIO(body + "\n"), header=None, names=range(len(names)),
             skip_blank_lines=False, keep_default_na=False, engine="c",
         )
     except pd.errors.ParserError as exc:

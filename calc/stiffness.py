@@ -34,7 +34,7 @@ from .units import Q_, as_kind
 
 SIDES = ("input", "output")
 
-_i = Symbol("i", "i", "dimensionless", "", "gearbox ratio (input speed / output speed)")
+_i = Symbol("i", "i", "dimensionless", "", "ratio")
 
 series_stiffness = Formula(
     Symbol("C_total", r"C_{\mathrm{total}}", "stiffness", "N*m/arcmin", "total torsional stiffness, at the output"),

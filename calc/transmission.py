@@ -28,13 +28,16 @@ COLUMNS = (
 
 #: The fewest samples a record needs in a direction of travel.
 MIN_SAMPLES = 20
+#: The share of an output revolution a direction must cover: the samples at a reversal may fall
+#: to either direction.
+FULL_TURN = 0.99
 
 transmission_error = Formula(
     Symbol("Delta_phi_2", r"\Delta\varphi_{2}", "angle", "arcsec", "transmission error at the output"),
     (
         Symbol("phi_2", r"\varphi_{2}", "angle", "deg", "actual output position"),
         Symbol("phi_1", r"\varphi_{1}", "angle", "deg", "input position"),
-        Symbol("i", "i", "dimensionless", "", "gearbox ratio"),
+        Symbol("i", "i", "dimensionless", "", "ratio"),
     ),
     lambda sp, phi_2, phi_1, i: phi_2 - phi_1 / i,
     "source, Angular Transmission Accuracy: actual output position relative to the theoretical output position according to the ratio",
@@ -152,8 +155,10 @@ def analyze_trace(trace: Trace, ratio) -> TransmissionAnalysis:
     -----
     The error's constant part (where the encoders were zeroed) is taken out; it does not change a
     range. The range is the literal maximum minus minimum, as the source defines it, so noise of
-    the position encoders counts into it. Raises :class:`CalcError` for too few samples or for a
-    record in which no direction covers a full output revolution.
+    the position encoders counts into it. A direction counts when its theoretical output
+    position ``φ_1 / i`` spans at least 99 % of a revolution (the samples at a reversal may fall
+    to either direction). Raises :class:`CalcError` for too few samples or for a record in which
+    no direction covers a full output revolution.
 
     Examples
     --------
@@ -171,14 +176,15 @@ def analyze_trace(trace: Trace, ratio) -> TransmissionAnalysis:
     error = transmission_error(phi_2=trace.output, phi_1=trace.input, i=i).m_as("arcsec")
     error = error - error.mean()
     output = trace.output.m_as("deg")
-    direction = travel_direction(trace.input.m_as("deg"))
+    theoretical = trace.input.m_as("deg") / i.m_as("")
+    direction = travel_direction(theoretical)
     ranges, covered = {}, {}
     for sign, name in ((1, "forward"), (-1, "backward")):
         mask = direction == sign
         if mask.sum() < MIN_SAMPLES:
             continue
-        covered[name] = float(np.ptp(output[mask]))
-        if covered[name] >= 360.0 * (1 - 1e-9):
+        covered[name] = float(np.ptp(theoretical[mask]))
+        if covered[name] >= 360.0 * FULL_TURN:
             ranges[name] = Q_(np.array([error[mask].min(), error[mask].max()]), "arcsec")
     if not ranges:
         found = ", ".join(f"{k} {v:.4g}°" for k, v in covered.items()) or "no direction with enough samples"
