@@ -48,6 +48,10 @@ test: setup tex
 report: setup tex
 	$(PY) -m calc report $(EXAMPLE) -o reports/indexing-table.pdf
 
+# One line per measurement, `name: value unit`, with its target (bench/bench.py says what each is).
+bench: setup tex
+	$(PY) bench/bench.py
+
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
 # No execution times are recorded, so a re-run changes only what the calculation changed.
 notebooks: setup

@@ -7,6 +7,8 @@ expression over named :class:`Symbol` s. From that one object come
 * its numeric evaluation (:meth:`Formula.__call__`): quantities in, each checked for its kind
   (dimension and angle, errata E15), converted to coherent SI magnitudes, evaluated by a
   ``lambdify``-generated numpy function over scalars or whole arrays, and the unit reattached;
+  the generated function of each formula of the package is stored in :mod:`calc.formula_numeric`
+  (written by ``python -m calc.codegen``, checked by the tests), so evaluating needs no sympy;
 * its dimensional check (:meth:`Formula.check_dimensions`), run over every formula by the tests;
 * its display with substituted values (:meth:`Formula.step`), ``symbol = expression = numbers =
   result``, printed from the expression tree, never from source text.
@@ -14,20 +16,23 @@ expression over named :class:`Symbol` s. From that one object come
 Sums over the segments of a load profile are written with :func:`segment_sum` (Σ over k); the
 numeric form sums over the last axis, so a batch of profiles evaluates at once.
 
-sympy is imported on first use of a formula's expression, not when ``calc`` is imported.
+sympy is imported on first use of a formula's expression, not when ``calc`` is imported, nor to
+evaluate a formula whose stored numeric form is current.
 """
 
 from __future__ import annotations
 
 import functools
+import hashlib
+import inspect
 from dataclasses import dataclass
-from types import SimpleNamespace
+from types import CodeType, SimpleNamespace
 from typing import Callable
 
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, as_kind, kind, latex_unit, pretty_unit, sig, ureg
+from .units import Q_, as_kind, kind, latex_unit, pretty_unit, sig, unit, ureg
 
 REGISTRY: list["Formula"] = []
 
@@ -146,32 +151,75 @@ class Formula:
     def _repr_latex_(self):
         return f"$${self.latex()}$$"
 
+    @property
+    def key(self) -> str:
+        """The module that defines the formula and its name (``calc.gearbox.T_2max``)."""
+        return f"{self._build.__module__}.{self.name}"
+
+    @functools.cached_property
+    def fingerprint(self) -> str:
+        """A digest of what the expression is built from (the builder's code and the constants it
+        reads, the symbols' names), computed without sympy."""
+        parts = [self.result.name, [s.name for s in self.inputs], _code_parts(self._build.__code__, self._build.__globals__)]
+        parts += [repr(c.cell_contents) for c in self._build.__closure__ or ()]
+        return hashlib.sha256(repr(parts).encode()).hexdigest()[:16]
+
     @functools.cached_property
     def numeric(self) -> Callable:
-        """The right-hand side as a numpy function of SI magnitudes, in the order of ``inputs``."""
+        """The right-hand side as a numpy function of SI magnitudes, in the order of ``inputs``.
+
+        It is what :meth:`lambdified` generates from the expression. For the package's formulas
+        it is read from :mod:`calc.formula_numeric`, where it was stored from that same
+        generator, as long as the builder is the one it was stored from (:attr:`fingerprint`).
+        """
+        from .formula_numeric import FUNCTIONS
+
+        fingerprint, function = FUNCTIONS.get(self.key, (None, None))
+        return function if fingerprint == self.fingerprint else self.lambdified()
+
+    def lambdified(self) -> Callable:
+        """The right-hand side turned into a numpy function by sympy's ``lambdify``."""
         s = _sympy()
         return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": _sum_last_axis}, "numpy"])
 
-    def _si_args(self, values: dict) -> list:
-        takes = [s.name for s in self.inputs if s.value is None]
-        unknown = set(values) - set(takes)
-        if unknown:
-            raise CalcError(f"{self.name}: unknown argument {sorted(unknown)[0]!r}; the formula takes {', '.join(takes)}")
-        args = []
+    def numeric_source(self, name: str) -> str:
+        """The source of :meth:`lambdified` as a function called ``name``."""
+        source = inspect.getsource(self.lambdified())
+        return source.replace("def _lambdifygenerated(", f"def {name}(", 1)
+
+    @functools.cached_property
+    def _arguments(self) -> tuple:
+        """Per input: the symbol, its SI unit and, for a constant, its SI magnitude."""
+        out = []
         for s in self.inputs:
-            if s.value is not None:
-                args.append(Q_(s.value).m_as(kind(s.kind).si_unit))
+            si = unit(kind(s.kind).si_unit)
+            out.append((s, si, None if s.value is None else Q_(s.value).m_as(si)))
+        return tuple(out)
+
+    @functools.cached_property
+    def _takes(self) -> tuple:
+        return tuple(s.name for s in self.inputs if s.value is None)
+
+    def _si_args(self, values: dict) -> list:
+        if not values.keys() <= set(self._takes):
+            unknown = sorted(set(values) - set(self._takes))
+            raise CalcError(f"{self.name}: unknown argument {unknown[0]!r}; the formula takes {', '.join(self._takes)}")
+        args = []
+        for s, si, constant in self._arguments:
+            if constant is not None:
+                args.append(constant)
                 continue
             if s.name not in values:
                 raise CalcError(f"{self.name}: missing argument {s.name!r} ({s.description}, {kind(s.kind).name})")
             q = as_kind(values[s.name], s.kind, f"{self.name}: argument {s.name!r}")
-            args.append(q.m_as(kind(s.kind).si_unit))
+            args.append(q.magnitude if q.units == si else q.m_as(si))
         return args
 
     def __call__(self, **values):
         """Evaluate with quantities (scalars or arrays); returns a quantity in the result's unit."""
         out = self.numeric(*self._si_args(values))
-        return Q_(out, kind(self.result.kind).si_unit).to(self.result.unit)
+        si, shown = unit(kind(self.result.kind).si_unit), unit(self.result.unit)
+        return Q_(out, si) if si == shown else Q_(out, si).to(shown)
 
     def check_dimensions(self) -> None:
         """Evaluate the expression on quantities of the declared units and check the result's kind.
@@ -243,6 +291,15 @@ class _Doc:
 
 Formula._class_doc = Formula.__doc__
 Formula.__doc__ = _Doc()
+
+
+def _code_parts(code: CodeType, namespace: dict) -> list:
+    """The parts of a builder's code that decide its expression: bytecode, names, constants (nested
+    code included) and the values of the plain constants it reads from its module."""
+    parts = [code.co_code, code.co_names, code.co_varnames]
+    parts += [_code_parts(c, namespace) if isinstance(c, CodeType) else repr(sorted(c)) if isinstance(c, frozenset) else repr(c) for c in code.co_consts]
+    parts += [repr(namespace[n]) for n in code.co_names if isinstance(namespace.get(n), (bool, int, float, str, tuple, dict))]
+    return parts
 
 
 def _value(s, q, spec: Symbol, key: str):

@@ -24,6 +24,12 @@ ureg.formatter.default_format = "~P"
 pint.set_application_registry(ureg)
 Q_ = ureg.Quantity
 
+
+@functools.cache
+def unit(text: str) -> pint.Unit:
+    """The registry's unit for one of the package's unit strings (``"N*m"``), parsed once."""
+    return ureg.Unit(text)
+
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 

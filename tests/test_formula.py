@@ -88,9 +88,76 @@ def test_import_calc_does_not_load_sympy_pandas_or_matplotlib():
     import subprocess
     import sys
 
-    code = "import sys, calc.evaluate, calc.case; print(sorted(m for m in ('sympy', 'pandas', 'matplotlib') if m in sys.modules))"
+    code = (
+        "import sys, calc.evaluate, calc.case, calc.codegen, calc.formula_numeric; "
+        "print(sorted(m for m in ('sympy', 'pandas', 'matplotlib') if m in sys.modules))"
+    )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_evaluating_the_example_does_not_load_sympy_or_matplotlib():
+    # The formulas run their stored numeric form (calc/formula_numeric.py): no sympy to evaluate a case.
+    import subprocess
+    import sys
+
+    from tests.conftest import EXAMPLE
+
+    code = (
+        "import sys, calc.evaluate, calc.case; calc.evaluate.evaluate(calc.case.read_case(sys.argv[1])); "
+        "print(sorted(m for m in ('sympy', 'matplotlib') if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code, str(EXAMPLE)], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
+
+
+def test_stored_numeric_forms_are_what_sympy_generates():
+    """calc/formula_numeric.py holds lambdify's source of every formula of the package, and each
+    formula evaluates through it: the fast path and the checked path are one code."""
+    import builtins
+    from pathlib import Path
+
+    from calc import codegen, formula_numeric
+
+    assert Path(formula_numeric.__file__).read_text() == codegen.module_text(), (
+        "calc/formula_numeric.py is out of date with the formulas: run .venv/bin/python -m calc.codegen"
+    )
+    for f in codegen.package_formulas():
+        stored = formula_numeric.FUNCTIONS[f.key][1]
+        assert f.numeric is stored, f.key
+        generated = f.lambdified()
+        for name in codegen._global_names(stored.__code__):
+            here = stored.__globals__.get(name, getattr(builtins, name, None))
+            there = generated.__globals__.get(name, getattr(builtins, name, None))
+            assert here is there, f"{f.key}: {name} is {here!r} in the stored code, {there!r} in lambdify's"
+
+
+def test_a_changed_formula_is_not_evaluated_by_stale_stored_code(monkeypatch):
+    from calc import formula_numeric
+
+    f = Formula(
+        Symbol("y", "y", "torque", "N*m", "result"),
+        (Symbol("x", "x", "torque", "N*m", "argument"),),
+        lambda sp, x: 2 * x,
+        "test",
+    )
+    try:
+        # An entry under this formula's key, stored from another builder (x + x + x).
+        monkeypatch.setitem(formula_numeric.FUNCTIONS, f.key, ("0" * 16, lambda x: 3 * x))
+        assert f(x=Q_(1.5, "N*m")).m_as("N*m") == pytest.approx(3.0)
+    finally:
+        REGISTRY.remove(f)
+
+
+def test_fingerprint_follows_the_builder_and_the_constants_it_reads():
+    def formula(build):
+        f = Formula(Symbol("y", "y", "torque", "N*m", "r"), (Symbol("x", "x", "torque", "N*m", "a"),), build, "test")
+        REGISTRY.remove(f)
+        return f
+
+    assert formula(lambda sp, x: 2 * x).fingerprint == formula(lambda sp, x: 2 * x).fingerprint
+    assert formula(lambda sp, x: 2 * x).fingerprint != formula(lambda sp, x: 3 * x).fingerprint
+    assert formula(lambda sp, x: 2 * x).fingerprint != formula(lambda sp, x: x / 2).fingerprint
 
 
 def test_documentation_comes_from_the_formula_object():

@@ -1,0 +1,25 @@
+"""The benchmark (bench/bench.py) runs, at a tiny size, and prints every line; no time is asserted."""
+
+import subprocess
+import sys
+
+from tests.conftest import ROOT
+
+#: Every line ``make bench`` prints, by name (bench/bench.py says what each measures).
+LINES = (
+    "catalog_load_100k", "rank_100k", "rank_numpy_100k", "loop_100k", "rank_vs_numpy", "loop_vs_rank",
+    "sweep", "sweep_numpy", "sweep_vs_numpy", "hysteresis_1M",
+    "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report",
+)
+
+
+def test_benchmark_runs_at_a_tiny_size_and_prints_every_line():
+    # The run itself checks that the API, the raw numpy floor and the per-row loop agree.
+    done = subprocess.run([sys.executable, "bench/bench.py", "--quick"], cwd=ROOT, capture_output=True, text=True)
+    print(done.stdout)
+    assert done.returncode == 0, done.stderr
+    names = [text.split(":")[0] for text in done.stdout.splitlines()]
+    assert names == list(LINES)
+    for text in done.stdout.splitlines():
+        name, rest = text.split(": ", 1)
+        assert rest.split()[0] == "n/a" or float(rest.split()[0]) >= 0, text
