@@ -134,15 +134,25 @@ def _text_math(text: str) -> str:
     return "$" + out.replace("<=", r"\le").replace(">=", r"\ge").replace("·", r"\cdot") + "$"
 
 
-def _q(d) -> str:
-    """A result quantity ``{"value", "unit"}`` as text (``151.3 N·m``)."""
+def _plain(d) -> str:
+    """A result quantity ``{"value", "unit"}`` as plain text (``151.3 N·m``)."""
     if d is None or d.get("value") is None:
         return "n/a"
-    return latex_escape(f"{sig(d['value'])} {pretty_unit(d['unit'])}".rstrip())
+    return f"{_signed(sig(d['value']))} {pretty_unit(d['unit'])}".rstrip()
+
+
+def _q(d) -> str:
+    """A result quantity as LaTeX text."""
+    return latex_escape(_plain(d))
+
+
+def _signed(text: str) -> str:
+    """A number's minus as a minus sign, not a hyphen."""
+    return text.replace("-", "−", 1) if text.startswith("-") else text
 
 
 def _num(q, unit: str) -> str:
-    return sig(q.m_as(unit))
+    return _signed(sig(q.m_as(unit)))
 
 
 def _util(u) -> str:
@@ -173,9 +183,14 @@ def git_commit(folder: Path = PROJECT_DIR) -> str:
     return head.stdout.strip() + (" (with uncommitted changes in calc/ or catalogs/)" if dirty.stdout.strip() else "")
 
 
-def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "") -> str:
+def _listed(value) -> str:
+    return ", ".join(map(str, value)) if isinstance(value, (list, tuple)) else str(value)
+
+
+def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "", small: bool = False) -> str:
     """A booktabs longtable: a long one breaks across pages with its header repeated, a short one
     (up to 15 rows) stays on one page. Cells are LaTeX already; the note goes below the table."""
+    columns = re.sub(r"(?<!})p\{", r">{\\raggedright\\arraybackslash}p{", columns)  # no stretched words
     head = " & ".join(rf"\textbf{{{h}}}" for h in header) + r" \\"
     end = r" \\*" if len(rows) <= 15 else r" \\"
     body = "\n".join(" & ".join(r) + end for r in rows)
@@ -185,6 +200,8 @@ def table(columns: str, header: list[str], rows: list[list[str]], caption: str =
         rf"\toprule {head} \midrule\endhead" "\n" r"\bottomrule\endlastfoot" "\n"
         f"{body}\n" r"\end{longtable}"
     )
+    if small:
+        out = r"{\small " + out + "}"
     if not caption:
         out += r"\addtocounter{table}{-1}"  # longtable counts every table; only captioned ones are numbered
     if note:
@@ -222,6 +239,8 @@ class Report:
     case: Case | None = None
     results: dict | None = None
     selection: object = None  # GearboxSelection
+    coupling: object = None  # (CouplingCase, CouplingSelection) when the case has [coupling]
+    accuracy: object = None  # (AccuracyCase, ChainAccuracy) when the case has [accuracy]
     error: str | None = None  # why the case could not be evaluated
     files: list = field(default_factory=list)  # (label, path text, sha256)
 
@@ -385,16 +404,16 @@ class Report:
             s = sym[name]
             unit = s.unit
             rows.append([f"${s.latex}$", sig(q.m_as(unit) if unit else q.m_as("")), latex_escape(pretty_unit(unit)) or "–",
-                         latex_escape(s.description), rf"\texttt{{{latex_escape(key)}}}"])
+                         latex_escape(s.description), rf"\texttt{{\footnotesize {latex_escape(key)}}}"])
 
         add("T_1B", c.motor_peak_torque, "motor.peak_torque")
         add("J_motor", c.motor_inertia, "motor.inertia")
         add("J_L", c.load_inertia, "load.inertia")
         add("i", c.ratio, "gearbox.ratio")
         if c.gearbox_part:
-            rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", r"\texttt{gearbox.part}"])
+            rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", r"\texttt{\footnotesize gearbox.part}"])
         if c.gearbox_catalog and (c.ratio is not None or c.gearbox_part):
-            rows.append(["–", latex_escape(c.gearbox_catalog), "–", "gearbox catalog", r"\texttt{gearbox.catalog}"])
+            rows.append(["–", latex_escape(c.gearbox_catalog), "–", "gearbox catalog", r"\texttt{\footnotesize gearbox.catalog}"])
         out = [r"\section{Inputs}"]
         if rows:
             out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
@@ -436,16 +455,21 @@ class Report:
         out.append(step_block("Cycles per hour", s_zh))
         fs = self.results["cyclic"]["fs"]
         out.append(_shock_factor_block(s_zh.result.m_as("1/hour"), fs))
+        out += self._gearbox_check_steps() + self._coupling_steps() + self._accuracy_steps()
+        return Latex("\n".join(out))
+
+    def _gearbox_check_steps(self) -> list[str]:
         sel = self.selection
         if sel is None:
-            return Latex("\n".join(out))
+            return []
+        p, fs = self.case.profile, self.results["cyclic"]["fs"]
         row = int(sel.order[0])
         cat = sel.catalog
-        part = latex_escape(str(cat.parts[row]))
         i = cat["ratio"][row]
         chosen = "the chosen gearbox" if sel.selected else "the closest candidate (none passes)"
-        out.append(rf"\subsection{{Checks of {chosen}, {part}}}")
-        out.append(step_block("Input speed at the mean output speed (S1)", n_1.step(n_2=s_n2m.result, i=i), "compared with n_1N"))
+        out = [rf"\subsection{{Checks of {chosen}, {latex_escape(str(cat.parts[row]))}}}"]
+        n2m = n_2m(**{k: v for k, v in p.moving_values().items() if k != "T_2k"})
+        out.append(step_block("Input speed at the mean output speed (S1)", n_1.step(n_2=n2m, i=i), "compared with n_1N"))
         out.append(step_block("Input speed at the highest output speed (S5)", n_1.step(n_2=p.n_2max, i=i), "compared with n_1max"))
         if self.case.motor_peak_torque is not None:
             out.append(step_block("Maximum output torque", T_2max.step(T_1B=self.case.motor_peak_torque, i=i, f_s=Q_(fs, ""),
@@ -453,7 +477,58 @@ class Report:
         if sel.inertia_ratio is not None and not np.isnan(cat["J_1"][row].magnitude):
             out.append(step_block("Load to motor inertia ratio", inertia_ratio.step(
                 J_1=cat["J_1"][row], J_L=self.case.load_inertia, i=i, J_motor=self.case.motor_inertia), "errata E6"))
-        return Latex("\n".join(out))
+        return out
+
+    def _coupling_steps(self) -> list[str]:
+        if self.coupling is None:
+            return []
+        from . import coupling as cp
+
+        cc, sel = self.coupling
+        x, cat = cc.inputs, sel.catalog
+        row = int(sel.order[0])
+        part = latex_escape(str(cat.parts[row]))
+        chosen = "the chosen coupling" if sel.selected else "the closest candidate (none passes)"
+        out = [r"\subsection{Coupling: nominal torque and resonance}"]
+        m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
+        out.append(step_block("Nominal torque of the coupling", m_n, "compared with T_KN"))
+        if sel.row_type(row) == "elastomer":
+            out.append(step_block(f"With the temperature factor ({part})",
+                                  cp.M_Nt.step(M_N=m_n.result, K_T=Q_(float(sel.temperature_factor[row]), ""))))
+        out.append(step_block("Lowest natural frequency allowed", cp.f_e_min.step(f_er=x["excitation_frequency"])))
+        if np.isnan(sel.f_e[row].magnitude):
+            return out
+        out.append(rf"\subsection{{Natural frequency of {chosen}, {part}}}")
+        J = cat["J"][row]
+        out.append(step_block("Drive side with half the coupling", cp.J_A.step(J_drive=x["drive_inertia"], J_K=J)))
+        out.append(step_block("Load side with half the coupling", cp.J_L.step(J_load=x["load_inertia"], J_K=J)))
+        if sel.row_type(row) == "line-shaft" and x["shaft_distance"] is not None:
+            z = cp.Z.step(A=x["shaft_distance"], H=cat["H"][row])
+            out.append(step_block("Tube length", z))
+            out.append(step_block("Stiffness of the line shaft", cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row])))
+        out.append(step_block("Natural frequency", cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L=sel.J_L[row]),
+                              "compared with 2 f_er"))
+        return out
+
+    def _accuracy_steps(self) -> list[str]:
+        if self.accuracy is None:
+            return []
+        spec, a = self.accuracy
+        out = []
+        for name, (path, analysis) in spec.loops.items():
+            out.append(rf"\subsection{{Measured hysteresis loop of {latex_escape(name)}}}")
+            out.append(rf"From \texttt{{{latex_escape(path)}}} (E12).")
+            out += [step_block(s.formula.result.description.capitalize(), s) for s in analysis.steps()]
+        for name, (path, analysis) in spec.traces.items():
+            out.append(rf"\subsection{{Measured transmission error of {latex_escape(name)}}}")
+            out.append(rf"From \texttt{{{latex_escape(path)}}}.")
+            out.append(step_block(analysis.step().formula.result.description.capitalize(), analysis.step()))
+        out.append(r"\subsection{Accuracy of the drive train at the output}")
+        out.append(prose(f"Applied torque T = {sig(a.applied_torque.m_as('N*m'))} N·m; "
+                         + ("at most" if a.low_torque else "above")
+                         + " 3 % of the nominal torque, so the positioning rule of E13 for that range applies."))
+        out += [step_block(s.formula.result.description.capitalize(), s) for s in a.steps()]
+        return out
 
     def checks(self) -> Latex:
         """The checks of each chosen part (or the closest candidate) with required, rated,
@@ -470,6 +545,8 @@ class Report:
                 first = s["candidates"][0]
                 if first.get("checks"):
                     out.append(_checks_table(first, f"Checks of {name} {first.get('part', '')}"))
+            elif s and s.get("checks"):
+                out.append(_requirement_table(s["checks"], f"{name.capitalize()} against the requirements of the case"))
         return Latex("\n".join(out))
 
     def candidates(self) -> Latex:
@@ -511,19 +588,54 @@ class Report:
             s = self.results.get(name)
             if s and s.get("candidates"):
                 out.append(rf"\subsection*{{{name.capitalize()}}}")
-                out.append(_candidates_table(s, latex_escape(f"{name.capitalize()} candidates, best first")))
+                out.append(_candidates_table(s, latex_escape(f"Utilization of each check of the {name} candidates, best first")))
+                rejected = [c for c in s["candidates"] if c.get("reasons")]
+                if rejected:
+                    items = "".join(rf"\item \textbf{{{latex_escape(c['part'])}}}: {prose('; '.join(c['reasons']))}" for c in rejected)
+                    out.append(r"\paragraph{Why the others are rejected.}" r"\begin{itemize}" + items + r"\end{itemize}")
         return Latex("\n".join(out))
 
     def section_results(self) -> Latex:
-        """The results of the further sections (coupling, accuracy) as tables of their values."""
-        if not self.results:
-            return Latex("")
+        """What the coupling and accuracy sections give besides their checks."""
         out = []
-        for name in SECTIONS:
-            s = self.results.get(name)
-            if s:
-                out.append(_section_values(name, s))
-        return Latex("\n".join(out))
+        c = (self.results or {}).get("coupling")
+        if c:
+            rows = [
+                [r"$M_{N}$", _q(c["M_N"]), prose(f"nominal torque of the coupling, S_A = {c['service_factor']:g} included (E8)")],
+                [r"$T_{\mathrm{op}}$", _q(c["T_op"]), prose("peak torque of normal operation (M_N with S_A = 1)")],
+                [r"$K_{\vartheta}$", f"{c['temperature_factor']:g}",
+                 prose("temperature factor (elastomer couplings, E9)" + (f" at {_plain(c['temperature'])}" if c.get("temperature") else ""))],
+                [r"$f_{e,\mathrm{min}}$", _q(c["f_e_min"]), prose("lowest natural frequency allowed, 2 f_er (E7)")],
+            ]
+            out += [r"\subsection{Coupling: results}",
+                    table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows)]
+            bores = [[rf"\texttt{{\footnotesize coupling.{latex_escape(b['key'])}}}", latex_escape(b["text"]),
+                      latex_escape(b.get("limits") or "–")] for b in c.get("bores", [])]
+            if bores:
+                out.append(table(r"@{}l l l@{}", ["Case key", "Shaft as written", "Limits of the shaft (ISO 286)"], bores,
+                                 caption="Shafts of the coupling"))
+            if c.get("notes"):
+                out.append(r"\paragraph{Notes.}\begin{itemize}" + "".join(rf"\item {prose(n)}" for n in c["notes"]) + r"\end{itemize}")
+        a = (self.results or {}).get("accuracy")
+        if a:
+            rep = "repeatability, an upper bound under torque (E13)" if a["repeatability_is_bound"] else "repeatability (E13)"
+            rows = [
+                [r"$C_{\mathrm{total}}$", _q(a["C_total"]), prose("total torsional stiffness at the output (E11)")],
+                [r"$j_{t}$", _q(a["backlash"]), prose("torsional backlash at the output")],
+                [r"$\varphi_{\mathrm{TA}}$", _q(a["transmission_accuracy"]),
+                 prose("angular transmission accuracy, from " + _listed(a["transmission_accuracy_from"]))],
+                [r"$\varphi_{\mathrm{LM}}$", _q(a["lost_motion"]), prose("total lost motion at the applied torque (E12)")],
+                [r"$\Delta\varphi_{P}$", _q(a["positioning_accuracy"]), prose(f"positioning accuracy, {a['positioning_rule']} (E13)")],
+                ["–", _q(a["repeatability"]), prose(rep)],
+            ]
+            out += [r"\subsection{Accuracy: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows)]
+            comp = [[latex_escape(m["name"]), latex_escape(m["side"]), _q(m["stiffness_at_output"]), _q(m["backlash_at_output"]),
+                     _q(m.get("transmission_accuracy_at_output")), f"{100 * m['share_of_compliance']:.1f}", _q(m["twist_at_applied_torque"])]
+                    for m in a["components"]]
+            out.append(table(r"@{}l l r r r r r@{}", ["Member", "Side", "$C$", "$j_t$", r"$\varphi_{\mathrm{TA}}$",
+                                                      r"$1/C$ [\%]", r"Twist at $T$"], comp, small=True,
+                             caption=prose(f"Members of the chain referred to the output, at T = {_plain(a['applied_torque'])}")))
+        return Latex("\n".join([r"\section{Coupling and accuracy: results}"] + out) if out else "")
 
     def figures(self) -> list:
         """(figure, caption) pairs: the load cycle, the shock factor, the utilizations; the caption
@@ -539,6 +651,49 @@ class Report:
         ]
         if self.selection is not None:
             out.append((utilization_figure(self.selection), "Utilization of the governing checks of each candidate, best first."))
+        return out + self._coupling_figures() + self._accuracy_figures()
+
+    def _coupling_figures(self) -> list:
+        if self.coupling is None:
+            return []
+        from .coupling import f_e_min
+        from .coupling_plots import natural_frequency_figure, temperature_factor_figure
+
+        cc, sel = self.coupling
+        out = [(natural_frequency_figure(sel, f_e_min(f_er=cc.inputs["excitation_frequency"])),
+                prose("Natural frequency of each coupling candidate against the lowest allowed, 2 f_er (E7)."))]
+        if (sel.catalog.text["type"] == "elastomer").any():
+            out.append((temperature_factor_figure(cc.inputs["temperature"]), "Temperature factor of elastomer couplings (E9)."))
+        return out
+
+    def _accuracy_figures(self) -> list:
+        if self.accuracy is None and self.selection is None:
+            return []
+        from .accuracy_plots import hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure
+        from .hysteresis import analyze_loop, model_for_part, read_loop
+
+        out = []
+        spec = self.accuracy[0] if self.accuracy else None
+        if spec is not None:
+            out.append((stiffness_chain_figure(spec.chain, spec.applied_torque),
+                        "Stiffness chain referred to the output (E11): each member's share of the twist."))
+            for name, (path, analysis) in spec.loops.items():
+                loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
+                out.append((hysteresis_figure(loop, analysis), latex_escape(f"Measured hysteresis loop of {name} (E12).")))
+        if (spec is None or not spec.loops) and self.selection is not None:
+            sel, row = self.selection, int(self.selection.order[0])
+            if not (np.isnan(sel.catalog["C_t21"][row].magnitude) or np.isnan(sel.catalog["backlash"][row].magnitude)):
+                part = str(sel.catalog.parts[row])
+                model = model_for_part(part, str(sel.catalog.path))
+                loop = model.loop(800)
+                out.append((hysteresis_figure(loop, analyze_loop(loop, model.nominal_torque)),
+                            latex_escape(f"Hysteresis loop of {part} modelled from its catalog figures (C_t21, backlash, T_2N), "
+                                         "not a measurement (E12).")))
+        if spec is not None:
+            for name, (path, analysis) in spec.traces.items():
+                out.append((transmission_error_figure(analysis), latex_escape(f"Transmission error of {name}, from {path}.")))
+            if spec.positions is not None:
+                out.append((positioning_scatter_figure(spec.positions), "Measured positions: accuracy and repeatability."))
         return out
 
     def figures_heading(self) -> Latex:
@@ -580,23 +735,34 @@ def _shock_factor_block(zh: float, fs: float) -> str:
 
 
 def _checks_table(candidate: dict, caption: str) -> str:
+    """Required, rated, utilization and verdict of each check of one candidate; checks of the
+    other operating mode (gearboxes) in grey, for information."""
+    modes = any(k.get("mode") for k in candidate["checks"])
     rows = []
     for k in candidate["checks"]:
         grey = "" if k.get("governs", True) else r"\color{infogrey}"
-        name = k.get("criterion") or k["name"]
-        mode = k.get("mode", "")
-        rows.append([
-            grey + (_text_math(name) if k.get("criterion") else latex_escape(name)), grey + latex_escape(mode),
-            grey + _q(k["required"]), grey + _q(k["rated"]), grey + _util(k["utilization"]),
-            (grey + _verdict(k["passes"])) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)"),
-        ])
-    return table(r"@{}l l r r r l@{}", ["Criterion", "Mode", "Required", "Rated", "Utilization", "Verdict"], rows,
-                 caption=latex_escape(caption), note="Utilization = required / rated; a check passes at 1.00 or below.")
+        name = _text_math(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+        cells = [grey + name] + ([grey + latex_escape(k.get("mode", ""))] if modes else [])
+        cells += [grey + _q(k["required"]), grey + _q(k["rated"]), grey + _util(k["utilization"]),
+                  grey + _verdict(k["passes"]) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)")]
+        rows.append(cells)
+    header = ["Criterion"] + (["Mode"] if modes else []) + ["Required", "Rated", "Utilization", "Verdict"]
+    return table("@{}l " + ("l " if modes else "") + "r r r l@{}", header, rows, caption=latex_escape(caption),
+                 note="Utilization = required / rated; a check passes at 1.00 or below.")
+
+
+def _requirement_table(checks: list, caption: str) -> str:
+    """Checks of a value reached against a limit the case requires (``value <= required``)."""
+    rows = [[prose(k["criterion"].replace("_", " ")), _q(k["value"]), _q(k["required"]), _util(k["utilization"]), _verdict(k["passes"])]
+            for k in checks]
+    return table(r"@{}l r r r l@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
+                 caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")
 
 
 def _candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
-    names = [k["name"] for k in section["candidates"][0].get("checks", [])] if section["candidates"] else []
-    governs = {k["name"]: k.get("governs", True) for k in section["candidates"][0].get("checks", [])} if names else {}
+    checks = [k for c in section["candidates"] for k in c.get("checks", [])]
+    names = list(dict.fromkeys(k["name"] for k in checks))  # every check any candidate has, in order
+    governs = {k["name"]: k.get("governs", True) for k in checks}
     header = ["Part"] + [
         (r"\color{infogrey}" if not governs[n] else "") + _text_math(n) for n in names
     ] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
@@ -610,57 +776,83 @@ def _candidates_table(section: dict, caption: str, inertia: bool = False) -> str
         cells.append(_verdict(c.get("passes", False)) + (r"{} \footnotesize(chosen)" if c.get("part") == section.get("selected") else ""))
         rows.append(cells)
     cols = "@{}l " + "r " * (len(names) + (1 if inertia else 0)) + "l@{}"
-    note = r"$\lambda = (J_1 + J_L / i^2) / J_{\mathrm{motor}}$, load to motor inertia ratio (E6)." if inertia else ""
+    criteria = {k["name"]: k.get("criterion") for c in section["candidates"] for k in c.get("checks", [])}
+    note = "Checks: " + "; ".join(_text_math(criteria[n]) if criteria.get(n) else latex_escape(n) for n in names) + "."
+    if inertia:
+        note += r" $\lambda = (J_1 + J_L / i^2) / J_{\mathrm{motor}}$, load to motor inertia ratio (E6)."
     return table(cols, header, rows, caption=caption, note=note)
 
 
-def _is_quantity(v) -> bool:
-    return isinstance(v, dict) and set(v) == {"value", "unit"}
+#: What each key of the further sections means, for the inputs table: (symbol name in the
+#: section's formulas, or None; description when there is no symbol).
+SECTION_KEYS = {
+    "coupling": {
+        "catalog": (None, "coupling catalog"), "type": (None, "coupling type"), "part": (None, "coupling part to check"),
+        "accel_torque": ("M_a", ""), "drive_inertia": ("J_drive", ""), "load_inertia": ("J_load", ""),
+        "service_factor": ("S_A", ""), "temperature": (None, "operating temperature (elastomer couplings, E9)"),
+        "excitation_frequency": ("f_er", ""), "speed": (None, "speed of the coupling"),
+        "shaft_1": (None, "shaft 1 with its fit"), "shaft_2": (None, "shaft 2 with its fit"),
+        "disengagement_torque": (None, "disengagement torque T_A (safety couplings, E10)"),
+        "shaft_distance": ("A", ""),
+    },
+    "accuracy": {
+        "applied_torque": ("T", ""), "nominal_torque": (None, "nominal torque for the 3 % rule (E13)"),
+        "positions": (None, "file of measured positions"),
+        "required_positioning_accuracy": (None, "positioning accuracy required"),
+        "required_repeatability": (None, "repeatability required"),
+    },
+}
+_NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 
-def _section_values(name: str, s: dict) -> str:
-    """A section's scalar results (quantities, numbers, texts) and its lists of records as tables."""
-    sym = _symbols()
-    rows, lists = [], []
-    for key, v in s.items():
-        if key in ("candidates", "selected", "order", "catalog", "catalog_sha256", "ranking"):
-            continue
-        label = f"${sym[key].latex}$" if key in sym else latex_escape(key)
-        desc = latex_escape(sym[key].description) if key in sym else ""
-        if _is_quantity(v):
-            rows.append([label, _q(v), desc])
-        elif isinstance(v, (int, float, str)) and not isinstance(v, bool):
-            rows.append([label, latex_escape(f"{v:g}" if isinstance(v, float) else v), desc])
-        elif isinstance(v, bool):
-            rows.append([label, _verdict(v), desc])
-        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
-            lists.append((key, v))
-    out = [rf"\section{{{latex_escape(name.capitalize())}: results}}"]
-    if rows:
-        out.append(table(r"@{}l >{\raggedleft\arraybackslash}p{0.25\linewidth} p{0.5\linewidth}@{}", ["Quantity", "Value", "Description"], rows))
-    for key, records in lists:
-        cols = [k for k in records[0] if not isinstance(records[0][k], (list, dict)) or _is_quantity(records[0][k])]
-        body = [[_q(r[k]) if _is_quantity(r.get(k)) else latex_escape("–" if r.get(k) is None else r[k]) for k in cols] for r in records]
-        out.append(table("@{}" + "l" * len(cols) + "@{}", [latex_escape(k) for k in cols], body, caption=latex_escape(key)))
-    return "\n".join(out)
+def _section_symbols(name: str) -> dict:
+    """The symbols of a further section's formulas, by name."""
+    if name == "coupling":
+        from . import coupling as m
+
+        formulas = (m.M_N, m.f_e_min, m.Z)
+    else:
+        from . import accuracy as m
+
+        formulas = (m.lost_motion,)
+    return {s.name: s for f in formulas for s in (f.result, *f.inputs)}
+
+
+def _value_unit(value) -> tuple[str, str]:
+    """A value as written in the case, split into number and unit where it is a quantity."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return f"{value:g}", "–"
+    m = _NUMBER_UNIT.match(value) if isinstance(value, str) else None
+    if m and m.group(2) and re.fullmatch(r"[A-Za-z°][A-Za-z0-9*/()^.-]*", m.group(2)):  # "19 mm k6" stays whole
+        return latex_escape(m.group(1)), latex_escape(pretty_unit(m.group(2)))
+    return latex_escape(value), "–"
 
 
 def _raw_section_tables(name: str, raw: dict) -> str:
-    """A further section of the case as written: key and value, sub-tables as their own tables."""
-    rows, subtables = [], []
+    """A further section of the case as its inputs: symbol, value, unit, description, key; its
+    arrays of tables (the members of an accuracy chain) as one row each, figures as written."""
+    symbols, known = _section_symbols(name), SECTION_KEYS.get(name, {})
+    rows, members = [], []
     for key, v in raw.items():
         if isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
-            subtables.append((key, v))
-        else:
-            rows.append([rf"\texttt{{{latex_escape(f'{name}.{key}')}}}", latex_escape(v)])
-    out = []
+            members += [(key, k, x) for k, x in enumerate(v, start=1)]
+            continue
+        sym_name, desc = known.get(key, (None, ""))
+        sym = symbols.get(sym_name)
+        value, unit = _value_unit(v)
+        rows.append([f"${sym.latex}$" if sym else "–", value, unit, latex_escape(sym.description if sym else desc),
+                     rf"\texttt{{{latex_escape(f'{name}.{key}')}}}"])
+    out = [rf"\subsection*{{{latex_escape(name.capitalize())}}}"]
     if rows:
-        out.append(table(r"@{}l l@{}", ["Case key", "Value as written"], rows, caption=latex_escape(f"[{name}]")))
-    for key, records in subtables:
-        cols = list(dict.fromkeys(k for r in records for k in r))
-        body = [[latex_escape(r.get(k, "–")) for k in cols] for r in records]
-        out.append(table("@{}" + "l" * len(cols) + "@{}", [latex_escape(k) for k in cols], body,
-                         caption=latex_escape(f"[[{name}.{key}]]")))
+        out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
+    if members:
+        body = []
+        for key, k, x in members:
+            what = ", ".join(f"{f} = {x[f]}" for f in x if f not in ("name", "side", "part"))
+            body.append([rf"\texttt{{\footnotesize {latex_escape(f'{name}.{key}[{k}]')}}}", latex_escape(x.get("name") or x.get("part", "")),
+                         latex_escape(x.get("side", "output" if "part" in x else "")), latex_escape(what)])
+        out.append(table(r"@{}l l l p{0.42\linewidth}@{}", ["Case key", "Member", "Side", "Figures as written"], body,
+                         caption=latex_escape(f"Members of the {name} chain, drive to load")))
     return "\n".join(out)
 
 
@@ -682,6 +874,17 @@ def build_report(case_path) -> Report:
         results = evaluate(case)
         if "gearbox" in results:
             report.selection = gearbox_selection(case)
+        if "coupling" in results:
+            from .coupling import read_section, select_coupling
+
+            cc = read_section(case)
+            report.coupling = cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1],
+                                                  where=f"{case.path}: coupling", **cc.inputs)
+        if "accuracy" in results:
+            from .accuracy import read_accuracy
+
+            spec = read_accuracy(case)
+            report.accuracy = spec, spec.evaluate()
     except CalcError as exc:
         report.error = str(exc)
         return report
