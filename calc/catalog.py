@@ -75,6 +75,14 @@ class Catalog:
     def __len__(self):
         return len(self.parts)
 
+    @property
+    def illustrative(self) -> np.ndarray:
+        """True for rows whose ``illustrative`` column says yes (figures not a maker's own)."""
+        marks = self.text.get("illustrative")
+        if marks is None:
+            return np.zeros(len(self), bool)
+        return np.array([str(m).strip().lower() == "yes" for m in marks], bool)
+
     def __getitem__(self, column: str):
         return self.values[column]
 

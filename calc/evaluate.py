@@ -61,7 +61,6 @@ def gearbox_selection(case: Case) -> GearboxSelection:
 
 
 def _gearbox_results(selection: GearboxSelection) -> dict:
-    unit = {"n_1N": "rpm", "n_1max": "rpm", "T_2N": "N*m", "T_2B": "N*m"}
     candidates = []
     for c in selection.candidates():
         candidates.append(
@@ -76,8 +75,8 @@ def _gearbox_results(selection: GearboxSelection) -> dict:
                         "mode": k["mode"],
                         "governs": k["governs"],
                         "criterion": k["text"],
-                        "required": quantity(k["required"], unit[k["name"]]),
-                        "rated": quantity(k["rated"], unit[k["name"]]),
+                        "required": quantity(k["required"], k["unit"]),
+                        "rated": quantity(k["rated"], k["unit"]),
                         "utilization": number(k["utilization"]),
                         "passes": k["passes"],
                     }

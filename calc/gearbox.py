@@ -5,10 +5,12 @@ Operation (S5)", read with errata E1 to E6. Every row of a catalog at the desire
 evaluated at once (numpy arrays over the rows, no per-row Python loop); each criterion is kept
 with its required value, rated value, utilization (required / rated) and verdict.
 
-Ranking rule (:func:`rank`): passing candidates first; among them the smallest adequate size,
-measured by the governing torque rating (``T_2B`` in S5, ``T_2N`` in S1), then the larger margin
-(lower worst utilization of the governing checks); failing candidates after, closest to passing
-first (lowest worst utilization). Ties go by part name.
+Ranking rule (:func:`rank`): passing candidates first, and among them rows of published data
+before rows marked illustrative (a part is not chosen on illustrative figures while a published
+one fits); then the smallest adequate size, measured by the governing torque rating (``T_2B`` in
+S5, ``T_2N`` in S1), then the larger margin (lower worst utilization of the governing checks);
+failing candidates after, closest to passing first (lowest worst utilization). Ties go by part
+name.
 """
 
 from __future__ import annotations
@@ -107,13 +109,15 @@ def shock_factor(cycles_per_hour):
 
 @dataclass(frozen=True)
 class CheckArray:
-    """One criterion over all candidates: required and rated values as quantity arrays."""
+    """One criterion over all candidates: required and rated values as quantity arrays, and the
+    unit both are shown in."""
 
     name: str
     mode: str
     text: str
     required: object
     rated: object
+    unit: str
 
     @property
     def utilization(self) -> np.ndarray:
@@ -124,6 +128,16 @@ class CheckArray:
     @property
     def passes(self) -> np.ndarray:
         return self.utilization <= 1.0  # NaN compares false: no rating, no pass
+
+    def reason(self, row: int) -> str:
+        """Why the row fails this check: by how much the required value exceeds the rated one."""
+        u = self.utilization[row]
+        if np.isnan(u):
+            return f"{self.text}: not checked, the catalog gives no rated value"
+        return (
+            f"{self.text}: required {fmt(self.required[row], self.unit)} > rated {fmt(self.rated[row], self.unit)}, "
+            f"{sig(100 * (u - 1), 3)} % over"
+        )
 
 
 @dataclass
@@ -168,18 +182,7 @@ class GearboxSelection:
 
     def reasons(self, row: int) -> list[str]:
         """Why a row fails: each failing governing check with its excess."""
-        out = []
-        for c in self.governing:
-            if c.passes[row]:
-                continue
-            req, rated = c.required[row], c.rated[row]
-            unit = "rpm" if c.name.startswith("n_") else "N*m"
-            if np.isnan(rated.magnitude):
-                out.append(f"{c.name}: the catalog gives no rated value")
-            else:
-                u = c.utilization[row]
-                out.append(f"{c.text}: required {fmt(req, unit)} > rated {fmt(rated, unit)}, {sig(100 * (u - 1), 3)} % over")
-        return out
+        return [c.reason(row) for c in self.governing if not c.passes[row]]
 
     def candidates(self) -> list[Candidate]:
         """Every row as a :class:`Candidate`, best first."""
@@ -193,6 +196,7 @@ class GearboxSelection:
                     "text": c.text,
                     "required": c.required[row],
                     "rated": c.rated[row],
+                    "unit": c.unit,
                     "utilization": float(c.utilization[row]),
                     "passes": bool(c.passes[row]),
                 }
@@ -208,7 +212,7 @@ class GearboxSelection:
                     T_2max=None if self.T_2max is None else self.T_2max[row],
                     inertia_ratio=None if lam is None or np.isnan(lam) else lam,
                     reasons=self.reasons(row),
-                    illustrative=str(self.catalog.text.get("illustrative", np.array(["no"] * len(self.catalog)))[row]).lower() == "yes",
+                    illustrative=bool(self.catalog.illustrative[row]),
                 )
             )
         return out
@@ -248,16 +252,16 @@ def select_gearbox(
     i = catalog["ratio"]
     seg = profile.moving_values()
     checks = [
-        CheckArray("n_1N", "S1", "n_2m · i <= n_1N", n_1(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i), catalog["n_1N"]),
-        CheckArray("T_2N", "S1", "T_2m <= T_2N", T_2m(**seg) * np.ones(len(catalog)), catalog["T_2N"]),
+        CheckArray("n_1N", "S1", "n_2m · i <= n_1N", n_1(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i), catalog["n_1N"], "rpm"),
+        CheckArray("T_2N", "S1", "T_2m <= T_2N", T_2m(**seg) * np.ones(len(catalog)), catalog["T_2N"], "N*m"),
     ]
     t2max = None
     if motor_peak_torque is not None:
         f_s = shock_factor(Z_h(t_cycle=profile.t_cycle))
         t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
         checks += [
-            CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"]),
-            CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"]),
+            CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"], "rpm"),
+            CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"),
         ]
     elif d.mode == "S5":
         raise CalcError(
@@ -275,22 +279,19 @@ def select_gearbox(
         catalog["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m"),
         np.max([c.utilization for c in governing], axis=0),
         catalog.parts,
+        illustrative=catalog.illustrative,
     )
     return selection
 
 
-def rank(passes, size, worst_utilization, parts) -> np.ndarray:
-    """Indices best first: passing first, then smallest size and larger margin; failing rows after,
-    closest to passing first (see the module's docstring)."""
+def rank(passes, size, worst_utilization, parts, illustrative=None) -> np.ndarray:
+    """Indices best first: passing first, published before illustrative rows, then smallest size
+    and larger margin; failing rows after, closest to passing first (see the module's docstring)."""
     passes = np.asarray(passes, bool)
     worst = np.where(np.isnan(worst_utilization), np.inf, worst_utilization)
     size_key = np.where(passes, size, 0.0)
-    return np.lexsort((parts.astype(str), worst, size_key, ~passes))
-
-
-def _display_unit(q) -> str:
-    """rpm for a speed, N·m for a torque: the units the tables and results show."""
-    return "rpm" if kind("speed").accepts(q.units) else "N*m"
+    shown_later = np.zeros(len(passes), bool) if illustrative is None else passes & np.asarray(illustrative, bool)
+    return np.lexsort((parts.astype(str), worst, size_key, shown_later, ~passes))
 
 
 def candidates_table(selection: GearboxSelection):
@@ -320,7 +321,7 @@ def candidates_table(selection: GearboxSelection):
     n = len(order)
     frames = []
     for position, c in enumerate(selection.checks):
-        unit = _display_unit(c.rated)
+        unit = c.unit
         frames.append(
             pd.DataFrame(
                 {
@@ -356,7 +357,6 @@ def candidates_summary(selection: GearboxSelection):
     with np.errstate(invalid="ignore"):
         worst = np.max([c.utilization for c in selection.governing], axis=0)[order]
     n = len(order)
-    illustrative = selection.catalog.text.get("illustrative", np.full(len(selection.catalog), "no"))
     table = pd.DataFrame(
         {
             "rank": np.arange(1, n + 1),
@@ -365,7 +365,7 @@ def candidates_summary(selection: GearboxSelection):
             "worst utilization": worst,
             "T_2max [N·m]": np.full(n, np.nan) if selection.T_2max is None else selection.T_2max[order].m_as("N*m"),
             "inertia ratio": np.full(n, np.nan) if selection.inertia_ratio is None else selection.inertia_ratio[order],
-            "illustrative": np.char.lower(illustrative[order].astype(str)) == "yes",
+            "illustrative": selection.catalog.illustrative[order],
             "reasons": ["; ".join(selection.reasons(row)) for row in order],
         }
     )

@@ -108,7 +108,12 @@ class Profile:
             torques.append(T)
         if not any(p != "pause" for p in phases):
             raise CalcError(f"{where}: expected at least one moving segment (accel, const or decel), found only pauses")
-        return cls(tuple(phases), Q_(np.array(durations), "s"), Q_(np.array(speeds), "rpm"), Q_(np.array(torques), "N*m"))
+        return cls(
+            tuple(phases),
+            Q_(np.array(durations, float), "s"),
+            Q_(np.array(speeds, float), "rpm"),
+            Q_(np.array(torques, float), "N*m"),
+        )
 
     @property
     def moving(self) -> np.ndarray:

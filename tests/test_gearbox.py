@@ -79,8 +79,10 @@ def test_s1_selection_by_hand(catalog):
     assert sel.T_2max is None
     # E1: n_2m · i = 240 · 10 = 2400 rpm; NPT035-10 n_1N = 2300 → 1.043 fails; TP010-10 3100 → 0.774;
     # SP075-10 2900 → 0.828. E2: T_2m = 35.41 N·m against T_2N 81 (TP010) and 63 (SP075).
-    # Ranking in S1: passing by T_2N ascending: SP075-10 (63) before TP010-10 (81).
-    assert [c.part for c in sel.candidates()] == ["SP075-10", "TP010-10", "NPT035-10"]
+    # Ranking in S1: both TP010-10 and SP075-10 pass; SP075-10 is smaller (T_2N 63 against 81) but its
+    # row is illustrative, so the published TP010-10 ranks first and is selected.
+    assert [c.part for c in sel.candidates()] == ["TP010-10", "SP075-10", "NPT035-10"]
+    assert sel.selected == "TP010-10"
     rejected = sel.candidates()[-1]
     assert not rejected.passes
     assert rejected.reasons == ["n_2m · i <= n_1N: required 2400 rpm > rated 2300 rpm, 4.35 % over"]
@@ -121,6 +123,15 @@ def test_vectorized_selection_equals_part_by_part(catalog):
         alone = select_gearbox(example_profile(), rows.rows([k]), Q_(12, "N*m")).candidates()[0]
         assert alone.passes == together[alone.part].passes
         assert [c["utilization"] for c in alone.checks] == pytest.approx([c["utilization"] for c in together[alone.part].checks])
+
+
+def test_rank_puts_published_rows_before_illustrative_ones():
+    passes = np.array([True, True, False])
+    size = np.array([50.0, 80.0, 10.0])
+    worst = np.array([0.5, 0.5, 1.2])
+    parts = np.array(["small-illustrative", "large-published", "failing"], dtype=object)
+    order = rank(passes, size, worst, parts, illustrative=np.array([True, False, True]))
+    assert list(order) == [1, 0, 2]
 
 
 def test_rank_rule():
