@@ -215,9 +215,8 @@ def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "tem
 @dataclass(frozen=True)
 class CouplingCheck(CheckArray):
     """A :class:`calc.gearbox.CheckArray` that may apply to some rows only (a safety coupling's
-    T_A range), with the unit it is shown in and why it cannot be made where a value is missing."""
+    T_A range), and says why it cannot be made where a value is missing."""
 
-    unit: str = ""
     applies: object = None  # bool array over the rows; None: every row
     missing: object = "the catalog gives no rated value"  # text, or one text per row
     lower_bound: bool = False  # "least <= value": the rated side is the value checked
@@ -231,7 +230,7 @@ class CouplingCheck(CheckArray):
         return True if self.applies is None else bool(self.applies[row])
 
     def reason(self, row: int) -> str:
-        """Why the row fails this check: the excess, or what is missing."""
+        """Why the row fails this check: the excess, the shortfall, or what is missing."""
         u = self.utilization[row]
         if np.isnan(u):
             missing = self.missing if isinstance(self.missing, str) else self.missing[row]
@@ -241,10 +240,7 @@ class CouplingCheck(CheckArray):
                 f"{self.text}: {fmt(self.rated[row], self.unit)} is below the least {fmt(self.required[row], self.unit)}, "
                 f"{sig(100 * (1 - 1 / u), 3)} % short"
             )
-        return (
-            f"{self.text}: required {fmt(self.required[row], self.unit)} > rated {fmt(self.rated[row], self.unit)}, "
-            f"{sig(100 * (u - 1), 3)} % over"
-        )
+        return super().reason(row)
 
 
 @dataclass
