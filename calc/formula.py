@@ -312,7 +312,7 @@ def _value(s, q, spec: Symbol, key: str):
     return s.Value(f"v_{key}", tex, bool(spec.unit))
 
 
-@dataclass
+@dataclass(repr=False)
 class Step:
     """One evaluated formula: what a notebook or report shows as a line of the calculation."""
 
@@ -336,6 +336,9 @@ class Step:
 
     def _repr_latex_(self):
         return f"$${self.latex()}$$"
+
+    def __repr__(self):
+        return f"<Step {self}>"
 
     def __str__(self):
         return f"{self.formula.result.name} = {self.result_text}"
