@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from .accuracy import PositioningScatter
+from .accuracy import LOW_TORQUE_SHARE, PositioningScatter, lost_motion, positioning_accuracy
 from .hysteresis import LOST_MOTION_BAND, STIFFNESS_BAND, Loop, LoopAnalysis
 from .stiffness import Chain
 from .transmission import TransmissionAnalysis
-from .units import as_kind, fmt, sig
+from .units import Q_, as_kind, fmt, sig
 
 LOOP_COLOR = "#1f5fa8"
 FIT_COLOR = "#b2222a"
@@ -295,4 +295,50 @@ def positioning_scatter_figure(scatter: PositioningScatter):
     ax.set_ylim(min(-1.2 * a, 1.2 * err.min()), max(1.2 * a, 1.2 * err.max()))
     fig.legend(loc="outside lower center", ncols=2, fontsize=8, frameon=False)
     ax.set_title(f"Measured positioning: {len(err)} approaches to {scatter.targets} targets - {scatter.source}", fontsize=9)
+    return fig
+
+
+def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=None):
+    """Positioning accuracy by the 3 % rule and the repeatability bound against the applied torque.
+
+    Up to 3 % of the nominal torque the backlash counts (``φ_TA + j_t``); above, the twist does
+    (``φ_TA + |T| / C``), as the source writes it (E13), so the curve jumps at 3 %. Repeatability is
+    the backlash at rest and at most the lost motion ``j_t + |T| / C`` under torque.
+
+    Examples
+    --------
+    >>> from calc import Q_
+    >>> from calc.stiffness import Component
+    >>> c = Chain((Component("gearbox", "output", Q_(22, "N*m/arcmin"), Q_(8, "arcmin"), Q_(63, "arcsec"), Q_(110, "N*m")),))
+    >>> positioning_rule_figure(c, applied_torque=Q_(8, "N*m")).axes[0].get_xlabel()
+    'applied torque at the output $|T|$ [N·m]'
+    """
+    from matplotlib.figure import Figure
+
+    t_n = chain.nominal_torque if nominal_torque is None else as_kind(nominal_torque, "torque", "nominal_torque")
+    edge = LOW_TORQUE_SHARE * t_n.m_as("N*m")
+    torque = np.union1d(np.linspace(0.0, t_n.m_as("N*m"), 400), [edge, np.nextafter(edge, np.inf)])
+    args = dict(transmission_accuracy=chain.transmission_accuracy, backlash=chain.backlash, stiffness=chain.stiffness)
+    acc = positioning_accuracy(Q_(torque, "N*m"), t_n, **args).m_as("arcmin")
+    bound = lost_motion(j_t=chain.backlash, T=Q_(torque, "N*m"), C=chain.stiffness).m_as("arcmin")
+    fig = Figure(figsize=(8.0, 4.4), layout="constrained")
+    ax = fig.subplots()
+    ax.axvspan(0, edge, color=LOW_BAND_COLOR, linewidth=0, zorder=0, label=f"|T| <= 3 % of $T_N$ ({sig(edge, 3)} N·m): $\\varphi_{{TA}} + j_t$")
+    ax.plot(torque, acc, color=FIT_COLOR, linewidth=2.0, label="positioning accuracy (E13)")
+    ax.plot(torque, bound, color=LOOP_COLOR, linewidth=1.4, linestyle="--", label="repeatability at most: lost motion $j_t + |T|/C$")
+    if applied_torque is not None:
+        t = abs(as_kind(applied_torque, "torque", "applied_torque").m_as("N*m"))
+        a = positioning_accuracy(Q_(t, "N*m"), t_n, **args).m_as("arcmin")
+        ax.plot([t], [a], "o", color=MARK_COLOR, zorder=4, label=f"the case: {sig(t, 3)} N·m -> {sig(a, 3)} arcmin")
+    ax.set_xlim(0, t_n.m_as("N*m"))
+    ax.set_ylim(0, None)
+    ax.set_xlabel("applied torque at the output $|T|$ [N·m]")
+    ax.set_ylabel("angle at the output [arcmin]")
+    ax.grid(True, color="#dddddd", linewidth=0.6)
+    fig.legend(loc="outside lower center", ncols=2, fontsize=8, frameon=False)
+    ax.set_title(
+        f"Positioning accuracy and repeatability against torque (E13)\n$\\varphi_{{TA}}$ = {fmt(chain.transmission_accuracy, 'arcmin', 3)}, "
+        f"$j_t$ = {fmt(chain.backlash, 'arcmin', 3)}, C = {fmt(chain.stiffness, 'N*m/arcmin', 4)}, $T_N$ = {fmt(t_n, 'N*m')}",
+        fontsize=9,
+    )
     return fig

@@ -4,6 +4,7 @@ import subprocess
 import sys
 
 import numpy as np
+import pytest
 
 from calc import Q_
 from calc.accuracy import analyze_positions
@@ -88,3 +89,17 @@ def test_importing_the_accuracy_modules_stays_light():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_positioning_rule_figure_jumps_at_three_percent():
+    from calc.accuracy_plots import positioning_rule_figure
+
+    chain = Chain((Component("gearbox", "output", Q_(22, "N*m/arcmin"), Q_(8, "arcmin"), Q_(60, "arcsec"), Q_(110, "N*m")),))
+    fig = positioning_rule_figure(chain, applied_torque=Q_(8, "N*m"))
+    accuracy_line = fig.axes[0].lines[0]
+    t, a = accuracy_line.get_xdata(), accuracy_line.get_ydata()
+    # E13 by hand: up to 3.3 N·m, 1 + 8 = 9 arcmin; just above, 1 + 3.3 / 22 = 1.15 arcmin.
+    assert a[t <= 3.3] == pytest.approx(9.0)
+    assert a[t > 3.3][0] == pytest.approx(1.15, abs=1e-6)
+    case_point = fig.axes[0].lines[2]
+    assert case_point.get_ydata()[0] == pytest.approx(1 + 8 / 22)
