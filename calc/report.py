@@ -870,7 +870,19 @@ def build_report(case_path) -> Report:
         report.files.append(("Case file", display_path(path), sha256(path)))
     try:
         case = read_case(path)
-        report.case, report.title = case, case.title
+    except CalcError as exc:
+        report.error = str(exc)
+        return report
+    return report_of(case, report)
+
+
+def report_of(case: Case, report: Report | None = None) -> Report:
+    """Evaluate a case already read (the design review passes changed copies) into ``report``
+    (a new one, without build date and commit, when not given)."""
+    if report is None:
+        report = Report(path=case.path, title=case.title, built="", commit="")
+    report.case, report.title = case, case.title
+    try:
         results = evaluate(case)
         if "gearbox" in results:
             report.selection = gearbox_selection(case)
@@ -894,4 +906,3 @@ def build_report(case_path) -> Report:
         if s and s.get("catalog") and s.get("catalog_sha256"):
             report.files.append((f"{name.capitalize()} catalog", s["catalog"], s["catalog_sha256"]))
     return report
-

@@ -1,0 +1,78 @@
+"""The design review: changed copies of a case, and the panel that re-evaluates them.
+
+Expected numbers are worked by hand from the example case (cases/indexing-table.toml):
+T_2max = T_1B · i · f_s · η, with f_s = 1.3 at Z_h = 1800 /h and η = 0.97 (NPT035-10).
+"""
+
+import numpy as np
+import pytest
+
+from calc import Q_
+from calc.case import read_case
+from calc.evaluate import evaluate
+from calc.review import DesignReview, review_items, with_changes
+
+from .conftest import EXAMPLE
+
+
+@pytest.fixture(scope="module")
+def case():
+    return read_case(EXAMPLE)
+
+
+def test_no_change_is_the_same_case(case):
+    assert evaluate(with_changes(case)) == evaluate(case)
+
+
+def test_a_stronger_motor_fails_every_gearbox(case):
+    # 30 N·m · 10 · 1.3 · 0.97 = 378.3 N·m, above every T_2B at ratio 10 (at most 220 N·m).
+    r = evaluate(with_changes(case, motor_peak_torque=Q_(30, "N*m")))
+    assert r["cyclic"]["T2max"]["value"] == pytest.approx(378.3)
+    assert r["gearbox"]["selected"] is None
+    assert case.motor_peak_torque == Q_(12, "N*m")  # the case itself is untouched
+
+
+def test_cycle_timing_sets_the_duty_cycle(case):
+    # Pause 1 s -> 3 s: ED = 1 s / 4 s = 25 %, Z_h = 3600 / 4 = 900 /h, so f_s = 1.0 (E4).
+    durations = Q_(np.array([0.2, 0.6, 0.2, 3.0]), "s")
+    r = evaluate(with_changes(case, durations=durations))
+    assert r["duty"]["ED"]["value"] == pytest.approx(25.0)
+    assert r["cyclic"]["fs"] == 1.0
+
+
+def test_torques_set_the_cubic_mean(case):
+    # Every torque doubled: T_2m doubles (the cubic mean is homogeneous of degree 1).
+    r0 = evaluate(case)
+    r = evaluate(with_changes(case, torques=2 * case.profile.torques))
+    assert r["continuous"]["T2m"]["value"] == pytest.approx(2 * r0["continuous"]["T2m"]["value"])
+
+
+def test_temperature_and_applied_torque_reach_their_sections(case):
+    r = evaluate(with_changes(case, temperature=Q_(95, "degC"), applied_torque=Q_(16, "N*m")))
+    assert r["coupling"]["temperature"]["value"] == pytest.approx(95)
+    assert r["accuracy"]["applied_torque"]["value"] == pytest.approx(16)
+    # Lost motion j_t + T / C grows by the extra 8 N·m over the chain's stiffness.
+    r0 = evaluate(case)
+    extra = 8 / r0["accuracy"]["C_total"]["value"]
+    assert r["accuracy"]["lost_motion"]["value"] == pytest.approx(r0["accuracy"]["lost_motion"]["value"] + extra)
+
+
+def test_panel_controls_re_evaluate_the_case():
+    review = DesignReview(EXAMPLE)
+    assert {"ratio", "t_1", "T_1", "T_1B", "J_motor", "J_L", "temperature", "applied_torque"} <= set(review.controls)
+    assert "PASS" in review.items()[0].data
+    review.controls["T_1B"].value = 30.0
+    assert "FAIL" in review.items()[0].data and "378.3" in review.items()[0].data
+    assert "FAIL" in review.output.outputs[0]["data"]["text/html"]  # the panel's output follows the control
+
+
+def test_a_case_that_cannot_be_evaluated_says_why_instead_of_raising(case):
+    items = review_items(with_changes(case, ratio=Q_(13, "")))
+    assert "FAIL" in items[0].data and "has ratio 13" in items[0].data
+    bad = DesignReview(EXAMPLE.parent / "missing.toml")
+    assert "the case file does not exist" in bad.message.value
+
+
+def test_review_items_of_the_example(case):
+    kinds = [type(x).__name__ for x in review_items(case)]
+    assert kinds == ["HTML", "Figure", "HTML", "DataFrame", "HTML", "DataFrame", "HTML", "DataFrame", "Figure"]
