@@ -32,7 +32,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, as_kind, kind, latex_unit, pretty_unit, sig, unit, ureg
+from .units import Q_, as_kind, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit, ureg
 
 REGISTRY: list["Formula"] = []
 
@@ -189,12 +189,8 @@ class Formula:
 
     @functools.cached_property
     def _arguments(self) -> tuple:
-        """Per input: the symbol, its SI unit and, for a constant, its SI magnitude."""
-        out = []
-        for s in self.inputs:
-            si = unit(kind(s.kind).si_unit)
-            out.append((s, si, None if s.value is None else Q_(s.value).m_as(si)))
-        return tuple(out)
+        """Per input: the symbol and, for a constant, its SI magnitude."""
+        return tuple((s, None if s.value is None else Q_(s.value).m_as(unit(kind(s.kind).si_unit))) for s in self.inputs)
 
     @functools.cached_property
     def _takes(self) -> tuple:
@@ -205,21 +201,18 @@ class Formula:
             unknown = sorted(set(values) - set(self._takes))
             raise CalcError(f"{self.name}: unknown argument {unknown[0]!r}; the formula takes {', '.join(self._takes)}")
         args = []
-        for s, si, constant in self._arguments:
+        for s, constant in self._arguments:
             if constant is not None:
                 args.append(constant)
                 continue
             if s.name not in values:
                 raise CalcError(f"{self.name}: missing argument {s.name!r} ({s.description}, {kind(s.kind).name})")
-            q = as_kind(values[s.name], s.kind, f"{self.name}: argument {s.name!r}")
-            args.append(q.magnitude if q.units == si else q.m_as(si))
+            args.append(to_si(values[s.name], s.kind, f"{self.name}: argument {s.name!r}"))
         return args
 
     def __call__(self, **values):
         """Evaluate with quantities (scalars or arrays); returns a quantity in the result's unit."""
-        out = self.numeric(*self._si_args(values))
-        si, shown = unit(kind(self.result.kind).si_unit), unit(self.result.unit)
-        return Q_(out, si) if si == shown else Q_(out, si).to(shown)
+        return from_si(self.numeric(*self._si_args(values)), self.result.kind, self.result.unit)
 
     def check_dimensions(self) -> None:
         """Evaluate the expression on quantities of the declared units and check the result's kind.

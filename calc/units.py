@@ -158,9 +158,43 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
 
 
 def to_si(value, expected: str | Kind, where: str):
-    """Magnitude of a checked quantity in the kind's coherent SI unit (float or array)."""
+    """Magnitude of a checked quantity in the kind's coherent SI unit (float or array).
+
+    The check of :func:`as_kind` and pint's conversion (the magnitude times pint's factor), with
+    the factor looked up once per unit.
+
+    >>> to_si(Q_(300, "rpm"), "speed", "n"), to_si(Q_(2, "kg*m**2"), "inertia", "J")
+    (31.41592653589793, 2)
+    """
     k = kind(expected)
-    return as_kind(value, k, where).m_as(k.si_unit)
+    if isinstance(value, pint.Quantity) and value._REGISTRY is ureg and k.accepts(value.units):
+        factor = _factor(value.units, unit(k.si_unit))
+        if factor is not None:
+            return value.magnitude if factor == 1.0 else value.magnitude * factor
+    return as_kind(value, k, where).m_as(k.si_unit)  # the error, or a unit with an offset (degC)
+
+
+def from_si(magnitude, expected: str | Kind, unit_text: str) -> pint.Quantity:
+    """A magnitude in the kind's SI unit as a quantity in ``unit_text``, converted as pint does.
+
+    >>> from_si(31.41592653589793, "speed", "rpm")
+    <Quantity(300.0, 'revolutions_per_minute')>
+    """
+    si, shown = unit(kind(expected).si_unit), unit(unit_text)
+    factor = _factor(si, shown)
+    if factor is None:
+        return ureg.Quantity(magnitude, si).to(shown)
+    return ureg.Quantity(magnitude if factor == 1.0 else magnitude * factor, shown)
+
+
+@functools.lru_cache(maxsize=1024)
+def _factor(src, dst) -> float | None:
+    """pint's factor from unit ``src`` to unit ``dst``; None where the conversion has an offset (°C)."""
+    if src == dst:
+        return 1.0
+    if ureg.Quantity(0.0, src).m_as(dst) != 0.0:
+        return None
+    return ureg.Quantity(1.0, src).m_as(dst)
 
 
 def revolutions_per_second(speed) -> pint.Quantity:

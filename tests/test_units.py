@@ -115,3 +115,38 @@ def test_formatting():
     assert sig(35.40764860744718) == "35.41"
     assert pretty_unit("kg*cm**2") == "kg·cm²"
     assert latex_unit("N*m/arcmin") == r"\mathrm{N\,m/arcmin}"
+
+
+_UNITS = {
+    "speed": ("rpm", "rad/s", "deg/s", "rev/s"),
+    "per_hour": ("1/hour", "1/min", "1/s"),
+    "torque": ("N*m", "lbf*in", "kN*m"),
+    "dimensionless": ("", "percent"),
+    "temperature": ("degC", "K", "degF"),
+}
+
+
+@given(
+    kind_and_unit=st.sampled_from([(k, u) for k, units in _UNITS.items() for u in units]),
+    x=st.floats(-1e6, 1e6, allow_nan=False),
+)
+def test_to_si_and_from_si_convert_exactly_as_pint_does(kind_and_unit, x):
+    # The cached factor is pint's own, so the numbers are pint's to the last bit (offsets, °C, go through pint).
+    from calc.units import KINDS, from_si, to_si
+
+    name, unit_text = kind_and_unit
+    si = KINDS[name].si_unit
+    assert to_si(Q_(x, unit_text), name, "x") == Q_(x, unit_text).m_as(si)
+    assert from_si(x, name, unit_text).m_as(unit_text) == Q_(x, si).to(unit_text).magnitude
+    array = np.array([x, 2 * x])
+    np.testing.assert_array_equal(to_si(Q_(array, unit_text), name, "x"), Q_(array, unit_text).m_as(si))
+
+
+def test_to_si_checks_the_kind_as_as_kind_does():
+    from calc.units import to_si
+
+    with pytest.raises(CalcError, match="T: expected a speed such as"):
+        to_si(Q_(300, "Hz"), "speed", "T")
+    with pytest.raises(CalcError, match="expected a torque as a quantity with a unit"):
+        to_si(12.0, "torque", "T")
+    assert to_si(10, "dimensionless", "i") == 10.0
