@@ -13,8 +13,8 @@ twist at the output are recorded: a loop. From the loop,
   (:data:`lost_motion_from_loop`): the backlash plus the small elastic twist of that band.
 
 The analysis is vectorized (a million samples in well under a second) and made robust to noise
-and uneven sampling: the loading direction of each sample is the sign of the torque change over a
-few samples either side; the loop's twist at a torque level is read, for each pass through a
+and uneven sampling: the loading direction of each sample is the sign of the torque's change
+between the means of a few samples either side; the loop's twist at a torque level is read, for each pass through a
 narrow window around that level, from a straight line fitted to that pass's samples, so noise
 neither widens max - min nor shifts it.
 
@@ -99,9 +99,6 @@ class Loop:
             raise CalcError(
                 f"{self.source}: expected torque and twist as two arrays of one length, found shapes {np.shape(t.magnitude)} and {np.shape(p.magnitude)}"
             )
-
-    def __len__(self):
-        return len(self.torque.magnitude)
 
 
 def read_loop(path) -> Loop:
@@ -403,18 +400,20 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
         slope, t_mean, phi_mean = _line(torque[band], twist[band])
         if not slope > 0:
             raise CalcError(f"{where}: the twist does not rise with the torque between 50 % and 100 % of the nominal torque in the {name} direction")
-        ends = np.array([lo, hi]) * sign if sign > 0 else np.array([-hi, -lo])
+        ends = np.array([lo, hi]) if sign > 0 else np.array([-hi, -lo])
         fits[name] = LineFit(Q_(ends, "N*m"), Q_(phi_mean + slope * (ends - t_mean), "rad").to("arcmin"), count)
 
-    # Level readings use about ±0.5 % of T_N of path either side of a crossing.
-    half_window = int(round(0.005 * t_n / _torque_step(torque)))
+    # Level readings use about ±0.5 % of T_N of path either side of a crossing (a record that
+    # mostly dwells has no typical step; then the two samples either side of it).
+    step = _torque_step(torque)
+    half_window = min(int(round(0.005 * t_n / step)), n // 10) if step > 0 else 0
     # A record that starts unloaded is not on the loop until the torque first leaves the ±3 % band.
     on_loop = np.ones(n, bool)
     on_loop[: int(np.argmax(np.abs(torque) > edge))] = False
     passes = np.where(on_loop, passes, -1)
     at_zero = _level_twists(torque, twist, passes, 0.0, half_window)
     if len(at_zero) < 2:
-        raise CalcError(f"{where}: expected the loop to pass 0 N·m in both directions, found {len(at_zero)} pass")
+        raise CalcError(f"{where}: expected the loop to pass 0 N·m in both directions, found {len(at_zero)} pass{'' if len(at_zero) == 1 else 'es'}")
     band_twists = np.concatenate([at_zero, _level_twists(torque, twist, passes, -edge, half_window), _level_twists(torque, twist, passes, edge, half_window)])
 
     def stiffness(fit):

@@ -37,9 +37,6 @@ class Measurement:
     def __getitem__(self, name: str):
         return self.columns[name]
 
-    def __len__(self):
-        return len(next(iter(self.columns.values())))
-
 
 def measurement_path(text, base: Path | None, where: str) -> Path:
     """The file a case names (relative to the case file's folder); an error if it is missing."""

@@ -142,6 +142,11 @@ def test_bad_loops_are_one_clear_error(tmp_path):
         analyze_loop(low, Q_(200, "N*m"))
     with pytest.raises(CalcError, match="nominal torque: expected a torque"):
         analyze_loop(low, Q_(81, "N*m/arcmin"))
+    # Loaded up and down once, never back: 0 N·m is passed only while the torque falls.
+    t = np.concatenate([np.linspace(0, 81, 400), np.linspace(81, -81, 800)[1:]])
+    half = Loop(Q_(t, "N*m"), TP010.twist(Q_(t, "N*m")), source="half loop")
+    with pytest.raises(CalcError, match="half loop: expected the loop to pass 0 N·m in both directions, found 1 pass$"):
+        analyze_loop(half, Q_(81, "N*m"))
 
 
 @pytest.mark.parametrize(
