@@ -421,7 +421,17 @@ def _component(case: Case, t: Section, ratio, out: AccuracyCase) -> Component:
 
 
 def section_results(case: Case) -> dict:
-    """The ``accuracy`` section of the results (``spec/case-format.md``)."""
+    """The ``accuracy`` section of the results (``spec/case-format.md``): ``C_total`` referred to
+    the output, ``lost_motion``, ``positioning_accuracy``, ``repeatability`` and the
+    ``components`` with their ``stiffness_at_output`` and ``backlash_at_output``, each quantity as
+    ``{"value", "unit"}``; measured loops, traces and positioning records where the case names them.
+
+    >>> from calc.case import read_case
+    >>> from calc.catalog import CATALOG_DIR
+    >>> r = section_results(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml"))
+    >>> round(r["C_total"]["value"], 2), r["C_total"]["unit"], [c["side"] for c in r["components"]]
+    (21.35, 'N*m/arcmin', ['input', 'output'])
+    """
     from .evaluate import number, quantity
 
     spec = read_accuracy(case)
@@ -508,7 +518,9 @@ def _q(d) -> str:
 
 
 def summary_lines(section: dict) -> list[str]:
-    """The accuracy results as lines of the terminal report."""
+    """The accuracy results (:func:`section_results`) as lines of the terminal report: the chain
+    table, then C_total, lost motion, positioning accuracy with the rule that applied, and
+    repeatability, each with its errata entry; measurements and checks after."""
     s = section
     ratio = "" if s["ratio"] is None else f", ratio {s['ratio']:g}"
     lines = [f"Accuracy at the output (applied torque {_q(s['applied_torque'])}{ratio}; E11 to E13):"]
