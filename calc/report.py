@@ -110,7 +110,8 @@ def latex_escape(text) -> str:
     return _LIGATURE.sub("{}", out)
 
 
-_SYMBOL = re.compile(r"\b([A-Za-z])_([A-Za-z0-9]+)\b")
+_SYMBOL = re.compile(r"\b(phi|eta|lambda|[A-Za-z])_([A-Za-z0-9]+)\b")
+_GREEK = {"phi": r"\varphi", "eta": r"\eta", "lambda": r"\lambda"}
 
 
 def prose(text: str) -> str:
@@ -123,7 +124,7 @@ def prose(text: str) -> str:
     out, last = [], 0
     text = text.replace("<=", "≤").replace(">=", "≥")
     for m in _SYMBOL.finditer(text):
-        out += [latex_escape(text[last:m.start()]), rf"${m.group(1)}_{{\mathrm{{{m.group(2)}}}}}$"]
+        out += [latex_escape(text[last:m.start()]), rf"${_GREEK.get(m.group(1), m.group(1))}_{{\mathrm{{{m.group(2)}}}}}$"]
         last = m.end()
     return "".join(out) + latex_escape(text[last:])
 
