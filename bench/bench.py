@@ -117,28 +117,25 @@ HEADER = (
 
 
 def write_synthetic_catalog(path: Path, rows: int, ratio: float, seed: int = 1) -> None:
-    """A gearbox catalog of ``rows`` made-up rows, all at ``ratio``, in the units makers print.
-
-    Speed ratings end in .05 rpm, so that no row sits exactly on the boundary of a speed check
-    (300 rpm · 10 against 3000 rpm), where the verdict hangs on the last bit of a unit conversion
-    and the float floor, computing in rad/s, would differ from the API for that reason alone.
-    """
+    """A gearbox catalog of ``rows`` made-up rows, all at ``ratio``, in the units makers print
+    (whole rpm, so some rows sit exactly on a speed check's boundary, as real ones do)."""
     rng = np.random.default_rng(seed)
     t_2n = rng.uniform(10, 2000, rows).round(1)
     t_2b = (t_2n * rng.uniform(1.5, 2.2, rows)).round(1)
     t_2not = (t_2b * 1.5).round(1)
-    n_1n = rng.uniform(1500, 5000, rows).round(0) + 0.05
-    n_1max = (n_1n * rng.uniform(1.2, 2.5, rows)).round(0) + 0.05
+    n_1n = rng.uniform(1500, 5000, rows).round(0)
+    n_1max = (n_1n * rng.uniform(1.2, 2.5, rows)).round(0)
     eta = rng.uniform(90, 98, rows).round(1)
     backlash = rng.uniform(1, 10, rows).round(1)
     c_t21 = rng.uniform(5, 500, rows).round(1)
     j_1 = rng.uniform(0.1, 50, rows).round(2)
+    illustrative = np.where(rng.uniform(size=rows) < 0.3, "yes", "no")
     with open(path, "w", encoding="utf-8") as f:
         f.write(HEADER + "\n")
         for k in range(rows):
             f.write(
                 f"SYN{k:06d}-{ratio:g},SYN,{ratio:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},{eta[k]},"
-                f"{backlash[k]},{c_t21[k]},{j_1[k]},yes,synthetic\n"
+                f"{backlash[k]},{c_t21[k]},{j_1[k]},{illustrative[k]},synthetic\n"
             )
 
 
@@ -162,6 +159,7 @@ class Floats:
     eta: np.ndarray  # fraction
     J_1: np.ndarray  # kg·m²
     parts: np.ndarray  # str
+    illustrative: np.ndarray  # bool
     i: float
     t: np.ndarray  # segment durations, s
     n: np.ndarray  # segment speeds, rad/s
@@ -183,6 +181,7 @@ def floats(catalog, case) -> Floats:
         eta=catalog["eta"].m_as(""),
         J_1=catalog["J_1"].m_as("kg*m**2"),
         parts=catalog.parts.astype(str),
+        illustrative=np.array([str(m).lower() == "yes" for m in catalog.text["illustrative"]]),
         i=case.ratio.m_as(""),
         t=p.durations.m_as("s"),
         n=p.speeds.m_as("rad/s"),
@@ -196,32 +195,41 @@ def floats(catalog, case) -> Floats:
 
 def rank_numpy(f: Floats):
     """The floor: the same selection on float arrays (duty, n_2m, T_2m, Z_h, f_s, T_2max, the four
-    checks, the inertia ratio, passes, ranking by lexsort). Returns the order, passes, T_2max and
-    the ranking keys (size, worst utilization)."""
+    checks, the inertia ratio, passes, ranking by lexsort: passing first, published before
+    illustrative rows, smallest size, lowest worst utilization, part name). Returns the order,
+    passes, T_2max and the ranking keys (size, worst utilization)."""
     from calc.gearbox import SHOCK_FACTORS
+    from calc.profile import BOUNDARY_RTOL
 
     rows = np.isclose(f.ratio, f.i, rtol=1e-6, atol=0)
-    i, t_2n, t_2b, n_1n, n_1max, eta, j_1, parts = (
-        a[rows] for a in (f.ratio, f.T_2N, f.T_2B, f.n_1N, f.n_1max, f.eta, f.J_1, f.parts)
+    i, t_2n, t_2b, n_1n, n_1max, eta, j_1, parts, illustrative = (
+        a[rows] for a in (f.ratio, f.T_2N, f.T_2B, f.n_1N, f.n_1max, f.eta, f.J_1, f.parts, f.illustrative)
     )
     t, n, T = f.t[f.moving], f.n[f.moving], f.T[f.moving]
     t_on, t_cycle = t.sum(), f.t.sum()
-    s5 = t_on / t_cycle < 0.6 and t_on < 1200.0
+    s5 = t_on / t_cycle < 0.6 * (1 - BOUNDARY_RTOL) and t_on < 1200.0 * (1 - BOUNDARY_RTOL)
     w = np.abs(n) * t
     n_2m = w.sum() / t.sum()
     t_2m = np.cbrt((w * np.abs(T) ** 3).sum() / w.sum())
     z_h = 3600.0 / t_cycle
     bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
-    f_s = np.array([x for _, x in SHOCK_FACTORS])[np.searchsorted(bounds, z_h, side="right") - 1]
+    f_s = np.array([x for _, x in SHOCK_FACTORS])[np.searchsorted(bounds, z_h * (1 + BOUNDARY_RTOL), side="right") - 1]
     t_2max = f.T_1B * eta * f_s * i
     u = (n_2m * i / n_1n, t_2m / t_2n, np.abs(n).max() * i / n_1max, t_2max / t_2b)
     _ = (j_1 + f.J_L / i**2) / f.J_motor  # inertia ratio, as the API gives it
     governing = u[2:] if s5 else u[:2]
-    passes = np.logical_and.reduce([g <= 1.0 for g in governing])
+    passes = np.logical_and.reduce([g <= 1.0 + BOUNDARY_RTOL for g in governing])
     worst = np.max(governing, axis=0)
     worst = np.where(np.isnan(worst), np.inf, worst)
     size = np.where(passes, t_2b if s5 else t_2n, 0.0)
-    return np.lexsort((parts, worst, size, ~passes)), passes, t_2max, (size, worst)
+    keys = (worst, size, passes & illustrative, ~passes)
+    order = np.lexsort(keys)
+    tied = np.logical_and.reduce([k[order][1:] == k[order][:-1] for k in keys])
+    if tied.any():  # rows tied on every key go by part name, sorted within the tied runs
+        run = np.cumsum(np.concatenate(([True], ~tied)))
+        at = np.flatnonzero(np.concatenate(([False], tied)) | np.concatenate((tied, [False])))
+        order[at] = order[at][np.lexsort((parts[order[at]], run[at]))]
+    return order, passes, t_2max, (size, worst)
 
 
 def same_ranking(order, floor_order, keys) -> bool:
@@ -237,16 +245,17 @@ def rank_loop(catalog, case, rows: int):
     """The per-row loop a scalar library leads to: pint scalar quantities, one row at a time.
     Returns the ranking of the first ``rows`` rows."""
     from calc import Q_
+    from calc.profile import BOUNDARY_RTOL
 
     p = case.profile
     segments = [(p.durations[k], p.speeds[k], p.torques[k]) for k in range(len(p.phases)) if p.phases[k] != "pause"]
     t_on = sum((t for t, _, _ in segments), Q_(0, "s"))
     t_cycle = sum((p.durations[k] for k in range(len(p.phases))), Q_(0, "s"))
-    s5 = (t_on / t_cycle).to("") < 0.6 and t_on < Q_(20, "min")
+    s5 = (t_on / t_cycle).to("") < 0.6 * (1 - BOUNDARY_RTOL) and t_on < Q_(20, "min") * (1 - BOUNDARY_RTOL)
     weight = sum((abs(n) * t for t, n, _ in segments), Q_(0, "rpm*s"))
     n_2m = weight / t_on
     t_2m = (sum((abs(n) * t * abs(T) ** 3 for t, n, T in segments), Q_(0, "rpm*s*N**3*m**3")) / weight) ** (1 / 3)
-    z_h = (1 / t_cycle).to("1/hour").magnitude
+    z_h = (1 / t_cycle).to("1/hour").magnitude * (1 + BOUNDARY_RTOL)
     f_s = 2.0 if z_h >= 3000 else 1.6 if z_h >= 2000 else 1.3 if z_h >= 1500 else 1.1 if z_h >= 1000 else 1.0
     n_2max = max(abs(n) for _, n, _ in segments)
     T_1B, J_motor, J_L = case.motor_peak_torque, case.motor_inertia, case.load_inertia
@@ -265,9 +274,10 @@ def rank_loop(catalog, case, rows: int):
         ]
         _ = ((j_1[k] + J_L / i**2) / J_motor).m_as("")
         governing = u[2:] if s5 else u[:2]
-        passes = all(x <= 1.0 for x in governing)
+        passes = all(x <= 1.0 + BOUNDARY_RTOL for x in governing)
         size = (t_2b[k] if s5 else t_2n[k]).m_as("N*m") if passes else 0.0
-        keys.append((not passes, size, max(governing), str(catalog.parts[k]), k))
+        later = passes and str(catalog.text["illustrative"][k]).lower() == "yes"
+        keys.append((not passes, later, size, max(governing), str(catalog.parts[k]), k))
     return np.array([key[-1] for key in sorted(keys)])
 
 
@@ -292,7 +302,8 @@ def measure_rank(size: Size, workdir: Path) -> list[str]:
 
     loop_rows = min(size.loop_rows, size.rows)
     loop_time, loop_order = timed(lambda: rank_loop(catalog, case, loop_rows))
-    sub = Floats(**{**f.__dict__, **{k: getattr(f, k)[:loop_rows] for k in ("ratio", "T_2N", "T_2B", "n_1N", "n_1max", "eta", "J_1", "parts")}})
+    columns = ("ratio", "T_2N", "T_2B", "n_1N", "n_1max", "eta", "J_1", "parts", "illustrative")
+    sub = Floats(**{**f.__dict__, **{k: getattr(f, k)[:loop_rows] for k in columns}})
     sub_order, _, _, sub_keys = rank_numpy(sub)
     if not same_ranking(loop_order, sub_order, sub_keys):
         raise RuntimeError("rank: the per-row pint loop ranks the slice differently from the floor")
@@ -360,11 +371,13 @@ def sweep_api(q: dict):
 def sweep_numpy(grid):
     """The same on float arrays."""
     from calc.gearbox import SHOCK_FACTORS
+    from calc.profile import BOUNDARY_RTOL
 
     ratio, t_cycle, T_1B = grid
     ed = SWEEP_T_ON / t_cycle
     bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
-    f_s = np.array([x for _, x in SHOCK_FACTORS])[np.searchsorted(bounds, 3600.0 / t_cycle, side="right") - 1]
+    z_h = 3600.0 / t_cycle * (1 + BOUNDARY_RTOL)
+    f_s = np.array([x for _, x in SHOCK_FACTORS])[np.searchsorted(bounds, z_h, side="right") - 1]
     t_2max = T_1B * SWEEP_GEARBOX["eta"] * f_s * ratio  # in the formula's order: one product over the whole grid
     u_torque = t_2max / SWEEP_GEARBOX["T_2B"]
     u_speed = SWEEP_N_2MAX * ratio / SWEEP_GEARBOX["n_1max"]

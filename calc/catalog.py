@@ -9,6 +9,7 @@ every problem is reported with the file, the row (its line number in the file) a
 from __future__ import annotations
 
 import csv
+import functools
 import hashlib
 import math
 import re
@@ -75,24 +76,31 @@ class Catalog:
     def __len__(self):
         return len(self.parts)
 
-    @property
+    @functools.cached_property
     def illustrative(self) -> np.ndarray:
-        """True for rows whose ``illustrative`` column says yes (figures not a maker's own)."""
+        """True for rows whose ``illustrative`` column says yes (figures not a maker's own); read
+        once per catalog and carried to the catalogs of its rows."""
         marks = self.text.get("illustrative")
         if marks is None:
             return np.zeros(len(self), bool)
-        return np.array([str(m).strip().lower() == "yes" for m in marks], bool)
+        out = np.zeros(len(self), bool)
+        for mark in set(marks.tolist()):  # each distinct spelling once, not each row
+            if str(mark).strip().lower() == "yes":
+                out |= marks == mark
+        return out
 
     def __getitem__(self, column: str):
         return self.values[column]
 
     def rows(self, mask) -> "Catalog":
         """A catalog of the rows where ``mask`` is true (or at the given indices)."""
-        return Catalog(
+        out = Catalog(
             self.name, self.path, self.sha256, self.schema, self.parts[mask],
             {k: v[mask] for k, v in self.values.items()}, {k: v[mask] for k, v in self.text.items()},
             self.lines[mask], self.header_units,
         )
+        out.illustrative = self.illustrative[mask]
+        return out
 
     def index(self, part: str, where: str) -> int:
         hits = np.flatnonzero(self.parts == part)

@@ -15,6 +15,7 @@ name.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -23,7 +24,7 @@ from .catalog import Catalog, Column, Rule, Schema, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
 from .profile import BOUNDARY_RTOL, Profile, T_2m, Z_h, duty, n_2m
-from .units import Q_, as_kind, fmt, kind, pretty_unit, sig
+from .units import Q_, as_kind, fmt, kind, pretty_unit, sig, unit
 
 SCHEMA = Schema(
     kind="gearbox",
@@ -99,7 +100,7 @@ def shock_factor(cycles_per_hour):
     >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
     1.3
     """
-    z = as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as("1/hour")
+    z = as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as(unit("1/hour"))
     if np.any(np.asarray(z) < 0):
         raise CalcError(f"cycles_per_hour: expected zero or more cycles per hour, found {z}")
     bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
@@ -119,7 +120,7 @@ class CheckArray:
     rated: object
     unit: str
 
-    @property
+    @functools.cached_property
     def utilization(self) -> np.ndarray:
         """required / rated; NaN where the catalog gives no rated value."""
         with np.errstate(invalid="ignore", divide="ignore"):
@@ -127,7 +128,10 @@ class CheckArray:
 
     @property
     def passes(self) -> np.ndarray:
-        return self.utilization <= 1.0  # NaN compares false: no rating, no pass
+        """utilization <= 1, where a utilization within :data:`calc.profile.BOUNDARY_RTOL` above 1
+        is 1: 300 rpm · 10 comes back from rad/s as 3000.0000000000005 rpm, which meets 3000 rpm.
+        NaN compares false: no rating, no pass."""
+        return self.utilization <= 1.0 + BOUNDARY_RTOL
 
     def reason(self, row: int) -> str:
         """Why the row fails this check: by how much the required value exceeds the rated one."""
@@ -291,7 +295,17 @@ def rank(passes, size, worst_utilization, parts, illustrative=None) -> np.ndarra
     worst = np.where(np.isnan(worst_utilization), np.inf, worst_utilization)
     size_key = np.where(passes, size, 0.0)
     shown_later = np.zeros(len(passes), bool) if illustrative is None else passes & np.asarray(illustrative, bool)
-    return np.lexsort((parts.astype(str), worst, size_key, shown_later, ~passes))
+    keys = (worst, size_key, shown_later, ~passes)
+    order = np.lexsort(keys)
+    # Rows tied on every key go by part name. Names are sorted within the tied runs only: sorting
+    # text costs more than all the numeric keys together, and a catalog has few ties.
+    tied = np.logical_and.reduce([k[order][1:] == k[order][:-1] for k in keys])
+    if tied.any():
+        run = np.cumsum(np.concatenate(([True], ~tied)))
+        at = np.flatnonzero(np.concatenate(([False], tied)) | np.concatenate((tied, [False])))
+        rows = order[at]
+        order[at] = rows[np.lexsort((np.asarray(parts)[rows].astype(str), run[at]))]
+    return order
 
 
 def candidates_table(selection: GearboxSelection):

@@ -141,3 +141,33 @@ def test_rank_rule():
     parts = np.array(["a", "b", "c", "d"], dtype=object)
     # Passing first, smallest size first (c before b); failing closest-to-passing first (d before a).
     assert list(rank(passes, size, worst, parts)) == [2, 1, 3, 0]
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    rows=st.lists(
+        st.tuples(st.booleans(), st.sampled_from([10.0, 20.0]), st.sampled_from([0.5, 0.9, 1.2, np.nan]), st.booleans()),
+        min_size=1,
+        max_size=30,
+    ),
+    seed=st.integers(0, 2**16),
+)
+def test_rank_breaks_ties_by_part_name_as_a_full_sort_does(rows, seed):
+    # Few distinct keys, so most rows tie and the part name decides; names are sorted only within
+    # the tied runs, which must give the order of a full sort with the name as its last key.
+    passes, size, worst, illustrative = (np.array(c) for c in zip(*rows))
+    parts = np.array([f"P{k:03d}" for k in np.random.default_rng(seed).permutation(len(rows))], dtype=object)
+    passes, illustrative = passes.astype(bool), illustrative.astype(bool)
+    full = np.lexsort((parts.astype(str), np.where(np.isnan(worst), np.inf, worst), np.where(passes, size, 0.0), passes & illustrative, ~passes))
+    assert list(rank(passes, size, worst, parts, illustrative=illustrative)) == list(full)
+
+
+def test_a_required_speed_equal_to_the_rating_passes(catalog):
+    # n_2max · i = 300 rpm · 10 = 3000 rpm against n_1max = 3000 rpm: utilization 1, a pass, although
+    # the product comes back from rad/s as 3000.0000000000005 rpm.
+    rows = rows_at_ratio(catalog, Q_(10, ""))
+    row = rows.rows([0])
+    row.values["n_1max"] = Q_(np.array([3000.0]), "rpm")
+    check = next(c for c in select_gearbox(example_profile(), row, Q_(12, "N*m")).checks if c.name == "n_1max")
+    assert check.required[0].m_as("rpm") == pytest.approx(3000)
+    assert check.passes[0]
