@@ -34,7 +34,7 @@ from .formula import REGISTRY, Step
 from .gearbox import SHOCK_FACTORS, T_2max, inertia_ratio, n_1
 from .profile import ED, T_2m, Z_h, n_2m
 from .profile import t_k as t_k_symbol
-from .units import Q_, latex_unit, pretty_unit, sig
+from .units import Q_, pretty_unit, sig
 
 PROJECT_DIR = CATALOG_DIR.parent
 
