@@ -698,7 +698,7 @@ class Report:
         return out
 
     def figures_heading(self) -> Latex:
-        return Latex(r"\section{Figures}") if self.case is not None else Latex("")
+        return Latex(r"\clearpage\section{Figures}") if self.case is not None else Latex("")  # figures start a page
 
     def order_lines(self) -> Latex:
         """What to order: one line per chosen part."""
