@@ -13,6 +13,8 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
 * ``sweep``: a design space of ratio × cycle time × motor peak torque (10^5 points) evaluated with
   the package's Formula objects broadcast over arrays, beside the same in raw numpy; ``sweep_1M``
   the same with 10^6 points, where the fixed cost of each call weighs ten times less.
+* ``catalog_load_100k``: reading and validating that catalog's CSV file (no target; not part of
+  ``rank_100k``).
 * ``hysteresis_1M``: the analysis of a measured hysteresis loop of 10^6 samples.
 * ``import_calc``, ``evaluate_cli``, ``report``: cold runs of a fresh interpreter (median of 5 for
   the first two), beside ``import_numpy``.
