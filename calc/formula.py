@@ -25,6 +25,7 @@ from __future__ import annotations
 import functools
 import hashlib
 import inspect
+import linecache
 from dataclasses import dataclass
 from types import CodeType, SimpleNamespace
 from typing import Callable
@@ -146,7 +147,7 @@ class Formula:
         return f"{self.result.latex} = {self._latex(self.expr)}"
 
     def _latex(self, expr) -> str:
-        return _sympy().sp.latex(expr, symbol_names=self._symbol_names, mul_symbol="dot")
+        return _sympy().sp.latex(expr, symbol_names=self._symbol_names, mul_symbol="dot", order="none")
 
     def _repr_latex_(self):
         return f"$${self.latex()}$$"
@@ -158,9 +159,10 @@ class Formula:
 
     @functools.cached_property
     def fingerprint(self) -> str:
-        """A digest of what the expression is built from (the builder's code and the constants it
-        reads, the symbols' names), computed without sympy."""
-        parts = [self.result.name, [s.name for s in self.inputs], _code_parts(self._build.__code__, self._build.__globals__)]
+        """A digest of what the expression is built from (the builder's source text and the
+        constants it reads, the symbols' names), computed without sympy. Source text, not bytecode,
+        so the stored forms hold on every Python version."""
+        parts = [self.result.name, [s.name for s in self.inputs], _builder_parts(self._build)]
         parts += [repr(c.cell_contents) for c in self._build.__closure__ or ()]
         return hashlib.sha256(repr(parts).encode()).hexdigest()[:16]
 
@@ -266,13 +268,16 @@ class Formula:
                     terms.append(node.args[0].xreplace(repl))
                 return s.sp.Add(*terms, evaluate=False)
 
-            expr = expr.replace(lambda e: isinstance(e, s.SegmentSum), expand)
+            with s.sp.evaluate(False):  # keep the formula's order and shape with numbers in it
+                expr = expr.replace(lambda e: isinstance(e, s.SegmentSum), expand)
         repl = {
             sym: _value(s, values[spec.name], spec, spec.name)
             for sym, spec in zip(self._symbols, self.inputs)
             if not spec.per_segment
         }
-        return self._latex(expr.xreplace(repl))
+        with s.sp.evaluate(False):
+            expr = expr.xreplace(repl)
+        return self._latex(expr)
 
 
 class _Doc:
@@ -286,13 +291,40 @@ Formula._class_doc = Formula.__doc__
 Formula.__doc__ = _Doc()
 
 
-def _code_parts(code: CodeType, namespace: dict) -> list:
-    """The parts of a builder's code that decide its expression: bytecode, names, constants (nested
-    code included) and the values of the plain constants it reads from its module."""
-    parts = [code.co_code, code.co_names, code.co_varnames]
-    parts += [_code_parts(c, namespace) if isinstance(c, CodeType) else repr(sorted(c)) if isinstance(c, frozenset) else repr(c) for c in code.co_consts]
-    parts += [repr(namespace[n]) for n in code.co_names if isinstance(namespace.get(n), (bool, int, float, str, tuple, dict))]
-    return parts
+def _builder_parts(build: Callable) -> list:
+    """The parts of a builder that decide its expression: the source text of its body and the
+    values of the plain constants it reads from its module."""
+    names = sorted(_names(build.__code__))
+    namespace = build.__globals__
+    return [_body_text(build), [repr(namespace[n]) for n in names if isinstance(namespace.get(n), (bool, int, float, str, tuple, dict))]]
+
+
+def _body_text(build: Callable) -> str:
+    """The source text of a builder's body, cut out by the code's own source positions (so two
+    lambdas on one line differ); the whole source where positions are missing; the bytecode where
+    there is no source file (such a fingerprint never matches a stored one)."""
+    code = build.__code__
+    spans = [p for p in code.co_positions() if None not in p and (p[0], p[2]) != (p[1], p[3])]
+    lines = linecache.getlines(code.co_filename)
+    if not lines:
+        return repr(code.co_code)
+    if not spans:
+        return inspect.getsource(build).strip()
+    first, last = min(p[0] for p in spans), max(p[1] for p in spans)
+    start = min(p[2] for p in spans if p[0] == first)
+    end = max(p[3] for p in spans if p[1] == last)
+    text = lines[first - 1 : last]
+    text[-1] = text[-1][:end]
+    text[0] = text[0][start:]
+    return "".join(text)
+
+
+def _names(code: CodeType) -> set[str]:
+    names = set(code.co_names)
+    for const in code.co_consts:
+        if isinstance(const, CodeType):
+            names |= _names(const)
+    return names
 
 
 def _value(s, q, spec: Symbol, key: str):

@@ -72,7 +72,7 @@ T_2max = Formula(
         Symbol("f_s", "f_{s}", "dimensionless", "", "shock factor"),
         Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the gearbox"),
     ),
-    lambda sp, T_1B, i, f_s, eta: T_1B * i * f_s * eta,
+    lambda sp, T_1B, i, f_s, eta: sp.Mul(T_1B, i, f_s, eta, evaluate=False),  # in the source's order
     "source, S5 calculation 2",
 )
 

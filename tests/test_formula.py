@@ -42,7 +42,7 @@ def test_dimension_check_catches_a_lost_angle():
 
 
 def test_latex_comes_from_the_expression():
-    assert T_2max.latex() == r"T_{2\,\mathrm{max}} = T_{1B} \cdot \eta \cdot f_{s} \cdot i"
+    assert T_2max.latex() == r"T_{2\,\mathrm{max}} = T_{1B} \cdot i \cdot f_{s} \cdot \eta"
     assert r"\sqrt[3]" in T_2m.latex() and r"\sum_{k}" in T_2m.latex()
 
 
@@ -51,8 +51,8 @@ def test_step_shows_symbol_expression_numbers_result():
     # Hand calculation: 12 N·m × 10 × 1.3 × 0.97 = 151.32 N·m.
     assert step.result.m_as("N*m") == pytest.approx(151.32)
     assert step.latex() == (
-        r"T_{2\,\mathrm{max}} = T_{1B} \cdot \eta \cdot f_{s} \cdot i = "
-        r"12\,\mathrm{N\,m} \cdot 0.97 \cdot 1.3 \cdot 10 = 151.3\,\mathrm{N\,m}"
+        r"T_{2\,\mathrm{max}} = T_{1B} \cdot i \cdot f_{s} \cdot \eta = "
+        r"12\,\mathrm{N\,m} \cdot 10 \cdot 1.3 \cdot 0.97 = 151.3\,\mathrm{N\,m}"
     )
     assert str(step) == "T_2max = 151.3 N·m"
 
@@ -159,6 +159,12 @@ def test_fingerprint_follows_the_builder_and_the_constants_it_reads():
     assert formula(lambda sp, x: 2 * x).fingerprint == formula(lambda sp, x: 2 * x).fingerprint
     assert formula(lambda sp, x: 2 * x).fingerprint != formula(lambda sp, x: 3 * x).fingerprint
     assert formula(lambda sp, x: 2 * x).fingerprint != formula(lambda sp, x: x / 2).fingerprint
+    # Only the body counts, not its layout on the line or the names around it.
+    f = formula(lambda sp, x: 2 * x)
+    g = formula(
+        lambda sp, x: 2 * x
+    )
+    assert f.fingerprint == g.fingerprint
 
 
 def test_documentation_comes_from_the_formula_object():
