@@ -42,14 +42,16 @@ ED = Formula(
 n_2m = Formula(
     Symbol("n_2m", "n_{2m}", "speed", "rpm", "mean output speed"),
     (n_2k, t_k),
-    lambda sp, n, t: segment_sum(abs(n) * t) / segment_sum(t),
+    lambda sp, n, t: segment_sum(sp.Mul(abs(n), t, evaluate=False)) / segment_sum(t),  # the source's order
     "source, S1 calculation 1; errata E2 (any number of segments, moving time only)",
 )
 
 T_2m = Formula(
     Symbol("T_2m", "T_{2m}", "torque", "N*m", "cubic mean output torque"),
     (n_2k, t_k, T_2k),
-    lambda sp, n, t, T: sp.cbrt(segment_sum(abs(n) * t * abs(T) ** 3) / segment_sum(abs(n) * t)),
+    lambda sp, n, t, T: sp.cbrt(
+        segment_sum(sp.Mul(abs(n), t, abs(T) ** 3, evaluate=False)) / segment_sum(sp.Mul(abs(n), t, evaluate=False))
+    ),
     "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes)",
 )
 
