@@ -15,7 +15,7 @@ inertia is added, half to each side (E7).
 
 Ranking rule: passing candidates first; among them the smallest adequate size, measured by the
 rated torque ``T_KN``, then the larger margin (lower worst utilization); failing candidates
-after, closest to passing first. Ties go by part name (:func:`calc.gearbox.rank`).
+after, closest to passing first. Ties go by part name (:func:`calc.checks.rank`).
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, 
 from .errors import CalcError
 from .fits import Bore, parse_bore
 from .formula import Formula, Symbol
-from .gearbox import CheckArray, rank
+from .checks import CheckArray, rank, selected_part
 from .units import Q_, as_kind, fmt, pretty_unit, sig
 
 TYPES = ("bellows", "elastomer", "safety", "line-shaft")
@@ -214,7 +214,7 @@ def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "tem
 
 @dataclass(frozen=True)
 class CouplingCheck(CheckArray):
-    """A :class:`calc.gearbox.CheckArray` that may apply to some rows only (a safety coupling's
+    """A :class:`calc.checks.CheckArray` that may apply to some rows only (a safety coupling's
     T_A range), and says why it cannot be made where a value is missing."""
 
     applies: object = None  # bool array over the rows; None: every row
@@ -265,9 +265,7 @@ class CouplingSelection:
     @property
     def selected(self) -> str | None:
         """Part of the best passing candidate, or None."""
-        if len(self.order) and self.passes[self.order[0]]:
-            return str(self.catalog.parts[self.order[0]])
-        return None
+        return selected_part(self.catalog.parts, self.passes, self.order)
 
     def reasons(self, row: int) -> list[str]:
         return [c.reason(row) for c in self.checks if c.applies_to(row) and not c.passes[row]]

@@ -18,7 +18,7 @@ from .errors import CalcError
 from .gearbox import SCHEMA as GEARBOX_SCHEMA
 from .gearbox import GearboxSelection, rows_at_ratio, select_gearbox, shock_factor
 from .profile import T_2m, Z_h, duty, n_2m
-from .units import fmt, sig
+from .units import sig
 
 
 #: Further sections of a case, by name: the module that evaluates it. Each such module has

@@ -33,7 +33,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, as_kind, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit, ureg
+from .units import Q_, as_kind, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit
 
 REGISTRY: list["Formula"] = []
 

@@ -15,7 +15,6 @@ name.
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -23,8 +22,9 @@ import numpy as np
 from .catalog import Catalog, Column, Rule, Schema, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
-from .profile import BOUNDARY_RTOL, Profile, T_2m, Z_h, duty, n_2m
-from .units import Q_, as_kind, fmt, kind, pretty_unit, sig, unit
+from .checks import BOUNDARY_RTOL, CheckArray, rank, selected_part
+from .profile import Profile, T_2m, Z_h, duty, n_2m
+from .units import Q_, as_kind, pretty_unit, sig, unit
 
 SCHEMA = Schema(
     kind="gearbox",
@@ -92,7 +92,7 @@ inertia_ratio = Formula(
 def shock_factor(cycles_per_hour):
     """Shock factor ``f_s`` for ``Z_h`` cycles per hour (errata E4), scalar or array.
 
-    A value within :data:`calc.profile.BOUNDARY_RTOL` below a boundary counts as on it: a cycle of
+    A value within :data:`calc.checks.BOUNDARY_RTOL` below a boundary counts as on it: a cycle of
     0.1 + 0.1 + 0.1 + 2.1 s = 2.4000000000000004 s gives 1499.9999999999998 cycles per hour, which is 1500.
 
     >>> [float(shock_factor(Q_(z, "1/hour"))) for z in (999, 1000, 1499, 1500, 2000, 3000)]
@@ -106,42 +106,6 @@ def shock_factor(cycles_per_hour):
     bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
     factors = np.array([f for _, f in SHOCK_FACTORS])
     return factors[np.searchsorted(bounds, z * (1 + BOUNDARY_RTOL), side="right") - 1]
-
-
-@dataclass(frozen=True)
-class CheckArray:
-    """One criterion over all candidates: required and rated values as quantity arrays, and the
-    unit both are shown in."""
-
-    name: str
-    mode: str
-    text: str
-    required: object
-    rated: object
-    unit: str
-
-    @functools.cached_property
-    def utilization(self) -> np.ndarray:
-        """required / rated; NaN where the catalog gives no rated value."""
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return (self.required / self.rated).m_as("")
-
-    @property
-    def passes(self) -> np.ndarray:
-        """utilization <= 1, where a utilization within :data:`calc.profile.BOUNDARY_RTOL` above 1
-        is 1: 300 rpm · 10 comes back from rad/s as 3000.0000000000005 rpm, which meets 3000 rpm.
-        NaN compares false: no rating, no pass."""
-        return self.utilization <= 1.0 + BOUNDARY_RTOL
-
-    def reason(self, row: int) -> str:
-        """Why the row fails this check: by how much the required value exceeds the rated one."""
-        u = self.utilization[row]
-        if np.isnan(u):
-            return f"{self.text}: not checked, the catalog gives no rated value"
-        return (
-            f"{self.text}: required {fmt(self.required[row], self.unit)} > rated {fmt(self.rated[row], self.unit)}, "
-            f"{sig(100 * (u - 1), 3)} % over"
-        )
 
 
 @dataclass
@@ -180,9 +144,7 @@ class GearboxSelection:
     @property
     def selected(self) -> str | None:
         """Part number of the best passing candidate, or None."""
-        if len(self.order) and self.passes[self.order[0]]:
-            return str(self.catalog.parts[self.order[0]])
-        return None
+        return selected_part(self.catalog.parts, self.passes, self.order)
 
     def reasons(self, row: int) -> list[str]:
         """Why a row fails: each failing governing check with its excess."""
@@ -286,26 +248,6 @@ def select_gearbox(
         illustrative=catalog.illustrative,
     )
     return selection
-
-
-def rank(passes, size, worst_utilization, parts, illustrative=None) -> np.ndarray:
-    """Indices best first: passing first, published before illustrative rows, then smallest size
-    and larger margin; failing rows after, closest to passing first (see the module's docstring)."""
-    passes = np.asarray(passes, bool)
-    worst = np.where(np.isnan(worst_utilization), np.inf, worst_utilization)
-    size_key = np.where(passes, size, 0.0)
-    shown_later = np.zeros(len(passes), bool) if illustrative is None else passes & np.asarray(illustrative, bool)
-    keys = (worst, size_key, shown_later, ~passes)
-    order = np.lexsort(keys)
-    # Rows tied on every key go by part name. Names are sorted within the tied runs only: sorting
-    # text costs more than all the numeric keys together, and a catalog has few ties.
-    tied = np.logical_and.reduce([k[order][1:] == k[order][:-1] for k in keys])
-    if tied.any():
-        run = np.cumsum(np.concatenate(([True], ~tied)))
-        at = np.flatnonzero(np.concatenate(([False], tied)) | np.concatenate((tied, [False])))
-        rows = order[at]
-        order[at] = rows[np.lexsort((np.asarray(parts)[rows].astype(str), run[at]))]
-    return order
 
 
 def candidates_table(selection: GearboxSelection):

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import CalcError
+from .checks import BOUNDARY_RTOL
 from .formula import Formula, Symbol, segment_sum
 from .units import Q_, as_kind
 
@@ -21,10 +22,6 @@ PHASES = ("accel", "const", "decel", "pause")
 S5_MAX_ED = Q_(60, "percent")
 S5_MAX_ON_TIME = Q_(20, "min")
 
-#: A value within this relative distance below a boundary of E3 or E4 counts as on it: a sum of
-#: durations carries rounding (0.6 s + 0.7 s + 0.2 s = 1.4999999999999998 s, an ED of 1.5 s / 2.5 s
-#: would fall just below 60 %).
-BOUNDARY_RTOL = 1e-9
 
 t_on = Symbol("t_on", r"t_{\mathrm{on}}", "time", "s", "on-time, t_a + t_c + t_d (moving segments)")
 t_cycle = Symbol("t_cycle", r"t_{\mathrm{cycle}}", "time", "s", "cycle time, pauses included")

@@ -7,7 +7,8 @@ from hypothesis import strategies as st
 
 from calc import CalcError, Q_
 from calc.catalog import load_catalog
-from calc.gearbox import SCHEMA, T_2max, inertia_ratio, n_1, rank, rows_at_ratio, select_gearbox, shock_factor
+from calc.checks import rank
+from calc.gearbox import SCHEMA, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
 from calc.profile import Profile
 
 from .conftest import GEARBOXES
