@@ -42,6 +42,15 @@ ratio = 10
 """
 
 
+def run(capsys, *args):
+    """``python -m calc evaluate ARGS`` in this process: exit code, standard output, standard error."""
+    from calc.__main__ import main
+
+    code = main(["evaluate", *map(str, args)])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
 @pytest.fixture
 def write_case(tmp_path):
     """Write a case file from TOML text; returns its path."""

@@ -8,10 +8,9 @@ import numpy as np
 import pytest
 
 from calc import Q_
-from calc.__main__ import main
 from calc.hysteresis import Loop, LoopModel, write_loop
 
-from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT
+from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, run
 
 SOURCE_EXAMPLE = """
 [accuracy]
@@ -29,12 +28,6 @@ backlash = "3 arcmin"
 transmission_accuracy = "60 arcsec"
 nominal_torque = "40 N*m"
 """
-
-
-def run(capsys, *args):
-    code = main(["evaluate", *map(str, args)])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def results(capsys, path):

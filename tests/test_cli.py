@@ -6,15 +6,8 @@ import sys
 
 import pytest
 
-from calc.__main__ import main
 
-from .conftest import EXAMPLE, GEARBOXES, HEAD_TOML, PROFILE_TOML
-
-
-def run(capsys, *args):
-    code = main(["evaluate", *map(str, args)])
-    out, err = capsys.readouterr()
-    return code, out, err
+from .conftest import EXAMPLE, GEARBOXES, HEAD_TOML, PROFILE_TOML, run
 
 
 def test_example_json_follows_the_contract():

@@ -6,9 +6,8 @@ import sys
 
 import pytest
 
-from calc.__main__ import main
 
-from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML
+from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, run
 
 COUPLING_TOML = """
 [coupling]
@@ -21,12 +20,6 @@ speed = "3000 rpm"
 shaft_1 = "19 mm k6"
 shaft_2 = "16 mm h7"
 """
-
-
-def run(capsys, *args):
-    code = main(["evaluate", *map(str, args)])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def case_with(write_case, coupling: str):
