@@ -201,7 +201,7 @@ def rank_numpy(f: Floats):
     illustrative rows, smallest size, lowest worst utilization, part name). Returns the order,
     passes, T_2max and the ranking keys (size, worst utilization)."""
     from calc.gearbox import SHOCK_FACTORS
-    from calc.profile import BOUNDARY_RTOL
+    from calc.checks import BOUNDARY_RTOL
 
     rows = np.isclose(f.ratio, f.i, rtol=1e-6, atol=0)
     i, t_2n, t_2b, n_1n, n_1max, eta, j_1, parts, illustrative = (
@@ -247,7 +247,7 @@ def rank_loop(catalog, case, rows: int):
     """The per-row loop a scalar library leads to: pint scalar quantities, one row at a time.
     Returns the ranking of the first ``rows`` rows."""
     from calc import Q_
-    from calc.profile import BOUNDARY_RTOL
+    from calc.checks import BOUNDARY_RTOL
 
     p = case.profile
     segments = [(p.durations[k], p.speeds[k], p.torques[k]) for k in range(len(p.phases)) if p.phases[k] != "pause"]
@@ -373,7 +373,7 @@ def sweep_api(q: dict):
 def sweep_numpy(grid):
     """The same on float arrays."""
     from calc.gearbox import SHOCK_FACTORS
-    from calc.profile import BOUNDARY_RTOL
+    from calc.checks import BOUNDARY_RTOL
 
     ratio, t_cycle, T_1B = grid
     ed = SWEEP_T_ON / t_cycle
