@@ -53,10 +53,13 @@ bench: setup tex
 	$(PY) bench/bench.py
 
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
-# No execution times are recorded, so a re-run changes only what the calculation changed.
+# No execution times are recorded, so a re-run changes only what the calculation changed; no widget
+# state is stored either (notebook 07's panel: some 170 KB of it, new on every run, and a live kernel
+# rebuilds it anyway).
 notebooks: setup
 	for nb in notebooks/*.ipynb; do \
-	  $(PY) -m jupyter nbconvert --to notebook --execute --inplace --ExecutePreprocessor.record_timing=False "$$nb" || exit 1; done
+	  $(PY) -m jupyter nbconvert --to notebook --execute --inplace --ExecutePreprocessor.record_timing=False \
+	    --ExecutePreprocessor.store_widget_state=False "$$nb" || exit 1; done
 
 clean:
 	rm -rf $(VENV) .pytest_cache .hypothesis
