@@ -31,7 +31,7 @@ from .errors import CalcError
 from .formula import Formula, Symbol
 from .measurement import measurement_path, read_measurement
 from .stiffness import SIDES, Chain, Component, angle_at_output, series_stiffness, stiffness_at_output
-from .units import Q_, as_kind, fmt, sig
+from .units import Q_, as_kind, fmt, sig  # noqa: F401 (fmt: the doctests print with it)
 
 #: E13: "torque <= 3 % nominal torque" selects the backlash form of positioning accuracy.
 LOW_TORQUE_SHARE = 0.03

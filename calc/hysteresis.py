@@ -36,8 +36,8 @@ import numpy as np
 from .catalog import Column, load_catalog, resolve
 from .errors import CalcError
 from .formula import Formula, Symbol
-from .measurement import read_measurement, travel_direction, write_measurement
-from .units import Q_, as_kind, fmt
+from .measurement import check_pair, read_measurement, travel_direction, write_measurement
+from .units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
 
 #: Stiffness band, as shares of the nominal torque (source; E12).
 STIFFNESS_BAND = (0.5, 1.0)
@@ -93,12 +93,7 @@ class Loop:
     comments: tuple = ()
 
     def __post_init__(self):
-        t = as_kind(self.torque, "torque", f"{self.source}: torque")
-        p = as_kind(self.twist, "angle", f"{self.source}: twist")
-        if np.ndim(t.magnitude) != 1 or np.shape(t.magnitude) != np.shape(p.magnitude):
-            raise CalcError(
-                f"{self.source}: expected torque and twist as two arrays of one length, found shapes {np.shape(t.magnitude)} and {np.shape(p.magnitude)}"
-            )
+        check_pair(self.source, ("torque", self.torque, "torque"), ("twist", self.twist, "angle"))
 
 
 def read_loop(path) -> Loop:

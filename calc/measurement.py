@@ -27,7 +27,7 @@ import numpy as np
 
 from .catalog import _HEADER, Column, _header_unit
 from .errors import CalcError
-from .units import Q_
+from .units import Q_, as_kind
 
 _COMMENT = "#"
 
@@ -190,3 +190,15 @@ def travel_direction(values: np.ndarray) -> np.ndarray:
     flip = inner[(lengths[inner] < k) & (labels[inner - 1] == labels[inner + 1])]
     labels[flip] = labels[flip - 1]
     return np.repeat(labels, lengths)
+
+
+def check_pair(source: str, first: tuple, second: tuple) -> None:
+    """Check two recorded columns, each ``(name, quantity array, kind)``: their kinds, and that
+    they are two 1-D arrays of one length. Raises :class:`CalcError` naming ``source``."""
+    (name_a, a, kind_a), (name_b, b, kind_b) = first, second
+    a = as_kind(a, kind_a, f"{source}: {name_a}").magnitude
+    b = as_kind(b, kind_b, f"{source}: {name_b}").magnitude
+    if np.ndim(a) != 1 or np.shape(a) != np.shape(b):
+        raise CalcError(
+            f"{source}: expected {name_a} and {name_b} as two arrays of one length, found shapes {np.shape(a)} and {np.shape(b)}"
+        )

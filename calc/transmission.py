@@ -18,8 +18,8 @@ import numpy as np
 from .catalog import Column
 from .errors import CalcError
 from .formula import Formula, Symbol
-from .measurement import read_measurement, travel_direction, write_measurement
-from .units import Q_, as_kind, fmt
+from .measurement import check_pair, read_measurement, travel_direction, write_measurement
+from .units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
 
 COLUMNS = (
     Column("input", "angle", "position of the input shaft"),
@@ -64,10 +64,7 @@ class Trace:
     comments: tuple = ()
 
     def __post_init__(self):
-        a = as_kind(self.input, "angle", f"{self.source}: input")
-        b = as_kind(self.output, "angle", f"{self.source}: output")
-        if np.ndim(a.magnitude) != 1 or np.shape(a.magnitude) != np.shape(b.magnitude):
-            raise CalcError(f"{self.source}: expected input and output as two arrays of one length, found shapes {np.shape(a.magnitude)} and {np.shape(b.magnitude)}")
+        check_pair(self.source, ("input", self.input, "angle"), ("output", self.output, "angle"))
 
 
 def read_trace(path) -> Trace:
