@@ -358,6 +358,7 @@ def sweep_api(q: dict):
     """Every point of the grid through the Formula objects (quantities in, quantities out):
     duty cycle, cycles per hour, shock factor, T_2max, peak input speed, the two S5 utilizations."""
     from calc import Q_
+    from calc.checks import CheckArray
     from calc.gearbox import T_2max, n_1, shock_factor
     from calc.profile import ED, Z_h
 
@@ -365,9 +366,9 @@ def sweep_api(q: dict):
     f_s = shock_factor(Z_h(t_cycle=q["t_cycle"]))
     t_2max = T_2max(T_1B=q["T_1B"], i=q["i"], f_s=Q_(f_s, ""), eta=q["eta"])
     n_1max = n_1(n_2=q["n_2max"], i=q["i"])
-    u_torque = (t_2max / q["T_2B"]).m_as("")
-    u_speed = (n_1max / q["n_1max"]).m_as("")
-    return (ed < q["ED_max"]) & (u_torque <= 1.0) & (u_speed <= 1.0), t_2max
+    torque = CheckArray("T_2B", "S5", "T_2max <= T_2B", t_2max, q["T_2B"], "N*m")
+    speed = CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1max, q["n_1max"], "rpm")
+    return (ed < q["ED_max"]) & (torque.utilization <= 1.0) & (speed.utilization <= 1.0), t_2max
 
 
 def sweep_numpy(grid):

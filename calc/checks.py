@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .units import fmt, sig
+from .units import fmt, magnitude_in, sig
 
 #: A value within this relative distance of a boundary (of E3, of E4, or a utilization of 1) counts
 #: as on it: sums and unit conversions carry rounding (0.6 s + 0.7 s + 0.2 s = 1.4999999999999998 s,
@@ -36,7 +36,7 @@ class CheckArray:
     def utilization(self) -> np.ndarray:
         """required / rated; NaN where the catalog gives no rated value."""
         with np.errstate(invalid="ignore", divide="ignore"):
-            return (self.required / self.rated).m_as("")
+            return np.asarray(magnitude_in(self.required, self.unit) / magnitude_in(self.rated, self.unit), dtype=float)
 
     @property
     def passes(self) -> np.ndarray:

@@ -24,7 +24,7 @@ from .errors import CalcError
 from .formula import Formula, Symbol
 from .checks import BOUNDARY_RTOL, CheckArray, rank, selected_part
 from .profile import Profile, T_2m, Z_h, duty, n_2m
-from .units import Q_, as_kind, pretty_unit, sig, unit
+from .units import Q_, as_kind, magnitude_in, pretty_unit, sig
 
 SCHEMA = Schema(
     kind="gearbox",
@@ -53,6 +53,8 @@ SCHEMA = Schema(
 #: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary).
 #: Each row is (lowest Z_h of the band, f_s).
 SHOCK_FACTORS = ((0, 1.0), (1000, 1.1), (1500, 1.3), (2000, 1.6), (3000, 2.0))
+_SHOCK_BOUNDS = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
+_SHOCK_VALUES = np.array([f for _, f in SHOCK_FACTORS])
 
 _n_2 = Symbol("n_2", "n_{2}", "speed", "rpm", "output speed")
 _i = Symbol("i", "i", "dimensionless", "", "ratio")
@@ -100,12 +102,10 @@ def shock_factor(cycles_per_hour):
     >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
     1.3
     """
-    z = as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as(unit("1/hour"))
+    z = magnitude_in(as_kind(cycles_per_hour, "per_hour", "cycles_per_hour"), "1/hour")
     if np.any(np.asarray(z) < 0):
         raise CalcError(f"cycles_per_hour: expected zero or more cycles per hour, found {z}")
-    bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
-    factors = np.array([f for _, f in SHOCK_FACTORS])
-    return factors[np.searchsorted(bounds, z * (1 + BOUNDARY_RTOL), side="right") - 1]
+    return _SHOCK_VALUES[np.searchsorted(_SHOCK_BOUNDS, z * (1 + BOUNDARY_RTOL), side="right") - 1]
 
 
 @dataclass

@@ -45,13 +45,20 @@ class Kind:
     example: str
 
     def accepts(self, units) -> bool:
-        return _signature(units) == _signature(self.si_unit)
+        return _signature(_container(units)) == _signature(_container(self.si_unit))
+
+
+def _container(units):
+    """pint's hashable container of a unit: the cache key of the checks and conversions below.
+    (A quantity's ``.units`` builds a new Unit object at every access; ``._units`` is the container.)"""
+    if isinstance(units, str):
+        return unit(units)._units
+    return getattr(units, "_units", units)
 
 
 @functools.lru_cache(maxsize=512)
 def _signature(units) -> tuple:
     """Dimensionality and angle power of a unit (cached: a unit is checked once per process)."""
-    units = ureg.parse_units(units) if isinstance(units, str) else units
     return ureg.Quantity(1, units).dimensionality, angle_power(units)
 
 
@@ -147,7 +154,7 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
         )
     if value._REGISTRY is not ureg:
         raise CalcError(f"{where}: the quantity {value} was made with another unit registry; use calc.ureg or calc.Q_")
-    if not k.accepts(value.units):
+    if not k.accepts(value._units):
         shown = found if found is not None else f"{value:~P}"
         what = describe_units(value.units)
         hint = ""
@@ -167,11 +174,23 @@ def to_si(value, expected: str | Kind, where: str):
     (31.41592653589793, 2)
     """
     k = kind(expected)
-    if isinstance(value, pint.Quantity) and value._REGISTRY is ureg and k.accepts(value.units):
-        factor = _factor(value.units, unit(k.si_unit))
+    if isinstance(value, pint.Quantity) and value._REGISTRY is ureg and k.accepts(value._units):
+        factor = _factor(value._units, _container(k.si_unit))
         if factor is not None:
             return value.magnitude if factor == 1.0 else value.magnitude * factor
     return as_kind(value, k, where).m_as(k.si_unit)  # the error, or a unit with an offset (degC)
+
+
+def magnitude_in(q: pint.Quantity, unit_text: str):
+    """``q.m_as(unit_text)`` with pint's conversion factor looked up once per pair of units.
+
+    >>> magnitude_in(Q_(3000, "rpm"), "rev/s")
+    50.0
+    """
+    factor = _factor(q._units, _container(unit_text))
+    if factor is None:
+        return q.m_as(unit_text)  # an offset unit (degC)
+    return q.magnitude if factor == 1.0 else q.magnitude * factor
 
 
 def from_si(magnitude, expected: str | Kind, unit_text: str) -> pint.Quantity:
@@ -181,7 +200,7 @@ def from_si(magnitude, expected: str | Kind, unit_text: str) -> pint.Quantity:
     <Quantity(300.0, 'revolutions_per_minute')>
     """
     si, shown = unit(kind(expected).si_unit), unit(unit_text)
-    factor = _factor(si, shown)
+    factor = _factor(si._units, shown._units)
     if factor is None:
         return ureg.Quantity(magnitude, si).to(shown)
     return ureg.Quantity(magnitude if factor == 1.0 else magnitude * factor, shown)
@@ -189,7 +208,8 @@ def from_si(magnitude, expected: str | Kind, unit_text: str) -> pint.Quantity:
 
 @functools.lru_cache(maxsize=1024)
 def _factor(src, dst) -> float | None:
-    """pint's factor from unit ``src`` to unit ``dst``; None where the conversion has an offset (°C)."""
+    """pint's factor from unit ``src`` to unit ``dst`` (containers); None where the conversion has
+    an offset (°C)."""
     if src == dst:
         return 1.0
     if ureg.Quantity(0.0, src).m_as(dst) != 0.0:
