@@ -535,7 +535,7 @@ def order_lines(part: str, coupling_type: str, bores, disengagement_torque=None,
 # The case's [coupling] section and its results (spec/case-format.md).
 
 KEYS = (
-    "catalog", "type", "part", "accel_torque", "drive_inertia", "load_inertia", "service_factor", "temperature",
+    "catalog", "type", "part", "side", "accel_torque", "drive_inertia", "load_inertia", "service_factor", "temperature",
     "excitation_frequency", "speed", "shaft_1", "shaft_2", "disengagement_torque", "shaft_distance",
 )
 
@@ -549,6 +549,7 @@ class CouplingCase:
     type: str | None
     inputs: dict
     bores: tuple
+    derived: list  # what was taken from the rest of the case (side = "input"), as sentences
 
 
 def read_section(case: Case) -> CouplingCase:
@@ -570,22 +571,69 @@ def read_section(case: Case) -> CouplingCase:
         if not mask.any():
             raise CalcError(f"{s.where('type')}: the catalog {display_path(catalog.path)} has no {wanted} coupling")
         catalog = catalog.rows(mask)
+    side = s.text("side")
+    if side is not None and side not in SIDES:
+        raise CalcError(f"{s.where('side')}: expected one of {', '.join(SIDES)}, found {side!r}")
+    derived = _from_the_case(case, s) if side == "input" else {}
     for key in ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "shaft_1", "shaft_2"):
-        if not s.has(key):
-            raise CalcError(f"{s.where(key)}: expected a value, found none")
+        if not s.has(key) and key not in derived:
+            hint = " (with side = \"input\" it comes from [motor], [load] and the gearbox when they give it)" if side == "input" else ""
+            raise CalcError(f"{s.where(key)}: expected a value{hint}, found none")
     bores = tuple(parse_bore(s.data[key], s.where(key)) for key in ("shaft_1", "shaft_2"))
+
+    def given_or_derived(key, kind):
+        return s.quantity(key, kind) if s.has(key) else derived.get(key, (None, ""))[0]
+
     inputs = dict(
-        accel_torque=s.quantity("accel_torque", "torque"),
-        drive_inertia=s.quantity("drive_inertia", "inertia"),
-        load_inertia=s.quantity("load_inertia", "inertia"),
+        accel_torque=given_or_derived("accel_torque", "torque"),
+        drive_inertia=given_or_derived("drive_inertia", "inertia"),
+        load_inertia=given_or_derived("load_inertia", "inertia"),
         excitation_frequency=s.quantity("excitation_frequency", "frequency"),
         service_factor=s.quantity("service_factor", "dimensionless", default=Q_(DEFAULT_SERVICE_FACTOR, "")),
         temperature=s.quantity("temperature", "temperature"),
-        speed=s.quantity("speed", "speed"),
+        speed=given_or_derived("speed", "speed"),
         disengagement_torque=s.quantity("disengagement_torque", "torque"),
         shaft_distance=s.quantity("shaft_distance", "length"),
     )
-    return CouplingCase(catalog, wanted, inputs, bores)
+    notes = [text for key, (_, text) in derived.items() if not s.has(key)]
+    return CouplingCase(catalog, wanted, inputs, bores, notes)
+
+
+#: Where the coupling sits: ``input``, between motor and gearbox; ``output``, between gearbox and load.
+SIDES = ("input", "output")
+
+
+def _from_the_case(case: Case, s: Section) -> dict:
+    """What a coupling between motor and gearbox can take from the rest of the case, by key:
+    ``(quantity, sentence)``. ``load_inertia`` is the load reflected to the input plus the gearbox's
+    J_1 (E8), ``speed`` the highest input speed ``n_2max · i``, ``accel_torque`` the motor's peak
+    torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given."""
+    from .evaluate import gearbox_selection
+    from .gearbox import n_1
+
+    out = {}
+    if case.motor_peak_torque is not None:
+        out["accel_torque"] = (case.motor_peak_torque, f"accel_torque M_a = motor.peak_torque = {fmt(case.motor_peak_torque, 'N*m')}")
+    if case.motor_inertia is not None:
+        out["drive_inertia"] = (case.motor_inertia, f"drive_inertia J_drive = motor.inertia = {fmt(case.motor_inertia, 'kg*cm**2')}")
+    if case.ratio is None and case.gearbox_part is None:
+        return out
+    selection = gearbox_selection(case)
+    row = selection.order[0]
+    part = str(selection.catalog.parts[row])
+    i = selection.catalog["ratio"][row]
+    speed = n_1(n_2=case.profile.n_2max, i=i)
+    out["speed"] = (speed, f"speed = n_2max · i = {fmt(case.profile.n_2max, 'rpm')} · {sig(i.m_as(''))} = {fmt(speed, 'rpm')}")
+    J_1 = selection.catalog["J_1"][row]
+    if case.load_inertia is not None and not np.isnan(J_1.magnitude):
+        J = J_load_at_input(J_L=case.load_inertia, i=i, J_1=J_1)
+        which = part if selection.passes[row] else f"{part}, the best-ranked gearbox (none passes)"
+        out["load_inertia"] = (
+            J,
+            f"load_inertia J_load = J_L / i² + J_1 = {fmt(case.load_inertia, 'kg*cm**2')} / {sig(i.m_as(''))}² + "
+            f"{fmt(J_1, 'kg*cm**2')} ({which}) = {fmt(J, 'kg*cm**2')} (E8)",
+        )
+    return out
 
 
 def check_types(catalog: Catalog) -> None:
@@ -615,7 +663,7 @@ def section_results(case: Case) -> dict:
     where = f"{case.path}: coupling"
     sel = select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], where=where, **cc.inputs)
     types = cc.catalog.text["type"]
-    notes = list(sel.notes)
+    notes = [f"taken from the case: {text}" for text in cc.derived] + list(sel.notes)
     for k, bore in enumerate(cc.bores, start=1):
         if bore.tolerance is None:
             notes.append(f"coupling.shaft_{k} gives no tolerance; state one when ordering (the source asks for shaft sizes and tolerances)")

@@ -147,3 +147,60 @@ def test_a_bad_coupling_catalog_names_file_row_and_column(capsys, write_case, tm
     code, out, err = run(capsys, path, "--json")
     assert code != 0 and out == ""
     assert f"{tmp_path / 'my.csv'}, row 3 (AKD-30), column T_KN: expected a number, found '3x6'" in err
+
+
+INPUT_SIDE = """
+[coupling]
+type = "bellows"
+side = "input"
+excitation_frequency = "150 Hz"
+shaft_1 = "19 mm k6"
+shaft_2 = "16 mm h7"
+"""
+
+
+def test_a_motor_side_coupling_takes_its_inputs_from_the_case(capsys, write_case):
+    derived = json.loads(run(capsys, case_with(write_case, INPUT_SIDE), "--json")[1])
+    explicit = json.loads(run(capsys, case_with(write_case, COUPLING_TOML), "--json")[1])
+    # By hand (E8): J_load = J_L / i² + J_1 = 1500 / 10² + 0.93 (NPT035-10, selected) = 15.93 kg·cm²;
+    # M_a = motor.peak_torque = 12 N·m; J_drive = motor.inertia = 4.2 kg·cm²; speed = 300 rpm · 10 = 3000 rpm.
+    # COUPLING_TOML states the same four values by hand, so every result agrees.
+    c, e = derived["coupling"], explicit["coupling"]
+    assert c["M_N"]["value"] == pytest.approx(e["M_N"]["value"], rel=1e-12)
+    assert c["M_N"]["value"] == pytest.approx(12 * 15.93 / (15.93 + 4.2) * 2.5, rel=1e-12)
+    assert [k["part"] for k in c["candidates"]] == [k["part"] for k in e["candidates"]]
+    assert [k["f_e"]["value"] for k in c["candidates"]] == pytest.approx([k["f_e"]["value"] for k in e["candidates"]], rel=1e-12)
+    assert c["order"] == e["order"]
+    assert any("J_load = J_L / i² + J_1" in n and "15.93 kg·cm²" in n and "NPT035-10" in n for n in c["notes"])
+
+
+def test_the_derived_load_inertia_follows_the_ratio(capsys, write_case):
+    text = HEAD_TOML.replace("ratio = 10", "ratio = 8") + PROFILE_TOML + INPUT_SIDE
+    r = json.loads(run(capsys, write_case(text), "--json")[1])
+    selected = r["gearbox"]["selected"]
+    J_1 = {"TP010-8": 0.64, "NPT035-8": 1.0}[selected]  # catalogs/gearboxes.csv
+    # E8 by hand: J_load = 1500 / 8² + J_1; M_N = 12 · J_load / (J_load + 4.2) · 2.5.
+    J_load = 1500 / 64 + J_1
+    assert r["coupling"]["M_N"]["value"] == pytest.approx(12 * J_load / (J_load + 4.2) * 2.5, rel=1e-12)
+    assert any(f"{J_load:.4g} kg·cm²" in n for n in r["coupling"]["notes"])
+
+
+def test_keys_given_are_used_as_given(capsys, write_case):
+    text = INPUT_SIDE.replace('side = "input"', 'side = "input"\nload_inertia = "30 kg*cm**2"')
+    r = json.loads(run(capsys, case_with(write_case, text), "--json")[1])
+    # M_N = 12 · 30 / (30 + 4.2) · 2.5 (the given J_load, not the derived 15.93).
+    assert r["coupling"]["M_N"]["value"] == pytest.approx(12 * 30 / 34.2 * 2.5, rel=1e-12)
+    assert not any("load_inertia" in n for n in r["coupling"]["notes"])
+
+
+@pytest.mark.parametrize(
+    "text, fragment",
+    [
+        (HEAD_TOML + PROFILE_TOML + INPUT_SIDE.replace('"input"', '"motor"'), "coupling.side: expected one of input, output, found 'motor'"),
+        (HEAD_TOML.replace('[load]\ninertia = "1500 kg*cm**2"\n', "") + PROFILE_TOML + INPUT_SIDE, "coupling.load_inertia: expected a value (with side = \"input\""),
+    ],
+)
+def test_bad_side(capsys, write_case, text, fragment):
+    path = write_case(text)
+    code, out, err = run(capsys, path, "--json")
+    assert code != 0 and out == "" and fragment in err and str(path) in err
