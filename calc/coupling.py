@@ -111,7 +111,9 @@ RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·
 M_N = Formula(
     _M_N,
     (_M_a, _J_load, _J_drive, _S_A),
-    lambda sp, M_a, J_load, J_drive, S_A: M_a * J_load / (J_load + J_drive) * S_A,
+    lambda sp, M_a, J_load, J_drive, S_A: sp.Mul(  # in the source's order
+        M_a, J_load / sp.Add(J_load, J_drive, evaluate=False), S_A, evaluate=False
+    ),
     "source, Couplings, Sizing 1; errata E8 (the factor 2.5 is the load factor S_A, default 2.5)",
 )
 
@@ -122,7 +124,7 @@ J_load_at_input = Formula(
         Symbol("i", "i", "dimensionless", "", "ratio of the gearbox"),
         Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia referred to its input"),
     ),
-    lambda sp, J_L, i, J_1: J_L / i**2 + J_1,
+    lambda sp, J_L, i, J_1: sp.Add(J_L / i**2, J_1, evaluate=False),  # in the order of E8
     "errata E8 (a coupling between motor and gearbox sees the load reflected to the input plus the gearbox's J_1)",
 )
 

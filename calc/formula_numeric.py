@@ -29,7 +29,7 @@ def accuracy__Delta_phi(phi_actual, phi_target):
 
 
 def coupling__M_N(M_a, J_load, J_drive, S_A):
-    return J_load*M_a*S_A/(J_drive + J_load)
+    return M_a*S_A*(J_load/(J_drive + J_load))
 
 
 def coupling__J_load(J_L, i, J_1):
@@ -137,8 +137,8 @@ FUNCTIONS = {
     "calc.accuracy.Delta_phi_P_low": ("6a9a3ead10619a1f", accuracy__Delta_phi_P_low),
     "calc.accuracy.Delta_phi_P_high": ("8ffa9959b4ff0f2d", accuracy__Delta_phi_P_high),
     "calc.accuracy.Delta_phi": ("9ba091f73ef75c85", accuracy__Delta_phi),
-    "calc.coupling.M_N": ("6c1e4cc41e130c1b", coupling__M_N),
-    "calc.coupling.J_load": ("7c1bf81cfebdfac8", coupling__J_load),
+    "calc.coupling.M_N": ("286be3d946bc065a", coupling__M_N),
+    "calc.coupling.J_load": ("9c5dfc162db124c0", coupling__J_load),
     "calc.coupling.M_Nt": ("20bfc40180ba5ec3", coupling__M_Nt),
     "calc.coupling.J_A": ("39e751e770984771", coupling__J_A),
     "calc.coupling.J_L": ("c0f93c789de1374b", coupling__J_L),

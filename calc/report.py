@@ -434,7 +434,7 @@ class Report:
         for name in SECTIONS:
             raw = c.sections.get(name)
             if raw is not None:
-                out.append(_raw_section_tables(name, raw))
+                out.append(_raw_section_tables(name, raw, self._derived_inputs(name, raw)))
         return Latex("\n".join(out))
 
     def calculations(self) -> Latex:
@@ -480,6 +480,15 @@ class Report:
                 J_1=cat["J_1"][row], J_L=self.case.load_inertia, i=i, J_motor=self.case.motor_inertia), "errata E6"))
         return out
 
+    def _derived_inputs(self, name: str, raw: dict) -> dict:
+        """A section's inputs that the case left out and the package took from the rest of it
+        (a motor-side coupling's M_a, J_drive, J_load, speed), as the case would write them."""
+        if name != "coupling" or self.coupling is None:
+            return {}
+        units = {"accel_torque": "N*m", "drive_inertia": "kg*cm**2", "load_inertia": "kg*cm**2", "speed": "rpm"}
+        x = self.coupling[0].inputs
+        return {k: f"{sig(x[k].m_as(u))} {u}" for k, u in units.items() if k not in raw and x.get(k) is not None}
+
     def _coupling_steps(self) -> list[str]:
         if self.coupling is None:
             return []
@@ -491,6 +500,13 @@ class Report:
         part = latex_escape(str(cat.parts[row]))
         chosen = "the chosen coupling" if sel.selected else "the closest candidate (none passes)"
         out = [r"\subsection{Coupling: nominal torque and resonance}"]
+        if "load_inertia" in self._derived_inputs("coupling", self.case.sections["coupling"]) and self.selection is not None:
+            g = self.selection.catalog
+            k = int(self.selection.order[0])
+            out.append(step_block(
+                f"Load inertia seen by the coupling, through {latex_escape(str(g.parts[k]))}",
+                cp.J_load_at_input.step(J_L=self.case.load_inertia, i=g["ratio"][k], J_1=g["J_1"][k]),
+            ))
         m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
         out.append(step_block("Nominal torque of the coupling", m_n, "compared with T_KN"))
         if sel.row_type(row) == "elastomer":
@@ -789,6 +805,7 @@ def _candidates_table(section: dict, caption: str, inertia: bool = False) -> str
 SECTION_KEYS = {
     "coupling": {
         "catalog": (None, "coupling catalog"), "type": (None, "coupling type"), "part": (None, "coupling part to check"),
+        "side": (None, "where the coupling sits (input: between motor and gearbox)"),
         "accel_torque": ("M_a", ""), "drive_inertia": ("J_drive", ""), "load_inertia": ("J_load", ""),
         "service_factor": ("S_A", ""), "temperature": (None, "operating temperature (elastomer couplings, E9)"),
         "excitation_frequency": ("f_er", ""), "speed": (None, "speed of the coupling"),
@@ -829,23 +846,27 @@ def _value_unit(value) -> tuple[str, str]:
     return latex_escape(value), "–"
 
 
-def _raw_section_tables(name: str, raw: dict) -> str:
+def _raw_section_tables(name: str, raw: dict, derived: dict | None = None) -> str:
     """A further section of the case as its inputs: symbol, value, unit, description, key; its
-    arrays of tables (the members of an accuracy chain) as one row each, figures as written."""
+    arrays of tables (the members of an accuracy chain) as one row each, figures as written.
+    ``derived`` holds inputs the case left out and the package took from the rest of the case."""
     symbols, known = _section_symbols(name), SECTION_KEYS.get(name, {})
     rows, members = [], []
-    for key, v in raw.items():
+    derived = derived or {}
+    for key, v in {**raw, **derived}.items():
         if isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
             members += [(key, k, x) for k, x in enumerate(v, start=1)]
             continue
         sym_name, desc = known.get(key, (None, ""))
         sym = symbols.get(sym_name)
         value, unit = _value_unit(v)
-        rows.append([f"${sym.latex}$" if sym else "–", value, unit, latex_escape(sym.description if sym else desc),
-                     rf"\texttt{{{latex_escape(f'{name}.{key}')}}}"])
+        where = rf"\texttt{{{latex_escape(f'{name}.{key}')}}}" + (r"\textsuperscript{\dag}" if key in derived else "")
+        rows.append([f"${sym.latex}$" if sym else "–", value, unit, latex_escape(sym.description if sym else desc), where])
     out = [rf"\subsection*{{{latex_escape(name.capitalize())}}}"]
     if rows:
-        out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
+        note = (r"\textsuperscript{\dag} Not in the case file: taken from the rest of the case (a coupling between "
+                r"motor and gearbox, E8); the calculations show how.") if derived else ""
+        out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows, note=note))
     if members:
         body = []
         for key, k, x in members:

@@ -411,7 +411,8 @@ def test_a_step_shows_its_own_numbers_after_sympy_forgets_a_symbol():
     M_N.step(S_A=Q_(2.5, ""), **values).latex()
     for k in range(3000):
         sp.Symbol(f"churn_{k}")
-    assert r"12\,\mathrm{N\,m} \cdot 1}" in M_N.step(S_A=Q_(1, ""), **values).latex()
+    # M_N = 12 · 15.93 / (15.93 + 4.2) · 1 = 9.496 N·m, printed in the source's order (S_A last).
+    assert r"4.2\,\mathrm{kg\,cm^{2}}} \cdot 1 = 9.496\,\mathrm{N\,m}" in M_N.step(S_A=Q_(1, ""), **values).latex()
 
 
 def test_load_inertia_seen_through_the_gearbox():
