@@ -130,6 +130,11 @@ def test_example_pdf_has_title_verdict_parts_and_numbers(example_pdf):
     assert "NPT035-10" in text
     assert "151.3 N·m" in text  # T_2max = 12 · 10 · 1.3 · 0.97
     assert "35.41 N·m" in text  # T_2m
+    # The motor-side coupling's J_load comes from the case (E8): 1500 / 10² + 0.93 = 15.93 kg·cm²,
+    # shown as a marked input and as its own calculation step.
+    assert re.search(r"15\.93\s+kg·cm²\s+load-side inertia", text)
+    assert "coupling.load_inertia†" in text
+    assert "Load inertia seen by the coupling, through NPT035-10" in text
     for heading in ("Method and assumptions", "Inputs", "Calculations", "Checks", "Candidates", "Figures", "Order"):
         assert re.search(rf"^\s*\d+\s+{heading}", text, re.M), heading
     assert re.search(r"SHA-256\s+[0-9a-f]{64}", text)
