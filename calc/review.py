@@ -79,14 +79,16 @@ def review_items(case: Case) -> list:
     from .plots import load_cycle_figure
     from .report import report_of
 
-    r = report_of(case)
-    color = "#1b7837" if r.passes else "#b2222a"
-    if r.passes:
+    r, left_out = _report_of_what_evaluates(case)
+    color = "#1b7837" if r.passes and not left_out else "#b2222a"
+    if r.passes and not left_out:
         why = "; ".join(f"{w.lower()} {p}" for w, p, _ in r.chosen)
     else:
-        why = "<br>".join(escape(x) for x in r.reasons)
-    items = [HTML(f'<p><b style="color:{color}">{r.verdict}</b>: {why if r.passes else ""}</p>'
-                  + ("" if r.passes else f"<p>{why}</p>"))]
+        why = "<br>".join(escape(x) for x in [*left_out, *r.reasons])
+    verdict = "FAIL" if left_out else r.verdict
+    passes = r.passes and not left_out
+    items = [HTML(f'<p><b style="color:{color}">{verdict}</b>: {why if passes else ""}</p>'
+                  + ("" if passes else f"<p>{why}</p>"))]
     items.append(load_cycle_figure(case.profile))
     if r.selection is not None:
         from .gearbox import candidates_summary
@@ -111,6 +113,23 @@ def review_items(case: Case) -> list:
         frame = pd.DataFrame([(s, d, sig(q.m_as(u)), u) for s, d, q, u in rows], columns=["symbol", "quantity", "value", "unit"])
         items += [HTML("<b>Accuracy of the chain</b>"), frame, stiffness_chain_figure(spec.chain, spec.applied_torque)]
     return items
+
+
+def _report_of_what_evaluates(case: Case):
+    """The case's report, and what had to be left out of it: when the changed inputs make one
+    further section impossible to evaluate (the accuracy chain names a 10:1 gearbox and the ratio
+    is now 8), the report of the rest, and that section's reason as one sentence, so the review
+    still shows the gearbox and the other sections. The verdict with a section left out is FAIL."""
+    from .report import report_of
+
+    r = report_of(case)
+    if r.error is None:
+        return r, []
+    for name in case.sections:
+        rest = report_of(dataclasses.replace(case, sections={k: v for k, v in case.sections.items() if k != name}))
+        if rest.error is None:
+            return rest, [f"The {name} section cannot be evaluated with these inputs: {r.error}"]
+    return r, []
 
 
 class DesignReview:

@@ -76,3 +76,18 @@ def test_a_case_that_cannot_be_evaluated_says_why_instead_of_raising(case):
 def test_review_items_of_the_example(case):
     kinds = [type(x).__name__ for x in review_items(case)]
     assert kinds == ["HTML", "Figure", "HTML", "DataFrame", "HTML", "DataFrame", "HTML", "DataFrame", "Figure"]
+
+
+def test_a_section_that_no_longer_fits_is_left_out_not_everything(case):
+    # At ratio 8 the accuracy chain's NPT035-10 (a 10:1 part) is no longer in the drive train.
+    # The review still shows the gearbox and the coupling, and says FAIL with the reason.
+    import pandas as pd
+
+    items = review_items(with_changes(case, ratio=Q_(8, "")))
+    verdict = items[0].data
+    assert "FAIL" in verdict and "The accuracy section cannot be evaluated with these inputs" in verdict
+    assert "NPT035-10" in verdict
+    tables = [x for x in items if isinstance(x, pd.DataFrame)]
+    gearbox = tables[0]
+    assert set(gearbox["part"]) == {"TP010-8", "NPT035-8", "SP075-8"}  # catalogs/gearboxes.csv, ratio 8
+    assert len(tables) == 2  # gearbox and coupling candidates; no accuracy table
