@@ -200,8 +200,8 @@ def rank_numpy(f: Floats):
     checks, the inertia ratio, passes, ranking by lexsort: passing first, published before
     illustrative rows, smallest size, lowest worst utilization, part name). Returns the order,
     passes, T_2max and the ranking keys (size, worst utilization)."""
+    from calc.checks import BOUNDARY_RTOL, rank
     from calc.gearbox import SHOCK_FACTORS
-    from calc.checks import BOUNDARY_RTOL
 
     rows = np.isclose(f.ratio, f.i, rtol=1e-6, atol=0)
     i, t_2n, t_2b, n_1n, n_1max, eta, j_1, parts, illustrative = (
@@ -224,13 +224,7 @@ def rank_numpy(f: Floats):
     worst = np.max(governing, axis=0)
     worst = np.where(np.isnan(worst), np.inf, worst)
     size = np.where(passes, t_2b if s5 else t_2n, 0.0)
-    keys = (worst, size, passes & illustrative, ~passes)
-    order = np.lexsort(keys)
-    tied = np.logical_and.reduce([k[order][1:] == k[order][:-1] for k in keys])
-    if tied.any():  # rows tied on every key go by part name, sorted within the tied runs
-        run = np.cumsum(np.concatenate(([True], ~tied)))
-        at = np.flatnonzero(np.concatenate(([False], tied)) | np.concatenate((tied, [False])))
-        order[at] = order[at][np.lexsort((parts[order[at]], run[at]))]
+    order = rank(passes, size, worst, parts, illustrative)  # the ranking is numpy on floats already
     return order, passes, t_2max, (size, worst)
 
 

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .case import Case, Section
+from .case import Case, Section, once
 from .catalog import Column, display_path, load_catalog, resolve
 from .errors import CalcError
 from .formula import Formula, Symbol
@@ -420,6 +420,19 @@ def _component(case: Case, t: Section, ratio, out: AccuracyCase) -> Component:
     return Component(name, side, stiffness, backlash, accuracy, nominal, source="; ".join(sources) or "case")
 
 
+def accuracy_of(case: Case) -> tuple:
+    """The ``[accuracy]`` section as read and evaluated, ``(spec, ChainAccuracy)``; computed once per case."""
+
+    def compute():
+        spec = read_accuracy(case)
+        try:
+            return spec, spec.evaluate()
+        except CalcError as exc:
+            raise CalcError(f"{case.path}: accuracy.{exc}") from None
+
+    return once(case, "accuracy", compute)
+
+
 def section_results(case: Case) -> dict:
     """The ``accuracy`` section of the results (``spec/case-format.md``): ``C_total`` referred to
     the output, ``lost_motion``, ``positioning_accuracy``, ``repeatability`` and the
@@ -434,11 +447,7 @@ def section_results(case: Case) -> dict:
     """
     from .evaluate import number, quantity
 
-    spec = read_accuracy(case)
-    try:
-        a = spec.evaluate()
-    except CalcError as exc:
-        raise CalcError(f"{case.path}: accuracy.{exc}") from None
+    spec, a = accuracy_of(case)
     c = a.chain
     shares = c.compliance_shares
     twist = c.twist(a.applied_torque)
@@ -511,53 +520,50 @@ def section_results(case: Case) -> dict:
     return out
 
 
-def _q(d) -> str:
-    from .units import pretty_unit
-
-    return "n/a" if d is None or d["value"] is None else f"{sig(d['value'])} {pretty_unit(d['unit'])}".rstrip()
-
 
 def summary_lines(section: dict) -> list[str]:
     """The accuracy results (:func:`section_results`) as lines of the terminal report: the chain
     table, then C_total, lost motion, positioning accuracy with the rule that applied, and
     repeatability, each with its errata entry; measurements and checks after."""
+    from .evaluate import quantity_text
+
     s = section
     ratio = "" if s["ratio"] is None else f", ratio {s['ratio']:g}"
-    lines = [f"Accuracy at the output (applied torque {_q(s['applied_torque'])}{ratio}; E11 to E13):"]
+    lines = [f"Accuracy at the output (applied torque {quantity_text(s['applied_torque'])}{ratio}; E11 to E13):"]
     width = max(len(c["name"]) for c in s["components"])
     lines.append(f"  {'component':<{width}}  side    {'stiffness at output':>20}  {'share of twist':>14}  {'backlash at output':>18}  source")
     for c in s["components"]:
         lines.append(
-            f"  {c['name']:<{width}}  {c['side']:<6}  {_q(c['stiffness_at_output']):>20}  {100 * c['share_of_compliance']:>12.1f} %"
-            f"  {_q(c['backlash_at_output']):>18}  {c['source']}"
+            f"  {c['name']:<{width}}  {c['side']:<6}  {quantity_text(c['stiffness_at_output']):>20}  {100 * c['share_of_compliance']:>12.1f} %"
+            f"  {quantity_text(c['backlash_at_output']):>18}  {c['source']}"
         )
     ta_from = ", ".join(s["transmission_accuracy_from"]) or "no component gives one"
-    t_n = "" if s["nominal_torque"] is None else f", T_N = {_q(s['nominal_torque'])} ({s['nominal_torque_from']})"
+    t_n = "" if s["nominal_torque"] is None else f", T_N = {quantity_text(s['nominal_torque'])} ({s['nominal_torque_from']})"
     lines += [
-        f"  C_total = {_q(s['C_total'])}; backlash = {_q(s['backlash'])}; transmission accuracy = {_q(s['transmission_accuracy'])} ({ta_from})",
-        f"  Lost motion = j_t + |T| / C = {_q(s['lost_motion'])} (E12)",
-        f"  Positioning accuracy ({s['positioning_rule']}{t_n}) = {_q(s['positioning_accuracy'])} (E13)",
-        f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {_q(s['repeatability'])} "
+        f"  C_total = {quantity_text(s['C_total'])}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
+        f"  Lost motion = j_t + |T| / C = {quantity_text(s['lost_motion'])} (E12)",
+        f"  Positioning accuracy ({s['positioning_rule']}{t_n}) = {quantity_text(s['positioning_accuracy'])} (E13)",
+        f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {quantity_text(s['repeatability'])} "
         f"({'bounded by the lost motion under torque' if s['repeatability_is_bound'] else 'the backlash at T = 0'}, E13)",
     ]
     for c in s["components"]:
         if "measured_loop" in c:
             m = c["measured_loop"]
             lines.append(
-                f"  Measured loop of {c['name']} ({m['file']}): C = {_q(m['stiffness_positive'])} / {_q(m['stiffness_negative'])} "
-                f"(+ / -), backlash {_q(m['backlash'])}, lost motion ±3 % {_q(m['lost_motion'])}"
+                f"  Measured loop of {c['name']} ({m['file']}): C = {quantity_text(m['stiffness_positive'])} / {quantity_text(m['stiffness_negative'])} "
+                f"(+ / -), backlash {quantity_text(m['backlash'])}, lost motion ±3 % {quantity_text(m['lost_motion'])}"
             )
         if "measured_trace" in c:
             m = c["measured_trace"]
-            lines.append(f"  Measured trace of {c['name']} ({m['file']}): transmission accuracy {_q(m['transmission_accuracy'])} ({m['direction']})")
+            lines.append(f"  Measured trace of {c['name']} ({m['file']}): transmission accuracy {quantity_text(m['transmission_accuracy'])} ({m['direction']})")
     if "measured_positioning" in s:
         m = s["measured_positioning"]
         lines.append(
             f"  Measured positioning ({m['file']}, {m['approaches']} approaches to {m['targets']} targets): "
-            f"accuracy {_q(m['accuracy'])}, repeatability {_q(m['repeatability'])}"
+            f"accuracy {quantity_text(m['accuracy'])}, repeatability {quantity_text(m['repeatability'])}"
         )
     for k in s.get("checks", []):
         lines.append(
-            f"  {k['name']:<22} {_q(k['value']):>12} required <= {_q(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
+            f"  {k['name']:<22} {quantity_text(k['value']):>12} required <= {quantity_text(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
         )
     return lines

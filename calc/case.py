@@ -84,10 +84,20 @@ class Case:
     gearbox_part: str | None = None
     sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
     raw: bytes = b""
+    # What has been computed from the case, by name (see :func:`once`); a changed copy starts empty.
+    computed: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @property
     def folder(self) -> Path:
         return self.path.parent
+
+
+def once(case: Case, name: str, compute):
+    """``compute()`` the first time ``name`` is asked of this case, the same object after: the
+    evaluation, the report and a section that builds on the gearbox share one selection."""
+    if name not in case.computed:
+        case.computed[name] = compute()
+    return case.computed[name]
 
 
 def read_case(path) -> Case:

@@ -24,7 +24,7 @@ import numpy as np
 
 from . import formula as formula_module
 from .errors import CalcError
-from .formula import REGISTRY, Formula
+from .formula import REGISTRY, Formula, global_names
 
 TARGET = Path(__file__).resolve().parent / "formula_numeric.py"
 
@@ -78,7 +78,7 @@ def module_text(formulas: list[Formula] | None = None) -> str:
     imports, bodies, entries = set(), [], []
     for f in formulas:
         generated = f.lambdified()
-        for name in _global_names(generated.__code__):
+        for name in global_names(generated.__code__):
             line = _import_line(name, generated.__globals__.get(name, getattr(builtins, name, None)))
             if line:
                 imports.add(line)
@@ -87,14 +87,6 @@ def module_text(formulas: list[Formula] | None = None) -> str:
     return "\n".join(
         [HEAD, *sorted(imports), "", "", "\n\n".join(bodies), "", "FUNCTIONS = {", *entries, "}", ""]
     )
-
-
-def _global_names(code) -> set[str]:
-    names = set(code.co_names)
-    for const in code.co_consts:
-        if hasattr(const, "co_names"):
-            names |= _global_names(const)
-    return names
 
 
 def main() -> int:

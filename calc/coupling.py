@@ -25,13 +25,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .case import Case, Section
+from .case import Case, Section, once
 from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, no_less, resolve
 from .errors import CalcError
 from .fits import Bore, parse_bore
 from .formula import Formula, Symbol
 from .checks import CheckArray, rank, selected_part
-from .units import Q_, as_kind, fmt, pretty_unit, sig
+from .units import Q_, as_kind, fmt, sig
 
 TYPES = ("bellows", "elastomer", "safety", "line-shaft")
 
@@ -657,13 +657,22 @@ def check_types(catalog: Catalog) -> None:
                 raise CalcError(f"{where(empty[0])}, column {column}: a {t} coupling needs a value, found an empty cell")
 
 
+def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:
+    """The ``[coupling]`` section as read and its candidates checked and ranked; computed once per case."""
+
+    def compute():
+        cc = read_section(case)
+        where = f"{case.path}: coupling"
+        return cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], where=where, **cc.inputs)
+
+    return once(case, "coupling", compute)
+
+
 def section_results(case: Case) -> dict:
     """The ``coupling`` results of the JSON contract for ``case``."""
     from .evaluate import number, quantity
 
-    cc = read_section(case)
-    where = f"{case.path}: coupling"
-    sel = select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], where=where, **cc.inputs)
+    cc, sel = coupling_selection(case)
     types = cc.catalog.text["type"]
     notes = [f"taken from the case: {text}" for text in cc.derived] + list(sel.notes)
     for k, bore in enumerate(cc.bores, start=1):
@@ -675,7 +684,7 @@ def section_results(case: Case) -> dict:
             {
                 "part": str(cc.catalog.parts[row]),
                 "type": str(types[row]),
-                "illustrative": str(cc.catalog.text.get("illustrative", np.full(len(types), "no"))[row]).lower() == "yes",
+                "illustrative": bool(cc.catalog.illustrative[row]),
                 "passes": bool(sel.passes[row]),
                 "f_e": quantity(sel.f_e[row], "Hz"),
                 "C_T": quantity(sel.C_T[row], "N*m/rad"),
@@ -740,26 +749,25 @@ def section_results(case: Case) -> dict:
     }
 
 
-def _q(d) -> str:
-    return "n/a" if d is None or d["value"] is None else f"{sig(d['value'])} {pretty_unit(d['unit'])}".rstrip()
-
 
 def summary_lines(section: dict) -> list[str]:
     """The coupling results as lines of the terminal summary."""
+    from .evaluate import quantity_text
+
     lines = [
         f"Coupling candidates (catalog {section['catalog']}{', type ' + section['type'] if section['type'] else ''}):",
-        f"  M_N = {_q(section['M_N'])} (S_A = {section['service_factor']:g}, E8); temperature factor "
-        f"{section['temperature_factor']:g} (E9); 2 f_er = {_q(section['f_e_min'])} (E7)",
+        f"  M_N = {quantity_text(section['M_N'])} (S_A = {section['service_factor']:g}, E8); temperature factor "
+        f"{section['temperature_factor']:g} (E9); 2 f_er = {quantity_text(section['f_e_min'])} (E7)",
     ]
     for b in section["bores"]:
         lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
     for c in section["candidates"]:
         verdict = "PASS" if c["passes"] else "FAIL"
-        lines.append(f"  {verdict}  {c['part']} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {_q(c['f_e'])}")
+        lines.append(f"  {verdict}  {c['part']} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {quantity_text(c['f_e'])}")
         for k in c["checks"]:
             util = "n/a" if k["utilization"] is None else f"{k['utilization']:.2f}"
             lines.append(
-                f"        {k['criterion']:<20} required {_q(k['required']):>12}  rated {_q(k['rated']):>12}  "
+                f"        {k['criterion']:<20} required {quantity_text(k['required']):>12}  rated {quantity_text(k['rated']):>12}  "
                 f"utilization {util:>5}  {'ok' if k['passes'] else 'FAIL'}"
             )
         for r in c["reasons"]:

@@ -12,13 +12,13 @@ import math
 
 import numpy as np
 
-from .case import Case
+from .case import Case, once
 from .catalog import display_path, load_catalog, resolve
 from .errors import CalcError
 from .gearbox import SCHEMA as GEARBOX_SCHEMA
 from .gearbox import GearboxSelection, rows_at_ratio, select_gearbox, shock_factor
 from .profile import T_2m, Z_h, duty, n_2m
-from .units import sig
+from .units import magnitude_in, pretty_unit, sig
 
 
 #: Further sections of a case, by name: the module that evaluates it. Each such module has
@@ -28,7 +28,7 @@ SECTIONS = {"coupling": "calc.coupling", "accuracy": "calc.accuracy"}
 
 def quantity(q, unit: str) -> dict:
     """A scalar quantity as the contract writes it: ``{"value": 21.3, "unit": "N*m"}``."""
-    return {"value": number(q.m_as(unit)), "unit": unit}
+    return {"value": number(magnitude_in(q, unit)), "unit": unit}
 
 
 def number(x):
@@ -38,7 +38,12 @@ def number(x):
 
 
 def gearbox_selection(case: Case) -> GearboxSelection:
-    """The gearbox catalog of the case, narrowed to its ratio (or named part), checked and ranked."""
+    """The gearbox catalog of the case, narrowed to its ratio (or named part), checked and ranked;
+    computed once per case."""
+    return once(case, "gearbox", lambda: _select_gearbox(case))
+
+
+def _select_gearbox(case: Case) -> GearboxSelection:
     where = f"{case.path}: gearbox"
     catalog = load_catalog(resolve(case.gearbox_catalog, case.folder, f"{where}.catalog"), GEARBOX_SCHEMA)
     if case.gearbox_part is not None:
@@ -137,9 +142,8 @@ def evaluate(case: Case) -> dict:
     return out
 
 
-def _q(d: dict) -> str:
-    from .units import pretty_unit
-
+def quantity_text(d: dict | None) -> str:
+    """A result quantity ``{"value", "unit"}`` as a reader writes it (``151.3 N·m``); n/a for none."""
     return "n/a" if d is None or d["value"] is None else f"{sig(d['value'])} {pretty_unit(d['unit'])}".rstrip()
 
 
@@ -149,10 +153,10 @@ def summary(results: dict) -> str:
     lines = [
         results["title"],
         "=" * len(results["title"]),
-        f"Duty cycle: t_on = {_q(d['t_on'])}, t_cycle = {_q(d['t_cycle'])}, ED = {_q(d['ED'])} -> mode {d['mode']} (E3)",
-        f"S1{' (governs)' if s1['governs'] else ''}: n_2m = {_q(s1['n2m'])}, T_2m = {_q(s1['T2m'])}",
-        f"S5{' (governs)' if s5['governs'] else ''}: Z_h = {_q(s5['Zh'])}, f_s = {s5['fs']:g}, n_2max = {_q(s5['n2max'])}"
-        + (f", T_2max = {_q(s5['T2max'])} ({s5['T2max_part']})" if "T2max" in s5 else ""),
+        f"Duty cycle: t_on = {quantity_text(d['t_on'])}, t_cycle = {quantity_text(d['t_cycle'])}, ED = {quantity_text(d['ED'])} -> mode {d['mode']} (E3)",
+        f"S1{' (governs)' if s1['governs'] else ''}: n_2m = {quantity_text(s1['n2m'])}, T_2m = {quantity_text(s1['T2m'])}",
+        f"S5{' (governs)' if s5['governs'] else ''}: Z_h = {quantity_text(s5['Zh'])}, f_s = {s5['fs']:g}, n_2max = {quantity_text(s5['n2max'])}"
+        + (f", T_2max = {quantity_text(s5['T2max'])} ({s5['T2max_part']})" if "T2max" in s5 else ""),
     ]
     g = results.get("gearbox")
     if g:
@@ -165,7 +169,7 @@ def summary(results: dict) -> str:
                 util = "n/a" if k["utilization"] is None else f"{k['utilization']:.2f}"
                 mark = "" if k["governs"] else "  (for information)"
                 lines.append(
-                    f"        {k['criterion']:<22} required {_q(k['required']):>12}  rated {_q(k['rated']):>12}  "
+                    f"        {k['criterion']:<22} required {quantity_text(k['required']):>12}  rated {quantity_text(k['rated']):>12}  "
                     f"utilization {util:>5}  {'ok' if k['passes'] else 'FAIL'}{mark}"
                 )
             for r in c["reasons"]:

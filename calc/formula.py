@@ -33,7 +33,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, as_kind, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit
+from .units import Q_, as_kind, fmt, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit
 
 REGISTRY: list["Formula"] = []
 
@@ -294,7 +294,7 @@ Formula.__doc__ = _Doc()
 def _builder_parts(build: Callable) -> list:
     """The parts of a builder that decide its expression: the source text of its body and the
     values of the plain constants it reads from its module."""
-    names = sorted(_names(build.__code__))
+    names = sorted(global_names(build.__code__))
     namespace = build.__globals__
     return [_body_text(build), [repr(namespace[n]) for n in names if isinstance(namespace.get(n), (bool, int, float, str, tuple, dict))]]
 
@@ -319,11 +319,12 @@ def _body_text(build: Callable) -> str:
     return "".join(text)
 
 
-def _names(code: CodeType) -> set[str]:
+def global_names(code: CodeType) -> set[str]:
+    """The global names a function's code reads, nested code included."""
     names = set(code.co_names)
     for const in code.co_consts:
         if isinstance(const, CodeType):
-            names |= _names(const)
+            names |= global_names(const)
     return names
 
 
@@ -347,7 +348,7 @@ class Step:
 
     @property
     def result_text(self) -> str:
-        return _quantity_text(self.result, self.formula.result.unit)
+        return fmt(self.result, self.formula.result.unit)
 
     def parts(self) -> tuple[str, str, str, str]:
         """The step's four sides in LaTeX: symbol, expression, substituted values, result."""
@@ -367,7 +368,3 @@ class Step:
 
     def __str__(self):
         return f"{self.formula.result.name} = {self.result_text}"
-
-
-def _quantity_text(q, unit: str) -> str:
-    return f"{sig(q.m_as(unit))} {pretty_unit(unit)}".rstrip()

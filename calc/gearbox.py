@@ -134,7 +134,8 @@ class GearboxSelection:
     checks: list
     T_2max: object  # quantity array, or None without the motor's peak torque
     inertia_ratio: object  # float array, or None without the inertias
-    passes: np.ndarray
+    passes: np.ndarray  # every governing check passes
+    worst: np.ndarray  # highest utilization of the governing checks (NaN where one has no rating)
     order: np.ndarray
 
     @property
@@ -237,17 +238,12 @@ def select_gearbox(
     lam = None
     if motor_inertia is not None and load_inertia is not None:
         lam = inertia_ratio(J_1=catalog["J_1"], J_L=load_inertia, i=i, J_motor=motor_inertia).m_as("")
-    selection = GearboxSelection(catalog, d.mode, checks, t2max, lam, np.zeros(len(catalog), bool), np.arange(len(catalog)))
-    governing = selection.governing
-    selection.passes = np.logical_and.reduce([c.passes for c in governing])
-    selection.order = rank(
-        selection.passes,
-        catalog["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m"),
-        np.max([c.utilization for c in governing], axis=0),
-        catalog.parts,
-        illustrative=catalog.illustrative,
-    )
-    return selection
+    governing = [c for c in checks if c.mode == d.mode]
+    passes = np.logical_and.reduce([c.passes for c in governing])
+    worst = np.max([c.utilization for c in governing], axis=0)
+    size = catalog["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m")
+    order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
+    return GearboxSelection(catalog, d.mode, checks, t2max, lam, passes, worst, order)
 
 
 def candidates_table(selection: GearboxSelection):
@@ -310,8 +306,7 @@ def candidates_summary(selection: GearboxSelection):
     import pandas as pd
 
     order = selection.order
-    with np.errstate(invalid="ignore"):
-        worst = np.max([c.utilization for c in selection.governing], axis=0)[order]
+    worst = selection.worst[order]
     n = len(order)
     table = pd.DataFrame(
         {

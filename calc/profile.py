@@ -22,7 +22,6 @@ PHASES = ("accel", "const", "decel", "pause")
 S5_MAX_ED = Q_(60, "percent")
 S5_MAX_ON_TIME = Q_(20, "min")
 
-
 t_on = Symbol("t_on", r"t_{\mathrm{on}}", "time", "s", "on-time, t_a + t_c + t_d (moving segments)")
 t_cycle = Symbol("t_cycle", r"t_{\mathrm{cycle}}", "time", "s", "cycle time, pauses included")
 t_k = Symbol("t_k", "t_{k}", "time", "s", "duration of moving segment k", per_segment=True)

@@ -34,7 +34,7 @@ from .formula import REGISTRY, Step
 from .gearbox import SHOCK_FACTORS, T_2max, inertia_ratio, n_1
 from .profile import ED, T_2m, Z_h, n_2m
 from .profile import t_k as t_k_symbol
-from .units import Q_, pretty_unit, sig
+from .units import NUMBER, Q_, pretty_unit, sig
 
 PROJECT_DIR = CATALOG_DIR.parent
 
@@ -77,8 +77,6 @@ ERRATA = {
     "E15": (None, "Every angle, speed and stiffness input is checked for the angle in its unit (the unit library "
             "treats angles as dimensionless); a shaft's frequency is n / 60 s per revolution."),
 }
-
-_UNIT = {"n_1N": "rpm", "n_1max": "rpm", "T_2N": "N*m", "T_2B": "N*m"}
 
 
 class Latex(str):
@@ -404,7 +402,7 @@ class Report:
                 return
             s = sym[name]
             unit = s.unit
-            rows.append([f"${s.latex}$", sig(q.m_as(unit) if unit else q.m_as("")), latex_escape(pretty_unit(unit)) or "–",
+            rows.append([f"${s.latex}$", sig(q.m_as(unit)), latex_escape(pretty_unit(unit)) or "–",
                          latex_escape(s.description), rf"\texttt{{\footnotesize {latex_escape(key)}}}"])
 
         add("T_1B", c.motor_peak_torque, "motor.peak_torque")
@@ -820,7 +818,6 @@ SECTION_KEYS = {
         "required_repeatability": (None, "repeatability required"),
     },
 }
-_NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 
 def _section_symbols(name: str) -> dict:
@@ -840,7 +837,7 @@ def _value_unit(value) -> tuple[str, str]:
     """A value as written in the case, split into number and unit where it is a quantity."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         return f"{value:g}", "–"
-    m = _NUMBER_UNIT.match(value) if isinstance(value, str) else None
+    m = NUMBER.match(value) if isinstance(value, str) else None
     if m and m.group(2) and re.fullmatch(r"[A-Za-z°][A-Za-z0-9*/()^.-]*", m.group(2)):  # "19 mm k6" stays whole
         return latex_escape(m.group(1)), latex_escape(pretty_unit(m.group(2)))
     return latex_escape(value), "–"
@@ -909,16 +906,13 @@ def report_of(case: Case, report: Report | None = None) -> Report:
         if "gearbox" in results:
             report.selection = gearbox_selection(case)
         if "coupling" in results:
-            from .coupling import read_section, select_coupling
+            from .coupling import coupling_selection
 
-            cc = read_section(case)
-            report.coupling = cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1],
-                                                  where=f"{case.path}: coupling", **cc.inputs)
+            report.coupling = coupling_selection(case)
         if "accuracy" in results:
-            from .accuracy import read_accuracy
+            from .accuracy import accuracy_of
 
-            spec = read_accuracy(case)
-            report.accuracy = spec, spec.evaluate()
+            report.accuracy = accuracy_of(case)
     except CalcError as exc:
         report.error = str(exc)
         return report

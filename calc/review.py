@@ -77,7 +77,6 @@ def review_items(case: Case) -> list:
     from IPython.display import HTML
 
     from .plots import load_cycle_figure
-    from .report import report_of
 
     r, left_out = _report_of_what_evaluates(case)
     color = "#1b7837" if r.passes and not left_out else "#b2222a"

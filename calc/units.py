@@ -30,7 +30,8 @@ def unit(text: str) -> pint.Unit:
     """The registry's unit for one of the package's unit strings (``"N*m"``), parsed once."""
     return ureg.Unit(text)
 
-_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+#: A number and the unit text after it, as case files and catalogs write a quantity.
+NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 
 @dataclass(frozen=True)
@@ -127,7 +128,7 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
         )
     if not isinstance(text, str):
         raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {text!r}")
-    match = _NUMBER.match(text)
+    match = NUMBER.match(text)
     if not match:
         raise CalcError(f"{where}: expected a number followed by a unit such as {k.example}, found {text!r}")
     number, unit_text = match.groups()
@@ -174,11 +175,9 @@ def to_si(value, expected: str | Kind, where: str):
     (31.41592653589793, 2)
     """
     k = kind(expected)
-    if isinstance(value, pint.Quantity) and value._REGISTRY is ureg and k.accepts(value._units):
-        factor = _factor(value._units, _container(k.si_unit))
-        if factor is not None:
-            return value.magnitude if factor == 1.0 else value.magnitude * factor
-    return as_kind(value, k, where).m_as(k.si_unit)  # the error, or a unit with an offset (degC)
+    if not (isinstance(value, pint.Quantity) and value._REGISTRY is ureg and k.accepts(value._units)):
+        value = as_kind(value, k, where)  # the error, or a bare number where the kind is dimensionless
+    return magnitude_in(value, k.si_unit)
 
 
 def magnitude_in(q: pint.Quantity, unit_text: str):

@@ -8,7 +8,7 @@ import pytest
 
 import calc
 from calc import CalcError, Q_
-from calc.formula import REGISTRY, Formula, Symbol
+from calc.formula import REGISTRY, Formula, Symbol, global_names
 from calc.gearbox import T_2max
 from calc.profile import T_2m
 
@@ -127,7 +127,7 @@ def test_stored_numeric_forms_are_what_sympy_generates():
         stored = formula_numeric.FUNCTIONS[f.key][1]
         assert f.numeric is stored, f.key
         generated = f.lambdified()
-        for name in codegen._global_names(stored.__code__):
+        for name in global_names(stored.__code__):
             here = stored.__globals__.get(name, getattr(builtins, name, None))
             there = generated.__globals__.get(name, getattr(builtins, name, None))
             assert here is there, f"{f.key}: {name} is {here!r} in the stored code, {there!r} in lambdify's"
