@@ -13,8 +13,8 @@ Every row of a catalog (or of the requested type) is checked at once, as numpy a
 rows. The case's inertias are those of the machine without the coupling: each candidate's own
 inertia is added, half to each side (E7).
 
-Ranking rule: passing candidates first; among them the smallest adequate size, measured by the
-rated torque ``T_KN``, then the larger margin (lower worst utilization); failing candidates
+Ranking rule: passing candidates first, published rows before illustrative ones (as for
+gearboxes); among them the smallest adequate size, measured by the rated torque ``T_KN``, then the larger margin (lower worst utilization); failing candidates
 after, closest to passing first. Ties go by part name (:func:`calc.checks.rank`).
 """
 
@@ -487,7 +487,7 @@ def select_coupling(
     passes = np.logical_and.reduce([c.passes for c in checks])
     utilizations = np.array([np.where(c.applies if c.applies is not None else True, c.utilization, 0.0) for c in checks])
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
-    order = rank(passes, catalog["T_KN"].m_as("N*m"), worst, catalog.parts)
+    order = rank(passes, catalog["T_KN"].m_as("N*m"), worst, catalog.parts, illustrative=catalog.illustrative)
     return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, c_t, j_a, j_l, fe, checks, passes, worst, order, notes)
 
 
@@ -741,7 +741,7 @@ def section_results(case: Case) -> dict:
             }
             for k, bore in enumerate(cc.bores, start=1)
         ],
-        "ranking": "passing first; then smallest rated torque T_KN; then lowest worst utilization",
+        "ranking": "passing first; published rows before illustrative ones; then smallest rated torque T_KN; then lowest worst utilization",
         "candidates": candidates,
         "selected": selected,
         "order": order,

@@ -96,7 +96,7 @@ def _gearbox_results(selection: GearboxSelection) -> dict:
         "catalog": display_path(selection.catalog.path),
         "catalog_sha256": selection.catalog.sha256,
         "mode": selection.mode,
-        "ranking": "passing first; then smallest governing torque rating (T_2B in S5, T_2N in S1); then lowest worst utilization",
+        "ranking": "passing first; published rows before illustrative ones; then smallest governing torque rating (T_2B in S5, T_2N in S1); then lowest worst utilization",
         "candidates": candidates,
         "selected": selection.selected,
     }

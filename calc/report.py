@@ -223,8 +223,11 @@ def step_block(title: str, step: Step, note: str = "") -> str:
 
 
 def _symbols() -> dict:
-    """Every symbol of every formula, by its name in code."""
-    return {s.name: s for f in REGISTRY for s in (f.result, *f.inputs)}
+    """The symbols of the load cycle's and the gearbox's formulas, by their name in code (the
+    case's [motor], [load], [gearbox] and [[profile]] inputs; the further sections have their own,
+    see :func:`_section_symbols`: a coupling's J_L is another quantity than the gearbox's)."""
+    own = ("calc.profile.", "calc.gearbox.")
+    return {s.name: s for f in REGISTRY if f.key.startswith(own) for s in (f.result, *f.inputs)}
 
 
 @dataclass
@@ -739,7 +742,7 @@ class Report:
 
 def _shock_factor_block(zh: float, fs: float) -> str:
     bounds = [b for b, _ in SHOCK_FACTORS]
-    k = int(np.searchsorted(bounds, zh, side="right") - 1)
+    k = [f for _, f in SHOCK_FACTORS].index(fs)  # the band calc.gearbox.shock_factor chose (E4, with its tolerance)
     low = bounds[k]
     band = rf"{low} \le Z_h" + (rf" < {bounds[k + 1]}" if k + 1 < len(bounds) else "")
     return (

@@ -20,7 +20,7 @@ import numpy as np
 from .case import Case, read_case
 from .errors import CalcError
 from .profile import Profile
-from .units import Q_, parse_quantity, sig
+from .units import Q_, parse_quantity, pretty_unit, sig
 
 
 def with_changes(
@@ -193,7 +193,7 @@ class DesignReview:
                                     ("J_L", "load inertia J_L", case.load_inertia, "kg*cm**2")):
             if q is not None:
                 v = q.m_as(unit)
-                c[key] = slider(label, v, v / 10, 5 * v, v / 100, unit.replace("*", "·").replace("**2", "²"))
+                c[key] = slider(label, v, v / 10, 5 * v, v / 100, pretty_unit(unit))
         coupling = case.sections.get("coupling")
         if coupling is not None:
             t = parse_quantity(coupling.get("temperature", "20 degC"), "temperature", "coupling.temperature").m_as("degC")

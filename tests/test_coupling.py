@@ -443,3 +443,16 @@ def test_a_line_shaft_without_its_distance_is_not_checked_as_bellows_alone(tmp_p
     assert np.isnan(s.f_e[0].magnitude) and not s.passes[0]
     assert "2 f_er <= f_e: not checked, a line shaft's stiffness needs coupling.shaft_distance" in s.reasons(0)
     assert s.selected == "AKD-30"
+
+
+def test_a_published_coupling_ranks_before_an_illustrative_one():
+    # The example selects AKD-30 (T_KN 36 N·m); with that row marked illustrative, the passing
+    # published rows come first (AKD-60, AKD-150 by size), then AKD-30, then the failing ones.
+    bellows = of_type("bellows")
+    assert select_coupling(bellows, **EXAMPLE).selected == "AKD-30"
+    marked = bellows.rows(np.arange(len(bellows)))
+    marked.illustrative = bellows.parts == "AKD-30"
+    s = select_coupling(marked, **EXAMPLE)
+    ranked = [str(marked.parts[k]) for k in s.order]
+    assert s.selected == "AKD-60"
+    assert ranked[:3] == ["AKD-60", "AKD-150", "AKD-30"]

@@ -170,3 +170,24 @@ def test_batch_builds_one_pdf_each_with_a_progress_bar_and_a_summary(batch):
     lines = proc.stdout.strip().splitlines()
     assert [line.split()[0] for line in lines] == ["PASS", "FAIL", "FAIL"]
     assert lines[0].endswith(str(out / "escape.pdf"))
+
+
+def test_inputs_describe_the_load_inertia_of_the_gearbox_section():
+    # load.inertia is the gearbox's J_L (load inertia at the output), not the coupling's J_L of the
+    # same name (load side with half the coupling).
+    text = str(build_report(EXAMPLE).inputs())
+    row = next(line for line in text.splitlines() if "load.inertia" in line)
+    assert "load inertia at the output" in row and "half the coupling" not in row
+
+
+def test_shock_factor_band_is_the_one_the_factor_came_from():
+    # 0.1 + 0.1 + 0.1 + 2.1 s gives Z_h = 1499.9999999999998 per hour: on the 1500 boundary (E4), f_s = 1.3,
+    # so the band printed is 1500 <= Z_h < 2000, not 1000 <= Z_h < 1500.
+    from calc import Q_
+    from calc.gearbox import shock_factor
+    from calc.profile import Z_h
+    from calc.report import _shock_factor_block
+
+    zh = Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))
+    block = _shock_factor_block(zh.m_as("1/hour"), float(shock_factor(zh)))
+    assert r"1500 \le Z_h < 2000" in block and "f_{s} = 1.3" in block

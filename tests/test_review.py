@@ -91,3 +91,10 @@ def test_a_section_that_no_longer_fits_is_left_out_not_everything(case):
     gearbox = tables[0]
     assert set(gearbox["part"]) == {"TP010-8", "NPT035-8", "SP075-8"}  # catalogs/gearboxes.csv, ratio 8
     assert len(tables) == 2  # gearbox and coupling candidates; no accuracy table
+
+
+def test_slider_units_read_as_written():
+    panel = DesignReview(EXAMPLE)
+    described = [c.description for c in panel.controls.values()]
+    assert any(d.endswith("[kg·cm²]") for d in described)
+    assert not any("··" in d or "**" in d for d in described)
