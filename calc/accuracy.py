@@ -206,7 +206,7 @@ def chain_accuracy(chain: Chain, applied_torque, nominal_torque=None) -> ChainAc
         applied_torque=t,
         nominal_torque=t_n,
         low_torque=low,
-        lost_motion=lost_motion(j_t=j, T=t, C=c),
+        lost_motion=rep,  # repeatability() is the lost motion at t (bounded by it, E13)
         positioning_accuracy=accuracy,
         repeatability=rep,
         repeatability_is_bound=bool(bound),

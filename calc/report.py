@@ -797,7 +797,7 @@ def _candidates_table(section: dict, caption: str, inertia: bool = False) -> str
     criteria = {k["name"]: k.get("criterion") for c in section["candidates"] for k in c.get("checks", [])}
     note = "Checks: " + "; ".join(_text_math(criteria[n]) if criteria.get(n) else latex_escape(n) for n in names) + "."
     if inertia:
-        note += r" $\lambda = (J_1 + J_L / i^2) / J_{\mathrm{motor}}$, load to motor inertia ratio (E6)."
+        note += rf" ${inertia_ratio.latex()}$, load to motor inertia ratio (E6)."
     return table(cols, header, rows, caption=caption, note=note)
 
 

@@ -194,8 +194,7 @@ class Chain:
     def compliance_shares(self) -> np.ndarray:
         """Each component's share of the total compliance, ``(1/C_k) / Σ 1/C`` (sums to 1); it is
         also its share of the twist under any torque, since every component carries the same."""
-        compliance = 1.0 / self.stiffness_at_output.m_as("N*m/arcmin")
-        return compliance / compliance.sum()
+        return (self.stiffness / self.stiffness_at_output).m_as("")  # (1/C_k) / (1/C_total)
 
     def twist(self, torque):
         """Each component's twist under ``torque`` at the output, ``|T| / C_k`` (the sum is ``|T| / C_total``)."""

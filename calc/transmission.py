@@ -19,6 +19,7 @@ from .catalog import Column
 from .errors import CalcError
 from .formula import Formula, Symbol
 from .measurement import check_pair, read_measurement, travel_direction, write_measurement
+from .stiffness import angle_at_output
 from .units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
 
 COLUMNS = (
@@ -173,7 +174,7 @@ def analyze_trace(trace: Trace, ratio) -> TransmissionAnalysis:
     error = transmission_error(phi_2=trace.output, phi_1=trace.input, i=i).m_as("arcsec")
     error = error - error.mean()
     output = trace.output.m_as("deg")
-    theoretical = trace.input.m_as("deg") / i.m_as("")
+    theoretical = angle_at_output(phi_1=trace.input, i=i).m_as("deg")
     direction = travel_direction(theoretical)
     ranges, covered = {}, {}
     for sign, name in ((1, "forward"), (-1, "backward")):
