@@ -1,10 +1,15 @@
-"""Command line: ``python -m calc evaluate CASE.toml [--json]`` and
-``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf]``."""
+"""Command line: ``python -m calc evaluate CASE.toml [--json] [--strict] [--all-candidates]`` and
+``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--strict]``.
+
+Exit status (``spec/case-format.md``): 0 when results were produced, whatever the verdict; with
+``--strict``, 1 when the verdict is not PASS; 2 on input errors, always.
+"""
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 
 from .errors import CalcError
@@ -16,29 +21,39 @@ def main(argv=None) -> int:
     ev = sub.add_parser("evaluate", help="evaluate a design case and print its results")
     ev.add_argument("case", help="the design-case TOML file")
     ev.add_argument("--json", action="store_true", help="print the results as JSON (the contract of spec/case-format.md)")
+    ev.add_argument("--all-candidates", action="store_true", help="list every candidate (default: the best 20 and the count)")
     rp = sub.add_parser("report", help="build the PDF calc report of one or more design cases")
     rp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one PDF each")
     rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
+    for p in (ev, rp):
+        p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
     if args.command == "report":
         from .publish import main as report
 
-        return report(args.cases, args.output)
+        return report(args.cases, args.output, strict=args.strict)
 
     from .case import read_case
-    from .evaluate import evaluate, summary
+    from .sections import SHOWN_CANDIDATES, evaluate
 
+    candidates = None if args.all_candidates else SHOWN_CANDIDATES
     try:
         results = evaluate(read_case(args.case))
+        text = json.dumps(results.to_json(candidates), indent=2, ensure_ascii=False, allow_nan=False) if args.json else results.summary(candidates)
     except CalcError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    if args.json:
-        print(json.dumps(results, indent=2, ensure_ascii=False, allow_nan=False))
-    else:
-        print(summary(results))
-    return 0
+    print(text)
+    return 1 if args.strict and results.verdict.passes is not True else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        status = main()
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # The reader closed the pipe (``| head``): send what is left to nowhere and exit quietly,
+        # as the Python documentation advises for SIGPIPE.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        status = 1
+    sys.exit(status)

@@ -13,10 +13,10 @@ from pathlib import Path
 
 from .errors import CalcError
 from .profile import Profile
-from .units import parse_quantity
+from .units import kind_phrase, parse_quantity
 
 
-class Section:
+class Table:
     """One table of the case file, read key by key; unknown keys are an error."""
 
     def __init__(self, path: Path, name: str, data, allowed: tuple[str, ...]):
@@ -44,6 +44,14 @@ class Section:
             return default
         return parse_quantity(self.data[key], kind, self.where(key))
 
+    def positive(self, key: str, kind: str, required: bool = False, what: str | None = None):
+        """:meth:`quantity`, which must be above zero; ``what`` names it in the error (default:
+        its kind)."""
+        q = self.quantity(key, kind, required)
+        if q is not None and not q.magnitude > 0:
+            raise CalcError(f"{self.where(key)}: expected {what or kind_phrase(kind)} above zero, found {self.data[key]!r}")
+        return q
+
     def text(self, key: str, required: bool = False, default=None):
         if key not in self.data:
             if required:
@@ -54,24 +62,22 @@ class Section:
             raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
         return value
 
-    def table(self, key: str, allowed: tuple[str, ...]) -> "Section | None":
+    def table(self, key: str, allowed: tuple[str, ...]) -> "Table | None":
         if key not in self.data:
             return None
-        return Section(self.path, self.key(key), self.data[key], allowed)
+        return Table(self.path, self.key(key), self.data[key], allowed)
 
-    def tables(self, key: str, allowed: tuple[str, ...]) -> list["Section"]:
+    def tables(self, key: str, allowed: tuple[str, ...]) -> list["Table"]:
         items = self.data.get(key, [])
         if not isinstance(items, list):
             raise CalcError(f"{self.where(key)}: expected an array of tables ([[{self.key(key)}]]), found {type(items).__name__}")
-        return [Section(self.path, f"{self.key(key)}[{k}]", item, allowed) for k, item in enumerate(items, start=1)]
-
-
-TOP_KEYS = ("title", "motor", "load", "gearbox", "profile", "coupling", "accuracy")
+        return [Table(self.path, f"{self.key(key)}[{k}]", item, allowed) for k, item in enumerate(items, start=1)]
 
 
 @dataclass
 class Case:
-    """A design case as read from its file: quantities checked, sections kept for their modules."""
+    """A design case as read from its file: the inputs the sections share, checked, and the raw
+    tables of the sections that read their own (``coupling``, ``accuracy``) when evaluated."""
 
     path: Path
     title: str
@@ -101,7 +107,12 @@ def once(case: Case, name: str, compute):
 
 
 def read_case(path) -> Case:
-    """Read and check a case file; raise :class:`CalcError` naming the file and key on bad input."""
+    """Read and check a case file; raise :class:`CalcError` naming the file and key on bad input.
+
+    The shared inputs are read here by their sections (:mod:`calc.sections`): the load cycle, the
+    motor and load, the gearbox; the further sections keep their tables for evaluation."""
+    from .sections import FURTHER, TOP_KEYS, drive, duty, gearbox
+
     path = Path(path)
     if not path.is_file():
         raise CalcError(f"{path}: the case file does not exist")
@@ -112,45 +123,9 @@ def read_case(path) -> Case:
         raise CalcError(f"{path}: expected a UTF-8 TOML file, found bytes that are not UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
         raise CalcError(f"{path}: TOML syntax error: {exc}") from None
-    top = Section(path, "", data, TOP_KEYS)
-    title = top.text("title", default=path.stem)
-
-    if "profile" not in data:
-        raise CalcError(f"{path}: profile: expected one [[profile]] table per segment, found none")
-    segments = []
-    for seg in top.tables("profile", ("phase", "duration", "speed", "torque")):
-        phase = seg.text("phase", required=True)
-        segments.append(
-            (
-                phase,
-                seg.quantity("duration", "time", required=True),
-                seg.quantity("speed", "speed"),
-                seg.quantity("torque", "torque"),
-            )
-        )
-    profile = Profile.from_segments(segments, where=f"{path}: profile")
-
-    case = Case(path=path, title=title, profile=profile, raw=raw)
-    motor = top.table("motor", ("peak_torque", "inertia"))
-    if motor:
-        case.motor_peak_torque = motor.quantity("peak_torque", "torque")
-        case.motor_inertia = motor.quantity("inertia", "inertia")
-    load = top.table("load", ("inertia",))
-    if load:
-        case.load_inertia = load.quantity("inertia", "inertia")
-    gearbox = top.table("gearbox", ("ratio", "catalog", "part"))
-    if gearbox:
-        case.ratio = gearbox.quantity("ratio", "dimensionless", required=not gearbox.has("part"))
-        if case.ratio is not None and not case.ratio.m_as("") > 0:
-            raise CalcError(f"{gearbox.where('ratio')}: expected a ratio above zero, found {case.ratio.m_as(''):g}")
-        case.gearbox_catalog = gearbox.text("catalog", default="gearboxes")
-        case.gearbox_part = gearbox.text("part")
-    for name in ("coupling", "accuracy"):
-        if name in data:
-            case.sections[name] = data[name]
-    for name, value in (("motor", case.motor_inertia), ("load", case.load_inertia)):
-        if value is not None and not value.magnitude > 0:
-            raise CalcError(f"{path}: {name}.inertia: expected an inertia above zero, found {value:~P}")
-    if case.motor_peak_torque is not None and not case.motor_peak_torque.magnitude > 0:
-        raise CalcError(f"{path}: motor.peak_torque: expected a torque above zero, found {case.motor_peak_torque:~P}")
+    top = Table(path, "", data, TOP_KEYS)
+    case = Case(path=path, title=top.text("title", default=path.stem), profile=duty.read(top), raw=raw)
+    drive.read(top, case)
+    gearbox.read(top, case)
+    case.sections = {name: data[name] for name in FURTHER if name in data}
     return case

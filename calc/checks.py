@@ -1,14 +1,16 @@
-"""Checks of catalog candidates, and their ranking: what gearbox and coupling selection share.
+"""Checks and their ranking: what every section's checks share.
 
-A check holds, for every candidate at once, the required value, the rated value, the unit both are
-shown in, the utilization (required / rated) and the verdict; :func:`rank` orders candidates best
-first and :func:`selected_part` names the best passing one.
+A :class:`CheckArray` holds, for every candidate at once, the required value, the rated value, the
+unit both are shown in, the utilization (required / rated) and the verdict, under the one pass rule
+of the package (:func:`within_rating`); :class:`Check` is one of them for one candidate, as results
+list it. :func:`rank` orders candidates best first and :func:`selected_part` names the best passing
+one.
 """
 
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -20,6 +22,49 @@ from .units import fmt, magnitude_in, sig
 BOUNDARY_RTOL = 1e-9
 
 
+def within_rating(utilization):
+    """The one pass rule: utilization <= 1, where a utilization within :data:`BOUNDARY_RTOL` above
+    1 is 1 (300 rpm · 10 comes back from rad/s as 3000.0000000000005 rpm, which meets 3000 rpm).
+    NaN compares false: no rating, no pass.
+
+    >>> within_rating(np.array([0.5, 1.0 + 1e-12, 1.001, np.nan])).tolist()
+    [True, True, False, False]
+    """
+    return np.asarray(utilization) <= 1.0 + BOUNDARY_RTOL
+
+
+@dataclass(frozen=True)
+class Check:
+    """One check of one candidate (or of a section's requirement), as results list it.
+
+    ``passes`` is None when the check could not be made; ``not_made`` then says which input it
+    needs. ``governs`` says whether the check decides the verdict (the other mode's checks are
+    reported for information, E3).
+    """
+
+    name: str
+    criterion: str
+    required: object  # scalar quantity, or None when not made
+    rated: object
+    unit: str
+    utilization: float | None
+    passes: bool | None
+    governs: bool = True
+    mode: str | None = None
+    not_made: str | None = None
+
+    def reason(self) -> str:
+        """Why the check does not pass: its excess, or what it needs."""
+        if self.not_made is not None:
+            return f"{self.criterion}: not checked, {self.not_made}"
+        if self.utilization is None:
+            return f"{self.criterion}: not checked, the catalog gives no rated value"
+        return (
+            f"{self.criterion}: required {fmt(self.required, self.unit)} > rated {fmt(self.rated, self.unit)}, "
+            f"{sig(100 * (self.utilization - 1), 3)} % over"
+        )
+
+
 @dataclass(frozen=True)
 class CheckArray:
     """One criterion over all candidates: required and rated values as quantity arrays, and the
@@ -28,32 +73,49 @@ class CheckArray:
     name: str
     mode: str
     text: str
-    required: object
+    required: object  # quantity array; None when the check cannot be made (see not_made)
     rated: object
     unit: str
+    not_made: str | None = field(default=None, kw_only=True)  # what the check needs that the case does not give
+
+    @property
+    def made(self) -> bool:
+        return self.not_made is None
 
     @functools.cached_property
     def utilization(self) -> np.ndarray:
-        """required / rated; NaN where the catalog gives no rated value."""
+        """required / rated; NaN where the catalog gives no rated value or the check is not made."""
+        rated = magnitude_in(self.rated, self.unit)
+        if not self.made:
+            return np.full(np.shape(rated), np.nan)
         with np.errstate(invalid="ignore", divide="ignore"):
-            return np.asarray(magnitude_in(self.required, self.unit) / magnitude_in(self.rated, self.unit), dtype=float)
+            return np.asarray(magnitude_in(self.required, self.unit) / rated, dtype=float)
 
     @property
     def passes(self) -> np.ndarray:
-        """utilization <= 1, where a utilization within :data:`BOUNDARY_RTOL` above 1
-        is 1: 300 rpm · 10 comes back from rad/s as 3000.0000000000005 rpm, which meets 3000 rpm.
-        NaN compares false: no rating, no pass."""
-        return self.utilization <= 1.0 + BOUNDARY_RTOL
+        """:func:`within_rating` of each row (false where the check is not made)."""
+        return within_rating(self.utilization)
+
+    def at(self, row: int, governs: bool = True) -> Check:
+        """This check for one row."""
+        u = float(self.utilization[row])
+        return Check(
+            name=self.name,
+            criterion=self.text,
+            required=None if not self.made else self.required[row],
+            rated=self.rated[row],
+            unit=self.unit,
+            utilization=None if np.isnan(u) else u,
+            passes=None if not self.made else bool(self.passes[row]),
+            governs=governs,
+            mode=self.mode,
+            not_made=self.not_made,
+        )
 
     def reason(self, row: int) -> str:
-        """Why the row fails this check: by how much the required value exceeds the rated one."""
-        u = self.utilization[row]
-        if np.isnan(u):
-            return f"{self.text}: not checked, the catalog gives no rated value"
-        return (
-            f"{self.text}: required {fmt(self.required[row], self.unit)} > rated {fmt(self.rated[row], self.unit)}, "
-            f"{sig(100 * (u - 1), 3)} % over"
-        )
+        """Why the row does not pass this check: by how much the required value exceeds the
+        rated one, or what the check needs."""
+        return self.at(row).reason()
 
 
 def rank(passes, size, worst_utilization, parts, illustrative=None) -> np.ndarray:

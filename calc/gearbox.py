@@ -24,7 +24,7 @@ from .errors import CalcError
 from .formula import Formula, Symbol
 from .checks import BOUNDARY_RTOL, CheckArray, rank, selected_part
 from .profile import Profile, T_2m, Z_h, duty, n_2m
-from .units import Q_, as_kind, magnitude_in, pretty_unit, sig
+from .units import Q_, as_kind, magnitude_in, pretty_unit
 
 SCHEMA = Schema(
     kind="gearbox",
@@ -110,11 +110,11 @@ def shock_factor(cycles_per_hour):
 
 @dataclass
 class Candidate:
-    """One gearbox with its checks, as listed in results and notebooks."""
+    """One gearbox with its checks (:class:`calc.checks.Check`), as listed in results and notebooks."""
 
     part: str
     ratio: float
-    passes: bool
+    passes: bool | None  # None: every governing check made passes, but one could not be made
     checks: list
     T_2max: object
     inertia_ratio: float | None
@@ -134,7 +134,7 @@ class GearboxSelection:
     checks: list
     T_2max: object  # quantity array, or None without the motor's peak torque
     inertia_ratio: object  # float array, or None without the inertias
-    passes: np.ndarray  # every governing check passes
+    passes: np.ndarray  # every governing check that could be made passes
     worst: np.ndarray  # highest utilization of the governing checks (NaN where one has no rating)
     order: np.ndarray
 
@@ -143,46 +143,39 @@ class GearboxSelection:
         return [c for c in self.checks if c.mode == self.mode]
 
     @property
+    def not_made(self) -> list:
+        """The governing checks that could not be made (an input is missing)."""
+        return [c for c in self.governing if not c.made]
+
+    @property
     def selected(self) -> str | None:
-        """Part number of the best passing candidate, or None."""
-        return selected_part(self.catalog.parts, self.passes, self.order)
+        """Part number of the best passing candidate, or None (also when a governing check
+        could not be made)."""
+        return None if self.not_made else selected_part(self.catalog.parts, self.passes, self.order)
 
     def reasons(self, row: int) -> list[str]:
-        """Why a row fails: each failing governing check with its excess."""
+        """Why a row does not pass: each failing governing check with its excess, and each
+        governing check that could not be made."""
         return [c.reason(row) for c in self.governing if not c.passes[row]]
 
-    def candidates(self) -> list[Candidate]:
-        """Every row as a :class:`Candidate`, best first."""
-        out = []
-        for row in self.order:
-            checks = [
-                {
-                    "name": c.name,
-                    "mode": c.mode,
-                    "governs": c.mode == self.mode,
-                    "text": c.text,
-                    "required": c.required[row],
-                    "rated": c.rated[row],
-                    "unit": c.unit,
-                    "utilization": float(c.utilization[row]),
-                    "passes": bool(c.passes[row]),
-                }
-                for c in self.checks
-            ]
-            lam = None if self.inertia_ratio is None else float(self.inertia_ratio[row])
-            out.append(
-                Candidate(
-                    part=str(self.catalog.parts[row]),
-                    ratio=float(self.catalog["ratio"][row].m_as("")),
-                    passes=bool(self.passes[row]),
-                    checks=checks,
-                    T_2max=None if self.T_2max is None else self.T_2max[row],
-                    inertia_ratio=None if lam is None or np.isnan(lam) else lam,
-                    reasons=self.reasons(row),
-                    illustrative=bool(self.catalog.illustrative[row]),
-                )
-            )
-        return out
+    def candidate(self, row: int) -> Candidate:
+        """One row as a :class:`Candidate`."""
+        lam = None if self.inertia_ratio is None else float(self.inertia_ratio[row])
+        passes = bool(self.passes[row])
+        return Candidate(
+            part=str(self.catalog.parts[row]),
+            ratio=float(self.catalog["ratio"][row].m_as("")),
+            passes=None if passes and self.not_made else passes,
+            checks=[c.at(row, governs=c.mode == self.mode) for c in self.checks],
+            T_2max=None if self.T_2max is None else self.T_2max[row],
+            inertia_ratio=None if lam is None or np.isnan(lam) else lam,
+            reasons=self.reasons(row),
+            illustrative=bool(self.catalog.illustrative[row]),
+        )
+
+    def candidates(self, limit: int | None = None) -> list[Candidate]:
+        """The rows as :class:`Candidate` objects, best first; the first ``limit`` (all for None)."""
+        return [self.candidate(row) for row in (self.order if limit is None else self.order[:limit])]
 
 
 def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
@@ -206,14 +199,11 @@ def select_gearbox(
 ) -> GearboxSelection:
     """Check every row of ``catalog`` (already narrowed to the desired ratio, or to one part).
 
-    S1 checks (always): ``n_2m · i <= n_1N`` (E1), ``T_2m <= T_2N`` (E2). S5 checks (when the
-    motor's peak torque ``T_1B`` is given): ``n_2max · i <= n_1max`` (E5), ``T_2max <= T_2B``
-    with ``T_2max = T_1B · i · f_s · η`` (E4). The operating mode of the profile (E3) says which
-    group governs ``passes``; the other group is reported for information. The inertia ratio
-    (E6) is given when both inertias are.
-
-    Raises :class:`CalcError` if the cycle is S5 and no peak torque is given: the governing
-    torque check cannot be made.
+    S1 checks: ``n_2m · i <= n_1N`` (E1), ``T_2m <= T_2N`` (E2). S5 checks: ``n_2max · i <=
+    n_1max`` (E5), ``T_2max <= T_2B`` with ``T_2max = T_1B · i · f_s · η`` (E4), which is not made
+    without the motor's peak torque ``T_1B`` (it says so; no part is then selected in S5). The
+    operating mode of the profile (E3) says which group governs ``passes``; the other group is
+    reported for information. The inertia ratio (E6) is given when both inertias are.
     """
     d = duty(profile)
     i = catalog["ratio"]
@@ -222,25 +212,21 @@ def select_gearbox(
         CheckArray("n_1N", "S1", "n_2m · i <= n_1N", n_1(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i), catalog["n_1N"], "rpm"),
         CheckArray("T_2N", "S1", "T_2m <= T_2N", T_2m(**seg) * np.ones(len(catalog)), catalog["T_2N"], "N*m"),
     ]
+    checks.append(CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"], "rpm"))
     t2max = None
     if motor_peak_torque is not None:
         f_s = shock_factor(Z_h(t_cycle=profile.t_cycle))
         t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
-        checks += [
-            CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"], "rpm"),
-            CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"),
-        ]
-    elif d.mode == "S5":
-        raise CalcError(
-            f"motor_peak_torque: the cycle is S5 (ED {sig(d.ED.m_as('percent'), 3)} %), whose check T_2max <= T_2B "
-            "needs the motor's peak torque T_1B, found none"
-        )
+        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"))
+    else:
+        needs = "T_2max = T_1B · i · f_s · η needs the motor's peak torque T_1B (motor.peak_torque)"
+        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", None, catalog["T_2B"], "N*m", not_made=needs))
     lam = None
     if motor_inertia is not None and load_inertia is not None:
         lam = inertia_ratio(J_1=catalog["J_1"], J_L=load_inertia, i=i, J_motor=motor_inertia).m_as("")
     governing = [c for c in checks if c.mode == d.mode]
-    passes = np.logical_and.reduce([c.passes for c in governing])
-    worst = np.max([c.utilization for c in governing], axis=0)
+    passes = np.logical_and.reduce([c.passes for c in governing if c.made])
+    worst = np.max([c.utilization for c in governing if c.made], axis=0)
     size = catalog["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m")
     order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
     return GearboxSelection(catalog, d.mode, checks, t2max, lam, passes, worst, order)
@@ -281,11 +267,11 @@ def candidates_table(selection: GearboxSelection):
                     "part": selection.catalog.parts[order].astype(str),
                     "check": c.text,
                     "governs": c.mode == selection.mode,
-                    "required": c.required[order].m_as(unit),
+                    "required": c.required[order].m_as(unit) if c.made else np.full(n, np.nan),
                     "rated": c.rated[order].m_as(unit),
                     "unit": pretty_unit(unit),
                     "utilization": c.utilization[order],
-                    "verdict": np.where(c.passes[order], "pass", "FAIL"),
+                    "verdict": np.where(c.passes[order], "pass", "FAIL") if c.made else "not checked",
                     "_position": position,
                 }
             )

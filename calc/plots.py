@@ -210,9 +210,9 @@ def utilization_figure(selection: GearboxSelection, limit: int = 12):
     """
     from matplotlib.figure import Figure
 
-    candidates = selection.candidates()[:limit]
+    candidates = selection.candidates(limit)
     total = len(selection.order)
-    checks = [c for c in candidates[0].checks if c["governs"]]
+    checks = [c for c in candidates[0].checks if c.governs]
     x = np.arange(len(candidates))
     width = 0.8 / len(checks)
 
@@ -220,9 +220,9 @@ def utilization_figure(selection: GearboxSelection, limit: int = 12):
     ax = fig.subplots()
     top = 1.0
     for j, check in enumerate(checks):
-        u = np.array([next(k["utilization"] for k in c.checks if k["name"] == check["name"]) for c in candidates])
+        u = np.array([next(k.utilization for k in c.checks if k.name == check.name) for c in candidates], dtype=float)
         bars = ax.bar(x + (j - (len(checks) - 1) / 2) * width, np.nan_to_num(u, nan=0.0), width, color=CHECK_COLORS[j % len(CHECK_COLORS)],
-                      label=check["text"], zorder=2)
+                      label=check.criterion, zorder=2)
         for bar, value in zip(bars, u):
             if value > 1.0:
                 bar.set_hatch("///")

@@ -106,6 +106,9 @@ class Profile:
             torques.append(T)
         if not any(p != "pause" for p in phases):
             raise CalcError(f"{where}: expected at least one moving segment (accel, const or decel), found only pauses")
+        if not any(n != 0 for n in speeds):
+            # n_2m would be 0 and T_2m = 0 / 0: the S1 means weight each torque by its speed.
+            raise CalcError(f"{where}: expected a moving segment with a speed other than zero (n_2m weights each torque by its speed), found every speed zero")
         return cls(
             tuple(phases),
             Q_(np.array(durations, float), "s"),

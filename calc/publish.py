@@ -100,8 +100,12 @@ def render_pdf(case: Path, pdf: Path, workdir: Path) -> None:
     pdf.write_bytes(body)
 
 
-def main(cases: list[str], output: str | None = None) -> int:
-    """Build one PDF per case with a progress bar; print one line per case; 0 if every PDF was built."""
+def main(cases: list[str], output: str | None = None, strict: bool = False) -> int:
+    """Build one PDF per case with a progress bar; print one line per case.
+
+    Exit status (``spec/case-format.md``): 2 when a case could not be read or a PDF could not be
+    built (a report of an unreadable case is still written, saying why), else 1 with ``strict``
+    when a verdict is not PASS, else 0."""
     from tqdm import tqdm
 
     from .report import build_report
@@ -116,15 +120,20 @@ def main(cases: list[str], output: str | None = None) -> int:
     except CalcError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    lines, failed = [], 0
+    lines, input_errors, not_passing = [], 0, 0
     with tempfile.TemporaryDirectory(prefix="calc-report-") as tmp:
         for case, pdf in zip(tqdm(paths, desc="calc reports", unit="case", file=sys.stderr), pdfs):
             try:
                 render_pdf(case, pdf, Path(tmp))
             except CalcError as exc:
-                failed += 1
+                input_errors += 1
                 lines.append(f"ERROR {display_path(case)}: no PDF: {exc}")
                 continue
-            lines.append(f"{build_report(case).summary_line()}  ->  {pdf}")
+            report = build_report(case)
+            input_errors += report.error is not None
+            not_passing += report.verdict.passes is not True
+            lines.append(f"{report.summary_line()}  ->  {pdf}")
     print("\n".join(lines))
-    return 1 if failed else 0
+    if input_errors:
+        return 2
+    return 1 if strict and not_passing else 0

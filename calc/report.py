@@ -29,7 +29,8 @@ from . import __version__
 from .case import Case, read_case
 from .catalog import CATALOG_DIR, display_path
 from .errors import CalcError
-from .evaluate import SECTIONS, evaluate, gearbox_selection
+from .sections import FURTHER as SECTIONS
+from .sections import Results, Verdict, evaluate
 from .formula import REGISTRY, Step
 from .gearbox import SHOCK_FACTORS, T_2max, inertia_ratio, n_1
 from .profile import ED, T_2m, Z_h, n_2m
@@ -239,7 +240,8 @@ class Report:
     built: str
     commit: str
     case: Case | None = None
-    results: dict | None = None
+    evaluated: Results | None = None
+    results: dict | None = None  # evaluated, as the JSON contract writes it (every candidate)
     selection: object = None  # GearboxSelection
     coupling: object = None  # (CouplingCase, CouplingSelection) when the case has [coupling]
     accuracy: object = None  # (AccuracyCase, ChainAccuracy) when the case has [accuracy]
@@ -266,41 +268,21 @@ class Report:
         return out
 
     @property
-    def reasons(self) -> list[str]:
-        """Why the case fails, one plain sentence each (empty when it passes)."""
+    def verdict(self) -> Verdict:
+        """The case's one verdict (:mod:`calc.sections`); FAIL with the reason for a case that
+        cannot be evaluated."""
         if self.error is not None:
-            return [f"The case cannot be evaluated: {self.error}"]
-        if self.results is None:
-            return []
-        out = []
-        g = self.results.get("gearbox")
-        if g is None:
-            out.append("The case names no gearbox ratio or part, so no gearbox is checked.")
-        elif g["selected"] is None:
-            ratio = ", ".join(sorted({f"{c['ratio']:g}" for c in g["candidates"]}))
-            out.append(f"No gearbox of ratio {ratio} in {g['catalog']} passes the {g['mode']} checks:")
-            out += [f"{c['part']}: {'; '.join(c['reasons'])}" for c in g["candidates"]]
-        for name in SECTIONS:
-            s = self.results.get(name)
-            if not s:
-                continue
-            if "selected" in s and s["selected"] is None:
-                out.append(f"No {name} passes its checks:")
-                for c in s.get("candidates", []):
-                    why = c.get("reasons") or [k["name"] for k in c.get("checks", []) if not k.get("passes", True)]
-                    out.append(f"{c.get('part', '?')}: {'; '.join(map(str, why))}")
-            elif s.get("passes") is False:
-                why = s.get("reasons") or [k["name"] for k in s.get("checks", []) if not k.get("passes", True)]
-                out.append(f"The {name} requirement is not met: {'; '.join(map(str, why))}")
-        return out
+            return Verdict(False, [f"The case cannot be evaluated: {self.error}"])
+        return self.evaluated.verdict
+
+    @property
+    def reasons(self) -> list[str]:
+        """Why the case does not pass, one plain sentence each (empty when it passes)."""
+        return self.verdict.reasons
 
     @property
     def passes(self) -> bool:
-        return self.error is None and not self.reasons
-
-    @property
-    def verdict(self) -> str:
-        return "PASS" if self.passes else "FAIL"
+        return self.verdict.passes is True
 
     def summary_line(self) -> str:
         """One line for a terminal: verdict, case, chosen parts or the first reason."""
@@ -308,7 +290,7 @@ class Report:
             what = ", ".join(f"{w.lower()} {p}" for w, p, _ in self.chosen)
         else:
             what = " ".join(self.reasons[:2])
-        return f"{self.verdict}  {display_path(self.path)}: {what}"
+        return f"{self.verdict.word}  {display_path(self.path)}: {what}"
 
     # -- the blocks, in the order of the report ------------------------------------------------
 
@@ -327,7 +309,7 @@ class Report:
             render = latex_escape if self.error else prose  # an error message quotes the case file as written
             items = "\n".join(rf"\item {render(r)}" for r in self.reasons)
             body = r"The design does not pass. Why:" "\n" rf"\begin{{itemize}}{items}\end{{itemize}}"
-        out.append(rf"\verdictbox{{{self.verdict}}}{{{'passgreen' if self.passes else 'failred'}}}{{{body}}}")
+        out.append(rf"\verdictbox{{{self.verdict.word}}}{{{'passgreen' if self.passes else 'failred'}}}{{{body}}}")
         if self.chosen:
             rows = [[w, latex_escape(p) if p else r"\textcolor{failred}{none passes}", latex_escape(d)] for w, p, d in self.chosen]
             out.append(r"\subsection*{Chosen parts}" + table(r"@{}l l p{0.55\linewidth}@{}", ["Part", "Chosen", "Basis"], rows))
@@ -905,21 +887,18 @@ def report_of(case: Case, report: Report | None = None) -> Report:
         report = Report(path=case.path, title=case.title, built="", commit="")
     report.case, report.title = case, case.title
     try:
-        results = evaluate(case)
-        if "gearbox" in results:
-            report.selection = gearbox_selection(case)
-        if "coupling" in results:
-            from .coupling import coupling_selection
-
-            report.coupling = coupling_selection(case)
-        if "accuracy" in results:
-            from .accuracy import accuracy_of
-
-            report.accuracy = accuracy_of(case)
+        evaluated = evaluate(case)
+        results = evaluated.to_json(candidates=None)
     except CalcError as exc:
         report.error = str(exc)
         return report
-    report.results = results
+    report.evaluated, report.results = evaluated, results
+    if "gearbox" in evaluated.sections:
+        report.selection = evaluated["gearbox"].selection
+    if "coupling" in evaluated.sections:
+        report.coupling = (evaluated["coupling"].inputs, evaluated["coupling"].selection)
+    if "accuracy" in evaluated.sections:
+        report.accuracy = (evaluated["accuracy"].inputs, evaluated["accuracy"].accuracy)
     for name in ("gearbox", *SECTIONS):
         s = results.get(name)
         if s and s.get("catalog") and s.get("catalog_sha256"):

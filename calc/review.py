@@ -84,7 +84,7 @@ def review_items(case: Case) -> list:
         why = "; ".join(f"{w.lower()} {p}" for w, p, _ in r.chosen)
     else:
         why = "<br>".join(escape(x) for x in [*left_out, *r.reasons])
-    verdict = "FAIL" if left_out else r.verdict
+    verdict = "FAIL" if left_out else r.verdict.word
     passes = r.passes and not left_out
     items = [HTML(f'<p><b style="color:{color}">{verdict}</b>: {why if passes else ""}</p>'
                   + ("" if passes else f"<p>{why}</p>"))]

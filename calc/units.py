@@ -110,6 +110,34 @@ def _article(word: str) -> str:
     return "an" if word[0] in "aeiou" else "a"
 
 
+def kind_phrase(expected: str | Kind) -> str:
+    """A kind as a phrase of an error message: ``"a torque"``, ``"an inertia"``."""
+    name = kind(expected).name
+    return f"{_article(name)} {name}"
+
+
+#: Largest and smallest (non-zero) magnitude in SI units that an input may have. Every quantity of
+#: a drive train lies orders of magnitude inside (a torque of 10⁶ N·m, an inertia of 10⁻⁷ kg·m², an
+#: angle of 10⁻⁶ rad); outside, a formula could overflow (a torque of 10¹⁰³ N·m cubed, 3600 s / 10⁻³⁰⁸ s)
+#: far from the key that caused it, so the key is named here instead.
+SI_SCALE = (1e-12, 1e12)
+
+
+def _in_scale(quantity: pint.Quantity, where: str, found) -> pint.Quantity:
+    """``quantity`` if its magnitude is finite and within :data:`SI_SCALE` in SI units (or zero)."""
+    low, high = SI_SCALE
+    value = quantity.magnitude
+    si = abs(quantity.to_base_units().magnitude) if math.isfinite(value) else math.inf
+    if not math.isfinite(si):
+        raise CalcError(f"{where}: expected a finite number, found {found!r}")
+    if si != 0 and not low <= si <= high:
+        raise CalcError(
+            f"{where}: expected a magnitude between {low:g} and {high:g} in SI units ({quantity.to_base_units().units:~P}), "
+            f"found {found!r}, which is {si:.3g}"
+        )
+    return quantity
+
+
 def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
     """Parse a case-file or catalog value such as ``"12 N*m"`` and check its kind.
 
@@ -122,7 +150,7 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
         raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {text!r}")
     if isinstance(text, (int, float)):
         if k.name == "dimensionless":
-            return ureg.Quantity(float(text), "")
+            return _in_scale(ureg.Quantity(float(text), ""), where, text)
         raise CalcError(
             f"{where}: expected {_article(k.name)} {k.name} with its unit such as {k.example}, found the bare number {text!r}"
         )
@@ -137,7 +165,7 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
     except Exception as exc:  # pint's parser raises many types for malformed text, AssertionError among them
         raise CalcError(f"{where}: the unit {unit_text!r} in {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
     quantity = ureg.Quantity(float(number), units)
-    return as_kind(quantity, k, where, found=text)
+    return _in_scale(as_kind(quantity, k, where, found=text), where, text)
 
 
 def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -> pint.Quantity:

@@ -101,7 +101,6 @@ GOOD_CSV = GEARBOXES.read_text()
         (HEAD_TOML.replace("ratio = 10", "ratio = -5") + PROFILE_TOML, "gearbox.ratio: expected a ratio above zero"),
         (HEAD_TOML.replace("ratio = 10", "ratio = 10\npart = \"XP-1\"") + PROFILE_TOML, "gearbox.part: no part 'XP-1' in catalog"),
         (HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = "nosuch"') + PROFILE_TOML, "gearbox.catalog: the catalog 'nosuch' does not exist"),
-        (HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML, "motor.peak_torque: the cycle is S5"),
         (HEAD_TOML.replace("[motor]", "[motor]\ncolour = 1") + PROFILE_TOML, "motor.colour: unknown key"),
         (HEAD_TOML.replace('"4.2 kg*cm**2"', '"4.2 kg"') + PROFILE_TOML, "motor.inertia: expected an inertia"),
         (HEAD_TOML.replace('"4.2 kg*cm**2"', '"-4.2 kg*cm**2"') + PROFILE_TOML, "motor.inertia: expected an inertia above zero"),

@@ -89,7 +89,7 @@ def test_import_calc_does_not_load_sympy_pandas_or_matplotlib():
     import sys
 
     code = (
-        "import sys, calc.evaluate, calc.case, calc.codegen, calc.formula_numeric; "
+        "import sys, calc.sections, calc.case, calc.codegen, calc.formula_numeric; "
         "print(sorted(m for m in ('sympy', 'pandas', 'matplotlib') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
@@ -105,7 +105,7 @@ def test_evaluating_the_example_does_not_load_sympy_pandas_or_matplotlib():
     from tests.conftest import EXAMPLE
 
     code = (
-        "import sys, calc.evaluate, calc.case; calc.evaluate.evaluate(calc.case.read_case(sys.argv[1])); "
+        "import sys, calc.sections, calc.case; calc.sections.evaluate(calc.case.read_case(sys.argv[1])).to_json(); "
         "print(sorted(m for m in ('sympy', 'pandas', 'matplotlib') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code, str(EXAMPLE)], capture_output=True, text=True, check=True).stdout

@@ -43,18 +43,18 @@ def test_example_s5_selection_by_hand(catalog):
     # Hand calculation: Z_h = 3600/2 = 1800 → f_s = 1.3 (E4); T_2max = 12 · 10 · 1.3 · 0.97 = 151.32 N·m.
     # Against T_2B: NPT035-10 220 → 0.688 (pass), TP010-10 126 → 1.201 (fail), SP075-10 102 → 1.484 (fail).
     by_part = {c.part: c for c in sel.candidates()}
-    t2b = {c["name"]: c for c in by_part["NPT035-10"].checks}["T_2B"]
-    assert t2b["required"].m_as("N*m") == pytest.approx(151.32)
-    assert t2b["utilization"] == pytest.approx(151.32 / 220)
+    t2b = {c.name: c for c in by_part["NPT035-10"].checks}["T_2B"]
+    assert t2b.required.m_as("N*m") == pytest.approx(151.32)
+    assert t2b.utilization == pytest.approx(151.32 / 220)
     assert [c.part for c in sel.candidates()] == ["NPT035-10", "TP010-10", "SP075-10"]
     assert sel.selected == "NPT035-10"
     assert by_part["TP010-10"].reasons == ["T_2max <= T_2B: required 151.3 N·m > rated 126 N·m, 20.1 % over"]
     # E5: n_2max · i = 300 · 10 = 3000 rpm against n_1max 6000 → 0.5.
-    n1max = {c["name"]: c for c in by_part["NPT035-10"].checks}["n_1max"]
-    assert n1max["utilization"] == pytest.approx(0.5)
+    n1max = {c.name: c for c in by_part["NPT035-10"].checks}["n_1max"]
+    assert n1max.utilization == pytest.approx(0.5)
     # E1 (information in S5): n_2m · i = 240 · 10 = 2400 rpm > n_1N 2300 → fails but does not govern.
-    n1n = {c["name"]: c for c in by_part["NPT035-10"].checks}["n_1N"]
-    assert n1n["passes"] is False and n1n["governs"] is False and by_part["NPT035-10"].passes
+    n1n = {c.name: c for c in by_part["NPT035-10"].checks}["n_1N"]
+    assert n1n.passes is False and n1n.governs is False and by_part["NPT035-10"].passes
     # E6: λ = (J_1 + J_L/i²)/J_motor = (0.93 + 1500/100)/4.2 = 3.7929.
     assert by_part["NPT035-10"].inertia_ratio == pytest.approx((0.93 + 15) / 4.2)
     # SP075-10 has no J_1 in the catalog: no ratio rather than a wrong one.
@@ -89,9 +89,16 @@ def test_s1_selection_by_hand(catalog):
     assert rejected.reasons == ["n_2m · i <= n_1N: required 2400 rpm > rated 2300 rpm, 4.35 % over"]
 
 
-def test_s5_without_peak_torque_is_an_error(catalog):
-    with pytest.raises(CalcError, match="needs the motor's peak torque"):
-        select_gearbox(example_profile(), rows_at_ratio(catalog, Q_(10, "")))
+def test_s5_without_peak_torque_ranks_but_selects_none(catalog):
+    # Partial case (spec, second round): T_2max <= T_2B cannot be made without T_1B; the other S5
+    # check n_2max · i <= n_1max is made (300 rpm · 10 = 3000 rpm against 6000 rpm for NPT035-10).
+    sel = select_gearbox(example_profile(), rows_at_ratio(catalog, Q_(10, "")))
+    assert sel.selected is None and [c.name for c in sel.not_made] == ["T_2B"]
+    best = sel.candidates(1)[0]
+    t2b = {c.name: c for c in best.checks}["T_2B"]
+    assert t2b.passes is None and t2b.required is None and "motor.peak_torque" in t2b.not_made
+    assert best.passes is None  # every check made passes; one could not be made
+    assert {c.name: c for c in best.checks}["n_1max"].passes is True
 
 
 def test_ratio_not_in_catalog(catalog):
@@ -123,7 +130,7 @@ def test_vectorized_selection_equals_part_by_part(catalog):
     for k in range(len(rows)):
         alone = select_gearbox(example_profile(), rows.rows([k]), Q_(12, "N*m")).candidates()[0]
         assert alone.passes == together[alone.part].passes
-        assert [c["utilization"] for c in alone.checks] == pytest.approx([c["utilization"] for c in together[alone.part].checks])
+        assert [c.utilization for c in alone.checks] == pytest.approx([c.utilization for c in together[alone.part].checks])
 
 
 def test_rank_puts_published_rows_before_illustrative_ones():

@@ -89,6 +89,7 @@ segment = st.tuples(
 
 
 def build(segs, pause=0.0):
+    assume(any(n != 0 for _, _, n, _ in segs))  # a cycle whose every speed is zero is refused
     items = [(p, Q_(t, "s"), Q_(n, "rpm"), Q_(T, "N*m")) for p, t, n, T in segs]
     if pause:
         items.append(("pause", Q_(pause, "s"), None, None))

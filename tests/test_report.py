@@ -51,7 +51,7 @@ def test_prose_sets_symbols_in_math_and_escapes_the_rest():
 
 def test_a_passing_case_names_its_parts(write_case):
     r = build_report(EXAMPLE)
-    assert r.verdict == "PASS" and r.reasons == []
+    assert r.verdict.word == "PASS" and r.reasons == []
     assert ("Gearbox", "NPT035-10") in [(w, p) for w, p, _ in r.chosen]
     assert r.summary_line().startswith("PASS  cases/indexing-table.toml: gearbox NPT035-10")
     # Title block: the case file and each catalog with its SHA-256.
@@ -62,7 +62,7 @@ def test_a_passing_case_names_its_parts(write_case):
 def test_a_failing_case_says_why(write_case):
     # T_1B = 30 N·m: T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m, above every T_2B at ratio 10 (at most 220 N·m).
     r = build_report(write_case(HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML))
-    assert r.verdict == "FAIL"
+    assert r.verdict.word == "FAIL"
     assert r.reasons[0] == "No gearbox of ratio 10 in catalogs/gearboxes.csv passes the S5 checks:"
     assert any(x.startswith("NPT035-10: T_2max <= T_2B: required 378.3 N·m > rated 220 N·m") for x in r.reasons)
     assert r.front_page().count(r"\item") >= 4
@@ -70,7 +70,7 @@ def test_a_failing_case_says_why(write_case):
 
 def test_a_case_that_cannot_be_evaluated_gives_a_fail_report(write_case):
     r = build_report(write_case(HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML))
-    assert r.verdict == "FAIL"
+    assert r.verdict.word == "FAIL"
     assert "no gearbox in catalog" in r.reasons[0] and "has ratio 13" in r.reasons[0]
     assert r.front_page()  # still a title page: title, verdict, the case file and its checksum
     assert "motor.peak" in r.inputs()  # the inputs as read, for the reviewer to see what was asked
@@ -116,8 +116,12 @@ def batch(tmp_path_factory):
     for name, text in cases.items():
         (folder / f"{name}.toml").write_text(text, encoding="utf-8")
     out = folder / "pdf"
-    proc = report(*(folder / f"{n}.toml" for n in cases), "-o", out)
-    assert proc.returncode == 0, proc.stderr
+    # Exit status (spec): a case that cannot be read exits 2 (its PDF still says why) ...
+    broken = report(folder / "broken.toml", "-o", out)
+    assert broken.returncode == 2, broken.stderr
+    # ... and with --strict a verdict that is not PASS exits 1 (without it, 0: the example's run).
+    proc = report(folder / "escape.toml", folder / "failing.toml", "-o", out, "--strict")
+    assert proc.returncode == 1, proc.stderr
     return out, proc
 
 
@@ -166,9 +170,9 @@ def test_failing_case_report_says_fail_and_why(batch):
 def test_batch_builds_one_pdf_each_with_a_progress_bar_and_a_summary(batch):
     out, proc = batch
     assert sorted(p.name for p in out.iterdir()) == ["broken.pdf", "escape.pdf", "failing.pdf"]
-    assert "calc reports" in proc.stderr and "3/3" in proc.stderr
+    assert "calc reports" in proc.stderr and "2/2" in proc.stderr
     lines = proc.stdout.strip().splitlines()
-    assert [line.split()[0] for line in lines] == ["PASS", "FAIL", "FAIL"]
+    assert [line.split()[0] for line in lines] == ["PASS", "FAIL"]
     assert lines[0].endswith(str(out / "escape.pdf"))
 
 

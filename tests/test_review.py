@@ -9,10 +9,15 @@ import pytest
 
 from calc import Q_
 from calc.case import read_case
-from calc.evaluate import evaluate
+from calc.sections import evaluate as evaluate_case
 from calc.review import DesignReview, review_items, with_changes
 
 from .conftest import EXAMPLE
+
+
+def evaluate(case) -> dict:
+    """The results of ``case`` as the JSON contract writes them."""
+    return evaluate_case(case).to_json()
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,427 @@
+"""The accuracy of a case's drive chain (``[accuracy]``): its components given, taken from a catalog
+part (the gearbox or coupling selection's choice with ``part = "selected"``) or measured, the
+stiffness, lost motion, positioning accuracy and repeatability at the output (:mod:`calc.accuracy`,
+E11 to E13), and the required values checked."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..accuracy import ChainAccuracy, PositioningScatter, chain_accuracy, read_positions
+from ..case import Case, Table, once
+from ..catalog import display_path, load_catalog, resolve
+from ..checks import CheckArray
+from ..errors import CalcError
+from ..units import Q_, fmt, sig
+from ..measurement import measurement_path
+from ..stiffness import SIDES, Chain, Component
+from . import coupling, gearbox
+from .common import Verdict, check_json, check_line, number, quantity, quantity_text
+
+NAME = "accuracy"
+KEYS = (
+    "applied_torque", "nominal_torque", "component", "positions",
+    "required_positioning_accuracy", "required_repeatability",
+)
+COMPONENT_KEYS = (
+    "name", "side", "kind", "stiffness", "backlash", "transmission_accuracy", "nominal_torque",
+    "part", "catalog", "hysteresis", "transmission_trace",
+)
+
+
+@dataclass
+class AccuracyCase:
+    """The ``[accuracy]`` table of a case, read and checked, with what its measurements gave."""
+
+    chain: Chain
+    applied_torque: object
+    nominal_torque: object = None  # given in the section; else the chain's
+    loops: dict = field(default_factory=dict)  # component name -> (file, LoopAnalysis)
+    traces: dict = field(default_factory=dict)  # component name -> (file, TransmissionAnalysis)
+    positions: PositioningScatter | None = None
+    required: dict = field(default_factory=dict)  # "positioning_accuracy" | "repeatability" -> Quantity
+
+    def evaluate(self) -> ChainAccuracy:
+        return chain_accuracy(self.chain, self.applied_torque, self.nominal_torque)
+
+
+def read_accuracy(case: Case) -> AccuracyCase:
+    """Read the case's ``[accuracy]`` table; every error names the file and the key."""
+    sec = Table(case.path, NAME, case.sections[NAME], KEYS)
+    applied = sec.quantity("applied_torque", "torque", required=True)
+    nominal = _positive(sec, "nominal_torque", "torque")
+    tables = sec.tables("component", COMPONENT_KEYS)
+    if not tables:
+        raise CalcError(f"{sec.where('component')}: expected one [[accuracy.component]] table per member of the chain, drive to load, found none")
+    ratio = _case_ratio(case)
+    out = AccuracyCase(chain=None, applied_torque=applied, nominal_torque=nominal)
+    components = [_component(case, t, ratio, out) for t in tables]
+    names = [c.name for c in components]
+    for k, name in enumerate(names):
+        if name in names[:k]:
+            raise CalcError(f"{tables[k].where('name')}: the name {name!r} is already used by {tables[names.index(name)].key('name')}")
+    input_side = [t for t, c in zip(tables, components) if c.side == "input"]
+    if input_side and ratio is None:
+        raise CalcError(
+            f"{input_side[0].where('side')}: an input-side component is referred to the output through the gearbox ratio (E11), "
+            "but the case gives no gearbox.ratio"
+        )
+    out.chain = Chain(tuple(components), ratio)
+    if sec.has("positions"):
+        out.positions = read_positions(measurement_path(sec.data["positions"], case.folder, sec.where("positions")))
+    for key, kind in (("required_positioning_accuracy", "angle"), ("required_repeatability", "angle")):
+        q = _positive(sec, key, kind)
+        if q is not None:
+            out.required[key.removeprefix("required_")] = q
+    return out
+
+
+def _positive(sec: Table, key: str, kind: str):
+    q = sec.quantity(key, kind)
+    if q is not None and not q.magnitude > 0:
+        raise CalcError(f"{sec.where(key)}: expected {'an' if kind == 'angle' else 'a'} {kind} above zero, found {sec.data[key]!r}")
+    return q
+
+
+def _case_ratio(case: Case):
+    """The gearbox ratio the chain is referred through: ``gearbox.ratio``, else the named part's."""
+    if case.ratio is not None:
+        return case.ratio
+    if case.gearbox_part is not None:
+        rows, row = _catalog_row(case, case.gearbox_catalog or "gearboxes", case.gearbox_part, f"{case.path}: gearbox")
+        return rows["ratio"][row]
+    return None
+
+
+#: The catalogs a component's ``part`` comes from (``kind``), and the value that follows the
+#: selection of the case instead of naming a part.
+PART_KINDS = ("gearbox", "coupling")
+SELECTED = "selected"
+
+
+def _catalog_row(case: Case, catalog: str, part: str, where: str):
+    from ..gearbox import SCHEMA
+
+    rows = load_catalog(resolve(catalog, case.folder, f"{where}.catalog"), SCHEMA)
+    return rows, rows.index(part, f"{where}.part")
+
+
+def _chosen_row(selection, what: str) -> tuple[int, str]:
+    """The row a ``part = "selected"`` follows: the selection's choice, else its best-ranked
+    candidate (the case then fails on that section already, and the source says so)."""
+    row = int(selection.order[0])
+    part = str(selection.catalog.parts[row])
+    if selection.selected is not None:
+        return row, f"the {what} selection's choice {part}"
+    return row, f"{part}, the best-ranked {what} (none is chosen)"
+
+
+def _gearbox_part(case: Case, t: Table, part: str):
+    """The catalog, row and source text of a gearbox component's ``part``."""
+    if part != SELECTED:
+        rows, row = _catalog_row(case, t.text("catalog", default=case.gearbox_catalog or "gearboxes"), part, t.where("").rstrip("."))
+        return rows, row, f"{display_path(rows.path)} row {rows.lines[row]}"
+    if t.has("catalog"):
+        raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the gearbox selection's catalog; give no catalog")
+    if not gearbox.applies(case):
+        raise CalcError(f"{t.where('part')}: part = \"selected\" follows the gearbox selection, but the case names no gearbox ratio or part")
+    selection = gearbox.gearbox_selection(case)
+    row, chosen = _chosen_row(selection, "gearbox")
+    rows = selection.catalog
+    return rows, row, f"{chosen}, {display_path(rows.path)} row {rows.lines[row]}"
+
+
+def _coupling_part(case: Case, t: Table, part: str):
+    """Part name, stiffness, side and source text of a coupling component's ``part``: a bellows or
+    safety coupling of the catalog (torsionally stiff and free of backlash by design)."""
+    if part == SELECTED:
+        if t.has("catalog"):
+            raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the coupling selection's catalog; give no catalog")
+        if not coupling.applies(case):
+            raise CalcError(f"{t.where('part')}: part = \"selected\" with kind = \"coupling\" follows the coupling selection, but the case has no [coupling]")
+        cc, selection = coupling.coupling_selection(case)
+        row, chosen = _chosen_row(selection, "coupling")
+        rows, side = selection.catalog, cc.side or "output"
+    else:
+        from ..coupling import SCHEMA
+
+        rows = load_catalog(resolve(t.text("catalog", default="couplings"), case.folder, t.where("catalog")), SCHEMA)
+        row = rows.index(part, t.where("part"))
+        chosen, side = str(rows.parts[row]), None
+    name, kind_of = str(rows.parts[row]), str(rows.text["type"][row])
+    where = f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({name})"
+    if kind_of not in ("bellows", "safety"):
+        raise CalcError(f"{where}: a {kind_of} coupling's twist is not one catalog stiffness; give its stiffness and backlash instead of a part")
+    stiffness = rows["C_T"][row]
+    if np.isnan(stiffness.magnitude):
+        raise CalcError(f"{where}, column C_T: expected a value, found an empty cell")
+    return name, stiffness, side, f"{chosen}, {display_path(rows.path)} row {rows.lines[row]}"
+
+
+def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
+    """One ``[[accuracy.component]]``: from its keys, a catalog part (or the selection's choice),
+    or measurements."""
+    part = t.text("part")
+    kind = t.text("kind", default="gearbox")
+    if kind not in PART_KINDS:
+        raise CalcError(f"{t.where('kind')}: expected one of {', '.join(PART_KINDS)}, found {kind!r}")
+    if t.has("kind") and part is None:
+        raise CalcError(f"{t.where('kind')}: kind says which catalog a part comes from; give part as well")
+    name = t.text("name", required=part is None, default=part)
+    side = t.text("side", required=part is None, default="output")
+    if side not in SIDES:
+        raise CalcError(f"{t.where('side')}: expected input or output, found {side!r}")
+    stiffness = _positive(t, "stiffness", "stiffness")
+    backlash = t.quantity("backlash", "angle")
+    if backlash is not None and not backlash.magnitude >= 0:
+        raise CalcError(f"{t.where('backlash')}: expected an angle of zero or more, found {t.data['backlash']!r}")
+    accuracy = t.quantity("transmission_accuracy", "angle")
+    if accuracy is not None and not accuracy.magnitude >= 0:
+        raise CalcError(f"{t.where('transmission_accuracy')}: expected an angle of zero or more, found {t.data['transmission_accuracy']!r}")
+    nominal = _positive(t, "nominal_torque", "torque")
+    sources = []
+    own_ratio = ratio
+    if part is not None:
+        for key in ("stiffness", "backlash", "nominal_torque"):
+            if t.has(key):
+                raise CalcError(f"{t.where(key)}: the part {part!r} gives its {key} from the catalog; give either part or {key}")
+    if part is not None and kind == "coupling":
+        chosen, stiffness, coupling_side, source = _coupling_part(case, t, part)
+        if coupling_side is not None and t.has("side") and side != coupling_side:
+            raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side (coupling.side), found {side!r}")
+        side = coupling_side or side
+        backlash = Q_(0.0, "arcmin")
+        name = chosen if name == SELECTED else name
+        sources.append(source)
+    elif part is not None:
+        if side != "output":
+            raise CalcError(f"{t.where('side')}: a gearbox's catalog figures are referred to its output, so the part {part!r} sits on the output side, found {side!r}")
+        rows, row, source = _gearbox_part(case, t, part)
+        if name == SELECTED:
+            name = str(rows.parts[row])
+        own_ratio = rows["ratio"][row]
+        if ratio is not None and not np.isclose(own_ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
+            raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {own_ratio.m_as(''):g}, but the case's gearbox ratio is {ratio.m_as(''):g}")
+        stiffness, backlash, nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]
+        for column, q in (("C_t21", stiffness), ("backlash", backlash)):
+            if np.isnan(q.magnitude):
+                raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), column {column}: expected a value, found an empty cell")
+        sources.append(source)
+    elif t.has("catalog"):
+        raise CalcError(f"{t.where('catalog')}: a catalog is read only for a part; give part as well")
+    if t.has("hysteresis"):
+        from ..hysteresis import analyze_loop, read_loop
+
+        for key in ("stiffness", "backlash"):
+            if t.has(key):
+                raise CalcError(f"{t.where(key)}: the measured loop gives the {key}; give either hysteresis or {key}")
+        if nominal is None:
+            raise CalcError(f"{t.where('nominal_torque')}: a measured loop is analysed at 50 % to 100 % and ±3 % of the nominal torque (E12), found none")
+        path = measurement_path(t.data["hysteresis"], case.folder, t.where("hysteresis"))
+        analysis = analyze_loop(read_loop(path), nominal)
+        stiffness, backlash = analysis.stiffness, analysis.backlash
+        out.loops[name] = (display_path(path), analysis)
+        sources.append(f"measured loop {display_path(path)}")
+    if t.has("transmission_trace"):
+        from ..transmission import analyze_trace, read_trace
+
+        if accuracy is not None:
+            raise CalcError(f"{t.where('transmission_accuracy')}: the trace gives the transmission accuracy; give either transmission_trace or transmission_accuracy")
+        if own_ratio is None:
+            raise CalcError(f"{t.where('transmission_trace')}: the transmission error is reckoned through the gearbox ratio, but the case gives no gearbox.ratio")
+        path = measurement_path(t.data["transmission_trace"], case.folder, t.where("transmission_trace"))
+        analysis = analyze_trace(read_trace(path), own_ratio)
+        accuracy = analysis.accuracy
+        out.traces[name] = (display_path(path), analysis)
+        sources.append(f"trace {display_path(path)}")
+    if stiffness is None:
+        raise CalcError(f"{t.where('stiffness')}: expected a stiffness such as \"1.3 N*m/arcmin\" (or a part, or a measured hysteresis loop), found none")
+    if backlash is None:
+        raise CalcError(f"{t.where('backlash')}: expected an angle such as \"3 arcmin\" (\"0 arcmin\" for none), found none")
+    return Component(name, side, stiffness, backlash, accuracy, nominal, source="; ".join(sources) or "case")
+
+
+def accuracy_of(case: Case) -> tuple:
+    """The ``[accuracy]`` section as read and evaluated, ``(spec, ChainAccuracy)``; computed once per case."""
+
+    def compute():
+        spec = read_accuracy(case)
+        try:
+            return spec, spec.evaluate()
+        except CalcError as exc:
+            raise CalcError(f"{case.path}: accuracy.{exc}") from None
+
+    return once(case, "accuracy", compute)
+
+
+def requirement_checks(spec: AccuracyCase, a: ChainAccuracy) -> list[CheckArray]:
+    """The chain's positioning accuracy and repeatability against the values the case requires,
+    under the package's one pass rule."""
+    values = {"positioning_accuracy": a.positioning_accuracy, "repeatability": a.repeatability}
+    return [
+        CheckArray(name, "", f"{name} <= required", values[name].reshape(1), limit.reshape(1), "arcmin")
+        for name, limit in spec.required.items()
+    ]
+
+
+@dataclass
+class AccuracyResult:
+    """The chain as read, its accuracy at the output, and the required values checked."""
+
+    inputs: AccuracyCase
+    accuracy: ChainAccuracy
+
+    def to_json(self, candidates: int | None = None) -> dict:
+        """The ``accuracy`` section of the results (``spec/case-format.md``): ``C_total`` referred to
+        the output, ``lost_motion``, ``positioning_accuracy``, ``repeatability`` and the
+        ``components`` with their ``stiffness_at_output`` and ``backlash_at_output``, each quantity as
+        ``{"value", "unit"}``; measured loops, traces and positioning records where the case names them.
+
+        >>> from calc.case import read_case
+        >>> from calc.catalog import CATALOG_DIR
+        >>> r = evaluate(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml")).to_json()
+        >>> round(r["C_total"]["value"], 2), r["C_total"]["unit"], [c["side"] for c in r["components"]]
+        (21.35, 'N*m/arcmin', ['input', 'output'])
+        """
+        spec, a = self.inputs, self.accuracy
+        c = a.chain
+        shares = c.compliance_shares
+        twist = c.twist(a.applied_torque)
+        components = []
+        for k, comp in enumerate(c.components):
+            ta = c.transmission_accuracy_at_output[k]
+            item = {
+                "name": comp.name,
+                "side": comp.side,
+                "source": comp.source,
+                "stiffness_at_output": quantity(c.stiffness_at_output[k], "N*m/arcmin"),
+                "backlash_at_output": quantity(c.backlash_at_output[k], "arcmin"),
+                "transmission_accuracy_at_output": None if np.isnan(ta.magnitude) else quantity(ta, "arcsec"),
+                "share_of_compliance": number(shares[k]),
+                "twist_at_applied_torque": quantity(twist[k], "arcmin"),
+            }
+            if comp.name in spec.loops:
+                path, loop = spec.loops[comp.name]
+                item["measured_loop"] = {
+                    "file": path,
+                    "stiffness_positive": quantity(loop.stiffness_positive, "N*m/arcmin"),
+                    "stiffness_negative": quantity(loop.stiffness_negative, "N*m/arcmin"),
+                    "backlash": quantity(loop.backlash, "arcmin"),
+                    "lost_motion": quantity(loop.lost_motion, "arcmin"),
+                }
+            if comp.name in spec.traces:
+                path, trace = spec.traces[comp.name]
+                item["measured_trace"] = {"file": path, "transmission_accuracy": quantity(trace.accuracy, "arcsec"), "direction": trace.governing}
+            components.append(item)
+        out = {
+            "applied_torque": quantity(a.applied_torque, "N*m"),
+            "ratio": None if c.ratio is None else number(c.ratio.m_as("")),
+            "nominal_torque": None if a.nominal_torque is None else quantity(a.nominal_torque, "N*m"),
+            "nominal_torque_from": "accuracy.nominal_torque" if spec.nominal_torque is not None else c.nominal_torque_from,
+            "C_total": quantity(c.stiffness, "N*m/arcmin"),
+            "backlash": quantity(c.backlash, "arcmin"),
+            "transmission_accuracy": quantity(c.transmission_accuracy, "arcsec"),
+            "transmission_accuracy_from": c.transmission_accuracy_from,
+            "lost_motion": quantity(a.lost_motion, "arcmin"),
+            "positioning_rule": "|T| <= 3 % of T_N: phi_TA + j_t" if a.low_torque else "|T| > 3 % of T_N: phi_TA + |T| / C",
+            "positioning_accuracy": quantity(a.positioning_accuracy, "arcmin"),
+            "repeatability": quantity(a.repeatability, "arcmin"),
+            "repeatability_is_bound": a.repeatability_is_bound,
+            "components": components,
+        }
+        if spec.positions is not None:
+            p = spec.positions
+            out["measured_positioning"] = {
+                "file": display_path(p.source),
+                "targets": p.targets,
+                "approaches": len(p.error.magnitude),
+                "accuracy": quantity(p.accuracy, "arcmin"),
+                "repeatability": quantity(p.repeatability, "arcmin"),
+            }
+        checks = [c.at(0) for c in requirement_checks(spec, a)]
+        if checks:
+            # An accuracy check lists the chain's value and the limit the case requires of it.
+            out["checks"] = [
+                {
+                    "name": k.name,
+                    "criterion": k.criterion,
+                    "value": quantity(k.required, k.unit, f"accuracy.{k.name}"),
+                    "required": quantity(k.rated, k.unit, f"accuracy.required_{k.name}"),
+                    "utilization": number(k.utilization, f"accuracy.{k.name}"),
+                    "passes": k.passes,
+                    "governs": True,
+                }
+                for k in checks
+            ]
+            out["passes"] = all(k.passes for k in checks)
+        return out
+
+    def summary_lines(self, candidates: int | None = None) -> list[str]:
+        """The accuracy results as lines of the terminal report: the chain table, then C_total, lost
+        motion, positioning accuracy with the rule that applied, and repeatability, each with its
+        errata entry; measurements and checks after."""
+        s = self.to_json()
+        ratio = "" if s["ratio"] is None else f", ratio {s['ratio']:g}"
+        lines = [f"Accuracy at the output (applied torque {quantity_text(s['applied_torque'])}{ratio}; E11 to E13):"]
+        width = max(len(c["name"]) for c in s["components"])
+        lines.append(f"  {'component':<{width}}  side    {'stiffness at output':>20}  {'share of twist':>14}  {'backlash at output':>18}  source")
+        for c in s["components"]:
+            lines.append(
+                f"  {c['name']:<{width}}  {c['side']:<6}  {quantity_text(c['stiffness_at_output']):>20}  {100 * c['share_of_compliance']:>12.1f} %"
+                f"  {quantity_text(c['backlash_at_output']):>18}  {c['source']}"
+            )
+        ta_from = ", ".join(s["transmission_accuracy_from"]) or "no component gives one"
+        t_n = "" if s["nominal_torque"] is None else f", T_N = {quantity_text(s['nominal_torque'])} ({s['nominal_torque_from']})"
+        lines += [
+            f"  C_total = {quantity_text(s['C_total'])}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
+            f"  Lost motion = j_t + |T| / C = {quantity_text(s['lost_motion'])} (E12)",
+            f"  Positioning accuracy ({s['positioning_rule']}{t_n}) = {quantity_text(s['positioning_accuracy'])} (E13)",
+            f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {quantity_text(s['repeatability'])} "
+            f"({'bounded by the lost motion under torque' if s['repeatability_is_bound'] else 'the backlash at T = 0'}, E13)",
+        ]
+        for c in s["components"]:
+            if "measured_loop" in c:
+                m = c["measured_loop"]
+                lines.append(
+                    f"  Measured loop of {c['name']} ({m['file']}): C = {quantity_text(m['stiffness_positive'])} / {quantity_text(m['stiffness_negative'])} "
+                    f"(+ / -), backlash {quantity_text(m['backlash'])}, lost motion ±3 % {quantity_text(m['lost_motion'])}"
+                )
+            if "measured_trace" in c:
+                m = c["measured_trace"]
+                lines.append(f"  Measured trace of {c['name']} ({m['file']}): transmission accuracy {quantity_text(m['transmission_accuracy'])} ({m['direction']})")
+        if "measured_positioning" in s:
+            m = s["measured_positioning"]
+            lines.append(
+                f"  Measured positioning ({m['file']}, {m['approaches']} approaches to {m['targets']} targets): "
+                f"accuracy {quantity_text(m['accuracy'])}, repeatability {quantity_text(m['repeatability'])}"
+            )
+        for k in s.get("checks", []):
+            lines.append(
+                f"  {k['name']:<22} {quantity_text(k['value']):>12} required <= {quantity_text(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
+            )
+        return lines
+
+    def verdict(self) -> Verdict | None:
+        """The required values govern; a chain without requirements decides nothing."""
+        checks = [c.at(0) for c in requirement_checks(self.inputs, self.accuracy)]
+        if not checks:
+            return None
+        return Verdict(
+            all(k.passes for k in checks),
+            [
+                f"The accuracy requirement is not met: {k.name} {fmt(k.required, k.unit)} > required {fmt(k.rated, k.unit)}, "
+                f"{sig(100 * (k.utilization - 1), 3)} % over"
+                for k in checks
+                if not k.passes
+            ],
+        )
+
+
+def applies(case: Case) -> bool:
+    return NAME in case.sections
+
+
+def evaluate(case: Case) -> AccuracyResult:
+    return AccuracyResult(*accuracy_of(case))

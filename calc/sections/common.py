@@ -1,0 +1,113 @@
+"""What every section of the case layer shares: quantities as the JSON contract writes them, the
+verdict of a section, and how many candidates a listing shows.
+
+A section module (:mod:`calc.sections`) has the same shape for every section: ``NAME`` (its table
+in the case file and its key in the results), ``applies(case)``, ``evaluate(case)`` returning its
+result type, and that type's ``to_json(candidates)``, ``summary_lines(candidates)`` and
+``verdict()``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..checks import Check
+from ..errors import CalcError
+from ..units import magnitude_in, pretty_unit, sig
+
+#: Candidates listed by default in the JSON and the text summary; ``--all-candidates`` lists all.
+SHOWN_CANDIDATES = 20
+#: Candidates whose reasons a failing verdict lists, best first.
+REASONED_CANDIDATES = 3
+
+
+def quantity(q, unit: str, key: str = "result") -> dict:
+    """A scalar quantity as the contract writes it: ``{"value": 21.3, "unit": "N*m"}``; NaN (no
+    value) becomes null. An infinite value is an error naming the result: JSON never holds one."""
+    return {"value": number(magnitude_in(q, unit), key), "unit": unit}
+
+
+def number(x, key: str = "result"):
+    """A float for JSON; NaN (no value) becomes null, infinity is an error."""
+    x = float(x)
+    if math.isnan(x):
+        return None
+    if math.isinf(x):
+        raise CalcError(f"{key}: the calculation overflows (found {x}); check the inputs it comes from for values out of scale")
+    return x
+
+
+def quantity_text(d: dict | None) -> str:
+    """A result quantity ``{"value", "unit"}`` as a reader writes it (``151.3 N·m``); n/a for none."""
+    return "n/a" if d is None or d["value"] is None else f"{sig(d['value'])} {pretty_unit(d['unit'])}".rstrip()
+
+
+def check_json(check: Check) -> dict:
+    """A :class:`calc.checks.Check` as the contract writes it."""
+    out = {
+        "name": check.name,
+        "mode": check.mode,
+        "governs": check.governs,
+        "criterion": check.criterion,
+        "required": None if check.required is None else quantity(check.required, check.unit, check.name),
+        "rated": quantity(check.rated, check.unit, check.name),
+        "utilization": None if check.utilization is None else number(check.utilization, check.name),
+        "passes": check.passes,
+    }
+    if check.mode is None:
+        del out["mode"]
+    if check.not_made is not None:
+        out["not_made"] = check.not_made
+    return out
+
+
+def check_line(check: Check, width: int = 22) -> str:
+    """A check as one line of the text summary."""
+    util = "n/a" if check.utilization is None else f"{check.utilization:.2f}"
+    verdict = "not checked" if check.passes is None else ("ok" if check.passes else "FAIL")
+    mark = "" if check.governs else "  (for information)"
+    required = "n/a" if check.required is None else f"{sig(magnitude_in(check.required, check.unit))} {pretty_unit(check.unit)}"
+    rated = f"{sig(magnitude_in(check.rated, check.unit))} {pretty_unit(check.unit)}"
+    return f"{check.criterion:<{width}} required {required:>12}  rated {rated:>12}  utilization {util:>5}  {verdict}{mark}"
+
+
+def no_candidate_passes(sentence: str, parts, order, reasons) -> list[str]:
+    """The reasons of a verdict where no candidate passes: ``sentence``, then why the best
+    :data:`REASONED_CANDIDATES` fail (``reasons(row)``: a list of texts)."""
+    return [sentence] + [f"{parts[row]}: {'; '.join(reasons(row))}" for row in order[:REASONED_CANDIDATES]]
+
+
+def shown(order, candidates: int | None):
+    """The first ``candidates`` of a ranking (all for None)."""
+    return order if candidates is None else order[:candidates]
+
+
+@dataclass
+class Verdict:
+    """Whether a section (or the whole case) passes: True, False, or None when a governing check
+    could not be made; ``reasons`` say which check fails and by how much, or what is missing."""
+
+    passes: bool | None = True
+    reasons: list = field(default_factory=list)
+
+    @staticmethod
+    def combine(verdicts: list["Verdict"], nothing: str) -> "Verdict":
+        """One verdict from several: false when one fails, else null when one could not be
+        decided, else true; ``nothing`` is the reason when no section decides anything."""
+        deciding = [v for v in verdicts if v is not None]
+        if not deciding:
+            return Verdict(None, [nothing])
+        reasons = [r for v in deciding for r in v.reasons]
+        if any(v.passes is False for v in deciding):
+            return Verdict(False, reasons)
+        if any(v.passes is None for v in deciding):
+            return Verdict(None, reasons)
+        return Verdict(True, [])
+
+    def to_json(self) -> dict:
+        return {"passes": self.passes, "reasons": list(self.reasons)}
+
+    @property
+    def word(self) -> str:
+        return {True: "PASS", False: "FAIL", None: "NOT DECIDED"}[self.passes]

@@ -1,0 +1,248 @@
+"""The coupling of a case (``[coupling]``): its inputs, given or taken from the rest of the case
+(``side = "input"``, E8), the candidates checked and ranked (:mod:`calc.coupling`, E7 to E10) and
+the ordering text of the one chosen."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..case import Case, Table, once
+from ..catalog import Catalog, display_path, load_catalog, resolve
+from ..coupling import (
+    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TYPES, CouplingSelection, J_load_at_input, check_types, f_e_min, order_lines,
+    select_coupling,
+)
+from ..errors import CalcError
+from ..fits import parse_bore
+from ..gearbox import n_1
+from ..units import Q_, fmt, sig
+from . import gearbox
+from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity, quantity_text, shown
+
+NAME = "coupling"
+KEYS = (
+    "catalog", "type", "part", "side", "accel_torque", "drive_inertia", "load_inertia", "service_factor", "temperature",
+    "excitation_frequency", "speed", "shaft_1", "shaft_2", "disengagement_torque", "shaft_distance",
+)
+
+
+@dataclass
+class CouplingCase:
+    """The ``[coupling]`` section as read: the candidates and the arguments of
+    :func:`select_coupling`."""
+
+    catalog: Catalog
+    type: str | None
+    side: str | None  # input: between motor and gearbox; output: between gearbox and load
+    inputs: dict
+    bores: tuple
+    derived: list  # what was taken from the rest of the case (side = "input"), as sentences
+
+
+def read(case: Case) -> CouplingCase:
+    """Read ``[coupling]`` key by key; errors name the file and the key."""
+    s = Table(case.path, NAME, case.sections[NAME], KEYS)
+    catalog = load_catalog(resolve(s.text("catalog", default="couplings"), case.folder, s.where("catalog")), SCHEMA)
+    check_types(catalog)
+    wanted = s.text("type")
+    if wanted is not None and wanted not in TYPES:
+        raise CalcError(f"{s.where('type')}: unknown coupling type {wanted!r}; expected one of {', '.join(TYPES)}")
+    part = s.text("part")
+    if part is not None:
+        row = catalog.index(part, s.where("part"))
+        if wanted is not None and catalog.text["type"][row] != wanted:
+            raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, but coupling.type is {wanted!r}")
+        catalog = catalog.rows([row])
+    elif wanted is not None:
+        mask = catalog.text["type"] == wanted
+        if not mask.any():
+            raise CalcError(f"{s.where('type')}: the catalog {display_path(catalog.path)} has no {wanted} coupling")
+        catalog = catalog.rows(mask)
+    side = s.text("side")
+    if side is not None and side not in SIDES:
+        raise CalcError(f"{s.where('side')}: expected one of {', '.join(SIDES)}, found {side!r}")
+    derived = _from_the_case(case, s) if side == "input" else {}
+    for key in ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "shaft_1", "shaft_2"):
+        if not s.has(key) and key not in derived:
+            hint = " (with side = \"input\" it comes from [motor], [load] and the gearbox when they give it)" if side == "input" else ""
+            raise CalcError(f"{s.where(key)}: expected a value{hint}, found none")
+    bores = tuple(parse_bore(s.data[key], s.where(key)) for key in ("shaft_1", "shaft_2"))
+
+    def given_or_derived(key, kind):
+        return s.quantity(key, kind) if s.has(key) else derived.get(key, (None, ""))[0]
+
+    inputs = dict(
+        accel_torque=given_or_derived("accel_torque", "torque"),
+        drive_inertia=given_or_derived("drive_inertia", "inertia"),
+        load_inertia=given_or_derived("load_inertia", "inertia"),
+        excitation_frequency=s.quantity("excitation_frequency", "frequency"),
+        service_factor=s.quantity("service_factor", "dimensionless", default=Q_(DEFAULT_SERVICE_FACTOR, "")),
+        temperature=s.quantity("temperature", "temperature"),
+        speed=given_or_derived("speed", "speed"),
+        disengagement_torque=s.quantity("disengagement_torque", "torque"),
+        shaft_distance=s.quantity("shaft_distance", "length"),
+    )
+    notes = [text for key, (_, text) in derived.items() if not s.has(key)]
+    return CouplingCase(catalog, wanted, side, inputs, bores, notes)
+
+
+def _from_the_case(case: Case, s: Table) -> dict:
+    """What a coupling between motor and gearbox can take from the rest of the case, by key:
+    ``(quantity, sentence)``. ``load_inertia`` is the load reflected to the input plus the gearbox's
+    J_1 (E8), ``speed`` the highest input speed ``n_2max · i``, ``accel_torque`` the motor's peak
+    torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given."""
+    out = {}
+    if case.motor_peak_torque is not None:
+        out["accel_torque"] = (case.motor_peak_torque, f"accel_torque M_a = motor.peak_torque = {fmt(case.motor_peak_torque, 'N*m')}")
+    if case.motor_inertia is not None:
+        out["drive_inertia"] = (case.motor_inertia, f"drive_inertia J_drive = motor.inertia = {fmt(case.motor_inertia, 'kg*cm**2')}")
+    if not gearbox.applies(case):
+        return out
+    selection = gearbox.gearbox_selection(case)
+    row = selection.order[0]
+    part = str(selection.catalog.parts[row])
+    i = selection.catalog["ratio"][row]
+    speed = n_1(n_2=case.profile.n_2max, i=i)
+    out["speed"] = (speed, f"speed = n_2max · i = {fmt(case.profile.n_2max, 'rpm')} · {sig(i.m_as(''))} = {fmt(speed, 'rpm')}")
+    J_1 = selection.catalog["J_1"][row]
+    if case.load_inertia is not None and not np.isnan(J_1.magnitude):
+        J = J_load_at_input(J_L=case.load_inertia, i=i, J_1=J_1)
+        which = part if selection.passes[row] else f"{part}, the best-ranked gearbox (none passes)"
+        out["load_inertia"] = (
+            J,
+            f"load_inertia J_load = J_L / i² + J_1 = {fmt(case.load_inertia, 'kg*cm**2')} / {sig(i.m_as(''))}² + "
+            f"{fmt(J_1, 'kg*cm**2')} ({which}) = {fmt(J, 'kg*cm**2')} (E8)",
+        )
+    return out
+
+
+def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:
+    """The ``[coupling]`` section as read and its candidates checked and ranked; computed once per case."""
+
+    def compute():
+        cc = read(case)
+        where = f"{case.path}: coupling"
+        return cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], where=where, **cc.inputs)
+
+    return once(case, "coupling", compute)
+
+
+@dataclass
+class CouplingResult:
+    """The coupling section as read, its candidates checked and ranked, and the part chosen."""
+
+    inputs: CouplingCase
+    selection: CouplingSelection
+
+    @property
+    def selected(self) -> str | None:
+        return self.selection.selected
+
+    def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
+        """The ``coupling`` results of the JSON contract."""
+        cc, sel = self.inputs, self.selection
+        types = cc.catalog.text["type"]
+        notes = [f"taken from the case: {text}" for text in cc.derived] + list(sel.notes)
+        for k, bore in enumerate(cc.bores, start=1):
+            if bore.tolerance is None:
+                notes.append(f"coupling.shaft_{k} gives no tolerance; state one when ordering (the source asks for shaft sizes and tolerances)")
+        listed = []
+        for row in shown(sel.order, candidates):
+            listed.append(
+                {
+                    "part": str(cc.catalog.parts[row]),
+                    "type": str(types[row]),
+                    "illustrative": bool(cc.catalog.illustrative[row]),
+                    "passes": bool(sel.passes[row]),
+                    "f_e": quantity(sel.f_e[row], "Hz"),
+                    "C_T": quantity(sel.C_T[row], "N*m/rad"),
+                    "temperature_factor": float(sel.temperature_factor[row]),
+                    "required_torque": quantity(sel.M_Nt[row], "N*m"),
+                    "checks": [check_json(c.at(row)) for c in sel.checks if c.applies_to(row)],
+                    "reasons": sel.reasons(row),
+                }
+            )
+        selected = sel.selected
+        order = None
+        if selected is not None:
+            row = sel.order[0]
+            t = str(types[row])
+            order = "; ".join(
+                order_lines(
+                    selected, t, cc.bores,
+                    cc.inputs["disengagement_torque"] if t == "safety" else None,
+                    cc.inputs["shaft_distance"] if t == "line-shaft" else None,
+                )
+            )
+        temperature = cc.inputs["temperature"]
+        return {
+            "catalog": display_path(cc.catalog.path),
+            "catalog_sha256": cc.catalog.sha256,
+            "type": cc.type,
+            "M_N": quantity(sel.M_N, "N*m"),
+            "service_factor": float(cc.inputs["service_factor"].m_as("")),
+            "T_op": quantity(sel.T_op, "N*m"),
+            "temperature": None if temperature is None else quantity(temperature, "degC"),
+            "temperature_factor": float(sel.temperature_factor[types == "elastomer"][0]) if (types == "elastomer").any() else 1.0,
+            "f_e_min": quantity(f_e_min(f_er=cc.inputs["excitation_frequency"]), "Hz"),
+            "bores": [
+                {
+                    "key": f"shaft_{k}",
+                    "text": bore.text,
+                    "nominal": quantity(bore.nominal, "mm"),
+                    "tolerance": bore.tolerance,
+                    "limits": bore.limits_text(),
+                    "lower": None if bore.lower is None else quantity(bore.lower, "mm"),
+                    "upper": None if bore.upper is None else quantity(bore.upper, "mm"),
+                    "keyway": None if bore.keyway is None else quantity(bore.keyway, "mm"),
+                }
+                for k, bore in enumerate(cc.bores, start=1)
+            ],
+            "ranking": "passing first; published rows before illustrative ones; then smallest rated torque T_KN; then lowest worst utilization",
+            "candidate_count": len(sel.order),
+            "candidates": listed,
+            "selected": selected,
+            "order": order,
+            "notes": notes,
+        }
+
+    def summary_lines(self, candidates: int | None = SHOWN_CANDIDATES) -> list[str]:
+        """The coupling results as lines of the terminal summary."""
+        section = self.to_json(candidates)
+        lines = [
+            f"Coupling candidates (catalog {section['catalog']}{', type ' + section['type'] if section['type'] else ''}):",
+            f"  M_N = {quantity_text(section['M_N'])} (S_A = {section['service_factor']:g}, E8); temperature factor "
+            f"{section['temperature_factor']:g} (E9); 2 f_er = {quantity_text(section['f_e_min'])} (E7)",
+        ]
+        for b in section["bores"]:
+            lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
+        for c in section["candidates"]:
+            verdict = "PASS" if c["passes"] else "FAIL"
+            lines.append(f"  {verdict}  {c['part']} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {quantity_text(c['f_e'])}")
+            row = self.selection.catalog.index(c["part"], "coupling.part")
+            lines += [f"        {check_line(k.at(row), 20)}" for k in self.selection.checks if k.applies_to(row)]
+            for r in c["reasons"]:
+                lines.append(f"        rejected: {r}")
+        if section["candidate_count"] > len(section["candidates"]):
+            lines.append(f"  ... {section['candidate_count'] - len(section['candidates'])} more candidates (--all-candidates lists them)")
+        lines.append(f"Selected coupling: {section['selected'] or 'none passes'}")
+        if section["order"]:
+            lines.append(f"Order: {section['order']}")
+        lines += [f"Note: {n}" for n in section["notes"]]
+        return lines
+
+    def verdict(self) -> Verdict:
+        sel = self.selection
+        if sel.selected is not None:
+            return Verdict(True)
+        return Verdict(False, no_candidate_passes("No coupling passes its checks:", sel.catalog.parts, sel.order, sel.reasons))
+
+
+def applies(case: Case) -> bool:
+    return NAME in case.sections
+
+
+def evaluate(case: Case) -> CouplingResult:
+    return CouplingResult(*coupling_selection(case))

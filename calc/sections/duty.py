@@ -1,0 +1,103 @@
+"""The load cycle of a case (``[[profile]]``): its duty (E3), its S1 means (E1, E2) and its S5
+values (E4, E5), which every other section builds on."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..case import Case, Table
+from ..errors import CalcError
+from ..gearbox import shock_factor
+from ..profile import Duty, Profile, T_2m, Z_h, duty, n_2m
+from . import gearbox
+from .common import Verdict, quantity, quantity_text
+
+NAME = "profile"
+KEYS = ("phase", "duration", "speed", "torque")
+
+
+def read(top: Table) -> Profile:
+    """The ``[[profile]]`` segments of a case, checked; errors name the segment and key."""
+    if not top.has("profile"):
+        raise CalcError(f"{top.path}: profile: expected one [[profile]] table per segment, found none")
+    segments = [
+        (
+            seg.text("phase", required=True),
+            seg.quantity("duration", "time", required=True),
+            seg.quantity("speed", "speed"),
+            seg.quantity("torque", "torque"),
+        )
+        for seg in top.tables("profile", KEYS)
+    ]
+    return Profile.from_segments(segments, where=f"{top.path}: profile")
+
+
+@dataclass
+class DutyResult:
+    """The duty, the S1 means and the S5 values of the load cycle."""
+
+    profile: Profile
+    duty: Duty
+    n2m: object
+    T2m: object
+    Zh: object
+    fs: float
+    T2max: object = None  # of the best-ranked gearbox, when the case has one and the motor's peak torque
+    T2max_part: str | None = None
+
+    def to_json(self, candidates: int | None = None) -> dict:
+        d = self.duty
+        out = {
+            "duty": {
+                "t_on": quantity(d.t_on, "s", "duty.t_on"),
+                "t_cycle": quantity(d.t_cycle, "s", "duty.t_cycle"),
+                "ED": quantity(d.ED, "percent", "duty.ED"),
+                "mode": d.mode,
+            },
+            "continuous": {
+                "n2m": quantity(self.n2m, "rpm", "continuous.n2m"),
+                "T2m": quantity(self.T2m, "N*m", "continuous.T2m"),
+                "governs": d.mode == "S1",
+            },
+            "cyclic": {
+                "Zh": quantity(self.Zh, "1/hour", "cyclic.Zh"),
+                "fs": self.fs,
+                "n2max": quantity(self.profile.n_2max, "rpm", "cyclic.n2max"),
+                "governs": d.mode == "S5",
+            },
+        }
+        if self.T2max is not None:
+            out["cyclic"]["T2max"] = quantity(self.T2max, "N*m", "cyclic.T2max")
+            out["cyclic"]["T2max_part"] = self.T2max_part
+        return out
+
+    def summary_lines(self, candidates: int | None = None) -> list[str]:
+        j = self.to_json()
+        d, s1, s5 = j["duty"], j["continuous"], j["cyclic"]
+        return [
+            f"Duty cycle: t_on = {quantity_text(d['t_on'])}, t_cycle = {quantity_text(d['t_cycle'])}, ED = {quantity_text(d['ED'])} -> mode {d['mode']} (E3)",
+            f"S1{' (governs)' if s1['governs'] else ''}: n_2m = {quantity_text(s1['n2m'])}, T_2m = {quantity_text(s1['T2m'])}",
+            f"S5{' (governs)' if s5['governs'] else ''}: Z_h = {quantity_text(s5['Zh'])}, f_s = {self.fs:g}, n_2max = {quantity_text(s5['n2max'])}"
+            + (f", T_2max = {quantity_text(s5['T2max'])} ({s5['T2max_part']})" if "T2max" in s5 else ""),
+        ]
+
+    def verdict(self) -> Verdict | None:
+        """The load cycle has no checks of its own."""
+        return None
+
+
+def applies(case: Case) -> bool:
+    return True
+
+
+def evaluate(case: Case) -> DutyResult:
+    p = case.profile
+    seg = p.moving_values()
+    zh = Z_h(t_cycle=p.t_cycle)
+    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh)))
+    if gearbox.applies(case):
+        selection = gearbox.gearbox_selection(case)
+        if selection.T_2max is not None:
+            row = selection.order[0]
+            out.T2max, out.T2max_part = selection.T_2max[row], str(selection.catalog.parts[row])
+    return out
