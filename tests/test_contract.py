@@ -1,0 +1,181 @@
+"""The second round of the contract (spec/case-format.md, "What every run promises"): one verdict,
+partial cases, exit status, finite numbers, bounded candidate lists and ``part = "selected"``.
+
+Numbers are worked by hand from the example's load cycle (tests/conftest.py): ED 50 % (S5), Z_h =
+1800 /h so f_s = 1.3 (E4); NPT035-10 has T_2B = 220 N·m, eta = 0.97, n_1max = 6000 rpm.
+"""
+
+import json
+
+import pytest
+
+from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, run
+
+COUPLING_TOML = """
+[coupling]
+type = "bellows"
+side = "input"
+service_factor = 2.5
+excitation_frequency = "150 Hz"
+shaft_1 = "19 mm k6"
+shaft_2 = "16 mm h7"
+"""
+
+
+def results(capsys, path, *options):
+    code, out, err = run(capsys, path, "--json", *options)
+    assert code == 0, err
+    return json.loads(out)
+
+
+def test_a_passing_case_has_a_true_verdict(capsys):
+    r = results(capsys, EXAMPLE)
+    assert r["verdict"] == {"passes": True, "reasons": []}
+
+
+def test_a_failing_case_says_which_check_and_by_how_much(capsys, write_case):
+    # T_1B = 30 N·m: T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m > T_2B = 220 N·m of NPT035-10: 72.0 % over.
+    r = results(capsys, write_case(HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML))
+    assert r["verdict"]["passes"] is False
+    assert r["verdict"]["reasons"][0] == "No gearbox of ratio 10 in catalogs/gearboxes.csv passes the S5 checks:"
+    assert "NPT035-10: T_2max <= T_2B: required 378.3 N·m > rated 220 N·m, 72 % over" in r["verdict"]["reasons"]
+
+
+def test_s5_without_peak_torque_evaluates_every_section(capsys, write_case):
+    # Partial case: no motor.peak_torque. Duty, S1, S5 values, candidates, coupling and accuracy still come;
+    # the check T_2max <= T_2B is not made, nothing is selected and the verdict is null, naming the key.
+    accuracy = '\n[accuracy]\napplied_torque = "8 N*m"\nnominal_torque = "100 N*m"\n[[accuracy.component]]\nname = "shaft"\nside = "output"\nstiffness = "20 N*m/arcmin"\nbacklash = "1 arcmin"\n'
+    case = write_case(HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML
+                      + COUPLING_TOML.replace("[coupling]", '[coupling]\naccel_torque = "12 N*m"') + accuracy)
+    r = results(capsys, case)
+    assert r["duty"]["mode"] == "S5" and r["cyclic"]["fs"] == 1.3
+    assert r["gearbox"]["selected"] is None
+    best = r["gearbox"]["candidates"][0]
+    t2b = next(k for k in best["checks"] if k["name"] == "T_2B")
+    assert t2b["passes"] is None and t2b["required"] is None and "motor.peak_torque" in t2b["not_made"]
+    # Every row passes the checks made, so the smallest T_2B ranks first: TP010-10 (126 N·m);
+    # n_2max · i = 300 · 10 = 3000 rpm against its n_1max of 7500 rpm is made without T_1B: 0.4.
+    assert best["part"] == "TP010-10" and best["passes"] is None
+    assert next(k for k in best["checks"] if k["name"] == "n_1max")["utilization"] == pytest.approx(0.4)
+    assert r["coupling"]["selected"] == "AKD-30" and r["accuracy"]["C_total"]["value"] == pytest.approx(20)
+    assert r["verdict"]["passes"] is None
+    assert any("motor.peak_torque" in reason for reason in r["verdict"]["reasons"])
+    code, out, _ = run(capsys, case)
+    assert code == 0 and "Verdict: NOT DECIDED" in out
+
+
+def test_exit_status(capsys, write_case):
+    failing = write_case(HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML, "failing.toml")
+    open_ = write_case(HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML, "open.toml")
+    bad = write_case(HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML, "bad.toml")
+    assert run(capsys, EXAMPLE, "--strict")[0] == 0
+    assert run(capsys, failing)[0] == 0  # results were produced
+    assert run(capsys, failing, "--strict")[0] == 1
+    assert run(capsys, open_, "--strict")[0] == 1  # a verdict that is not true
+    code, out, err = run(capsys, bad, "--strict")
+    assert code == 2 and out == "" and err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    "edit, key",
+    [
+        (('"1500 kg*cm**2"', '"1e999 kg*cm**2"'), "load.inertia: expected a finite number"),
+        (('"12 N*m"', '"inf N*m"'), "motor.peak_torque: expected a number followed by a unit"),
+        (('torque = "60 N*m"', 'torque = "1e103 N*m"'), "profile[1].torque: expected a magnitude between 1e-12 and 1e+12"),
+        (('duration = "0.2 s"', 'duration = "1e-308 s"'), "profile[1].duration: expected a magnitude between 1e-12 and 1e+12"),
+        (("ratio = 10", "ratio = inf"), "gearbox.ratio: expected a finite number"),
+        (("ratio = 10", "ratio = nan"), "gearbox.ratio: expected a finite number"),
+    ],
+)
+def test_numbers_are_finite(capsys, write_case, edit, key):
+    code, out, err = run(capsys, write_case((HEAD_TOML + PROFILE_TOML).replace(*edit, 1)))
+    assert code == 2 and out == "" and key in err and err.count("\n") == 1
+
+
+def test_service_factor_inf_names_its_key(capsys, write_case):
+    case = write_case(HEAD_TOML + PROFILE_TOML + COUPLING_TOML.replace("service_factor = 2.5", "service_factor = inf"))
+    code, out, err = run(capsys, case)
+    assert code == 2 and out == "" and "coupling.service_factor: expected a finite number" in err
+
+
+def test_every_speed_zero_is_an_input_error(capsys, write_case):
+    # n_2m = 0 and T_2m = 0 / 0: refused, naming the profile, and no numpy warning on stderr.
+    case = write_case(HEAD_TOML + PROFILE_TOML.replace('"150 rpm"', '"0 rpm"').replace('"300 rpm"', '"0 rpm"'))
+    code, out, err = run(capsys, case)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "profile: expected a moving segment with a speed other than zero" in err
+
+
+@pytest.fixture
+def big_catalog(tmp_path):
+    """The shipped gearbox catalog with 40 more rows at ratio 10 (sizes above NPT035-10's)."""
+    from .conftest import GEARBOXES
+
+    lines = GEARBOXES.read_text().splitlines()
+    row = next(line for line in lines if line.startswith("NPT035-10,"))
+    extra = [row.replace("NPT035-10,", f"BIG{k:02d}-10,").replace(",220,", f",{230 + k},", 1) for k in range(40)]
+    path = tmp_path / "big.csv"
+    path.write_text("\n".join([*lines, *extra]) + "\n")
+    return path
+
+
+def test_candidate_lists_are_bounded(capsys, write_case, big_catalog):
+    # 3 shipped rows + 40 at ratio 10: the best 20 are listed with the count; --all-candidates lists all 43.
+    case = write_case(HEAD_TOML.replace("ratio = 10", f'ratio = 10\ncatalog = "{big_catalog}"') + PROFILE_TOML)
+    r = results(capsys, case)
+    assert r["gearbox"]["candidate_count"] == 43 and len(r["gearbox"]["candidates"]) == 20
+    assert len(results(capsys, case, "--all-candidates")["gearbox"]["candidates"]) == 43
+    code, out, _ = run(capsys, case)
+    assert "... 23 more candidates (--all-candidates lists them)" in out
+
+
+SELECTED_CHAIN = """
+[accuracy]
+applied_torque = "8 N*m"
+[[accuracy.component]]
+kind = "coupling"
+part = "selected"
+[[accuracy.component]]
+part = "selected"
+"""
+
+
+def test_chain_follows_the_selection(capsys, write_case):
+    # Ratio 10: NPT035-10 (C_t21 = 22 N·m/arcmin, backlash 8 arcmin) and the motor-side AKD-30
+    # (C_T = 25000 N·m/rad = 7.272 N·m/arcmin, referred to the output · i² = 727.2 N·m/arcmin, E11).
+    # C_total = 1 / (1/727.2 + 1/22) = 21.354 N·m/arcmin.
+    head = HEAD_TOML + PROFILE_TOML + COUPLING_TOML
+    r = results(capsys, write_case(head + SELECTED_CHAIN))
+    names = [c["name"] for c in r["accuracy"]["components"]]
+    assert names == ["AKD-30", "NPT035-10"]
+    assert [c["side"] for c in r["accuracy"]["components"]] == ["input", "output"]
+    assert r["accuracy"]["C_total"]["value"] == pytest.approx(1 / (1 / (25000 * 3.141592653589793 / 10800 * 100) + 1 / 22), rel=1e-4)
+    # Ratio 8: the gearbox selection moves (NPT035-8: 22 N·m/arcmin, 8 arcmin, ratio 8) and the
+    # chain follows it: the coupling is referred through i² = 64, C = 7.272 · 64 = 465.4 N·m/arcmin.
+    r8 = results(capsys, write_case((head + SELECTED_CHAIN).replace("ratio = 10", "ratio = 8"), "eight.toml"))
+    assert r8["gearbox"]["selected"] == r8["accuracy"]["components"][1]["name"]
+    assert r8["accuracy"]["ratio"] == 8
+    assert r8["accuracy"]["components"][0]["stiffness_at_output"]["value"] == pytest.approx(25000 * 3.141592653589793 / 10800 * 64, rel=1e-4)
+
+
+@pytest.mark.parametrize(
+    "chain, fragment",
+    [
+        (SELECTED_CHAIN.replace('kind = "coupling"\n', 'kind = "motor"\n'), "accuracy.component[1].kind: expected one of gearbox, coupling, found 'motor'"),
+        (SELECTED_CHAIN.replace('kind = "coupling"\npart = "selected"\n', 'kind = "coupling"\nname = "x"\nside = "input"\nstiffness = "1 N*m/arcmin"\nbacklash = "0 arcmin"\n'),
+         "accuracy.component[1].kind: kind says which catalog a part comes from; give part as well"),
+        (SELECTED_CHAIN + 'catalog = "gearboxes"\n', "accuracy.component[2].catalog: part = \"selected\" takes the gearbox selection's catalog"),
+    ],
+)
+def test_selected_part_errors(capsys, write_case, chain, fragment):
+    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + COUPLING_TOML + chain))
+    assert code == 2 and out == "" and fragment in err
+
+
+def test_selected_needs_the_section_it_follows(capsys, write_case):
+    code, _, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + SELECTED_CHAIN))
+    assert code == 2 and "accuracy.component[1].part: part = \"selected\" with kind = \"coupling\" follows the coupling selection, but the case has no [coupling]" in err
+    no_gearbox = (HEAD_TOML.replace("[gearbox]\nratio = 10\n", "") + PROFILE_TOML + SELECTED_CHAIN.split("[[accuracy.component]]\nkind")[0]
+                  + '[[accuracy.component]]\npart = "selected"\n')
+    code, _, err = run(capsys, write_case(no_gearbox, "nogear.toml"))
+    assert code == 2 and "follows the gearbox selection, but the case names no gearbox ratio or part" in err
