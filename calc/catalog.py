@@ -11,6 +11,7 @@ from __future__ import annotations
 import csv
 import functools
 import hashlib
+import importlib.resources
 import math
 import re
 from dataclasses import dataclass, field
@@ -22,7 +23,31 @@ import numpy as np
 from .errors import CalcError
 from .units import Q_, describe_units, kind, pretty_unit, ureg
 
-CATALOG_DIR = Path(__file__).resolve().parent.parent / "catalogs"
+
+def _project_dir() -> Path | None:
+    root = Path(__file__).resolve().parent.parent
+    return root if (root / "pyproject.toml").is_file() and (root / "catalogs" / "__init__.py").is_file() else None
+
+
+#: The project checkout calc is imported from (the folder of ``pyproject.toml``, ``calc/`` and
+#: ``catalogs/``), or None for an installed calc.
+PROJECT_DIR = _project_dir()
+
+
+def package_folder(name: str) -> Path:
+    """The folder of the package data ``calc.<name>`` (``catalogs``, ``reports``).
+
+    An installed calc finds it with importlib.resources: the wheel holds the project's top-level
+    ``<name>/`` as ``calc/<name>/`` (``package-dir`` in pyproject.toml). A calc imported from a
+    checkout, installed editable or not, reads that checkout's own ``<name>/``: the tree that runs
+    is the tree being edited, even when another tree's editable install is on the path.
+    """
+    if PROJECT_DIR is not None:
+        return PROJECT_DIR / name
+    return Path(importlib.resources.files(f"calc.{name}")).resolve()
+
+
+CATALOG_DIR = package_folder("catalogs")
 
 _HEADER = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\[(.*)\])?\s*$")
 _FLOAT = re.compile(r"^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
@@ -125,13 +150,18 @@ def _some(parts) -> str:
 
 
 def display_path(path: Path) -> str:
-    """A path as shown in results: relative to the project when inside it, so output is the same
-    on every machine."""
+    """A path as shown in results, the same on every machine: a packaged catalog as
+    ``catalogs/NAME.csv`` (installed or not), any other file relative to the project checkout when
+    inside it, else absolute.
+
+    >>> display_path(CATALOG_DIR / "gearboxes.csv")
+    'catalogs/gearboxes.csv'
+    """
     path = Path(path).resolve()
-    try:
-        return str(path.relative_to(CATALOG_DIR.parent))
-    except ValueError:
-        return str(path)
+    for base, shown in ((CATALOG_DIR, Path("catalogs")), (PROJECT_DIR, Path())):
+        if base is not None and path.is_relative_to(base):
+            return str(shown / path.relative_to(base))
+    return str(path)
 
 
 def resolve(name_or_path: str, base: Path | None, where: str) -> Path:

@@ -14,10 +14,11 @@ import sys
 import tempfile
 from pathlib import Path
 
-from .catalog import CATALOG_DIR, display_path
+from .catalog import display_path, package_folder
 from .errors import CalcError
 
-REPORTS_DIR = CATALOG_DIR.parent / "reports"
+#: The report notebook and template: package data ``calc.reports`` (the project's ``reports/``).
+REPORTS_DIR = package_folder("reports")
 NOTEBOOK = REPORTS_DIR / "calc-report.ipynb"
 TEMPLATE_DIRS = [str(REPORTS_DIR / "template")]
 TEMPLATE = "calc-report"

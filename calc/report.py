@@ -27,7 +27,7 @@ import numpy as np
 
 from . import __version__
 from .case import Case, read_case
-from .catalog import CATALOG_DIR, display_path
+from .catalog import PROJECT_DIR, display_path
 from .errors import CalcError
 from .sections import FURTHER as SECTIONS
 from .sections import Results, Verdict, evaluate
@@ -36,8 +36,6 @@ from .gearbox import SHOCK_FACTORS, T_2max, inertia_ratio, n_1
 from .profile import ED, T_2m, Z_h, n_2m
 from .profile import t_k as t_k_symbol
 from .units import NUMBER, Q_, pretty_unit, sig
-
-PROJECT_DIR = CATALOG_DIR.parent
 
 #: The sections of the source document each part of a case is computed from.
 SOURCE_SECTIONS = {
@@ -170,17 +168,28 @@ def sha256(path: Path) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
-def git_commit(folder: Path = PROJECT_DIR) -> str:
-    """The commit the package was built from, marked when calc/ or catalogs/ differ from it."""
+def git_commit(folder: Path | None = PROJECT_DIR) -> str:
+    """The commit the package was built from, marked when calc/ or catalogs/ differ from it.
+
+    An installed calc (``folder`` None) has no git tree; a checkout that is not the top of its own
+    git tree (an unpacked source archive inside another repository) is not under version control:
+    the enclosing repository's commit would name the wrong source.
+    """
+    if folder is None:
+        return "none: an installed package, not a git checkout"
     try:
-        head = subprocess.run(["git", "-C", str(folder), "rev-parse", "HEAD"], capture_output=True, text=True, check=True)
+        head = subprocess.run(["git", "-C", str(folder), "rev-parse", "--show-toplevel", "HEAD"],
+                              capture_output=True, text=True, check=True)
         dirty = subprocess.run(
             ["git", "-C", str(folder), "status", "--porcelain", "--untracked-files=no", "--", "calc", "catalogs"],
             capture_output=True, text=True, check=True,
         )
     except (OSError, subprocess.CalledProcessError):
         return "not under version control"
-    return head.stdout.strip() + (" (with uncommitted changes in calc/ or catalogs/)" if dirty.stdout.strip() else "")
+    top, commit = head.stdout.splitlines()
+    if Path(top).resolve() != Path(folder).resolve():
+        return "not under version control"
+    return commit + (" (with uncommitted changes in calc/ or catalogs/)" if dirty.stdout.strip() else "")
 
 
 def _listed(value) -> str:
@@ -678,6 +687,7 @@ class Report:
             out.append((stiffness_chain_figure(spec.chain, spec.applied_torque),
                         "Stiffness chain referred to the output (E11): each member's share of the twist."))
             for name, (path, analysis) in spec.loops.items():
+                # a relative display path lies in the checkout (an installed calc shows measurements absolute)
                 loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
                 out.append((hysteresis_figure(loop, analysis), latex_escape(f"Measured hysteresis loop of {name} (E12).")))
         if (spec is None or not spec.loops) and self.selection is not None:
