@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 
 from .errors import CalcError
@@ -40,5 +41,22 @@ def main(argv=None) -> int:
     return 0
 
 
+def run_quietly_into_a_closed_pipe(argv=None) -> int:
+    """:func:`main`, ending quietly when the reader of standard output goes away
+    (``python -m calc evaluate case.toml | head -1``).
+
+    Python ignores SIGPIPE, so a write to a closed pipe raises BrokenPipeError, and again at exit
+    when it flushes standard output; as the Python docs' note on SIGPIPE advises, standard output
+    then points at devnull. Exit code 1, as the docs use.
+    """
+    try:
+        code = main(argv)
+        sys.stdout.flush()  # inside the try: a closed pipe shows here, not at exit
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    return code
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_quietly_into_a_closed_pipe())
