@@ -214,8 +214,7 @@ def rank_numpy(f: Floats):
     n_2m = w.sum() / t.sum()
     t_2m = np.cbrt((w * np.abs(T) ** 3).sum() / w.sum())
     z_h = 3600.0 / t_cycle
-    bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
-    f_s = np.array([x for _, x in SHOCK_FACTORS])[np.searchsorted(bounds, z_h * (1 + BOUNDARY_RTOL), side="right") - 1]
+    f_s = SHOCK_FACTORS.factors[np.searchsorted(SHOCK_FACTORS.bounds, z_h * (1 + BOUNDARY_RTOL), side="right") - 1]
     t_2max = f.T_1B * eta * f_s * i
     u = (n_2m * i / n_1n, t_2m / t_2n, np.abs(n).max() * i / n_1max, t_2max / t_2b)
     _ = (j_1 + f.J_L / i**2) / f.J_motor  # inertia ratio, as the API gives it
@@ -372,9 +371,8 @@ def sweep_numpy(grid):
 
     ratio, t_cycle, T_1B = grid
     ed = SWEEP_T_ON / t_cycle
-    bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
     z_h = 3600.0 / t_cycle * (1 + BOUNDARY_RTOL)
-    f_s = np.array([x for _, x in SHOCK_FACTORS])[np.searchsorted(bounds, z_h, side="right") - 1]
+    f_s = SHOCK_FACTORS.factors[np.searchsorted(SHOCK_FACTORS.bounds, z_h, side="right") - 1]
     t_2max = T_1B * SWEEP_GEARBOX["eta"] * f_s * ratio  # in the formula's order: one product over the whole grid
     u_torque = t_2max / SWEEP_GEARBOX["T_2B"]
     u_speed = SWEEP_N_2MAX * ratio / SWEEP_GEARBOX["n_1max"]

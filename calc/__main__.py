@@ -47,13 +47,22 @@ def main(argv=None) -> int:
     return 1 if args.strict and results.verdict.passes is not True else 0
 
 
-if __name__ == "__main__":
+def run_quietly_into_a_closed_pipe(argv=None) -> int:
+    """:func:`main`, ending quietly when the reader of standard output goes away
+    (``python -m calc evaluate case.toml | head -1``).
+
+    Python ignores SIGPIPE, so a write to a closed pipe raises BrokenPipeError, and again at exit
+    when it flushes standard output; as the Python docs' note on SIGPIPE advises, standard output
+    then points at devnull. Exit code 1, as the docs use.
+    """
     try:
-        status = main()
-        sys.stdout.flush()
+        code = main(argv)
+        sys.stdout.flush()  # inside the try: a closed pipe shows here, not at exit
     except BrokenPipeError:
-        # The reader closed the pipe (``| head``): send what is left to nowhere and exit quietly,
-        # as the Python documentation advises for SIGPIPE.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        status = 1
-    sys.exit(status)
+        return 1
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(run_quietly_into_a_closed_pipe())

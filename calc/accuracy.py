@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-
+from .checks import BOUNDARY_RTOL
 from .catalog import Column, display_path, load_catalog, resolve
 from .errors import CalcError
 from .formula import Formula, Symbol
@@ -74,15 +74,79 @@ positioning_error = Formula(
 )
 
 
-def low_torque(applied_torque, nominal_torque) -> np.ndarray:
-    """Whether ``|T| <= 3 %`` of the nominal torque (E13: the backlash form applies).
+def low_torque_limit(nominal_torque):
+    """The torque up to which the backlash form of positioning accuracy applies (E13): 3 % of
+    ``T_N``.
 
-    >>> bool(low_torque(Q_(3, "N*m"), Q_(100, "N*m"))), bool(low_torque(Q_(-3.1, "N*m"), Q_(100, "N*m")))
-    (True, False)
+    >>> print(fmt(low_torque_limit(Q_(110, "N*m")), "N*m"))
+    3.3 N·m
     """
-    t = as_kind(applied_torque, "torque", "applied_torque").m_as("N*m")
-    t_n = as_kind(nominal_torque, "torque", "nominal_torque").m_as("N*m")
-    return np.abs(t) <= LOW_TORQUE_SHARE * t_n
+    t_n = as_kind(nominal_torque, "torque", "nominal_torque")
+    if np.any(np.asarray(t_n.m_as("N*m")) <= 0):
+        raise CalcError(f"nominal_torque: expected a torque above zero, found {t_n:~P}")
+    return LOW_TORQUE_SHARE * t_n
+
+
+@dataclass(frozen=True)
+class PositioningRule:
+    """Which form of positioning accuracy applies at an applied torque (E13), and why.
+
+    ``low_torque`` (a bool, or a bool array over an array of torques) is ``|T| <= 3 %`` of the
+    nominal torque: the backlash is not taken up, ``φ_TA + j_t``; else the twist counts,
+    ``φ_TA + |T| / C``. ``limit`` is 3 % of ``T_N`` (None at zero torque without a nominal torque).
+    """
+
+    applied_torque: object
+    limit: object
+    low_torque: object
+
+    @property
+    def text(self) -> str:
+        """The rule that applies, ``|T| <= 3 % of T_N: phi_TA + j_t`` (one torque)."""
+        return "|T| <= 3 % of T_N: phi_TA + j_t" if self.low_torque else "|T| > 3 % of T_N: phi_TA + |T| / C"
+
+    @property
+    def why(self) -> str:
+        """Why it applies, ``|T| = 8 N·m > 3 % of T_N = 3.3 N·m`` (one torque)."""
+        t = fmt(abs(self.applied_torque), "N*m")
+        if self.limit is None:
+            return f"|T| = {t}: at rest the backlash counts, whatever T_N"
+        return f"|T| = {t} {'<=' if self.low_torque else '>'} 3 % of T_N = {fmt(self.limit, 'N*m')}"
+
+    def accuracy(self, transmission_accuracy, backlash, stiffness):
+        """Positioning accuracy by this rule, in arcmin (over every torque of the rule)."""
+        low = positioning_accuracy_low(phi_TA=transmission_accuracy, j_t=backlash).m_as("arcmin")
+        high = positioning_accuracy_high(phi_TA=transmission_accuracy, T=self.applied_torque, C=stiffness).m_as("arcmin")
+        return Q_(np.where(self.low_torque, low, high)[()], "arcmin")
+
+    def step(self, transmission_accuracy, backlash, stiffness):
+        """The formula that applies, with the numbers (one torque)."""
+        if self.low_torque:
+            return positioning_accuracy_low.step(phi_TA=transmission_accuracy, j_t=backlash)
+        return positioning_accuracy_high.step(phi_TA=transmission_accuracy, T=self.applied_torque, C=stiffness)
+
+
+def positioning_rule(applied_torque, nominal_torque=None) -> PositioningRule:
+    """Which form of positioning accuracy applies (E13): ``|T| <= 3 %`` of ``T_N`` the backlash
+    form, above it the twist form; scalar or array torques.
+
+    A torque within :data:`calc.checks.BOUNDARY_RTOL` above 3 % counts as on it, as at the
+    boundaries of E3 and E4. The nominal torque may be left out only at zero torque, where the
+    backlash form holds whatever it is.
+
+    >>> r = positioning_rule(Q_(8, "N*m"), Q_(110, "N*m"))
+    >>> r.text, r.why
+    ('|T| > 3 % of T_N: phi_TA + |T| / C', '|T| = 8 N·m > 3 % of T_N = 3.3 N·m')
+    >>> positioning_rule(Q_([3, -3.1], "N*m"), Q_(100, "N*m")).low_torque.tolist()
+    [True, False]
+    """
+    t = as_kind(applied_torque, "torque", "applied_torque")
+    if nominal_torque is None:
+        if np.any(np.asarray(t.m_as("N*m")) != 0):
+            raise CalcError("nominal_torque: the 3 % rule of positioning accuracy (E13) needs the nominal torque, found none")
+        return PositioningRule(t, None, np.full(np.shape(t.magnitude), True)[()])
+    limit = low_torque_limit(nominal_torque)
+    return PositioningRule(t, limit, (np.abs(t.m_as("N*m")) <= limit.m_as("N*m") * (1 + BOUNDARY_RTOL))[()])
 
 
 def positioning_accuracy(applied_torque, nominal_torque, transmission_accuracy, backlash, stiffness):
@@ -104,7 +168,8 @@ def positioning_accuracy(applied_torque, nominal_torque, transmission_accuracy, 
 
     Notes
     -----
-    Implemented as the text writes it (E13): the form jumps at 3 % of the nominal torque.
+    Implemented as the text writes it (E13): the form jumps at 3 % of the nominal torque
+    (:func:`positioning_rule`).
 
     Examples
     --------
@@ -117,10 +182,7 @@ def positioning_accuracy(applied_torque, nominal_torque, transmission_accuracy, 
     >>> print(fmt(positioning_accuracy(Q_(46, "N*m"), **args), "arcmin"))  # 1 + 46 / 23
     3 arcmin
     """
-    low = low_torque(applied_torque, nominal_torque)
-    a = positioning_accuracy_low(phi_TA=transmission_accuracy, j_t=backlash)
-    b = positioning_accuracy_high(phi_TA=transmission_accuracy, T=applied_torque, C=stiffness)
-    return Q_(np.where(low, a.m_as("arcmin"), b.m_as("arcmin")), "arcmin")
+    return positioning_rule(applied_torque, nominal_torque).accuracy(transmission_accuracy, backlash, stiffness)
 
 
 def repeatability(applied_torque, backlash, stiffness):
@@ -147,11 +209,16 @@ class ChainAccuracy:
     chain: Chain
     applied_torque: object
     nominal_torque: object  # for the 3 % rule; None only at zero torque
-    low_torque: bool
+    rule: PositioningRule
     lost_motion: object
     positioning_accuracy: object
     repeatability: object
     repeatability_is_bound: bool
+
+    @property
+    def low_torque(self) -> bool:
+        """Whether the backlash form of positioning accuracy applies (E13)."""
+        return bool(self.rule.low_torque)
 
     def steps(self) -> list:
         """Each formula with the chain's numbers, in the order a reviewer reads them."""
@@ -164,11 +231,7 @@ class ChainAccuracy:
         out.append(series_stiffness.step(C_k=c.stiffness_at_output))
         values = dict(j_t=c.backlash, T=self.applied_torque, C=c.stiffness)
         out.append(lost_motion.step(**values))
-        ta = c.transmission_accuracy
-        if self.low_torque:
-            out.append(positioning_accuracy_low.step(phi_TA=ta, j_t=c.backlash))
-        else:
-            out.append(positioning_accuracy_high.step(phi_TA=ta, T=self.applied_torque, C=c.stiffness))
+        out.append(self.rule.step(c.transmission_accuracy, c.backlash, c.stiffness))
         return out
 
 
@@ -187,27 +250,22 @@ def chain_accuracy(chain: Chain, applied_torque, nominal_torque=None) -> ChainAc
     101.7 arcmin | 99.72 arcmin
     """
     t = as_kind(applied_torque, "torque", "applied_torque")
-    t_n = chain.nominal_torque if nominal_torque is None else as_kind(nominal_torque, "torque", "nominal_torque")
-    if t_n is not None and not t_n.m_as("N*m") > 0:
-        raise CalcError(f"nominal_torque: expected a torque above zero, found {t_n:~P}")
-    if t_n is None and t.m_as("N*m") != 0:
-        raise CalcError(
-            "nominal_torque: the 3 % rule of positioning accuracy (E13) needs the nominal torque, found none for the chain or its components"
-        )
-    low = True if t_n is None else bool(low_torque(t, t_n))
+    t_n = chain.nominal_torque if nominal_torque is None else nominal_torque
+    try:
+        rule = positioning_rule(t, t_n)
+    except CalcError as exc:
+        if t_n is None:  # say where the nominal torque was looked for
+            raise CalcError(f"{exc} for the chain or its components") from None
+        raise
     c, j, ta = chain.stiffness, chain.backlash, chain.transmission_accuracy
-    if low:
-        accuracy = positioning_accuracy_low(phi_TA=ta, j_t=j)
-    else:
-        accuracy = positioning_accuracy_high(phi_TA=ta, T=t, C=c)
     rep, bound = repeatability(t, j, c)
     return ChainAccuracy(
         chain=chain,
         applied_torque=t,
-        nominal_torque=t_n,
-        low_torque=low,
+        nominal_torque=None if t_n is None else as_kind(t_n, "torque", "nominal_torque"),
+        rule=rule,
         lost_motion=rep,  # repeatability() is the lost motion at t (bounded by it, E13)
-        positioning_accuracy=accuracy,
+        positioning_accuracy=rule.accuracy(ta, j, c),
         repeatability=rep,
         repeatability_is_bound=bool(bound),
     )

@@ -11,7 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .accuracy import LOW_TORQUE_SHARE, PositioningScatter, lost_motion, positioning_accuracy
+from .accuracy import PositioningScatter, low_torque_limit, lost_motion, positioning_accuracy
+from .checks import BOUNDARY_RTOL
 from .hysteresis import LOST_MOTION_BAND, STIFFNESS_BAND, Loop, LoopAnalysis
 from .stiffness import Chain
 from .transmission import TransmissionAnalysis
@@ -316,8 +317,9 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     from matplotlib.figure import Figure
 
     t_n = chain.nominal_torque if nominal_torque is None else as_kind(nominal_torque, "torque", "nominal_torque")
-    edge = LOW_TORQUE_SHARE * t_n.m_as("N*m")
-    torque = np.union1d(np.linspace(0.0, t_n.m_as("N*m"), 400), [edge, np.nextafter(edge, np.inf)])
+    edge = low_torque_limit(t_n).m_as("N*m")
+    past = np.nextafter(edge * (1 + BOUNDARY_RTOL), np.inf)  # the first torque the rule puts above 3 %
+    torque = np.union1d(np.linspace(0.0, t_n.m_as("N*m"), 400), [edge, past])
     args = dict(transmission_accuracy=chain.transmission_accuracy, backlash=chain.backlash, stiffness=chain.stiffness)
     acc = positioning_accuracy(Q_(torque, "N*m"), t_n, **args).m_as("arcmin")
     bound = lost_motion(j_t=chain.backlash, T=Q_(torque, "N*m"), C=chain.stiffness).m_as("arcmin")

@@ -8,6 +8,7 @@ error names the file and the key (``profile[2].duration``).
 from __future__ import annotations
 
 import tomllib
+import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -114,17 +115,25 @@ def read_case(path) -> Case:
     from .sections import FURTHER, TOP_KEYS, drive, duty, gearbox
 
     path = Path(path)
+    if path.is_dir():
+        raise CalcError(f"{path}: expected a case file, found a directory")
     if not path.is_file():
         raise CalcError(f"{path}: the case file does not exist")
     raw = path.read_bytes()
     try:
-        data = tomllib.loads(raw.decode("utf-8"))
+        data = tomllib.loads(raw.decode("utf-8-sig"))  # an editor's byte-order mark is not TOML; catalogs accept one too
     except UnicodeDecodeError:
         raise CalcError(f"{path}: expected a UTF-8 TOML file, found bytes that are not UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
         raise CalcError(f"{path}: TOML syntax error: {exc}") from None
     top = Table(path, "", data, TOP_KEYS)
-    case = Case(path=path, title=top.text("title", default=path.stem), profile=duty.read(top), raw=raw)
+    title = top.text("title", default=path.stem)
+    control = next((ch for ch in title if unicodedata.category(ch) == "Cc"), None)
+    if control is not None:
+        # Refused, not escaped: the title goes to the terminal, the JSON and the LaTeX report, and
+        # a control character (an escape sequence, a line break) means nothing in any of them.
+        raise CalcError(f"{top.where('title')}: expected one line of printable text, found the control character U+{ord(control):04X}")
+    case = Case(path=path, title=title, profile=duty.read(top), raw=raw)
     drive.read(top, case)
     gearbox.read(top, case)
     case.sections = {name: data[name] for name in FURTHER if name in data}

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-
+from .bands import BandTable
 from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, no_less, resolve
 from .errors import CalcError
 from .fits import Bore, parse_bore
@@ -47,9 +47,14 @@ ORDER_TITLES = {
 DEFAULT_SERVICE_FACTOR = 2.5
 
 #: Temperature factor of elastomer couplings (source, Sizing 3; errata E9: the higher factor at a
-#: boundary). Each row is (lowest temperature of the band in °C, factor). Another maker's table
-#: can be passed to :func:`temperature_factor` instead.
-TEMPERATURE_FACTORS = ((-math.inf, 1.0), (50.0, 1.3), (70.0, 1.6), (90.0, 1.8), (110.0, 2.0))
+#: boundary). The source's last band, "> 110 °C", is open; it means something only while the
+#: elastomer holds, and thermoplastic polyurethane inserts of servo couplings are rated up to
+#: +120 °C (98 Sh A inserts to +100 °C), so the table ends there. Another maker's table can be
+#: passed to :func:`temperature_factor` instead.
+TEMPERATURE_FACTORS = BandTable(
+    "T", (-math.inf, 50.0, 70.0, 90.0, 110.0), (1.0, 1.3, 1.6, 1.8, 2.0), "degC", "temperature",
+    "the source's temperature-factor table of elastomer couplings, Sizing 3, read with errata E9", top=120.0,
+)
 
 SCHEMA = Schema(
     kind="coupling",
@@ -191,27 +196,34 @@ def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "tem
     ----------
     temperature : Quantity [temperature]
         Operating temperature (``Q_(60, "degC")``; a temperature difference is refused).
-    table : sequence of (float, float)
-        (lowest temperature of the band in °C, factor), ascending; the higher factor applies at
-        a boundary. Default: the source's table, :data:`TEMPERATURE_FACTORS`.
+    table : calc.bands.BandTable
+        The factor by temperature band, the higher factor at a boundary. Default: the source's
+        table, :data:`TEMPERATURE_FACTORS`.
 
     Returns
     -------
     float or ndarray
         The factor ``K_ϑ`` that multiplies ``M_N``.
 
+    Notes
+    -----
+    A temperature below absolute zero is an input error, and so is one above the table's range:
+    the source's table ends at 120 °C, the highest temperature servo elastomer inserts
+    (thermoplastic polyurethane) are rated for; its last band, "> 110 °C", has no meaning beyond
+    the elastomer's range, where no elastomer coupling is sized by a factor (E9).
+
     Examples
     --------
-    >>> [float(temperature_factor(Q_(t, "degC"))) for t in (49.9, 50, 69.9, 70, 90, 110, 140)]
+    >>> [float(temperature_factor(Q_(t, "degC"))) for t in (49.9, 50, 69.9, 70, 90, 110, 120)]
     [1.0, 1.3, 1.3, 1.6, 1.8, 2.0, 2.0]
     """
     t = as_kind(temperature, "temperature", where)
     if any(name.startswith("delta_") for name in t.units._units):
         raise CalcError(f"{where}: expected a temperature such as \"60 degC\", found {t:~P}, which is a temperature difference")
-    celsius = t.m_as("degC")
-    bounds = np.array([b for b, _ in table], dtype=float)
-    factors = np.array([f for _, f in table], dtype=float)
-    return factors[np.searchsorted(bounds, celsius, side="right") - 1]
+    kelvin = np.asarray(t.m_as("K"))
+    if np.any(kelvin < 0):
+        raise CalcError(f"{where}: expected a temperature above absolute zero (-273.15 °C), found {sig(kelvin[kelvin < 0][0] - 273.15)} °C")
+    return table.lookup(t, where)
 
 
 @dataclass(frozen=True)

@@ -67,7 +67,8 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
     """The elastomer temperature-factor table (E9) as steps, the case's temperature marked.
 
     Each band is a line from its lowest temperature (filled marker: the boundary belongs to this
-    band, the higher factor) to the next band's (open marker).
+    band, the higher factor) to the next band's (open marker); the last band ends at the table's
+    top (filled), above which no elastomer coupling is sized.
 
     Returns
     -------
@@ -84,19 +85,21 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
     """
     from matplotlib.figure import Figure
 
-    bounds = [b for b, _ in table]
-    factors = [f for _, f in table]
-    finite = [b for b in bounds if math.isfinite(b)]
-    low, high = min(finite) - 30.0, max(finite) + 30.0
+    bounds, factors = table.bounds, table.factors
+    finite = bounds[np.isfinite(bounds)]
+    low = finite.min() - 30.0
+    high = table.top + 10.0 if math.isfinite(table.top) else finite.max() + 30.0
     fig = Figure(figsize=(7.0, 3.6), layout="constrained")
     ax = fig.subplots()
-    edges = [max(b, low) for b in bounds] + [high]
+    edges = [max(b, low) for b in bounds] + [min(table.top, high)]
     for k, f in enumerate(factors):
         ax.plot([edges[k], edges[k + 1]], [f, f], color=DRIVE_COLOR, linewidth=2.2)
         if math.isfinite(bounds[k]):
             ax.plot([edges[k]], [f], "o", color=DRIVE_COLOR, markersize=5)
         if k + 1 < len(factors):
             ax.plot([edges[k + 1]], [f], "o", markerfacecolor="white", color=DRIVE_COLOR, markersize=5)
+        elif math.isfinite(table.top):  # the table's top is in its last band; above it, no factor
+            ax.plot([edges[k + 1]], [f], "o", color=DRIVE_COLOR, markersize=5)
     if temperature is not None:
         t = as_kind(temperature, "temperature", "temperature").m_as("degC")
         k_t = float(temperature_factor(temperature, table))

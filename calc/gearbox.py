@@ -19,10 +19,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .bands import BandTable
 from .catalog import Catalog, Column, Rule, Schema, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
-from .checks import BOUNDARY_RTOL, CheckArray, rank, selected_part
+from .checks import CheckArray, rank, selected_part
 from .profile import Profile, T_2m, Z_h, duty, n_2m
 from .units import Q_, as_kind, magnitude_in, pretty_unit
 
@@ -51,10 +52,10 @@ SCHEMA = Schema(
 )
 
 #: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary).
-#: Each row is (lowest Z_h of the band, f_s).
-SHOCK_FACTORS = ((0, 1.0), (1000, 1.1), (1500, 1.3), (2000, 1.6), (3000, 2.0))
-_SHOCK_BOUNDS = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
-_SHOCK_VALUES = np.array([f for _, f in SHOCK_FACTORS])
+SHOCK_FACTORS = BandTable(
+    "Z_h", (0, 1000, 1500, 2000, 3000), (1.0, 1.1, 1.3, 1.6, 2.0), "1/h", "per_hour",
+    "the source's shock-factor table, S5 calculation 1, read with errata E4",
+)
 
 _n_2 = Symbol("n_2", "n_{2}", "speed", "rpm", "output speed")
 _i = Symbol("i", "i", "dimensionless", "", "ratio")
@@ -94,18 +95,17 @@ inertia_ratio = Formula(
 def shock_factor(cycles_per_hour):
     """Shock factor ``f_s`` for ``Z_h`` cycles per hour (errata E4), scalar or array.
 
-    A value within :data:`calc.checks.BOUNDARY_RTOL` below a boundary counts as on it: a cycle of
-    0.1 + 0.1 + 0.1 + 2.1 s = 2.4000000000000004 s gives 1499.9999999999998 cycles per hour, which is 1500.
+    The table is :data:`SHOCK_FACTORS`; a value within :data:`calc.checks.BOUNDARY_RTOL` below a
+    boundary counts as on it (:class:`calc.bands.BandTable`): a cycle of 0.1 + 0.1 + 0.1 + 2.1 s =
+    2.4000000000000004 s gives 1499.9999999999998 cycles per hour, which is 1500. A negative
+    ``Z_h`` is refused.
 
     >>> [float(shock_factor(Q_(z, "1/hour"))) for z in (999, 1000, 1499, 1500, 2000, 3000)]
     [1.0, 1.1, 1.1, 1.3, 1.6, 2.0]
     >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
     1.3
     """
-    z = magnitude_in(as_kind(cycles_per_hour, "per_hour", "cycles_per_hour"), "1/hour")
-    if np.any(np.asarray(z) < 0):
-        raise CalcError(f"cycles_per_hour: expected zero or more cycles per hour, found {z}")
-    return _SHOCK_VALUES[np.searchsorted(_SHOCK_BOUNDS, z * (1 + BOUNDARY_RTOL), side="right") - 1]
+    return SHOCK_FACTORS.lookup(cycles_per_hour, "cycles_per_hour")
 
 
 @dataclass

@@ -4,8 +4,9 @@ A measurement file opens with any number of comment lines (``#`` ...) that say w
 come from, then a header row such as ``torque [N*m],twist [arcmin]``, then one row per sample.
 Each column's unit is read from its header and checked for its kind (errata E15: a twist column
 in ``[1]`` or a torque column in ``[N*m/arcmin]`` is refused). Every problem is reported with the
-file, the row (its line number in the file) and the column. Further columns (a time stamp, a
-channel the calculation does not use) are allowed and left out.
+file, the row (its line number in the file) and the column. Further columns (a channel the
+calculation does not use) are allowed and left out; a ``time [unit]`` column, if there is one,
+must increase from row to row (:data:`TIME`).
 
 A clean table is read by a C parser: numpy's (``np.loadtxt``) for a file up to
 :data:`PANDAS_FROM` characters, pandas' (three times faster, a million rows in a seventh of a
@@ -30,6 +31,11 @@ from .errors import CalcError
 from .units import Q_, as_kind
 
 _COMMENT = "#"
+
+#: An optional column of sample times. Where a record has one, the times must increase: a loop's
+#: loading direction and a trace's travel are read from the order of the rows, and a record sorted
+#: or merged out of time order would be analysed wrongly without a word.
+TIME = Column("time", "time", "time of the sample")
 
 
 @dataclass(frozen=True)
@@ -87,6 +93,8 @@ def read_measurement(path, columns: tuple[Column, ...]) -> Measurement:
         if not m:
             raise CalcError(f"{path}, row {header_line}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
         names[m.group(1)] = (i, m.group(2))
+    if TIME.name in names and all(c.name != TIME.name for c in columns):
+        columns = (*columns, TIME)
     units = {}
     for c in columns:
         if c.name not in names:
@@ -101,8 +109,21 @@ def read_measurement(path, columns: tuple[Column, ...]) -> Measurement:
     table = _table(body, len(names))
     if table is None:
         table = _table_cell_by_cell(body, names, columns, path, header_line + 1)
+    if TIME.name in names:
+        _check_time_order(table[:, names[TIME.name][0]], units[TIME.name], path, header_line + 1)
     out = {c.name: Q_(table[:, names[c.name][0]], units[c.name]) for c in columns}
     return Measurement(path=path, columns=out, comments=tuple(comments))
+
+
+def _check_time_order(time: np.ndarray, unit: str, path: Path, first_row: int) -> None:
+    """Raise :class:`CalcError` naming the first row whose time does not increase."""
+    back = np.flatnonzero(np.diff(time) <= 0)
+    if back.size:
+        j = int(back[0]) + 1
+        raise CalcError(
+            f"{path}, row {first_row + j}, column {TIME.name}: expected times that increase (the rows in the order measured), "
+            f"found {time[j]:g} {unit} after {time[j - 1]:g} {unit}"
+        )
 
 
 #: Above this many characters of data, pandas reads the table.

@@ -139,8 +139,7 @@ def shock_factor_figure(cycles_per_hour=None):
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
-    bounds = np.array([b for b, _ in SHOCK_FACTORS], dtype=float)
-    factors = np.array([f for _, f in SHOCK_FACTORS], dtype=float)
+    bounds, factors = SHOCK_FACTORS.bounds, SHOCK_FACTORS.factors
     z_case = None
     if cycles_per_hour is not None:
         z = as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as("1/hour")

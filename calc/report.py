@@ -446,8 +446,7 @@ class Report:
         out.append(r"\subsection{Cycle operation (S5)}")
         s_zh = Z_h.step(t_cycle=p.t_cycle)
         out.append(step_block("Cycles per hour", s_zh))
-        fs = self.results["cyclic"]["fs"]
-        out.append(_shock_factor_block(s_zh.result.m_as("1/hour"), fs))
+        out.append(_shock_factor_block(s_zh.result))
         out += self._gearbox_check_steps() + self._coupling_steps() + self._accuracy_steps()
         return Latex("\n".join(out))
 
@@ -502,8 +501,11 @@ class Report:
         m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
         out.append(step_block("Nominal torque of the coupling", m_n, "compared with T_KN"))
         if sel.row_type(row) == "elastomer":
+            bands = cp.TEMPERATURE_FACTORS
+            band = bands.text(int(bands.band(x["temperature"], "coupling.temperature")))
             out.append(step_block(f"With the temperature factor ({part})",
-                                  cp.M_Nt.step(M_N=m_n.result, K_T=Q_(float(sel.temperature_factor[row]), ""))))
+                                  cp.M_Nt.step(M_N=m_n.result, K_T=Q_(float(sel.temperature_factor[row]), "")),
+                                  f"K_T of the band {band} (E9)"))
         out.append(step_block("Lowest natural frequency allowed", cp.f_e_min.step(f_er=x["excitation_frequency"])))
         if np.isnan(sel.f_e[row].magnitude):
             return out
@@ -533,9 +535,7 @@ class Report:
             out.append(rf"From \texttt{{{latex_escape(path)}}}.")
             out.append(step_block(analysis.step().formula.result.description.capitalize(), analysis.step()))
         out.append(r"\subsection{Accuracy of the drive train at the output}")
-        out.append(prose(f"Applied torque T = {sig(a.applied_torque.m_as('N*m'))} N·m; "
-                         + ("at most" if a.low_torque else "above")
-                         + " 3 % of the nominal torque, so the positioning rule of E13 for that range applies."))
+        out.append(prose(f"Applied torque: {a.rule.why}, so the positioning rule of E13 for that range applies, {a.rule.text}."))
         out += [step_block(s.formula.result.description.capitalize(), s) for s in a.steps()]
         return out
 
@@ -732,14 +732,14 @@ class Report:
         return Latex("\n".join(out))
 
 
-def _shock_factor_block(zh: float, fs: float) -> str:
-    bounds = [b for b, _ in SHOCK_FACTORS]
-    k = [f for _, f in SHOCK_FACTORS].index(fs)  # the band calc.gearbox.shock_factor chose (E4, with its tolerance)
-    low = bounds[k]
-    band = rf"{low} \le Z_h" + (rf" < {bounds[k + 1]}" if k + 1 < len(bounds) else "")
+def _shock_factor_block(zh) -> str:
+    """The shock factor of ``Z_h`` (a quantity) with its band, the one calc.gearbox.shock_factor
+    chooses (E4, with its boundary tolerance)."""
+    k = int(SHOCK_FACTORS.band(zh, "Z_h"))
     return (
         r"\calcstep{Shock factor}{$f_{s}$, from the source's table}" "\n"
-        rf"\[ f_{{s}} = {fs:g} \quad\text{{for }} {band} \text{{ per hour }} (Z_h = {sig(zh)}) \]" "\n"
+        rf"\[ f_{{s}} = {SHOCK_FACTORS.factors[k]:g} \quad\text{{for }} {SHOCK_FACTORS.text(k, latex=True)} "
+        rf"\quad (Z_h = {sig(zh.m_as(SHOCK_FACTORS.unit))}) \]" "\n"
         r"\calcref{source, S5 calculation 1; errata E4 (the higher factor at a band boundary)}"
     )
 

@@ -197,7 +197,9 @@ class DesignReview:
         coupling = case.sections.get("coupling")
         if coupling is not None:
             t = parse_quantity(coupling.get("temperature", "20 degC"), "temperature", "coupling.temperature").m_as("degC")
-            c["temperature"] = slider("coupling temperature", t, -20.0, 130.0, 1.0, "°C")
+            from .coupling import TEMPERATURE_FACTORS  # the slider ends at the table's top (E9)
+
+            c["temperature"] = slider("coupling temperature", t, -20.0, TEMPERATURE_FACTORS.top, 1.0, "°C")
         accuracy = case.sections.get("accuracy")
         if accuracy is not None and "applied_torque" in accuracy:
             t = parse_quantity(accuracy["applied_torque"], "torque", "accuracy.applied_torque").m_as("N*m")

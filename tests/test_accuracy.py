@@ -11,7 +11,7 @@ from calc.accuracy import (
     analyze_positions,
     chain_accuracy,
     lost_motion,
-    low_torque,
+    positioning_rule,
     positioning_accuracy,
     positioning_accuracy_high,
     positioning_accuracy_low,
@@ -56,8 +56,26 @@ def test_three_percent_rule_as_written():
 
 @given(st.floats(min_value=0, max_value=0.03), st.floats(min_value=1, max_value=1e4))
 def test_low_torque_is_at_most_three_percent(share, t_n):
-    assert low_torque(Q_(share * t_n * (1 - 1e-12), "N*m"), Q_(t_n, "N*m"))
-    assert not low_torque(Q_(0.0301 * t_n, "N*m"), Q_(t_n, "N*m"))
+    assert positioning_rule(Q_(share * t_n * (1 - 1e-12), "N*m"), Q_(t_n, "N*m")).low_torque
+    assert not positioning_rule(Q_(0.0301 * t_n, "N*m"), Q_(t_n, "N*m")).low_torque
+
+
+def test_the_rule_says_which_form_and_why():
+    # E13 with T_N = 110 N·m: 3 % is 3.3 N·m. 3.3 N·m is on the line (the backlash form), 3.4 N·m above it;
+    # 0.03 * 110 = 3.3000000000000003 in floats, and 3.3 N·m in mN·m back in N·m is within BOUNDARY_RTOL of it.
+    t_n = Q_(110, "N*m")
+    at = positioning_rule(Q_(3.3, "N*m"), t_n)
+    assert at.low_torque and at.text == "|T| <= 3 % of T_N: phi_TA + j_t" and at.why == "|T| = 3.3 N·m <= 3 % of T_N = 3.3 N·m"
+    assert positioning_rule(Q_(3300, "mN*m"), t_n).low_torque
+    above = positioning_rule(Q_(-3.4, "N*m"), t_n)
+    assert not above.low_torque and above.text == "|T| > 3 % of T_N: phi_TA + |T| / C"
+    assert above.why == "|T| = 3.4 N·m > 3 % of T_N = 3.3 N·m"
+    # The step is the formula of the form that applies: 1 + 3 arcmin at 3.3 N·m, 1 + 3.4 / 1.7 = 3 arcmin at 3.4 N·m.
+    args = (Q_(1, "arcmin"), Q_(3, "arcmin"), Q_(1.7, "N*m/arcmin"))
+    assert at.step(*args).formula is positioning_accuracy_low and at.accuracy(*args).m_as("arcmin") == pytest.approx(4)
+    assert above.step(*args).formula is positioning_accuracy_high and above.accuracy(*args).m_as("arcmin") == pytest.approx(3)
+    with pytest.raises(CalcError, match="nominal_torque: expected a torque above zero"):
+        positioning_rule(Q_(1, "N*m"), Q_(0, "N*m"))
 
 
 def test_repeatability_is_the_backlash_at_rest_and_bounded_by_lost_motion_under_torque():

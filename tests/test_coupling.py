@@ -9,6 +9,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from calc import CalcError, Q_
+from calc.bands import BandTable
 from calc.catalog import load_catalog, resolve
 from calc.coupling import (
     RADIAN,
@@ -77,10 +78,11 @@ def test_nominal_torque_lies_between_zero_and_the_shock_loaded_motor_torque(m_a,
 
 @pytest.mark.parametrize(
     "celsius, factor",
-    [(-20, 1.0), (49.99, 1.0), (50, 1.3), (69.99, 1.3), (70, 1.6), (89.99, 1.6), (90, 1.8), (109.99, 1.8), (110, 2.0), (150, 2.0)],
+    [(-20, 1.0), (49.99, 1.0), (50, 1.3), (69.99, 1.3), (70, 1.6), (89.99, 1.6), (90, 1.8), (109.99, 1.8), (110, 2.0), (120, 2.0)],
 )
 def test_temperature_factor_takes_the_higher_factor_at_a_boundary(celsius, factor):
-    # E9: T < 50 °C → 1.0; 50 <= T < 70 → 1.3; 70 <= T < 90 → 1.6; 90 <= T < 110 → 1.8; T >= 110 → 2.0.
+    # E9: T < 50 °C → 1.0; 50 <= T < 70 → 1.3; 70 <= T < 90 → 1.6; 90 <= T < 110 → 1.8; T >= 110 → 2.0,
+    # up to the table's top, 120 °C.
     assert float(temperature_factor(Q_(celsius, "degC"))) == factor
 
 
@@ -92,8 +94,29 @@ def test_temperature_in_other_units():
 
 def test_another_makers_table_is_data():
     # E9: one elastomer maker publishes 1.0 up to 30 °C, 1.5 at 60, 2.0 at 90, 2.5 at 110 °C.
-    table = ((-math.inf, 1.0), (30.0, 1.5), (60.0, 2.0), (90.0, 2.5))
+    table = BandTable("T", (-math.inf, 30.0, 60.0, 90.0), (1.0, 1.5, 2.0, 2.5), "degC", "temperature", "another maker", top=110.0)
     assert [float(temperature_factor(Q_(t, "degC"), table)) for t in (20, 30, 60, 95)] == [1.0, 1.5, 2.0, 2.5]
+
+
+@pytest.mark.parametrize("temperature", [Q_(-300, "degC"), Q_(-1, "K"), Q_(-500, "degF")])
+def test_temperature_below_absolute_zero_is_an_input_error(temperature):
+    # -300 °C, -1 K and -500 °F (-295.9 °C) all lie below 0 K = -273.15 °C: no factor, an error naming the key.
+    with pytest.raises(CalcError, match=r"^coupling.temperature: expected a temperature above absolute zero"):
+        temperature_factor(temperature, where="coupling.temperature")
+
+
+@pytest.mark.parametrize("temperature", [Q_(121, "degC"), Q_(1000, "degC"), Q_(400, "K"), Q_(Q_(120.5, "degC").m_as("degF"), "degF")])
+def test_temperature_above_the_tables_range_is_an_input_error(temperature):
+    # The source's last band, "> 110 °C", ends at 120 °C, the highest rating of servo elastomer inserts
+    # (thermoplastic polyurethane): 121 °C, 1000 °C, 400 K = 126.85 °C and 120.5 °C in °F lie above it.
+    with pytest.raises(CalcError, match=r"^temperature: expected T <= 120 °C \(the source's temperature-factor table"):
+        temperature_factor(temperature)
+
+
+def test_the_tables_top_belongs_to_it():
+    # 120 °C is the top of the last band (included); 393.15 K is 120 °C, 248 °F is 120.00000000000006 °C,
+    # within the boundary tolerance.
+    assert [float(temperature_factor(t)) for t in (Q_(120, "degC"), Q_(393.15, "K"), Q_(248, "degF"))] == [2.0] * 3
 
 
 def test_temperature_must_be_a_temperature():

@@ -84,8 +84,7 @@ def test_shock_factor_figure_draws_the_table_with_e4_boundaries():
     (ax,) = fig.axes
     lines = {line.get_gid(): line for line in ax.lines}
     assert "case" not in lines
-    bounds = [b for b, _ in SHOCK_FACTORS]
-    factors = [f for _, f in SHOCK_FACTORS]
+    bounds, factors = SHOCK_FACTORS.bounds, SHOCK_FACTORS.factors
     # E4: each boundary is included (filled) in the band it starts and excluded (open) from the one it ends.
     np.testing.assert_array_equal(lines["included"].get_xdata(), bounds)
     np.testing.assert_array_equal(lines["included"].get_ydata(), factors)

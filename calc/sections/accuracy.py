@@ -325,7 +325,7 @@ class AccuracyResult:
             "transmission_accuracy": quantity(c.transmission_accuracy, "arcsec"),
             "transmission_accuracy_from": c.transmission_accuracy_from,
             "lost_motion": quantity(a.lost_motion, "arcmin"),
-            "positioning_rule": "|T| <= 3 % of T_N: phi_TA + j_t" if a.low_torque else "|T| > 3 % of T_N: phi_TA + |T| / C",
+            "positioning_rule": a.rule.text,
             "positioning_accuracy": quantity(a.positioning_accuracy, "arcmin"),
             "repeatability": quantity(a.repeatability, "arcmin"),
             "repeatability_is_bound": a.repeatability_is_bound,
