@@ -5,14 +5,14 @@ SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
-STAMP := $(VENV)/.installed-$(shell sha256sum environment.txt | cut -c1-12)
+STAMP := $(VENV)/.installed-$(shell cat environment.txt pyproject.toml | sha256sum | cut -c1-12)
 EXAMPLE := cases/indexing-table.toml
 
 .PHONY: setup tex test report bench notebooks clean
 
 setup: $(STAMP)
 
-$(STAMP): environment.txt
+$(STAMP): environment.txt pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --disable-pip-version-check -r environment.txt
 	$(PY) -m pip install --quiet --disable-pip-version-check --no-deps -e .

@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from calc.case import read_case
-from calc.evaluate import evaluate
+from calc.sections import evaluate
 
 from .conftest import EXAMPLE, ROOT
 
@@ -101,7 +101,7 @@ def test_pip_install_runs_the_example_case_from_package_data(source, tmp_path):
     assert results["coupling"]["catalog"] == "catalogs/couplings.csv"
     # The user's files, outside any checkout, show absolute; else the installed copy gives the checkout's results.
     assert results["case"] == str(work.resolve() / "cases" / "indexing-table.toml")
-    assert json.loads(out.replace(f"{work.resolve()}/", "")) == json.loads(json.dumps(evaluate(read_case(EXAMPLE))))
+    assert json.loads(out.replace(f"{work.resolve()}/", "")) == json.loads(json.dumps(evaluate(read_case(EXAMPLE)).to_json()))
 
 
 def test_editable_install_maps_the_top_level_folders(source, tmp_path):
