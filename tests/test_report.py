@@ -190,9 +190,9 @@ def test_shock_factor_band_is_the_one_the_factor_came_from():
     from calc import Q_
     from calc.gearbox import shock_factor
     from calc.profile import Z_h
-    from calc.report import _shock_factor_block
+    from calc.report.duty import shock_factor_block
 
     zh = Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))
-    block = _shock_factor_block(zh)
+    block = shock_factor_block(zh)
     assert float(shock_factor(zh)) == 1.3
     assert r"1500 \le Z_h < 2000" in block and "f_{s} = 1.3" in block

@@ -1,0 +1,246 @@
+"""The calc report of a design case: what it holds, collected once and laid out in LaTeX.
+
+:func:`build_report` reads and evaluates a case and collects what a reviewer reads, in the order
+they read it (efficalc's order): the verdict and the chosen parts; the title block (the case file
+and each catalog with its SHA-256, the build date, the package version, the commit:
+:mod:`.provenance`); method and assumptions (the source's sections and the errata readings that
+apply, ``errata.toml``); the inputs; each calculation as ``symbol = formula = substituted values =
+result`` from the :class:`calc.formula.Formula` objects; the checks; the candidate tables; the
+figures; the order lines. Each part is a :class:`Latex` block: the report notebook
+(``reports/calc-report.ipynb``) displays it and nbconvert passes it unchanged into the PDF
+(:mod:`calc.publish`).
+
+Each section of a case has its block module (:data:`BLOCKS`, the shape in :mod:`.common`); a block
+of the report is its frame with each section's part in turn. The LaTeX helpers are in
+:mod:`.latex`, the skeletons of the blocks in ``templates/``.
+
+Text from a case file or a catalog goes through :func:`latex_escape`, so it prints as written. A
+case that fails its checks, or cannot be evaluated at all, still gives a report: its verdict is
+FAIL and it says why.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..case import Case, read_case
+from ..catalog import display_path
+from ..errors import CalcError
+from ..sections import Results, Verdict, evaluate
+from . import accuracy, coupling, drive, duty, gearbox
+from .common import ERRATA, results_of
+from .latex import Latex, itemize, latex_escape, prose, q, render, table, util
+from .provenance import PACKAGE, build_date, git_commit, sha256
+
+__all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
+
+#: The block module of each section, in the order the report shows them.
+BLOCKS = (drive, duty, gearbox, coupling, accuracy)
+
+#: What every report assumes.
+ASSUMPTIONS = (
+    "The load cycle is given at the gearbox output: each segment's mean output speed and output torque, "
+    "pauses by their duration.",
+    "Ratings are the catalog's published figures (each row names its source); rows marked illustrative are not "
+    "a maker's own figures and are never chosen without a look at the maker's data.",
+    "The operating mode decides which checks govern the verdict; the checks of the other mode are reported "
+    "for information only.",
+)
+
+
+def _parts(block: str, report) -> list:
+    """Every section's part of a block, in the order of :data:`BLOCKS`."""
+    return [x for m in BLOCKS for x in getattr(m, block)(report)]
+
+
+@dataclass
+class Report:
+    """Everything a calc report holds, collected from one case file."""
+
+    path: Path
+    title: str
+    built: str
+    commit: str
+    case: Case | None = None
+    evaluated: Results | None = None
+    results: dict | None = None  # evaluated, as the JSON contract writes it (every candidate)
+    selection: object = None  # GearboxSelection
+    coupling: object = None  # (CouplingCase, CouplingSelection) when the case has [coupling]
+    accuracy: object = None  # (AccuracyCase, ChainAccuracy) when the case has [accuracy]
+    error: str | None = None  # why the case could not be evaluated
+    files: list = field(default_factory=list)  # (label, path text, sha256)
+
+    # -- the verdict -------------------------------------------------------------------------
+
+    @property
+    def chosen(self) -> list[tuple[str, str, str]]:
+        """(what, part, detail) of each chosen part; part is None where none passes."""
+        return _parts("chosen", self) if self.results is not None else []
+
+    @property
+    def verdict(self) -> Verdict:
+        """The case's one verdict (:mod:`calc.sections`); FAIL with the reason for a case that
+        cannot be evaluated."""
+        if self.error is not None:
+            return Verdict(False, [f"The case cannot be evaluated: {self.error}"])
+        return self.evaluated.verdict
+
+    @property
+    def reasons(self) -> list[str]:
+        """Why the case does not pass, one plain sentence each (empty when it passes)."""
+        return self.verdict.reasons
+
+    @property
+    def passes(self) -> bool:
+        return self.verdict.passes is True
+
+    def summary_line(self) -> str:
+        """One line for a terminal: verdict, case, chosen parts or the first reason."""
+        if self.passes:
+            what = ", ".join(f"{w.lower()} {p}" for w, p, _ in self.chosen)
+        else:
+            what = " ".join(self.reasons[:2])
+        return f"{self.verdict.word}  {display_path(self.path)}: {what}"
+
+    # -- the blocks, in the order of the report ------------------------------------------------
+
+    def front_page(self) -> Latex:
+        """Title, verdict with its reasons, chosen parts, title block and signature lines."""
+        render_reason = latex_escape if self.error else prose  # an error message quotes the case file as written
+        chosen = ""
+        if self.chosen:
+            rows = [[w, latex_escape(p) if p else r"\textcolor{failred}{none passes}", latex_escape(d)] for w, p, d in self.chosen]
+            chosen = table(r"@{}l l p{0.55\linewidth}@{}", ["Part", "Chosen", "Basis"], rows)
+        rows = [
+            ["Case file", rf"\texttt{{{latex_escape(display_path(self.path))}}}"],
+            ["SHA-256", rf"\texttt{{\footnotesize {self.files[0][2]}}}" if self.files else "unreadable"],
+        ]
+        for label, path, digest in self.files[1:]:
+            rows += [[latex_escape(label), rf"\texttt{{{latex_escape(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
+        rows += [
+            ["Built", latex_escape(self.built)],
+            ["Package", latex_escape(PACKAGE)],
+            ["Commit", rf"\texttt{{\footnotesize {latex_escape(self.commit)}}}"],
+        ]
+        return Latex(render(
+            "front-page.tex.j2", title=self.title, case=display_path(self.path), word=self.verdict.word, passes=self.passes,
+            governing=self._governing_lines(), reasons=[rf"\item {render_reason(r)}" for r in self.reasons], chosen=chosen,
+            title_block=table(r"@{}l p{0.78\linewidth}@{}", ["Item", "Value"], rows),
+        ))
+
+    def _governing_lines(self) -> str:
+        """The governing checks of each chosen part, one line each with its utilization."""
+        lines = []
+        for name in (m.NAME for m in BLOCKS):
+            s = results_of(name, self)
+            if not s or not s.get("candidates") or not s.get("selected"):
+                continue
+            c = s["candidates"][0]
+            for k in c.get("checks", []):
+                if k.get("governs", True):
+                    crit = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+                    lines.append(rf"{latex_escape(name.capitalize())} {latex_escape(c['part'])}: {crit}: "
+                                 rf"{q(k['required'])} against {q(k['rated'])}, utilization {util(k['utilization'])}")
+        return itemize(lines) if lines else ""
+
+    def method(self) -> Latex:
+        """The source's sections, the errata readings that apply, and the assumptions."""
+        if self.case is None:
+            return Latex("")
+        applied = set(_parts("readings", self))
+        rankings = [f"Ranking of the {m.NAME} candidates: {s['ranking']}."
+                    for m in BLOCKS if (s := results_of(m.NAME, self)) and s.get("ranking")]
+        return Latex(render(
+            "method.tex.j2", sources=_parts("sources", self),
+            readings=[(k, e["text"]) for k, e in ERRATA.items() if "section" not in e or k in applied],
+            assumptions=[*ASSUMPTIONS, *rankings],
+        ))
+
+    def inputs(self) -> Latex:
+        """The inputs as tables: symbol, value, unit, description (and where in the case file)."""
+        if self.case is None:
+            return Latex("")
+        out = [r"\section{Inputs}"]
+        rows = _parts("input_rows", self)
+        if rows:
+            out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
+        return Latex("\n".join(out + _parts("inputs", self)))
+
+    def calculations(self) -> Latex:
+        """Every formula used, as ``symbol = formula = values = result`` with its reference."""
+        if self.results is None:
+            return Latex("")
+        return Latex("\n".join([r"\section{Calculations}", *_parts("steps", self)]))
+
+    def checks(self) -> Latex:
+        """The checks of each chosen part (or the closest candidate) with required, rated,
+        utilization and verdict."""
+        out = _parts("checks", self) if self.results else []
+        return Latex("\n".join([r"\section{Checks}", *out]) if out else "")
+
+    def candidates(self) -> Latex:
+        """Every candidate: its catalog ratings, and the utilization of each check."""
+        out = _parts("candidates", self) if self.results else []
+        return Latex("\n".join([r"\section{Candidates}", *out]) if out else "")
+
+    def section_results(self) -> Latex:
+        """What the coupling and accuracy sections give besides their checks."""
+        out = _parts("results", self) if self.results else []
+        return Latex("\n".join([r"\section{Coupling and accuracy: results}", *out]) if out else "")
+
+    def figures(self) -> list:
+        """(figure, caption) pairs: the load cycle, the shock factor, the utilizations, each
+        section's; the caption is LaTeX, for the output's ``caption`` metadata that our LaTeX
+        template reads."""
+        return _parts("figures", self) if self.case is not None else []
+
+    def figures_heading(self) -> Latex:
+        return Latex(r"\clearpage\section{Figures}") if self.case is not None else Latex("")  # figures start a page
+
+    def order_lines(self) -> Latex:
+        """What to order: one line per chosen part."""
+        if not self.results:
+            return Latex("")
+        return Latex(render("order.tex.j2", lines=_parts("order_lines", self)))
+
+
+def build_report(case_path) -> Report:
+    """Read and evaluate a case and collect its report; a case that cannot be evaluated gives a
+    report whose verdict is FAIL with the reason (never an exception for bad input)."""
+    path = Path(case_path)
+    report = Report(path=path, title=path.stem, built=build_date(), commit=git_commit())
+    if path.is_file():
+        report.files.append(("Case file", display_path(path), sha256(path)))
+    try:
+        case = read_case(path)
+    except CalcError as exc:
+        report.error = str(exc)
+        return report
+    return report_of(case, report)
+
+
+def report_of(case: Case, report: Report | None = None) -> Report:
+    """Evaluate a case already read (the design review passes changed copies) into ``report``
+    (a new one, without build date and commit, when not given)."""
+    if report is None:
+        report = Report(path=case.path, title=case.title, built="", commit="")
+    report.case, report.title = case, case.title
+    try:
+        evaluated = evaluate(case)
+        results = evaluated.to_json(candidates=None)
+    except CalcError as exc:
+        report.error = str(exc)
+        return report
+    report.evaluated, report.results = evaluated, results
+    if gearbox.NAME in evaluated.sections:
+        report.selection = evaluated[gearbox.NAME].selection
+    if coupling.NAME in evaluated.sections:
+        report.coupling = (evaluated[coupling.NAME].inputs, evaluated[coupling.NAME].selection)
+    if accuracy.NAME in evaluated.sections:
+        report.accuracy = (evaluated[accuracy.NAME].inputs, evaluated[accuracy.NAME].accuracy)
+    for m in BLOCKS:
+        s = results_of(m.NAME, report)
+        if s and s.get("catalog") and s.get("catalog_sha256"):
+            report.files.append((f"{m.NAME.capitalize()} catalog", s["catalog"], s["catalog_sha256"]))
+    return report

@@ -1,0 +1,145 @@
+"""Accuracy in the calc report: its inputs, the measured loops and traces and the chain's
+accuracy as calculations, its results, checks against the case's requirements, and the figures
+(the stiffness chain, hysteresis loops, transmission error, measured positions)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from . import common
+from .common import further_candidates, further_checks, further_chosen, further_order_lines, raw_section_tables, results_of
+from .latex import latex_escape, listed, plain, prose, q, step_block, table
+from .provenance import PROJECT_DIR
+
+NAME = "accuracy"
+
+#: What each key of ``[accuracy]`` means, for the inputs table: (symbol name in the accuracy
+#: formulas, or None; description when there is no symbol).
+KEYS = {
+    "applied_torque": ("T", ""), "nominal_torque": (None, "nominal torque for the 3 % rule (E13)"),
+    "positions": (None, "file of measured positions"),
+    "required_positioning_accuracy": (None, "positioning accuracy required"),
+    "required_repeatability": (None, "repeatability required"),
+}
+
+
+def _described(report) -> bool:
+    return report.case.sections.get(NAME) is not None
+
+
+def sources(report) -> list[str]:
+    return common.sources(NAME, report) if _described(report) else []
+
+
+def readings(report) -> set[str]:
+    return common.readings(NAME) if _described(report) else set()
+
+
+def inputs(report) -> list[str]:
+    if not _described(report):
+        return []
+    from ..accuracy import lost_motion
+
+    symbols = {s.name: s for s in (lost_motion.result, *lost_motion.inputs)}
+    return [raw_section_tables(NAME, report.case.sections[NAME], symbols, KEYS, {})]
+
+
+def steps(report) -> list[str]:
+    if report.accuracy is None:
+        return []
+    spec, a = report.accuracy
+    out = []
+    for name, (path, analysis) in spec.loops.items():
+        out.append(rf"\subsection{{Measured hysteresis loop of {latex_escape(name)}}}")
+        out.append(rf"From \texttt{{{latex_escape(path)}}} (E12).")
+        out += [step_block(s.formula.result.description.capitalize(), s) for s in analysis.steps()]
+    for name, (path, analysis) in spec.traces.items():
+        out.append(rf"\subsection{{Measured transmission error of {latex_escape(name)}}}")
+        out.append(rf"From \texttt{{{latex_escape(path)}}}.")
+        out.append(step_block(analysis.step().formula.result.description.capitalize(), analysis.step()))
+    out.append(r"\subsection{Accuracy of the drive train at the output}")
+    out.append(prose(f"Applied torque: {a.rule.why}, so the positioning rule of E13 for that range applies, {a.rule.text}."))
+    out += [step_block(s.formula.result.description.capitalize(), s) for s in a.steps()]
+    return out
+
+
+def results(report) -> list[str]:
+    """The chain's stiffness, backlash, transmission accuracy, lost motion, positioning accuracy
+    and repeatability, and each member referred to the output."""
+    a = results_of(NAME, report)
+    if not a:
+        return []
+    rep = "repeatability, an upper bound under torque (E13)" if a["repeatability_is_bound"] else "repeatability (E13)"
+    rows = [
+        [r"$C_{\mathrm{total}}$", q(a["C_total"]), prose("total torsional stiffness at the output (E11)")],
+        [r"$j_{t}$", q(a["backlash"]), prose("torsional backlash at the output")],
+        [r"$\varphi_{\mathrm{TA}}$", q(a["transmission_accuracy"]),
+         prose("angular transmission accuracy, from " + listed(a["transmission_accuracy_from"]))],
+        [r"$\varphi_{\mathrm{LM}}$", q(a["lost_motion"]), prose("total lost motion at the applied torque (E12)")],
+        [r"$\Delta\varphi_{P}$", q(a["positioning_accuracy"]), prose(f"positioning accuracy, {a['positioning_rule']} (E13)")],
+        ["–", q(a["repeatability"]), prose(rep)],
+    ]
+    comp = [[latex_escape(m["name"]), latex_escape(m["side"]), q(m["stiffness_at_output"]), q(m["backlash_at_output"]),
+             q(m.get("transmission_accuracy_at_output")), f"{100 * m['share_of_compliance']:.1f}", q(m["twist_at_applied_torque"])]
+            for m in a["components"]]
+    return [
+        r"\subsection{Accuracy: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows),
+        table(r"@{}l l r r r r r@{}", ["Member", "Side", "$C$", "$j_t$", r"$\varphi_{\mathrm{TA}}$",
+                                       r"$1/C$ [\%]", r"Twist at $T$"], comp, small=True,
+              caption=prose(f"Members of the chain referred to the output, at T = {plain(a['applied_torque'])}")),
+    ]
+
+
+def figures(report) -> list:
+    """The chain's figures; without measured loops, the chosen gearbox's loop modelled from its
+    catalog figures (also for a case without ``[accuracy]``)."""
+    if report.accuracy is None and report.selection is None:
+        return []
+    from ..accuracy_plots import hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure
+    from ..hysteresis import analyze_loop, model_for_part, read_loop
+
+    out = []
+    spec = report.accuracy[0] if report.accuracy else None
+    if spec is not None:
+        out.append((stiffness_chain_figure(spec.chain, spec.applied_torque),
+                    "Stiffness chain referred to the output (E11): each member's share of the twist."))
+        for name, (path, analysis) in spec.loops.items():
+            # a relative display path lies in the checkout (an installed calc shows measurements absolute)
+            loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
+            out.append((hysteresis_figure(loop, analysis), latex_escape(f"Measured hysteresis loop of {name} (E12).")))
+    if (spec is None or not spec.loops) and report.selection is not None:
+        sel, row = report.selection, int(report.selection.order[0])
+        if not (np.isnan(sel.catalog["C_t21"][row].magnitude) or np.isnan(sel.catalog["backlash"][row].magnitude)):
+            part = str(sel.catalog.parts[row])
+            model = model_for_part(part, str(sel.catalog.path))
+            loop = model.loop(800)
+            out.append((hysteresis_figure(loop, analyze_loop(loop, model.nominal_torque)),
+                        latex_escape(f"Hysteresis loop of {part} modelled from its catalog figures (C_t21, backlash, T_2N), "
+                                     "not a measurement (E12).")))
+    if spec is not None:
+        for name, (path, analysis) in spec.traces.items():
+            out.append((transmission_error_figure(analysis), latex_escape(f"Transmission error of {name}, from {path}.")))
+        if spec.positions is not None:
+            out.append((positioning_scatter_figure(spec.positions), "Measured positions: accuracy and repeatability."))
+    return out
+
+
+def checks(report) -> list[str]:
+    return further_checks(NAME, report)
+
+
+def candidates(report) -> list[str]:
+    return further_candidates(NAME, report)
+
+
+def chosen(report) -> list[tuple]:
+    return further_chosen(NAME, report)
+
+
+def order_lines(report) -> list[str]:
+    return further_order_lines(NAME, report)
+
+
+input_rows = common.nothing

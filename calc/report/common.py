@@ -1,0 +1,189 @@
+"""What the section blocks of the calc report share.
+
+Every block module (:mod:`.drive`, :mod:`.duty`, :mod:`.gearbox`, :mod:`.coupling`,
+:mod:`.accuracy`) has the same shape: ``NAME`` (its key in the results), and functions of the
+:class:`calc.report.Report` that each give that section's part of one block of the report, empty
+where the section has none: ``sources`` and ``readings`` (method), ``input_rows`` (rows of the
+inputs table) and ``inputs`` (tables after it), ``steps`` (calculations), ``results``, ``checks``,
+``candidates``, ``figures`` ((figure, caption) pairs), ``chosen`` ((what, part, detail) rows) and
+``order_lines``. The further sections (coupling, accuracy) write their checks, candidates, chosen
+part and order line the same way (:func:`further_checks` ...).
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+from ..formula import REGISTRY
+from ..gearbox import inertia_ratio
+from ..units import pretty_unit, sig
+from .latex import itemize, latex_escape, prose, q, table, text_math, util, value_unit, verdict_mark
+
+_METHOD = tomllib.loads((Path(__file__).parent / "errata.toml").read_text(encoding="utf-8"))
+#: The sections of the source document each section of a case is computed from.
+SOURCE_SECTIONS: dict = _METHOD["sources"]
+#: The errata readings by key (E1, ...), each with its ``text`` and the ``section`` it applies to
+#: (none: every case), in the order of ``errata.md``.
+ERRATA: dict = _METHOD["errata"]
+
+
+def nothing(report) -> list:
+    """A section's part of a block where it has none."""
+    return []
+
+
+def sources(name: str, report) -> list[str]:
+    """The source's sections a described section is computed from."""
+    return list(SOURCE_SECTIONS.get(name, ()))
+
+
+def readings(name: str) -> set[str]:
+    """The keys of the errata readings of a section."""
+    return {k for k, e in ERRATA.items() if e.get("section") == name}
+
+
+def results_of(name: str, report) -> dict | None:
+    """A section's results as the JSON contract writes them; None where it has none."""
+    return (report.results or {}).get(name)
+
+
+def gearbox_symbols() -> dict:
+    """The symbols of the load cycle's and the gearbox's formulas, by their name in code (the
+    case's [motor], [load], [gearbox] and [[profile]] inputs; the further sections have their own:
+    a coupling's J_L is another quantity than the gearbox's)."""
+    own = ("calc.profile.", "calc.gearbox.")
+    return {s.name: s for f in REGISTRY if f.key.startswith(own) for s in (f.result, *f.inputs)}
+
+
+def input_row(symbol, quantity, key: str) -> list[str]:
+    """A row of the inputs table: symbol, value, unit, description, case key."""
+    unit = symbol.unit
+    return [f"${symbol.latex}$", sig(quantity.m_as(unit)), latex_escape(pretty_unit(unit)) or "–",
+            latex_escape(symbol.description), rf"\texttt{{\footnotesize {latex_escape(key)}}}"]
+
+
+def checks_table(candidate: dict, caption: str) -> str:
+    """Required, rated, utilization and verdict of each check of one candidate; checks of the
+    other operating mode (gearboxes) in grey, for information."""
+    modes = any(k.get("mode") for k in candidate["checks"])
+    rows = []
+    for k in candidate["checks"]:
+        grey = "" if k.get("governs", True) else r"\color{infogrey}"
+        name = text_math(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+        cells = [grey + name] + ([grey + latex_escape(k.get("mode", ""))] if modes else [])
+        cells += [grey + q(k["required"]), grey + q(k["rated"]), grey + util(k["utilization"]),
+                  grey + verdict_mark(k["passes"]) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)")]
+        rows.append(cells)
+    header = ["Criterion"] + (["Mode"] if modes else []) + ["Required", "Rated", "Utilization", "Verdict"]
+    return table("@{}l " + ("l " if modes else "") + "r r r l@{}", header, rows, caption=latex_escape(caption),
+                 note="Utilization = required / rated; a check passes at 1.00 or below.")
+
+
+def requirement_table(checks: list, caption: str) -> str:
+    """Checks of a value reached against a limit the case requires (``value <= required``)."""
+    rows = [[prose(k["criterion"].replace("_", " ")), q(k["value"]), q(k["required"]), util(k["utilization"]), verdict_mark(k["passes"])]
+            for k in checks]
+    return table(r"@{}l r r r l@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
+                 caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")
+
+
+def candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
+    """The utilization of each check of each candidate, best first (and its inertia ratio)."""
+    checks = [k for c in section["candidates"] for k in c.get("checks", [])]
+    names = list(dict.fromkeys(k["name"] for k in checks))  # every check any candidate has, in order
+    governs = {k["name"]: k.get("governs", True) for k in checks}
+    header = ["Part"] + [
+        (r"\color{infogrey}" if not governs[n] else "") + text_math(n) for n in names
+    ] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
+    rows = []
+    for c in section["candidates"]:
+        by = {k["name"]: k for k in c.get("checks", [])}
+        cells = [latex_escape(c.get("part", ""))]
+        cells += [(r"\color{infogrey}" if not governs[n] else "") + util(by[n]["utilization"]) if n in by else "–" for n in names]
+        if inertia:
+            cells.append("–" if c.get("inertia_ratio") is None else f"{c['inertia_ratio']:.2f}")
+        cells.append(verdict_mark(c.get("passes", False)) + (r"{} \footnotesize(chosen)" if c.get("part") == section.get("selected") else ""))
+        rows.append(cells)
+    cols = "@{}l " + "r " * (len(names) + (1 if inertia else 0)) + "l@{}"
+    criteria = {k["name"]: k.get("criterion") for c in section["candidates"] for k in c.get("checks", [])}
+    note = "Checks: " + "; ".join(text_math(criteria[n]) if criteria.get(n) else latex_escape(n) for n in names) + "."
+    if inertia:
+        note += rf" ${inertia_ratio.latex()}$, load to motor inertia ratio (E6)."
+    return table(cols, header, rows, caption=caption, note=note)
+
+
+def rejected(section: dict) -> list[str]:
+    """Why the rejected candidates fail, one item each; nothing when none is."""
+    out = [c for c in section["candidates"] if c.get("reasons")]
+    if not out:
+        return []
+    items = [rf"\textbf{{{latex_escape(c['part'])}}}: {prose('; '.join(c['reasons']))}" for c in out]
+    return [r"\paragraph{Why the others are rejected.}" + itemize(items)]
+
+
+def raw_section_tables(name: str, raw: dict, symbols: dict, keys: dict, derived: dict) -> str:
+    """A further section of the case as its inputs: symbol, value, unit, description, key; its
+    arrays of tables (the members of an accuracy chain) as one row each, figures as written.
+    ``symbols`` are the section's formulas' symbols by name, ``keys`` what each key means (symbol
+    name or None, description where there is no symbol), ``derived`` the inputs the case left out
+    and the package took from the rest of the case."""
+    rows, members = [], []
+    for key, v in {**raw, **derived}.items():
+        if isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            members += [(key, k, x) for k, x in enumerate(v, start=1)]
+            continue
+        sym_name, desc = keys.get(key, (None, ""))
+        sym = symbols.get(sym_name)
+        value, unit = value_unit(v)
+        where = rf"\texttt{{{latex_escape(f'{name}.{key}')}}}" + (r"\textsuperscript{\dag}" if key in derived else "")
+        rows.append([f"${sym.latex}$" if sym else "–", value, unit, latex_escape(sym.description if sym else desc), where])
+    out = [rf"\subsection*{{{latex_escape(name.capitalize())}}}"]
+    if rows:
+        note = (r"\textsuperscript{\dag} Not in the case file: taken from the rest of the case (a coupling between "
+                r"motor and gearbox, E8); the calculations show how.") if derived else ""
+        out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows, note=note))
+    if members:
+        body = []
+        for key, k, x in members:
+            what = ", ".join(f"{f} = {x[f]}" for f in x if f not in ("name", "side", "part"))
+            body.append([rf"\texttt{{\footnotesize {latex_escape(f'{name}.{key}[{k}]')}}}", latex_escape(x.get("name") or x.get("part", "")),
+                         latex_escape(x.get("side", "output" if "part" in x else "")), latex_escape(what)])
+        out.append(table(r"@{}l l l p{0.42\linewidth}@{}", ["Case key", "Member", "Side", "Figures as written"], body,
+                         caption=latex_escape(f"Members of the {name} chain, drive to load")))
+    return "\n".join(out)
+
+
+# -- the further sections' checks, candidates, chosen part and order line ------------------------
+
+
+def further_checks(name: str, report) -> list[str]:
+    """The checks of the first candidate, or the checks against the case's requirements."""
+    s = results_of(name, report)
+    if s and s.get("candidates"):
+        first = s["candidates"][0]
+        return [checks_table(first, f"Checks of {name} {first.get('part', '')}")] if first.get("checks") else []
+    if s and s.get("checks"):
+        return [requirement_table(s["checks"], f"{name.capitalize()} against the requirements of the case")]
+    return []
+
+
+def further_candidates(name: str, report) -> list[str]:
+    s = results_of(name, report)
+    if not (s and s.get("candidates")):
+        return []
+    return [rf"\subsection*{{{name.capitalize()}}}",
+            candidates_table(s, latex_escape(f"Utilization of each check of the {name} candidates, best first")),
+            *rejected(s)]
+
+
+def further_chosen(name: str, report) -> list[tuple]:
+    s = results_of(name, report)
+    if s and "selected" in s:
+        return [(name.capitalize(), s["selected"], f"catalog {s['catalog']}" if s.get("catalog") else "")]
+    return []
+
+
+def further_order_lines(name: str, report) -> list[str]:
+    s = results_of(name, report)
+    return [latex_escape(s["order"])] if s and s.get("order") else []

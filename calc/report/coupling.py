@@ -1,0 +1,157 @@
+"""The coupling in the calc report: its inputs (with what a motor-side coupling takes from the
+rest of the case), nominal torque and resonance as calculations, its results, checks,
+candidates, figures and order line."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..units import Q_, sig
+from . import common
+from .common import further_candidates, further_checks, further_chosen, further_order_lines, raw_section_tables, results_of
+from .latex import itemize, latex_escape, plain, prose, q, step_block, table
+
+NAME = "coupling"
+
+#: What each key of ``[coupling]`` means, for the inputs table: (symbol name in the coupling's
+#: formulas, or None; description when there is no symbol).
+KEYS = {
+    "catalog": (None, "coupling catalog"), "type": (None, "coupling type"), "part": (None, "coupling part to check"),
+    "side": (None, "where the coupling sits (input: between motor and gearbox)"),
+    "accel_torque": ("M_a", ""), "drive_inertia": ("J_drive", ""), "load_inertia": ("J_load", ""),
+    "service_factor": ("S_A", ""), "temperature": (None, "operating temperature (elastomer couplings, E9)"),
+    "excitation_frequency": ("f_er", ""), "speed": (None, "speed of the coupling"),
+    "shaft_1": (None, "shaft 1 with its fit"), "shaft_2": (None, "shaft 2 with its fit"),
+    "disengagement_torque": (None, "disengagement torque T_A (safety couplings, E10)"),
+    "shaft_distance": ("A", ""),
+}
+
+
+def _described(report) -> bool:
+    return report.case.sections.get(NAME) is not None
+
+
+def sources(report) -> list[str]:
+    return common.sources(NAME, report) if _described(report) else []
+
+
+def readings(report) -> set[str]:
+    return common.readings(NAME) if _described(report) else set()
+
+
+def _derived_inputs(report, raw: dict) -> dict:
+    """The inputs that the case left out and the package took from the rest of it (a motor-side
+    coupling's M_a, J_drive, J_load, speed), as the case would write them."""
+    if report.coupling is None:
+        return {}
+    units = {"accel_torque": "N*m", "drive_inertia": "kg*cm**2", "load_inertia": "kg*cm**2", "speed": "rpm"}
+    x = report.coupling[0].inputs
+    return {k: f"{sig(x[k].m_as(u))} {u}" for k, u in units.items() if k not in raw and x.get(k) is not None}
+
+
+def inputs(report) -> list[str]:
+    if not _described(report):
+        return []
+    from .. import coupling as cp
+
+    raw = report.case.sections[NAME]
+    symbols = {s.name: s for f in (cp.M_N, cp.f_e_min, cp.Z) for s in (f.result, *f.inputs)}
+    return [raw_section_tables(NAME, raw, symbols, KEYS, _derived_inputs(report, raw))]
+
+
+def steps(report) -> list[str]:
+    if report.coupling is None:
+        return []
+    from .. import coupling as cp
+
+    cc, sel = report.coupling
+    x, cat = cc.inputs, sel.catalog
+    row = int(sel.order[0])
+    part = latex_escape(str(cat.parts[row]))
+    chosen = "the chosen coupling" if sel.selected else "the closest candidate (none passes)"
+    out = [r"\subsection{Coupling: nominal torque and resonance}"]
+    if "load_inertia" in _derived_inputs(report, report.case.sections[NAME]) and report.selection is not None:
+        g = report.selection.catalog
+        k = int(report.selection.order[0])
+        out.append(step_block(
+            f"Load inertia seen by the coupling, through {latex_escape(str(g.parts[k]))}",
+            cp.J_load_at_input.step(J_L=report.case.load_inertia, i=g["ratio"][k], J_1=g["J_1"][k]),
+        ))
+    m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
+    out.append(step_block("Nominal torque of the coupling", m_n, "compared with T_KN"))
+    if sel.row_type(row) == "elastomer":
+        bands = cp.TEMPERATURE_FACTORS
+        band = bands.text(int(bands.band(x["temperature"], "coupling.temperature")))
+        out.append(step_block(f"With the temperature factor ({part})",
+                              cp.M_Nt.step(M_N=m_n.result, K_T=Q_(float(sel.temperature_factor[row]), "")),
+                              f"K_T of the band {band} (E9)"))
+    out.append(step_block("Lowest natural frequency allowed", cp.f_e_min.step(f_er=x["excitation_frequency"])))
+    if np.isnan(sel.f_e[row].magnitude):
+        return out
+    out.append(rf"\subsection{{Natural frequency of {chosen}, {part}}}")
+    J = cat["J"][row]
+    out.append(step_block("Drive side with half the coupling", cp.J_A.step(J_drive=x["drive_inertia"], J_K=J)))
+    out.append(step_block("Load side with half the coupling", cp.J_L.step(J_load=x["load_inertia"], J_K=J)))
+    if sel.row_type(row) == "line-shaft" and x["shaft_distance"] is not None:
+        z = cp.Z.step(A=x["shaft_distance"], H=cat["H"][row])
+        out.append(step_block("Tube length", z))
+        out.append(step_block("Stiffness of the line shaft", cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row])))
+    out.append(step_block("Natural frequency", cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L=sel.J_L[row]),
+                          "compared with 2 f_er"))
+    return out
+
+
+def results(report) -> list[str]:
+    """What the coupling gives besides its checks: M_N, T_op, K_ϑ, f_e,min, the shafts, notes."""
+    c = results_of(NAME, report)
+    if not c:
+        return []
+    rows = [
+        [r"$M_{N}$", q(c["M_N"]), prose(f"nominal torque of the coupling, S_A = {c['service_factor']:g} included (E8)")],
+        [r"$T_{\mathrm{op}}$", q(c["T_op"]), prose("peak torque of normal operation (M_N with S_A = 1)")],
+        [r"$K_{\vartheta}$", f"{c['temperature_factor']:g}",
+         prose("temperature factor (elastomer couplings, E9)" + (f" at {plain(c['temperature'])}" if c.get("temperature") else ""))],
+        [r"$f_{e,\mathrm{min}}$", q(c["f_e_min"]), prose("lowest natural frequency allowed, 2 f_er (E7)")],
+    ]
+    out = [r"\subsection{Coupling: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows)]
+    bores = [[rf"\texttt{{\footnotesize coupling.{latex_escape(b['key'])}}}", latex_escape(b["text"]),
+              latex_escape(b.get("limits") or "–")] for b in c.get("bores", [])]
+    if bores:
+        out.append(table(r"@{}l l l@{}", ["Case key", "Shaft as written", "Limits of the shaft (ISO 286)"], bores,
+                         caption="Shafts of the coupling"))
+    if c.get("notes"):
+        out.append(r"\paragraph{Notes.}" + itemize(prose(n) for n in c["notes"]))
+    return out
+
+
+def figures(report) -> list:
+    if report.coupling is None:
+        return []
+    from ..coupling import f_e_min
+    from ..coupling_plots import natural_frequency_figure, temperature_factor_figure
+
+    cc, sel = report.coupling
+    out = [(natural_frequency_figure(sel, f_e_min(f_er=cc.inputs["excitation_frequency"])),
+            prose("Natural frequency of each coupling candidate against the lowest allowed, 2 f_er (E7)."))]
+    if (sel.catalog.text["type"] == "elastomer").any():
+        out.append((temperature_factor_figure(cc.inputs["temperature"]), "Temperature factor of elastomer couplings (E9)."))
+    return out
+
+
+def checks(report) -> list[str]:
+    return further_checks(NAME, report)
+
+
+def candidates(report) -> list[str]:
+    return further_candidates(NAME, report)
+
+
+def chosen(report) -> list[tuple]:
+    return further_chosen(NAME, report)
+
+
+def order_lines(report) -> list[str]:
+    return further_order_lines(NAME, report)
+
+
+input_rows = common.nothing

@@ -1,0 +1,67 @@
+"""The load cycle in the calc report: its table, the duty cycle, the S1 means and the S5 values
+with the shock factor, and the figures of the cycle and of the shock factor."""
+
+from __future__ import annotations
+
+from ..gearbox import SHOCK_FACTORS
+from ..profile import ED, T_2m, Z_h, n_2m
+from ..profile import t_k as t_k_symbol
+from ..units import sig
+from .common import gearbox_symbols, nothing
+from .latex import num, render, step_block, table
+
+NAME = "duty"
+
+
+def shock_factor_block(zh) -> str:
+    """The shock factor of ``Z_h`` (a quantity) with its band, the one calc.gearbox.shock_factor
+    chooses (E4, with its boundary tolerance)."""
+    k = int(SHOCK_FACTORS.band(zh, "Z_h"))
+    return render(
+        "shock-factor.tex.j2", fs=f"{SHOCK_FACTORS.factors[k]:g}", band=SHOCK_FACTORS.text(k, latex=True),
+        zh=sig(zh.m_as(SHOCK_FACTORS.unit)),
+    )
+
+
+def inputs(report) -> list[str]:
+    p, s = report.case.profile, gearbox_symbols()
+    rows = []
+    for k, (phase, t, n, T) in enumerate(zip(p.phases, p.durations, p.speeds, p.torques), start=1):
+        moving = phase != "pause"
+        rows.append([str(k), phase, num(t, "s"), num(n, "rpm") if moving else "–", num(T, "N*m") if moving else "–"])
+    return [table(
+        r"@{}r l r r r@{}",
+        ["k", "Phase", f"${t_k_symbol.latex}$ [s]", rf"${s['n_2k'].latex}$ [rpm]", rf"${s['T_2k'].latex}$ [N·m]"],
+        rows,
+        caption="Load cycle at the gearbox output (case key \\texttt{[[profile]]})",
+        note="Speeds are the mean output speed of each segment; a negative torque brakes.",
+    )]
+
+
+def steps(report) -> list[str]:
+    p = report.case.profile
+    seg = p.moving_values()
+    s_zh = Z_h.step(t_cycle=p.t_cycle)
+    return [
+        r"\subsection{Duty cycle and operating mode}",
+        step_block("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle), f"operating mode {report.results['duty']['mode']} (E3)"),
+        r"\subsection{Continuous operation (S1)}",
+        step_block("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),
+        step_block("Cubic mean output torque", T_2m.step(**seg)),
+        r"\subsection{Cycle operation (S5)}",
+        step_block("Cycles per hour", s_zh),
+        shock_factor_block(s_zh.result),
+    ]
+
+
+def figures(report) -> list:
+    from ..plots import load_cycle_figure, shock_factor_figure
+
+    p = report.case.profile
+    return [
+        (load_cycle_figure(p), "Load cycle at the gearbox output, with ED and the operating mode (E3)."),
+        (shock_factor_figure(Z_h(t_cycle=p.t_cycle)), "Shock factor against cycles per hour; the case's point marked (E4)."),
+    ]
+
+
+input_rows = results = checks = candidates = chosen = order_lines = sources = readings = nothing

@@ -1,0 +1,131 @@
+"""The gearbox in the calc report: its inputs, the checks of the chosen gearbox (or the closest
+candidate) as calculations and as a table, the candidates with their catalog ratings, the
+utilization figure and the order line."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..gearbox import T_2max, inertia_ratio, n_1
+from ..profile import n_2m
+from ..units import Q_, sig
+from . import common
+from .common import candidates_table, checks_table, gearbox_symbols, input_row, nothing, rejected, results_of
+from .latex import latex_escape, num, step_block, table
+
+NAME = "gearbox"
+
+
+def sources(report) -> list[str]:
+    return common.sources(NAME, report)
+
+
+def readings(report) -> set[str]:
+    """Every gearbox reading; the inertia match (E6) only where the report gives the ratio."""
+    out = common.readings(NAME)
+    return out if report.selection is not None and report.selection.inertia_ratio is not None else out - {"E6"}
+
+
+def input_rows(report) -> list[list[str]]:
+    c = report.case
+    rows = [input_row(gearbox_symbols()["i"], c.ratio, "gearbox.ratio")] if c.ratio is not None else []
+    if c.gearbox_part:
+        rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", r"\texttt{\footnotesize gearbox.part}"])
+    if c.gearbox_catalog and (c.ratio is not None or c.gearbox_part):
+        rows.append(["–", latex_escape(c.gearbox_catalog), "–", "gearbox catalog", r"\texttt{\footnotesize gearbox.catalog}"])
+    return rows
+
+
+def steps(report) -> list[str]:
+    sel = report.selection
+    if sel is None:
+        return []
+    p, fs = report.case.profile, report.results["cyclic"]["fs"]
+    row = int(sel.order[0])
+    cat = sel.catalog
+    i = cat["ratio"][row]
+    chosen = "the chosen gearbox" if sel.selected else "the closest candidate (none passes)"
+    out = [rf"\subsection{{Checks of {chosen}, {latex_escape(str(cat.parts[row]))}}}"]
+    n2m = n_2m(**{k: v for k, v in p.moving_values().items() if k != "T_2k"})
+    out.append(step_block("Input speed at the mean output speed (S1)", n_1.step(n_2=n2m, i=i), "compared with n_1N"))
+    out.append(step_block("Input speed at the highest output speed (S5)", n_1.step(n_2=p.n_2max, i=i), "compared with n_1max"))
+    if report.case.motor_peak_torque is not None:
+        out.append(step_block("Maximum output torque", T_2max.step(T_1B=report.case.motor_peak_torque, i=i, f_s=Q_(fs, ""),
+                                                                  eta=cat["eta"][row]), "compared with T_2B"))
+    if sel.inertia_ratio is not None and not np.isnan(cat["J_1"][row].magnitude):
+        out.append(step_block("Load to motor inertia ratio", inertia_ratio.step(
+            J_1=cat["J_1"][row], J_L=report.case.load_inertia, i=i, J_motor=report.case.motor_inertia), "errata E6"))
+    return out
+
+
+def checks(report) -> list[str]:
+    g = results_of(NAME, report)
+    if not g:
+        return []
+    c = g["candidates"][0]
+    return [checks_table(c, f"Checks of gearbox {c['part']}" + (" (chosen)" if g["selected"] else " (the closest candidate; none passes)"))]
+
+
+def candidates(report) -> list[str]:
+    """Every candidate at the ratio: its catalog ratings, and the utilization of each check."""
+    g, sel = results_of(NAME, report), report.selection
+    if not g:
+        return []
+    cat = sel.catalog
+    illustrative = False
+    rows = []
+    for r in sel.order:
+        c = next(x for x in g["candidates"] if x["part"] == str(cat.parts[r]))
+        illustrative |= c["illustrative"]
+        j1 = cat["J_1"][r]
+        rows.append([
+            latex_escape(c["part"]) + (r"$^{*}$" if c["illustrative"] else ""),
+            latex_escape(str(cat.text["series"][r])) if "series" in cat.text else "",
+            num(cat["T_2N"][r], "N*m"), num(cat["T_2B"][r], "N*m"),
+            num(cat["n_1N"][r], "rpm"), num(cat["n_1max"][r], "rpm"),
+            num(cat["eta"][r], "percent"), "–" if np.isnan(j1.magnitude) else num(j1, "kg*cm**2"),
+        ])
+    sources = sorted({str(cat.text["source"][r]) for r in sel.order})
+    note = "Sources: " + "; ".join(latex_escape(s) for s in sources)
+    if illustrative:
+        note = r"$^{*}$ illustrative row: not a maker's own figures. " + note
+    return [
+        table(
+            r"@{}l l r r r r r r@{}",
+            ["Part", "Series", "$T_{2N}$ [N·m]", "$T_{2B}$ [N·m]", "$n_{1N}$ [rpm]", "$n_{1\\mathrm{max}}$ [rpm]", r"$\eta$ [\%]", "$J_1$ [kg·cm²]"],
+            rows, caption=latex_escape(f"Catalog ratings of the candidates ({g['catalog']}), best first"), note=note,
+        ),
+        candidates_table(g, f"Utilization of each check (required / rated), {g['mode']} governs; "
+                            "checks in grey are for information", inertia=True),
+        *rejected(g),
+    ]
+
+
+def figures(report) -> list:
+    if report.selection is None:
+        return []
+    from ..plots import utilization_figure
+
+    return [(utilization_figure(report.selection), "Utilization of the governing checks of each candidate, best first.")]
+
+
+def chosen(report) -> list[tuple]:
+    g = results_of(NAME, report)
+    if not g:
+        return []
+    best = g["candidates"][0] if g["candidates"] else None
+    detail = f"ratio {best['ratio']:g}, {report.selection.mode} checks, catalog {g['catalog']}" if best else ""
+    return [("Gearbox", g["selected"], detail)]
+
+
+def order_lines(report) -> list[str]:
+    g = results_of(NAME, report)
+    if not (g and g["selected"]):
+        return []
+    sel = report.selection
+    r = int(sel.order[0])
+    return [rf"Gearbox \textbf{{{latex_escape(g['selected'])}}}, ratio $i = {sig(sel.catalog['ratio'][r].m_as(''))}$"
+            rf" (series {latex_escape(str(sel.catalog.text['series'][r]))})"]
+
+
+inputs = results = nothing
