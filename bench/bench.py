@@ -15,6 +15,11 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   the same with 10^6 points, where the fixed cost of each call weighs ten times less.
 * ``catalog_load_100k``: reading and validating that catalog's CSV file (no target; not part of
   ``rank_100k``).
+* ``evaluate_100k``: ``python -m calc evaluate --json`` of a copy of the example case whose
+  ``gearbox.catalog`` is a synthetic catalog of 100,000 rows at its ratio (the shipped rows at
+  that ratio among them, as the accuracy chain names one), end to end in a fresh process;
+  ``evaluate_100k_vs_shipped`` its time over that of the example with the shipped catalog, and
+  ``evaluate_100k_memory`` its peak resident memory.
 * ``hysteresis_1M``: the analysis of a measured hysteresis loop of 10^6 samples.
 * ``import_calc``, ``evaluate_cli``, ``report``: cold runs of a fresh interpreter (median of 5 for
   the first two), beside ``import_numpy``.
@@ -31,6 +36,7 @@ the test suite covers itself.
 from __future__ import annotations
 
 import argparse
+import csv
 import statistics
 import subprocess
 import sys
@@ -93,6 +99,23 @@ def median_run(command: list[str], runs: int) -> float:
         subprocess.run(command, cwd=ROOT, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         times.append(time.perf_counter() - t0)
     return statistics.median(times)
+
+
+#: Run in a fresh interpreter: runs the command given as its arguments once and prints the wall
+#: time and the peak resident memory of that one child (the wrapper has no other child).
+_MEASURED_CHILD = """
+import resource, subprocess, sys, time
+t0 = time.perf_counter()
+subprocess.run(sys.argv[1:], check=True, stdout=subprocess.DEVNULL)
+print(time.perf_counter() - t0, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
+"""
+
+
+def measured_run(command: list[str]) -> tuple[float, float]:
+    """The wall time (s) and peak resident memory (MB) of one fresh process of ``command``."""
+    done = subprocess.run([sys.executable, "-c", _MEASURED_CHILD, *command], cwd=ROOT, check=True, capture_output=True, text=True)
+    seconds, max_rss_kib = done.stdout.split()  # Linux reports ru_maxrss in KiB
+    return float(seconds), int(max_rss_kib) / 1024
 
 
 def line(name: str, value: float | None, unit: str, target: tuple[str, float] | None = None, note: str = "") -> str:
@@ -314,6 +337,46 @@ def measure_rank(size: Size, workdir: Path) -> list[str]:
     ]
 
 
+def write_large_case(workdir: Path, rows: int) -> Path:
+    """A copy of the example case whose ``gearbox.catalog`` is a synthetic catalog of ``rows`` rows
+    at its ratio: the shipped rows at that ratio (the accuracy chain names one of them) and made-up
+    rows whose ratings vary, so the ranking has work to do. The folder links the project's
+    ``data`` so that the case's measurement paths hold."""
+    from calc.case import read_case
+
+    ratio = read_case(EXAMPLE).ratio.m_as("")
+    folder = workdir / "large" / "cases"
+    folder.mkdir(parents=True)
+    (folder.parent / "data").symlink_to(ROOT / "data")
+    with open(ROOT / "catalogs" / "gearboxes.csv", encoding="utf-8", newline="") as f:
+        shipped = [row for row in list(csv.reader(f))[1:] if float(row[2]) == ratio]
+    catalog = folder / "gearboxes-large.csv"
+    write_synthetic_catalog(catalog, rows - len(shipped), ratio)
+    with open(catalog, "a", encoding="utf-8", newline="") as f:
+        csv.writer(f, lineterminator="\n").writerows(shipped)
+    text = EXAMPLE.read_text(encoding="utf-8")
+    if text.count('catalog = "gearboxes"\n') != 1:
+        raise RuntimeError(f"evaluate_100k: {EXAMPLE} no longer names its gearbox catalog as this benchmark expects")
+    case = folder / EXAMPLE.name
+    case.write_text(text.replace('catalog = "gearboxes"\n', f'catalog = "{catalog.name}"\n'), encoding="utf-8")
+    return case
+
+
+def measure_evaluate_large(size: Size, workdir: Path) -> list[str]:
+    case = write_large_case(workdir, size.rows)
+    py = sys.executable
+    shipped = [measured_run([py, "-m", "calc", "evaluate", str(EXAMPLE.relative_to(ROOT)), "--json"]) for _ in range(size.runs)]
+    large = [measured_run([py, "-m", "calc", "evaluate", str(case), "--json"]) for _ in range(size.runs)]
+    shipped_time = statistics.median(t for t, _ in shipped)
+    large_time = statistics.median(t for t, _ in large)
+    runs = f"median of {size.runs}"
+    return [
+        line("evaluate_100k", large_time, "s", note=f"python -m calc evaluate --json, {size.rows} catalog rows at the example's ratio, {runs}; shipped catalog {shipped_time:.3g} s"),
+        line("evaluate_100k_vs_shipped", large_time / shipped_time, "x", ("<=", 3)),
+        line("evaluate_100k_memory", max(m for _, m in large), "MB", ("<=", 500), note="peak resident memory of the process"),
+    ]
+
+
 # --- sweep: a design space ------------------------------------------------------------------------
 
 #: The gearbox and load cycle swept: the example's cycle shape with the pause varied.
@@ -463,6 +526,7 @@ def main(argv=None) -> int:
     with tempfile.TemporaryDirectory() as tmp:
         for measure in (
             lambda: measure_rank(size, Path(tmp)),
+            lambda: measure_evaluate_large(size, Path(tmp)),
             lambda: measure_sweep(size),
             lambda: measure_hysteresis(size),
             lambda: measure_cold(size),

@@ -9,10 +9,13 @@ every problem is reported with the file, the row (its line number in the file) a
 from __future__ import annotations
 
 import csv
+import dataclasses
 import functools
 import hashlib
 import importlib.resources
+import itertools
 import math
+import operator
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -180,14 +183,40 @@ def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
     return path
 
 
+#: Each catalog read so far in this run, by resolved path and schema: the file's (size, mtime_ns)
+#: when read, and the catalog. The gearbox selection and the accuracy chain's part lookups of one
+#: evaluation share one read; a file changed since is read again.
+_LOADED: dict = {}
+
+
 def load_catalog(path: Path, schema: Schema) -> Catalog:
-    """Read and validate a catalog file against ``schema``.
+    """Read and validate a catalog file against ``schema``, once per run.
 
     Raises :class:`CalcError` naming the file, row and column for: a missing column, a header
-    unit of the wrong kind, an empty required cell, a non-numeric cell, a value at or below zero
-    where it must be positive, a duplicate part, or a row that breaks one of the schema's rules.
+    unit of the wrong kind, an empty required cell, a non-numeric or non-finite cell, a value at
+    or below zero where it must be positive, a duplicate part, or a row that breaks one of the
+    schema's rules.
+
+    Notes
+    -----
+    A later call for the same file (by resolved path) and schema returns the catalog already read,
+    unless the file's size or modification time has changed; its arrays are read-only, as every
+    caller shares them.
     """
     path = Path(path)
+    stat = path.stat()
+    key, stamp = (path.resolve(), schema), (stat.st_size, stat.st_mtime_ns)
+    known = _LOADED.get(key)
+    if known is None or known[0] != stamp:
+        known = _LOADED[key] = (stamp, _read_catalog(path, schema))
+    catalog = known[1]
+    # The same file asked for by another spelling of its path is named as asked.
+    return catalog if catalog.path == path else dataclasses.replace(catalog, name=path.stem, path=path)
+
+
+def _read_catalog(path: Path, schema: Schema) -> Catalog:
+    """Read and validate a catalog file, column by column over all rows at once; see
+    :func:`load_catalog`."""
     raw = path.read_bytes()
     try:
         text = raw.decode("utf-8-sig")
@@ -216,49 +245,52 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
         unit_text = columns[c.name][1]
         units[c.name] = _header_unit(path, c, unit_text)
 
-    rows = [(n, r) for n, r in enumerate(reader, start=2) if any(cell.strip() for cell in r)]
-    if not rows:
+    # The cells of all rows in one flat list (a column is a slice of it), up to the first row whose
+    # length differs from the header's; that row is reported after any problem in the rows before
+    # it, as a reader going row by row would. Each row's list is dropped at once: 10^5 row lists
+    # kept alive would make the garbage collector walk them again and again.
+    width, cells, lines, misfit = len(header), [], [], None
+    for line, row in enumerate(reader, start=2):
+        if not "".join(row).strip():
+            continue  # a blank row
+        if len(row) != width:
+            misfit = (line, len(row))
+            break
+        cells.extend(row)
+        lines.append(line)
+    if not lines and misfit is None:
         raise CalcError(f"{path}: expected at least one row of data, found none")
-    cols = {c.name: np.empty(len(rows)) for c in schema.columns}
-    texts = {name: [] for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    for j, (line, row) in enumerate(rows):
-        if len(row) != len(header):
-            raise CalcError(f"{path}, row {line}: expected {len(header)} cells as in the header, found {len(row)}")
-        for name in texts:
-            cell = row[columns[name][0]].strip()
-            if name in schema.text_columns and not cell:
-                raise CalcError(f"{path}, row {line}, column {name}: expected a value, found an empty cell")
-            texts[name].append(cell)
-        for c in schema.columns:
-            cell = row[columns[c.name][0]].strip()
-            where = f"{path}, row {line} ({texts['part'][-1]}), column {c.name}"
-            if not cell:
-                if c.required:
-                    raise CalcError(f"{where}: expected a number, found an empty cell")
-                cols[c.name][j] = math.nan
-                continue
-            if not _FLOAT.match(cell):
-                raise CalcError(f"{where}: expected a number, found {cell!r}")
-            value = float(cell)
-            if c.positive and not value > 0:
-                raise CalcError(f"{where}: expected a value above zero, found {cell}")
-            if not c.positive and value < 0:
-                raise CalcError(f"{where}: expected a value of zero or more, found {cell}")
-            cols[c.name][j] = value
+    lines = np.array(lines, dtype=int)
+
+    def column(name):
+        return list(map(str.strip, cells[columns[name][0]::width]))
+
+    texts = {name: column(name) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
+    numbers = {c.name: _numbers(column(c.name)) for c in schema.columns}
+    problem = _first_problem(path, schema, lines, texts, numbers)
+    if problem:
+        raise CalcError(problem)
+    if misfit is not None:
+        raise CalcError(f"{path}, row {misfit[0]}: expected {width} cells as in the header, found {misfit[1]}")
+
     parts = np.array(texts["part"], dtype=object)
-    seen = {}
-    for j, p in enumerate(parts):
-        if p in seen:
-            raise CalcError(f"{path}, row {rows[j][0]}, column part: the part {p!r} already stands in row {seen[p]}")
-        seen[p] = rows[j][0]
-    values = {c.name: Q_(cols[c.name], units[c.name]) for c in schema.columns}
-    lines = np.array([line for line, _ in rows])
+    # Duplicates: np.unique gives each part's first row; a row whose part first stands earlier repeats it.
+    _, first, inverse = np.unique(np.array(texts["part"], dtype=str), return_index=True, return_inverse=True)
+    first = first[inverse.ravel()]
+    repeats = np.flatnonzero(first != np.arange(len(parts)))
+    if len(repeats):
+        j = repeats[0]
+        raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row {lines[first[j]]}")
+    values = {c.name: Q_(numbers[c.name].values, units[c.name]) for c in schema.columns}
     for rule in schema.rules:
         with np.errstate(invalid="ignore"):
             ok = np.asarray(rule.holds(values), dtype=bool)
         if not ok.all():
             j = int(np.flatnonzero(~ok)[0])
             raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected {rule.text}")
+    text_arrays = {k: np.array(v, dtype=object) for k, v in texts.items()}
+    for a in (parts, lines, *text_arrays.values(), *(q.magnitude for q in values.values())):
+        a.flags.writeable = False  # shared by every caller of the run (load_catalog)
     return Catalog(
         name=path.stem,
         path=path,
@@ -266,10 +298,75 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
         schema=schema,
         parts=parts,
         values=values,
-        text={k: np.array(v, dtype=object) for k, v in texts.items()},
+        text=text_arrays,
         lines=lines,
         header_units={c.name: columns[c.name][1].strip() for c in schema.columns},
     )
+
+
+@dataclass(frozen=True)
+class _Numbers:
+    """A numeric column parsed: its cells, values (NaN where empty or not a number) and which
+    cells are empty or not numbers."""
+
+    cells: list
+    values: np.ndarray
+    empty: np.ndarray
+    malformed: np.ndarray
+
+
+def _numbers(cells: list) -> _Numbers:
+    """Parse a column of stripped cells. Each distinct spelling is held against :data:`_FLOAT`
+    once (a catalog repeats its values), so ``inf``, ``nan``, ``1_000`` or hex, which ``float``
+    would take, are malformed; only the cells that pass are given to ``float``."""
+    n, spellings = len(cells), set(cells)
+    empty = np.fromiter(map(operator.not_, cells), bool, n) if "" in spellings else np.zeros(n, bool)
+    wrong = {cell for cell in spellings if cell and not _FLOAT.match(cell)}
+    malformed = np.fromiter(map(wrong.__contains__, cells), bool, n) if wrong else np.zeros(n, bool)
+    values = np.full(n, math.nan)
+    numeric = ~(empty | malformed)
+    values[numeric] = np.fromiter(map(float, itertools.compress(cells, numeric)), float, int(numeric.sum()))
+    return _Numbers(cells, values, empty, malformed)
+
+
+def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict) -> str | None:
+    """The message of the first bad cell a reader meets going row by row and, in a row, column by
+    column (the text columns, then the numeric ones in the schema's order), or None.
+
+    Each column's bad rows are found over the whole column at once; only the first bad row of each
+    is looked at further."""
+    found = []  # (row index, column order, message maker)
+    for order, name in enumerate(texts):
+        if name in schema.text_columns and "" in texts[name]:
+            j = texts[name].index("")
+            found.append((j, order, lambda j=j, name=name: f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"))
+    for order, c in enumerate(schema.columns, start=len(texts)):
+        x = numbers[c.name]
+        with np.errstate(invalid="ignore"):
+            given = ~(x.empty | x.malformed)
+            infinite = given & ~np.isfinite(x.values)
+            out_of_range = given & ~infinite & (~(x.values > 0) if c.positive else (x.values < 0))
+        bad = (x.empty & c.required) | x.malformed | infinite | out_of_range
+        if bad.any():
+            j = int(np.argmax(bad))
+            found.append((j, order, lambda j=j, c=c, x=x, infinite=infinite: _cell_problem(path, lines[j], texts["part"][j], c, x, j, infinite[j])))
+    if not found:
+        return None
+    return min(found, key=lambda f: f[:2])[2]()
+
+
+def _cell_problem(path: Path, line: int, part: str, c: Column, x: _Numbers, j: int, infinite: bool) -> str:
+    """What is wrong with the numeric cell ``j`` of column ``c``, known to be bad."""
+    where, cell = f"{path}, row {line} ({part}), column {c.name}", x.cells[j]
+    if x.empty[j]:
+        return f"{where}: expected a number, found an empty cell"
+    if x.malformed[j]:
+        return f"{where}: expected a number, found {cell!r}"
+    if infinite:
+        return f"{where}: expected a finite number, found {cell!r}"
+    if c.positive:
+        return f"{where}: expected a value above zero, found {cell}"
+    return f"{where}: expected a value of zero or more, found {cell}"
 
 
 def _header_unit(path: Path, c: Column, unit_text):

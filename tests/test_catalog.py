@@ -1,12 +1,21 @@
 """The catalog loader: every problem named by file, row and column."""
 
+import csv
+import os
+from pathlib import Path
+
+import numpy as np
 import pytest
 
-from calc import CalcError
+from calc import CalcError, catalog
+from calc.case import read_case
 from calc.catalog import load_catalog
+from calc.coupling import SCHEMA as COUPLING_SCHEMA
+from calc.sections import evaluate
 from calc.gearbox import SCHEMA
+from calc.hysteresis import model_for_part
 
-from .conftest import GEARBOXES
+from .conftest import EXAMPLE, GEARBOXES, ROOT
 
 HEADER = "part,series,ratio [1],T_2N [N*m],T_2B [N*m],T_2Not [N*m],n_1N [rpm],n_1max [rpm],eta [percent],backlash [arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],illustrative,source"
 ROW = "G-10,G,10,81,126,250,3100,7500,97,3,23,0.57,no,test"
@@ -57,6 +66,19 @@ def test_a_catalog_in_other_units_loads_the_same(tmp_path):
         (HEADER.replace("T_2N [N*m]", "T_2N [N*mm*]"), ROW, "is not one the unit registry knows"),
         (HEADER.replace("T_2N [N*m]", "T_2N"), ROW, "expected a unit in brackets"),
         (HEADER, ROW + ",extra", "expected 14 cells as in the header, found 15"),
+        # 1e999 is a number by its spelling, but overflows to infinity: an overloaded gearbox would pass.
+        (HEADER, ROW.replace(",81,", ",1e999,"), "row 2 (G-10), column T_2N: expected a finite number, found '1e999'"),
+        (HEADER, ROW.replace(",81,", ",-1e999,"), "column T_2N: expected a finite number, found '-1e999'"),
+        (HEADER, ROW.replace(",0.57,", ",1E+400,"), "column J_1: expected a finite number, found '1E+400'"),
+        # Spellings Python's float() takes that a catalog must not hold.
+        (HEADER, ROW.replace(",81,", ",inf,"), "column T_2N: expected a number, found 'inf'"),
+        (HEADER, ROW.replace(",81,", ",-Infinity,"), "column T_2N: expected a number, found '-Infinity'"),
+        (HEADER, ROW.replace(",81,", ",nan,"), "column T_2N: expected a number, found 'nan'"),
+        (HEADER, ROW.replace(",0.57,", ",NaN,"), "column J_1: expected a number, found 'NaN'"),
+        (HEADER, ROW.replace(",3100,", ",3_100,"), "column n_1N: expected a number, found '3_100'"),
+        (HEADER, ROW.replace(",81,", ",0x51,"), "column T_2N: expected a number, found '0x51'"),
+        # A header unit never carries a number (pint refuses a scaling factor), so none can be infinite.
+        (HEADER.replace("T_2N [N*m]", "T_2N [1e999*N*m]"), ROW, "column T_2N: the unit '1e999*N*m' is not one the unit registry knows"),
     ],
 )
 def test_bad_catalogs_name_file_row_and_column(tmp_path, header, row, fragment):
@@ -71,6 +93,95 @@ def test_duplicate_part(tmp_path):
     path = write(tmp_path, f"{HEADER}\n{ROW}\n{ROW}\n")
     with pytest.raises(CalcError, match=r"row 3, column part: the part 'G-10' already stands in row 2"):
         load_catalog(path, SCHEMA)
+
+
+def test_the_first_repeated_part_is_named_with_its_first_row(tmp_path):
+    # Rows 2..6 hold B, A, C, A, B: row 5 repeats A (first in row 3) before row 6 repeats B (row 2).
+    rows = [ROW.replace("G-10", p) for p in ("B", "A", "C", "A", "B")]
+    path = write(tmp_path, "\n".join([HEADER, *rows]) + "\n")
+    with pytest.raises(CalcError, match=r"row 5, column part: the part 'A' already stands in row 3$"):
+        load_catalog(path, SCHEMA)
+
+
+@pytest.mark.parametrize(
+    "rows, fragment",
+    [
+        # A bad cell in a late column of row 2 comes before a bad cell in an early column of row 3.
+        ((ROW.replace(",0.57,", ",x,"), ROW.replace("G-10,G,10,81,", "G-11,G,10,y,")), "row 2 (G-10), column J_1: expected a number, found 'x'"),
+        # In one row, the columns in the schema's order: T_2N before J_1.
+        ((ROW.replace(",81,", ",1e999,").replace(",0.57,", ",x,"),), "row 2 (G-10), column T_2N: expected a finite number"),
+        # The text columns of a row come before its numbers.
+        ((ROW.replace("G-10,", ",").replace(",81,", ",x,"),), "row 2, column part: expected a value, found an empty cell"),
+        # A row of the wrong length after a bad cell: the bad cell; before it: the row.
+        ((ROW.replace(",81,", ",x,"), ROW + ",extra"), "row 2 (G-10), column T_2N: expected a number, found 'x'"),
+        ((ROW + ",extra", ROW.replace(",81,", ",x,")), "row 2: expected 14 cells as in the header, found 15"),
+        # A blank row is skipped, yet counted in the line numbers.
+        (("", ",,,,,,,,,,,,,", ROW.replace(",81,", ",-81,")), "row 4 (G-10), column T_2N: expected a value above zero, found -81"),
+    ],
+)
+def test_the_first_problem_in_reading_order_is_named(tmp_path, rows, fragment):
+    path = write(tmp_path, "\n".join([HEADER, *rows]) + "\n")
+    with pytest.raises(CalcError) as err:
+        load_catalog(path, SCHEMA)
+    assert fragment in str(err.value)
+
+
+@pytest.mark.parametrize("name, schema", [("gearboxes", SCHEMA), ("couplings", COUPLING_SCHEMA)])
+def test_shipped_catalogs_load_cell_for_cell_as_written(name, schema):
+    # Reference: the file read row by row with the csv module, each numeric cell float() of its text
+    # in the header's unit, NaN where empty, each row at its line in the file (as the row-by-row
+    # loader that the column-wise one replaced gave them).
+    path = ROOT / "catalogs" / f"{name}.csv"
+    with open(path, encoding="utf-8-sig", newline="") as f:
+        header, *rows = list(csv.reader(f))
+    index = {cell.split(" [")[0]: k for k, cell in enumerate(header)}
+    cat = load_catalog(path, schema)
+    assert list(cat.parts) == [r[index["part"]] for r in rows]
+    assert list(cat.lines) == list(range(2, len(rows) + 2))
+    for c in schema.columns:
+        expected = [float(r[index[c.name]]) if r[index[c.name]] else np.nan for r in rows]
+        np.testing.assert_array_equal(cat[c.name].magnitude, expected)  # NaN where NaN, else equal
+        assert cat.header_units[c.name] == header[index[c.name]].split("[")[1].rstrip("]")
+    for column, cells in cat.text.items():
+        assert list(cells) == [r[index[column]] for r in rows]
+
+
+def test_each_catalog_is_read_once_per_run(monkeypatch):
+    # The example's evaluation wants the gearbox catalog for its selection and for the accuracy
+    # chain's part NPT035-10, the coupling catalog once; the loop model of NPT035-10 afterwards
+    # wants the gearbox catalog again.
+    reads = []
+    read = catalog._read_catalog
+    monkeypatch.setattr(catalog, "_LOADED", {})
+    monkeypatch.setattr(catalog, "_read_catalog", lambda path, schema: reads.append(path.name) or read(path, schema))
+    evaluate(read_case(EXAMPLE))
+    model_for_part("NPT035-10")
+    assert sorted(reads) == ["couplings.csv", "gearboxes.csv"]
+
+
+def test_a_catalog_changed_since_it_was_read_is_read_again(tmp_path):
+    path = write(tmp_path, f"{HEADER}\n{ROW}\n")
+    first = load_catalog(path, SCHEMA)
+    assert load_catalog(path, SCHEMA) is first
+    relative = load_catalog(Path(os.path.relpath(path)), SCHEMA)  # another spelling of the path: one read
+    assert relative.parts is first.parts and relative.path == Path(os.path.relpath(path))
+    # The same number of bytes, T_2N 81 -> 82: only the modification time tells; set it one second on.
+    stat = path.stat()
+    path.write_text(f"{HEADER}\n{ROW.replace(',81,', ',82,')}\n")
+    os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns + 1_000_000_000))
+    assert load_catalog(path, SCHEMA)["T_2N"][0].m_as("N*m") == 82
+    # A longer file, even within the same tick of the clock.
+    path.write_text(f"{HEADER}\n{ROW.replace(',81,', ',83.5,')}\n")
+    os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns + 1_000_000_000))
+    assert load_catalog(path, SCHEMA)["T_2N"][0].m_as("N*m") == 83.5
+
+
+def test_a_loaded_catalog_cannot_be_changed_by_one_of_its_users():
+    cat = load_catalog(GEARBOXES, SCHEMA)
+    with pytest.raises(ValueError, match="read-only"):
+        cat["T_2N"].magnitude[0] = 1e6
+    with pytest.raises(ValueError, match="read-only"):
+        cat.parts[0] = "X"
 
 
 def test_empty_optional_cells_are_nan_not_zero(tmp_path):
