@@ -85,11 +85,12 @@ class _Finder(ast.NodeVisitor):
         self.generic_visit(node)
 
 
-def error_sites(package: Path = PACKAGE) -> list[Site]:
-    """Every ``CalcError(...)`` call under ``package``, in file and line order."""
+def error_sites(package: Path = PACKAGE, root: Path = ROOT) -> list[Site]:
+    """Every ``CalcError(...)`` call under ``package``, in file and line order, files named
+    relative to ``root``."""
     sites = []
     for path in sorted(package.rglob("*.py")):
-        finder = _Finder(path.relative_to(ROOT).as_posix())
+        finder = _Finder(path.relative_to(root).as_posix())
         finder.visit(ast.parse(path.read_text(encoding="utf-8"), filename=str(path)))
         sites.extend(finder.sites)
     return sites
