@@ -29,7 +29,7 @@ from .checks import BOUNDARY_RTOL
 from .catalog import Column, display_path, load_catalog, resolve
 from .errors import CalcError
 from .formula import Formula, Symbol
-from .measurement import measurement_path, read_measurement
+from .measurement import check_pair, measurement_path, read_measurement
 from .stiffness import SIDES, Chain, Component, angle_at_output, series_stiffness, stiffness_at_output
 from .units import Q_, as_kind, fmt, sig  # noqa: F401 (fmt: the doctests print with it)
 
@@ -302,10 +302,10 @@ def analyze_positions(target, actual, source: str = "positions") -> PositioningS
     >>> print(fmt(r.accuracy, "arcmin"), fmt(r.repeatability, "arcmin"))
     1.8 arcmin 1.2 arcmin
     """
+    # Checked before the formula, which would broadcast two lengths into a numpy error.
+    check_pair(source, ("target", target, "angle"), ("actual", actual, "angle"))
     err = positioning_error(phi_actual=actual, phi_target=target).m_as("arcmin")
-    tgt = as_kind(target, "angle", f"{source}: target").m_as("deg")
-    if np.shape(err) != np.shape(tgt) or np.ndim(tgt) != 1:
-        raise CalcError(f"{source}: expected target and actual positions as two arrays of one length")
+    tgt = target.m_as("deg")
     keys, g, count = np.unique(tgt, return_inverse=True, return_counts=True)
     if (count < 2).any():
         raise CalcError(f"{source}: expected each target approached at least twice, found target {keys[count < 2][0]:g}° once")

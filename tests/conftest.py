@@ -1,5 +1,8 @@
-"""Shared fixtures: the example case, and writers for case and catalog files in a temporary folder."""
+"""Shared fixtures: the example case, and writers for case and catalog files in a temporary folder;
+and the record of which error messages of the package the tests trigger."""
 
+import fnmatch
+import sys
 from pathlib import Path
 
 import pytest
@@ -61,3 +64,89 @@ def write_case(tmp_path):
         return path
 
     return write
+
+
+# --- Which error messages the tests trigger (checked by tests/test_error_sites.py) -------------
+#
+# Only items under tests/ count: the check must give the same verdict under ``pytest tests`` as
+# under the whole suite, and a message needs a test here that asserts its content; a doctest or
+# notebook that happens to build the error does not replace it. Only errors built in this process
+# count: a test that runs ``python -m calc`` as a subprocess triggers nothing here.
+
+TESTS = Path(__file__).resolve().parent
+FINAL = TESTS / "test_error_sites.py"
+_OWN_INIT = pytest.StashKey()
+
+
+class ErrorRecord:
+    """The (file, line) of each ``CalcError(...)`` built in ``calc/`` while a test under tests/ ran,
+    and whether this session selected the whole tests/ folder (if not, ``reason`` says why)."""
+
+    built: set[tuple[str, int]] = set()
+    deselected: int = 0
+    whole_folder: bool = False
+    reason: str = ""
+    item = None  # the test under tests/ being run, or None
+
+
+def pytest_configure(config):
+    from calc.errors import CalcError
+
+    config.stash[_OWN_INIT] = CalcError.__dict__.get("__init__")
+    inherited = CalcError.__init__
+
+    def __init__(self, *args, **kwargs):
+        if ErrorRecord.item is not None:
+            frame = sys._getframe(1)  # the frame that called CalcError(...)
+            path = Path(frame.f_code.co_filename).resolve()
+            if path.is_relative_to(ROOT / "calc"):
+                ErrorRecord.built.add((path.relative_to(ROOT).as_posix(), frame.f_lineno))
+        inherited(self, *args, **kwargs)
+
+    CalcError.__init__ = __init__
+
+
+def pytest_unconfigure(config):
+    from calc.errors import CalcError
+
+    if _OWN_INIT not in config.stash:
+        return
+    if config.stash[_OWN_INIT] is None:
+        del CalcError.__init__
+    else:
+        CalcError.__init__ = config.stash[_OWN_INIT]
+
+
+def pytest_deselected(items):
+    # -k, -m, --deselect and --last-failed all report here.
+    ErrorRecord.deselected += len(items)
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_modifyitems(session, config, items):
+    """Run the error-site check after every other test, whatever the collection order."""
+    final = [item for item in items if item.path == FINAL]
+    items[:] = [item for item in items if item.path != FINAL] + final
+
+
+def pytest_collection_finish(session):
+    patterns = session.config.getini("python_files")
+    files = {p for p in TESTS.glob("*.py") if any(fnmatch.fnmatch(p.name, pat) for pat in patterns)}
+    missing = files - {item.path for item in session.items}
+    by_node_id = [arg for arg in session.config.args if "::" in arg]
+    if missing:
+        ErrorRecord.reason = f"only part of tests/ ran ({len(missing)} of {len(files)} test files not selected)"
+    elif by_node_id:
+        ErrorRecord.reason = f"tests were selected by node id ({by_node_id[0]})"
+    elif ErrorRecord.deselected:
+        ErrorRecord.reason = f"{ErrorRecord.deselected} tests were deselected (-k, -m, --deselect or --last-failed)"
+    ErrorRecord.whole_folder = not ErrorRecord.reason
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_protocol(item, nextitem):
+    ErrorRecord.item = item if item.path.is_relative_to(TESTS) else None
+    try:
+        return (yield)
+    finally:
+        ErrorRecord.item = None

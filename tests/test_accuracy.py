@@ -111,6 +111,8 @@ def test_chain_without_a_nominal_torque():
     with pytest.raises(CalcError, match=r"nominal_torque: the 3 % rule of positioning accuracy \(E13\) needs the nominal torque"):
         chain_accuracy(chain, Q_(5, "N*m"))
     assert not chain_accuracy(chain, Q_(5, "N*m"), nominal_torque=Q_(100, "N*m")).low_torque
+    with pytest.raises(CalcError, match=r"^nominal_torque: expected a torque above zero, found 0 "):
+        chain_accuracy(chain, Q_(5, "N*m"), nominal_torque=Q_(0, "N*m"))
 
 
 def test_measured_positions_by_hand():
@@ -123,6 +125,10 @@ def test_measured_positions_by_hand():
     assert r.targets == 2
     with pytest.raises(CalcError, match="expected each target approached at least twice, found target 90° once"):
         analyze_positions(Q_([0, 0, 90], "deg"), Q_([0, 0, 90], "deg"))
+    # Three targets and two actual positions: checked before the error formula broadcasts them.
+    with pytest.raises(CalcError) as err:
+        analyze_positions(Q_([0, 0, 90], "deg"), Q_([0, 0], "deg"), source="positions.csv")
+    assert str(err.value) == "positions.csv: expected target and actual as two arrays of one length, found shapes (3,) and (2,)"
 
 
 def test_positions_file(tmp_path):

@@ -144,6 +144,7 @@ GOOD = dict(name='"gearbox"', side='"output"', stiffness='"22 N*m/arcmin"', back
         (component(**GOOD | dict(transmission_accuracy='"60 N*m"')), "accuracy.component[1].transmission_accuracy: expected an angle"),
         (component(**GOOD | dict(transmission_accuracy='"60"')), "which is a bare number (its unit must carry the angle, errata E15)"),
         (component(**GOOD | dict(backlash='"-1 arcmin"')), "accuracy.component[1].backlash: expected an angle of zero or more"),
+        (component(**GOOD | dict(transmission_accuracy='"-1 arcmin"')), "accuracy.component[1].transmission_accuracy: expected an angle of zero or more, found '-1 arcmin'"),
         (component(**GOOD | dict(side='"motor"')), "accuracy.component[1].side: expected input or output, found 'motor'"),
         (component(**GOOD | dict(stifness='"22 N*m/arcmin"')), "accuracy.component[1].stifness: unknown key"),
         (component(**{k: v for k, v in GOOD.items() if k != "stiffness"}), "accuracy.component[1].stiffness: expected a stiffness"),
@@ -197,3 +198,25 @@ def test_input_side_needs_the_gearbox_ratio(capsys, write_case):
     code, out, err = run(capsys, case_with(write_case, SOURCE_EXAMPLE.format(side="input"), head=head))
     assert code == 2 and out == ""
     assert "accuracy.component[1].side: an input-side component is referred to the output through the gearbox ratio (E11), but the case gives no gearbox.ratio" in err
+
+
+@pytest.mark.parametrize("column, edit", [("C_t21", "7500,97,3,,0.57"), ("backlash", "7500,97,,23,0.57")])
+def test_a_part_without_its_catalog_figure_names_row_and_column(capsys, write_case, tmp_path, column, edit):
+    # TP010-10 (row 6 of the shipped catalog) with its stiffness or backlash cell left empty.
+    (tmp_path / "gaps.csv").write_text((ROOT / "catalogs" / "gearboxes.csv").read_text().replace("7500,97,3,23,0.57", edit))
+    code, out, err = run(capsys, case_with(write_case, component(part='"TP010-10"', catalog='"gaps.csv"')))
+    assert code == 2 and out == ""
+    assert f"accuracy.component[1].part: {tmp_path / 'gaps.csv'}, row 6 (TP010-10), column {column}: expected a value, found an empty cell" in err
+
+
+def test_a_trace_needs_the_gearbox_ratio(capsys, write_case, tmp_path):
+    # The trace's input position is divided by the ratio (φ_2 - φ_1 / i); a case without a gearbox gives none.
+    head = 'title = "no gearbox"\n[motor]\npeak_torque = "12 N*m"\n'
+    (tmp_path / "trace.csv").write_text("input [deg],output [deg]\n0,0\n")
+    accuracy = component(**GOOD | dict(transmission_trace='"trace.csv"'))
+    code, out, err = run(capsys, case_with(write_case, accuracy, head=head))
+    assert code == 2 and out == ""
+    assert (
+        "accuracy.component[1].transmission_trace: the transmission error is reckoned through the gearbox ratio, "
+        "but the case gives no gearbox.ratio" in err
+    )

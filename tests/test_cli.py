@@ -105,6 +105,13 @@ GOOD_CSV = GEARBOXES.read_text()
         (HEAD_TOML.replace('"4.2 kg*cm**2"', '"4.2 kg"') + PROFILE_TOML, "motor.inertia: expected an inertia"),
         (HEAD_TOML.replace('"4.2 kg*cm**2"', '"-4.2 kg*cm**2"') + PROFILE_TOML, "motor.inertia: expected an inertia above zero"),
         ('title = "x"\n[gearbox\nratio = 10\n', "TOML syntax error"),
+        (HEAD_TOML.replace('[motor]\npeak_torque = "12 N*m"\ninertia = "4.2 kg*cm**2"', 'motor = "12 N*m"') + PROFILE_TOML, "motor: expected a table of keys, found str"),
+        (HEAD_TOML.replace('title = "test axis"', "title = 3") + PROFILE_TOML, "title: expected a text in quotes, found 3"),
+        (HEAD_TOML.replace('title = "test axis"', 'title = "x"\nprofile = "fast"'), "profile: expected an array of tables ([[profile]]), found str"),
+        (HEAD_TOML.replace('"12 N*m"', '"0 N*m"') + PROFILE_TOML, "motor.peak_torque: expected a torque above zero, found 0"),
+        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = ""') + PROFILE_TOML, "gearbox.catalog: expected a catalog name or a path to a CSV file, found ''"),
+        # TP010-5 is the 5:1 gearbox of the shipped catalog (row 3).
+        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\npart = "TP010-5"') + PROFILE_TOML, "gearbox.part: TP010-5 has ratio 5, but gearbox.ratio is 10"),
     ],
 )
 def test_bad_case_files_give_one_line_naming_file_and_key(capsys, write_case, text, fragment):
@@ -135,6 +142,13 @@ def test_missing_case_file(capsys, tmp_path):
         (lambda s: s.replace("TP010-8,", "TP010-10,"), "the part 'TP010-10' already stands in row 5"),
         (lambda s: s.replace("10,81,126,", "10,81,26,"), "column T_2B: impossible value, expected T_2B >= T_2N"),
         (lambda s: s.replace("7500,97,3,23,0.57", "7500,107,3,23,0.57"), "column eta: impossible value"),
+        (lambda s: s.replace("7500,97,3,23,0.57", "7500,97,-3,23,0.57"), "row 6 (TP010-10), column backlash: expected a value of zero or more, found -3"),
+        (lambda s: "", ": expected a header row, found an empty file"),
+        (lambda s: s.splitlines()[0] + "\n", ": expected at least one row of data, found none"),
+        (lambda s: s.replace("T_2N [N*m]", "T_2N in N*m"), ": header column 4 'T_2N in N*m' is not of the form 'name [unit]'"),
+        (lambda s: s.replace("T_2Not [N*m]", "T_2N [N*m]"), ": the column 'T_2N' appears twice in the header"),
+        (lambda s: s.replace("part,", "name,", 1), ": expected a column 'part', found columns name, series, ratio,"),
+        (lambda s: s.replace("TP010-8,", ",", 1), ", row 5, column part: expected a value, found an empty cell"),
     ],
 )
 def test_bad_catalogs_from_the_command_line(capsys, write_case, tmp_path, edit, fragment):
@@ -142,6 +156,20 @@ def test_bad_catalogs_from_the_command_line(capsys, write_case, tmp_path, edit, 
     code, out, err = run(capsys, path, "--json")
     assert code != 0 and out == ""
     assert str(tmp_path / "my.csv") in err and fragment in err
+
+
+def test_files_that_are_not_utf8_are_named(capsys, write_case, tmp_path):
+    # Latin-1 "µ" (byte 0xB5) in a comment: not UTF-8, as the case format requires.
+    path = write_case("")
+    path.write_bytes(b"# 5 \xb5m\n" + (HEAD_TOML + PROFILE_TOML).encode())
+    code, out, err = run(capsys, path)
+    assert code == 2 and out == ""
+    assert err == f"error: {path}: expected a UTF-8 TOML file, found bytes that are not UTF-8\n"
+    case = catalog_case(write_case, tmp_path, "")
+    (tmp_path / "my.csv").write_bytes(b"# 5 \xb5m\n" + GOOD_CSV.encode())
+    code, out, err = run(capsys, case)
+    assert code == 2 and out == ""
+    assert err == f"error: {tmp_path / 'my.csv'}: expected a UTF-8 CSV file, found bytes that are not UTF-8\n"
 
 
 def test_no_value_is_evaluated_as_code(capsys, write_case, tmp_path):

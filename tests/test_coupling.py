@@ -304,6 +304,13 @@ def test_example_selects_the_smallest_adequate_bellows():
     assert s.reasons(row) == ["M_N · K_ϑ <= T_KN: required 23.74 N·m > rated 22 N·m, 7.91 % over"]
 
 
+def test_an_empty_choice_of_couplings_is_an_error():
+    # A type the catalog does not spell ("bellow") leaves no row to select from.
+    with pytest.raises(CalcError) as err:
+        select_coupling(of_type("bellow"), **EXAMPLE)
+    assert str(err.value) == "coupling: no coupling to check, the catalog has no rows"
+
+
 def test_a_bore_outside_every_hub_is_a_failing_check_not_an_error():
     s = select_coupling(of_type("bellows"), **{**EXAMPLE, "shaft_1": "80 mm k6"})
     assert s.selected is None

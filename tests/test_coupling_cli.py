@@ -149,6 +149,18 @@ def test_a_bad_coupling_catalog_names_file_row_and_column(capsys, write_case, tm
     assert f"{tmp_path / 'my.csv'}, row 3 (AKD-30), column T_KN: expected a number, found '3x6'" in err
 
 
+def test_a_type_the_catalog_lacks_names_the_catalog(capsys, write_case, tmp_path):
+    # A catalog of the header and the safety rows only: no bellows coupling to choose from.
+    from calc.catalog import resolve
+
+    lines = resolve("couplings", None, "catalog").read_text().splitlines()
+    (tmp_path / "safety.csv").write_text("\n".join([lines[0], *(l for l in lines[1:] if ",safety," in l)]) + "\n")
+    path = case_with(write_case, COUPLING_TOML.replace('type = "bellows"', 'type = "bellows"\ncatalog = "safety.csv"'))
+    code, out, err = run(capsys, path, "--json")
+    assert code == 2 and out == ""
+    assert f"coupling.type: the catalog {tmp_path / 'safety.csv'} has no bellows coupling" in err
+
+
 INPUT_SIDE = """
 [coupling]
 type = "bellows"

@@ -166,9 +166,18 @@ def test_metric_and_inch_bores_are_the_same_size(size):
         ('1.00" +.001/+.001"', "leave no tolerance"),
         ("__import__('os')", "expected a shaft size with its tolerance such as"),
         (14, "expected a shaft size with its tolerance as text"),
+        ('1.00" +0/-.0005", x 0" keyway', "expected a keyway width above zero, found '1.00\" +0/-.0005\", x 0\" keyway'"),
     ],
 )
 def test_bad_bores_name_the_key(text, fragment):
     with pytest.raises(CalcError) as err:
         parse_bore(text, "coupling.shaft_1")
     assert str(err.value).startswith("coupling.shaft_1") and fragment in str(err.value)
+
+
+@pytest.mark.parametrize("cls", ["6k", "k", "", 6])
+def test_a_malformed_tolerance_class_is_named(cls):
+    # A class is a letter or two and a grade (k6, H7, js9); the grade first is no class.
+    with pytest.raises(CalcError) as err:
+        limit_deviations(Q_(14, "mm"), cls, "coupling.shaft_1")
+    assert str(err.value) == f"coupling.shaft_1: expected an ISO 286 tolerance class such as 'k6' or 'H7', found {cls!r}"

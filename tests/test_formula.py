@@ -175,3 +175,43 @@ def test_documentation_comes_from_the_formula_object():
     assert T_2max.latex() in doc
     assert "T_1B : torque [N·m]" in doc and "source, S5 calculation 2" in doc
     assert inspect.getdoc(Formula).startswith("One formula of the source document, defined once.")
+
+
+def test_segment_values_of_different_lengths_are_named():
+    # Two speeds, three durations, two torques: no segment sum can pair them up.
+    values = {
+        "n_2k": Q_(np.array([100.0, 200.0]), "rpm"),
+        "t_k": Q_(np.array([1.0, 2.0, 3.0]), "s"),
+        "T_2k": Q_(np.array([10.0, -5.0]), "N*m"),
+    }
+    with pytest.raises(CalcError) as err:
+        T_2m.substituted_latex(values)
+    assert str(err.value) == "T_2m: the per-segment arguments differ in length"
+
+
+def test_codegen_refuses_two_formulas_of_one_name_in_one_module():
+    # A second T_2max in calc.gearbox would be stored under the first one's key calc.gearbox.T_2max.
+    from calc import codegen
+
+    def build(sp, T_1B):
+        return 2 * T_1B
+
+    build.__module__ = "calc.gearbox"
+    twin = Formula(T_2max.result, (T_2max.inputs[0],), build, "test")
+    try:
+        with pytest.raises(CalcError) as err:
+            codegen.package_formulas()
+        assert str(err.value) == "calc.gearbox.T_2max: two formulas of one module have this name; give each its own result symbol"
+    finally:
+        REGISTRY.remove(twin)
+
+
+def test_codegen_refuses_a_function_it_cannot_import():
+    # sympy's lambdify takes erf from the math module (numpy has none): the stored module could not import it.
+    from calc import codegen
+
+    f = Formula(Symbol("y", "y", "dimensionless", "", "result"), (Symbol("x", "x", "dimensionless", "", "argument"),), lambda sp, x: sp.erf(x), "test")
+    REGISTRY.remove(f)
+    with pytest.raises(CalcError) as err:
+        codegen.module_text([f])
+    assert str(err.value) == "the generated numeric form uses 'erf' = <built-in function erf>, which calc.codegen cannot import"

@@ -179,3 +179,11 @@ def test_a_required_speed_equal_to_the_rating_passes(catalog):
     check = next(c for c in select_gearbox(example_profile(), row, Q_(12, "N*m")).checks if c.name == "n_1max")
     assert check.required[0].m_as("rpm") == pytest.approx(3000)
     assert check.passes[0]
+
+
+@pytest.mark.parametrize("zh, shown", [(-1, "-1"), ([100, -1], "[100  -1]")])
+def test_negative_cycles_per_hour_are_an_error(zh, shown):
+    # A cycle count per hour is zero or more; below zero the table of E4 has no row.
+    with pytest.raises(CalcError) as err:
+        shock_factor(Q_(zh, "1/hour"))
+    assert str(err.value) == f"cycles_per_hour: expected zero or more cycles per hour, found {shown}"

@@ -178,6 +178,12 @@ def test_bad_loop_files_name_file_row_and_column(tmp_path, body, header, fragmen
         (dict(backlash=Q_(3, "")), "which is a bare number (its unit must carry the angle, errata E15)"),
         (dict(backlash=Q_(0.1, "arcmin")), "more than the backlash"),
         (dict(backlash=Q_(3, "arcmin"), friction=0.0), "needs friction above zero"),
+        (dict(backlash=Q_(-1, "arcmin")), "loop model: backlash: expected an angle of zero or more, found -1 arcmin"),
+        (dict(nominal_torque=Q_(0, "N*m")), "loop model: nominal_torque: expected a torque above zero, found 0 "),
+        (dict(friction=1.0), "loop model: friction: expected a share from 0 to below 1, found 1.0"),
+        (dict(soft_share=-0.1), "loop model: soft_share: expected a share from 0 to below 1, found -0.1"),
+        (dict(soft_width=0.3), "loop model: soft_width: expected a share above 0 and below 0.25, found 0.3"),
+        (dict(gap_width=0.0), "loop model: gap_width: expected a share above 0 and below 0.25, found 0.0"),
     ],
 )
 def test_bad_models_are_one_clear_error(kwargs, fragment):
@@ -192,3 +198,38 @@ def test_a_backlash_free_part_without_friction():
     a = analyze_loop(m.loop(2000, uneven=False), Q_(100, "N*m"))
     assert a.backlash.m_as("arcmin") == pytest.approx(0, abs=1e-3)
     assert a.stiffness.m_as("N*m/arcmin") == pytest.approx(50, rel=1e-3)
+
+
+@pytest.mark.parametrize("samples", [1, 2.5, "100"])
+def test_a_loop_needs_a_whole_number_of_samples(samples):
+    with pytest.raises(CalcError) as err:
+        TP010.loop(samples)
+    assert str(err.value) == f"loop model: samples: expected a whole number of 2 or more, found {samples!r}"
+
+
+def test_bad_recordings_and_nominal_torques_are_one_clear_error():
+    loop = TP010.loop(1000, uneven=False)
+    with pytest.raises(CalcError, match="^generated loop: nominal torque: expected a torque above zero, found 0 "):
+        analyze_loop(loop, Q_(0, "N*m"))
+    # One sample lost by the rig (NaN): the least-squares lines would all be NaN.
+    twist = loop.twist.m_as("arcmin").copy()
+    twist[5] = np.nan
+    with pytest.raises(CalcError) as err:
+        analyze_loop(Loop(loop.torque, Q_(twist, "arcmin"), source="rig.csv"), Q_(81, "N*m"))
+    assert str(err.value) == "rig.csv: expected finite torque and twist samples, found NaN or infinity"
+    # The twist recorded with the wrong sign: it falls as the torque rises, no stiffness is positive.
+    with pytest.raises(CalcError) as err:
+        analyze_loop(Loop(loop.torque, -loop.twist, source="rig.csv"), Q_(81, "N*m"))
+    assert str(err.value) == (
+        "rig.csv: the twist does not rise with the torque between 50 % and 100 % of the nominal torque in the positive direction"
+    )
+
+
+@pytest.mark.parametrize("column, edit", [("C_t21", "7500,97,3,,0.57"), ("backlash", "7500,97,,23,0.57")])
+def test_a_part_without_catalog_figures_has_no_loop_model(tmp_path, column, edit):
+    # TP010-10 (row 6 of the shipped catalog) with its stiffness or backlash cell left empty.
+    path = tmp_path / "gearboxes.csv"
+    path.write_text((ROOT / "catalogs" / "gearboxes.csv").read_text().replace("7500,97,3,23,0.57", edit))
+    with pytest.raises(CalcError) as err:
+        model_for_part("TP010-10", catalog=str(path))
+    assert str(err.value) == f"{path}, row 6 (TP010-10), column {column}: expected a value for the loop model, found an empty cell"

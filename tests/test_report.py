@@ -87,10 +87,30 @@ def test_output_paths(tmp_path):
         output_paths([a, b], "out")
 
 
-def test_a_missing_case_file_is_an_error_before_anything_is_built(tmp_path):
-    proc = report(tmp_path / "nothing.toml", "-o", tmp_path)
-    assert proc.returncode == 2
-    assert proc.stderr.strip() == f"error: {tmp_path / 'nothing.toml'}: the case file does not exist"
+def report_here(capsys, *args):
+    """``python -m calc report ARGS`` in this process (so that the errors it builds are seen by
+    tests/test_error_sites.py): exit code and standard error."""
+    from calc.__main__ import main
+
+    code = main(["report", *map(str, args)])
+    return code, capsys.readouterr().err
+
+
+def test_a_missing_case_file_is_an_error_before_anything_is_built(capsys, tmp_path):
+    code, err = report_here(capsys, tmp_path / "nothing.toml", "-o", tmp_path)
+    assert code == 2
+    assert err.strip() == f"error: {tmp_path / 'nothing.toml'}: the case file does not exist"
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_missing_programs_are_named_with_what_to_install(capsys, monkeypatch, tmp_path):
+    monkeypatch.setenv("PATH", str(tmp_path))  # a PATH with neither xelatex nor pandoc on it
+    code, err = report_here(capsys, EXAMPLE, "-o", tmp_path / "example.pdf")
+    assert code == 2
+    assert err.startswith(
+        "error: the PDF report needs xelatex (texlive-xetex), pandoc (pandoc), not found on this machine; "
+        "on Debian run `make report` as root (it installs them)"
+    )
     assert list(tmp_path.iterdir()) == []
 
 

@@ -127,6 +127,7 @@ def test_series_evaluates_a_batch_of_chains_at_once():
         (lambda: Component("c", "output", Q_(1, NM_ARCMIN), Q_(-1, "arcmin")), "backlash: expected an angle of zero or more"),
         (lambda: Component("c", "motor", Q_(1, NM_ARCMIN), Q_(0, "arcmin")), "side: expected input or output, found 'motor'"),
         (lambda: Component("c", "output", Q_(1, NM_ARCMIN), None), "backlash: expected an angle"),
+        (lambda: Component("c", "output", Q_(1, NM_ARCMIN), Q_(0, "arcmin"), nominal_torque=Q_(0, "N*m")), "component 'c': nominal_torque: expected a torque above zero, found 0 "),
         (lambda: Chain(()), "expected at least one component"),
         (lambda: Chain((part("c", 1, side="input"),)), "sits on the input side"),
         (lambda: Chain((part("c", 1),), ratio=Q_(0, "")), "expected a ratio above zero"),

@@ -79,3 +79,11 @@ def test_trace_file_errors_name_the_row(tmp_path):
     path.write_text("input [deg],output [deg]\n0,0\n3.6,x\n")
     with pytest.raises(CalcError, match=r"trace.csv, row 3, column output: expected a number, found 'x'"):
         read_trace(path)
+
+
+@pytest.mark.parametrize("ratio", [0, -10])
+def test_a_ratio_of_zero_or_less_is_an_error(ratio):
+    trace = generate_trace(Q_(10, ""), Q_(40, "arcsec"), seed=3)
+    with pytest.raises(CalcError) as err:
+        analyze_trace(trace, Q_(ratio, ""))
+    assert str(err.value) == f"generated trace: ratio: expected a ratio above zero, found {ratio}"

@@ -150,3 +150,27 @@ def test_to_si_checks_the_kind_as_as_kind_does():
     with pytest.raises(CalcError, match="expected a torque as a quantity with a unit"):
         to_si(12.0, "torque", "T")
     assert to_si(10, "dimensionless", "i") == 10.0
+
+
+@pytest.mark.parametrize(
+    "value, shown",
+    [
+        (True, "True"),  # TOML `peak_torque = true`: a bool is an int to Python, but no torque
+        (["12 N*m"], "['12 N*m']"),  # TOML `peak_torque = ["12 N*m"]`
+        ({"value": 12}, "{'value': 12}"),  # TOML `peak_torque = {value = 12}`
+    ],
+)
+def test_a_value_that_is_no_text_or_number_is_named(value, shown):
+    with pytest.raises(CalcError) as err:
+        parse_quantity(value, "torque", "motor.peak_torque")
+    assert str(err.value) == f'motor.peak_torque: expected a torque such as "12 N*m", found {shown}'
+
+
+def test_a_quantity_of_another_registry_is_refused():
+    # pint refuses to mix registries deep inside a formula; the message names the argument first.
+    import pint
+
+    with pytest.raises(CalcError) as err:
+        as_kind(pint.UnitRegistry().Quantity(12, "N*m"), "torque", "T_1B")
+    assert str(err.value).startswith("T_1B: the quantity 12 meter * newton was made with another unit registry")
+    assert "use calc.ureg or calc.Q_" in str(err.value)
