@@ -33,7 +33,7 @@ def nothing(report) -> list:
     return []
 
 
-def sources(name: str, report) -> list[str]:
+def sources(name: str) -> list[str]:
     """The source's sections a described section is computed from."""
     return list(SOURCE_SECTIONS.get(name, ()))
 

@@ -32,7 +32,7 @@ def _described(report) -> bool:
 
 
 def sources(report) -> list[str]:
-    return common.sources(NAME, report) if _described(report) else []
+    return common.sources(NAME) if _described(report) else []
 
 
 def readings(report) -> set[str]:

@@ -17,7 +17,7 @@ NAME = "gearbox"
 
 
 def sources(report) -> list[str]:
-    return common.sources(NAME, report)
+    return common.sources(NAME)
 
 
 def readings(report) -> set[str]:
