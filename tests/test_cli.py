@@ -108,7 +108,7 @@ GOOD_CSV = GEARBOXES.read_text()
         (HEAD_TOML.replace('[motor]\npeak_torque = "12 N*m"\ninertia = "4.2 kg*cm**2"', 'motor = "12 N*m"') + PROFILE_TOML, "motor: expected a table of keys, found str"),
         (HEAD_TOML.replace('title = "test axis"', "title = 3") + PROFILE_TOML, "title: expected a text in quotes, found 3"),
         (HEAD_TOML.replace('title = "test axis"', 'title = "x"\nprofile = "fast"'), "profile: expected an array of tables ([[profile]]), found str"),
-        (HEAD_TOML.replace('"12 N*m"', '"0 N*m"') + PROFILE_TOML, "motor.peak_torque: expected a torque above zero, found 0"),
+        (HEAD_TOML.replace('"12 N*m"', '"0 N*m"') + PROFILE_TOML, "motor.peak_torque: expected a torque above zero, found '0 N*m'"),
         (HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = ""') + PROFILE_TOML, "gearbox.catalog: expected a catalog name or a path to a CSV file, found ''"),
         # TP010-5 is the 5:1 gearbox of the shipped catalog (row 3).
         (HEAD_TOML.replace("ratio = 10", 'ratio = 10\npart = "TP010-5"') + PROFILE_TOML, "gearbox.part: TP010-5 has ratio 5, but gearbox.ratio is 10"),

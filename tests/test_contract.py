@@ -179,3 +179,29 @@ def test_selected_needs_the_section_it_follows(capsys, write_case):
                   + '[[accuracy.component]]\npart = "selected"\n')
     code, _, err = run(capsys, write_case(no_gearbox, "nogear.toml"))
     assert code == 2 and "follows the gearbox selection, but the case names no gearbox ratio or part" in err
+
+
+@pytest.mark.parametrize(
+    "chain, fragment",
+    [
+        (SELECTED_CHAIN.replace('part = "selected"\n', 'part = "selected"\ncatalog = "couplings"\n', 1),
+         "accuracy.component[1].catalog: part = \"selected\" takes the coupling selection's catalog; give no catalog"),
+        (SELECTED_CHAIN.replace('part = "selected"\n', 'part = "AX2090-EC05"\nside = "input"\n', 1),
+         "(AX2090-EC05): the twist of a coupling of type elastomer is not one catalog stiffness; give its stiffness and backlash"),
+        (SELECTED_CHAIN.replace('part = "selected"\n', 'part = "selected"\nside = "output"\n', 1),
+         "accuracy.component[1].side: the coupling selection's coupling sits on the input side (coupling.side), found 'output'"),
+    ],
+)
+def test_coupling_part_errors(capsys, write_case, chain, fragment):
+    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + COUPLING_TOML + chain))
+    assert code == 2 and out == "" and fragment in err and err.count("\n") == 1
+
+
+def test_a_coupling_part_without_stiffness(capsys, write_case, tmp_path):
+    from .conftest import ROOT
+
+    text = (ROOT / "catalogs" / "couplings.csv").read_text().replace("AKD-30,AKD,30,bellows,36,,25000,", "AKD-30,AKD,30,bellows,36,,,")
+    (tmp_path / "mine.csv").write_text(text)
+    chain = SELECTED_CHAIN.replace('part = "selected"\n', 'part = "AKD-30"\nside = "input"\ncatalog = "mine.csv"\n', 1)
+    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + COUPLING_TOML + chain))
+    assert code == 2 and out == "" and "(AKD-30), column C_T: expected a value, found an empty cell" in err

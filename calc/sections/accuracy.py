@@ -153,7 +153,7 @@ def _coupling_part(case: Case, t: Table, part: str):
     name, kind_of = str(rows.parts[row]), str(rows.text["type"][row])
     where = f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({name})"
     if kind_of not in ("bellows", "safety"):
-        raise CalcError(f"{where}: a {kind_of} coupling's twist is not one catalog stiffness; give its stiffness and backlash instead of a part")
+        raise CalcError(f"{where}: the twist of a coupling of type {kind_of} is not one catalog stiffness; give its stiffness and backlash instead of a part")
     stiffness = rows["C_T"][row]
     if np.isnan(stiffness.magnitude):
         raise CalcError(f"{where}, column C_T: expected a value, found an empty cell")
