@@ -241,9 +241,13 @@ def _length_unit(text: str, where: str, found: str):
     return units
 
 
-def _number(text: str) -> float:
+def _number(text: str, where: str, found: str) -> float:
+    """A decimal or a fraction (``1/8``) of a bore notation."""
     text = re.sub(r"\s+", "", text)
-    return float(Fraction(text)) if "/" in text else float(text)
+    try:
+        return float(Fraction(text)) if "/" in text else float(text)
+    except ZeroDivisionError:
+        raise CalcError(f"{where}: expected a fraction with a denominator above zero, found {text!r} in {found!r}") from None
 
 
 def _spaced(text: str) -> str:
@@ -293,11 +297,11 @@ def parse_bore(text, where: str = "bore") -> Bore:
     elif m.group("tol"):
         tolerance = _spaced(m.group("tol"))
         if m.group("sym"):
-            dev = Q_(_number(m.group("sym")), _length_unit(m.group("sym_unit") or m.group("unit"), where, text))
+            dev = Q_(_number(m.group("sym"), where, text), _length_unit(m.group("sym_unit") or m.group("unit"), where, text))
             devs = (-dev, dev)
         else:
             devs = tuple(
-                Q_(_number(m.group(key)), _length_unit(m.group(f"{key}_unit") or m.group("unit"), where, text)) for key in ("dev1", "dev2")
+                Q_(_number(m.group(key), where, text), _length_unit(m.group(f"{key}_unit") or m.group("unit"), where, text)) for key in ("dev1", "dev2")
             )
         lower, upper = sorted((nominal + d).to(unit) for d in devs)
         if not upper > lower:
@@ -305,7 +309,7 @@ def parse_bore(text, where: str = "bore") -> Bore:
     keyway = None
     order_text = size_text + (f" {tolerance}" if tolerance else "")
     if m.group("keyway"):
-        keyway = Q_(_number(m.group("keyway")), _length_unit(m.group("keyway_unit"), where, text))
+        keyway = Q_(_number(m.group("keyway"), where, text), _length_unit(m.group("keyway_unit"), where, text))
         if not keyway.magnitude > 0:
             raise CalcError(f"{where}: expected a keyway width above zero, found {text!r}")
         order_text += f", x {_with_unit(m.group('keyway'), m.group('keyway_unit'))} keyway"

@@ -181,3 +181,10 @@ def test_a_malformed_tolerance_class_is_named(cls):
     with pytest.raises(CalcError) as err:
         limit_deviations(Q_(14, "mm"), cls, "coupling.shaft_1")
     assert str(err.value) == f"coupling.shaft_1: expected an ISO 286 tolerance class such as 'k6' or 'H7', found {cls!r}"
+
+
+def test_a_fraction_over_zero_is_an_input_error():
+    # An inch keyway of 1/0" was a ZeroDivisionError; it is a one-line error naming the key.
+    with pytest.raises(CalcError) as err:
+        parse_bore('1.000" +0/-.0005", x 1/0" keyway', "coupling.shaft_1")
+    assert str(err.value) == "coupling.shaft_1: expected a fraction with a denominator above zero, found '1/0' in '1.000\" +0/-.0005\", x 1/0\" keyway'"
