@@ -12,9 +12,7 @@ import csv
 import dataclasses
 import functools
 import hashlib
-import itertools
 import math
-import operator
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -233,9 +231,9 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     lines = np.array(lines, dtype=int)
 
     def column(name):
-        return list(map(str.strip, cells[columns[name][0]::width]))
+        return cells[columns[name][0]::width]
 
-    texts = {name: column(name) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
+    texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
     numbers = {c.name: _numbers(column(c.name)) for c in schema.columns}
     problem = _first_problem(path, schema, lines, texts, numbers)
     if problem:
@@ -276,8 +274,8 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
 
 @dataclass(frozen=True)
 class _Numbers:
-    """A numeric column parsed: its cells, values (NaN where empty or not a number) and which
-    cells are empty or not numbers."""
+    """A numeric column parsed: its cells as written, values (NaN where empty or not a number)
+    and which cells are empty or not numbers."""
 
     cells: list
     values: np.ndarray
@@ -286,16 +284,19 @@ class _Numbers:
 
 
 def _numbers(cells: list) -> _Numbers:
-    """Parse a column of stripped cells. Each distinct spelling is held against :data:`_FLOAT`
-    once (a catalog repeats its values), so ``inf``, ``nan``, ``1_000`` or hex, which ``float``
-    would take, are malformed; only the cells that pass are given to ``float``."""
-    n, spellings = len(cells), set(cells)
-    empty = np.fromiter(map(operator.not_, cells), bool, n) if "" in spellings else np.zeros(n, bool)
-    wrong = {cell for cell in spellings if cell and not _FLOAT.match(cell)}
-    malformed = np.fromiter(map(wrong.__contains__, cells), bool, n) if wrong else np.zeros(n, bool)
-    values = np.full(n, math.nan)
-    numeric = ~(empty | malformed)
-    values[numeric] = np.fromiter(map(float, itertools.compress(cells, numeric)), float, int(numeric.sum()))
+    """Parse a column of cells as written. Each distinct spelling is stripped, held against
+    :data:`_FLOAT` and parsed once (a catalog repeats its values, and a lookup costs less than a
+    parse), so ``inf``, ``nan``, ``1_000`` or hex, which ``float`` would take, are malformed."""
+    value_of = {}
+    for spelling in set(cells):
+        cell = spelling.strip()
+        value_of[spelling] = float(cell) if cell and _FLOAT.match(cell) else math.nan
+    values = np.fromiter(map(value_of.__getitem__, cells), float, len(cells))
+    # A number's spelling never parses to NaN: NaN marks the empty and the malformed cells.
+    unparsed = np.flatnonzero(np.isnan(values))
+    empty = np.zeros(len(cells), bool)
+    empty[unparsed] = [not cells[j].strip() for j in unparsed]
+    malformed = np.isnan(values) & ~empty
     return _Numbers(cells, values, empty, malformed)
 
 
@@ -327,7 +328,7 @@ def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict
 
 def _cell_problem(path: Path, line: int, part: str, c: Column, x: _Numbers, j: int, infinite: bool) -> str:
     """What is wrong with the numeric cell ``j`` of column ``c``, known to be bad."""
-    where, cell = f"{path}, row {line} ({part}), column {c.name}", x.cells[j]
+    where, cell = f"{path}, row {line} ({part}), column {c.name}", x.cells[j].strip()
     if x.empty[j]:
         return f"{where}: expected a number, found an empty cell"
     if x.malformed[j]:
