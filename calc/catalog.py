@@ -151,9 +151,9 @@ def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
     return path
 
 
-#: Each catalog read so far in this run, by resolved path and schema: the file's (size, mtime_ns)
-#: when read, and the catalog. The gearbox selection and the accuracy chain's part lookups of one
-#: evaluation share one read; a file changed since is read again.
+#: Each catalog read so far in this run, by resolved path and schema: the file's (size, mtime_ns,
+#: inode) when read, and the catalog. The gearbox selection and the accuracy chain's part lookups
+#: of one evaluation share one read; a file changed since (or replaced, as editors save) is read again.
 _LOADED: dict = {}
 
 
@@ -168,12 +168,12 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
     Notes
     -----
     A later call for the same file (by resolved path) and schema returns the catalog already read,
-    unless the file's size or modification time has changed; its arrays are read-only, as every
-    caller shares them.
+    unless the file's size or modification time has changed or another file has taken its place;
+    its arrays are read-only, as every caller shares them.
     """
     path = Path(path)
     stat = path.stat()
-    key, stamp = (path.resolve(), schema), (stat.st_size, stat.st_mtime_ns)
+    key, stamp = (path.resolve(), schema), (stat.st_size, stat.st_mtime_ns, stat.st_ino)
     known = _LOADED.get(key)
     if known is None or known[0] != stamp:
         known = _LOADED[key] = (stamp, _read_catalog(path, schema))
@@ -282,6 +282,25 @@ class _Numbers:
     empty: np.ndarray
     malformed: np.ndarray
 
+    def bad(self, c: Column) -> np.ndarray:
+        """Where a cell fails column ``c``: empty though required, or given but not a finite
+        number in range (NaN, the mark of a malformed cell, is neither)."""
+        ok = np.isfinite(self.values) & (self.values > 0 if c.positive else self.values >= 0)
+        return np.where(self.empty, c.required, ~ok)
+
+    def problem(self, j: int, c: Column, where: str) -> str:
+        """What is wrong with cell ``j``, one that :meth:`bad` marks."""
+        cell = self.cells[j].strip()
+        if self.empty[j]:
+            return f"{where}: expected a number, found an empty cell"
+        if self.malformed[j]:
+            return f"{where}: expected a number, found {cell!r}"
+        if not math.isfinite(self.values[j]):
+            return f"{where}: expected a finite number, found {cell!r}"
+        if c.positive:
+            return f"{where}: expected a value above zero, found {cell}"
+        return f"{where}: expected a value of zero or more, found {cell}"
+
 
 def _numbers(cells: list) -> _Numbers:
     """Parse a column of cells as written. Each distinct spelling is stripped, held against
@@ -296,48 +315,28 @@ def _numbers(cells: list) -> _Numbers:
     unparsed = np.flatnonzero(np.isnan(values))
     empty = np.zeros(len(cells), bool)
     empty[unparsed] = [not cells[j].strip() for j in unparsed]
-    malformed = np.isnan(values) & ~empty
-    return _Numbers(cells, values, empty, malformed)
+    return _Numbers(cells, values, empty, np.isnan(values) & ~empty)
 
 
 def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict) -> str | None:
     """The message of the first bad cell a reader meets going row by row and, in a row, column by
-    column (the text columns, then the numeric ones in the schema's order), or None.
-
-    Each column's bad rows are found over the whole column at once; only the first bad row of each
-    is looked at further."""
-    found = []  # (row index, column order, message maker)
+    column (the text columns, then the numeric ones in the schema's order), or None. Each
+    column's bad cells are found over the whole column at once."""
+    firsts = []  # (row index, column order, column name) of each column's first bad cell
     for order, name in enumerate(texts):
         if name in schema.text_columns and "" in texts[name]:
-            j = texts[name].index("")
-            found.append((j, order, lambda j=j, name=name: f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"))
+            firsts.append((texts[name].index(""), order, name))
     for order, c in enumerate(schema.columns, start=len(texts)):
-        x = numbers[c.name]
-        with np.errstate(invalid="ignore"):
-            given = ~(x.empty | x.malformed)
-            infinite = given & ~np.isfinite(x.values)
-            out_of_range = given & ~infinite & (~(x.values > 0) if c.positive else (x.values < 0))
-        bad = (x.empty & c.required) | x.malformed | infinite | out_of_range
+        bad = numbers[c.name].bad(c)
         if bad.any():
-            j = int(np.argmax(bad))
-            found.append((j, order, lambda j=j, c=c, x=x, infinite=infinite: _cell_problem(path, lines[j], texts["part"][j], c, x, j, infinite[j])))
-    if not found:
+            firsts.append((int(np.argmax(bad)), order, c.name))
+    if not firsts:
         return None
-    return min(found, key=lambda f: f[:2])[2]()
-
-
-def _cell_problem(path: Path, line: int, part: str, c: Column, x: _Numbers, j: int, infinite: bool) -> str:
-    """What is wrong with the numeric cell ``j`` of column ``c``, known to be bad."""
-    where, cell = f"{path}, row {line} ({part}), column {c.name}", x.cells[j].strip()
-    if x.empty[j]:
-        return f"{where}: expected a number, found an empty cell"
-    if x.malformed[j]:
-        return f"{where}: expected a number, found {cell!r}"
-    if infinite:
-        return f"{where}: expected a finite number, found {cell!r}"
-    if c.positive:
-        return f"{where}: expected a value above zero, found {cell}"
-    return f"{where}: expected a value of zero or more, found {cell}"
+    j, _, name = min(firsts)
+    if name in texts:
+        return f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"
+    c = next(c for c in schema.columns if c.name == name)
+    return numbers[name].problem(j, c, f"{path}, row {lines[j]} ({texts['part'][j]}), column {name}")
 
 
 def _header_unit(path: Path, c: Column, unit_text):
