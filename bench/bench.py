@@ -13,8 +13,9 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
 * ``sweep``: a design space of ratio × cycle time × motor peak torque (10^5 points) evaluated with
   the package's Formula objects broadcast over arrays, beside the same in raw numpy; ``sweep_1M``
   the same with 10^6 points, where the fixed cost of each call weighs ten times less.
-* ``catalog_load_100k``: reading and validating that catalog's CSV file (no target; not part of
-  ``rank_100k``).
+* ``catalog_load_100k``: reading and validating that catalog's CSV file, the first
+  :func:`calc.catalog.load_catalog` of it in the run (a later one is served from what was read;
+  no target; not part of ``rank_100k``).
 * ``evaluate_100k``: ``python -m calc evaluate --json`` of a copy of the example case whose
   ``gearbox.catalog`` is a synthetic catalog of 100,000 rows at its ratio (the shipped rows at
   that ratio among them, as the accuracy chain names one), end to end in a fresh process;
@@ -349,7 +350,10 @@ def write_large_case(workdir: Path, rows: int) -> Path:
     folder.mkdir(parents=True)
     (folder.parent / "data").symlink_to(ROOT / "data")
     with open(ROOT / "catalogs" / "gearboxes.csv", encoding="utf-8", newline="") as f:
-        shipped = [row for row in list(csv.reader(f))[1:] if float(row[2]) == ratio]
+        header, *shipped = csv.reader(f)
+    if header != HEADER.split(","):
+        raise RuntimeError("evaluate_100k: catalogs/gearboxes.csv no longer has the synthetic catalog's columns")
+    shipped = [row for row in shipped if float(row[header.index("ratio [1]")]) == ratio]
     catalog = folder / "gearboxes-large.csv"
     write_synthetic_catalog(catalog, rows - len(shipped), ratio)
     with open(catalog, "a", encoding="utf-8", newline="") as f:

@@ -13,9 +13,7 @@ import dataclasses
 import functools
 import hashlib
 import importlib.resources
-import itertools
 import math
-import operator
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -183,9 +181,9 @@ def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
     return path
 
 
-#: Each catalog read so far in this run, by resolved path and schema: the file's (size, mtime_ns)
-#: when read, and the catalog. The gearbox selection and the accuracy chain's part lookups of one
-#: evaluation share one read; a file changed since is read again.
+#: Each catalog read so far in this run, by resolved path and schema: the file's (size, mtime_ns,
+#: inode) when read, and the catalog. The gearbox selection and the accuracy chain's part lookups
+#: of one evaluation share one read; a file changed since (or replaced, as editors save) is read again.
 _LOADED: dict = {}
 
 
@@ -200,12 +198,12 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
     Notes
     -----
     A later call for the same file (by resolved path) and schema returns the catalog already read,
-    unless the file's size or modification time has changed; its arrays are read-only, as every
-    caller shares them.
+    unless the file's size or modification time has changed or another file has taken its place;
+    its arrays are read-only, as every caller shares them.
     """
     path = Path(path)
     stat = path.stat()
-    key, stamp = (path.resolve(), schema), (stat.st_size, stat.st_mtime_ns)
+    key, stamp = (path.resolve(), schema), (stat.st_size, stat.st_mtime_ns, stat.st_ino)
     known = _LOADED.get(key)
     if known is None or known[0] != stamp:
         known = _LOADED[key] = (stamp, _read_catalog(path, schema))
@@ -263,9 +261,9 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     lines = np.array(lines, dtype=int)
 
     def column(name):
-        return list(map(str.strip, cells[columns[name][0]::width]))
+        return cells[columns[name][0]::width]
 
-    texts = {name: column(name) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
+    texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
     numbers = {c.name: _numbers(column(c.name)) for c in schema.columns}
     problem = _first_problem(path, schema, lines, texts, numbers)
     if problem:
@@ -306,67 +304,69 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
 
 @dataclass(frozen=True)
 class _Numbers:
-    """A numeric column parsed: its cells, values (NaN where empty or not a number) and which
-    cells are empty or not numbers."""
+    """A numeric column parsed: its cells as written, values (NaN where empty or not a number)
+    and which cells are empty or not numbers."""
 
     cells: list
     values: np.ndarray
     empty: np.ndarray
     malformed: np.ndarray
 
+    def bad(self, c: Column) -> np.ndarray:
+        """Where a cell fails column ``c``: empty though required, or given but not a finite
+        number in range (NaN, the mark of a malformed cell, is neither)."""
+        ok = np.isfinite(self.values) & (self.values > 0 if c.positive else self.values >= 0)
+        return np.where(self.empty, c.required, ~ok)
+
+    def problem(self, j: int, c: Column, where: str) -> str:
+        """What is wrong with cell ``j``, one that :meth:`bad` marks."""
+        cell = self.cells[j].strip()
+        if self.empty[j]:
+            return f"{where}: expected a number, found an empty cell"
+        if self.malformed[j]:
+            return f"{where}: expected a number, found {cell!r}"
+        if not math.isfinite(self.values[j]):
+            return f"{where}: expected a finite number, found {cell!r}"
+        if c.positive:
+            return f"{where}: expected a value above zero, found {cell}"
+        return f"{where}: expected a value of zero or more, found {cell}"
+
 
 def _numbers(cells: list) -> _Numbers:
-    """Parse a column of stripped cells. Each distinct spelling is held against :data:`_FLOAT`
-    once (a catalog repeats its values), so ``inf``, ``nan``, ``1_000`` or hex, which ``float``
-    would take, are malformed; only the cells that pass are given to ``float``."""
-    n, spellings = len(cells), set(cells)
-    empty = np.fromiter(map(operator.not_, cells), bool, n) if "" in spellings else np.zeros(n, bool)
-    wrong = {cell for cell in spellings if cell and not _FLOAT.match(cell)}
-    malformed = np.fromiter(map(wrong.__contains__, cells), bool, n) if wrong else np.zeros(n, bool)
-    values = np.full(n, math.nan)
-    numeric = ~(empty | malformed)
-    values[numeric] = np.fromiter(map(float, itertools.compress(cells, numeric)), float, int(numeric.sum()))
-    return _Numbers(cells, values, empty, malformed)
+    """Parse a column of cells as written. Each distinct spelling is stripped, held against
+    :data:`_FLOAT` and parsed once (a catalog repeats its values, and a lookup costs less than a
+    parse), so ``inf``, ``nan``, ``1_000`` or hex, which ``float`` would take, are malformed."""
+    value_of = {}
+    for spelling in set(cells):
+        cell = spelling.strip()
+        value_of[spelling] = float(cell) if cell and _FLOAT.match(cell) else math.nan
+    values = np.fromiter(map(value_of.__getitem__, cells), float, len(cells))
+    # A number's spelling never parses to NaN: NaN marks the empty and the malformed cells.
+    unparsed = np.flatnonzero(np.isnan(values))
+    empty = np.zeros(len(cells), bool)
+    empty[unparsed] = [not cells[j].strip() for j in unparsed]
+    return _Numbers(cells, values, empty, np.isnan(values) & ~empty)
 
 
 def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict) -> str | None:
     """The message of the first bad cell a reader meets going row by row and, in a row, column by
-    column (the text columns, then the numeric ones in the schema's order), or None.
-
-    Each column's bad rows are found over the whole column at once; only the first bad row of each
-    is looked at further."""
-    found = []  # (row index, column order, message maker)
+    column (the text columns, then the numeric ones in the schema's order), or None. Each
+    column's bad cells are found over the whole column at once."""
+    firsts = []  # (row index, column order, column name) of each column's first bad cell
     for order, name in enumerate(texts):
         if name in schema.text_columns and "" in texts[name]:
-            j = texts[name].index("")
-            found.append((j, order, lambda j=j, name=name: f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"))
+            firsts.append((texts[name].index(""), order, name))
     for order, c in enumerate(schema.columns, start=len(texts)):
-        x = numbers[c.name]
-        with np.errstate(invalid="ignore"):
-            given = ~(x.empty | x.malformed)
-            infinite = given & ~np.isfinite(x.values)
-            out_of_range = given & ~infinite & (~(x.values > 0) if c.positive else (x.values < 0))
-        bad = (x.empty & c.required) | x.malformed | infinite | out_of_range
+        bad = numbers[c.name].bad(c)
         if bad.any():
-            j = int(np.argmax(bad))
-            found.append((j, order, lambda j=j, c=c, x=x, infinite=infinite: _cell_problem(path, lines[j], texts["part"][j], c, x, j, infinite[j])))
-    if not found:
+            firsts.append((int(np.argmax(bad)), order, c.name))
+    if not firsts:
         return None
-    return min(found, key=lambda f: f[:2])[2]()
-
-
-def _cell_problem(path: Path, line: int, part: str, c: Column, x: _Numbers, j: int, infinite: bool) -> str:
-    """What is wrong with the numeric cell ``j`` of column ``c``, known to be bad."""
-    where, cell = f"{path}, row {line} ({part}), column {c.name}", x.cells[j]
-    if x.empty[j]:
-        return f"{where}: expected a number, found an empty cell"
-    if x.malformed[j]:
-        return f"{where}: expected a number, found {cell!r}"
-    if infinite:
-        return f"{where}: expected a finite number, found {cell!r}"
-    if c.positive:
-        return f"{where}: expected a value above zero, found {cell}"
-    return f"{where}: expected a value of zero or more, found {cell}"
+    j, _, name = min(firsts)
+    if name in texts:
+        return f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"
+    c = next(c for c in schema.columns if c.name == name)
+    return numbers[name].problem(j, c, f"{path}, row {lines[j]} ({texts['part'][j]}), column {name}")
 
 
 def _header_unit(path: Path, c: Column, unit_text):

@@ -1,11 +1,16 @@
 """The catalog loader: every problem named by file, row and column."""
 
 import csv
+import itertools
+import math
 import os
+import re
 from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from calc import CalcError, catalog
 from calc.case import read_case
@@ -124,6 +129,46 @@ def test_the_first_problem_in_reading_order_is_named(tmp_path, rows, fragment):
     with pytest.raises(CalcError) as err:
         load_catalog(path, SCHEMA)
     assert fragment in str(err.value)
+
+
+#: A plain decimal number, as the case-format spec writes a catalog number: sign, digits with at
+#: most one point, an optional exponent; nothing else (no inf, nan, 1_000, hex).
+NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
+BACKLASH_CELLS = st.one_of(
+    st.text(alphabet="0123456789+-.eE_xXinfaINFA \t", max_size=7),
+    st.sampled_from(["", " ", "3", " 3.5 ", "0", "-0", "1e999", "-1e999", "1e-999", "nan", "inf", "1_0", "0x1", "+.5", "5.", ".5e-3", "١٢"]),
+)
+FILES = itertools.count()
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(BACKLASH_CELLS, min_size=1, max_size=5))
+def test_a_cell_loads_exactly_when_it_is_a_finite_number_in_range(tmp_path_factory, cells):
+    # backlash [arcmin] is optional and may be zero: each cell, stripped, is empty (NaN), or a plain
+    # number that is finite and not below zero; the first that is not is named.
+    rows = [ROW.replace("G-10", f"G-{k}").replace(",3,23,", f",{cell},23,") for k, cell in enumerate(cells)]
+    path = tmp_path_factory.getbasetemp() / f"backlash-{next(FILES)}.csv"
+    path.write_text("\n".join([HEADER, *rows]) + "\n", encoding="utf-8")
+    expected = []
+    for k, cell in enumerate(c.strip() for c in cells):
+        where = f"row {k + 2} (G-{k}), column backlash: "
+        if not cell:
+            expected.append(math.nan)
+        elif not NUMBER.fullmatch(cell):
+            expected.append(where + f"expected a number, found {cell!r}")
+        elif not math.isfinite(float(cell)):
+            expected.append(where + f"expected a finite number, found {cell!r}")
+        elif float(cell) < 0:
+            expected.append(where + f"expected a value of zero or more, found {cell}")
+        else:
+            expected.append(float(cell))
+    first_error = next((e for e in expected if isinstance(e, str)), None)
+    if first_error:
+        with pytest.raises(CalcError) as err:
+            load_catalog(path, SCHEMA)
+        assert str(err.value) == f"{path}, {first_error}"
+    else:
+        np.testing.assert_array_equal(load_catalog(path, SCHEMA)["backlash"].m_as("arcmin"), expected)
 
 
 @pytest.mark.parametrize("name, schema", [("gearboxes", SCHEMA), ("couplings", COUPLING_SCHEMA)])
