@@ -91,9 +91,10 @@ class CheckArray:
         with np.errstate(invalid="ignore", divide="ignore"):
             return np.asarray(magnitude_in(self.required, self.unit) / rated, dtype=float)
 
-    @property
+    @functools.cached_property
     def passes(self) -> np.ndarray:
-        """:func:`within_rating` of each row (false where the check is not made)."""
+        """:func:`within_rating` of each row (false where the check is not made); computed once,
+        as listing candidates asks it of every row."""
         return within_rating(self.utilization)
 
     def at(self, row: int, governs: bool = True) -> Check:

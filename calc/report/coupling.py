@@ -4,6 +4,8 @@ candidates, figures and order line."""
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from ..units import Q_, sig
@@ -138,20 +140,11 @@ def figures(report) -> list:
     return out
 
 
-def checks(report) -> list[str]:
-    return further_checks(NAME, report)
-
-
-def candidates(report) -> list[str]:
-    return further_candidates(NAME, report)
-
-
-def chosen(report) -> list[tuple]:
-    return further_chosen(NAME, report)
-
-
-def order_lines(report) -> list[str]:
-    return further_order_lines(NAME, report)
+# The blocks a further section shares with the others, for this section.
+checks = functools.partial(further_checks, NAME)
+candidates = functools.partial(further_candidates, NAME)
+chosen = functools.partial(further_chosen, NAME)
+order_lines = functools.partial(further_order_lines, NAME)
 
 
 input_rows = common.nothing

@@ -41,9 +41,6 @@ class Results:
     def __getitem__(self, name: str):
         return self.sections[name]
 
-    def get(self, name: str):
-        return self.sections.get(name)
-
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         """The results as the JSON contract writes them; ``candidates`` bounds each candidate list
         (all for None)."""

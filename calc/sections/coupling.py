@@ -136,10 +136,6 @@ class CouplingResult:
     inputs: CouplingCase
     selection: CouplingSelection
 
-    @property
-    def selected(self) -> str | None:
-        return self.selection.selected
-
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         """The ``coupling`` results of the JSON contract."""
         cc, sel = self.inputs, self.selection
@@ -218,10 +214,9 @@ class CouplingResult:
         ]
         for b in section["bores"]:
             lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
-        for c in section["candidates"]:
+        for c, row in zip(section["candidates"], shown(self.selection.order, candidates)):
             verdict = "PASS" if c["passes"] else "FAIL"
             lines.append(f"  {verdict}  {c['part']} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {quantity_text(c['f_e'])}")
-            row = self.selection.catalog.index(c["part"], "coupling.part")
             lines += [f"        {check_line(k.at(row), 20)}" for k in self.selection.checks if k.applies_to(row)]
             for r in c["reasons"]:
                 lines.append(f"        rejected: {r}")

@@ -63,10 +63,6 @@ class GearboxResult:
 
     selection: GearboxSelection
 
-    @property
-    def selected(self) -> str | None:
-        return self.selection.selected
-
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         s = self.selection
         listed = []
