@@ -10,7 +10,7 @@ import pytest
 CALC = Path(__file__).resolve().parent.parent / "calc"
 
 LAYERS = {
-    "machinery": ("errors", "units", "formula", "formula_numeric", "codegen", "checks", "bands", "catalog", "measurement"),
+    "machinery": ("errors", "units", "formula", "formula_numeric", "codegen", "checks", "bands", "catalog", "measurement", "cycle"),
     "domain": ("profile", "gearbox", "coupling", "fits", "stiffness", "hysteresis", "accuracy", "transmission"),
     "figures": ("plots", "coupling_plots", "accuracy_plots", "glossary"),
     "case": ("case", "sections"),

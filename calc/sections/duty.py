@@ -6,6 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..case import Case, Table
+from ..cycle import SampledCycle
 from ..errors import CalcError
 from ..gearbox import shock_factor
 from ..profile import Duty, Profile, T_2m, Z_h, duty, n_2m
@@ -44,6 +45,7 @@ class DutyResult:
     fs: float
     T2max: object = None  # of the best-ranked gearbox, when the case has one and the motor's peak torque
     T2max_part: str | None = None
+    cycle: SampledCycle | None = None  # the sampled cycle where the motion form derived it
 
     def to_json(self, candidates: int | None = None) -> dict:
         d = self.duty
