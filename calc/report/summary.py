@@ -128,11 +128,12 @@ def _verdict_cell(row: dict) -> str:
 
 def _case_cell(row: dict) -> str:
     out = rf"{latex_escape(row['title'])}\newline\texttt{{\footnotesize {_breakable(row['case'])}}}"
-    if row["reason"]:
+    worst = row["worst"]
+    if row["reason"] and (row["error"] or worst is None or worst["utilization"] <= 1):  # else the worst check says why
         colour = "failred" if row["passes"] is False else "infogrey"
         reason = _breakable(row["reason"], latex_escape if row["error"] else prose)  # an error quotes the case as written
         out += rf"\newline{{\footnotesize\color{{{colour}}} {reason}}}"
-    return out + r"\par\vspace{1pt}"  # rows of several lines apart
+    return out
 
 
 def _part_cell(row: dict, name: str) -> str:
@@ -155,8 +156,8 @@ def summary_latex(rows: list[dict], reports: list, built: str, commit: str) -> L
     """The summary PDF's content: heading, the count of each verdict, the table of cases and the
     title block (each case file and catalog read, with its SHA-256; build date, package, commit).
     ``reports`` are the rows' :class:`calc.report.Report` objects, for the files they read."""
-    body = [[_case_cell(r), _verdict_cell(r), *(_part_cell(r, n) for n in CHOSEN), _worst_cell(r), _report_link(r["report"])]
-            for r in rows]
+    body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r), _verdict_cell(r), *(_part_cell(r, n) for n in CHOSEN),
+             _worst_cell(r), _report_link(r["report"])] for k, r in enumerate(rows)]  # rows of several lines set apart
     cases = table(
         r"@{} p{0.29\linewidth} p{0.1\linewidth} p{0.11\linewidth} p{0.08\linewidth} p{0.16\linewidth} p{0.12\linewidth}@{}",
         ["Case", "Verdict", "Gearbox", "Coupling", "Worst utilization", "Report"], body, small=True,
