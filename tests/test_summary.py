@@ -19,7 +19,7 @@ import pytest
 from calc.catalog import display_path
 from calc.publish import render_summary, summary_rows
 from calc.report import build_report
-from calc.report.summary import CSV_COLUMNS, worst_check
+from calc.report.summary import CSV_COLUMNS, worst_check, write_csv
 
 from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, run
 from .test_report import needs_tex, pdf_text, report_here
@@ -41,15 +41,17 @@ def write_cases(folder, **texts):
 
 
 def expected_worst(results: dict):
-    """The worst governing utilization written out from the JSON: the first candidate's checks of
-    gearbox and coupling (chosen, or closest when none passes) and accuracy's own checks."""
+    """The worst governing utilization written out from the JSON, with its criterion and where it
+    is: the first candidate's checks of gearbox and coupling (chosen, or closest when none passes)
+    and accuracy's own checks."""
     found = []
     for name in ("gearbox", "coupling", "accuracy"):
         s = results.get(name)
         if s is None:
             continue
         checks = s["candidates"][0]["checks"] if s.get("candidates") else s.get("checks", [])
-        found += [(k["utilization"], k["criterion"]) for k in checks if k.get("governs", True) and k["utilization"] is not None]
+        where = f"{name} {s['candidates'][0]['part']}" if s.get("candidates") else name
+        found += [(k["utilization"], k["criterion"], where) for k in checks if k.get("governs", True) and k["utilization"] is not None]
     return max(found) if found else None
 
 
@@ -81,9 +83,10 @@ def check_row_against_json(capsys, row: dict, case):
             assert row[name] == (results[name]["selected"] or "none passes")
         else:
             assert row[name] == ""
-    utilization, criterion = expected_worst(results)
+    utilization, criterion, where = expected_worst(results)
     assert float(row["worst utilization [1]"]) == utilization  # a fraction, written in full
     assert row["worst check"] == criterion
+    assert row["worst check in"] == where
 
 
 # -- without TeX ------------------------------------------------------------------------------
@@ -127,11 +130,8 @@ def test_summary_rows_are_plain_data_one_per_case(capsys, tmp_path):
     assert undecided["passes"] is None and "motor.peak_torque" in undecided["reason"]
     json.dumps(rows)  # plain data
     # The same rows as `evaluate --json` says, through the CSV.
-    render_csv = tmp_path / "summary.csv"
-    from calc.report.summary import write_csv
-
-    write_csv(rows, render_csv)
-    lines = read_csv(render_csv)
+    write_csv(rows, tmp_path / "summary.csv")
+    lines = read_csv(tmp_path / "summary.csv")
     assert tuple(lines[0]) == CSV_COLUMNS
     for row, case in zip(lines, [EXAMPLE, *cases]):
         check_row_against_json(capsys, row, case)

@@ -21,7 +21,7 @@ from .provenance import PACKAGE
 #: The sections whose chosen part a row names, in the order of the columns.
 CHOSEN = ("gearbox", "coupling")
 #: The columns of the CSV, units in brackets (a utilization is a fraction: 1 is the rating).
-CSV_COLUMNS = ("case file", "title", "verdict", *CHOSEN, "worst utilization [1]", "worst check", "checked part", "report", "reason")
+CSV_COLUMNS = ("case file", "title", "verdict", *CHOSEN, "worst utilization [1]", "worst check", "worst check in", "report", "reason")
 #: What a row says where no part of a section passes.
 NONE_PASSES = "none passes"
 #: File names a relative link in the PDF carries as written (others are shown without a link).
