@@ -131,6 +131,7 @@ class Samples:
     jerk: np.ndarray
     phase: np.ndarray
     segment: np.ndarray
+    durations: np.ndarray  # of each segment [s]: the sum of its pieces' durations, not of the dt
 
     @property
     def segment_phases(self) -> np.ndarray:
@@ -181,6 +182,47 @@ def sample(moves: list[Move], samples: int = SAMPLES) -> Samples:
         jerk=j,
         phase=phase[piece],
         segment=seg[piece],
+        durations=np.bincount(seg, weights=duration),
+    )
+
+
+#: A recorded interval stands still where its speed is at most this share of the record's highest
+#: speed, and is a ramp (accel or decel) where its acceleration is above this share of the
+#: record's highest: a drive's speed signal carries noise of about a percent, which must not cut a
+#: constant run into pieces.
+REST_SHARE = 0.01
+RAMP_SHARE = 0.05
+
+
+def record_samples(time: np.ndarray, speed: np.ndarray) -> Samples:
+    """A cycle recorded by a drive (times [s], increasing; speeds [rad/s] at the gearbox output)
+    as samples: one per interval between two rows, with the mean of its two speeds and the slope
+    between them; each interval a pause, ramp or constant run by :data:`REST_SHARE` and
+    :data:`RAMP_SHARE`, an acceleration where the speed's magnitude grows; a segment per run of
+    one phase.
+
+    >>> s = record_samples(np.array([0.0, 1.0, 2.0, 3.0, 4.0]), np.array([0.0, 2.0, 2.0, 0.0, 0.0]))
+    >>> [PHASES[p] for p in s.phase], s.segment.tolist(), s.speed.tolist(), s.acceleration.tolist()
+    (['accel', 'const', 'decel', 'pause'], [0, 1, 2, 3], [1.0, 2.0, 1.0, 0.0], [2.0, 0.0, -2.0, 0.0])
+    """
+    dt = np.diff(time)
+    v = (speed[1:] + speed[:-1]) / 2
+    acceleration = np.diff(speed) / dt
+    rest = np.abs(v) <= REST_SHARE * np.abs(speed).max()
+    ramp = np.abs(acceleration) > RAMP_SHARE * np.abs(acceleration).max()
+    phase = np.where(rest, PAUSE, np.where(ramp, np.where(acceleration * v > 0, ACCEL, DECEL), CONST))
+    mid = (time[1:] + time[:-1]) / 2
+    segment = np.r_[0, np.cumsum(phase[1:] != phase[:-1])]
+    return Samples(
+        t=mid,
+        dt=dt,
+        position=np.cumsum(speed[:-1] * dt + acceleration * dt**2 / 2),
+        speed=v,
+        acceleration=acceleration,
+        jerk=np.gradient(acceleration, mid) if len(mid) > 1 else np.zeros(1),
+        phase=phase,
+        segment=segment,
+        durations=np.bincount(segment, weights=dt),
     )
 
 
@@ -211,7 +253,7 @@ def segments(s: Samples, torque: np.ndarray) -> Segments:
     """
     n = int(s.segment[-1]) + 1
     dt, v, T = s.dt, s.speed, np.asarray(torque, dtype=float)
-    duration = np.bincount(s.segment, weights=dt, minlength=n)
+    duration = s.durations
     speed = np.bincount(s.segment, weights=v * dt, minlength=n) / duration
     weight = np.abs(v) * dt
     base = np.bincount(s.segment, weights=weight, minlength=n)
