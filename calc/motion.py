@@ -186,12 +186,14 @@ def sample(moves: list[Move], samples: int = SAMPLES) -> Samples:
     )
 
 
-#: A recorded interval stands still where its speed is at most this share of the record's highest
-#: speed, and is a ramp (accel or decel) where its acceleration is above this share of the
-#: record's highest: a drive's speed signal carries noise of about a percent, which must not cut a
-#: constant run into pieces.
+#: A recorded interval stands still where its speed is at most :data:`REST_SHARE` of the record's
+#: highest speed, and is a ramp (accel or decel) where its acceleration is above :data:`RAMP_SHARE`
+#: of the record's highest. A drive's speed signal carries noise, which must not cut a constant run
+#: into pieces: a run of one phase shorter than :data:`MIN_RUN_SHARE` of the cycle joins the run
+#: before it (the first, the one after).
 REST_SHARE = 0.01
-RAMP_SHARE = 0.05
+RAMP_SHARE = 0.1
+MIN_RUN_SHARE = 0.02
 
 
 def record_samples(time: np.ndarray, speed: np.ndarray) -> Samples:
@@ -199,7 +201,7 @@ def record_samples(time: np.ndarray, speed: np.ndarray) -> Samples:
     as samples: one per interval between two rows, with the mean of its two speeds and the slope
     between them; each interval a pause, ramp or constant run by :data:`REST_SHARE` and
     :data:`RAMP_SHARE`, an acceleration where the speed's magnitude grows; a segment per run of
-    one phase.
+    one phase (:data:`MIN_RUN_SHARE`).
 
     >>> s = record_samples(np.array([0.0, 1.0, 2.0, 3.0, 4.0]), np.array([0.0, 2.0, 2.0, 0.0, 0.0]))
     >>> [PHASES[p] for p in s.phase], s.segment.tolist(), s.speed.tolist(), s.acceleration.tolist()
@@ -211,6 +213,7 @@ def record_samples(time: np.ndarray, speed: np.ndarray) -> Samples:
     rest = np.abs(v) <= REST_SHARE * np.abs(speed).max()
     ramp = np.abs(acceleration) > RAMP_SHARE * np.abs(acceleration).max()
     phase = np.where(rest, PAUSE, np.where(ramp, np.where(acceleration * v > 0, ACCEL, DECEL), CONST))
+    phase = _join_short_runs(phase, dt, MIN_RUN_SHARE * (time[-1] - time[0]))
     mid = (time[1:] + time[:-1]) / 2
     segment = np.r_[0, np.cumsum(phase[1:] != phase[:-1])]
     return Samples(
@@ -224,6 +227,19 @@ def record_samples(time: np.ndarray, speed: np.ndarray) -> Samples:
         segment=segment,
         durations=np.bincount(segment, weights=dt),
     )
+
+
+def _join_short_runs(phase: np.ndarray, dt: np.ndarray, shortest: float) -> np.ndarray:
+    """``phase`` with each run shorter than ``shortest`` [s] given the phase of the run before
+    it (the first run, of the run after); runs are few, so a loop over them."""
+    starts = np.flatnonzero(np.r_[True, phase[1:] != phase[:-1]])
+    ends = np.r_[starts[1:], len(phase)]
+    lengths = np.add.reduceat(dt, starts)
+    out = phase.copy()
+    for k, (a, b, length) in enumerate(zip(starts, ends, lengths)):
+        if length < shortest and len(starts) > 1:
+            out[a:b] = out[a - 1] if k > 0 else phase[ends[0]]
+    return out
 
 
 @dataclass(frozen=True)

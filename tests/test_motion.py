@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 
 from calc.case import read_case
 from calc.mechanism import J_L_linear, Mechanism, T_2_linear, T_2_rotary, phi_2, r_diameter, r_lead
-from calc.motion import ACCEL, CONST, DECEL, PAUSE, Move, alpha_2max, omega_2max, sample, segments
+from calc.motion import ACCEL, CONST, DECEL, PAUSE, Move, alpha_2max, omega_2max, record_samples, sample, segments
 from calc.profile import T_2m, n_2m
 from calc.sections import evaluate
 from calc.units import Q_
@@ -211,3 +211,15 @@ def test_the_same_axis_in_si_and_inch_pound_units_gives_the_same_torques(tmp_pat
     scale = max(abs(t) for t in torques[0])
     assert torques[1] == pytest.approx(torques[0], rel=1e-9, abs=1e-9 * scale)
     assert out[1]["J_L"]["value"] == pytest.approx(out[0]["J_L"]["value"], rel=1e-9)
+
+
+def test_a_noisy_record_of_an_s_curve_keeps_its_four_phases():
+    # A record every 10 ms of a quarter-turn S-curve (0.5 s, ramps 0.15 s, jerk 0.03 s) and a 1.0 s dwell, with
+    # seeded noise of 0.2 rpm: the noise must not cut the constant run; the phases come out within a sample or two.
+    s = sample([Move(np.pi / 2, 0.5, 0.15, 0.15, 0.03), Move(0.0, 1.0)])
+    times = np.arange(0, 1.5 + 1e-9, 0.01)
+    speed = np.interp(times, s.t, s.speed) + np.random.default_rng(7).normal(0, 0.2 * np.pi / 30, times.size)
+    speed[times > 0.5] = 0.0
+    record = record_samples(times, speed)
+    assert [int(p) for p in record.segment_phases] == [ACCEL, CONST, DECEL, PAUSE]
+    assert record.durations == pytest.approx([0.15, 0.2, 0.15, 1.0], abs=0.021)
