@@ -169,19 +169,20 @@ def sample(moves: list[Move], samples: int = SAMPLES) -> Samples:
     counts = np.maximum(MIN_PER_PIECE, np.ceil(samples * duration / total)).astype(np.int64)
     step = duration / counts
     start = np.cumsum(counts) - counts
-    piece = np.repeat(np.arange(len(rows)), counts)
-    tau = (np.arange(counts.sum()) - start[piece] + 0.5) * step[piece]
-    j, a, v, x = jerk[piece], a0[piece], v0[piece], x0[piece]
-    t0 = np.cumsum(duration) - duration
+    each = lambda values: np.repeat(values, counts)  # noqa: E731 (a piece's value on each of its samples)
+    dt = each(step)
+    tau = (np.arange(counts.sum()) - each(start) + 0.5) * dt
+    j, a, v, x = each(jerk), each(a0), each(v0), each(x0)
+    # Horner's form: products, no powers (a power of an array costs several times a product).
     return Samples(
-        t=t0[piece] + tau,
-        dt=step[piece],
-        position=x + v * tau + a * tau**2 / 2 + j * tau**3 / 6,
-        speed=v + a * tau + j * tau**2 / 2,
+        t=each(np.cumsum(duration) - duration) + tau,
+        dt=dt,
+        position=x + tau * (v + tau * (a / 2 + tau * (j / 6))),
+        speed=v + tau * (a + tau * (j / 2)),
         acceleration=a + j * tau,
         jerk=j,
-        phase=phase[piece],
-        segment=seg[piece],
+        phase=each(phase),
+        segment=each(seg),
         durations=np.bincount(seg, weights=duration),
     )
 
@@ -273,8 +274,9 @@ def segments(s: Samples, torque: np.ndarray) -> Segments:
     speed = np.bincount(s.segment, weights=v * dt, minlength=n) / duration
     weight = np.abs(v) * dt
     base = np.bincount(s.segment, weights=weight, minlength=n)
-    cubic = np.bincount(s.segment, weights=weight * np.abs(T) ** 3, minlength=n)
-    signed = np.bincount(s.segment, weights=weight * T**3, minlength=n)
+    signed_cube = weight * T * T * T
+    cubic = np.bincount(s.segment, weights=np.abs(signed_cube), minlength=n)
+    signed = np.bincount(s.segment, weights=signed_cube, minlength=n)
     phase = s.segment_phases
     moving = phase != PAUSE
     out = np.bincount(s.segment, weights=T * dt, minlength=n) / duration
