@@ -33,7 +33,7 @@ import numpy as np
 from .formula import Formula, Symbol
 from .units import Q_
 
-#: The mechanism types a case may name, and whether each moves the load along a line.
+#: The mechanism types a case may name.
 TYPES = ("rotary", "ball-screw", "rack-pinion", "belt")
 
 READING = "a reading (spec, Motion and mechanism)"

@@ -241,3 +241,10 @@ def test_a_linear_axis_shows_its_radius_inertia_and_force():
     assert r"r &= \frac{p}{2 \cdot \pi}" in steps and r"&= 4.043\,\mathrm{mm}" in steps
     assert r"&= 12.35\,\mathrm{kg\,cm^{2}}" in steps
     assert r"F &= a \cdot m" in steps and r"T_{2} &= F \cdot r \cdot \eta^{- d_{P}}" in steps
+
+
+def test_a_derived_load_inertia_is_not_listed_as_a_case_key():
+    inputs = str(build_report(DERIVED_EXAMPLE).inputs())
+    assert r"\texttt{\footnotesize load.inertia}" not in inputs
+    assert r"\texttt{\footnotesize mechanism.inertia}" in inputs
+    assert r"\texttt{\footnotesize load.inertia}" in str(build_report(EXAMPLE).inputs())

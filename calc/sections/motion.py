@@ -169,7 +169,7 @@ def read(top: Table, case: Case) -> None:
         if mechanism is not None:
             raise CalcError(f"{top.path}: mechanism: a mechanism needs the moves of its load ([[move]]) or a [drive_record], found {'[[profile]]' if forms else 'neither'}")
         return
-    if isinstance(top.data.get("load"), dict) and "inertia" in top.data["load"]:
+    if mechanism is not None and isinstance(top.data.get("load"), dict) and "inertia" in top.data["load"]:
         raise CalcError(f"{top.path}: load.inertia: the mechanism gives the load's inertia J_L; leave load.inertia out")
     if forms == ["move"]:
         case.motion = read_moves(top, mechanism)
