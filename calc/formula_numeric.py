@@ -76,6 +76,10 @@ def gearbox__T_2max(T_1B, i, f_s, eta):
     return T_1B*eta*f_s*i
 
 
+def gearbox__T_2stop(T_1B, i):
+    return T_1B*i
+
+
 def gearbox__lambda(J_1, J_L, i, J_motor):
     return (J_1 + J_L/i**2)/J_motor
 
@@ -90,6 +94,22 @@ def hysteresis__j_t(phi_max_0, phi_min_0):
 
 def hysteresis__phi_LM3(phi_max_3, phi_min_3):
     return phi_max_3 - phi_min_3
+
+
+def motor__alpha_1(alpha_2, i):
+    return alpha_2*i
+
+
+def motor__T_1_drive(J_motor, J_1, alpha_1, T_2, i, eta):
+    return T_2/(eta*i) + alpha_1*(J_1 + J_motor)
+
+
+def motor__T_1_back(J_motor, J_1, alpha_1, T_2, i, eta):
+    return T_2*eta/i + alpha_1*(J_1 + J_motor)
+
+
+def motor__T_1rms(T_1k, t_k):
+    return sqrt(SegmentSum(T_1k**2*t_k)/SegmentSum(t_k))
 
 
 def profile__ED(t_on, t_cycle):
@@ -149,10 +169,15 @@ FUNCTIONS = {
     "calc.coupling.phi": ("f227044abb00fd02", coupling__phi),
     "calc.gearbox.n_1": ("8f9f168890758267", gearbox__n_1),
     "calc.gearbox.T_2max": ("d455c85b2c71de92", gearbox__T_2max),
+    "calc.gearbox.T_2stop": ("233cb8f5f3a997b8", gearbox__T_2stop),
     "calc.gearbox.lambda": ("f54c7a5badd2a8d9", gearbox__lambda),
     "calc.hysteresis.C_t": ("41fae874a638b2da", hysteresis__C_t),
     "calc.hysteresis.j_t": ("a86089e6e3b95b15", hysteresis__j_t),
     "calc.hysteresis.phi_LM3": ("5ec97fde2a6e3296", hysteresis__phi_LM3),
+    "calc.motor.alpha_1": ("81a7d283d47982ec", motor__alpha_1),
+    "calc.motor.T_1_drive": ("e75a7aaf85e98fc5", motor__T_1_drive),
+    "calc.motor.T_1_back": ("289b3c3741bf545e", motor__T_1_back),
+    "calc.motor.T_1rms": ("1d82e3cfb254f05f", motor__T_1rms),
     "calc.profile.ED": ("2103e372a6f8efab", profile__ED),
     "calc.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
     "calc.profile.T_2m": ("7f4431ae67c9b21f", profile__T_2m),
