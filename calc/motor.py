@@ -145,19 +145,19 @@ def motor_load(dt, torque, speed, i, eta, alpha_2=None, J_motor=None, J_1=None) 
     return MotorLoad(T_1, abs(T_1).max(axis=-1), rms, alpha_2 is not None)
 
 
-def motor_checks(load: MotorLoad, speed, peak_torque=None, rated_torque=None, max_speed=None, not_made: str | None = None) -> list:
+def motor_checks(speed, peak=None, rms=None, peak_torque=None, rated_torque=None, max_speed=None, not_made: str | None = None) -> list:
     """The motor's checks for the ratings given (a rating left out: no check): peak ``|T_1| <=
-    T_1B``, RMS ``T_1rms <= T_1N``, speed ``n_1 <= n_max`` (``speed``: the highest motor speed).
-    ``not_made`` says what the torques need where they cannot be computed (an inertia missing)."""
+    T_1B``, RMS ``T_1rms <= T_1N``, speed ``n_2max · i <= n_max`` (``speed``: the highest motor
+    speed). ``not_made`` says what the torques need where they cannot be computed (an inertia
+    missing); ``peak`` and ``rms`` are then None. Arrays run over rows of gearboxes, as ``speed``.
+    """
+    shape = np.shape(speed.magnitude)
     out = []
-    torque_made = {"not_made": not_made} if not_made else {}
-    for name, text, required, rated, unit, made in (
-        ("T_1B", "T_1peak <= T_1B", load.peak, peak_torque, "N*m", torque_made),
-        ("T_1N", "T_1rms <= T_1N", load.rms, rated_torque, "N*m", torque_made),
-        ("n_max", "n_2max · i <= n_max", speed, max_speed, "rpm", {}),
+    for name, text, required, rated, unit, missing in (
+        ("T_1B", "T_1peak <= T_1B", peak, peak_torque, "N*m", not_made),
+        ("T_1N", "T_1rms <= T_1N", rms, rated_torque, "N*m", not_made),
+        ("n_max", "n_2max · i <= n_max", speed, max_speed, "rpm", None),
     ):
         if rated is not None:
-            shape = np.shape(required.magnitude)
-            rated = rated * np.ones(shape)
-            out.append(CheckArray(name, None, text, None if made else required, rated, unit, **made))
+            out.append(CheckArray(name, None, text, None if missing else required, rated * np.ones(shape), unit, not_made=missing))
     return out
