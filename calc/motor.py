@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .checks import CheckArray
+from .cycle import SampledCycle
 from .formula import Formula, Symbol, segment_sum
 from .units import Q_, as_kind
 
@@ -68,6 +69,28 @@ T_1rms = Formula(
     lambda sp, T, t: sp.sqrt(segment_sum(T**2 * t) / segment_sum(t)),
     "case format, The motor's side (RMS over the whole cycle; a pause counts with its holding torque)",
 )
+
+
+@dataclass(frozen=True)
+class OutputLoad:
+    """The load cycle at the gearbox output as the motor's side reads it: an entry per sample (or
+    typed segment) with its duration ``dt``, torque and speed, and its acceleration where known
+    (None for typed segments: the rotor term is then left out); ``n_2max`` the highest speed."""
+
+    dt: object
+    torque: object
+    speed: object
+    alpha_2: object
+    n_2max: object
+
+    @property
+    def sampled(self) -> bool:
+        return self.alpha_2 is not None
+
+    @classmethod
+    def from_cycle(cls, cycle: SampledCycle) -> "OutputLoad":
+        speed = Q_(cycle.speed, "rad/s")
+        return cls(Q_(cycle.dt, "s"), Q_(cycle.torque, "N*m"), speed, Q_(cycle.acceleration, "rad/s**2"), abs(speed).max())
 
 
 @dataclass(frozen=True)

@@ -12,8 +12,8 @@ import numpy as np
 
 from ..case import Case
 from ..gearbox import n_1
-from ..motor import MotorLoad, motor_checks, motor_load
-from ..units import Q_, fmt
+from ..motor import MotorLoad, OutputLoad, motor_checks, motor_load
+from ..units import fmt
 from . import coupling, duty, gearbox
 from .common import Verdict, check_json, check_line, quantity, quantity_text
 
@@ -25,22 +25,6 @@ TYPED = (
 )
 
 
-@dataclass(frozen=True)
-class OutputLoad:
-    """The load cycle at the gearbox output as the motor's side reads it: a sample (or typed
-    segment) per entry, its duration, torque and speed, and its acceleration where known."""
-
-    dt: object
-    torque: object
-    speed: object
-    alpha_2: object  # None for typed segments
-    n_2max: object
-
-    @property
-    def sampled(self) -> bool:
-        return self.alpha_2 is not None
-
-
 def output_load(case: Case) -> OutputLoad:
     """The sampled cycle of the motion form where the duty result has one, else the typed segments
     (a pause with zero torque and speed)."""
@@ -48,8 +32,7 @@ def output_load(case: Case) -> OutputLoad:
     if cycle is None:
         p = case.profile
         return OutputLoad(p.durations, p.torques, p.speeds, None, p.n_2max)
-    speed = Q_(cycle.speed, "rad/s")
-    return OutputLoad(Q_(cycle.dt, "s"), Q_(cycle.torque, "N*m"), speed, Q_(cycle.acceleration, "rad/s**2"), abs(speed).max())
+    return OutputLoad.from_cycle(cycle)
 
 
 def motor_side_coupling(case: Case) -> tuple:
