@@ -34,7 +34,7 @@ from .units import Q_, as_kind
 
 _i = Symbol("i", "i", "dimensionless", "", "ratio")
 _eta = Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the gearbox")
-_J_motor = Symbol("J_motor", r"J_{\mathrm{motor}}", "inertia", "kg*cm**2", "motor inertia (rotor)")
+_J_motor = Symbol("J_motor", r"J_{\mathrm{motor}}", "inertia", "kg*cm**2", "motor inertia")
 _J_1 = Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia at the input, with a motor-side coupling's")
 _alpha_1 = Symbol("alpha_1", r"\alpha_{1}", "angular_acceleration", "rad/s**2", "angular acceleration of the motor")
 _T_2 = Symbol("T_2", "T_{2}", "torque", "N*m", "output torque")

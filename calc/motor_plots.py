@@ -84,15 +84,18 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     top.grid(True, color="#dddddd", linewidth=0.6)
     bottom.plot(x, search.utilization, "o-", color="black", label="governing utilization")
     bottom.axhline(1.0, color="black", linestyle="--", linewidth=1)
+    handles, labels = bottom.get_legend_handles_labels()
     if not np.all(np.isnan(search.inertia_ratio)):
         lam = bottom.twinx()
         lam.plot(x, search.inertia_ratio, "^:", color="tab:purple", label="inertia ratio λ")
-        lam.axhline(INERTIA_RATIO_LIMIT, color="tab:purple", linestyle="--", linewidth=1)
+        lam.axhline(INERTIA_RATIO_LIMIT, color="tab:purple", linestyle="--", linewidth=1, label=f"λ limit {INERTIA_RATIO_LIMIT:g}")
         lam.set_ylabel("inertia ratio λ [–]", color="tab:purple")
+        more = lam.get_legend_handles_labels()
+        handles, labels = handles + more[0], labels + more[1]
     bottom.set_ylabel("utilization [–]")
     bottom.set_xlabel("ratio i")
     bottom.set_xticks(x, [f"{r:g}\n{p}" for r, p in zip(x, search.parts)], fontsize=7)
     bottom.grid(True, color="#dddddd", linewidth=0.6)
-    bottom.legend(fontsize=8, loc="upper left")
+    bottom.legend(handles, labels, fontsize=8, loc="upper right")
     top.set_title("The case at every ratio of the catalog, each with its best gearbox", fontsize=10)
     return fig
