@@ -210,6 +210,15 @@ def test_a_sampled_cycle_without_the_motors_inertia_is_not_decided(write_case):
     assert r.verdict.passes is None
 
 
+def test_a_sampled_cycle_through_a_gearbox_without_j1_is_not_decided(write_case):
+    # SP075-10 has no J_1 in the shipped catalog: the rotor term cannot be computed.
+    text = MOTOR.format(peak="12 N*m", extra="").replace('part = "NPT035-10"', 'part = "SP075-10"')
+    r = evaluate(with_cycle(read_case(write_case(text + PROFILE_TOML)), trapezoid()))
+    m = r.to_json()["motor"]
+    assert m["rms_torque_required"] is None and "J_1" in m["checks"][0]["not_made"] and "SP075-10" in m["checks"][0]["not_made"]
+    assert m["max_speed_required"]["value"] == pytest.approx(954.9297, abs=1e-4)  # the speed needs no inertia
+
+
 def test_a_motor_side_coupling_turns_with_the_motor():
     # The example: bellows coupling between motor and gearbox (side = "input"); its whole inertia
     # adds to J_1 of NPT035-10 (0.93 kg·cm²).

@@ -36,8 +36,9 @@ def output_load(case: Case) -> OutputLoad:
 
 
 def motor_side_coupling(case: Case) -> tuple:
-    """A motor-side coupling's whole inertia (it turns with the motor) and a sentence on it, or
-    ``(None, None)`` without one; the coupling the coupling section chose (or its best-ranked)."""
+    """A motor-side coupling's whole inertia (it turns with the motor; NaN where its catalog gives
+    none) and its part, or ``(None, None)`` without one: the coupling the coupling section chose
+    (or its best-ranked)."""
     if not coupling.applies(case):
         return None, None
     cc, sel = coupling.coupling_selection(case)
