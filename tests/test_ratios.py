@@ -7,6 +7,8 @@ import json
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from calc import Q_
 from calc.case import read_case
@@ -111,3 +113,28 @@ def test_a_case_without_a_gearbox_is_an_error(capsys, write_case):
     code, out, err = ratios_cli(capsys, write_case('title = "x"\n' + PROFILE_TOML))
     assert code == 2 and out == "" and "gearbox: the ratio search needs a [gearbox] table" in err
     assert err.count("\n") == 1
+
+
+def test_a_sampled_cycle_without_the_motors_inertia_picks_nothing_and_says_why():
+    case = with_cycle(dataclasses.replace(read_case(EXAMPLE), motor_inertia=None, sections={}), trapezoid())
+    j = search(case).to_json()
+    assert j["pick"] is None and "motor.inertia" in j["reason"]
+    assert all(r["peak_torque_required"] is None for r in j["ratios"])
+
+
+@settings(max_examples=25, deadline=None)
+@given(peak=st.floats(2.0, 30.0), rated=st.floats(0.5, 1.0))
+def test_the_pick_is_feasible_and_needs_the_least_rms_within_the_inertia_limit(peak, rated):
+    # The rule of calc.ratios: no feasible ratio with λ within the limit needs less RMS torque.
+    case = dataclasses.replace(read_case(EXAMPLE), motor_peak_torque=Q_(peak, "N*m"), motor_rated_torque=Q_(rated * peak, "N*m"))
+    s = search(case).search
+    if s.pick is None:
+        assert not s.feasible.any()
+        return
+    assert s.feasible[s.pick]
+    rms = s.load.rms.m_as("N*m")
+    within = s.feasible & (s.inertia_ratio <= INERTIA_RATIO_LIMIT)
+    if within.any():
+        assert within[s.pick] and rms[s.pick] == rms[within].min()
+    else:
+        assert s.inertia_ratio[s.pick] == s.inertia_ratio[s.feasible].min()
