@@ -30,7 +30,7 @@ from .checks import within_rating
 from .gearbox import GearboxSelection, n_1, select_gearbox
 from .motor import MotorLoad, OutputLoad, motor_checks, motor_load
 from .profile import Profile
-from .units import Q_, fmt, sig
+from .units import fmt, sig
 
 #: E6: servo practice keeps the load to motor inertia ratio below roughly 5 to 10; the upper end.
 INERTIA_RATIO_LIMIT = 10.0
@@ -61,6 +61,7 @@ class RatioSearch:
     utilization: np.ndarray  # highest governing utilization of gearbox and motor
     pick: int | None  # index into ratios
     reason: str
+    notes: list  # what the motor torques count or lack
 
     @property
     def parts(self) -> np.ndarray:
@@ -94,24 +95,32 @@ def search_ratios(
     rated_torque=None,
     max_speed=None,
     emergency_stop_torque=None,
-    J_coupling=None,
+    rotor_inertia=None,
 ) -> RatioSearch:
     """Evaluate the case at every ratio of ``catalog`` (the whole catalog, every ratio).
 
     ``profile`` gives the duty and the gearbox's checks; ``load`` the cycle at the output for the
-    motor's side (a sampled cycle with its accelerations counts the rotor, gearbox and motor-side
-    coupling inertia ``J_coupling``; typed segments leave the rotor term out). The other arguments
-    are those of :func:`calc.gearbox.select_gearbox` and :func:`calc.motor.motor_checks`.
+    motor's side (a sampled cycle with its accelerations counts the rotor and gearbox inertia;
+    typed segments leave the rotor term out). ``rotor_inertia(J_1)``, where given, turns the
+    gearboxes' ``J_1`` into what the rotor term counts beside the motor's own: ``(J_1, ...,
+    what it lacks or None, notes)`` (a motor-side coupling's inertia added). The other arguments
+    are those of :func:`calc.gearbox.select_gearbox` and :func:`calc.motor.motor_checks`. A ratio
+    whose best gearbox gives no ``J_1`` has no motor torque on a sampled cycle, and is not
+    feasible (a note says so).
     """
     sel = select_gearbox(profile, catalog, motor_peak_torque, motor_inertia, load_inertia, emergency_stop_torque)
     ratios, rows = best_rows(sel)
     i, eta = catalog["ratio"][rows], catalog["eta"][rows]
-    missing = None
-    J_1 = None
+    missing, J_1, notes = None, None, []
     if load.sampled:
-        J_1 = catalog["J_1"][rows] + (Q_(0.0, "kg*m**2") if J_coupling is None else J_coupling)
-        if motor_inertia is None:
+        J_1 = catalog["J_1"][rows]
+        if rotor_inertia is not None:
+            J_1, _, missing, notes = rotor_inertia(J_1)
+        elif motor_inertia is None:
             missing = "the rotor term (J_motor + J_1) · α_1 needs the motor's inertia (motor.inertia)"
+        lacking = [str(p) for p, j in zip(catalog.parts[rows], J_1.magnitude) if np.isnan(j)]
+        if lacking and missing is None:
+            notes = [*notes, f"the catalog gives no J_1 for {', '.join(lacking)}: the motor torque through them is not known, so their ratios are not feasible"]
     torques = None
     if missing is None:
         torques = motor_load(load.dt, load.torque, load.speed, i[:, None], eta[:, None], load.alpha_2, motor_inertia,
@@ -125,7 +134,7 @@ def search_ratios(
     utilization = np.fmax.reduce([sel.worst[rows], *[c.utilization for c in motor]], axis=0)
     lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
     pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, [c.not_made for c in sel.not_made + motor if c.not_made])
-    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick, reason)
+    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick, reason, notes)
 
 
 def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str]) -> tuple[int | None, str]:

@@ -49,6 +49,23 @@ def motor_side_coupling(case: Case) -> tuple:
     return cc.catalog["J"][row], part
 
 
+def rotor_inertia(case: Case, J_1) -> tuple:
+    """What the rotor term of a sampled cycle adds to the motor's inertia, for gearbox rows of
+    input inertia ``J_1`` (an array, NaN where the catalog gives none): ``(J_1 with a motor-side
+    coupling's whole inertia, that coupling's inertia or None, what the term lacks or None,
+    notes)``. The term lacks the motor's inertia where the case gives none, and the coupling's
+    where its catalog gives none."""
+    J_c, coupling_part = motor_side_coupling(case)
+    notes, missing = [], None
+    if J_c is not None:
+        notes.append(f"the motor-side coupling {coupling_part} turns with the motor: its whole inertia J = {fmt(J_c, 'kg*cm**2')} is added to J_1")
+        if np.isnan(J_c.magnitude):
+            missing = f"the rotor term needs the inertia J of the motor-side coupling {coupling_part}, which its catalog does not give"
+    if case.motor_inertia is None:
+        missing = "the rotor term (J_motor + J_1) · α_1 needs the motor's inertia (motor.inertia)"
+    return (J_1 if J_c is None else J_1 + J_c), J_c, missing, notes
+
+
 @dataclass
 class MotorResult:
     """The motor torque through one gearbox and the motor's checks."""
@@ -121,22 +138,15 @@ def evaluate(case: Case) -> MotorResult:
     J_1 = J_c = None
     missing = None
     if out.sampled:
-        J_1 = cat["J_1"][row]
-        J_c, coupling_part = motor_side_coupling(case)
-        if J_c is not None:
-            notes.append(f"the motor-side coupling {coupling_part} turns with the motor: its whole inertia J = {fmt(J_c, 'kg*cm**2')} is added to J_1")
-        if case.motor_inertia is None:
-            missing = "the rotor term (J_motor + J_1) · α_1 needs the motor's inertia (motor.inertia)"
-        elif np.isnan(J_1.magnitude):
+        J_1, J_c, missing, more = rotor_inertia(case, cat["J_1"][one])
+        notes += more
+        if missing is None and np.isnan(J_1[0].magnitude):
             missing = f"the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for {part}"
-        elif J_c is not None and np.isnan(J_c.magnitude):
-            missing = f"the rotor term needs the inertia J of the motor-side coupling {coupling_part}, which its catalog does not give"
-        elif J_c is not None:
-            J_1 = J_1 + J_c
     else:
         notes.append(TYPED)
     load = None if missing else motor_load(
-        out.dt, out.torque, out.speed, cat["ratio"][one, None], cat["eta"][one, None], out.alpha_2, case.motor_inertia, J_1
+        out.dt, out.torque, out.speed, cat["ratio"][one, None], cat["eta"][one, None], out.alpha_2, case.motor_inertia,
+        None if J_1 is None else J_1[:, None],
     )
     speed = n_1(n_2=out.n_2max, i=cat["ratio"][one])
     checks = motor_checks(
@@ -146,5 +156,5 @@ def evaluate(case: Case) -> MotorResult:
     for key, what in (("peak_torque", "peak"), ("rated_torque", "RMS"), ("max_speed", "speed")):
         if getattr(case, f"motor_{key}") is None:
             notes.append(f"the motor's {what} is not checked: the case gives no motor.{key}")
-    return MotorResult(part, sel.selected is not None, i, eta, None if missing else J_1, J_c, load, speed, checks, notes)
+    return MotorResult(part, sel.selected is not None, i, eta, None if missing or J_1 is None else J_1[0], J_c, load, speed, checks, notes)
 

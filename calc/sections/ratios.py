@@ -6,8 +6,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 from ..case import Case, once
 from ..catalog import display_path, load_catalog, resolve
 from ..errors import CalcError
@@ -15,7 +13,7 @@ from ..gearbox import SCHEMA
 from ..ratios import INERTIA_RATIO_LIMIT, RULE, RatioSearch, search_ratios
 from ..units import sig
 from .common import Verdict, check_json, number, quantity
-from .motor import TYPED, motor_side_coupling, output_load
+from .motor import TYPED, output_load, rotor_inertia
 
 
 @dataclass
@@ -99,22 +97,11 @@ def _search(case: Case) -> RatioResult:
     notes = []
     if case.gearbox_part is not None:
         notes.append(f"gearbox.part = {case.gearbox_part!r} is not kept to: every row of the catalog is tried")
-    J_c = None
-    if load.sampled:
-        J_c, part = motor_side_coupling(case)
-        if J_c is not None and np.isnan(J_c.magnitude):
-            notes.append(f"the motor-side coupling {part} has no inertia J in its catalog: it is left out of J_1")
-            J_c = None
-        elif J_c is not None:
-            notes.append(f"the motor-side coupling {part} (chosen at the case's ratio) turns with the motor: its inertia is added to J_1 at every ratio")
-    else:
+    if not load.sampled:
         notes.append(TYPED)
     s = search_ratios(
         catalog, case.profile, load, case.motor_peak_torque, case.motor_inertia, case.load_inertia,
-        case.motor_rated_torque, case.motor_max_speed, case.emergency_stop_torque, J_c,
+        case.motor_rated_torque, case.motor_max_speed, case.emergency_stop_torque, lambda J_1: rotor_inertia(case, J_1),
     )
-    if load.sampled:
-        lacking = [str(p) for p, j in zip(s.parts, catalog["J_1"][s.rows].magnitude) if np.isnan(j)]
-        if lacking:
-            notes.append(f"the catalog gives no J_1 for {', '.join(lacking)}: the motor torque through them is not known, so their ratios are not feasible")
+    notes += s.notes
     return RatioResult(case, s, notes)
