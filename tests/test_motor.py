@@ -293,3 +293,18 @@ def test_json_of_the_example_has_the_motor(capsys):
     assert code == 0
     assert set(m) >= {"peak_torque_required", "rms_torque_required", "max_speed_required", "checks"}
 
+
+
+def test_the_report_has_the_motor_and_the_ratio():
+    from calc.report import report_of
+
+    typed = report_of(read_case(EXAMPLE))
+    text = "\n".join((typed.inputs(), typed.calculations(), typed.checks(), typed.section_results()))
+    assert "The motor through the selected gearbox, NPT035-10" in text and "left out" in text
+    assert "T_1peak" in text or r"T_{1,\mathrm{peak}}" in text
+    assert r"\subsection*{The ratio}" in text and "lowest RMS motor torque" in text
+    captions = [c for _, c in typed.figures()]
+    assert any("Motor torque over the cycle" in c for c in captions) and any("against the ratio" in c for c in captions)
+    sampled = report_of(with_cycle(read_case(EXAMPLE), trapezoid()))
+    # 40 samples: the RMS is shown as its formula and result, not 40 substituted terms
+    assert "over the 40 samples" in sampled.calculations()
