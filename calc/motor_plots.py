@@ -96,6 +96,6 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     bottom.set_xlabel("ratio i")
     bottom.set_xticks(x, [f"{r:g}\n{p}" for r, p in zip(x, search.parts)], fontsize=7)
     bottom.grid(True, color="#dddddd", linewidth=0.6)
-    bottom.legend(handles, labels, fontsize=8, loc="upper right")
+    fig.legend(handles, labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     top.set_title("The case at every ratio of the catalog, each with its best gearbox", fontsize=10)
     return fig
