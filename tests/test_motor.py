@@ -308,3 +308,14 @@ def test_the_report_has_the_motor_and_the_ratio():
     sampled = report_of(with_cycle(read_case(EXAMPLE), trapezoid()))
     # 40 samples: the RMS is shown as its formula and result, not 40 substituted terms
     assert "over the 40 samples" in sampled.calculations()
+
+
+def test_the_reports_inputs_list_the_motors_ratings_and_the_stop_torque(write_case):
+    from calc.report import report_of
+
+    extra = 'rated_torque = "4.5 N*m"\nmax_speed = "6000 rpm"'
+    case = read_case(write_case(MOTOR.format(peak="12 N*m", extra=extra) + 'emergency_stop_torque = "200 N*m"\n' + PROFILE_TOML))
+    inputs = report_of(case).inputs()
+    for key in ("motor.rated\\_torque", "motor.max\\_speed", "gearbox.emergency\\_stop\\_torque"):
+        assert key in inputs
+    assert "T_{2,\\mathrm{stop}}" in inputs and "200" in inputs

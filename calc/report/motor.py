@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..formula import Symbol
+from ..gearbox import T_2stop
 from ..motor import T_1_back, T_1_drive, T_1rms, alpha_1, driven_back
 from ..sections.motor import output_load
 from ..units import Q_, latex_unit, sig
@@ -15,12 +16,11 @@ from .latex import itemize, latex_escape, prose, step_block
 
 NAME = "motor"
 
-#: The motor's ratings and the stop torque as the case gives them (no formula has them as symbols).
+#: The motor's ratings (no formula has them as symbols) and the stop torque, as the case gives them.
 RATINGS = (
     (Symbol("T_1N", "T_{1N}", "torque", "N*m", "rated (continuous) torque of the motor"), "motor_rated_torque", "motor.rated_torque"),
     (Symbol("n_max", r"n_{\mathrm{max}}", "speed", "rpm", "top speed of the motor"), "motor_max_speed", "motor.max_speed"),
-    (Symbol("T_2stop", r"T_{2,\mathrm{stop}}", "torque", "N*m", "output torque of an emergency stop"), "emergency_stop_torque",
-     "gearbox.emergency_stop_torque"),
+    (T_2stop.result, "emergency_stop_torque", "gearbox.emergency_stop_torque"),
 )
 #: Above this many samples the RMS is shown as its formula and result, not every substituted term.
 SHOWN_TERMS = 12
@@ -37,7 +37,9 @@ def steps(report) -> list[str]:
         return []
     out = output_load(report.case)
     T_1 = m.load.T_1[0]
-    args = dict(i=m.i, eta=m.eta, J_motor=report.case.motor_inertia or Q_(0.0, "kg*m**2"), J_1=m.J_1 if m.J_1 is not None else Q_(0.0, "kg*m**2"))
+    none = Q_(0.0, "kg*m**2")  # a typed cycle counts no inertia (its α_1 is zero too)
+    J_motor = report.case.motor_inertia
+    args = dict(i=m.i, eta=m.eta, J_motor=none if J_motor is None else J_motor, J_1=none if m.J_1 is None else m.J_1)
     which = "the selected gearbox" if m.selected else "the best-ranked gearbox (none is selected)"
     blocks = [rf"\subsection{{The motor through {which}, {latex_escape(m.part)}}}"]
     if not m.load.rotor_term:
