@@ -85,10 +85,13 @@ class Case:
     profile: Profile
     motor_peak_torque: object = None
     motor_inertia: object = None
+    motor_rated_torque: object = None
+    motor_max_speed: object = None
     load_inertia: object = None
     ratio: object = None
     gearbox_catalog: str | None = None
     gearbox_part: str | None = None
+    emergency_stop_torque: object = None
     sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
     motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record
     raw: bytes = b""

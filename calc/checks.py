@@ -77,6 +77,9 @@ class CheckArray:
     rated: object
     unit: str
     not_made: str | None = field(default=None, kw_only=True)  # what the check needs that the case does not give
+    #: Where a row has no rated value: None, the row fails (a rating the check needs); else the row
+    #: is not checked, for this reason, and the check does not hold it back (an optional rating).
+    unrated: str | None = field(default=None, kw_only=True)
 
     @property
     def made(self) -> bool:
@@ -95,11 +98,19 @@ class CheckArray:
     def passes(self) -> np.ndarray:
         """:func:`within_rating` of each row (false where the check is not made); computed once,
         as listing candidates asks it of every row."""
-        return within_rating(self.utilization)
+        ok = within_rating(self.utilization)
+        return ok | self._unrated if self.made and self.unrated is not None else ok
+
+    @functools.cached_property
+    def _unrated(self) -> np.ndarray:
+        """Rows without a rated value."""
+        return np.isnan(magnitude_in(self.rated, self.unit))
 
     def at(self, row: int, governs: bool = True) -> Check:
         """This check for one row."""
         u = float(self.utilization[row])
+        if self.made and self.unrated is not None and self._unrated[row]:
+            return Check(self.name, self.text, self.required[row], self.rated[row], self.unit, None, None, governs, self.mode, self.unrated)
         return Check(
             name=self.name,
             criterion=self.text,

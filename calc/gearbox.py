@@ -5,6 +5,11 @@ Operation (S5)", read with errata E1 to E6. Every row of a catalog at the desire
 evaluated at once (numpy arrays over the rows, no per-row Python loop); each criterion is kept
 with its required value, rated value, utilization (required / rated) and verdict.
 
+The emergency stop (``T_2Not``, the catalog's emergency-stop rating) is checked in both modes:
+the torque of an emergency stop does not depend on the duty. Where a row gives no ``T_2Not`` it is
+not checked for it (and says so); where the case gives neither the stop torque nor the motor's
+peak torque, the check is not made and is reported for information only.
+
 Ranking rule (:func:`rank`): passing candidates first, and among them rows of published data
 before rows marked illustrative (a part is not chosen on illustrative figures while a published
 one fits); then the smallest adequate size, measured by the governing torque rating (``T_2B`` in
@@ -79,6 +84,13 @@ T_2max = Formula(
     "source, S5 calculation 2",
 )
 
+T_2stop = Formula(
+    Symbol("T_2stop", r"T_{2,\mathrm{stop}}", "torque", "N*m", "output torque of an emergency stop"),
+    (Symbol("T_1B", "T_{1B}", "torque", "N*m", "maximum torque of the motor"), _i),
+    lambda sp, T_1B, i: T_1B * i,
+    "case format, Emergency stop: the motor's peak through the gearbox, no credit for efficiency (η = 1)",
+)
+
 inertia_ratio = Formula(
     Symbol("lambda", r"\lambda", "dimensionless", "", "load to motor inertia ratio"),
     (
@@ -138,9 +150,13 @@ class GearboxSelection:
     worst: np.ndarray  # highest utilization of the governing checks (NaN where one has no rating)
     order: np.ndarray
 
+    def governs(self, check: CheckArray) -> bool:
+        """Whether a check decides the verdict (:func:`governs`)."""
+        return governs(check, self.mode)
+
     @property
     def governing(self) -> list:
-        return [c for c in self.checks if c.mode == self.mode]
+        return [c for c in self.checks if self.governs(c)]
 
     @property
     def not_made(self) -> list:
@@ -166,7 +182,7 @@ class GearboxSelection:
             part=str(self.catalog.parts[row]),
             ratio=float(self.catalog["ratio"][row].m_as("")),
             passes=None if passes and self.not_made else passes,
-            checks=[c.at(row, governs=c.mode == self.mode) for c in self.checks],
+            checks=[c.at(row, governs=self.governs(c)) for c in self.checks],
             T_2max=None if self.T_2max is None else self.T_2max[row],
             inertia_ratio=None if lam is None or np.isnan(lam) else lam,
             reasons=self.reasons(row),
@@ -176,6 +192,12 @@ class GearboxSelection:
     def candidates(self, limit: int | None = None) -> list[Candidate]:
         """The rows as :class:`Candidate` objects, best first; the first ``limit`` (all for None)."""
         return [self.candidate(row) for row in (self.order if limit is None else self.order[:limit])]
+
+
+def governs(check: CheckArray, mode: str) -> bool:
+    """Whether a gearbox check decides the verdict in operating mode ``mode`` (E3): a check of that
+    mode does; the emergency stop (no mode) does in both, once it can be made."""
+    return check.mode == mode if check.mode is not None else check.made
 
 
 def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
@@ -196,6 +218,7 @@ def select_gearbox(
     motor_peak_torque=None,
     motor_inertia=None,
     load_inertia=None,
+    emergency_stop_torque=None,
 ) -> GearboxSelection:
     """Check every row of ``catalog`` (already narrowed to the desired ratio, or to one part).
 
@@ -203,7 +226,9 @@ def select_gearbox(
     n_1max`` (E5), ``T_2max <= T_2B`` with ``T_2max = T_1B · i · f_s · η`` (E4), which is not made
     without the motor's peak torque ``T_1B`` (it says so; no part is then selected in S5). The
     operating mode of the profile (E3) says which group governs ``passes``; the other group is
-    reported for information. The inertia ratio (E6) is given when both inertias are.
+    reported for information. In both modes the emergency-stop torque (``emergency_stop_torque``,
+    default ``T_2stop = T_1B · i``) is checked against the catalog's ``T_2Not`` where a row gives
+    one. The inertia ratio (E6) is given when both inertias are.
     """
     d = duty(profile)
     i = catalog["ratio"]
@@ -221,12 +246,23 @@ def select_gearbox(
     else:
         needs = "T_2max = T_1B · i · f_s · η needs the motor's peak torque T_1B (motor.peak_torque)"
         checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", None, catalog["T_2B"], "N*m", not_made=needs))
+    stop = "T_2stop <= T_2Not"
+    unrated = "the catalog gives no T_2Not"
+    if emergency_stop_torque is not None:
+        required = as_kind(emergency_stop_torque, "torque", "emergency_stop_torque") * np.ones(len(catalog))
+        checks.append(CheckArray("T_2Not", None, stop, required, catalog["T_2Not"], "N*m", unrated=unrated))
+    elif motor_peak_torque is not None:
+        checks.append(CheckArray("T_2Not", None, stop, T_2stop(T_1B=motor_peak_torque, i=i), catalog["T_2Not"], "N*m", unrated=unrated))
+    else:
+        needs = "the emergency-stop torque needs gearbox.emergency_stop_torque or the motor's peak torque (motor.peak_torque)"
+        checks.append(CheckArray("T_2Not", None, stop, None, catalog["T_2Not"], "N*m", not_made=needs, unrated=unrated))
     lam = None
     if motor_inertia is not None and load_inertia is not None:
         lam = inertia_ratio(J_1=catalog["J_1"], J_L=load_inertia, i=i, J_motor=motor_inertia).m_as("")
-    governing = [c for c in checks if c.mode == d.mode]
+    governing = [c for c in checks if governs(c, d.mode)]
     passes = np.logical_and.reduce([c.passes for c in governing if c.made])
-    worst = np.max([c.utilization for c in governing if c.made], axis=0)
+    # fmax: a row the emergency stop cannot check (no T_2Not) is ranked on its other checks
+    worst = np.fmax.reduce([c.utilization for c in governing if c.made], axis=0)
     size = catalog["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m")
     order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
     return GearboxSelection(catalog, d.mode, checks, t2max, lam, passes, worst, order)
@@ -238,7 +274,8 @@ def candidates_table(selection: GearboxSelection):
     Columns: ``rank`` (1 is best), ``part``, ``check`` (the criterion), ``governs`` (the check
     belongs to the governing mode, E3), ``required``, ``rated`` and ``unit`` (rpm or N·m),
     ``utilization`` (required / rated; NaN where the catalog gives no rating) and ``verdict``
-    (``pass`` or ``FAIL``). Values are not rounded; round them for display.
+    (``pass``, ``FAIL``, or ``not checked`` where a check is not made or the row has no rating it
+    may lack, such as ``T_2Not``). Values are not rounded; round them for display.
 
     >>> from calc.catalog import load_catalog, resolve
     >>> from calc.profile import Profile
@@ -246,12 +283,13 @@ def candidates_table(selection: GearboxSelection):
     >>> rows = rows_at_ratio(load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA), 10)
     >>> t = candidates_table(select_gearbox(p, rows, motor_peak_torque=Q_(12, "N*m")))
     >>> t.loc[t.part == "NPT035-10", ["check", "verdict"]].values.tolist()
-    [['n_2m · i <= n_1N', 'FAIL'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass'], ['T_2max <= T_2B', 'pass']]
+    [['n_2m · i <= n_1N', 'FAIL'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass'], ['T_2max <= T_2B', 'pass'], ['T_2stop <= T_2Not', 'pass']]
 
-    ``T_2max`` = 12 N·m · 10 · 1.3 (Z_h = 1800 1/h) · 0.97 = 151.32 N·m against ``T_2B`` = 220 N·m:
+    ``T_2max`` = 12 N·m · 10 · 1.3 (Z_h = 1800 1/h) · 0.97 = 151.32 N·m against ``T_2B`` = 220 N·m;
+    the emergency stop ``T_2stop`` = 12 N·m · 10 = 120 N·m against ``T_2Not`` = 480 N·m:
 
     >>> t.loc[(t.part == "NPT035-10") & t.governs, ["required", "rated", "utilization"]].round(4).values.tolist()
-    [[2400.0, 6000.0, 0.4], [151.32, 220.0, 0.6878]]
+    [[2400.0, 6000.0, 0.4], [151.32, 220.0, 0.6878], [120.0, 480.0, 0.25]]
     """
     import pandas as pd
 
@@ -266,12 +304,13 @@ def candidates_table(selection: GearboxSelection):
                     "rank": np.arange(1, n + 1),
                     "part": selection.catalog.parts[order].astype(str),
                     "check": c.text,
-                    "governs": c.mode == selection.mode,
+                    "governs": selection.governs(c),
                     "required": c.required[order].m_as(unit) if c.made else np.full(n, np.nan),
                     "rated": c.rated[order].m_as(unit),
                     "unit": pretty_unit(unit),
                     "utilization": c.utilization[order],
-                    "verdict": np.where(c.passes[order], "pass", "FAIL") if c.made else "not checked",
+                    "verdict": np.where(np.isnan(c.utilization[order]) & c.passes[order], "not checked",
+                                        np.where(c.passes[order], "pass", "FAIL")) if c.made else "not checked",
                     "_position": position,
                 }
             )

@@ -119,12 +119,15 @@ def test_utilization_figure_bars_the_governing_checks(selection):
     fig = utilization_figure(selection)
     (ax,) = fig.axes
     bars = {c.get_label(): c for c in ax.containers}
-    assert set(bars) == {"n_2max · i <= n_1max", "T_2max <= T_2B"}  # S5 governs: the S1 checks are not drawn
+    # S5 governs: the S1 checks are not drawn; the emergency stop governs in both modes
+    assert set(bars) == {"n_2max · i <= n_1max", "T_2max <= T_2B", "T_2stop <= T_2Not"}
     # Best first: NPT035-10, TP010-10, SP075-10; T_2max = 151.32 N·m against T_2B 220, 126, 102.
     heights = [b.get_height() for b in bars["T_2max <= T_2B"]]
     np.testing.assert_allclose(heights, [151.32 / 220, 151.32 / 126, 151.32 / 102])
     np.testing.assert_allclose([b.get_height() for b in bars["n_2max · i <= n_1max"]], [3000 / 6000, 3000 / 7500, 3000 / 7500])
     assert [b.get_hatch() for b in bars["T_2max <= T_2B"]] == [None, "///", "///"]
+    # T_2stop = 12 N·m · 10 = 120 N·m against T_2Not 480, 250, 139 N·m
+    np.testing.assert_allclose([b.get_height() for b in bars["T_2stop <= T_2Not"]], [120 / 480, 120 / 250, 120 / 139])
     labels = [t.get_text() for t in ax.get_xticklabels()]
     assert labels == ["NPT035-10\nPASS (selected)", "TP010-10\nFAIL", "SP075-10\nFAIL\nillustrative"]
     limit = [line for line in ax.lines if line.get_label() == "limit: utilization 1"]
@@ -162,9 +165,9 @@ def test_utilization_figure_marks_a_missing_rating():
 def test_candidates_table_rows_and_values(selection):
     t = candidates_table(selection)
     assert list(t.columns) == ["rank", "part", "check", "governs", "required", "rated", "unit", "utilization", "verdict"]
-    assert len(t) == 3 * 4  # three candidates at ratio 10, four checks each
-    assert t.part.tolist()[::4] == ["NPT035-10", "TP010-10", "SP075-10"]
-    assert t["rank"].tolist()[::4] == [1, 2, 3]
+    assert len(t) == 3 * 5  # three candidates at ratio 10, five checks each (the emergency stop the fifth)
+    assert t.part.tolist()[::5] == ["NPT035-10", "TP010-10", "SP075-10"]
+    assert t["rank"].tolist()[::5] == [1, 2, 3]
     row = t[(t.part == "TP010-10") & (t.check == "T_2max <= T_2B")].iloc[0]
     # Hand calculation: T_2max = 12 · 10 · 1.3 · 0.97 = 151.32 N·m against T_2B = 126 N·m → 1.201, FAIL.
     assert row.required == pytest.approx(151.32)

@@ -14,10 +14,10 @@ from ..gearbox import SCHEMA, GearboxSelection, rows_at_ratio, select_gearbox
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity
 
 NAME = "gearbox"
-KEYS = ("ratio", "catalog", "part")
+KEYS = ("ratio", "catalog", "part", "emergency_stop_torque")
 RANKING = (
     "passing first; published rows before illustrative ones; then smallest governing torque rating "
-    "(T_2B in S5, T_2N in S1); then lowest worst utilization"
+    "(T_2B in S5, T_2N in S1); then lowest worst utilization (the emergency stop's included where the row gives T_2Not)"
 )
 
 
@@ -30,6 +30,7 @@ def read(top: Table, case: Case) -> None:
     case.ratio = gearbox.positive("ratio", "dimensionless", required=not gearbox.has("part"), what="a ratio")
     case.gearbox_catalog = gearbox.text("catalog", default="gearboxes")
     case.gearbox_part = gearbox.text("part")
+    case.emergency_stop_torque = gearbox.positive("emergency_stop_torque", "torque")
 
 
 def applies(case: Case) -> bool:
@@ -54,7 +55,7 @@ def _select(case: Case) -> GearboxSelection:
             )
     else:
         rows = rows_at_ratio(catalog, case.ratio, f"{where}.ratio")
-    return select_gearbox(case.profile, rows, case.motor_peak_torque, case.motor_inertia, case.load_inertia)
+    return select_gearbox(case.profile, rows, case.motor_peak_torque, case.motor_inertia, case.load_inertia, case.emergency_stop_torque)
 
 
 @dataclass
