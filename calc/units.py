@@ -88,6 +88,9 @@ KINDS: dict[str, Kind] = {
         Kind("per_hour", "1/[time]", 0, "1/s", '"1800 / hour"'),
         Kind("temperature", "[temperature]", 0, "K", '"60 degC"'),
         Kind("stiffness_length", "[mass]*[length]**3/[time]**2", -1, "N*m**2/rad", '"20230 N*m**2/rad"'),
+        Kind("force", "[mass]*[length]/[time]**2", 0, "N", '"2000 N"'),
+        Kind("mass", "[mass]", 0, "kg", '"1.4 kg"'),
+        Kind("linear_stiffness", "[mass]/[time]**2", 0, "N/m", '"200 N/mm"'),
     )
 }
 
