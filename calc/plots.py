@@ -254,8 +254,9 @@ def comparison_figure(selection: GearboxSelection, limit: int = 24):
     checks, the ranking's margin), best first, one bar per candidate coloured by its family; with
     several catalogs the colour is the catalog and family (``my-maker.csv · MK``).
 
-    A bar above the dashed line at 1 fails (hatched); the smallest adequate size of each family
-    is marked with a star. A candidate whose governing check has no rating has no bar ("no rating").
+    A failing candidate's bar is hatched (its worst check above the dashed line at 1); the axis
+    stops at 3, a label gives each value. The smallest adequate size of each family is marked with
+    a star. A candidate whose governing check has no rating has no bar ("no rating").
 
     Parameters
     ----------
@@ -294,15 +295,16 @@ def comparison_figure(selection: GearboxSelection, limit: int = 24):
     fig = Figure(figsize=(max(6.5, 0.55 * len(order) + 2.5), 4.8), layout="constrained")
     ax = fig.subplots()
     bars = ax.bar(x, np.nan_to_num(worst, nan=0.0), 0.7, color=[colors[g] for g in groups], zorder=2)
-    for bar, value in zip(bars, worst):
-        if value > 1.0:
+    for bar, passes in zip(bars, selection.passes[order]):
+        if not passes:
             bar.set_hatch("///")
             bar.set_edgecolor("black")
     ax.bar_label(bars, labels=["no rating" if np.isnan(v) else f"{v:.2f}" + (" ★" if b else "") for v, b in zip(worst, best)],
                  fontsize=7, padding=2, rotation=90)
     ax.axhline(1.0, color="black", linestyle="--", linewidth=1.2, zorder=3)
     ax.set_xticks(x, [str(cat.parts[r]) for r in order], fontsize=7, rotation=90)
-    ax.set_ylim(0.0, 1.3 * max(1.0, np.nanmax(worst, initial=0.0)))
+    # Far-failing rows would flatten the rest: the axis stops at 3, their labels give the value.
+    ax.set_ylim(0.0, 1.3 * min(3.0, max(1.0, np.nanmax(worst, initial=0.0))))
     ax.set_ylabel(f"governing utilization ({selection.mode}) [–]")
     ax.set_xlabel("candidate, best first")
     total = len(selection.order)

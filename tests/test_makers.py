@@ -294,3 +294,12 @@ def test_comparison_figure_colours_by_family(catalog):
     labels = [t.get_text() for t in ax.texts]
     assert labels[0] == "0.69 ★" and labels[2] == "0.75"  # NPT035-10 is the smallest adequate NPT, NPT045-10 is not
     assert [t.get_text() for t in fig.legends[0].get_texts()] == ["NPT", "NPS", "TP+"]
+
+
+def test_comparison_figure_hatches_the_failing_candidates(catalog):
+    from calc.plots import comparison_figure
+
+    sel = select_gearbox(example_profile(), rows_at_ratio(catalog, Q_(10, "")), Q_(12, "N*m"))
+    bars = comparison_figure(sel).axes[0].containers[0]
+    # TP300-10 and TP500-10 sit exactly on n_1max (3000 rpm against 3000 rpm): on the limit, passing.
+    assert [b.get_hatch() for b in bars] == [None] * 6 + ["///"] * 6
