@@ -303,3 +303,15 @@ def test_comparison_figure_hatches_the_failing_candidates(catalog):
     bars = comparison_figure(sel).axes[0].containers[0]
     # TP300-10 and TP500-10 sit exactly on n_1max (3000 rpm against 3000 rpm): on the limit, passing.
     assert [b.get_hatch() for b in bars] == [None] * 6 + ["///"] * 6
+
+
+def test_an_accuracy_part_from_a_list_of_catalogs_names_its_file_and_doubt(capsys, write_case, tmp_path):
+    (tmp_path / "my-maker.csv").write_text(MAKER_CSV)
+    head = HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = ["gearboxes", "my-maker.csv"]')
+    accuracy = ('[accuracy]\napplied_torque = "1 N*m"\n[[accuracy.component]]\npart = "MK160-10"\n'
+                '[[accuracy.component]]\npart = "NPS045-10"\n')
+    a = results(capsys, write_case(head + PROFILE_TOML + accuracy))["accuracy"]
+    first, second = a["components"]
+    assert first["source"] == f"{tmp_path / 'my-maker.csv'} row 2"
+    # NPS045-10's eta, L_PA and backlash are read per stage group (SOURCES.md): the doubt goes with the row.
+    assert second["source"].startswith("catalogs/gearboxes.csv row ") and "doubtful figures: eta/L_PA/backlash" in second["source"]

@@ -120,11 +120,18 @@ def _chosen_row(selection, what: str) -> tuple[int, str]:
     return row, f"{part}, the best-ranked {what} (none is chosen)"
 
 
+def _doubt(rows, row: int) -> str:
+    """The row's doubtful figures as its catalog marks them (``unclear``), for the source text."""
+    doubt = rows.text_or_blank("unclear")[row]
+    return f" (doubtful figures: {doubt})" if doubt else ""
+
+
 def _gearbox_part(case: Case, t: Table, part: str):
-    """The catalog, row and source text of a gearbox component's ``part``."""
+    """The catalog, row and source text of a gearbox component's ``part``; a row's doubtful
+    figures go with it."""
     if part != SELECTED:
         rows, row = _catalog_row(case, t.text("catalog", default=case.gearbox_catalog or "gearboxes"), part, t.where("").rstrip("."))
-        return rows, row, f"{rows.catalog_of(row)} row {rows.lines[row]}"
+        return rows, row, f"{rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}"
     if t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the gearbox selection's catalog; give no catalog")
     if not gearbox.applies(case):
@@ -132,7 +139,7 @@ def _gearbox_part(case: Case, t: Table, part: str):
     selection = gearbox.gearbox_selection(case)
     row, chosen = _chosen_row(selection, "gearbox")
     rows = selection.catalog
-    return rows, row, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}"
+    return rows, row, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}"
 
 
 def _coupling_part(case: Case, t: Table, part: str):
