@@ -11,6 +11,8 @@ import json
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from calc import CalcError, Q_
 from calc.catalog import combine, load_catalog, load_catalogs, resolve
@@ -315,3 +317,19 @@ def test_an_accuracy_part_from_a_list_of_catalogs_names_its_file_and_doubt(capsy
     assert first["source"] == f"{tmp_path / 'my-maker.csv'} row 2"
     # NPS045-10's eta, L_PA and backlash are read per stage group (SOURCES.md): the doubt goes with the row.
     assert second["source"].startswith("catalogs/gearboxes.csv row ") and "doubtful figures: eta/L_PA/backlash" in second["source"]
+
+_force = st.floats(0, 1e5, allow_subnormal=False)
+_arm = st.floats(0, 1e3, allow_subnormal=False)
+
+
+@settings(max_examples=60, deadline=None)
+@given(_force, _arm, _force, _arm, _arm, st.floats(0.1, 10))
+def test_tilting_moment_laws(F_a, y, F_r, x, z, k):
+    def moment(F_a, y, F_r, x, z):
+        return M_2k(F_2a=Q_(F_a, "N"), y_2=Q_(y, "mm"), F_2r=Q_(F_r, "N"), x_2=Q_(x, "mm"), z_2=Q_(z, "mm")).m_as("N*m")
+
+    m = moment(F_a, y, F_r, x, z)
+    assert m >= 0
+    assert moment(k * F_a, y, k * F_r, x, z) == pytest.approx(k * m, rel=1e-9, abs=1e-9)  # linear in the forces
+    assert moment(F_a, y, F_r, x + z, 0.0) == pytest.approx(m, rel=1e-9, abs=1e-9)  # z_2 lengthens the lever arm
+    assert moment(F_a, y, F_r, x, z + 1.0) >= m  # the bearing further in: never less moment
