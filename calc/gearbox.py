@@ -10,7 +10,9 @@ before rows marked illustrative (a part is not chosen on illustrative figures wh
 one fits); then the smallest adequate size, measured by the governing torque rating (``T_2B`` in
 S5, ``T_2N`` in S1), then the larger margin (lower worst utilization of the governing checks);
 failing candidates after, closest to passing first (lowest worst utilization). Ties go by part
-name.
+name. Partial rows of a catalog (its ``partial`` column) are never ranked; the ranking runs across
+families and marks the smallest adequate size of each (:attr:`GearboxSelection.best_of_family`).
+The output bearing's checks (:func:`bearing_checks`) and the clamping hub's govern in both modes.
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 together, and the output bearing's checks (axial force, radial force, tilting moment).
 
 Every expected figure comes from the catalog row's own source (its ``source`` column: the Beckhoff
-infosys page of the WITTENSTEIN alpha unit, ``/work``'s SOURCES.md) or from a hand calculation
+infosys page of the WITTENSTEIN alpha unit, as the published data's SOURCES.md lists them) or from a hand calculation
 written beside it. The example's load cycle (tests/conftest.py): S5, n_2max = 300 rpm, Z_h = 1800 /h
 so f_s = 1.3; T_2max = 12 · 10 · 1.3 · 0.97 = 151.32 N·m at ratio 10.
 """
