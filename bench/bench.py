@@ -381,8 +381,8 @@ def ratios_api(catalog, case, load):
     from calc import Q_
     from calc.ratios import search_ratios
 
-    return search_ratios(catalog, case.profile, load, case.motor_peak_torque, case.motor_inertia, case.load_inertia,
-                         Q_(SEARCH_T_1N, "N*m"), Q_(SEARCH_N_MAX, "rpm"))
+    return search_ratios(catalog, case.profile, load, Q_(SEARCH_T_1N, "N*m"), Q_(SEARCH_N_MAX, "rpm"),
+                         motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
 
 
 def ratios_numpy(f: Floats):
@@ -494,9 +494,16 @@ def write_large_case(workdir: Path, rows: int) -> Path:
     (folder.parent / "data").symlink_to(ROOT / "data")
     with open(ROOT / "catalogs" / "gearboxes.csv", encoding="utf-8", newline="") as f:
         header, *shipped = csv.reader(f)
-    if header != HEADER.split(","):
+    names = HEADER.split(",")
+    if not set(names) <= set(header):
         raise RuntimeError("evaluate_100k: catalogs/gearboxes.csv no longer has the synthetic catalog's columns")
-    shipped = [row for row in shipped if float(row[header.index("ratio [1]")]) == ratio]
+    # The shipped rows in the synthetic catalog's columns; partial rows (never ranked) left out.
+    columns = [header.index(name) for name in names]
+    partial = header.index("partial") if "partial" in header else None
+    shipped = [
+        [row[k] for k in columns] for row in shipped
+        if float(row[header.index("ratio [1]")]) == ratio and (partial is None or not row[partial])
+    ]
     catalog = folder / "gearboxes-large.csv"
     write_synthetic_catalog(catalog, rows - len(shipped), ratio)
     with open(catalog, "a", encoding="utf-8", newline="") as f:

@@ -77,8 +77,8 @@ class CheckArray:
     rated: object
     unit: str
     not_made: str | None = field(default=None, kw_only=True)  # what the check needs that the case does not give
-    #: Where a row has no rated value: None, the row fails (a rating the check needs); else the row
-    #: is not checked, for this reason, and the check does not hold it back (an optional rating).
+    #: For a check whose rating a catalog may leave out (a bearing's force): what is missing, and
+    #: a row without the rating is not checked and does not fail; None: such a row fails.
     unrated: str | None = field(default=None, kw_only=True)
 
     @property
@@ -99,18 +99,25 @@ class CheckArray:
         """:func:`within_rating` of each row (false where the check is not made); computed once,
         as listing candidates asks it of every row."""
         ok = within_rating(self.utilization)
-        return ok | self._unrated if self.made and self.unrated is not None else ok
+        return ok | self.unrated_rows if self.made else ok
 
     @functools.cached_property
-    def _unrated(self) -> np.ndarray:
-        """Rows without a rated value."""
+    def unrated_rows(self) -> np.ndarray:
+        """Rows not checked for want of a rating that may be left out (:attr:`unrated`)."""
+        if self.unrated is None:
+            return np.zeros(np.shape(self.utilization), bool)
         return np.isnan(magnitude_in(self.rated, self.unit))
+
+    @functools.cached_property
+    def ranked_utilization(self) -> np.ndarray:
+        """The utilization as ranking counts it: 0 where a row is not checked for want of a
+        rating that may be left out (it neither fails nor pushes the row down)."""
+        return np.where(self.unrated_rows, 0.0, self.utilization)
 
     def at(self, row: int, governs: bool = True) -> Check:
         """This check for one row."""
         u = float(self.utilization[row])
-        if self.made and self.unrated is not None and self._unrated[row]:
-            return Check(self.name, self.text, self.required[row], self.rated[row], self.unit, None, None, governs, self.mode, self.unrated)
+        unrated = self.made and bool(self.unrated_rows[row])
         return Check(
             name=self.name,
             criterion=self.text,
@@ -118,10 +125,10 @@ class CheckArray:
             rated=self.rated[row],
             unit=self.unit,
             utilization=None if np.isnan(u) else u,
-            passes=None if not self.made else bool(self.passes[row]),
+            passes=None if not self.made or unrated else bool(self.passes[row]),
             governs=governs,
             mode=self.mode,
-            not_made=self.not_made,
+            not_made=self.unrated if unrated else self.not_made,
         )
 
     def reason(self, row: int) -> str:

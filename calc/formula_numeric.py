@@ -86,6 +86,10 @@ def gearbox__lambda(J_1, J_L, i, J_motor):
     return (J_1 + J_L/i**2)/J_motor
 
 
+def gearbox__M_2k(F_2a, y_2, F_2r, x_2, z_2):
+    return F_2a*y_2 + F_2r*(x_2 + z_2)
+
+
 def hysteresis__C_t(Delta_T, Delta_phi):
     return Delta_T/Delta_phi
 
@@ -213,6 +217,7 @@ FUNCTIONS = {
     "calc.gearbox.T_2max": ("d455c85b2c71de92", gearbox__T_2max),
     "calc.gearbox.T_2stop": ("233cb8f5f3a997b8", gearbox__T_2stop),
     "calc.gearbox.lambda": ("f54c7a5badd2a8d9", gearbox__lambda),
+    "calc.gearbox.M_2k": ("5018dac622b0e3ca", gearbox__M_2k),
     "calc.hysteresis.C_t": ("41fae874a638b2da", hysteresis__C_t),
     "calc.hysteresis.j_t": ("a86089e6e3b95b15", hysteresis__j_t),
     "calc.hysteresis.phi_LM3": ("5ec97fde2a6e3296", hysteresis__phi_LM3),

@@ -89,31 +89,32 @@ def search_ratios(
     catalog: Catalog,
     profile: Profile,
     load: OutputLoad,
-    motor_peak_torque=None,
-    motor_inertia=None,
-    load_inertia=None,
     rated_torque=None,
     max_speed=None,
-    emergency_stop_torque=None,
     rotor_inertia=None,
+    hubs: Catalog | None = None,
+    **selection,
 ) -> RatioSearch:
-    """Evaluate the case at every ratio of ``catalog`` (the whole catalog, every ratio).
+    """Evaluate the case at every ratio of ``catalog`` (its rankable rows, every ratio).
 
     ``profile`` gives the duty and the gearbox's checks; ``load`` the cycle at the output for the
     motor's side (a sampled cycle with its accelerations counts the rotor and gearbox inertia;
     typed segments leave the rotor term out). ``rotor_inertia(J_1)``, where given, turns the
     gearboxes' ``J_1`` into what the rotor term counts beside the motor's own: ``(J_1, ...,
-    what it lacks or None, notes)`` (a motor-side coupling's inertia added). The other arguments
-    are those of :func:`calc.gearbox.select_gearbox` and :func:`calc.motor.motor_checks`. A ratio
-    whose best gearbox gives no ``J_1`` has no motor torque on a sampled cycle, and is not
-    feasible (a note says so).
+    what it lacks or None, notes)`` (a motor-side coupling's inertia added). ``hubs`` and the
+    keyword arguments ``selection`` are those of :func:`calc.gearbox.select_gearbox`;
+    ``rated_torque`` and ``max_speed`` those of :func:`calc.motor.motor_checks`. A ratio whose
+    best gearbox gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible
+    (a note says so).
     """
-    sel = select_gearbox(profile, catalog, motor_peak_torque, motor_inertia, load_inertia, emergency_stop_torque)
+    motor_peak_torque, motor_inertia = selection.get("motor_peak_torque"), selection.get("motor_inertia")
+    catalog = catalog.rows(np.flatnonzero(~catalog.partial))  # partial rows are never ranked
+    sel = select_gearbox(profile, catalog, hubs=hubs, **selection)
     ratios, rows = best_rows(sel)
     i, eta = catalog["ratio"][rows], catalog["eta"][rows]
     missing, J_1, notes = None, None, []
     if load.sampled:
-        J_1 = catalog["J_1"][rows]
+        J_1 = sel.J_1[rows]  # for the clamping hub the motor's shaft picks
         if rotor_inertia is not None:
             J_1, _, missing, notes = rotor_inertia(J_1)
         elif motor_inertia is None:

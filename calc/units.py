@@ -94,6 +94,7 @@ KINDS: dict[str, Kind] = {
         Kind("force", "[mass]*[length]/[time]**2", 0, "N", '"100 N"'),
         Kind("linear_speed", "[length]/[time]", 0, "m/s", '"0.5 m/s"'),
         Kind("linear_acceleration", "[length]/[time]**2", 0, "m/s**2", '"9.80665 m/s**2"'),
+        Kind("linear_stiffness", "[mass]/[time]**2", 0, "N/m", '"200 N/mm"'),
     )
 }
 

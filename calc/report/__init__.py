@@ -249,5 +249,6 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     for m in BLOCKS:
         s = results_of(m.NAME, report)
         if s and s.get("catalog") and s.get("catalog_sha256"):
-            report.files.append((f"{m.NAME.capitalize()} catalog", s["catalog"], s["catalog_sha256"]))
+            for entry in s.get("catalogs") or [{"catalog": s["catalog"], "sha256": s["catalog_sha256"]}]:
+                report.files.append((f"{m.NAME.capitalize()} catalog", entry["catalog"], entry["sha256"]))
     return report

@@ -138,7 +138,7 @@ def evaluate(case: Case) -> MotorResult:
     J_1 = J_c = None
     missing = None
     if out.sampled:
-        J_1, J_c, missing, more = rotor_inertia(case, cat["J_1"][one])
+        J_1, J_c, missing, more = rotor_inertia(case, sel.J_1[one])  # for the motor shaft's clamping hub
         notes += more
         if missing is None and np.isnan(J_1[0].magnitude):
             missing = f"the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for {part}"

@@ -7,11 +7,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..case import Case, once
-from ..catalog import display_path, load_catalog, resolve
+from ..catalog import display_path
 from ..errors import CalcError
-from ..gearbox import SCHEMA
 from ..ratios import INERTIA_RATIO_LIMIT, RULE, RatioSearch, search_ratios
 from ..units import sig
+from .gearbox import catalogs, selection_inputs
 from .common import Verdict, check_json, number, quantity
 from .motor import TYPED, output_load, rotor_inertia
 
@@ -92,7 +92,7 @@ def search(case: Case) -> RatioResult:
 def _search(case: Case) -> RatioResult:
     if case.gearbox_catalog is None:
         raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the ratios to try), found none")
-    catalog = load_catalog(resolve(case.gearbox_catalog, case.folder, f"{case.path}: gearbox.catalog"), SCHEMA)
+    catalog, hubs = catalogs(case)
     load = output_load(case)
     notes = []
     if case.gearbox_part is not None:
@@ -100,8 +100,8 @@ def _search(case: Case) -> RatioResult:
     if not load.sampled:
         notes.append(TYPED)
     s = search_ratios(
-        catalog, case.profile, load, case.motor_peak_torque, case.motor_inertia, case.load_inertia,
-        case.motor_rated_torque, case.motor_max_speed, case.emergency_stop_torque, lambda J_1: rotor_inertia(case, J_1),
+        catalog, case.profile, load, case.motor_rated_torque, case.motor_max_speed, lambda J_1: rotor_inertia(case, J_1),
+        hubs=hubs, **selection_inputs(case),
     )
     notes += s.notes
     return RatioResult(case, s, notes)
