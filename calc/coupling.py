@@ -20,12 +20,11 @@ after, closest to passing first. Ties go by part name (:func:`calc.checks.rank`)
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from .bands import BandTable
+from .bands import factor_table
 from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, no_less, resolve
 from .errors import CalcError
 from .fits import Bore, parse_bore
@@ -47,14 +46,13 @@ ORDER_TITLES = {
 DEFAULT_SERVICE_FACTOR = 2.5
 
 #: Temperature factor of elastomer couplings (source, Sizing 3; errata E9: the higher factor at a
-#: boundary). The source's last band, "> 110 °C", is open; it means something only while the
-#: elastomer holds, and thermoplastic polyurethane inserts of servo couplings are rated up to
-#: +120 °C (98 Sh A inserts to +100 °C), so the table ends there. Another maker's table can be
-#: passed to :func:`temperature_factor` instead.
-TEMPERATURE_FACTORS = BandTable(
-    "T", (-math.inf, 50.0, 70.0, 90.0, 110.0), (1.0, 1.3, 1.6, 1.8, 2.0), "degC", "temperature",
-    "the source's temperature-factor table of elastomer couplings, Sizing 3, read with errata E9", top=120.0,
-)
+#: boundary), ``catalogs/factors/temperature-source.csv``. The source's last band, "> 110 °C", is
+#: open; it means something only while the elastomer holds, and thermoplastic polyurethane inserts
+#: of servo couplings are rated up to +120 °C (98 Sh A inserts to +100 °C), so the table ends
+#: there. A maker's table (``temperature-roba-es.csv``, ``temperature-comintec.csv``, or the
+#: user's own) can be passed to :func:`temperature_factor` instead (``[coupling]
+#: temperature_factors``).
+TEMPERATURE_FACTORS = factor_table("temperature")
 
 SCHEMA = Schema(
     kind="coupling",

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .bands import BandTable
+from .bands import factor_table
 from .catalog import Catalog, Column, Rule, Schema, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
@@ -51,11 +51,10 @@ SCHEMA = Schema(
     ),
 )
 
-#: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary).
-SHOCK_FACTORS = BandTable(
-    "Z_h", (0, 1000, 1500, 2000, 3000), (1.0, 1.1, 1.3, 1.6, 2.0), "1/h", "per_hour",
-    "the source's shock-factor table, S5 calculation 1, read with errata E4",
-)
+#: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary), the
+#: source's table, ``catalogs/factors/shock-source.csv``; a case may name another
+#: (``[gearbox] shock_factors``).
+SHOCK_FACTORS = factor_table("shock")
 
 _n_2 = Symbol("n_2", "n_{2}", "speed", "rpm", "output speed")
 _i = Symbol("i", "i", "dimensionless", "", "ratio")
@@ -92,10 +91,10 @@ inertia_ratio = Formula(
 )
 
 
-def shock_factor(cycles_per_hour):
+def shock_factor(cycles_per_hour, table=SHOCK_FACTORS):
     """Shock factor ``f_s`` for ``Z_h`` cycles per hour (errata E4), scalar or array.
 
-    The table is :data:`SHOCK_FACTORS`; a value within :data:`calc.checks.BOUNDARY_RTOL` below a
+    The table is :data:`SHOCK_FACTORS` unless another is given; a value within :data:`calc.checks.BOUNDARY_RTOL` below a
     boundary counts as on it (:class:`calc.bands.BandTable`): a cycle of 0.1 + 0.1 + 0.1 + 2.1 s =
     2.4000000000000004 s gives 1499.9999999999998 cycles per hour, which is 1500. A negative
     ``Z_h`` is refused.
@@ -105,7 +104,7 @@ def shock_factor(cycles_per_hour):
     >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
     1.3
     """
-    return SHOCK_FACTORS.lookup(cycles_per_hour, "cycles_per_hour")
+    return table.lookup(cycles_per_hour, "cycles_per_hour")
 
 
 @dataclass
@@ -196,6 +195,7 @@ def select_gearbox(
     motor_peak_torque=None,
     motor_inertia=None,
     load_inertia=None,
+    shock_factors=SHOCK_FACTORS,
 ) -> GearboxSelection:
     """Check every row of ``catalog`` (already narrowed to the desired ratio, or to one part).
 
@@ -204,6 +204,7 @@ def select_gearbox(
     without the motor's peak torque ``T_1B`` (it says so; no part is then selected in S5). The
     operating mode of the profile (E3) says which group governs ``passes``; the other group is
     reported for information. The inertia ratio (E6) is given when both inertias are.
+    ``shock_factors`` is the table of ``f_s`` (:data:`SHOCK_FACTORS`, the source's, by default).
     """
     d = duty(profile)
     i = catalog["ratio"]
@@ -215,7 +216,7 @@ def select_gearbox(
     checks.append(CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"], "rpm"))
     t2max = None
     if motor_peak_torque is not None:
-        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle))
+        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle), shock_factors)
         t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
         checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"))
     else:
