@@ -89,6 +89,7 @@ class Case:
     ratio: object = None
     gearbox_catalog: str | None = None
     gearbox_part: str | None = None
+    shock_factors: object = None  # the table of f_s (calc.bands.BandTable) of [gearbox]; None: the source's
     sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
     raw: bytes = b""
     # What has been computed from the case, by name (see :func:`once`); a changed copy starts empty.

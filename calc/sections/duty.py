@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from ..case import Case, Table
 from ..cycle import SampledCycle
 from ..errors import CalcError
-from ..gearbox import shock_factor
+from ..gearbox import SHOCK_FACTORS, shock_factor
 from ..profile import Duty, Profile, T_2m, Z_h, duty, n_2m
 from . import gearbox
 from .common import Verdict, quantity, quantity_text
@@ -96,7 +96,7 @@ def evaluate(case: Case) -> DutyResult:
     p = case.profile
     seg = p.moving_values()
     zh = Z_h(t_cycle=p.t_cycle)
-    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh)))
+    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh, SHOCK_FACTORS if case.shock_factors is None else case.shock_factors)))
     if gearbox.applies(case):
         selection = gearbox.gearbox_selection(case)
         if selection.T_2max is not None:

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..bands import factor_table
 from ..case import Case, Table, once
 from ..catalog import display_path, load_catalog, resolve
 from ..errors import CalcError
@@ -14,7 +15,7 @@ from ..gearbox import SCHEMA, GearboxSelection, rows_at_ratio, select_gearbox
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity
 
 NAME = "gearbox"
-KEYS = ("ratio", "catalog", "part")
+KEYS = ("ratio", "catalog", "part", "shock_factors")
 RANKING = (
     "passing first; published rows before illustrative ones; then smallest governing torque rating "
     "(T_2B in S5, T_2N in S1); then lowest worst utilization"
@@ -30,6 +31,7 @@ def read(top: Table, case: Case) -> None:
     case.ratio = gearbox.positive("ratio", "dimensionless", required=not gearbox.has("part"), what="a ratio")
     case.gearbox_catalog = gearbox.text("catalog", default="gearboxes")
     case.gearbox_part = gearbox.text("part")
+    case.shock_factors = factor_table("shock", gearbox.text("shock_factors"), case.folder, gearbox.where("shock_factors"))
 
 
 def applies(case: Case) -> bool:
@@ -54,7 +56,7 @@ def _select(case: Case) -> GearboxSelection:
             )
     else:
         rows = rows_at_ratio(catalog, case.ratio, f"{where}.ratio")
-    return select_gearbox(case.profile, rows, case.motor_peak_torque, case.motor_inertia, case.load_inertia)
+    return select_gearbox(case.profile, rows, case.motor_peak_torque, case.motor_inertia, case.load_inertia, case.shock_factors)
 
 
 @dataclass

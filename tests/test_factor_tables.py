@@ -1,0 +1,230 @@
+"""Factor tables as data (calc.bands.load_factor_table, factor_table): the makers' published
+figures, the source's tables as they were, the case keys that choose a table, and one-line errors
+naming the file, row and column."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from calc import CalcError, Q_
+from calc.bands import FACTOR_DIR, BandTable, factor_table, load_factor_table, table_names
+from calc.coupling import TEMPERATURE_FACTORS, start_factor, temperature_factor
+from calc.gearbox import SHOCK_FACTORS, shock_factor
+
+from .conftest import HEAD_TOML, PROFILE_TOML, run
+
+# The tables as the code held them before they became data (calc/gearbox.py, calc/coupling.py).
+OLD_SHOCK = BandTable("Z_h", (0, 1000, 1500, 2000, 3000), (1.0, 1.1, 1.3, 1.6, 2.0), "1/h", "per_hour", "old")
+OLD_TEMPERATURE = BandTable("T", (-math.inf, 50.0, 70.0, 90.0, 110.0), (1.0, 1.3, 1.6, 1.8, 2.0), "degC", "temperature", "old", top=120.0)
+
+
+# --- published figures -----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("celsius, factor", [(20, 1.0), (30, 1.0), (45, 1.5), (60, 1.5), (75, 2.0), (90, 2.0), (100, 2.5), (110, 2.5)])
+def test_roba_es_temperature_factors(celsius, factor):
+    # Mayr ROBA-ES, B.9.6.EN (11/03/2022) p. 26, safety factor for temperature S_δ: -30/+30 °C 1,
+    # +60 °C 1.5, +90 °C 2, +110 °C 2.5; between two columns the higher one applies.
+    table = factor_table("temperature", "roba-es")
+    assert float(temperature_factor(Q_(celsius, "degC"), table)) == factor
+
+
+@pytest.mark.parametrize("celsius, factor", [(60, 1.4), (80, 1.8), (70, 1.8), (40, 1.4)])
+def test_comintec_temperature_factors(celsius, factor):
+    # COMINTEC: 1.4 at 60 °C, 1.8 at 80 °C (the two figures quoted); below 60 °C the table holds 1.4.
+    assert float(temperature_factor(Q_(celsius, "degC"), factor_table("temperature", "comintec"))) == factor
+
+
+def test_comintec_table_ends_at_its_last_published_figure():
+    with pytest.raises(CalcError, match=r"^temperature: expected T <= 80 °C \(COMINTEC"):
+        temperature_factor(Q_(85, "degC"), factor_table("temperature", "comintec"))
+
+
+@pytest.mark.parametrize("starts, factor", [(0, 1.0), (100, 1.0), (101, 1.2), (200, 1.2), (201, 1.4), (400, 1.4), (800, 1.6), (801, 1.8), (1000, 1.8)])
+def test_roba_es_start_factors(starts, factor):
+    # Mayr ROBA-ES, B.9.6.EN p. 26, start-up factor S_z: 0-100 starts/h 1, 101-200 1.2, 201-400 1.4,
+    # 401-800 1.6, 801-1000 1.8.
+    assert float(start_factor(Q_(starts, "1/hour"), factor_table("starts", "roba-es"))) == factor
+
+
+def test_start_factors_end_at_1000_starts_per_hour():
+    with pytest.raises(CalcError, match=r"^starts_per_hour: expected 0 <= Z_h <= 1000 1/h"):
+        start_factor(Q_(1200, "1/hour"), factor_table("starts", "roba-es"))
+
+
+def test_the_shipped_tables_by_role():
+    assert table_names("temperature") == ["comintec", "roba-es", "source"]
+    assert table_names("starts") == ["roba-es"]
+    assert table_names("shock") == ["source"]
+    assert factor_table("temperature", "roba-es").text(1) == "30 < T <= 60 °C"
+    assert factor_table("temperature", "comintec").text(0) == "T <= 60 °C"
+
+
+# --- the source's tables, now data, give today's results ---------------------------------------
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(0, 10_000))
+def test_default_shock_table_is_the_old_one(zh):
+    z = Q_(zh, "1/hour")
+    assert shock_factor(z) == OLD_SHOCK.lookup(z) and SHOCK_FACTORS.band(z) == OLD_SHOCK.band(z)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(-273.15, 120))
+def test_default_temperature_table_is_the_old_one(celsius):
+    t = Q_(celsius, "degC")
+    assert temperature_factor(t) == OLD_TEMPERATURE.lookup(t)
+
+
+def test_default_tables_keep_their_bounds_text_and_source():
+    for new, old in ((SHOCK_FACTORS, OLD_SHOCK), (TEMPERATURE_FACTORS, OLD_TEMPERATURE)):
+        assert new.lower == old.lower and new.values == old.values and new.top == old.top
+        assert [new.text(k) for k in range(len(new))] == [old.text(k) for k in range(len(old))]
+    assert SHOCK_FACTORS.source == "the source's shock-factor table, S5 calculation 1, read with errata E4"
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.sampled_from(["roba-es", "comintec", "source"]), st.floats(-30, 80), st.floats(-30, 80))
+def test_every_temperature_table_never_falls(name, a, b):
+    table = factor_table("temperature", name)
+    lo, hi = sorted((a, b))
+    assert table.lookup(Q_(lo, "degC")) <= table.lookup(Q_(hi, "degC"))
+
+
+# --- errors: file, row and column ----------------------------------------------------------------
+
+HEADER = "from [degC],to [degC],factor [1],at_boundary,source\n"
+
+
+def write(tmp_path, text, name="t.csv"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize(
+    "body, message",
+    [
+        (",50,1.0,higher,a\n50,70,0.9,higher,a\n", r"row 3, column factor: expected factors that never fall as T rises, found 0.9 after 1.0"),
+        (",50,1.0,higher,a\n60,70,1.3,higher,a\n", r"row 3, column from: expected the band to start where the row before ends \(50\), found '60', a gap"),
+        (",50,1.0,higher,a\n40,70,1.3,higher,a\n", r"row 3, column from: .* found '40', an overlap"),
+        (",50,-1.0,higher,a\n", r"row 2, column factor: expected a factor above zero, found '-1.0'"),
+        (",50,1.0,higher,a\n70,50,1.3,higher,a\n", r"row 3, column to: expected a band that rises"),
+        (",50,x,higher,a\n", r"row 2, column factor: expected a number, found 'x'"),
+        (",50,1.0,higher,a\n,70,1.3,higher,a\n", r"row 3, column from: expected a number, found an empty cell"),
+        (",50,1.0,upward,a\n", r"row 2, column at_boundary: expected one of higher, lower, found 'upward'"),
+        (",50,1.0,higher,a\n50,70,1.3,lower,a\n", r"row 3, column at_boundary: expected the same rule in every row"),
+        (",50,1.0,higher,\n", r"row 2, column source: expected where the factors come from"),
+        ("", r"expected one row per band, found none"),
+    ],
+)
+def test_a_bad_table_is_named_by_row_and_column(tmp_path, body, message):
+    path = write(tmp_path, HEADER + body)
+    with pytest.raises(CalcError, match=rf"^{path}, |^{path}: "):
+        load_factor_table(path, "T", "temperature")
+    with pytest.raises(CalcError, match=message):
+        load_factor_table(path, "T", "temperature")
+
+
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        ("", r": expected a header row, found an empty file"),
+        ("from [degC],to [degC],factor [1],source\n", r": expected the columns from, to, factor, at_boundary, source, found no column 'at_boundary'"),
+        ("from [N*m],to [N*m],factor [1],at_boundary,source\n,1,1,higher,a\n", r"header, column from: expected a unit of temperature"),
+        ("from [degC],to [K],factor [1],at_boundary,source\n,1,1,higher,a\n", r"header: expected the columns from and to in one unit"),
+        ("from [degC],to (degC),factor,at_boundary,source\n", r"header column 2 'to \(degC\)' is not of the form"),
+    ],
+)
+def test_a_bad_header_is_named(tmp_path, text, message):
+    path = write(tmp_path, text)
+    with pytest.raises(CalcError, match=message):
+        load_factor_table(path, "T", "temperature")
+
+
+def test_a_table_that_is_not_utf8(tmp_path):
+    path = tmp_path / "t.csv"
+    path.write_bytes(b"from [degC]\xff")
+    with pytest.raises(CalcError, match="not UTF-8"):
+        load_factor_table(path, "T", "temperature")
+
+
+def test_an_unknown_name_or_missing_file(tmp_path):
+    with pytest.raises(CalcError, match=r"^coupling.start_factors: unknown starts-factor table 'ktr'; expected one of roba-es or a path"):
+        factor_table("starts", "ktr", where="coupling.start_factors")
+    with pytest.raises(CalcError, match=r"the factor table 'mine.csv' does not exist"):
+        factor_table("starts", "mine.csv", tmp_path)
+    with pytest.raises(CalcError, match=r"expected a table name \(roba-es\) or a path"):
+        factor_table("starts", " ")
+
+
+def test_the_at_boundary_rule_of_a_band_table():
+    with pytest.raises(CalcError, match="expected at_boundary to be one of higher, lower"):
+        BandTable("x", (0, 1), (1.0, 1.1), "1/h", "per_hour", "a table", at_boundary="middle")
+
+
+# --- case keys -----------------------------------------------------------------------------------
+
+ELASTOMER = """
+[coupling]
+type = "elastomer"
+accel_torque = "2 N*m"
+drive_inertia = "1.5 kg*cm**2"
+load_inertia = "30 kg*cm**2"
+temperature = "60 degC"
+excitation_frequency = "40 Hz"
+shaft_1 = "14 mm k6"
+shaft_2 = "12 mm h7"
+"""
+
+
+def test_case_names_a_makers_temperature_table(capsys, write_case):
+    path = write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'temperature_factors = "roba-es"\n')
+    code, out, err = run(capsys, path, "--json")
+    assert code == 0, err
+    c = json.loads(out)["coupling"]
+    assert c["temperature_factor"] == 1.5  # Mayr: 1.5 at +60 °C (the source's table: 1.3)
+    assert c["temperature_factors"].startswith("Mayr")
+
+
+def test_case_names_its_own_table_by_path(capsys, write_case, tmp_path):
+    write(tmp_path, HEADER + ",65,1.25,higher,our own test bench\n65,120,1.7,higher,our own test bench\n", "ours.csv")
+    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'temperature_factors = "ours.csv"\n'), "--json")
+    assert code == 0, err
+    c = json.loads(out)["coupling"]
+    assert c["temperature_factor"] == 1.25 and "ours.csv: our own test bench" in c["temperature_factors"]
+
+
+def test_case_with_an_unknown_table_name(capsys, write_case):
+    path = write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'temperature_factors = "ktr"\n')
+    code, out, err = run(capsys, path)
+    assert code == 2 and out == ""
+    assert err.strip().endswith("coupling.temperature_factors: unknown temperature-factor table 'ktr'; expected one of comintec, roba-es, source or a path to a CSV file")
+    assert err.count("\n") == 1
+
+
+def test_case_names_a_shock_table(capsys, write_case, tmp_path):
+    # A shock table of 1.5 over every Z_h: T_2max = 12 N·m · 10 · 1.5 · eta; the example cycle has
+    # Z_h = 3600 / 2 s = 1800 per hour, f_s 1.3 by the source's table.
+    write(tmp_path, "from [1/h],to [1/h],factor [1],at_boundary,source\n0,,1.5,higher,a test table\n", "shock.csv")
+    head = HEAD_TOML.replace('ratio = 10', 'ratio = 10\nshock_factors = "shock.csv"')
+    assert 'shock_factors' in head
+    code, out, err = run(capsys, write_case(head + PROFILE_TOML), "--json")
+    assert code == 0, err
+    r = json.loads(out)
+    assert r["cyclic"]["fs"] == 1.5
+    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML, "plain.toml"), "--json")
+    assert json.loads(out)["cyclic"]["fs"] == 1.3
+    named = HEAD_TOML.replace('ratio = 10', 'ratio = 10\nshock_factors = "source"')
+    code, out2, err = run(capsys, write_case(named + PROFILE_TOML, "named.toml"), "--json")
+    assert json.loads(out2) == {**json.loads(out), "case": json.loads(out2)["case"]}
+
+
+def test_the_factor_folder_is_package_data():
+    assert FACTOR_DIR.name == "factors" and FACTOR_DIR.parent.name == "catalogs"
+    assert np.all([p.suffix == ".csv" for p in FACTOR_DIR.iterdir()])
