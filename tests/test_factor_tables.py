@@ -228,3 +228,73 @@ def test_case_names_a_shock_table(capsys, write_case, tmp_path):
 def test_the_factor_folder_is_package_data():
     assert FACTOR_DIR.name == "factors" and FACTOR_DIR.parent.name == "catalogs"
     assert np.all([p.suffix == ".csv" for p in FACTOR_DIR.iterdir()])
+
+
+# --- the peak-torque check of elastomer couplings ------------------------------------------------
+
+JAWS = """part,series,size,type,T_KN [N*m],T_Kmax [N*m],C_T [N*m/rad],C_tube [N*m**2/rad],J [kg*cm**2],n_max [rpm],d_1min [mm],d_1max [mm],d_2min [mm],d_2max [mm],T_Amin [N*m],T_Amax [N*m],H [mm],A_max [mm],source
+J-10,J,10,elastomer,10,15,3000,,0.2,,6,20,6,20,,,,,a test row
+J-11,J,11,elastomer,11,,3000,,0.2,,6,20,6,20,,,,,a test row without T_Kmax
+"""
+
+
+def jaw_selection(tmp_path, **kw):
+    from calc.catalog import load_catalog
+    from calc.coupling import SCHEMA, select_coupling
+
+    catalog = load_catalog(write(tmp_path, JAWS, "jaws.csv"), SCHEMA)
+    args = dict(accel_torque=Q_(3.5, "N*m"), drive_inertia=Q_(1.5, "kg*cm**2"), load_inertia=Q_(30, "kg*cm**2"),
+                excitation_frequency=Q_(10, "Hz"), shaft_1="14 mm k6", shaft_2="12 mm h7", temperature=Q_(20, "degC"))
+    return select_coupling(catalog, **{**args, **kw})
+
+
+def test_peak_torque_against_t_kmax(tmp_path):
+    # Hand calculation: T_S = M_N = 3.5 · 30 / 31.5 · 2.5 = 8.3333 N·m; 20 °C: K_ϑ = 1.0; 900 starts
+    # per hour, Mayr S_z = 1.8 (801-1000): T_S · S_z · K_ϑ = 15.0 N·m against T_Kmax = 15 N·m (passes, at 1.0);
+    # 1000 starts: still 1.8. With Mayr's temperature factor at 45 °C (1.5): 22.5 N·m > 15 N·m, 50 % over.
+    s = jaw_selection(tmp_path, start_factors=factor_table("starts", "roba-es"), starts_per_hour=Q_(900, "1/hour"))
+    check = next(c for c in s.checks if c.name == "T_Kmax")
+    assert s.start_factor == 1.8
+    assert check.required[0].m_as("N*m") == pytest.approx(15.0) and check.passes[0]
+    hot = jaw_selection(tmp_path, start_factors=factor_table("starts", "roba-es"), starts_per_hour=Q_(900, "1/hour"),
+                        temperature=Q_(45, "degC"), temperature_factors=factor_table("temperature", "roba-es"))
+    check = next(c for c in hot.checks if c.name == "T_Kmax")
+    assert check.utilization[0] == pytest.approx(1.5) and not check.passes[0]
+    assert "T_S · S_z · K_ϑ <= T_Kmax: required 22.5 N·m > rated 15 N·m, 50 % over" in hot.reasons(0)
+
+
+def test_a_row_without_t_kmax_is_reported_not_checked(tmp_path):
+    s = jaw_selection(tmp_path, start_factors=factor_table("starts", "roba-es"), starts_per_hour=Q_(50, "1/hour"))
+    check = next(c for c in s.checks if c.name == "T_Kmax")
+    one = check.at(1)
+    assert one.passes is None and one.governs is False and one.not_made == "the catalog gives no maximum torque T_Kmax"
+    assert check.passes[1] and not any("T_Kmax" in r for r in s.reasons(1))
+
+
+def test_without_a_start_table_the_check_is_not_made(tmp_path):
+    s = jaw_selection(tmp_path)
+    assert s.start_factor is None and s.M_Smax is None and not any(c.name == "T_Kmax" for c in s.checks)
+    assert any("start_factors not given" in n for n in s.notes)
+
+
+def test_starts_and_start_table_go_together(tmp_path):
+    with pytest.raises(CalcError, match=r"^coupling.starts_per_hour: the start-factor table needs the number of starts per hour"):
+        jaw_selection(tmp_path, start_factors=factor_table("starts", "roba-es"))
+    with pytest.raises(CalcError, match=r"^coupling.starts_per_hour: starts per hour are read against a start-factor table"):
+        jaw_selection(tmp_path, starts_per_hour=Q_(10, "1/hour"))
+
+
+def test_case_start_factors_default_to_one_start_per_cycle(capsys, write_case):
+    # The load cycle of PROFILE_TOML lasts 2 s: Z_h = 1800 per hour, beyond Mayr's 1000: an input error.
+    path = write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'start_factors = "roba-es"\n')
+    code, out, err = run(capsys, path)
+    assert code == 2 and "coupling.starts_per_hour: expected 0 <= Z_h <= 1000 1/h" in err
+    path = write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'start_factors = "roba-es"\nstarts_per_hour = "150 1/hour"\n', "b.toml")
+    code, out, err = run(capsys, path, "--json")
+    assert code == 0, err
+    c = json.loads(out)["coupling"]
+    # M_N = 2 · 30 / 31.5 · 2.5 = 4.7619 N·m; S_z = 1.2 (101-200); K_ϑ = 1.3 (60 °C, the source's).
+    assert c["start_factor"] == 1.2 and c["starts_per_hour"] == {"value": pytest.approx(150), "unit": "1/hour"}
+    first = c["candidates"][0]
+    assert first["peak_torque_required"]["value"] == pytest.approx(4.7619 * 1.2 * 1.3, rel=1e-4)
+    assert any(k["name"] == "T_Kmax" for k in first["checks"])
