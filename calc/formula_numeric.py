@@ -40,6 +40,10 @@ def coupling__M_Nt(M_N, K_T):
     return K_T*M_N
 
 
+def coupling__M_Smax(T_S, S_z, K_T):
+    return K_T*S_z*T_S
+
+
 def coupling__J_A(J_drive, J_K):
     return (1/2)*J_K + J_drive
 
@@ -124,6 +128,22 @@ def stiffness__T_2(T_1, i):
     return T_1*i
 
 
+def stiffness__phi_c1(T, K_1):
+    return T/K_1
+
+
+def stiffness__phi_c2(T, T_1, K_1, K_2):
+    return (T - T_1)/K_2 + T_1/K_1
+
+
+def stiffness__phi_c3(T, T_1, T_2, K_1, K_2, K_3):
+    return (T - T_2)/K_3 + (-T_1 + T_2)/K_2 + T_1/K_1
+
+
+def stiffness__C_sec(T, phi):
+    return T/phi
+
+
 def transmission__Delta_phi_2(phi_2, phi_1, i):
     return phi_2 - phi_1/i
 
@@ -140,6 +160,7 @@ FUNCTIONS = {
     "calc.coupling.M_N": ("286be3d946bc065a", coupling__M_N),
     "calc.coupling.J_load": ("9c5dfc162db124c0", coupling__J_load),
     "calc.coupling.M_Nt": ("20bfc40180ba5ec3", coupling__M_Nt),
+    "calc.coupling.M_Smax": ("79e2cfc7d66e69ca", coupling__M_Smax),
     "calc.coupling.J_A": ("39e751e770984771", coupling__J_A),
     "calc.coupling.J_L": ("c0f93c789de1374b", coupling__J_L),
     "calc.coupling.f_e": ("3421c1ff162c1448", coupling__f_e),
@@ -161,6 +182,10 @@ FUNCTIONS = {
     "calc.stiffness.C_2": ("5c713f3fa45cd595", stiffness__C_2),
     "calc.stiffness.phi_2": ("678c7938c9b7d54c", stiffness__phi_2),
     "calc.stiffness.T_2": ("5078122a10c6f7f8", stiffness__T_2),
+    "calc.stiffness.phi_c1": ("1ed61e636079b3d5", stiffness__phi_c1),
+    "calc.stiffness.phi_c2": ("7066f7e6b7e257a7", stiffness__phi_c2),
+    "calc.stiffness.phi_c3": ("38012b778d9a9e60", stiffness__phi_c3),
+    "calc.stiffness.C_sec": ("21f78c548e68d498", stiffness__C_sec),
     "calc.transmission.Delta_phi_2": ("ed18015dc98282df", transmission__Delta_phi_2),
     "calc.transmission.phi_TA": ("80cb419f2cbded1e", transmission__phi_TA),
 }

@@ -16,7 +16,7 @@ from ..checks import CheckArray
 from ..errors import CalcError
 from ..units import Q_, fmt, sig
 from ..measurement import measurement_path
-from ..stiffness import SIDES, Chain, Component
+from ..stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
 from .common import Verdict, check_json, check_line, number, quantity, quantity_text
 
@@ -27,8 +27,10 @@ KEYS = (
 )
 COMPONENT_KEYS = (
     "name", "side", "kind", "stiffness", "backlash", "transmission_accuracy", "nominal_torque",
-    "part", "catalog", "hysteresis", "transmission_trace",
+    "part", "catalog", "hysteresis", "transmission_trace", "stiffness_curve",
 )
+#: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.stiffness.StiffnessCurve`).
+CURVE_KEYS = {"T1": "torque", "T2": "torque", "K1": "stiffness", "K2": "stiffness", "K3": "stiffness"}
 
 
 @dataclass
@@ -174,6 +176,14 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
     if side not in SIDES:
         raise CalcError(f"{t.where('side')}: expected input or output, found {side!r}")
     stiffness = _positive(t, "stiffness", "stiffness")
+    curve = None
+    if t.has("stiffness_curve"):
+        for key in ("stiffness", "part", "hysteresis"):
+            if t.has(key):
+                raise CalcError(f"{t.where('stiffness_curve')}: the curve gives the member's stiffness; give either stiffness_curve or {key}")
+        c = t.table("stiffness_curve", tuple(CURVE_KEYS))
+        curve = StiffnessCurve(*(c.quantity(key, kind, required=True) for key, kind in CURVE_KEYS.items()), where=f"{c.path}: {c.name}")
+        stiffness = curve.K_1
     backlash = t.quantity("backlash", "angle")
     if backlash is not None and not backlash.magnitude >= 0:
         raise CalcError(f"{t.where('backlash')}: expected an angle of zero or more, found {t.data['backlash']!r}")
@@ -240,7 +250,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         raise CalcError(f"{t.where('stiffness')}: expected a stiffness such as \"1.3 N*m/arcmin\" (or a part, or a measured hysteresis loop), found none")
     if backlash is None:
         raise CalcError(f"{t.where('backlash')}: expected an angle such as \"3 arcmin\" (\"0 arcmin\" for none), found none")
-    return Component(name, side, stiffness, backlash, accuracy, nominal, source="; ".join(sources) or "case")
+    return Component(name, side, stiffness, backlash, accuracy, nominal, source="; ".join(sources) or "case", stiffness_curve=curve)
 
 
 def accuracy_of(case: Case) -> tuple:
@@ -302,6 +312,13 @@ class AccuracyResult:
                 "share_of_compliance": number(shares[k]),
                 "twist_at_applied_torque": quantity(twist[k], "arcmin"),
             }
+            if comp.stiffness_curve is not None:
+                curve = comp.stiffness_curve
+                item["stiffness_curve"] = {
+                    "T1": quantity(curve.T_1, "N*m"), "T2": quantity(curve.T_2, "N*m"),
+                    "K1": quantity(curve.K_1, "N*m/rad"), "K2": quantity(curve.K_2, "N*m/rad"), "K3": quantity(curve.K_3, "N*m/rad"),
+                }
+                item["stiffness_is_secant"] = True  # stiffness_at_output: |T| / φ(T) at the applied torque
             if comp.name in spec.loops:
                 path, loop = spec.loops[comp.name]
                 item["measured_loop"] = {
@@ -321,6 +338,7 @@ class AccuracyResult:
             "nominal_torque": None if a.nominal_torque is None else quantity(a.nominal_torque, "N*m"),
             "nominal_torque_from": "accuracy.nominal_torque" if spec.nominal_torque is not None else c.nominal_torque_from,
             "C_total": quantity(c.stiffness, "N*m/arcmin"),
+            "C_total_is_secant": c.has_curves,
             "backlash": quantity(c.backlash, "arcmin"),
             "transmission_accuracy": quantity(c.transmission_accuracy, "arcsec"),
             "transmission_accuracy_from": c.transmission_accuracy_from,
@@ -375,7 +393,7 @@ class AccuracyResult:
         ta_from = ", ".join(s["transmission_accuracy_from"]) or "no component gives one"
         t_n = "" if s["nominal_torque"] is None else f", T_N = {quantity_text(s['nominal_torque'])} ({s['nominal_torque_from']})"
         lines += [
-            f"  C_total = {quantity_text(s['C_total'])}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
+            f"  C_total = {quantity_text(s['C_total'])}{' (secant |T| / φ at the applied torque: a member gives a stiffness curve)' if s['C_total_is_secant'] else ''}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
             f"  Lost motion = j_t + |T| / C = {quantity_text(s['lost_motion'])} (E12)",
             f"  Positioning accuracy ({s['positioning_rule']}{t_n}) = {quantity_text(s['positioning_accuracy'])} (E13)",
             f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {quantity_text(s['repeatability'])} "
