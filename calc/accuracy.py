@@ -74,6 +74,24 @@ positioning_error = Formula(
 )
 
 
+_r = Symbol("r", "r", "length", "mm", "radius at which the angle is read (a pinion's pitch radius, a table's edge)")
+_RAD = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (an arc is r · φ with φ in radians, E15)", value="1 rad")
+
+arc_length = Formula(
+    Symbol("s", "s", "length", "mm", "arc length at the radius"),
+    (_r, Symbol("phi", r"\varphi", "angle", "arcmin", "angle at the output"), _RAD),
+    lambda sp, r, phi, rad: r * phi / rad,
+    "geometry of the circle: an angle φ at the output moves a point at radius r by the arc s = r · φ",
+)
+
+angle_of_arc = Formula(
+    Symbol("phi_s", r"\varphi", "angle", "arcmin", "angle at the output that moves a point at the radius by s"),
+    (Symbol("s", "s", "length", "mm", "arc length at the radius"), _r, _RAD),
+    lambda sp, s, r, rad: s / r * rad,
+    "geometry of the circle: an arc s at radius r is the angle φ = s / r",
+)
+
+
 def low_torque_limit(nominal_torque):
     """The torque up to which the backlash form of positioning accuracy applies (E13): 3 % of
     ``T_N``.

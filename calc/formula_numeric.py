@@ -28,6 +28,14 @@ def accuracy__Delta_phi(phi_actual, phi_target):
     return phi_actual - phi_target
 
 
+def accuracy__s(r, phi, rad):
+    return phi*r/rad
+
+
+def accuracy__phi_s(s, r, rad):
+    return rad*s/r
+
+
 def coupling__M_N(M_a, J_load, J_drive, S_A):
     return M_a*S_A*(J_load/(J_drive + J_load))
 
@@ -157,6 +165,8 @@ FUNCTIONS = {
     "calc.accuracy.Delta_phi_P_low": ("6a9a3ead10619a1f", accuracy__Delta_phi_P_low),
     "calc.accuracy.Delta_phi_P_high": ("8ffa9959b4ff0f2d", accuracy__Delta_phi_P_high),
     "calc.accuracy.Delta_phi": ("9ba091f73ef75c85", accuracy__Delta_phi),
+    "calc.accuracy.s": ("78fadd67550573da", accuracy__s),
+    "calc.accuracy.phi_s": ("a3cb1053ef4c3bc5", accuracy__phi_s),
     "calc.coupling.M_N": ("286be3d946bc065a", coupling__M_N),
     "calc.coupling.J_load": ("9c5dfc162db124c0", coupling__J_load),
     "calc.coupling.M_Nt": ("20bfc40180ba5ec3", coupling__M_Nt),

@@ -9,12 +9,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..accuracy import ChainAccuracy, PositioningScatter, chain_accuracy, read_positions
+from ..accuracy import ChainAccuracy, PositioningScatter, angle_of_arc, arc_length, chain_accuracy, read_positions
 from ..case import Case, Table, once
 from ..catalog import display_path, load_catalog, resolve
 from ..checks import CheckArray
 from ..errors import CalcError
-from ..units import Q_, fmt, sig
+from ..units import Q_, fmt, parse_quantity, sig
 from ..measurement import measurement_path
 from ..stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
@@ -23,7 +23,7 @@ from .common import Verdict, check_json, check_line, number, quantity, quantity_
 NAME = "accuracy"
 KEYS = (
     "applied_torque", "nominal_torque", "component", "positions",
-    "required_positioning_accuracy", "required_repeatability",
+    "required_positioning_accuracy", "required_repeatability", "radius",
 )
 COMPONENT_KEYS = (
     "name", "side", "kind", "stiffness", "backlash", "transmission_accuracy", "nominal_torque",
@@ -44,6 +44,8 @@ class AccuracyCase:
     traces: dict = field(default_factory=dict)  # component name -> (file, TransmissionAnalysis)
     positions: PositioningScatter | None = None
     required: dict = field(default_factory=dict)  # "positioning_accuracy" | "repeatability" -> Quantity
+    radius: object = None  # r: the results also give each angle as the arc r · φ at it
+    required_arcs: dict = field(default_factory=dict)  # a requirement given as a length, by name
 
     def evaluate(self) -> ChainAccuracy:
         return chain_accuracy(self.chain, self.applied_torque, self.nominal_torque)
@@ -73,11 +75,33 @@ def read_accuracy(case: Case) -> AccuracyCase:
     out.chain = Chain(tuple(components), ratio)
     if sec.has("positions"):
         out.positions = read_positions(measurement_path(sec.data["positions"], case.folder, sec.where("positions")))
-    for key, kind in (("required_positioning_accuracy", "angle"), ("required_repeatability", "angle")):
-        q = _positive(sec, key, kind)
+    out.radius = sec.positive("radius", "length", what="a radius")
+    for key in ("required_positioning_accuracy", "required_repeatability"):
+        q = _requirement(sec, key, out)
         if q is not None:
             out.required[key.removeprefix("required_")] = q
     return out
+
+
+def _requirement(sec: Table, key: str, out: AccuracyCase):
+    """A required value: an angle, or with ``accuracy.radius`` a length at that radius (the arc a
+    machine builder states a tolerance as), turned into the angle ``s / r``."""
+    if not sec.has(key) or _is_angle(sec.data[key]):
+        return _positive(sec, key, "angle")
+    arc = sec.positive(key, "length", what="a length")
+    if out.radius is None:
+        raise CalcError(f"{sec.where(key)}: a requirement given as a length ({sec.data[key]!r}) is an arc at a radius; give accuracy.radius as well")
+    out.required_arcs[key.removeprefix("required_")] = arc
+    return angle_of_arc(s=arc, r=out.radius)
+
+
+def _is_angle(text) -> bool:
+    """Whether a value reads as anything but a length (an angle, or an error the angle reading names)."""
+    try:
+        parse_quantity(text, "length", "")
+    except CalcError:
+        return True
+    return False
 
 
 def _positive(sec: Table, key: str, kind: str):
@@ -349,6 +373,12 @@ class AccuracyResult:
             "repeatability_is_bound": a.repeatability_is_bound,
             "components": components,
         }
+        if spec.radius is not None:
+            r = spec.radius
+            out["radius"] = quantity(r, "mm")
+            for key in ("backlash", "lost_motion", "positioning_accuracy", "repeatability"):
+                angle = c.backlash if key == "backlash" else getattr(a, key)
+                out[f"{key}_arc"] = quantity(arc_length(r=r, phi=angle), "mm", f"accuracy.{key}_arc")
         if spec.positions is not None:
             p = spec.positions
             out["measured_positioning"] = {
@@ -370,6 +400,14 @@ class AccuracyResult:
                     "utilization": number(k.utilization, f"accuracy.{k.name}"),
                     "passes": k.passes,
                     "governs": True,
+                    **(
+                        {}
+                        if spec.radius is None
+                        else {
+                            "value_arc": quantity(arc_length(r=spec.radius, phi=k.required), "mm", f"accuracy.{k.name}"),
+                            "required_arc": quantity(arc_length(r=spec.radius, phi=k.rated), "mm", f"accuracy.required_{k.name}"),
+                        }
+                    ),
                 }
                 for k in checks
             ]
@@ -399,6 +437,11 @@ class AccuracyResult:
             f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {quantity_text(s['repeatability'])} "
             f"({'bounded by the lost motion under torque' if s['repeatability_is_bound'] else 'the backlash at T = 0'}, E13)",
         ]
+        if "radius" in s:
+            lines.append(
+                f"  As arcs s = r · φ at r = {quantity_text(s['radius'])}: backlash {quantity_text(s['backlash_arc'])}, lost motion {quantity_text(s['lost_motion_arc'])}, "
+                f"positioning accuracy {quantity_text(s['positioning_accuracy_arc'])}, repeatability {quantity_text(s['repeatability_arc'])}"
+            )
         for c in s["components"]:
             if "measured_loop" in c:
                 m = c["measured_loop"]
@@ -418,6 +461,7 @@ class AccuracyResult:
         for k in s.get("checks", []):
             lines.append(
                 f"  {k['name']:<22} {quantity_text(k['value']):>12} required <= {quantity_text(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
+                + (f"  (as arcs: {quantity_text(k['value_arc'])} <= {quantity_text(k['required_arc'])})" if "value_arc" in k else "")
             )
         return lines
 
