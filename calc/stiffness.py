@@ -83,21 +83,21 @@ _K_3 = Symbol("K_3", "K_{3}", "stiffness", "N*m/rad", "stiffness above T_2")
 _CURVE_REFERENCE = "Harmonic Drive engineering data (HFUC, CSF, CSG): torsional stiffness as three slopes K_1, K_2, K_3 with limit torques T_1, T_2"
 
 twist_low = Formula(
-    Symbol("phi_c1", r"\varphi", "angle", "arcmin", "twist of a member with a stiffness curve, T <= T_1"),
+    Symbol("phi_c1", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, first slope (up to the first limit torque)"),
     (_T, _K_1),
     lambda sp, T, K_1: T / K_1,
     _CURVE_REFERENCE + " (T <= T_1)",
 )
 
 twist_middle = Formula(
-    Symbol("phi_c2", r"\varphi", "angle", "arcmin", "twist of a member with a stiffness curve, T_1 < T <= T_2"),
+    Symbol("phi_c2", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, second slope (between the limit torques)"),
     (_T, _T_1, _K_1, _K_2),
     lambda sp, T, T_1, K_1, K_2: sp.Add(T_1 / K_1, (T - T_1) / K_2, evaluate=False),
     _CURVE_REFERENCE + " (T_1 < T <= T_2)",
 )
 
 twist_high = Formula(
-    Symbol("phi_c3", r"\varphi", "angle", "arcmin", "twist of a member with a stiffness curve, T > T_2"),
+    Symbol("phi_c3", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, third slope (above the second limit torque)"),
     (_T, _T_1, _T_2, _K_1, _K_2, _K_3),
     lambda sp, T, T_1, T_2, K_1, K_2, K_3: sp.Add(T_1 / K_1, (T_2 - T_1) / K_2, (T - T_2) / K_3, evaluate=False),
     _CURVE_REFERENCE + " (T > T_2)",
@@ -289,6 +289,17 @@ class Chain:
                 c = dataclasses.replace(c, stiffness=c.stiffness_curve.secant(t / i))
             members.append(c)
         return Chain(tuple(members), self.ratio)
+
+    def stiffness_at(self, torque):
+        """The chain's stiffness at the output at each torque (scalar or array): ``C_total`` for a
+        chain without curves; with curves the secant ``|T| / Σ φ_k(T)`` (at zero torque, the
+        series of the first slopes)."""
+        if not self.has_curves:
+            return self.stiffness
+        t = abs(as_kind(torque, "torque", "torque"))
+        x = np.atleast_1d(t.m_as("N*m"))
+        c = np.array([self.at_torque(Q_(v, "N*m")).stiffness.m_as("N*m/arcmin") for v in x])
+        return Q_(c.reshape(np.shape(t.magnitude))[()], "N*m/arcmin")
 
     @functools.cached_property
     def _i(self):
