@@ -298,3 +298,12 @@ def test_case_start_factors_default_to_one_start_per_cycle(capsys, write_case):
     first = c["candidates"][0]
     assert first["peak_torque_required"]["value"] == pytest.approx(4.7619 * 1.2 * 1.3, rel=1e-4)
     assert any(k["name"] == "T_Kmax" for k in first["checks"])
+
+
+def test_temperature_figure_draws_a_makers_table():
+    from calc.coupling_plots import temperature_factor_figure
+
+    fig = temperature_factor_figure(Q_(60, "degC"), factor_table("temperature", "roba-es"))
+    case = next(line for line in fig.axes[0].lines if line.get_gid() == "case")
+    assert float(case.get_ydata()[0]) == 1.5
+    assert "holds up to it" in fig.axes[0].get_title()

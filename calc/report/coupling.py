@@ -147,7 +147,8 @@ def figures(report) -> list:
     out = [(natural_frequency_figure(sel, f_e_min(f_er=cc.inputs["excitation_frequency"])),
             prose("Natural frequency of each coupling candidate against the lowest allowed, 2 f_er (E7)."))]
     if (sel.catalog.text["type"] == "elastomer").any():
-        out.append((temperature_factor_figure(cc.inputs["temperature"]), "Temperature factor of elastomer couplings (E9)."))
+        out.append((temperature_factor_figure(cc.inputs["temperature"], cc.inputs["temperature_factors"]),
+                    prose(f"Temperature factor of elastomer couplings ({cc.inputs['temperature_factors'].source}).")))
     return out
 
 
