@@ -217,7 +217,7 @@ def test_case_names_a_shock_table(capsys, write_case, tmp_path):
     code, out, err = run(capsys, write_case(head + PROFILE_TOML), "--json")
     assert code == 0, err
     r = json.loads(out)
-    assert r["cyclic"]["fs"] == 1.5
+    assert r["cyclic"]["fs"] == 1.5 and r["cyclic"]["fs_table"].endswith("shock.csv: a test table")
     code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML, "plain.toml"), "--json")
     assert json.loads(out)["cyclic"]["fs"] == 1.3
     named = HEAD_TOML.replace('ratio = 10', 'ratio = 10\nshock_factors = "source"')
