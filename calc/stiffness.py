@@ -172,11 +172,13 @@ class StiffnessCurve:
         return [twist] if x == 0 else [twist, secant_stiffness.step(T=t, phi=twist.result)]
 
     def secant(self, torque):
-        """The secant stiffness ``|T| / φ(T)`` (scalar or array); ``K_1`` at zero torque."""
+        """The secant stiffness ``|T| / φ(T)`` (scalar or array); up to ``T_1``, zero torque
+        included, that is ``K_1`` itself."""
         t = abs(as_kind(torque, "torque", "torque"))
+        first = t.m_as("N*m") <= self.T_1.m_as("N*m")
         with np.errstate(invalid="ignore", divide="ignore"):
             c = secant_stiffness(T=t, phi=self.twist(t)).m_as("N*m/arcmin")
-        return Q_(np.where(t.magnitude == 0, self.K_1.m_as("N*m/arcmin"), c)[()], "N*m/arcmin")
+        return Q_(np.where(first, self.K_1.m_as("N*m/arcmin"), c)[()], "N*m/arcmin")
 
 
 @dataclass(frozen=True)
