@@ -83,12 +83,34 @@ def test_review_items_of_the_example(case):
     assert kinds == ["HTML", "Figure", "HTML", "DataFrame", "HTML", "DataFrame", "HTML", "DataFrame", "Figure"]
 
 
-def test_a_section_that_no_longer_fits_is_left_out_not_everything(case):
-    # At ratio 8 the accuracy chain's NPT035-10 (a 10:1 part) is no longer in the drive train.
+def test_the_accuracy_chain_follows_a_change_of_ratio(case):
+    # The example's chain takes the selections' parts, so at ratio 8 it is AKD-30 and TP010-8
+    # (catalogs/gearboxes.csv: C_t21 = 23 N·m/arcmin, backlash 3 arcmin, T_2N = 80 N·m). By hand:
+    # AKD-30's 25 000 N·m/rad = 7.27221 N·m/arcmin × 8² = 465.421 at the output (E11);
+    # C_total = 1 / (1/465.421 + 1/23) = 21.9170 N·m/arcmin; lost motion at 8 N·m = 3 + 8/21.9170
+    # = 3.36501 arcmin (E12); 8 N·m > 3 % of 80 N·m and the trace of NPT035-10 no longer applies,
+    # so the positioning accuracy is 0 + 8/21.9170 = 0.36501 arcmin (E13).
+    r = evaluate(with_changes(case, ratio=Q_(8, "")))
+    a = r["accuracy"]
+    assert [c["name"] for c in a["components"]] == ["AKD-30", "TP010-8"]
+    assert a["C_total"]["value"] == pytest.approx(21.9170, abs=1e-4)
+    assert a["lost_motion"]["value"] == pytest.approx(3.36501, abs=1e-5)
+    assert a["positioning_accuracy"]["value"] == pytest.approx(0.36501, abs=1e-5)
+    assert "the transmission_trace of NPT035-10 not used: the selection chose TP010-8" in a["components"][1]["source"]
+    assert "measured_trace" not in a["components"][1]
+    items = review_items(with_changes(case, ratio=Q_(8, "")))
+    assert "PASS" in items[0].data and "TP010-8" in items[0].data
+
+
+def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
+    # A chain that names NPT035-10 (a 10:1 part) no longer fits the drive train at ratio 8.
     # The review still shows the gearbox and the coupling, and says FAIL with the reason.
     import pandas as pd
 
-    items = review_items(with_changes(case, ratio=Q_(8, "")))
+    text = EXAMPLE.read_text()
+    start = text.index("[[accuracy.component]]")
+    named = text[:start] + '[[accuracy.component]]\npart = "NPT035-10"\n'
+    items = review_items(with_changes(read_case(write_case(named)), ratio=Q_(8, "")))
     verdict = items[0].data
     assert "FAIL" in verdict and "The accuracy section cannot be evaluated with these inputs" in verdict
     assert "NPT035-10" in verdict
