@@ -148,7 +148,8 @@ M_Smax = Formula(
         _K_T,
     ),
     lambda sp, T_S, S_z, K_T: sp.Mul(T_S, S_z, K_T, evaluate=False),
-    "KTR ROTEX and R+W EK coupling selection: T_Kmax >= T_S · S_z · S_t (temperature factor S_t, S_υ); "
+    "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing of "
+    "elastomer couplings EK (T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature factor S_υ); "
     "Mayr ROBA-ES B.9.6.EN p. 26 (S_z, S_δ); T_S read as the source's M_N (a drive-side shock: M_a · J_load / (J_load + J_drive) · S_A)",
 )
 
