@@ -307,3 +307,11 @@ def test_temperature_figure_draws_a_makers_table():
     case = next(line for line in fig.axes[0].lines if line.get_gid() == "case")
     assert float(case.get_ydata()[0]) == 1.5
     assert "holds up to it" in fig.axes[0].get_title()
+
+
+def test_summary_names_a_makers_temperature_table(capsys, write_case):
+    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'temperature_factors = "roba-es"\n'))
+    assert code == 0, err
+    assert "temperature factor 1.5 (Mayr, Installation and Operational Instructions for ROBA-ES" in out
+    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER, "plain.toml"))
+    assert "temperature factor 1.3 (E9)" in out

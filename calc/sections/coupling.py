@@ -12,7 +12,7 @@ from ..bands import factor_table
 from ..case import Case, Table, once
 from ..catalog import Catalog, display_path, load_catalog, resolve
 from ..coupling import (
-    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TYPES, CouplingSelection, J_load_at_input, check_types, f_e_min, order_lines,
+    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, J_load_at_input, check_types, f_e_min, order_lines,
     select_coupling,
 )
 from ..errors import CalcError
@@ -226,7 +226,8 @@ class CouplingResult:
         lines = [
             f"Coupling candidates (catalog {section['catalog']}{', type ' + section['type'] if section['type'] else ''}):",
             f"  M_N = {quantity_text(section['M_N'])} (S_A = {section['service_factor']:g}, E8); temperature factor "
-            f"{section['temperature_factor']:g} (E9); 2 f_er = {quantity_text(section['f_e_min'])} (E7)",
+            f"{section['temperature_factor']:g} ({'E9' if section['temperature_factors'] == TEMPERATURE_FACTORS.source else section['temperature_factors']}); "
+            f"2 f_er = {quantity_text(section['f_e_min'])} (E7)",
         ]
         if section["start_factor"] is not None:
             lines.append(f"  start factor S_z = {section['start_factor']:g} at {quantity_text(section['starts_per_hour'])} ({section['start_factors']})")
