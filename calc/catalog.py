@@ -83,6 +83,12 @@ class Schema:
     text_columns: tuple[str, ...] = ("part", "source")
     optional_text: tuple[str, ...] = ()
     rules: tuple[Rule, ...] = ()
+    optional_columns: tuple[Column, ...] = ()  # numeric columns a file may leave out (every cell then empty)
+
+    @property
+    def all_columns(self) -> tuple[Column, ...]:
+        """The numeric columns, those a file may leave out last."""
+        return (*self.columns, *self.optional_columns)
 
 
 @dataclass
@@ -242,6 +248,8 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
             raise CalcError(f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}")
         unit_text = columns[c.name][1]
         units[c.name] = _header_unit(path, c, unit_text)
+    for c in schema.optional_columns:
+        units[c.name] = _header_unit(path, c, columns[c.name][1]) if c.name in columns else ureg.parse_units(kind(c.kind).si_unit)
 
     # The cells of all rows in one flat list (a column is a slice of it), up to the first row whose
     # length differs from the header's; that row is reported after any problem in the rows before
@@ -261,10 +269,10 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     lines = np.array(lines, dtype=int)
 
     def column(name):
-        return cells[columns[name][0]::width]
+        return cells[columns[name][0]::width] if name in columns else [""] * len(lines)  # an optional column left out
 
     texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    numbers = {c.name: _numbers(column(c.name)) for c in schema.columns}
+    numbers = {c.name: _numbers(column(c.name)) for c in schema.all_columns}
     problem = _first_problem(path, schema, lines, texts, numbers)
     if problem:
         raise CalcError(problem)
@@ -279,7 +287,7 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     if len(repeats):
         j = repeats[0]
         raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row {lines[first[j]]}")
-    values = {c.name: Q_(numbers[c.name].values, units[c.name]) for c in schema.columns}
+    values = {c.name: Q_(numbers[c.name].values, units[c.name]) for c in schema.all_columns}
     for rule in schema.rules:
         with np.errstate(invalid="ignore"):
             ok = np.asarray(rule.holds(values), dtype=bool)
@@ -298,7 +306,7 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         values=values,
         text=text_arrays,
         lines=lines,
-        header_units={c.name: columns[c.name][1].strip() for c in schema.columns},
+        header_units={c.name: columns[c.name][1].strip() if c.name in columns else kind(c.kind).si_unit for c in schema.all_columns},
     )
 
 
@@ -356,7 +364,7 @@ def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict
     for order, name in enumerate(texts):
         if name in schema.text_columns and "" in texts[name]:
             firsts.append((texts[name].index(""), order, name))
-    for order, c in enumerate(schema.columns, start=len(texts)):
+    for order, c in enumerate(schema.all_columns, start=len(texts)):
         bad = numbers[c.name].bad(c)
         if bad.any():
             firsts.append((int(np.argmax(bad)), order, c.name))
@@ -365,7 +373,7 @@ def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict
     j, _, name = min(firsts)
     if name in texts:
         return f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"
-    c = next(c for c in schema.columns if c.name == name)
+    c = next(c for c in schema.all_columns if c.name == name)
     return numbers[name].problem(j, c, f"{path}, row {lines[j]} ({texts['part'][j]}), column {name}")
 
 

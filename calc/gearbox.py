@@ -27,6 +27,16 @@ from .checks import CheckArray, rank, selected_part
 from .profile import Profile, T_2m, Z_h, duty, n_2m
 from .units import Q_, as_kind, magnitude_in, pretty_unit
 
+#: Columns of a gearbox with a published stiffness curve (strain-wave gears, calc.stiffness.StiffnessCurve):
+#: limit torques and slopes; a catalog may leave them out.
+CURVE_COLUMNS = (
+    Column("T_L1", "torque", "first limit torque of the stiffness curve (T1)", required=False),
+    Column("T_L2", "torque", "second limit torque of the stiffness curve (T2)", required=False),
+    Column("K_1", "stiffness", "stiffness from 0 to T_L1", required=False),
+    Column("K_2", "stiffness", "stiffness from T_L1 to T_L2", required=False),
+    Column("K_3", "stiffness", "stiffness above T_L2", required=False),
+)
+
 SCHEMA = Schema(
     kind="gearbox",
     columns=(
@@ -48,7 +58,14 @@ SCHEMA = Schema(
         Rule("T_2Not >= T_2B", no_less("T_2Not", "T_2B"), "T_2Not"),
         Rule("n_1max >= n_1N", no_less("n_1max", "n_1N"), "n_1max"),
         Rule("efficiency eta in (0, 1]", lambda v: (v["eta"].m_as("") <= 1.0), "eta"),
+        Rule(
+            "a stiffness curve in all of T_L1, T_L2, K_1, K_2, K_3 or in none",
+            lambda v: np.isin(sum(np.isnan(v[c.name].magnitude).astype(int) for c in CURVE_COLUMNS), (0, len(CURVE_COLUMNS))),
+            "K_3",
+        ),
+        Rule("T_L2 > T_L1", lambda v: ~(v["T_L2"] <= v["T_L1"]), "T_L2"),
     ),
+    optional_columns=CURVE_COLUMNS,
 )
 
 #: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary), the

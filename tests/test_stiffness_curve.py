@@ -170,3 +170,62 @@ def test_figures_follow_the_curve():
     assert stiffness_chain_figure(chain, Q_(60, "N*m")).axes[0].get_title()
     plain = Chain((Component("g", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin")),))
     assert plain.stiffness_at(Q_([1, 2], "N*m")) is plain.stiffness
+
+
+# --- a gearbox catalog with stiffness-curve columns ----------------------------------------------
+
+GEARS = """part,series,ratio [1],T_2N [N*m],T_2B [N*m],T_2Not [N*m],n_1N [rpm],n_1max [rpm],eta [percent],backlash [arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],T_L1 [N*m],T_L2 [N*m],K_1 [N*m/rad],K_2 [N*m/rad],K_3 [N*m/rad],source
+SW-32-100,SW,100,100,200,400,2000,4000,80,0.3,,0.2,{curve},"a test row: the curve is HFUC-32-100's, the other figures are made up"
+"""
+HFUC = "29,108,6.7e4,1.1e5,1.2e5"
+
+
+def gear_catalog(tmp_path, curve=HFUC):
+    path = tmp_path / "gears.csv"
+    path.write_text(GEARS.format(curve=curve))
+    return path
+
+
+def test_a_catalog_part_with_a_stiffness_curve(capsys, write_case, tmp_path):
+    gear_catalog(tmp_path)
+    head = HEAD_TOML.replace("ratio = 10", 'ratio = 100\ncatalog = "gears.csv"')
+    section = '[accuracy]\napplied_torque = "60 N*m"\n[[accuracy.component]]\npart = "SW-32-100"\n'
+    code, out, err = run(capsys, write_case(head + PROFILE_TOML + section), "--json")
+    assert code == 0, err
+    member = json.loads(out)["accuracy"]["components"][0]
+    assert member["stiffness_curve"]["T2"] == {"value": 108.0, "unit": "N*m"}
+    assert member["twist_at_applied_torque"]["value"] == pytest.approx(Q_(29 / 6.7e4 + 31 / 1.1e5, "rad").m_as("arcmin"), rel=1e-9)
+
+
+def test_the_shipped_catalog_loads_without_the_curve_columns():
+    from calc.catalog import load_catalog, resolve
+    from calc.gearbox import SCHEMA
+
+    cat = load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA)
+    assert np.isnan(cat["K_1"].magnitude).all() and cat.header_units["K_1"] == "N*m/rad"
+
+
+@pytest.mark.parametrize(
+    "curve, message",
+    [
+        ("29,108,6.7e4,1.1e5,", r"row 2 \(SW-32-100\), column K_3: impossible value, expected a stiffness curve in all of T_L1, T_L2, K_1, K_2, K_3 or in none"),
+        ("108,29,6.7e4,1.1e5,1.2e5", r"row 2 \(SW-32-100\), column T_L2: impossible value, expected T_L2 > T_L1"),
+        ("29,108,-6.7e4,1.1e5,1.2e5", r"row 2 \(SW-32-100\), column K_1: expected a value above zero, found -6.7e4"),
+    ],
+)
+def test_a_bad_curve_in_a_catalog(tmp_path, curve, message):
+    from calc.catalog import load_catalog
+    from calc.gearbox import SCHEMA
+
+    with pytest.raises(CalcError, match=message):
+        load_catalog(gear_catalog(tmp_path, curve), SCHEMA)
+
+
+def test_a_curve_column_with_a_wrong_unit(tmp_path):
+    from calc.catalog import load_catalog
+    from calc.gearbox import SCHEMA
+
+    path = gear_catalog(tmp_path)
+    path.write_text(path.read_text().replace("K_1 [N*m/rad]", "K_1 [N*m]"))
+    with pytest.raises(CalcError, match=r"header, column K_1: expected a unit of stiffness"):
+        load_catalog(path, SCHEMA)

@@ -262,6 +262,9 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         if ratio is not None and not np.isclose(own_ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
             raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {own_ratio.m_as(''):g}, but the case's gearbox ratio is {ratio.m_as(''):g}")
         stiffness, backlash, nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]
+        if not np.isnan(rows["K_1"][row].magnitude):  # the catalog gives the gear's stiffness curve
+            curve = StiffnessCurve(*(rows[name][row] for name in ("T_L1", "T_L2", "K_1", "K_2", "K_3")))
+            stiffness = curve.K_1
         for column, q in (("C_t21", stiffness), ("backlash", backlash)):
             if np.isnan(q.magnitude):
                 raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), column {column}: expected a value, found an empty cell")
