@@ -269,10 +269,12 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     lines = np.array(lines, dtype=int)
 
     def column(name):
-        return cells[columns[name][0]::width] if name in columns else [""] * len(lines)  # an optional column left out
+        return cells[columns[name][0]::width]
 
     texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    numbers = {c.name: _numbers(column(c.name)) for c in schema.all_columns}
+    n = len(lines)
+    left_out = _Numbers([""] * n, np.full(n, np.nan), np.ones(n, bool), np.zeros(n, bool))  # an optional column not in the file
+    numbers = {c.name: _numbers(column(c.name)) if c.name in columns else left_out for c in schema.all_columns}
     problem = _first_problem(path, schema, lines, texts, numbers)
     if problem:
         raise CalcError(problem)
