@@ -122,7 +122,8 @@ class StiffnessCurve:
     Examples
     --------
     Harmonic Drive's engineering data for HFUC-32-100: T_1 = 29 N·m, K_1 = 6.7·10⁴ N·m/rad,
-    T_2 = 108 N·m, K_2 = 1.1·10⁵ N·m/rad; at 60 N·m, φ = 29/6.7e4 + 31/1.1e5 = 7.15·10⁻⁴ rad:
+    T_2 = 108 N·m, K_2 = 1.1·10⁵ N·m/rad; at 60 N·m, φ = 29/6.7e4 + 31/1.1e5 = 7.15·10⁻⁴ rad
+    (``K_3`` does not enter below ``T_2``; 1.2·10⁵ N·m/rad here stands in for it):
 
     >>> hfuc = StiffnessCurve(Q_(29, "N*m"), Q_(108, "N*m"), Q_(6.7e4, "N*m/rad"), Q_(1.1e5, "N*m/rad"), Q_(1.2e5, "N*m/rad"))
     >>> print(f"{hfuc.twist(Q_(60, 'N*m')).m_as('rad'):.2e}")
