@@ -63,6 +63,15 @@ class Table:
             raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
         return value
 
+    def catalogs(self, key: str, default: str):
+        """A catalog key: one name or path, or a list of them ranked together."""
+        value = self.data.get(key, default)
+        if isinstance(value, list) and value and all(isinstance(v, str) for v in value):
+            return value
+        if not isinstance(value, str):
+            raise CalcError(f"{self.where(key)}: expected a catalog name or path in quotes, or a list of them, found {value!r}")
+        return value
+
     def table(self, key: str, allowed: tuple[str, ...]) -> "Table | None":
         if key not in self.data:
             return None
@@ -85,12 +94,19 @@ class Case:
     profile: Profile
     motor_peak_torque: object = None
     motor_inertia: object = None
+    motor_rated_torque: object = None
+    motor_max_speed: object = None
     load_inertia: object = None
     ratio: object = None
-    gearbox_catalog: str | None = None
+    gearbox_catalog: str | list | None = None
     gearbox_part: str | None = None
     shock_factors: object = None  # the table of f_s (calc.bands.BandTable) of [gearbox]; None: the source's
+    emergency_stop_torque: object = None
+    gearbox_hubs: str | list | None = None
+    motor_shaft: object = None  # Bore of the motor's shaft: picks the gearbox's clamping hub
+    output_load: object = None  # calc.gearbox.OutputLoad: forces on the gearbox output
     sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
+    motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record
     raw: bytes = b""
     # What has been computed from the case, by name (see :func:`once`); a changed copy starts empty.
     computed: dict = field(default_factory=dict, init=False, repr=False, compare=False)
@@ -111,9 +127,10 @@ def once(case: Case, name: str, compute):
 def read_case(path) -> Case:
     """Read and check a case file; raise :class:`CalcError` naming the file and key on bad input.
 
-    The shared inputs are read here by their sections (:mod:`calc.sections`): the load cycle, the
-    motor and load, the gearbox; the further sections keep their tables for evaluation."""
-    from .sections import FURTHER, TOP_KEYS, drive, duty, gearbox
+    The shared inputs are read here by their sections (:mod:`calc.sections`): the load cycle
+    (typed, or derived from the moves and the mechanism or from a drive record), the motor and
+    load, the gearbox; the further sections keep their tables for evaluation."""
+    from .sections import FURTHER, TOP_KEYS, drive, duty, gearbox, motion
 
     path = Path(path)
     if path.is_dir():
@@ -134,8 +151,13 @@ def read_case(path) -> Case:
         # Refused, not escaped: the title goes to the terminal, the JSON and the LaTeX report, and
         # a control character (an escape sequence, a line break) means nothing in any of them.
         raise CalcError(f"{top.where('title')}: expected one line of printable text, found the control character U+{ord(control):04X}")
-    case = Case(path=path, title=title, profile=duty.read(top), raw=raw)
+    case = Case(path=path, title=title, profile=None, raw=raw)
+    motion.read(top, case)
+    if case.motion is None:
+        case.profile = duty.read(top)
     drive.read(top, case)
+    if case.motion is not None and case.motion.J_L is not None:
+        case.load_inertia = case.motion.J_L
     gearbox.read(top, case)
     case.sections = {name: data[name] for name in FURTHER if name in data}
     return case

@@ -45,6 +45,11 @@ def with_changes(
     >>> changed = with_changes(case, motor_peak_torque=Q_(30, "N*m"))
     >>> changed.motor_peak_torque, case.motor_peak_torque
     (<Quantity(30, 'newton * meter')>, <Quantity(12.0, 'newton * meter')>)
+
+    The example derives its cycle from its motion; a changed segment makes the cycle a typed one:
+
+    >>> with_changes(case).motion is case.motion, with_changes(case, durations=2 * case.profile.durations).motion
+    (True, None)
     """
     p = case.profile
     durations = p.durations if durations is None else durations
@@ -59,9 +64,11 @@ def with_changes(
     if applied_torque is not None and "accuracy" in sections:
         sections["accuracy"]["applied_torque"] = f"{applied_torque.m_as('N*m'):.12g} N*m"
     given = dict(ratio=ratio, motor_peak_torque=motor_peak_torque, motor_inertia=motor_inertia, load_inertia=load_inertia)
+    same = np.allclose(durations.m_as("s"), p.durations.m_as("s"), rtol=1e-9) and np.allclose(torques.m_as("N*m"), p.torques.m_as("N*m"), rtol=1e-9)
     return dataclasses.replace(
         case,
         profile=Profile.from_segments(segments, where=f"{case.path}: profile"),
+        motion=case.motion if same else None,  # changed segments are typed: the derived motion no longer holds
         sections=sections,
         **{k: v for k, v in given.items() if v is not None},
     )

@@ -19,7 +19,7 @@ import pytest
 from calc.case import read_case
 from calc.sections import evaluate
 
-from .conftest import EXAMPLE, ROOT
+from .conftest import DERIVED_EXAMPLE as EXAMPLE, ROOT  # the example case as shipped
 
 PIP = ["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "--no-index", "--no-deps", "--no-build-isolation"]
 
@@ -72,7 +72,7 @@ def test_pip_install_runs_the_example_case_from_package_data(source, tmp_path):
     target = tmp_path / "site"
     run([sys.executable, *PIP, "--target", str(target), str(source)], env=child_env())
     installed = target / "calc"
-    assert sorted(p.name for p in (installed / "catalogs").glob("*.csv")) == ["couplings.csv", "gearboxes.csv"]
+    assert sorted(p.name for p in (installed / "catalogs").glob("*.csv")) == ["couplings.csv", "gearbox-hubs.csv", "gearboxes.csv"]
     assert not list(installed.rglob("*.pdf"))  # generated reports stay out of the package
 
     # The example case and the measurement it names (../data/...) in a folder of their own.

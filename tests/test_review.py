@@ -30,9 +30,9 @@ def test_no_change_is_the_same_case(case):
 
 
 def test_a_stronger_motor_fails_every_gearbox(case):
-    # 30 N·m · 10 · 1.3 · 0.97 = 378.3 N·m, above every T_2B at ratio 10 (at most 220 N·m).
-    r = evaluate(with_changes(case, motor_peak_torque=Q_(30, "N*m")))
-    assert r["cyclic"]["T2max"]["value"] == pytest.approx(378.3)
+    # 400 N·m · 10 · 1.3 · 0.95 = 4940 N·m, above every T_2B at ratio 10 (at most TP500-10's 4000 N·m).
+    r = evaluate(with_changes(case, motor_peak_torque=Q_(400, "N*m")))
+    assert r["cyclic"]["T2max"]["value"] == pytest.approx(4940)
     assert r["gearbox"]["selected"] is None
     assert case.motor_peak_torque == Q_(12, "N*m")  # the case itself is untouched
 
@@ -66,9 +66,12 @@ def test_panel_controls_re_evaluate_the_case():
     review = DesignReview(EXAMPLE)
     assert {"ratio", "t_1", "T_1", "T_1B", "J_motor", "J_L", "temperature", "applied_torque"} <= set(review.controls)
     assert "PASS" in review.items()[0].data
-    review.controls["T_1B"].value = 30.0
-    assert "FAIL" in review.items()[0].data and "378.3" in review.items()[0].data
-    assert "FAIL" in review.output.outputs[0]["data"]["text/html"]  # the panel's output follows the control
+    # The slider's top, 5 · 12 = 60 N·m: T_2max = 60 · 10 · 1.3 · 0.97 = 756.6 N·m exceeds T_2B of
+    # NPT035-10 (220), NPS045-10 and NPT045-10 (400) and TP050-10 (648); TP300-10 (η 0.95: 741 N·m
+    # against 2280 N·m) is the smallest adequate gearbox.
+    review.controls["T_1B"].value = 60.0
+    assert "gearbox TP300-10" in review.items()[0].data
+    assert "gearbox TP300-10" in review.output.outputs[0]["data"]["text/html"]  # the panel's output follows the control
 
 
 def test_a_case_that_cannot_be_evaluated_says_why_instead_of_raising(case):
@@ -116,7 +119,9 @@ def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
     assert "NPT035-10" in verdict
     tables = [x for x in items if isinstance(x, pd.DataFrame)]
     gearbox = tables[0]
-    assert set(gearbox["part"]) == {"TP010-8", "NPT035-8", "SP075-8"}  # catalogs/gearboxes.csv, ratio 8
+    # catalogs/gearboxes.csv, the complete rows at ratio 8 (the SP+ rows are partial, never ranked).
+    assert set(gearbox["part"]) == {f"{s}-8" for s in ("TP004", "TP010", "TP050", "TP300", "TP500", "NPT005", "NPT015", "NPT025",
+                                                         "NPT035", "NPT045", "NPS015", "NPS045")}
     assert len(tables) == 2  # gearbox and coupling candidates; no accuracy table
 
 

@@ -120,7 +120,7 @@ def test_summary_rows_are_plain_data_one_per_case(capsys, tmp_path):
     assert example["chosen"] == {"gearbox": "NPT035-10", "coupling": "AKD-30"}
     assert example["worst"]["check"] == "T_2max <= T_2B" and example["worst"]["part"] == "NPT035-10"
     assert example["worst"]["utilization"] == pytest.approx(12 * 10 * 1.3 * 0.97 / 220)
-    assert example["report"] == "indexing-table.pdf" and example["report_path"] == str(tmp_path / "out" / "indexing-table.pdf")
+    assert example["report"] == "indexing-table-profile.pdf" and example["report_path"] == str(tmp_path / "out" / "indexing-table-profile.pdf")
     assert example["error"] is None and example["reason"] is None
     # Failing: no gearbox passes; its worst check is over 1 (378.3 / 220 = 1.72 for NPT035-10).
     assert failing["chosen"] == {"gearbox": None} and failing["worst"]["utilization"] > 1
@@ -187,10 +187,10 @@ def test_summary_of_three_cases(capsys, three_cases):
     cases, out, proc = three_cases
     # A case that cannot be read exits 2 (spec, "Exit status"); every report and the summary are written.
     assert proc.returncode == 2, proc.stderr
-    assert sorted(p.name for p in out.iterdir()) == ["failing.pdf", "indexing-table.pdf", "summary.csv", "summary.pdf", "unreadable.pdf"]
+    assert sorted(p.name for p in out.iterdir()) == ["failing.pdf", "indexing-table-profile.pdf", "summary.csv", "summary.pdf", "unreadable.pdf"]
     assert proc.stdout.strip().splitlines()[-1] == f"1 PASS, 2 FAIL, 0 NOT DECIDED  ->  {out / 'summary.pdf'}  {out / 'summary.csv'}"
     rows = read_csv(out / "summary.csv")
-    assert [r["report"] for r in rows] == ["indexing-table.pdf", "failing.pdf", "unreadable.pdf"]
+    assert [r["report"] for r in rows] == ["indexing-table-profile.pdf", "failing.pdf", "unreadable.pdf"]
     for row, case in zip(rows, cases):
         check_row_against_json(capsys, row, case)
 
@@ -209,7 +209,7 @@ def test_summary_of_three_cases(capsys, three_cases):
         assert digest in text
     assert text.count("catalogs/gearboxes.csv\n") >= 1 and len(re.findall(r"SHA-256\s+[0-9a-f]{64}", text)) == 5
     # Each report's file name links to it, relative to the summary.
-    assert set(links(out / "summary.pdf")) == {"indexing-table.pdf", "failing.pdf", "unreadable.pdf"}
+    assert set(links(out / "summary.pdf")) == {"indexing-table-profile.pdf", "failing.pdf", "unreadable.pdf"}
 
 
 @needs_tex

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..case import Case, Table
+from ..case import Case, Table, once
 from ..cycle import SampledCycle
 from ..errors import CalcError
 from ..gearbox import SHOCK_FACTORS, shock_factor
@@ -95,11 +95,18 @@ def applies(case: Case) -> bool:
 
 
 def evaluate(case: Case) -> DutyResult:
+    """The duty of the case's load cycle; computed once per case, so that a section after it (the
+    motor's side) reads the same result, with the sampled cycle where the motion form gives it."""
+    return once(case, NAME, lambda: _evaluate(case))
+
+
+def _evaluate(case: Case) -> DutyResult:
     p = case.profile
     seg = p.moving_values()
     zh = Z_h(t_cycle=p.t_cycle)
     table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors
-    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh, table)), fs_table=table.source)
+    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh, table)),
+                     cycle=None if case.motion is None else case.motion.cycle, fs_table=table.source)
     if gearbox.applies(case):
         selection = gearbox.gearbox_selection(case)
         if selection.T_2max is not None:
