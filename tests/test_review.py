@@ -1,4 +1,5 @@
-"""The design review: changed copies of a case, and the panel that re-evaluates them.
+"""The design review: changed copies of a case, the inputs' specs, what the panel shows, and the
+panel that re-evaluates them (the served page in a browser: test_review_browser.py).
 
 Expected numbers are worked by hand from the example case (cases/indexing-table.toml):
 T_2max = T_1B · i · f_s · η, with f_s = 1.3 at Z_h = 1800 /h and η = 0.97 (NPT035-10).
@@ -10,7 +11,8 @@ import pytest
 from calc import Q_
 from calc.case import read_case
 from calc.sections import evaluate as evaluate_case
-from calc.review import DesignReview, review_items, with_changes
+from calc.review import DesignReview, evaluated, input_specs, results_html, with_changes, with_inputs
+from calc.review.inputs import nice_step
 
 from .conftest import EXAMPLE
 
@@ -62,44 +64,132 @@ def test_temperature_and_applied_torque_reach_their_sections(case):
     assert r["accuracy"]["lost_motion"]["value"] == pytest.approx(r0["accuracy"]["lost_motion"]["value"] + extra)
 
 
-def test_panel_controls_re_evaluate_the_case():
+def test_key_paths_reach_the_case_as_the_named_arguments_do(case):
+    by_path = with_inputs(case, {"gearbox.ratio": Q_(8, ""), "profile[4].duration": Q_(3, "s"), "accuracy.applied_torque": Q_(16, "N*m")})
+    by_name = with_changes(case, ratio=Q_(8, ""), durations=Q_(np.array([0.2, 0.6, 0.2, 3.0]), "s"), applied_torque=Q_(16, "N*m"))
+    assert by_path.ratio == by_name.ratio == Q_(8, "")
+    assert by_path.sections == by_name.sections
+    torque = with_inputs(case, {"accuracy.applied_torque": Q_(16, "N*m")})  # written as text, read back by the section
+    assert evaluate(torque)["accuracy"]["applied_torque"]["value"] == pytest.approx(16)
+    assert np.array_equal(by_path.profile.durations.m_as("s"), by_name.profile.durations.m_as("s"))
+
+
+def test_input_specs_of_the_example(case):
+    specs = {s.key: s for s in input_specs(case, ratios=(5.0, 10.0))}
+    assert list(specs) == ["gearbox.ratio", "profile[1].duration", "profile[1].torque", "profile[2].duration", "profile[2].torque",
+                           "profile[3].duration", "profile[3].torque", "profile[4].duration", "motor.peak_torque", "motor.inertia",
+                           "load.inertia", "coupling.temperature", "accuracy.applied_torque"]
+    assert specs["gearbox.ratio"].options == (5.0, 10.0)
+    assert specs["motor.peak_torque"].text == "motor peak torque T_1B [N·m]"
+    assert specs["load.inertia"].text == "load inertia J_L [kg·cm²]"
+    assert specs["coupling.temperature"].text == "coupling temperature ϑ [°C]"
+    # The decel torque -45 N·m keeps its sign: -90 to 0 N·m over some 200 pixels, in steps of 0.5 N·m.
+    t3 = specs["profile[3].torque"]
+    assert (t3.low, t3.high, t3.step, t3.value) == (-90.0, 0.0, 0.5, -45.0)
+    # Every value sits on its step, and every range holds its value; a duration never reaches zero.
+    for s in specs.values():
+        if not s.options:
+            assert s.low <= s.value <= s.high and s.value == round(round(s.value / s.step) * s.step, 12)
+    assert all(specs[f"profile[{k}].duration"].low > 0 for k in range(1, 5))
+
+
+@pytest.mark.parametrize("span, step", [(300.0, 2.0), (1.0, 0.005), (7350.0, 50.0), (90.0, 0.5), (140.0, 1.0)])
+def test_steps_are_round_and_about_a_pixel(span, step):
+    assert nice_step(span) == step
+    assert span / 200 <= step < 2.5 * span / 200
+
+
+def test_results_html_of_the_example(case):
+    text = results_html(*evaluated(case))
+    assert '<span class="word pass">PASS</span>' in text
+    assert "Gearbox <b>NPT035-10</b> · Coupling <b>AKD-30</b>" in text
+    # Governing checks typeset as in the figures, no code spelling left.
+    assert "<i>T</i><sub>2max</sub> ≤ <i>T</i><sub>2B</sub>" in text and "<i>K</i><sub>ϑ</sub>" in text
+    assert "T_2B" not in text and "C_total" not in text and "N*m" not in text and "NaN" not in text and "nan" not in text
+    # Full reasons with the rated value and the excess (TP010-10: T_2max 151.3 N·m against T_2B 126 N·m).
+    assert "rated 126 N·m, 20.1 % over" in text
+    # No index column: the first column of each candidate table is the rank.
+    assert text.count("<thead><tr><th>rank</th>") == 2
+    assert "True" not in text and "False" not in text
+
+
+def test_a_failing_accuracy_requirement_gives_its_numbers(case):
+    # T = 2 N·m is below 3 % of T_N... the 3 % rule: 2 N·m < 0.03 · 110 N·m = 3.3 N·m, so the
+    # positioning accuracy is the lost motion (E13): 9.049 arcmin against the required 5 arcmin.
+    text = results_html(*evaluated(with_changes(case, applied_torque=Q_(2, "N*m"))))
+    assert '<span class="word fail">FAIL</span>' in text
+    assert "positioning accuracy 9.049 arcmin &gt; required 5 arcmin, 81 % over" in text
+
+
+def test_panel_controls_re_evaluate_the_case(monkeypatch):
+    import calc.review.panel
+
+    drawn = []
+    monkeypatch.setattr(calc.review.panel, "_png", lambda figure: drawn.append(figure) or b"\x89PNG %d" % len(drawn))
     review = DesignReview(EXAMPLE)
-    assert {"ratio", "t_1", "T_1", "T_1B", "J_motor", "J_L", "temperature", "applied_torque"} <= set(review.controls)
-    assert "PASS" in review.items()[0].data
-    review.controls["T_1B"].value = 30.0
-    assert "FAIL" in review.items()[0].data and "378.3" in review.items()[0].data
-    assert "FAIL" in review.output.outputs[0]["data"]["text/html"]  # the panel's output follows the control
+    assert {"gearbox.ratio", "profile[1].duration", "profile[1].torque", "motor.peak_torque", "motor.inertia", "load.inertia",
+            "coupling.temperature", "accuracy.applied_torque"} <= set(review.controls)
+    first = review.generation
+    assert "PASS" in review.results.value and bytes(review.load_cycle.value)[:4] == b"\x89PNG"
+    assert len(drawn) == 2  # the load cycle and the stiffness chain
+    review.controls["motor.peak_torque"].value = 30.0
+    review.settled()
+    assert review.generation == first + 1  # one update per change
+    assert "FAIL" in review.results.value and "378.3" in review.results.value  # the panel follows the control
+    assert len(drawn) == 2  # neither figure's inputs changed: neither is drawn again
+    review.controls["profile[4].duration"].value = 3.0
+    review.settled()
+    assert len(drawn) == 3  # the load cycle only
+
+
+def test_changes_that_arrive_while_drawing_are_drawn_once_together():
+    review = DesignReview(EXAMPLE)
+    first = review.generation
+    for t in (13.0, 14.0, 15.0, 16.0, 17.0):
+        review.controls["motor.peak_torque"].value = t
+    review.settled()
+    assert first + 1 <= review.generation <= first + 5
+    assert "</i><sub>2max</sub> 214.4 N·m" in review.results.value  # 17 N·m · 10 · 1.3 · 0.97, the last value
 
 
 def test_a_case_that_cannot_be_evaluated_says_why_instead_of_raising(case):
-    items = review_items(with_changes(case, ratio=Q_(13, "")))
-    assert "FAIL" in items[0].data and "has ratio 13" in items[0].data
+    text = results_html(*evaluated(with_changes(case, ratio=Q_(13, ""))))
+    assert "FAIL" in text and "has ratio 13" in text
     bad = DesignReview(EXAMPLE.parent / "missing.toml")
     assert "the case file does not exist" in bad.message.value
 
 
-def test_review_items_of_the_example(case):
-    kinds = [type(x).__name__ for x in review_items(case)]
-    assert kinds == ["HTML", "Figure", "HTML", "DataFrame", "HTML", "DataFrame", "HTML", "DataFrame", "Figure"]
+def test_the_panel_offers_the_case_files_of_its_folder_only(tmp_path):
+    import shutil
+
+    for name in ("a.toml", "b.toml"):
+        shutil.copy(EXAMPLE, tmp_path / name)
+    (tmp_path / "notes.txt").write_text("not a case")
+    review = DesignReview(tmp_path / "a.toml")
+    assert [label for label, _ in review.case_file.options] == ["a.toml", "b.toml"]
+    review.case_file.value = tmp_path / "b.toml"
+    assert review.case.path == tmp_path / "b.toml"
 
 
 def test_a_section_that_no_longer_fits_is_left_out_not_everything(case):
     # At ratio 8 the accuracy chain's NPT035-10 (a 10:1 part) is no longer in the drive train.
     # The review still shows the gearbox and the coupling, and says FAIL with the reason.
-    import pandas as pd
-
-    items = review_items(with_changes(case, ratio=Q_(8, "")))
-    verdict = items[0].data
-    assert "FAIL" in verdict and "The accuracy section cannot be evaluated with these inputs" in verdict
-    assert "NPT035-10" in verdict
-    tables = [x for x in items if isinstance(x, pd.DataFrame)]
-    gearbox = tables[0]
-    assert set(gearbox["part"]) == {"TP010-8", "NPT035-8", "SP075-8"}  # catalogs/gearboxes.csv, ratio 8
-    assert len(tables) == 2  # gearbox and coupling candidates; no accuracy table
+    report, left_out = evaluated(with_changes(case, ratio=Q_(8, "")))
+    text = results_html(report, left_out)
+    assert "FAIL" in text and "The accuracy section cannot be evaluated with these inputs" in text
+    assert "NPT035-10" in text
+    assert {c["part"] for c in report.results["gearbox"]["candidates"]} == {"TP010-8", "NPT035-8", "SP075-8"}  # catalogs/gearboxes.csv, ratio 8
+    assert "Accuracy of the chain" not in text
 
 
-def test_slider_units_read_as_written():
+def test_slider_labels_read_as_written():
     panel = DesignReview(EXAMPLE)
-    described = [c.description for c in panel.controls.values()]
-    assert any(d.endswith("[kg·cm²]") for d in described)
-    assert not any("··" in d or "**" in d for d in described)
+    described = [s.text for s in panel.specs]
+    assert "load inertia J_L [kg·cm²]" in described
+    assert not any("··" in d or "**" in d or "*" in d for d in described)
+    assert all(c.tooltip for c in panel.controls.values())  # no empty ("null") tooltip
+
+
+def test_a_report_link_is_shown_beside_the_verdict():
+    panel = DesignReview(EXAMPLE, report_link=lambda path: f"reports/{path.stem}.pdf")
+    assert '<a href="reports/indexing-table.pdf"' in panel.results.value

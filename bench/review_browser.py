@@ -1,0 +1,135 @@
+"""The served design review (``make review``) in a real browser: headless Chromium from the system's
+packages, driven by Playwright. Used by the browser test (tests/test_review_browser.py) and by the
+benchmark's ``review_*`` lines.
+
+:func:`served` starts the server on a free port of this machine and stops it after;
+:func:`review_in_browser` opens the page as a reviewer would (1366 × 768), waits for the panel,
+changes inputs through the number fields and the ratio choice, and measures each change from the
+input to the new results on the page (the results carry a generation count). It keeps a
+screenshot of the page as first shown and after the changes.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+import socket
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.request
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+CHROMIUM = Path("/usr/bin/chromium")
+#: Chromium on a closed network: no background traffic, a fresh profile each run (given apart).
+CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                 "--disable-component-update", "--disable-sync", "--no-first-run"]
+SCREEN = {"width": 1366, "height": 768}
+RESULTS = ".design-review .dr[data-generation]"
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@contextlib.contextmanager
+def served(timeout: float = 60.0):
+    """The review page served on a free port of 127.0.0.1; yields its address."""
+    port = _free_port()
+    env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port)], cwd=ROOT, env=env,
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True)
+    url = f"http://127.0.0.1:{port}/"
+    try:
+        end = time.monotonic() + timeout
+        while True:
+            try:
+                urllib.request.urlopen(url + "voila/static/voila.js", timeout=2)  # a file: starts no kernel
+                break
+            except OSError:
+                if server.poll() is not None or time.monotonic() > end:
+                    raise RuntimeError(f"the review server did not start: {server.stderr.read().decode()[-2000:]}") from None
+                time.sleep(0.2)
+        yield url
+    finally:
+        os.killpg(server.pid, signal.SIGTERM)
+        try:
+            server.wait(10)
+        except subprocess.TimeoutExpired:
+            os.killpg(server.pid, signal.SIGKILL)
+            server.wait()
+
+
+@dataclass
+class Visit:
+    """What a visit measured and saw."""
+
+    ready: float  # s from asking for the page to the panel's results shown
+    changes: list = field(default_factory=list)  # (what, s from the input to the new results)
+    seen: list = field(default_factory=list)  # (what, the results' text after it)
+    shots: list = field(default_factory=list)  # screenshot files
+
+    @property
+    def times(self) -> list[float]:
+        return [t for _, t in self.changes]
+
+    @property
+    def median(self) -> float:
+        return statistics.median(self.times)
+
+
+def _row(page, label: str):
+    """The control row whose label (its tooltip, with unit) is ``label``."""
+    return page.locator(".widget-hbox", has=page.locator(f'span[title="{label}"]')).last
+
+
+def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1) -> Visit:
+    """Open the page, then make each change ``(label, value)`` in turn (a number field's value, or
+    the option of a choice), ``repeat`` times over; each is timed until the results follow."""
+    from playwright.sync_api import sync_playwright
+
+    shots.mkdir(parents=True, exist_ok=True)
+    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
+        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
+                                                        args=CHROMIUM_ARGS, viewport=SCREEN)
+        try:
+            page = browser.new_page()
+            start = time.perf_counter()
+            page.goto(url)
+            page.wait_for_selector(RESULTS, timeout=60_000)
+            visit = Visit(ready=time.perf_counter() - start)
+            page.wait_for_timeout(300)  # the figures' images decode
+            visit.shots.append(shots / "review-first.png")
+            page.screenshot(path=str(visit.shots[-1]))
+            visit.seen.append(("first", page.inner_text(RESULTS)))
+            for _ in range(repeat):
+                for label, value in changes:
+                    generation = int(page.get_attribute(RESULTS, "data-generation"))
+                    row = _row(page, label)
+                    start = time.perf_counter()
+                    if row.locator("select").count():
+                        row.locator("select").select_option(label=value)
+                    else:
+                        field_ = row.locator("input[type=number]")
+                        field_.fill(value)
+                        field_.press("Enter")
+                    page.wait_for_function(
+                        f"() => Number(document.querySelector('{RESULTS}')?.dataset.generation) > {generation}",
+                        polling="raf", timeout=30_000)
+                    visit.changes.append((f"{label} = {value}", time.perf_counter() - start))
+                    visit.seen.append((f"{label} = {value}", page.inner_text(RESULTS)))
+            page.wait_for_timeout(300)
+            visit.shots.append(shots / "review-changed.png")
+            page.screenshot(path=str(visit.shots[-1]))
+            visit.shots.append(shots / "review-whole-panel.png")
+            page.locator(".design-review").screenshot(path=str(visit.shots[-1]))
+            return visit
+        finally:
+            browser.close()

@@ -1,0 +1,218 @@
+"""The design-review panel (ipywidgets): the controls on the left, the results beside them.
+
+Left: the case, chosen among the case files of its folder (no path is typed, so the panel reads no
+other file), one row per input (:func:`calc.review.inputs.input_specs`: the label with its unit, a
+slider, a number field for an exact value, linked in the browser), and the load-cycle figure.
+Right: the results as one HTML text (:func:`calc.review.view.results_html`: verdict and chosen
+parts first, then the governing checks, so they show without scrolling) and the stiffness-chain
+figure.
+
+A change updates the page once: the results text is replaced whole (it never collapses, so no
+stale copy shows), and a figure only when what it draws changed (each figure's PNG is kept by its
+inputs). Changes that arrive while one is being drawn are taken together: a worker thread draws the
+controls' latest values, then looks again.
+"""
+
+from __future__ import annotations
+
+import io
+import threading
+from pathlib import Path
+
+from ..case import Case, read_case
+from ..errors import CalcError
+from ..units import Q_, pretty_unit
+from .inputs import InputSpec, input_specs, with_inputs
+from .view import FAIL_COLOR, evaluated, results_html, typeset
+
+LABEL_WIDTH = "15.5em"
+FIGURE_DPI = 72  # the PNG's pixels at the width the column shows it
+
+
+def _png(figure) -> bytes:
+    out = io.BytesIO()
+    figure.savefig(out, format="png", dpi=FIGURE_DPI)
+    return out.getvalue()
+
+
+def _ratios(case: Case) -> list[float]:
+    """The ratios of the case's gearbox catalog (the choices of the ratio control)."""
+    from ..catalog import load_catalog, resolve
+    from ..gearbox import SCHEMA
+
+    catalog = load_catalog(resolve(case.gearbox_catalog, case.folder, "gearbox.catalog"), SCHEMA)
+    return sorted(set(catalog["ratio"].m_as("").tolist()))
+
+
+class DesignReview:
+    """The design-review panel of the case file ``case_path``; any case file beside it can be
+    chosen in the panel.
+
+    ``controls`` holds each input's value widget by its key path (``motor.peak_torque``); setting
+    one's ``value`` (by hand or in code) re-evaluates the case. :meth:`html` is what the results
+    column shows. ``report_link(path)``, where given, returns the address of a case's report,
+    which the panel links beside the verdict.
+    """
+
+    def __init__(self, case_path, report_link=None):
+        import ipywidgets as w
+
+        path = Path(case_path)
+        choices = sorted({*path.parent.glob("*.toml"), path})
+        self.case_file = w.Dropdown(options=[(p.name, p) for p in choices], value=path, description="case",
+                                    style={"description_width": "3em"}, layout=w.Layout(width="100%"))
+        self.case_file.observe(lambda _: self.load(), names="value")
+        self.report_link = report_link
+        self.message = w.HTML()
+        self.controls_box = w.VBox(layout=w.Layout(overflow="hidden"))
+        self.results = w.HTML(layout=w.Layout(width="100%"))
+        self.load_cycle = w.Image(format="png", layout=w.Layout(width="100%", max_width="560px"))
+        self.chain = w.Image(format="png", layout=w.Layout(width="100%", max_width="640px"))
+        left = w.VBox([self.case_file, self.message, self.controls_box, self.load_cycle],
+                      layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
+        right = w.VBox([self.results, self.chain], layout=w.Layout(flex="1 1 auto", min_width="0"))
+        self.panel = w.HBox([left, right], layout=w.Layout(width="100%", align_items="flex-start"))
+        self.panel.add_class("design-review")
+        self.controls: dict = {}
+        self.specs: list[InputSpec] = []
+        self.case: Case | None = None
+        self._figures: dict = {}  # (figure, its inputs) -> PNG
+        self._dirty = False
+        self._worker: threading.Thread | None = None
+        self._lock = threading.Lock()
+        self.generation = 0  # counts the updates drawn (the page carries it, for tests and timing)
+        self.load()
+
+    def _repr_mimebundle_(self, **kwargs):
+        bundle = self.panel._repr_mimebundle_(**kwargs)
+        bundle["text/plain"] = f"design review panel of {self.case_file.value.name}"
+        return bundle
+
+    # -- the controls ------------------------------------------------------------------------
+
+    def load(self) -> None:
+        """Read the chosen case file and build one control row per input."""
+        try:
+            case = read_case(self.case_file.value)
+            ratios = _ratios(case) if case.ratio is not None else []
+        except CalcError as exc:
+            self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(str(exc))}'
+            return
+        self.case, self.message.value = case, ""
+        self.specs = input_specs(case, ratios)
+        self.controls = {}
+        old = self.controls_box.children
+        self.controls_box.children = [self._row(spec) for spec in self.specs]
+        for row in old:
+            for widget in row.children:
+                widget.close()
+            row.close()
+        for control in self.controls.values():
+            control.observe(self._changed, names="value")
+        self.refresh()
+
+    def _row(self, spec: InputSpec):
+        """One input: its label with unit (the whole of it also as tooltip), a slider and a number
+        field linked in the browser (so a typed value moves the slider, and only the slider's
+        value reaches the kernel), or a choice."""
+        import ipywidgets as w
+
+        label = w.HTML(f'<span title="{spec.text}">{typeset(spec.label)}{" [" + pretty_unit(spec.unit) + "]" if spec.unit else ""}</span>',
+                       layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
+        if spec.options:
+            control = w.Dropdown(options=[(f"{r:g}", r) for r in spec.options], value=spec.value, tooltip=spec.text,
+                                 layout=w.Layout(width="8em"))
+            self.controls[spec.key] = control
+            return w.HBox([label, control])
+        slider = w.FloatSlider(value=spec.value, min=spec.low, max=spec.high, step=spec.step, readout=False,
+                               continuous_update=False, tooltip=spec.text, layout=w.Layout(flex="1 1 auto", width="auto"))
+        field = w.BoundedFloatText(value=spec.value, min=spec.low, max=spec.high, step=spec.step, tooltip=spec.text,
+                                   layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
+        w.jslink((slider, "value"), (field, "value"))
+        self.controls[spec.key] = slider
+        return w.HBox([label, slider, field], layout=w.Layout(width="100%"))
+
+    # -- the results ---------------------------------------------------------------------------
+
+    def changed_case(self) -> Case:
+        """The loaded case with the controls' values."""
+        return with_inputs(self.case, {s.key: Q_(self.controls[s.key].value, s.unit) for s in self.specs})
+
+    def html(self) -> str:
+        """The results column's text for the controls' values (see :func:`results_html`)."""
+        return self._draw()[0]
+
+    def _draw(self):
+        """The results text and the changed case (None where the inputs cannot make one)."""
+        try:
+            case = self.changed_case()
+        except CalcError as exc:
+            return f'<div class="dr"><b style="color:{FAIL_COLOR}">FAIL</b>: {typeset(str(exc))}</div>', None
+        report, left_out = evaluated(case)
+        link = self.report_link(case.path) if self.report_link else None
+        return results_html(report, left_out, link), (case, report)
+
+    def refresh(self) -> None:
+        """Draw the results of the controls' values: the text, and each figure whose inputs changed."""
+        text, drawn = self._draw()
+        self.generation += 1
+        self.results.value = text.replace('<div class="dr">', f'<div class="dr" data-generation="{self.generation}">', 1)
+        if drawn is None:
+            return
+        case, report = drawn
+        p = case.profile
+        self.load_cycle.value = self._figure("load cycle", (p.durations.m_as("s").tobytes(), p.speeds.m_as("rpm").tobytes(),
+                                                            p.torques.m_as("N*m").tobytes()), lambda: _load_cycle(case))
+        if report.accuracy is not None:
+            spec, _ = report.accuracy
+            key = (repr(spec.chain), float(spec.applied_torque.m_as("N*m")))
+            self.chain.value = self._figure("chain", key, lambda: _chain(spec))
+            self.chain.layout.display = None
+        else:
+            self.chain.layout.display = "none"
+
+    def _figure(self, name, key, draw) -> bytes:
+        if (name, key) not in self._figures:
+            self._figures = {k: v for k, v in self._figures.items() if k[0] != name}  # the last one of each is kept
+            self._figures[(name, key)] = _png(draw())
+        return self._figures[(name, key)]
+
+    def _changed(self, _change) -> None:
+        """A control moved: draw in the worker thread; what moves meanwhile is drawn after, once."""
+        with self._lock:
+            self._dirty = True
+            if self._worker is not None:
+                return
+            self._worker = threading.Thread(target=self._work, daemon=True)
+            self._worker.start()
+
+    def _work(self) -> None:
+        while True:
+            with self._lock:
+                if not self._dirty:
+                    self._worker = None
+                    return
+                self._dirty = False
+            self.refresh()
+
+    def settled(self) -> "DesignReview":
+        """Wait until the changes made so far are drawn (for code that sets controls, then reads)."""
+        while True:
+            with self._lock:
+                worker = self._worker
+            if worker is None:
+                return self
+            worker.join()
+
+
+def _load_cycle(case: Case):
+    from ..plots import load_cycle_figure
+
+    return load_cycle_figure(case.profile)
+
+
+def _chain(spec):
+    from ..accuracy_plots import stiffness_chain_figure
+
+    return stiffness_chain_figure(spec.chain, spec.applied_torque)
+
