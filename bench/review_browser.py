@@ -2,7 +2,8 @@
 packages, driven by Playwright. Used by the browser test (tests/test_review_browser.py) and by the
 benchmark's ``review_*`` lines.
 
-:func:`served` starts the server on a free port of this machine and stops it after;
+:func:`served` starts the server on a free port of this machine (``127.0.0.1``), waits for its
+first kernel, and stops it after;
 :func:`review_in_browser` opens the page as a reviewer would (1366 × 768), waits for the panel,
 changes inputs through the number fields and the ratio choice, and measures each change from the
 input to the new results on the page (the results carry a generation count). It keeps a
@@ -19,8 +20,8 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import threading
 import time
-import urllib.request
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -39,25 +40,35 @@ def _free_port() -> int:
         return s.getsockname()[1]
 
 
+@dataclass
+class Server:
+    url: str
+    started: float  # s from the command to a kernel waiting with the panel drawn
+
+
 @contextlib.contextmanager
-def served(timeout: float = 60.0):
-    """The review page served on a free port of 127.0.0.1; yields its address."""
+def served(timeout: float = 90.0):
+    """The review page served on a free port of 127.0.0.1, once its first kernel waits with the
+    panel drawn (as for a reviewer who opens a page some time after ``make review``)."""
     port = _free_port()
     env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    start = time.perf_counter()
     server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port)], cwd=ROOT, env=env,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True)
-    url = f"http://127.0.0.1:{port}/"
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    log: list[str] = []
+    filled = threading.Event()
+
+    def read_log():
+        for text in server.stderr:
+            log.append(text)
+            if "is filled" in text:
+                filled.set()
+
+    threading.Thread(target=read_log, daemon=True).start()
     try:
-        end = time.monotonic() + timeout
-        while True:
-            try:
-                urllib.request.urlopen(url + "voila/static/voila.js", timeout=2)  # a file: starts no kernel
-                break
-            except OSError:
-                if server.poll() is not None or time.monotonic() > end:
-                    raise RuntimeError(f"the review server did not start: {server.stderr.read().decode()[-2000:]}") from None
-                time.sleep(0.2)
-        yield url
+        if not filled.wait(timeout):
+            raise RuntimeError("the review server prepared no kernel: " + "".join(log)[-3000:])
+        yield Server(f"http://127.0.0.1:{port}/", time.perf_counter() - start)
     finally:
         os.killpg(server.pid, signal.SIGTERM)
         try:
@@ -90,9 +101,10 @@ def _row(page, label: str):
     return page.locator(".widget-hbox", has=page.locator(f'span[title="{label}"]')).last
 
 
-def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1) -> Visit:
-    """Open the page, then make each change ``(label, value)`` in turn (a number field's value, or
-    the option of a choice), ``repeat`` times over; each is timed until the results follow."""
+def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1, settle: float = 3.0) -> Visit:
+    """Open the page, wait ``settle`` seconds, then make each change ``(label, value)`` in turn (a
+    number field's value, or the option of a choice), ``repeat`` times over; each is timed until
+    the results follow."""
     from playwright.sync_api import sync_playwright
 
     shots.mkdir(parents=True, exist_ok=True)
@@ -105,7 +117,9 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
             page.goto(url)
             page.wait_for_selector(RESULTS, timeout=60_000)
             visit = Visit(ready=time.perf_counter() - start)
-            page.wait_for_timeout(300)  # the figures' images decode
+            # A reviewer reads the page before the first change; meanwhile the server prepares the
+            # next page's kernel, which is not what a change should be timed against.
+            page.wait_for_timeout(settle * 1000)
             visit.shots.append(shots / "review-first.png")
             page.screenshot(path=str(visit.shots[-1]))
             visit.seen.append(("first", page.inner_text(RESULTS)))
@@ -125,10 +139,15 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
                         polling="raf", timeout=30_000)
                     visit.changes.append((f"{label} = {value}", time.perf_counter() - start))
                     visit.seen.append((f"{label} = {value}", page.inner_text(RESULTS)))
+                    if visit.seen[-1][1].startswith("FAIL") and not any(p.name == "review-fail.png" for p in visit.shots):
+                        visit.shots.append(shots / "review-fail.png")
+                        page.screenshot(path=str(visit.shots[-1]))
             page.wait_for_timeout(300)
             visit.shots.append(shots / "review-changed.png")
             page.screenshot(path=str(visit.shots[-1]))
-            visit.shots.append(shots / "review-whole-panel.png")
+            visit.shots.append(shots / "review-whole-panel.png")  # on a screen tall enough for all of it
+            page.set_viewport_size({"width": SCREEN["width"], "height": 2400})
+            page.wait_for_timeout(300)
             page.locator(".design-review").screenshot(path=str(visit.shots[-1]))
             return visit
         finally:

@@ -27,6 +27,7 @@ from .view import FAIL_COLOR, evaluated, results_html, typeset
 
 LABEL_WIDTH = "15.5em"
 FIGURE_DPI = 72  # the PNG's pixels at the width the column shows it
+FIGURES_KEPT = 32
 
 
 def _png(figure) -> bytes:
@@ -70,8 +71,9 @@ class DesignReview:
         self.chain = w.Image(format="png", layout=w.Layout(width="100%", max_width="640px"))
         left = w.VBox([self.case_file, self.message, self.controls_box, self.load_cycle],
                       layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
-        right = w.VBox([self.results, self.chain], layout=w.Layout(flex="1 1 auto", min_width="0"))
-        self.panel = w.HBox([left, right], layout=w.Layout(width="100%", align_items="flex-start"))
+        right = w.VBox([self.results, self.chain], layout=w.Layout(flex="1 1 560px", min_width="560px"))
+        # Side by side on a screen; on a narrow one (a notebook beside a file browser) the results go under.
+        self.panel = w.HBox([left, right], layout=w.Layout(width="100%", align_items="flex-start", flex_flow="row wrap"))
         self.panel.add_class("design-review")
         self.controls: dict = {}
         self.specs: list[InputSpec] = []
@@ -153,27 +155,28 @@ class DesignReview:
         return results_html(report, left_out, link), (case, report)
 
     def refresh(self) -> None:
-        """Draw the results of the controls' values: the text, and each figure whose inputs changed."""
+        """Draw the results of the controls' values: each figure whose inputs changed, then the
+        text (last, so that when the text changes on the page, everything has)."""
         text, drawn = self._draw()
+        if drawn is not None:
+            case, report = drawn
+            p = case.profile
+            key = (p.durations.m_as("s").tobytes(), p.speeds.m_as("rpm").tobytes(), p.torques.m_as("N*m").tobytes())
+            self.load_cycle.value = self._figure("load cycle", key, lambda: _load_cycle(case))
+            if report.accuracy is not None:
+                spec, _ = report.accuracy
+                key = (repr(spec.chain), float(spec.applied_torque.m_as("N*m")))
+                self.chain.value = self._figure("chain", key, lambda: _chain(spec))
+            self.chain.layout.display = None if report.accuracy is not None else "none"
         self.generation += 1
         self.results.value = text.replace('<div class="dr">', f'<div class="dr" data-generation="{self.generation}">', 1)
-        if drawn is None:
-            return
-        case, report = drawn
-        p = case.profile
-        self.load_cycle.value = self._figure("load cycle", (p.durations.m_as("s").tobytes(), p.speeds.m_as("rpm").tobytes(),
-                                                            p.torques.m_as("N*m").tobytes()), lambda: _load_cycle(case))
-        if report.accuracy is not None:
-            spec, _ = report.accuracy
-            key = (repr(spec.chain), float(spec.applied_torque.m_as("N*m")))
-            self.chain.value = self._figure("chain", key, lambda: _chain(spec))
-            self.chain.layout.display = None
-        else:
-            self.chain.layout.display = "none"
 
     def _figure(self, name, key, draw) -> bytes:
+        """A figure's PNG, drawn once for its inputs (the last :data:`FIGURES_KEPT` are kept, so
+        moving back and forth draws nothing)."""
         if (name, key) not in self._figures:
-            self._figures = {k: v for k, v in self._figures.items() if k[0] != name}  # the last one of each is kept
+            if len(self._figures) >= FIGURES_KEPT:
+                del self._figures[next(iter(self._figures))]
             self._figures[(name, key)] = _png(draw())
         return self._figures[(name, key)]
 

@@ -14,6 +14,7 @@ import re
 from html import escape
 
 from ..case import Case
+from ..catalog import display_path
 from ..report import Report, report_of
 from ..sections.common import quantity_text
 from ..units import sig
@@ -22,7 +23,8 @@ PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 _GREEK = {"phi": "φ", "eta": "η", "lambda": "λ"}
 # A symbol as written in code: a letter (or phi, eta, lambda) and its subscript, ``T_2B``, ``K_ϑ``.
 _SYMBOL = re.compile(r"(?<!\w)(phi|eta|lambda|[^\W\d_])_([^\W_]+)(?!\w)")
-_WORDS = re.compile(r"\b([a-z]{2,})_([a-z]{2,})\b")  # a name written in code, ``positioning_accuracy``
+# A name written in code, ``positioning_accuracy`` (not a key path's part, ``motor.peak_torque``).
+_WORDS = re.compile(r"(?<![.\w])([a-z]{2,})_([a-z]{2,})\b")
 
 STYLE = f"""<style>
 .dr {{ font-size: 13px; line-height: 1.35; color: #1a1a1a; }}
@@ -72,7 +74,8 @@ def evaluated(case: Case) -> tuple[Report, list[str]]:
     for name in case.sections:
         rest = report_of(dataclasses.replace(case, sections={k: v for k, v in case.sections.items() if k != name}))
         if rest.error is None:
-            return rest, [f"The {name} section cannot be evaluated with these inputs: {r.error}"]
+            why = r.error.replace(str(case.path), display_path(case.path))  # the path as the results write it
+            return rest, [f"The {name} section cannot be evaluated with these inputs: {why}"]
     return r, []
 
 
