@@ -11,6 +11,7 @@ LINES = (
     "evaluate_100k", "evaluate_100k_vs_shipped", "evaluate_100k_memory",
     "sweep", "sweep_numpy", "sweep_vs_numpy", "sweep_1M", "sweep_1M_numpy", "sweep_1M_vs_numpy", "hysteresis_1M",
     "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report",
+    "review_page_ready", "review_change_median", "review_change_max",
 )
 
 

@@ -193,3 +193,15 @@ def test_slider_labels_read_as_written():
 def test_a_report_link_is_shown_beside_the_verdict():
     panel = DesignReview(EXAMPLE, report_link=lambda path: f"reports/{path.stem}.pdf")
     assert '<a href="reports/indexing-table.pdf"' in panel.results.value
+
+
+def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
+    from calc.review import serve
+
+    argv = serve.command(8866)
+    assert argv[argv.index("-m") + 1] == "voila" and str(serve.PAGE) in argv and serve.PAGE.is_file()
+    assert "--Voila.ip=127.0.0.1" in argv and "--strip_sources=True" in argv and "--preheat_kernel=True" in argv
+    assert "--MappingKernelManager.cull_idle_timeout=600" in argv and "--MappingKernelManager.cull_connected=False" in argv
+    assert serve.environment(EXAMPLE)[serve.CASE_VARIABLE] == str(EXAMPLE.resolve())
+    assert serve.main(["--cases", str(EXAMPLE.parent), "--case", "missing.toml"]) == 2
+    assert "missing.toml: the case file does not exist" in capsys.readouterr().err
