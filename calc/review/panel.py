@@ -191,12 +191,17 @@ class DesignReview:
 
     def _work(self) -> None:
         while True:
-            with self._lock:
+            with self._lock:  # "nothing left" and "no worker" at once, so no change slips between
                 if not self._dirty:
                     self._worker = None
                     return
                 self._dirty = False
-            self.refresh()
+            try:
+                self.refresh()
+            except BaseException:  # a fault shows in the log; the next change starts a worker again
+                with self._lock:
+                    self._worker = None
+                raise
 
     def settled(self) -> "DesignReview":
         """Wait until the changes made so far are drawn (for code that sets controls, then reads)."""
