@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import io
 import threading
+from html import escape
 from pathlib import Path
 
 from ..case import Case, read_case
@@ -50,8 +51,8 @@ class DesignReview:
     chosen in the panel.
 
     ``controls`` holds each input's value widget by its key path (``motor.peak_torque``); setting
-    one's ``value`` (by hand or in code) re-evaluates the case. :meth:`html` is what the results
-    column shows. ``report_link(path)``, where given, returns the address of a case's report,
+    one's ``value`` (by hand or in code) re-evaluates the case into ``results`` (the text) and the
+    figures. ``report_link(path)``, where given, returns the address of a case's report,
     which the panel links beside the verdict.
     """
 
@@ -119,7 +120,7 @@ class DesignReview:
         value reaches the kernel), or a choice."""
         import ipywidgets as w
 
-        label = w.HTML(f'<span title="{spec.text}">{typeset(spec.label)}{" [" + pretty_unit(spec.unit) + "]" if spec.unit else ""}</span>',
+        label = w.HTML(f'<span title="{escape(spec.text)}">{typeset(spec.label)}{" [" + pretty_unit(spec.unit) + "]" if spec.unit else ""}</span>',
                        layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
         if spec.options:
             control = w.Dropdown(options=[(f"{r:g}", r) for r in spec.options], value=spec.value, tooltip=spec.text,
@@ -139,10 +140,6 @@ class DesignReview:
     def changed_case(self) -> Case:
         """The loaded case with the controls' values."""
         return with_inputs(self.case, {s.key: Q_(self.controls[s.key].value, s.unit) for s in self.specs})
-
-    def html(self) -> str:
-        """The results column's text for the controls' values (see :func:`results_html`)."""
-        return self._draw()[0]
 
     def _draw(self):
         """The results text and the changed case (None where the inputs cannot make one)."""

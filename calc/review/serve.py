@@ -1,11 +1,11 @@
 """Serve the design-review panel alone as a web page, for reviewers who do not code (``make review``).
 
-``python -m calc.review.serve [--cases DIR] [--case NAME] [--port N] [--ip ADDRESS]`` runs Voilà on
-``page.ipynb`` (the panel and nothing else: no code, no other notebook is served). The page opens
-the case ``NAME`` of the folder ``DIR`` (default ``cases/``, the example); the panel offers the
-folder's other case files, and no other path. A kernel that no page has been connected to for
-:data:`IDLE_MINUTES` is shut down. The address is ``localhost`` unless ``--ip`` says otherwise
-(``--ip 0.0.0.0`` serves the network: README, "Design review").
+``python -m calc.review.serve [--cases DIR] [--case NAME] [--port N] [--ip ADDRESS]`` runs Voilà
+on ``design-review.ipynb`` beside this file: the panel and nothing else (no code, no other
+notebook is served). The page opens the case ``NAME`` of the folder ``DIR`` (default ``cases/``,
+the example); the panel offers the folder's other case files, and no other path. A kernel whose
+page was closed is shut down after :data:`IDLE_MINUTES`. The address is this machine's only
+(127.0.0.1) unless ``--ip`` says otherwise (README, "Design review": sharing it on a network).
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ import os
 import sys
 from pathlib import Path
 
-PAGE = Path(__file__).with_name("page.ipynb")
+PAGE = Path(__file__).with_name("design-review.ipynb")
 #: The variable that tells the page's kernel which case to open.
 CASE_VARIABLE = "CALC_REVIEW_CASE"
 IDLE_MINUTES = 10
