@@ -140,6 +140,8 @@ def test_panel_controls_re_evaluate_the_case(monkeypatch):
     review.controls["profile[4].duration"].value = 3.0
     review.settled()
     assert len(drawn) == 3  # the load cycle only
+    review.reset.click()  # back to the case file's values, whose figures are kept
+    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and len(drawn) == 3
 
 
 def test_changes_that_arrive_while_drawing_are_drawn_once_together():

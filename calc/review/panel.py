@@ -1,7 +1,7 @@
 """The design-review panel (ipywidgets): the controls on the left, the results beside them.
 
 Left: the case, chosen among the case files of its folder (no path is typed, so the panel reads no
-other file), one row per input (:func:`calc.review.inputs.input_specs`: the label with its unit, a
+other file), with a button back to its values, one row per input (:func:`calc.review.inputs.input_specs`: the label with its unit, a
 slider, a number field for an exact value, linked in the browser), and the load-cycle figure.
 Right: the results as one HTML text (:func:`calc.review.view.results_html`: verdict and chosen
 parts first, then the governing checks, so they show without scrolling) and the stiffness-chain
@@ -62,15 +62,18 @@ class DesignReview:
         path = Path(case_path)
         choices = sorted({*path.parent.glob("*.toml"), path})
         self.case_file = w.Dropdown(options=[(p.name, p) for p in choices], value=path, description="case",
-                                    style={"description_width": "3em"}, layout=w.Layout(width="100%"))
+                                    style={"description_width": "3em"}, layout=w.Layout(flex="1 1 auto", width="auto"))
         self.case_file.observe(lambda _: self.load(), names="value")
+        self.reset = w.Button(description="reset", tooltip="back to the values of the case file", layout=w.Layout(width="6.5em"))
+        self.reset.on_click(lambda _: self.load())
         self.report_link = report_link
         self.message = w.HTML()
         self.controls_box = w.VBox(layout=w.Layout(overflow="hidden"))
         self.results = w.HTML(layout=w.Layout(width="100%"))
         self.load_cycle = w.Image(format="png", layout=w.Layout(width="100%", max_width="560px"))
         self.chain = w.Image(format="png", layout=w.Layout(width="100%", max_width="640px"))
-        left = w.VBox([self.case_file, self.message, self.controls_box, self.load_cycle],
+        top = w.HBox([self.case_file, self.reset], layout=w.Layout(width="100%"))
+        left = w.VBox([top, self.message, self.controls_box, self.load_cycle],
                       layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
         right = w.VBox([self.results, self.chain], layout=w.Layout(flex="1 1 560px", min_width="560px"))
         # Side by side on a screen; on a narrow one (a notebook beside a file browser) the results go under.
