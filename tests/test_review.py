@@ -121,6 +121,20 @@ def test_a_failing_accuracy_requirement_gives_its_numbers(case):
     assert "positioning accuracy 9.049 arcmin &gt; required 5 arcmin, 81 % over" in text
 
 
+def test_a_case_that_checks_nothing_says_so(write_case):
+    from tests.conftest import PROFILE_TOML
+
+    from calc.case import read_case as read
+
+    report, left_out = evaluated(read(write_case(PROFILE_TOML)))
+    text = results_html(report, left_out)
+    assert '<span class="word open">NOT DECIDED</span>' in text and "Nothing is checked" in text
+    assert "Governing checks" not in text and "Gearbox candidates" not in text
+    panel = DesignReview(write_case(PROFILE_TOML, "only-a-cycle.toml"))  # its controls: the cycle's alone
+    assert set(panel.controls) == {f"profile[{k}].{w}" for k in (1, 2, 3) for w in ("duration", "torque")} | {"profile[4].duration"}
+    assert "NOT DECIDED" in panel.results.value
+
+
 def test_panel_controls_re_evaluate_the_case(monkeypatch):
     import calc.review.panel
 

@@ -33,6 +33,7 @@ STYLE = f"""<style>
 .dr .word {{ font-size: 22px; font-weight: 700; color: #fff; padding: 1px 12px; border-radius: 4px; }}
 .dr .pass {{ color: {PASS_COLOR}; font-weight: 600; }} .dr .fail {{ color: {FAIL_COLOR}; font-weight: 600; }}
 .dr .word.pass {{ background: {PASS_COLOR}; color: #fff; }} .dr .word.fail {{ background: {FAIL_COLOR}; color: #fff; }}
+.dr .word.open {{ background: #8a6d00; color: #fff; }}
 .dr .parts {{ font-size: 15px; }} .dr ul.reasons {{ margin: 2px 0 4px 18px; padding: 0; color: {FAIL_COLOR}; }}
 .dr table {{ border-collapse: collapse; margin: 2px 0 6px; }}
 .dr th {{ text-align: left; font-weight: 600; border-bottom: 1px solid #999; padding: 2px 8px 2px 0; white-space: nowrap; }}
@@ -188,9 +189,9 @@ def _accuracy_table(a: dict) -> str:
 def results_html(report: Report, left_out: list[str], report_link: str | None = None) -> str:
     """The review of an evaluated case as one HTML text (see the module's docstring);
     ``report_link``, where given, is the address of the case's report, linked beside the verdict."""
-    passes = report.passes and not left_out
-    word = "PASS" if passes else "FAIL"
-    cls = "pass" if passes else "fail"
+    word = "FAIL" if left_out else report.verdict.word
+    passes = word == "PASS"
+    cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
     chosen = " · ".join(f"{escape(w)} <b>{escape(p)}</b>" if p else f"{escape(w)} <span class=fail>none passes</span>" for w, p, _ in report.chosen)
     link = f' <a href="{escape(report_link)}" target="_blank">calc report</a>' if report_link else ""
     out = [STYLE, '<div class="dr">', f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}</div>']
