@@ -86,6 +86,7 @@ class Visit:
     changes: list = field(default_factory=list)  # (what, s from the input to the new results)
     seen: list = field(default_factory=list)  # (what, the results' text after it)
     shots: list = field(default_factory=list)  # screenshot files
+    burst: tuple = ()  # (values typed in a row, updates drawn for them, the results' text after)
 
     @property
     def times(self) -> list[float]:
@@ -101,10 +102,17 @@ def _row(page, label: str):
     return page.locator(".widget-hbox", has=page.locator(f'span[title="{label}"]')).last
 
 
-def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1, settle: float = 3.0) -> Visit:
+def _generation(page) -> int:
+    return int(page.get_attribute(RESULTS, "data-generation"))
+
+
+def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1, settle: float = 3.0,
+                      burst: tuple[str, list[str]] | None = None) -> Visit:
     """Open the page, wait ``settle`` seconds, then make each change ``(label, value)`` in turn (a
     number field's value, or the option of a choice), ``repeat`` times over; each is timed until
-    the results follow."""
+    the results follow. Then ``burst``, ``(label, values)``: the values typed into that field one
+    after the other without waiting, as a reviewer trying values does; counted are the updates
+    the page gets for them until it is still."""
     from playwright.sync_api import sync_playwright
 
     shots.mkdir(parents=True, exist_ok=True)
@@ -125,7 +133,7 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
             visit.seen.append(("first", page.inner_text(RESULTS)))
             for _ in range(repeat):
                 for label, value in changes:
-                    generation = int(page.get_attribute(RESULTS, "data-generation"))
+                    generation = _generation(page)
                     row = _row(page, label)
                     start = time.perf_counter()
                     if row.locator("select").count():
@@ -142,6 +150,18 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
                     if visit.seen[-1][1].startswith("FAIL") and not any(p.name == "review-fail.png" for p in visit.shots):
                         visit.shots.append(shots / "review-fail.png")
                         page.screenshot(path=str(visit.shots[-1]))
+            if burst:
+                label, values = burst
+                first = _generation(page)
+                # Typed within a few milliseconds: each value committed as Enter or leaving the field does.
+                _row(page, label).locator("input[type=number]").evaluate(
+                    "(field, values) => { for (const v of values) { field.value = v;"
+                    " field.dispatchEvent(new Event('change', {bubbles: true})); } }", values)
+                last = None
+                while last != _generation(page):  # still for a second
+                    last = _generation(page)
+                    page.wait_for_timeout(1000)
+                visit.burst = (len(values), last - first, page.inner_text(RESULTS))
             page.wait_for_timeout(300)
             visit.shots.append(shots / "review-changed.png")
             page.screenshot(path=str(visit.shots[-1]))

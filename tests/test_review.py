@@ -164,7 +164,7 @@ def test_changes_that_arrive_while_drawing_are_drawn_once_together():
     for t in (13.0, 14.0, 15.0, 16.0, 17.0):
         review.controls["motor.peak_torque"].value = t
     review.settled()
-    assert first + 1 <= review.generation <= first + 5
+    assert first + 1 <= review.generation <= first + 2  # the first value, then the rest at once
     assert "</i><sub>2max</sub> 214.4 N·m" in review.results.value  # 17 N·m · 10 · 1.3 · 0.97, the last value
 
 

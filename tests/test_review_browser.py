@@ -2,7 +2,7 @@
 
 Headless Chromium (Debian's package, installed by ``make browser``) opens the page at 1366 × 768,
 changes the ratio and a torque through the page's own controls, and the verdict and the values
-of the tables follow. The times are printed (page ready, each change until the results follow),
+of the tables follow; values typed in a row end on the last one. The times are printed (page ready, each change until the results follow),
 not asserted: a shared machine makes a timed assertion flaky. The screenshots are kept in
 ``build/screenshots/``.
 """
@@ -31,11 +31,13 @@ pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason=f"no Chromium at {
 
 def test_a_reviewer_changes_the_ratio_and_a_torque_and_the_results_follow():
     with served() as server:
-        visit = review_in_browser(server.url, SHOTS, CHANGES)
+        visit = review_in_browser(server.url, SHOTS, CHANGES, burst=(CHANGES[2][0], ["13", "14", "15", "16", "17"]))
     print(f"\nserver ready: {server.started:.2f} s; page ready: {visit.ready:.2f} s")
     for what, t in visit.changes:
         print(f"  {what}: {t:.3f} s")
     print(f"per change: median {visit.median:.3f} s, maximum {max(visit.times):.3f} s (budget 0.3 s median)")
+    typed, drawn, after = visit.burst
+    print(f"{typed} values typed in a row: {drawn} updates drawn")
     print("screenshots: " + ", ".join(str(p.relative_to(ROOT)) for p in visit.shots))
     seen = dict(visit.seen)
     first = seen["first"]
@@ -49,3 +51,6 @@ def test_a_reviewer_changes_the_ratio_and_a_torque_and_the_results_follow():
     # A larger accelerating torque raises the cubic mean T_2m (the S1 value), 35.41 N·m in the example.
     assert "35.41 N·m" in first and "35.41 N·m" not in seen["1 accel: torque T_2 [N·m] = 70"]
     assert all(p.stat().st_size > 10_000 for p in visit.shots)
+    # Values typed in a row: the page ends on the last (17 N·m · 10 · 1.3 · 0.97 = 214.4 N·m), drawn
+    # at most once each (changes that arrive while one is drawn are drawn together).
+    assert 1 <= drawn <= typed and "214.4 N·m" in after
