@@ -218,6 +218,9 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     assert argv[argv.index("-m") + 1] == "voila" and str(serve.PAGE) in argv and serve.PAGE.is_file()
     assert "--Voila.ip=127.0.0.1" in argv and "--strip_sources=True" in argv and "--preheat_kernel=True" in argv
     assert "--MappingKernelManager.cull_idle_timeout=600" in argv and "--MappingKernelManager.cull_connected=False" in argv
+    # Checked by hand in a browser with idle_seconds=6: two pages opened and closed, their two
+    # kernels culled some 8 s later, the waiting kernel kept.
+    assert "--MappingKernelManager.cull_idle_timeout=6" in serve.command(8866, idle_seconds=6)
     assert serve.environment(EXAMPLE)[serve.CASE_VARIABLE] == str(EXAMPLE.resolve())
     assert serve.main(["--cases", str(EXAMPLE.parent), "--case", "missing.toml"]) == 2
     assert "missing.toml: the case file does not exist" in capsys.readouterr().err
