@@ -22,6 +22,11 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   ``evaluate_100k_vs_shipped`` its time over that of the example with the shipped catalog, and
   ``evaluate_100k_memory`` its peak resident memory.
 * ``hysteresis_1M``: the analysis of a measured hysteresis loop of 10^6 samples.
+* ``motion_1M``: deriving a load cycle of 10^6 samples from its moves and mechanism (a quarter-turn
+  trapezoid index and a dwell of a rotary table: :func:`calc.motion.sample`, the mechanism's torque,
+  :func:`calc.motion.segments`), beside ``motion_numpy_1M``, the same cycle on a uniform grid in raw
+  numpy (the floor), and ``motion_loop_1M``, the obvious loop over the samples with Python floats,
+  run on a slice and scaled. The three must give the same segments; the run stops if they do not.
 * ``import_calc``, ``evaluate_cli``, ``report``: cold runs of a fresh interpreter (median of 5 for
   the first two), beside ``import_numpy``.
 * ``notebooks``: the nbval run of every notebook, ``pytest notebooks``.
@@ -65,7 +70,7 @@ class Size:
     loop_rows: int  # rows the per-row pint loop runs on (then scaled to ``rows``)
     sweep: tuple[int, int, int]  # ratios × cycle times × peak torques
     sweep_large: tuple[int, int, int]  # the same, ten times the points
-    samples: int  # hysteresis loop samples
+    samples: int  # samples of a hysteresis loop and of a motion cycle
     repeats: int  # in-process repeats (best of)
     runs: int  # subprocess runs (median of)
     judged: bool  # whether the figures are held against the targets
@@ -487,6 +492,98 @@ def measure_hysteresis(size: Size) -> list[str]:
     return [line("hysteresis_1M", elapsed, "s", ("<=", 0.5), note=f"analyze_loop, {size.samples} samples")]
 
 
+#: The bench's motion: a table of 0.15 kg·m² against 3 N·m of friction turns a quarter turn in
+#: 0.5 s with ramps of 0.15 s, then dwells 1.0 s.
+MOTION = dict(J=0.15, T_f=3.0, distance=np.pi / 2, time=0.5, ramp=0.15, dwell=1.0)
+
+
+def motion_api(samples: int):
+    from calc import Q_
+    from calc.mechanism import Mechanism
+    from calc.motion import Move, sample, segments
+
+    m = MOTION
+    table = Mechanism("rotary", inertia=Q_(m["J"], "kg*m**2"), friction_torque=Q_(m["T_f"], "N*m"), process_torque=Q_(0, "N*m"))
+    s = sample([Move(m["distance"], m["time"], m["ramp"], m["ramp"]), Move(0.0, m["dwell"])], samples)
+    g = segments(s, table.torque(s.speed, s.acceleration))
+    return g.duration, g.speed, g.torque
+
+
+def motion_numpy(samples: int):
+    """The same cycle in raw numpy: midpoints of a uniform grid, each phase by its time window."""
+    m = MOTION
+    cycle = m["time"] + m["dwell"]
+    w = m["distance"] / (m["time"] - m["ramp"])
+    a = w / m["ramp"]
+    dt = cycle / samples
+    t = (np.arange(samples) + 0.5) * dt
+    bounds = np.array([m["ramp"], m["time"] - m["ramp"], m["time"]])
+    phase = np.searchsorted(bounds, t, side="right")
+    speed = np.select([phase == 0, phase == 1, phase == 2], [a * t, np.full_like(t, w), w - a * (t - bounds[1])], 0.0)
+    acc = np.select([phase == 0, phase == 2], [a, -a], 0.0)
+    torque = m["J"] * acc + m["T_f"] * np.sign(speed)
+    duration = np.bincount(phase, minlength=4) * dt
+    mean = np.bincount(phase, weights=speed, minlength=4) * dt / duration
+    weight = np.abs(speed)
+    cubic = np.bincount(phase, weights=weight * np.abs(torque) ** 3, minlength=4)
+    base = np.bincount(phase, weights=weight, minlength=4)
+    T = np.zeros(4)
+    T[:3] = np.sign(np.bincount(phase, weights=weight * torque**3, minlength=4)[:3]) * np.cbrt(cubic[:3] / base[:3])
+    return duration, mean, T
+
+
+def motion_loop(samples: int, rows: int):
+    """The obvious loop: each sample's speed, acceleration and torque with Python floats, the
+    segment sums accumulated as it goes; ``rows`` of the ``samples`` (a uniform grid) timed."""
+    m = MOTION
+    cycle = m["time"] + m["dwell"]
+    w = m["distance"] / (m["time"] - m["ramp"])
+    a = w / m["ramp"]
+    dt = cycle / samples
+    sums = [[0.0, 0.0, 0.0, 0.0, 0.0] for _ in range(4)]  # time, speed·dt, |n|·|T|³·dt, |n|·dt, |n|·T³·dt
+    for k in range(rows):
+        t = (k + 0.5) * dt
+        if t < m["ramp"]:
+            p, v, acc = 0, a * t, a
+        elif t < m["time"] - m["ramp"]:
+            p, v, acc = 1, w, 0.0
+        elif t < m["time"]:
+            p, v, acc = 2, w - a * (t - (m["time"] - m["ramp"])), -a
+        else:
+            p, v, acc = 3, 0.0, 0.0
+        torque = m["J"] * acc + (m["T_f"] if v > 0 else 0.0)
+        row = sums[p]
+        row[0] += dt
+        row[1] += v * dt
+        row[2] += abs(v) * abs(torque) ** 3 * dt
+        row[3] += abs(v) * dt
+        row[4] += abs(v) * torque**3 * dt
+    return sums
+
+
+def measure_motion(size: Size) -> list[str]:
+    api_time, (duration, speed, torque), floor_time, (f_duration, f_speed, f_torque) = best_of_pair(
+        lambda: motion_api(size.samples), lambda: motion_numpy(size.samples), size.repeats
+    )
+    # The package samples each piece on its own grid and the floor on one grid over the cycle; a
+    # trapezoid's segment means are exact on both (a sample or two at each corner of the floor's grid
+    # straddle two phases, so its durations are within a sample of the true ones).
+    rtol = 20 / size.samples
+    if not (np.allclose(torque, f_torque, rtol=rtol, atol=1e-9) and np.allclose(speed, f_speed, rtol=rtol, atol=1e-9)
+            and np.allclose(duration, f_duration, atol=2 * (MOTION["time"] + MOTION["dwell"]) / size.samples)):
+        raise RuntimeError("motion: the package and the raw numpy floor give different segments")
+    rows = max(1, size.samples // 20)
+    loop_time, _ = timed(lambda: motion_loop(size.samples, rows))
+    loop_scaled = loop_time * size.samples / rows
+    return [
+        line("motion_1M", api_time, "s", ("<=", 0.5), note=f"{size.samples} samples: sample, the mechanism's torque, segments"),
+        line("motion_numpy_1M", floor_time, "s", note="the same cycle on a uniform grid in raw numpy"),
+        line("motion_loop_1M", loop_scaled, "s", note=f"Python floats sample by sample: {rows} samples timed, scaled to {size.samples}"),
+        line("motion_vs_numpy", api_time / floor_time, "x", ("<=", 3)),
+        line("motion_loop_vs_motion", loop_scaled / api_time, "x", (">=", 3)),
+    ]
+
+
 def measure_cold(size: Size) -> list[str]:
     py = sys.executable
     numpy_time = median_run([py, "-c", "import numpy"], size.runs)
@@ -526,15 +623,15 @@ def measure_report(size: Size, quick: bool, workdir: Path) -> list[str]:
     return [line("report", elapsed, "s", ("<=", 20), note=f"python -m calc report {EXAMPLE.relative_to(ROOT)}, a {pdf.stat().st_size // 1024} KiB PDF")]
 
 
-#: The changes the review benchmark makes, in order (label as the page shows it, value): a third of
-#: them redraw a figure (a segment's torque or duration: the load cycle; the applied torque: the
-#: stiffness chain).
+#: The changes the review benchmark makes on the example ``make review`` opens, in order (label as
+#: the page shows it, value, each inside its control's range): a third of them redraw a figure (a
+#: segment's torque or duration: the load cycle; the applied torque: the stiffness chain).
 REVIEW_CHANGES = [
     ("motor peak torque T_1B [N·m]", "13"), ("gearbox ratio i", "8"), ("load inertia J_L [kg·cm²]", "1600"),
-    ("1 accel: torque T_2 [N·m]", "62"), ("coupling temperature ϑ [°C]", "50"), ("gearbox ratio i", "10"),
+    ("1 accel: torque T_2 [N·m]", "9"), ("coupling temperature ϑ [°C]", "50"), ("gearbox ratio i", "10"),
     ("applied torque T [N·m]", "9"), ("motor peak torque T_1B [N·m]", "14"), ("motor inertia J_motor [kg·cm²]", "5"),
     ("4 pause: duration t [s]", "1.2"), ("load inertia J_L [kg·cm²]", "1700"), ("coupling temperature ϑ [°C]", "60"),
-    ("applied torque T [N·m]", "10"), ("motor peak torque T_1B [N·m]", "15"), ("3 decel: torque T_2 [N·m]", "-50"),
+    ("applied torque T [N·m]", "10"), ("motor peak torque T_1B [N·m]", "15"), ("3 decel: torque T_2 [N·m]", "-3"),
 ]
 
 
@@ -566,6 +663,7 @@ def main(argv=None) -> int:
             lambda: measure_evaluate_large(size, Path(tmp)),
             lambda: measure_sweep(size),
             lambda: measure_hysteresis(size),
+            lambda: measure_motion(size),
             lambda: measure_cold(size),
             lambda: measure_notebooks(size, args.quick),
             lambda: measure_report(size, args.quick, Path(tmp)),

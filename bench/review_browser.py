@@ -47,13 +47,15 @@ class Server:
 
 
 @contextlib.contextmanager
-def served(timeout: float = 90.0):
-    """The review page served on a free port of 127.0.0.1, once its first kernel waits with the
-    panel drawn (as for a reviewer who opens a page some time after ``make review``)."""
+def served(case: Path | None = None, timeout: float = 90.0):
+    """The review page served on a free port of 127.0.0.1, opening ``case`` (by default what
+    ``make review`` opens), once its first kernel waits with the panel drawn (as for a reviewer who
+    opens a page some time after ``make review``)."""
     port = _free_port()
+    chosen = [] if case is None else ["--cases", str(case.parent), "--case", case.name]
     env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
     start = time.perf_counter()
-    server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port)], cwd=ROOT, env=env,
+    server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port), *chosen], cwd=ROOT, env=env,
                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, start_new_session=True)
     log: list[str] = []
     filled = threading.Event()

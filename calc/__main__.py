@@ -1,5 +1,5 @@
 """Command line: ``python -m calc evaluate CASE.toml [--json] [--strict] [--all-candidates]`` and
-``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--strict]``.
+``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--strict] [--summary]``.
 
 Exit status (``spec/case-format.md``): 0 when results were produced, whatever the verdict; with
 ``--strict``, 1 when the verdict is not PASS; 2 on input errors, always.
@@ -25,13 +25,15 @@ def main(argv=None) -> int:
     rp = sub.add_parser("report", help="build the PDF calc report of one or more design cases")
     rp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one PDF each")
     rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
+    rp.add_argument("--summary", action="store_true",
+                    help="also write summary.pdf and summary.csv in the output folder: one row per case")
     for p in (ev, rp):
         p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
     if args.command == "report":
         from .publish import main as report
 
-        return report(args.cases, args.output, strict=args.strict)
+        return report(args.cases, args.output, strict=args.strict, summary=args.summary)
 
     from .case import read_case
     from .sections import SHOWN_CANDIDATES, evaluate

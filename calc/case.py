@@ -90,6 +90,7 @@ class Case:
     gearbox_catalog: str | None = None
     gearbox_part: str | None = None
     sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
+    motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record
     raw: bytes = b""
     # What has been computed from the case, by name (see :func:`once`); a changed copy starts empty.
     computed: dict = field(default_factory=dict, init=False, repr=False, compare=False)
@@ -110,9 +111,10 @@ def once(case: Case, name: str, compute):
 def read_case(path) -> Case:
     """Read and check a case file; raise :class:`CalcError` naming the file and key on bad input.
 
-    The shared inputs are read here by their sections (:mod:`calc.sections`): the load cycle, the
-    motor and load, the gearbox; the further sections keep their tables for evaluation."""
-    from .sections import FURTHER, TOP_KEYS, drive, duty, gearbox
+    The shared inputs are read here by their sections (:mod:`calc.sections`): the load cycle
+    (typed, or derived from the moves and the mechanism or from a drive record), the motor and
+    load, the gearbox; the further sections keep their tables for evaluation."""
+    from .sections import FURTHER, TOP_KEYS, drive, duty, gearbox, motion
 
     path = Path(path)
     if path.is_dir():
@@ -133,8 +135,13 @@ def read_case(path) -> Case:
         # Refused, not escaped: the title goes to the terminal, the JSON and the LaTeX report, and
         # a control character (an escape sequence, a line break) means nothing in any of them.
         raise CalcError(f"{top.where('title')}: expected one line of printable text, found the control character U+{ord(control):04X}")
-    case = Case(path=path, title=title, profile=duty.read(top), raw=raw)
+    case = Case(path=path, title=title, profile=None, raw=raw)
+    motion.read(top, case)
+    if case.motion is None:
+        case.profile = duty.read(top)
     drive.read(top, case)
+    if case.motion is not None and case.motion.J_L is not None:
+        case.load_inertia = case.motion.J_L
     gearbox.read(top, case)
     case.sections = {name: data[name] for name in FURTHER if name in data}
     return case

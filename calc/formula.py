@@ -216,6 +216,11 @@ class Formula:
         """Evaluate with quantities (scalars or arrays); returns a quantity in the result's unit."""
         return from_si(self.numeric(*self._si_args(values)), self.result.kind, self.result.unit)
 
+    def si(self, **magnitudes):
+        """Evaluate on SI magnitudes (floats or arrays) without unit checks, constants supplied:
+        for sampled cycles inside the package, whose inputs were checked once as quantities."""
+        return self.numeric(*[magnitudes[s.name] if c is None else c for s, c in self._arguments])
+
     def check_dimensions(self) -> None:
         """Evaluate the expression on quantities of the declared units and check the result's kind.
 
@@ -223,9 +228,10 @@ class Formula:
         loses or gains an angle fails. Raises :class:`CalcError` on a mismatch.
         """
         args = []
-        for s in self.inputs:
+        for k, s in enumerate(self.inputs):
             unit = kind(s.kind).si_unit
-            args.append(Q_(np.array([1.0, 2.0]) if s.per_segment else 1.5, unit))
+            # A distinct value per input, so a difference of two inputs is never zero.
+            args.append(Q_(np.array([1.0, 2.0]) if s.per_segment else 1.5 + 0.1 * k, unit))
         out = self.numeric(*args)
         if not hasattr(out, "units"):
             out = Q_(out, "")

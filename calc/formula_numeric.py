@@ -8,7 +8,9 @@ the function only while the fingerprint is the formula's own.
 
 from .formula import _sum_last_axis as SegmentSum
 from numpy import absolute as abs
+from numpy import cos
 from numpy import pi
+from numpy import sin
 from numpy import sqrt
 
 
@@ -92,6 +94,46 @@ def hysteresis__phi_LM3(phi_max_3, phi_min_3):
     return phi_max_3 - phi_min_3
 
 
+def mechanism__r_lead(p):
+    return (1/2)*p/pi
+
+
+def mechanism__r_diameter(d):
+    return (1/2)*d
+
+
+def mechanism__phi_2(s, rad, r):
+    return rad*s/r
+
+
+def mechanism__a_load(alpha_2, r, rad):
+    return alpha_2*r/rad
+
+
+def mechanism__F(m, a, g, theta, s_v, mu, F_p):
+    return a*m + g*m*sin(theta) + s_v*(F_p + g*m*mu*cos(theta))
+
+
+def mechanism__T_2_linear(F, r, eta, d_P, J_M, alpha_2, rad):
+    return F*eta**(-d_P)*r + J_M*alpha_2/rad
+
+
+def mechanism__J_L_linear(m, r, J_M):
+    return J_M + m*r**2
+
+
+def mechanism__T_2_rotary(J_L, alpha_2, rad, s_v, T_f, T_p):
+    return J_L*alpha_2/rad + s_v*(T_f + T_p)
+
+
+def motion__omega_2max(phi_2, t_m, t_a, t_d):
+    return phi_2/(-1/2*t_a - 1/2*t_d + t_m)
+
+
+def motion__alpha_2max(omega_2max, t_r, t_j):
+    return omega_2max/(-t_j + t_r)
+
+
 def profile__ED(t_on, t_cycle):
     return t_on/t_cycle
 
@@ -153,6 +195,16 @@ FUNCTIONS = {
     "calc.hysteresis.C_t": ("41fae874a638b2da", hysteresis__C_t),
     "calc.hysteresis.j_t": ("a86089e6e3b95b15", hysteresis__j_t),
     "calc.hysteresis.phi_LM3": ("5ec97fde2a6e3296", hysteresis__phi_LM3),
+    "calc.mechanism.r_lead": ("3fee99b76dbd0a6f", mechanism__r_lead),
+    "calc.mechanism.r_diameter": ("3c22fac8d4d45760", mechanism__r_diameter),
+    "calc.mechanism.phi_2": ("1da2b6341980cde8", mechanism__phi_2),
+    "calc.mechanism.a_load": ("283188e31b440e36", mechanism__a_load),
+    "calc.mechanism.F": ("fdef0999c09fa208", mechanism__F),
+    "calc.mechanism.T_2_linear": ("7cb37b487f014454", mechanism__T_2_linear),
+    "calc.mechanism.J_L_linear": ("cc83898ce63d05f5", mechanism__J_L_linear),
+    "calc.mechanism.T_2_rotary": ("aafb091340bd4c90", mechanism__T_2_rotary),
+    "calc.motion.omega_2max": ("19ada2db93ec5338", motion__omega_2max),
+    "calc.motion.alpha_2max": ("75ca44b9204f8349", motion__alpha_2max),
     "calc.profile.ED": ("2103e372a6f8efab", profile__ED),
     "calc.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
     "calc.profile.T_2m": ("7f4431ae67c9b21f", profile__T_2m),

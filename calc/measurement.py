@@ -62,8 +62,9 @@ def measurement_path(text, base: Path | None, where: str) -> Path:
     return path
 
 
-def read_measurement(path, columns: tuple[Column, ...]) -> Measurement:
-    """Read a measurement file and check it against ``columns`` (name, kind, description).
+def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, ...] = ()) -> Measurement:
+    """Read a measurement file and check it against ``columns`` (name, kind, description) and
+    those of ``optional`` that its header has.
 
     Raises :class:`CalcError` naming the file, row and column for: a missing column, a header
     unit of the wrong kind, an empty or non-numeric cell, a value that is not finite, or a row
@@ -93,6 +94,7 @@ def read_measurement(path, columns: tuple[Column, ...]) -> Measurement:
         if not m:
             raise CalcError(f"{path}, row {header_line}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
         names[m.group(1)] = (i, m.group(2))
+    columns = (*columns, *(c for c in optional if c.name in names))
     if TIME.name in names and all(c.name != TIME.name for c in columns):
         columns = (*columns, TIME)
     units = {}

@@ -128,8 +128,9 @@ class Profile:
 
     @property
     def t_cycle(self):
-        """Cycle time: every segment, pauses included (E3)."""
-        return self.durations.sum()
+        """Cycle time: every segment, pauses included (E3); summed as on-time plus pauses, so that
+        the duty cycle never rounds above 1."""
+        return self.t_on + self.durations[~self.moving].sum()
 
     @property
     def n_2max(self):

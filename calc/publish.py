@@ -1,10 +1,12 @@
-"""Calc reports as PDF: ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf]``.
+"""Calc reports as PDF: ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--summary]``.
 
 For each case the report notebook (``reports/calc-report.ipynb``) is executed by papermill with the
 case as its parameter, then exported by nbconvert through xelatex with the code hidden, using our
 LaTeX template (``reports/template/calc-report``). A progress bar runs over the cases; at the end
 one line per case gives its verdict and its PDF. A case that fails its checks, or cannot be
 evaluated, still gets its PDF (saying FAIL and why); only a PDF that cannot be built is an error.
+With ``--summary`` the output folder also gets ``summary.pdf`` and ``summary.csv``: one row per
+case (:mod:`calc.report.summary`), the rows :func:`summary_rows` gives the design review.
 """
 
 from __future__ import annotations
@@ -24,6 +26,8 @@ TEMPLATE_DIRS = [str(REPORTS_DIR / "template")]
 TEMPLATE = "calc-report"
 #: The programs the PDF needs and where they come from (Debian package names).
 TOOLS = {"xelatex": "texlive-xetex", "pandoc": "pandoc"}
+#: The summary's files in the output folder (``--summary``).
+SUMMARY = "summary"
 
 
 def check_tools() -> None:
@@ -53,6 +57,30 @@ def output_paths(cases: list[Path], output: str | None) -> list[Path]:
             raise CalcError(f"{case}: its report {pdf} would overwrite the report of {seen[pdf]}; give the case files distinct names")
         seen[pdf] = case
     return paths
+
+
+def summary_folder(cases: list[Path], output: str | None) -> Path:
+    """The folder of the reports and the summary (``--summary``): ``output``, default ``reports/``;
+    no case's report may take the summary's name."""
+    if output is not None and output.endswith(".pdf"):
+        raise CalcError(f"-o {output}: with --summary, expected a folder for the reports and {SUMMARY}.pdf, found a file name")
+    folder = Path("reports" if output is None else output)
+    for case in cases:
+        if case.stem == SUMMARY:
+            raise CalcError(f"{case}: its report {folder / (SUMMARY + '.pdf')} would be overwritten by the summary; "
+                            "rename the case file")
+    return folder
+
+
+def summary_rows(cases, output: str | None = None) -> list[dict]:
+    """The summary's rows of ``cases`` (paths of case files), plain data (:func:`calc.report.summary.summary_row`),
+    each with the path its report has (or would have) in ``output`` (a folder, default ``reports/``);
+    no PDF is built. A case that cannot be read gets a row saying why."""
+    from .report import build_report
+    from .report.summary import summary_row
+
+    paths = [Path(c) for c in cases]
+    return [summary_row(build_report(c), pdf) for c, pdf in zip(paths, output_paths(paths, str(summary_folder(paths, output))))]
 
 
 def exporter():
@@ -101,8 +129,32 @@ def render_pdf(case: Path, pdf: Path, workdir: Path) -> None:
     pdf.write_bytes(body)
 
 
-def main(cases: list[str], output: str | None = None, strict: bool = False) -> int:
-    """Build one PDF per case with a progress bar; print one line per case.
+def render_summary(rows: list[dict], reports: list, folder: Path) -> tuple[Path, Path]:
+    """Write ``summary.pdf`` and ``summary.csv`` of ``rows`` into ``folder``; the PDF goes through
+    the reports' own template (a notebook of one output, nothing executed)."""
+    import nbformat
+    from nbconvert.exporters.pdf import LatexFailed
+
+    from .report.provenance import build_date, git_commit
+    from .report.summary import summary_latex, write_csv
+
+    pdf, table = folder / f"{SUMMARY}.pdf", folder / f"{SUMMARY}.csv"
+    write_csv(rows, table)
+    latex = summary_latex(rows, reports, build_date(), git_commit())
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(outputs=[
+        nbformat.v4.new_output("display_data", data={"text/latex": str(latex)})])])
+    try:
+        body, _ = exporter().from_notebook_node(nb, resources={"metadata": {"name": SUMMARY}})
+    except LatexFailed as exc:
+        tail = "\n".join(exc.output.splitlines()[-15:])
+        raise CalcError(f"{pdf}: xelatex could not typeset the summary:\n{tail}") from None
+    pdf.write_bytes(body)
+    return pdf, table
+
+
+def main(cases: list[str], output: str | None = None, strict: bool = False, summary: bool = False) -> int:
+    """Build one PDF per case with a progress bar; print one line per case; with ``summary``, also
+    the summary's PDF and CSV in the output folder.
 
     Exit status (``spec/case-format.md``): 2 when a case could not be read or a PDF could not be
     built (a report of an unreadable case is still written, saying why), else 1 with ``strict``
@@ -110,30 +162,44 @@ def main(cases: list[str], output: str | None = None, strict: bool = False) -> i
     from tqdm import tqdm
 
     from .report import build_report
+    from .report.summary import counts_text, summary_row
 
     paths = [Path(c) for c in cases]
     try:
         for p in paths:
             if not p.is_file():
                 raise CalcError(f"{p}: the case file does not exist")
+        if summary:
+            output = str(summary_folder(paths, output))
         pdfs = output_paths(paths, output)
         check_tools()
     except CalcError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    lines, input_errors, not_passing = [], 0, 0
+    lines, input_errors, not_passing, reports, rows = [], 0, 0, [], []
     with tempfile.TemporaryDirectory(prefix="calc-report-") as tmp:
         for case, pdf in zip(tqdm(paths, desc="calc reports", unit="case", file=sys.stderr), pdfs):
+            report = build_report(case)
             try:
                 render_pdf(case, pdf, Path(tmp))
             except CalcError as exc:
                 input_errors += 1
                 lines.append(f"ERROR {display_path(case)}: no PDF: {exc}")
-                continue
-            report = build_report(case)
-            input_errors += report.error is not None
-            not_passing += report.verdict.passes is not True
-            lines.append(f"{report.summary_line()}  ->  {pdf}")
+                pdf = None
+            else:
+                input_errors += report.error is not None
+                not_passing += report.verdict.passes is not True
+                lines.append(f"{report.summary_line()}  ->  {pdf}")
+            reports.append(report)
+            rows.append(summary_row(report, pdf))
+    if summary:
+        try:
+            written = render_summary(rows, reports, Path(output))
+        except CalcError as exc:
+            input_errors += 1
+            lines.append(f"ERROR no summary: {exc}")
+        else:
+            lines.append(f"{counts_text(rows)}  ->  {'  '.join(map(str, written))}")
     print("\n".join(lines))
     if input_errors:
         return 2

@@ -88,6 +88,11 @@ KINDS: dict[str, Kind] = {
         Kind("per_hour", "1/[time]", 0, "1/s", '"1800 / hour"'),
         Kind("temperature", "[temperature]", 0, "K", '"60 degC"'),
         Kind("stiffness_length", "[mass]*[length]**3/[time]**2", -1, "N*m**2/rad", '"20230 N*m**2/rad"'),
+        Kind("angular_acceleration", "1/[time]**2", 1, "rad/s**2", '"60 rad/s**2"'),
+        Kind("mass", "[mass]", 0, "kg", '"50 kg"'),
+        Kind("force", "[mass]*[length]/[time]**2", 0, "N", '"100 N"'),
+        Kind("linear_speed", "[length]/[time]", 0, "m/s", '"0.5 m/s"'),
+        Kind("linear_acceleration", "[length]/[time]**2", 0, "m/s**2", '"9.80665 m/s**2"'),
     )
 }
 

@@ -8,10 +8,11 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-EXAMPLE = ROOT / "cases" / "indexing-table.toml"
+EXAMPLE = ROOT / "tests" / "cases" / "indexing-table-profile.toml"  # the typed load cycle the tests work by hand
+DERIVED_EXAMPLE = ROOT / "cases" / "indexing-table.toml"  # the example: its cycle derived from the motion
 GEARBOXES = ROOT / "catalogs" / "gearboxes.csv"
 
-# The example's load cycle, in the case-file format (used to build variants in tests).
+# The typed example's load cycle, in the case-file format (used to build variants in tests).
 PROFILE_TOML = """
 [[profile]]
 phase = "accel"

@@ -45,7 +45,8 @@ def test_example_shows_its_chain_lost_motion_and_positioning_accuracy():
     assert proc.returncode == 0, proc.stderr
     a = json.loads(proc.stdout)["accuracy"]
     assert set(a) >= {"C_total", "lost_motion", "positioning_accuracy", "repeatability", "components"}
-    assert [(c["name"], c["side"]) for c in a["components"]] == [("AKD-30 motor coupling", "input"), ("NPT035-10", "output")]
+    # Both members follow the selections (part = "selected"): AKD-30 and NPT035-10 at ratio 10.
+    assert [(c["name"], c["side"]) for c in a["components"]] == [("AKD-30", "input"), ("NPT035-10", "output")]
     coupling, gearbox = a["components"]
     assert set(coupling) >= {"name", "side", "stiffness_at_output", "backlash_at_output"}
     # By hand: AKD-30's 25 000 N·m/rad is 7.27221 N·m/arcmin at the motor, × 10² = 727.221 at the output (E11);

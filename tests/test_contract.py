@@ -9,7 +9,7 @@ import json
 
 import pytest
 
-from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, run
+from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, run
 
 COUPLING_TOML = """
 [coupling]
@@ -170,6 +170,39 @@ def test_chain_follows_the_selection(capsys, write_case):
 def test_selected_part_errors(capsys, write_case, chain, fragment):
     code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + COUPLING_TOML + chain))
     assert code == 2 and out == "" and fragment in err
+
+
+TRACE = 'transmission_trace = "{trace}"\n'
+
+
+@pytest.mark.parametrize(
+    "chain, fragment",
+    [
+        (SELECTED_CHAIN + TRACE, "accuracy.component[2].transmission_trace: a measurement belongs to the part it was made on, but part = \"selected\" follows the selection; name that part with measured_part"),
+        (SELECTED_CHAIN + 'measured_part = "NPT035-10"\n', "accuracy.component[2].measured_part: measured_part names the part a measurement was made on; give hysteresis or transmission_trace as well"),
+        (SELECTED_CHAIN.replace('[[accuracy.component]]\npart = "selected"\n', '[[accuracy.component]]\npart = "NPT035-10"\n') + TRACE + 'measured_part = "NPT035-10"\n',
+         "accuracy.component[2].measured_part: measured_part names the part a measurement was made on when part = \"selected\"; found part = 'NPT035-10', whose measurements are its own"),
+    ],
+)
+def test_measured_part_errors(capsys, write_case, chain, fragment):
+    trace = ROOT / "data" / "transmission-NPT035-10-generated.csv"
+    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + COUPLING_TOML + chain.format(trace=trace)))
+    assert code == 2 and out == "" and fragment in err and err.count("\n") == 1
+
+
+def test_a_measurement_applies_while_the_selection_chooses_its_part(capsys, write_case):
+    # The generated trace of NPT035-10 gives 62.9456 arcsec (tests/test_accuracy_cli.py); it is
+    # used at ratio 10, where the selection chooses NPT035-10, and left out at ratio 8 (NPT035-8).
+    trace = ROOT / "data" / "transmission-NPT035-10-generated.csv"
+    chain = SELECTED_CHAIN + TRACE.format(trace=trace) + 'measured_part = "NPT035-10"\n'
+    head = HEAD_TOML + PROFILE_TOML + COUPLING_TOML
+    at_10 = results(capsys, write_case(head + chain))["accuracy"]
+    assert at_10["transmission_accuracy"]["value"] == pytest.approx(62.9456, abs=1e-4)
+    assert "measured_trace" in at_10["components"][1]
+    at_8 = results(capsys, write_case((head + chain).replace("ratio = 10", "ratio = 8"), "eight.toml"))["accuracy"]
+    gearbox = at_8["components"][1]
+    assert "measured_trace" not in gearbox and at_8["transmission_accuracy"]["value"] == 0
+    assert gearbox["source"].endswith(f"the transmission_trace of NPT035-10 not used: the selection chose {gearbox['name']}")
 
 
 def test_selected_needs_the_section_it_follows(capsys, write_case):

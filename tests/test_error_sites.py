@@ -20,6 +20,7 @@ from .error_sites import error_sites, site_at
 NOT_FROM_INPUT = {
     ("calc/publish.py", "render_pdf", "{case}: the report notebook stopped"),
     ("calc/publish.py", "render_pdf", "{case}: xelatex could not typeset the report"),
+    ("calc/publish.py", "render_summary", "{pdf}: xelatex could not typeset the summary"),
     # A backstop of the JSON writer: inputs are held to calc.units.SI_SCALE, within which no formula overflows.
     ("calc/sections/common.py", "number", "{key}: the calculation overflows"),
 }

@@ -19,7 +19,7 @@ import pytest
 from calc.case import read_case
 from calc.sections import evaluate
 
-from .conftest import EXAMPLE, ROOT
+from .conftest import DERIVED_EXAMPLE as EXAMPLE, ROOT  # the example case as shipped
 
 PIP = ["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "--no-index", "--no-deps", "--no-build-isolation"]
 

@@ -16,7 +16,7 @@ from calc.errors import CalcError
 from calc.publish import output_paths
 from calc.report import build_report, latex_escape, prose
 
-from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML
+from .conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT
 
 TITLE = r"Axis #3 — 50% load & T_2 {v2} \ 100$"
 needs_tex = pytest.mark.skipif(
@@ -53,7 +53,7 @@ def test_a_passing_case_names_its_parts(write_case):
     r = build_report(EXAMPLE)
     assert r.verdict.word == "PASS" and r.reasons == []
     assert ("Gearbox", "NPT035-10") in [(w, p) for w, p, _ in r.chosen]
-    assert r.summary_line().startswith("PASS  cases/indexing-table.toml: gearbox NPT035-10")
+    assert r.summary_line().startswith("PASS  tests/cases/indexing-table-profile.toml: gearbox NPT035-10")
     # Title block: the case file and each catalog with its SHA-256.
     assert [label for label, _, _ in r.files][:2] == ["Case file", "Gearbox catalog"]
     assert all(re.fullmatch(r"[0-9a-f]{64}", digest) for _, _, digest in r.files)
@@ -164,7 +164,7 @@ def test_example_pdf_has_title_verdict_parts_and_numbers(example_pdf):
     assert re.search(r"SHA-256\s+[0-9a-f]{64}", text)
     pages = int(re.search(r"Page 1 of (\d+)", text).group(1))
     assert pages >= 5
-    assert proc.stdout.strip().startswith("PASS  cases/indexing-table.toml: gearbox NPT035-10")
+    assert proc.stdout.strip().startswith("PASS  tests/cases/indexing-table-profile.toml: gearbox NPT035-10")
 
 
 @needs_tex
@@ -216,3 +216,35 @@ def test_shock_factor_band_is_the_one_the_factor_came_from():
     block = shock_factor_block(zh)
     assert float(shock_factor(zh)) == 1.3
     assert r"1500 \le Z_h < 2000" in block and "f_{s} = 1.3" in block
+
+
+def test_a_derived_load_cycle_shows_its_motion_and_mechanism():
+    r = build_report(DERIVED_EXAMPLE)
+    assert r.verdict.word == "PASS"
+    inputs, steps = str(r.inputs()), str(r.calculations())
+    # The mechanism's inputs and the moves; the duty's table says the cycle is derived.
+    assert r"\texttt{\footnotesize mechanism.friction\_torque}" in inputs
+    assert "Moves of the load, repeated" in inputs and "derived from the motion" in inputs
+    # Each formula with its values: ω_2max = 90° / (0.5 − 0.15/2 − 0.15/2) s = 42.86 rpm; α = 4.488 / 0.12 = 37.4 rad/s²;
+    # at the peak acceleration T_2 = 0.15 · 37.4 + 3 = 8.61 N·m.
+    assert r"\omega_{2,\max} &= \frac{\varphi_{2}}{t_{m} - \frac{t_{a}}{2} - \frac{t_{d}}{2}}" in steps
+    assert r"&= 42.86\,\mathrm{rpm}" in steps and r"&= 37.4\,\mathrm{rad/s^{2}}" in steps and r"&= 8.61\,\mathrm{N\,m}" in steps
+    assert "Segments derived from the sampled cycle" in steps
+    assert steps.index("Motion and mechanism") < steps.index("Duty cycle and operating mode")
+    assert any("derived segments" in caption for _, caption in r.figures())
+
+
+def test_a_linear_axis_shows_its_radius_inertia_and_force():
+    r = build_report(ROOT / "cases" / "linear-axis-inch.toml")
+    steps = str(r.calculations())
+    # r = 1 in / 2π = 4.043 mm; J_L = 60 lb · r² + 2.7 lb·in² = 4.448 + 7.901 = 12.35 kg·cm².
+    assert r"r &= \frac{p}{2 \cdot \pi}" in steps and r"&= 4.043\,\mathrm{mm}" in steps
+    assert r"&= 12.35\,\mathrm{kg\,cm^{2}}" in steps
+    assert r"F &= a \cdot m" in steps and r"T_{2} &= F \cdot r \cdot \eta^{- d_{P}}" in steps
+
+
+def test_a_derived_load_inertia_is_not_listed_as_a_case_key():
+    inputs = str(build_report(DERIVED_EXAMPLE).inputs())
+    assert r"\texttt{\footnotesize load.inertia}" not in inputs
+    assert r"\texttt{\footnotesize mechanism.inertia}" in inputs
+    assert r"\texttt{\footnotesize load.inertia}" in str(build_report(EXAMPLE).inputs())

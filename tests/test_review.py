@@ -146,25 +146,35 @@ def test_panel_controls_re_evaluate_the_case(monkeypatch):
     first = review.generation
     assert "PASS" in review.results.value and bytes(review.load_cycle.value)[:4] == b"\x89PNG"
     assert len(drawn) == 2  # the load cycle and the stiffness chain
-    review.controls["motor.peak_torque"].value = 30.0
+    review.controls["coupling.temperature"].value = 60.0
     review.settled()
     assert review.generation == first + 1  # one update per change
-    assert "FAIL" in review.results.value and "378.3" in review.results.value  # the panel follows the control
-    assert len(drawn) == 2  # neither figure's inputs changed: neither is drawn again
-    review.controls["profile[4].duration"].value = 3.0
+    assert len(drawn) == 2  # neither figure's inputs changed (a bellows coupling has no temperature factor)
+    review.controls["profile[2].torque"].value = 21.0
     review.settled()
     assert len(drawn) == 3  # the load cycle only
+    review.controls["motor.peak_torque"].value = 30.0
+    review.settled()
+    assert "FAIL" in review.results.value and "378.3" in review.results.value  # the panel follows the control
+    # The coupling follows the motor's torque (AKD-60), and with it the accuracy chain: drawn again.
+    assert "Coupling <b>AKD-60</b>" in review.results.value and len(drawn) == 4
     review.reset.click()  # back to the case file's values, whose figures are kept
-    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and len(drawn) == 3
+    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and len(drawn) == 4
 
 
 def test_changes_that_arrive_while_drawing_are_drawn_once_together():
+    import threading
+
     review = DesignReview(EXAMPLE)
-    first = review.generation
+    first, drawing, draw = review.generation, threading.Event(), review.refresh
+    review.refresh = lambda: drawing.wait(10) and draw()  # the first drawing lasts until all values are set
     for t in (13.0, 14.0, 15.0, 16.0, 17.0):
         review.controls["motor.peak_torque"].value = t
+    drawing.set()
     review.settled()
-    assert first + 1 <= review.generation <= first + 2  # the first value, then the rest at once
+    # Five values, at most two drawings: the one under way (which may already read a later value),
+    # then what came meanwhile, at once.
+    assert first + 1 <= review.generation <= first + 2
     assert "</i><sub>2max</sub> 214.4 N·m" in review.results.value  # 17 N·m · 10 · 1.3 · 0.97, the last value
 
 
@@ -187,15 +197,37 @@ def test_the_panel_offers_the_case_files_of_its_folder_only(tmp_path):
     assert review.case.path == tmp_path / "b.toml"
 
 
-def test_a_section_that_no_longer_fits_is_left_out_not_everything(case):
-    # At ratio 8 the accuracy chain's NPT035-10 (a 10:1 part) is no longer in the drive train.
+def test_the_accuracy_chain_follows_a_change_of_ratio(case):
+    # The example's chain takes the selections' parts, so at ratio 8 it is AKD-30 and TP010-8
+    # (catalogs/gearboxes.csv: C_t21 = 23 N·m/arcmin, backlash 3 arcmin, T_2N = 80 N·m). By hand:
+    # AKD-30's 25 000 N·m/rad = 7.27221 N·m/arcmin × 8² = 465.421 at the output (E11);
+    # C_total = 1 / (1/465.421 + 1/23) = 21.9170 N·m/arcmin; lost motion at 8 N·m = 3 + 8/21.9170
+    # = 3.36501 arcmin (E12); 8 N·m > 3 % of 80 N·m and the trace of NPT035-10 no longer applies,
+    # so the positioning accuracy is 0 + 8/21.9170 = 0.36501 arcmin (E13).
+    r = evaluate(with_changes(case, ratio=Q_(8, "")))
+    a = r["accuracy"]
+    assert [c["name"] for c in a["components"]] == ["AKD-30", "TP010-8"]
+    assert a["C_total"]["value"] == pytest.approx(21.9170, abs=1e-4)
+    assert a["lost_motion"]["value"] == pytest.approx(3.36501, abs=1e-5)
+    assert a["positioning_accuracy"]["value"] == pytest.approx(0.36501, abs=1e-5)
+    assert "the transmission_trace of NPT035-10 not used: the selection chose TP010-8" in a["components"][1]["source"]
+    assert "measured_trace" not in a["components"][1]
+    text = results_html(*evaluated(with_changes(case, ratio=Q_(8, ""))))
+    assert '<span class="word pass">PASS</span>' in text and "Gearbox <b>TP010-8</b>" in text and "0.365 arcmin" in text
+
+
+def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
+    # A chain that names NPT035-10 (a 10:1 part) no longer fits the drive train at ratio 8.
     # The review still shows the gearbox and the coupling, and says FAIL with the reason.
-    report, left_out = evaluated(with_changes(case, ratio=Q_(8, "")))
-    text = results_html(report, left_out)
-    assert "FAIL" in text and "The accuracy section cannot be evaluated with these inputs" in text
-    assert "NPT035-10" in text
+    text = EXAMPLE.read_text()
+    start = text.index("[[accuracy.component]]")
+    named = text[:start] + '[[accuracy.component]]\npart = "NPT035-10"\n'
+    report, left_out = evaluated(with_changes(read_case(write_case(named)), ratio=Q_(8, "")))
+    shown = results_html(report, left_out)
+    assert "FAIL" in shown and "The accuracy section cannot be evaluated with these inputs" in shown
+    assert "NPT035-10" in shown
     assert {c["part"] for c in report.results["gearbox"]["candidates"]} == {"TP010-8", "NPT035-8", "SP075-8"}  # catalogs/gearboxes.csv, ratio 8
-    assert "Accuracy of the chain" not in text
+    assert "Coupling candidates" in shown and "Accuracy of the chain" not in shown
 
 
 def test_slider_labels_read_as_written():
@@ -208,7 +240,7 @@ def test_slider_labels_read_as_written():
 
 def test_a_report_link_is_shown_beside_the_verdict():
     panel = DesignReview(EXAMPLE, report_link=lambda path: f"reports/{path.stem}.pdf")
-    assert '<a href="reports/indexing-table.pdf"' in panel.results.value
+    assert '<a href="reports/indexing-table-profile.pdf"' in panel.results.value
 
 
 def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
@@ -224,3 +256,17 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     assert serve.environment(EXAMPLE)[serve.CASE_VARIABLE] == str(EXAMPLE.resolve())
     assert serve.main(["--cases", str(EXAMPLE.parent), "--case", "missing.toml"]) == 2
     assert "missing.toml: the case file does not exist" in capsys.readouterr().err
+
+
+def test_a_derived_cycle_stays_derived_until_a_segment_is_moved():
+    from tests.conftest import DERIVED_EXAMPLE
+
+    panel = DesignReview(DERIVED_EXAMPLE)
+    assert panel.controls["profile[1].torque"].value == 7.8  # the control's step rounds 7.8269 N·m
+    assert panel.changed_case().motion is panel.case.motion  # but the case keeps its own value
+    assert "Motion: rotary from its moves · peak speed 42.86 rpm" in panel.results.value
+    panel.controls["profile[1].torque"].value = 9.0
+    panel.settled()
+    assert panel.changed_case().motion is None and "Load cycle: the segments as changed here" in panel.results.value
+    panel.reset.click()
+    assert "Motion: rotary" in panel.results.value

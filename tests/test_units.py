@@ -48,7 +48,7 @@ def test_stiffness_conversion_factor_e14():
         (3, "angle", "bare number"),
         ("300 rpm", "frequency", "a speed"),  # E15 (b): rpm silently turned into Hz
         ("5 Hz", "speed", "a frequency"),
-        ("12 N", "torque", "dimension"),  # a force given for a torque
+        ("12 N", "torque", "a force"),  # a force given for a torque
         ("3 arcmin", "speed", "an angle"),  # an angle given for a speed
         ("12 N*m", "time", "a torque"),
     ],

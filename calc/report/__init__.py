@@ -28,7 +28,7 @@ from ..case import Case, read_case
 from ..catalog import display_path
 from ..errors import CalcError
 from ..sections import Results, Verdict, evaluate
-from . import accuracy, coupling, drive, duty, gearbox
+from . import accuracy, coupling, drive, duty, gearbox, motion
 from .common import ERRATA, results_of
 from .latex import Latex, itemize, latex_escape, prose, q, render, table, util
 from .provenance import PACKAGE, build_date, git_commit, sha256
@@ -36,7 +36,7 @@ from .provenance import PACKAGE, build_date, git_commit, sha256
 __all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
 
 #: The block module of each section, in the order the report shows them.
-BLOCKS = (drive, duty, gearbox, coupling, accuracy)
+BLOCKS = (drive, motion, duty, gearbox, coupling, accuracy)
 
 #: What every report assumes.
 ASSUMPTIONS = (

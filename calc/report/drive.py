@@ -9,8 +9,9 @@ NAME = "drive"
 
 def input_rows(report) -> list[list[str]]:
     c, sym = report.case, gearbox_symbols()
-    given = [("T_1B", c.motor_peak_torque, "motor.peak_torque"), ("J_motor", c.motor_inertia, "motor.inertia"),
-             ("J_L", c.load_inertia, "load.inertia")]
+    given = [("T_1B", c.motor_peak_torque, "motor.peak_torque"), ("J_motor", c.motor_inertia, "motor.inertia")]
+    if c.motion is None:  # else the mechanism gives J_L (the motion's inputs and steps)
+        given.append(("J_L", c.load_inertia, "load.inertia"))
     return [input_row(sym[name], q, key) for name, q, key in given if q is not None]
 
 

@@ -33,7 +33,8 @@ def inputs(report) -> list[str]:
         r"@{}r l r r r@{}",
         ["k", "Phase", f"${t_k_symbol.latex}$ [s]", rf"${s['n_2k'].latex}$ [rpm]", rf"${s['T_2k'].latex}$ [N·m]"],
         rows,
-        caption="Load cycle at the gearbox output (case key \\texttt{[[profile]]})",
+        caption="Load cycle at the gearbox output (case key \\texttt{[[profile]]})" if report.case.motion is None
+        else "Load cycle at the gearbox output, derived from the motion (below)",
         note="Speeds are the mean output speed of each segment; a negative torque brakes.",
     )]
 

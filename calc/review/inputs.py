@@ -142,7 +142,12 @@ def with_inputs(case: Case, values: dict) -> Case:
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
     >>> changed = with_inputs(case, {"profile[4].duration": Q_(3, "s"), "coupling.temperature": Q_(60, "degC")})
     >>> changed.profile.durations, changed.sections["coupling"]["temperature"], case.sections["coupling"]["temperature"]
-    (<Quantity([0.2 0.6 0.2 3. ], 'second')>, '60 degree_Celsius', '40 degC')
+    (<Quantity([0.15 0.2  0.15 3.  ], 'second')>, '60 degree_Celsius', '40 degC')
+
+    The example derives its cycle from its motion; a changed segment makes the cycle a typed one:
+
+    >>> with_inputs(case, {"motor.peak_torque": Q_(13, "N*m")}).motion is case.motion, changed.motion
+    (True, None)
     """
     p = case.profile
     durations, torques = p.durations.m_as("s").copy(), p.torques.m_as("N*m").copy()
@@ -162,7 +167,9 @@ def with_inputs(case: Case, values: dict) -> Case:
         for k, phase in enumerate(p.phases)
     ]
     profile = Profile.from_segments(segments, where=f"{case.path}: profile")
-    return dataclasses.replace(case, profile=profile, sections=sections, **fields)
+    same = np.allclose(durations, p.durations.m_as("s"), rtol=1e-9) and np.allclose(torques, p.torques.m_as("N*m"), rtol=1e-9)
+    # Segments changed by hand are typed: the motion they were derived from no longer holds.
+    return dataclasses.replace(case, profile=profile, motion=case.motion if same else None, sections=sections, **fields)
 
 
 def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_peak_torque=None, motor_inertia=None,

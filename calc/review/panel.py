@@ -47,8 +47,8 @@ def _ratios(case: Case) -> list[float]:
 
 
 class DesignReview:
-    """The design-review panel of the case file ``case_path``; any case file beside it can be
-    chosen in the panel.
+    """The design-review panel of the case file ``case_path``; any case file of the folder
+    ``cases`` (by default the one it is in) can be chosen in the panel.
 
     ``controls`` holds each input's value widget by its key path (``motor.peak_torque``); setting
     one's ``value`` (by hand or in code) re-evaluates the case into ``results`` (the text) and the
@@ -56,11 +56,11 @@ class DesignReview:
     which the panel links beside the verdict.
     """
 
-    def __init__(self, case_path, report_link=None):
+    def __init__(self, case_path, report_link=None, cases=None):
         import ipywidgets as w
 
         path = Path(case_path)
-        choices = sorted({*path.parent.glob("*.toml"), path})
+        choices = sorted({*Path(cases or path.parent).glob("*.toml"), path})
         self.case_file = w.Dropdown(options=[(p.name, p) for p in choices], value=path, description="case",
                                     style={"description_width": "3em"}, layout=w.Layout(flex="1 1 auto", width="auto"))
         self.case_file.observe(lambda _: self.load(), names="value")
@@ -141,8 +141,11 @@ class DesignReview:
     # -- the results ---------------------------------------------------------------------------
 
     def changed_case(self) -> Case:
-        """The loaded case with the controls' values."""
-        return with_inputs(self.case, {s.key: Q_(self.controls[s.key].value, s.unit) for s in self.specs})
+        """The loaded case with the values of the controls that were moved (one left where it
+        started keeps the case's own value, not the control's rounding of it: a derived cycle's
+        7.8269 N·m stays, and stays derived)."""
+        moved = {s.key: self.controls[s.key].value for s in self.specs}
+        return with_inputs(self.case, {s.key: Q_(v, s.unit) for s in self.specs if (v := moved[s.key]) != s.value})
 
     def _draw(self):
         """The results text and the changed case (None where the inputs cannot make one)."""
@@ -152,7 +155,8 @@ class DesignReview:
             return f'<div class="dr"><b style="color:{FAIL_COLOR}">FAIL</b>: {typeset(str(exc))}</div>', None
         report, left_out = evaluated(case)
         link = self.report_link(case.path) if self.report_link else None
-        return results_html(report, left_out, link), (case, report)
+        typed = self.case.motion is not None and case.motion is None
+        return results_html(report, left_out, link, typed_by_hand=typed), (case, report)
 
     def refresh(self) -> None:
         """Draw the results of the controls' values: each figure whose inputs changed, then the

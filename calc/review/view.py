@@ -143,6 +143,19 @@ def _duty(r: dict) -> str:
     return '<div class="values">Duty: ' + " · ".join(p for p in parts if p) + "</div>"
 
 
+def _motion(r: dict, typed_by_hand: bool) -> str:
+    """Where the load cycle comes from: the motion's peak values, or that its segments were changed
+    by hand (then the moves and mechanism no longer derive it)."""
+    if typed_by_hand:
+        return '<div class="values">Load cycle: the segments as changed here (the case derives them from its motion; reset to derive them again)</div>'
+    m = r.get("motion")
+    if not m:
+        return ""
+    parts = [f"{escape(m.get('mechanism') or '')} from its {escape(m.get('source', ''))}s".strip(), f"peak speed {_q(m.get('peak_speed'))}",
+             f"peak acceleration {_q(m.get('peak_acceleration'))}", f"{typeset('J_L')} {_q(m.get('J_L'))}" if m.get("J_L") else ""]
+    return '<div class="values">Motion: ' + " · ".join(p for p in parts if p) + "</div>"
+
+
 def _worst(c: dict):
     us = [k["utilization"] for k in c["checks"] if k.get("governs", True) and k["utilization"] is not None]
     return max(us) if us else None
@@ -186,9 +199,10 @@ def _accuracy_table(a: dict) -> str:
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
 
 
-def results_html(report: Report, left_out: list[str], report_link: str | None = None) -> str:
+def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False) -> str:
     """The review of an evaluated case as one HTML text (see the module's docstring);
-    ``report_link``, where given, is the address of the case's report, linked beside the verdict."""
+    ``report_link``, where given, is the address of the case's report, linked beside the verdict;
+    ``typed_by_hand``: the case's derived load cycle was changed segment by segment."""
     word = "FAIL" if left_out else report.verdict.word
     passes = word == "PASS"
     cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
@@ -200,7 +214,7 @@ def results_html(report: Report, left_out: list[str], report_link: str | None = 
         out.append('<ul class="reasons">' + "".join(f"<li>{typeset(x)}</li>" for x in reasons) + "</ul>")
     r = report.results
     if r is not None:
-        out += [_governing(r), _duty(r)]
+        out += [_governing(r), _motion(r, typed_by_hand), _duty(r)]
         if r.get("gearbox"):
             out.append(_gearbox_table(r["gearbox"]))
         if r.get("coupling"):

@@ -14,15 +14,15 @@ from dataclasses import dataclass
 
 from ..case import Case
 from ..catalog import display_path
-from . import accuracy, coupling, drive, duty, gearbox
+from . import accuracy, coupling, drive, duty, gearbox, motion
 from .common import SHOWN_CANDIDATES, Verdict  # noqa: F401 (SHOWN_CANDIDATES: the command line)
 
 #: The evaluated sections, in the order of the results.
-SECTIONS = (duty, gearbox, coupling, accuracy)
+SECTIONS = (duty, motion, gearbox, coupling, accuracy)
 #: Sections that read their own table when evaluated (the case keeps it raw until then).
 FURTHER = (coupling.NAME, accuracy.NAME)
 #: The keys a case file may have at its top level.
-TOP_KEYS = ("title", "motor", "load", gearbox.NAME, duty.NAME, *FURTHER)
+TOP_KEYS = ("title", "motor", "load", gearbox.NAME, duty.NAME, *motion.TABLES, *FURTHER)
 
 NOTHING_CHECKED = "Nothing is checked: the case names no gearbox ratio or part, no coupling and no accuracy requirement."
 

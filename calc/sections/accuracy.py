@@ -27,8 +27,10 @@ KEYS = (
 )
 COMPONENT_KEYS = (
     "name", "side", "kind", "stiffness", "backlash", "transmission_accuracy", "nominal_torque",
-    "part", "catalog", "hysteresis", "transmission_trace",
+    "part", "catalog", "hysteresis", "transmission_trace", "measured_part",
 )
+#: The keys of a component that read a measurement of one physical part.
+MEASUREMENTS = ("hysteresis", "transmission_trace")
 
 
 @dataclass
@@ -160,6 +162,24 @@ def _coupling_part(case: Case, t: Table, part: str):
     return name, stiffness, side, f"{chosen}, {display_path(rows.path)} row {rows.lines[row]}"
 
 
+def _measured_part_chosen(t: Table, part: str | None, chosen_part: str | None, sources: list) -> bool:
+    """Whether the component's measurements apply: a measurement belongs to the part it was made on,
+    so with ``part = "selected"`` it needs ``measured_part`` and is used only while the selection
+    chooses that part (``sources`` is told when it is not)."""
+    measured = [key for key in MEASUREMENTS if t.has(key)]
+    measured_on = t.text("measured_part")
+    if measured_on is not None and part != SELECTED:
+        raise CalcError(f"{t.where('measured_part')}: measured_part names the part a measurement was made on when part = \"selected\"; found {'no part' if part is None else f'part = {part!r}, whose measurements are its own'}")
+    if measured_on is not None and not measured:
+        raise CalcError(f"{t.where('measured_part')}: measured_part names the part a measurement was made on; give hysteresis or transmission_trace as well")
+    if part == SELECTED and measured and measured_on is None:
+        raise CalcError(f"{t.where(measured[0])}: a measurement belongs to the part it was made on, but part = \"selected\" follows the selection; name that part with measured_part")
+    if measured_on is None or measured_on == chosen_part:
+        return True
+    sources.append(f"the {' and '.join(measured)} of {measured_on} not used: the selection chose {chosen_part}")
+    return False
+
+
 def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
     """One ``[[accuracy.component]]``: from its keys, a catalog part (or the selection's choice),
     or measurements."""
@@ -183,6 +203,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
     nominal = _positive(t, "nominal_torque", "torque")
     sources = []
     own_ratio = ratio
+    chosen_part = part  # the catalog part the component is, once a selection is followed
     if part is not None:
         for key in ("stiffness", "backlash", "nominal_torque"):
             if t.has(key):
@@ -193,14 +214,16 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
             raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side (coupling.side), found {side!r}")
         side = coupling_side or side
         backlash = Q_(0.0, "arcmin")
+        chosen_part = chosen
         name = chosen if name == SELECTED else name
         sources.append(source)
     elif part is not None:
         if side != "output":
             raise CalcError(f"{t.where('side')}: a gearbox's catalog figures are referred to its output, so the part {part!r} sits on the output side, found {side!r}")
         rows, row, source = _gearbox_part(case, t, part)
+        chosen_part = str(rows.parts[row])
         if name == SELECTED:
-            name = str(rows.parts[row])
+            name = chosen_part
         own_ratio = rows["ratio"][row]
         if ratio is not None and not np.isclose(own_ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
             raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {own_ratio.m_as(''):g}, but the case's gearbox ratio is {ratio.m_as(''):g}")
@@ -211,7 +234,8 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         sources.append(source)
     elif t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: a catalog is read only for a part; give part as well")
-    if t.has("hysteresis"):
+    measured_applies = _measured_part_chosen(t, part, chosen_part, sources)
+    if measured_applies and t.has("hysteresis"):
         from ..hysteresis import analyze_loop, read_loop
 
         for key in ("stiffness", "backlash"):
@@ -224,7 +248,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         stiffness, backlash = analysis.stiffness, analysis.backlash
         out.loops[name] = (display_path(path), analysis)
         sources.append(f"measured loop {display_path(path)}")
-    if t.has("transmission_trace"):
+    if measured_applies and t.has("transmission_trace"):
         from ..transmission import analyze_trace, read_trace
 
         if accuracy is not None:
@@ -365,7 +389,7 @@ class AccuracyResult:
         s = self.to_json()
         ratio = "" if s["ratio"] is None else f", ratio {s['ratio']:g}"
         lines = [f"Accuracy at the output (applied torque {quantity_text(s['applied_torque'])}{ratio}; E11 to E13):"]
-        width = max(len(c["name"]) for c in s["components"])
+        width = max(len("component"), *(len(c["name"]) for c in s["components"]))
         lines.append(f"  {'component':<{width}}  side    {'stiffness at output':>20}  {'share of twist':>14}  {'backlash at output':>18}  source")
         for c in s["components"]:
             lines.append(

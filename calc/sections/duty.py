@@ -96,7 +96,8 @@ def evaluate(case: Case) -> DutyResult:
     p = case.profile
     seg = p.moving_values()
     zh = Z_h(t_cycle=p.t_cycle)
-    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh)))
+    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh)),
+                     cycle=None if case.motion is None else case.motion.cycle)
     if gearbox.applies(case):
         selection = gearbox.gearbox_selection(case)
         if selection.T_2max is not None:

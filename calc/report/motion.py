@@ -1,0 +1,111 @@
+"""The motion and the mechanism in the calc report: the mechanism's inputs, the moves, each
+formula with its values (the transmission radius, the load's inertia, each move's peak speed and
+acceleration, the output torque in each phase), the derived segments and a figure of speed and
+torque over the cycle."""
+
+from __future__ import annotations
+
+from .. import mechanism as mech
+from ..motion import PHASES, alpha_2max, omega_2max
+from ..units import Q_, sig
+from .common import input_row, nothing
+from .latex import latex_escape, num, step_block, table
+
+NAME = "motion"
+
+#: Per input of a mechanism: its symbol, its field of :class:`calc.mechanism.Mechanism`, its case key.
+ROTARY_ROWS = ((mech.J_L_sym, "inertia", "inertia"), (mech.T_f, "friction_torque", "friction_torque"), (mech.T_p, "process_torque", "process_torque"))
+LINEAR_ROWS = ((mech.m, "mass", "mass"), (mech.mu, "friction_coefficient", "friction_coefficient"), (mech.theta, "incline", "incline"),
+               (mech.F_p, "force", "force"), (mech.eta, "eta", "eta"))
+OWN_ROWS = {"ball-screw": ((mech.p, "lead", "lead"), (mech.J_M, "own_inertia", "screw_inertia")),
+            "rack-pinion": ((mech.d, "diameter", "pitch_diameter"), (mech.J_M, "own_inertia", "pinion_inertia")),
+            "belt": ((mech.d, "diameter", "pulley_diameter"), (mech.J_M, "own_inertia", "pulley_inertia"))}
+
+
+def _motion(report):
+    return None if report.case is None else report.case.motion
+
+
+def input_rows(report) -> list[list[str]]:
+    m = _motion(report)
+    if m is None or m.mechanism is None:
+        return []
+    k = m.mechanism
+    rows = ROTARY_ROWS if not k.linear else LINEAR_ROWS + OWN_ROWS[k.type]
+    return [input_row(symbol, Q_(getattr(k, field)), f"mechanism.{key}") for symbol, field, key in rows]
+
+
+def inputs(report) -> list[str]:
+    m = _motion(report)
+    if m is None:
+        return []
+    if m.record is not None:
+        return [rf"The load cycle is the drive record \texttt{{{latex_escape(m.record)}}} (case key \texttt{{[drive\_record]}}), "
+                rf"{len(m.cycle.dt)} intervals between its rows."]
+    rows = []
+    for k, (move, given) in enumerate(zip(m.moves, m.distances), start=1):
+        if move.dwell:
+            rows.append([str(k), "dwell", "–", sig(move.time), "–", "–", "–"])
+        else:
+            rows.append([str(k), "move", latex_escape(f"{given:~P}"), sig(move.time), sig(move.accel_time), sig(move.decel_time),
+                         sig(move.jerk_time) if move.jerk_time else "–"])
+    kind = "rotary table" if not m.mechanism.linear else m.mechanism.type.replace("-", " and ").replace("ball and screw", "ball screw")
+    return [table(
+        r"@{}r l r r r r r@{}",
+        ["k", "", "Distance", "$t_m$ [s]", "$t_a$ [s]", "$t_d$ [s]", "$t_j$ [s]"],
+        rows,
+        caption=rf"Moves of the load, repeated (case key \texttt{{[[move]]}}; mechanism: {latex_escape(kind)})",
+        note="A trapezoid has no jerk time; with one, each speed ramp starts and ends with a ramp of constant jerk (an S-curve).",
+    )]
+
+
+def steps(report) -> list[str]:
+    m = _motion(report)
+    if m is None:
+        return []
+    out = [r"\subsection{Motion and mechanism}"]
+    k = m.mechanism
+    if k is not None and k.linear:
+        out += [step_block("Transmission radius", k.radius_step()), step_block("Load inertia at the gearbox output", k.load_inertia_step())]
+    for n, (move, given) in enumerate(zip(m.moves, m.distances), start=1):
+        if move.dwell:
+            continue
+        phi = k.to_output(given)
+        if k.linear:
+            out.append(step_block(f"Move {n}: distance at the output", mech.phi_2.step(result=phi, s=given, r=k.radius)))
+        times = {"t_m": Q_(move.time, "s"), "t_a": Q_(move.accel_time, "s"), "t_d": Q_(move.decel_time, "s")}
+        w = omega_2max.step(phi_2=phi, **times)
+        out.append(step_block(f"Move {n}: peak output speed", w))
+        accel = alpha_2max.step(omega_2max=w.result, t_r=times["t_a"], t_j=Q_(move.jerk_time, "s"))
+        out.append(step_block(f"Move {n}: peak output acceleration", accel))
+        if move.decel_time != move.accel_time:
+            out.append(step_block(f"Move {n}: peak output deceleration", alpha_2max.step(omega_2max=w.result, t_r=times["t_d"], t_j=Q_(move.jerk_time, "s"))))
+        for phase, a in (("acceleration", accel.result), ("constant speed", Q_(0.0, "rad/s**2")), ("deceleration", -accel.result)):
+            for step in k.steps(w.result, a):
+                out.append(step_block(f"Move {n}, {phase}: {step.formula.result.description}", step))
+    g = m.segments
+    rows = [[str(j), PHASES[p], num(Q_(t, "s"), "s"), num(Q_(n, "rad/s"), "rpm"), num(Q_(T, "N*m"), "N*m")]
+            for j, (p, t, n, T) in enumerate(zip(g.phase, g.duration, g.speed, g.torque), start=1)]
+    out.append(table(
+        r"@{}r l r r r@{}", ["k", "Phase", "$t_k$ [s]", "$n_{2,k}$ [rpm]", "$T_{2,k}$ [N·m]"], rows,
+        caption="Segments derived from the sampled cycle, used as the load cycle",
+        note=(f"{len(m.cycle.dt)} samples per cycle. Mean speed of each segment; its torque gives the segment's cubic mean "
+              "(the integral over the samples; in a trapezoid's phase the torque is constant and this is its value). "
+              "A pause holds the torque that keeps the load at rest."),
+    ))
+    return out
+
+
+def figures(report) -> list:
+    m = _motion(report)
+    if m is None:
+        return []
+    from ..motion_plots import motion_figure
+
+    k = m.mechanism
+    fig = motion_figure(m.samples, m.cycle.torque, m.segments, to_load=1.0 if k is None else k.to_load(),
+                        linear=k is not None and k.linear, rows=("speed", "torque"))
+    return [(fig, "Output speed and torque over one cycle, sampled, with the derived segments (dashed).")]
+
+
+results = checks = candidates = chosen = order_lines = sources = readings = nothing

@@ -1,0 +1,183 @@
+"""The summary of several design cases (a machine's axes): one row per case with its verdict, the
+chosen gearbox and coupling, the worst utilization of every governing check and where it is, and
+the file of the case's own calc report; written as CSV and as a LaTeX page for the PDF.
+
+A row is plain data (:func:`summary_row`), so the design review can list the same rows; the PDF
+(:func:`summary_latex`) has a title block like a single report's, the table (it breaks across
+pages with its header repeated) and the count of each verdict.
+"""
+
+from __future__ import annotations
+
+import csv
+import re
+from pathlib import Path
+
+from ..catalog import display_path
+from ..sections import Verdict
+from .latex import Latex, latex_escape, prose, render, table, util
+from .provenance import PACKAGE
+
+#: The sections whose chosen part a row names, in the order of the columns.
+CHOSEN = ("gearbox", "coupling")
+#: The columns of the CSV, units in brackets (a utilization is a fraction: 1 is the rating).
+CSV_COLUMNS = ("case file", "title", "verdict", *CHOSEN, "worst utilization [1]", "worst check", "worst check in", "report", "reason")
+#: What a row says where no part of a section passes.
+NONE_PASSES = "none passes"
+#: File names a relative link in the PDF carries as written (others are shown without a link).
+_LINKABLE = re.compile(r"[A-Za-z0-9._+-]+\.pdf")
+
+
+def worst_check(results: dict) -> dict | None:
+    """The governing check with the highest utilization of the whole case: of the first candidate
+    of each section that ranks candidates (the chosen part, or the closest when none passes), and
+    of each section's own checks (the accuracy against its requirements). None when no governing
+    check has a utilization.
+
+    Returns ``{"utilization", "check", "section", "part"}``; ``check`` is the criterion as the
+    results write it (``T_2max <= T_2B``), ``part`` None for a section's own checks.
+    """
+    worst = None
+    for section, s in results.items():
+        if not isinstance(s, dict):
+            continue
+        first = s["candidates"][0] if s.get("candidates") else None
+        for k in first.get("checks", []) if first else s.get("checks", []):
+            if not k.get("governs", True) or k.get("utilization") is None:
+                continue
+            if worst is None or k["utilization"] > worst["utilization"]:
+                worst = {"utilization": k["utilization"], "check": k.get("criterion") or k["name"], "section": section,
+                         "part": first.get("part") if first else None}
+    return worst
+
+
+def summary_row(report, pdf: Path | None) -> dict:
+    """One case as plain data: ``case`` (the file as results show it), ``title``, ``verdict``
+    (PASS, FAIL or NOT DECIDED) and ``passes`` (True, False or None), ``chosen`` (the part of each
+    section of :data:`CHOSEN` the case evaluates; None where none passes), ``worst`` (of
+    :func:`worst_check`), ``report`` and ``report_path`` (the calc report's file name and path;
+    None when it was not built), ``error`` (why the case cannot be evaluated, or None) and
+    ``reason`` (the first reason of a verdict that is not PASS).
+
+    ``report`` is a :class:`calc.report.Report`.
+    """
+    results = report.results or {}
+    verdict = report.verdict
+    return {
+        "case": display_path(report.path),
+        "title": report.title,
+        "verdict": verdict.word,
+        "passes": verdict.passes,
+        "chosen": {name: results[name].get("selected") for name in CHOSEN if name in results},
+        "worst": worst_check(results),
+        "report": None if pdf is None else pdf.name,
+        "report_path": None if pdf is None else str(pdf),
+        "error": report.error,
+        "reason": verdict.reasons[0] if verdict.reasons else None,
+    }
+
+
+def counts(rows: list[dict]) -> dict:
+    """How many rows have each verdict, PASS, FAIL, NOT DECIDED (every word, zero counts too)."""
+    words = [Verdict(p).word for p in (True, False, None)]
+    return {w: sum(r["verdict"] == w for r in rows) for w in words}
+
+
+def counts_text(rows: list[dict]) -> str:
+    """``2 PASS, 1 FAIL, 0 NOT DECIDED``."""
+    return ", ".join(f"{n} {w}" for w, n in counts(rows).items())
+
+
+def _chosen_text(row: dict, name: str) -> str:
+    if name not in row["chosen"]:
+        return ""
+    return row["chosen"][name] or NONE_PASSES
+
+
+def write_csv(rows: list[dict], path: Path) -> None:
+    """The rows as CSV: a header of :data:`CSV_COLUMNS`, one line per case; the utilization a
+    number, an empty cell where there is none."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with path.open("w", newline="", encoding="utf-8") as f:
+        out = csv.writer(f)
+        out.writerow(CSV_COLUMNS)
+        for r in rows:
+            w = r["worst"] or {}
+            out.writerow([r["case"], r["title"], r["verdict"], *(_chosen_text(r, n) for n in CHOSEN), w.get("utilization", ""),
+                          w.get("check", ""), " ".join(x for x in (w.get("section"), w.get("part")) if x),
+                          r["report"] or "", r["reason"] or ""])
+
+
+def _breakable(text: str, escape=latex_escape) -> str:
+    """Text as LaTeX (``escape``) that may break after a slash (long paths in narrow columns)."""
+    return escape(text).replace("/", r"/\allowbreak{}")
+
+
+def _report_link(name: str | None) -> str:
+    if name is None:
+        return r"\textcolor{failred}{not built}"
+    shown = rf"\texttt{{\footnotesize {_breakable(name)}}}"
+    return rf"\href{{{name}}}{{{shown}}}" if _LINKABLE.fullmatch(name) else shown
+
+
+def _verdict_cell(row: dict) -> str:
+    colour = {True: "passgreen", False: "failred", None: "infogrey"}[row["passes"]]
+    words = " ".join(rf"\mbox{{{w}}}" for w in row["verdict"].split())  # NOT DECIDED: two lines, no hyphen
+    return rf"\textcolor{{{colour}}}{{\textbf{{{words}}}}}"
+
+
+def _case_cell(row: dict) -> str:
+    out = rf"{latex_escape(row['title'])}\newline\texttt{{\footnotesize {_breakable(row['case'])}}}"
+    worst = row["worst"]
+    if row["reason"] and (row["error"] or worst is None or worst["utilization"] <= 1):  # else the worst check says why
+        colour = "failred" if row["passes"] is False else "infogrey"
+        reason = _breakable(row["reason"], latex_escape if row["error"] else prose)  # an error quotes the case as written
+        out += rf"\newline{{\footnotesize\color{{{colour}}} {reason}}}"
+    return out
+
+
+def _part_cell(row: dict, name: str) -> str:
+    text = _chosen_text(row, name)
+    if text == NONE_PASSES:
+        return rf"\textcolor{{failred}}{{{text}}}"
+    return latex_escape(text) if text else "–"
+
+
+def _worst_cell(row: dict) -> str:
+    w = row["worst"]
+    if w is None:
+        return "–"
+    where = " ".join(latex_escape(x) for x in (w["section"], w["part"]) if x)
+    check = prose(w["check"] if w["part"] else w["check"].replace("_", " "))  # a section's own check: words
+    return rf"{util(w['utilization'])}\newline{{\footnotesize {where}: {check}}}"
+
+
+def summary_latex(rows: list[dict], reports: list, built: str, commit: str) -> Latex:
+    """The summary PDF's content: heading, the count of each verdict, the table of cases and the
+    title block (each case file and catalog read, with its SHA-256; build date, package, commit).
+    ``reports`` are the rows' :class:`calc.report.Report` objects, for the files they read."""
+    body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r), _verdict_cell(r), *(_part_cell(r, n) for n in CHOSEN),
+             _worst_cell(r), _report_link(r["report"])] for k, r in enumerate(rows)]  # rows of several lines set apart
+    cases = table(
+        r"@{} p{0.29\linewidth} p{0.1\linewidth} p{0.11\linewidth} p{0.08\linewidth} p{0.16\linewidth} p{0.12\linewidth}@{}",
+        ["Case", "Verdict", "Gearbox", "Coupling", "Worst utilization", "Report"], body, small=True,
+        note="Worst utilization: the highest required / rated of every governing check of the chosen parts (of the "
+             "closest candidate where none passes) and of the requirements of the case; above 1.00 the check fails. "
+             "Each report's file name links to it, in the folder of this summary.",
+    )
+    files = {}  # path text -> (label, sha256): each file once, in the order read
+    for report in reports:
+        for label, path, digest in report.files:
+            files.setdefault(path, (label, digest))
+    block = []
+    for path, (label, digest) in files.items():
+        block += [[latex_escape(label), rf"\texttt{{{_breakable(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
+    block += [["Built", latex_escape(built)], ["Package", latex_escape(PACKAGE)],
+              ["Commit", rf"\texttt{{\footnotesize {latex_escape(commit)}}}"]]
+    n = counts(rows)
+    errors = sum(r["error"] is not None for r in rows)
+    return Latex(render(
+        "summary.tex.j2", n_cases=len(rows), counts=counts_text(rows),
+        colour="failred" if n["FAIL"] else ("infogrey" if n["NOT DECIDED"] else "passgreen"),
+        errors=errors, cases=cases, title_block=table(r"@{}l p{0.78\linewidth}@{}", ["Item", "Value"], block),
+    ))

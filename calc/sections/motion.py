@@ -1,0 +1,276 @@
+"""The load cycle derived instead of typed (``spec/case-format.md``, "Motion and mechanism"):
+the moves of the load (``[[move]]``) through its mechanism (``[mechanism]``), or a time series a
+drive recorded (``[drive_record]``), sampled at the gearbox output (:class:`calc.cycle.SampledCycle`)
+and cut into the seed's segments, which the duty section uses as if they were typed."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..case import Case, Table
+from ..catalog import Column
+from ..cycle import SampledCycle
+from ..errors import CalcError
+from ..measurement import measurement_path, read_measurement
+from ..mechanism import TYPES, Mechanism
+from ..motion import PHASES, Move, Samples, record_samples, sample, segments
+from ..profile import Profile
+from ..units import Q_, kind_phrase, parse_quantity
+from .common import quantity, quantity_text
+
+NAME = "motion"
+#: The tables of a case that give its motion; each is also a key at the case file's top level.
+TABLES = ("mechanism", "move", "drive_record")
+#: The ways to give the load cycle; a case gives exactly one.
+FORMS = ("profile", "move", "drive_record")
+
+COMMON_KEYS = ("type", "holding_brake")
+ROTARY_KEYS = ("inertia", "friction_torque", "process_torque")
+LINEAR_KEYS = ("mass", "friction_coefficient", "incline", "force", "eta")
+#: Per linear type: the key of its radius (a lead or a diameter) and of its own inertia.
+OWN_KEYS = {"ball-screw": ("lead", "screw_inertia"), "rack-pinion": ("pitch_diameter", "pinion_inertia"), "belt": ("pulley_diameter", "pulley_inertia")}
+MOVE_KEYS = ("distance", "time", "accel_time", "decel_time", "jerk_time", "dwell")
+RECORD_KEYS = ("file",)
+RECORD_COLUMNS = (Column("time", "time", "time of the sample"), Column("speed", "speed", "output speed"))
+RECORD_TORQUE = Column("torque", "torque", "output torque")
+
+
+def keys_of(type_: str) -> tuple[str, ...]:
+    """The keys a mechanism of one type takes."""
+    return COMMON_KEYS + (ROTARY_KEYS if type_ == "rotary" else LINEAR_KEYS + OWN_KEYS[type_])
+
+
+@dataclass
+class Motion:
+    """The motion form of a case: its mechanism (None for a drive record with its torque), its
+    moves (empty for a drive record), the samples and the sampled cycle at the gearbox output,
+    and the seed's segments as the profile the other sections use."""
+
+    mechanism: Mechanism | None
+    moves: list
+    distances: list  # per move: the distance as the case gives it (None for a dwell)
+    samples: Samples
+    cycle: SampledCycle
+    segments: object  # calc.motion.Segments
+    profile: Profile
+    record: str | None = None  # the drive record's file as the case names it
+
+    @property
+    def J_L(self):
+        return None if self.mechanism is None else self.mechanism.load_inertia
+
+    @property
+    def peak_speed(self):
+        """The highest output speed in magnitude: the moves' ω_2max, or the record's highest."""
+        if self.moves:
+            return Q_(max(abs(m.peak_speed) for m in self.moves), "rad/s").to("rpm")
+        return Q_(float(np.abs(self.cycle.speed).max()), "rad/s").to("rpm")
+
+    @property
+    def peak_acceleration(self):
+        """The highest output acceleration in magnitude: the moves' α_2max, or the record's."""
+        if self.moves:
+            return Q_(max(abs(a) for m in self.moves for a in m.peak_accelerations()), "rad/s**2")
+        return Q_(float(np.abs(self.cycle.acceleration).max()), "rad/s**2")
+
+
+def nonnegative(table: Table, key: str, kind: str, default: str):
+    """:meth:`Table.quantity` with a default, which must not be below zero."""
+    q = table.quantity(key, kind, default=Q_(default))
+    if q.magnitude < 0:
+        raise CalcError(f"{table.where(key)}: expected {kind_phrase(kind)} of zero or more, found {table.data[key]!r}")
+    return q
+
+
+def read_mechanism(top: Table) -> Mechanism | None:
+    """``[mechanism]``, checked: its type, then only the keys of that type."""
+    raw = top.data.get("mechanism")
+    if raw is None:
+        return None
+    type_ = Table(top.path, "mechanism", raw, tuple(raw) if isinstance(raw, dict) else ()).text("type", required=True)
+    if type_ not in TYPES:
+        raise CalcError(f"{top.path}: mechanism.type: expected one of {', '.join(TYPES)}, found {type_!r}")
+    allowed = keys_of(type_)
+    for key in raw:
+        owner = next((t for t in TYPES if key in keys_of(t)), None)
+        if key not in allowed and owner is not None:
+            raise CalcError(f"{top.path}: mechanism.{key}: a key of a {owner} mechanism; a {type_} mechanism takes {', '.join(allowed)}")
+    t = Table(top.path, "mechanism", raw, allowed)
+    brake = t.data.get("holding_brake", False)
+    if not isinstance(brake, bool):
+        raise CalcError(f"{t.where('holding_brake')}: expected true or false, found {brake!r}")
+    if type_ == "rotary":
+        return Mechanism(
+            type_, holding_brake=brake, inertia=t.positive("inertia", "inertia", required=True),
+            friction_torque=nonnegative(t, "friction_torque", "torque", "0 N*m"),
+            process_torque=nonnegative(t, "process_torque", "torque", "0 N*m"),
+        )
+    eta = t.positive("eta", "dimensionless", required=True, what="an efficiency")
+    if eta.m_as("") > 1:
+        raise CalcError(f"{t.where('eta')}: expected an efficiency of at most 1, found {t.data['eta']!r}")
+    radius_key, own_key = OWN_KEYS[type_]
+    size = t.positive(radius_key, "length", required=True)
+    return Mechanism(
+        type_, holding_brake=brake, mass=t.positive("mass", "mass", required=True),
+        friction_coefficient=nonnegative(t, "friction_coefficient", "dimensionless", "0"),
+        incline=t.quantity("incline", "angle", default=Q_(0, "deg")), force=t.quantity("force", "force", default=Q_(0, "N")),
+        eta=eta, own_inertia=nonnegative(t, own_key, "inertia", "0 kg*m**2"),
+        **({"lead": size} if type_ == "ball-screw" else {"diameter": size}),
+    )
+
+
+def read_move(t: Table, mechanism: Mechanism):
+    """One ``[[move]]``: a dwell, or a distance in a time with its ramps; returns the
+    :class:`calc.motion.Move` at the gearbox output and the distance as given (None for a dwell)."""
+    if t.has("dwell"):
+        other = next((k for k in t.data if k != "dwell"), None)
+        if other is not None:
+            raise CalcError(f"{t.where(other)}: a dwell takes only its time (dwell), found {other} beside it")
+        return Move(0.0, t.positive("dwell", "time").m_as("s")), None
+    if not t.has("distance"):
+        raise CalcError(f"{t.where('distance')}: expected a distance (a move) or a dwell, found neither")
+    distance_kind = mechanism.distance_kind
+    try:
+        distance = parse_quantity(t.data["distance"], distance_kind, t.where("distance"))
+    except CalcError as exc:
+        raise CalcError(f"{exc} (a {mechanism.type} mechanism moves its load by {kind_phrase(distance_kind)})") from None
+    if distance.magnitude == 0:
+        raise CalcError(f"{t.where('distance')}: expected a distance other than zero (a pause is a dwell), found {t.data['distance']!r}")
+    time = t.positive("time", "time", required=True).m_as("s")
+    accel = t.positive("accel_time", "time", required=True).m_as("s")
+    decel = t.positive("decel_time", "time")
+    decel = accel if decel is None else decel.m_as("s")
+    if accel + decel > time * (1 + 1e-12):
+        raise CalcError(
+            f"{t.where('accel_time')}: expected acceleration and deceleration times that fit in the move "
+            f"(accel_time + decel_time <= time), found {accel:g} s + {decel:g} s > {time:g} s"
+        )
+    jerk = t.positive("jerk_time", "time")
+    jerk = 0.0 if jerk is None else jerk.m_as("s")
+    if jerk > min(accel, decel) / 2 * (1 + 1e-12):
+        raise CalcError(
+            f"{t.where('jerk_time')}: expected a jerk time of at most half the acceleration and the deceleration time "
+            f"({min(accel, decel) / 2:g} s), found {jerk:g} s"
+        )
+    phi = mechanism.to_output(distance).m_as("rad")
+    return Move(phi, time, accel, decel, jerk), distance
+
+
+def read(top: Table, case: Case) -> None:
+    """The motion form of a case, if it has one: ``case.motion`` and ``case.profile`` (the seed's
+    segments derived from it). Errors name the key."""
+    forms = [f for f in FORMS if top.has(f)]
+    if len(forms) > 1:
+        raise CalcError(f"{top.path}: {forms[1]}: the load cycle is given as {forms[0]} already; give one of [[profile]], [[move]] or [drive_record]")
+    mechanism = read_mechanism(top)
+    if not forms or forms == ["profile"]:
+        if mechanism is not None:
+            raise CalcError(f"{top.path}: mechanism: a mechanism needs the moves of its load ([[move]]) or a [drive_record], found {'[[profile]]' if forms else 'neither'}")
+        return
+    if mechanism is not None and isinstance(top.data.get("load"), dict) and "inertia" in top.data["load"]:
+        raise CalcError(f"{top.path}: load.inertia: the mechanism gives the load's inertia J_L; leave load.inertia out")
+    if forms == ["move"]:
+        case.motion = read_moves(top, mechanism)
+    else:
+        case.motion = read_record(top, mechanism)
+    case.profile = case.motion.profile
+
+
+def read_moves(top: Table, mechanism: Mechanism | None) -> Motion:
+    where = f"{top.path}: move"
+    if mechanism is None:
+        raise CalcError(f"{where}: moves need the mechanism that carries the load ([mechanism] with its type), found none")
+    read_rows = [read_move(t, mechanism) for t in top.tables("move", MOVE_KEYS)]
+    if not read_rows:
+        raise CalcError(f"{where}: expected one [[move]] table per move, found none")
+    moves = [m for m, _ in read_rows]
+    if all(m.dwell for m in moves):
+        raise CalcError(f"{where}: expected at least one move with a distance, found only dwells")
+    s = sample(moves)
+    return _motion(mechanism, moves, [d for _, d in read_rows], s, mechanism.torque(s.speed, s.acceleration), where)
+
+
+def read_record(top: Table, mechanism: Mechanism | None) -> Motion:
+    t = top.table("drive_record", RECORD_KEYS)
+    path = measurement_path(t.data.get("file"), top.path.parent, t.where("file"))
+    m = read_measurement(path, RECORD_COLUMNS, optional=(RECORD_TORQUE,))
+    time, speed = m["time"].m_as("s"), m["speed"].m_as("rad/s")
+    if len(time) < 2:
+        raise CalcError(f"{path}: expected at least two rows (a record of a cycle), found one")
+    torque = m.columns.get("torque")
+    if torque is None and mechanism is None:
+        raise CalcError(f"{t.where('file')}: the record has no torque column, so the torque comes from a [mechanism], found none")
+    s = record_samples(time, speed)
+    if torque is None:
+        out = mechanism.torque(s.speed, s.acceleration)
+    else:
+        T = torque.m_as("N*m")
+        out = (T[1:] + T[:-1]) / 2
+    motion = _motion(mechanism, [], [], s, out, t.where("file"))
+    motion.record = t.data["file"]
+    return motion
+
+
+def _motion(mechanism, moves, distances, s: Samples, torque: np.ndarray, where: str) -> Motion:
+    g = segments(s, torque)
+    rows = [
+        (PHASES[p], Q_(t, "s"), None if PHASES[p] == "pause" else Q_(n, "rad/s"), None if PHASES[p] == "pause" else Q_(T, "N*m"))
+        for p, t, n, T in zip(g.phase, g.duration, g.speed, g.torque)
+    ]
+    profile = Profile.from_segments(rows, where=where)
+    cycle = SampledCycle(s.dt, s.speed, s.acceleration, torque)
+    return Motion(mechanism, moves, distances, s, cycle, g, profile)
+
+
+@dataclass
+class MotionResult:
+    """The derived segments, the peaks and the load's inertia at the output."""
+
+    motion: Motion
+
+    def to_json(self, candidates: int | None = None) -> dict:
+        m = self.motion
+        g = m.segments
+        rows = [
+            {
+                "phase": PHASES[p],
+                "duration": quantity(Q_(t, "s"), "s", "motion.segments.duration"),
+                "speed": quantity(Q_(n, "rad/s"), "rpm", "motion.segments.speed"),
+                "torque": quantity(Q_(T, "N*m"), "N*m", "motion.segments.torque"),
+            }
+            for p, t, n, T in zip(g.phase, g.duration, g.speed, g.torque)
+        ]
+        return {
+            "segments": rows,
+            "peak_speed": quantity(m.peak_speed, "rpm", "motion.peak_speed"),
+            "peak_acceleration": quantity(m.peak_acceleration, "rad/s**2", "motion.peak_acceleration"),
+            "J_L": None if m.J_L is None else quantity(m.J_L, "kg*cm**2", "motion.J_L"),
+            "mechanism": None if m.mechanism is None else m.mechanism.type,
+            "source": "drive_record" if m.record is not None else "move",
+            "samples": int(len(m.cycle.dt)),
+        }
+
+    def summary_lines(self, candidates: int | None = None) -> list[str]:
+        j = self.to_json()
+        head = f"Motion ({j['mechanism'] or 'recorded torque'}, from {'the drive record' if j['source'] == 'drive_record' else 'the moves'}): "
+        head += f"peak speed {quantity_text(j['peak_speed'])}, peak acceleration {quantity_text(j['peak_acceleration'])}"
+        if j["J_L"] is not None:
+            head += f", J_L = {quantity_text(j['J_L'])}"
+        lines = [head]
+        for k, s in enumerate(j["segments"], start=1):
+            lines.append(f"  {k:>2} {s['phase']:<6} {quantity_text(s['duration']):>10}  {quantity_text(s['speed']):>12}  {quantity_text(s['torque']):>12}")
+        return lines
+
+    def verdict(self):
+        """The motion has no checks of its own."""
+        return None
+
+
+def applies(case: Case) -> bool:
+    return case.motion is not None
+
+
+def evaluate(case: Case) -> MotionResult:
+    return MotionResult(case.motion)
