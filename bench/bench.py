@@ -10,6 +10,13 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   arrays (the floor), and ``loop_100k``, the per-row loop with pint scalar quantities that a
   scalar library leads to, run on a slice and scaled. The three must give the same ranking; the
   run stops if they do not.
+* ``ratios_100k``: the best ratio of the example case over a synthetic catalog of 100,000 rows at
+  six ratios, through the public API (:func:`calc.ratios.search_ratios`: one selection over every
+  row, the best row of each ratio, the motor through each over the cycle, the pick), with the
+  motor's rated torque and top speed set so that every check is made. Beside it
+  ``ratios_numpy_100k``, the same in raw numpy, and ``ratios_loop_100k``, the per-row pint loop (a
+  whole evaluation per row), run on a slice and scaled. The three must pick the same rows; the run
+  stops if they do not.
 * ``sweep``: a design space of ratio × cycle time × motor peak torque (10^5 points) evaluated with
   the package's Formula objects broadcast over arrays, beside the same in raw numpy; ``sweep_1M``
   the same with 10^6 points, where the fixed cost of each call weighs ten times less.
@@ -153,9 +160,11 @@ HEADER = (
 )
 
 
-def write_synthetic_catalog(path: Path, rows: int, ratio: float, seed: int = 1) -> None:
-    """A gearbox catalog of ``rows`` made-up rows, all at ``ratio``, in the units makers print
-    (whole rpm, so some rows sit exactly on a speed check's boundary, as real ones do)."""
+def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1) -> None:
+    """A gearbox catalog of ``rows`` made-up rows, all at ``ratio`` (or, for a sequence of ratios,
+    each in turn), in the units makers print (whole rpm, so some rows sit exactly on a speed
+    check's boundary, as real ones do)."""
+    ratios = np.resize(np.atleast_1d(np.asarray(ratio, float)), rows)
     rng = np.random.default_rng(seed)
     t_2n = rng.uniform(10, 2000, rows).round(1)
     t_2b = (t_2n * rng.uniform(1.5, 2.2, rows)).round(1)
@@ -171,7 +180,7 @@ def write_synthetic_catalog(path: Path, rows: int, ratio: float, seed: int = 1) 
         f.write(HEADER + "\n")
         for k in range(rows):
             f.write(
-                f"SYN{k:06d}-{ratio:g},SYN,{ratio:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},{eta[k]},"
+                f"SYN{k:06d}-{ratios[k]:g},SYN,{ratios[k]:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},{eta[k]},"
                 f"{backlash[k]},{c_t21[k]},{j_1[k]},{illustrative[k]},synthetic\n"
             )
 
@@ -191,6 +200,7 @@ class Floats:
     ratio: np.ndarray
     T_2N: np.ndarray
     T_2B: np.ndarray
+    T_2Not: np.ndarray
     n_1N: np.ndarray  # rad/s
     n_1max: np.ndarray
     eta: np.ndarray  # fraction
@@ -213,6 +223,7 @@ def floats(catalog, case) -> Floats:
         ratio=catalog["ratio"].m_as(""),
         T_2N=catalog["T_2N"].m_as("N*m"),
         T_2B=catalog["T_2B"].m_as("N*m"),
+        T_2Not=catalog["T_2Not"].m_as("N*m"),
         n_1N=catalog["n_1N"].m_as("rad/s"),
         n_1max=catalog["n_1max"].m_as("rad/s"),
         eta=catalog["eta"].m_as(""),
@@ -232,15 +243,20 @@ def floats(catalog, case) -> Floats:
 
 def rank_numpy(f: Floats):
     """The floor: the same selection on float arrays (duty, n_2m, T_2m, Z_h, f_s, T_2max, the four
-    checks, the inertia ratio, passes, ranking by lexsort: passing first, published before
-    illustrative rows, smallest size, lowest worst utilization, part name). Returns the order,
-    passes, T_2max and the ranking keys (size, worst utilization)."""
+    checks and the emergency stop, the inertia ratio, passes, ranking by lexsort: passing first,
+    published before illustrative rows, smallest size, lowest worst utilization, part name).
+    Returns the order, passes, T_2max and the ranking keys (size, worst utilization)."""
+    rows = np.isclose(f.ratio, f.i, rtol=1e-6, atol=0)
+    return select_numpy(f, rows)
+
+
+def select_numpy(f: Floats, rows):
+    """:func:`rank_numpy` over the rows ``rows`` (a mask or index), each at its own ratio."""
     from calc.checks import BOUNDARY_RTOL, rank
     from calc.gearbox import SHOCK_FACTORS
 
-    rows = np.isclose(f.ratio, f.i, rtol=1e-6, atol=0)
-    i, t_2n, t_2b, n_1n, n_1max, eta, j_1, parts, illustrative = (
-        a[rows] for a in (f.ratio, f.T_2N, f.T_2B, f.n_1N, f.n_1max, f.eta, f.J_1, f.parts, f.illustrative)
+    i, t_2n, t_2b, t_2not, n_1n, n_1max, eta, j_1, parts, illustrative = (
+        a[rows] for a in (f.ratio, f.T_2N, f.T_2B, f.T_2Not, f.n_1N, f.n_1max, f.eta, f.J_1, f.parts, f.illustrative)
     )
     t, n, T = f.t[f.moving], f.n[f.moving], f.T[f.moving]
     t_on, t_cycle = t.sum(), f.t.sum()
@@ -253,9 +269,10 @@ def rank_numpy(f: Floats):
     t_2max = f.T_1B * eta * f_s * i
     u = (n_2m * i / n_1n, t_2m / t_2n, np.abs(n).max() * i / n_1max, t_2max / t_2b)
     _ = (j_1 + f.J_L / i**2) / f.J_motor  # inertia ratio, as the API gives it
+    u_stop = f.T_1B * i / t_2not  # the emergency stop, in both modes; not checked without T_2Not
     governing = u[2:] if s5 else u[:2]
-    passes = np.logical_and.reduce([g <= 1.0 + BOUNDARY_RTOL for g in governing])
-    worst = np.max(governing, axis=0)
+    passes = np.logical_and.reduce([g <= 1.0 + BOUNDARY_RTOL for g in governing]) & ((u_stop <= 1.0 + BOUNDARY_RTOL) | np.isnan(t_2not))
+    worst = np.fmax(np.max(governing, axis=0), u_stop)
     worst = np.where(np.isnan(worst), np.inf, worst)
     size = np.where(passes, t_2b if s5 else t_2n, 0.0)
     order = rank(passes, size, worst, parts, illustrative)  # the ranking is numpy on floats already
@@ -274,6 +291,12 @@ def same_ranking(order, floor_order, keys) -> bool:
 def rank_loop(catalog, case, rows: int):
     """The per-row loop a scalar library leads to: pint scalar quantities, one row at a time.
     Returns the ranking of the first ``rows`` rows."""
+    return np.array([key[-1] for key in loop_keys(catalog, case, rows)])
+
+
+def loop_keys(catalog, case, rows: int) -> list:
+    """:func:`rank_loop`'s ranking keys ``(fails, illustrative, size, worst, part, row)`` of the
+    first ``rows`` rows (those at the case's ratio; every row where the case has none), sorted."""
     from calc import Q_
     from calc.checks import BOUNDARY_RTOL
 
@@ -289,11 +312,13 @@ def rank_loop(catalog, case, rows: int):
     f_s = 2.0 if z_h >= 3000 else 1.6 if z_h >= 2000 else 1.3 if z_h >= 1500 else 1.1 if z_h >= 1000 else 1.0
     n_2max = max(abs(n) for _, n, _ in segments)
     T_1B, J_motor, J_L = case.motor_peak_torque, case.motor_inertia, case.load_inertia
-    ratio, t_2n, t_2b, n_1n, n_1max, eta, j_1 = (catalog[c] for c in ("ratio", "T_2N", "T_2B", "n_1N", "n_1max", "eta", "J_1"))
+    ratio, t_2n, t_2b, t_2not, n_1n, n_1max, eta, j_1 = (
+        catalog[c] for c in ("ratio", "T_2N", "T_2B", "T_2Not", "n_1N", "n_1max", "eta", "J_1")
+    )
     keys = []
     for k in range(rows):
         i = ratio[k]
-        if abs(i.m_as("") - case.ratio.m_as("")) > 1e-6 * case.ratio.m_as(""):
+        if case.ratio is not None and abs(i.m_as("") - case.ratio.m_as("")) > 1e-6 * case.ratio.m_as(""):
             continue
         t_2max = T_1B * i * f_s * eta[k]
         u = [
@@ -303,12 +328,14 @@ def rank_loop(catalog, case, rows: int):
             (t_2max / t_2b[k]).m_as(""),
         ]
         _ = ((j_1[k] + J_L / i**2) / J_motor).m_as("")
+        u_stop = (T_1B * i / t_2not[k]).m_as("")
         governing = u[2:] if s5 else u[:2]
-        passes = all(x <= 1.0 + BOUNDARY_RTOL for x in governing)
+        passes = all(x <= 1.0 + BOUNDARY_RTOL for x in governing) and (np.isnan(u_stop) or u_stop <= 1.0 + BOUNDARY_RTOL)
         size = (t_2b[k] if s5 else t_2n[k]).m_as("N*m") if passes else 0.0
         later = passes and str(catalog.text["illustrative"][k]).lower() == "yes"
-        keys.append((not passes, later, size, max(governing), str(catalog.parts[k]), k))
-    return np.array([key[-1] for key in sorted(keys)])
+        worst = max(governing) if np.isnan(u_stop) else max(*governing, u_stop)
+        keys.append((not passes, later, size, worst, str(catalog.parts[k]), k))
+    return sorted(keys)
 
 
 def measure_rank(size: Size, workdir: Path) -> list[str]:
@@ -332,7 +359,7 @@ def measure_rank(size: Size, workdir: Path) -> list[str]:
 
     loop_rows = min(size.loop_rows, size.rows)
     loop_time, loop_order = timed(lambda: rank_loop(catalog, case, loop_rows))
-    columns = ("ratio", "T_2N", "T_2B", "n_1N", "n_1max", "eta", "J_1", "parts", "illustrative")
+    columns = ("ratio", "T_2N", "T_2B", "T_2Not", "n_1N", "n_1max", "eta", "J_1", "parts", "illustrative")
     sub = Floats(**{**f.__dict__, **{k: getattr(f, k)[:loop_rows] for k in columns}})
     sub_order, _, _, sub_keys = rank_numpy(sub)
     if not same_ranking(loop_order, sub_order, sub_keys):
@@ -349,6 +376,117 @@ def measure_rank(size: Size, workdir: Path) -> list[str]:
     ]
 
 
+#: The ratios of the synthetic catalog of the ratio search, and the motor ratings it checks
+#: besides the example's peak torque (so that every check of the motor is made).
+SEARCH_RATIOS = (3, 4, 5, 7, 8, 10)
+SEARCH_T_1N, SEARCH_N_MAX = 4.0, 6000.0  # N·m, rpm
+
+
+def ratios_api(catalog, case, load):
+    """The public API: quantities in, a :class:`calc.ratios.RatioSearch` out."""
+    from calc import Q_
+    from calc.ratios import search_ratios
+
+    return search_ratios(catalog, case.profile, load, Q_(SEARCH_T_1N, "N*m"), Q_(SEARCH_N_MAX, "rpm"),
+                         motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
+
+
+def ratios_numpy(f: Floats):
+    """The floor: every row's gearbox checks and ranking (:func:`select_numpy`), the first row of
+    each ratio in the ranking, the motor torque through each (typed segments: driving
+    ``T_2 / (i η)``, driven back ``T_2 η / i``), its peak, RMS and speed checks, the inertia
+    ratio and the pick (lowest RMS among feasible ratios with λ <= 10). Returns the best row of
+    each ratio and the pick."""
+    from calc.checks import BOUNDARY_RTOL
+    from calc.ratios import INERTIA_RATIO_LIMIT
+
+    order, passes, _, _ = select_numpy(f, slice(None))
+    ratios, group = np.unique(f.ratio, return_inverse=True)
+    _, first = np.unique(group[order], return_index=True)
+    rows = order[first]
+    i, eta = f.ratio[rows][:, None], f.eta[rows][:, None]
+    T_1 = np.where(f.T * f.n < 0, f.T * eta / i, f.T / (i * eta))
+    peak = np.abs(T_1).max(axis=1)
+    rms = np.sqrt((T_1**2 * f.t).sum(axis=1) / f.t.sum())
+    speed = np.abs(f.n).max() * i[:, 0] * 30 / np.pi  # rpm
+
+    def ok(u):
+        return u <= 1.0 + BOUNDARY_RTOL
+
+    feasible = passes[rows] & ok(peak / f.T_1B) & ok(rms / SEARCH_T_1N) & ok(speed / SEARCH_N_MAX)
+    lam = (f.J_1[rows] + f.J_L / i[:, 0] ** 2) / f.J_motor
+    within = feasible & ok(lam / INERTIA_RATIO_LIMIT)
+    pick = int(np.lexsort((ratios, np.where(within, rms, np.inf)))[0]) if within.any() else None
+    return rows, pick
+
+
+def ratios_loop(catalog, case, rows: int):
+    """The per-row loop: every row checked with pint scalars (:func:`rank_loop`), the first row of
+    each ratio, the motor torque of each segment through it with pint scalars, the pick. Returns
+    the best row of each ratio (ascending) and the pick, over the first ``rows`` rows."""
+    import dataclasses
+
+    from calc import Q_
+    from calc.checks import BOUNDARY_RTOL
+    from calc.ratios import INERTIA_RATIO_LIMIT
+
+    best, fails = {}, {}
+    for key in loop_keys(catalog, dataclasses.replace(case, ratio=None), rows):
+        k = key[-1]
+        fails[k] = key[0]
+        best.setdefault(float(catalog["ratio"][k].m_as("")), k)
+    p = case.profile
+    keyed = []
+    for r in sorted(best):
+        k = best[r]
+        i, eta = catalog["ratio"][k], catalog["eta"][k]
+        torques = [T * eta / i if (T * n).magnitude < 0 else T / (i * eta) for T, n in zip(p.torques, p.speeds)]
+        peak = max(abs(T) for T in torques)
+        rms = (sum((T**2 * t for T, t in zip(torques, p.durations)), Q_(0, "N**2*m**2*s")) / p.t_cycle) ** 0.5
+        speed = p.n_2max * i
+        lam = ((catalog["J_1"][k] + case.load_inertia / i**2) / case.motor_inertia).m_as("")
+        ok = not fails[k] and all(
+            x <= 1.0 + BOUNDARY_RTOL
+            for x in ((peak / case.motor_peak_torque).m_as(""), (rms / Q_(SEARCH_T_1N, "N*m")).m_as(""), (speed / Q_(SEARCH_N_MAX, "rpm")).m_as(""))
+        )
+        if ok and lam <= INERTIA_RATIO_LIMIT * (1 + BOUNDARY_RTOL):
+            keyed.append((rms.m_as("N*m"), r))
+    ratios = sorted(best)
+    pick = ratios.index(min(keyed)[1]) if keyed else None
+    return np.array([best[r] for r in ratios]), pick
+
+
+def measure_ratios(size: Size, workdir: Path) -> list[str]:
+    from calc.case import read_case
+    from calc.catalog import load_catalog
+    from calc.gearbox import SCHEMA
+    from calc.sections.motor import output_load
+
+    case = read_case(EXAMPLE)
+    path = workdir / "synthetic-ratios.csv"
+    write_synthetic_catalog(path, size.rows, SEARCH_RATIOS, seed=2)
+    catalog = load_catalog(path, SCHEMA)
+    load = output_load(case)
+    f = floats(catalog, case)
+    api_time, search, floor_time, (rows, pick) = best_of_pair(lambda: ratios_api(catalog, case, load), lambda: ratios_numpy(f), size.repeats)
+    if not (np.array_equal(search.rows, rows) and search.pick == pick):
+        raise RuntimeError("ratios: the public API and the raw numpy floor pick different rows")
+    loop_rows = min(size.loop_rows, size.rows)
+    loop_time, (loop_best, loop_pick) = timed(lambda: ratios_loop(catalog, case, loop_rows))
+    columns = ("ratio", "T_2N", "T_2B", "T_2Not", "n_1N", "n_1max", "eta", "J_1", "parts", "illustrative")
+    sub = Floats(**{**f.__dict__, **{k: getattr(f, k)[:loop_rows] for k in columns}})
+    if not (np.array_equal(loop_best, ratios_numpy(sub)[0]) and loop_pick == ratios_numpy(sub)[1]):
+        raise RuntimeError("ratios: the per-row pint loop picks differently from the floor")
+    loop_scaled = loop_time * size.rows / loop_rows
+    return [
+        line("ratios_100k", api_time, "s", note=f"{size.rows} rows at {len(SEARCH_RATIOS)} ratios, search_ratios: best gearbox and motor per ratio, the pick"),
+        line("ratios_numpy_100k", floor_time, "s", note="the same on float arrays"),
+        line("ratios_loop_100k", loop_scaled, "s", note=f"pint scalars row by row: {loop_rows} rows timed, scaled to {size.rows}"),
+        line("ratios_vs_numpy", api_time / floor_time, "x", ("<=", 2)),
+        line("loop_vs_ratios", loop_scaled / api_time, "x", (">=", 100)),
+    ]
+
+
 def write_large_case(workdir: Path, rows: int) -> Path:
     """A copy of the example case whose ``gearbox.catalog`` is a synthetic catalog of ``rows`` rows
     at its ratio: the shipped rows at that ratio (the accuracy chain names one of them) and made-up
@@ -362,9 +500,16 @@ def write_large_case(workdir: Path, rows: int) -> Path:
     (folder.parent / "data").symlink_to(ROOT / "data")
     with open(ROOT / "catalogs" / "gearboxes.csv", encoding="utf-8", newline="") as f:
         header, *shipped = csv.reader(f)
-    if header != HEADER.split(","):
+    names = HEADER.split(",")
+    if not set(names) <= set(header):
         raise RuntimeError("evaluate_100k: catalogs/gearboxes.csv no longer has the synthetic catalog's columns")
-    shipped = [row for row in shipped if float(row[header.index("ratio [1]")]) == ratio]
+    # The shipped rows in the synthetic catalog's columns; partial rows (never ranked) left out.
+    columns = [header.index(name) for name in names]
+    partial = header.index("partial") if "partial" in header else None
+    shipped = [
+        [row[k] for k in columns] for row in shipped
+        if float(row[header.index("ratio [1]")]) == ratio and (partial is None or not row[partial])
+    ]
     catalog = folder / "gearboxes-large.csv"
     write_synthetic_catalog(catalog, rows - len(shipped), ratio)
     with open(catalog, "a", encoding="utf-8", newline="") as f:
@@ -660,6 +805,7 @@ def main(argv=None) -> int:
     with tempfile.TemporaryDirectory() as tmp:
         for measure in (
             lambda: measure_rank(size, Path(tmp)),
+            lambda: measure_ratios(size, Path(tmp)),
             lambda: measure_evaluate_large(size, Path(tmp)),
             lambda: measure_sweep(size),
             lambda: measure_hysteresis(size),

@@ -1,8 +1,11 @@
-"""Command line: ``python -m calc evaluate CASE.toml [--json] [--strict] [--all-candidates]`` and
+"""Command line: ``python -m calc evaluate CASE.toml [--json] [--strict] [--all-candidates]``,
+``python -m calc ratios CASE.toml [--json] [--strict]`` (the case at every ratio of its gearbox
+catalog, and the ratio to pick) and
 ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--strict] [--summary]``.
 
 Exit status (``spec/case-format.md``): 0 when results were produced, whatever the verdict; with
-``--strict``, 1 when the verdict is not PASS; 2 on input errors, always.
+``--strict``, 1 when the verdict is not PASS (for ``ratios``: when no ratio can be picked); 2 on
+input errors, always.
 """
 
 from __future__ import annotations
@@ -22,12 +25,15 @@ def main(argv=None) -> int:
     ev.add_argument("case", help="the design-case TOML file")
     ev.add_argument("--json", action="store_true", help="print the results as JSON (the contract of spec/case-format.md)")
     ev.add_argument("--all-candidates", action="store_true", help="list every candidate (default: the best 20 and the count)")
+    ra = sub.add_parser("ratios", help="evaluate a design case at every ratio of its gearbox catalog and pick one")
+    ra.add_argument("case", help="the design-case TOML file")
+    ra.add_argument("--json", action="store_true", help="print the results as JSON")
     rp = sub.add_parser("report", help="build the PDF calc report of one or more design cases")
     rp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one PDF each")
     rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
     rp.add_argument("--summary", action="store_true",
                     help="also write summary.pdf and summary.csv in the output folder: one row per case")
-    for p in (ev, rp):
+    for p in (ev, ra, rp):
         p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
     if args.command == "report":
@@ -38,15 +44,23 @@ def main(argv=None) -> int:
     from .case import read_case
     from .sections import SHOWN_CANDIDATES, evaluate
 
-    candidates = None if args.all_candidates else SHOWN_CANDIDATES
     try:
-        results = evaluate(read_case(args.case))
-        text = json.dumps(results.to_json(candidates), indent=2, ensure_ascii=False, allow_nan=False) if args.json else results.summary(candidates)
+        if args.command == "ratios":
+            from .sections.ratios import search
+
+            results = search(read_case(args.case))
+            text = json.dumps(results.to_json(), indent=2, ensure_ascii=False, allow_nan=False) if args.json else results.summary()
+            passes = results.verdict().passes
+        else:
+            candidates = None if args.all_candidates else SHOWN_CANDIDATES
+            results = evaluate(read_case(args.case))
+            text = json.dumps(results.to_json(candidates), indent=2, ensure_ascii=False, allow_nan=False) if args.json else results.summary(candidates)
+            passes = results.verdict.passes
     except CalcError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     print(text)
-    return 1 if args.strict and results.verdict.passes is not True else 0
+    return 1 if args.strict and passes is not True else 0
 
 
 def run_quietly_into_a_closed_pipe(argv=None) -> int:

@@ -63,6 +63,15 @@ class Table:
             raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
         return value
 
+    def catalogs(self, key: str, default: str):
+        """A catalog key: one name or path, or a list of them ranked together."""
+        value = self.data.get(key, default)
+        if isinstance(value, list) and value and all(isinstance(v, str) for v in value):
+            return value
+        if not isinstance(value, str):
+            raise CalcError(f"{self.where(key)}: expected a catalog name or path in quotes, or a list of them, found {value!r}")
+        return value
+
     def table(self, key: str, allowed: tuple[str, ...]) -> "Table | None":
         if key not in self.data:
             return None
@@ -85,10 +94,16 @@ class Case:
     profile: Profile
     motor_peak_torque: object = None
     motor_inertia: object = None
+    motor_rated_torque: object = None
+    motor_max_speed: object = None
     load_inertia: object = None
     ratio: object = None
-    gearbox_catalog: str | None = None
+    gearbox_catalog: str | list | None = None
     gearbox_part: str | None = None
+    emergency_stop_torque: object = None
+    gearbox_hubs: str | list | None = None
+    motor_shaft: object = None  # Bore of the motor's shaft: picks the gearbox's clamping hub
+    output_load: object = None  # calc.gearbox.OutputLoad: forces on the gearbox output
     sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
     motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record
     raw: bytes = b""

@@ -63,6 +63,7 @@ class Column:
     description: str
     required: bool = True
     positive: bool = True
+    may_be_absent: bool = False  # a file without the column loads, every cell empty (a maker's table that lacks it)
 
 
 @dataclass(frozen=True)
@@ -83,6 +84,9 @@ class Schema:
     text_columns: tuple[str, ...] = ("part", "source")
     optional_text: tuple[str, ...] = ()
     rules: tuple[Rule, ...] = ()
+    #: The text column whose non-empty cell marks a row as partial, giving the reason: a partial
+    #: row may leave required cells empty, and is kept for reference but never checked or chosen.
+    partial: str | None = None
 
 
 @dataclass
@@ -98,9 +102,43 @@ class Catalog:
     text: dict = field(default_factory=dict)
     lines: np.ndarray = None  # line number of each row in the file
     header_units: dict = field(default_factory=dict)  # each numeric column's unit as the file writes it
+    #: The files the rows come from, as (path, sha256), and each row's index into them: one file,
+    #: or several ranked together (:func:`combine`).
+    members: tuple = ()
+    member: np.ndarray = None
+
+    def __post_init__(self):
+        if not self.members:
+            self.members = ((self.path, self.sha256),)
+        if self.member is None:
+            self.member = np.zeros(len(self.parts), int)
 
     def __len__(self):
         return len(self.parts)
+
+    @property
+    def shown_name(self) -> str:
+        """The catalog as results name it: its file, or its files joined by " + "."""
+        return " + ".join(display_path(path) for path, _ in self.members)
+
+    def catalog_of(self, row: int) -> str:
+        """The file of one row, as results name it."""
+        return display_path(self.members[self.member[row]][0])
+
+    def text_or_blank(self, column: str) -> np.ndarray:
+        """A text column's cells, blank where the file has no such column."""
+        return self.text.get(column, np.full(len(self), "", dtype=object))
+
+    @property
+    def family(self) -> np.ndarray:
+        """Each row's family (``TP+``), or its series where the file gives no family."""
+        family = self.text_or_blank("family")
+        return np.where(family == "", self.text_or_blank("series"), family)
+
+    @property
+    def partial(self) -> np.ndarray:
+        """True for a partial row (:attr:`Schema.partial`): kept, never checked or chosen."""
+        return self.text_or_blank(self.schema.partial) != "" if self.schema.partial else np.zeros(len(self), bool)
 
     @functools.cached_property
     def illustrative(self) -> np.ndarray:
@@ -123,7 +161,7 @@ class Catalog:
         out = Catalog(
             self.name, self.path, self.sha256, self.schema, self.parts[mask],
             {k: v[mask] for k, v in self.values.items()}, {k: v[mask] for k, v in self.text.items()},
-            self.lines[mask], self.header_units,
+            self.lines[mask], self.header_units, self.members, self.member[mask],
         )
         out.illustrative = self.illustrative[mask]
         return out
@@ -131,8 +169,19 @@ class Catalog:
     def index(self, part: str, where: str) -> int:
         hits = np.flatnonzero(self.parts == part)
         if not len(hits):
-            raise CalcError(f"{where}: no part {part!r} in catalog {self.path}; it has {_some(self.parts)}")
+            raise CalcError(f"{where}: no part {part!r} in catalog {self.shown_name}; it has {some_parts(self.parts)}")
         return int(hits[0])
+
+    def usable_index(self, part: str, where: str) -> int:
+        """:meth:`index` of a part that may be checked: a partial row is an input error."""
+        row = self.index(part, where)
+        if self.partial[row]:
+            reason = self.text[self.schema.partial][row]
+            raise CalcError(
+                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), kept for reference "
+                f"but never checked: {reason}"
+            )
+        return row
 
     def to_frame(self):
         """The catalog as a pandas DataFrame, units in the column names (for display)."""
@@ -145,7 +194,7 @@ class Catalog:
         return pd.DataFrame(data)
 
 
-def _some(parts) -> str:
+def some_parts(parts) -> str:
     shown = ", ".join(map(str, parts[:6]))
     return shown + (f" and {len(parts) - 6} more" if len(parts) > 6 else "")
 
@@ -209,7 +258,57 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
         known = _LOADED[key] = (stamp, _read_catalog(path, schema))
     catalog = known[1]
     # The same file asked for by another spelling of its path is named as asked.
-    return catalog if catalog.path == path else dataclasses.replace(catalog, name=path.stem, path=path)
+    return catalog if catalog.path == path else dataclasses.replace(catalog, name=path.stem, path=path, members=((path, catalog.sha256),))
+
+
+def load_catalogs(names, base: Path | None, where: str, schema: Schema) -> Catalog:
+    """The catalog of a case's ``catalog`` key: one name or path (:func:`resolve`), or a list of
+    them whose rows are ranked together (:func:`combine`), each row keeping the file it comes from."""
+    if isinstance(names, str):
+        return load_catalog(resolve(names, base, where), schema)
+    if not isinstance(names, list) or not names:
+        raise CalcError(f"{where}: expected a catalog name, a path to a CSV file or a list of them, found {names!r}")
+    paths = [resolve(name, base, f"{where}[{k}]") for k, name in enumerate(names, start=1)]
+    return combine([load_catalog(path, schema) for path in paths], where)
+
+
+def combine(catalogs: list, where: str) -> Catalog:
+    """The rows of several catalogs of one schema as one catalog, in the units of the first.
+
+    Each row keeps the file it comes from (:attr:`Catalog.member`). The same part in two files is
+    an error naming both rows: a candidate's name must say which row it is."""
+    if len(catalogs) == 1:
+        return catalogs[0]
+    first = catalogs[0]
+    seen = {}
+    for k, cat in enumerate(catalogs):
+        for part, line in zip(cat.parts.tolist(), cat.lines.tolist()):
+            if part in seen and seen[part][0] != k:
+                other, other_line = seen[part]
+                raise CalcError(
+                    f"{where}: the part {part!r} stands in {display_path(catalogs[other].path)} (row {other_line}) and in "
+                    f"{display_path(cat.path)} (row {line}); rename one, as candidates are named by part"
+                )
+            seen.setdefault(part, (k, line))
+    texts = sorted({name for cat in catalogs for name in cat.text})
+    out = Catalog(
+        name=" + ".join(cat.name for cat in catalogs),
+        path=first.path,
+        sha256=first.sha256,
+        schema=first.schema,
+        parts=np.concatenate([cat.parts for cat in catalogs]),
+        values={
+            c.name: Q_(np.concatenate([cat[c.name].m_as(first[c.name].units) for cat in catalogs]), first[c.name].units)
+            for c in first.schema.columns
+        },
+        text={name: np.concatenate([cat.text_or_blank(name) for cat in catalogs]) for name in texts},
+        lines=np.concatenate([cat.lines for cat in catalogs]),
+        header_units=first.header_units,
+        members=tuple(member for cat in catalogs for member in cat.members),
+        member=np.concatenate([np.full(len(cat), k) for k, cat in enumerate(catalogs)]),
+    )
+    out.illustrative = np.concatenate([cat.illustrative for cat in catalogs])
+    return out
 
 
 def _read_catalog(path: Path, schema: Schema) -> Catalog:
@@ -238,6 +337,9 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
             raise CalcError(f"{path}: expected a column {name!r}, found columns {', '.join(columns)}")
     units = {}
     for c in schema.columns:
+        if c.name not in columns and c.may_be_absent:
+            units[c.name] = ureg.parse_units(kind(c.kind).si_unit or "dimensionless")
+            continue
         if c.name not in columns:
             raise CalcError(f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}")
         unit_text = columns[c.name][1]
@@ -264,7 +366,7 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         return cells[columns[name][0]::width]
 
     texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    numbers = {c.name: _numbers(column(c.name)) for c in schema.columns}
+    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
     problem = _first_problem(path, schema, lines, texts, numbers)
     if problem:
         raise CalcError(problem)
@@ -298,7 +400,7 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         values=values,
         text=text_arrays,
         lines=lines,
-        header_units={c.name: columns[c.name][1].strip() for c in schema.columns},
+        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name]) for c in schema.columns},
     )
 
 
@@ -356,8 +458,11 @@ def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict
     for order, name in enumerate(texts):
         if name in schema.text_columns and "" in texts[name]:
             firsts.append((texts[name].index(""), order, name))
+    partial = np.array(texts[schema.partial], dtype=object) != "" if schema.partial in texts else False
     for order, c in enumerate(schema.columns, start=len(texts)):
         bad = numbers[c.name].bad(c)
+        if c.required:
+            bad &= ~(partial & numbers[c.name].empty)  # a partial row may leave a required cell empty
         if bad.any():
             firsts.append((int(np.argmax(bad)), order, c.name))
     if not firsts:

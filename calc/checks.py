@@ -77,6 +77,9 @@ class CheckArray:
     rated: object
     unit: str
     not_made: str | None = field(default=None, kw_only=True)  # what the check needs that the case does not give
+    #: For a check whose rating a catalog may leave out (a bearing's force): what is missing, and
+    #: a row without the rating is not checked and does not fail; None: such a row fails.
+    unrated: str | None = field(default=None, kw_only=True)
 
     @property
     def made(self) -> bool:
@@ -95,11 +98,26 @@ class CheckArray:
     def passes(self) -> np.ndarray:
         """:func:`within_rating` of each row (false where the check is not made); computed once,
         as listing candidates asks it of every row."""
-        return within_rating(self.utilization)
+        ok = within_rating(self.utilization)
+        return ok | self.unrated_rows if self.made else ok
+
+    @functools.cached_property
+    def unrated_rows(self) -> np.ndarray:
+        """Rows not checked for want of a rating that may be left out (:attr:`unrated`)."""
+        if self.unrated is None:
+            return np.zeros(np.shape(self.utilization), bool)
+        return np.isnan(magnitude_in(self.rated, self.unit))
+
+    @functools.cached_property
+    def ranked_utilization(self) -> np.ndarray:
+        """The utilization as ranking counts it: 0 where a row is not checked for want of a
+        rating that may be left out (it neither fails nor pushes the row down)."""
+        return np.where(self.unrated_rows, 0.0, self.utilization)
 
     def at(self, row: int, governs: bool = True) -> Check:
         """This check for one row."""
         u = float(self.utilization[row])
+        unrated = self.made and bool(self.unrated_rows[row])
         return Check(
             name=self.name,
             criterion=self.text,
@@ -107,10 +125,10 @@ class CheckArray:
             rated=self.rated[row],
             unit=self.unit,
             utilization=None if np.isnan(u) else u,
-            passes=None if not self.made else bool(self.passes[row]),
+            passes=None if not self.made or unrated else bool(self.passes[row]),
             governs=governs,
             mode=self.mode,
-            not_made=self.not_made,
+            not_made=self.unrated if unrated else self.not_made,
         )
 
     def reason(self, row: int) -> str:

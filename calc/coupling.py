@@ -59,7 +59,7 @@ TEMPERATURE_FACTORS = BandTable(
 SCHEMA = Schema(
     kind="coupling",
     columns=(
-        Column("T_KN", "torque", "rated torque"),
+        Column("T_KN", "torque", "rated torque (a safety coupling may give only its T_A range)", required=False),
         Column("T_Kmax", "torque", "maximum torque", required=False),
         Column("C_T", "stiffness", "torsional stiffness (of the two bellows for a line shaft)", required=False),
         Column("C_tube", "stiffness_length", "tube stiffness per unit length (line shafts)", required=False),
@@ -73,9 +73,22 @@ SCHEMA = Schema(
         Column("T_Amax", "torque", "largest disengagement torque (safety couplings)", required=False),
         Column("H", "length", "hub length (line shafts)", required=False),
         Column("A_max", "length", "longest distance between shafts (line shafts)", required=False),
+        *(
+            Column(name, kind_name, description, required=False, may_be_absent=True)
+            for name, kind_name, description in (
+                ("L", "length", "overall length"),
+                ("C_r", "linear_stiffness", "radial spring rate"),
+                ("C_a", "linear_stiffness", "axial spring rate"),
+                ("dK_a", "length", "permissible axial misalignment"),
+                ("dK_r", "length", "permissible radial misalignment"),
+                ("dK_w", "angle", "permissible angular misalignment"),
+                ("m", "mass", "mass"),
+                ("screw_torque", "torque", "tightening torque of the clamping screw"),
+            )
+        ),
     ),
     text_columns=("part", "series", "size", "type", "source"),
-    optional_text=("illustrative",),
+    optional_text=("illustrative", "insert", "J_basis", "clamp_screw", "unclear"),
     rules=(
         Rule("T_Kmax >= T_KN", no_less("T_Kmax", "T_KN"), "T_Kmax"),
         Rule("d_1max >= d_1min", no_less("d_1max", "d_1min"), "d_1max"),
@@ -85,8 +98,12 @@ SCHEMA = Schema(
     ),
 )
 
-#: Columns a row of each type must fill (besides T_KN).
-_TYPE_NEEDS = {"safety": ("T_Amin", "T_Amax"), "line-shaft": ("C_T", "C_tube", "H")}
+#: Columns a row of each type must fill. A safety coupling may give only the range of its
+#: disengagement torque T_A (Mayr's EAS-compact tables give no separate rated torque): the torque
+#: it passes is then bounded by T_A, which E10 checks.
+_TYPE_NEEDS = {
+    "bellows": ("T_KN",), "elastomer": ("T_KN",), "safety": ("T_Amin", "T_Amax"), "line-shaft": ("T_KN", "C_T", "C_tube", "H"),
+}
 
 # Symbols of the source's sizing section.
 _M_a = Symbol("M_a", "M_{a}", "torque", "N*m", "acceleration torque of the motor")
@@ -472,7 +489,9 @@ def select_coupling(
         np.char.add(np.char.add("f_e needs the coupling's ", empty.astype(str)), ", which the catalog leaves empty"),
     )
     checks = [
-        CouplingCheck("T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m"),
+        CouplingCheck(
+            "T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", ~(is_safety & np.isnan(catalog["T_KN"].magnitude))
+        ),
         CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e),
     ]
     if speed is not None:
@@ -499,7 +518,9 @@ def select_coupling(
     passes = np.logical_and.reduce([c.passes for c in checks])
     utilizations = np.array([np.where(c.applies if c.applies is not None else True, c.utilization, 0.0) for c in checks])
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
-    order = rank(passes, catalog["T_KN"].m_as("N*m"), worst, catalog.parts, illustrative=catalog.illustrative)
+    size = catalog["T_KN"].m_as("N*m")
+    size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)  # a safety coupling rated by its T_A range alone
+    order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
     return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, c_t, j_a, j_l, fe, checks, passes, worst, order, notes)
 
 

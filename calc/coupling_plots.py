@@ -128,7 +128,7 @@ def natural_frequency_figure(selection: CouplingSelection, f_e_min):
     >>> s = select_coupling(cat.rows(cat.text["type"] == "bellows"), Q_(12, "N*m"), Q_(4.2, "kg*cm**2"),
     ...                     Q_(15.93, "kg*cm**2"), Q_(150, "Hz"), "19 mm k6", "16 mm h7")
     >>> [t.get_text() for t in natural_frequency_figure(s, Q_(300, "Hz")).axes[0].get_yticklabels()][:2]
-    ['AKD-30', 'AKD-60']
+    ['AKD-30', 'AKN-30']
     """
     from matplotlib.figure import Figure
 
@@ -171,8 +171,8 @@ def bore_ranges_figure(selection: CouplingSelection, bores):
     >>> b = [parse_bore("19 mm k6"), parse_bore("16 mm h7")]
     >>> s = select_coupling(cat.rows(cat.text["type"] == "bellows"), Q_(12, "N*m"), Q_(4.2, "kg*cm**2"),
     ...                     Q_(15.93, "kg*cm**2"), Q_(150, "Hz"), *b)
-    >>> len(bore_ranges_figure(s, b).axes[0].patches)
-    12
+    >>> len(bore_ranges_figure(s, b).axes[0].patches)  # 26 bellows rows, two hubs each
+    52
     """
     from matplotlib.figure import Figure
 

@@ -78,8 +78,16 @@ def gearbox__T_2max(T_1B, i, f_s, eta):
     return T_1B*eta*f_s*i
 
 
+def gearbox__T_2stop(T_1B, i):
+    return T_1B*i
+
+
 def gearbox__lambda(J_1, J_L, i, J_motor):
     return (J_1 + J_L/i**2)/J_motor
+
+
+def gearbox__M_2k(F_2a, y_2, F_2r, x_2, z_2):
+    return F_2a*y_2 + F_2r*(x_2 + z_2)
 
 
 def hysteresis__C_t(Delta_T, Delta_phi):
@@ -132,6 +140,22 @@ def motion__omega_2max(phi_2, t_m, t_a, t_d):
 
 def motion__alpha_2max(omega_2max, t_r, t_j):
     return omega_2max/(-t_j + t_r)
+
+
+def motor__alpha_1(alpha_2, i):
+    return alpha_2*i
+
+
+def motor__T_1_drive(J_motor, J_1, alpha_1, T_2, i, eta):
+    return T_2/(eta*i) + alpha_1*(J_1 + J_motor)
+
+
+def motor__T_1_back(J_motor, J_1, alpha_1, T_2, i, eta):
+    return T_2*eta/i + alpha_1*(J_1 + J_motor)
+
+
+def motor__T_1rms(T_1k, t_k):
+    return sqrt(SegmentSum(T_1k**2*t_k)/SegmentSum(t_k))
 
 
 def profile__ED(t_on, t_cycle):
@@ -191,7 +215,9 @@ FUNCTIONS = {
     "calc.coupling.phi": ("f227044abb00fd02", coupling__phi),
     "calc.gearbox.n_1": ("8f9f168890758267", gearbox__n_1),
     "calc.gearbox.T_2max": ("d455c85b2c71de92", gearbox__T_2max),
+    "calc.gearbox.T_2stop": ("233cb8f5f3a997b8", gearbox__T_2stop),
     "calc.gearbox.lambda": ("f54c7a5badd2a8d9", gearbox__lambda),
+    "calc.gearbox.M_2k": ("5018dac622b0e3ca", gearbox__M_2k),
     "calc.hysteresis.C_t": ("41fae874a638b2da", hysteresis__C_t),
     "calc.hysteresis.j_t": ("a86089e6e3b95b15", hysteresis__j_t),
     "calc.hysteresis.phi_LM3": ("5ec97fde2a6e3296", hysteresis__phi_LM3),
@@ -205,6 +231,10 @@ FUNCTIONS = {
     "calc.mechanism.T_2_rotary": ("aafb091340bd4c90", mechanism__T_2_rotary),
     "calc.motion.omega_2max": ("19ada2db93ec5338", motion__omega_2max),
     "calc.motion.alpha_2max": ("75ca44b9204f8349", motion__alpha_2max),
+    "calc.motor.alpha_1": ("81a7d283d47982ec", motor__alpha_1),
+    "calc.motor.T_1_drive": ("e75a7aaf85e98fc5", motor__T_1_drive),
+    "calc.motor.T_1_back": ("289b3c3741bf545e", motor__T_1_back),
+    "calc.motor.T_1rms": ("1d82e3cfb254f05f", motor__T_1rms),
     "calc.profile.ED": ("2103e372a6f8efab", profile__ED),
     "calc.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
     "calc.profile.T_2m": ("7f4431ae67c9b21f", profile__T_2m),

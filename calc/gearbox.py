@@ -5,12 +5,19 @@ Operation (S5)", read with errata E1 to E6. Every row of a catalog at the desire
 evaluated at once (numpy arrays over the rows, no per-row Python loop); each criterion is kept
 with its required value, rated value, utilization (required / rated) and verdict.
 
+The emergency stop (``T_2Not``, the catalog's emergency-stop rating) is checked in both modes:
+the torque of an emergency stop does not depend on the duty. Where a row gives no ``T_2Not`` it is
+not checked for it (and says so); where the case gives neither the stop torque nor the motor's
+peak torque, the check is not made and is reported for information only.
+
 Ranking rule (:func:`rank`): passing candidates first, and among them rows of published data
 before rows marked illustrative (a part is not chosen on illustrative figures while a published
 one fits); then the smallest adequate size, measured by the governing torque rating (``T_2B`` in
 S5, ``T_2N`` in S1), then the larger margin (lower worst utilization of the governing checks);
 failing candidates after, closest to passing first (lowest worst utilization). Ties go by part
-name.
+name. Partial rows of a catalog (its ``partial`` column) are never ranked; the ranking runs across
+families and marks the smallest adequate size of each (:attr:`GearboxSelection.best_of_family`).
+The output bearing's checks (:func:`bearing_checks`) and the clamping hub's govern in both modes.
 """
 
 from __future__ import annotations
@@ -20,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .bands import BandTable
-from .catalog import Catalog, Column, Rule, Schema, no_less
+from .catalog import Catalog, Column, Rule, Schema, some_parts, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
 from .checks import CheckArray, rank, selected_part
@@ -40,15 +47,42 @@ SCHEMA = Schema(
         Column("backlash", "angle", "torsional backlash", required=False, positive=False),
         Column("C_t21", "stiffness", "torsional stiffness, output", required=False),
         Column("J_1", "inertia", "mass moment of inertia referred to the input", required=False),
+        *(
+            Column(name, kind_name, description, required=False, may_be_absent=True)
+            for name, kind_name, description in (
+                ("J_1_hub", "length", "bore of the clamping hub that J_1 is for"),
+                ("F_2A", "force", "maximum axial force on the output"),
+                ("F_2R", "force", "maximum radial (lateral) force on the output"),
+                ("M_2K", "torque", "maximum tilting moment on the output bearing"),
+                ("z_2", "length", "distance from the output flange to the bearing's centre (tilting moment)"),
+                ("stages", "dimensionless", "number of gear stages"),
+                ("backlash_reduced", "angle", "torsional backlash, reduced-backlash version"),
+                ("T_2a", "torque", "maximum output torque"),
+                ("T_012", "torque", "no-load torque"),
+                ("C_2K", "stiffness", "tilting rigidity of the output"),
+                ("m", "mass", "mass"),
+            )
+        ),
     ),
     text_columns=("part", "series", "source"),
-    optional_text=("illustrative",),
+    optional_text=("illustrative", "family", "size", "partial", "unclear"),
+    partial="partial",
     rules=(
         Rule("T_2B >= T_2N", no_less("T_2B", "T_2N"), "T_2B"),
         Rule("T_2Not >= T_2B", no_less("T_2Not", "T_2B"), "T_2Not"),
         Rule("n_1max >= n_1N", no_less("n_1max", "n_1N"), "n_1max"),
         Rule("efficiency eta in (0, 1]", lambda v: (v["eta"].m_as("") <= 1.0), "eta"),
     ),
+)
+
+#: Clamping hubs of the gearboxes: one row per gearbox and hub bore, with the gearbox's J_1 for it.
+HUB_SCHEMA = Schema(
+    kind="gearbox clamping hub",
+    columns=(
+        Column("d_hub", "length", "bore of the clamping hub"),
+        Column("J_1", "inertia", "mass moment of inertia referred to the input, with this hub"),
+    ),
+    text_columns=("part", "gearbox", "source"),
 )
 
 #: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary).
@@ -79,6 +113,13 @@ T_2max = Formula(
     "source, S5 calculation 2",
 )
 
+T_2stop = Formula(
+    Symbol("T_2stop", r"T_{2,\mathrm{stop}}", "torque", "N*m", "output torque of an emergency stop"),
+    (Symbol("T_1B", "T_{1B}", "torque", "N*m", "maximum torque of the motor"), _i),
+    lambda sp, T_1B, i: T_1B * i,
+    "case format, Emergency stop: the motor's peak through the gearbox, no credit for efficiency (η = 1)",
+)
+
 inertia_ratio = Formula(
     Symbol("lambda", r"\lambda", "dimensionless", "", "load to motor inertia ratio"),
     (
@@ -90,6 +131,121 @@ inertia_ratio = Formula(
     lambda sp, J_1, J_L, i, J_motor: (J_1 + J_L / i**2) / J_motor,
     "source, S5 criterion 3 (J_motor ≈ J_1 + J_L / i²); errata E6 (reported as a ratio, 1 is ideal)",
 )
+
+
+_F_2a = Symbol("F_2a", "F_{2a}", "force", "N", "axial force on the output shaft")
+_F_2r = Symbol("F_2r", "F_{2r}", "force", "N", "radial force on the output shaft")
+
+M_2k = Formula(
+    Symbol("M_2k", "M_{2k}", "torque", "N*m", "tilting moment on the output bearing"),
+    (
+        _F_2a,
+        Symbol("y_2", "y_{2}", "length", "mm", "distance of the axial force's line of action from the axis"),
+        _F_2r,
+        Symbol("x_2", "x_{2}", "length", "mm", "distance of the radial force from the output flange (lever arm)"),
+        Symbol("z_2", "z_{2}", "length", "mm", "distance from the output flange to the bearing's centre (catalog; 0 where not given)"),
+    ),
+    lambda sp, F_2a, y_2, F_2r, x_2, z_2: sp.Add(F_2a * y_2, F_2r * sp.Add(x_2, z_2, evaluate=False), evaluate=False),
+    "WITTENSTEIN alpha catalogues, output bearing: M_2k = F_2a · y_2 + F_2r · (x_2 + z_2), read as documented in "
+    "calc.gearbox.bearing_checks (z_2 is not in the published data reached; 0 where the catalog gives none)",
+)
+
+
+@dataclass(frozen=True)
+class OutputLoad:
+    """External forces on the gearbox output (``[load]``): each None where the case gives none."""
+
+    axial_force: object = None  # F_2a
+    radial_force: object = None  # F_2r
+    lever_arm: object = None  # x_2, from the output flange to the radial force
+    axial_radius: object = None  # y_2, from the axis to the axial force's line of action
+
+    @property
+    def given(self) -> bool:
+        return self.axial_force is not None or self.radial_force is not None
+
+
+def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
+    """The output bearing's checks against the catalog's ratings, every row at once.
+
+    ``F_2a <= F_2A`` (axial), ``F_2r <= F_2R`` (radial) and ``M_2k <= M_2K`` (tilting moment,
+    :data:`M_2k`), each made when the case gives its force; a row whose catalog gives no rating
+    is not checked ("the catalog gives no F_2R") and does not fail. They govern in both modes.
+
+    Notes
+    -----
+    The tilting moment is read as WITTENSTEIN's alpha catalogues write it, ``M_2k = F_2a · y_2 +
+    F_2r · (x_2 + z_2)``: the radial force acts at its lever arm ``x_2`` from the output flange
+    plus the distance ``z_2`` from the flange to the bearing's centre, and an axial force acting
+    off the axis (at ``y_2``) adds its own moment. The published data reached gives no ``z_2``
+    (``SOURCES.md``), so where the catalog's ``z_2`` column is empty the moment is taken at the
+    flange (``z_2 = 0``), which understates it by ``F_2r · z_2``: the check then says so. The
+    forces are static maxima of the cycle; no bearing life is computed (no dynamic load rating
+    is published).
+
+    >>> from calc.catalog import load_catalog, resolve
+    >>> rows = load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA)
+    >>> rows = rows.rows([rows.index("NPT035-10", "part")])
+    >>> [c.at(0).criterion for c in bearing_checks(OutputLoad(Q_(1000, "N"), Q_(500, "N"), Q_(50, "mm")), rows)]
+    ['F_2a <= F_2A', 'F_2r <= F_2R', 'M_2k <= M_2K']
+    """
+    n = len(catalog)
+    checks = []
+    zero = Q_(0.0, "mm")
+    if load.axial_force is not None:
+        checks.append(CheckArray("F_2A", None, "F_2a <= F_2A", load.axial_force * np.ones(n), catalog["F_2A"], "N", unrated="the catalog gives no F_2A"))
+    if load.radial_force is not None:
+        checks.append(CheckArray("F_2R", None, "F_2r <= F_2R", load.radial_force * np.ones(n), catalog["F_2R"], "N", unrated="the catalog gives no F_2R"))
+    if load.given:
+        z_2 = catalog["z_2"]
+        moment = M_2k(
+            F_2a=load.axial_force if load.axial_force is not None else Q_(0.0, "N"),
+            y_2=load.axial_radius if load.axial_radius is not None else zero,
+            F_2r=load.radial_force if load.radial_force is not None else Q_(0.0, "N"),
+            x_2=load.lever_arm if load.lever_arm is not None else zero,
+            z_2=Q_(np.nan_to_num(z_2.m_as("mm")), "mm"),
+        ) * np.ones(n)
+        checks.append(CheckArray("M_2K", None, "M_2k <= M_2K", moment, catalog["M_2K"], "N*m", unrated="the catalog gives no M_2K"))
+    return checks
+
+
+def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
+    """J_1 of each row for its clamping hub, the hub's bore, and the largest hub bore listed.
+
+    Without ``motor_shaft`` a row's J_1 is the catalog's (for the hub in its ``J_1_hub`` column,
+    the smallest listed in the shipped data). With it, the smallest hub of ``hubs`` whose bore
+    takes the shaft (``d_hub >= d``) gives J_1; a row with hubs listed but none that fits has no
+    J_1 (the hub check fails); a row with no hubs listed keeps the catalog's J_1.
+
+    Returns (J_1 [kg·cm²], d_hub [mm], d_hub_max [mm]) as float arrays over the rows.
+
+    >>> from calc.catalog import load_catalog, resolve
+    >>> cat = load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA)
+    >>> hubs = load_catalog(resolve("gearbox-hubs", None, "catalog"), HUB_SCHEMA)
+    >>> row = cat.rows([cat.index("TP010-10", "part")])
+    >>> [a.tolist() for a in clamping_hubs(row, hubs, Q_(16, "mm"))]
+    [[0.57], [19.0], [24.0]]
+    """
+    J_1 = catalog["J_1"].m_as("kg*cm**2").copy()
+    d_hub = catalog["J_1_hub"].m_as("mm").copy()
+    d_max = np.full(len(catalog), np.nan)
+    if hubs is None:
+        return J_1, d_hub, d_max
+    shaft = None if motor_shaft is None else as_kind(motor_shaft, "length", "motor.shaft").m_as("mm")
+    row_of = {part: k for k, part in enumerate(catalog.parts.tolist())}
+    best = np.full(len(catalog), np.inf)
+    best_J = np.full(len(catalog), np.nan)
+    for gearbox, d, j in zip(hubs.text["gearbox"].tolist(), hubs["d_hub"].m_as("mm").tolist(), hubs["J_1"].m_as("kg*cm**2").tolist()):
+        k = row_of.get(gearbox)
+        if k is None:
+            continue
+        d_max[k] = d if np.isnan(d_max[k]) else max(d_max[k], d)
+        if shaft is not None and shaft <= d < best[k]:
+            best[k], best_J[k] = d, j
+    if shaft is not None:
+        listed = ~np.isnan(d_max)
+        J_1[listed], d_hub[listed] = best_J[listed], np.where(np.isinf(best), np.nan, best)[listed]
+    return J_1, d_hub, d_max
 
 
 def shock_factor(cycles_per_hour):
@@ -120,6 +276,14 @@ class Candidate:
     inertia_ratio: float | None
     reasons: list
     illustrative: bool
+    catalog: str = ""  # the file of the row
+    family: str = ""
+    size: str = ""
+    source: str = ""
+    unclear: str = ""  # the row's doubtful figures, as its catalog says
+    J_1: object = None  # for the clamping hub of J_1_hub (NaN where unknown)
+    J_1_hub: object = None
+    best_of_family: bool = False  # the best-ranked passing candidate of its family
 
 
 @dataclass
@@ -137,10 +301,27 @@ class GearboxSelection:
     passes: np.ndarray  # every governing check that could be made passes
     worst: np.ndarray  # highest utilization of the governing checks (NaN where one has no rating)
     order: np.ndarray
+    J_1: object = None  # quantity array: each row's J_1 for its clamping hub (clamping_hubs)
+    J_1_hub: object = None  # quantity array: the hub bore J_1 is for (NaN where unknown)
+    notes: list = None
+
+    def governs(self, check: CheckArray) -> bool:
+        """Whether a check decides the verdict (:func:`governs`)."""
+        return governs(check, self.mode)
 
     @property
     def governing(self) -> list:
-        return [c for c in self.checks if c.mode == self.mode]
+        return [c for c in self.checks if self.governs(c)]
+
+    @property
+    def best_of_family(self) -> np.ndarray:
+        """True for the best-ranked passing row of each family: the smallest adequate size of
+        that family, by the ranking rule."""
+        out = np.zeros(len(self.catalog), bool)
+        passing = self.order[self.passes[self.order]]
+        _, first = np.unique(self.catalog.family[passing].astype(str), return_index=True)
+        out[passing[first]] = True
+        return out
 
     @property
     def not_made(self) -> list:
@@ -158,24 +339,48 @@ class GearboxSelection:
         governing check that could not be made."""
         return [c.reason(row) for c in self.governing if not c.passes[row]]
 
-    def candidate(self, row: int) -> Candidate:
-        """One row as a :class:`Candidate`."""
+    @property
+    def _texts(self):
+        cat = self.catalog
+        return cat.family, cat.text_or_blank("size"), cat.text_or_blank("source"), cat.text_or_blank("unclear")
+
+    def candidate(self, row: int, texts=None, best=None) -> Candidate:
+        """One row as a :class:`Candidate` (``texts`` and ``best``: the family, size, source and
+        doubt texts and :attr:`best_of_family`, when already at hand)."""
+        family, size, source, unclear = texts or self._texts
+        best = self.best_of_family if best is None else best
         lam = None if self.inertia_ratio is None else float(self.inertia_ratio[row])
         passes = bool(self.passes[row])
         return Candidate(
             part=str(self.catalog.parts[row]),
             ratio=float(self.catalog["ratio"][row].m_as("")),
             passes=None if passes and self.not_made else passes,
-            checks=[c.at(row, governs=c.mode == self.mode) for c in self.checks],
+            checks=[c.at(row, governs=self.governs(c)) for c in self.checks],
             T_2max=None if self.T_2max is None else self.T_2max[row],
             inertia_ratio=None if lam is None or np.isnan(lam) else lam,
             reasons=self.reasons(row),
             illustrative=bool(self.catalog.illustrative[row]),
+            catalog=self.catalog.catalog_of(row),
+            family=str(family[row]),
+            size=str(size[row]),
+            source=str(source[row]),
+            unclear=str(unclear[row]),
+            J_1=self.J_1[row],
+            J_1_hub=self.J_1_hub[row],
+            best_of_family=bool(best[row]),
         )
 
     def candidates(self, limit: int | None = None) -> list[Candidate]:
         """The rows as :class:`Candidate` objects, best first; the first ``limit`` (all for None)."""
-        return [self.candidate(row) for row in (self.order if limit is None else self.order[:limit])]
+        texts, best = self._texts, self.best_of_family
+        return [self.candidate(row, texts, best) for row in (self.order if limit is None else self.order[:limit])]
+
+
+def governs(check: CheckArray, mode: str) -> bool:
+    """Whether a gearbox check decides the verdict in operating mode ``mode`` (E3): a check of that
+    mode does; a check of no mode (the emergency stop, the output bearing, the clamping hub) does
+    in both, once it can be made."""
+    return check.mode == mode if check.mode is not None else check.made
 
 
 def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
@@ -183,10 +388,13 @@ def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
     i = as_kind(ratio, "dimensionless", where).m_as("")
     if not i > 0:
         raise CalcError(f"{where}: expected a ratio above zero, found {i:g}")
-    mask = np.isclose(catalog["ratio"].m_as(""), i, rtol=1e-6, atol=0)
+    at_ratio = np.isclose(catalog["ratio"].m_as(""), i, rtol=1e-6, atol=0)
+    mask = at_ratio & ~catalog.partial
     if not mask.any():
-        ratios = ", ".join(f"{r:g}" for r in sorted(set(catalog["ratio"].m_as("").tolist())))
-        raise CalcError(f"{where}: no gearbox in catalog {catalog.path} has ratio {i:g}; its ratios are {ratios}")
+        usable = catalog["ratio"].m_as("")[~catalog.partial]
+        ratios = ", ".join(f"{r:g}" for r in sorted(set(usable.tolist())))
+        partial = f" (only partial rows, never checked: {some_parts(catalog.parts[at_ratio])})" if at_ratio.any() else ""
+        raise CalcError(f"{where}: no gearbox in catalog {catalog.shown_name} has ratio {i:g}{partial}; its ratios are {ratios}")
     return catalog.rows(mask)
 
 
@@ -196,6 +404,10 @@ def select_gearbox(
     motor_peak_torque=None,
     motor_inertia=None,
     load_inertia=None,
+    emergency_stop_torque=None,
+    output_load: OutputLoad | None = None,
+    hubs: Catalog | None = None,
+    motor_shaft=None,
 ) -> GearboxSelection:
     """Check every row of ``catalog`` (already narrowed to the desired ratio, or to one part).
 
@@ -203,7 +415,13 @@ def select_gearbox(
     n_1max`` (E5), ``T_2max <= T_2B`` with ``T_2max = T_1B · i · f_s · η`` (E4), which is not made
     without the motor's peak torque ``T_1B`` (it says so; no part is then selected in S5). The
     operating mode of the profile (E3) says which group governs ``passes``; the other group is
-    reported for information. The inertia ratio (E6) is given when both inertias are.
+    reported for information. In both modes the emergency-stop torque (``emergency_stop_torque``,
+    default ``T_2stop = T_1B · i``) is checked against the catalog's ``T_2Not`` where a row gives
+    one. The inertia ratio (E6) is given when both inertias are, with each
+    row's J_1 for its clamping hub (:func:`clamping_hubs`: the smallest of ``hubs`` that takes
+    ``motor_shaft``, checked ``d <= d_hub,max``). The output bearing's checks
+    (:func:`bearing_checks`) are made when ``output_load`` gives a force; they and the hub check
+    govern in both modes.
     """
     d = duty(profile)
     i = catalog["ratio"]
@@ -221,15 +439,43 @@ def select_gearbox(
     else:
         needs = "T_2max = T_1B · i · f_s · η needs the motor's peak torque T_1B (motor.peak_torque)"
         checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", None, catalog["T_2B"], "N*m", not_made=needs))
+    stop = "T_2stop <= T_2Not"
+    unrated = "the catalog gives no T_2Not"
+    if emergency_stop_torque is not None:
+        required = as_kind(emergency_stop_torque, "torque", "emergency_stop_torque") * np.ones(len(catalog))
+        checks.append(CheckArray("T_2Not", None, stop, required, catalog["T_2Not"], "N*m", unrated=unrated))
+    elif motor_peak_torque is not None:
+        checks.append(CheckArray("T_2Not", None, stop, T_2stop(T_1B=motor_peak_torque, i=i), catalog["T_2Not"], "N*m", unrated=unrated))
+    else:
+        needs = "the emergency-stop torque needs gearbox.emergency_stop_torque or the motor's peak torque (motor.peak_torque)"
+        checks.append(CheckArray("T_2Not", None, stop, None, catalog["T_2Not"], "N*m", not_made=needs, unrated=unrated))
+    notes = []
+    if output_load is not None and output_load.given:
+        checks += bearing_checks(output_load, catalog)
+        if output_load.radial_force is not None and np.isnan(catalog["z_2"].magnitude).any():
+            notes.append(
+                "M_2k = F_2a · y_2 + F_2r · (x_2 + z_2) is taken at the output flange (z_2 = 0) where the catalog gives no "
+                "z_2, which understates it by F_2r · z_2"
+            )
+    J_1, d_hub, d_max = clamping_hubs(catalog, hubs, motor_shaft)
+    if motor_shaft is not None:
+        shaft = as_kind(motor_shaft, "length", "motor.shaft")
+        checks.append(
+            CheckArray("d_hub", None, "d_motor <= d_hub,max", shaft * np.ones(len(catalog)), Q_(d_max, "mm"), "mm",
+                       unrated="the hub table lists no clamping hub of this gearbox")
+        )
     lam = None
     if motor_inertia is not None and load_inertia is not None:
-        lam = inertia_ratio(J_1=catalog["J_1"], J_L=load_inertia, i=i, J_motor=motor_inertia).m_as("")
-    governing = [c for c in checks if c.mode == d.mode]
+        lam = inertia_ratio(J_1=Q_(J_1, "kg*cm**2"), J_L=load_inertia, i=i, J_motor=motor_inertia).m_as("")
+    governing = [c for c in checks if governs(c, d.mode)]
     passes = np.logical_and.reduce([c.passes for c in governing if c.made])
-    worst = np.max([c.utilization for c in governing if c.made], axis=0)
+    # fmax: a row that a check cannot rate (no T_2Not, no bearing rating) is ranked on its others
+    worst = np.fmax.reduce([c.ranked_utilization for c in governing if c.made], axis=0)
     size = catalog["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m")
     order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
-    return GearboxSelection(catalog, d.mode, checks, t2max, lam, passes, worst, order)
+    return GearboxSelection(
+        catalog, d.mode, checks, t2max, lam, passes, worst, order, Q_(J_1, "kg*cm**2"), Q_(d_hub, "mm"), notes
+    )
 
 
 def candidates_table(selection: GearboxSelection):
@@ -238,20 +484,22 @@ def candidates_table(selection: GearboxSelection):
     Columns: ``rank`` (1 is best), ``part``, ``check`` (the criterion), ``governs`` (the check
     belongs to the governing mode, E3), ``required``, ``rated`` and ``unit`` (rpm or N·m),
     ``utilization`` (required / rated; NaN where the catalog gives no rating) and ``verdict``
-    (``pass`` or ``FAIL``). Values are not rounded; round them for display.
+    (``pass``, ``FAIL``, or ``not checked`` where a check is not made or the row has no rating it
+    may lack, such as ``T_2Not``). Values are not rounded; round them for display.
 
     >>> from calc.catalog import load_catalog, resolve
     >>> from calc.profile import Profile
     >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(240, "rpm"), Q_(40, "N*m")), ("pause", Q_(1, "s"), None, None)])
     >>> rows = rows_at_ratio(load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA), 10)
     >>> t = candidates_table(select_gearbox(p, rows, motor_peak_torque=Q_(12, "N*m")))
-    >>> t.loc[t.part == "NPT035-10", ["check", "verdict"]].values.tolist()
-    [['n_2m · i <= n_1N', 'FAIL'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass'], ['T_2max <= T_2B', 'pass']]
+    >>> t.loc[t.part == "NPT035-10", ["check", "verdict"]].values.tolist()  # n_1N 3000 rpm at i = 10
+    [['n_2m · i <= n_1N', 'pass'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass'], ['T_2max <= T_2B', 'pass']]
 
-    ``T_2max`` = 12 N·m · 10 · 1.3 (Z_h = 1800 1/h) · 0.97 = 151.32 N·m against ``T_2B`` = 220 N·m:
+    ``T_2max`` = 12 N·m · 10 · 1.3 (Z_h = 1800 1/h) · 0.97 = 151.32 N·m against ``T_2B`` = 220 N·m;
+    the emergency stop ``T_2stop`` = 12 N·m · 10 = 120 N·m against ``T_2Not`` = 480 N·m:
 
     >>> t.loc[(t.part == "NPT035-10") & t.governs, ["required", "rated", "utilization"]].round(4).values.tolist()
-    [[2400.0, 6000.0, 0.4], [151.32, 220.0, 0.6878]]
+    [[2400.0, 6000.0, 0.4], [151.32, 220.0, 0.6878], [120.0, 480.0, 0.25]]
     """
     import pandas as pd
 
@@ -266,12 +514,13 @@ def candidates_table(selection: GearboxSelection):
                     "rank": np.arange(1, n + 1),
                     "part": selection.catalog.parts[order].astype(str),
                     "check": c.text,
-                    "governs": c.mode == selection.mode,
+                    "governs": selection.governs(c),
                     "required": c.required[order].m_as(unit) if c.made else np.full(n, np.nan),
                     "rated": c.rated[order].m_as(unit),
                     "unit": pretty_unit(unit),
                     "utilization": c.utilization[order],
-                    "verdict": np.where(c.passes[order], "pass", "FAIL") if c.made else "not checked",
+                    "verdict": np.where(c.unrated_rows[order], "not checked", np.where(c.passes[order], "pass", "FAIL"))
+                    if c.made else "not checked",
                     "_position": position,
                 }
             )
@@ -286,8 +535,10 @@ def candidates_summary(selection: GearboxSelection):
     Columns: ``rank``, ``part``, ``verdict`` (``PASS``/``FAIL`` on the governing checks),
     ``worst utilization`` (highest of the governing checks), ``T_2max [N·m]`` (S5, when the motor's
     peak torque is given), ``inertia ratio`` (E6, when both inertias are given), ``illustrative``
-    (the catalog row is marked as illustrative) and ``reasons`` (each failed governing check with
-    its excess; empty for a pass).
+    (the catalog row is marked as illustrative), ``reasons`` (each failed governing check with
+    its excess; empty for a pass), then ``catalog`` (the file of the row), ``family``, ``size``,
+    ``best of family`` (the smallest adequate size of its family), ``J_1 [kg·cm²]`` and ``hub [mm]``
+    (the clamping hub J_1 is for), ``doubtful`` (the row's doubtful figures) and ``source``.
     """
     import pandas as pd
 
@@ -304,6 +555,14 @@ def candidates_summary(selection: GearboxSelection):
             "inertia ratio": np.full(n, np.nan) if selection.inertia_ratio is None else selection.inertia_ratio[order],
             "illustrative": selection.catalog.illustrative[order],
             "reasons": ["; ".join(selection.reasons(row)) for row in order],
+            "catalog": [selection.catalog.catalog_of(row) for row in order],
+            "family": selection.catalog.family[order].astype(str),
+            "size": selection.catalog.text_or_blank("size")[order].astype(str),
+            "best of family": selection.best_of_family[order],
+            "J_1 [kg·cm²]": selection.J_1[order].m_as("kg*cm**2"),
+            "hub [mm]": selection.J_1_hub[order].m_as("mm"),
+            "doubtful": selection.catalog.text_or_blank("unclear")[order].astype(str),
+            "source": selection.catalog.text_or_blank("source")[order].astype(str),
         }
     )
     return table

@@ -243,3 +243,74 @@ def utilization_figure(selection: GearboxSelection, limit: int = 12):
     ax.grid(True, axis="y", color="#dddddd", linewidth=0.6, zorder=0)
     fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=len(checks) + 1, fontsize=8, frameon=False)
     return fig
+
+
+#: Colours of the families (or catalogs) in :func:`comparison_figure`, in order of first appearance.
+FAMILY_COLORS = ("#1f5fa8", "#e08a1e", "#5a9e3a", "#8e5ba8", "#c0392b", "#7f7f7f", "#17becf", "#bcbd22")
+
+
+def comparison_figure(selection: GearboxSelection, limit: int = 24):
+    """The makers compared: each candidate's governing utilization (the highest of its governing
+    checks, the ranking's margin), best first, one bar per candidate coloured by its family; with
+    several catalogs the colour is the catalog and family (``my-maker.csv · MK``).
+
+    A failing candidate's bar is hatched (its worst check above the dashed line at 1); the axis
+    stops at 3, a label gives each value. The smallest adequate size of each family is marked with
+    a star. A candidate whose governing check has no rating has no bar ("no rating").
+
+    Parameters
+    ----------
+    selection : GearboxSelection
+        The checked and ranked catalog rows (of one catalog or several).
+    limit : int
+        Draw at most this many candidates, best first.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> from calc import Q_
+    >>> from calc.catalog import load_catalog, resolve
+    >>> from calc.gearbox import SCHEMA, rows_at_ratio, select_gearbox
+    >>> from calc.profile import Profile
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(240, "rpm"), Q_(40, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> rows = rows_at_ratio(load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA), 10)
+    >>> fig = comparison_figure(select_gearbox(p, rows, motor_peak_torque=Q_(12, "N*m")))
+    >>> sorted(t.get_text() for t in fig.legends[0].get_texts())[:3]
+    ['NPS', 'NPT', 'TP+']
+    """
+    from matplotlib.figure import Figure
+    from matplotlib.patches import Patch
+
+    cat = selection.catalog
+    order = selection.order[:limit]
+    several = len(cat.members) > 1
+    groups = [f"{cat.catalog_of(r)} · {cat.family[r]}" if several else str(cat.family[r]) for r in order]
+    colors = {g: FAMILY_COLORS[k % len(FAMILY_COLORS)] for k, g in enumerate(dict.fromkeys(groups))}
+    worst = np.asarray(selection.worst[order], dtype=float)
+    best = selection.best_of_family[order]
+    x = np.arange(len(order))
+    fig = Figure(figsize=(max(6.5, 0.55 * len(order) + 2.5), 4.8), layout="constrained")
+    ax = fig.subplots()
+    bars = ax.bar(x, np.nan_to_num(worst, nan=0.0), 0.7, color=[colors[g] for g in groups], zorder=2)
+    for bar, passes in zip(bars, selection.passes[order]):
+        if not passes:
+            bar.set_hatch("///")
+            bar.set_edgecolor("black")
+    ax.bar_label(bars, labels=["no rating" if np.isnan(v) else f"{v:.2f}" + (" ★" if b else "") for v, b in zip(worst, best)],
+                 fontsize=7, padding=2, rotation=90)
+    ax.axhline(1.0, color="black", linestyle="--", linewidth=1.2, zorder=3)
+    ax.set_xticks(x, [str(cat.parts[r]) for r in order], fontsize=7, rotation=90)
+    # Far-failing rows would flatten the rest: the axis stops at 3, their labels give the value.
+    ax.set_ylim(0.0, 1.3 * min(3.0, max(1.0, np.nanmax(worst, initial=0.0))))
+    ax.set_ylabel(f"governing utilization ({selection.mode}) [–]")
+    ax.set_xlabel("candidate, best first")
+    total = len(selection.order)
+    shown = f"best {len(order)} of {total}" if total > len(order) else f"{total} candidates"
+    ax.set_title(f"Makers compared: highest governing utilization of each candidate, {shown}\n"
+                 "(★ smallest adequate size of its family; hatched: over the limit)", fontsize=10)
+    ax.grid(True, axis="y", color="#dddddd", linewidth=0.6, zorder=0)
+    fig.legend(handles=[Patch(color=c, label=g) for g, c in colors.items()], loc="outside right upper", fontsize=8, frameon=False)
+    return fig

@@ -78,6 +78,7 @@ KINDS: dict[str, Kind] = {
     for k in (
         Kind("time", "[time]", 0, "s", '"0.2 s"'),
         Kind("speed", "1/[time]", 1, "rad/s", '"300 rpm"'),
+        Kind("angular_acceleration", "1/[time]**2", 1, "rad/s**2", '"100 rad/s**2"'),
         Kind("frequency", "1/[time]", 0, "Hz", '"40 Hz"'),
         Kind("torque", "[mass]*[length]**2/[time]**2", 0, "N*m", '"12 N*m"'),
         Kind("inertia", "[mass]*[length]**2", 0, "kg*m**2", '"1.2 kg*cm**2"'),
@@ -93,6 +94,7 @@ KINDS: dict[str, Kind] = {
         Kind("force", "[mass]*[length]/[time]**2", 0, "N", '"100 N"'),
         Kind("linear_speed", "[length]/[time]", 0, "m/s", '"0.5 m/s"'),
         Kind("linear_acceleration", "[length]/[time]**2", 0, "m/s**2", '"9.80665 m/s**2"'),
+        Kind("linear_stiffness", "[mass]/[time]**2", 0, "N/m", '"200 N/mm"'),
     )
 }
 

@@ -85,7 +85,7 @@ def test_source_example_as_a_case(capsys, write_case, side, c_total):
 def test_component_from_a_catalog_part(capsys, write_case):
     a = results(capsys, case_with(write_case, '[accuracy]\napplied_torque = "0 N*m"\n[[accuracy.component]]\npart = "TP010-10"\n'))
     (c,) = a["components"]
-    assert c["name"] == "TP010-10" and c["side"] == "output" and c["source"] == "catalogs/gearboxes.csv row 6"
+    assert c["name"] == "TP010-10" and c["side"] == "output" and c["source"] == "catalogs/gearboxes.csv row 11"
     assert c["stiffness_at_output"]["value"] == pytest.approx(23) and c["backlash_at_output"]["value"] == pytest.approx(3)
     assert a["nominal_torque"]["value"] == pytest.approx(81)
     # At rest: positioning accuracy = ATA (none given) + backlash; repeatability = backlash (E13).
@@ -201,13 +201,13 @@ def test_input_side_needs_the_gearbox_ratio(capsys, write_case):
     assert "accuracy.component[1].side: an input-side component is referred to the output through the gearbox ratio (E11), but the case gives no gearbox.ratio" in err
 
 
-@pytest.mark.parametrize("column, edit", [("C_t21", "7500,97,3,,0.57"), ("backlash", "7500,97,,23,0.57")])
+@pytest.mark.parametrize("column, edit", [("C_t21", "7500,97,3,,0.4,"), ("backlash", "7500,97,,23,0.4,")])
 def test_a_part_without_its_catalog_figure_names_row_and_column(capsys, write_case, tmp_path, column, edit):
-    # TP010-10 (row 6 of the shipped catalog) with its stiffness or backlash cell left empty.
-    (tmp_path / "gaps.csv").write_text((ROOT / "catalogs" / "gearboxes.csv").read_text().replace("7500,97,3,23,0.57", edit))
+    # TP010-10 (row 11 of the shipped catalog) with its stiffness or backlash cell left empty.
+    (tmp_path / "gaps.csv").write_text((ROOT / "catalogs" / "gearboxes.csv").read_text().replace("7500,97,3,23,0.4,", edit))
     code, out, err = run(capsys, case_with(write_case, component(part='"TP010-10"', catalog='"gaps.csv"')))
     assert code == 2 and out == ""
-    assert f"accuracy.component[1].part: {tmp_path / 'gaps.csv'}, row 6 (TP010-10), column {column}: expected a value, found an empty cell" in err
+    assert f"accuracy.component[1].part: {tmp_path / 'gaps.csv'}, row 11 (TP010-10), column {column}: expected a value, found an empty cell" in err
 
 
 def test_a_trace_needs_the_gearbox_ratio(capsys, write_case, tmp_path):

@@ -35,15 +35,23 @@ def write(tmp_path, text):
 def test_shipped_catalog_loads_with_published_figures():
     cat = load_catalog(GEARBOXES, SCHEMA)
     k = cat.index("TP010-10", "part")
-    # Beckhoff AG2400/AG3400 data (catalog-data.md): TP010 i=10: T2N 81, T2B 126, n1N 3100, Ct21 23, J1 0.57.
+    # Beckhoff AG2400 page 'TP010 MF', table 'Mechanical data, 1-stage' (the row's source): i=10: T2N 81,
+    # T2B 126, T2Not 251, n1N 3100, Ct21 23, J1 0.40 for the 14 mm clamping hub (the smallest listed),
+    # F2A 2795 N, M2Max 270 N·m.
     assert cat["T_2N"][k].m_as("N*m") == 81
     assert cat["T_2B"][k].m_as("N*m") == 126
+    assert cat["T_2Not"][k].m_as("N*m") == 251
     assert cat["n_1N"][k].m_as("rpm") == 3100
     assert cat["C_t21"][k].m_as("N*m/arcmin") == pytest.approx(23)
-    assert cat["J_1"][k].m_as("kg*cm**2") == pytest.approx(0.57)
+    assert cat["J_1"][k].m_as("kg*cm**2") == pytest.approx(0.40)
+    assert cat["J_1_hub"][k].m_as("mm") == 14
+    assert cat["F_2A"][k].m_as("N") == 2795 and np.isnan(cat["F_2R"][k].magnitude) and cat["M_2K"][k].m_as("N*m") == 270
     assert cat["eta"][k].m_as("") == pytest.approx(0.97)
     assert len(cat.sha256) == 64
-    assert set(cat.text["illustrative"]) == {"yes", "no"}
+    # All rows are published figures; 58 complete, 42 partial (SP+ and NPS035, SOURCES.md) with the reason.
+    assert set(cat.text["illustrative"]) == {"no"}
+    assert cat.partial.sum() == 42 and (cat.text["partial"][cat.partial] != "").all()
+    assert cat.text["partial"][cat.index("SP075-10", "part")].startswith("T_2B, n_1N, T_2Not, T_2N, J_1")
 
 
 def test_a_catalog_in_other_units_loads_the_same(tmp_path):
@@ -184,6 +192,9 @@ def test_shipped_catalogs_load_cell_for_cell_as_written(name, schema):
     assert list(cat.parts) == [r[index["part"]] for r in rows]
     assert list(cat.lines) == list(range(2, len(rows) + 2))
     for c in schema.columns:
+        if c.name not in index:  # an optional column the file does not have: every cell empty
+            assert c.may_be_absent and np.isnan(cat[c.name].magnitude).all()
+            continue
         expected = [float(r[index[c.name]]) if r[index[c.name]] else np.nan for r in rows]
         np.testing.assert_array_equal(cat[c.name].magnitude, expected)  # NaN where NaN, else equal
         assert cat.header_units[c.name] == header[index[c.name]].split("[")[1].rstrip("]")
@@ -201,7 +212,7 @@ def test_each_catalog_is_read_once_per_run(monkeypatch):
     monkeypatch.setattr(catalog, "_read_catalog", lambda path, schema: reads.append(path.name) or read(path, schema))
     evaluate(read_case(EXAMPLE))
     model_for_part("NPT035-10")
-    assert sorted(reads) == ["couplings.csv", "gearboxes.csv"]
+    assert sorted(reads) == ["couplings.csv", "gearbox-hubs.csv", "gearboxes.csv"]
 
 
 def test_a_catalog_changed_since_it_was_read_is_read_again(tmp_path):

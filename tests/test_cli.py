@@ -29,7 +29,23 @@ def test_example_json_follows_the_contract():
     first = g["candidates"][0]
     assert set(first) >= {"part", "ratio", "passes", "checks", "inertia_ratio"}
     assert set(first["checks"][0]) >= {"name", "required", "rated", "utilization", "passes"}
-    assert [c["part"] for c in g["candidates"]] == ["NPT035-10", "TP010-10", "SP075-10"]
+    # Hand ranking of the twelve complete rows at i = 10 of catalogs/gearboxes.csv (the S5 checks
+    # govern; T_2max = 12 · 10 · 1.3 · η = 151.32 N·m at η = 0.97, 148.2 N·m at η = 0.95):
+    # passing, by T_2B: NPT035 220; NPS045 and NPT045 400, tied on T_2B and on the worst utilization
+    # (3000 / 4000 rpm = 0.75), so by name; TP050 648; TP300 2280; TP500 4000. Failing, closest first:
+    # TP010 151.32/126 = 1.20; NPT025 /90 = 1.68; TP004 /42 = 3.60; NPS015 and NPT015 /35 = 4.32 (by
+    # name); NPT005 /13 = 11.6. The 42 partial rows (SP+, NPS035) are never ranked.
+    assert [c["part"] for c in g["candidates"]] == [
+        "NPT035-10", "NPS045-10", "NPT045-10", "TP050-10", "TP300-10", "TP500-10",
+        "TP010-10", "NPT025-10", "TP004-10", "NPS015-10", "NPT015-10", "NPT005-10",
+    ]
+    assert [c["passes"] for c in g["candidates"]] == [True] * 6 + [False] * 6
+    assert g["best_of_family"] == {"NPT": "NPT035-10", "NPS": "NPS045-10", "TP+": "TP050-10"}
+    assert first["catalog"] == "catalogs/gearboxes.csv" and first["family"] == "NPT" and first["size"] == "035"
+    assert "9197685643" in first["source"] and first["unclear"] is None
+    # J_1 of NPT035-10 is for its 19 mm clamping hub, the smallest listed (catalogs/gearbox-hubs.csv).
+    assert first["J_1"] == {"value": 0.93, "unit": "kg*cm**2"} and first["J_1_hub"] == {"value": 19.0, "unit": "mm"}
+    assert g["candidates"][2]["unclear"].startswith("n_1max/eta/L_PA/m/backlash")
     # Every unit in the results parses back with the registry.
     from calc import ureg
 
@@ -138,17 +154,17 @@ def test_missing_case_file(capsys, tmp_path):
     "edit, fragment",
     [
         (lambda s: s.replace("T_2B [N*m],", "").replace(",172,250,", ",250,", 1), "expected a column 'T_2B [unit]'"),
-        (lambda s: s.replace("TP010-10,TP010,10,81,", "TP010-10,TP010,10,8l,"), "row 6 (TP010-10), column T_2N: expected a number, found '8l'"),
-        (lambda s: s.replace("TP010-8,", "TP010-10,"), "the part 'TP010-10' already stands in row 5"),
+        (lambda s: s.replace("TP010-10,TP010,10,81,", "TP010-10,TP010,10,8l,"), "row 11 (TP010-10), column T_2N: expected a number, found '8l'"),
+        (lambda s: s.replace("TP010-8,", "TP010-10,"), "the part 'TP010-10' already stands in row 10"),
         (lambda s: s.replace("10,81,126,", "10,81,26,"), "column T_2B: impossible value, expected T_2B >= T_2N"),
-        (lambda s: s.replace("7500,97,3,23,0.57", "7500,107,3,23,0.57"), "column eta: impossible value"),
-        (lambda s: s.replace("7500,97,3,23,0.57", "7500,97,-3,23,0.57"), "row 6 (TP010-10), column backlash: expected a value of zero or more, found -3"),
+        (lambda s: s.replace("7500,97,3,23,0.4,", "7500,107,3,23,0.4,"), "column eta: impossible value"),
+        (lambda s: s.replace("7500,97,3,23,0.4,", "7500,97,-3,23,0.4,"), "row 11 (TP010-10), column backlash: expected a value of zero or more, found -3"),
         (lambda s: "", ": expected a header row, found an empty file"),
         (lambda s: s.splitlines()[0] + "\n", ": expected at least one row of data, found none"),
         (lambda s: s.replace("T_2N [N*m]", "T_2N in N*m"), ": header column 4 'T_2N in N*m' is not of the form 'name [unit]'"),
         (lambda s: s.replace("T_2Not [N*m]", "T_2N [N*m]"), ": the column 'T_2N' appears twice in the header"),
         (lambda s: s.replace("part,", "name,", 1), ": expected a column 'part', found columns name, series, ratio,"),
-        (lambda s: s.replace("TP010-8,", ",", 1), ", row 5, column part: expected a value, found an empty cell"),
+        (lambda s: s.replace("TP010-8,", ",", 1), ", row 10, column part: expected a value, found an empty cell"),
     ],
 )
 def test_bad_catalogs_from_the_command_line(capsys, write_case, tmp_path, edit, fragment):

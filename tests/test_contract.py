@@ -34,11 +34,12 @@ def test_a_passing_case_has_a_true_verdict(capsys):
 
 
 def test_a_failing_case_says_which_check_and_by_how_much(capsys, write_case):
-    # T_1B = 30 N·m: T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m > T_2B = 220 N·m of NPT035-10: 72.0 % over.
-    r = results(capsys, write_case(HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML))
+    # T_1B = 400 N·m: T_2max = 400 · 10 · 1.3 · 0.95 = 4940 N·m > T_2B = 4000 N·m of TP500-10, the
+    # largest at i = 10 (η 0.95, Beckhoff page 'TP500 MF'): 23.5 % over, the closest to passing.
+    r = results(capsys, write_case(HEAD_TOML.replace('"12 N*m"', '"400 N*m"') + PROFILE_TOML))
     assert r["verdict"]["passes"] is False
     assert r["verdict"]["reasons"][0] == "No gearbox of ratio 10 in catalogs/gearboxes.csv passes the S5 checks:"
-    assert "NPT035-10: T_2max <= T_2B: required 378.3 N·m > rated 220 N·m, 72 % over" in r["verdict"]["reasons"]
+    assert r["verdict"]["reasons"][1] == "TP500-10: T_2max <= T_2B: required 4940 N·m > rated 4000 N·m, 23.5 % over"
 
 
 def test_s5_without_peak_torque_evaluates_every_section(capsys, write_case):
@@ -53,10 +54,10 @@ def test_s5_without_peak_torque_evaluates_every_section(capsys, write_case):
     best = r["gearbox"]["candidates"][0]
     t2b = next(k for k in best["checks"] if k["name"] == "T_2B")
     assert t2b["passes"] is None and t2b["required"] is None and "motor.peak_torque" in t2b["not_made"]
-    # Every row passes the checks made, so the smallest T_2B ranks first: TP010-10 (126 N·m);
-    # n_2max · i = 300 · 10 = 3000 rpm against its n_1max of 7500 rpm is made without T_1B: 0.4.
-    assert best["part"] == "TP010-10" and best["passes"] is None
-    assert next(k for k in best["checks"] if k["name"] == "n_1max")["utilization"] == pytest.approx(0.4)
+    # Every row passes the checks made, so the smallest T_2B ranks first: NPT005-10 (13 N·m);
+    # n_2max · i = 300 · 10 = 3000 rpm against its n_1max of 10000 rpm is made without T_1B: 0.3.
+    assert best["part"] == "NPT005-10" and best["passes"] is None
+    assert next(k for k in best["checks"] if k["name"] == "n_1max")["utilization"] == pytest.approx(0.3)
     assert r["coupling"]["selected"] == "AKD-30" and r["accuracy"]["C_total"]["value"] == pytest.approx(20)
     assert r["verdict"]["passes"] is None
     assert any("motor.peak_torque" in reason for reason in r["verdict"]["reasons"])
@@ -65,7 +66,7 @@ def test_s5_without_peak_torque_evaluates_every_section(capsys, write_case):
 
 
 def test_exit_status(capsys, write_case):
-    failing = write_case(HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML, "failing.toml")
+    failing = write_case(HEAD_TOML.replace('"12 N*m"', '"400 N*m"') + PROFILE_TOML, "failing.toml")
     open_ = write_case(HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML, "open.toml")
     bad = write_case(HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML, "bad.toml")
     assert run(capsys, EXAMPLE, "--strict")[0] == 0
@@ -120,13 +121,13 @@ def big_catalog(tmp_path):
 
 
 def test_candidate_lists_are_bounded(capsys, write_case, big_catalog):
-    # 3 shipped rows + 40 at ratio 10: the best 20 are listed with the count; --all-candidates lists all 43.
+    # 12 complete shipped rows + 40 at ratio 10: the best 20 are listed with the count; --all-candidates lists all 52.
     case = write_case(HEAD_TOML.replace("ratio = 10", f'ratio = 10\ncatalog = "{big_catalog}"') + PROFILE_TOML)
     r = results(capsys, case)
-    assert r["gearbox"]["candidate_count"] == 43 and len(r["gearbox"]["candidates"]) == 20
-    assert len(results(capsys, case, "--all-candidates")["gearbox"]["candidates"]) == 43
+    assert r["gearbox"]["candidate_count"] == 52 and len(r["gearbox"]["candidates"]) == 20
+    assert len(results(capsys, case, "--all-candidates")["gearbox"]["candidates"]) == 52
     code, out, _ = run(capsys, case)
-    assert "... 23 more candidates (--all-candidates lists them)" in out
+    assert "... 32 more candidates (--all-candidates lists them)" in out
 
 
 SELECTED_CHAIN = """

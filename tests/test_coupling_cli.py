@@ -190,7 +190,8 @@ def test_the_derived_load_inertia_follows_the_ratio(capsys, write_case):
     text = HEAD_TOML.replace("ratio = 10", "ratio = 8") + PROFILE_TOML + INPUT_SIDE
     r = json.loads(run(capsys, write_case(text), "--json")[1])
     selected = r["gearbox"]["selected"]
-    J_1 = {"TP010-8": 0.64, "NPT035-8": 1.0}[selected]  # catalogs/gearboxes.csv
+    # catalogs/gearboxes.csv, J_1 for the smallest clamping hub (Beckhoff pages 'TP010 MF', 'NPT035 MF').
+    J_1 = {"TP010-8": 0.48, "NPT035-8": 1.0}[selected]
     # E8 by hand: J_load = 1500 / 8² + J_1; M_N = 12 · J_load / (J_load + 4.2) · 2.5.
     J_load = 1500 / 64 + J_1
     assert r["coupling"]["M_N"]["value"] == pytest.approx(12 * J_load / (J_load + 4.2) * 2.5, rel=1e-12)

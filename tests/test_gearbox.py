@@ -41,24 +41,35 @@ def test_example_s5_selection_by_hand(catalog):
     sel = select_gearbox(example_profile(), rows, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2"))
     assert sel.mode == "S5"
     # Hand calculation: Z_h = 3600/2 = 1800 → f_s = 1.3 (E4); T_2max = 12 · 10 · 1.3 · 0.97 = 151.32 N·m.
-    # Against T_2B: NPT035-10 220 → 0.688 (pass), TP010-10 126 → 1.201 (fail), SP075-10 102 → 1.484 (fail).
+    # Against T_2B (catalogs/gearboxes.csv, Beckhoff pages of each row's source): NPT035-10 220 → 0.688
+    # (pass), TP010-10 126 → 1.201 (fail). Passing rows by T_2B: NPT035 220; NPS045 and NPT045 400 (tied
+    # also on the worst utilization, 3000/4000 rpm = 0.75: by name); TP050 648; TP300 2280; TP500 4000
+    # (T_2max 148.2 N·m at η 0.95). Failing, closest first: TP010 1.20; NPT025 151.32/90 = 1.68; TP004
+    # /42 = 3.60; NPS015, NPT015 /35 = 4.32; NPT005 /13 = 11.6. Partial rows (SP+, NPS035) are not ranked.
     by_part = {c.part: c for c in sel.candidates()}
     t2b = {c.name: c for c in by_part["NPT035-10"].checks}["T_2B"]
     assert t2b.required.m_as("N*m") == pytest.approx(151.32)
     assert t2b.utilization == pytest.approx(151.32 / 220)
-    assert [c.part for c in sel.candidates()] == ["NPT035-10", "TP010-10", "SP075-10"]
+    assert [c.part for c in sel.candidates()] == [
+        "NPT035-10", "NPS045-10", "NPT045-10", "TP050-10", "TP300-10", "TP500-10",
+        "TP010-10", "NPT025-10", "TP004-10", "NPS015-10", "NPT015-10", "NPT005-10",
+    ]
+    assert {c.part for c in sel.candidates() if c.best_of_family} == {"NPT035-10", "NPS045-10", "TP050-10"}
     assert sel.selected == "NPT035-10"
     assert by_part["TP010-10"].reasons == ["T_2max <= T_2B: required 151.3 N·m > rated 126 N·m, 20.1 % over"]
     # E5: n_2max · i = 300 · 10 = 3000 rpm against n_1max 6000 → 0.5.
     n1max = {c.name: c for c in by_part["NPT035-10"].checks}["n_1max"]
     assert n1max.utilization == pytest.approx(0.5)
-    # E1 (information in S5): n_2m · i = 240 · 10 = 2400 rpm > n_1N 2300 → fails but does not govern.
-    n1n = {c.name: c for c in by_part["NPT035-10"].checks}["n_1N"]
-    assert n1n.passes is False and n1n.governs is False and by_part["NPT035-10"].passes
-    # E6: λ = (J_1 + J_L/i²)/J_motor = (0.93 + 1500/100)/4.2 = 3.7929.
+    # E1 (information in S5): n_2m · i = 240 · 10 = 2400 rpm > n_1N 2300 of NPT045-10 → fails but does not govern.
+    n1n = {c.name: c for c in by_part["NPT045-10"].checks}["n_1N"]
+    assert n1n.passes is False and n1n.governs is False and by_part["NPT045-10"].passes
+    # E6: λ = (J_1 + J_L/i²)/J_motor = (0.93 + 1500/100)/4.2 = 3.7929, J_1 of the 19 mm hub.
     assert by_part["NPT035-10"].inertia_ratio == pytest.approx((0.93 + 15) / 4.2)
-    # SP075-10 has no J_1 in the catalog: no ratio rather than a wrong one.
-    assert by_part["SP075-10"].inertia_ratio is None
+    assert by_part["NPT035-10"].J_1_hub.m_as("mm") == 19
+    # A row without J_1 has no ratio rather than a wrong one.
+    no_j1 = rows.rows([rows.index("NPT035-10", "part")])
+    no_j1.values = dict(no_j1.values, J_1=Q_([np.nan], "kg*cm**2"))
+    assert select_gearbox(example_profile(), no_j1, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2")).candidates()[0].inertia_ratio is None
 
 
 def s1_profile():
@@ -78,15 +89,20 @@ def test_s1_selection_by_hand(catalog):
     sel = select_gearbox(s1_profile(), rows)
     assert sel.mode == "S1"
     assert sel.T_2max is None
-    # E1: n_2m · i = 240 · 10 = 2400 rpm; NPT035-10 n_1N = 2300 → 1.043 fails; TP010-10 3100 → 0.774;
-    # SP075-10 2900 → 0.828. E2: T_2m = 35.41 N·m against T_2N 81 (TP010) and 63 (SP075).
-    # Ranking in S1: both TP010-10 and SP075-10 pass; SP075-10 is smaller (T_2N 63 against 81) but its
-    # row is illustrative, so the published TP010-10 ranks first and is selected.
-    assert [c.part for c in sel.candidates()] == ["TP010-10", "SP075-10", "NPT035-10"]
-    assert sel.selected == "TP010-10"
-    rejected = sel.candidates()[-1]
+    # E1: n_2m · i = 240 · 10 = 2400 rpm; E2: T_2m = 35.41 N·m. Rows at i = 10 (T_2N, n_1N):
+    # NPT025 45, 3900 → 0.787, 0.615 pass; TP010 81, 3100 → 0.437, 0.774 pass; NPT035 110, 3000 →
+    # 0.32, 0.8 pass; TP050 331, 2500 → 0.96 pass. Failing, closest first: NPT045 2300 rpm → 1.043;
+    # NPS045 2000 → 1.2; TP004 27 N·m → 1.311; TP300 1700 rpm → 1.412; TP500 1500 → 1.6; NPS015 and
+    # NPT015 19 N·m → 1.864 (by name); NPT005 6 N·m → 5.90. The smallest adequate T_2N is NPT025-10.
+    assert [c.part for c in sel.candidates()] == [
+        "NPT025-10", "TP010-10", "NPT035-10", "TP050-10",
+        "NPT045-10", "NPS045-10", "TP004-10", "TP300-10", "TP500-10", "NPS015-10", "NPT015-10", "NPT005-10",
+    ]
+    assert sel.selected == "NPT025-10"
+    rejected = sel.candidates()[4]
     assert not rejected.passes
     assert rejected.reasons == ["n_2m · i <= n_1N: required 2400 rpm > rated 2300 rpm, 4.35 % over"]
+    assert rejected.unclear.startswith("n_1max/eta/L_PA/m/backlash")  # the row's doubt goes with it
 
 
 def test_s5_without_peak_torque_ranks_but_selects_none(catalog):

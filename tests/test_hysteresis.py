@@ -225,11 +225,11 @@ def test_bad_recordings_and_nominal_torques_are_one_clear_error():
     )
 
 
-@pytest.mark.parametrize("column, edit", [("C_t21", "7500,97,3,,0.57"), ("backlash", "7500,97,,23,0.57")])
+@pytest.mark.parametrize("column, edit", [("C_t21", "7500,97,3,,0.4,"), ("backlash", "7500,97,,23,0.4,")])
 def test_a_part_without_catalog_figures_has_no_loop_model(tmp_path, column, edit):
-    # TP010-10 (row 6 of the shipped catalog) with its stiffness or backlash cell left empty.
+    # TP010-10 (row 11 of the shipped catalog) with its stiffness or backlash cell left empty.
     path = tmp_path / "gearboxes.csv"
-    path.write_text((ROOT / "catalogs" / "gearboxes.csv").read_text().replace("7500,97,3,23,0.57", edit))
+    path.write_text((ROOT / "catalogs" / "gearboxes.csv").read_text().replace("7500,97,3,23,0.4,", edit))
     with pytest.raises(CalcError) as err:
         model_for_part("TP010-10", catalog=str(path))
-    assert str(err.value) == f"{path}, row 6 (TP010-10), column {column}: expected a value for the loop model, found an empty cell"
+    assert str(err.value) == f"{path}, row 11 (TP010-10), column {column}: expected a value for the loop model, found an empty cell"

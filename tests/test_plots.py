@@ -16,7 +16,8 @@ from .test_profile import example_profile
 
 @pytest.fixture(scope="module")
 def selection():
-    """The example case at ratio 10 (S5): NPT035-10 passes, TP010-10 and SP075-10 fail on T_2B."""
+    """The example case at ratio 10 (S5): twelve complete rows, ranked by hand in
+    tests/test_gearbox.py::test_example_s5_selection_by_hand; NPT035-10 is selected."""
     rows = rows_at_ratio(load_catalog(GEARBOXES, SCHEMA), Q_(10, ""))
     return select_gearbox(example_profile(), rows, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2"))
 
@@ -119,14 +120,22 @@ def test_utilization_figure_bars_the_governing_checks(selection):
     fig = utilization_figure(selection)
     (ax,) = fig.axes
     bars = {c.get_label(): c for c in ax.containers}
-    assert set(bars) == {"n_2max · i <= n_1max", "T_2max <= T_2B"}  # S5 governs: the S1 checks are not drawn
-    # Best first: NPT035-10, TP010-10, SP075-10; T_2max = 151.32 N·m against T_2B 220, 126, 102.
+    # S5 governs: the S1 checks are not drawn; the emergency stop governs in both modes
+    assert set(bars) == {"n_2max · i <= n_1max", "T_2max <= T_2B", "T_2stop <= T_2Not"}
+    # Best first (T_2B and n_1max of each row in catalogs/gearboxes.csv): T_2max = 151.32 N·m (η 0.97),
+    # 148.2 N·m for TP300 and TP500 (η 0.95); n_2max · i = 3000 rpm.
     heights = [b.get_height() for b in bars["T_2max <= T_2B"]]
-    np.testing.assert_allclose(heights, [151.32 / 220, 151.32 / 126, 151.32 / 102])
-    np.testing.assert_allclose([b.get_height() for b in bars["n_2max · i <= n_1max"]], [3000 / 6000, 3000 / 7500, 3000 / 7500])
-    assert [b.get_hatch() for b in bars["T_2max <= T_2B"]] == [None, "///", "///"]
+    t2b = [220, 400, 400, 648, 2280, 4000, 126, 90, 42, 35, 35, 13]
+    t2max = [151.32] * 4 + [148.2] * 2 + [151.32] * 6
+    np.testing.assert_allclose(heights, np.array(t2max) / t2b)
+    n1max = [6000, 4000, 4000, 5000, 3000, 3000, 7500, 7000, 7500, 8000, 8000, 10000]
+    np.testing.assert_allclose([b.get_height() for b in bars["n_2max · i <= n_1max"]], 3000 / np.array(n1max))
+    assert [b.get_hatch() for b in bars["T_2max <= T_2B"]] == [None] * 6 + ["///"] * 6
+    # T_2stop = 12 N·m · 10 = 120 N·m against each row's T_2Not, in the same order
+    t2not = [480, 1000, 1000, 1250, 8750, 15000, 251, 190, 100, 75, 80, 26]
+    np.testing.assert_allclose([b.get_height() for b in bars["T_2stop <= T_2Not"]], 120 / np.array(t2not))
     labels = [t.get_text() for t in ax.get_xticklabels()]
-    assert labels == ["NPT035-10\nPASS (selected)", "TP010-10\nFAIL", "SP075-10\nFAIL\nillustrative"]
+    assert labels[:2] == ["NPT035-10\nPASS (selected)", "NPS045-10\nPASS"] and labels[6] == "TP010-10\nFAIL"
     limit = [line for line in ax.lines if line.get_label() == "limit: utilization 1"]
     assert limit and limit[0].get_ydata()[0] == 1.0
     assert "S5" in ax.get_title() and "[–]" in ax.get_ylabel()
@@ -136,7 +145,7 @@ def test_utilization_figure_limits_the_candidates(selection):
     fig = utilization_figure(selection, limit=2)
     (ax,) = fig.axes
     assert len(ax.get_xticks()) == 2
-    assert "best 2 of 3" in ax.get_title()
+    assert "best 2 of 12" in ax.get_title()
 
 
 def test_utilization_figure_marks_a_missing_rating():
@@ -162,9 +171,9 @@ def test_utilization_figure_marks_a_missing_rating():
 def test_candidates_table_rows_and_values(selection):
     t = candidates_table(selection)
     assert list(t.columns) == ["rank", "part", "check", "governs", "required", "rated", "unit", "utilization", "verdict"]
-    assert len(t) == 3 * 4  # three candidates at ratio 10, four checks each
-    assert t.part.tolist()[::4] == ["NPT035-10", "TP010-10", "SP075-10"]
-    assert t["rank"].tolist()[::4] == [1, 2, 3]
+    assert len(t) == 12 * 5  # twelve complete rows at ratio 10, five checks each (the emergency stop the fifth)
+    assert t.part.tolist()[::5][:3] == ["NPT035-10", "NPS045-10", "NPT045-10"]
+    assert t["rank"].tolist()[::5] == list(range(1, 13))
     row = t[(t.part == "TP010-10") & (t.check == "T_2max <= T_2B")].iloc[0]
     # Hand calculation: T_2max = 12 · 10 · 1.3 · 0.97 = 151.32 N·m against T_2B = 126 N·m → 1.201, FAIL.
     assert row.required == pytest.approx(151.32)
@@ -172,20 +181,23 @@ def test_candidates_table_rows_and_values(selection):
     assert row.unit == "N·m"
     assert row.utilization == pytest.approx(151.32 / 126)
     assert row.verdict == "FAIL" and bool(row.governs)
-    row = t[(t.part == "NPT035-10") & (t.check == "n_2m · i <= n_1N")].iloc[0]
-    # E1, for information in S5: n_2m · i = 240 · 10 = 2400 rpm against n_1N = 2300 rpm.
+    row = t[(t.part == "NPT045-10") & (t.check == "n_2m · i <= n_1N")].iloc[0]
+    # E1, for information in S5: n_2m · i = 240 · 10 = 2400 rpm against n_1N = 2300 rpm (NPT045 MF page).
     assert (row.required, row.rated, row.unit, row.verdict, bool(row.governs)) == (2400, 2300, "rpm", "FAIL", False)
 
 
 def test_candidates_summary_gives_verdict_and_reasons(selection):
     s = candidates_summary(selection)
-    assert s.part.tolist() == ["NPT035-10", "TP010-10", "SP075-10"]
-    assert s.verdict.tolist() == ["PASS", "FAIL", "FAIL"]
-    np.testing.assert_allclose(s["worst utilization"], [151.32 / 220, 151.32 / 126, 151.32 / 102])
-    np.testing.assert_allclose(s["T_2max [N·m]"], 151.32)
-    # E6: λ = (J_1 + J_L / i²) / J_motor = (0.93 + 1500 / 100) / 4.2 = 3.793; SP075-10 has no J_1.
+    assert s.part.tolist()[:3] == ["NPT035-10", "NPS045-10", "NPT045-10"] and s.part.iloc[6] == "TP010-10"
+    assert s.verdict.tolist() == ["PASS"] * 6 + ["FAIL"] * 6
+    # The worst governing utilization is T_2B's but for NPS045/NPT045 (3000 / 4000 rpm > 151.32 / 400).
+    np.testing.assert_allclose(s["worst utilization"][:3], [151.32 / 220, 0.75, 0.75])
+    np.testing.assert_allclose(s["T_2max [N·m]"][:4], 151.32)
+    # E6: λ = (J_1 + J_L / i²) / J_motor = (0.93 + 1500 / 100) / 4.2 = 3.793, J_1 of the 19 mm hub.
     assert s["inertia ratio"].iloc[0] == pytest.approx(15.93 / 4.2)
-    assert np.isnan(s["inertia ratio"].iloc[2])
-    assert s.illustrative.tolist() == [False, False, True]
+    assert s["J_1 [kg·cm²]"].iloc[0] == 0.93 and s["hub [mm]"].iloc[0] == 19
+    assert not s.illustrative.any()
     assert s.reasons.iloc[0] == ""
-    assert s.reasons.iloc[1] == "T_2max <= T_2B: required 151.3 N·m > rated 126 N·m, 20.1 % over"
+    assert s.reasons.iloc[6] == "T_2max <= T_2B: required 151.3 N·m > rated 126 N·m, 20.1 % over"
+    assert s.family.tolist()[:4] == ["NPT", "NPS", "NPT", "TP+"] and s["best of family"].tolist()[:4] == [True, True, False, True]
+    assert s.doubtful.iloc[2].startswith("n_1max/eta") and s.catalog.iloc[0] == "catalogs/gearboxes.csv"

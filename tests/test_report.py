@@ -60,11 +60,12 @@ def test_a_passing_case_names_its_parts(write_case):
 
 
 def test_a_failing_case_says_why(write_case):
-    # T_1B = 30 N·m: T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m, above every T_2B at ratio 10 (at most 220 N·m).
-    r = build_report(write_case(HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML))
+    # T_1B = 400 N·m: T_2max = 400 · 10 · 1.3 · 0.95 = 4940 N·m, above every T_2B at ratio 10 (at most
+    # TP500-10's 4000 N·m, Beckhoff page 'TP500 MF').
+    r = build_report(write_case(HEAD_TOML.replace('"12 N*m"', '"400 N*m"') + PROFILE_TOML))
     assert r.verdict.word == "FAIL"
     assert r.reasons[0] == "No gearbox of ratio 10 in catalogs/gearboxes.csv passes the S5 checks:"
-    assert any(x.startswith("NPT035-10: T_2max <= T_2B: required 378.3 N·m > rated 220 N·m") for x in r.reasons)
+    assert any(x.startswith("TP500-10: T_2max <= T_2B: required 4940 N·m > rated 4000 N·m") for x in r.reasons)
     assert r.front_page().count(r"\item") >= 4
 
 
@@ -130,7 +131,7 @@ def batch(tmp_path_factory):
     folder = tmp_path_factory.mktemp("batch")
     cases = {
         "escape": f"title = '{TITLE}'\n" + HEAD_TOML.replace('title = "test axis"', "") + PROFILE_TOML,
-        "failing": HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML,
+        "failing": HEAD_TOML.replace('"12 N*m"', '"400 N*m"') + PROFILE_TOML,
         "broken": HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML,
     }
     for name, text in cases.items():

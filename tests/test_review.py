@@ -32,9 +32,9 @@ def test_no_change_is_the_same_case(case):
 
 
 def test_a_stronger_motor_fails_every_gearbox(case):
-    # 30 N·m · 10 · 1.3 · 0.97 = 378.3 N·m, above every T_2B at ratio 10 (at most 220 N·m).
-    r = evaluate(with_changes(case, motor_peak_torque=Q_(30, "N*m")))
-    assert r["cyclic"]["T2max"]["value"] == pytest.approx(378.3)
+    # 400 N·m · 10 · 1.3 · 0.95 = 4940 N·m, above every T_2B at ratio 10 (at most TP500-10's 4000 N·m).
+    r = evaluate(with_changes(case, motor_peak_torque=Q_(400, "N*m")))
+    assert r["cyclic"]["T2max"]["value"] == pytest.approx(4940)
     assert r["gearbox"]["selected"] is None
     assert case.motor_peak_torque == Q_(12, "N*m")  # the case itself is untouched
 
@@ -155,9 +155,11 @@ def test_panel_controls_re_evaluate_the_case(monkeypatch):
     assert len(drawn) == 3  # the load cycle only
     review.controls["motor.peak_torque"].value = 30.0
     review.settled()
-    assert "FAIL" in review.results.value and "378.3" in review.results.value  # the panel follows the control
-    # The coupling follows the motor's torque (AKD-60), and with it the accuracy chain: drawn again.
-    assert "Coupling <b>AKD-60</b>" in review.results.value and len(drawn) == 4
+    # T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m, above NPT035-10's T_2B of 220 N·m: NPS045-10 (400 N·m)
+    # is chosen; the coupling follows the motor's torque (AKD-60), and with both the accuracy chain,
+    # whose figure is drawn again.
+    assert "Gearbox <b>NPS045-10</b> · Coupling <b>AKD-60</b>" in review.results.value and "378.3 N·m" in review.results.value
+    assert len(drawn) == 4
     review.reset.click()  # back to the case file's values, whose figures are kept
     assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and len(drawn) == 4
 
@@ -226,7 +228,9 @@ def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
     shown = results_html(report, left_out)
     assert "FAIL" in shown and "The accuracy section cannot be evaluated with these inputs" in shown
     assert "NPT035-10" in shown
-    assert {c["part"] for c in report.results["gearbox"]["candidates"]} == {"TP010-8", "NPT035-8", "SP075-8"}  # catalogs/gearboxes.csv, ratio 8
+    # catalogs/gearboxes.csv, the complete rows at ratio 8 (the SP+ rows are partial, never ranked).
+    assert {c["part"] for c in report.results["gearbox"]["candidates"]} == {f"{s}-8" for s in (
+        "TP004", "TP010", "TP050", "TP300", "TP500", "NPT005", "NPT015", "NPT025", "NPT035", "NPT045", "NPS015", "NPS045")}
     assert "Coupling candidates" in shown and "Accuracy of the chain" not in shown
 
 

@@ -16,13 +16,17 @@ from .conftest import EXAMPLE, ROOT
 SHOTS = ROOT / "build" / "screenshots"
 #: (label as the page shows it, value), on the typed example whose numbers test_review.py works by
 #: hand: the ratio to 8 (TP010-8 chosen, and the accuracy chain follows it: positioning accuracy
-#: 0.365 arcmin), back to 10, then the motor's peak torque to 30 N·m (T_2max = 30 · 10 · 1.3 · 0.97
-#: = 378.3 N·m, above every T_2B at ratio 10) and back to 12 N·m; then a segment's torque.
+#: 0.365 arcmin) and back to 10; the motor's peak torque to 30 N·m (T_2max = 30 · 10 · 1.3 · 0.97 =
+#: 378.3 N·m, above NPT035-10's T_2B of 220 N·m: NPS045-10) and back to 12 N·m; the applied torque
+#: to 2 N·m, below 3 % of T_N = 3.3 N·m, so the backlash counts in full: 9.049 arcmin against the
+#: required 5 (FAIL, E13) and back; then a segment's torque.
 CHANGES = [
     ("gearbox ratio i", "8"),
     ("gearbox ratio i", "10"),
     ("motor peak torque T_1B [N·m]", "30"),
     ("motor peak torque T_1B [N·m]", "12"),
+    ("applied torque T [N·m]", "2"),
+    ("applied torque T [N·m]", "8"),
     ("1 accel: torque T_2 [N·m]", "70"),
     ("1 accel: torque T_2 [N·m]", "60"),
 ]
@@ -47,8 +51,11 @@ def test_a_reviewer_changes_the_ratio_and_a_torque_and_the_results_follow():
     assert at_8.startswith("PASS") and "Gearbox TP010-8" in at_8 and "0.365 arcmin" in at_8 and "0.365 arcmin" not in first
     assert seen["gearbox ratio i = 10"] == first
     strong = seen["motor peak torque T_1B [N·m] = 30"]
-    assert strong.startswith("FAIL") and "378.3 N·m" in strong and "151.3 N·m" not in strong
+    assert strong.startswith("PASS") and "Gearbox NPS045-10" in strong and "378.3 N·m" in strong and "151.3 N·m" not in strong
     assert seen["motor peak torque T_1B [N·m] = 12"] == first
+    loose = seen["applied torque T [N·m] = 2"]
+    assert loose.startswith("FAIL") and "9.049 arcmin > required 5 arcmin" in loose
+    assert seen["applied torque T [N·m] = 8"] == first
     # A larger accelerating torque raises the cubic mean T_2m (the S1 value), 35.41 N·m in the example.
     assert "35.41 N·m" in first and "35.41 N·m" not in seen["1 accel: torque T_2 [N·m] = 70"]
     assert all(p.stat().st_size > 10_000 for p in visit.shots)

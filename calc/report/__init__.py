@@ -28,7 +28,8 @@ from ..case import Case, read_case
 from ..catalog import display_path
 from ..errors import CalcError
 from ..sections import Results, Verdict, evaluate
-from . import accuracy, coupling, drive, duty, gearbox, motion
+from ..sections.ratios import search as ratio_search
+from . import accuracy, coupling, drive, duty, gearbox, motion, motor, ratios
 from .common import ERRATA, results_of
 from .latex import Latex, itemize, latex_escape, prose, q, render, table, util
 from .provenance import PACKAGE, build_date, git_commit, sha256
@@ -36,7 +37,7 @@ from .provenance import PACKAGE, build_date, git_commit, sha256
 __all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
 
 #: The block module of each section, in the order the report shows them.
-BLOCKS = (drive, motion, duty, gearbox, coupling, accuracy)
+BLOCKS = (drive, motion, duty, gearbox, coupling, motor, ratios, accuracy)
 
 #: What every report assumes.
 ASSUMPTIONS = (
@@ -68,6 +69,8 @@ class Report:
     selection: object = None  # GearboxSelection
     coupling: object = None  # (CouplingCase, CouplingSelection) when the case has [coupling]
     accuracy: object = None  # (AccuracyCase, ChainAccuracy) when the case has [accuracy]
+    motor: object = None  # MotorResult when the case has the motor's side
+    ratios: object = None  # RatioResult: the case at every ratio of its gearbox catalog
     error: str | None = None  # why the case could not be evaluated
     files: list = field(default_factory=list)  # (label, path text, sha256)
 
@@ -185,9 +188,9 @@ class Report:
         return Latex("\n".join([r"\section{Candidates}", *out]) if out else "")
 
     def section_results(self) -> Latex:
-        """What the coupling and accuracy sections give besides their checks."""
+        """What the coupling and accuracy sections and the ratio search give besides the checks."""
         out = _parts("results", self) if self.results else []
-        return Latex("\n".join([r"\section{Coupling and accuracy: results}", *out]) if out else "")
+        return Latex("\n".join([r"\section{Further results}", *out]) if out else "")
 
     def figures(self) -> list:
         """(figure, caption) pairs: the load cycle, the shock factor, the utilizations, each
@@ -229,6 +232,7 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     try:
         evaluated = evaluate(case)
         results = evaluated.to_json(candidates=None)
+        ratios = ratio_search(case) if gearbox.NAME in evaluated.sections else None
     except CalcError as exc:
         report.error = str(exc)
         return report
@@ -239,8 +243,12 @@ def report_of(case: Case, report: Report | None = None) -> Report:
         report.coupling = (evaluated[coupling.NAME].inputs, evaluated[coupling.NAME].selection)
     if accuracy.NAME in evaluated.sections:
         report.accuracy = (evaluated[accuracy.NAME].inputs, evaluated[accuracy.NAME].accuracy)
+    if motor.NAME in evaluated.sections:
+        report.motor = evaluated[motor.NAME]
+    report.ratios = ratios
     for m in BLOCKS:
         s = results_of(m.NAME, report)
         if s and s.get("catalog") and s.get("catalog_sha256"):
-            report.files.append((f"{m.NAME.capitalize()} catalog", s["catalog"], s["catalog_sha256"]))
+            for entry in s.get("catalogs") or [{"catalog": s["catalog"], "sha256": s["catalog_sha256"]}]:
+                report.files.append((f"{m.NAME.capitalize()} catalog", entry["catalog"], entry["sha256"]))
     return report

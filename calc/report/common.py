@@ -172,9 +172,14 @@ def further_candidates(name: str, report) -> list[str]:
     s = results_of(name, report)
     if not (s and s.get("candidates")):
         return []
+    listed = s["candidates"]
+    doubts = [f"{c['part']}: {c['unclear']}" for c in listed if c.get("unclear")]
+    sources = sorted({c["source"] for c in listed if c.get("source")})
+    notes = ([r"\noindent Doubtful figures of the rows listed: " + latex_escape("; ".join(doubts)) + r"\par"] if doubts else []) + (
+        [r"\noindent{\footnotesize Sources of the rows listed: " + latex_escape("; ".join(sources)) + r"\par}"] if sources else [])
     return [rf"\subsection*{{{name.capitalize()}}}",
             candidates_table(s, latex_escape(f"Utilization of each check of the {name} candidates, best first")),
-            *rejected(s)]
+            *notes, *rejected(s)]
 
 
 def further_chosen(name: str, report) -> list[tuple]:

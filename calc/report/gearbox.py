@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..gearbox import T_2max, inertia_ratio, n_1
+from ..gearbox import M_2k, T_2max, inertia_ratio, n_1
 from ..profile import n_2m
 from ..units import Q_, sig
 from . import common
@@ -32,7 +32,19 @@ def input_rows(report) -> list[list[str]]:
     if c.gearbox_part:
         rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", r"\texttt{\footnotesize gearbox.part}"])
     if c.gearbox_catalog and (c.ratio is not None or c.gearbox_part):
-        rows.append(["–", latex_escape(c.gearbox_catalog), "–", "gearbox catalog", r"\texttt{\footnotesize gearbox.catalog}"])
+        names = c.gearbox_catalog if isinstance(c.gearbox_catalog, list) else [c.gearbox_catalog]
+        rows.append(["–", latex_escape(", ".join(names)), "–", "gearbox catalog" + ("s, ranked together" if len(names) > 1 else ""),
+                     r"\texttt{\footnotesize gearbox.catalog}"])
+    if c.motor_shaft is not None:
+        rows.append(["–", latex_escape(c.motor_shaft.text), "–", "motor shaft: picks the clamping hub of $J_1$", r"\texttt{\footnotesize motor.shaft}"])
+    load = c.output_load
+    if load is not None:
+        for key, q, what in (("axial_force", load.axial_force, "axial force on the output, F_2a"),
+                             ("radial_force", load.radial_force, "radial force on the output, F_2r"),
+                             ("lever_arm", load.lever_arm, "lever arm of F_2r from the output flange, x_2"),
+                             ("axial_force_radius", load.axial_radius, "distance of F_2a from the axis, y_2")):
+            if q is not None:
+                rows.append(["–", latex_escape(f"{q:~P}"), "–", latex_escape(what), r"\texttt{\footnotesize load." + latex_escape(key) + "}"])
     return rows
 
 
@@ -52,9 +64,21 @@ def steps(report) -> list[str]:
     if report.case.motor_peak_torque is not None:
         out.append(step_block("Maximum output torque", T_2max.step(T_1B=report.case.motor_peak_torque, i=i, f_s=Q_(fs, ""),
                                                                   eta=cat["eta"][row]), "compared with T_2B"))
-    if sel.inertia_ratio is not None and not np.isnan(cat["J_1"][row].magnitude):
+    if sel.inertia_ratio is not None and not np.isnan(sel.J_1[row].magnitude):
+        hub = sel.J_1_hub[row]
+        which = "errata E6" + ("" if np.isnan(hub.magnitude) else f"; J_1 for the {sig(hub.m_as('mm'))} mm clamping hub")
         out.append(step_block("Load to motor inertia ratio", inertia_ratio.step(
-            J_1=cat["J_1"][row], J_L=report.case.load_inertia, i=i, J_motor=report.case.motor_inertia), "errata E6"))
+            J_1=sel.J_1[row], J_L=report.case.load_inertia, i=i, J_motor=report.case.motor_inertia), which))
+    load = report.case.output_load
+    if load is not None:
+        zero, z_2 = Q_(0.0, "mm"), cat["z_2"][row]
+        out.append(step_block("Tilting moment on the output bearing", M_2k.step(
+            F_2a=load.axial_force if load.axial_force is not None else Q_(0.0, "N"),
+            y_2=load.axial_radius if load.axial_radius is not None else zero,
+            F_2r=load.radial_force if load.radial_force is not None else Q_(0.0, "N"),
+            x_2=load.lever_arm if load.lever_arm is not None else zero,
+            z_2=zero if np.isnan(z_2.magnitude) else z_2,
+        ), "compared with M_2K; WITTENSTEIN's form" + ("; z_2 = 0, the catalog gives none" if np.isnan(z_2.magnitude) else "")))
     return out
 
 
@@ -73,26 +97,36 @@ def candidates(report) -> list[str]:
         return []
     cat = sel.catalog
     illustrative = False
+    doubts = []
+    several = len(cat.members) > 1
+    family, size, unclear = cat.family, cat.text_or_blank("size"), cat.text_or_blank("unclear")
+    best = sel.best_of_family
     rows = []
     for r in sel.order:
-        c = next(x for x in g["candidates"] if x["part"] == str(cat.parts[r]))
-        illustrative |= c["illustrative"]
-        j1 = cat["J_1"][r]
+        illustrative |= bool(cat.illustrative[r])
+        mark = r"$^{*}$" if cat.illustrative[r] else ""
+        if unclear[r]:
+            doubts.append(f"{cat.parts[r]}: {unclear[r]}")
+            mark += rf"$^{{\dagger{len(doubts)}}}$"
+        j1, hub = sel.J_1[r], sel.J_1_hub[r]
         rows.append([
-            latex_escape(c["part"]) + (r"$^{*}$" if c["illustrative"] else ""),
-            latex_escape(str(cat.text["series"][r])) if "series" in cat.text else "",
+            latex_escape(str(cat.parts[r])) + mark + (r" $\star$" if best[r] else ""),
+            latex_escape(f"{family[r]} {size[r]}".strip()) + (rf" {{\scriptsize {latex_escape(cat.catalog_of(r))}}}" if several else ""),
             num(cat["T_2N"][r], "N*m"), num(cat["T_2B"][r], "N*m"),
             num(cat["n_1N"][r], "rpm"), num(cat["n_1max"][r], "rpm"),
-            num(cat["eta"][r], "percent"), "–" if np.isnan(j1.magnitude) else num(j1, "kg*cm**2"),
+            num(cat["eta"][r], "percent"),
+            "–" if np.isnan(j1.magnitude) else num(j1, "kg*cm**2") + ("" if np.isnan(hub.magnitude) else f" ({sig(hub.m_as('mm'))} mm)"),
         ])
     sources = sorted({str(cat.text["source"][r]) for r in sel.order})
-    note = "Sources: " + "; ".join(latex_escape(s) for s in sources)
+    note = r"$\star$ smallest adequate size of its family. $J_1$ for the clamping hub in brackets. Sources: " + "; ".join(latex_escape(s) for s in sources)
+    if doubts:
+        note = "".join(rf"$^{{\dagger{k}}}$ doubtful figures of {latex_escape(d)}. " for k, d in enumerate(doubts, start=1)) + note
     if illustrative:
         note = r"$^{*}$ illustrative row: not a maker's own figures. " + note
     return [
         table(
             r"@{}l l r r r r r r@{}",
-            ["Part", "Series", "$T_{2N}$ [N·m]", "$T_{2B}$ [N·m]", "$n_{1N}$ [rpm]", "$n_{1\\mathrm{max}}$ [rpm]", r"$\eta$ [\%]", "$J_1$ [kg·cm²]"],
+            ["Part", "Family, size", "$T_{2N}$ [N·m]", "$T_{2B}$ [N·m]", "$n_{1N}$ [rpm]", "$n_{1\\mathrm{max}}$ [rpm]", r"$\eta$ [\%]", "$J_1$ [kg·cm²]"],
             rows, caption=latex_escape(f"Catalog ratings of the candidates ({g['catalog']}), best first"), note=note,
         ),
         candidates_table(g, f"Utilization of each check (required / rated), {g['mode']} governs; "
@@ -104,9 +138,13 @@ def candidates(report) -> list[str]:
 def figures(report) -> list:
     if report.selection is None:
         return []
-    from ..plots import utilization_figure
+    from ..plots import comparison_figure, utilization_figure
 
-    return [(utilization_figure(report.selection), "Utilization of the governing checks of each candidate, best first.")]
+    return [
+        (utilization_figure(report.selection), "Utilization of the governing checks of each candidate, best first."),
+        (comparison_figure(report.selection), "The makers compared: the highest governing utilization of each candidate, "
+                                              "coloured by family (and catalog, where several are ranked together)."),
+    ]
 
 
 def chosen(report) -> list[tuple]:

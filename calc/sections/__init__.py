@@ -14,11 +14,11 @@ from dataclasses import dataclass
 
 from ..case import Case
 from ..catalog import display_path
-from . import accuracy, coupling, drive, duty, gearbox, motion
+from . import accuracy, coupling, drive, duty, gearbox, motion, motor
 from .common import SHOWN_CANDIDATES, Verdict  # noqa: F401 (SHOWN_CANDIDATES: the command line)
 
 #: The evaluated sections, in the order of the results.
-SECTIONS = (duty, motion, gearbox, coupling, accuracy)
+SECTIONS = (duty, motion, gearbox, coupling, motor, accuracy)
 #: Sections that read their own table when evaluated (the case keeps it raw until then).
 FURTHER = (coupling.NAME, accuracy.NAME)
 #: The keys a case file may have at its top level.

@@ -11,7 +11,7 @@ import numpy as np
 
 from ..accuracy import ChainAccuracy, PositioningScatter, chain_accuracy, read_positions
 from ..case import Case, Table, once
-from ..catalog import display_path, load_catalog, resolve
+from ..catalog import display_path, load_catalog, load_catalogs, resolve
 from ..checks import CheckArray
 from ..errors import CalcError
 from ..units import Q_, fmt, sig
@@ -103,11 +103,13 @@ PART_KINDS = ("gearbox", "coupling")
 SELECTED = "selected"
 
 
-def _catalog_row(case: Case, catalog: str, part: str, where: str):
+def _catalog_row(case: Case, catalog, part: str, where: str):
+    """The gearbox catalog (one file or several, as ``gearbox.catalog``) and the row of ``part``;
+    a partial row is an input error."""
     from ..gearbox import SCHEMA
 
-    rows = load_catalog(resolve(catalog, case.folder, f"{where}.catalog"), SCHEMA)
-    return rows, rows.index(part, f"{where}.part")
+    rows = load_catalogs(catalog, case.folder, f"{where}.catalog", SCHEMA)
+    return rows, rows.usable_index(part, f"{where}.part")
 
 
 def _chosen_row(selection, what: str) -> tuple[int, str]:
@@ -120,11 +122,18 @@ def _chosen_row(selection, what: str) -> tuple[int, str]:
     return row, f"{part}, the best-ranked {what} (none is chosen)"
 
 
+def _doubt(rows, row: int) -> str:
+    """The row's doubtful figures as its catalog marks them (``unclear``), for the source text."""
+    doubt = rows.text_or_blank("unclear")[row]
+    return f" (doubtful figures: {doubt})" if doubt else ""
+
+
 def _gearbox_part(case: Case, t: Table, part: str):
-    """The catalog, row and source text of a gearbox component's ``part``."""
+    """The catalog, row and source text of a gearbox component's ``part``; a row's doubtful
+    figures go with it."""
     if part != SELECTED:
         rows, row = _catalog_row(case, t.text("catalog", default=case.gearbox_catalog or "gearboxes"), part, t.where("").rstrip("."))
-        return rows, row, f"{display_path(rows.path)} row {rows.lines[row]}"
+        return rows, row, f"{rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}"
     if t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the gearbox selection's catalog; give no catalog")
     if not gearbox.applies(case):
@@ -132,7 +141,7 @@ def _gearbox_part(case: Case, t: Table, part: str):
     selection = gearbox.gearbox_selection(case)
     row, chosen = _chosen_row(selection, "gearbox")
     rows = selection.catalog
-    return rows, row, f"{chosen}, {display_path(rows.path)} row {rows.lines[row]}"
+    return rows, row, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}"
 
 
 def _coupling_part(case: Case, t: Table, part: str):
@@ -159,7 +168,7 @@ def _coupling_part(case: Case, t: Table, part: str):
     stiffness = rows["C_T"][row]
     if np.isnan(stiffness.magnitude):
         raise CalcError(f"{where}, column C_T: expected a value, found an empty cell")
-    return name, stiffness, side, f"{chosen}, {display_path(rows.path)} row {rows.lines[row]}"
+    return name, stiffness, side, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}"
 
 
 def _measured_part_chosen(t: Table, part: str | None, chosen_part: str | None, sources: list) -> bool:

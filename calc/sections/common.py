@@ -68,7 +68,8 @@ def check_line(check: Check, width: int = 22) -> str:
     verdict = "not checked" if check.passes is None else ("ok" if check.passes else "FAIL")
     mark = "" if check.governs else "  (for information)"
     required = "n/a" if check.required is None else f"{sig(magnitude_in(check.required, check.unit))} {pretty_unit(check.unit)}"
-    rated = f"{sig(magnitude_in(check.rated, check.unit))} {pretty_unit(check.unit)}"
+    rated_value = magnitude_in(check.rated, check.unit)
+    rated = "n/a" if math.isnan(rated_value) else f"{sig(rated_value)} {pretty_unit(check.unit)}"
     return f"{check.criterion:<{width}} required {required:>12}  rated {rated:>12}  utilization {util:>5}  {verdict}{mark}"
 
 

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..case import Case, Table, once
-from ..catalog import Catalog, display_path, load_catalog, resolve
+from ..catalog import Catalog, display_path, load_catalogs
 from ..coupling import (
     DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TYPES, CouplingSelection, J_load_at_input, check_types, f_e_min, order_lines,
     select_coupling,
@@ -44,21 +44,21 @@ class CouplingCase:
 def read(case: Case) -> CouplingCase:
     """Read ``[coupling]`` key by key; errors name the file and the key."""
     s = Table(case.path, NAME, case.sections[NAME], KEYS)
-    catalog = load_catalog(resolve(s.text("catalog", default="couplings"), case.folder, s.where("catalog")), SCHEMA)
+    catalog = load_catalogs(s.catalogs("catalog", default="couplings"), case.folder, s.where("catalog"), SCHEMA)
     check_types(catalog)
     wanted = s.text("type")
     if wanted is not None and wanted not in TYPES:
         raise CalcError(f"{s.where('type')}: unknown coupling type {wanted!r}; expected one of {', '.join(TYPES)}")
     part = s.text("part")
     if part is not None:
-        row = catalog.index(part, s.where("part"))
+        row = catalog.usable_index(part, s.where("part"))
         if wanted is not None and catalog.text["type"][row] != wanted:
             raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, but coupling.type is {wanted!r}")
         catalog = catalog.rows([row])
     elif wanted is not None:
         mask = catalog.text["type"] == wanted
         if not mask.any():
-            raise CalcError(f"{s.where('type')}: the catalog {display_path(catalog.path)} has no {wanted} coupling")
+            raise CalcError(f"{s.where('type')}: the catalog {catalog.shown_name} has no {wanted} coupling")
         catalog = catalog.rows(mask)
     side = s.text("side")
     if side is not None and side not in SIDES:
@@ -106,10 +106,11 @@ def _from_the_case(case: Case, s: Table) -> dict:
     i = selection.catalog["ratio"][row]
     speed = n_1(n_2=case.profile.n_2max, i=i)
     out["speed"] = (speed, f"speed = n_2max · i = {fmt(case.profile.n_2max, 'rpm')} · {sig(i.m_as(''))} = {fmt(speed, 'rpm')}")
-    J_1 = selection.catalog["J_1"][row]
+    J_1, hub = selection.J_1[row], selection.J_1_hub[row]
     if case.load_inertia is not None and not np.isnan(J_1.magnitude):
         J = J_load_at_input(J_L=case.load_inertia, i=i, J_1=J_1)
         which = part if selection.passes[row] else f"{part}, the best-ranked gearbox (none passes)"
+        which += "" if np.isnan(hub.magnitude) else f", {fmt(hub, 'mm')} clamping hub"
         out["load_inertia"] = (
             J,
             f"load_inertia J_load = J_L / i² + J_1 = {fmt(case.load_inertia, 'kg*cm**2')} / {sig(i.m_as(''))}² + "
@@ -145,6 +146,8 @@ class CouplingResult:
             if bore.tolerance is None:
                 notes.append(f"coupling.shaft_{k} gives no tolerance; state one when ordering (the source asks for shaft sizes and tolerances)")
         listed = []
+        family, size, source, unclear = (cc.catalog.family, cc.catalog.text_or_blank("size"), cc.catalog.text_or_blank("source"),
+                                         cc.catalog.text_or_blank("unclear"))
         for row in shown(sel.order, candidates):
             listed.append(
                 {
@@ -158,6 +161,11 @@ class CouplingResult:
                     "required_torque": quantity(sel.M_Nt[row], "N*m"),
                     "checks": [check_json(c.at(row)) for c in sel.checks if c.applies_to(row)],
                     "reasons": sel.reasons(row),
+                    "catalog": cc.catalog.catalog_of(row),
+                    "family": str(family[row]),
+                    "size": str(size[row]),
+                    "source": str(source[row]),
+                    "unclear": str(unclear[row]) or None,
                 }
             )
         selected = sel.selected
@@ -174,8 +182,9 @@ class CouplingResult:
             )
         temperature = cc.inputs["temperature"]
         return {
-            "catalog": display_path(cc.catalog.path),
+            "catalog": cc.catalog.shown_name,
             "catalog_sha256": cc.catalog.sha256,
+            "catalogs": [{"catalog": display_path(path), "sha256": sha} for path, sha in cc.catalog.members],
             "type": cc.type,
             "M_N": quantity(sel.M_N, "N*m"),
             "service_factor": float(cc.inputs["service_factor"].m_as("")),
@@ -214,10 +223,14 @@ class CouplingResult:
         ]
         for b in section["bores"]:
             lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
+        several = len(section["catalogs"]) > 1
         for c, row in zip(section["candidates"], shown(self.selection.order, candidates)):
             verdict = "PASS" if c["passes"] else "FAIL"
-            lines.append(f"  {verdict}  {c['part']} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {quantity_text(c['f_e'])}")
+            where = f" [{c['catalog']}]" if several else ""
+            lines.append(f"  {verdict}  {c['part']}{where} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {quantity_text(c['f_e'])}")
             lines += [f"        {check_line(k.at(row), 20)}" for k in self.selection.checks if k.applies_to(row)]
+            if c["unclear"]:
+                lines.append(f"        doubtful figures: {c['unclear']}")
             for r in c["reasons"]:
                 lines.append(f"        rejected: {r}")
         if section["candidate_count"] > len(section["candidates"]):

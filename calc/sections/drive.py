@@ -4,17 +4,58 @@ and accuracy sections share. They have no results of their own."""
 from __future__ import annotations
 
 from ..case import Case, Table
+from ..errors import CalcError
+from ..fits import parse_bore
+from ..gearbox import OutputLoad
 
-MOTOR_KEYS = ("peak_torque", "inertia")
-LOAD_KEYS = ("inertia",)
+MOTOR_KEYS = ("peak_torque", "inertia", "rated_torque", "max_speed", "shaft")
+LOAD_KEYS = ("inertia", "axial_force", "radial_force", "lever_arm", "axial_force_radius")
 
 
 def read(top: Table, case: Case) -> None:
-    """Read ``[motor]`` and ``[load]`` into the case; each value above zero."""
+    """Read ``[motor]`` and ``[load]`` into the case; each value above zero, the motor's rated
+    (continuous) torque no higher than its peak torque (a distance of the
+    forces on the output may be zero). ``motor.shaft`` is the motor's shaft as ordered
+    (``"19 mm k6"``), which picks the gearbox's clamping hub; the forces on the gearbox output
+    (``load.axial_force``, ``radial_force``, its ``lever_arm`` from the output flange, and
+    ``axial_force_radius``, the axial force's distance from the axis) are checked against the
+    output bearing's ratings."""
     motor = top.table("motor", MOTOR_KEYS)
     if motor:
         case.motor_peak_torque = motor.positive("peak_torque", "torque")
         case.motor_inertia = motor.positive("inertia", "inertia")
+        case.motor_rated_torque = motor.positive("rated_torque", "torque")
+        case.motor_max_speed = motor.positive("max_speed", "speed")
+        peak, rated = case.motor_peak_torque, case.motor_rated_torque
+        if peak is not None and rated is not None and rated.m_as("N*m") > peak.m_as("N*m"):
+            raise CalcError(
+                f"{motor.where('rated_torque')}: expected a continuous torque at most the peak torque "
+                f"motor.peak_torque = {motor.data['peak_torque']!r} (a motor's peak is above its continuous rating), "
+                f"found {motor.data['rated_torque']!r}"
+            )
+        if motor.has("shaft"):
+            case.motor_shaft = parse_bore(motor.data["shaft"], motor.where("shaft"))
     load = top.table("load", LOAD_KEYS)
     if load:
         case.load_inertia = load.positive("inertia", "inertia")
+        forces = OutputLoad(
+            axial_force=load.positive("axial_force", "force", what="an axial force"),
+            radial_force=load.positive("radial_force", "force", what="a radial force"),
+            lever_arm=_distance(load, "lever_arm"),
+            axial_radius=_distance(load, "axial_force_radius"),
+        )
+        if forces.lever_arm is not None and forces.radial_force is None:
+            raise CalcError(f"{load.where('lever_arm')}: a lever arm is the distance of load.radial_force from the output flange, but no radial_force is given")
+        if forces.radial_force is not None and forces.lever_arm is None:
+            raise CalcError(f"{load.where('radial_force')}: the tilting moment needs the force's lever arm from the output flange, load.lever_arm, found none")
+        if forces.axial_radius is not None and forces.axial_force is None:
+            raise CalcError(f"{load.where('axial_force_radius')}: the distance of load.axial_force from the axis, but no axial_force is given")
+        case.output_load = forces if forces.given else None
+
+
+def _distance(load: Table, key: str):
+    """A distance of a force on the output: zero or more."""
+    q = load.quantity(key, "length")
+    if q is not None and not q.magnitude >= 0:
+        raise CalcError(f"{load.where(key)}: expected a distance of zero or more, found {load.data[key]!r}")
+    return q

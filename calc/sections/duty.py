@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..case import Case, Table
+from ..case import Case, Table, once
 from ..cycle import SampledCycle
 from ..errors import CalcError
 from ..gearbox import shock_factor
@@ -93,6 +93,12 @@ def applies(case: Case) -> bool:
 
 
 def evaluate(case: Case) -> DutyResult:
+    """The duty of the case's load cycle; computed once per case, so that a section after it (the
+    motor's side) reads the same result, with the sampled cycle where the motion form gives it."""
+    return once(case, NAME, lambda: _evaluate(case))
+
+
+def _evaluate(case: Case) -> DutyResult:
     p = case.profile
     seg = p.moving_values()
     zh = Z_h(t_cycle=p.t_cycle)

@@ -1,0 +1,47 @@
+"""The best ratio in the calc report: the case at every ratio of its gearbox catalog as a table,
+the ratio a reviewer should pick and why (the rule of :mod:`calc.ratios`), and the figure."""
+
+from __future__ import annotations
+
+from ..ratios import RULE
+from .latex import latex_escape, prose, q, table, util, verdict_mark
+from .common import nothing
+
+NAME = "ratios"
+
+
+def results(report) -> list[str]:
+    r = report.ratios
+    if r is None:
+        return []
+    j = r.to_json()
+    rows = []
+    for x in j["ratios"]:
+        mark = r"{} \footnotesize(pick)" if j["pick"] and j["pick"]["ratio"] == x["ratio"] else ""
+        rows.append([f"{x['ratio']:g}", latex_escape(x["part"]), util(x["utilization"]),
+                     "–" if x["inertia_ratio"] is None else f"{x['inertia_ratio']:.2f}",
+                     q(x["peak_torque_required"]) if x["peak_torque_required"] else "–",
+                     q(x["rms_torque_required"]) if x["rms_torque_required"] else "–", q(x["max_speed_required"]),
+                     verdict_mark(x["passes"]) + mark])
+    return [
+        r"\subsection*{The ratio}",
+        prose(j["reason"]),
+        table(r"@{}r l r r r r r l@{}", ["$i$", "Best gearbox", "Utilization", r"$\lambda$", r"$T_{1,\mathrm{peak}}$",
+                                          r"$T_{1,\mathrm{rms}}$", r"$n_{2\mathrm{max}} \cdot i$", "Verdict"], rows,
+              caption=latex_escape(f"The case at every ratio of {j['catalog']}, each with its best gearbox"),
+              note=prose(f"Rule: {RULE}.")),
+    ]
+
+
+def figures(report) -> list:
+    r = report.ratios
+    if r is None:
+        return []
+    from ..motor_plots import ratio_figure
+
+    c = report.case
+    return [(ratio_figure(r.search, c.motor_peak_torque, c.motor_rated_torque),
+             "The case against the ratio: motor torques, governing utilization and inertia ratio; feasible ratios shaded.")]
+
+
+input_rows = inputs = steps = checks = candidates = chosen = order_lines = sources = readings = nothing
