@@ -274,3 +274,16 @@ def test_a_derived_cycle_stays_derived_until_a_segment_is_moved():
     assert panel.changed_case().motion is None and "Load cycle: the segments as changed here" in panel.results.value
     panel.reset.click()
     assert "Motion: rotary" in panel.results.value
+
+
+def test_the_tables_list_the_best_candidates_unless_all_are_asked_for():
+    import re
+
+    panel = DesignReview(EXAMPLE)
+    notes = re.findall(r"6 of (\d+) candidates shown", panel.results.value)
+    assert len(notes) == 2 and all(int(n) > 6 for n in notes)  # the gearbox and the coupling table
+    assert panel.results.value.count('<td class="n">7</td>') == 0  # no rank 7
+    panel.all_candidates.value = True
+    panel.settled()
+    assert "candidates shown" not in panel.results.value
+    assert panel.results.value.count("<tr><td") + panel.results.value.count("<tr class=chosen><td") > 2 * 7

@@ -29,6 +29,7 @@ from .view import FAIL_COLOR, evaluated, results_html, typeset
 LABEL_WIDTH = "15.5em"
 FIGURE_DPI = 72  # the PNG's pixels at the width the column shows it
 FIGURES_KEPT = 32
+SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
 
 
 def _png(figure) -> bytes:
@@ -68,12 +69,15 @@ class DesignReview:
         self.reset.on_click(lambda _: self.load())
         self.report_link = report_link
         self.message = w.HTML()
+        self.all_candidates = w.Checkbox(description="all candidates", indent=False,
+                                         tooltip=f"list every candidate in the tables, not the best {SHOWN_CANDIDATES}")
         self.controls_box = w.VBox(layout=w.Layout(overflow="hidden"))
         self.results = w.HTML(layout=w.Layout(width="100%"))
         self.load_cycle = w.Image(format="png", layout=w.Layout(width="100%", max_width="560px"))
         self.chain = w.Image(format="png", layout=w.Layout(width="100%", max_width="640px"))
         top = w.HBox([self.case_file, self.reset], layout=w.Layout(width="100%"))
-        left = w.VBox([top, self.message, self.controls_box, self.load_cycle],
+        self.all_candidates.observe(self._changed, names="value")
+        left = w.VBox([top, self.message, self.controls_box, self.all_candidates, self.load_cycle],
                       layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
         right = w.VBox([self.results, self.chain], layout=w.Layout(flex="1 1 560px", min_width="560px"))
         # Side by side on a screen; on a narrow one (a notebook beside a file browser) the results go under.
@@ -156,7 +160,8 @@ class DesignReview:
         report, left_out = evaluated(case)
         link = self.report_link(case.path) if self.report_link else None
         typed = self.case.motion is not None and case.motion is None
-        return results_html(report, left_out, link, typed_by_hand=typed), (case, report)
+        shown = None if self.all_candidates.value else SHOWN_CANDIDATES
+        return results_html(report, left_out, link, typed_by_hand=typed, shown=shown), (case, report)
 
     def refresh(self) -> None:
         """Draw the results of the controls' values: each figure whose inputs changed, then the

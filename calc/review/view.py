@@ -161,7 +161,14 @@ def _worst(c: dict):
     return max(us) if us else None
 
 
-def _gearbox_table(g: dict) -> str:
+def _shown(rows: list, shown: int | None) -> tuple[list, str]:
+    """The first ``shown`` rows (all for None), and a note of how many are left out."""
+    if shown is None or len(rows) <= shown:
+        return rows, ""
+    return rows[:shown], f"<div class=note>{shown} of {len(rows)} candidates shown; tick <i>all candidates</i> for the rest.</div>"
+
+
+def _gearbox_table(g: dict, shown: int | None) -> str:
     rows = [
         [str(k), escape(c["part"]), _verdict_cell(c["passes"]), _utilization(_worst(c)), _q(c.get("T2max")),
          "" if c.get("inertia_ratio") is None else sig(c["inertia_ratio"], 3), "illustrative" if c.get("illustrative") else "",
@@ -169,12 +176,12 @@ def _gearbox_table(g: dict) -> str:
         for k, c in enumerate(g["candidates"], start=1)
     ]
     header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data", "reasons"]
-    marked = 0 if g.get("selected") else None
+    rows, more = _shown(rows, shown)
     return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g['ranking'])}</div>"
-            + _table(header, rows, numeric={0, 3, 4, 5}, marked=marked))
+            + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if g.get("selected") else None) + more)
 
 
-def _coupling_table(s: dict) -> str:
+def _coupling_table(s: dict, shown: int | None) -> str:
     def rated(c, name):
         return next((_q(k["rated"]) for k in c["checks"] if k["name"] == name), "")
 
@@ -185,8 +192,9 @@ def _coupling_table(s: dict) -> str:
     ]
     header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"), "worst utilization", "reasons"]
     notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in s.get("notes", []))
+    rows, more = _shown(rows, shown)
     return (f"<h3>Coupling candidates</h3><div class=note>{typeset(s['ranking'])}</div>"
-            + _table(header, rows, numeric={0, 4, 5, 6, 7}, marked=0 if s.get("selected") else None) + notes)
+            + _table(header, rows, numeric={0, 4, 5, 6, 7}, marked=0 if s.get("selected") else None) + more + notes)
 
 
 def _accuracy_table(a: dict) -> str:
@@ -199,10 +207,12 @@ def _accuracy_table(a: dict) -> str:
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
 
 
-def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False) -> str:
+def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False,
+                 shown: int | None = None) -> str:
     """The review of an evaluated case as one HTML text (see the module's docstring);
     ``report_link``, where given, is the address of the case's report, linked beside the verdict;
-    ``typed_by_hand``: the case's derived load cycle was changed segment by segment."""
+    ``typed_by_hand``: the case's derived load cycle was changed segment by segment; ``shown``:
+    the candidates listed in each table, best first (all for None)."""
     word = "FAIL" if left_out else report.verdict.word
     passes = word == "PASS"
     cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
@@ -216,9 +226,9 @@ def results_html(report: Report, left_out: list[str], report_link: str | None = 
     if r is not None:
         out += [_governing(r), _motion(r, typed_by_hand), _duty(r)]
         if r.get("gearbox"):
-            out.append(_gearbox_table(r["gearbox"]))
+            out.append(_gearbox_table(r["gearbox"], shown))
         if r.get("coupling"):
-            out.append(_coupling_table(r["coupling"]))
+            out.append(_coupling_table(r["coupling"], shown))
         if r.get("accuracy"):
             out.append(_accuracy_table(r["accuracy"]))
     out.append("</div>")
