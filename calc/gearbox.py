@@ -493,7 +493,7 @@ def candidates_table(selection: GearboxSelection):
     >>> rows = rows_at_ratio(load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA), 10)
     >>> t = candidates_table(select_gearbox(p, rows, motor_peak_torque=Q_(12, "N*m")))
     >>> t.loc[t.part == "NPT035-10", ["check", "verdict"]].values.tolist()  # n_1N 3000 rpm at i = 10
-    [['n_2m · i <= n_1N', 'pass'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass'], ['T_2max <= T_2B', 'pass']]
+    [['n_2m · i <= n_1N', 'pass'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass'], ['T_2max <= T_2B', 'pass'], ['T_2stop <= T_2Not', 'pass']]
 
     ``T_2max`` = 12 N·m · 10 · 1.3 (Z_h = 1800 1/h) · 0.97 = 151.32 N·m against ``T_2B`` = 220 N·m;
     the emergency stop ``T_2stop`` = 12 N·m · 10 = 120 N·m against ``T_2Not`` = 480 N·m:

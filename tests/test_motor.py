@@ -210,12 +210,19 @@ def test_a_sampled_cycle_without_the_motors_inertia_is_not_decided(write_case):
     assert r.verdict.passes is None
 
 
-def test_a_sampled_cycle_through_a_gearbox_without_j1_is_not_decided(write_case):
-    # SP075-10 has no J_1 in the shipped catalog: the rotor term cannot be computed.
-    text = MOTOR.format(peak="12 N*m", extra="").replace('part = "NPT035-10"', 'part = "SP075-10"')
+def test_a_sampled_cycle_through_a_gearbox_without_j1_is_not_decided(write_case, tmp_path):
+    # NPT035-10 with its J_1 left blank (a maker's catalog may lack it): the rotor term cannot be computed.
+    from .conftest import GEARBOXES
+
+    lines = GEARBOXES.read_text().splitlines()
+    header = lines[0].split(",")
+    row = next(l.split(",") for l in lines[1:] if l.startswith("NPT035-10,"))
+    row[header.index("J_1 [kg*cm**2]")] = ""
+    (tmp_path / "g.csv").write_text("\n".join([lines[0], ",".join(row)]) + "\n")
+    text = MOTOR.format(peak="12 N*m", extra="").replace('part = "NPT035-10"', 'part = "NPT035-10"\ncatalog = "g.csv"')
     r = evaluate(with_cycle(read_case(write_case(text + PROFILE_TOML)), trapezoid()))
     m = r.to_json()["motor"]
-    assert m["rms_torque_required"] is None and "J_1" in m["checks"][0]["not_made"] and "SP075-10" in m["checks"][0]["not_made"]
+    assert m["rms_torque_required"] is None and "J_1" in m["checks"][0]["not_made"] and "NPT035-10" in m["checks"][0]["not_made"]
     assert m["max_speed_required"]["value"] == pytest.approx(954.9297, abs=1e-4)  # the speed needs no inertia
 
 
@@ -241,9 +248,10 @@ def test_emergency_stop_default_is_the_motors_peak_through_the_gearbox(write_cas
 
 
 def test_a_given_emergency_stop_torque_governs(write_case):
-    case = read_case(write_case(HEAD_TOML + 'emergency_stop_torque = "500 N*m"\n' + PROFILE_TOML))
+    case = read_case(write_case(HEAD_TOML + 'emergency_stop_torque = "20000 N*m"\n' + PROFILE_TOML))
     r = evaluate(case)
-    assert r["gearbox"].selection.selected is None  # 500 N·m exceeds every T_2Not at ratio 10 (250, 480, 139)
+    # 20000 N·m exceeds every T_2Not at ratio 10 in catalogs/gearboxes.csv (the largest: TP500-10, 15000 N·m)
+    assert r["gearbox"].selection.selected is None
     assert any("T_2stop <= T_2Not" in reason for reason in r.verdict.reasons)
 
 

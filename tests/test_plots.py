@@ -132,7 +132,7 @@ def test_utilization_figure_bars_the_governing_checks(selection):
     np.testing.assert_allclose([b.get_height() for b in bars["n_2max · i <= n_1max"]], 3000 / np.array(n1max))
     assert [b.get_hatch() for b in bars["T_2max <= T_2B"]] == [None] * 6 + ["///"] * 6
     # T_2stop = 12 N·m · 10 = 120 N·m against each row's T_2Not, in the same order
-    t2not = [480, 1000, 1000, 1250, 8750, 15000, 251, 190, 100, 75, 80, 26]
+    t2not = [480, 1000, 1000, 1250, 8750, 15000, 251, 190, 100, 80, 75, 26]  # NPS015 before NPT015 (a tie on T_2B)
     np.testing.assert_allclose([b.get_height() for b in bars["T_2stop <= T_2Not"]], 120 / np.array(t2not))
     labels = [t.get_text() for t in ax.get_xticklabels()]
     assert labels[:2] == ["NPT035-10\nPASS (selected)", "NPS045-10\nPASS"] and labels[6] == "TP010-10\nFAIL"

@@ -24,7 +24,8 @@ from calc.report.summary import CSV_COLUMNS, worst_check, write_csv
 from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, run
 from .test_report import needs_tex, pdf_text, report_here
 
-FAILING = HEAD_TOML.replace('"12 N*m"', '"30 N*m"') + PROFILE_TOML
+# 400 N·m · 10 · 1.3 · η (0.95 to 0.97) >= 4940 N·m, above every T_2B at ratio 10 (the largest: TP500-10, 4000 N·m)
+FAILING = HEAD_TOML.replace('"12 N*m"', '"400 N*m"') + PROFILE_TOML
 UNREADABLE = HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML
 NOT_DECIDED = HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML
 LONG_TITLE = "Gantry Z axis with counterweight, left-hand portal of the second press line, " * 3
@@ -122,7 +123,7 @@ def test_summary_rows_are_plain_data_one_per_case(capsys, tmp_path):
     assert example["worst"]["utilization"] == pytest.approx(12 * 10 * 1.3 * 0.97 / 220)
     assert example["report"] == "indexing-table-profile.pdf" and example["report_path"] == str(tmp_path / "out" / "indexing-table-profile.pdf")
     assert example["error"] is None and example["reason"] is None
-    # Failing: no gearbox passes; its worst check is over 1 (378.3 / 220 = 1.72 for NPT035-10).
+    # Failing: no gearbox passes; its worst check is over 1 (4940 / 4000 = 1.235 for TP500-10, η 0.95).
     assert failing["chosen"] == {"gearbox": None} and failing["worst"]["utilization"] > 1
     assert unreadable["error"].endswith("has ratio 13; its ratios are 3, 4, 5, 7, 8, 10")
     assert unreadable["reason"] == f"The case cannot be evaluated: {unreadable['error']}"
@@ -201,7 +202,7 @@ def test_summary_of_three_cases(capsys, three_cases):
     for title, verdict in (("Rotary indexing table, axis 3", "PASS"), ("test axis", "FAIL")):
         assert re.search(rf"{re.escape(title)}\s+{verdict}", text), title
     assert re.search(r"Rotary indexing table, axis 3\s+PASS\s+NPT035-10\s+AKD-30\s+0\.69", text)
-    assert re.search(r"test axis\s+FAIL\s+none\s+–\s+1\.72", text)  # 378.3 / 220
+    assert re.search(r"test axis\s+FAIL\s+none\s+–\s+1\.24", text)  # 400 · 10 · 1.3 · 0.95 = 4940 N·m / 4000 (TP500-10, the closest)
     assert "has ratio 13" in flat
     # Title block: each case file and catalog once, with its SHA-256.
     for case in cases:
