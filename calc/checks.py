@@ -137,12 +137,22 @@ class CheckArray:
         return self.at(row).reason()
 
 
+def _significant(values, digits: int = 12) -> np.ndarray:
+    """``values`` rounded to ``digits`` significant digits, so that figures which differ only by
+    floating-point rounding (the same inputs given in other units) tie, and the tie goes by name."""
+    x = np.asarray(values, float)
+    scaled = np.isfinite(x) & (x != 0)
+    exponent = np.floor(np.log10(np.abs(np.where(scaled, x, 1.0))))
+    scale = 10.0 ** (digits - 1 - exponent)
+    return np.where(scaled, np.round(x * scale) / scale, x)
+
+
 def rank(passes, size, worst_utilization, parts, illustrative=None) -> np.ndarray:
     """Indices best first: passing first, published before illustrative rows, then smallest size
     and larger margin; failing rows after, closest to passing first (the rule of :mod:`calc.gearbox`)."""
     passes = np.asarray(passes, bool)
-    worst = np.where(np.isnan(worst_utilization), np.inf, worst_utilization)
-    size_key = np.where(passes, size, 0.0)
+    worst = np.where(np.isnan(worst_utilization), np.inf, _significant(worst_utilization))
+    size_key = np.where(passes, _significant(size), 0.0)
     shown_later = np.zeros(len(passes), bool) if illustrative is None else passes & np.asarray(illustrative, bool)
     keys = (worst, size_key, shown_later, ~passes)
     order = np.lexsort(keys)

@@ -69,7 +69,7 @@ def test_the_rotor_term_favours_lower_ratios():
     s = search(case).search
     assert s.load.rotor_term
     cat = s.selection.catalog
-    J_c = cat["J_1"][s.rows].m_as("kg*m**2")  # gearbox J_1 per ratio
+    J_c = s.selection.J_1[s.rows].m_as("kg*m**2")  # gearbox J_1 per ratio, for the 19 mm motor shaft's clamping hub
     coupling = search(case).to_json()["notes"]
     assert any("motor-side coupling" in n for n in coupling)
     for k, i in enumerate(s.ratios):
