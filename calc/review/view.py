@@ -22,7 +22,7 @@ from ..units import sig
 PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 _GREEK = {"phi": "φ", "eta": "η", "lambda": "λ"}
 # A symbol as written in code: a letter (or phi, eta, lambda) and its subscript, ``T_2B``, ``K_ϑ``.
-_SYMBOL = re.compile(r"(?<!\w)(phi|eta|lambda|[^\W\d_])_([^\W_]+)(?!\w)")
+_SYMBOL = re.compile(r"(?<!\w)(phi|eta|lambda|[^\W\d_])_([^\W_]+(?:,[^\W_]+)*)(?!\w)")  # d_hub,max too
 # A name written in code, ``positioning_accuracy`` (not a key path's part, ``motor.peak_torque``).
 _WORDS = re.compile(r"(?<![.\w])([a-z]{2,})_([a-z]{2,})\b")
 
@@ -32,6 +32,7 @@ STYLE = f"""<style>
 .dr .verdict {{ display: flex; align-items: baseline; gap: 12px; flex-wrap: wrap; margin-bottom: 4px; }}
 .dr .word {{ font-size: 22px; font-weight: 700; color: #fff; padding: 1px 12px; border-radius: 4px; }}
 .dr .pass {{ color: {PASS_COLOR}; font-weight: 600; }} .dr .fail {{ color: {FAIL_COLOR}; font-weight: 600; }}
+.dr .open {{ color: #777; }}
 .dr .word.pass {{ background: {PASS_COLOR}; color: #fff; }} .dr .word.fail {{ background: {FAIL_COLOR}; color: #fff; }}
 .dr .word.open {{ background: #8a6d00; color: #fff; }}
 .dr .parts {{ font-size: 15px; }} .dr ul.reasons {{ margin: 2px 0 4px 18px; padding: 0; color: {FAIL_COLOR}; }}
@@ -85,7 +86,10 @@ def _q(d) -> str:
     return "" if d is None or d.get("value") is None else escape(quantity_text(d).replace(" 1/hour", " /h"))
 
 
-def _verdict_cell(passes) -> str:
+def _verdict_cell(passes, not_made: str | None = None) -> str:
+    """PASS or FAIL; a check that could not be made (``passes`` None) says why, in grey."""
+    if passes is None:
+        return f'<span class="open">not made{": " + escape(not_made) if not_made else ""}</span>'
     return '<span class="pass">PASS</span>' if passes else '<span class="fail">FAIL</span>'
 
 
@@ -94,7 +98,7 @@ def _utilization(u) -> str:
     if u is None:
         return ""
     width = max(0.0, min(u, 1.0)) * 100
-    color = FAIL_COLOR if u > 1 else PASS_COLOR
+    color = FAIL_COLOR if u > 1 + 1e-9 else PASS_COLOR  # 1.0000000000000002 is a rounding of 1, which passes
     return f'{100 * u:.0f} %<span class="bar"><span style="width:{width:.0f}%;background:{color}"></span></span>'
 
 
@@ -121,7 +125,8 @@ def _governing(r: dict) -> str:
         who = f"{name} {escape(c['part'])}" + ("" if s.get("selected") else " (closest)")
         for k in c["checks"]:
             if k.get("governs", True):
-                rows.append([who, typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]), _verdict_cell(k["passes"])])
+                rows.append([who, typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]),
+                             _verdict_cell(k["passes"], k.get("not_made"))])
     for k in (r.get("accuracy") or {}).get("checks", []):
         rows.append(["accuracy", typeset(k["criterion"]), _q(k["value"]), _q(k["required"]), _utilization(k["utilization"]), _verdict_cell(k["passes"])])
     if not rows:
