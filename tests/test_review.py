@@ -112,7 +112,7 @@ def test_results_html_of_the_example(case):
     assert text.count("<thead><tr><th>rank</th>") == 2
     assert "True" not in text and "False" not in text
     # A check the catalog cannot decide says so, not FAIL (NPT035-10's row gives no F_2R).
-    assert '<span class="open">not made: the catalog gives no F_2R</span>' in text and "<sub>hub,max</sub>" in text
+    assert '<span class="open">not made: the catalog gives no <i>F</i><sub>2R</sub></span>' in text and "<sub>hub,max</sub>" in text
 
 
 def test_a_failing_accuracy_requirement_gives_its_numbers(case):

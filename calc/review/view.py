@@ -89,7 +89,7 @@ def _q(d) -> str:
 def _verdict_cell(passes, not_made: str | None = None) -> str:
     """PASS or FAIL; a check that could not be made (``passes`` None) says why, in grey."""
     if passes is None:
-        return f'<span class="open">not made{": " + escape(not_made) if not_made else ""}</span>'
+        return f'<span class="open">not made{": " + typeset(not_made) if not_made else ""}</span>'
     return '<span class="pass">PASS</span>' if passes else '<span class="fail">FAIL</span>'
 
 
@@ -106,7 +106,7 @@ def _table(header: list[str], rows: list[list[str]], numeric: set[int] = frozens
     head = "".join(f"<th>{h}</th>" for h in header)
     body = "".join(
         f'<tr{" class=chosen" if k == marked else ""}>'
-        + "".join(f'<td class="{"n" if j in numeric else ("why" if h == "reasons" else "")}">{c}</td>' for j, (h, c) in enumerate(zip(header, row)))
+        + "".join(f'<td class="{"n" if j in numeric else ("why" if h in ("reasons", "verdict") else "")}">{c}</td>' for j, (h, c) in enumerate(zip(header, row)))
         + "</tr>"
         for k, row in enumerate(rows)
     )
@@ -131,7 +131,7 @@ def _governing(r: dict) -> str:
         rows.append(["accuracy", typeset(k["criterion"]), _q(k["value"]), _q(k["required"]), _utilization(k["utilization"]), _verdict_cell(k["passes"])])
     if not rows:
         return ""
-    return "<h3>Governing checks</h3>" + _table(["part", "check", "required", "rated", "utilization", ""], rows, numeric={2, 3, 4})
+    return "<h3>Governing checks</h3>" + _table(["part", "check", "required", "rated", "utilization", "verdict"], rows, numeric={2, 3, 4})
 
 
 def _duty(r: dict) -> str:
