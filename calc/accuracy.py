@@ -74,6 +74,24 @@ positioning_error = Formula(
 )
 
 
+_r = Symbol("r", "r", "length", "mm", "radius at which the angle is read (a pinion's pitch radius, a table's edge)")
+_RAD = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (an arc is r · φ with φ in radians, E15)", value="1 rad")
+
+arc_length = Formula(
+    Symbol("s", "s", "length", "mm", "arc length at the radius"),
+    (_r, Symbol("phi", r"\varphi", "angle", "arcmin", "angle at the output"), _RAD),
+    lambda sp, r, phi, rad: r * phi / rad,
+    "geometry of the circle: an angle φ at the output moves a point at radius r by the arc s = r · φ",
+)
+
+angle_of_arc = Formula(
+    Symbol("phi_s", r"\varphi", "angle", "arcmin", "angle at the output that moves a point at the radius by s"),
+    (Symbol("s", "s", "length", "mm", "arc length at the radius"), _r, _RAD),
+    lambda sp, s, r, rad: s / r * rad,
+    "geometry of the circle: an arc s at radius r is the angle φ = s / r",
+)
+
+
 def low_torque_limit(nominal_torque):
     """The torque up to which the backlash form of positioning accuracy applies (E13): 3 % of
     ``T_N``.
@@ -225,6 +243,9 @@ class ChainAccuracy:
         c = self.chain
         out = []
         for comp, c_out, j_out in zip(c.components, c.stiffness_at_output, c.backlash_at_output):
+            if comp.stiffness_curve is not None:
+                i = 1.0 if comp.side == "output" else c.ratio.m_as("")
+                out += comp.stiffness_curve.steps(self.applied_torque / i)
             if comp.side == "input":
                 out.append(stiffness_at_output.step(C_1=comp.stiffness, i=c.ratio))
                 out.append(angle_at_output.step(phi_1=comp.backlash, i=c.ratio))
@@ -239,7 +260,10 @@ def chain_accuracy(chain: Chain, applied_torque, nominal_torque=None) -> ChainAc
     """Evaluate a chain at an applied output torque (E11 to E13).
 
     ``nominal_torque`` sets the 3 % rule; by default the chain's (the lowest nominal torque of
-    its components at the output). It may be left out only at zero torque.
+    its components at the output). It may be left out only at zero torque. A member with a
+    stiffness curve stands in with its secant stiffness at the torque it carries
+    (:meth:`calc.stiffness.Chain.at_torque`), so the chain's stiffness is its secant at
+    ``applied_torque`` and the twist in the lost motion and positioning accuracy is the curve's.
 
     >>> from calc.stiffness import Component
     >>> gearbox = Component("EPL-W-064 10:1", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"),
@@ -250,6 +274,7 @@ def chain_accuracy(chain: Chain, applied_torque, nominal_torque=None) -> ChainAc
     101.7 arcmin | 99.72 arcmin
     """
     t = as_kind(applied_torque, "torque", "applied_torque")
+    chain = chain.at_torque(t)
     t_n = chain.nominal_torque if nominal_torque is None else nominal_torque
     try:
         rule = positioning_rule(t, t_n)

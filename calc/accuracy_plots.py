@@ -135,6 +135,7 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     from matplotlib.patches import Patch
 
     torque = as_kind(applied_torque, "torque", "applied_torque")
+    chain = chain.at_torque(torque)  # a member with a stiffness curve at its secant (calc.stiffness)
     shares = 100 * chain.compliance_shares
     twist = chain.twist(torque).m_as("arcmin")
     c_out = chain.stiffness_at_output
@@ -320,9 +321,10 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     edge = low_torque_limit(t_n).m_as("N*m")
     past = np.nextafter(edge * (1 + BOUNDARY_RTOL), np.inf)  # the first torque the rule puts above 3 %
     torque = np.union1d(np.linspace(0.0, t_n.m_as("N*m"), 400), [edge, past])
-    args = dict(transmission_accuracy=chain.transmission_accuracy, backlash=chain.backlash, stiffness=chain.stiffness)
+    stiffness = chain.stiffness_at(Q_(torque, "N*m"))  # the secant at each torque where a member gives a curve
+    args = dict(transmission_accuracy=chain.transmission_accuracy, backlash=chain.backlash, stiffness=stiffness)
     acc = positioning_accuracy(Q_(torque, "N*m"), t_n, **args).m_as("arcmin")
-    bound = lost_motion(j_t=chain.backlash, T=Q_(torque, "N*m"), C=chain.stiffness).m_as("arcmin")
+    bound = lost_motion(j_t=chain.backlash, T=Q_(torque, "N*m"), C=stiffness).m_as("arcmin")
     fig = Figure(figsize=(8.0, 4.4), layout="constrained")
     ax = fig.subplots()
     ax.axvspan(0, edge, color=LOW_BAND_COLOR, linewidth=0, zorder=0, label=f"|T| <= 3 % of $T_N$ ({sig(edge, 3)} N·m): $\\varphi_{{TA}} + j_t$")
@@ -330,7 +332,7 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     ax.plot(torque, bound, color=LOOP_COLOR, linewidth=1.4, linestyle="--", label="repeatability at most: lost motion $j_t + |T|/C$")
     if applied_torque is not None:
         t = abs(as_kind(applied_torque, "torque", "applied_torque").m_as("N*m"))
-        a = positioning_accuracy(Q_(t, "N*m"), t_n, **args).m_as("arcmin")
+        a = positioning_accuracy(Q_(t, "N*m"), t_n, **{**args, "stiffness": chain.stiffness_at(Q_(t, "N*m"))}).m_as("arcmin")
         ax.plot([t], [a], "o", color=MARK_COLOR, zorder=4, label=f"the case: {sig(t, 3)} N·m -> {sig(a, 3)} arcmin")
     ax.set_xlim(0, t_n.m_as("N*m"))
     ax.set_ylim(0, None)
@@ -340,7 +342,9 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     fig.legend(loc="outside lower center", ncols=2, fontsize=8, frameon=False)
     ax.set_title(
         f"Positioning accuracy and repeatability against torque (E13)\n$\\varphi_{{TA}}$ = {fmt(chain.transmission_accuracy, 'arcmin', 3)}, "
-        f"$j_t$ = {fmt(chain.backlash, 'arcmin', 3)}, C = {fmt(chain.stiffness, 'N*m/arcmin', 4)}, $T_N$ = {fmt(t_n, 'N*m')}",
+        f"$j_t$ = {fmt(chain.backlash, 'arcmin', 3)}, "
+        + ("C: the secant of the stiffness curves at each torque" if chain.has_curves else f"C = {fmt(chain.stiffness, 'N*m/arcmin', 4)}")
+        + f", $T_N$ = {fmt(t_n, 'N*m')}",
         fontsize=9,
     )
     return fig

@@ -100,6 +100,7 @@ class Case:
     ratio: object = None
     gearbox_catalog: str | list | None = None
     gearbox_part: str | None = None
+    shock_factors: object = None  # the table of f_s (calc.bands.BandTable) of [gearbox]; None: the source's
     emergency_stop_torque: object = None
     gearbox_hubs: str | list | None = None
     motor_shaft: object = None  # Bore of the motor's shaft: picks the gearbox's clamping hub

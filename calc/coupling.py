@@ -20,12 +20,12 @@ after, closest to passing first. Ties go by part name (:func:`calc.checks.rank`)
 
 from __future__ import annotations
 
-import math
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
 
-from .bands import BandTable
+from .bands import factor_table
 from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, no_less, resolve
 from .errors import CalcError
 from .fits import Bore, parse_bore
@@ -47,14 +47,13 @@ ORDER_TITLES = {
 DEFAULT_SERVICE_FACTOR = 2.5
 
 #: Temperature factor of elastomer couplings (source, Sizing 3; errata E9: the higher factor at a
-#: boundary). The source's last band, "> 110 °C", is open; it means something only while the
-#: elastomer holds, and thermoplastic polyurethane inserts of servo couplings are rated up to
-#: +120 °C (98 Sh A inserts to +100 °C), so the table ends there. Another maker's table can be
-#: passed to :func:`temperature_factor` instead.
-TEMPERATURE_FACTORS = BandTable(
-    "T", (-math.inf, 50.0, 70.0, 90.0, 110.0), (1.0, 1.3, 1.6, 1.8, 2.0), "degC", "temperature",
-    "the source's temperature-factor table of elastomer couplings, Sizing 3, read with errata E9", top=120.0,
-)
+#: boundary), ``catalogs/factors/temperature-source.csv``. The source's last band, "> 110 °C", is
+#: open; it means something only while the elastomer holds, and thermoplastic polyurethane inserts
+#: of servo couplings are rated up to +120 °C (98 Sh A inserts to +100 °C), so the table ends
+#: there. A maker's table (``temperature-roba-es.csv``, ``temperature-comintec.csv``, or the
+#: user's own) can be passed to :func:`temperature_factor` instead (``[coupling]
+#: temperature_factors``).
+TEMPERATURE_FACTORS = factor_table("temperature")
 
 SCHEMA = Schema(
     kind="coupling",
@@ -158,6 +157,20 @@ M_Nt = Formula(
 )
 
 
+M_Smax = Formula(
+    Symbol("M_Smax", r"M_{S\,\mathrm{max}}", "torque", "N*m", "peak torque with the start and temperature factors"),
+    (
+        Symbol("T_S", "T_{S}", "torque", "N*m", "peak torque at the coupling (the source's M_N: a drive-side shock with S_A)"),
+        Symbol("S_z", "S_{z}", "dimensionless", "", "start factor (starts per hour)"),
+        _K_T,
+    ),
+    lambda sp, T_S, S_z, K_T: sp.Mul(T_S, S_z, K_T, evaluate=False),
+    "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing of "
+    "elastomer couplings EK (T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature factor S_υ); "
+    "Mayr ROBA-ES B.9.6.EN p. 26 (S_z, S_δ); T_S read as the source's M_N (a drive-side shock: M_a · J_load / (J_load + J_drive) · S_A)",
+)
+
+
 def _with_half_coupling(result: Symbol, side: Symbol) -> Formula:
     return Formula(
         result,
@@ -206,6 +219,23 @@ phi = Formula(
 )
 
 
+def start_factor(starts_per_hour, table, where: str = "starts_per_hour"):
+    """Start factor ``S_z`` of an elastomer coupling for a number of starts per hour, from a
+    maker's table (:func:`calc.bands.factor_table` ``("starts", name)``), scalar or array.
+
+    Examples
+    --------
+    Mayr ROBA-ES (B.9.6.EN p. 26): 0-100 starts per hour 1, 101-200 1.2, 201-400 1.4, 401-800
+    1.6, 801-1000 1.8:
+
+    >>> from calc.bands import factor_table
+    >>> mayr = factor_table("starts", "roba-es")
+    >>> [float(start_factor(Q_(z, "1/hour"), mayr)) for z in (100, 101, 200, 400, 800, 1000)]
+    [1.0, 1.2, 1.2, 1.4, 1.6, 1.8]
+    """
+    return table.lookup(as_kind(starts_per_hour, "per_hour", where), where)
+
+
 def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "temperature"):
     """Temperature factor of an elastomer coupling (errata E9), scalar or array.
 
@@ -251,14 +281,26 @@ class CouplingCheck(CheckArray):
     applies: object = None  # bool array over the rows; None: every row
     missing: object = "the catalog gives no rated value"  # text, or one text per row
     lower_bound: bool = False  # "least <= value": the rated side is the value checked
+    optional: bool = False  # a row without a rating is reported as not checked, and passes
 
     @property
     def passes(self) -> np.ndarray:
         ok = super().passes
+        if self.optional:
+            ok = ok | np.isnan(self.utilization)
         return ok if self.applies is None else ok | ~self.applies
 
     def applies_to(self, row: int) -> bool:
         return True if self.applies is None else bool(self.applies[row])
+
+    def at(self, row: int, governs: bool = True):
+        """This check for one row; a row an optional check cannot be made for says why, and
+        decides nothing."""
+        check = super().at(row, governs)
+        if self.optional and check.utilization is None:
+            missing = self.missing if isinstance(self.missing, str) else self.missing[row]
+            return dataclasses.replace(check, passes=None, governs=False, not_made=missing)
+        return check
 
     def reason(self, row: int) -> str:
         """Why the row fails this check: the excess, the shortfall, or what is missing."""
@@ -283,6 +325,8 @@ class CouplingSelection:
     T_op: object  # peak torque of normal operation, M_N with S_A = 1
     temperature_factor: np.ndarray  # per row (1 for all but elastomer couplings)
     M_Nt: object  # required torque per row
+    start_factor: float | None  # S_z at the case's starts per hour; None without a start-factor table
+    M_Smax: object  # peak torque with S_z and K_ϑ per row (elastomer couplings); None without S_z
     C_T: object  # torsional stiffness per row (a line shaft's at the case's shaft distance)
     J_A: object
     J_L: object
@@ -352,6 +396,9 @@ def select_coupling(
     speed=None,
     disengagement_torque=None,
     shaft_distance=None,
+    temperature_factors=TEMPERATURE_FACTORS,
+    start_factors=None,
+    starts_per_hour=None,
     where: str = "coupling",
 ) -> CouplingSelection:
     """Check every coupling of ``catalog`` (already narrowed to a type or a part) and rank them.
@@ -366,7 +413,11 @@ def select_coupling(
     * safety couplings: ``T_Amin <= T_A <= T_Amax`` and ``T_op <= T_A``, ``T_op`` the peak torque
       of normal operation, ``M_N`` with ``S_A = 1`` (E10);
     * line shafts: ``2 H <= A <= A_max``; ``C_T`` from the bellows and the tube of length
-      ``A - 2 H``.
+      ``A - 2 H``;
+    * elastomer couplings, with a start-factor table: the peak torque ``T_S · S_z · K_ϑ <=
+      T_Kmax`` as KTR, R+W and Mayr size them, ``T_S`` the source's ``M_N`` (a drive-side shock
+      with ``S_A``), ``S_z`` the start factor at ``starts_per_hour``; a row without ``T_Kmax`` is
+      reported as not checked.
 
     Parameters
     ----------
@@ -391,6 +442,12 @@ def select_coupling(
         ``T_A``; only, and always, for safety couplings.
     shaft_distance : Quantity [length], optional
         ``A``; only, and always, for line shafts.
+    temperature_factors : calc.bands.BandTable
+        ``K_ϑ`` against temperature; default the source's table (E9).
+    start_factors : calc.bands.BandTable, optional
+        ``S_z`` against starts per hour (a maker's table); with it the ``T_Kmax`` check is made.
+    starts_per_hour : Quantity [1/time], optional
+        Starts per hour; needed with ``start_factors``.
     where : str
         Prefix of error messages (the case file and section).
 
@@ -453,9 +510,16 @@ def select_coupling(
                 f"{where}.temperature: elastomer couplings need the operating temperature for their factor (E9), found none; "
                 "give it, or a type that is not elastomer"
             )
-        K_T = np.where(is_el, temperature_factor(temperature, where=f"{where}.temperature"), 1.0)
+        K_T = np.where(is_el, temperature_factor(temperature, temperature_factors, where=f"{where}.temperature"), 1.0)
     elif temperature is not None:
-        temperature_factor(temperature, where=f"{where}.temperature")  # checked, though no candidate uses it
+        temperature_factor(temperature, temperature_factors, where=f"{where}.temperature")  # checked, though no candidate uses it
+    S_z = None
+    if start_factors is not None:
+        if starts_per_hour is None:
+            raise CalcError(f"{where}.starts_per_hour: the start-factor table needs the number of starts per hour, found none")
+        S_z = float(start_factor(starts_per_hour, start_factors, f"{where}.starts_per_hour"))
+    elif starts_per_hour is not None:
+        raise CalcError(f"{where}.starts_per_hour: starts per hour are read against a start-factor table; give coupling.start_factors as well")
 
     m_n = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=S_A)
     t_op = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=Q_(1.0, ""))
@@ -494,6 +558,17 @@ def select_coupling(
         ),
         CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e),
     ]
+    m_smax = None
+    if S_z is not None:
+        m_smax = M_Smax(T_S=m_n, S_z=Q_(S_z, ""), K_T=Q_(K_T, ""))
+        checks.append(
+            CouplingCheck(
+                "T_Kmax", "coupling", "T_S · S_z · K_ϑ <= T_Kmax", m_smax, catalog["T_Kmax"], "N*m", is_el,
+                "the catalog gives no maximum torque T_Kmax", optional=True,
+            )
+        )
+    elif is_el.any():
+        notes.append("coupling.start_factors not given: the peak-torque check T_S · S_z · K_ϑ <= T_Kmax of elastomer couplings is not made")
     if speed is not None:
         checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", full(speed), catalog["n_max"], "rpm", None, "the catalog gives no maximum speed"))
     else:
@@ -516,12 +591,15 @@ def select_coupling(
             CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", is_line, missing),
         ]
     passes = np.logical_and.reduce([c.passes for c in checks])
-    utilizations = np.array([np.where(c.applies if c.applies is not None else True, c.utilization, 0.0) for c in checks])
+    # A row an optional check cannot be made for counts as unburdened by it (it decides nothing there).
+    utilizations = np.array(
+        [np.where(c.applies if c.applies is not None else True, np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0) for c in checks]
+    )
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
     size = catalog["T_KN"].m_as("N*m")
     size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)  # a safety coupling rated by its T_A range alone
     order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
-    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, c_t, j_a, j_l, fe, checks, passes, worst, order, notes)
+    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes)
 
 
 def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str) -> None:

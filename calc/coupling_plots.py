@@ -92,14 +92,14 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
     fig = Figure(figsize=(7.0, 3.6), layout="constrained")
     ax = fig.subplots()
     edges = [max(b, low) for b in bounds] + [min(table.top, high)]
+    higher = table.at_boundary == "higher"  # a band holds its lowest value (E9), else its highest (a maker's table)
     for k, f in enumerate(factors):
+        last = k + 1 == len(factors)
         ax.plot([edges[k], edges[k + 1]], [f, f], color=DRIVE_COLOR, linewidth=2.2)
         if math.isfinite(bounds[k]):
-            ax.plot([edges[k]], [f], "o", color=DRIVE_COLOR, markersize=5)
-        if k + 1 < len(factors):
-            ax.plot([edges[k + 1]], [f], "o", markerfacecolor="white", color=DRIVE_COLOR, markersize=5)
-        elif math.isfinite(table.top):  # the table's top is in its last band; above it, no factor
-            ax.plot([edges[k + 1]], [f], "o", color=DRIVE_COLOR, markersize=5)
+            ax.plot([edges[k]], [f], "o", markerfacecolor=None if higher or k == 0 else "white", color=DRIVE_COLOR, markersize=5)
+        if not last or math.isfinite(table.top):  # the table's top is in its last band; above it, no factor
+            ax.plot([edges[k + 1]], [f], "o", markerfacecolor=None if last or not higher else "white", color=DRIVE_COLOR, markersize=5)
     if temperature is not None:
         t = as_kind(temperature, "temperature", "temperature").m_as("degC")
         k_t = float(temperature_factor(temperature, table))
@@ -108,7 +108,8 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
     ax.set_xlim(low, high)
     ax.set_xlabel("operating temperature [°C]")
     ax.set_ylabel(r"temperature factor $K_\vartheta$")
-    ax.set_title("Elastomer couplings: M_N is multiplied by K_ϑ (E9: the higher factor at a boundary)", fontsize=10)
+    rule = "E9: the higher factor at a boundary" if higher else "the factor printed at a temperature holds up to it"
+    ax.set_title(f"Elastomer couplings: M_N is multiplied by K_ϑ ({rule})", fontsize=10)
     ax.grid(True, alpha=0.3)
     return fig
 

@@ -30,6 +30,14 @@ def accuracy__Delta_phi(phi_actual, phi_target):
     return phi_actual - phi_target
 
 
+def accuracy__s(r, phi, rad):
+    return phi*r/rad
+
+
+def accuracy__phi_s(s, r, rad):
+    return rad*s/r
+
+
 def coupling__M_N(M_a, J_load, J_drive, S_A):
     return M_a*S_A*(J_load/(J_drive + J_load))
 
@@ -40,6 +48,10 @@ def coupling__J_load(J_L, i, J_1):
 
 def coupling__M_Nt(M_N, K_T):
     return K_T*M_N
+
+
+def coupling__M_Smax(T_S, S_z, K_T):
+    return K_T*S_z*T_S
 
 
 def coupling__J_A(J_drive, J_K):
@@ -190,6 +202,22 @@ def stiffness__T_2(T_1, i):
     return T_1*i
 
 
+def stiffness__phi_c1(T, K_1):
+    return T/K_1
+
+
+def stiffness__phi_c2(T, T_1, K_1, K_2):
+    return (T - T_1)/K_2 + T_1/K_1
+
+
+def stiffness__phi_c3(T, T_1, T_2, K_1, K_2, K_3):
+    return (T - T_2)/K_3 + (-T_1 + T_2)/K_2 + T_1/K_1
+
+
+def stiffness__C_sec(T, phi):
+    return T/phi
+
+
 def transmission__Delta_phi_2(phi_2, phi_1, i):
     return phi_2 - phi_1/i
 
@@ -203,9 +231,12 @@ FUNCTIONS = {
     "calc.accuracy.Delta_phi_P_low": ("6a9a3ead10619a1f", accuracy__Delta_phi_P_low),
     "calc.accuracy.Delta_phi_P_high": ("8ffa9959b4ff0f2d", accuracy__Delta_phi_P_high),
     "calc.accuracy.Delta_phi": ("9ba091f73ef75c85", accuracy__Delta_phi),
+    "calc.accuracy.s": ("78fadd67550573da", accuracy__s),
+    "calc.accuracy.phi_s": ("a3cb1053ef4c3bc5", accuracy__phi_s),
     "calc.coupling.M_N": ("286be3d946bc065a", coupling__M_N),
     "calc.coupling.J_load": ("9c5dfc162db124c0", coupling__J_load),
     "calc.coupling.M_Nt": ("20bfc40180ba5ec3", coupling__M_Nt),
+    "calc.coupling.M_Smax": ("79e2cfc7d66e69ca", coupling__M_Smax),
     "calc.coupling.J_A": ("39e751e770984771", coupling__J_A),
     "calc.coupling.J_L": ("c0f93c789de1374b", coupling__J_L),
     "calc.coupling.f_e": ("3421c1ff162c1448", coupling__f_e),
@@ -243,6 +274,10 @@ FUNCTIONS = {
     "calc.stiffness.C_2": ("5c713f3fa45cd595", stiffness__C_2),
     "calc.stiffness.phi_2": ("678c7938c9b7d54c", stiffness__phi_2),
     "calc.stiffness.T_2": ("5078122a10c6f7f8", stiffness__T_2),
+    "calc.stiffness.phi_c1": ("1ed61e636079b3d5", stiffness__phi_c1),
+    "calc.stiffness.phi_c2": ("7066f7e6b7e257a7", stiffness__phi_c2),
+    "calc.stiffness.phi_c3": ("38012b778d9a9e60", stiffness__phi_c3),
+    "calc.stiffness.C_sec": ("21f78c548e68d498", stiffness__C_sec),
     "calc.transmission.Delta_phi_2": ("ed18015dc98282df", transmission__Delta_phi_2),
     "calc.transmission.phi_TA": ("80cb419f2cbded1e", transmission__phi_TA),
 }

@@ -26,13 +26,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .bands import BandTable
+from .bands import factor_table
 from .catalog import Catalog, Column, Rule, Schema, some_parts, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
 from .checks import CheckArray, rank, selected_part
 from .profile import Profile, T_2m, Z_h, duty, n_2m
 from .units import Q_, as_kind, magnitude_in, pretty_unit
+
+#: The columns of a gearbox's stiffness curve, all five or none in a row (calc.stiffness.StiffnessCurve).
+CURVE_COLUMNS = ("T_L1", "T_L2", "K_1", "K_2", "K_3")
 
 SCHEMA = Schema(
     kind="gearbox",
@@ -61,6 +64,12 @@ SCHEMA = Schema(
                 ("T_012", "torque", "no-load torque"),
                 ("C_2K", "stiffness", "tilting rigidity of the output"),
                 ("m", "mass", "mass"),
+                # A stiffness curve (strain-wave gears, calc.stiffness.StiffnessCurve): limit torques and slopes.
+                ("T_L1", "torque", "first limit torque of the stiffness curve (T1)"),
+                ("T_L2", "torque", "second limit torque of the stiffness curve (T2)"),
+                ("K_1", "stiffness", "stiffness from 0 to T_L1"),
+                ("K_2", "stiffness", "stiffness from T_L1 to T_L2"),
+                ("K_3", "stiffness", "stiffness above T_L2"),
             )
         ),
     ),
@@ -72,6 +81,12 @@ SCHEMA = Schema(
         Rule("T_2Not >= T_2B", no_less("T_2Not", "T_2B"), "T_2Not"),
         Rule("n_1max >= n_1N", no_less("n_1max", "n_1N"), "n_1max"),
         Rule("efficiency eta in (0, 1]", lambda v: (v["eta"].m_as("") <= 1.0), "eta"),
+        Rule(
+            "a stiffness curve in all of T_L1, T_L2, K_1, K_2, K_3 or in none",
+            lambda v: np.isin(sum(np.isnan(v[name].magnitude).astype(int) for name in CURVE_COLUMNS), (0, len(CURVE_COLUMNS))),
+            "K_3",
+        ),
+        Rule("T_L2 > T_L1", lambda v: ~(v["T_L2"] <= v["T_L1"]), "T_L2"),
     ),
 )
 
@@ -85,11 +100,10 @@ HUB_SCHEMA = Schema(
     text_columns=("part", "gearbox", "source"),
 )
 
-#: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary).
-SHOCK_FACTORS = BandTable(
-    "Z_h", (0, 1000, 1500, 2000, 3000), (1.0, 1.1, 1.3, 1.6, 2.0), "1/h", "per_hour",
-    "the source's shock-factor table, S5 calculation 1, read with errata E4",
-)
+#: Shock factor f_s against cycles per hour Z_h (errata E4: the higher factor at a boundary), the
+#: source's table, ``catalogs/factors/shock-source.csv``; a case may name another
+#: (``[gearbox] shock_factors``).
+SHOCK_FACTORS = factor_table("shock")
 
 _n_2 = Symbol("n_2", "n_{2}", "speed", "rpm", "output speed")
 _i = Symbol("i", "i", "dimensionless", "", "ratio")
@@ -248,10 +262,10 @@ def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
     return J_1, d_hub, d_max
 
 
-def shock_factor(cycles_per_hour):
+def shock_factor(cycles_per_hour, table=SHOCK_FACTORS):
     """Shock factor ``f_s`` for ``Z_h`` cycles per hour (errata E4), scalar or array.
 
-    The table is :data:`SHOCK_FACTORS`; a value within :data:`calc.checks.BOUNDARY_RTOL` below a
+    The table is :data:`SHOCK_FACTORS` unless another is given; a value within :data:`calc.checks.BOUNDARY_RTOL` below a
     boundary counts as on it (:class:`calc.bands.BandTable`): a cycle of 0.1 + 0.1 + 0.1 + 2.1 s =
     2.4000000000000004 s gives 1499.9999999999998 cycles per hour, which is 1500. A negative
     ``Z_h`` is refused.
@@ -261,7 +275,7 @@ def shock_factor(cycles_per_hour):
     >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
     1.3
     """
-    return SHOCK_FACTORS.lookup(cycles_per_hour, "cycles_per_hour")
+    return table.lookup(cycles_per_hour, "cycles_per_hour")
 
 
 @dataclass
@@ -408,6 +422,7 @@ def select_gearbox(
     output_load: OutputLoad | None = None,
     hubs: Catalog | None = None,
     motor_shaft=None,
+    shock_factors=SHOCK_FACTORS,
 ) -> GearboxSelection:
     """Check every row of ``catalog`` (already narrowed to the desired ratio, or to one part).
 
@@ -421,7 +436,8 @@ def select_gearbox(
     row's J_1 for its clamping hub (:func:`clamping_hubs`: the smallest of ``hubs`` that takes
     ``motor_shaft``, checked ``d <= d_hub,max``). The output bearing's checks
     (:func:`bearing_checks`) are made when ``output_load`` gives a force; they and the hub check
-    govern in both modes.
+    govern in both modes. ``shock_factors`` is the table of ``f_s`` (:data:`SHOCK_FACTORS`, the
+    source's, by default).
     """
     d = duty(profile)
     i = catalog["ratio"]
@@ -433,7 +449,7 @@ def select_gearbox(
     checks.append(CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"], "rpm"))
     t2max = None
     if motor_peak_torque is not None:
-        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle))
+        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle), shock_factors)
         t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
         checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"))
     else:

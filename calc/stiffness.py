@@ -19,10 +19,19 @@ A motor-side coupling of 0.24 N·m/arcmin behind a 10:1 gearbox, seen from the o
 
 >>> print(stiffness_at_output.step(C_1=Q_(0.24, "N*m/arcmin"), i=Q_(10, "")))
 C_2 = 24 N·m/arcmin
+
+A strain-wave gear's stiffness is not one slope: its makers publish three, ``K_1`` up to the limit
+torque ``T_1``, ``K_2`` up to ``T_2`` and ``K_3`` above (:class:`StiffnessCurve`). A member with
+such a curve twists by the curve, and the chain's twist at a torque is the sum of its members'
+twists at that torque. Where one stiffness stands for the chain (``C_total``, the lost motion
+``j_t + |T| / C``, the 3 % rule), it is the **secant** at the applied torque, ``|T| / φ(T)``
+(:meth:`Chain.at_torque`): the one slope that gives the curve's own twist at that torque. At zero
+torque the secant is the first slope ``K_1``.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 from dataclasses import dataclass
 
@@ -30,7 +39,7 @@ import numpy as np
 
 from .errors import CalcError
 from .formula import Formula, Symbol, segment_sum
-from .units import Q_, as_kind
+from .units import Q_, as_kind, fmt
 
 SIDES = ("input", "output")
 
@@ -65,6 +74,114 @@ torque_at_output = Formula(
 )
 
 
+_T = Symbol("T", "T", "torque", "N*m", "torque through the member, magnitude")
+_T_1 = Symbol("T_1", "T_{1}", "torque", "N*m", "first limit torque of the stiffness curve")
+_T_2 = Symbol("T_2", "T_{2}", "torque", "N*m", "second limit torque of the stiffness curve")
+_K_1 = Symbol("K_1", "K_{1}", "stiffness", "N*m/rad", "stiffness from 0 to T_1")
+_K_2 = Symbol("K_2", "K_{2}", "stiffness", "N*m/rad", "stiffness from T_1 to T_2")
+_K_3 = Symbol("K_3", "K_{3}", "stiffness", "N*m/rad", "stiffness above T_2")
+_CURVE_REFERENCE = "Harmonic Drive engineering data (HFUC, CSF, CSG): torsional stiffness as three slopes K_1, K_2, K_3 with limit torques T_1, T_2"
+
+twist_low = Formula(
+    Symbol("phi_c1", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, first slope (up to the first limit torque)"),
+    (_T, _K_1),
+    lambda sp, T, K_1: T / K_1,
+    _CURVE_REFERENCE + " (T <= T_1)",
+)
+
+twist_middle = Formula(
+    Symbol("phi_c2", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, second slope (between the limit torques)"),
+    (_T, _T_1, _K_1, _K_2),
+    lambda sp, T, T_1, K_1, K_2: sp.Add(T_1 / K_1, (T - T_1) / K_2, evaluate=False),
+    _CURVE_REFERENCE + " (T_1 < T <= T_2)",
+)
+
+twist_high = Formula(
+    Symbol("phi_c3", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, third slope (above the second limit torque)"),
+    (_T, _T_1, _T_2, _K_1, _K_2, _K_3),
+    lambda sp, T, T_1, T_2, K_1, K_2, K_3: sp.Add(T_1 / K_1, (T_2 - T_1) / K_2, (T - T_2) / K_3, evaluate=False),
+    _CURVE_REFERENCE + " (T > T_2)",
+)
+
+secant_stiffness = Formula(
+    Symbol("C_sec", r"C_{\mathrm{sec}}", "stiffness", "N*m/arcmin", "secant stiffness at a torque"),
+    (_T, Symbol("phi", r"\varphi", "angle", "arcmin", "twist at that torque")),
+    lambda sp, T, phi: T / phi,
+    "the one slope that gives a curve's own twist at the torque: C = |T| / φ(T)",
+)
+
+
+@dataclass(frozen=True)
+class StiffnessCurve:
+    """Torsional stiffness as three slopes, as strain-wave gear makers publish it: ``K_1`` from 0
+    to the limit torque ``T_1``, ``K_2`` from ``T_1`` to ``T_2``, ``K_3`` above ``T_2``.
+
+    The twist under a torque of either sign is the curve's at ``|T|`` (a gear's curve is
+    published for one direction; the other is taken as its mirror).
+
+    Examples
+    --------
+    Harmonic Drive's engineering data for HFUC-32-100: T_1 = 29 N·m, K_1 = 6.7·10⁴ N·m/rad,
+    T_2 = 108 N·m, K_2 = 1.1·10⁵ N·m/rad; at 60 N·m, φ = 29/6.7e4 + 31/1.1e5 = 7.15·10⁻⁴ rad
+    (``K_3`` does not enter below ``T_2``; 1.2·10⁵ N·m/rad here stands in for it):
+
+    >>> hfuc = StiffnessCurve(Q_(29, "N*m"), Q_(108, "N*m"), Q_(6.7e4, "N*m/rad"), Q_(1.1e5, "N*m/rad"), Q_(1.2e5, "N*m/rad"))
+    >>> print(f"{hfuc.twist(Q_(60, 'N*m')).m_as('rad'):.2e}")
+    7.15e-04
+    """
+
+    T_1: object
+    T_2: object
+    K_1: object
+    K_2: object
+    K_3: object
+    where: str = "stiffness_curve"
+
+    def __post_init__(self):
+        for key, k in (("T_1", "torque"), ("T_2", "torque"), ("K_1", "stiffness"), ("K_2", "stiffness"), ("K_3", "stiffness")):
+            name = key.replace("_", "")  # T_1 is T1 in a case file
+            q = as_kind(getattr(self, key), k, f"{self.where}.{name}")
+            if not np.all(q.magnitude > 0):
+                raise CalcError(
+                    f"{self.where}.{name}: expected {'a torque' if k == 'torque' else 'a slope'} above zero, found {fmt(q, 'N*m' if k == 'torque' else 'N*m/rad')}"
+                )
+        if not self.T_2.m_as("N*m") > self.T_1.m_as("N*m"):
+            raise CalcError(f"{self.where}.T2: expected a limit torque above T1 = {fmt(self.T_1, 'N*m')}, found {fmt(self.T_2, 'N*m')}")
+
+    def twist(self, torque):
+        """The twist under ``torque`` (scalar or array), in arcmin: by the slope of the band
+        ``|T|`` falls in (the three formulas :data:`twist_low`, :data:`twist_middle`,
+        :data:`twist_high`)."""
+        t = abs(as_kind(torque, "torque", "torque"))
+        curve = dict(T_1=self.T_1, K_1=self.K_1)
+        low = twist_low(T=t, K_1=self.K_1).m_as("arcmin")
+        middle = twist_middle(T=t, K_2=self.K_2, **curve).m_as("arcmin")
+        high = twist_high(T=t, T_2=self.T_2, K_2=self.K_2, K_3=self.K_3, **curve).m_as("arcmin")
+        x, t_1, t_2 = t.m_as("N*m"), self.T_1.m_as("N*m"), self.T_2.m_as("N*m")
+        return Q_(np.where(x <= t_1, low, np.where(x <= t_2, middle, high))[()], "arcmin")
+
+    def steps(self, torque) -> list:
+        """The twist at ``torque`` by the formula of its band, and the secant stiffness from it."""
+        t = abs(as_kind(torque, "torque", "torque"))
+        x = t.m_as("N*m")
+        if x <= self.T_1.m_as("N*m"):
+            twist = twist_low.step(T=t, K_1=self.K_1)
+        elif x <= self.T_2.m_as("N*m"):
+            twist = twist_middle.step(T=t, T_1=self.T_1, K_1=self.K_1, K_2=self.K_2)
+        else:
+            twist = twist_high.step(T=t, T_1=self.T_1, T_2=self.T_2, K_1=self.K_1, K_2=self.K_2, K_3=self.K_3)
+        return [twist] if x == 0 else [twist, secant_stiffness.step(T=t, phi=twist.result)]
+
+    def secant(self, torque):
+        """The secant stiffness ``|T| / φ(T)`` (scalar or array); up to ``T_1``, zero torque
+        included, that is ``K_1`` itself."""
+        t = abs(as_kind(torque, "torque", "torque"))
+        first = t.m_as("N*m") <= self.T_1.m_as("N*m")
+        with np.errstate(invalid="ignore", divide="ignore"):
+            c = secant_stiffness(T=t, phi=self.twist(t)).m_as("N*m/arcmin")
+        return Q_(np.where(first, self.K_1.m_as("N*m/arcmin"), c)[()], "N*m/arcmin")
+
+
 @dataclass(frozen=True)
 class Component:
     """One member of a drive train, with its figures as seen from its own shaft.
@@ -86,6 +203,9 @@ class Component:
         Nominal torque (the 3 % rule of positioning accuracy, E13).
     source : str
         Where the figures come from (the case, a catalog row, a measured loop).
+    stiffness_curve : StiffnessCurve, optional
+        The member's stiffness as three slopes; its ``stiffness`` is then the first slope
+        ``K_1`` until the chain is taken at a torque (:meth:`Chain.at_torque`).
     """
 
     name: str
@@ -95,6 +215,7 @@ class Component:
     transmission_accuracy: object = None
     nominal_torque: object = None
     source: str = ""
+    stiffness_curve: StiffnessCurve | None = None
 
     def __post_init__(self):
         where = f"component {self.name!r}"
@@ -152,6 +273,37 @@ class Chain:
         """The chain with one more component at its load end."""
         return Chain((*self.components, component), self.ratio)
 
+    @property
+    def has_curves(self) -> bool:
+        """Whether a member gives a stiffness curve (:class:`StiffnessCurve`)."""
+        return any(c.stiffness_curve is not None for c in self.components)
+
+    def at_torque(self, torque) -> "Chain":
+        """The chain at an output torque: each member with a stiffness curve stands in with its
+        secant stiffness at the torque it carries (``|T| / i`` on the input side), so that
+        ``|T| / C_k`` is the curve's own twist and ``C_total`` the chain's secant. A chain without
+        curves is returned as it is."""
+        if not self.has_curves:
+            return self
+        t = abs(as_kind(torque, "torque", "torque"))
+        members = []
+        for c, i in zip(self.components, self._i.magnitude):
+            if c.stiffness_curve is not None:
+                c = dataclasses.replace(c, stiffness=c.stiffness_curve.secant(t / i))
+            members.append(c)
+        return Chain(tuple(members), self.ratio)
+
+    def stiffness_at(self, torque):
+        """The chain's stiffness at the output at each torque (scalar or array): ``C_total`` for a
+        chain without curves; with curves the secant ``|T| / Σ φ_k(T)`` (at zero torque, the
+        series of the first slopes)."""
+        if not self.has_curves:
+            return self.stiffness
+        t = abs(as_kind(torque, "torque", "torque"))
+        x = np.atleast_1d(t.m_as("N*m"))
+        c = np.array([self.at_torque(Q_(v, "N*m")).stiffness.m_as("N*m/arcmin") for v in x])
+        return Q_(c.reshape(np.shape(t.magnitude))[()], "N*m/arcmin")
+
     @functools.cached_property
     def _i(self):
         """Each component's ratio to the output: ``i`` on the input side, 1 on the output side."""
@@ -197,9 +349,10 @@ class Chain:
         return (self.stiffness / self.stiffness_at_output).m_as("")  # (1/C_k) / (1/C_total)
 
     def twist(self, torque):
-        """Each component's twist under ``torque`` at the output, ``|T| / C_k`` (the sum is ``|T| / C_total``)."""
+        """Each component's twist under ``torque`` at the output, ``|T| / C_k`` (the sum is
+        ``|T| / C_total``); a member with a stiffness curve twists by its curve."""
         t = as_kind(torque, "torque", "torque")
-        return (abs(t) / self.stiffness_at_output).to("arcmin")
+        return (abs(t) / self.at_torque(t).stiffness_at_output).to("arcmin")
 
     @property
     def backlash(self):

@@ -249,3 +249,14 @@ def test_a_derived_load_inertia_is_not_listed_as_a_case_key():
     assert r"\texttt{\footnotesize load.inertia}" not in inputs
     assert r"\texttt{\footnotesize mechanism.inertia}" in inputs
     assert r"\texttt{\footnotesize load.inertia}" in str(build_report(EXAMPLE).inputs())
+
+
+def test_front_page_lists_every_governing_check_and_what_is_not_checked():
+    # The example: the chosen gearbox's and coupling's checks, the motor's peak torque (the case
+    # gives no rated torque or top speed), the accuracy requirement; the bearing's F_2r is not
+    # checked, as the catalog gives no F_2R for NPT035-10 (catalogs/gearboxes.csv).
+    page = str(build_report(DERIVED_EXAMPLE).front_page())
+    assert r"Gearbox NPT035-10: $F_{\mathrm{2r}}$ ≤ $F_{\mathrm{2R}}$: not checked: the catalog gives no F\_2R" in page
+    assert r"Motor: $T_{\mathrm{1peak}}$ ≤ $T_{\mathrm{1B}}$: " in page and "against 12" in page
+    assert r"Accuracy: positioning\_accuracy ≤ required: 1.424" in page
+    assert r"$d_{\mathrm{hub,max}}$" in page

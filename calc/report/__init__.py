@@ -133,18 +133,26 @@ class Report:
         ))
 
     def _governing_lines(self) -> str:
-        """The governing checks of each chosen part, one line each with its utilization."""
+        """The governing checks of each chosen part, and of each section's own checks (the motor's,
+        the accuracy's requirements), one line each with its utilization, or why it is not made."""
         lines = []
         for name in (m.NAME for m in BLOCKS):
             s = results_of(name, self)
-            if not s or not s.get("candidates") or not s.get("selected"):
+            if s and s.get("candidates") and s.get("selected"):
+                owner, checks = f"{name.capitalize()} {s['candidates'][0]['part']}", s["candidates"][0].get("checks", [])
+            elif s and isinstance(s.get("checks"), list):
+                owner, checks = name.capitalize(), s["checks"]
+            else:
                 continue
-            c = s["candidates"][0]
-            for k in c.get("checks", []):
-                if k.get("governs", True):
-                    crit = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
-                    lines.append(rf"{latex_escape(name.capitalize())} {latex_escape(c['part'])}: {crit}: "
-                                 rf"{q(k['required'])} against {q(k['rated'])}, utilization {util(k['utilization'])}")
+            for k in checks:
+                if not k.get("governs", True):
+                    continue
+                crit = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+                if k.get("passes") is None:
+                    lines.append(rf"{latex_escape(owner)}: {crit}: not checked: {latex_escape(k.get('not_made') or 'no rating')}")
+                    continue
+                reached, limit = (k["required"], k["rated"]) if "rated" in k else (k["value"], k["required"])
+                lines.append(rf"{latex_escape(owner)}: {crit}: {q(reached)} against {q(limit)}, utilization {util(k['utilization'])}")
         return itemize(lines) if lines else ""
 
     def method(self) -> Latex:

@@ -23,6 +23,7 @@ KEYS = {
     "positions": (None, "file of measured positions"),
     "required_positioning_accuracy": (None, "positioning accuracy required"),
     "required_repeatability": (None, "repeatability required"),
+    "radius": (None, "radius at which angles are also given as arcs s = r · φ"),
 }
 
 
@@ -63,6 +64,12 @@ def steps(report) -> list[str]:
     out.append(r"\subsection{Accuracy of the drive train at the output}")
     out.append(prose(f"Applied torque: {a.rule.why}, so the positioning rule of E13 for that range applies, {a.rule.text}."))
     out += [step_block(s.formula.result.description.capitalize(), s) for s in a.steps()]
+    if spec.radius is not None:
+        from ..accuracy import angle_of_arc, arc_length
+
+        out.append(step_block("Positioning accuracy as an arc at the radius", arc_length.step(r=spec.radius, phi=a.positioning_accuracy)))
+        out += [step_block(f"Required {name.replace('_', ' ')} given as an arc", angle_of_arc.step(s=arc, r=spec.radius))
+                for name, arc in spec.required_arcs.items()]
     return out
 
 
@@ -82,6 +89,9 @@ def results(report) -> list[str]:
         [r"$\Delta\varphi_{P}$", q(a["positioning_accuracy"]), prose(f"positioning accuracy, {a['positioning_rule']} (E13)")],
         ["–", q(a["repeatability"]), prose(rep)],
     ]
+    if "radius" in a:
+        rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(a[f"{key}_arc"]), prose(f"as an arc at r = {plain(a['radius'])}")]
+                 for key in ("backlash", "lost_motion", "positioning_accuracy", "repeatability")]
     comp = [[latex_escape(m["name"]), latex_escape(m["side"]), q(m["stiffness_at_output"]), q(m["backlash_at_output"]),
              q(m.get("transmission_accuracy_at_output")), f"{100 * m['share_of_compliance']:.1f}", q(m["twist_at_applied_torque"])]
             for m in a["components"]]

@@ -26,6 +26,9 @@ KEYS = {
     "shaft_1": (None, "shaft 1 with its fit"), "shaft_2": (None, "shaft 2 with its fit"),
     "disengagement_torque": (None, "disengagement torque T_A (safety couplings, E10)"),
     "shaft_distance": ("A", ""),
+    "temperature_factors": (None, "table of the temperature factor K_ϑ (catalogs/factors, or a file)"),
+    "start_factors": (None, "table of the start factor S_z (catalogs/factors, or a file)"),
+    "starts_per_hour": (None, "starts per hour (the start factor S_z)"),
 }
 
 
@@ -82,11 +85,17 @@ def steps(report) -> list[str]:
     m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
     out.append(step_block("Nominal torque of the coupling", m_n, "compared with T_KN"))
     if sel.row_type(row) == "elastomer":
-        bands = cp.TEMPERATURE_FACTORS
+        bands = x["temperature_factors"]
         band = bands.text(int(bands.band(x["temperature"], "coupling.temperature")))
-        out.append(step_block(f"With the temperature factor ({part})",
-                              cp.M_Nt.step(M_N=m_n.result, K_T=Q_(float(sel.temperature_factor[row]), "")),
-                              f"K_T of the band {band} (E9)"))
+        k_t = Q_(float(sel.temperature_factor[row]), "")
+        out.append(step_block(f"With the temperature factor ({part})", cp.M_Nt.step(M_N=m_n.result, K_T=k_t),
+                              f"K_T of the band {band} ({bands.source})"))
+        if sel.M_Smax is not None:
+            starts = x["start_factors"]
+            s_band = starts.text(int(starts.band(x["starts_per_hour"], "coupling.starts_per_hour")))
+            out.append(step_block(f"Peak torque with the start and temperature factors ({part})",
+                                  cp.M_Smax.step(T_S=m_n.result, S_z=Q_(sel.start_factor, ""), K_T=k_t),
+                                  f"compared with T_Kmax; S_z of the band {s_band} ({starts.source})"))
     out.append(step_block("Lowest natural frequency allowed", cp.f_e_min.step(f_er=x["excitation_frequency"])))
     if np.isnan(sel.f_e[row].magnitude):
         return out
@@ -115,6 +124,8 @@ def results(report) -> list[str]:
          prose("temperature factor (elastomer couplings, E9)" + (f" at {plain(c['temperature'])}" if c.get("temperature") else ""))],
         [r"$f_{e,\mathrm{min}}$", q(c["f_e_min"]), prose("lowest natural frequency allowed, 2 f_er (E7)")],
     ]
+    if c.get("start_factor") is not None:
+        rows.append([r"$S_{z}$", f"{c['start_factor']:g}", prose(f"start factor at {plain(c['starts_per_hour'])} ({c['start_factors']})")])
     out = [r"\subsection{Coupling: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows)]
     bores = [[rf"\texttt{{\footnotesize coupling.{latex_escape(b['key'])}}}", latex_escape(b["text"]),
               latex_escape(b.get("limits") or "–")] for b in c.get("bores", [])]
@@ -136,7 +147,8 @@ def figures(report) -> list:
     out = [(natural_frequency_figure(sel, f_e_min(f_er=cc.inputs["excitation_frequency"])),
             prose("Natural frequency of each coupling candidate against the lowest allowed, 2 f_er (E7)."))]
     if (sel.catalog.text["type"] == "elastomer").any():
-        out.append((temperature_factor_figure(cc.inputs["temperature"]), "Temperature factor of elastomer couplings (E9)."))
+        out.append((temperature_factor_figure(cc.inputs["temperature"], cc.inputs["temperature_factors"]),
+                    prose(f"Temperature factor of elastomer couplings ({cc.inputs['temperature_factors'].source}).")))
     return out
 
 

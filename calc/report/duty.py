@@ -8,18 +8,18 @@ from ..profile import ED, T_2m, Z_h, n_2m
 from ..profile import t_k as t_k_symbol
 from ..units import sig
 from .common import gearbox_symbols, nothing
-from .latex import num, render, step_block, table
+from .latex import latex_escape, num, render, step_block, table
 
 NAME = "duty"
 
 
-def shock_factor_block(zh) -> str:
+def shock_factor_block(zh, table=SHOCK_FACTORS) -> str:
     """The shock factor of ``Z_h`` (a quantity) with its band, the one calc.gearbox.shock_factor
-    chooses (E4, with its boundary tolerance)."""
-    k = int(SHOCK_FACTORS.band(zh, "Z_h"))
+    chooses from ``table`` (E4, with its boundary tolerance; the case's ``[gearbox] shock_factors``)."""
+    k = int(table.band(zh, "Z_h"))
     return render(
-        "shock-factor.tex.j2", fs=f"{SHOCK_FACTORS.factors[k]:g}", band=SHOCK_FACTORS.text(k, latex=True),
-        zh=sig(zh.m_as(SHOCK_FACTORS.unit)),
+        "shock-factor.tex.j2", fs=f"{table.factors[k]:g}", band=table.text(k, latex=True),
+        zh=sig(zh.m_as(table.unit)), source=latex_escape(table.source),
     )
 
 
@@ -51,7 +51,7 @@ def steps(report) -> list[str]:
         step_block("Cubic mean output torque", T_2m.step(**seg)),
         r"\subsection{Cycle operation (S5)}",
         step_block("Cycles per hour", s_zh),
-        shock_factor_block(s_zh.result),
+        shock_factor_block(s_zh.result, SHOCK_FACTORS if report.case.shock_factors is None else report.case.shock_factors),
     ]
 
 

@@ -43,7 +43,7 @@ def latex_escape(text) -> str:
     return _LIGATURE.sub("{}", out)
 
 
-_SYMBOL = re.compile(r"\b(phi|eta|lambda|[A-Za-z])_([A-Za-z0-9]+)\b")
+_SYMBOL = re.compile(r"\b(phi|eta|lambda|[A-Za-z])_([A-Za-z0-9]+(?:,[A-Za-z]+)?)\b")  # d_hub,max whole
 _GREEK = {"phi": r"\varphi", "eta": r"\eta", "lambda": r"\lambda"}
 
 
@@ -53,6 +53,8 @@ def prose(text: str) -> str:
 
     >>> print(prose("n_2m · i <= n_1N, 100%"))
     $n_{\\mathrm{2m}}$ · i ≤ $n_{\\mathrm{1N}}$, 100\\%
+    >>> print(prose("d_motor <= d_hub,max"))
+    $d_{\\mathrm{motor}}$ ≤ $d_{\\mathrm{hub,max}}$
     """
     out, last = [], 0
     text = text.replace("<=", "≤").replace(">=", "≥")

@@ -9,28 +9,30 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..accuracy import ChainAccuracy, PositioningScatter, chain_accuracy, read_positions
+from ..accuracy import ChainAccuracy, PositioningScatter, angle_of_arc, arc_length, chain_accuracy, read_positions
 from ..case import Case, Table, once
 from ..catalog import display_path, load_catalog, load_catalogs, resolve
 from ..checks import CheckArray
 from ..errors import CalcError
-from ..units import Q_, fmt, sig
+from ..units import Q_, fmt, parse_quantity, sig
 from ..measurement import measurement_path
-from ..stiffness import SIDES, Chain, Component
+from ..stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
 from .common import Verdict, check_json, check_line, number, quantity, quantity_text
 
 NAME = "accuracy"
 KEYS = (
     "applied_torque", "nominal_torque", "component", "positions",
-    "required_positioning_accuracy", "required_repeatability",
+    "required_positioning_accuracy", "required_repeatability", "radius",
 )
 COMPONENT_KEYS = (
     "name", "side", "kind", "stiffness", "backlash", "transmission_accuracy", "nominal_torque",
-    "part", "catalog", "hysteresis", "transmission_trace", "measured_part",
+    "part", "catalog", "hysteresis", "transmission_trace", "measured_part", "stiffness_curve",
 )
 #: The keys of a component that read a measurement of one physical part.
 MEASUREMENTS = ("hysteresis", "transmission_trace")
+#: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.stiffness.StiffnessCurve`).
+CURVE_KEYS = {"T1": "torque", "T2": "torque", "K1": "stiffness", "K2": "stiffness", "K3": "stiffness"}
 
 
 @dataclass
@@ -44,6 +46,8 @@ class AccuracyCase:
     traces: dict = field(default_factory=dict)  # component name -> (file, TransmissionAnalysis)
     positions: PositioningScatter | None = None
     required: dict = field(default_factory=dict)  # "positioning_accuracy" | "repeatability" -> Quantity
+    radius: object = None  # r: the results also give each angle as the arc r · φ at it
+    required_arcs: dict = field(default_factory=dict)  # a requirement given as a length, by name
 
     def evaluate(self) -> ChainAccuracy:
         return chain_accuracy(self.chain, self.applied_torque, self.nominal_torque)
@@ -73,11 +77,33 @@ def read_accuracy(case: Case) -> AccuracyCase:
     out.chain = Chain(tuple(components), ratio)
     if sec.has("positions"):
         out.positions = read_positions(measurement_path(sec.data["positions"], case.folder, sec.where("positions")))
-    for key, kind in (("required_positioning_accuracy", "angle"), ("required_repeatability", "angle")):
-        q = _positive(sec, key, kind)
+    out.radius = sec.positive("radius", "length", what="a radius")
+    for key in ("required_positioning_accuracy", "required_repeatability"):
+        q = _requirement(sec, key, out)
         if q is not None:
             out.required[key.removeprefix("required_")] = q
     return out
+
+
+def _requirement(sec: Table, key: str, out: AccuracyCase):
+    """A required value: an angle, or with ``accuracy.radius`` a length at that radius (the arc a
+    machine builder states a tolerance as), turned into the angle ``s / r``."""
+    if not sec.has(key) or _is_angle(sec.data[key]):
+        return _positive(sec, key, "angle")
+    arc = sec.positive(key, "length", what="a length")
+    if out.radius is None:
+        raise CalcError(f"{sec.where(key)}: a requirement given as a length ({sec.data[key]!r}) is an arc at a radius; give accuracy.radius as well")
+    out.required_arcs[key.removeprefix("required_")] = arc
+    return angle_of_arc(s=arc, r=out.radius)
+
+
+def _is_angle(text) -> bool:
+    """Whether a value reads as anything but a length (an angle, or an error the angle reading names)."""
+    try:
+        parse_quantity(text, "length", "")
+    except CalcError:
+        return True
+    return False
 
 
 def _positive(sec: Table, key: str, kind: str):
@@ -203,6 +229,14 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
     if side not in SIDES:
         raise CalcError(f"{t.where('side')}: expected input or output, found {side!r}")
     stiffness = _positive(t, "stiffness", "stiffness")
+    curve = None
+    if t.has("stiffness_curve"):
+        for key in ("stiffness", "part", "hysteresis"):
+            if t.has(key):
+                raise CalcError(f"{t.where('stiffness_curve')}: the curve gives the member's stiffness; give either stiffness_curve or {key}")
+        c = t.table("stiffness_curve", tuple(CURVE_KEYS))
+        curve = StiffnessCurve(*(c.quantity(key, kind, required=True) for key, kind in CURVE_KEYS.items()), where=f"{c.path}: {c.name}")
+        stiffness = curve.K_1
     backlash = t.quantity("backlash", "angle")
     if backlash is not None and not backlash.magnitude >= 0:
         raise CalcError(f"{t.where('backlash')}: expected an angle of zero or more, found {t.data['backlash']!r}")
@@ -237,6 +271,9 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         if ratio is not None and not np.isclose(own_ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
             raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {own_ratio.m_as(''):g}, but the case's gearbox ratio is {ratio.m_as(''):g}")
         stiffness, backlash, nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]
+        if not np.isnan(rows["K_1"][row].magnitude):  # the catalog gives the gear's stiffness curve
+            curve = StiffnessCurve(*(rows[name][row] for name in ("T_L1", "T_L2", "K_1", "K_2", "K_3")))
+            stiffness = curve.K_1
         for column, q in (("C_t21", stiffness), ("backlash", backlash)):
             if np.isnan(q.magnitude):
                 raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), column {column}: expected a value, found an empty cell")
@@ -273,7 +310,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         raise CalcError(f"{t.where('stiffness')}: expected a stiffness such as \"1.3 N*m/arcmin\" (or a part, or a measured hysteresis loop), found none")
     if backlash is None:
         raise CalcError(f"{t.where('backlash')}: expected an angle such as \"3 arcmin\" (\"0 arcmin\" for none), found none")
-    return Component(name, side, stiffness, backlash, accuracy, nominal, source="; ".join(sources) or "case")
+    return Component(name, side, stiffness, backlash, accuracy, nominal, source="; ".join(sources) or "case", stiffness_curve=curve)
 
 
 def accuracy_of(case: Case) -> tuple:
@@ -335,6 +372,13 @@ class AccuracyResult:
                 "share_of_compliance": number(shares[k]),
                 "twist_at_applied_torque": quantity(twist[k], "arcmin"),
             }
+            if comp.stiffness_curve is not None:
+                curve = comp.stiffness_curve
+                item["stiffness_curve"] = {
+                    "T1": quantity(curve.T_1, "N*m"), "T2": quantity(curve.T_2, "N*m"),
+                    "K1": quantity(curve.K_1, "N*m/rad"), "K2": quantity(curve.K_2, "N*m/rad"), "K3": quantity(curve.K_3, "N*m/rad"),
+                }
+                item["stiffness_is_secant"] = True  # stiffness_at_output: |T| / φ(T) at the applied torque
             if comp.name in spec.loops:
                 path, loop = spec.loops[comp.name]
                 item["measured_loop"] = {
@@ -354,6 +398,7 @@ class AccuracyResult:
             "nominal_torque": None if a.nominal_torque is None else quantity(a.nominal_torque, "N*m"),
             "nominal_torque_from": "accuracy.nominal_torque" if spec.nominal_torque is not None else c.nominal_torque_from,
             "C_total": quantity(c.stiffness, "N*m/arcmin"),
+            "C_total_is_secant": c.has_curves,
             "backlash": quantity(c.backlash, "arcmin"),
             "transmission_accuracy": quantity(c.transmission_accuracy, "arcsec"),
             "transmission_accuracy_from": c.transmission_accuracy_from,
@@ -364,6 +409,12 @@ class AccuracyResult:
             "repeatability_is_bound": a.repeatability_is_bound,
             "components": components,
         }
+        if spec.radius is not None:
+            r = spec.radius
+            out["radius"] = quantity(r, "mm")
+            for key in ("backlash", "lost_motion", "positioning_accuracy", "repeatability"):
+                angle = c.backlash if key == "backlash" else getattr(a, key)
+                out[f"{key}_arc"] = quantity(arc_length(r=r, phi=angle), "mm", f"accuracy.{key}_arc")
         if spec.positions is not None:
             p = spec.positions
             out["measured_positioning"] = {
@@ -385,6 +436,14 @@ class AccuracyResult:
                     "utilization": number(k.utilization, f"accuracy.{k.name}"),
                     "passes": k.passes,
                     "governs": True,
+                    **(
+                        {}
+                        if spec.radius is None
+                        else {
+                            "value_arc": quantity(arc_length(r=spec.radius, phi=k.required), "mm", f"accuracy.{k.name}"),
+                            "required_arc": quantity(arc_length(r=spec.radius, phi=k.rated), "mm", f"accuracy.required_{k.name}"),
+                        }
+                    ),
                 }
                 for k in checks
             ]
@@ -408,12 +467,17 @@ class AccuracyResult:
         ta_from = ", ".join(s["transmission_accuracy_from"]) or "no component gives one"
         t_n = "" if s["nominal_torque"] is None else f", T_N = {quantity_text(s['nominal_torque'])} ({s['nominal_torque_from']})"
         lines += [
-            f"  C_total = {quantity_text(s['C_total'])}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
+            f"  C_total = {quantity_text(s['C_total'])}{' (secant |T| / φ at the applied torque: a member gives a stiffness curve)' if s['C_total_is_secant'] else ''}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
             f"  Lost motion = j_t + |T| / C = {quantity_text(s['lost_motion'])} (E12)",
             f"  Positioning accuracy ({s['positioning_rule']}{t_n}) = {quantity_text(s['positioning_accuracy'])} (E13)",
             f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {quantity_text(s['repeatability'])} "
             f"({'bounded by the lost motion under torque' if s['repeatability_is_bound'] else 'the backlash at T = 0'}, E13)",
         ]
+        if "radius" in s:
+            lines.append(
+                f"  As arcs s = r · φ at r = {quantity_text(s['radius'])}: backlash {quantity_text(s['backlash_arc'])}, lost motion {quantity_text(s['lost_motion_arc'])}, "
+                f"positioning accuracy {quantity_text(s['positioning_accuracy_arc'])}, repeatability {quantity_text(s['repeatability_arc'])}"
+            )
         for c in s["components"]:
             if "measured_loop" in c:
                 m = c["measured_loop"]
@@ -433,6 +497,7 @@ class AccuracyResult:
         for k in s.get("checks", []):
             lines.append(
                 f"  {k['name']:<22} {quantity_text(k['value']):>12} required <= {quantity_text(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
+                + (f"  (as arcs: {quantity_text(k['value_arc'])} <= {quantity_text(k['required_arc'])})" if "value_arc" in k else "")
             )
         return lines
 

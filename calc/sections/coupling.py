@@ -8,15 +8,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..bands import factor_table
 from ..case import Case, Table, once
 from ..catalog import Catalog, display_path, load_catalogs
 from ..coupling import (
-    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TYPES, CouplingSelection, J_load_at_input, check_types, f_e_min, order_lines,
+    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, J_load_at_input, check_types, f_e_min, order_lines,
     select_coupling,
 )
 from ..errors import CalcError
 from ..fits import parse_bore
 from ..gearbox import n_1
+from ..profile import Z_h
 from ..units import Q_, fmt, sig
 from . import gearbox
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity, quantity_text, shown
@@ -25,6 +27,7 @@ NAME = "coupling"
 KEYS = (
     "catalog", "type", "part", "side", "accel_torque", "drive_inertia", "load_inertia", "service_factor", "temperature",
     "excitation_frequency", "speed", "shaft_1", "shaft_2", "disengagement_torque", "shaft_distance",
+    "temperature_factors", "start_factors", "starts_per_hour",
 )
 
 
@@ -84,6 +87,14 @@ def read(case: Case) -> CouplingCase:
         disengagement_torque=s.quantity("disengagement_torque", "torque"),
         shaft_distance=s.quantity("shaft_distance", "length"),
     )
+    inputs["temperature_factors"] = factor_table("temperature", s.text("temperature_factors"), case.folder, s.where("temperature_factors"))
+    if s.has("start_factors"):
+        inputs["start_factors"] = factor_table("starts", s.text("start_factors"), case.folder, s.where("start_factors"))
+        if not s.has("starts_per_hour"):
+            # One start from rest per cycle of the load cycle.
+            z = Z_h(t_cycle=case.profile.t_cycle)
+            derived["starts_per_hour"] = (z, f"starts_per_hour = Z_h of the load cycle (one start per cycle) = {fmt(z, '1/hour')}")
+    inputs["starts_per_hour"] = given_or_derived("starts_per_hour", "per_hour")
     notes = [text for key, (_, text) in derived.items() if not s.has(key)]
     return CouplingCase(catalog, wanted, side, inputs, bores, notes)
 
@@ -159,6 +170,7 @@ class CouplingResult:
                     "C_T": quantity(sel.C_T[row], "N*m/rad"),
                     "temperature_factor": float(sel.temperature_factor[row]),
                     "required_torque": quantity(sel.M_Nt[row], "N*m"),
+                    "peak_torque_required": None if sel.M_Smax is None else quantity(sel.M_Smax[row], "N*m"),
                     "checks": [check_json(c.at(row)) for c in sel.checks if c.applies_to(row)],
                     "reasons": sel.reasons(row),
                     "catalog": cc.catalog.catalog_of(row),
@@ -191,6 +203,10 @@ class CouplingResult:
             "T_op": quantity(sel.T_op, "N*m"),
             "temperature": None if temperature is None else quantity(temperature, "degC"),
             "temperature_factor": float(sel.temperature_factor[types == "elastomer"][0]) if (types == "elastomer").any() else 1.0,
+            "temperature_factors": cc.inputs["temperature_factors"].source,
+            "start_factors": None if "start_factors" not in cc.inputs else cc.inputs["start_factors"].source,
+            "starts_per_hour": None if cc.inputs["starts_per_hour"] is None else quantity(cc.inputs["starts_per_hour"], "1/hour"),
+            "start_factor": sel.start_factor,
             "f_e_min": quantity(f_e_min(f_er=cc.inputs["excitation_frequency"]), "Hz"),
             "bores": [
                 {
@@ -219,8 +235,11 @@ class CouplingResult:
         lines = [
             f"Coupling candidates (catalog {section['catalog']}{', type ' + section['type'] if section['type'] else ''}):",
             f"  M_N = {quantity_text(section['M_N'])} (S_A = {section['service_factor']:g}, E8); temperature factor "
-            f"{section['temperature_factor']:g} (E9); 2 f_er = {quantity_text(section['f_e_min'])} (E7)",
+            f"{section['temperature_factor']:g} ({'E9' if section['temperature_factors'] == TEMPERATURE_FACTORS.source else section['temperature_factors']}); "
+            f"2 f_er = {quantity_text(section['f_e_min'])} (E7)",
         ]
+        if section["start_factor"] is not None:
+            lines.append(f"  start factor S_z = {section['start_factor']:g} at {quantity_text(section['starts_per_hour'])} ({section['start_factors']})")
         for b in section["bores"]:
             lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
         several = len(section["catalogs"]) > 1

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from ..case import Case, Table, once
 from ..cycle import SampledCycle
 from ..errors import CalcError
-from ..gearbox import shock_factor
+from ..gearbox import SHOCK_FACTORS, shock_factor
 from ..profile import Duty, Profile, T_2m, Z_h, duty, n_2m
 from . import gearbox
 from .common import Verdict, quantity, quantity_text
@@ -46,6 +46,7 @@ class DutyResult:
     T2max: object = None  # of the best-ranked gearbox, when the case has one and the motor's peak torque
     T2max_part: str | None = None
     cycle: SampledCycle | None = None  # the sampled cycle where the motion form derived it
+    fs_table: str = SHOCK_FACTORS.source  # where the table of f_s comes from ([gearbox] shock_factors)
 
     def to_json(self, candidates: int | None = None) -> dict:
         d = self.duty
@@ -64,6 +65,7 @@ class DutyResult:
             "cyclic": {
                 "Zh": quantity(self.Zh, "1/hour", "cyclic.Zh"),
                 "fs": self.fs,
+                "fs_table": self.fs_table,
                 "n2max": quantity(self.profile.n_2max, "rpm", "cyclic.n2max"),
                 "governs": d.mode == "S5",
             },
@@ -102,8 +104,9 @@ def _evaluate(case: Case) -> DutyResult:
     p = case.profile
     seg = p.moving_values()
     zh = Z_h(t_cycle=p.t_cycle)
-    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh)),
-                     cycle=None if case.motion is None else case.motion.cycle)
+    table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors
+    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh, table)),
+                     cycle=None if case.motion is None else case.motion.cycle, fs_table=table.source)
     if gearbox.applies(case):
         selection = gearbox.gearbox_selection(case)
         if selection.T_2max is not None:

@@ -7,15 +7,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..bands import factor_table
 from ..case import Case, Table, once
 from ..catalog import display_path, load_catalogs
 from ..errors import CalcError
-from ..gearbox import HUB_SCHEMA, SCHEMA, GearboxSelection, rows_at_ratio, select_gearbox
+from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, rows_at_ratio, select_gearbox
 from ..units import fmt
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity
 
 NAME = "gearbox"
-KEYS = ("ratio", "catalog", "part", "hubs", "emergency_stop_torque")
+KEYS = ("ratio", "catalog", "part", "hubs", "emergency_stop_torque", "shock_factors")
 RANKING = (
     "passing first; published rows before illustrative ones; then smallest governing torque rating "
     "(T_2B in S5, T_2N in S1); then lowest worst utilization (the emergency stop's included where the row gives T_2Not); "
@@ -34,6 +35,7 @@ def read(top: Table, case: Case) -> None:
     case.gearbox_hubs = gearbox.catalogs("hubs", default="gearbox-hubs")
     case.gearbox_part = gearbox.text("part")
     case.emergency_stop_torque = gearbox.positive("emergency_stop_torque", "torque")
+    case.shock_factors = factor_table("shock", gearbox.text("shock_factors"), case.folder, gearbox.where("shock_factors"))
 
 
 def applies(case: Case) -> bool:
@@ -59,6 +61,7 @@ def selection_inputs(case: Case) -> dict:
         motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia,
         emergency_stop_torque=case.emergency_stop_torque, output_load=case.output_load,
         motor_shaft=None if case.motor_shaft is None else case.motor_shaft.nominal,
+        shock_factors=SHOCK_FACTORS if case.shock_factors is None else case.shock_factors,
     )
 
 
