@@ -1,6 +1,7 @@
 # make test    set up what is missing, then run every test (notebooks included)
 # make report  set up what is missing, then build the example's calc report
 # make bench   set up what is missing, then print the benchmark
+# make review  set up what is missing, then serve the design review on http://localhost:8866/
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
@@ -8,7 +9,7 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed-$(shell cat environment.txt pyproject.toml | sha256sum | cut -c1-12)
 EXAMPLE := cases/indexing-table.toml
 
-.PHONY: setup tex test report bench notebooks clean
+.PHONY: setup tex browser test report bench review notebooks clean
 
 setup: $(STAMP)
 
@@ -42,15 +43,34 @@ tex:
 	  exit 1; \
 	fi
 
-test: setup tex
+# The browser test of the served design review drives headless Chromium (Debian's package, by
+# Playwright). On Debian it is installed here when missing (as root); elsewhere this says what to install.
+browser:
+	@test -x /usr/bin/chromium && exit 0; \
+	if command -v apt-get >/dev/null && [ "$$(id -u)" = 0 ]; then \
+	  echo "installing Chromium for the browser test of the design review"; \
+	  export DEBIAN_FRONTEND=noninteractive; \
+	  apt-get update -qq && apt-get install -y -qq --no-install-recommends chromium >/dev/null || exit 1; \
+	else \
+	  echo "The browser test of the design review needs Chromium at /usr/bin/chromium." >&2; \
+	  echo "  Debian/Ubuntu (as root): apt-get install --no-install-recommends chromium" >&2; \
+	  exit 1; \
+	fi
+
+test: setup tex browser
 	$(PY) -m pytest
 
 report: setup tex
 	$(PY) -m calc report $(EXAMPLE) -o reports/indexing-table.pdf
 
 # One line per measurement, `name: value unit`, with its target (bench/bench.py says what each is).
-bench: setup tex
+bench: setup tex browser
 	$(PY) bench/bench.py
+
+# The design-review panel alone as a web page (Voilà), on this machine only; README, "Design review",
+# says how to serve it on a network.
+review: setup
+	$(PY) -m calc.review.serve
 
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
 # No execution times are recorded, so a re-run changes only what the calculation changed; no widget

@@ -1,4 +1,5 @@
-"""The design review: changed copies of a case, and the panel that re-evaluates them.
+"""The design review: changed copies of a case, the inputs' specs, what the panel shows, and the
+panel that re-evaluates them (the served page in a browser: test_review_browser.py).
 
 Expected numbers are worked by hand from the example case (cases/indexing-table.toml):
 T_2max = T_1B · i · f_s · η, with f_s = 1.3 at Z_h = 1800 /h and η = 0.97 (NPT035-10).
@@ -10,7 +11,8 @@ import pytest
 from calc import Q_
 from calc.case import read_case
 from calc.sections import evaluate as evaluate_case
-from calc.review import DesignReview, review_items, with_changes
+from calc.review import DesignReview, evaluated, input_specs, results_html, with_changes, with_inputs
+from calc.review.inputs import nice_step
 
 from .conftest import EXAMPLE
 
@@ -62,28 +64,141 @@ def test_temperature_and_applied_torque_reach_their_sections(case):
     assert r["accuracy"]["lost_motion"]["value"] == pytest.approx(r0["accuracy"]["lost_motion"]["value"] + extra)
 
 
-def test_panel_controls_re_evaluate_the_case():
+def test_key_paths_reach_the_case_as_the_named_arguments_do(case):
+    by_path = with_inputs(case, {"gearbox.ratio": Q_(8, ""), "profile[4].duration": Q_(3, "s"), "accuracy.applied_torque": Q_(16, "N*m")})
+    by_name = with_changes(case, ratio=Q_(8, ""), durations=Q_(np.array([0.2, 0.6, 0.2, 3.0]), "s"), applied_torque=Q_(16, "N*m"))
+    assert by_path.ratio == by_name.ratio == Q_(8, "")
+    assert by_path.sections == by_name.sections
+    torque = with_inputs(case, {"accuracy.applied_torque": Q_(16, "N*m")})  # written as text, read back by the section
+    assert evaluate(torque)["accuracy"]["applied_torque"]["value"] == pytest.approx(16)
+    assert np.array_equal(by_path.profile.durations.m_as("s"), by_name.profile.durations.m_as("s"))
+
+
+def test_input_specs_of_the_example(case):
+    specs = {s.key: s for s in input_specs(case, ratios=(5.0, 10.0))}
+    assert list(specs) == ["gearbox.ratio", "profile[1].duration", "profile[1].torque", "profile[2].duration", "profile[2].torque",
+                           "profile[3].duration", "profile[3].torque", "profile[4].duration", "motor.peak_torque", "motor.inertia",
+                           "load.inertia", "coupling.temperature", "accuracy.applied_torque"]
+    assert specs["gearbox.ratio"].options == (5.0, 10.0)
+    assert specs["motor.peak_torque"].text == "motor peak torque T_1B [N·m]"
+    assert specs["load.inertia"].text == "load inertia J_L [kg·cm²]"
+    assert specs["coupling.temperature"].text == "coupling temperature ϑ [°C]"
+    # The decel torque -45 N·m keeps its sign: -90 to 0 N·m over some 200 pixels, in steps of 0.5 N·m.
+    t3 = specs["profile[3].torque"]
+    assert (t3.low, t3.high, t3.step, t3.value) == (-90.0, 0.0, 0.5, -45.0)
+    # Every value sits on its step, and every range holds its value; a duration never reaches zero.
+    for s in specs.values():
+        if not s.options:
+            assert s.low <= s.value <= s.high and s.value == round(round(s.value / s.step) * s.step, 12)
+    assert all(specs[f"profile[{k}].duration"].low > 0 for k in range(1, 5))
+
+
+@pytest.mark.parametrize("span, step", [(300.0, 2.0), (1.0, 0.005), (7350.0, 50.0), (90.0, 0.5), (140.0, 1.0)])
+def test_steps_are_round_and_about_a_pixel(span, step):
+    assert nice_step(span) == step
+    assert span / 200 <= step < 2.5 * span / 200
+
+
+def test_results_html_of_the_example(case):
+    text = results_html(*evaluated(case))
+    assert '<span class="word pass">PASS</span>' in text
+    assert "Gearbox <b>NPT035-10</b> · Coupling <b>AKD-30</b>" in text
+    # Governing checks typeset as in the figures, no code spelling left.
+    assert "<i>T</i><sub>2max</sub> ≤ <i>T</i><sub>2B</sub>" in text and "<i>K</i><sub>ϑ</sub>" in text
+    assert "T_2B" not in text and "C_total" not in text and "N*m" not in text and "NaN" not in text and "nan" not in text
+    # Full reasons with the rated value and the excess (TP010-10: T_2max 151.3 N·m against T_2B 126 N·m).
+    assert "rated 126 N·m, 20.1 % over" in text
+    # No index column: the first column of each candidate table is the rank.
+    assert text.count("<thead><tr><th>rank</th>") == 2
+    assert "True" not in text and "False" not in text
+    # A check the catalog cannot decide says so, not FAIL (NPT035-10's row gives no F_2R).
+    assert '<span class="open">not made: the catalog gives no <i>F</i><sub>2R</sub></span>' in text and "<sub>hub,max</sub>" in text
+
+
+def test_a_failing_accuracy_requirement_gives_its_numbers(case):
+    # T = 2 N·m is below 3 % of T_N... the 3 % rule: 2 N·m < 0.03 · 110 N·m = 3.3 N·m, so the
+    # positioning accuracy is the lost motion (E13): 9.049 arcmin against the required 5 arcmin.
+    text = results_html(*evaluated(with_changes(case, applied_torque=Q_(2, "N*m"))))
+    assert '<span class="word fail">FAIL</span>' in text
+    assert "positioning accuracy 9.049 arcmin &gt; required 5 arcmin, 81 % over" in text
+
+
+def test_a_case_that_checks_nothing_says_so(write_case):
+    from tests.conftest import PROFILE_TOML
+
+    from calc.case import read_case as read
+
+    report, left_out = evaluated(read(write_case(PROFILE_TOML)))
+    text = results_html(report, left_out)
+    assert '<span class="word open">NOT DECIDED</span>' in text and "Nothing is checked" in text
+    assert "Governing checks" not in text and "Gearbox candidates" not in text
+    panel = DesignReview(write_case(PROFILE_TOML, "only-a-cycle.toml"))  # its controls: the cycle's alone
+    assert set(panel.controls) == {f"profile[{k}].{w}" for k in (1, 2, 3) for w in ("duration", "torque")} | {"profile[4].duration"}
+    assert "NOT DECIDED" in panel.results.value
+
+
+def test_panel_controls_re_evaluate_the_case(monkeypatch):
+    import calc.review.panel
+
+    drawn = []
+    monkeypatch.setattr(calc.review.panel, "_png", lambda figure: drawn.append(figure) or b"\x89PNG %d" % len(drawn))
     review = DesignReview(EXAMPLE)
-    assert {"ratio", "t_1", "T_1", "T_1B", "J_motor", "J_L", "temperature", "applied_torque"} <= set(review.controls)
-    assert "PASS" in review.items()[0].data
-    # The slider's top, 5 · 12 = 60 N·m: T_2max = 60 · 10 · 1.3 · 0.97 = 756.6 N·m exceeds T_2B of
-    # NPT035-10 (220), NPS045-10 and NPT045-10 (400) and TP050-10 (648); TP300-10 (η 0.95: 741 N·m
-    # against 2280 N·m) is the smallest adequate gearbox.
-    review.controls["T_1B"].value = 60.0
-    assert "gearbox TP300-10" in review.items()[0].data
-    assert "gearbox TP300-10" in review.output.outputs[0]["data"]["text/html"]  # the panel's output follows the control
+    assert {"gearbox.ratio", "profile[1].duration", "profile[1].torque", "motor.peak_torque", "motor.inertia", "load.inertia",
+            "coupling.temperature", "accuracy.applied_torque"} <= set(review.controls)
+    first = review.generation
+    assert "PASS" in review.results.value and bytes(review.load_cycle.value)[:4] == b"\x89PNG"
+    assert len(drawn) == 2  # the load cycle and the stiffness chain
+    review.controls["coupling.temperature"].value = 60.0
+    review.settled()
+    assert review.generation == first + 1  # one update per change
+    assert len(drawn) == 2  # neither figure's inputs changed (a bellows coupling has no temperature factor)
+    review.controls["profile[2].torque"].value = 21.0
+    review.settled()
+    assert len(drawn) == 3  # the load cycle only
+    review.controls["motor.peak_torque"].value = 30.0
+    review.settled()
+    # T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m, above NPT035-10's T_2B of 220 N·m: NPS045-10 (400 N·m)
+    # is chosen; the coupling follows the motor's torque (AKD-60), and with both the accuracy chain,
+    # whose figure is drawn again.
+    assert "Gearbox <b>NPS045-10</b> · Coupling <b>AKD-60</b>" in review.results.value and "378.3 N·m" in review.results.value
+    assert len(drawn) == 4
+    review.reset.click()  # back to the case file's values, whose figures are kept
+    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and len(drawn) == 4
+
+
+def test_changes_that_arrive_while_drawing_are_drawn_once_together():
+    import threading
+
+    review = DesignReview(EXAMPLE)
+    first, drawing, draw = review.generation, threading.Event(), review.refresh
+    review.refresh = lambda: drawing.wait(10) and draw()  # the first drawing lasts until all values are set
+    for t in (13.0, 14.0, 15.0, 16.0, 17.0):
+        review.controls["motor.peak_torque"].value = t
+    drawing.set()
+    review.settled()
+    # Five values, at most two drawings: the one under way (which may already read a later value),
+    # then what came meanwhile, at once.
+    assert first + 1 <= review.generation <= first + 2
+    assert "</i><sub>2max</sub> 214.4 N·m" in review.results.value  # 17 N·m · 10 · 1.3 · 0.97, the last value
 
 
 def test_a_case_that_cannot_be_evaluated_says_why_instead_of_raising(case):
-    items = review_items(with_changes(case, ratio=Q_(13, "")))
-    assert "FAIL" in items[0].data and "has ratio 13" in items[0].data
+    text = results_html(*evaluated(with_changes(case, ratio=Q_(13, ""))))
+    assert "FAIL" in text and "has ratio 13" in text
     bad = DesignReview(EXAMPLE.parent / "missing.toml")
     assert "the case file does not exist" in bad.message.value
 
 
-def test_review_items_of_the_example(case):
-    kinds = [type(x).__name__ for x in review_items(case)]
-    assert kinds == ["HTML", "Figure", "HTML", "DataFrame", "HTML", "DataFrame", "HTML", "DataFrame", "Figure"]
+def test_the_panel_offers_the_case_files_of_its_folder_only(tmp_path):
+    import shutil
+
+    for name in ("a.toml", "b.toml"):
+        shutil.copy(EXAMPLE, tmp_path / name)
+    (tmp_path / "notes.txt").write_text("not a case")
+    review = DesignReview(tmp_path / "a.toml")
+    assert [label for label, _ in review.case_file.options] == ["a.toml", "b.toml"]
+    review.case_file.value = tmp_path / "b.toml"
+    assert review.case.path == tmp_path / "b.toml"
 
 
 def test_the_accuracy_chain_follows_a_change_of_ratio(case):
@@ -101,32 +216,76 @@ def test_the_accuracy_chain_follows_a_change_of_ratio(case):
     assert a["positioning_accuracy"]["value"] == pytest.approx(0.36501, abs=1e-5)
     assert "the transmission_trace of NPT035-10 not used: the selection chose TP010-8" in a["components"][1]["source"]
     assert "measured_trace" not in a["components"][1]
-    items = review_items(with_changes(case, ratio=Q_(8, "")))
-    assert "PASS" in items[0].data and "TP010-8" in items[0].data
+    text = results_html(*evaluated(with_changes(case, ratio=Q_(8, ""))))
+    assert '<span class="word pass">PASS</span>' in text and "Gearbox <b>TP010-8</b>" in text and "0.365 arcmin" in text
 
 
 def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
     # A chain that names NPT035-10 (a 10:1 part) no longer fits the drive train at ratio 8.
     # The review still shows the gearbox and the coupling, and says FAIL with the reason.
-    import pandas as pd
-
     text = EXAMPLE.read_text()
     start = text.index("[[accuracy.component]]")
     named = text[:start] + '[[accuracy.component]]\npart = "NPT035-10"\n'
-    items = review_items(with_changes(read_case(write_case(named)), ratio=Q_(8, "")))
-    verdict = items[0].data
-    assert "FAIL" in verdict and "The accuracy section cannot be evaluated with these inputs" in verdict
-    assert "NPT035-10" in verdict
-    tables = [x for x in items if isinstance(x, pd.DataFrame)]
-    gearbox = tables[0]
+    report, left_out = evaluated(with_changes(read_case(write_case(named)), ratio=Q_(8, "")))
+    shown = results_html(report, left_out)
+    assert "FAIL" in shown and "The accuracy section cannot be evaluated with these inputs" in shown
+    assert "NPT035-10" in shown
     # catalogs/gearboxes.csv, the complete rows at ratio 8 (the SP+ rows are partial, never ranked).
-    assert set(gearbox["part"]) == {f"{s}-8" for s in ("TP004", "TP010", "TP050", "TP300", "TP500", "NPT005", "NPT015", "NPT025",
-                                                         "NPT035", "NPT045", "NPS015", "NPS045")}
-    assert len(tables) == 2  # gearbox and coupling candidates; no accuracy table
+    assert {c["part"] for c in report.results["gearbox"]["candidates"]} == {f"{s}-8" for s in (
+        "TP004", "TP010", "TP050", "TP300", "TP500", "NPT005", "NPT015", "NPT025", "NPT035", "NPT045", "NPS015", "NPS045")}
+    assert "Coupling candidates" in shown and "Accuracy of the chain" not in shown
 
 
-def test_slider_units_read_as_written():
+def test_slider_labels_read_as_written():
     panel = DesignReview(EXAMPLE)
-    described = [c.description for c in panel.controls.values()]
-    assert any(d.endswith("[kg·cm²]") for d in described)
-    assert not any("··" in d or "**" in d for d in described)
+    described = [s.text for s in panel.specs]
+    assert "load inertia J_L [kg·cm²]" in described
+    assert not any("··" in d or "**" in d or "*" in d for d in described)
+    assert all(c.tooltip for c in panel.controls.values())  # no empty ("null") tooltip
+
+
+def test_a_report_link_is_shown_beside_the_verdict():
+    panel = DesignReview(EXAMPLE, report_link=lambda path: f"reports/{path.stem}.pdf")
+    assert '<a href="reports/indexing-table-profile.pdf"' in panel.results.value
+
+
+def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
+    from calc.review import serve
+
+    argv = serve.command(8866)
+    assert argv[argv.index("-m") + 1] == "voila" and str(serve.PAGE) in argv and serve.PAGE.is_file()
+    assert "--Voila.ip=127.0.0.1" in argv and "--strip_sources=True" in argv and "--preheat_kernel=True" in argv
+    assert "--MappingKernelManager.cull_idle_timeout=600" in argv and "--MappingKernelManager.cull_connected=False" in argv
+    # Checked by hand in a browser with idle_seconds=6: two pages opened and closed, their two
+    # kernels culled some 8 s later, the waiting kernel kept.
+    assert "--MappingKernelManager.cull_idle_timeout=6" in serve.command(8866, idle_seconds=6)
+    assert serve.environment(EXAMPLE)[serve.CASE_VARIABLE] == str(EXAMPLE.resolve())
+    assert serve.main(["--cases", str(EXAMPLE.parent), "--case", "missing.toml"]) == 2
+    assert "missing.toml: the case file does not exist" in capsys.readouterr().err
+
+
+def test_a_derived_cycle_stays_derived_until_a_segment_is_moved():
+    from tests.conftest import DERIVED_EXAMPLE
+
+    panel = DesignReview(DERIVED_EXAMPLE)
+    assert panel.controls["profile[1].torque"].value == 7.8  # the control's step rounds 7.8269 N·m
+    assert panel.changed_case().motion is panel.case.motion  # but the case keeps its own value
+    assert "Motion: rotary from its moves · peak speed 42.86 rpm" in panel.results.value
+    panel.controls["profile[1].torque"].value = 9.0
+    panel.settled()
+    assert panel.changed_case().motion is None and "Load cycle: the segments as changed here" in panel.results.value
+    panel.reset.click()
+    assert "Motion: rotary" in panel.results.value
+
+
+def test_the_tables_list_the_best_candidates_unless_all_are_asked_for():
+    import re
+
+    panel = DesignReview(EXAMPLE)
+    notes = re.findall(r"6 of (\d+) candidates shown", panel.results.value)
+    assert len(notes) == 2 and all(int(n) > 6 for n in notes)  # the gearbox and the coupling table
+    assert panel.results.value.count('<td class="n">7</td>') == 0  # no rank 7
+    panel.all_candidates.value = True
+    panel.settled()
+    assert "candidates shown" not in panel.results.value
+    assert panel.results.value.count("<tr><td") + panel.results.value.count("<tr class=chosen><td") > 2 * 7

@@ -1,0 +1,176 @@
+"""The served design review (``make review``) in a real browser: headless Chromium from the system's
+packages, driven by Playwright. Used by the browser test (tests/test_review_browser.py) and by the
+benchmark's ``review_*`` lines.
+
+:func:`served` starts the server on a free port of this machine (``127.0.0.1``), waits for its
+first kernel, and stops it after;
+:func:`review_in_browser` opens the page as a reviewer would (1366 × 768), waits for the panel,
+changes inputs through the number fields and the ratio choice, and measures each change from the
+input to the new results on the page (the results carry a generation count). It keeps a
+screenshot of the page as first shown and after the changes.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+import socket
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+CHROMIUM = Path("/usr/bin/chromium")
+#: Chromium on a closed network: no background traffic, a fresh profile each run (given apart).
+CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                 "--disable-component-update", "--disable-sync", "--no-first-run"]
+SCREEN = {"width": 1366, "height": 768}
+RESULTS = ".design-review .dr[data-generation]"
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@dataclass
+class Server:
+    url: str
+    started: float  # s from the command to a kernel waiting with the panel drawn
+
+
+@contextlib.contextmanager
+def served(case: Path | None = None, timeout: float = 90.0):
+    """The review page served on a free port of 127.0.0.1, opening ``case`` (by default what
+    ``make review`` opens), once its first kernel waits with the panel drawn (as for a reviewer who
+    opens a page some time after ``make review``)."""
+    port = _free_port()
+    chosen = [] if case is None else ["--cases", str(case.parent), "--case", case.name]
+    env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    start = time.perf_counter()
+    server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port), *chosen], cwd=ROOT, env=env,
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    log: list[str] = []
+    filled = threading.Event()
+
+    def read_log():
+        for text in server.stderr:
+            log.append(text)
+            if "is filled" in text:
+                filled.set()
+
+    threading.Thread(target=read_log, daemon=True).start()
+    try:
+        if not filled.wait(timeout):
+            raise RuntimeError("the review server prepared no kernel: " + "".join(log)[-3000:])
+        yield Server(f"http://127.0.0.1:{port}/", time.perf_counter() - start)
+    finally:
+        os.killpg(server.pid, signal.SIGTERM)
+        try:
+            server.wait(10)
+        except subprocess.TimeoutExpired:
+            os.killpg(server.pid, signal.SIGKILL)
+            server.wait()
+
+
+@dataclass
+class Visit:
+    """What a visit measured and saw."""
+
+    ready: float  # s from asking for the page to the panel's results shown
+    changes: list = field(default_factory=list)  # (what, s from the input to the new results)
+    seen: list = field(default_factory=list)  # (what, the results' text after it)
+    shots: list = field(default_factory=list)  # screenshot files
+    burst: tuple = ()  # (values typed in a row, updates drawn for them, the results' text after)
+
+    @property
+    def times(self) -> list[float]:
+        return [t for _, t in self.changes]
+
+    @property
+    def median(self) -> float:
+        return statistics.median(self.times)
+
+
+def _row(page, label: str):
+    """The control row whose label (its tooltip, with unit) is ``label``."""
+    return page.locator(".widget-hbox", has=page.locator(f'span[title="{label}"]')).last
+
+
+def _generation(page) -> int:
+    return int(page.get_attribute(RESULTS, "data-generation"))
+
+
+def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1, settle: float = 3.0,
+                      burst: tuple[str, list[str]] | None = None) -> Visit:
+    """Open the page, wait ``settle`` seconds, then make each change ``(label, value)`` in turn (a
+    number field's value, or the option of a choice), ``repeat`` times over; each is timed until
+    the results follow. Then ``burst``, ``(label, values)``: the values typed into that field one
+    after the other without waiting, as a reviewer trying values does; counted are the updates
+    the page gets for them until it is still."""
+    from playwright.sync_api import sync_playwright
+
+    shots.mkdir(parents=True, exist_ok=True)
+    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
+        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
+                                                        args=CHROMIUM_ARGS, viewport=SCREEN)
+        try:
+            page = browser.new_page()
+            start = time.perf_counter()
+            page.goto(url)
+            page.wait_for_selector(RESULTS, timeout=60_000)
+            visit = Visit(ready=time.perf_counter() - start)
+            # A reviewer reads the page before the first change; meanwhile the server prepares the
+            # next page's kernel, which is not what a change should be timed against.
+            page.wait_for_timeout(settle * 1000)
+            visit.shots.append(shots / "review-first.png")
+            page.screenshot(path=str(visit.shots[-1]))
+            visit.seen.append(("first", page.inner_text(RESULTS)))
+            for _ in range(repeat):
+                for label, value in changes:
+                    generation = _generation(page)
+                    row = _row(page, label)
+                    start = time.perf_counter()
+                    if row.locator("select").count():
+                        row.locator("select").select_option(label=value)
+                    else:
+                        field_ = row.locator("input[type=number]")
+                        field_.fill(value)
+                        field_.press("Enter")
+                    page.wait_for_function(
+                        f"() => Number(document.querySelector('{RESULTS}')?.dataset.generation) > {generation}",
+                        polling="raf", timeout=30_000)
+                    visit.changes.append((f"{label} = {value}", time.perf_counter() - start))
+                    visit.seen.append((f"{label} = {value}", page.inner_text(RESULTS)))
+                    if visit.seen[-1][1].startswith("FAIL") and not any(p.name == "review-fail.png" for p in visit.shots):
+                        visit.shots.append(shots / "review-fail.png")
+                        page.screenshot(path=str(visit.shots[-1]))
+            if burst:
+                label, values = burst
+                first = _generation(page)
+                # Typed within a few milliseconds: each value committed as Enter or leaving the field does.
+                _row(page, label).locator("input[type=number]").evaluate(
+                    "(field, values) => { for (const v of values) { field.value = v;"
+                    " field.dispatchEvent(new Event('change', {bubbles: true})); } }", values)
+                last = None
+                while last != _generation(page):  # still for a second
+                    last = _generation(page)
+                    page.wait_for_timeout(1000)
+                visit.burst = (len(values), last - first, page.inner_text(RESULTS))
+            page.wait_for_timeout(300)
+            visit.shots.append(shots / "review-changed.png")
+            page.screenshot(path=str(visit.shots[-1]))
+            visit.shots.append(shots / "review-whole-panel.png")  # on a screen tall enough for all of it
+            page.set_viewport_size({"width": SCREEN["width"], "height": 2400})
+            page.wait_for_timeout(300)
+            page.locator(".design-review").screenshot(path=str(visit.shots[-1]))
+            return visit
+        finally:
+            browser.close()

@@ -1,0 +1,194 @@
+"""The inputs a reviewer changes: one :class:`InputSpec` per input, and a case with inputs replaced.
+
+An input is named by its key path in the case file (``motor.peak_torque``, ``profile[2].torque``
+for the second segment, ``coupling.temperature``); :func:`with_inputs` writes values at key paths
+into a copy of a case. The panel's controls are built from :func:`input_specs`, so a further input
+is one more line in :data:`SCALARS` (or one more rule for a list of tables like ``profile``).
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import math
+import re
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..case import Case
+from ..profile import Profile
+from ..units import Q_, parse_quantity, pretty_unit
+
+#: Key paths of the inputs that the case keeps as its own fields (the other sections keep their
+#: tables raw until evaluated, so their key paths are written into those tables).
+CASE_FIELDS = {
+    "gearbox.ratio": "ratio",
+    "motor.peak_torque": "motor_peak_torque",
+    "motor.inertia": "motor_inertia",
+    "load.inertia": "load_inertia",
+}
+_SEGMENT = re.compile(r"profile\[(\d+)\]\.(duration|torque)$")
+
+
+@dataclass(frozen=True)
+class InputSpec:
+    """One input of the panel: its key path in the case file, what it is, its unit, the range
+    and step of its slider and its value in the case. ``options`` makes it a choice (the ratios
+    of the catalog) instead of a slider."""
+
+    key: str
+    label: str
+    unit: str
+    low: float
+    high: float
+    step: float
+    value: float
+    options: tuple = ()
+
+    @property
+    def text(self) -> str:
+        """The label with its unit, as the panel shows it: ``motor peak torque T_1B [N·m]``."""
+        return f"{self.label} [{pretty_unit(self.unit)}]" if self.unit else self.label
+
+
+def nice_step(span: float, pixels: int = 200) -> float:
+    """A round step (1, 2 or 5 times a power of ten) of about one pixel of a slider ``pixels``
+    wide over ``span``, so that a slider's values read as typed.
+
+    >>> nice_step(300.0), nice_step(14.9), nice_step(1.0)
+    (2.0, 0.1, 0.005)
+    """
+    raw = span / pixels
+    power = 10.0 ** math.floor(math.log10(raw))
+    return next(m * power for m in (1, 2, 5, 10) if m * power >= raw)
+
+
+def _spec(key, label, unit, value, low, high, options=()) -> InputSpec:
+    step = nice_step(high - low)
+    low = max(low, step) if key.endswith(".duration") else low  # a segment lasts some time
+    on_step = lambda x: round(round(x / step) * step, 12)  # noqa: E731 (no 0.30000000000000004 in a field)
+    return InputSpec(key, label, unit, on_step(low), on_step(high), step, on_step(value) if not options else value, options)
+
+
+def _torque_range(t: float) -> tuple[float, float]:
+    """From zero to twice the torque on its own side (a segment's torque keeps its sign), at least ±10."""
+    reach = max(2 * abs(t), 10.0)
+    return (-reach, 0.0) if t < 0 else (0.0, reach)
+
+
+def _scaled(v: float) -> tuple[float, float]:
+    """A tenth to five times the case's value (inertias, peak torque)."""
+    return v / 10, 5 * v
+
+
+def _temperature(_v: float) -> tuple[float, float]:
+    from ..coupling import TEMPERATURE_FACTORS  # the slider ends at the table's top (E9)
+
+    return -20.0, TEMPERATURE_FACTORS.top
+
+
+#: The single-valued inputs, where the case gives them: key path, label, unit, kind, range rule.
+SCALARS = (
+    ("motor.peak_torque", "motor peak torque T_1B", "N*m", "torque", _scaled),
+    ("motor.inertia", "motor inertia J_motor", "kg*cm**2", "inertia", _scaled),
+    ("load.inertia", "load inertia J_L", "kg*cm**2", "inertia", _scaled),
+    ("coupling.temperature", "coupling temperature ϑ", "degC", "temperature", _temperature),
+    ("accuracy.applied_torque", "applied torque T", "N*m", "torque", lambda t: (0.0, max(5 * t, 10.0))),
+)
+#: Values a section takes when its file leaves them out (the coupling's temperature, E9).
+DEFAULTS = {"coupling.temperature": "20 degC"}
+
+
+def value_at(case: Case, key: str, unit: str, kind: str):
+    """The case's value at ``key`` in ``unit`` (a float; a quantity of ``kind``), or None where the
+    case does not give it."""
+    if key in CASE_FIELDS:
+        q = getattr(case, CASE_FIELDS[key])
+        return None if q is None else float(q.m_as(unit))
+    section, name = key.split(".", 1)
+    table = case.sections.get(section)
+    if table is None or (name not in table and key not in DEFAULTS):
+        return None
+    return float(parse_quantity(table.get(name, DEFAULTS.get(key)), kind, f"{case.path}: {key}").m_as(unit))
+
+
+def input_specs(case: Case, ratios=()) -> list[InputSpec]:
+    """The inputs of ``case`` the panel offers, in the order it shows them: the ratio (a choice
+    among ``ratios``, the catalog's), each segment's duration and torque, then :data:`SCALARS`."""
+    specs = []
+    if case.ratio is not None:
+        r = float(case.ratio.m_as(""))
+        specs.append(_spec("gearbox.ratio", "gearbox ratio i", "", r, 0, 1, options=tuple(sorted({*ratios, r}))))
+    p = case.profile
+    for k, (phase, t, T) in enumerate(zip(p.phases, p.durations.m_as("s"), p.torques.m_as("N*m")), start=1):
+        specs.append(_spec(f"profile[{k}].duration", f"{k} {phase}: duration t", "s", t, 0.0, max(3 * t, 1.0)))
+        if phase != "pause":
+            specs.append(_spec(f"profile[{k}].torque", f"{k} {phase}: torque T_2", "N*m", T, *_torque_range(T)))
+    for key, label, unit, kind, reach in SCALARS:
+        v = value_at(case, key, unit, kind)
+        if v is not None:
+            specs.append(_spec(key, label, unit, v, *reach(v)))
+    return specs
+
+
+def with_inputs(case: Case, values: dict) -> Case:
+    """A copy of ``case`` with the quantity ``values[key]`` at each key path (a pause's torque is
+    ignored); the raw tables of further sections get the value written as text, so their readers
+    check it as if it stood in the file.
+
+    >>> from pathlib import Path
+    >>> from calc.case import read_case
+    >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
+    >>> changed = with_inputs(case, {"profile[4].duration": Q_(3, "s"), "coupling.temperature": Q_(60, "degC")})
+    >>> changed.profile.durations, changed.sections["coupling"]["temperature"], case.sections["coupling"]["temperature"]
+    (<Quantity([0.15 0.2  0.15 3.  ], 'second')>, '60 degree_Celsius', '40 degC')
+
+    The example derives its cycle from its motion; a changed segment makes the cycle a typed one:
+
+    >>> with_inputs(case, {"motor.peak_torque": Q_(13, "N*m")}).motion is case.motion, changed.motion
+    (True, None)
+    """
+    p = case.profile
+    durations, torques = p.durations.m_as("s").copy(), p.torques.m_as("N*m").copy()
+    fields, sections = {}, copy.deepcopy(case.sections)
+    for key, q in values.items():
+        segment = _SEGMENT.match(key)
+        if segment:
+            k, what = int(segment.group(1)) - 1, segment.group(2)
+            (durations if what == "duration" else torques)[k] = q.m_as("s" if what == "duration" else "N*m")
+        elif key in CASE_FIELDS:
+            fields[CASE_FIELDS[key]] = q
+        else:
+            section, name = key.split(".", 1)
+            sections[section][name] = f"{q.magnitude:.12g} {q.units:D}"  # pint's own names, which it reads back
+    segments = [
+        (phase, Q_(durations[k], "s"), None if phase == "pause" else p.speeds[k], None if phase == "pause" else Q_(torques[k], "N*m"))
+        for k, phase in enumerate(p.phases)
+    ]
+    profile = Profile.from_segments(segments, where=f"{case.path}: profile")
+    same = np.allclose(durations, p.durations.m_as("s"), rtol=1e-9) and np.allclose(torques, p.torques.m_as("N*m"), rtol=1e-9)
+    # Segments changed by hand are typed: the motion they were derived from no longer holds.
+    return dataclasses.replace(case, profile=profile, motion=case.motion if same else None, sections=sections, **fields)
+
+
+def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_peak_torque=None, motor_inertia=None,
+                 load_inertia=None, temperature=None, applied_torque=None) -> Case:
+    """A copy of ``case`` with the given inputs replaced (quantities; ``None`` keeps the case's):
+    :func:`with_inputs` by name. ``durations`` and ``torques`` are quantity arrays over all segments.
+
+    >>> from pathlib import Path
+    >>> from calc.case import read_case
+    >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
+    >>> changed = with_changes(case, motor_peak_torque=Q_(30, "N*m"))
+    >>> changed.motor_peak_torque, case.motor_peak_torque
+    (<Quantity(30, 'newton * meter')>, <Quantity(12.0, 'newton * meter')>)
+    """
+    values = {"gearbox.ratio": ratio, "motor.peak_torque": motor_peak_torque, "motor.inertia": motor_inertia,
+              "load.inertia": load_inertia, "coupling.temperature": temperature, "accuracy.applied_torque": applied_torque}
+    # A further section's input is ignored where the case has no such section.
+    values = {k: v for k, v in values.items() if v is not None and (k in CASE_FIELDS or k.split(".")[0] in case.sections)}
+    for what, arrays in (("duration", durations), ("torque", torques)):
+        if arrays is not None:
+            values.update({f"profile[{k}].{what}": q for k, q in enumerate(arrays, start=1)})
+    return with_inputs(case, values)

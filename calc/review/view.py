@@ -1,0 +1,240 @@
+"""What the review shows of an evaluated case, as one HTML text: the verdict with the chosen parts,
+the governing checks, the duty values, the candidate tables and the accuracy of the chain.
+
+Everything is written from the results as the JSON contract has them (every candidate), so the
+panel shows what ``python -m calc evaluate --json`` and the report say. Symbols are typeset as in
+the figures (``T_2B`` as T₂B with a subscript, ``<=`` as ≤), units as a reader writes them
+(``N·m``), blanks where a value is not given; a table has no index column.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from html import escape
+
+from ..case import Case
+from ..catalog import display_path
+from ..report import Report, report_of
+from ..sections.common import quantity_text
+from ..units import sig
+
+PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
+_GREEK = {"phi": "φ", "eta": "η", "lambda": "λ"}
+# A symbol as written in code: a letter (or phi, eta, lambda) and its subscript, ``T_2B``, ``K_ϑ``.
+_SYMBOL = re.compile(r"(?<!\w)(phi|eta|lambda|[^\W\d_])_([^\W_]+(?:,[^\W_]+)*)(?!\w)")  # d_hub,max too
+# A name written in code, ``positioning_accuracy`` (not a key path's part, ``motor.peak_torque``).
+_WORDS = re.compile(r"(?<![.\w])([a-z]{2,})_([a-z]{2,})\b")
+
+STYLE = f"""<style>
+.dr {{ font-size: 13px; line-height: 1.35; color: #1a1a1a; }}
+.dr h3 {{ font-size: 14px; margin: 12px 0 4px; }}
+.dr .verdict {{ display: flex; align-items: baseline; gap: 12px; flex-wrap: wrap; margin-bottom: 4px; }}
+.dr .word {{ font-size: 22px; font-weight: 700; color: #fff; padding: 1px 12px; border-radius: 4px; }}
+.dr .pass {{ color: {PASS_COLOR}; font-weight: 600; }} .dr .fail {{ color: {FAIL_COLOR}; font-weight: 600; }}
+.dr .open {{ color: #777; }}
+.dr .word.pass {{ background: {PASS_COLOR}; color: #fff; }} .dr .word.fail {{ background: {FAIL_COLOR}; color: #fff; }}
+.dr .word.open {{ background: #8a6d00; color: #fff; }}
+.dr .parts {{ font-size: 15px; }} .dr ul.reasons {{ margin: 2px 0 4px 18px; padding: 0; color: {FAIL_COLOR}; }}
+.dr table {{ border-collapse: collapse; margin: 2px 0 6px; }}
+.dr th {{ text-align: left; font-weight: 600; border-bottom: 1px solid #999; padding: 2px 8px 2px 0; white-space: nowrap; }}
+.dr td {{ padding: 2px 8px 2px 0; border-bottom: 1px solid #e4e4e4; vertical-align: top; white-space: nowrap; }}
+.dr td.n {{ text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }}
+.dr td.why {{ color: #555; white-space: normal; }} .dr tr.chosen td {{ background: #eef6ee; }}
+.dr .bar {{ display: inline-block; height: 8px; vertical-align: middle; margin-left: 4px; background: #ccc; width: 50px; }}
+.dr .bar > span {{ display: block; height: 8px; }}
+.dr .values {{ color: #333; }} .dr .values b {{ font-weight: 600; }} .dr .note {{ color: #666; font-size: 12px; }}
+</style>"""
+
+
+def typeset(text: str) -> str:
+    """Our running text as HTML: escaped, each symbol written as in code (``n_2m``, ``phi_LM``) with
+    its subscript, ``<=``, ``>=`` as ≤, ≥, and a name written in code (``positioning_accuracy``)
+    in words.
+
+    >>> typeset("T_2max <= T_2B: required 189.1 N·m > rated 126 N·m")
+    '<i>T</i><sub>2max</sub> ≤ <i>T</i><sub>2B</sub>: required 189.1 N·m &gt; rated 126 N·m'
+    >>> typeset("positioning_accuracy 9 arcmin")
+    'positioning accuracy 9 arcmin'
+    """
+    text = _WORDS.sub(r"\1 \2", text.replace("<=", "≤").replace(">=", "≥"))
+    out, last = [], 0
+    for m in _SYMBOL.finditer(text):
+        out += [escape(text[last:m.start()]), f"<i>{_GREEK.get(m.group(1), m.group(1))}</i><sub>{escape(m.group(2))}</sub>"]
+        last = m.end()
+    return "".join(out) + escape(text[last:])
+
+
+def evaluated(case: Case) -> tuple[Report, list[str]]:
+    """The case's report, and what had to be left out of it: when the changed inputs make one
+    further section impossible to evaluate (the accuracy chain names a 10:1 gearbox and the ratio
+    is now 8), the report of the rest, and that section's reason as one sentence, so the review
+    still shows the gearbox and the other sections. The verdict with a section left out is FAIL."""
+    r = report_of(case)
+    if r.error is None:
+        return r, []
+    for name in case.sections:
+        rest = report_of(dataclasses.replace(case, sections={k: v for k, v in case.sections.items() if k != name}))
+        if rest.error is None:
+            why = r.error.replace(str(case.path), display_path(case.path))  # the path as the results write it
+            return rest, [f"The {name} section cannot be evaluated with these inputs: {why}"]
+    return r, []
+
+
+def _q(d) -> str:
+    """A result quantity as text, blank where not given."""
+    return "" if d is None or d.get("value") is None else escape(quantity_text(d).replace(" 1/hour", " /h"))
+
+
+def _verdict_cell(passes, not_made: str | None = None) -> str:
+    """PASS or FAIL; a check that could not be made (``passes`` None) says why, in grey."""
+    if passes is None:
+        return f'<span class="open">not made{": " + typeset(not_made) if not_made else ""}</span>'
+    return '<span class="pass">PASS</span>' if passes else '<span class="fail">FAIL</span>'
+
+
+def _utilization(u) -> str:
+    """A utilization in per cent with a bar (red over 100 %); blank where there is none."""
+    if u is None:
+        return ""
+    width = max(0.0, min(u, 1.0)) * 100
+    color = FAIL_COLOR if u > 1 + 1e-9 else PASS_COLOR  # 1.0000000000000002 is a rounding of 1, which passes
+    return f'{100 * u:.0f} %<span class="bar"><span style="width:{width:.0f}%;background:{color}"></span></span>'
+
+
+def _table(header: list[str], rows: list[list[str]], numeric: set[int] = frozenset(), marked: int | None = None) -> str:
+    head = "".join(f"<th>{h}</th>" for h in header)
+    body = "".join(
+        f'<tr{" class=chosen" if k == marked else ""}>'
+        + "".join(f'<td class="{"n" if j in numeric else ("why" if h in ("reasons", "verdict") else "")}">{c}</td>' for j, (h, c) in enumerate(zip(header, row)))
+        + "</tr>"
+        for k, row in enumerate(rows)
+    )
+    return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def _governing(r: dict) -> str:
+    """The governing checks of each chosen part (the closest candidate where none passes) and the
+    accuracy requirements, one row each."""
+    rows = []
+    for name in ("gearbox", "coupling"):
+        s = r.get(name)
+        if not s or not s.get("candidates"):
+            continue
+        c = s["candidates"][0]
+        who = f"{name} {escape(c['part'])}" + ("" if s.get("selected") else " (closest)")
+        for k in c["checks"]:
+            if k.get("governs", True):
+                rows.append([who, typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]),
+                             _verdict_cell(k["passes"], k.get("not_made"))])
+    for k in (r.get("accuracy") or {}).get("checks", []):
+        rows.append(["accuracy", typeset(k["criterion"]), _q(k["value"]), _q(k["required"]), _utilization(k["utilization"]), _verdict_cell(k["passes"])])
+    if not rows:
+        return ""
+    return "<h3>Governing checks</h3>" + _table(["part", "check", "required", "rated", "utilization", "verdict"], rows, numeric={2, 3, 4})
+
+
+def _duty(r: dict) -> str:
+    """The duty values in one line: mode, ED, the S5 and S1 values."""
+    if "duty" not in r:
+        return ""
+    d, cy, co = r["duty"], r.get("cyclic", {}), r.get("continuous", {})
+    parts = [f"<b>{escape(d['mode'])}</b>", f"ED {_q(d['ED'])}", f"cycle {_q(d['t_cycle'])}"]
+    if cy:
+        parts += [f"{typeset('Z_h')} {_q(cy.get('Zh'))}", f"{typeset('f_s')} {sig(cy['fs'])}" if cy.get("fs") is not None else "",
+                  f"{typeset('n_2max')} {_q(cy.get('n2max'))}", f"{typeset('T_2max')} {_q(cy.get('T2max'))}" if cy.get("T2max") else ""]
+    if co:
+        parts += [f"{typeset('n_2m')} {_q(co.get('n2m'))}", f"{typeset('T_2m')} {_q(co.get('T2m'))}"]
+    return '<div class="values">Duty: ' + " · ".join(p for p in parts if p) + "</div>"
+
+
+def _motion(r: dict, typed_by_hand: bool) -> str:
+    """Where the load cycle comes from: the motion's peak values, or that its segments were changed
+    by hand (then the moves and mechanism no longer derive it)."""
+    if typed_by_hand:
+        return '<div class="values">Load cycle: the segments as changed here (the case derives them from its motion; reset to derive them again)</div>'
+    m = r.get("motion")
+    if not m:
+        return ""
+    parts = [f"{escape(m.get('mechanism') or '')} from its {escape(m.get('source', ''))}s".strip(), f"peak speed {_q(m.get('peak_speed'))}",
+             f"peak acceleration {_q(m.get('peak_acceleration'))}", f"{typeset('J_L')} {_q(m.get('J_L'))}" if m.get("J_L") else ""]
+    return '<div class="values">Motion: ' + " · ".join(p for p in parts if p) + "</div>"
+
+
+def _worst(c: dict):
+    us = [k["utilization"] for k in c["checks"] if k.get("governs", True) and k["utilization"] is not None]
+    return max(us) if us else None
+
+
+def _shown(rows: list, shown: int | None) -> tuple[list, str]:
+    """The first ``shown`` rows (all for None), and a note of how many are left out."""
+    if shown is None or len(rows) <= shown:
+        return rows, ""
+    return rows[:shown], f"<div class=note>{shown} of {len(rows)} candidates shown; tick <i>all candidates</i> for the rest.</div>"
+
+
+def _gearbox_table(g: dict, shown: int | None) -> str:
+    rows = [
+        [str(k), escape(c["part"]), _verdict_cell(c["passes"]), _utilization(_worst(c)), _q(c.get("T2max")),
+         "" if c.get("inertia_ratio") is None else sig(c["inertia_ratio"], 3), "illustrative" if c.get("illustrative") else "",
+         "<br>".join(typeset(x) for x in c.get("reasons", []))]
+        for k, c in enumerate(g["candidates"], start=1)
+    ]
+    header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data", "reasons"]
+    rows, more = _shown(rows, shown)
+    return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g['ranking'])}</div>"
+            + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if g.get("selected") else None) + more)
+
+
+def _coupling_table(s: dict, shown: int | None) -> str:
+    def rated(c, name):
+        return next((_q(k["rated"]) for k in c["checks"] if k["name"] == name), "")
+
+    rows = [
+        [str(k), escape(c["part"]), escape(c.get("type", "")), _verdict_cell(c["passes"]), _q(c.get("required_torque")), rated(c, "T_KN"),
+         _q(c.get("f_e")), _utilization(_worst(c)), "<br>".join(typeset(x) for x in c.get("reasons", []))]
+        for k, c in enumerate(s["candidates"], start=1)
+    ]
+    header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"), "worst utilization", "reasons"]
+    notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in s.get("notes", []))
+    rows, more = _shown(rows, shown)
+    return (f"<h3>Coupling candidates</h3><div class=note>{typeset(s['ranking'])}</div>"
+            + _table(header, rows, numeric={0, 4, 5, 6, 7}, marked=0 if s.get("selected") else None) + more + notes)
+
+
+def _accuracy_table(a: dict) -> str:
+    rows = [
+        [typeset("C_total"), "total torsional stiffness at the output", _q(a.get("C_total"))],
+        [typeset("phi_LM"), f"lost motion at the applied torque {_q(a.get('applied_torque'))}", _q(a.get("lost_motion"))],
+        ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.get('positioning_rule', ''))})", _q(a.get("positioning_accuracy"))],
+        ["", "repeatability" + (" (upper bound)" if a.get("repeatability_is_bound") else ""), _q(a.get("repeatability"))],
+    ]
+    return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
+
+
+def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False,
+                 shown: int | None = None) -> str:
+    """The review of an evaluated case as one HTML text (see the module's docstring);
+    ``report_link``, where given, is the address of the case's report, linked beside the verdict;
+    ``typed_by_hand``: the case's derived load cycle was changed segment by segment; ``shown``:
+    the candidates listed in each table, best first (all for None)."""
+    word = "FAIL" if left_out else report.verdict.word
+    passes = word == "PASS"
+    cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
+    chosen = " · ".join(f"{escape(w)} <b>{escape(p)}</b>" if p else f"{escape(w)} <span class=fail>none passes</span>" for w, p, _ in report.chosen)
+    link = f' <a href="{escape(report_link)}" target="_blank">calc report</a>' if report_link else ""
+    out = [STYLE, '<div class="dr">', f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}</div>']
+    reasons = [*left_out, *report.reasons]
+    if reasons and not passes:
+        out.append('<ul class="reasons">' + "".join(f"<li>{typeset(x)}</li>" for x in reasons) + "</ul>")
+    r = report.results
+    if r is not None:
+        out += [_governing(r), _motion(r, typed_by_hand), _duty(r)]
+        if r.get("gearbox"):
+            out.append(_gearbox_table(r["gearbox"], shown))
+        if r.get("coupling"):
+            out.append(_coupling_table(r["coupling"], shown))
+        if r.get("accuracy"):
+            out.append(_accuracy_table(r["accuracy"]))
+    out.append("</div>")
+    return "".join(out)
