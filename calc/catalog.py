@@ -438,15 +438,14 @@ def _numbers(cells: list) -> _Numbers:
     """Parse a column of cells as written. Each distinct spelling is stripped, held against
     :data:`_FLOAT` and parsed once (a catalog repeats its values, and a lookup costs less than a
     parse), so ``inf``, ``nan``, ``1_000`` or hex, which ``float`` would take, are malformed."""
-    value_of = {}
-    for spelling in set(cells):
-        cell = spelling.strip()
-        value_of[spelling] = float(cell) if cell and _FLOAT.match(cell) else math.nan
-    values = np.fromiter(map(value_of.__getitem__, cells), float, len(cells))
+    spellings = dict.fromkeys(cells)  # the distinct spellings, each with its index below
+    stripped = [spelling.strip() for spelling in spellings]
+    parsed = np.array([float(cell) if cell and _FLOAT.match(cell) else math.nan for cell in stripped], float)
+    blank = np.array([not cell for cell in stripped], bool)
+    index = dict(zip(spellings, range(len(spellings))))
+    at = np.fromiter(map(index.__getitem__, cells), np.intp, len(cells))
+    values, empty = parsed[at], blank[at]
     # A number's spelling never parses to NaN: NaN marks the empty and the malformed cells.
-    unparsed = np.flatnonzero(np.isnan(values))
-    empty = np.zeros(len(cells), bool)
-    empty[unparsed] = [not cells[j].strip() for j in unparsed]
     return _Numbers(cells, values, empty, np.isnan(values) & ~empty)
 
 
