@@ -86,7 +86,7 @@ KINDS: dict[str, Kind] = {
         Kind("angle", "", 1, "rad", '"3 arcmin"'),
         Kind("length", "[length]", 0, "m", '"14 mm"'),
         Kind("dimensionless", "", 0, "", "10"),
-        Kind("per_hour", "1/[time]", 0, "1/s", '"1800 / hour"'),
+        Kind("per_hour", "1/[time]", 0, "1/s", '"1800 1/hour"'),
         Kind("temperature", "[temperature]", 0, "K", '"60 degC"'),
         Kind("stiffness_length", "[mass]*[length]**3/[time]**2", -1, "N*m**2/rad", '"20230 N*m**2/rad"'),
         Kind("angular_acceleration", "1/[time]**2", 1, "rad/s**2", '"60 rad/s**2"'),

@@ -8,7 +8,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from calc import CalcError, Q_, ureg
-from calc.units import angle_power, as_kind, latex_unit, parse_quantity, pretty_unit, revolutions_per_second, sig
+from calc.units import KINDS, angle_power, as_kind, latex_unit, parse_quantity, pretty_unit, revolutions_per_second, sig
 
 
 def test_one_application_registry():
@@ -174,3 +174,10 @@ def test_a_quantity_of_another_registry_is_refused():
         as_kind(pint.UnitRegistry().Quantity(12, "N*m"), "torque", "T_1B")
     assert str(err.value).startswith("T_1B: the quantity 12 meter * newton was made with another unit registry")
     assert "use calc.ureg or calc.Q_" in str(err.value)
+
+
+@pytest.mark.parametrize("name", sorted(KINDS))
+def test_every_kinds_example_is_an_input_of_that_kind(name):
+    # Error messages offer the example ("expected a rate such as ..."): it must itself be accepted.
+    k = KINDS[name]
+    parse_quantity(k.example.strip('"'), k, f"example of {name}")

@@ -65,7 +65,7 @@ def check_json(check: Check) -> dict:
 def check_line(check: Check, width: int = 22) -> str:
     """A check as one line of the text summary."""
     util = "n/a" if check.utilization is None else f"{check.utilization:.2f}"
-    verdict = "not checked" if check.passes is None else ("ok" if check.passes else "FAIL")
+    verdict = f"not checked: {check.not_made or 'no rating'}" if check.passes is None else ("ok" if check.passes else "FAIL")
     mark = "" if check.governs else "  (for information)"
     required = "n/a" if check.required is None else f"{sig(magnitude_in(check.required, check.unit))} {pretty_unit(check.unit)}"
     rated_value = magnitude_in(check.rated, check.unit)
