@@ -388,3 +388,44 @@ def test_the_tables_list_the_best_candidates_unless_all_are_asked_for():
     panel.settled()
     assert "candidates shown" not in panel.results.value
     assert panel.results.value.count("<tr><td") + panel.results.value.count("<tr class=chosen><td") > 2 * 7
+
+
+def test_the_chooser_gives_each_verdict_and_links_a_built_report(tmp_path):
+    from calc.review import serve
+
+    panel = DesignReview(DERIVED_EXAMPLE, reports=tmp_path, report_link=lambda pdf: serve.report_address(pdf, tmp_path))
+    assert [label for label, _ in panel.case_file.options] == ["indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
+    assert "calc report" not in panel.results.value  # not built yet
+    (tmp_path / "indexing-table.pdf").write_bytes(b"%PDF-1.4\n")
+    panel.reset.click()
+    address = "voila/files/" + (tmp_path / "indexing-table.pdf").relative_to(serve.served_root(tmp_path)).as_posix()
+    assert f'<a href="{address}" target="_blank">calc report</a>' in panel.results.value
+
+
+def test_a_case_named_like_the_summary_says_so_in_the_chooser(tmp_path):
+    import shutil
+
+    shutil.copy(EXAMPLE, tmp_path / "summary.toml")
+    panel = DesignReview(tmp_path / "summary.toml", reports=tmp_path / "reports", report_link=str)
+    assert "would be overwritten by the summary" in panel.message.value and "PASS" in panel.results.value
+
+
+def test_the_server_serves_the_folder_of_page_and_reports_and_only_the_reports_pdfs(tmp_path):
+    import re
+
+    from calc.review import serve
+    from tests.conftest import ROOT
+
+    # As make review runs it: the project is served, the PDFs directly in reports/ only.
+    reports = ROOT / "reports"
+    assert serve.served_root(reports) == ROOT
+    patterns = serve.allowed(reports)
+    allowed = lambda path: any(re.fullmatch(p, path, re.IGNORECASE) for p in patterns)  # noqa: E731 (as Voilà matches)
+    assert allowed("reports/indexing-table.pdf") and not allowed("reports/calc-report.ipynb") and not allowed("reports/x/y.pdf")
+    assert not allowed("cases/indexing-table.toml") and not allowed("indexing-table.pdf")
+    assert serve.report_address(reports / "axis 3.pdf", reports) == "voila/files/reports/axis%203.pdf"
+    argv = serve.command(8866, reports=reports)
+    assert f"--Voila.root_dir={ROOT}" in argv and f"--VoilaConfiguration.file_allowlist={patterns!r}" in argv
+    # A folder that holds the page: its PDFs are served from the top of it.
+    assert serve.allowed(ROOT / "calc") == [r"[^/]+\.pdf"]
+    assert serve.environment(EXAMPLE, tmp_path)[serve.REPORTS_VARIABLE] == str(tmp_path.resolve())

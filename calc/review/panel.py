@@ -70,11 +70,12 @@ class DesignReview:
         choices = sorted({*Path(cases or path.parent).glob("*.toml"), path})
         self.message = w.HTML()
         self.reports_folder, self.reports, labels = reports, {}, {p: p.name for p in choices}
+        self._note = ""  # what the page says of the reports while any case is shown
         if reports is not None:
             try:
                 rows = summary_rows(choices, str(reports))
             except CalcError as exc:
-                self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(str(exc))}'
+                self._note = f'<span style="color:{FAIL_COLOR}">no verdicts or reports: {typeset(str(exc))}</span>'
                 rows = []
             for p, row in zip(choices, rows):
                 labels[p] = f"{p.name} · {row['verdict']}"
@@ -124,7 +125,7 @@ class DesignReview:
         except CalcError as exc:
             self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(str(exc))}'
             return
-        self.case, self.message.value = case, ""
+        self.case, self.message.value = case, self._note
         self.specs = input_specs(case, ratios)
         self.controls = {}
         old = self.controls_box.children

@@ -10,22 +10,20 @@ sharing it on a network).
 
 The calc reports built in ``--reports`` (default ``reports/``: ``python -m calc report
 cases/*.toml --summary -o reports/``) are linked from the page. Voilà serves files only under the
-folder it serves (its ``root_dir``, the page's folder), through its ``/voila/files/`` handler and
-only those its ``VoilaConfiguration.file_allowlist`` names (by default images). So the server
-serves a folder of its own (:func:`site`): a copy of the page, and the reports' folder linked in
-as ``reports/``, of which only the PDFs are allowed (:data:`ALLOWED`); the page links
-``voila/files/reports/NAME.pdf`` (:func:`report_address`).
+folder it serves (``Voila.root_dir``, by default the page's folder), through its ``/voila/files/``
+handler, and only those its ``VoilaConfiguration.file_allowlist`` names (by default images); its
+file handler (tornado's) refuses a link that leads out of that folder. So the served folder is
+the one that holds both the page and the reports' folder (:func:`served_root`: the project, as
+``make review`` runs it), and only the PDFs directly in the reports' folder are allowed
+(:func:`allowed`); the page links them by their path under that folder (:func:`report_address`).
 """
 
 from __future__ import annotations
 
 import argparse
 import os
-import shutil
-import signal
-import subprocess
+import re
 import sys
-import tempfile
 from pathlib import Path
 from urllib.parse import quote
 
@@ -34,32 +32,35 @@ PAGE = Path(__file__).with_name("design-review.ipynb")
 CASE_VARIABLE = "CALC_REVIEW_CASE"
 REPORTS_VARIABLE = "CALC_REVIEW_REPORTS"
 IDLE_MINUTES = 10
-#: The served folder's link to the reports' folder, and the files of it that are served (the PDFs
-#: directly in it; Voilà's own deny list keeps refusing notebooks and Python files).
-REPORTS_LINK = "reports"
-ALLOWED = [rf"{REPORTS_LINK}/[^/]+\.pdf"]
 
 
-def site(folder: Path, reports: Path) -> Path:
-    """Lay out the served folder in ``folder``: a copy of the page and the link ``reports/`` to
-    the reports' folder; returns the page's path in it."""
-    page = folder / PAGE.name
-    shutil.copyfile(PAGE, page)
-    (folder / REPORTS_LINK).symlink_to(reports.resolve(), target_is_directory=True)
-    return page
+def served_root(reports: Path) -> Path:
+    """The folder Voilà serves: the nearest one that holds the page and the reports' folder."""
+    return Path(os.path.commonpath([PAGE.parent.resolve(), reports.resolve()]))
 
 
-def report_address(pdf: Path) -> str:
-    """The address of a report of the reports' folder, relative to the page."""
-    return f"voila/files/{REPORTS_LINK}/{quote(pdf.name)}"
+def _under_root(path: Path, reports: Path) -> str:
+    return path.resolve().relative_to(served_root(reports)).as_posix()
 
 
-def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINUTES, page: Path = PAGE) -> list[str]:
-    """The Voilà command line of the review ``page`` (in its served folder, :func:`site`); a
+def allowed(reports: Path) -> list[str]:
+    """The files Voilà may serve: the PDFs directly in ``reports`` (its own deny list keeps
+    refusing notebooks and Python files)."""
+    folder = _under_root(reports, reports)
+    return [("" if folder == "." else re.escape(folder) + "/") + r"[^/]+\.pdf"]
+
+
+def report_address(pdf: Path, reports: Path) -> str:
+    """The address of the report ``pdf`` (in ``reports``), relative to the page."""
+    return "voila/files/" + quote(_under_root(pdf, reports))
+
+
+def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINUTES, reports: Path = Path("reports")) -> list[str]:
+    """The Voilà command line of the review page, linking the reports of the folder ``reports``; a
     kernel whose page was closed is shut down after ``idle_seconds``."""
     return [
-        sys.executable, "-m", "voila", str(page), "--no-browser", f"--port={port}", f"--Voila.ip={ip}",
-        f"--VoilaConfiguration.file_allowlist={ALLOWED!r}",
+        sys.executable, "-m", "voila", str(PAGE), "--no-browser", f"--port={port}", f"--Voila.ip={ip}",
+        f"--Voila.root_dir={served_root(reports)}", f"--VoilaConfiguration.file_allowlist={allowed(reports)!r}",
         "--strip_sources=True", "--show_tracebacks=False", "--theme=light",
         # One kernel waits with the panel already drawn, so a page is ready at once; its
         # successor starts when a page takes it.
@@ -91,18 +92,8 @@ def main(argv=None) -> int:
         print(f"{case}: the case file does not exist", file=sys.stderr)
         return 2
     print(f"Design review of {case} at http://{'localhost' if args.ip == '127.0.0.1' else args.ip}:{args.port}/ (Ctrl-C stops it)")
-    # Voilà runs as a child, so that the served folder is removed when it stops (Ctrl-C, or a
-    # SIGTERM, which ends this process as SystemExit).
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))
-    with tempfile.TemporaryDirectory(prefix="calc-review-") as folder:
-        argv = command(args.port, args.ip, round(60 * args.idle_minutes), site(Path(folder), args.reports))
-        voila = subprocess.Popen(argv, env=environment(case, args.reports))
-        try:
-            return voila.wait()
-        except (KeyboardInterrupt, SystemExit):
-            voila.terminate()
-            voila.wait()
-            return 0
+    argv = command(args.port, args.ip, round(60 * args.idle_minutes), args.reports)
+    os.execve(argv[0], argv, environment(case, args.reports))
 
 
 if __name__ == "__main__":
