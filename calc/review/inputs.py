@@ -1,9 +1,11 @@
 """The inputs a reviewer changes: one :class:`InputSpec` per input, and a case with inputs replaced.
 
 An input is named by its key path in the case file (``motor.peak_torque``, ``profile[2].torque``
-for the second segment, ``coupling.temperature``); :func:`with_inputs` writes values at key paths
-into a copy of a case. The panel's controls are built from :func:`input_specs`, so a further input
-is one more line in :data:`SCALARS` (or one more rule for a list of tables like ``profile``).
+for the second segment, ``coupling.temperature``, ``mechanism.mass``, ``move[1].time``);
+:func:`with_inputs` writes values at key paths into a copy of a case (a mechanism's or a move's
+into the tables the motion was derived from, which derive it again). The panel's controls are
+built from :func:`input_specs`, so a further input is one more line in :data:`SCALARS` or
+:data:`MECHANISM` (or one more rule for a list of tables like ``profile`` or ``move``).
 """
 
 from __future__ import annotations
@@ -99,6 +101,8 @@ SCALARS = (
     ("coupling.temperature", "coupling temperature ϑ", "degC", "temperature", _temperature),
     ("accuracy.applied_torque", "applied torque T", "N*m", "torque", lambda t: (0.0, max(5 * t, 10.0))),
 )
+
+
 def _signed(v: float, floor: float = 10.0) -> tuple[float, float]:
     """From zero to five times the value on its own side, at least ``floor`` (a force or torque
     that may be left out, so zero)."""
@@ -138,6 +142,12 @@ def _unit_of(text) -> str:
     return "" if not isinstance(text, str) else NUMBER.match(text).group(2)
 
 
+def _as_written(text, kind: str, where: str) -> tuple[str, float]:
+    """A case file's value (read as its reader reads it) as its unit and its number in that unit."""
+    unit = _unit_of(text)
+    return unit, float(parse_quantity(text, kind, where).m_as(unit))
+
+
 def motion_specs(case: Case) -> list[InputSpec]:
     """The inputs of a case whose load cycle is derived from moves: its mechanism's, then each
     move's distance, time and ramps as the file gives them, and each dwell; in the units the file
@@ -152,24 +162,20 @@ def motion_specs(case: Case) -> list[InputSpec]:
             continue
         label, kind, units, reach, positive = MECHANISM[name]
         text = mechanism.get(name)
-        unit = units[inch_pound] if text is None else _unit_of(text)
-        v = 0.0 if text is None else float(parse_quantity(text, kind, f"{where}.{name}").m_as(unit))
+        unit, v = (units[inch_pound], 0.0) if text is None else _as_written(text, kind, f"{where}.{name}")
         specs.append(_spec(f"mechanism.{name}", f"mechanism: {label}", unit, v, *reach(v), positive=positive))
     for k, move in enumerate(tables["move"], start=1):
+        where = f"{case.path}: move[{k}]"
         if "dwell" in move:
-            t = parse_quantity(move["dwell"], "time", f"{case.path}: move[{k}].dwell")
-            unit = _unit_of(move["dwell"])
-            v = float(t.m_as(unit))
+            unit, v = _as_written(move["dwell"], "time", f"{where}.dwell")
             specs.append(_spec(f"move[{k}].dwell", f"{k} dwell: time t", unit, v, 0.0, max(3 * v, float(Q_(1, "s").m_as(unit))), positive=True))
             continue
-        unit = _unit_of(move["distance"])
-        v = float(parse_quantity(move["distance"], case.motion.mechanism.distance_kind, f"{case.path}: move[{k}].distance").m_as(unit))
+        unit, v = _as_written(move["distance"], case.motion.mechanism.distance_kind, f"{where}.distance")
         specs.append(_spec(f"move[{k}].distance", f"{k} move: distance s", unit, v, *_distance(v)))
-        time = parse_quantity(move["time"], "time", f"{case.path}: move[{k}].time")
+        time = parse_quantity(move["time"], "time", f"{where}.time")
         for name, label in MOVE_TIMES:
             if name in move:
-                unit = _unit_of(move[name])
-                v = float(parse_quantity(move[name], "time", f"{case.path}: move[{k}].{name}").m_as(unit))
+                unit, v = _as_written(move[name], "time", f"{where}.{name}")
                 # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
                 high = 3 * v if name == "time" else float(time.m_as(unit))
                 specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=True))
@@ -237,6 +243,13 @@ def with_inputs(case: Case, values: dict) -> Case:
 
     >>> with_inputs(case, {"motor.peak_torque": Q_(13, "N*m")}).motion is case.motion, changed.motion
     (True, None)
+
+    A mechanism's or a move's input goes into the tables the motion was derived from, which derive
+    it again as reading the file does (:func:`calc.sections.motion.derive`; eta and μ as bare numbers):
+
+    >>> slower = with_inputs(case, {"move[1].time": Q_(1, "s")})
+    >>> slower.motion.tables["move"][0]["time"], round(slower.motion.peak_speed.m_as("rpm"), 2), case.motion.tables["move"][0]["time"]
+    ('1 second', 17.65, '0.5 s')
     """
     p = case.profile
     durations, torques = p.durations.m_as("s").copy(), p.torques.m_as("N*m").copy()
