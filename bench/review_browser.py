@@ -24,6 +24,7 @@ import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+from urllib.parse import urljoin
 
 ROOT = Path(__file__).resolve().parent.parent
 CHROMIUM = Path("/usr/bin/chromium")
@@ -47,12 +48,14 @@ class Server:
 
 
 @contextlib.contextmanager
-def served(case: Path | None = None, timeout: float = 90.0):
+def served(case: Path | None = None, timeout: float = 90.0, reports: Path | None = None):
     """The review page served on a free port of 127.0.0.1, opening ``case`` (by default what
-    ``make review`` opens), once its first kernel waits with the panel drawn (as for a reviewer who
+    ``make review`` opens) and linking the reports of the folder ``reports`` (by default
+    ``reports/``), once its first kernel waits with the panel drawn (as for a reviewer who
     opens a page some time after ``make review``)."""
     port = _free_port()
     chosen = [] if case is None else ["--cases", str(case.parent), "--case", case.name]
+    chosen += [] if reports is None else ["--reports", str(reports)]
     env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
     start = time.perf_counter()
     server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port), *chosen], cwd=ROOT, env=env,
@@ -89,6 +92,8 @@ class Visit:
     seen: list = field(default_factory=list)  # (what, the results' text after it)
     shots: list = field(default_factory=list)  # screenshot files
     burst: tuple = ()  # (values typed in a row, updates drawn for them, the results' text after)
+    choices: list = field(default_factory=list)  # the case chooser's options as the page shows them
+    report: tuple = ()  # the calc report's link as first shown: (address, HTTP status, content type, first bytes)
 
     @property
     def times(self) -> list[float]:
@@ -133,6 +138,12 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
             visit.shots.append(shots / "review-first.png")
             page.screenshot(path=str(visit.shots[-1]))
             visit.seen.append(("first", page.inner_text(RESULTS)))
+            visit.choices = page.locator(".design-review select").first.locator("option").all_inner_texts()
+            link = page.locator(f"{RESULTS} a", has_text="calc report")
+            if link.count():  # asked for as the browser would, from the page's address
+                href = link.first.get_attribute("href")
+                answer = page.request.get(urljoin(page.url, href))
+                visit.report = (href, answer.status, answer.headers.get("content-type"), answer.body()[:5])
             for _ in range(repeat):
                 for label, value in changes:
                     generation = _generation(page)

@@ -152,12 +152,12 @@ def read_case(path) -> Case:
         # a control character (an escape sequence, a line break) means nothing in any of them.
         raise CalcError(f"{top.where('title')}: expected one line of printable text, found the control character U+{ord(control):04X}")
     case = Case(path=path, title=title, profile=None, raw=raw)
-    motion.read(top, case)
-    if case.motion is None:
+    derived = motion.derive(top)
+    if derived is None:
         case.profile = duty.read(top)
     drive.read(top, case)
-    if case.motion is not None and case.motion.J_L is not None:
-        case.load_inertia = case.motion.J_L
+    if derived is not None:
+        motion.apply(case, derived)  # after [load], whose inertia the mechanism gives instead
     gearbox.read(top, case)
     case.sections = {name: data[name] for name in FURTHER if name in data}
     return case

@@ -5,6 +5,8 @@ Expected numbers are worked by hand from the example case (cases/indexing-table.
 T_2max = T_1B · i · f_s · η, with f_s = 1.3 at Z_h = 1800 /h and η = 0.97 (NPT035-10).
 """
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -14,7 +16,7 @@ from calc.sections import evaluate as evaluate_case
 from calc.review import DesignReview, evaluated, input_specs, results_html, with_changes, with_inputs
 from calc.review.inputs import nice_step
 
-from .conftest import EXAMPLE
+from .conftest import DERIVED_EXAMPLE, EXAMPLE
 
 
 def evaluate(case) -> dict:
@@ -264,18 +266,115 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     assert "missing.toml: the case file does not exist" in capsys.readouterr().err
 
 
-def test_a_derived_cycle_stays_derived_until_a_segment_is_moved():
-    from tests.conftest import DERIVED_EXAMPLE
-
+def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     panel = DesignReview(DERIVED_EXAMPLE)
-    assert panel.controls["profile[1].torque"].value == 7.8  # the control's step rounds 7.8269 N·m
-    assert panel.changed_case().motion is panel.case.motion  # but the case keeps its own value
+    specs = {s.key: s for s in panel.specs}
+    assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque", "mechanism.process_torque",
+                           "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].jerk_time", "move[2].dwell",
+                           "motor.peak_torque", "motor.inertia", "coupling.temperature", "accuracy.applied_torque"]
+    # In the file's units: the index of 90 deg, the table's 1500 kg·cm²; the friction 3 N·m, the
+    # process torque left out (0 N·m, its default).
+    assert (specs["move[1].distance"].unit, specs["move[1].distance"].value) == ("deg", 90.0)
+    assert specs["mechanism.inertia"].text == "mechanism: load inertia J_L [kg·cm²]" and specs["mechanism.inertia"].value == 1500.0
+    assert (specs["mechanism.process_torque"].low, specs["mechanism.process_torque"].value) == (0.0, 0.0)
+    # A ramp reaches up to the whole move (0.5 s), so a reviewer can make the move impossible.
+    assert specs["move[1].accel_time"].high == 0.5 and specs["move[1].jerk_time"].high == 0.5
+    assert all(s.low > 0 for k, s in specs.items() if k.startswith("move[") and not k.endswith("distance"))
     assert "Motion: rotary from its moves · peak speed 42.86 rpm" in panel.results.value
+    assert panel.changed_case().motion is panel.case.motion  # no control moved: the case as read
+
+
+def test_the_inch_pound_example_offers_its_inputs_in_its_units():
+    from tests.conftest import ROOT
+
+    specs = {s.key: s for s in input_specs(read_case(ROOT / "cases" / "linear-axis-inch.toml"))}
+    assert {k: (specs[k].unit, specs[k].value) for k in ("mechanism.mass", "mechanism.lead", "mechanism.screw_inertia",
+                                                         "mechanism.eta", "mechanism.incline", "move[3].distance")} == {
+        "mechanism.mass": ("lb", 60.0), "mechanism.lead": ("in", 1.0), "mechanism.screw_inertia": ("lb*in**2", 2.7),
+        "mechanism.eta": ("", 0.9), "mechanism.incline": ("deg", 90.0), "move[3].distance": ("in", 10.0)}
+    # The process force the file leaves out comes in the mechanism's units too; the way down keeps its sign.
+    assert specs["mechanism.force"].text == "mechanism: process force F_p [lbf]"
+    assert (specs["move[1].distance"].low, specs["move[1].distance"].high, specs["move[1].distance"].value) == (-50.0, -1.0, -10.0)
+    assert "load.inertia" not in specs  # the mechanism gives J_L
+    assert specs["mechanism.eta"].low == 0.5 and specs["mechanism.eta"].high == 1.0
+
+
+def test_a_heavier_load_is_derived_again_as_reading_the_file_derives_it(write_case):
+    from tests.conftest import ROOT
+
+    case = read_case(ROOT / "cases" / "linear-axis-inch.toml")
+    changed = with_inputs(case, {"mechanism.mass": Q_(80, "lb"), "mechanism.eta": Q_(0.8, "")})
+    # J_L = m·r² + J_M with r = p / 2π = 1 in / 2π = 0.159155 in: 80 lb · 0.0253303 in² + 2.7 lb·in²
+    # = 4.72642 lb·in² (13.8314 kg·cm²); the file's 60 lb gave 4.21982 lb·in².
+    assert changed.load_inertia.m_as("lb*in**2") == pytest.approx(4.72642, rel=1e-5)
+    assert case.load_inertia.m_as("lb*in**2") == pytest.approx(4.21982, rel=1e-5)
+    assert changed.motion.tables["mechanism"]["eta"] == 0.8 and case.motion.tables["mechanism"]["mass"] == "60 lb"
+    # The same as a file that says so.
+    text = (ROOT / "cases" / "linear-axis-inch.toml").read_text().replace('mass = "60 lb"', 'mass = "80 lb"').replace("eta = 0.90", "eta = 0.8")
+    assert evaluate(changed) == evaluate(dataclasses.replace(read_case(write_case(text)), path=case.path))
+
+
+TRAPEZOID = """title = "a quarter turn, trapezoid"
+[gearbox]
+ratio = 10
+[mechanism]
+type = "rotary"
+inertia = "1500 kg*cm**2"
+[[move]]
+distance = "90 deg"
+time = "0.5 s"
+accel_time = "0.15 s"
+[[move]]
+dwell = "1.0 s"
+"""
+
+
+def test_move_times_set_the_accelerating_torque(write_case):
+    # A trapezoid of φ = π/2 rad in t with ramps t_a: α_2 = φ / (t_a·(t − t_a)), T = J_L·α_2 (no friction).
+    # t = 0.5 s, t_a = 0.15 s: α_2 = 1.570796 / (0.15 · 0.35) = 29.9199 rad/s², T = 0.15 kg·m² · α_2 = 4.48799 N·m.
+    case = read_case(write_case(TRAPEZOID))
+    assert case.profile.torques[0].m_as("N*m") == pytest.approx(4.48799, rel=1e-5)
+    # t = 1.0 s: α_2 = 1.570796 / (0.15 · 0.85) = 12.3200 rad/s², T = 1.84800 N·m.
+    longer = with_inputs(case, {"move[1].time": Q_(1.0, "s")})
+    assert longer.profile.torques[0].m_as("N*m") == pytest.approx(1.84800, rel=1e-5)
+    # Every time doubled (t = 1.0 s, t_a = 0.3 s): α_2 = φ / (4·t_a·(t − t_a)), a quarter: T = 1.12200 N·m.
+    slower = with_inputs(case, {"move[1].time": Q_(1.0, "s"), "move[1].accel_time": Q_(0.3, "s")})
+    assert slower.profile.torques[0].m_as("N*m") == pytest.approx(4.48799 / 4, rel=1e-5)
+    # Every result follows: ED = 1.0 s / 2.0 s = 50 % (it was 0.5 / 1.5 = 33.3 %), peak speed
+    # ω = φ / (t − t_a) = 1.570796 / 0.7 = 2.24399 rad/s = 21.4286 rpm.
+    r = evaluate(slower)
+    assert r["duty"]["ED"]["value"] == pytest.approx(50.0) and evaluate(case)["duty"]["ED"]["value"] == pytest.approx(100 / 3)
+    assert r["motion"]["peak_speed"]["value"] == pytest.approx(21.4286, rel=1e-5)
+    assert r["motion"]["segments"][0]["torque"]["value"] == pytest.approx(1.12200, rel=1e-5)
+
+
+def test_an_impossible_move_shows_the_input_error_and_the_panel_recovers():
+    panel = DesignReview(DERIVED_EXAMPLE)
+    first = panel.results.value
+    panel.controls["move[1].accel_time"].value = 0.3  # 0.3 s + 0.3 s > 0.5 s
+    panel.settled()
+    assert "input error</b>: " in panel.results.value and "Governing checks" not in panel.results.value
+    assert "move[1].accel_time: expected acceleration and deceleration times that fit in the move" in panel.results.value
+    assert "found 0.3 s + 0.3 s &gt; 0.5 s" in panel.results.value
+    panel.controls["move[1].accel_time"].value = 0.15
+    panel.settled()
+    assert panel.results.value.replace(f'data-generation="{panel.generation}"', "") == first.replace('data-generation="1"', "")
+    panel.controls["move[1].jerk_time"].value = 0.1  # over half of 0.15 s
+    panel.settled()
+    assert "move[1].jerk_time: expected a jerk time of at most half the acceleration and the deceleration time (0.075 s)" in panel.results.value
+    panel.controls["move[1].jerk_time"].value = 0.03
+    panel.settled()
+    assert "PASS" in panel.results.value and "peak speed 42.86 rpm" in panel.results.value
+
+
+def test_a_recorded_cycle_keeps_its_segments_and_becomes_typed_when_one_is_moved(write_case, tmp_path):
+    (tmp_path / "rec.csv").write_text("time [s],speed [rad/s]\n0,0\n1,2\n2,2\n3,0\n")
+    path = write_case(TRAPEZOID.split("[[move]]")[0] + '[drive_record]\nfile = "rec.csv"\n')
+    panel = DesignReview(path)
+    assert "profile[1].torque" in panel.controls and not any(k.startswith("move[") for k in panel.controls)
     panel.controls["profile[1].torque"].value = 9.0
     panel.settled()
     assert panel.changed_case().motion is None and "Load cycle: the segments as changed here" in panel.results.value
-    panel.reset.click()
-    assert "Motion: rotary" in panel.results.value
 
 
 def test_the_tables_list_the_best_candidates_unless_all_are_asked_for():
@@ -289,3 +388,44 @@ def test_the_tables_list_the_best_candidates_unless_all_are_asked_for():
     panel.settled()
     assert "candidates shown" not in panel.results.value
     assert panel.results.value.count("<tr><td") + panel.results.value.count("<tr class=chosen><td") > 2 * 7
+
+
+def test_the_chooser_gives_each_verdict_and_links_a_built_report(tmp_path):
+    from calc.review import serve
+
+    panel = DesignReview(DERIVED_EXAMPLE, reports=tmp_path, report_link=lambda pdf: serve.report_address(pdf, tmp_path))
+    assert [label for label, _ in panel.case_file.options] == ["indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
+    assert "calc report" not in panel.results.value  # not built yet
+    (tmp_path / "indexing-table.pdf").write_bytes(b"%PDF-1.4\n")
+    panel.reset.click()
+    address = "voila/files/" + (tmp_path / "indexing-table.pdf").relative_to(serve.served_root(tmp_path)).as_posix()
+    assert f'<a href="{address}" target="_blank">calc report</a>' in panel.results.value
+
+
+def test_a_case_named_like_the_summary_says_so_in_the_chooser(tmp_path):
+    import shutil
+
+    shutil.copy(EXAMPLE, tmp_path / "summary.toml")
+    panel = DesignReview(tmp_path / "summary.toml", reports=tmp_path / "reports", report_link=str)
+    assert "would be overwritten by the summary" in panel.message.value and "PASS" in panel.results.value
+
+
+def test_the_server_serves_the_folder_of_page_and_reports_and_only_the_reports_pdfs(tmp_path):
+    import re
+
+    from calc.review import serve
+    from tests.conftest import ROOT
+
+    # As make review runs it: the project is served, the PDFs directly in reports/ only.
+    reports = ROOT / "reports"
+    assert serve.served_root(reports) == ROOT
+    patterns = serve.allowed(reports)
+    allowed = lambda path: any(re.fullmatch(p, path, re.IGNORECASE) for p in patterns)  # noqa: E731 (as Voilà matches)
+    assert allowed("reports/indexing-table.pdf") and not allowed("reports/calc-report.ipynb") and not allowed("reports/x/y.pdf")
+    assert not allowed("cases/indexing-table.toml") and not allowed("indexing-table.pdf")
+    assert serve.report_address(reports / "axis 3.pdf", reports) == "voila/files/reports/axis%203.pdf"
+    argv = serve.command(8866, reports=reports)
+    assert f"--Voila.root_dir={ROOT}" in argv and f"--VoilaConfiguration.file_allowlist={patterns!r}" in argv
+    # A folder that holds the page: its PDFs are served from the top of it.
+    assert serve.allowed(ROOT / "calc") == [r"[^/]+\.pdf"]
+    assert serve.environment(EXAMPLE, tmp_path)[serve.REPORTS_VARIABLE] == str(tmp_path.resolve())

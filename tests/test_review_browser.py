@@ -5,13 +5,17 @@ changes the ratio and a torque through the page's own controls, and the verdict 
 of the tables follow; values typed in a row end on the last one. The times are printed (page ready, each change until the results follow),
 not asserted: a shared machine makes a timed assertion flaky. The screenshots are kept in
 ``build/screenshots/``.
+
+On the derived example, a move's time and the mechanism's inertia are changed, an impossible ramp
+shows its input error, and the calc report linked beside the verdict answers as a PDF.
 """
 
 import pytest
 
 from bench.review_browser import CHROMIUM, review_in_browser, served
+from calc.review import serve
 
-from .conftest import EXAMPLE, ROOT
+from .conftest import DERIVED_EXAMPLE, EXAMPLE, ROOT
 
 SHOTS = ROOT / "build" / "screenshots"
 #: (label as the page shows it, value), on the typed example whose numbers test_review.py works by
@@ -62,3 +66,52 @@ def test_a_reviewer_changes_the_ratio_and_a_torque_and_the_results_follow():
     # Values typed in a row: the page ends on the last (17 N·m · 10 · 1.3 · 0.97 = 214.4 N·m), drawn
     # at most once each (changes that arrive while one is drawn are drawn together).
     assert 1 <= drawn <= typed and "214.4 N·m" in after
+
+
+#: On the derived example (cases/indexing-table.toml): the index in 1.0 s instead of 0.5 s lowers
+#: the peak speed (42.86 to 17.65 rpm) and the starts per hour (Z_h 2400 to 1800 /h: f_s 1.6 to 1.3,
+#: so T_2max = 12 · 10 · 1.3 · 0.97 = 151.3 N·m instead of 186.2 N·m, test_review.py); a ramp of
+#: 0.3 s in 0.5 s is impossible (an input error), 0.15 s again recovers.
+MOVE_CHANGES = [
+    ("1 move: time t [s]", "1"),
+    ("1 move: time t [s]", "0.5"),
+    ("mechanism: load inertia J_L [kg·cm²]", "3000"),
+    ("mechanism: load inertia J_L [kg·cm²]", "1500"),
+    ("1 move: accel time t_a [s]", "0.3"),
+    ("1 move: accel time t_a [s]", "0.15"),
+]
+
+
+def tiny_pdf(path):
+    """A one-page PDF (matplotlib's, in milliseconds) standing for a calc report: building a real
+    one runs the report notebook and xelatex (11 s on this machine, and only where TeX is installed), which the report tests
+    cover; here only its serving is tested."""
+    from matplotlib.figure import Figure
+
+    Figure(figsize=(1, 1)).savefig(path, format="pdf")
+
+
+def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
+    tiny_pdf(tmp_path / "indexing-table.pdf")
+    with served(DERIVED_EXAMPLE, reports=tmp_path) as server:
+        visit = review_in_browser(server.url, SHOTS / "derived", MOVE_CHANGES)
+    print(f"\nserver ready: {server.started:.2f} s; page ready: {visit.ready:.2f} s")
+    for what, t in visit.changes:
+        print(f"  {what}: {t:.3f} s")
+    print(f"per change: median {visit.median:.3f} s, maximum {max(visit.times):.3f} s (budget 0.3 s median)")
+    print(f"calc report: {visit.report}")
+    seen = dict(visit.seen)
+    first = seen["first"]
+    assert first.startswith("PASS") and "186.2 N·m" in first and "42.86 rpm" in first
+    slower = seen["1 move: time t [s] = 1"]
+    assert slower.startswith("PASS") and "151.3 N·m" in slower and "17.65 rpm" in slower and "186.2 N·m" not in slower
+    assert seen["1 move: time t [s] = 0.5"] == first
+    assert "3000 kg·cm²" in seen["mechanism: load inertia J_L [kg·cm²] = 3000"] and seen["mechanism: load inertia J_L [kg·cm²] = 1500"] == first
+    impossible = seen["1 move: accel time t_a [s] = 0.3"]
+    assert impossible.startswith("input error") and "found 0.3 s + 0.3 s > 0.5 s" in impossible and "Governing checks" not in impossible
+    assert seen["1 move: accel time t_a [s] = 0.15"] == first
+    # The chooser gives each case's verdict; the built report is linked, and served as a PDF.
+    assert [c.replace("\xa0", " ") for c in visit.choices] == ["indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
+    href, status, content_type, head = visit.report
+    assert href == serve.report_address(tmp_path / "indexing-table.pdf", tmp_path)
+    assert status == 200 and content_type == "application/pdf" and head == b"%PDF-"

@@ -1,9 +1,11 @@
 """The inputs a reviewer changes: one :class:`InputSpec` per input, and a case with inputs replaced.
 
 An input is named by its key path in the case file (``motor.peak_torque``, ``profile[2].torque``
-for the second segment, ``coupling.temperature``); :func:`with_inputs` writes values at key paths
-into a copy of a case. The panel's controls are built from :func:`input_specs`, so a further input
-is one more line in :data:`SCALARS` (or one more rule for a list of tables like ``profile``).
+for the second segment, ``coupling.temperature``, ``mechanism.mass``, ``move[1].time``);
+:func:`with_inputs` writes values at key paths into a copy of a case (a mechanism's or a move's
+into the tables the motion was derived from, which derive it again). The panel's controls are
+built from :func:`input_specs`, so a further input is one more line in :data:`SCALARS` or
+:data:`MECHANISM` (or one more rule for a list of tables like ``profile`` or ``move``).
 """
 
 from __future__ import annotations
@@ -16,9 +18,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..case import Case
+from ..case import Case, Table
 from ..profile import Profile
-from ..units import Q_, parse_quantity, pretty_unit
+from ..sections import motion as motion_section
+from ..units import NUMBER, Q_, parse_quantity, pretty_unit
 
 #: Key paths of the inputs that the case keeps as its own fields (the other sections keep their
 #: tables raw until evaluated, so their key paths are written into those tables).
@@ -29,6 +32,8 @@ CASE_FIELDS = {
     "load.inertia": "load_inertia",
 }
 _SEGMENT = re.compile(r"profile\[(\d+)\]\.(duration|torque)$")
+#: Key paths of the tables a motion is derived from: ``mechanism.mass``, ``move[2].time``.
+_MOTION = re.compile(r"(mechanism)\.(\w+)$|(move)\[(\d+)\]\.(\w+)$")
 
 
 @dataclass(frozen=True)
@@ -64,9 +69,9 @@ def nice_step(span: float, pixels: int = 200) -> float:
     return next(m * power for m in (1, 2, 5, 10) if m * power >= raw)
 
 
-def _spec(key, label, unit, value, low, high, options=()) -> InputSpec:
+def _spec(key, label, unit, value, low, high, options=(), positive=False) -> InputSpec:
     step = nice_step(high - low)
-    low = max(low, step) if key.endswith(".duration") else low  # a segment lasts some time
+    low = max(low, step) if positive else low  # a segment lasts some time, a mass is some
     on_step = lambda x: round(round(x / step) * step, 12)  # noqa: E731 (no 0.30000000000000004 in a field)
     return InputSpec(key, label, unit, on_step(low), on_step(high), step, on_step(value) if not options else value, options)
 
@@ -96,6 +101,87 @@ SCALARS = (
     ("coupling.temperature", "coupling temperature ϑ", "degC", "temperature", _temperature),
     ("accuracy.applied_torque", "applied torque T", "N*m", "torque", lambda t: (0.0, max(5 * t, 10.0))),
 )
+
+
+def _signed(v: float, floor: float = 10.0) -> tuple[float, float]:
+    """From zero to five times the value on its own side, at least ``floor`` (a force or torque
+    that may be left out, so zero)."""
+    reach = max(5 * abs(v), floor)
+    return (-reach, 0.0) if v < 0 else (0.0, reach)
+
+
+def _distance(v: float) -> tuple[float, float]:
+    """A tenth to five times a move's distance, on its side (a move never has none)."""
+    return (5 * v, v / 10) if v < 0 else (v / 10, 5 * v)
+
+
+#: The inputs of a mechanism: key, label, kind, unit (SI, inch-pound) where the file leaves it
+#: out, range rule, above zero. The radius and own inertia follow the type (:data:`OWN_KEYS`).
+MECHANISM = {
+    "inertia": ("load inertia J_L", "inertia", ("kg*cm**2", "lb*in**2"), _scaled, True),
+    "friction_torque": ("friction torque T_f", "torque", ("N*m", "lbf*in"), _signed, False),
+    "process_torque": ("process torque T_p", "torque", ("N*m", "lbf*in"), _signed, False),
+    "mass": ("moved mass m", "mass", ("kg", "lb"), _scaled, True),
+    "friction_coefficient": ("friction coefficient μ", "dimensionless", ("", ""), lambda v: (0.0, max(5 * v, 0.2)), False),
+    "incline": ("incline θ", "angle", ("deg", "deg"), lambda _v: (-90.0, 90.0), False),
+    "force": ("process force F_p", "force", ("N", "lbf"), _signed, False),
+    "eta": ("efficiency η", "dimensionless", ("", ""), lambda _v: (0.5, 1.0), True),
+    "lead": ("screw lead p", "length", ("mm", "in"), _scaled, True),
+    "pitch_diameter": ("pinion pitch diameter d", "length", ("mm", "in"), _scaled, True),
+    "pulley_diameter": ("pulley diameter d", "length", ("mm", "in"), _scaled, True),
+    **{own: (f"{what} inertia J_M", "inertia", ("kg*cm**2", "lb*in**2"), _signed, False)
+       for own, what in (("screw_inertia", "screw"), ("pinion_inertia", "pinion"), ("pulley_inertia", "pulley"))},
+}
+#: A move's inputs: its time, and its ramps within it (so a ramp can be made too long for the move).
+MOVE_TIMES = (("time", "time t"), ("accel_time", "accel time t_a"), ("decel_time", "decel time t_d"), ("jerk_time", "jerk time t_j"))
+_INCH_POUND = re.compile(r"\b(in|inch|ft|foot|lb|lbf|pound|pound_force|oz)\b")
+
+
+def _unit_of(text) -> str:
+    """The unit a case file writes a value in (``"1.000 in"`` → ``in``; a bare number: none)."""
+    return "" if not isinstance(text, str) else NUMBER.match(text).group(2)
+
+
+def _as_written(text, kind: str, where: str) -> tuple[str, float]:
+    """A case file's value (read as its reader reads it) as its unit and its number in that unit."""
+    unit = _unit_of(text)
+    return unit, float(parse_quantity(text, kind, where).m_as(unit))
+
+
+def motion_specs(case: Case) -> list[InputSpec]:
+    """The inputs of a case whose load cycle is derived from moves: its mechanism's, then each
+    move's distance, time and ramps as the file gives them, and each dwell; in the units the file
+    writes them (an input it leaves out, in the units of the rest of the mechanism)."""
+    tables = case.motion.tables
+    mechanism = tables["mechanism"]
+    where = f"{case.path}: mechanism"
+    inch_pound = any(_INCH_POUND.search(_unit_of(v)) for k, v in mechanism.items() if k in MECHANISM)
+    specs = []
+    for name in motion_section.keys_of(mechanism["type"]):
+        if name not in MECHANISM:
+            continue
+        label, kind, units, reach, positive = MECHANISM[name]
+        text = mechanism.get(name)
+        unit, v = (units[inch_pound], 0.0) if text is None else _as_written(text, kind, f"{where}.{name}")
+        specs.append(_spec(f"mechanism.{name}", f"mechanism: {label}", unit, v, *reach(v), positive=positive))
+    for k, move in enumerate(tables["move"], start=1):
+        where = f"{case.path}: move[{k}]"
+        if "dwell" in move:
+            unit, v = _as_written(move["dwell"], "time", f"{where}.dwell")
+            specs.append(_spec(f"move[{k}].dwell", f"{k} dwell: time t", unit, v, 0.0, max(3 * v, float(Q_(1, "s").m_as(unit))), positive=True))
+            continue
+        unit, v = _as_written(move["distance"], case.motion.mechanism.distance_kind, f"{where}.distance")
+        specs.append(_spec(f"move[{k}].distance", f"{k} move: distance s", unit, v, *_distance(v)))
+        time = parse_quantity(move["time"], "time", f"{where}.time")
+        for name, label in MOVE_TIMES:
+            if name in move:
+                unit, v = _as_written(move[name], "time", f"{where}.{name}")
+                # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
+                high = 3 * v if name == "time" else float(time.m_as(unit))
+                specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=True))
+    return specs
+
+
 #: Values a section takes when its file leaves them out (the coupling's temperature, E9).
 DEFAULTS = {"coupling.temperature": "20 degC"}
 
@@ -113,21 +199,30 @@ def value_at(case: Case, key: str, unit: str, kind: str):
     return float(parse_quantity(table.get(name, DEFAULTS.get(key)), kind, f"{case.path}: {key}").m_as(unit))
 
 
+def segment_specs(case: Case) -> list[InputSpec]:
+    """Each segment's duration and torque (a pause has no torque)."""
+    specs, p = [], case.profile
+    for k, (phase, t, T) in enumerate(zip(p.phases, p.durations.m_as("s"), p.torques.m_as("N*m")), start=1):
+        specs.append(_spec(f"profile[{k}].duration", f"{k} {phase}: duration t", "s", t, 0.0, max(3 * t, 1.0), positive=True))
+        if phase != "pause":
+            specs.append(_spec(f"profile[{k}].torque", f"{k} {phase}: torque T_2", "N*m", T, *_torque_range(T)))
+    return specs
+
+
 def input_specs(case: Case, ratios=()) -> list[InputSpec]:
     """The inputs of ``case`` the panel offers, in the order it shows them: the ratio (a choice
-    among ``ratios``, the catalog's), each segment's duration and torque, then :data:`SCALARS`."""
+    among ``ratios``, the catalog's); the mechanism's and the moves' where the case derives its
+    load cycle from moves (:func:`motion_specs`), else each segment's duration and torque; then
+    :data:`SCALARS` (but the load's inertia where the mechanism gives it)."""
     specs = []
     if case.ratio is not None:
         r = float(case.ratio.m_as(""))
         specs.append(_spec("gearbox.ratio", "gearbox ratio i", "", r, 0, 1, options=tuple(sorted({*ratios, r}))))
-    p = case.profile
-    for k, (phase, t, T) in enumerate(zip(p.phases, p.durations.m_as("s"), p.torques.m_as("N*m")), start=1):
-        specs.append(_spec(f"profile[{k}].duration", f"{k} {phase}: duration t", "s", t, 0.0, max(3 * t, 1.0)))
-        if phase != "pause":
-            specs.append(_spec(f"profile[{k}].torque", f"{k} {phase}: torque T_2", "N*m", T, *_torque_range(T)))
+    moves = case.motion is not None and bool(case.motion.moves)
+    specs += motion_specs(case) if moves else segment_specs(case)
     for key, label, unit, kind, reach in SCALARS:
         v = value_at(case, key, unit, kind)
-        if v is not None:
+        if v is not None and not (moves and key == "load.inertia"):  # the mechanism gives J_L
             specs.append(_spec(key, label, unit, v, *reach(v)))
     return specs
 
@@ -148,20 +243,34 @@ def with_inputs(case: Case, values: dict) -> Case:
 
     >>> with_inputs(case, {"motor.peak_torque": Q_(13, "N*m")}).motion is case.motion, changed.motion
     (True, None)
+
+    A mechanism's or a move's input goes into the tables the motion was derived from, which derive
+    it again as reading the file does (:func:`calc.sections.motion.derive`; eta and μ as bare numbers):
+
+    >>> slower = with_inputs(case, {"move[1].time": Q_(1, "s")})
+    >>> slower.motion.tables["move"][0]["time"], round(slower.motion.peak_speed.m_as("rpm"), 2), case.motion.tables["move"][0]["time"]
+    ('1 second', 17.65, '0.5 s')
     """
     p = case.profile
     durations, torques = p.durations.m_as("s").copy(), p.torques.m_as("N*m").copy()
     fields, sections = {}, copy.deepcopy(case.sections)
+    tables = copy.deepcopy(case.motion.tables) if case.motion is not None else {}
+    moved = False
     for key, q in values.items():
-        segment = _SEGMENT.match(key)
-        if segment:
+        segment, motion = _SEGMENT.match(key), _MOTION.match(key)
+        if motion:
+            name = motion.group(2) or motion.group(5)
+            table = tables["mechanism"] if motion.group(1) else tables["move"][int(motion.group(4)) - 1]
+            table[name] = float(q.magnitude) if q.unitless else _text(q)  # eta and μ as the file writes them: bare numbers
+            moved = True
+        elif segment:
             k, what = int(segment.group(1)) - 1, segment.group(2)
             (durations if what == "duration" else torques)[k] = q.m_as("s" if what == "duration" else "N*m")
         elif key in CASE_FIELDS:
             fields[CASE_FIELDS[key]] = q
         else:
             section, name = key.split(".", 1)
-            sections[section][name] = f"{q.magnitude:.12g} {q.units:D}"  # pint's own names, which it reads back
+            sections[section][name] = _text(q)
     segments = [
         (phase, Q_(durations[k], "s"), None if phase == "pause" else p.speeds[k], None if phase == "pause" else Q_(torques[k], "N*m"))
         for k, phase in enumerate(p.phases)
@@ -169,7 +278,15 @@ def with_inputs(case: Case, values: dict) -> Case:
     profile = Profile.from_segments(segments, where=f"{case.path}: profile")
     same = np.allclose(durations, p.durations.m_as("s"), rtol=1e-9) and np.allclose(torques, p.torques.m_as("N*m"), rtol=1e-9)
     # Segments changed by hand are typed: the motion they were derived from no longer holds.
-    return dataclasses.replace(case, profile=profile, motion=case.motion if same else None, sections=sections, **fields)
+    changed = dataclasses.replace(case, profile=profile, motion=case.motion if same else None, sections=sections, **fields)
+    if moved:  # the cycle derived again from the changed tables, as reading the file derives it
+        motion_section.apply(changed, motion_section.derive(Table(case.path, "", tables, motion_section.TABLES)))
+    return changed
+
+
+def _text(q) -> str:
+    """A quantity as a case file's text, in pint's own unit names, which it reads back."""
+    return f"{q.magnitude:.12g} {q.units:D}"
 
 
 def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_peak_torque=None, motor_inertia=None,

@@ -22,6 +22,7 @@ from pathlib import Path
 
 from ..case import Case, read_case
 from ..errors import CalcError
+from ..publish import summary_rows
 from ..units import Q_, pretty_unit
 from .inputs import InputSpec, input_specs, with_inputs
 from .view import FAIL_COLOR, evaluated, results_html, typeset
@@ -55,20 +56,36 @@ class DesignReview:
     one's ``value`` (by hand or in code) re-evaluates the case into ``results`` (the text) and the
     figures. ``report_link(path)``, where given, returns the address of a case's report,
     which the panel links beside the verdict.
+
+    ``reports``, where given, is the folder of the calc reports (``python -m calc report
+    cases/*.toml --summary -o reports/``): the case chooser shows each case's verdict as its file
+    reads (:func:`calc.publish.summary_rows`), and the link is shown only where the case's report
+    was built, ``report_link`` then getting the report's path.
     """
 
-    def __init__(self, case_path, report_link=None, cases=None):
+    def __init__(self, case_path, report_link=None, cases=None, reports=None):
         import ipywidgets as w
 
         path = Path(case_path)
         choices = sorted({*Path(cases or path.parent).glob("*.toml"), path})
-        self.case_file = w.Dropdown(options=[(p.name, p) for p in choices], value=path, description="case",
+        self.message = w.HTML()
+        self.reports_folder, self.reports, labels = reports, {}, {p: p.name for p in choices}
+        self._note = ""  # what the page says of the reports while any case is shown
+        if reports is not None:
+            try:
+                rows = summary_rows(choices, str(reports))
+            except CalcError as exc:
+                self._note = f'<span style="color:{FAIL_COLOR}">no verdicts or reports: {typeset(str(exc))}</span>'
+                rows = []
+            for p, row in zip(choices, rows):
+                labels[p] = f"{p.name} · {row['verdict']}"
+                self.reports[p] = Path(row["report_path"])
+        self.case_file = w.Dropdown(options=[(labels[p], p) for p in choices], value=path, description="case",
                                     style={"description_width": "3em"}, layout=w.Layout(flex="1 1 auto", width="auto"))
         self.case_file.observe(lambda _: self.load(), names="value")
         self.reset = w.Button(description="reset", tooltip="back to the values of the case file", layout=w.Layout(width="6.5em"))
         self.reset.on_click(lambda _: self.load())
         self.report_link = report_link
-        self.message = w.HTML()
         self.all_candidates = w.Checkbox(description="all candidates", indent=False,
                                          tooltip=f"list every candidate in the tables, not the best {SHOWN_CANDIDATES}")
         self.controls_box = w.VBox(layout=w.Layout(overflow="hidden"))
@@ -108,7 +125,7 @@ class DesignReview:
         except CalcError as exc:
             self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(str(exc))}'
             return
-        self.case, self.message.value = case, ""
+        self.case, self.message.value = case, self._note
         self.specs = input_specs(case, ratios)
         self.controls = {}
         old = self.controls_box.children
@@ -156,12 +173,22 @@ class DesignReview:
         try:
             case = self.changed_case()
         except CalcError as exc:
-            return f'<div class="dr"><b style="color:{FAIL_COLOR}">FAIL</b>: {typeset(str(exc))}</div>', None
+            return f'<div class="dr"><b style="color:{FAIL_COLOR}">input error</b>: {typeset(str(exc))}</div>', None
         report, left_out = evaluated(case)
-        link = self.report_link(case.path) if self.report_link else None
+        link = self._report_address(case.path)
         typed = self.case.motion is not None and case.motion is None
         shown = None if self.all_candidates.value else SHOWN_CANDIDATES
         return results_html(report, left_out, link, typed_by_hand=typed, shown=shown), (case, report)
+
+    def _report_address(self, path: Path) -> str | None:
+        """The address of the report of the case file ``path``: given the reports' folder, only
+        where the report was built."""
+        if self.report_link is None:
+            return None
+        if self.reports_folder is None:
+            return self.report_link(path)
+        pdf = self.reports.get(path)
+        return self.report_link(pdf) if pdf is not None and pdf.is_file() else None
 
     def refresh(self) -> None:
         """Draw the results of the controls' values: each figure whose inputs changed, then the

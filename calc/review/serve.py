@@ -1,32 +1,66 @@
 """Serve the design-review panel alone as a web page, for reviewers who do not code (``make review``).
 
-``python -m calc.review.serve [--cases DIR] [--case NAME] [--port N] [--ip ADDRESS] [--idle-minutes M]``
+``python -m calc.review.serve [--cases DIR] [--case NAME] [--reports DIR] [--port N] [--ip ADDRESS] [--idle-minutes M]``
 runs Voilà on ``design-review.ipynb`` beside this file: the panel and nothing else (no code, no
 other notebook is served). The page opens the case ``NAME`` of the folder ``DIR`` (default
 ``cases/``, the example); the panel offers the folder's other case files, and no other path. A
 kernel whose page was closed is shut down after ``M`` minutes (:data:`IDLE_MINUTES`). The address
 is this machine's only (127.0.0.1) unless ``--ip`` says otherwise (README, "Design review":
 sharing it on a network).
+
+The calc reports built in ``--reports`` (default ``reports/``: ``python -m calc report
+cases/*.toml --summary -o reports/``) are linked from the page. Voilà serves files only under the
+folder it serves (``Voila.root_dir``, by default the page's folder), through its ``/voila/files/``
+handler, and only those its ``VoilaConfiguration.file_allowlist`` names (by default images); its
+file handler (tornado's) refuses a link that leads out of that folder. So the served folder is
+the one that holds both the page and the reports' folder (:func:`served_root`: the project, as
+``make review`` runs it), and only the PDFs directly in the reports' folder are allowed
+(:func:`allowed`); the page links them by their path under that folder (:func:`report_address`).
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 from pathlib import Path
+from urllib.parse import quote
 
 PAGE = Path(__file__).with_name("design-review.ipynb")
-#: The variable that tells the page's kernel which case to open.
+#: The variables that tell the page's kernel which case to open and where the reports are.
 CASE_VARIABLE = "CALC_REVIEW_CASE"
+REPORTS_VARIABLE = "CALC_REVIEW_REPORTS"
 IDLE_MINUTES = 10
 
 
-def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINUTES) -> list[str]:
-    """The Voilà command line of the review page; a kernel whose page was closed is shut down
-    after ``idle_seconds``."""
+def served_root(reports: Path) -> Path:
+    """The folder Voilà serves: the nearest one that holds the page and the reports' folder."""
+    return Path(os.path.commonpath([PAGE.parent.resolve(), reports.resolve()]))
+
+
+def _under_root(path: Path, reports: Path) -> str:
+    return path.resolve().relative_to(served_root(reports)).as_posix()
+
+
+def allowed(reports: Path) -> list[str]:
+    """The files Voilà may serve: the PDFs directly in ``reports`` (its own deny list keeps
+    refusing notebooks and Python files)."""
+    folder = _under_root(reports, reports)
+    return [("" if folder == "." else re.escape(folder) + "/") + r"[^/]+\.pdf"]
+
+
+def report_address(pdf: Path, reports: Path) -> str:
+    """The address of the report ``pdf`` (in ``reports``), relative to the page."""
+    return "voila/files/" + quote(_under_root(pdf, reports))
+
+
+def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINUTES, reports: Path = Path("reports")) -> list[str]:
+    """The Voilà command line of the review page, linking the reports of the folder ``reports``; a
+    kernel whose page was closed is shut down after ``idle_seconds``."""
     return [
         sys.executable, "-m", "voila", str(PAGE), "--no-browser", f"--port={port}", f"--Voila.ip={ip}",
+        f"--Voila.root_dir={served_root(reports)}", f"--VoilaConfiguration.file_allowlist={allowed(reports)!r}",
         "--strip_sources=True", "--show_tracebacks=False", "--theme=light",
         # One kernel waits with the panel already drawn, so a page is ready at once; its
         # successor starts when a page takes it.
@@ -37,15 +71,17 @@ def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINU
     ]
 
 
-def environment(case: Path) -> dict:
-    """The environment of the server (and so of its kernels): the case to open."""
-    return {**os.environ, CASE_VARIABLE: str(case.resolve())}
+def environment(case: Path, reports: Path | None = None) -> dict:
+    """The environment of the server (and so of its kernels): the case to open, the reports' folder."""
+    return {**os.environ, CASE_VARIABLE: str(case.resolve()), **({REPORTS_VARIABLE: str(reports.resolve())} if reports else {})}
 
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m calc.review.serve", description=__doc__.splitlines()[0])
     parser.add_argument("--cases", type=Path, default=Path("cases"), help="the folder of case files offered (default: cases)")
     parser.add_argument("--case", default="indexing-table.toml", help="the case opened first (default: indexing-table.toml)")
+    parser.add_argument("--reports", type=Path, default=Path("reports"),
+                        help="the folder of the calc reports the page links (default: reports)")
     parser.add_argument("--port", type=int, default=8866)
     parser.add_argument("--ip", default="127.0.0.1", help="the address served (default: 127.0.0.1, this machine only)")
     parser.add_argument("--idle-minutes", type=float, default=IDLE_MINUTES,
@@ -56,8 +92,8 @@ def main(argv=None) -> int:
         print(f"{case}: the case file does not exist", file=sys.stderr)
         return 2
     print(f"Design review of {case} at http://{'localhost' if args.ip == '127.0.0.1' else args.ip}:{args.port}/ (Ctrl-C stops it)")
-    argv = command(args.port, args.ip, round(60 * args.idle_minutes))
-    os.execve(argv[0], argv, environment(case))
+    argv = command(args.port, args.ip, round(60 * args.idle_minutes), args.reports)
+    os.execve(argv[0], argv, environment(case, args.reports))
 
 
 if __name__ == "__main__":

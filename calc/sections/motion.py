@@ -5,7 +5,7 @@ and cut into the seed's segments, which the duty section uses as if they were ty
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -56,6 +56,7 @@ class Motion:
     segments: object  # calc.motion.Segments
     profile: Profile
     record: str | None = None  # the drive record's file as the case names it
+    tables: dict = field(default_factory=dict)  # the raw tables it was derived from, by name (mechanism, move, drive_record)
 
     @property
     def J_L(self):
@@ -158,9 +159,11 @@ def read_move(t: Table, mechanism: Mechanism):
     return Move(phi, time, accel, decel, jerk), distance
 
 
-def read(top: Table, case: Case) -> None:
-    """The motion form of a case, if it has one: ``case.motion`` and ``case.profile`` (the seed's
-    segments derived from it). Errors name the key."""
+def derive(top: Table) -> Motion | None:
+    """The motion form of a case from its raw top-level tables (``top``, as the file reads): the
+    mechanism and its moves, or a drive record; None where the case types its load cycle. Errors
+    name the key. A case file is read through here, and so is a copy of a case whose mechanism or
+    moves were changed (the design review, :func:`calc.review.inputs.with_inputs`)."""
     forms = [f for f in FORMS if top.has(f)]
     if len(forms) > 1:
         raise CalcError(f"{top.path}: {forms[1]}: the load cycle is given as {forms[0]} already; give one of [[profile]], [[move]] or [drive_record]")
@@ -168,14 +171,20 @@ def read(top: Table, case: Case) -> None:
     if not forms or forms == ["profile"]:
         if mechanism is not None:
             raise CalcError(f"{top.path}: mechanism: a mechanism needs the moves of its load ([[move]]) or a [drive_record], found {'[[profile]]' if forms else 'neither'}")
-        return
+        return None
     if mechanism is not None and isinstance(top.data.get("load"), dict) and "inertia" in top.data["load"]:
         raise CalcError(f"{top.path}: load.inertia: the mechanism gives the load's inertia J_L; leave load.inertia out")
-    if forms == ["move"]:
-        case.motion = read_moves(top, mechanism)
-    else:
-        case.motion = read_record(top, mechanism)
-    case.profile = case.motion.profile
+    motion = read_moves(top, mechanism) if forms == ["move"] else read_record(top, mechanism)
+    motion.tables = {name: top.data[name] for name in TABLES if name in top.data}
+    return motion
+
+
+def apply(case: Case, motion: Motion) -> None:
+    """Give ``case`` the derived ``motion``: its load cycle (the seed's segments) and, where the
+    mechanism gives it, the load's inertia J_L (which the file then leaves out of ``[load]``)."""
+    case.motion, case.profile = motion, motion.profile
+    if motion.J_L is not None:
+        case.load_inertia = motion.J_L
 
 
 def read_moves(top: Table, mechanism: Mechanism | None) -> Motion:
