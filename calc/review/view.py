@@ -114,8 +114,8 @@ def _table(header: list[str], rows: list[list[str]], numeric: set[int] = frozens
 
 
 def _governing(r: dict) -> str:
-    """The governing checks of each chosen part (the closest candidate where none passes) and the
-    accuracy requirements, one row each."""
+    """The governing checks of each chosen part (the closest candidate where none passes), the
+    motor's and the accuracy requirements, one row each."""
     rows = []
     for name in ("gearbox", "coupling"):
         s = r.get(name)
@@ -127,6 +127,10 @@ def _governing(r: dict) -> str:
             if k.get("governs", True):
                 rows.append([who, typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]),
                              _verdict_cell(k["passes"], k.get("not_made"))])
+    for k in (r.get("motor") or {}).get("checks", []):
+        if k.get("governs", True):
+            rows.append(["motor", typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]),
+                         _verdict_cell(k["passes"], k.get("not_made"))])
     for k in (r.get("accuracy") or {}).get("checks", []):
         rows.append(["accuracy", typeset(k["criterion"]), _q(k["value"]), _q(k["required"]), _utilization(k["utilization"]), _verdict_cell(k["passes"])])
     if not rows:
