@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .catalog import _FLOAT, _HEADER, CATALOG_DIR, Column, _header_unit, display_path
+from .catalog import _FLOAT, _HEADER, CATALOG_DIR, Column, _header_unit, display_path, note_file_read
 from .checks import BOUNDARY_RTOL
 from .errors import CalcError
 from .units import Q_, as_kind, pretty_unit, sig  # noqa: F401 (Q_: the doctests)
@@ -234,6 +234,7 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
         text = path.read_bytes().decode("utf-8-sig")
     except UnicodeDecodeError:
         raise CalcError(f"{path}: expected a UTF-8 CSV file, found bytes that are not UTF-8") from None
+    note_file_read(path, "Factor table")
     rows = list(csv.reader(line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")))
     if not rows:
         raise CalcError(f"{path}: expected a header row, found an empty file")

@@ -8,6 +8,8 @@ every problem is reported with the file, the row (its line number in the file) a
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import csv
 import dataclasses
 import functools
@@ -236,6 +238,30 @@ def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
 _LOADED: dict = {}
 
 
+#: Where a caller records the data files read (:func:`recording_files_read`); None: nobody does.
+_FILES_READ: contextvars.ContextVar = contextvars.ContextVar("files_read", default=None)
+
+
+@contextlib.contextmanager
+def recording_files_read():
+    """Within it, every data file the package reads (catalogs, factor tables, measurements) is
+    recorded, once, as ``path -> (what it is, SHA-256)``: the provenance a report lists."""
+    files = {}
+    token = _FILES_READ.set(files)
+    try:
+        yield files
+    finally:
+        _FILES_READ.reset(token)
+
+
+def note_file_read(path: Path, what: str, digest: str | None = None) -> None:
+    """Record ``path`` as read (:func:`recording_files_read`); ``digest``: its SHA-256 where the
+    reader has it, else it is computed, only while something records."""
+    files = _FILES_READ.get()
+    if files is not None and path.resolve() not in files:
+        files[path.resolve()] = (what, digest or hashlib.sha256(path.read_bytes()).hexdigest())
+
+
 def load_catalog(path: Path, schema: Schema) -> Catalog:
     """Read and validate a catalog file against ``schema``, once per run.
 
@@ -257,6 +283,7 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
     if known is None or known[0] != stamp:
         known = _LOADED[key] = (stamp, _read_catalog(path, schema))
     catalog = known[1]
+    note_file_read(path, "Catalog", catalog.sha256)
     # The same file asked for by another spelling of its path is named as asked.
     return catalog if catalog.path == path else dataclasses.replace(catalog, name=path.stem, path=path, members=((path, catalog.sha256),))
 

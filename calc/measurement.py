@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .catalog import _HEADER, Column, _header_unit
+from .catalog import _HEADER, Column, _header_unit, note_file_read
 from .errors import CalcError
 from .units import Q_, as_kind
 
@@ -77,6 +77,7 @@ def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, 
         raise CalcError(f"{path}: expected a UTF-8 CSV file, found bytes that are not UTF-8") from None
     except OSError as exc:
         raise CalcError(f"{path}: the measurement file cannot be read ({exc.strerror})") from None
+    note_file_read(path, "Measurement")
     comments, header_line, header_end = [], None, 0
     for line_number, line in enumerate(text.splitlines(keepends=True), start=1):
         header_end += len(line)

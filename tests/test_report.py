@@ -260,3 +260,20 @@ def test_front_page_lists_every_governing_check_and_what_is_not_checked():
     assert r"Motor: $T_{\mathrm{1peak}}$ ≤ $T_{\mathrm{1B}}$: " in page and "against 12" in page
     assert r"Accuracy: positioning\_accuracy ≤ required: 1.424" in page
     assert r"$d_{\mathrm{hub,max}}$" in page
+
+
+def test_title_block_lists_every_data_file_the_results_rest_on():
+    # The derived example reads, beside its case and the two catalogs it names, the clamping-hub
+    # table (motor.shaft), the source's shock and temperature tables (E4, E9, the defaults) and
+    # the generated transmission trace of its chain: each once, with its SHA-256.
+    files = {label_path[1]: label_path[0] for label_path in build_report(DERIVED_EXAMPLE).files}
+    assert files == {
+        "cases/indexing-table.toml": "Case file",
+        "catalogs/gearboxes.csv": "Gearbox catalog",
+        "catalogs/couplings.csv": "Coupling catalog",
+        "catalogs/gearbox-hubs.csv": "Catalog",
+        "catalogs/factors/shock-source.csv": "Factor table",
+        "catalogs/factors/temperature-source.csv": "Factor table",
+        "data/transmission-NPT035-10-generated.csv": "Measurement",
+    }
+    assert all(re.fullmatch(r"[0-9a-f]{64}", digest) for _, _, digest in build_report(DERIVED_EXAMPLE).files)

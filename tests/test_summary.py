@@ -204,11 +204,11 @@ def test_summary_of_three_cases(capsys, three_cases):
     assert re.search(r"Rotary indexing table, axis 3\s+PASS\s+NPT035-10\s+AKD-30\s+0\.69", text)
     assert re.search(r"test axis\s+FAIL\s+none\s+–\s+1\.24", text)  # 400 · 10 · 1.3 · 0.95 = 4940 N·m / 4000 (TP500-10, the closest)
     assert "has ratio 13" in flat
-    # Title block: each case file and catalog once, with its SHA-256.
-    for case in cases:
-        digest = build_report(case).files[0][2]
-        assert digest in text
-    assert text.count("catalogs/gearboxes.csv\n") >= 1 and len(re.findall(r"SHA-256\s+[0-9a-f]{64}", text)) == 5
+    # Title block: each data file the cases rest on (case files, catalogs, tables, measurements)
+    # once, with its SHA-256.
+    files = {(path, digest) for case in cases for _, path, digest in build_report(case).files}
+    assert all(digest in text for _, digest in files)
+    assert text.count("catalogs/gearboxes.csv\n") >= 1 and len(re.findall(r"SHA-256\s+[0-9a-f]{64}", text)) == len(files)
     # Each report's file name links to it, relative to the summary.
     assert set(links(out / "summary.pdf")) == {"indexing-table-profile.pdf", "failing.pdf", "unreadable.pdf"}
 

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..case import Case, read_case
-from ..catalog import display_path
+from ..catalog import display_path, recording_files_read
 from ..errors import CalcError
 from ..sections import Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
@@ -223,12 +223,17 @@ def build_report(case_path) -> Report:
     report = Report(path=path, title=path.stem, built=build_date(), commit=git_commit())
     if path.is_file():
         report.files.append(("Case file", display_path(path), sha256(path)))
-    try:
-        case = read_case(path)
-    except CalcError as exc:
-        report.error = str(exc)
-        return report
-    return report_of(case, report)
+    with recording_files_read() as read:
+        try:
+            case = read_case(path)
+        except CalcError as exc:
+            report.error = str(exc)
+            return report
+        report = report_of(case, report)
+    # Every other data file the results rest on (hub and factor tables, measurements), once each.
+    listed = {p for _, p, _ in report.files}
+    report.files += [(what, display_path(p), digest) for p, (what, digest) in read.items() if display_path(p) not in listed]
+    return report
 
 
 def report_of(case: Case, report: Report | None = None) -> Report:
