@@ -21,6 +21,7 @@ from .errors import CalcError
 ureg = pint.UnitRegistry(cache_folder=":auto:")
 ureg.define("@alias revolution = rev")  # "rev/s" and "rev/min" as speed units engineers write
 ureg.formatter.default_format = "~P"
+ureg.formatter.default_sort_func = None  # units in the order written: "N·m", not pint's alphabetical "m·N"
 pint.set_application_registry(ureg)
 Q_ = ureg.Quantity
 

@@ -181,3 +181,11 @@ def test_every_kinds_example_is_an_input_of_that_kind(name):
     # Error messages offer the example ("expected a rate such as ..."): it must itself be accepted.
     k = KINDS[name]
     parse_quantity(k.example.strip('"'), k, f"example of {name}")
+
+
+def test_quantities_print_their_units_in_the_order_written():
+    # Error messages print quantities with "~P": a torque reads N·m as engineers write it, also
+    # when it comes out of arithmetic (pint sorts alphabetically by default: "m·N").
+    assert f"{Q_(-1, 'N*m'):~P}" == "-1 N·m"
+    assert f"{Q_(2, 'N') * Q_(3, 'm'):~P}" == "6 N·m"
+    assert f"{Q_(1.3, 'N*m/arcmin'):~P}" == "1.3 N·m/arcmin"
