@@ -210,7 +210,17 @@ class Formula:
             if s.name not in values:
                 raise CalcError(f"{self.name}: missing argument {s.name!r} ({s.description}, {kind(s.kind).name})")
             args.append(to_si(values[s.name], s.kind, f"{self.name}: argument {s.name!r}"))
+        if self._per_segment:
+            lengths = {self.inputs[k].name: np.shape(args[k])[-1] for k in self._per_segment if np.ndim(args[k])}
+            if len(set(lengths.values())) > 1:
+                found = ", ".join(f"{name} {n}" for name, n in lengths.items())
+                raise CalcError(f"{self.name}: expected one value per segment in each per-segment argument, found lengths {found}")
         return args
+
+    @functools.cached_property
+    def _per_segment(self) -> tuple:
+        """The positions of the inputs given one value per segment (summed over by the formula)."""
+        return tuple(k for k, s in enumerate(self.inputs) if s.per_segment and s.value is None)
 
     def __call__(self, **values):
         """Evaluate with quantities (scalars or arrays); returns a quantity in the result's unit."""

@@ -151,3 +151,9 @@ def test_batch_of_profiles_evaluates_at_once():
 
 def test_ed_formula():
     assert ED(t_on=Q_(3, "s"), t_cycle=Q_(4, "s")).m_as("percent") == pytest.approx(75)
+
+
+def test_per_segment_arguments_of_unequal_length_are_named():
+    # Two speeds, one duration, three torques: which segment belongs to which cannot be told.
+    with pytest.raises(CalcError, match=r"^T_2m: expected one value per segment in each per-segment argument, found lengths n_2k 2, t_k 1, T_2k 3$"):
+        T_2m(n_2k=Q_([100, 200], "rpm"), t_k=Q_([1.0], "s"), T_2k=Q_([1, 2, 3], "N*m"))
