@@ -89,7 +89,7 @@ def steps(report) -> list[str]:
         band = bands.text(int(bands.band(x["temperature"], "coupling.temperature")))
         k_t = Q_(float(sel.temperature_factor[row]), "")
         out.append(step_block(f"With the temperature factor ({part})", cp.M_Nt.step(M_N=m_n.result, K_T=k_t),
-                              f"K_T of the band {band} ({bands.source})"))
+                              f"the factor of the band {band} ({bands.source})"))
         if sel.M_Smax is not None:
             starts = x["start_factors"]
             s_band = starts.text(int(starts.band(x["starts_per_hour"], "coupling.starts_per_hour")))
