@@ -647,7 +647,8 @@ MOTION = dict(J=0.15, T_f=3.0, distance=np.pi / 2, time=0.5, ramp=0.15, dwell=1.
 def motion_api(samples: int):
     from calc import Q_
     from calc.mechanism import Mechanism
-    from calc.motion import Move, sample, segments
+    from calc.motion import Move, sample
+    from calc.profile import segments
 
     m = MOTION
     table = Mechanism("rotary", inertia=Q_(m["J"], "kg*m**2"), friction_torque=Q_(m["T_f"], "N*m"), process_torque=Q_(0, "N*m"))

@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .catalog import _FLOAT, _HEADER, CATALOG_DIR, Column, _header_unit, display_path, note_file_read
+from .catalog import _FLOAT, _HEADER, CATALOG_DIR, Column, _header_unit, display_path, given_path, note_file_read
 from .checks import BOUNDARY_RTOL
 from .errors import CalcError
 from .units import Q_, as_kind, pretty_unit, sig  # noqa: F401 (Q_: the doctests)
@@ -202,16 +202,13 @@ def factor_table(role: str, name_or_path: str | None = None, base: Path | None =
     name = r.default if name_or_path is None else name_or_path
     if not isinstance(name, str) or not name.strip():
         raise CalcError(f"{where}: expected a table name ({', '.join(table_names(role))}) or a path to a CSV file, found {name!r}")
-    if "/" not in name and not name.endswith(".csv"):
+    path = given_path(name, base)
+    if path is None:
         path = FACTOR_DIR / f"{role}-{name}.csv"
         if not path.is_file():
             raise CalcError(f"{where}: unknown {role}-factor table {name!r}; expected one of {', '.join(table_names(role))} or a path to a CSV file")
-    else:
-        path = Path(name)
-        if not path.is_absolute() and base is not None:
-            path = base / path
-        if not path.is_file():
-            raise CalcError(f"{where}: the factor table {name!r} does not exist (looked for {path})")
+    elif not path.is_file():
+        raise CalcError(f"{where}: the factor table {name!r} does not exist (looked for {path})")
     return load_factor_table(path, r.symbol, r.kind)
 
 

@@ -216,17 +216,21 @@ def display_path(path: Path) -> str:
     return str(path)
 
 
+def given_path(name_or_path: str, base: Path | None) -> Path | None:
+    """The file a case names by path (with a ``/`` or ending in ``.csv``; relative to ``base``,
+    the case file's folder), or None where it names a file the package ships."""
+    if "/" not in name_or_path and not name_or_path.endswith(".csv"):
+        return None
+    path = Path(name_or_path)
+    return base / path if not path.is_absolute() and base is not None else path
+
+
 def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
     """A catalog by name (``"gearboxes"`` → ``catalogs/gearboxes.csv``) or by path (relative to
     ``base``, the case file's folder)."""
     if not isinstance(name_or_path, str) or not name_or_path.strip():
         raise CalcError(f"{where}: expected a catalog name or a path to a CSV file, found {name_or_path!r}")
-    if "/" not in name_or_path and not name_or_path.endswith(".csv"):
-        path = CATALOG_DIR / f"{name_or_path}.csv"
-    else:
-        path = Path(name_or_path)
-        if not path.is_absolute() and base is not None:
-            path = base / path
+    path = given_path(name_or_path, base) or CATALOG_DIR / f"{name_or_path}.csv"
     if not path.is_file():
         raise CalcError(f"{where}: the catalog {name_or_path!r} does not exist (looked for {path})")
     return path

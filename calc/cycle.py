@@ -11,6 +11,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+#: The phases of the seed's segments, in the order of their codes in a sampled cycle.
+PHASES = ("accel", "const", "decel", "pause")
+ACCEL, CONST, DECEL, PAUSE = range(4)
+
 
 @dataclass(frozen=True)
 class SampledCycle:

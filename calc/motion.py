@@ -28,15 +28,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .cycle import ACCEL, CONST, DECEL, PAUSE, PHASES  # noqa: F401 (PHASES: the doctests)
 from .formula import Formula, Symbol
 
 #: Samples of one cycle by default; each piece of the law gets at least :data:`MIN_PER_PIECE`.
 SAMPLES = 20_000
 MIN_PER_PIECE = 200
 
-#: The phases of the seed's segments, in the order of their codes in :class:`Samples`.
-PHASES = ("accel", "const", "decel", "pause")
-ACCEL, CONST, DECEL, PAUSE = range(4)
 
 phi_2 = Symbol("phi_2", r"\varphi_{2}", "angle", "deg", "distance of the move at the gearbox output")
 t_m = Symbol("t_m", r"t_{m}", "time", "s", "time of the move")
@@ -241,46 +239,3 @@ def _join_short_runs(phase: np.ndarray, dt: np.ndarray, shortest: float) -> np.n
         if length < shortest and len(starts) > 1:
             out[a:b] = out[a - 1] if k > 0 else phase[ends[0]]
     return out
-
-
-@dataclass(frozen=True)
-class Segments:
-    """The seed's segments of a sampled cycle (SI floats): phase code, duration [s], mean speed
-    [rad/s] and the torque [N·m] that gives the segment's cubic mean (:func:`segments`)."""
-
-    phase: np.ndarray
-    duration: np.ndarray
-    speed: np.ndarray
-    torque: np.ndarray
-
-
-def segments(s: Samples, torque: np.ndarray) -> Segments:
-    """The seed's segments (accel, const, decel, pause) of a sampled cycle and its torque.
-
-    For a moving segment k: ``t_k = ∫dt``, ``n_k = ∫n dt / t_k`` and the torque ``T_k`` whose
-    ``|n_k|·t_k·|T_k|³`` equals ``∫|n|·|T|³ dt`` (the sign of ``∫|n|·T³ dt``). So the S1 means of
-    the segments (:data:`calc.profile.n_2m`, :data:`calc.profile.T_2m`) are the integrals over
-    the sampled cycle, whether the torque is constant in a phase (a trapezoid: exactly its value)
-    or varies (an S-curve). A pause's torque is its mean (the torque that holds the load).
-
-    >>> s = sample([Move(1.0, 1.0, 0.5, 0.5)], samples=100)   # a triangle: peak 2 rad/s, ±4 rad/s²
-    >>> g = segments(s, 2.0 * s.acceleration)                 # T = J·α with J = 2 kg·m²
-    >>> [PHASES[p] for p in g.phase], g.duration.round(12).tolist(), g.speed.round(12).tolist(), g.torque.round(12).tolist()
-    (['accel', 'decel'], [0.5, 0.5], [1.0, 1.0], [8.0, -8.0])
-    """
-    n = int(s.segment[-1]) + 1
-    dt, v, T = s.dt, s.speed, np.asarray(torque, dtype=float)
-    duration = s.durations
-    speed = np.bincount(s.segment, weights=v * dt, minlength=n) / duration
-    weight = np.abs(v) * dt
-    base = np.bincount(s.segment, weights=weight, minlength=n)
-    signed_cube = weight * T * T * T
-    cubic = np.bincount(s.segment, weights=np.abs(signed_cube), minlength=n)
-    signed = np.bincount(s.segment, weights=signed_cube, minlength=n)
-    phase = s.segment_phases
-    moving = phase != PAUSE
-    out = np.bincount(s.segment, weights=T * dt, minlength=n) / duration
-    out[moving] = np.sign(signed[moving]) * np.cbrt(cubic[moving] / base[moving])
-    speed[~moving] = 0.0
-    return Segments(phase, duration, speed, out)
-

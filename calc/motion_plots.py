@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .motion import PAUSE, Samples, Segments
+from .cycle import PAUSE
+from .motion import Samples
+from .profile import Segments
 from .plots import ON_COLOR, PAUSE_COLOR, SPEED_COLOR, TORQUE_COLOR
 
 POSITION_COLOR = "#444444"
@@ -45,7 +47,8 @@ def motion_figure(samples: Samples, torque: np.ndarray, segments: Segments | Non
 
     Examples
     --------
-    >>> from calc.motion import Move, sample, segments
+    >>> from calc.motion import Move, sample
+    >>> from calc.profile import segments
     >>> s = sample([Move(1.0, 1.0, 0.25, 0.25), Move(0.0, 0.5)], samples=200)
     >>> fig = motion_figure(s, 2 * s.acceleration, segments(s, 2 * s.acceleration))
     >>> [ax.get_ylabel() for ax in fig.axes[:4]]

@@ -13,10 +13,9 @@ import numpy as np
 
 from .errors import CalcError
 from .checks import BOUNDARY_RTOL
+from .cycle import PAUSE, PHASES
 from .formula import Formula, Symbol, segment_sum
 from .units import Q_, as_kind
-
-PHASES = ("accel", "const", "decel", "pause")
 
 #: E3: S5 needs ED below this and an on-time below :data:`S5_MAX_ON_TIME`.
 S5_MAX_ED = Q_(60, "percent")
@@ -200,3 +199,48 @@ def duty(profile: Profile) -> Duty:
     """
     ed = ED(t_on=profile.t_on, t_cycle=profile.t_cycle)
     return Duty(profile.t_on, profile.t_cycle, ed, operating_mode(ed, profile.t_on))
+
+
+@dataclass(frozen=True)
+class Segments:
+    """The seed's segments of a sampled cycle (SI floats): phase code (:data:`PHASES`), duration
+    [s], mean speed [rad/s] and the torque [N·m] that gives the segment's cubic mean
+    (:func:`segments`)."""
+
+    phase: np.ndarray
+    duration: np.ndarray
+    speed: np.ndarray
+    torque: np.ndarray
+
+
+def segments(s, torque: np.ndarray) -> Segments:
+    """The seed's segments (accel, const, decel, pause) of a sampled cycle ``s`` (a
+    :class:`calc.motion.Samples`: ``dt``, ``speed``, contiguous ``segment`` numbers, their
+    ``durations`` and ``segment_phases``) and its torque per sample.
+
+    For a moving segment k: ``t_k = ∫dt``, ``n_k = ∫n dt / t_k`` and the torque ``T_k`` whose
+    ``|n_k|·t_k·|T_k|³`` equals ``∫|n|·|T|³ dt``: :data:`T_2m` over the segment's samples, with the
+    sign of ``∫|n|·T³ dt``. So the S1 means of the segments (:data:`n_2m`, :data:`T_2m`) are the
+    integrals over the sampled cycle, whether the torque is constant in a phase (a trapezoid:
+    exactly its value) or varies (an S-curve). A pause's torque is its mean (the torque that holds
+    the load).
+
+    >>> from calc.motion import Move, sample
+    >>> s = sample([Move(1.0, 1.0, 0.5, 0.5)], samples=100)   # a triangle: peak 2 rad/s, ±4 rad/s²
+    >>> g = segments(s, 2.0 * s.acceleration)                 # T = J·α with J = 2 kg·m²
+    >>> [PHASES[p] for p in g.phase], g.duration.round(12).tolist(), g.speed.round(12).tolist(), g.torque.round(12).tolist()
+    (['accel', 'decel'], [0.5, 0.5], [1.0, 1.0], [8.0, -8.0])
+    """
+    dt, v, T = s.dt, s.speed, np.asarray(torque, dtype=float)
+    duration, phase = s.durations, s.segment_phases
+    starts = np.searchsorted(s.segment, np.arange(len(duration)))
+    ends = np.r_[starts[1:], len(dt)]
+    speed = np.add.reduceat(v * dt, starts) / duration
+    out = np.add.reduceat(T * dt, starts) / duration  # a pause: the mean torque
+    for k in np.flatnonzero(phase != PAUSE):
+        at = slice(starts[k], ends[k])
+        magnitude = T_2m.si(n_2k=v[at], t_k=dt[at], T_2k=T[at])
+        out[k] = np.sign(np.sum(np.abs(v[at]) * dt[at] * T[at] ** 3)) * magnitude
+    speed[phase == PAUSE] = 0.0
+    return Segments(phase, duration, speed, out)
+

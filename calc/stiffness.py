@@ -148,29 +148,32 @@ class StiffnessCurve:
         if not self.T_2.m_as("N*m") > self.T_1.m_as("N*m"):
             raise CalcError(f"{self.where}.T2: expected a limit torque above T1 = {fmt(self.T_1, 'N*m')}, found {fmt(self.T_2, 'N*m')}")
 
+    def band(self, torque) -> np.ndarray:
+        """The slope ``|T|`` falls on: 0 up to ``T_1``, 1 up to ``T_2``, 2 above (a limit torque
+        belongs to the band below it)."""
+        x = abs(as_kind(torque, "torque", "torque")).m_as("N*m")
+        return np.searchsorted([self.T_1.m_as("N*m"), self.T_2.m_as("N*m")], x, side="left")
+
+    def _band_formulas(self) -> tuple:
+        """The twist formula of each band, with the curve's figures it takes."""
+        low = dict(K_1=self.K_1)
+        middle = dict(low, T_1=self.T_1, K_2=self.K_2)
+        return (twist_low, low), (twist_middle, middle), (twist_high, dict(middle, T_2=self.T_2, K_3=self.K_3))
+
     def twist(self, torque):
         """The twist under ``torque`` (scalar or array), in arcmin: by the slope of the band
         ``|T|`` falls in (the three formulas :data:`twist_low`, :data:`twist_middle`,
         :data:`twist_high`)."""
         t = abs(as_kind(torque, "torque", "torque"))
-        curve = dict(T_1=self.T_1, K_1=self.K_1)
-        low = twist_low(T=t, K_1=self.K_1).m_as("arcmin")
-        middle = twist_middle(T=t, K_2=self.K_2, **curve).m_as("arcmin")
-        high = twist_high(T=t, T_2=self.T_2, K_2=self.K_2, K_3=self.K_3, **curve).m_as("arcmin")
-        x, t_1, t_2 = t.m_as("N*m"), self.T_1.m_as("N*m"), self.T_2.m_as("N*m")
-        return Q_(np.where(x <= t_1, low, np.where(x <= t_2, middle, high))[()], "arcmin")
+        by_band = [f(T=t, **figures).m_as("arcmin") for f, figures in self._band_formulas()]
+        return Q_(np.choose(self.band(t), np.broadcast_arrays(*by_band))[()], "arcmin")
 
     def steps(self, torque) -> list:
         """The twist at ``torque`` by the formula of its band, and the secant stiffness from it."""
         t = abs(as_kind(torque, "torque", "torque"))
-        x = t.m_as("N*m")
-        if x <= self.T_1.m_as("N*m"):
-            twist = twist_low.step(T=t, K_1=self.K_1)
-        elif x <= self.T_2.m_as("N*m"):
-            twist = twist_middle.step(T=t, T_1=self.T_1, K_1=self.K_1, K_2=self.K_2)
-        else:
-            twist = twist_high.step(T=t, T_1=self.T_1, T_2=self.T_2, K_1=self.K_1, K_2=self.K_2, K_3=self.K_3)
-        return [twist] if x == 0 else [twist, secant_stiffness.step(T=t, phi=twist.result)]
+        formula, figures = self._band_formulas()[int(self.band(t))]
+        twist = formula.step(T=t, **figures)
+        return [twist] if t.m_as("N*m") == 0 else [twist, secant_stiffness.step(T=t, phi=twist.result)]
 
     def secant(self, torque):
         """The secant stiffness ``|T| / φ(T)`` (scalar or array); up to ``T_1``, zero torque

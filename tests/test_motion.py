@@ -8,7 +8,9 @@ from hypothesis import strategies as st
 
 from calc.case import read_case
 from calc.mechanism import J_L_linear, Mechanism, T_2_linear, T_2_rotary, phi_2, r_diameter, r_lead
-from calc.motion import ACCEL, CONST, DECEL, PAUSE, Move, alpha_2max, omega_2max, record_samples, sample, segments
+from calc.cycle import ACCEL, CONST, DECEL, PAUSE
+from calc.motion import Move, alpha_2max, omega_2max, record_samples, sample
+from calc.profile import segments
 from calc.profile import T_2m, n_2m
 from calc.sections import evaluate
 from calc.units import Q_

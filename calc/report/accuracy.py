@@ -10,7 +10,10 @@ from pathlib import Path
 import numpy as np
 
 from . import common
-from .common import further_candidates, further_checks, further_chosen, further_order_lines, raw_section_tables, results_of
+from .common import (
+    described, further_candidates, further_checks, further_chosen, further_order_lines, further_readings, further_sources,
+    raw_section_tables, results_of,
+)
 from .latex import latex_escape, listed, plain, prose, q, step_block, table
 from .provenance import PROJECT_DIR
 
@@ -27,20 +30,8 @@ KEYS = {
 }
 
 
-def _described(report) -> bool:
-    return report.case.sections.get(NAME) is not None
-
-
-def sources(report) -> list[str]:
-    return common.sources(NAME) if _described(report) else []
-
-
-def readings(report) -> set[str]:
-    return common.readings(NAME) if _described(report) else set()
-
-
 def inputs(report) -> list[str]:
-    if not _described(report):
+    if not described(NAME, report):
         return []
     from ..accuracy import lost_motion
 
@@ -138,6 +129,8 @@ def figures(report) -> list:
 
 
 # The blocks a further section shares with the others, for this section.
+sources = functools.partial(further_sources, NAME)
+readings = functools.partial(further_readings, NAME)
 checks = functools.partial(further_checks, NAME)
 candidates = functools.partial(further_candidates, NAME)
 chosen = functools.partial(further_chosen, NAME)

@@ -157,6 +157,21 @@ def raw_section_tables(name: str, raw: dict, symbols: dict, keys: dict, derived:
 # -- the further sections' checks, candidates, chosen part and order line ------------------------
 
 
+def described(name: str, report) -> bool:
+    """Whether the case gives the further section ``name`` (its own table)."""
+    return report.case.sections.get(name) is not None
+
+
+def further_sources(name: str, report) -> list[str]:
+    """The source's sections of a further section, where the case describes it."""
+    return sources(name) if described(name, report) else []
+
+
+def further_readings(name: str, report) -> set[str]:
+    """The errata readings of a further section, where the case describes it."""
+    return readings(name) if described(name, report) else set()
+
+
 def further_checks(name: str, report) -> list[str]:
     """The checks of the first candidate, or the checks against the case's requirements."""
     s = results_of(name, report)

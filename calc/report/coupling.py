@@ -10,7 +10,10 @@ import numpy as np
 
 from ..units import Q_, sig
 from . import common
-from .common import further_candidates, further_checks, further_chosen, further_order_lines, raw_section_tables, results_of
+from .common import (
+    described, further_candidates, further_checks, further_chosen, further_order_lines, further_readings, further_sources,
+    raw_section_tables, results_of,
+)
 from .latex import itemize, latex_escape, plain, prose, q, step_block, table
 
 NAME = "coupling"
@@ -32,18 +35,6 @@ KEYS = {
 }
 
 
-def _described(report) -> bool:
-    return report.case.sections.get(NAME) is not None
-
-
-def sources(report) -> list[str]:
-    return common.sources(NAME) if _described(report) else []
-
-
-def readings(report) -> set[str]:
-    return common.readings(NAME) if _described(report) else set()
-
-
 def _derived_inputs(report, raw: dict) -> dict:
     """The inputs that the case left out and the package took from the rest of it (a motor-side
     coupling's M_a, J_drive, J_load, speed), as the case would write them."""
@@ -55,7 +46,7 @@ def _derived_inputs(report, raw: dict) -> dict:
 
 
 def inputs(report) -> list[str]:
-    if not _described(report):
+    if not described(NAME, report):
         return []
     from .. import coupling as cp
 
@@ -153,6 +144,8 @@ def figures(report) -> list:
 
 
 # The blocks a further section shares with the others, for this section.
+sources = functools.partial(further_sources, NAME)
+readings = functools.partial(further_readings, NAME)
 checks = functools.partial(further_checks, NAME)
 candidates = functools.partial(further_candidates, NAME)
 chosen = functools.partial(further_chosen, NAME)

@@ -6,7 +6,8 @@ torque over the cycle."""
 from __future__ import annotations
 
 from .. import mechanism as mech
-from ..motion import PHASES, alpha_2max, omega_2max
+from ..cycle import PHASES
+from ..motion import alpha_2max, omega_2max
 from ..units import Q_, sig
 from .common import input_row, nothing
 from .latex import latex_escape, num, step_block, table

@@ -11,12 +11,12 @@ import numpy as np
 
 from ..case import Case, Table
 from ..catalog import Column
-from ..cycle import SampledCycle
+from ..cycle import PHASES, SampledCycle
 from ..errors import CalcError
 from ..measurement import measurement_path, read_measurement
 from ..mechanism import TYPES, Mechanism
-from ..motion import PHASES, Move, Samples, record_samples, sample, segments
-from ..profile import Profile
+from ..motion import Move, Samples, record_samples, sample
+from ..profile import Profile, segments
 from ..units import Q_, kind_phrase, parse_quantity
 from .common import quantity, quantity_text
 
