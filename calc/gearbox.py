@@ -429,8 +429,6 @@ def select_gearbox(
     S1 checks: ``n_2m · i <= n_1N`` (E1), ``T_2m <= T_2N`` (E2). S5 checks: ``n_2max · i <=
     n_1max`` (E5), ``T_2max <= T_2B`` with ``T_2max = T_1B · i · f_s · η`` (E4), which is not made
     without the motor's peak torque ``T_1B`` (it says so; no part is then selected in S5). The
-    factor ``η`` is the source's, read as for a driving peak: a braking peak reaches the output as
-    ``T_1B · i / η`` (the losses then act from output to input), which the check does not credit. The
     operating mode of the profile (E3) says which group governs ``passes``; the other group is
     reported for information. In both modes the emergency-stop torque (``emergency_stop_torque``,
     default ``T_2stop = T_1B · i``) is checked against the catalog's ``T_2Not`` where a row gives
