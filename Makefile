@@ -77,7 +77,7 @@ review: setup
 # state is stored either (notebook 07's panel: some 170 KB of it, new on every run, and a live kernel
 # rebuilds it anyway).
 notebooks: setup
-	for nb in notebooks/*.ipynb; do \
+	for nb in notebooks/*.ipynb notebooks/instructor/*.ipynb; do \
 	  $(PY) -m jupyter nbconvert --to notebook --execute --inplace --ExecutePreprocessor.record_timing=False \
 	    --ExecutePreprocessor.store_widget_state=False "$$nb" || exit 1; done
 

@@ -13,7 +13,7 @@ import pytest
 from .conftest import ROOT
 
 # The notebooks whose prose is checked number by number.
-CHECKED = ("notebooks/99-answers.ipynb",)
+CHECKED = ("notebooks/instructor/99-answers.ipynb",)
 NUMBER = re.compile(r"(?<![\w.])(?<!\w-)\d+(?:[ ,]\d{3})*(?:\.\d+)?")
 NOT_PROSE = re.compile(r"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s", re.MULTILINE)  # headings, link targets, errata, "02 · "
 
