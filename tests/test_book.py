@@ -75,7 +75,8 @@ def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(boo
                         problems += [f"{name}: link to {href} leads nowhere"]
                 errors = page.evaluate("() => [...document.querySelectorAll('mjx-merror')].map(e => e.getAttribute('data-mjx-error') || e.textContent)")
                 problems += [f"{name}: math error {e!r}" for e in errors]
-                raw = RAW_TEX.findall(page.inner_text("body"))
+                prose = page.evaluate("() => { const b = document.body.cloneNode(true); b.querySelectorAll('pre, code, script').forEach(e => e.remove()); return b.textContent; }")
+                raw = RAW_TEX.findall(prose)  # code shows its $...$ as written
                 problems += [f"{name}: shows raw TeX {raw[:3]}"] if raw else []
                 left = page.evaluate("() => [...document.querySelectorAll('.math')].filter(m => !m.querySelector('mjx-container')).length")
                 problems += [f"{name}: {left} formulas left untypeset"] if left else []
