@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from calc import CalcError, Q_
 from calc.catalog import load_catalog, resolve
 from calc.coupling import SCHEMA, DriveTrain, f_e, select_coupling
+from calc.gearbox import SCHEMA as GEARBOX_SCHEMA
 from calc.sections import evaluate
 from calc.case import read_case
 from calc.torsion import Member, gearbox_at_input, inertia_at_output, load_at_input, lumped, natural_frequencies
@@ -184,3 +185,82 @@ def test_the_example_case_results():
     assert [f["value"] for f in t["natural_frequencies"]] == pytest.approx([207.96, 2424.71], abs=0.01)
     (check,) = t["checks"]
     assert check["name"] == "f_1" and check["governs"] and check["passes"] and check["required"]["value"] == 200
+
+
+def _torsion(capsys, path):
+    from .conftest import run
+
+    code, out, err = run(capsys, path, "--json")
+    assert code in (0, 1), err
+    import json
+
+    return json.loads(out)
+
+
+DIRECT = """
+title = "direct drive"
+[[profile]]
+phase = "accel"
+duration = "0.2 s"
+speed = "150 rpm"
+torque = "6 N*m"
+[[profile]]
+phase = "pause"
+duration = "1 s"
+[coupling]
+type = "bellows"
+part = "AKD-30"
+accel_torque = "12 N*m"
+drive_inertia = "4.2 kg*cm**2"
+load_inertia = "15.93 kg*cm**2"
+excitation_frequency = "100 Hz"
+shaft_1 = "19 mm k6"
+shaft_2 = "16 mm h7"
+"""
+
+
+def test_a_direct_drive_has_no_gearbox_spring(capsys, write_case):
+    # No [gearbox]: the chain is the source's two masses, complete, and its one mode is f_e = 1316.35 Hz.
+    t = _torsion(capsys, write_case(DIRECT))["coupling"]["torsion"]
+    assert t["complete"] and [m["members"] for m in t["masses"]] == ["motor + coupling", "coupling + load"]
+    assert [f["value"] for f in t["natural_frequencies"]] == pytest.approx([1316.35], abs=0.01)
+    assert t["checks"][0]["governs"] is True
+
+
+def test_a_coupling_on_the_output_is_referred_there(capsys, write_case):
+    # side = "output": the motor and J_1 times i², the gearbox's C_t21 as the catalog gives it, then
+    # the coupling and the load as the section gives them. Seen from the input instead (each value
+    # / i²) the train has the same modes.
+    from .conftest import HEAD_TOML, PROFILE_TOML
+
+    coupling = DIRECT[DIRECT.index("[coupling]"):].replace('part = "AKD-30"', 'part = "AKD-300"\nside = "output"').replace(
+        '"15.93 kg*cm**2"', '"1500 kg*cm**2"')
+    r = _torsion(capsys, write_case(HEAD_TOML + PROFILE_TOML + coupling))
+    t = r["coupling"]["torsion"]
+    assert t["complete"] and t["shaft"] == "the gearbox output"
+    assert [m["members"] for m in t["masses"]] == ["motor + gearbox", "coupling", "coupling + load"]
+    gearbox = r["gearbox"]["selected"]
+    g = next(c for c in r["gearbox"]["candidates"] if c["part"] == gearbox)
+    J_1 = g["J_1"]["value"]
+    gearboxes = load_catalog(resolve("gearboxes", None, "catalog"), GEARBOX_SCHEMA)
+    C_t21 = gearboxes["C_t21"][gearboxes.index(gearbox, "part")]
+    assert [m["J"]["value"] for m in t["masses"]] == pytest.approx([(4.2 + J_1) * 100, 16, 16 + 1500])
+    C = [s["C"]["value"] for s in t["springs"]]
+    assert C == pytest.approx([C_t21.m_as("N*m/rad"), 280_000])
+    seen = natural_frequencies(Q_([4.2 + J_1, 0.16, 15.16], KG_CM2), Q_([C[0] / 100, 280_000 / 100], "N*m/rad"))
+    assert [f["value"] for f in t["natural_frequencies"]] == pytest.approx(seen.m_as("Hz").tolist(), rel=1e-9)
+
+
+def test_a_gearbox_that_is_not_selected_only_informs(capsys, write_case):
+    # Without motor.peak_torque no gearbox is selected in S5: the best-ranked stands in, and the
+    # chain's first mode is reported for information.
+    from .conftest import HEAD_TOML, PROFILE_TOML
+
+    coupling = DIRECT[DIRECT.index("[coupling]"):].replace('part = "AKD-30"', 'side = "input"').replace('load_inertia = "15.93 kg*cm**2"\n', "")
+    r = _torsion(capsys, write_case(HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML + coupling))
+    t = r["coupling"]["torsion"]
+    best = r["gearbox"]["candidates"][0]["part"]
+    assert r["gearbox"]["selected"] is None and not t["complete"]
+    assert t["missing"] == [f"a selected gearbox ({best}, the best-ranked, stands in: none is selected)"]
+    assert t["checks"][0]["governs"] is False
+    assert any("the drive train's first mode f_1 is reported for information" in n for n in r["coupling"]["notes"])
