@@ -303,8 +303,12 @@ class CouplingCheck(CheckArray):
         """This check for one row; a row an optional check cannot be made for says why, and
         decides nothing."""
         check = super().at(row, governs and not self.informs)
-        if self.informs and check.passes is not None:
-            check = dataclasses.replace(check, passes=bool(within_rating(self.utilization[row])))
+        if self.informs:
+            # The verdict it would give, shown though it decides nothing; none where it cannot be made.
+            made = check.utilization is not None
+            missing = self.missing if isinstance(self.missing, str) else self.missing[row]
+            return dataclasses.replace(check, passes=bool(within_rating(self.utilization[row])) if made else None,
+                                       not_made=None if made else missing)
         if self.optional and check.utilization is None:
             missing = self.missing if isinstance(self.missing, str) else self.missing[row]
             return dataclasses.replace(check, passes=None, governs=False, not_made=missing)

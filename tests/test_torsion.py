@@ -264,3 +264,14 @@ def test_a_gearbox_that_is_not_selected_only_informs(capsys, write_case):
     assert t["missing"] == [f"a selected gearbox ({best}, the best-ranked, stands in: none is selected)"]
     assert t["checks"][0]["governs"] is False
     assert any("the drive train's first mode f_1 is reported for information" in n for n in r["coupling"]["notes"])
+
+
+def test_an_informing_check_without_a_value_says_why():
+    # A catalog row without J: the chain's first mode cannot be computed; reported, not made, with the reason.
+    rows = BELLOWS.rows([BELLOWS.index("AKD-30", "part")])
+    rows["J"][0] = Q_(np.nan, KG_CM2)
+    train = DriveTrain(TRAIN.drive, (Member("load", Q_(15.93, KG_CM2)),), missing=("coupling.side",))
+    s = select_coupling(rows, excitation_frequency=Q_(100, "Hz"), drive_train=train, **ARGS)
+    check = next(c for c in s.checks if c.name == "f_1").at(0)
+    assert check.passes is None and check.governs is False
+    assert check.not_made == "the first mode of the drive train needs the coupling's inertia J, which the catalog leaves empty"
