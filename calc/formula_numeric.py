@@ -226,8 +226,8 @@ def torsion__C_t1(C_t21, i):
     return C_t21/i**2
 
 
-def torsion__J_2R(J_1, i):
-    return J_1*i**2
+def torsion__J_out(J_in, i):
+    return J_in*i**2
 
 
 def transmission__Delta_phi_2(phi_2, phi_1, i):
@@ -292,7 +292,7 @@ FUNCTIONS = {
     "calc.stiffness.C_sec": ("21f78c548e68d498", stiffness__C_sec),
     "calc.torsion.J_L1": ("d8caa04565d5e06c", torsion__J_L1),
     "calc.torsion.C_t1": ("42909c5a4b2369c6", torsion__C_t1),
-    "calc.torsion.J_2R": ("dd40da0054b2c99f", torsion__J_2R),
+    "calc.torsion.J_out": ("2fe27874694a70e5", torsion__J_out),
     "calc.transmission.Delta_phi_2": ("ed18015dc98282df", transmission__Delta_phi_2),
     "calc.transmission.phi_TA": ("80cb419f2cbded1e", transmission__phi_TA),
 }

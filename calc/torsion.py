@@ -53,9 +53,9 @@ gearbox_at_input = Formula(
 )
 
 inertia_at_output = Formula(
-    Symbol("J_2R", r"J_{2}", "inertia", "kg*cm**2", "inertia referred to the gearbox output"),
-    (Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "inertia at the gearbox input"), _i),
-    lambda sp, J_1, i: J_1 * i**2,
+    Symbol("J_out", r"J_{\mathrm{out}}", "inertia", "kg*cm**2", "inertia referred to the gearbox output"),
+    (Symbol("J_in", r"J_{\mathrm{in}}", "inertia", "kg*cm**2", "inertia on the gearbox input (the motor's, the gearbox's J_1)"), _i),
+    lambda sp, J_in, i: J_in * i**2,
     "errata E8 and E11: an input-side inertia appears at the output as J · i²",
 )
 

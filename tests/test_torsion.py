@@ -52,7 +52,7 @@ def test_reflection_formulas_by_hand():
     # 4.2 kg·cm² · 10² = 420 kg·cm².
     assert load_at_input(J_L=Q_(1500, KG_CM2), i=10).m_as(KG_CM2) == pytest.approx(15)
     assert gearbox_at_input(C_t21=Q_(22, "N*m/arcmin"), i=10).m_as("N*m/rad") == pytest.approx(756.304, abs=1e-3)
-    assert inertia_at_output(J_1=Q_(4.2, KG_CM2), i=10).m_as(KG_CM2) == pytest.approx(420)
+    assert inertia_at_output(J_in=Q_(4.2, KG_CM2), i=10).m_as(KG_CM2) == pytest.approx(420)
 
 
 def test_lumping_adds_the_masses_between_springs():
@@ -132,7 +132,7 @@ def test_reflection_through_a_ratio_keeps_the_modes(inertias, data, i):
     J_in, J_out, C_out = Q_(inertias[0], KG_CM2), Q_(inertias[1:], KG_CM2), C
     at_input = natural_frequencies(np.concatenate([[J_in.m_as(KG_CM2)], load_at_input(J_L=J_out, i=i).m_as(KG_CM2)]) * Q_(1, KG_CM2),
                                    gearbox_at_input(C_t21=C_out, i=i))
-    at_output = natural_frequencies(np.concatenate([[inertia_at_output(J_1=J_in, i=i).m_as(KG_CM2)], J_out.m_as(KG_CM2)]) * Q_(1, KG_CM2), C_out)
+    at_output = natural_frequencies(np.concatenate([[inertia_at_output(J_in=J_in, i=i).m_as(KG_CM2)], J_out.m_as(KG_CM2)]) * Q_(1, KG_CM2), C_out)
     assert at_input.m_as("Hz") == pytest.approx(at_output.m_as("Hz"), rel=1e-9)
 
 

@@ -141,8 +141,8 @@ def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain
         steps = (("Load reflected to the gearbox input", j_l), (f"Stiffness of {part} at its input", c_g))
         train = DriveTrain(two_mass[0], (Member("gearbox", J_1, c_g.result), Member("load", j_l.result)), stand_in, shaft)
         return train, steps
-    j_m = inertia_at_output.step(J_1=given, i=i)
-    j_g = inertia_at_output.step(J_1=J_1, i=i)
+    j_m = inertia_at_output.step(J_in=given, i=i)
+    j_g = inertia_at_output.step(J_in=J_1, i=i)
     steps = (("Motor referred to the gearbox output", j_m), (f"J_1 of {part} referred to its output", j_g))
     return DriveTrain((Member("motor", j_m.result), Member("gearbox", j_g.result, C_t21)), two_mass[1], stand_in, shaft), steps
 
