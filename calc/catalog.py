@@ -497,8 +497,11 @@ def _numbers(cells: list) -> _Numbers:
     stripped = [spelling.strip() for spelling in spellings]
     parsed = np.array([float(cell) if cell and _FLOAT.match(cell) else math.nan for cell in stripped], float)
     blank = np.array([not cell for cell in stripped], bool)
-    index = dict(zip(spellings, range(len(spellings))))
-    at = np.fromiter(map(index.__getitem__, cells), np.intp, len(cells))
+    if len(spellings) == 1:  # a blank or constant column (a maker's table that leaves one out): no lookups
+        at = np.zeros(len(cells), np.intp)
+    else:
+        index = dict(zip(spellings, range(len(spellings))))
+        at = np.fromiter(map(index.__getitem__, cells), np.intp, len(cells))
     values, empty = parsed[at], blank[at]
     # A number's spelling never parses to NaN: NaN marks the empty and the malformed cells.
     return _Numbers(cells, values, empty, np.isnan(values) & ~empty)
