@@ -157,6 +157,9 @@ BACKLASH_CELLS = st.one_of(
 FILES = itertools.count()
 
 
+ARCMIN = math.pi / 10800  # rad
+
+
 @settings(max_examples=150, deadline=None)
 @given(st.lists(BACKLASH_CELLS, min_size=1, max_size=5))
 def test_a_cell_loads_exactly_when_it_is_a_finite_number_in_range(tmp_path_factory, cells):
@@ -176,6 +179,9 @@ def test_a_cell_loads_exactly_when_it_is_a_finite_number_in_range(tmp_path_facto
             expected.append(where + f"expected a finite number, found {cell!r}")
         elif float(cell) < 0:
             expected.append(where + f"expected a value of zero or more, found {cell}")
+        elif float(cell) != 0 and not 1e-12 <= float(cell) * ARCMIN <= 1e12:
+            # Held to the SI scale of a case file's values (calc.units.SI_SCALE): 1 arcmin = π / 10800 rad.
+            expected.append(where + f"expected a magnitude between 1e-12 and 1e+12 in SI units (rad), found {cell}, which is {float(cell) * ARCMIN:.3g}")
         else:
             expected.append(float(cell))
     first_error = next((e for e in expected if isinstance(e, str)), None)
