@@ -43,6 +43,10 @@ STYLE = f"""<style>
 .dr td.why {{ color: #555; white-space: normal; }} .dr tr.chosen td {{ background: #eef6ee; }}
 .dr .bar {{ display: inline-block; height: 8px; vertical-align: middle; margin-left: 4px; background: #ccc; width: 50px; }}
 .dr .bar > span {{ display: block; height: 8px; }}
+.dr details.notmade {{ display: inline-block; font-size: 13px; color: #6d4c00; }} .dr details.notmade summary {{ cursor: pointer; }}
+.dr details.notmade ul {{ margin: 2px 0 4px 18px; padding: 0; color: #333; }}
+.dr .refused {{ background: #fff0f0; border: 1px solid {FAIL_COLOR}; padding: 3px 6px; margin: 2px 0 6px; }}
+.dr td.differs {{ background: #fff4d6; font-weight: 600; }}
 .dr .values {{ color: #333; }} .dr .values b {{ font-weight: 600; }} .dr .note {{ color: #666; font-size: 12px; }}
 </style>"""
 
@@ -216,18 +220,48 @@ def _accuracy_table(a: dict) -> str:
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
 
 
+def not_made(r: dict) -> list[str]:
+    """The checks of the results that were not made, each with why: those of the chosen parts
+    (the closest candidates where none passes), the accuracy's, and the motor's checks the case
+    gives no rating for."""
+    out = []
+    for name in ("gearbox", "coupling"):
+        s = r.get(name)
+        if s and s.get("candidates"):
+            c = s["candidates"][0]
+            out += [f"{name} {c['part']}: {k['name']}: {k.get('not_made') or 'not made'}"
+                    for k in c["checks"] if k.get("governs", True) and k["passes"] is None]
+    out += [f"accuracy: {k['name']}: {k.get('not_made') or 'not made'}" for k in (r.get("accuracy") or {}).get("checks", []) if k["passes"] is None]
+    out += [f"motor: {n}" for n in (r.get("motor") or {}).get("notes", []) if " not checked" in n]
+    return out
+
+
+def _not_made_html(r: dict | None) -> str:
+    """Beside the verdict: how many checks were not made, and (a click away) which and why."""
+    missing = not_made(r) if r is not None else []
+    if not missing:
+        return ""
+    items = "".join(f"<li>{typeset(x)}</li>" for x in missing)
+    return f'<details class="notmade"><summary>{len(missing)} check{"s" if len(missing) > 1 else ""} not made</summary><ul>{items}</ul></details>'
+
+
 def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False,
-                 shown: int | None = None) -> str:
+                 shown: int | None = None, refused: list[str] = ()) -> str:
     """The review of an evaluated case as one HTML text (see the module's docstring);
     ``report_link``, where given, is the address of the case's report, linked beside the verdict;
     ``typed_by_hand``: the case's derived load cycle was changed segment by segment; ``shown``:
-    the candidates listed in each table, best first (all for None)."""
+    the candidates listed in each table, best first (all for None); ``refused``: the values typed
+    and refused (the results are those of the values before them), each with why."""
     word = "FAIL" if left_out else report.verdict.word
     passes = word == "PASS"
     cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
     chosen = " · ".join(f"{escape(w)} <b>{escape(p)}</b>" if p else f"{escape(w)} <span class=fail>none passes</span>" for w, p, _ in report.chosen)
     link = f' <a href="{escape(report_link)}" target="_blank">calc report</a>' if report_link else ""
-    out = [STYLE, '<div class="dr">', f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}</div>']
+    out = [STYLE, '<div class="dr">', f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}'
+           f"{_not_made_html(report.results)}</div>"]
+    if refused:
+        out.append('<div class="refused"><b>Not applied</b> (the results are those of the values before): '
+                   + "; ".join(typeset(x) for x in refused) + "</div>")
     reasons = [*left_out, *report.reasons]
     if reasons and not passes:
         out.append('<ul class="reasons">' + "".join(f"<li>{typeset(x)}</li>" for x in reasons) + "</ul>")
@@ -242,3 +276,60 @@ def results_html(report: Report, left_out: list[str], report_link: str | None = 
             out.append(_accuracy_table(r["accuracy"]))
     out.append("</div>")
     return "".join(out)
+
+
+def comparison_rows(variants: list[tuple[str, dict]]) -> list[tuple[str, list[str]]]:
+    """The side-by-side comparison of designs, ``(name, results as the JSON contract has them)``:
+    one row per quantity (verdict, chosen parts, the worst governing utilization of each, the
+    checks not made, the duty and accuracy values), one column per design, as plain text."""
+    def chosen(r, name):
+        s = r.get(name)
+        if not s:
+            return ""
+        return s["selected"] or "none passes"
+
+    def worst(r, name):
+        s = r.get(name)
+        if not s or not s.get("candidates"):
+            return ""
+        u = _worst(s["candidates"][0])
+        return "" if u is None else f"{100 * u:.0f} %"
+
+    def value(r, *path):
+        d = r
+        for p in path:
+            d = (d or {}).get(p)
+        return "" if d is None else quantity_text(d)
+
+    def verdict(r):
+        v = r.get("verdict") or {}
+        return {True: "PASS", False: "FAIL"}.get(v.get("passes"), "NOT DECIDED")
+
+    rows = [
+        ("verdict", verdict),
+        ("gearbox", lambda r: chosen(r, "gearbox")),
+        ("gearbox worst utilization", lambda r: worst(r, "gearbox")),
+        ("coupling", lambda r: chosen(r, "coupling")),
+        ("coupling worst utilization", lambda r: worst(r, "coupling")),
+        ("checks not made", lambda r: str(len(not_made(r)))),
+        ("mode", lambda r: (r.get("duty") or {}).get("mode", "")),
+        ("ED", lambda r: value(r, "duty", "ED")),
+        ("T_2max", lambda r: value(r, "cyclic", "T2max")),
+        ("T_2m", lambda r: value(r, "continuous", "T2m")),
+        ("positioning accuracy", lambda r: value(r, "accuracy", "positioning_accuracy")),
+        ("lost motion", lambda r: value(r, "accuracy", "lost_motion")),
+    ]
+    return [(name, [f(r) for _, r in variants]) for name, f in rows]
+
+
+def comparison_html(variants: list[tuple[str, Report]]) -> str:
+    """The variants kept in the review side by side (:func:`comparison_rows`); a value that
+    differs from the first variant's is highlighted."""
+    rows = comparison_rows([(n, r.results or {"verdict": {"passes": r.verdict.passes}}) for n, r in variants])
+    head = "".join(f"<th>{escape(n)}</th>" for n, _ in variants)
+    body = "".join(
+        f"<tr><td>{typeset(name)}</td>" + "".join(f'<td class="{"differs" if k and v != values[0] else ""}">{escape(v)}</td>' for k, v in enumerate(values)) + "</tr>"
+        for name, values in rows
+    )
+    return (f'{STYLE}<div class="dr dr-variants"><h3>Variants compared</h3><table><thead><tr><th></th>{head}</tr></thead>'
+            f"<tbody>{body}</tbody></table><div class=note>A value that differs from the first variant's is marked.</div></div>")
