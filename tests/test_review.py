@@ -222,7 +222,15 @@ def test_the_accuracy_chain_follows_a_change_of_ratio(case):
     assert "the transmission_trace of NPT035-10 not used: the selection chose TP010-8" in a["components"][1]["source"]
     assert "measured_trace" not in a["components"][1]
     text = results_html(*evaluated(with_changes(case, ratio=Q_(8, ""))))
-    assert '<span class="word pass">PASS</span>' in text and "Gearbox <b>TP010-8</b>" in text and "0.365 arcmin" in text
+    # TP010-8's transmission accuracy is not known (the catalog gives none): 0.365 arcmin is a lower
+    # bound, so the required 5 arcmin is not decided, and the page says which part and figure.
+    assert a["positioning_accuracy_is_lower_bound"] and a["unknown"] == [
+        "TP010-8: its transmission accuracy (the trace of NPT035-10 does not apply to it, and the case gives no transmission_accuracy)"]
+    assert a["checks"][0]["passes"] is None and r["verdict"]["passes"] is None
+    assert '<span class="word open">NOT DECIDED</span>' in text and "Gearbox <b>TP010-8</b>" in text and "≥ 0.365 arcmin" in text
+    # Beside the verdict, the checks not made: TP010-8's F_2R (no rating), the positioning accuracy,
+    # the motor's RMS and speed (the case gives no ratings).
+    assert "<b>a lower bound</b>: unknown TP010-8: its transmission accuracy" in text and "4 checks not made" in text
 
 
 def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
@@ -357,14 +365,17 @@ def test_an_impossible_move_shows_the_input_error_and_the_panel_recovers():
     panel.controls["move[1].accel_time"].value = 0.3  # 0.3 s + 0.3 s > 0.5 s
     panel.settled()
     assert "input error</b>: " in panel.results.value and "Governing checks" not in panel.results.value
-    assert "move[1].accel_time: expected acceleration and deceleration times that fit in the move" in panel.results.value
+    # The control by its label, the case file by its name (no folder of the server), no figure.
+    assert "1 move: accel time <i>t</i><sub>a</sub>: expected acceleration and deceleration times that fit in the move" in panel.results.value
+    assert "move[1]" not in panel.results.value.split("data-changed")[1].split(">", 1)[1] and str(DERIVED_EXAMPLE.parent) not in panel.results.value
+    assert panel.load_cycle.layout.display == "none" and panel.chain.layout.display == "none"
     assert "found 0.3 s + 0.3 s &gt; 0.5 s" in panel.results.value
     panel.controls["move[1].accel_time"].value = 0.15
     panel.settled()
     assert panel.results.value.replace(f'data-generation="{panel.generation}"', "") == first.replace('data-generation="1"', "")
     panel.controls["move[1].jerk_time"].value = 0.1  # over half of 0.15 s
     panel.settled()
-    assert "move[1].jerk_time: expected a jerk time of at most half the acceleration and the deceleration time (0.075 s)" in panel.results.value
+    assert "1 move: jerk time <i>t</i><sub>j</sub>: expected a jerk time of at most half the acceleration and the deceleration time (0.075 s)" in panel.results.value
     panel.controls["move[1].jerk_time"].value = 0.03
     panel.settled()
     assert "PASS" in panel.results.value and "peak speed 42.86 rpm" in panel.results.value
@@ -432,3 +443,117 @@ def test_the_server_serves_the_folder_of_page_and_reports_and_only_the_reports_p
     # A folder that holds the page: its PDFs are served from the top of it.
     assert serve.allowed(ROOT / "calc") == [r"[^/]+\.pdf"]
     assert serve.environment(EXAMPLE, tmp_path)[serve.REPORTS_VARIABLE] == str(tmp_path.resolve())
+
+
+# -- never silently changed, kept, compared ------------------------------------------------------
+
+
+def test_a_typed_value_is_read_with_a_decimal_comma_and_refused_outside_its_range_never_clamped():
+    panel = DesignReview(DERIVED_EXAMPLE)
+    first = panel.generation
+    panel.fields["move[2].dwell"].value = "0,6"  # a decimal comma: 0.6 s, not 6 s
+    panel.settled()
+    assert panel.controls["move[2].dwell"].value == 0.6 and panel.fields["move[2].dwell"].value == "0.6"
+    assert panel.generation > first and not panel.refused
+    for typed, why in (("1e9", "outside the range"), ("-40", "outside the range"), ("abc", "is not a number"), ("0", "outside the range")):
+        panel.fields["motor.peak_torque"].value = typed
+        panel.settled()
+        assert panel.controls["motor.peak_torque"].value == 12.0  # kept, not clamped
+        assert why in panel._messages["motor.peak_torque"].value and "dr-refused" in panel.fields["motor.peak_torque"]._dom_classes
+        assert "Not applied" in panel.results.value and "motor peak torque" in panel.results.value
+    panel.fields["motor.peak_torque"].value = "16"
+    panel.settled()
+    assert not panel.refused and panel._messages["motor.peak_torque"].value == "" and "Not applied" not in panel.results.value
+    # The results carry the field texts they were computed for, and the changed ones.
+    assert '&quot;motor.peak_torque&quot;: &quot;16&quot;' in panel.results.value
+
+
+def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_path):
+    import shutil
+
+    for p in (DERIVED_EXAMPLE, DERIVED_EXAMPLE.parent / "linear-axis-inch.toml"):
+        shutil.copy(p, tmp_path / p.name)
+    (tmp_path / "data").mkdir()
+    for p in (DERIVED_EXAMPLE.parent.parent / "data").glob("*.csv"):
+        shutil.copy(p, tmp_path / "data" / p.name)
+    original = tmp_path / DERIVED_EXAMPLE.name
+    text = original.read_text().replace("../data/", "data/")
+    original.write_text(text)
+    panel = DesignReview(original)
+    panel.controls["move[1].time"].value = 0.6
+    panel.controls["motor.peak_torque"].value = 16.0
+    panel.controls["coupling.temperature"].value = 60.0
+    panel.settled()
+    assert panel.save("indexing-table.toml") is None and "exists" in panel.kept.value  # never over a file
+    assert panel.save("../elsewhere.toml") is None and "no folder" in panel.kept.value  # only in the cases' folder
+    saved = panel.save("axis-3-slower.toml")
+    assert saved == tmp_path / "axis-3-slower.toml" and original.read_text() == text
+    written = saved.read_text()
+    assert written.startswith("# Changed in the design review from indexing-table.toml: move[1].time 0.5 s -> 0.6 s; "
+                              "motor.peak_torque 12 N*m -> 16 N*m; coupling.temperature 40 degC -> 60 degC\n")
+    # Only the changed values rewritten: every comment and every other line as it was.
+    assert written.count("\n") == text.count("\n") + 1 and "# T_1B, maximum torque of the servo motor" in written
+    assert 'peak_torque = "16 N*m"         # T_1B' in written
+    # The file re-evaluates to the screen's results.
+    assert evaluate(read_case(saved))["verdict"] == evaluate(panel.shown[0])["verdict"]
+    assert evaluate(read_case(saved))["cyclic"] == evaluate(panel.shown[0])["cyclic"]
+    assert saved in [p for _, p in panel.case_file.options]
+    assert 'download="indexing-table-variant-1.toml"' in panel.download.value
+
+
+def test_undo_and_redo_step_through_the_changes():
+    panel = DesignReview(EXAMPLE)
+    def shown():  # the results without their generation count
+        return panel.results.value.replace(f'data-generation="{panel.generation}"', "")
+
+    first = shown()
+    panel.controls["motor.peak_torque"].value = 30.0
+    panel.settled()
+    panel.controls["gearbox.ratio"].value = 8.0
+    panel.settled()
+    assert not panel.undo_button.disabled and panel.redo_button.disabled
+    panel.undo()
+    assert panel.controls["gearbox.ratio"].value == 10.0 and panel.controls["motor.peak_torque"].value == 30.0
+    panel.undo()
+    assert panel.changes() == {} and shown() == first and panel.undo_button.disabled
+    panel.redo()
+    assert panel.changes() == {"motor.peak_torque": (30.0, "N*m")} and "NPS045-10" in panel.results.value
+    assert "dr-changed" in panel._labels["motor.peak_torque"].value and "dr-changed" not in panel._labels["gearbox.ratio"].value
+
+
+def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
+    panel = DesignReview(EXAMPLE)
+    panel.keep_variant()
+    panel.controls["motor.peak_torque"].value = 30.0
+    panel.settled()
+    panel.keep_variant()
+    table = panel.variants_html.value
+    # 30 N·m · 10 · 1.3 · 0.97 = 378.3 N·m: NPS045-10 instead of NPT035-10, marked as a difference.
+    assert "Variants compared" in table and '<td class="differs">NPS045-10</td>' in table and '<td class="">NPT035-10</td>' in table
+    assert '<td class="differs">378.3 N·m</td>' in table and "with motor peak torque" in table
+    import json
+    import subprocess
+    import sys
+
+    stronger = tmp_path / "stronger.toml"
+    stronger.write_text(EXAMPLE.read_text().replace('peak_torque = "12 N*m"', 'peak_torque = "30 N*m"')
+                        .replace('"../../data/', f'"{EXAMPLE.parent.parent.parent}/data/'))
+    done = subprocess.run([sys.executable, "-m", "calc", "compare", str(EXAMPLE), str(stronger), "--json"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    rows = {r["name"]: r for r in json.loads(done.stdout)["rows"]}
+    assert rows["gearbox"]["values"] == ["NPT035-10", "NPS045-10"] and rows["gearbox"]["differs"] == [False, True]
+    assert rows["T_2max"]["values"][1] == "378.3 N·m" and rows["mode"]["differs"] == [False, False]
+    text = subprocess.run([sys.executable, "-m", "calc", "compare", str(EXAMPLE), str(stronger)], capture_output=True, text=True).stdout
+    assert "NPS045-10 *" in text and text.splitlines()[-1] == "* differs from the first design"
+
+
+def test_a_temperature_on_a_bellows_coupling_says_it_has_no_effect():
+    panel = DesignReview(EXAMPLE)
+    assert "no effect on this design: a metal bellows coupling has no temperature factor" in panel._messages["coupling.temperature"].value
+
+
+def test_the_chooser_gives_the_screens_verdict_once_changed():
+    panel = DesignReview(EXAMPLE)
+    panel.controls["accuracy.applied_torque"].value = 2.0  # 9.049 arcmin > 5 (FAIL, E13)
+    panel.settled()
+    assert panel.case_file.label == f"{EXAMPLE.name} · FAIL (changed here)"

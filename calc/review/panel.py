@@ -124,7 +124,8 @@ class DesignReview:
         self.case_file = w.Dropdown(options=[(self.labels[p], p) for p in choices], value=path, description="case",
                                     style={"description_width": "3em"}, layout=w.Layout(flex="1 1 auto", width="auto"))
         self.case_file.add_class("dr-case")
-        self.case_file.observe(lambda _: self.load(), names="value")
+        self._relabelling = False  # the chooser's options being rewritten, not a case chosen
+        self.case_file.observe(lambda _: self._relabelling or self.load(), names="value")
         self.reset = w.Button(description="reset", tooltip="back to the values of the case file", layout=w.Layout(width="4.5em", flex="0 0 4.5em"))
         self.reset.on_click(lambda _: self.load())
         self.undo_button = w.Button(description="undo", tooltip="the values before the last change", layout=w.Layout(width="4.2em", flex="0 0 4.2em"), disabled=True)
@@ -394,11 +395,16 @@ class DesignReview:
         label = f"{path.name} · {word}" if (changes or " · " in self.labels[path]) else self.labels[path]
         options = [(label if p == path else self.labels[p], p) for _, p in self.case_file.options]
         if options != list(self.case_file.options):
-            with self.case_file.hold_trait_notifications():
-                self.case_file.unobserve_all("value")
-                self.case_file.options = options
-                self.case_file.value = path
-                self.case_file.observe(lambda _: self.load(), names="value")
+            self._relabel(options)
+
+    def _relabel(self, options: list) -> None:
+        """New options for the chooser, the case shown staying chosen (and not read again)."""
+        self._relabelling = True
+        try:
+            self.case_file.options = options
+            self.case_file.value = self.case.path
+        finally:
+            self._relabelling = False
 
     def _figure(self, name, key, draw) -> bytes:
         """A figure's PNG, drawn once for its inputs (the last :data:`FIGURES_KEPT` are kept, so
@@ -492,11 +498,7 @@ class DesignReview:
             self.kept.value = f'<span style="color:{FAIL_COLOR}">not saved: {typeset(_without_folder(str(exc), self.case.path))}</span>'
             return None
         self.labels[path] = path.name
-        with self.case_file.hold_trait_notifications():
-            self.case_file.unobserve_all("value")
-            self.case_file.options = sorted([*self.case_file.options, (path.name, path)], key=lambda o: o[1])
-            self.case_file.value = self.case.path
-            self.case_file.observe(lambda _: self.load(), names="value")
+        self._relabel(sorted([*self.case_file.options, (path.name, path)], key=lambda o: o[1]))
         self.kept.value = f"saved as {escape(path.name)} beside {escape(self.case.path.name)} (in the case chooser)"
         self.save_name.value = free_name(self.case.path)
         return path

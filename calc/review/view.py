@@ -136,7 +136,8 @@ def _governing(r: dict) -> str:
             rows.append(["motor", typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]),
                          _verdict_cell(k["passes"], k.get("not_made"))])
     for k in (r.get("accuracy") or {}).get("checks", []):
-        rows.append(["accuracy", typeset(k["criterion"]), _q(k["value"]), _q(k["required"]), _utilization(k["utilization"]), _verdict_cell(k["passes"])])
+        rows.append(["accuracy", typeset(k["criterion"]), ("≥ " if k["passes"] is None else "") + _q(k["value"]), _q(k["required"]),
+                     _utilization(k["utilization"]), _verdict_cell(k["passes"], k.get("not_made"))])
     if not rows:
         return ""
     return "<h3>Governing checks</h3>" + _table(["part", "check", "required", "rated", "utilization", "verdict"], rows, numeric={2, 3, 4})
@@ -214,7 +215,9 @@ def _accuracy_table(a: dict) -> str:
     rows = [
         [typeset("C_total"), "total torsional stiffness at the output", _q(a.get("C_total"))],
         [typeset("phi_LM"), f"lost motion at the applied torque {_q(a.get('applied_torque'))}", _q(a.get("lost_motion"))],
-        ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.get('positioning_rule', ''))})", _q(a.get("positioning_accuracy"))],
+        ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.get('positioning_rule', ''))})"
+         + (f"; <b>a lower bound</b>: unknown {typeset('; '.join(a['unknown']))}" if a.get("unknown") else ""),
+         ("≥ " if a.get("unknown") else "") + _q(a.get("positioning_accuracy"))],
         ["", "repeatability" + (" (upper bound)" if a.get("repeatability_is_bound") else ""), _q(a.get("repeatability"))],
     ]
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
@@ -316,7 +319,7 @@ def comparison_rows(variants: list[tuple[str, dict]]) -> list[tuple[str, list[st
         ("ED", lambda r: value(r, "duty", "ED")),
         ("T_2max", lambda r: value(r, "cyclic", "T2max")),
         ("T_2m", lambda r: value(r, "continuous", "T2m")),
-        ("positioning accuracy", lambda r: value(r, "accuracy", "positioning_accuracy")),
+        ("positioning accuracy", lambda r: ("≥ " if (r.get("accuracy") or {}).get("unknown") else "") + value(r, "accuracy", "positioning_accuracy")),
         ("lost motion", lambda r: value(r, "accuracy", "lost_motion")),
     ]
     return [(name, [f(r) for _, r in variants]) for name, f in rows]
@@ -333,3 +336,32 @@ def comparison_html(variants: list[tuple[str, Report]]) -> str:
     )
     return (f'{STYLE}<div class="dr dr-variants"><h3>Variants compared</h3><table><thead><tr><th></th>{head}</tr></thead>'
             f"<tbody>{body}</tbody></table><div class=note>A value that differs from the first variant's is marked.</div></div>")
+
+
+def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
+    """:func:`comparison_rows` as a plain text table, a column per design; a value that differs
+    from the first design's is marked ``*``."""
+    cells = [["", *names]] + [[name, *(v + (" *" if k and v != values[0] else "") for k, v in enumerate(values))] for name, values in rows]
+    widths = [max(len(r[j]) for r in cells) for j in range(len(cells[0]))]
+    lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in cells]
+    return "\n".join([lines[0], "  ".join("-" * w for w in widths), *lines[1:], "* differs from the first design"])
+
+
+def compare_cases(paths: list[str], as_json: bool = False) -> str:
+    """``python -m calc compare A.toml B.toml ...``: the designs side by side, as the review's
+    *Keep as variant* table has them (:func:`comparison_rows`), as text or as JSON
+    (``{"designs": [file, ...], "rows": [{"name", "values": [...], "differs": [...]}]}``)."""
+    import json
+    from pathlib import Path
+
+    from ..case import read_case
+    from ..sections import evaluate
+
+    designs = [(Path(p).name, evaluate(read_case(p)).to_json()) for p in paths]
+    rows = comparison_rows(designs)
+    names = [n for n, _ in designs]
+    if as_json:
+        return json.dumps({"designs": [str(p) for p in paths],
+                           "rows": [{"name": name, "values": values, "differs": [k > 0 and v != values[0] for k, v in enumerate(values)]}
+                                    for name, values in rows]}, indent=2, ensure_ascii=False)
+    return comparison_text(names, rows)
