@@ -47,6 +47,17 @@ def _free_port() -> int:
 class Server:
     url: str
     started: float  # s from the command to a kernel waiting with the panel drawn
+    process: subprocess.Popen | None = None
+
+    def stop(self) -> None:
+        """Stop the server (and its kernels) now, as a dropped connection would leave the page."""
+        if self.process.poll() is None:
+            os.killpg(self.process.pid, signal.SIGTERM)
+            try:
+                self.process.wait(10)
+            except subprocess.TimeoutExpired:
+                os.killpg(self.process.pid, signal.SIGKILL)
+                self.process.wait()
 
 
 @contextlib.contextmanager
@@ -75,14 +86,10 @@ def served(case: Path | None = None, timeout: float = 90.0, reports: Path | None
     try:
         if not filled.wait(timeout):
             raise RuntimeError("the review server prepared no kernel: " + "".join(log)[-3000:])
-        yield Server(f"http://127.0.0.1:{port}/", time.perf_counter() - start)
+        up = Server(f"http://127.0.0.1:{port}/", time.perf_counter() - start, server)
+        yield up
     finally:
-        os.killpg(server.pid, signal.SIGTERM)
-        try:
-            server.wait(10)
-        except subprocess.TimeoutExpired:
-            os.killpg(server.pid, signal.SIGKILL)
-            server.wait()
+        Server("", 0.0, server).stop()
 
 
 @dataclass
@@ -150,6 +157,20 @@ def wait_for_results(page, after: int, timeout: float = 30_000) -> None:
     """Until the results after generation ``after`` are on the page."""
     page.wait_for_function(f"() => Number(document.querySelector('{RESULTS}')?.dataset.generation) > {after}",
                            polling="raf", timeout=timeout)
+
+
+@contextlib.contextmanager
+def browser_page(viewport: dict = SCREEN):
+    """A page of headless Chromium with a fresh profile, ``viewport`` wide and high."""
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
+        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
+                                                        args=CHROMIUM_ARGS, viewport=viewport)
+        try:
+            yield browser.new_page()
+        finally:
+            browser.close()
 
 
 def _generation(page) -> int:

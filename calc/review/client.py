@@ -27,15 +27,15 @@ STYLE = """<style>
 .design-review .dr-changed { color: #1f5fbf; border-left: 4px solid #1f5fbf; padding-left: 4px; margin-left: -8px; }
 @media (max-width: 1180px) {
   /* a narrow screen: the controls' column narrows so that the verdict stays beside them */
-  .design-review > .widget-hbox > .widget-vbox:first-child { flex: 0 0 430px !important; width: 430px !important; }
+  .design-review > .widget-vbox:first-child { flex: 0 0 430px !important; width: 430px !important; }
   .design-review .dr-label { flex: 0 0 12em !important; width: 12em !important; }
   .design-review .dr-message, .design-review .dr-idle { margin-left: 12em; }
-  .design-review > .widget-hbox > .widget-vbox:last-child { min-width: 420px !important; flex: 1 1 420px !important; }
+  .design-review > .widget-vbox:last-child { min-width: 420px !important; flex: 1 1 420px !important; }
 }
 @media print {
   @page { size: A4; margin: 12mm; }
-  .design-review > .widget-hbox { flex-flow: column !important; }
-  .design-review > .widget-hbox > .widget-vbox { width: 100% !important; min-width: 0 !important; flex: 1 1 auto !important; }
+  .design-review { flex-flow: column !important; }
+  .design-review > .widget-vbox { width: 100% !important; min-width: 0 !important; flex: 1 1 auto !important; }
   .design-review .dr table { font-size: 9px; } .design-review .dr td, .design-review .dr th { white-space: normal; }
   .design-review img { max-width: 100% !important; }
   .design-review .dr-keep, .design-review button { display: none !important; }
