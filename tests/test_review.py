@@ -557,3 +557,22 @@ def test_the_chooser_gives_the_screens_verdict_once_changed():
     panel.controls["accuracy.applied_torque"].value = 2.0  # 9.049 arcmin > 5 (FAIL, E13)
     panel.settled()
     assert panel.case_file.label == f"{EXAMPLE.name} · FAIL (changed here)"
+
+
+def test_what_cannot_be_saved_says_why():
+    from calc.errors import CalcError
+    from calc.review.keep import changed_text
+
+    text = '[motor]\npeak_torque = "12 N*m"\n[[move]]\ndwell = "1 s"\n'
+    with pytest.raises(CalcError, match=r"^motor: not a key path of a case file$"):
+        changed_text(text, {"motor": (1.0, "s")}, "a.toml")
+    with pytest.raises(CalcError, match=r"^a.toml: move\[2\].dwell: the file has 1 \[\[move\]\] tables$"):
+        changed_text(text, {"move[2].dwell": (1.0, "s")}, "a.toml")
+    # A segment changed by hand where the file derives its cycle: the file has no segments to write it in.
+    with pytest.raises(CalcError, match=r"^a.toml: profile\[1\].torque: the file has no \[profile\] table to write it in$"):
+        changed_text(text, {"profile[1].torque": (9.0, "N*m")}, "a.toml")
+    panel = DesignReview(EXAMPLE)
+    panel.fields["motor.peak_torque"].value = "abc"
+    panel.settled()
+    assert panel.save("anything.toml") is None and "a refused value is in a field" in panel.kept.value
+    assert not (EXAMPLE.parent / "anything.toml").exists()

@@ -114,7 +114,8 @@ SCRIPT = r"""<script>
     let wanted;
     try { wanted = JSON.parse(decodeURIComponent(location.hash.slice(1))); } catch (e) { restoring = false; return; }
     const r = results();
-    if (!r || !wanted || !wanted.values) { restoring = false; return; }
+    if (!r) return;  // the panel not drawn yet
+    if (!wanted || !wanted.values) { restoring = false; return; }
     if (wanted.case && r.dataset.case !== wanted.case) {
       const choice = document.querySelector('.design-review .dr-case select');
       const k = choice ? [...choice.options].findIndex(o => o.text.split(' · ')[0].trim() === wanted.case) : -1;

@@ -490,8 +490,6 @@ class DesignReview:
         try:
             if self.refused:
                 raise CalcError("a refused value is in a field: correct it (or undo) before saving")
-            if self.case.motion is not None and self.shown is not None and self.shown[0].motion is None:
-                raise CalcError("the segments of a derived cycle were changed by hand; reset them to save the moves")
             path = save_path(self.case.path, (name or self.save_name.value).strip())
             path.write_text(self.case_text(), encoding="utf-8")
         except (CalcError, OSError) as exc:
