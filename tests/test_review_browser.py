@@ -10,6 +10,9 @@ On the derived example, a move's time and the mechanism's inertia are changed, a
 shows its input error, and the calc report linked beside the verdict answers as a PDF.
 """
 
+import shutil
+import subprocess
+
 import pytest
 
 from bench.review_browser import CHROMIUM, review_in_browser, served
@@ -180,8 +183,21 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         wait_for_results(page, g)
         page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
         assert row(page, "profile[4].duration").locator("input[type=text]").input_value() == "1"
-        # The changed values are kept in the page's address.
+        # The changed values are in the address: a reload types them in again.
+        address = page.url
         assert "motor.peak_torque" in page.evaluate("decodeURIComponent(location.hash)")
+        page.goto("about:blank")
+        page.goto(address)
+        page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')?.dataset.changed?.includes('peak_torque')",
+                               timeout=60_000)
+        assert row(page, "motor.peak_torque").locator("input[type=text]").input_value() == "16"
+        # Printed on A4, nothing cut: the page's print style puts the results under the controls.
+        page.emulate_media(media="print")
+        page.pdf(path=str(shots / "printed.pdf"), format="A4", print_background=True)
+        page.emulate_media(media="screen")
+        printed = subprocess.run(["pdftotext", "-layout", str(shots / "printed.pdf"), "-"], capture_output=True, text=True).stdout
+        assert "Governing checks" in printed and "utilization" in printed and "Coupling candidates" in printed
+        assert "motor peak torque" in printed
         page.wait_for_timeout(500)
         shown = page.inner_text(RESULTS_SELECTOR)
         page.locator(".design-review button", has_text="Save as case file").click()
@@ -191,7 +207,7 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         r = evaluate(read_case(saved)).to_json()
         assert shown.startswith({True: "PASS", False: "FAIL", None: "NOT DECIDED"}[r["verdict"]["passes"]])
         assert r["gearbox"]["selected"] in shown
-        page.screenshot(path=str(shots / "saved.png"))
+        page.screenshot(path=str(shots / "saved.png"), full_page=True)
         server.stop()  # the server gone (a dropped tunnel): a change can no longer be computed
         row(page, "motor.peak_torque").locator("input[type=text]").fill("17")
         row(page, "motor.peak_torque").locator("input[type=text]").press("Enter")

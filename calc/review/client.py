@@ -24,6 +24,7 @@ STYLE = """<style>
 .design-review .dr-refused input { border: 2px solid #b2222a !important; background: #fff0f0 !important; }
 .design-review .dr-message { color: #b2222a; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
 .design-review .dr-idle { color: #666; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
+.design-review > .widget-vbox:last-child { overflow-x: auto; }  /* a wide table scrolls in its column, never cut */
 .design-review .dr-changed { color: #1f5fbf; border-left: 4px solid #1f5fbf; padding-left: 4px; margin-left: -8px; }
 @media (max-width: 1180px) {
   /* a narrow screen: the controls' column narrows so that the verdict stays beside them */
@@ -34,6 +35,10 @@ STYLE = """<style>
 }
 @media print {
   @page { size: A4; margin: 12mm; }
+  /* Voilà's page scrolls inside fixed-height boxes: printed, every box takes its content's height */
+  html, body, body * { overflow: visible !important; }
+  html, body, .lm-Widget, .jp-OutputArea, .jp-Cell { height: auto !important; max-height: none !important; contain: none !important; }
+  .lm-Widget { position: relative !important; top: auto !important; left: auto !important; }
   .design-review { flex-flow: column !important; }
   .design-review > .widget-vbox { width: 100% !important; min-width: 0 !important; flex: 1 1 auto !important; }
   .design-review .dr table { font-size: 9px; } .design-review .dr td, .design-review .dr th { white-space: normal; }
@@ -48,6 +53,7 @@ SCRIPT = r"""<script>
   window.designReviewClient = true;
   const panel = () => document.querySelector('.design-review');
   const results = () => document.querySelector('.design-review .dr[data-generation]');
+  const loadedAt = Date.now();
   let askedAfter = null, askedAt = 0, restoring = null;  // the results' generation when a value was last asked for
   // The text each control shows, by key path: a field's text, a choice's option.
   function shown() {
@@ -75,6 +81,7 @@ SCRIPT = r"""<script>
   function show() {
     const p = panel(), r = results();
     if (!p || !r) return;
+    if (restoring !== false && restoring !== 'case') restore();
     const state = p.querySelector('.dr-state'), link = connection(), lost = link !== null && link !== 'connected';
     const same = current(), waiting = askedAfter !== null && Number(r.dataset.generation) <= askedAfter && Date.now() - askedAt < 3000;
     const stale = !same || waiting;
@@ -90,7 +97,7 @@ SCRIPT = r"""<script>
       const word = lost ? 'lost' : stale ? 'stale' : 'current';
       if (state.dataset.state !== word) state.dataset.state = word;
     }
-    if (same && !lost && !restoring) keepInAddress(r);
+    if (same && !lost && restoring === false) keepInAddress(r);  // not before the address was read
   }
   // The changed values in the page's address, so that a reload or a link types them in again.
   function keepInAddress(r) {
@@ -98,9 +105,12 @@ SCRIPT = r"""<script>
     const hash = Object.keys(changed).length ? '#' + encodeURIComponent(JSON.stringify({case: name, values: changed})) : '';
     if (location.hash !== hash) history.replaceState(null, '', location.pathname + location.search + hash);
   }
-  function type(key, text) {
+  function rowOf(key) {
     const label = document.querySelector(`.design-review [data-key="${CSS.escape(key)}"]`);
-    const row = label && label.closest('.dr-row');
+    return label && label.closest('.dr-row');
+  }
+  function type(key, text) {
+    const row = rowOf(key);
     if (!row) return;
     const field = row.querySelector('input[type=text]'), choice = row.querySelector('select');
     const target = field || choice;
@@ -110,19 +120,23 @@ SCRIPT = r"""<script>
   }
   function ask() { const r = results(); askedAfter = r ? Number(r.dataset.generation) : 0; askedAt = Date.now(); }
   function restore() {  // once, when the panel is first shown
-    if (!location.hash || restoring === false) return;
+    if (restoring === false) return;
+    if (!location.hash) { restoring = false; return; }
     let wanted;
     try { wanted = JSON.parse(decodeURIComponent(location.hash.slice(1))); } catch (e) { restoring = false; return; }
     const r = results();
     if (!r) return;  // the panel not drawn yet
     if (!wanted || !wanted.values) { restoring = false; return; }
     if (wanted.case && r.dataset.case !== wanted.case) {
+      if (restoring === 'case') return;  // the case asked for is being loaded
       const choice = document.querySelector('.design-review .dr-case select');
       const k = choice ? [...choice.options].findIndex(o => o.text.split(' · ')[0].trim() === wanted.case) : -1;
-      if (k < 0 || restoring === 'case') { restoring = false; return; }
+      if (k < 0) { restoring = false; return; }
       restoring = 'case'; choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
       return;  // the values follow once the case is loaded
     }
+    // The controls are drawn after the results at times: wait for every row asked for (not forever).
+    if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < 20000) return;
     restoring = false;
     for (const [key, text] of Object.entries(wanted.values)) type(key, text);
   }
@@ -148,7 +162,7 @@ SCRIPT = r"""<script>
     const r = results();
     if (r && r.dataset.changed && r.dataset.changed !== '{}' && !location.hash) { e.preventDefault(); e.returnValue = ''; }
   });
-  new MutationObserver(() => { if (restoring !== false) restore(); show(); })
+  new MutationObserver(() => { if (restoring === 'case') restore(); show(); })
     .observe(document.body, {subtree: true, childList: true, attributes: true, attributeFilter: ['data-generation', 'data-inputs']});
   setInterval(show, 500);
 })();
