@@ -576,3 +576,31 @@ def test_what_cannot_be_saved_says_why():
     panel.settled()
     assert panel.save("anything.toml") is None and "a refused value is in a field" in panel.kept.value
     assert not (EXAMPLE.parent / "anything.toml").exists()
+
+
+def test_the_report_of_the_screen_rests_on_the_saved_variant(tmp_path, monkeypatch):
+    import calc.review.panel
+
+    built = []
+
+    def build(case, pdf):  # the report's own tests build real PDFs; here only what is built, and the link
+        import subprocess
+
+        built.append((case, pdf, case.read_text()))
+        pdf.write_bytes(b"%PDF-")
+        return subprocess.CompletedProcess([], 0, "", "")
+
+    monkeypatch.setattr(calc.review.panel, "_build_report", build)
+    case = tmp_path / "axis.toml"
+    case.write_text(EXAMPLE.read_text().replace('"../../data/', f'"{EXAMPLE.parent.parent.parent}/data/'))
+    reports = tmp_path / "reports"
+    reports.mkdir()
+    panel = DesignReview(case, reports=reports, report_link=lambda pdf: f"voila/files/{pdf.name}")
+    panel.report_of_screen(wait=True)  # nothing changed: the case file's own report
+    assert built[-1][:2] == (case, reports / "axis.pdf") and 'href="voila/files/axis.pdf"' in panel.kept.value
+    panel.controls["motor.peak_torque"].value = 16.0
+    panel.settled()
+    panel.report_of_screen(wait=True)
+    saved, pdf, text = built[-1]
+    assert saved == tmp_path / "axis-variant-1.toml" and pdf == reports / "axis-variant-1.pdf"
+    assert 'peak_torque = "16 N*m"' in text and "the screen's design" in panel.kept.value

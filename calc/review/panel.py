@@ -151,12 +151,15 @@ class DesignReview:
         self.variant_button = w.Button(description="Keep as variant", tooltip="pin the design on the screen beside the others",
                                        layout=w.Layout(width="11em"))
         self.variant_button.on_click(lambda _: self.keep_variant())
+        self.report_button = w.Button(description="Calc report of this screen", layout=w.Layout(width="15em"),
+                                      tooltip="save the changed values as a case file (Save as case file) and build its calc report (PDF)")
+        self.report_button.on_click(lambda _: self.report_of_screen())
         self.download = w.HTML()
         self.kept = w.HTML()
         self.variants_html = w.HTML(layout=w.Layout(width="100%"))
         self.variants: list = []  # (name, Report) pinned by keep_variant
         keep = w.VBox([w.HBox([self.save_name, self.save_button], layout=w.Layout(width="100%")),
-                       w.HBox([self.variant_button, self.download]), self.kept])
+                       w.HBox([self.variant_button, self.report_button]), self.download, self.kept])
         keep.add_class("dr-keep")
         top = w.HBox([self.case_file, self.reset, self.undo_button, self.redo_button], layout=w.Layout(width="100%"))
         self.all_candidates.observe(self._changed, names="value")
@@ -514,6 +517,36 @@ class DesignReview:
         self.download.value = (f'<a download="{escape(self.save_name.value)}" href="data:application/toml;charset=utf-8,{quote(text)}">'
                                "Download the case file</a>")
 
+    def report_of_screen(self, wait: bool = False):
+        """Build the calc report of the design on the screen: the case file itself while nothing
+        is changed, else the changed values saved first (:meth:`save`), so the report rests on a
+        file that reproduces it. The PDF goes to the reports' folder (the case's folder where none
+        is given) and is linked under the buttons once built (``python -m calc report``, some 15 s,
+        in a process of its own so the page keeps answering). Returns the thread building it."""
+        path = self.case.path if not self.changes() else self.save()
+        if path is None:
+            return None
+        folder = Path(self.reports_folder) if self.reports_folder else path.parent
+        pdf = folder / f"{path.stem}.pdf"
+        self.kept.value = f"building the calc report of {escape(path.name)} (some 15 s) …"
+
+        def build():
+            done = _build_report(path, pdf)
+            if done.returncode != 0 or not pdf.is_file():
+                why = (done.stderr.strip().splitlines() or [f"exit {done.returncode}"])[-1]
+                self.kept.value = f'<span style="color:{FAIL_COLOR}">no calc report of {escape(path.name)}: {typeset(_without_folder(why, path))}</span>'
+                return
+            self.reports[path] = pdf
+            address = self.report_link(pdf) if self.report_link is not None else None
+            link = f'<a href="{escape(address)}" target="_blank">{escape(pdf.name)}</a>' if address else escape(str(pdf))
+            self.kept.value = f"calc report of {escape(path.name)}, the screen's design: {link}"
+
+        worker = threading.Thread(target=build, daemon=True)
+        worker.start()
+        if wait:
+            worker.join()
+        return worker
+
     def keep_variant(self) -> None:
         """Pin the design on the screen (its name says what changed) beside the variants kept
         before, in the comparison table under the results."""
@@ -527,6 +560,14 @@ class DesignReview:
         self.variants.append((name, report))
         self.variants_html.value = comparison_html(self.variants)
         self.kept.value = f"kept variant {len(self.variants)}"
+
+
+def _build_report(case: Path, pdf: Path):
+    """``python -m calc report case -o pdf`` (the completed process)."""
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-m", "calc", "report", str(case), "-o", str(pdf)], capture_output=True, text=True)
 
 
 def _without_folder(text: str, path: Path) -> str:
