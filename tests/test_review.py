@@ -604,3 +604,28 @@ def test_the_report_of_the_screen_rests_on_the_saved_variant(tmp_path, monkeypat
     saved, pdf, text = built[-1]
     assert saved == tmp_path / "axis-variant-1.toml" and pdf == reports / "axis-variant-1.pdf"
     assert 'peak_torque = "16 N*m"' in text and "the screen's design" in panel.kept.value
+
+
+def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si():
+    from tests.conftest import ROOT
+
+    panel = DesignReview(ROOT / "cases" / "linear-axis-inch.toml")
+    # The motor's inputs as the file writes them (60 lbf·in, not 6.8 N·m rounded from 6.779 N·m).
+    assert panel.fields["motor.peak_torque"].value == "60" and panel._spec("motor.peak_torque").unit == "lbf*in"
+    assert panel.units.value == "inch-pound"
+    inch = panel.results.value
+    assert "lbf·in" in inch and "N·m</td>" not in inch
+    panel.units.value = "SI"
+    panel.settled()
+    si = panel.results.value
+    assert "N·m" in si and "lbf·in" not in si
+    # T_2max in both: 1 lbf·in = 0.112985 N·m.
+    import re
+
+    t_si = float(re.search(r"<sub>2max</sub> ([\d.]+) N·m", si).group(1))
+    t_in = float(re.search(r"<sub>2max</sub> ([\d.]+) lbf·in", inch).group(1))
+    assert t_in * 0.112985 == pytest.approx(t_si, rel=2e-3)
+    # A changed inch value is saved as the file writes it.
+    panel.fields["motor.peak_torque"].value = "70"
+    panel.settled()
+    assert 'peak_torque = "70 lbf*in"' in panel.case_text()

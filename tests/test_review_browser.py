@@ -208,6 +208,16 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         assert shown.startswith({True: "PASS", False: "FAIL", None: "NOT DECIDED"}[r["verdict"]["passes"]])
         assert r["gearbox"]["selected"] in shown
         page.screenshot(path=str(shots / "saved.png"), full_page=True)
+        # The unit switch: the results in inch-pound, and back.
+        g = generation()
+        page.locator(".design-review button", has_text="inch-pound").click()
+        wait_for_results(page, g)
+        assert "lbf·in" in page.inner_text(RESULTS_SELECTOR) and "N·m" not in page.inner_text(f"{RESULTS_SELECTOR} table")
+        page.screenshot(path=str(shots / "inch-pound.png"))
+        g = generation()
+        page.locator(".design-review button", has_text="SI").click()
+        wait_for_results(page, g)
+        assert "lbf·in" not in page.inner_text(RESULTS_SELECTOR)
         server.stop()  # the server gone (a dropped tunnel): a change can no longer be computed
         row(page, "motor.peak_torque").locator("input[type=text]").fill("17")
         row(page, "motor.peak_torque").locator("input[type=text]").press("Enter")

@@ -155,7 +155,7 @@ def motion_specs(case: Case) -> list[InputSpec]:
     tables = case.motion.tables
     mechanism = tables["mechanism"]
     where = f"{case.path}: mechanism"
-    inch_pound = any(_INCH_POUND.search(_unit_of(v)) for k, v in mechanism.items() if k in MECHANISM)
+    inch_pound = any(is_inch_pound(_unit_of(v)) for k, v in mechanism.items() if k in MECHANISM)
     specs = []
     for name in motion_section.keys_of(mechanism["type"]):
         if name not in MECHANISM:
@@ -199,6 +199,27 @@ def value_at(case: Case, key: str, unit: str, kind: str):
     return float(parse_quantity(table.get(name, DEFAULTS.get(key)), kind, f"{case.path}: {key}").m_as(unit))
 
 
+def is_inch_pound(unit: str) -> bool:
+    """Whether ``unit`` is an inch-pound one (``lbf*in``, ``lb*in**2``, ``in``).
+
+    >>> is_inch_pound("lbf*in"), is_inch_pound("N*m"), is_inch_pound("")
+    (True, False, False)
+    """
+    return bool(unit) and _INCH_POUND.search(unit) is not None
+
+
+def written_unit(case: Case, key: str) -> str | None:
+    """The inch-pound unit the case file writes the value at ``key`` in (``"60 lbf*in"`` → ``lbf*in``),
+    or None: the panel then offers it in its SI unit."""
+    if key in CASE_FIELDS:
+        q = getattr(case, CASE_FIELDS[key])
+        unit = None if q is None else f"{q.units:~C}"
+    else:
+        section, name = key.split(".", 1)
+        unit = _unit_of((case.sections.get(section) or {}).get(name))
+    return unit if is_inch_pound(unit) else None
+
+
 def segment_specs(case: Case) -> list[InputSpec]:
     """Each segment's duration and torque (a pause has no torque)."""
     specs, p = [], case.profile
@@ -221,6 +242,7 @@ def input_specs(case: Case, ratios=()) -> list[InputSpec]:
     moves = case.motion is not None and bool(case.motion.moves)
     specs += motion_specs(case) if moves else segment_specs(case)
     for key, label, unit, kind, reach in SCALARS:
+        unit = written_unit(case, key) or unit
         v = value_at(case, key, unit, kind)
         if v is not None and not (moves and key == "load.inertia"):  # the mechanism gives J_L
             specs.append(_spec(key, label, unit, v, *reach(v)))

@@ -29,7 +29,7 @@ from ..errors import CalcError
 from ..publish import summary_rows
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
-from .inputs import InputSpec, input_specs, with_inputs
+from .inputs import InputSpec, input_specs, is_inch_pound, with_inputs
 from .keep import changed_text, free_name, save_path, value_text
 from .view import FAIL_COLOR, comparison_html, evaluated, results_html, typeset
 
@@ -163,7 +163,10 @@ class DesignReview:
         keep.add_class("dr-keep")
         top = w.HBox([self.case_file, self.reset, self.undo_button, self.redo_button], layout=w.Layout(width="100%"))
         self.all_candidates.observe(self._changed, names="value")
-        left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, self.all_candidates, keep, self.load_cycle],
+        self.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the results",
+                                     style={"button_width": "6em"})
+        self.units.observe(self._changed, names="value")
+        left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, w.HBox([self.all_candidates, self.units]), keep, self.load_cycle],
                       layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
         right = w.VBox([self.state, self.results, self.chain, self.variants_html], layout=w.Layout(flex="1 1 560px", min_width="560px"))
         # Side by side on a screen; on a narrow one (a notebook beside a file browser) the results go under.
@@ -212,6 +215,11 @@ class DesignReview:
         for control in self.controls.values():
             control.observe(self._changed, names="value")
         self._history, self._undone = [self._values()], []
+        # The results in the units the case file writes: inch-pound where its inputs are.
+        inch = any(is_inch_pound(s.unit) for s in self.specs)
+        self.units.unobserve(self._changed, names="value")
+        self.units.value = "inch-pound" if inch else "SI"
+        self.units.observe(self._changed, names="value")
         self.save_name.value = free_name(case.path)
         self.refresh()
 
@@ -318,7 +326,8 @@ class DesignReview:
         typed = self.case.motion is not None and case.motion is None
         shown = None if self.all_candidates.value else SHOWN_CANDIDATES
         refused = [f"{self._spec(k).label}: {why}" for k, (_, why) in self.refused.items()]
-        return results_html(report, left_out, link, typed_by_hand=typed, shown=shown, refused=refused), (case, report)
+        return (results_html(report, left_out, link, typed_by_hand=typed, shown=shown, refused=refused, system=self.units.value),
+                (case, report))
 
     def _spec(self, key: str) -> InputSpec:
         return next(s for s in self.specs if s.key == key)
@@ -558,7 +567,7 @@ class DesignReview:
         said = "; ".join(f"{self._spec(k).label} {value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items())
         name = f"{len(self.variants) + 1}: {self.case.path.name}" + (f" with {said}" if said else " as written")
         self.variants.append((name, report))
-        self.variants_html.value = comparison_html(self.variants)
+        self.variants_html.value = comparison_html(self.variants, self.units.value)
         self.kept.value = f"kept variant {len(self.variants)}"
 
 

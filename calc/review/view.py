@@ -9,6 +9,7 @@ the figures (``T_2B`` as T₂B with a subscript, ``<=`` as ≤), units as a read
 
 from __future__ import annotations
 
+import contextvars
 import dataclasses
 import re
 from html import escape
@@ -17,7 +18,7 @@ from ..case import Case
 from ..catalog import display_path
 from ..report import Report, report_of
 from ..sections.common import quantity_text
-from ..units import sig
+from ..units import Q_, sig
 
 PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 _GREEK = {"phi": "φ", "eta": "η", "lambda": "λ"}
@@ -85,9 +86,30 @@ def evaluated(case: Case) -> tuple[Report, list[str]]:
     return r, []
 
 
+#: The unit system the results are shown in: "SI" as the results write them, or "inch-pound".
+SYSTEM = contextvars.ContextVar("system", default="SI")
+#: A result's SI unit and its inch-pound counterpart (the units a US maker's sheet writes).
+INCH_POUND = {"N*m": "lbf*in", "N": "lbf", "mm": "in", "m": "in", "kg*cm**2": "lb*in**2", "kg*m**2": "lb*in**2", "kg": "lb",
+              "N*m/arcmin": "lbf*in/arcmin", "N*m/rad": "lbf*in/rad", "m/s": "in/s", "mm/s": "in/s", "m/s**2": "in/s**2"}
+
+
+def in_system(d: dict | None) -> dict | None:
+    """A result quantity ``{"value", "unit"}`` in the unit system shown (:data:`SYSTEM`).
+
+    >>> token = SYSTEM.set("inch-pound")
+    >>> in_system({"value": 6.779, "unit": "N*m"})["unit"], round(in_system({"value": 6.779, "unit": "N*m"})["value"], 2)
+    ('lbf*in', 60.0)
+    >>> SYSTEM.reset(token)
+    """
+    if d is None or d.get("value") is None or SYSTEM.get() == "SI" or d.get("unit") not in INCH_POUND:
+        return d
+    unit = INCH_POUND[d["unit"]]
+    return {**d, "value": float(Q_(d["value"], d["unit"]).m_as(unit)), "unit": unit}
+
+
 def _q(d) -> str:
-    """A result quantity as text, blank where not given."""
-    return "" if d is None or d.get("value") is None else escape(quantity_text(d).replace(" 1/hour", " /h"))
+    """A result quantity as text, in the unit system shown; blank where not given."""
+    return "" if d is None or d.get("value") is None else escape(quantity_text(in_system(d)).replace(" 1/hour", " /h"))
 
 
 def _verdict_cell(passes, not_made: str | None = None) -> str:
@@ -249,12 +271,21 @@ def _not_made_html(r: dict | None) -> str:
 
 
 def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False,
-                 shown: int | None = None, refused: list[str] = ()) -> str:
+                 shown: int | None = None, refused: list[str] = (), system: str = "SI") -> str:
     """The review of an evaluated case as one HTML text (see the module's docstring);
     ``report_link``, where given, is the address of the case's report, linked beside the verdict;
     ``typed_by_hand``: the case's derived load cycle was changed segment by segment; ``shown``:
     the candidates listed in each table, best first (all for None); ``refused``: the values typed
-    and refused (the results are those of the values before them), each with why."""
+    and refused (the results are those of the values before them), each with why; ``system``:
+    the unit system of the values shown, "SI" or "inch-pound" (:data:`INCH_POUND`)."""
+    token = SYSTEM.set(system)
+    try:
+        return _results_html(report, left_out, report_link, typed_by_hand, shown, refused)
+    finally:
+        SYSTEM.reset(token)
+
+
+def _results_html(report, left_out, report_link, typed_by_hand, shown, refused) -> str:
     word = "FAIL" if left_out else report.verdict.word
     passes = word == "PASS"
     cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
@@ -302,7 +333,7 @@ def comparison_rows(variants: list[tuple[str, dict]]) -> list[tuple[str, list[st
         d = r
         for p in path:
             d = (d or {}).get(p)
-        return "" if d is None else quantity_text(d)
+        return "" if d is None else quantity_text(in_system(d))
 
     def verdict(r):
         v = r.get("verdict") or {}
@@ -325,10 +356,14 @@ def comparison_rows(variants: list[tuple[str, dict]]) -> list[tuple[str, list[st
     return [(name, [f(r) for _, r in variants]) for name, f in rows]
 
 
-def comparison_html(variants: list[tuple[str, Report]]) -> str:
-    """The variants kept in the review side by side (:func:`comparison_rows`); a value that
-    differs from the first variant's is highlighted."""
-    rows = comparison_rows([(n, r.results or {"verdict": {"passes": r.verdict.passes}}) for n, r in variants])
+def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> str:
+    """The variants kept in the review side by side (:func:`comparison_rows`), in the unit system
+    ``system``; a value that differs from the first variant's is highlighted."""
+    token = SYSTEM.set(system)
+    try:
+        rows = comparison_rows([(n, r.results or {"verdict": {"passes": r.verdict.passes}}) for n, r in variants])
+    finally:
+        SYSTEM.reset(token)
     head = "".join(f"<th>{escape(n)}</th>" for n, _ in variants)
     body = "".join(
         f"<tr><td>{typeset(name)}</td>" + "".join(f'<td class="{"differs" if k and v != values[0] else ""}">{escape(v)}</td>' for k, v in enumerate(values)) + "</tr>"
