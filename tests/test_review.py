@@ -151,24 +151,25 @@ def test_panel_controls_re_evaluate_the_case(monkeypatch):
     assert {"gearbox.ratio", "profile[1].duration", "profile[1].torque", "motor.peak_torque", "motor.inertia", "load.inertia",
             "coupling.temperature", "accuracy.applied_torque"} <= set(review.controls)
     first = review.generation
-    assert "PASS" in review.results.value and bytes(review.load_cycle.value)[:4] == b"\x89PNG"
-    assert len(drawn) == 2  # the load cycle and the stiffness chain
+    assert "PASS" in review.results.value and review.load_cycle.value.startswith('<svg class="dr-load-cycle"')
+    assert len(drawn) == 1  # the stiffness chain (the load cycle is SVG, drawn by the browser)
     review.controls["coupling.temperature"].value = 60.0
     review.settled()
     assert review.generation == first + 1  # one update per change
-    assert len(drawn) == 2  # neither figure's inputs changed (a bellows coupling has no temperature factor)
+    assert len(drawn) == 1  # the chain's inputs did not change (a bellows coupling has no temperature factor)
+    cycle = review.load_cycle.value
     review.controls["profile[2].torque"].value = 21.0
     review.settled()
-    assert len(drawn) == 3  # the load cycle only
+    assert len(drawn) == 1 and review.load_cycle.value != cycle  # the load cycle only
     review.controls["motor.peak_torque"].value = 30.0
     review.settled()
     # T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m, above NPT035-10's T_2B of 220 N·m: NPS045-10 (400 N·m)
     # is chosen; the coupling follows the motor's torque (AKD-60), and with both the accuracy chain,
     # whose figure is drawn again.
     assert "Gearbox <b>NPS045-10</b> · Coupling <b>AKD-60</b>" in review.results.value and "378.3 N·m" in review.results.value
-    assert len(drawn) == 4
+    assert len(drawn) == 2
     review.reset.click()  # back to the case file's values, whose figures are kept
-    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and len(drawn) == 4
+    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and len(drawn) == 2
 
 
 def test_changes_that_arrive_while_drawing_are_drawn_once_together():
@@ -629,3 +630,16 @@ def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si
     panel.fields["motor.peak_torque"].value = "70"
     panel.settled()
     assert 'peak_torque = "70 lbf*in"' in panel.case_text()
+
+
+def test_the_load_cycle_figure_draws_the_segments_steps():
+    from calc.review.figures import HEIGHT, LEFT, RIGHT, WIDTH, load_cycle_svg
+
+    case = read_case(EXAMPLE)  # 0.2 s, 0.6 s, 0.2 s, then a pause of 1 s: edges at 0, 0.2, 0.8, 1.0, 2.0 s
+    svg = load_cycle_svg(case.profile, evaluate(case)["duty"])
+    scale = (WIDTH - LEFT - RIGHT) / 2.0
+    speed = svg.split('<polyline points="')[1].split('"')[0].split()
+    assert [float(p.split(",")[0]) for p in speed] == pytest.approx(
+        [LEFT + scale * t for t in (0, 0.2, 0.2, 0.8, 0.8, 1.0, 1.0, 2.0)], abs=0.06)
+    assert "Load cycle: ED = 50 %, cycle 2 s, mode S5" in svg and svg.count('fill="#eeeeee"') == 2  # the pause, in both panels
+    assert f'viewBox="0 0 {WIDTH} {HEIGHT}"' in svg and len(svg) < 8000

@@ -1,16 +1,18 @@
 """The design-review panel (ipywidgets): the controls on the left, the results beside them.
 
 Left: the case, chosen among the case files of its folder (no path is typed, so the panel reads no
-other file), with a button back to its values, one row per input (:func:`calc.review.inputs.input_specs`: the label with its unit, a
-slider, a number field for an exact value, linked in the browser), and the load-cycle figure.
-Right: the results as one HTML text (:func:`calc.review.view.results_html`: verdict and chosen
-parts first, then the governing checks, so they show without scrolling) and the stiffness-chain
-figure.
+other file), with buttons back to its values and through the changes, one row per input
+(:func:`calc.review.inputs.input_specs`: the label with its unit and key path, a slider and a number
+field read by :func:`read_typed`), the unit system, saving and variants, and the load-cycle
+figure (SVG, :mod:`calc.review.figures`, drawn by the browser). Right: the state of the results
+(current, out of date, connection lost: :mod:`calc.review.client`), the results as one HTML text
+(:func:`calc.review.view.results_html`: verdict and chosen parts first, then the governing checks,
+so they show without scrolling), the stiffness-chain figure and the variants compared.
 
 A change updates the page once: the results text is replaced whole (it never collapses, so no
-stale copy shows), and a figure only when what it draws changed (each figure's PNG is kept by its
-inputs). Changes that arrive while one is being drawn are taken together: a worker thread draws the
-controls' latest values, then looks again.
+stale copy shows), the stiffness-chain figure only when what it draws changed (its PNG is kept by
+its inputs). Changes that arrive while one is being drawn are taken together: a worker thread draws
+the controls' latest values, then looks again.
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ from ..errors import CalcError
 from ..publish import summary_rows
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
+from .figures import load_cycle_svg
 from .inputs import InputSpec, input_specs, is_inch_pound, with_inputs
 from .keep import changed_text, free_name, save_path, value_text
 from .view import FAIL_COLOR, comparison_html, evaluated, results_html, typeset
@@ -138,7 +141,7 @@ class DesignReview:
         self.controls_box = w.VBox(layout=w.Layout(overflow="hidden"))
         self.state = w.HTML(state_html())
         self.results = w.HTML(layout=w.Layout(width="100%"))
-        self.load_cycle = w.Image(format="png", layout=w.Layout(width="100%", max_width="560px"))
+        self.load_cycle = w.HTML(layout=w.Layout(width="100%", max_width="560px"))  # SVG, drawn by the browser
         self.chain = w.Image(format="png", layout=w.Layout(width="100%", max_width="640px"))
         self.load_cycle.add_class("dr-figures")
         self.chain.add_class("dr-figures")
@@ -361,9 +364,8 @@ class DesignReview:
         changes = self.changes()
         if drawn is not None:
             case, report = drawn
-            p = case.profile
-            key = (p.durations.m_as("s").tobytes(), p.speeds.m_as("rpm").tobytes(), p.torques.m_as("N*m").tobytes())
-            self.load_cycle.value = self._figure("load cycle", key, lambda: _load_cycle(case))
+            torque_unit = "lbf*in" if self.units.value == "inch-pound" else "N*m"
+            self.load_cycle.value = load_cycle_svg(case.profile, (report.results or {}).get("duty"), torque_unit)
             self.load_cycle.layout.display = None
             if report.accuracy is not None:
                 spec, _ = report.accuracy
@@ -588,12 +590,6 @@ def _close(widget) -> None:
     for child in getattr(widget, "children", ()):
         _close(child)
     widget.close()
-
-
-def _load_cycle(case: Case):
-    from ..plots import load_cycle_figure
-
-    return load_cycle_figure(case.profile)
 
 
 def _chain(spec):
