@@ -119,20 +119,23 @@ def new_values(case: Path, count: int) -> list[tuple[str, str]]:
     from the file's value, inside the input's range (the ratio: the next of the catalog's)."""
     from calc.case import read_case
     from calc.review import input_specs
-    from calc.review.panel import _ratios
+    from calc.review.panel import _ratios, forced_part_spec
 
     c = read_case(case)
-    specs = input_specs(c, _ratios(c) if c.ratio is not None else [])
+    specs = input_specs(c, _ratios(c) if c.ratio is not None else []) + ([forced_part_spec(c)] if c.ratio is not None else [])
     out = []
     for k in range(count):
         spec, turn = specs[k % len(specs)], k // len(specs) + 1
         if spec.options:
-            options = sorted(spec.options, key=lambda o: abs(o - spec.value))[1:]  # the nearest ratios first
-            out.append((spec.key, f"{options[(turn - 1) % len(options)]:g}"))
+            others = [o for o in spec.options if o != spec.value]
+            if isinstance(spec.value, float):
+                others.sort(key=lambda o: abs(o - spec.value))  # the nearest ratios first
+            choice = others[(turn - 1) % len(others)]
+            out.append((spec.key, choice if isinstance(choice, str) else f"{choice:g}"))
             continue
         # 2 % further per turn (on the input's step), so each value is new and the design stays possible.
-        v = spec.value + max(spec.step, round(0.02 * turn * abs(spec.value) / spec.step) * spec.step) * turn
-        v = round(min(v, spec.high), 12)
+        d = max(spec.step, round(0.02 * turn * abs(spec.value) / spec.step) * spec.step) * turn
+        v = round(spec.value + d if spec.value + d <= spec.high else max(spec.value - d, spec.low), 12)  # down from the top
         out.append((spec.key, f"{v:g}"))
     return out
 

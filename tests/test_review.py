@@ -283,7 +283,7 @@ def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     specs = {s.key: s for s in panel.specs}
     assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque", "mechanism.process_torque",
                            "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].jerk_time", "move[2].dwell",
-                           "motor.peak_torque", "motor.inertia", "coupling.temperature", "accuracy.applied_torque"]
+                           "motor.peak_torque", "motor.inertia", "coupling.temperature", "accuracy.applied_torque", "gearbox.part"]
     # In the file's units: the index of 90 deg, the table's 1500 kg·cm²; the friction 3 N·m, the
     # process torque left out (0 N·m, its default).
     assert (specs["move[1].distance"].unit, specs["move[1].distance"].value) == ("deg", 90.0)
@@ -643,3 +643,18 @@ def test_the_load_cycle_figure_draws_the_segments_steps():
         [LEFT + scale * t for t in (0, 0.2, 0.2, 0.8, 0.8, 1.0, 1.0, 2.0)], abs=0.06)
     assert "Load cycle: ED = 50 %, cycle 2 s, mode S5" in svg and svg.count('fill="#eeeeee"') == 2  # the pause, in both panels
     assert f'viewBox="0 0 {WIDTH} {HEIGHT}"' in svg and len(svg) < 8000
+
+
+def test_a_forced_gearbox_part_is_checked_alone_and_saved_by_name():
+    panel = DesignReview(EXAMPLE)
+    assert panel.controls["gearbox.part"].value == "the selection's" and "TP010-10" in panel._spec("gearbox.part").options
+    assert "NPS035-10" not in panel._spec("gearbox.part").options  # a partial row is never checked
+    panel.controls["gearbox.part"].value = "TP010-10"
+    panel.settled()
+    # TP010-10 alone: T_2B = 126 N·m (catalogs/gearboxes.csv) against T_2max = 151.3 N·m: it fails, by 20.1 %.
+    assert '<span class="word fail">FAIL</span>' in panel.results.value and "gearbox TP010-10" in panel.results.value
+    assert "required 151.3 N·m &gt; rated 126 N·m, 20.1 % over" in panel.results.value
+    assert 'part = "TP010-10"' in panel.case_text() and "gearbox.part (not given) -> TP010-10" in panel.case_text()
+    panel.controls["gearbox.part"].value = "the selection's"
+    panel.settled()
+    assert "PASS" in panel.results.value and panel.changes() == {}

@@ -30,8 +30,9 @@ def value_text(number: float, unit: str) -> str:
 
 def changed_text(original: str, changes: dict, source: str) -> str:
     """The TOML text ``original`` with each ``changes[key] = (number, unit)`` written at its key
-    path (a key the file leaves out is added to its table), and a first comment naming the
-    changes and the file ``source`` they were made to.
+    path (a key the file leaves out is added to its table; a text, a part's name, is written as
+    it is, and None removes the key), and a first comment naming the changes and the file
+    ``source`` they were made to.
 
     >>> text = '# axis\\n[motor]\\npeak_torque = "12 N*m"  # T_1B\\n'
     >>> print(changed_text(text, {"motor.peak_torque": (16.0, "N*m")}, "a.toml"))
@@ -59,6 +60,13 @@ def changed_text(original: str, changes: dict, source: str) -> str:
                 raise CalcError(f"{source}: {key}: the file has {len(items)} [[{section}]] tables")
             table = items[int(index) - 1]
         before = table.get(name)
+        if isinstance(number, str) or number is None:  # a part named (None: the selection's, the key removed)
+            if number is None:
+                table.pop(name, None)
+            else:
+                table[name] = number
+            said.append(f"{key} {'(not given)' if before is None else _plain(before)} -> {'(the selection)' if number is None else number}")
+            continue
         if isinstance(before, bool) or (not unit and isinstance(before, (int, float))) or (before is None and not unit):
             new = int(number) if float(number).is_integer() and isinstance(before, int) else float(number)
         else:

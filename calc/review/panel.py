@@ -17,6 +17,7 @@ the controls' latest values, then looks again.
 
 from __future__ import annotations
 
+import dataclasses
 import io
 import json
 import math
@@ -48,13 +49,30 @@ def _png(figure) -> bytes:
     return out.getvalue()
 
 
-def _ratios(case: Case) -> list[float]:
-    """The ratios of the case's gearbox catalog (the choices of the ratio control)."""
+def _gearbox_catalog(case: Case):
     from ..catalog import load_catalog, resolve
     from ..gearbox import SCHEMA
 
-    catalog = load_catalog(resolve(case.gearbox_catalog, case.folder, "gearbox.catalog"), SCHEMA)
-    return sorted(set(catalog["ratio"].m_as("").tolist()))
+    return load_catalog(resolve(case.gearbox_catalog, case.folder, "gearbox.catalog"), SCHEMA)
+
+
+def _ratios(case: Case) -> list[float]:
+    """The ratios of the case's gearbox catalog (the choices of the ratio control)."""
+    return sorted(set(_gearbox_catalog(case)["ratio"].m_as("").tolist()))
+
+
+#: The gearbox choice that leaves the part to the selection (``[gearbox] part`` not given).
+SELECTION = "the selection's"
+
+
+def forced_part_spec(case: Case) -> InputSpec:
+    """The gearbox part the reviewer forces (``[gearbox] part``, checked alone): a choice among
+    the catalog's rows at the case's ratio (not the partial ones), or the selection's."""
+    catalog = _gearbox_catalog(case)
+    ratio = float(case.ratio.m_as(""))
+    parts = [str(p) for p, r, partial in zip(catalog.parts, catalog["ratio"].m_as(""), catalog.partial) if r == ratio and not partial]
+    value = case.gearbox_part or SELECTION
+    return InputSpec("gearbox.part", "gearbox part forced", "", 0, 0, 0, value, tuple(dict.fromkeys([SELECTION, *parts, value])))
 
 
 #: A number as a reviewer types it: digits with a point or a decimal comma (``0,6``), a sign, an exponent.
@@ -209,7 +227,7 @@ class DesignReview:
             self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(_without_folder(str(exc), self.case_file.value))}'
             return
         self.case, self.message.value = case, self._note
-        self.specs = input_specs(case, ratios)
+        self.specs = input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
         self.controls, self.fields, self._messages, self._labels, self.refused = {}, {}, {}, {}, {}
         old = self.controls_box.children
         self.controls_box.children = [self._row(spec) for spec in self.specs]
@@ -238,7 +256,7 @@ class DesignReview:
         message = w.HTML()
         self._messages[spec.key] = message
         if spec.options:
-            control = w.Dropdown(options=[(f"{r:g}", r) for r in spec.options], value=spec.value, tooltip=spec.text,
+            control = w.Dropdown(options=[(_text_of(r), r) for r in spec.options], value=spec.value, tooltip=spec.text,
                                  layout=w.Layout(width="8em"))
             self.controls[spec.key] = control
             line = w.HBox([label, control])
@@ -260,7 +278,7 @@ class DesignReview:
     @staticmethod
     def _label_html(spec: InputSpec, changed: bool) -> str:
         unit = " [" + pretty_unit(spec.unit) + "]" if spec.unit else ""
-        was = f" (changed; the file: {spec.value:g}{' ' + pretty_unit(spec.unit) if spec.unit else ''})" if changed else ""
+        was = f" (changed; the file: {_text_of(spec.value)}{' ' + pretty_unit(spec.unit) if spec.unit else ''})" if changed else ""
         return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{" class=dr-changed" if changed else ""}>'
                 f"{typeset(spec.label)}{unit}</span>")
 
@@ -307,7 +325,7 @@ class DesignReview:
 
     def _shown_texts(self) -> dict:
         """Each control's text as the page shows it (the results' stamp, compared in the browser)."""
-        return {s.key: (self.fields[s.key].value.strip() if s.key in self.fields else f"{self.controls[s.key].value:g}") for s in self.specs}
+        return {s.key: (self.fields[s.key].value.strip() if s.key in self.fields else _text_of(self.controls[s.key].value)) for s in self.specs}
 
     # -- the results ---------------------------------------------------------------------------
 
@@ -315,7 +333,11 @@ class DesignReview:
         """The loaded case with the values of the controls that were moved (one left where it
         started keeps the case's own value, not the control's rounding of it: a derived cycle's
         7.8269 N·m stays, and stays derived)."""
-        return with_inputs(self.case, {key: Q_(v, unit) for key, (v, unit) in self.changes().items()})
+        changes = self.changes()
+        forced = changes.pop("gearbox.part", (None, ""))[0]
+        case = with_inputs(self.case, {key: Q_(v, unit) for key, (v, unit) in changes.items()})
+        # A part forced is checked alone (the file's part, where it names one, is the unchanged value).
+        return case if forced is None else dataclasses.replace(case, gearbox_part=None if forced == SELECTION else forced)
 
     def _draw(self):
         """The results text and the changed case (None where the inputs cannot make one)."""
@@ -495,7 +517,8 @@ class DesignReview:
     def case_text(self) -> str:
         """The case file with the changed values written in (:func:`calc.review.keep.changed_text`)."""
         path = self.case.path
-        return changed_text(path.read_text(encoding="utf-8"), self.changes(), path.name)
+        changes = {k: ((None, u) if v == SELECTION else (v, u)) for k, (v, u) in self.changes().items()}
+        return changed_text(path.read_text(encoding="utf-8"), changes, path.name)
 
     def save(self, name: str | None = None) -> Path | None:
         """Write the changed values as the new case file ``name`` (by default the save field's)
@@ -566,11 +589,16 @@ class DesignReview:
             return
         _, report = self.shown
         changes = self.changes()
-        said = "; ".join(f"{self._spec(k).label} {value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items())
+        said = "; ".join(f"{self._spec(k).label} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items())
         name = f"{len(self.variants) + 1}: {self.case.path.name}" + (f" with {said}" if said else " as written")
         self.variants.append((name, report))
         self.variants_html.value = comparison_html(self.variants, self.units.value)
         self.kept.value = f"kept variant {len(self.variants)}"
+
+
+def _text_of(value) -> str:
+    """A choice's value as the page shows it: a ratio as ``8``, a part by its name."""
+    return value if isinstance(value, str) else f"{value:g}"
 
 
 def _build_report(case: Path, pdf: Path):
