@@ -53,6 +53,8 @@ SCRIPT = r"""<script>
   window.designReviewClient = true;
   const panel = () => document.querySelector('.design-review');
   const results = () => document.querySelector('.design-review .dr[data-generation]');
+  // An option's text as written (the widgets write its spaces as no-break spaces).
+  const optionText = o => o.text.replace(/\u00a0/g, ' ').trim();
   const loadedAt = Date.now();
   let askedAfter = null, askedAt = 0, restoring = null;  // the results' generation when a value was last asked for
   // The text each control shows, by key path: a field's text, a choice's option.
@@ -63,7 +65,7 @@ SCRIPT = r"""<script>
       if (!row) continue;
       const field = row.querySelector('input[type=text]'), choice = row.querySelector('select');
       if (field) out[label.dataset.key] = field.value.trim();
-      else if (choice && choice.selectedIndex >= 0) out[label.dataset.key] = choice.options[choice.selectedIndex].text.trim();
+      else if (choice && choice.selectedIndex >= 0) out[label.dataset.key] = optionText(choice.options[choice.selectedIndex]);
     }
     return out;
   }
@@ -115,7 +117,7 @@ SCRIPT = r"""<script>
     const field = row.querySelector('input[type=text]'), choice = row.querySelector('select');
     const target = field || choice;
     if (field) field.value = text;
-    else if (choice) { const k = [...choice.options].findIndex(o => o.text.trim() === text); if (k < 0) return; choice.selectedIndex = k; }
+    else if (choice) { const k = [...choice.options].findIndex(o => optionText(o) === text); if (k < 0) return; choice.selectedIndex = k; }
     if (target) { ask(); target.dispatchEvent(new Event('change', {bubbles: true})); }
   }
   function ask() { const r = results(); askedAfter = r ? Number(r.dataset.generation) : 0; askedAt = Date.now(); }
@@ -130,7 +132,7 @@ SCRIPT = r"""<script>
     if (wanted.case && r.dataset.case !== wanted.case) {
       if (restoring === 'case') return;  // the case asked for is being loaded
       const choice = document.querySelector('.design-review .dr-case select');
-      const k = choice ? [...choice.options].findIndex(o => o.text.split(' · ')[0].trim() === wanted.case) : -1;
+      const k = choice ? [...choice.options].findIndex(o => optionText(o).split(' · ')[0] === wanted.case) : -1;
       if (k < 0) { restoring = false; return; }
       restoring = 'case'; choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
       return;  // the values follow once the case is loaded
@@ -155,7 +157,7 @@ SCRIPT = r"""<script>
     if (r.dataset.changed && r.dataset.changed !== '{}' && !confirm('Switch the case and drop the changed values? (Save as case file keeps them.)')) {
       e.stopImmediatePropagation();
       const choice = e.target, name = r.dataset.case;
-      choice.selectedIndex = [...choice.options].findIndex(o => o.text.split(' · ')[0].trim() === name);
+      choice.selectedIndex = [...choice.options].findIndex(o => optionText(o).split(' · ')[0] === name);
     }
   }, true);
   window.addEventListener('beforeunload', e => {
