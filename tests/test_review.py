@@ -282,8 +282,11 @@ def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     panel = DesignReview(DERIVED_EXAMPLE)
     specs = {s.key: s for s in panel.specs}
     assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque", "mechanism.process_torque",
-                           "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].jerk_time", "move[2].dwell",
-                           "motor.peak_torque", "motor.inertia", "coupling.temperature", "accuracy.applied_torque", "gearbox.part"]
+                           "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].decel_time", "move[1].jerk_time",
+                           "move[2].dwell", "motor.peak_torque", "motor.inertia", "coupling.temperature", "accuracy.applied_torque",
+                           "gearbox.part"]
+    # The decel time the file leaves out is offered at the value reading the file takes: the accel time.
+    assert (specs["move[1].decel_time"].unit, specs["move[1].decel_time"].value) == ("s", 0.15)
     # In the file's units: the index of 90 deg, the table's 1500 kg·cm²; the friction 3 N·m, the
     # process torque left out (0 N·m, its default).
     assert (specs["move[1].distance"].unit, specs["move[1].distance"].value) == ("deg", 90.0)
@@ -304,9 +307,10 @@ def test_the_inch_pound_example_offers_its_inputs_in_its_units():
                                                          "mechanism.eta", "mechanism.incline", "move[3].distance")} == {
         "mechanism.mass": ("lb", 60.0), "mechanism.lead": ("in", 1.0), "mechanism.screw_inertia": ("lb*in**2", 2.7),
         "mechanism.eta": ("", 0.9), "mechanism.incline": ("deg", 90.0), "move[3].distance": ("in", 10.0)}
-    # The process force the file leaves out comes in the mechanism's units too; the way down keeps its sign.
+    # The process force the file leaves out comes in the mechanism's units too.
     assert specs["mechanism.force"].text == "mechanism: process force F_p [lbf]"
-    assert (specs["move[1].distance"].low, specs["move[1].distance"].high, specs["move[1].distance"].value) == (-50.0, -1.0, -10.0)
+    # Either way, so a move can be reversed.
+    assert (specs["move[1].distance"].low, specs["move[1].distance"].high, specs["move[1].distance"].value) == (-50.0, 50.0, -10.0)
     assert "load.inertia" not in specs  # the mechanism gives J_L
     assert specs["mechanism.eta"].low == 0.5 and specs["mechanism.eta"].high == 1.0
 
@@ -658,3 +662,17 @@ def test_a_forced_gearbox_part_is_checked_alone_and_saved_by_name():
     panel.controls["gearbox.part"].value = "the selection's"
     panel.settled()
     assert "PASS" in panel.results.value and panel.changes() == {}
+
+
+def test_a_move_is_reversed_and_a_ramp_the_file_leaves_out_is_set():
+    panel = DesignReview(DERIVED_EXAMPLE)
+    first = evaluate(panel.changed_case())
+    panel.fields["move[1].distance"].value = "-90"  # the index the other way
+    panel.settled()
+    back = evaluate(panel.shown[0])
+    # The same index backwards: the same peak speed, the torques mirrored (so the S5 values hold).
+    assert back["motion"]["peak_speed"] == first["motion"]["peak_speed"] and back["cyclic"]["T2max"] == first["cyclic"]["T2max"]
+    assert back["motion"]["segments"][0]["torque"]["value"] < 0 < first["motion"]["segments"][0]["torque"]["value"]
+    panel.fields["move[1].decel_time"].value = "0.2"  # not in the file: written into the move
+    panel.settled()
+    assert panel.shown[0].motion.tables["move"][0]["decel_time"] == "0.2 second" and 'decel_time = "0.2 s"' in panel.case_text()

@@ -111,8 +111,9 @@ def _signed(v: float, floor: float = 10.0) -> tuple[float, float]:
 
 
 def _distance(v: float) -> tuple[float, float]:
-    """A tenth to five times a move's distance, on its side (a move never has none)."""
-    return (5 * v, v / 10) if v < 0 else (v / 10, 5 * v)
+    """Five times a move's distance either way, so a move can be reversed (zero is refused when the
+    moves are read: a pause is a dwell)."""
+    return -5 * abs(v), 5 * abs(v)
 
 
 #: The inputs of a mechanism: key, label, kind, unit (SI, inch-pound) where the file leaves it
@@ -150,7 +151,8 @@ def _as_written(text, kind: str, where: str) -> tuple[str, float]:
 
 def motion_specs(case: Case) -> list[InputSpec]:
     """The inputs of a case whose load cycle is derived from moves: its mechanism's, then each
-    move's distance, time and ramps as the file gives them, and each dwell; in the units the file
+    move's distance (either way), time and ramps (accel, decel and jerk time, those the file leaves
+    out at the values reading it takes), and each dwell; in the units the file
     writes them (an input it leaves out, in the units of the rest of the mechanism)."""
     tables = case.motion.tables
     mechanism = tables["mechanism"]
@@ -176,9 +178,11 @@ def motion_specs(case: Case) -> list[InputSpec]:
         for name, label in MOVE_TIMES:
             if name in move:
                 unit, v = _as_written(move[name], "time", f"{where}.{name}")
-                # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
-                high = 3 * v if name == "time" else float(time.m_as(unit))
-                specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=True))
+            else:  # a ramp the file leaves out, at the value reading the file takes: decel as accel, no jerk
+                unit, v = _as_written(move["accel_time"], "time", f"{where}.accel_time") if name == "decel_time" else ("s", 0.0)
+            # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
+            high = 3 * v if name == "time" else float(time.m_as(unit))
+            specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=name != "jerk_time" or v > 0))
     return specs
 
 
