@@ -1,11 +1,14 @@
-"""The review's live load-cycle figure, drawn by the browser: an SVG text of the cycle's steps.
+"""The review's live figures, drawn by the browser: SVG texts of the load cycle's steps and of the
+stiffness chain's shares.
 
-The calc report and the notebooks draw the load cycle with matplotlib
-(:func:`calc.plots.load_cycle_figure`); the review redraws it on every change of a move, the
-mechanism or a segment, and rendering that figure to a PNG takes 0.2 to 0.4 s, most of a change's
-time. Here the kernel writes the steps as SVG (some 2 KB, under a millisecond) and the browser
-draws them: the same data (each segment's mean output speed and torque against time, the pauses
-shaded, ED and the mode in the title), without the report figure's annotations.
+The calc report and the notebooks draw them with matplotlib (:func:`calc.plots.load_cycle_figure`,
+:func:`calc.accuracy_plots.stiffness_chain_figure`); the review redraws them on changes (the load
+cycle on every change of a move, the mechanism or a segment; the chain on a change of ratio, part
+or applied torque), and rendering such a figure to a PNG takes 0.2 to 0.4 s, most of a change's
+time. Here the kernel writes SVG (some 2 KB, under a millisecond) and the browser draws it: the
+same data (each segment's mean output speed and torque against time, the pauses shaded, ED and the
+mode in the title; each member's share of the twist, its twist and stiffness at the output, from
+the results), without the report figures' finer annotations.
 """
 
 from __future__ import annotations
@@ -90,4 +93,47 @@ def load_cycle_svg(profile, duty: dict | None = None, torque_unit: str = "N*m") 
             body.append(f'<text x="{px:.1f}" y="{bottom + 14:.1f}" text-anchor="middle">{t:g}</text>')
     body.append(f'<text x="{WIDTH - RIGHT}" y="{bottom + 27:.1f}" text-anchor="end">time t [s]; pauses shaded</text>')
     return (f'<svg class="dr-load-cycle" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {HEIGHT}" width="100%" '
+            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
+
+
+def stiffness_chain_svg(accuracy: dict) -> str:
+    """Each member's share of the chain's twist at the output, as horizontal bars labelled with its
+    twist and stiffness at the output, from the results' ``accuracy`` section (E11): the data of
+    :func:`calc.accuracy_plots.stiffness_chain_figure`, drawn by the browser.
+
+    >>> a = {"applied_torque": {"value": 8, "unit": "N*m"}, "C_total": {"value": 21.35, "unit": "N*m/arcmin"},
+    ...      "components": [{"name": "AKD-30", "side": "input", "share_of_compliance": 0.03,
+    ...                      "twist_at_applied_torque": {"value": 0.011, "unit": "arcmin"},
+    ...                      "stiffness_at_output": {"value": 727.2, "unit": "N*m/arcmin"}}]}
+    >>> svg = stiffness_chain_svg(a)
+    >>> svg.count("<rect"), "3 %: 0.011 arcmin, C = 727.2 N·m/arcmin" in svg
+    (1, True)
+    """
+    from ..accuracy_plots import SIDE_COLORS  # the report figure's colours
+    from ..sections.common import quantity_text
+
+    members = accuracy["components"]
+    row, left, top = 30, 130, 24
+    height = top + row * len(members) + 34
+    scale = (WIDTH - left - 10) / 110  # 0 to 110 %
+    twist = sum(m["twist_at_applied_torque"]["value"] for m in members)
+    title = (f"Stiffness chain at {quantity_text(accuracy['applied_torque'])}: C_total = {quantity_text(accuracy['C_total'])}, "
+             f"twist {twist:.3g} arcmin (E11)")
+    body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
+    for share in range(0, 101, 20):
+        x = left + scale * share
+        body.append(f'<line x1="{x:.1f}" x2="{x:.1f}" y1="{top}" y2="{height - 30}" stroke="#e2e2e2"/>')
+        body.append(f'<text x="{x:.1f}" y="{height - 18}" text-anchor="middle">{share}</text>')
+    for k, m in enumerate(members):
+        y = top + row * k + 5
+        share = 100 * m["share_of_compliance"]
+        label = f"{share:.3g} %: {quantity_text(m['twist_at_applied_torque'])}, C = {quantity_text(m['stiffness_at_output'])}"
+        body += [f'<rect x="{left}" y="{y}" width="{scale * share:.1f}" height="{row - 10}" fill="{SIDE_COLORS.get(m["side"], "#888")}"/>',
+                 f'<text x="{left - 6}" y="{y + 9}" text-anchor="end">{escape(m["name"])}</text>',
+                 f'<text x="{left - 6}" y="{y + 20}" text-anchor="end" fill="#666">({escape(m["side"])} side)</text>',
+                 # beside a short bar, inside a long one (so it stays in the figure)
+                 f'<text x="{left + scale * share + 4:.1f}" y="{y + 14}">{escape(label)}</text>' if share < 50 else
+                 f'<text x="{left + scale * share - 4:.1f}" y="{y + 14}" text-anchor="end" fill="#fff">{escape(label)}</text>']
+    body.append(f'<text x="{left}" y="{height - 4}">share of the twist at the output [%]; input side purple, output side blue</text>')
+    return (f'<svg class="dr-chain" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
             f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")

@@ -4,21 +4,19 @@ Left: the case, chosen among the case files of its folder (no path is typed, so 
 other file), with buttons back to its values and through the changes, one row per input
 (:func:`calc.review.inputs.input_specs`: the label with its unit and key path, a slider and a number
 field read by :func:`read_typed`), the unit system, saving and variants, and the load-cycle
-figure (SVG, :mod:`calc.review.figures`, drawn by the browser). Right: the state of the results
+figure (SVG, drawn by the browser). Right: the state of the results
 (current, out of date, connection lost: :mod:`calc.review.client`), the results as one HTML text
 (:func:`calc.review.view.results_html`: verdict and chosen parts first, then the governing checks,
 so they show without scrolling), the stiffness-chain figure and the variants compared.
 
 A change updates the page once: the results text is replaced whole (it never collapses, so no
-stale copy shows), the stiffness-chain figure only when what it draws changed (its PNG is kept by
-its inputs). Changes that arrive while one is being drawn are taken together: a worker thread draws
+stale copy shows), the figures with it (SVG, :mod:`calc.review.figures`). Changes that arrive while one is being drawn are taken together: a worker thread draws
 the controls' latest values, then looks again.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import io
 import json
 import math
 import re
@@ -32,21 +30,13 @@ from ..errors import CalcError
 from ..publish import summary_rows
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
-from .figures import load_cycle_svg
+from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import InputSpec, input_specs, is_inch_pound, with_inputs
 from .keep import changed_text, free_name, save_path, value_text
 from .view import FAIL_COLOR, comparison_html, evaluated, results_html, typeset
 
 LABEL_WIDTH = "15.5em"
-FIGURE_DPI = 72  # the PNG's pixels at the width the column shows it
-FIGURES_KEPT = 32
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
-
-
-def _png(figure) -> bytes:
-    out = io.BytesIO()
-    figure.savefig(out, format="png", dpi=FIGURE_DPI)
-    return out.getvalue()
 
 
 def _gearbox_catalog(case: Case):
@@ -160,7 +150,7 @@ class DesignReview:
         self.state = w.HTML(state_html())
         self.results = w.HTML(layout=w.Layout(width="100%"))
         self.load_cycle = w.HTML(layout=w.Layout(width="100%", max_width="560px"))  # SVG, drawn by the browser
-        self.chain = w.Image(format="png", layout=w.Layout(width="100%", max_width="640px"))
+        self.chain = w.HTML(layout=w.Layout(width="100%", max_width="640px"))  # SVG, drawn by the browser
         self.load_cycle.add_class("dr-figures")
         self.chain.add_class("dr-figures")
         # Kept: save as a case file beside the original, the same file to download, variants compared.
@@ -204,7 +194,6 @@ class DesignReview:
         self._history: list[dict] = []  # the controls' values after each change, for undo and redo
         self._undone: list[dict] = []
         self._stepping = False
-        self._figures: dict = {}  # (figure, its inputs) -> PNG
         self._dirty = False
         self._worker: threading.Thread | None = None
         self._lock = threading.Lock()
@@ -389,11 +378,10 @@ class DesignReview:
             torque_unit = "lbf*in" if self.units.value == "inch-pound" else "N*m"
             self.load_cycle.value = load_cycle_svg(case.profile, (report.results or {}).get("duty"), torque_unit)
             self.load_cycle.layout.display = None
-            if report.accuracy is not None:
-                spec, _ = report.accuracy
-                key = (repr(spec.chain), float(spec.applied_torque.m_as("N*m")))
-                self.chain.value = self._figure("chain", key, lambda: _chain(spec))
-            self.chain.layout.display = None if report.accuracy is not None else "none"
+            accuracy = (report.results or {}).get("accuracy")
+            if accuracy:
+                self.chain.value = stiffness_chain_svg(accuracy)
+            self.chain.layout.display = None if accuracy else "none"
             self._idle_inputs(report)
             self._chooser_verdict(report, changes)
         else:  # the figures of the last good inputs no longer apply
@@ -441,15 +429,6 @@ class DesignReview:
             self.case_file.value = self.case.path
         finally:
             self._relabelling = False
-
-    def _figure(self, name, key, draw) -> bytes:
-        """A figure's PNG, drawn once for its inputs (the last :data:`FIGURES_KEPT` are kept, so
-        moving back and forth draws nothing)."""
-        if (name, key) not in self._figures:
-            if len(self._figures) >= FIGURES_KEPT:
-                del self._figures[next(iter(self._figures))]
-            self._figures[(name, key)] = _png(draw())
-        return self._figures[(name, key)]
 
     def _changed(self, _change) -> None:
         """A control moved: draw in the worker thread; what moves meanwhile is drawn after, once."""
@@ -620,8 +599,4 @@ def _close(widget) -> None:
     widget.close()
 
 
-def _chain(spec):
-    from ..accuracy_plots import stiffness_chain_figure
-
-    return stiffness_chain_figure(spec.chain, spec.applied_torque)
 
