@@ -545,8 +545,16 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
     rows = {r["name"]: r for r in json.loads(done.stdout)["rows"]}
     assert rows["gearbox"]["values"] == ["NPT035-10", "NPS045-10"] and rows["gearbox"]["differs"] == [False, True]
     assert rows["T_2max"]["values"][1] == "378.3 N·m" and rows["mode"]["differs"] == [False, False]
-    text = subprocess.run([sys.executable, "-m", "calc", "compare", str(EXAMPLE), str(stronger)], capture_output=True, text=True).stdout
+    pdf = tmp_path / "compared.pdf"
+    text = subprocess.run([sys.executable, "-m", "calc", "compare", str(EXAMPLE), str(stronger), "--pdf", str(pdf)],
+                          capture_output=True, text=True).stdout
     assert "NPS045-10 *" in text and text.splitlines()[-1] == "* differs from the first design"
+    assert pdf.read_bytes()[:5] == b"%PDF-"
+    import shutil
+
+    if shutil.which("pdftotext"):
+        printed = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True).stdout
+        assert "NPS045-10" in printed and "378.3 N·m" in printed and "worst governing utilization" in printed
 
 
 def test_a_temperature_on_a_bellows_coupling_says_it_has_no_effect():

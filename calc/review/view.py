@@ -14,6 +14,8 @@ import dataclasses
 import re
 from html import escape
 
+import numpy as np
+
 from ..case import Case
 from ..catalog import display_path
 from ..report import Report, report_of
@@ -382,10 +384,41 @@ def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
     return "\n".join([lines[0], "  ".join("-" * w for w in widths), *lines[1:], "* differs from the first design"])
 
 
-def compare_cases(paths: list[str], as_json: bool = False) -> str:
-    """``python -m calc compare A.toml B.toml ...``: the designs side by side, as the review's
-    *Keep as variant* table has them (:func:`comparison_rows`), as text or as JSON
-    (``{"designs": [file, ...], "rows": [{"name", "values": [...], "differs": [...]}]}``)."""
+def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], path) -> None:
+    """:func:`comparison_rows` as a one-page PDF (A4 landscape): the table, a value that differs
+    from the first design's shaded, and a comparison figure of the worst governing utilization of
+    each design's gearbox and coupling (matplotlib; no TeX needed)."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(11.69, 8.27))
+    table_ax, bars = fig.add_axes((0.03, 0.36, 0.94, 0.58)), fig.add_axes((0.1, 0.06, 0.85, 0.22))
+    table_ax.axis("off")
+    table_ax.set_title("Designs compared (shaded: differs from the first design)", fontsize=11, loc="left")
+    cells = [[name.replace("_", " "), *values] for name, values in rows]
+    shown = table_ax.table(cellText=cells, colLabels=["", *names], loc="upper left", cellLoc="left")
+    shown.auto_set_font_size(False)
+    shown.set_fontsize(8)
+    for r, (_, values) in enumerate(rows, start=1):
+        for k, v in enumerate(values[1:], start=2):
+            if v != values[0]:
+                shown[r, k].set_facecolor("#fff0c0")
+    by = dict(rows)
+    x = np.arange(len(names))
+    for offset, what in ((-0.2, "gearbox"), (0.2, "coupling")):
+        u = [float(v.rstrip(" %")) if v else 0.0 for v in by[f"{what} worst utilization"]]
+        bars.bar(x + offset, u, width=0.38, label=what)
+    bars.axhline(100, color="#b2222a", linewidth=1)
+    bars.set_xticks(x, names, fontsize=8)
+    bars.set_ylabel("worst governing utilization [%]", fontsize=8)
+    bars.legend(fontsize=8, frameon=False)
+    fig.savefig(path, format="pdf")
+
+
+def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
+    """``python -m calc compare A.toml B.toml ... [--json] [--pdf FILE]``: the designs side by side,
+    as the review's *Keep as variant* table has them (:func:`comparison_rows`), as text or as JSON
+    (``{"designs": [file, ...], "rows": [{"name", "values": [...], "differs": [...]}]}``); with
+    ``pdf``, also written there as a PDF (:func:`comparison_pdf`)."""
     import json
     from pathlib import Path
 
@@ -395,6 +428,8 @@ def compare_cases(paths: list[str], as_json: bool = False) -> str:
     designs = [(Path(p).name, evaluate(read_case(p)).to_json()) for p in paths]
     rows = comparison_rows(designs)
     names = [n for n, _ in designs]
+    if pdf is not None:
+        comparison_pdf(names, rows, pdf)
     if as_json:
         return json.dumps({"designs": [str(p) for p in paths],
                            "rows": [{"name": name, "values": values, "differs": [k > 0 and v != values[0] for k, v in enumerate(values)]}
