@@ -5,9 +5,11 @@ benchmark's ``review_*`` lines.
 :func:`served` starts the server on a free port of this machine (``127.0.0.1``), waits for its
 first kernel, and stops it after;
 :func:`review_in_browser` opens the page as a reviewer would (1366 × 768), waits for the panel,
-changes inputs through the number fields and the ratio choice, and measures each change from the
-input to the new results on the page (the results carry a generation count). It keeps a
-screenshot of the page as first shown and after the changes.
+changes inputs through the number fields and the ratio choice, each found by its key path in the
+case file (the label's ``data-key``), and measures each change from the input to the new results
+on the page (the results carry a generation count). It keeps a screenshot of the page as first
+shown and after the changes. :func:`new_values` gives changes to values not seen before for any
+case, from the inputs the page offers for it.
 """
 
 from __future__ import annotations
@@ -45,6 +47,17 @@ def _free_port() -> int:
 class Server:
     url: str
     started: float  # s from the command to a kernel waiting with the panel drawn
+    process: subprocess.Popen | None = None
+
+    def stop(self) -> None:
+        """Stop the server (and its kernels) now, as a dropped connection would leave the page."""
+        if self.process.poll() is None:
+            os.killpg(self.process.pid, signal.SIGTERM)
+            try:
+                self.process.wait(10)
+            except subprocess.TimeoutExpired:
+                os.killpg(self.process.pid, signal.SIGKILL)
+                self.process.wait()
 
 
 @contextlib.contextmanager
@@ -73,14 +86,10 @@ def served(case: Path | None = None, timeout: float = 90.0, reports: Path | None
     try:
         if not filled.wait(timeout):
             raise RuntimeError("the review server prepared no kernel: " + "".join(log)[-3000:])
-        yield Server(f"http://127.0.0.1:{port}/", time.perf_counter() - start)
+        up = Server(f"http://127.0.0.1:{port}/", time.perf_counter() - start, server)
+        yield up
     finally:
-        os.killpg(server.pid, signal.SIGTERM)
-        try:
-            server.wait(10)
-        except subprocess.TimeoutExpired:
-            os.killpg(server.pid, signal.SIGKILL)
-            server.wait()
+        Server("", 0.0, server).stop()
 
 
 @dataclass
@@ -104,9 +113,67 @@ class Visit:
         return statistics.median(self.times)
 
 
-def _row(page, label: str):
-    """The control row whose label (its tooltip, with unit) is ``label``."""
-    return page.locator(".widget-hbox", has=page.locator(f'span[title="{label}"]')).last
+def new_values(case: Path, count: int) -> list[tuple[str, str]]:
+    """``count`` changes ``(key path, value as typed)`` to the inputs the page offers for ``case``
+    (:func:`calc.review.input_specs`), in turn, each to a value not seen before: a few steps up
+    from the file's value, inside the input's range (the ratio: the next of the catalog's)."""
+    from calc.case import read_case
+    from calc.review import input_specs
+    from calc.review.panel import _ratios, forced_part_spec
+
+    c = read_case(case)
+    specs = input_specs(c, _ratios(c) if c.ratio is not None else []) + ([forced_part_spec(c)] if c.ratio is not None else [])
+    out = []
+    for k in range(count):
+        spec, turn = specs[k % len(specs)], k // len(specs) + 1
+        if spec.options:
+            others = [o for o in spec.options if o != spec.value]
+            if isinstance(spec.value, float):
+                others.sort(key=lambda o: abs(o - spec.value))  # the nearest ratios first
+            choice = others[(turn - 1) % len(others)]
+            out.append((spec.key, choice if isinstance(choice, str) else f"{choice:g}"))
+            continue
+        # 2 % further per turn (on the input's step), so each value is new and the design stays possible.
+        d = max(spec.step, round(0.02 * turn * abs(spec.value) / spec.step) * spec.step) * turn
+        v = round(spec.value + d if spec.value + d <= spec.high else max(spec.value - d, spec.low), 12)  # down from the top
+        out.append((spec.key, f"{v:g}"))
+    return out
+
+
+def row(page, key: str):
+    """The control row of the input at the key path ``key``."""
+    return page.locator(".dr-row", has=page.locator(f'[data-key="{key}"]')).last
+
+
+def change(page, key: str, value: str) -> None:
+    """Type ``value`` into the field of ``key`` and press Enter (or choose the option ``value``)."""
+    r = row(page, key)
+    if r.locator("select").count():
+        r.locator("select").select_option(label=value)
+    else:
+        field = r.locator("input[type=text]")
+        field.fill(value)
+        field.press("Enter")
+
+
+def wait_for_results(page, after: int, timeout: float = 30_000) -> None:
+    """Until the results after generation ``after`` are on the page."""
+    page.wait_for_function(f"() => Number(document.querySelector('{RESULTS}')?.dataset.generation) > {after}",
+                           polling="raf", timeout=timeout)
+
+
+@contextlib.contextmanager
+def browser_page(viewport: dict = SCREEN):
+    """A page of headless Chromium with a fresh profile, ``viewport`` wide and high."""
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
+        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
+                                                        args=CHROMIUM_ARGS, viewport=viewport)
+        try:
+            yield browser.new_page()
+        finally:
+            browser.close()
 
 
 def _generation(page) -> int:
@@ -115,9 +182,9 @@ def _generation(page) -> int:
 
 def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1, settle: float = 3.0,
                       burst: tuple[str, list[str]] | None = None) -> Visit:
-    """Open the page, wait ``settle`` seconds, then make each change ``(label, value)`` in turn (a
+    """Open the page, wait ``settle`` seconds, then make each change ``(key path, value)`` in turn (a
     number field's value, or the option of a choice), ``repeat`` times over; each is timed until
-    the results follow. Then ``burst``, ``(label, values)``: the values typed into that field one
+    the results follow. Then ``burst``, ``(key path, values)``: the values typed into that field one
     after the other without waiting, as a reviewer trying values does; counted are the updates
     the page gets for them until it is still."""
     from playwright.sync_api import sync_playwright
@@ -145,29 +212,21 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
                 answer = page.request.get(urljoin(page.url, href))
                 visit.report = (href, answer.status, answer.headers.get("content-type"), answer.body()[:5])
             for _ in range(repeat):
-                for label, value in changes:
+                for key, value in changes:
                     generation = _generation(page)
-                    row = _row(page, label)
                     start = time.perf_counter()
-                    if row.locator("select").count():
-                        row.locator("select").select_option(label=value)
-                    else:
-                        field_ = row.locator("input[type=number]")
-                        field_.fill(value)
-                        field_.press("Enter")
-                    page.wait_for_function(
-                        f"() => Number(document.querySelector('{RESULTS}')?.dataset.generation) > {generation}",
-                        polling="raf", timeout=30_000)
-                    visit.changes.append((f"{label} = {value}", time.perf_counter() - start))
-                    visit.seen.append((f"{label} = {value}", page.inner_text(RESULTS)))
+                    change(page, key, value)
+                    wait_for_results(page, generation)
+                    visit.changes.append((f"{key} = {value}", time.perf_counter() - start))
+                    visit.seen.append((f"{key} = {value}", page.inner_text(RESULTS)))
                     if visit.seen[-1][1].startswith("FAIL") and not any(p.name == "review-fail.png" for p in visit.shots):
                         visit.shots.append(shots / "review-fail.png")
                         page.screenshot(path=str(visit.shots[-1]))
             if burst:
-                label, values = burst
+                key, values = burst
                 first = _generation(page)
                 # Typed within a few milliseconds: each value committed as Enter or leaving the field does.
-                _row(page, label).locator("input[type=number]").evaluate(
+                row(page, key).locator("input[type=text]").evaluate(
                     "(field, values) => { for (const v of values) { field.value = v;"
                     " field.dispatchEvent(new Event('change', {bubbles: true})); } }", values)
                 last = None

@@ -1,7 +1,8 @@
 """Command line: ``python -m calc evaluate CASE.toml [--json] [--strict] [--all-candidates]``,
 ``python -m calc ratios CASE.toml [--json] [--strict]`` (the case at every ratio of its gearbox
 catalog, and the ratio to pick) and
-``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--strict] [--summary]``.
+``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--strict] [--summary]`` and
+``python -m calc compare A.toml B.toml [...] [--json] [--pdf FILE]`` (the designs side by side).
 
 Exit status (``spec/case-format.md``): 0 when results were produced, whatever the verdict; with
 ``--strict``, 1 when the verdict is not PASS (for ``ratios``: when no ratio can be picked); 2 on
@@ -35,6 +36,10 @@ def main(argv=None) -> int:
     rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
     rp.add_argument("--summary", action="store_true",
                     help="also write summary.pdf and summary.csv in the output folder: one row per case")
+    cp = sub.add_parser("compare", help="compare design cases side by side (verdict, chosen parts, utilizations, key results)")
+    cp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one column each")
+    cp.add_argument("--json", action="store_true", help="print the table as JSON")
+    cp.add_argument("--pdf", help="also write the table and a comparison figure as a PDF file")
     for p in (ev, ra, rp):
         p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
@@ -55,6 +60,11 @@ def _run(args) -> int:
     from .sections import SHOWN_CANDIDATES, evaluate
 
     try:
+        if args.command == "compare":
+            from .review.view import compare_cases
+
+            print(compare_cases(args.cases, args.json, args.pdf))
+            return 0
         if args.command == "ratios":
             from .sections.ratios import search
 

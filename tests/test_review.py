@@ -142,35 +142,33 @@ def test_a_case_that_checks_nothing_says_so(write_case):
     assert "NOT DECIDED" in panel.results.value
 
 
-def test_panel_controls_re_evaluate_the_case(monkeypatch):
-    import calc.review.panel
-
-    drawn = []
-    monkeypatch.setattr(calc.review.panel, "_png", lambda figure: drawn.append(figure) or b"\x89PNG %d" % len(drawn))
+def test_panel_controls_re_evaluate_the_case():
     review = DesignReview(EXAMPLE)
     assert {"gearbox.ratio", "profile[1].duration", "profile[1].torque", "motor.peak_torque", "motor.inertia", "load.inertia",
             "coupling.temperature", "accuracy.applied_torque"} <= set(review.controls)
     first = review.generation
-    assert "PASS" in review.results.value and bytes(review.load_cycle.value)[:4] == b"\x89PNG"
-    assert len(drawn) == 2  # the load cycle and the stiffness chain
+    assert "PASS" in review.results.value and review.load_cycle.value.startswith('<svg class="dr-load-cycle"')
+    cycle, chain = review.load_cycle.value, review.chain.value
+    # The example's chain by hand (test_the_accuracy_chain_follows_a_change_of_ratio): AKD-30 727.2 and
+    # NPT035-10 22 N·m/arcmin at the output, so shares 1/727.2 : 1/22 = 2.94 % : 97.1 %.
+    assert chain.startswith('<svg class="dr-chain"') and "2.94 %: " in chain and "97.1 %: " in chain
     review.controls["coupling.temperature"].value = 60.0
     review.settled()
     assert review.generation == first + 1  # one update per change
-    assert len(drawn) == 2  # neither figure's inputs changed (a bellows coupling has no temperature factor)
+    assert (review.load_cycle.value, review.chain.value) == (cycle, chain)  # a bellows coupling has no temperature factor
     review.controls["profile[2].torque"].value = 21.0
     review.settled()
-    assert len(drawn) == 3  # the load cycle only
+    assert review.load_cycle.value != cycle and review.chain.value == chain  # the load cycle only
     review.controls["motor.peak_torque"].value = 30.0
     review.settled()
     # T_2max = 30 · 10 · 1.3 · 0.97 = 378.3 N·m, above NPT035-10's T_2B of 220 N·m: NPS045-10 (400 N·m)
     # is chosen; the coupling follows the motor's torque (AKN-60: of the two 75 N·m sizes, AKD-60 and
     # AKN-60, the drive train's first mode is higher with AKN-60, 228.4 Hz against 227.8 Hz, so its
-    # worst utilization, 2 f_er / f_1 = 200 / 228.4, is the lower), and with both the accuracy chain,
-    # whose figure is drawn again.
+    # worst utilization, 2 f_er / f_1 = 200 / 228.4, is the lower), and with both the accuracy chain.
     assert "Gearbox <b>NPS045-10</b> · Coupling <b>AKN-60</b>" in review.results.value and "378.3 N·m" in review.results.value
-    assert len(drawn) == 4
-    review.reset.click()  # back to the case file's values, whose figures are kept
-    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and len(drawn) == 4
+    assert "NPS045-10" in review.chain.value and "NPT035-10" not in review.chain.value
+    review.reset.click()  # back to the case file's values
+    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and review.chain.value == chain
 
 
 def test_changes_that_arrive_while_drawing_are_drawn_once_together():
@@ -224,7 +222,15 @@ def test_the_accuracy_chain_follows_a_change_of_ratio(case):
     assert "the transmission_trace of NPT035-10 not used: the selection chose TP010-8" in a["components"][1]["source"]
     assert "measured_trace" not in a["components"][1]
     text = results_html(*evaluated(with_changes(case, ratio=Q_(8, ""))))
-    assert '<span class="word pass">PASS</span>' in text and "Gearbox <b>TP010-8</b>" in text and "0.365 arcmin" in text
+    # TP010-8's transmission accuracy is not known (the catalog gives none): 0.365 arcmin is a lower
+    # bound, so the required 5 arcmin is not decided, and the page says which part and figure.
+    assert a["positioning_accuracy_is_lower_bound"] and a["unknown"] == [
+        "TP010-8: its transmission accuracy (the trace of NPT035-10 does not apply to it, and the case gives no transmission_accuracy)"]
+    assert a["checks"][0]["passes"] is None and r["verdict"]["passes"] is None
+    assert '<span class="word open">NOT DECIDED</span>' in text and "Gearbox <b>TP010-8</b>" in text and "≥ 0.365 arcmin" in text
+    # Beside the verdict, the checks not made: TP010-8's F_2R (no rating), the positioning accuracy,
+    # the motor's RMS and speed (the case gives no ratings).
+    assert "<b>a lower bound</b>: unknown TP010-8: its transmission accuracy" in text and "4 checks not made" in text
 
 
 def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
@@ -275,8 +281,11 @@ def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     panel = DesignReview(DERIVED_EXAMPLE)
     specs = {s.key: s for s in panel.specs}
     assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque", "mechanism.process_torque",
-                           "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].jerk_time", "move[2].dwell",
-                           "motor.peak_torque", "motor.inertia", "coupling.temperature", "accuracy.applied_torque"]
+                           "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].decel_time", "move[1].jerk_time",
+                           "move[2].dwell", "motor.peak_torque", "motor.inertia", "coupling.temperature", "accuracy.applied_torque",
+                           "gearbox.part"]
+    # The decel time the file leaves out is offered at the value reading the file takes: the accel time.
+    assert (specs["move[1].decel_time"].unit, specs["move[1].decel_time"].value) == ("s", 0.15)
     # In the file's units: the index of 90 deg, the table's 1500 kg·cm²; the friction 3 N·m, the
     # process torque left out (0 N·m, its default).
     assert (specs["move[1].distance"].unit, specs["move[1].distance"].value) == ("deg", 90.0)
@@ -297,9 +306,10 @@ def test_the_inch_pound_example_offers_its_inputs_in_its_units():
                                                          "mechanism.eta", "mechanism.incline", "move[3].distance")} == {
         "mechanism.mass": ("lb", 60.0), "mechanism.lead": ("in", 1.0), "mechanism.screw_inertia": ("lb*in**2", 2.7),
         "mechanism.eta": ("", 0.9), "mechanism.incline": ("deg", 90.0), "move[3].distance": ("in", 10.0)}
-    # The process force the file leaves out comes in the mechanism's units too; the way down keeps its sign.
+    # The process force the file leaves out comes in the mechanism's units too.
     assert specs["mechanism.force"].text == "mechanism: process force F_p [lbf]"
-    assert (specs["move[1].distance"].low, specs["move[1].distance"].high, specs["move[1].distance"].value) == (-50.0, -1.0, -10.0)
+    # Either way, so a move can be reversed.
+    assert (specs["move[1].distance"].low, specs["move[1].distance"].high, specs["move[1].distance"].value) == (-50.0, 50.0, -10.0)
     assert "load.inertia" not in specs  # the mechanism gives J_L
     assert specs["mechanism.eta"].low == 0.5 and specs["mechanism.eta"].high == 1.0
 
@@ -359,14 +369,17 @@ def test_an_impossible_move_shows_the_input_error_and_the_panel_recovers():
     panel.controls["move[1].accel_time"].value = 0.3  # 0.3 s + 0.3 s > 0.5 s
     panel.settled()
     assert "input error</b>: " in panel.results.value and "Governing checks" not in panel.results.value
-    assert "move[1].accel_time: expected acceleration and deceleration times that fit in the move" in panel.results.value
+    # The control by its label, the case file by its name (no folder of the server), no figure.
+    assert "1 move: accel time <i>t</i><sub>a</sub>: expected acceleration and deceleration times that fit in the move" in panel.results.value
+    assert "move[1]" not in panel.results.value.split("data-changed")[1].split(">", 1)[1] and str(DERIVED_EXAMPLE.parent) not in panel.results.value
+    assert panel.load_cycle.layout.display == "none" and panel.chain.layout.display == "none"
     assert "found 0.3 s + 0.3 s &gt; 0.5 s" in panel.results.value
     panel.controls["move[1].accel_time"].value = 0.15
     panel.settled()
     assert panel.results.value.replace(f'data-generation="{panel.generation}"', "") == first.replace('data-generation="1"', "")
     panel.controls["move[1].jerk_time"].value = 0.1  # over half of 0.15 s
     panel.settled()
-    assert "move[1].jerk_time: expected a jerk time of at most half the acceleration and the deceleration time (0.075 s)" in panel.results.value
+    assert "1 move: jerk time <i>t</i><sub>j</sub>: expected a jerk time of at most half the acceleration and the deceleration time (0.075 s)" in panel.results.value
     panel.controls["move[1].jerk_time"].value = 0.03
     panel.settled()
     assert "PASS" in panel.results.value and "peak speed 42.86 rpm" in panel.results.value
@@ -434,3 +447,239 @@ def test_the_server_serves_the_folder_of_page_and_reports_and_only_the_reports_p
     # A folder that holds the page: its PDFs are served from the top of it.
     assert serve.allowed(ROOT / "calc") == [r"[^/]+\.pdf"]
     assert serve.environment(EXAMPLE, tmp_path)[serve.REPORTS_VARIABLE] == str(tmp_path.resolve())
+
+
+# -- never silently changed, kept, compared ------------------------------------------------------
+
+
+def test_a_typed_value_is_read_with_a_decimal_comma_and_refused_outside_its_range_never_clamped():
+    panel = DesignReview(DERIVED_EXAMPLE)
+    first = panel.generation
+    panel.fields["move[2].dwell"].value = "0,6"  # a decimal comma: 0.6 s, not 6 s
+    panel.settled()
+    assert panel.controls["move[2].dwell"].value == 0.6 and panel.fields["move[2].dwell"].value == "0.6"
+    assert panel.generation > first and not panel.refused
+    for typed, why in (("1e9", "outside the range"), ("-40", "outside the range"), ("abc", "is not a number"), ("0", "outside the range")):
+        panel.fields["motor.peak_torque"].value = typed
+        panel.settled()
+        assert panel.controls["motor.peak_torque"].value == 12.0  # kept, not clamped
+        assert why in panel._messages["motor.peak_torque"].value and "dr-refused" in panel.fields["motor.peak_torque"]._dom_classes
+        assert "Not applied" in panel.results.value and "motor peak torque" in panel.results.value
+    panel.fields["motor.peak_torque"].value = "16"
+    panel.settled()
+    assert not panel.refused and panel._messages["motor.peak_torque"].value == "" and "Not applied" not in panel.results.value
+    # The results carry the field texts they were computed for, and the changed ones.
+    assert '&quot;motor.peak_torque&quot;: &quot;16&quot;' in panel.results.value
+
+
+def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_path):
+    import shutil
+
+    for p in (DERIVED_EXAMPLE, DERIVED_EXAMPLE.parent / "linear-axis-inch.toml"):
+        shutil.copy(p, tmp_path / p.name)
+    (tmp_path / "data").mkdir()
+    for p in (DERIVED_EXAMPLE.parent.parent / "data").glob("*.csv"):
+        shutil.copy(p, tmp_path / "data" / p.name)
+    original = tmp_path / DERIVED_EXAMPLE.name
+    text = original.read_text().replace("../data/", "data/")
+    original.write_text(text)
+    panel = DesignReview(original)
+    panel.controls["move[1].time"].value = 0.6
+    panel.controls["motor.peak_torque"].value = 16.0
+    panel.controls["coupling.temperature"].value = 60.0
+    panel.settled()
+    assert panel.save("indexing-table.toml") is None and "exists" in panel.kept.value  # never over a file
+    assert panel.save("../elsewhere.toml") is None and "no folder" in panel.kept.value  # only in the cases' folder
+    saved = panel.save("axis-3-slower.toml")
+    assert saved == tmp_path / "axis-3-slower.toml" and original.read_text() == text
+    written = saved.read_text()
+    assert written.startswith("# Changed in the design review from indexing-table.toml: move[1].time 0.5 s -> 0.6 s; "
+                              "motor.peak_torque 12 N*m -> 16 N*m; coupling.temperature 40 degC -> 60 degC\n")
+    # Only the changed values rewritten: every comment and every other line as it was.
+    assert written.count("\n") == text.count("\n") + 1 and "# T_1B, maximum torque of the servo motor" in written
+    assert 'peak_torque = "16 N*m"         # T_1B' in written
+    # The file re-evaluates to the screen's results.
+    assert evaluate(read_case(saved))["verdict"] == evaluate(panel.shown[0])["verdict"]
+    assert evaluate(read_case(saved))["cyclic"] == evaluate(panel.shown[0])["cyclic"]
+    assert saved in [p for _, p in panel.case_file.options]
+    assert 'download="indexing-table-variant-1.toml"' in panel.download.value
+
+
+def test_undo_and_redo_step_through_the_changes():
+    panel = DesignReview(EXAMPLE)
+    def shown():  # the results without their generation count
+        return panel.results.value.replace(f'data-generation="{panel.generation}"', "")
+
+    first = shown()
+    panel.controls["motor.peak_torque"].value = 30.0
+    panel.settled()
+    panel.controls["gearbox.ratio"].value = 8.0
+    panel.settled()
+    assert not panel.undo_button.disabled and panel.redo_button.disabled
+    panel.undo()
+    assert panel.controls["gearbox.ratio"].value == 10.0 and panel.controls["motor.peak_torque"].value == 30.0
+    panel.undo()
+    assert panel.changes() == {} and shown() == first and panel.undo_button.disabled
+    panel.redo()
+    assert panel.changes() == {"motor.peak_torque": (30.0, "N*m")} and "NPS045-10" in panel.results.value
+    assert "dr-changed" in panel._labels["motor.peak_torque"].value and "dr-changed" not in panel._labels["gearbox.ratio"].value
+
+
+def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
+    panel = DesignReview(EXAMPLE)
+    panel.keep_variant()
+    panel.controls["motor.peak_torque"].value = 30.0
+    panel.settled()
+    panel.keep_variant()
+    table = panel.variants_html.value
+    # 30 N·m · 10 · 1.3 · 0.97 = 378.3 N·m: NPS045-10 instead of NPT035-10, marked as a difference.
+    assert "Variants compared" in table and '<td class="differs">NPS045-10</td>' in table and '<td class="">NPT035-10</td>' in table
+    assert '<td class="differs">378.3 N·m</td>' in table and "with motor peak torque" in table
+    import json
+    import subprocess
+    import sys
+
+    stronger = tmp_path / "stronger.toml"
+    stronger.write_text(EXAMPLE.read_text().replace('peak_torque = "12 N*m"', 'peak_torque = "30 N*m"')
+                        .replace('"../../data/', f'"{EXAMPLE.parent.parent.parent}/data/'))
+    done = subprocess.run([sys.executable, "-m", "calc", "compare", str(EXAMPLE), str(stronger), "--json"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    rows = {r["name"]: r for r in json.loads(done.stdout)["rows"]}
+    assert rows["gearbox"]["values"] == ["NPT035-10", "NPS045-10"] and rows["gearbox"]["differs"] == [False, True]
+    assert rows["T_2max"]["values"][1] == "378.3 N·m" and rows["mode"]["differs"] == [False, False]
+    pdf = tmp_path / "compared.pdf"
+    text = subprocess.run([sys.executable, "-m", "calc", "compare", str(EXAMPLE), str(stronger), "--pdf", str(pdf)],
+                          capture_output=True, text=True).stdout
+    assert "NPS045-10 *" in text and text.splitlines()[-1] == "* differs from the first design"
+    assert pdf.read_bytes()[:5] == b"%PDF-"
+    import shutil
+
+    if shutil.which("pdftotext"):
+        printed = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True).stdout
+        assert "NPS045-10" in printed and "378.3 N·m" in printed and "worst governing utilization" in printed
+
+
+def test_a_temperature_on_a_bellows_coupling_says_it_has_no_effect():
+    panel = DesignReview(EXAMPLE)
+    assert "no effect on this design: a metal bellows coupling has no temperature factor" in panel._messages["coupling.temperature"].value
+
+
+def test_the_chooser_gives_the_screens_verdict_once_changed():
+    panel = DesignReview(EXAMPLE)
+    panel.controls["accuracy.applied_torque"].value = 2.0  # 9.049 arcmin > 5 (FAIL, E13)
+    panel.settled()
+    assert panel.case_file.label == f"{EXAMPLE.name} · FAIL (changed here)"
+
+
+def test_what_cannot_be_saved_says_why():
+    from calc.errors import CalcError
+    from calc.review.keep import changed_text
+
+    text = '[motor]\npeak_torque = "12 N*m"\n[[move]]\ndwell = "1 s"\n'
+    with pytest.raises(CalcError, match=r"^motor: not a key path of a case file$"):
+        changed_text(text, {"motor": (1.0, "s")}, "a.toml")
+    with pytest.raises(CalcError, match=r"^a.toml: move\[2\].dwell: the file has 1 \[\[move\]\] tables$"):
+        changed_text(text, {"move[2].dwell": (1.0, "s")}, "a.toml")
+    # A segment changed by hand where the file derives its cycle: the file has no segments to write it in.
+    with pytest.raises(CalcError, match=r"^a.toml: profile\[1\].torque: the file has no \[profile\] table to write it in$"):
+        changed_text(text, {"profile[1].torque": (9.0, "N*m")}, "a.toml")
+    panel = DesignReview(EXAMPLE)
+    panel.fields["motor.peak_torque"].value = "abc"
+    panel.settled()
+    assert panel.save("anything.toml") is None and "a refused value is in a field" in panel.kept.value
+    assert not (EXAMPLE.parent / "anything.toml").exists()
+
+
+def test_the_report_of_the_screen_rests_on_the_saved_variant(tmp_path, monkeypatch):
+    import calc.review.panel
+
+    built = []
+
+    def build(case, pdf):  # the report's own tests build real PDFs; here only what is built, and the link
+        import subprocess
+
+        built.append((case, pdf, case.read_text()))
+        pdf.write_bytes(b"%PDF-")
+        return subprocess.CompletedProcess([], 0, "", "")
+
+    monkeypatch.setattr(calc.review.panel, "_build_report", build)
+    case = tmp_path / "axis.toml"
+    case.write_text(EXAMPLE.read_text().replace('"../../data/', f'"{EXAMPLE.parent.parent.parent}/data/'))
+    reports = tmp_path / "reports"
+    reports.mkdir()
+    panel = DesignReview(case, reports=reports, report_link=lambda pdf: f"voila/files/{pdf.name}")
+    panel.report_of_screen(wait=True)  # nothing changed: the case file's own report
+    assert built[-1][:2] == (case, reports / "axis.pdf") and 'href="voila/files/axis.pdf"' in panel.kept.value
+    panel.controls["motor.peak_torque"].value = 16.0
+    panel.settled()
+    panel.report_of_screen(wait=True)
+    saved, pdf, text = built[-1]
+    assert saved == tmp_path / "axis-variant-1.toml" and pdf == reports / "axis-variant-1.pdf"
+    assert 'peak_torque = "16 N*m"' in text and "the screen's design" in panel.kept.value
+
+
+def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si():
+    from tests.conftest import ROOT
+
+    panel = DesignReview(ROOT / "cases" / "linear-axis-inch.toml")
+    # The motor's inputs as the file writes them (60 lbf·in, not 6.8 N·m rounded from 6.779 N·m).
+    assert panel.fields["motor.peak_torque"].value == "60" and panel._spec("motor.peak_torque").unit == "lbf*in"
+    assert panel.units.value == "inch-pound"
+    inch = panel.results.value
+    assert "lbf·in" in inch and "N·m</td>" not in inch
+    panel.units.value = "SI"
+    panel.settled()
+    si = panel.results.value
+    assert "N·m" in si and "lbf·in" not in si
+    # T_2max in both: 1 lbf·in = 0.112985 N·m.
+    import re
+
+    t_si = float(re.search(r"<sub>2max</sub> ([\d.]+) N·m", si).group(1))
+    t_in = float(re.search(r"<sub>2max</sub> ([\d.]+) lbf·in", inch).group(1))
+    assert t_in * 0.112985 == pytest.approx(t_si, rel=2e-3)
+    # A changed inch value is saved as the file writes it.
+    panel.fields["motor.peak_torque"].value = "70"
+    panel.settled()
+    assert 'peak_torque = "70 lbf*in"' in panel.case_text()
+
+
+def test_the_load_cycle_figure_draws_the_segments_steps():
+    from calc.review.figures import HEIGHT, LEFT, RIGHT, WIDTH, load_cycle_svg
+
+    case = read_case(EXAMPLE)  # 0.2 s, 0.6 s, 0.2 s, then a pause of 1 s: edges at 0, 0.2, 0.8, 1.0, 2.0 s
+    svg = load_cycle_svg(case.profile, evaluate(case)["duty"])
+    scale = (WIDTH - LEFT - RIGHT) / 2.0
+    speed = svg.split('<polyline points="')[1].split('"')[0].split()
+    assert [float(p.split(",")[0]) for p in speed] == pytest.approx(
+        [LEFT + scale * t for t in (0, 0.2, 0.2, 0.8, 0.8, 1.0, 1.0, 2.0)], abs=0.06)
+    assert "Load cycle: ED = 50 %, cycle 2 s, mode S5" in svg and svg.count('fill="#eeeeee"') == 2  # the pause, in both panels
+    assert f'viewBox="0 0 {WIDTH} {HEIGHT}"' in svg and len(svg) < 8000
+
+
+def test_a_forced_gearbox_part_is_checked_alone_and_saved_by_name():
+    panel = DesignReview(EXAMPLE)
+    assert panel.controls["gearbox.part"].value == "the selection's" and "TP010-10" in panel._spec("gearbox.part").options
+    assert "NPS035-10" not in panel._spec("gearbox.part").options  # a partial row is never checked
+    panel.controls["gearbox.part"].value = "TP010-10"
+    panel.settled()
+    # TP010-10 alone: T_2B = 126 N·m (catalogs/gearboxes.csv) against T_2max = 151.3 N·m: it fails, by 20.1 %.
+    assert '<span class="word fail">FAIL</span>' in panel.results.value and "gearbox TP010-10" in panel.results.value
+    assert "required 151.3 N·m &gt; rated 126 N·m, 20.1 % over" in panel.results.value
+    assert 'part = "TP010-10"' in panel.case_text() and "gearbox.part (not given) -> TP010-10" in panel.case_text()
+    panel.controls["gearbox.part"].value = "the selection's"
+    panel.settled()
+    assert "PASS" in panel.results.value and panel.changes() == {}
+
+
+def test_a_move_is_reversed_and_a_ramp_the_file_leaves_out_is_set():
+    panel = DesignReview(DERIVED_EXAMPLE)
+    first = evaluate(panel.changed_case())
+    panel.fields["move[1].distance"].value = "-90"  # the index the other way
+    panel.settled()
+    back = evaluate(panel.shown[0])
+    # The same index backwards: the same peak speed, the torques mirrored (so the S5 values hold).
+    assert back["motion"]["peak_speed"] == first["motion"]["peak_speed"] and back["cyclic"]["T2max"] == first["cyclic"]["T2max"]
+    assert back["motion"]["segments"][0]["torque"]["value"] < 0 < first["motion"]["segments"][0]["torque"]["value"]
+    panel.fields["move[1].decel_time"].value = "0.2"  # not in the file: written into the move
+    panel.settled()
+    assert panel.shown[0].motion.tables["move"][0]["decel_time"] == "0.2 second" and 'decel_time = "0.2 s"' in panel.case_text()

@@ -77,7 +77,8 @@ def results(report) -> list[str]:
         [r"$\varphi_{\mathrm{TA}}$", q(a["transmission_accuracy"]),
          prose("angular transmission accuracy, from " + listed(a["transmission_accuracy_from"]))],
         [r"$\varphi_{\mathrm{LM}}$", q(a["lost_motion"]), prose("total lost motion at the applied torque (E12)")],
-        [r"$\Delta\varphi_{P}$", q(a["positioning_accuracy"]), prose(f"positioning accuracy, {a['positioning_rule']} (E13)")],
+        [r"$\Delta\varphi_{P}$", (r"$\geq$ " if a["unknown"] else "") + q(a["positioning_accuracy"]),
+         prose(f"positioning accuracy, {a['positioning_rule']} (E13)" + (f"; a lower bound: unknown {'; '.join(a['unknown'])}" if a["unknown"] else ""))],
         ["–", q(a["repeatability"]), prose(rep)],
     ]
     if "radius" in a:

@@ -82,7 +82,8 @@ def checks_table(candidate: dict, caption: str) -> str:
 
 def requirement_table(checks: list, caption: str) -> str:
     """Checks of a value reached against a limit the case requires (``value <= required``)."""
-    rows = [[prose(k["criterion"].replace("_", " ")), q(k["value"]), q(k["required"]), util(k["utilization"]), verdict_mark(k["passes"])]
+    rows = [[prose(k["criterion"].replace("_", " ")), (r"$\geq$ " if k["passes"] is None else "") + q(k["value"]), q(k["required"]),
+             util(k["utilization"]), verdict_mark(k["passes"]) if k["passes"] is not None else prose("not made: " + k.get("not_made", ""))]
             for k in checks]
     return table(r"@{}l r r r l@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
                  caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")

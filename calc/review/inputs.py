@@ -111,8 +111,9 @@ def _signed(v: float, floor: float = 10.0) -> tuple[float, float]:
 
 
 def _distance(v: float) -> tuple[float, float]:
-    """A tenth to five times a move's distance, on its side (a move never has none)."""
-    return (5 * v, v / 10) if v < 0 else (v / 10, 5 * v)
+    """Five times a move's distance either way, so a move can be reversed (zero is refused when the
+    moves are read: a pause is a dwell)."""
+    return -5 * abs(v), 5 * abs(v)
 
 
 #: The inputs of a mechanism: key, label, kind, unit (SI, inch-pound) where the file leaves it
@@ -150,12 +151,13 @@ def _as_written(text, kind: str, where: str) -> tuple[str, float]:
 
 def motion_specs(case: Case) -> list[InputSpec]:
     """The inputs of a case whose load cycle is derived from moves: its mechanism's, then each
-    move's distance, time and ramps as the file gives them, and each dwell; in the units the file
+    move's distance (either way), time and ramps (accel, decel and jerk time, those the file leaves
+    out at the values reading it takes), and each dwell; in the units the file
     writes them (an input it leaves out, in the units of the rest of the mechanism)."""
     tables = case.motion.tables
     mechanism = tables["mechanism"]
     where = f"{case.path}: mechanism"
-    inch_pound = any(_INCH_POUND.search(_unit_of(v)) for k, v in mechanism.items() if k in MECHANISM)
+    inch_pound = any(is_inch_pound(_unit_of(v)) for k, v in mechanism.items() if k in MECHANISM)
     specs = []
     for name in motion_section.keys_of(mechanism["type"]):
         if name not in MECHANISM:
@@ -176,9 +178,11 @@ def motion_specs(case: Case) -> list[InputSpec]:
         for name, label in MOVE_TIMES:
             if name in move:
                 unit, v = _as_written(move[name], "time", f"{where}.{name}")
-                # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
-                high = 3 * v if name == "time" else float(time.m_as(unit))
-                specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=True))
+            else:  # a ramp the file leaves out, at the value reading the file takes: decel as accel, no jerk
+                unit, v = _as_written(move["accel_time"], "time", f"{where}.accel_time") if name == "decel_time" else ("s", 0.0)
+            # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
+            high = 3 * v if name == "time" else float(time.m_as(unit))
+            specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=name != "jerk_time" or v > 0))
     return specs
 
 
@@ -197,6 +201,27 @@ def value_at(case: Case, key: str, unit: str, kind: str):
     if table is None or (name not in table and key not in DEFAULTS):
         return None
     return float(parse_quantity(table.get(name, DEFAULTS.get(key)), kind, f"{case.path}: {key}").m_as(unit))
+
+
+def is_inch_pound(unit: str) -> bool:
+    """Whether ``unit`` is an inch-pound one (``lbf*in``, ``lb*in**2``, ``in``).
+
+    >>> is_inch_pound("lbf*in"), is_inch_pound("N*m"), is_inch_pound("")
+    (True, False, False)
+    """
+    return bool(unit) and _INCH_POUND.search(unit) is not None
+
+
+def written_unit(case: Case, key: str) -> str | None:
+    """The inch-pound unit the case file writes the value at ``key`` in (``"60 lbf*in"`` → ``lbf*in``),
+    or None: the panel then offers it in its SI unit."""
+    if key in CASE_FIELDS:
+        q = getattr(case, CASE_FIELDS[key])
+        unit = None if q is None else f"{q.units:~C}"
+    else:
+        section, name = key.split(".", 1)
+        unit = _unit_of((case.sections.get(section) or {}).get(name))
+    return unit if is_inch_pound(unit) else None
 
 
 def segment_specs(case: Case) -> list[InputSpec]:
@@ -221,6 +246,7 @@ def input_specs(case: Case, ratios=()) -> list[InputSpec]:
     moves = case.motion is not None and bool(case.motion.moves)
     specs += motion_specs(case) if moves else segment_specs(case)
     for key, label, unit, kind, reach in SCALARS:
+        unit = written_unit(case, key) or unit
         v = value_at(case, key, unit, kind)
         if v is not None and not (moves and key == "load.inertia"):  # the mechanism gives J_L
             specs.append(_spec(key, label, unit, v, *reach(v)))

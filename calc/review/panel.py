@@ -1,51 +1,96 @@
 """The design-review panel (ipywidgets): the controls on the left, the results beside them.
 
 Left: the case, chosen among the case files of its folder (no path is typed, so the panel reads no
-other file), with a button back to its values, one row per input (:func:`calc.review.inputs.input_specs`: the label with its unit, a
-slider, a number field for an exact value, linked in the browser), and the load-cycle figure.
-Right: the results as one HTML text (:func:`calc.review.view.results_html`: verdict and chosen
-parts first, then the governing checks, so they show without scrolling) and the stiffness-chain
-figure.
+other file), with buttons back to its values and through the changes, one row per input
+(:func:`calc.review.inputs.input_specs`: the label with its unit and key path, a slider and a number
+field read by :func:`read_typed`), the unit system, saving and variants, and the load-cycle
+figure (SVG, drawn by the browser). Right: the state of the results
+(current, out of date, connection lost: :mod:`calc.review.client`), the results as one HTML text
+(:func:`calc.review.view.results_html`: verdict and chosen parts first, then the governing checks,
+so they show without scrolling), the stiffness-chain figure and the variants compared.
 
 A change updates the page once: the results text is replaced whole (it never collapses, so no
-stale copy shows), and a figure only when what it draws changed (each figure's PNG is kept by its
-inputs). Changes that arrive while one is being drawn are taken together: a worker thread draws the
-controls' latest values, then looks again.
+stale copy shows), the figures with it (SVG, :mod:`calc.review.figures`). Changes that arrive while one is being drawn are taken together: a worker thread draws
+the controls' latest values, then looks again.
 """
 
 from __future__ import annotations
 
-import io
+import dataclasses
+import json
+import math
+import re
 import threading
 from html import escape
 from pathlib import Path
+from urllib.parse import quote
 
 from ..case import Case, read_case
 from ..errors import CalcError
 from ..publish import summary_rows
 from ..units import Q_, pretty_unit
-from .inputs import InputSpec, input_specs, with_inputs
-from .view import FAIL_COLOR, evaluated, results_html, typeset
+from .client import STYLE as PAGE_STYLE, state_html
+from .figures import load_cycle_svg, stiffness_chain_svg
+from .inputs import InputSpec, input_specs, is_inch_pound, with_inputs
+from .keep import changed_text, free_name, save_path, value_text
+from .view import FAIL_COLOR, comparison_html, evaluated, results_html, typeset
 
 LABEL_WIDTH = "15.5em"
-FIGURE_DPI = 72  # the PNG's pixels at the width the column shows it
-FIGURES_KEPT = 32
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
 
 
-def _png(figure) -> bytes:
-    out = io.BytesIO()
-    figure.savefig(out, format="png", dpi=FIGURE_DPI)
-    return out.getvalue()
+def _gearbox_catalog(case: Case):
+    from ..catalog import load_catalog, resolve
+    from ..gearbox import SCHEMA
+
+    return load_catalog(resolve(case.gearbox_catalog, case.folder, "gearbox.catalog"), SCHEMA)
 
 
 def _ratios(case: Case) -> list[float]:
     """The ratios of the case's gearbox catalog (the choices of the ratio control)."""
-    from ..catalog import load_catalog, resolve
-    from ..gearbox import SCHEMA
+    return sorted(set(_gearbox_catalog(case)["ratio"].m_as("").tolist()))
 
-    catalog = load_catalog(resolve(case.gearbox_catalog, case.folder, "gearbox.catalog"), SCHEMA)
-    return sorted(set(catalog["ratio"].m_as("").tolist()))
+
+#: The gearbox choice that leaves the part to the selection (``[gearbox] part`` not given).
+SELECTION = "the selection's"
+
+
+def forced_part_spec(case: Case) -> InputSpec:
+    """The gearbox part the reviewer forces (``[gearbox] part``, checked alone): a choice among
+    the catalog's rows at the case's ratio (not the partial ones), or the selection's."""
+    catalog = _gearbox_catalog(case)
+    ratio = float(case.ratio.m_as(""))
+    parts = [str(p) for p, r, partial in zip(catalog.parts, catalog["ratio"].m_as(""), catalog.partial) if r == ratio and not partial]
+    value = case.gearbox_part or SELECTION
+    return InputSpec("gearbox.part", "gearbox part forced", "", 0, 0, 0, value, tuple(dict.fromkeys([SELECTION, *parts, value])))
+
+
+#: A number as a reviewer types it: digits with a point or a decimal comma (``0,6``), a sign, an exponent.
+_TYPED = re.compile(r"^[-+]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][-+]?\d+)?$")
+
+
+def read_typed(text: str, spec: InputSpec) -> float:
+    """The number a reviewer typed into the field of ``spec``: a decimal comma is read as a point;
+    not a number, or outside the input's range, is refused with a sentence saying why (never
+    clamped). A choice's text is one of its options.
+
+    >>> from calc.review.inputs import InputSpec
+    >>> spec = InputSpec("move[1].time", "1 move: time t", "s", 0.05, 1.5, 0.01, 0.5)
+    >>> read_typed(" 0,6 ", spec)
+    0.6
+    >>> read_typed("2", spec)
+    Traceback (most recent call last):
+    ...
+    calc.errors.CalcError: 2 s is outside the range of 1 move: time t, 0.05 s to 1.5 s: not applied
+    """
+    t = text.strip()
+    unit = f" {pretty_unit(spec.unit)}" if spec.unit else ""
+    if not _TYPED.match(t):
+        raise CalcError(f"{t!r} is not a number: expected a number such as {spec.value:g} (in{unit or ' no unit'}), a decimal point or comma; not applied")
+    v = float(t.replace(",", "."))
+    if not math.isfinite(v) or not spec.low <= v <= spec.high:
+        raise CalcError(f"{t}{unit} is outside the range of {spec.label}, {spec.low:g}{unit} to {spec.high:g}{unit}: not applied")
+    return v
 
 
 class DesignReview:
@@ -54,13 +99,20 @@ class DesignReview:
 
     ``controls`` holds each input's value widget by its key path (``motor.peak_torque``); setting
     one's ``value`` (by hand or in code) re-evaluates the case into ``results`` (the text) and the
-    figures. ``report_link(path)``, where given, returns the address of a case's report,
+    figures. ``fields`` holds the number field beside each slider: what is typed there is read by
+    :func:`read_typed` and refused, with its message under the row, where it is not a number in the
+    input's range. ``report_link(path)``, where given, returns the address of a case's report,
     which the panel links beside the verdict.
 
     ``reports``, where given, is the folder of the calc reports (``python -m calc report
     cases/*.toml --summary -o reports/``): the case chooser shows each case's verdict as its file
     reads (:func:`calc.publish.summary_rows`), and the link is shown only where the case's report
-    was built, ``report_link`` then getting the report's path.
+    was built, ``report_link`` then getting the report's path. The chooser's entry of the case
+    shown gives the screen's verdict once an input is changed.
+
+    The reviewer's changes are kept: :meth:`save` writes them as a new case file beside the
+    original (:mod:`calc.review.keep`), :meth:`undo` and :meth:`redo` step through them, and
+    :meth:`keep_variant` pins the current design beside the others (the comparison table).
     """
 
     def __init__(self, case_path, report_link=None, cases=None, reports=None):
@@ -69,7 +121,7 @@ class DesignReview:
         path = Path(case_path)
         choices = sorted({*Path(cases or path.parent).glob("*.toml"), path})
         self.message = w.HTML()
-        self.reports_folder, self.reports, labels = reports, {}, {p: p.name for p in choices}
+        self.reports_folder, self.reports, self.labels = reports, {}, {p: p.name for p in choices}
         self._note = ""  # what the page says of the reports while any case is shown
         if reports is not None:
             try:
@@ -78,32 +130,70 @@ class DesignReview:
                 self._note = f'<span style="color:{FAIL_COLOR}">no verdicts or reports: {typeset(str(exc))}</span>'
                 rows = []
             for p, row in zip(choices, rows):
-                labels[p] = f"{p.name} · {row['verdict']}"
+                self.labels[p] = f"{p.name} · {row['verdict']}"
                 self.reports[p] = Path(row["report_path"])
-        self.case_file = w.Dropdown(options=[(labels[p], p) for p in choices], value=path, description="case",
+        self.case_file = w.Dropdown(options=[(self.labels[p], p) for p in choices], value=path, description="case",
                                     style={"description_width": "3em"}, layout=w.Layout(flex="1 1 auto", width="auto"))
-        self.case_file.observe(lambda _: self.load(), names="value")
-        self.reset = w.Button(description="reset", tooltip="back to the values of the case file", layout=w.Layout(width="6.5em"))
+        self.case_file.add_class("dr-case")
+        self._relabelling = False  # the chooser's options being rewritten, not a case chosen
+        self.case_file.observe(lambda _: self._relabelling or self.load(), names="value")
+        self.reset = w.Button(description="reset", tooltip="back to the values of the case file", layout=w.Layout(width="4.5em", flex="0 0 4.5em"))
         self.reset.on_click(lambda _: self.load())
+        self.undo_button = w.Button(description="undo", tooltip="the values before the last change", layout=w.Layout(width="4.2em", flex="0 0 4.2em"), disabled=True)
+        self.redo_button = w.Button(description="redo", tooltip="the change undone last", layout=w.Layout(width="4.2em", flex="0 0 4.2em"), disabled=True)
+        self.undo_button.on_click(lambda _: self.undo())
+        self.redo_button.on_click(lambda _: self.redo())
         self.report_link = report_link
         self.all_candidates = w.Checkbox(description="all candidates", indent=False,
                                          tooltip=f"list every candidate in the tables, not the best {SHOWN_CANDIDATES}")
         self.controls_box = w.VBox(layout=w.Layout(overflow="hidden"))
+        self.state = w.HTML(state_html())
         self.results = w.HTML(layout=w.Layout(width="100%"))
-        self.load_cycle = w.Image(format="png", layout=w.Layout(width="100%", max_width="560px"))
-        self.chain = w.Image(format="png", layout=w.Layout(width="100%", max_width="640px"))
-        top = w.HBox([self.case_file, self.reset], layout=w.Layout(width="100%"))
+        self.load_cycle = w.HTML(layout=w.Layout(width="100%", max_width="560px"))  # SVG, drawn by the browser
+        self.chain = w.HTML(layout=w.Layout(width="100%", max_width="640px"))  # SVG, drawn by the browser
+        self.load_cycle.add_class("dr-figures")
+        self.chain.add_class("dr-figures")
+        # Kept: save as a case file beside the original, the same file to download, variants compared.
+        self.save_name = w.Text(placeholder="new-case.toml", tooltip="the new case file's name, in the folder of the case",
+                                layout=w.Layout(flex="1 1 auto", width="auto"))
+        self.save_button = w.Button(description="Save as case file", tooltip="write the changed values into a new case file beside this one",
+                                    layout=w.Layout(width="11em"))
+        self.save_button.on_click(lambda _: self.save())
+        self.variant_button = w.Button(description="Keep as variant", tooltip="pin the design on the screen beside the others",
+                                       layout=w.Layout(width="11em"))
+        self.variant_button.on_click(lambda _: self.keep_variant())
+        self.report_button = w.Button(description="Calc report of this screen", layout=w.Layout(width="15em"),
+                                      tooltip="save the changed values as a case file (Save as case file) and build its calc report (PDF)")
+        self.report_button.on_click(lambda _: self.report_of_screen())
+        self.download = w.HTML()
+        self.kept = w.HTML()
+        self.variants_html = w.HTML(layout=w.Layout(width="100%"))
+        self.variants: list = []  # (name, Report) pinned by keep_variant
+        keep = w.VBox([w.HBox([self.save_name, self.save_button], layout=w.Layout(width="100%")),
+                       w.HBox([self.variant_button, self.report_button]), self.download, self.kept])
+        keep.add_class("dr-keep")
+        top = w.HBox([self.case_file, self.reset, self.undo_button, self.redo_button], layout=w.Layout(width="100%"))
         self.all_candidates.observe(self._changed, names="value")
-        left = w.VBox([top, self.message, self.controls_box, self.all_candidates, self.load_cycle],
+        self.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the results",
+                                     style={"button_width": "6em"})
+        self.units.observe(self._changed, names="value")
+        left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, w.HBox([self.all_candidates, self.units]), keep, self.load_cycle],
                       layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
-        right = w.VBox([self.results, self.chain], layout=w.Layout(flex="1 1 560px", min_width="560px"))
+        right = w.VBox([self.state, self.results, self.chain, self.variants_html], layout=w.Layout(flex="1 1 560px", min_width="560px"))
         # Side by side on a screen; on a narrow one (a notebook beside a file browser) the results go under.
         self.panel = w.HBox([left, right], layout=w.Layout(width="100%", align_items="flex-start", flex_flow="row wrap"))
         self.panel.add_class("design-review")
         self.controls: dict = {}
+        self.fields: dict = {}
+        self._messages: dict = {}  # key path -> the HTML under its row (a refusal, or that it has no effect)
+        self._labels: dict = {}  # key path -> its label
+        self.refused: dict = {}  # key path -> the refused text, with why
         self.specs: list[InputSpec] = []
         self.case: Case | None = None
-        self._figures: dict = {}  # (figure, its inputs) -> PNG
+        self.shown: tuple | None = None  # (case, report) of the results on the screen
+        self._history: list[dict] = []  # the controls' values after each change, for undo and redo
+        self._undone: list[dict] = []
+        self._stepping = False
         self._dirty = False
         self._worker: threading.Thread | None = None
         self._lock = threading.Lock()
@@ -123,41 +213,108 @@ class DesignReview:
             case = read_case(self.case_file.value)
             ratios = _ratios(case) if case.ratio is not None else []
         except CalcError as exc:
-            self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(str(exc))}'
+            self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(_without_folder(str(exc), self.case_file.value))}'
             return
         self.case, self.message.value = case, self._note
-        self.specs = input_specs(case, ratios)
-        self.controls = {}
+        self.specs = input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
+        self.controls, self.fields, self._messages, self._labels, self.refused = {}, {}, {}, {}, {}
         old = self.controls_box.children
         self.controls_box.children = [self._row(spec) for spec in self.specs]
         for row in old:
-            for widget in row.children:
-                widget.close()
-            row.close()
+            _close(row)
         for control in self.controls.values():
             control.observe(self._changed, names="value")
+        self._history, self._undone = [self._values()], []
+        # The results in the units the case file writes: inch-pound where its inputs are.
+        inch = any(is_inch_pound(s.unit) for s in self.specs)
+        self.units.unobserve(self._changed, names="value")
+        self.units.value = "inch-pound" if inch else "SI"
+        self.units.observe(self._changed, names="value")
+        self.save_name.value = free_name(case.path)
         self.refresh()
 
     def _row(self, spec: InputSpec):
-        """One input: its label with unit (the whole of it also as tooltip), a slider and a number
-        field linked in the browser (so a typed value moves the slider, and only the slider's
-        value reaches the kernel), or a choice."""
+        """One input: its label with unit (the whole of it also as tooltip, its key path as
+        ``data-key``), a slider and a number field, or a choice; under it, where there is one, a
+        message (a refused value, or that the input has no effect on the design)."""
         import ipywidgets as w
 
-        label = w.HTML(f'<span title="{escape(spec.text)}">{typeset(spec.label)}{" [" + pretty_unit(spec.unit) + "]" if spec.unit else ""}</span>',
-                       layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
+        label = w.HTML(self._label_html(spec, changed=False), layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
+        label.add_class("dr-label")
+        self._labels[spec.key] = label
+        message = w.HTML()
+        self._messages[spec.key] = message
         if spec.options:
-            control = w.Dropdown(options=[(f"{r:g}", r) for r in spec.options], value=spec.value, tooltip=spec.text,
+            control = w.Dropdown(options=[(_text_of(r), r) for r in spec.options], value=spec.value, tooltip=spec.text,
                                  layout=w.Layout(width="8em"))
             self.controls[spec.key] = control
-            return w.HBox([label, control])
-        slider = w.FloatSlider(value=spec.value, min=spec.low, max=spec.high, step=spec.step, readout=False,
-                               continuous_update=False, tooltip=spec.text, layout=w.Layout(flex="1 1 auto", width="auto"))
-        field = w.BoundedFloatText(value=spec.value, min=spec.low, max=spec.high, step=spec.step, tooltip=spec.text,
-                                   layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
-        w.jslink((slider, "value"), (field, "value"))
-        self.controls[spec.key] = slider
-        return w.HBox([label, slider, field], layout=w.Layout(width="100%"))
+            line = w.HBox([label, control])
+        else:
+            slider = w.FloatSlider(value=spec.value, min=spec.low, max=spec.high, step=spec.step, readout=False,
+                                   continuous_update=False, tooltip=spec.text, layout=w.Layout(flex="1 1 auto", width="auto"))
+            field = w.Text(value=f"{spec.value:g}", continuous_update=False, tooltip=f"{spec.text}: {spec.low:g} to {spec.high:g}",
+                           layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
+            # The field is read here, not by the browser's number input, which clamps to the range
+            # and drops a decimal comma without a word.
+            field.observe(lambda change, spec=spec: self._typed(spec, change["new"]), names="value")
+            slider.observe(lambda change, key=spec.key: self._slid(key, change["new"]), names="value")
+            self.controls[spec.key], self.fields[spec.key] = slider, field
+            line = w.HBox([label, slider, field], layout=w.Layout(width="100%"))
+        row = w.VBox([line, message], layout=w.Layout(width="100%"))
+        row.add_class("dr-row")
+        return row
+
+    @staticmethod
+    def _label_html(spec: InputSpec, changed: bool) -> str:
+        unit = " [" + pretty_unit(spec.unit) + "]" if spec.unit else ""
+        was = f" (changed; the file: {_text_of(spec.value)}{' ' + pretty_unit(spec.unit) if spec.unit else ''})" if changed else ""
+        return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{" class=dr-changed" if changed else ""}>'
+                f"{typeset(spec.label)}{unit}</span>")
+
+    def _typed(self, spec: InputSpec, text: str) -> None:
+        """A value typed into a field: applied through its slider, or refused at the field."""
+        field = self.fields[spec.key]
+        try:
+            v = read_typed(text, spec)
+        except CalcError as exc:
+            self.refused[spec.key] = (text, str(exc))
+            field.add_class("dr-refused")
+            self._show_message(spec.key)
+            self._changed(None)  # the results say that a value was refused
+            return
+        was_refused = self.refused.pop(spec.key, None) is not None
+        field.remove_class("dr-refused")
+        self._show_message(spec.key)
+        if f"{v:g}" != text.strip():
+            field.value = f"{v:g}"  # a decimal comma shown as the point it was read as
+        if self.controls[spec.key].value != v:
+            self.controls[spec.key].value = v
+        elif was_refused:
+            self._changed(None)
+
+    def _slid(self, key: str, v: float) -> None:
+        field = self.fields[key]
+        if key not in self.refused and field.value.strip() != f"{v:g}":
+            field.value = f"{v:g}"
+
+    def _show_message(self, key: str, idle: str = "") -> None:
+        if key in self.refused:
+            self._messages[key].value = f'<div class="dr-message">{typeset(self.refused[key][1])}</div>'
+        elif idle:
+            self._messages[key].value = f'<div class="dr-idle">{typeset(idle)}</div>'
+        else:
+            self._messages[key].value = ""
+
+    def _values(self) -> dict:
+        return {s.key: self.controls[s.key].value for s in self.specs}
+
+    def changes(self) -> dict:
+        """The inputs changed from the case file: key path -> (number, unit)."""
+        return {s.key: (v, s.unit) for s in self.specs if (v := self.controls[s.key].value) != s.value}
+
+    def _shown_texts(self) -> dict:
+        """Each control's text as the page shows it (the results' stamp, compared in the browser)."""
+        return {s.key: (self.fields[s.key].value.strip() if s.key in self.fields else _text_of(self.controls[s.key].value)) for s in self.specs}
 
     # -- the results ---------------------------------------------------------------------------
 
@@ -165,20 +322,37 @@ class DesignReview:
         """The loaded case with the values of the controls that were moved (one left where it
         started keeps the case's own value, not the control's rounding of it: a derived cycle's
         7.8269 N·m stays, and stays derived)."""
-        moved = {s.key: self.controls[s.key].value for s in self.specs}
-        return with_inputs(self.case, {s.key: Q_(v, s.unit) for s in self.specs if (v := moved[s.key]) != s.value})
+        changes = self.changes()
+        forced = changes.pop("gearbox.part", (None, ""))[0]
+        case = with_inputs(self.case, {key: Q_(v, unit) for key, (v, unit) in changes.items()})
+        # A part forced is checked alone (the file's part, where it names one, is the unchanged value).
+        return case if forced is None else dataclasses.replace(case, gearbox_part=None if forced == SELECTION else forced)
 
     def _draw(self):
         """The results text and the changed case (None where the inputs cannot make one)."""
         try:
             case = self.changed_case()
         except CalcError as exc:
-            return f'<div class="dr"><b style="color:{FAIL_COLOR}">input error</b>: {typeset(str(exc))}</div>', None
+            return f'<div class="dr"><b style="color:{FAIL_COLOR}">input error</b>: {typeset(self._in_words(str(exc)))}</div>', None
         report, left_out = evaluated(case)
-        link = self._report_address(case.path)
+        left_out = [self._in_words(x) for x in left_out]
+        link = self._report_address(case.path) if not self.changes() else None  # the file's report, while the screen is the file
         typed = self.case.motion is not None and case.motion is None
         shown = None if self.all_candidates.value else SHOWN_CANDIDATES
-        return results_html(report, left_out, link, typed_by_hand=typed, shown=shown), (case, report)
+        refused = [f"{self._spec(k).label}: {why}" for k, (_, why) in self.refused.items()]
+        return (results_html(report, left_out, link, typed_by_hand=typed, shown=shown, refused=refused, system=self.units.value),
+                (case, report))
+
+    def _spec(self, key: str) -> InputSpec:
+        return next(s for s in self.specs if s.key == key)
+
+    def _in_words(self, text: str) -> str:
+        """An error as the page says it: the control's label where the text names its key path,
+        and no folder of the server."""
+        text = _without_folder(text, self.case.path)
+        for spec in sorted(self.specs, key=lambda s: -len(s.key)):
+            text = text.replace(f"{spec.key}:", f"{spec.label}:")
+        return text
 
     def _report_address(self, path: Path) -> str | None:
         """The address of the report of the case file ``path``: given the reports' folder, only
@@ -192,29 +366,69 @@ class DesignReview:
 
     def refresh(self) -> None:
         """Draw the results of the controls' values: each figure whose inputs changed, then the
-        text (last, so that when the text changes on the page, everything has)."""
+        text (last, so that when the text changes on the page, everything has). The text carries
+        the field texts it was computed for (``data-inputs``), and the changed ones
+        (``data-changed``), which the page's script compares with the fields."""
+        stamp = self._shown_texts()
         text, drawn = self._draw()
+        self.shown = drawn
+        changes = self.changes()
         if drawn is not None:
             case, report = drawn
-            p = case.profile
-            key = (p.durations.m_as("s").tobytes(), p.speeds.m_as("rpm").tobytes(), p.torques.m_as("N*m").tobytes())
-            self.load_cycle.value = self._figure("load cycle", key, lambda: _load_cycle(case))
-            if report.accuracy is not None:
-                spec, _ = report.accuracy
-                key = (repr(spec.chain), float(spec.applied_torque.m_as("N*m")))
-                self.chain.value = self._figure("chain", key, lambda: _chain(spec))
-            self.chain.layout.display = None if report.accuracy is not None else "none"
+            torque_unit = "lbf*in" if self.units.value == "inch-pound" else "N*m"
+            self.load_cycle.value = load_cycle_svg(case.profile, (report.results or {}).get("duty"), torque_unit)
+            self.load_cycle.layout.display = None
+            accuracy = (report.results or {}).get("accuracy")
+            if accuracy:
+                self.chain.value = stiffness_chain_svg(accuracy)
+            self.chain.layout.display = None if accuracy else "none"
+            self._idle_inputs(report)
+            self._chooser_verdict(report, changes)
+        else:  # the figures of the last good inputs no longer apply
+            self.load_cycle.layout.display = self.chain.layout.display = "none"
+        for spec in self.specs:
+            label = self._label_html(spec, spec.key in changes)
+            if self._labels[spec.key].value != label:  # each value set is a message to the page
+                self._labels[spec.key].value = label
+        self._keep_history()
+        self._offer_download(changes)
         self.generation += 1
-        self.results.value = text.replace('<div class="dr">', f'<div class="dr" data-generation="{self.generation}">', 1)
+        attributes = (f'data-generation="{self.generation}" data-case="{escape(self.case.path.name)}" '
+                      f'data-inputs="{escape(json.dumps(stamp))}" '
+                      f'data-changed="{escape(json.dumps({k: stamp[k] for k in changes}))}"')
+        self.results.value = text.replace('<div class="dr">', f'<div class="dr" {attributes}>', 1)
 
-    def _figure(self, name, key, draw) -> bytes:
-        """A figure's PNG, drawn once for its inputs (the last :data:`FIGURES_KEPT` are kept, so
-        moving back and forth draws nothing)."""
-        if (name, key) not in self._figures:
-            if len(self._figures) >= FIGURES_KEPT:
-                del self._figures[next(iter(self._figures))]
-            self._figures[(name, key)] = _png(draw())
-        return self._figures[(name, key)]
+    def _idle_inputs(self, report) -> None:
+        """An input that has no effect on the design as it stands says so under its row (a
+        temperature on a coupling type without a temperature factor)."""
+        if "coupling.temperature" not in self._messages or report.results is None:
+            return
+        c = report.results.get("coupling") or {}
+        idle = ""
+        if c.get("type") == "bellows":
+            idle = "no effect on this design: a metal bellows coupling has no temperature factor (E9)"
+        self._show_message("coupling.temperature", idle)
+
+    def _chooser_verdict(self, report, changes: dict) -> None:
+        """The chooser's entry of the case shown gives the screen's verdict, not the file's, once
+        an input is changed."""
+        path = self.case.path
+        if path not in self.labels:
+            return
+        word = report.verdict.word if not changes else f"{report.verdict.word} (changed here)"
+        label = f"{path.name} · {word}" if (changes or " · " in self.labels[path]) else self.labels[path]
+        options = [(label if p == path else self.labels[p], p) for _, p in self.case_file.options]
+        if options != list(self.case_file.options):
+            self._relabel(options)
+
+    def _relabel(self, options: list) -> None:
+        """New options for the chooser, the case shown staying chosen (and not read again)."""
+        self._relabelling = True
+        try:
+            self.case_file.options = options
+            self.case_file.value = self.case.path
+        finally:
+            self._relabelling = False
 
     def _changed(self, _change) -> None:
         """A control moved: draw in the worker thread; what moves meanwhile is drawn after, once."""
@@ -248,15 +462,141 @@ class DesignReview:
                 return self
             worker.join()
 
+    # -- kept: undo, save, download, variants ------------------------------------------------------
 
-def _load_cycle(case: Case):
-    from ..plots import load_cycle_figure
+    def _keep_history(self) -> None:
+        values = self._values()
+        if not self._stepping and values != self._history[-1]:
+            self._history.append(values)
+            self._undone = []
+        self.undo_button.disabled, self.redo_button.disabled = len(self._history) < 2, not self._undone
 
-    return load_cycle_figure(case.profile)
+    def _step_to(self, values: dict) -> None:
+        self._stepping = True
+        try:
+            for key, v in values.items():
+                self.controls[key].value = v
+            self.settled()
+            self.refresh()
+        finally:
+            self._stepping = False
+
+    def undo(self) -> None:
+        """Back to the values before the last change."""
+        if len(self._history) > 1:
+            self._undone.append(self._history.pop())
+            self._step_to(self._history[-1])
+
+    def redo(self) -> None:
+        """The change undone last, again."""
+        if self._undone:
+            self._history.append(self._undone.pop())
+            self._step_to(self._history[-1])
+
+    def case_text(self) -> str:
+        """The case file with the changed values written in (:func:`calc.review.keep.changed_text`)."""
+        path = self.case.path
+        changes = {k: ((None, u) if v == SELECTION else (v, u)) for k, (v, u) in self.changes().items()}
+        return changed_text(path.read_text(encoding="utf-8"), changes, path.name)
+
+    def save(self, name: str | None = None) -> Path | None:
+        """Write the changed values as the new case file ``name`` (by default the save field's)
+        beside the case file; never over an existing file. The new file is offered in the chooser.
+        Says what it did, or why not, under the buttons; returns the new file's path."""
+        try:
+            if self.refused:
+                raise CalcError("a refused value is in a field: correct it (or undo) before saving")
+            path = save_path(self.case.path, (name or self.save_name.value).strip())
+            path.write_text(self.case_text(), encoding="utf-8")
+        except (CalcError, OSError) as exc:
+            self.kept.value = f'<span style="color:{FAIL_COLOR}">not saved: {typeset(_without_folder(str(exc), self.case.path))}</span>'
+            return None
+        self.labels[path] = path.name
+        self._relabel(sorted([*self.case_file.options, (path.name, path)], key=lambda o: o[1]))
+        self.kept.value = f"saved as {escape(path.name)} beside {escape(self.case.path.name)} (in the case chooser)"
+        self.save_name.value = free_name(self.case.path)
+        return path
+
+    def _offer_download(self, changes: dict) -> None:
+        """The same file as *Save as case file* writes, as a link to download."""
+        if not changes or self.refused:
+            self.download.value = ""
+            return
+        try:
+            text = self.case_text()
+        except CalcError:
+            self.download.value = ""
+            return
+        self.download.value = (f'<a download="{escape(self.save_name.value)}" href="data:application/toml;charset=utf-8,{quote(text)}">'
+                               "Download the case file</a>")
+
+    def report_of_screen(self, wait: bool = False):
+        """Build the calc report of the design on the screen: the case file itself while nothing
+        is changed, else the changed values saved first (:meth:`save`), so the report rests on a
+        file that reproduces it. The PDF goes to the reports' folder (the case's folder where none
+        is given) and is linked under the buttons once built (``python -m calc report``, some 15 s,
+        in a process of its own so the page keeps answering). Returns the thread building it."""
+        path = self.case.path if not self.changes() else self.save()
+        if path is None:
+            return None
+        folder = Path(self.reports_folder) if self.reports_folder else path.parent
+        pdf = folder / f"{path.stem}.pdf"
+        self.kept.value = f"building the calc report of {escape(path.name)} (some 15 s) …"
+
+        def build():
+            done = _build_report(path, pdf)
+            if done.returncode != 0 or not pdf.is_file():
+                why = (done.stderr.strip().splitlines() or [f"exit {done.returncode}"])[-1]
+                self.kept.value = f'<span style="color:{FAIL_COLOR}">no calc report of {escape(path.name)}: {typeset(_without_folder(why, path))}</span>'
+                return
+            self.reports[path] = pdf
+            address = self.report_link(pdf) if self.report_link is not None else None
+            link = f'<a href="{escape(address)}" target="_blank">{escape(pdf.name)}</a>' if address else escape(str(pdf))
+            self.kept.value = f"calc report of {escape(path.name)}, the screen's design: {link}"
+
+        worker = threading.Thread(target=build, daemon=True)
+        worker.start()
+        if wait:
+            worker.join()
+        return worker
+
+    def keep_variant(self) -> None:
+        """Pin the design on the screen (its name says what changed) beside the variants kept
+        before, in the comparison table under the results."""
+        if self.shown is None:
+            self.kept.value = f'<span style="color:{FAIL_COLOR}">not kept: the inputs give no design (an input error)</span>'
+            return
+        _, report = self.shown
+        changes = self.changes()
+        said = "; ".join(f"{self._spec(k).label} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items())
+        name = f"{len(self.variants) + 1}: {self.case.path.name}" + (f" with {said}" if said else " as written")
+        self.variants.append((name, report))
+        self.variants_html.value = comparison_html(self.variants, self.units.value)
+        self.kept.value = f"kept variant {len(self.variants)}"
 
 
-def _chain(spec):
-    from ..accuracy_plots import stiffness_chain_figure
+def _text_of(value) -> str:
+    """A choice's value as the page shows it: a ratio as ``8``, a part by its name."""
+    return value if isinstance(value, str) else f"{value:g}"
 
-    return stiffness_chain_figure(spec.chain, spec.applied_torque)
+
+def _build_report(case: Path, pdf: Path):
+    """``python -m calc report case -o pdf`` (the completed process)."""
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-m", "calc", "report", str(case), "-o", str(pdf)], capture_output=True, text=True)
+
+
+def _without_folder(text: str, path: Path) -> str:
+    """An error without the server's folders: the case file by its name."""
+    return text.replace(str(path.resolve()), path.name).replace(str(path), path.name).replace(str(path.parent) + "/", "")
+
+
+def _close(widget) -> None:
+    for child in getattr(widget, "children", ()):
+        _close(child)
+    widget.close()
+
+
 

@@ -9,15 +9,18 @@ the figures (``T_2B`` as T₂B with a subscript, ``<=`` as ≤), units as a read
 
 from __future__ import annotations
 
+import contextvars
 import dataclasses
 import re
 from html import escape
+
+import numpy as np
 
 from ..case import Case
 from ..catalog import display_path
 from ..report import Report, report_of
 from ..sections.common import quantity_text
-from ..units import sig
+from ..units import Q_, sig
 
 PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 _GREEK = {"phi": "φ", "eta": "η", "lambda": "λ"}
@@ -43,6 +46,10 @@ STYLE = f"""<style>
 .dr td.why {{ color: #555; white-space: normal; }} .dr tr.chosen td {{ background: #eef6ee; }}
 .dr .bar {{ display: inline-block; height: 8px; vertical-align: middle; margin-left: 4px; background: #ccc; width: 50px; }}
 .dr .bar > span {{ display: block; height: 8px; }}
+.dr details.notmade {{ display: inline-block; font-size: 13px; color: #6d4c00; }} .dr details.notmade summary {{ cursor: pointer; }}
+.dr details.notmade ul {{ margin: 2px 0 4px 18px; padding: 0; color: #333; }}
+.dr .refused {{ background: #fff0f0; border: 1px solid {FAIL_COLOR}; padding: 3px 6px; margin: 2px 0 6px; }}
+.dr td.differs {{ background: #fff4d6; font-weight: 600; }}
 .dr .values {{ color: #333; }} .dr .values b {{ font-weight: 600; }} .dr .note {{ color: #666; font-size: 12px; }}
 </style>"""
 
@@ -81,9 +88,30 @@ def evaluated(case: Case) -> tuple[Report, list[str]]:
     return r, []
 
 
+#: The unit system the results are shown in: "SI" as the results write them, or "inch-pound".
+SYSTEM = contextvars.ContextVar("system", default="SI")
+#: A result's SI unit and its inch-pound counterpart (the units a US maker's sheet writes).
+INCH_POUND = {"N*m": "lbf*in", "N": "lbf", "mm": "in", "m": "in", "kg*cm**2": "lb*in**2", "kg*m**2": "lb*in**2", "kg": "lb",
+              "N*m/arcmin": "lbf*in/arcmin", "N*m/rad": "lbf*in/rad", "m/s": "in/s", "mm/s": "in/s", "m/s**2": "in/s**2"}
+
+
+def in_system(d: dict | None) -> dict | None:
+    """A result quantity ``{"value", "unit"}`` in the unit system shown (:data:`SYSTEM`).
+
+    >>> token = SYSTEM.set("inch-pound")
+    >>> in_system({"value": 6.779, "unit": "N*m"})["unit"], round(in_system({"value": 6.779, "unit": "N*m"})["value"], 2)
+    ('lbf*in', 60.0)
+    >>> SYSTEM.reset(token)
+    """
+    if d is None or d.get("value") is None or SYSTEM.get() == "SI" or d.get("unit") not in INCH_POUND:
+        return d
+    unit = INCH_POUND[d["unit"]]
+    return {**d, "value": float(Q_(d["value"], d["unit"]).m_as(unit)), "unit": unit}
+
+
 def _q(d) -> str:
-    """A result quantity as text, blank where not given."""
-    return "" if d is None or d.get("value") is None else escape(quantity_text(d).replace(" 1/hour", " /h"))
+    """A result quantity as text, in the unit system shown; blank where not given."""
+    return "" if d is None or d.get("value") is None else escape(quantity_text(in_system(d)).replace(" 1/hour", " /h"))
 
 
 def _verdict_cell(passes, not_made: str | None = None) -> str:
@@ -132,7 +160,8 @@ def _governing(r: dict) -> str:
             rows.append(["motor", typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]),
                          _verdict_cell(k["passes"], k.get("not_made"))])
     for k in (r.get("accuracy") or {}).get("checks", []):
-        rows.append(["accuracy", typeset(k["criterion"]), _q(k["value"]), _q(k["required"]), _utilization(k["utilization"]), _verdict_cell(k["passes"])])
+        rows.append(["accuracy", typeset(k["criterion"]), ("≥ " if k["passes"] is None else "") + _q(k["value"]), _q(k["required"]),
+                     _utilization(k["utilization"]), _verdict_cell(k["passes"], k.get("not_made"))])
     if not rows:
         return ""
     return "<h3>Governing checks</h3>" + _table(["part", "check", "required", "rated", "utilization", "verdict"], rows, numeric={2, 3, 4})
@@ -226,24 +255,65 @@ def _accuracy_table(a: dict) -> str:
     rows = [
         [typeset("C_total"), "total torsional stiffness at the output", _q(a.get("C_total"))],
         [typeset("phi_LM"), f"lost motion at the applied torque {_q(a.get('applied_torque'))}", _q(a.get("lost_motion"))],
-        ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.get('positioning_rule', ''))})", _q(a.get("positioning_accuracy"))],
+        ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.get('positioning_rule', ''))})"
+         + (f"; <b>a lower bound</b>: unknown {typeset('; '.join(a['unknown']))}" if a.get("unknown") else ""),
+         ("≥ " if a.get("unknown") else "") + _q(a.get("positioning_accuracy"))],
         ["", "repeatability" + (" (upper bound)" if a.get("repeatability_is_bound") else ""), _q(a.get("repeatability"))],
     ]
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
 
 
+def not_made(r: dict) -> list[str]:
+    """The checks of the results that were not made, each with why: those of the chosen parts
+    (the closest candidates where none passes), the accuracy's, and the motor's checks the case
+    gives no rating for."""
+    out = []
+    for name in ("gearbox", "coupling"):
+        s = r.get(name)
+        if s and s.get("candidates"):
+            c = s["candidates"][0]
+            out += [f"{name} {c['part']}: {k['name']}: {k.get('not_made') or 'not made'}"
+                    for k in c["checks"] if k.get("governs", True) and k["passes"] is None]
+    out += [f"accuracy: {k['name']}: {k.get('not_made') or 'not made'}" for k in (r.get("accuracy") or {}).get("checks", []) if k["passes"] is None]
+    out += [f"motor: {n}" for n in (r.get("motor") or {}).get("notes", []) if " not checked" in n]
+    return out
+
+
+def _not_made_html(r: dict | None) -> str:
+    """Beside the verdict: how many checks were not made, and (a click away) which and why."""
+    missing = not_made(r) if r is not None else []
+    if not missing:
+        return ""
+    items = "".join(f"<li>{typeset(x)}</li>" for x in missing)
+    return f'<details class="notmade"><summary>{len(missing)} check{"s" if len(missing) > 1 else ""} not made</summary><ul>{items}</ul></details>'
+
+
 def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False,
-                 shown: int | None = None) -> str:
+                 shown: int | None = None, refused: list[str] = (), system: str = "SI") -> str:
     """The review of an evaluated case as one HTML text (see the module's docstring);
     ``report_link``, where given, is the address of the case's report, linked beside the verdict;
     ``typed_by_hand``: the case's derived load cycle was changed segment by segment; ``shown``:
-    the candidates listed in each table, best first (all for None)."""
+    the candidates listed in each table, best first (all for None); ``refused``: the values typed
+    and refused (the results are those of the values before them), each with why; ``system``:
+    the unit system of the values shown, "SI" or "inch-pound" (:data:`INCH_POUND`)."""
+    token = SYSTEM.set(system)
+    try:
+        return _results_html(report, left_out, report_link, typed_by_hand, shown, refused)
+    finally:
+        SYSTEM.reset(token)
+
+
+def _results_html(report, left_out, report_link, typed_by_hand, shown, refused) -> str:
     word = "FAIL" if left_out else report.verdict.word
     passes = word == "PASS"
     cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
     chosen = " · ".join(f"{escape(w)} <b>{escape(p)}</b>" if p else f"{escape(w)} <span class=fail>none passes</span>" for w, p, _ in report.chosen)
     link = f' <a href="{escape(report_link)}" target="_blank">calc report</a>' if report_link else ""
-    out = [STYLE, '<div class="dr">', f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}</div>']
+    out = [STYLE, '<div class="dr">', f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}'
+           f"{_not_made_html(report.results)}</div>"]
+    if refused:
+        out.append('<div class="refused"><b>Not applied</b> (the results are those of the values before): '
+                   + "; ".join(typeset(x) for x in refused) + "</div>")
     reasons = [*left_out, *report.reasons]
     if reasons and not passes:
         out.append('<ul class="reasons">' + "".join(f"<li>{typeset(x)}</li>" for x in reasons) + "</ul>")
@@ -258,3 +328,126 @@ def results_html(report: Report, left_out: list[str], report_link: str | None = 
             out.append(_accuracy_table(r["accuracy"]))
     out.append("</div>")
     return "".join(out)
+
+
+def comparison_rows(variants: list[tuple[str, dict]]) -> list[tuple[str, list[str]]]:
+    """The side-by-side comparison of designs, ``(name, results as the JSON contract has them)``:
+    one row per quantity (verdict, chosen parts, the worst governing utilization of each, the
+    checks not made, the duty and accuracy values), one column per design, as plain text."""
+    def chosen(r, name):
+        s = r.get(name)
+        if not s:
+            return ""
+        return s["selected"] or "none passes"
+
+    def worst(r, name):
+        s = r.get(name)
+        if not s or not s.get("candidates"):
+            return ""
+        u = _worst(s["candidates"][0])
+        return "" if u is None else f"{100 * u:.0f} %"
+
+    def value(r, *path):
+        d = r
+        for p in path:
+            d = (d or {}).get(p)
+        return "" if d is None else quantity_text(in_system(d))
+
+    def verdict(r):
+        v = r.get("verdict") or {}
+        return {True: "PASS", False: "FAIL"}.get(v.get("passes"), "NOT DECIDED")
+
+    rows = [
+        ("verdict", verdict),
+        ("gearbox", lambda r: chosen(r, "gearbox")),
+        ("gearbox worst utilization", lambda r: worst(r, "gearbox")),
+        ("coupling", lambda r: chosen(r, "coupling")),
+        ("coupling worst utilization", lambda r: worst(r, "coupling")),
+        ("checks not made", lambda r: str(len(not_made(r)))),
+        ("mode", lambda r: (r.get("duty") or {}).get("mode", "")),
+        ("ED", lambda r: value(r, "duty", "ED")),
+        ("T_2max", lambda r: value(r, "cyclic", "T2max")),
+        ("T_2m", lambda r: value(r, "continuous", "T2m")),
+        ("positioning accuracy", lambda r: ("≥ " if (r.get("accuracy") or {}).get("unknown") else "") + value(r, "accuracy", "positioning_accuracy")),
+        ("lost motion", lambda r: value(r, "accuracy", "lost_motion")),
+    ]
+    return [(name, [f(r) for _, r in variants]) for name, f in rows]
+
+
+def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> str:
+    """The variants kept in the review side by side (:func:`comparison_rows`), in the unit system
+    ``system``; a value that differs from the first variant's is highlighted."""
+    token = SYSTEM.set(system)
+    try:
+        rows = comparison_rows([(n, r.results or {"verdict": {"passes": r.verdict.passes}}) for n, r in variants])
+    finally:
+        SYSTEM.reset(token)
+    head = "".join(f"<th>{escape(n)}</th>" for n, _ in variants)
+    body = "".join(
+        f"<tr><td>{typeset(name)}</td>" + "".join(f'<td class="{"differs" if k and v != values[0] else ""}">{escape(v)}</td>' for k, v in enumerate(values)) + "</tr>"
+        for name, values in rows
+    )
+    return (f'{STYLE}<div class="dr dr-variants"><h3>Variants compared</h3><table><thead><tr><th></th>{head}</tr></thead>'
+            f"<tbody>{body}</tbody></table><div class=note>A value that differs from the first variant's is marked.</div></div>")
+
+
+def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
+    """:func:`comparison_rows` as a plain text table, a column per design; a value that differs
+    from the first design's is marked ``*``."""
+    cells = [["", *names]] + [[name, *(v + (" *" if k and v != values[0] else "") for k, v in enumerate(values))] for name, values in rows]
+    widths = [max(len(r[j]) for r in cells) for j in range(len(cells[0]))]
+    lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in cells]
+    return "\n".join([lines[0], "  ".join("-" * w for w in widths), *lines[1:], "* differs from the first design"])
+
+
+def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], path) -> None:
+    """:func:`comparison_rows` as a one-page PDF (A4 landscape): the table, a value that differs
+    from the first design's shaded, and a comparison figure of the worst governing utilization of
+    each design's gearbox and coupling (matplotlib; no TeX needed)."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(11.69, 8.27))
+    table_ax, bars = fig.add_axes((0.03, 0.36, 0.94, 0.58)), fig.add_axes((0.1, 0.06, 0.85, 0.22))
+    table_ax.axis("off")
+    table_ax.set_title("Designs compared (shaded: differs from the first design)", fontsize=11, loc="left")
+    cells = [[name.replace("_", " "), *values] for name, values in rows]
+    shown = table_ax.table(cellText=cells, colLabels=["", *names], loc="upper left", cellLoc="left")
+    shown.auto_set_font_size(False)
+    shown.set_fontsize(8)
+    for r, (_, values) in enumerate(rows, start=1):
+        for k, v in enumerate(values[1:], start=2):
+            if v != values[0]:
+                shown[r, k].set_facecolor("#fff0c0")
+    by = dict(rows)
+    x = np.arange(len(names))
+    for offset, what in ((-0.2, "gearbox"), (0.2, "coupling")):
+        u = [float(v.rstrip(" %")) if v else 0.0 for v in by[f"{what} worst utilization"]]
+        bars.bar(x + offset, u, width=0.38, label=what)
+    bars.axhline(100, color="#b2222a", linewidth=1)
+    bars.set_xticks(x, names, fontsize=8)
+    bars.set_ylabel("worst governing utilization [%]", fontsize=8)
+    bars.legend(fontsize=8, frameon=False)
+    fig.savefig(path, format="pdf")
+
+
+def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
+    """``python -m calc compare A.toml B.toml ... [--json] [--pdf FILE]``: the designs side by side,
+    as the review's *Keep as variant* table has them (:func:`comparison_rows`), as text or as JSON
+    (``{"designs": [file, ...], "rows": [{"name", "values": [...], "differs": [...]}]}``); with
+    ``pdf``, also written there as a PDF (:func:`comparison_pdf`)."""
+    import json
+    from pathlib import Path
+
+    from ..case import read_case
+    from ..sections import evaluate
+
+    designs = [(Path(p).name, evaluate(read_case(p)).to_json()) for p in paths]
+    rows = comparison_rows(designs)
+    names = [n for n, _ in designs]
+    if pdf is not None:
+        comparison_pdf(names, rows, pdf)
+    if as_json:
+        return json.dumps({"designs": [str(p) for p in paths],
+                           "rows": [{"name": name, "values": values, "differs": [k > 0 and v != values[0] for k, v in enumerate(values)]}
+                                    for name, values in rows]}, indent=2, ensure_ascii=False)
+    return comparison_text(names, rows)

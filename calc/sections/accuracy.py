@@ -48,6 +48,9 @@ class AccuracyCase:
     required: dict = field(default_factory=dict)  # "positioning_accuracy" | "repeatability" -> Quantity
     radius: object = None  # r: the results also give each angle as the arc r · φ at it
     required_arcs: dict = field(default_factory=dict)  # a requirement given as a length, by name
+    #: The terms of the positioning accuracy not known for the chosen parts, each naming the part
+    #: and the missing figure: the accuracy reckoned without them is a lower bound.
+    unknown: list = field(default_factory=list)
 
     def evaluate(self) -> ChainAccuracy:
         return chain_accuracy(self.chain, self.applied_torque, self.nominal_torque)
@@ -281,6 +284,11 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
     elif t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: a catalog is read only for a part; give part as well")
     measured_applies = _measured_part_chosen(t, part, chosen_part, sources)
+    if not measured_applies and t.has("transmission_trace") and accuracy is None:
+        # The trace was the transmission accuracy; the part chosen instead has none given, which is
+        # not the same as none at all.
+        out.unknown.append(f"{chosen_part}: its transmission accuracy (the trace of {t.text('measured_part')} does not apply to it, "
+                           f"and the case gives no transmission_accuracy)")
     if measured_applies and t.has("hysteresis"):
         from ..hysteresis import analyze_loop, read_loop
 
@@ -324,6 +332,14 @@ def accuracy_of(case: Case) -> tuple:
             raise CalcError(f"{case.path}: accuracy.{exc}") from None
 
     return once(case, "accuracy", compute)
+
+
+def not_known(spec: AccuracyCase, name: str) -> str | None:
+    """Why the check of ``name`` cannot be made (the positioning accuracy is a lower bound when a
+    term of it is unknown for the chosen parts), or None."""
+    if name != "positioning_accuracy" or not spec.unknown:
+        return None
+    return "the positioning accuracy is a lower bound: unknown " + "; ".join(spec.unknown)
 
 
 def requirement_checks(spec: AccuracyCase, a: ChainAccuracy) -> list[CheckArray]:
@@ -405,6 +421,9 @@ class AccuracyResult:
             "lost_motion": quantity(a.lost_motion, "arcmin"),
             "positioning_rule": a.rule.text,
             "positioning_accuracy": quantity(a.positioning_accuracy, "arcmin"),
+            # A term unknown for the chosen parts: the value above is a lower bound, and says which.
+            "positioning_accuracy_is_lower_bound": bool(spec.unknown),
+            "unknown": list(spec.unknown),
             "repeatability": quantity(a.repeatability, "arcmin"),
             "repeatability_is_bound": a.repeatability_is_bound,
             "components": components,
@@ -433,8 +452,9 @@ class AccuracyResult:
                     "criterion": k.criterion,
                     "value": quantity(k.required, k.unit, f"accuracy.{k.name}"),
                     "required": quantity(k.rated, k.unit, f"accuracy.required_{k.name}"),
-                    "utilization": number(k.utilization, f"accuracy.{k.name}"),
-                    "passes": k.passes,
+                    "utilization": None if not_known(spec, k.name) else number(k.utilization, f"accuracy.{k.name}"),
+                    "passes": None if not_known(spec, k.name) else k.passes,
+                    **({"not_made": not_known(spec, k.name)} if not_known(spec, k.name) else {}),
                     "governs": True,
                     **(
                         {}
@@ -447,7 +467,7 @@ class AccuracyResult:
                 }
                 for k in checks
             ]
-            out["passes"] = all(k.passes for k in checks)
+            out["passes"] = self.verdict().passes
         return out
 
     def summary_lines(self, candidates: int | None = None) -> list[str]:
@@ -469,7 +489,8 @@ class AccuracyResult:
         lines += [
             f"  C_total = {quantity_text(s['C_total'])}{' (secant |T| / φ at the applied torque: a member gives a stiffness curve)' if s['C_total_is_secant'] else ''}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
             f"  Lost motion = j_t + |T| / C = {quantity_text(s['lost_motion'])} (E12)",
-            f"  Positioning accuracy ({s['positioning_rule']}{t_n}) = {quantity_text(s['positioning_accuracy'])} (E13)",
+            f"  Positioning accuracy ({s['positioning_rule']}{t_n}) {'>=' if s['unknown'] else '='} {quantity_text(s['positioning_accuracy'])} (E13)"
+            + (f"; a lower bound: unknown {'; '.join(s['unknown'])}" if s["unknown"] else ""),
             f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {quantity_text(s['repeatability'])} "
             f"({'bounded by the lost motion under torque' if s['repeatability_is_bound'] else 'the backlash at T = 0'}, E13)",
         ]
@@ -495,6 +516,9 @@ class AccuracyResult:
                 f"accuracy {quantity_text(m['accuracy'])}, repeatability {quantity_text(m['repeatability'])}"
             )
         for k in s.get("checks", []):
+            if k["passes"] is None:
+                lines.append(f"  {k['name']:<22} >= {quantity_text(k['value'])} required <= {quantity_text(k['required'])}  not made: {k['not_made']}")
+                continue
             lines.append(
                 f"  {k['name']:<22} {quantity_text(k['value']):>12} required <= {quantity_text(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
                 + (f"  (as arcs: {quantity_text(k['value_arc'])} <= {quantity_text(k['required_arc'])})" if "value_arc" in k else "")
@@ -506,15 +530,14 @@ class AccuracyResult:
         checks = [c.at(0) for c in requirement_checks(self.inputs, self.accuracy)]
         if not checks:
             return None
-        return Verdict(
-            all(k.passes for k in checks),
-            [
-                f"The accuracy requirement is not met: {k.name} {fmt(k.required, k.unit)} > required {fmt(k.rated, k.unit)}, "
-                f"{sig(100 * (k.utilization - 1), 3)} % over"
-                for k in checks
-                if not k.passes
-            ],
-        )
+        open_ = [k for k in checks if not_known(self.inputs, k.name)]
+        failing = [k for k in checks if not k.passes and k not in open_]
+        reasons = [
+            f"The accuracy requirement is not met: {k.name} {fmt(k.required, k.unit)} > required {fmt(k.rated, k.unit)}, "
+            f"{sig(100 * (k.utilization - 1), 3)} % over"
+            for k in failing
+        ] + [f"The accuracy requirement is not decided: {k.name} >= {fmt(k.required, k.unit)}, {not_known(self.inputs, k.name)}" for k in open_]
+        return Verdict(False if failing else (None if open_ else True), reasons)
 
 
 def applies(case: Case) -> bool:

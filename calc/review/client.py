@@ -1,0 +1,181 @@
+"""What the served page does in the browser itself, so that it can say what the kernel cannot: that
+the results on the screen are not (or no longer) those of the fields.
+
+Each control row carries its key path (``data-key`` on its label) and the results carry the field
+texts they were computed for (``data-inputs``, :meth:`calc.review.panel.DesignReview.refresh`). The
+script compares them: results whose inputs differ from the fields, or asked for and not yet
+arrived, are greyed and marked out of date; a lost connection to the kernel (the server stopped,
+a tunnel dropped) greys them too and says how to get back. It keeps the changed values in the
+page's address (``#…``), so a reload or a shared link types them in again, and asks before a
+reload or a switch of case drops changes. Voilà runs it from the page's notebook
+(``design-review.ipynb``); in JupyterLab the kernel is beside the notebook and it is not needed.
+"""
+
+from __future__ import annotations
+
+from html import escape
+
+STYLE = """<style>
+.design-review .dr-state { font-size: 13px; padding: 3px 8px; border-radius: 3px; margin: 0 0 4px; background: #eef6ee; color: #1b5e20; }
+.design-review.dr-stale .dr-state { background: #fff4d6; color: #6d4c00; }
+.design-review.dr-lost .dr-state { background: #b2222a; color: #fff; }
+.design-review.dr-stale .dr, .design-review.dr-lost .dr { opacity: 0.42; filter: grayscale(1); }
+.design-review.dr-stale .dr-figures, .design-review.dr-lost .dr-figures { opacity: 0.42; }
+.design-review .dr-refused input { border: 2px solid #b2222a !important; background: #fff0f0 !important; }
+.design-review .dr-message { color: #b2222a; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
+.design-review .dr-idle { color: #666; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
+.design-review > .widget-vbox:last-child { overflow-x: auto; }  /* a wide table scrolls in its column, never cut */
+.design-review .dr-changed { color: #1f5fbf; border-left: 4px solid #1f5fbf; padding-left: 4px; margin-left: -8px; }
+@media (max-width: 1180px) {
+  /* a narrow screen: the controls' column narrows so that the verdict stays beside them */
+  .design-review > .widget-vbox:first-child { flex: 0 0 430px !important; width: 430px !important; }
+  .design-review .dr-label { flex: 0 0 12em !important; width: 12em !important; }
+  .design-review .dr-message, .design-review .dr-idle { margin-left: 12em; }
+  .design-review > .widget-vbox:last-child { min-width: 420px !important; flex: 1 1 420px !important; }
+}
+@media print {
+  @page { size: A4; margin: 12mm; }
+  /* Voilà's page scrolls inside fixed-height boxes: printed, every box takes its content's height */
+  html, body, body * { overflow: visible !important; }
+  html, body, .lm-Widget, .jp-OutputArea, .jp-Cell { height: auto !important; max-height: none !important; contain: none !important; }
+  .lm-Widget { position: relative !important; top: auto !important; left: auto !important; }
+  .design-review { flex-flow: column !important; }
+  .design-review > .widget-vbox { width: 100% !important; min-width: 0 !important; flex: 1 1 auto !important; }
+  .design-review .dr table { font-size: 9px; } .design-review .dr td, .design-review .dr th { white-space: normal; }
+  .design-review img { max-width: 100% !important; }
+  .design-review .dr-keep, .design-review button { display: none !important; }
+}
+</style>"""
+
+SCRIPT = r"""<script>
+(() => {
+  if (window.designReviewClient) return;
+  window.designReviewClient = true;
+  const panel = () => document.querySelector('.design-review');
+  const results = () => document.querySelector('.design-review .dr[data-generation]');
+  // An option's text as written (the widgets write its spaces as no-break spaces).
+  const optionText = o => o.text.replace(/\u00a0/g, ' ').trim();
+  const loadedAt = Date.now();
+  let askedAfter = null, askedAt = 0, restoring = null;  // the results' generation when a value was last asked for
+  // The text each control shows, by key path: a field's text, a choice's option.
+  function shown() {
+    const out = {};
+    for (const label of document.querySelectorAll('.design-review [data-key]')) {
+      const row = label.closest('.dr-row');
+      if (!row) continue;
+      const field = row.querySelector('input[type=text]'), choice = row.querySelector('select');
+      if (field) out[label.dataset.key] = field.value.trim();
+      else if (choice && choice.selectedIndex >= 0) out[label.dataset.key] = optionText(choice.options[choice.selectedIndex]);
+    }
+    return out;
+  }
+  function current() {
+    const r = results();
+    if (!r || !r.dataset.inputs) return false;
+    const stamp = JSON.parse(r.dataset.inputs), now = shown();
+    return Object.keys(now).every(k => stamp[k] === undefined || stamp[k] === now[k]);
+  }
+  function connection() {
+    const app = window.jupyterapp, manager = app && (app.widgetManager || app._widgetManager);
+    const kernel = manager && (manager.kernel || manager._kernel);
+    return kernel ? kernel.connectionStatus : null;  // null: not in a served page (JupyterLab)
+  }
+  function show() {
+    const p = panel(), r = results();
+    if (!p || !r) return;
+    if (restoring !== false && restoring !== 'case') restore();
+    const state = p.querySelector('.dr-state'), link = connection(), lost = link !== null && link !== 'connected';
+    const same = current(), waiting = askedAfter !== null && Number(r.dataset.generation) <= askedAfter && Date.now() - askedAt < 3000;
+    const stale = !same || waiting;
+    p.classList.toggle('dr-lost', lost);
+    p.classList.toggle('dr-stale', stale && !lost);
+    if (state) {
+      const text = lost
+        ? 'Connection to the server lost: the results shown are not those of the fields. Start the server again (make review) and reload the page; the changed values are kept in its address.'
+        : stale ? 'Out of date: computing the results of the values changed (a value typed counts once Enter is pressed or the field is left).'
+        : 'Current: the results are those of the values shown' + (r.dataset.changed && r.dataset.changed !== '{}' ? ' (changed values marked)' : ' (the case file’s values)') + '.';
+      // Written only when it changes: the observer below sees every write.
+      if (state.textContent !== text) state.textContent = text;
+      const word = lost ? 'lost' : stale ? 'stale' : 'current';
+      if (state.dataset.state !== word) state.dataset.state = word;
+    }
+    if (same && !lost && restoring === false) keepInAddress(r);  // not before the address was read
+  }
+  // The changed values in the page's address, so that a reload or a link types them in again.
+  function keepInAddress(r) {
+    const changed = JSON.parse(r.dataset.changed || '{}'), name = r.dataset.case || '';
+    const hash = Object.keys(changed).length ? '#' + encodeURIComponent(JSON.stringify({case: name, values: changed})) : '';
+    if (location.hash !== hash) history.replaceState(null, '', location.pathname + location.search + hash);
+  }
+  function rowOf(key) {
+    const label = document.querySelector(`.design-review [data-key="${CSS.escape(key)}"]`);
+    return label && label.closest('.dr-row');
+  }
+  function type(key, text) {
+    const row = rowOf(key);
+    if (!row) return;
+    const field = row.querySelector('input[type=text]'), choice = row.querySelector('select');
+    const target = field || choice;
+    if (field) field.value = text;
+    else if (choice) { const k = [...choice.options].findIndex(o => optionText(o) === text); if (k < 0) return; choice.selectedIndex = k; }
+    if (target) { ask(); target.dispatchEvent(new Event('change', {bubbles: true})); }
+  }
+  function ask() { const r = results(); askedAfter = r ? Number(r.dataset.generation) : 0; askedAt = Date.now(); }
+  function restore() {  // once, when the panel is first shown
+    if (restoring === false) return;
+    if (!location.hash) { restoring = false; return; }
+    let wanted;
+    try { wanted = JSON.parse(decodeURIComponent(location.hash.slice(1))); } catch (e) { restoring = false; return; }
+    const r = results();
+    if (!r) return;  // the panel not drawn yet
+    if (!wanted || !wanted.values) { restoring = false; return; }
+    if (wanted.case && r.dataset.case !== wanted.case) {
+      if (restoring === 'case') return;  // the case asked for is being loaded
+      const choice = document.querySelector('.design-review .dr-case select');
+      const k = choice ? [...choice.options].findIndex(o => optionText(o).split(' · ')[0] === wanted.case) : -1;
+      if (k < 0) { restoring = false; return; }
+      restoring = 'case'; choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
+      return;  // the values follow once the case is loaded
+    }
+    // The controls are drawn after the results at times: wait for every row asked for (not forever).
+    if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < 20000) return;
+    restoring = false;
+    for (const [key, text] of Object.entries(wanted.values)) type(key, text);
+  }
+  document.addEventListener('change', e => {
+    if (!e.target.closest || !e.target.closest('.design-review .dr-row')) return;
+    ask(); show();
+  }, true);
+  document.addEventListener('input', e => { if (e.target.closest && e.target.closest('.design-review')) show(); }, true);
+  document.addEventListener('pointerup', e => {
+    if (e.target.closest && e.target.closest('.design-review .dr-row .widget-slider')) { ask(); show(); }
+  }, true);
+  // A switch of case drops the changed values: asked first.
+  document.addEventListener('change', e => {
+    const r = results();
+    if (restoring === 'case' || !e.target.closest || !e.target.closest('.design-review .dr-case') || !r) return;
+    if (r.dataset.changed && r.dataset.changed !== '{}' && !confirm('Switch the case and drop the changed values? (Save as case file keeps them.)')) {
+      e.stopImmediatePropagation();
+      const choice = e.target, name = r.dataset.case;
+      choice.selectedIndex = [...choice.options].findIndex(o => optionText(o).split(' · ')[0] === name);
+    }
+  }, true);
+  window.addEventListener('beforeunload', e => {
+    const r = results();
+    if (r && r.dataset.changed && r.dataset.changed !== '{}' && !location.hash) { e.preventDefault(); e.returnValue = ''; }
+  });
+  new MutationObserver(() => { if (restoring === 'case') restore(); show(); })
+    .observe(document.body, {subtree: true, childList: true, attributes: true, attributeFilter: ['data-generation', 'data-inputs']});
+  setInterval(show, 500);
+})();
+</script>"""
+
+
+def page_html() -> str:
+    """The page's style and script, as one HTML output of the served notebook."""
+    return STYLE + SCRIPT
+
+
+def state_html() -> str:
+    """The line the script keeps up to date (the kernel writes its first words)."""
+    return f'<div class="dr-state" data-state="current">{escape("Current: the results are those of the values shown.")}</div>'

@@ -1,0 +1,139 @@
+"""The review's live figures, drawn by the browser: SVG texts of the load cycle's steps and of the
+stiffness chain's shares.
+
+The calc report and the notebooks draw them with matplotlib (:func:`calc.plots.load_cycle_figure`,
+:func:`calc.accuracy_plots.stiffness_chain_figure`); the review redraws them on changes (the load
+cycle on every change of a move, the mechanism or a segment; the chain on a change of ratio, part
+or applied torque), and rendering such a figure to a PNG takes 0.2 to 0.4 s, most of a change's
+time. Here the kernel writes SVG (some 2 KB, under a millisecond) and the browser draws it: the
+same data (each segment's mean output speed and torque against time, the pauses shaded, ED and the
+mode in the title; each member's share of the twist, its twist and stiffness at the output, from
+the results), without the report figures' finer annotations.
+"""
+
+from __future__ import annotations
+
+import math
+from html import escape
+
+import numpy as np
+
+from ..units import Q_, pretty_unit
+
+WIDTH, HEIGHT = 540, 300
+LEFT, RIGHT, TOP, GAP, BOTTOM = 58, 10, 26, 22, 30
+PANEL = (HEIGHT - TOP - GAP - BOTTOM) / 2
+
+
+def nice_ticks(low: float, high: float, count: int = 4) -> list[float]:
+    """Round tick values (1, 2 or 5 times a power of ten apart) covering ``low`` to ``high``.
+
+    >>> nice_ticks(0, 300), nice_ticks(-45, 60)
+    ([0.0, 100.0, 200.0, 300.0], [-50.0, 0.0, 50.0, 100.0])
+    """
+    span = (high - low) or abs(high) or 1.0
+    raw = span / count
+    power = 10.0 ** math.floor(math.log10(raw))
+    step = next(m * power for m in (1, 2, 5, 10) if m * power >= raw)
+    first = math.floor(low / step) * step
+    return [round(first + k * step, 12) for k in range(int(math.ceil((high - first) / step - 1e-9)) + 1)]
+
+
+def _panel(edges, values, top: float, label: str, moving) -> list[str]:
+    """One panel: its axis, ticks, the pauses shaded and the step line."""
+    ticks = nice_ticks(min(0.0, float(np.min(values))), max(0.0, float(np.max(values))))
+    lo, hi = ticks[0], ticks[-1]
+    span_x = edges[-1] or 1.0
+
+    def x(t):
+        return LEFT + (WIDTH - LEFT - RIGHT) * t / span_x
+
+    def y(v):
+        return top + PANEL * (hi - v) / ((hi - lo) or 1.0)
+
+    out = [f'<rect x="{x(a):.1f}" y="{top:.1f}" width="{x(b) - x(a):.1f}" height="{PANEL:.1f}" fill="#eeeeee"/>'
+           for a, b, m in zip(edges[:-1], edges[1:], moving) if not m]
+    for v in ticks:
+        out.append(f'<line x1="{LEFT}" x2="{WIDTH - RIGHT}" y1="{y(v):.1f}" y2="{y(v):.1f}" stroke="{"#999" if v == 0 else "#e2e2e2"}"/>')
+        out.append(f'<text x="{LEFT - 4}" y="{y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')
+    points = " ".join(f"{x(t):.1f},{y(v):.1f}" for a, b, v in zip(edges[:-1], edges[1:], values) for t in (a, b))
+    out.append(f'<polyline points="{points}" fill="none" stroke="#1f5fbf" stroke-width="2"/>')
+    out.append(f'<text x="12" y="{top + PANEL / 2:.1f}" transform="rotate(-90 12 {top + PANEL / 2:.1f})" text-anchor="middle">{escape(label)}</text>')
+    return out
+
+
+def load_cycle_svg(profile, duty: dict | None = None, torque_unit: str = "N*m") -> str:
+    """The load cycle ``profile`` as an SVG text: mean output speed [rpm] above, output torque
+    below (in ``torque_unit``), against time; pauses shaded; ``duty`` (the results' ``duty``
+    section) gives the title's ED, cycle time and mode.
+
+    >>> from calc import Q_
+    >>> from calc.profile import Profile
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> svg = load_cycle_svg(p)
+    >>> svg.count("<polyline"), 'points="58.0,' in svg
+    (2, True)
+    """
+    edges = np.concatenate([[0.0], np.cumsum(profile.durations.m_as("s"))])
+    speeds = np.nan_to_num(profile.speeds.m_as("rpm"))
+    torques = np.nan_to_num(profile.torques.m_as(torque_unit))
+    moving = profile.moving
+    title = "Load cycle (each segment at its mean speed)"
+    if duty:
+        title = (f"Load cycle: ED = {Q_(duty['ED']['value'], duty['ED']['unit']).m_as('percent'):.3g} %, "
+                 f"cycle {duty['t_cycle']['value']:.3g} s, mode {duty['mode']}")
+    body = [f'<text x="{LEFT}" y="16" font-weight="600">{escape(title)}</text>']
+    body += _panel(edges, speeds, TOP, "n₂ [rpm]", moving)
+    body += _panel(edges, torques, TOP + PANEL + GAP, f"T₂ [{pretty_unit(torque_unit)}]", moving)
+    bottom = TOP + 2 * PANEL + GAP
+    span_x = edges[-1] or 1.0
+    for t in nice_ticks(0.0, float(edges[-1]), 6):
+        if t <= span_x + 1e-9:
+            px = LEFT + (WIDTH - LEFT - RIGHT) * t / span_x
+            body.append(f'<text x="{px:.1f}" y="{bottom + 14:.1f}" text-anchor="middle">{t:g}</text>')
+    body.append(f'<text x="{WIDTH - RIGHT}" y="{bottom + 27:.1f}" text-anchor="end">time t [s]; pauses shaded</text>')
+    return (f'<svg class="dr-load-cycle" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {HEIGHT}" width="100%" '
+            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
+
+
+def stiffness_chain_svg(accuracy: dict) -> str:
+    """Each member's share of the chain's twist at the output, as horizontal bars labelled with its
+    twist and stiffness at the output, from the results' ``accuracy`` section (E11): the data of
+    :func:`calc.accuracy_plots.stiffness_chain_figure`, drawn by the browser.
+
+    >>> a = {"applied_torque": {"value": 8, "unit": "N*m"}, "C_total": {"value": 21.35, "unit": "N*m/arcmin"},
+    ...      "components": [{"name": "AKD-30", "side": "input", "share_of_compliance": 0.03,
+    ...                      "twist_at_applied_torque": {"value": 0.011, "unit": "arcmin"},
+    ...                      "stiffness_at_output": {"value": 727.2, "unit": "N*m/arcmin"}}]}
+    >>> svg = stiffness_chain_svg(a)
+    >>> svg.count("<rect"), "3 %: 0.011 arcmin, C = 727.2 N·m/arcmin" in svg
+    (1, True)
+    """
+    from ..accuracy_plots import SIDE_COLORS  # the report figure's colours
+    from ..sections.common import quantity_text
+
+    members = accuracy["components"]
+    row, left, top = 30, 130, 24
+    height = top + row * len(members) + 34
+    scale = (WIDTH - left - 10) / 110  # 0 to 110 %
+    twist = sum(m["twist_at_applied_torque"]["value"] for m in members)
+    title = (f"Stiffness chain at {quantity_text(accuracy['applied_torque'])}: C_total = {quantity_text(accuracy['C_total'])}, "
+             f"twist {twist:.3g} arcmin (E11)")
+    body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
+    for share in range(0, 101, 20):
+        x = left + scale * share
+        body.append(f'<line x1="{x:.1f}" x2="{x:.1f}" y1="{top}" y2="{height - 30}" stroke="#e2e2e2"/>')
+        body.append(f'<text x="{x:.1f}" y="{height - 18}" text-anchor="middle">{share}</text>')
+    for k, m in enumerate(members):
+        y = top + row * k + 5
+        share = 100 * m["share_of_compliance"]
+        label = f"{share:.3g} %: {quantity_text(m['twist_at_applied_torque'])}, C = {quantity_text(m['stiffness_at_output'])}"
+        body += [f'<rect x="{left}" y="{y}" width="{scale * share:.1f}" height="{row - 10}" fill="{SIDE_COLORS.get(m["side"], "#888")}"/>',
+                 f'<text x="{left - 6}" y="{y + 9}" text-anchor="end">{escape(m["name"])}</text>',
+                 f'<text x="{left - 6}" y="{y + 20}" text-anchor="end" fill="#666">({escape(m["side"])} side)</text>',
+                 # beside a short bar, inside a long one (so it stays in the figure)
+                 f'<text x="{left + scale * share + 4:.1f}" y="{y + 14}">{escape(label)}</text>' if share < 50 else
+                 f'<text x="{left + scale * share - 4:.1f}" y="{y + 14}" text-anchor="end" fill="#fff">{escape(label)}</text>']
+    body.append(f'<text x="{left}" y="{height - 4}">share of the twist at the output [%]; input side purple, output side blue</text>')
+    return (f'<svg class="dr-chain" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
+            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
