@@ -24,7 +24,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, describe_units, kind, pretty_unit, ureg
+from .units import Q_, describe_units, in_si_scale, kind, pretty_unit, scale_expected, ureg
 
 
 def _project_dir() -> Path | None:
@@ -397,7 +397,7 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         return cells[columns[name][0]::width]
 
     texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
+    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines), units[c.name]) for c in schema.columns}
     problem = _first_problem(path, schema, lines, texts, numbers)
     if problem:
         raise CalcError(problem)
@@ -444,11 +444,14 @@ class _Numbers:
     values: np.ndarray
     empty: np.ndarray
     malformed: np.ndarray
+    si: np.ndarray  # the values in SI units, where a value out of scale would overflow a formula
+    si_units: object
 
     def bad(self, c: Column) -> np.ndarray:
         """Where a cell fails column ``c``: empty though required, or given but not a finite
-        number in range (NaN, the mark of a malformed cell, is neither)."""
-        ok = np.isfinite(self.values) & (self.values > 0 if c.positive else self.values >= 0)
+        number in range (NaN, the mark of a malformed cell, is neither) and in scale
+        (:data:`calc.units.SI_SCALE`)."""
+        ok = np.isfinite(self.values) & (self.values > 0 if c.positive else self.values >= 0) & in_si_scale(self.si)
         return np.where(self.empty, c.required, ~ok)
 
     def problem(self, j: int, c: Column, where: str) -> str:
@@ -460,12 +463,14 @@ class _Numbers:
             return f"{where}: expected a number, found {cell!r}"
         if not math.isfinite(self.values[j]):
             return f"{where}: expected a finite number, found {cell!r}"
-        if c.positive:
+        if c.positive and self.values[j] <= 0:
             return f"{where}: expected a value above zero, found {cell}"
-        return f"{where}: expected a value of zero or more, found {cell}"
+        if self.values[j] < 0:
+            return f"{where}: expected a value of zero or more, found {cell}"
+        return f"{where}: {scale_expected(self.si_units)}, found {cell}, which is {abs(self.si[j]):.3g}"
 
 
-def _numbers(cells: list) -> _Numbers:
+def _numbers(cells: list, units) -> _Numbers:
     """Parse a column of cells as written. Each distinct spelling is stripped, held against
     :data:`_FLOAT` and parsed once (a catalog repeats its values, and a lookup costs less than a
     parse), so ``inf``, ``nan``, ``1_000`` or hex, which ``float`` would take, are malformed."""
@@ -476,8 +481,10 @@ def _numbers(cells: list) -> _Numbers:
     index = dict(zip(spellings, range(len(spellings))))
     at = np.fromiter(map(index.__getitem__, cells), np.intp, len(cells))
     values, empty = parsed[at], blank[at]
+    with np.errstate(over="ignore"):  # a value that overflows in SI units is out of scale, said as such
+        si = Q_(values, units).to_base_units()
     # A number's spelling never parses to NaN: NaN marks the empty and the malformed cells.
-    return _Numbers(cells, values, empty, np.isnan(values) & ~empty)
+    return _Numbers(cells, values, empty, np.isnan(values) & ~empty, si.magnitude, si.units)
 
 
 def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict) -> str | None:

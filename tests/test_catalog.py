@@ -83,6 +83,11 @@ def test_a_catalog_in_other_units_loads_the_same(tmp_path):
         (HEADER, ROW.replace(",81,", ",1e999,"), "row 2 (G-10), column T_2N: expected a finite number, found '1e999'"),
         (HEADER, ROW.replace(",81,", ",-1e999,"), "column T_2N: expected a finite number, found '-1e999'"),
         (HEADER, ROW.replace(",0.57,", ",1E+400,"), "column J_1: expected a finite number, found '1E+400'"),
+        # Finite, but out of scale: 1/C_t21 or T_2max/T_2N would overflow far from the cell.
+        (HEADER, ROW.replace(",23,", ",1e-320,"),
+         "row 2 (G-10), column C_t21: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²/rad), found 1e-320"),
+        (HEADER, ROW.replace(",81,", ",1e-308,"), "column T_2N: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²), found 1e-308, which is 1e-308"),
+        (HEADER, ROW.replace(",0.57,", ",1e20,"), "column J_1: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²), found 1e20, which is 1e+16"),
         # Spellings Python's float() takes that a catalog must not hold.
         (HEADER, ROW.replace(",81,", ",inf,"), "column T_2N: expected a number, found 'inf'"),
         (HEADER, ROW.replace(",81,", ",-Infinity,"), "column T_2N: expected a number, found '-Infinity'"),
@@ -168,6 +173,9 @@ def test_a_cell_loads_exactly_when_it_is_a_finite_number_in_range(tmp_path_facto
             expected.append(where + f"expected a finite number, found {cell!r}")
         elif float(cell) < 0:
             expected.append(where + f"expected a value of zero or more, found {cell}")
+        elif float(cell) != 0 and not 1e-12 <= float(cell) * math.pi / 10800 <= 1e12:  # 1 arcmin = π/10800 rad
+            si = float(cell) * math.pi / 10800
+            expected.append(where + f"expected a magnitude between 1e-12 and 1e+12 in SI units (rad), found {cell}, which is {si:.3g}")
         else:
             expected.append(float(cell))
     first_error = next((e for e in expected if isinstance(e, str)), None)

@@ -3,11 +3,14 @@ characters in the title, a measured record out of time order, and a reader that 
 Each input error is one line on standard error naming the file and key, exit code 2, nothing on
 standard output."""
 
+import csv
 import json
 import os
 import subprocess
 import sys
+import warnings
 
+import numpy as np
 import pytest
 
 from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, run
@@ -110,3 +113,45 @@ def test_evaluate_into_a_pipe_closed_early_exits_quietly():
         err = proc.stderr.read().decode()
         proc.stderr.close()
         assert proc.wait() == 1 and err == ""
+
+
+@pytest.mark.parametrize(
+    "cells, fragment",
+    [
+        ({"C_t21 [N*m/arcmin]": "1e-320"}, "column C_t21: expected a magnitude between 1e-12 and 1e+12 in SI units"),
+        ({"T_2N [N*m]": "1e-308", "T_2B [N*m]": "1e-308"}, "column T_2N: expected a magnitude between 1e-12 and 1e+12 in SI units"),
+    ],
+)
+def test_a_catalog_cell_out_of_scale_gives_one_line_naming_its_row_and_column(tmp_path, cells, fragment):
+    # Before, these printed numpy's and pint's overflow warnings (7 to 9 lines) and then an error
+    # naming only the result that overflowed; in a fresh process, as a user runs it.
+    rows = list(csv.reader((ROOT / "catalogs" / "gearboxes.csv").read_text(encoding="utf-8").splitlines()))
+    row = next(k for k, r in enumerate(rows) if r[0] == "NPT035-10")
+    for column, cell in cells.items():
+        rows[row][rows[0].index(column)] = cell
+    catalog = tmp_path / "hostile.csv"
+    with open(catalog, "w", encoding="utf-8", newline="") as f:
+        csv.writer(f).writerows(rows)
+    case = tmp_path / "case.toml"
+    case.write_text(EXAMPLE.read_text().replace('catalog = "gearboxes"', f"catalog = {str(catalog)!r}"))
+    done = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(case), "--json"], capture_output=True, text=True, cwd=ROOT)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr.count("\n") == 1 and done.stderr.startswith(f"error: {catalog}, row {row + 1} (NPT035-10), "), done.stderr
+    assert fragment in done.stderr
+
+
+def test_no_floating_point_warning_leaves_the_evaluation(capsys, monkeypatch):
+    # Whatever overflows inside a section (here one made to) gives inf or NaN, never numpy's warning.
+    from calc import sections
+
+    evaluate_duty = sections.duty.evaluate
+
+    def overflowing(case):
+        np.float64(1e308) * 10
+        return evaluate_duty(case)
+
+    monkeypatch.setattr(sections.duty, "evaluate", overflowing)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        code, out, err = run(capsys, EXAMPLE, "--json")
+    assert (code, err) == (0, "")
