@@ -129,18 +129,25 @@ class Catalog:
 
     def text_or_blank(self, column: str) -> np.ndarray:
         """A text column's cells, blank where the file has no such column."""
-        return self.text.get(column, np.full(len(self), "", dtype=object))
+        return self.text[column] if column in self.text else self._blank
 
-    @property
+    # The columns below are built once per catalog, read-only: results ask them of one candidate at
+    # a time, and building a whole column per ask makes writing n candidates cost n whole catalogs.
+
+    @functools.cached_property
+    def _blank(self) -> np.ndarray:
+        return _read_only(np.full(len(self), "", dtype=object))
+
+    @functools.cached_property
     def family(self) -> np.ndarray:
         """Each row's family (``TP+``), or its series where the file gives no family."""
         family = self.text_or_blank("family")
-        return np.where(family == "", self.text_or_blank("series"), family)
+        return _read_only(np.where(family == "", self.text_or_blank("series"), family))
 
-    @property
+    @functools.cached_property
     def partial(self) -> np.ndarray:
         """True for a partial row (:attr:`Schema.partial`): kept, never checked or chosen."""
-        return self.text_or_blank(self.schema.partial) != "" if self.schema.partial else np.zeros(len(self), bool)
+        return _read_only(self.text_or_blank(self.schema.partial) != "" if self.schema.partial else np.zeros(len(self), bool))
 
     @functools.cached_property
     def illustrative(self) -> np.ndarray:
@@ -194,6 +201,11 @@ class Catalog:
             data[f"{c.name} [{pretty_unit(self.header_units[c.name])}]"] = self.values[c.name].magnitude
         data.update({k: v for k, v in self.text.items() if k != "part"})
         return pd.DataFrame(data)
+
+
+def _read_only(a: np.ndarray) -> np.ndarray:
+    a.flags.writeable = False
+    return a
 
 
 def some_parts(parts) -> str:
