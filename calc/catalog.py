@@ -24,7 +24,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, describe_units, in_si_scale, kind, pretty_unit, scale_expected, ureg
+from .units import Q_, SI_SCALE, describe_units, kind, pretty_unit, ureg
 
 
 def _project_dir() -> Path | None:
@@ -131,9 +131,9 @@ class Catalog:
         """A text column's cells, blank where the file has no such column."""
         return self.text[column] if column in self.text else self._blank
 
-    # The columns below are built once per catalog, read-only: results ask them of one candidate at
-    # a time, and building a whole column per ask makes writing n candidates cost n whole catalogs.
-
+    # Each of these is worked out once over the whole catalog and carried to the catalogs of its
+    # rows (:meth:`rows`): callers index them per candidate, and a per-candidate pass over 10^5
+    # rows made writing the results quadratic in the catalog.
     @functools.cached_property
     def _blank(self) -> np.ndarray:
         return _read_only(np.full(len(self), "", dtype=object))
@@ -172,7 +172,8 @@ class Catalog:
             {k: v[mask] for k, v in self.values.items()}, {k: v[mask] for k, v in self.text.items()},
             self.lines[mask], self.header_units, self.members, self.member[mask],
         )
-        out.illustrative = self.illustrative[mask]
+        for name in ("illustrative", "family", "partial"):
+            setattr(out, name, getattr(self, name)[mask])
         return out
 
     def index(self, part: str, where: str) -> int:
@@ -204,6 +205,7 @@ class Catalog:
 
 
 def _read_only(a: np.ndarray) -> np.ndarray:
+    """``a``, which no caller may change: it is shared by every caller of the catalog."""
     a.flags.writeable = False
     return a
 
@@ -409,8 +411,8 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         return cells[columns[name][0]::width]
 
     texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines), units[c.name]) for c in schema.columns}
-    problem = _first_problem(path, schema, lines, texts, numbers)
+    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
+    problem = _first_problem(path, schema, lines, texts, numbers, {name: _si(u) for name, u in units.items()})
     if problem:
         raise CalcError(problem)
     if misfit is not None:
@@ -456,17 +458,20 @@ class _Numbers:
     values: np.ndarray
     empty: np.ndarray
     malformed: np.ndarray
-    si: np.ndarray  # the values in SI units, where a value out of scale would overflow a formula
-    si_units: object
 
-    def bad(self, c: Column) -> np.ndarray:
+    def bad(self, c: Column, si_factor: float) -> np.ndarray:
         """Where a cell fails column ``c``: empty though required, or given but not a finite
-        number in range (NaN, the mark of a malformed cell, is neither) and in scale
-        (:data:`calc.units.SI_SCALE`)."""
-        ok = np.isfinite(self.values) & (self.values > 0 if c.positive else self.values >= 0) & in_si_scale(self.si)
+        number in range (NaN, the mark of a malformed cell, is neither), or out of
+        :data:`calc.units.SI_SCALE` once in SI units (``si_factor``: the header unit's), where
+        the calculations would overflow or lose the value to underflow."""
+        ok = np.isfinite(self.values) & (self.values > 0 if c.positive else self.values >= 0)
+        low, high = SI_SCALE
+        with np.errstate(over="ignore", invalid="ignore"):
+            si = np.abs(self.values * si_factor)
+        ok &= (si == 0) | ((si >= low) & (si <= high))
         return np.where(self.empty, c.required, ~ok)
 
-    def problem(self, j: int, c: Column, where: str) -> str:
+    def problem(self, j: int, c: Column, si_factor: float, si_unit, where: str) -> str:
         """What is wrong with cell ``j``, one that :meth:`bad` marks."""
         cell = self.cells[j].strip()
         if self.empty[j]:
@@ -475,14 +480,16 @@ class _Numbers:
             return f"{where}: expected a number, found {cell!r}"
         if not math.isfinite(self.values[j]):
             return f"{where}: expected a finite number, found {cell!r}"
-        if c.positive and self.values[j] <= 0:
+        if c.positive and not self.values[j] > 0:
             return f"{where}: expected a value above zero, found {cell}"
-        if self.values[j] < 0:
+        if not self.values[j] >= 0:
             return f"{where}: expected a value of zero or more, found {cell}"
-        return f"{where}: {scale_expected(self.si_units)}, found {cell}, which is {abs(self.si[j]):.3g}"
+        low, high = SI_SCALE
+        return (f"{where}: expected a magnitude between {low:g} and {high:g} in SI units ({si_unit:~P}), "
+                f"found {cell}, which is {abs(self.values[j] * si_factor):.3g}")
 
 
-def _numbers(cells: list, units) -> _Numbers:
+def _numbers(cells: list) -> _Numbers:
     """Parse a column of cells as written. Each distinct spelling is stripped, held against
     :data:`_FLOAT` and parsed once (a catalog repeats its values, and a lookup costs less than a
     parse), so ``inf``, ``nan``, ``1_000`` or hex, which ``float`` would take, are malformed."""
@@ -490,26 +497,28 @@ def _numbers(cells: list, units) -> _Numbers:
     stripped = [spelling.strip() for spelling in spellings]
     parsed = np.array([float(cell) if cell and _FLOAT.match(cell) else math.nan for cell in stripped], float)
     blank = np.array([not cell for cell in stripped], bool)
-    index = dict(zip(spellings, range(len(spellings))))
-    at = np.fromiter(map(index.__getitem__, cells), np.intp, len(cells))
+    if len(spellings) == 1:  # a blank or constant column (a maker's table that leaves one out): no lookups
+        at = np.zeros(len(cells), np.intp)
+    else:
+        index = dict(zip(spellings, range(len(spellings))))
+        at = np.fromiter(map(index.__getitem__, cells), np.intp, len(cells))
     values, empty = parsed[at], blank[at]
-    with np.errstate(over="ignore"):  # a value that overflows in SI units is out of scale, said as such
-        si = Q_(values, units).to_base_units()
     # A number's spelling never parses to NaN: NaN marks the empty and the malformed cells.
-    return _Numbers(cells, values, empty, np.isnan(values) & ~empty, si.magnitude, si.units)
+    return _Numbers(cells, values, empty, np.isnan(values) & ~empty)
 
 
-def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict) -> str | None:
+def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict, si: dict) -> str | None:
     """The message of the first bad cell a reader meets going row by row and, in a row, column by
     column (the text columns, then the numeric ones in the schema's order), or None. Each
-    column's bad cells are found over the whole column at once."""
+    column's bad cells are found over the whole column at once; ``si`` gives each numeric
+    column's factor to SI and its SI unit (:func:`_si`)."""
     firsts = []  # (row index, column order, column name) of each column's first bad cell
     for order, name in enumerate(texts):
         if name in schema.text_columns and "" in texts[name]:
             firsts.append((texts[name].index(""), order, name))
     partial = np.array(texts[schema.partial], dtype=object) != "" if schema.partial in texts else False
     for order, c in enumerate(schema.columns, start=len(texts)):
-        bad = numbers[c.name].bad(c)
+        bad = numbers[c.name].bad(c, si[c.name][0])
         if c.required:
             bad &= ~(partial & numbers[c.name].empty)  # a partial row may leave a required cell empty
         if bad.any():
@@ -520,7 +529,13 @@ def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict
     if name in texts:
         return f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"
     c = next(c for c in schema.columns if c.name == name)
-    return numbers[name].problem(j, c, f"{path}, row {lines[j]} ({texts['part'][j]}), column {name}")
+    return numbers[name].problem(j, c, *si[name], f"{path}, row {lines[j]} ({texts['part'][j]}), column {name}")
+
+
+def _si(units) -> tuple[float, object]:
+    """The factor that takes a column's unit to SI, and the SI unit."""
+    base = ureg.Quantity(1.0, units).to_base_units()
+    return float(base.magnitude), base.units
 
 
 def _header_unit(path: Path, c: Column, unit_text):

@@ -131,27 +131,18 @@ def kind_phrase(expected: str | Kind) -> str:
 SI_SCALE = (1e-12, 1e12)
 
 
-def in_si_scale(si):
-    """Whether SI magnitudes lie within :data:`SI_SCALE` or are zero (false for NaN and infinity)."""
-    low, high = SI_SCALE
-    si = np.abs(si)
-    return (si == 0) | ((si >= low) & (si <= high))
-
-
-def scale_expected(si_units) -> str:
-    """What :data:`SI_SCALE` asks of a value, in words, with the SI unit of its kind."""
-    low, high = SI_SCALE
-    return f"expected a magnitude between {low:g} and {high:g} in SI units ({si_units:~P})"
-
-
 def _in_scale(quantity: pint.Quantity, where: str, found) -> pint.Quantity:
     """``quantity`` if its magnitude is finite and within :data:`SI_SCALE` in SI units (or zero)."""
+    low, high = SI_SCALE
     value = quantity.magnitude
     si = abs(quantity.to_base_units().magnitude) if math.isfinite(value) else math.inf
     if not math.isfinite(si):
         raise CalcError(f"{where}: expected a finite number, found {found!r}")
-    if not in_si_scale(si):
-        raise CalcError(f"{where}: {scale_expected(quantity.to_base_units().units)}, found {found!r}, which is {si:.3g}")
+    if si != 0 and not low <= si <= high:
+        raise CalcError(
+            f"{where}: expected a magnitude between {low:g} and {high:g} in SI units ({quantity.to_base_units().units:~P}), "
+            f"found {found!r}, which is {si:.3g}"
+        )
     return quantity
 
 
