@@ -22,6 +22,7 @@ The output bearing's checks (:func:`bearing_checks`) and the clamping hub's gove
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -328,14 +329,15 @@ class GearboxSelection:
     def governing(self) -> list:
         return [c for c in self.checks if self.governs(c)]
 
-    @property
+    @functools.cached_property
     def best_of_family(self) -> np.ndarray:
         """True for the best-ranked passing row of each family: the smallest adequate size of
         that family, by the ranking rule."""
         out = np.zeros(len(self.catalog), bool)
         passing = self.order[self.passes[self.order]]
-        _, first = np.unique(self.catalog.family[passing].astype(str), return_index=True)
-        out[passing[first]] = True
+        # Each family's first row in rank order: a dict built from the last row back keeps the first.
+        first = dict(zip(self.catalog.family[passing[::-1]].tolist(), passing[::-1].tolist()))
+        out[list(first.values())] = True
         return out
 
     @property

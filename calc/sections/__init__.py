@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..case import Case
 from ..catalog import display_path
 from . import accuracy, coupling, drive, duty, gearbox, motion, motor
@@ -61,6 +63,8 @@ class Results:
 
 
 def evaluate(case: Case) -> Results:
-    """Evaluate every section the case gives."""
-    return Results(case, {m.NAME: m.evaluate(case) for m in SECTIONS if m.applies(case)})
+    """Evaluate every section the case gives; numpy's floating-point warnings are not printed
+    (what overflows gives inf or NaN, which the results report: :func:`calc.sections.common.number`)."""
+    with np.errstate(all="ignore"):
+        return Results(case, {m.NAME: m.evaluate(case) for m in SECTIONS if m.applies(case)})
 
