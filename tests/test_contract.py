@@ -118,6 +118,26 @@ def test_the_motor_and_coupling_without_the_gearboxs_J_1(capsys, write_case, tmp
     assert r["verdict"]["passes"] is None
 
 
+def test_a_chain_that_follows_a_selection_choosing_no_part(capsys, write_case, tmp_path):
+    # The derived example without motor.peak_torque: neither the gearbox (T_2max needs T_1B) nor
+    # the coupling (M_N needs M_a) can be chosen, so the accuracy chain, whose members follow both
+    # selections, is of parts that stand in. Its values are given for information; the
+    # requirement is not decided and says why; the verdict is null.
+    (tmp_path / "data").symlink_to(ROOT / "data")  # the example's measurement paths hold
+    (tmp_path / "cases").mkdir()
+    text = DERIVED_EXAMPLE.read_text(encoding="utf-8").replace('peak_torque = "12 N*m"', "")
+    r = results(capsys, write_case(text, "cases/example-without-peak.toml"))
+    a = r["accuracy"]
+    assert a["positioning_accuracy"]["value"] > 0 and [c["side"] for c in a["components"]] == ["input", "output"]
+    best_gearbox, best_coupling = r["gearbox"]["candidates"][0]["part"], r["coupling"]["candidates"][0]["part"]
+    (check,) = a["checks"]
+    assert check["passes"] is None and check["utilization"] is None
+    assert f"the gearbox selection chooses no part ({best_gearbox}, its best-ranked, stands in)" in check["not_made"]
+    assert f"the coupling selection chooses no part ({best_coupling}, its best-ranked, stands in)" in check["not_made"]
+    assert a["passes"] is None and r["verdict"]["passes"] is None
+    assert any(reason.startswith("The accuracy requirement is not decided: positioning_accuracy") for reason in r["verdict"]["reasons"])
+
+
 def test_exit_status(capsys, write_case):
     failing = write_case(HEAD_TOML.replace('"12 N*m"', '"400 N*m"') + PROFILE_TOML, "failing.toml")
     open_ = write_case(HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML, "open.toml")

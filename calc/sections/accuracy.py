@@ -51,6 +51,9 @@ class AccuracyCase:
     #: The terms of the positioning accuracy not known for the chosen parts, each naming the part
     #: and the missing figure: the accuracy reckoned without them is a lower bound.
     unknown: list = field(default_factory=list)
+    #: The components whose followed selection chooses no part (its best-ranked stands in), as
+    #: sentences: no requirement can be decided on a chain of parts that will not be ordered.
+    unchosen: list = field(default_factory=list)
 
     def evaluate(self) -> ChainAccuracy:
         return chain_accuracy(self.chain, self.applied_torque, self.nominal_torque)
@@ -141,14 +144,15 @@ def _catalog_row(case: Case, catalog, part: str, where: str):
     return rows, rows.usable_index(part, f"{where}.part")
 
 
-def _chosen_row(selection, what: str) -> tuple[int, str]:
-    """The row a ``part = "selected"`` follows: the selection's choice, else its best-ranked
-    candidate (the case then fails on that section already, and the source says so)."""
+def _chosen_row(selection, what: str) -> tuple[int, str, str | None]:
+    """The row a ``part = "selected"`` follows, its source text, and None; where the selection
+    chooses none, its best-ranked candidate stands in, and the third value says so (the
+    requirements are then not decided, :func:`not_known`)."""
     row = int(selection.order[0])
     part = str(selection.catalog.parts[row])
     if selection.selected is not None:
-        return row, f"the {what} selection's choice {part}"
-    return row, f"{part}, the best-ranked {what} (none is chosen)"
+        return row, f"the {what} selection's choice {part}", None
+    return row, f"{part}, the best-ranked {what} (none is chosen)", f"the {what} selection chooses no part ({part}, its best-ranked, stands in)"
 
 
 def _doubt(rows, row: int) -> str:
@@ -162,15 +166,15 @@ def _gearbox_part(case: Case, t: Table, part: str):
     figures go with it."""
     if part != SELECTED:
         rows, row = _catalog_row(case, t.text("catalog", default=case.gearbox_catalog or "gearboxes"), part, t.where("").rstrip("."))
-        return rows, row, f"{rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}"
+        return rows, row, f"{rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}", None
     if t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the gearbox selection's catalog; give no catalog")
     if not gearbox.applies(case):
         raise CalcError(f"{t.where('part')}: part = \"selected\" follows the gearbox selection, but the case names no gearbox ratio or part")
     selection = gearbox.gearbox_selection(case)
-    row, chosen = _chosen_row(selection, "gearbox")
+    row, chosen, stand_in = _chosen_row(selection, "gearbox")
     rows = selection.catalog
-    return rows, row, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}"
+    return rows, row, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}", stand_in
 
 
 def _coupling_part(case: Case, t: Table, part: str):
@@ -182,14 +186,14 @@ def _coupling_part(case: Case, t: Table, part: str):
         if not coupling.applies(case):
             raise CalcError(f"{t.where('part')}: part = \"selected\" with kind = \"coupling\" follows the coupling selection, but the case has no [coupling]")
         cc, selection = coupling.coupling_selection(case)
-        row, chosen = _chosen_row(selection, "coupling")
+        row, chosen, stand_in = _chosen_row(selection, "coupling")
         rows, side = selection.catalog, cc.side or "output"
     else:
         from ..coupling import SCHEMA
 
         rows = load_catalog(resolve(t.text("catalog", default="couplings"), case.folder, t.where("catalog")), SCHEMA)
         row = rows.index(part, t.where("part"))
-        chosen, side = str(rows.parts[row]), None
+        chosen, side, stand_in = str(rows.parts[row]), None, None
     name, kind_of = str(rows.parts[row]), str(rows.text["type"][row])
     where = f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({name})"
     if kind_of not in ("bellows", "safety"):
@@ -197,7 +201,7 @@ def _coupling_part(case: Case, t: Table, part: str):
     stiffness = rows["C_T"][row]
     if np.isnan(stiffness.magnitude):
         raise CalcError(f"{where}, column C_T: expected a value, found an empty cell")
-    return name, stiffness, side, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}"
+    return name, stiffness, side, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}", stand_in
 
 
 def _measured_part_chosen(t: Table, part: str | None, chosen_part: str | None, sources: list) -> bool:
@@ -255,7 +259,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
             if t.has(key):
                 raise CalcError(f"{t.where(key)}: the part {part!r} gives its {key} from the catalog; give either part or {key}")
     if part is not None and kind == "coupling":
-        chosen, stiffness, coupling_side, source = _coupling_part(case, t, part)
+        chosen, stiffness, coupling_side, source, stand_in = _coupling_part(case, t, part)
         if coupling_side is not None and t.has("side") and side != coupling_side:
             raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side (coupling.side), found {side!r}")
         side = coupling_side or side
@@ -266,7 +270,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
     elif part is not None:
         if side != "output":
             raise CalcError(f"{t.where('side')}: a gearbox's catalog figures are referred to its output, so the part {part!r} sits on the output side, found {side!r}")
-        rows, row, source = _gearbox_part(case, t, part)
+        rows, row, source, stand_in = _gearbox_part(case, t, part)
         chosen_part = str(rows.parts[row])
         if name == SELECTED:
             name = chosen_part
@@ -283,6 +287,8 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         sources.append(source)
     elif t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: a catalog is read only for a part; give part as well")
+    if part is not None and stand_in is not None:
+        out.unchosen.append(stand_in)
     measured_applies = _measured_part_chosen(t, part, chosen_part, sources)
     if not measured_applies and t.has("transmission_trace") and accuracy is None:
         # The trace was the transmission accuracy; the part chosen instead has none given, which is
@@ -335,11 +341,13 @@ def accuracy_of(case: Case) -> tuple:
 
 
 def not_known(spec: AccuracyCase, name: str) -> str | None:
-    """Why the check of ``name`` cannot be made (the positioning accuracy is a lower bound when a
-    term of it is unknown for the chosen parts), or None."""
-    if name != "positioning_accuracy" or not spec.unknown:
-        return None
-    return "the positioning accuracy is a lower bound: unknown " + "; ".join(spec.unknown)
+    """Why the check of ``name`` cannot be made, or None: a followed selection chooses no part
+    (the chain is of a part that stands in), or the positioning accuracy is a lower bound (a term
+    of it is unknown for the chosen parts)."""
+    reasons = list(spec.unchosen)
+    if name == "positioning_accuracy" and spec.unknown:
+        reasons.append("the positioning accuracy is a lower bound: unknown " + "; ".join(spec.unknown))
+    return "; ".join(reasons) or None
 
 
 def requirement_checks(spec: AccuracyCase, a: ChainAccuracy) -> list[CheckArray]:
@@ -517,7 +525,8 @@ class AccuracyResult:
             )
         for k in s.get("checks", []):
             if k["passes"] is None:
-                lines.append(f"  {k['name']:<22} >= {quantity_text(k['value'])} required <= {quantity_text(k['required'])}  not made: {k['not_made']}")
+                bound = ">=" if k["name"] == "positioning_accuracy" and s["unknown"] else "="
+                lines.append(f"  {k['name']:<22} {bound} {quantity_text(k['value'])} required <= {quantity_text(k['required'])}  not made: {k['not_made']}")
                 continue
             lines.append(
                 f"  {k['name']:<22} {quantity_text(k['value']):>12} required <= {quantity_text(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
@@ -536,7 +545,11 @@ class AccuracyResult:
             f"The accuracy requirement is not met: {k.name} {fmt(k.required, k.unit)} > required {fmt(k.rated, k.unit)}, "
             f"{sig(100 * (k.utilization - 1), 3)} % over"
             for k in failing
-        ] + [f"The accuracy requirement is not decided: {k.name} >= {fmt(k.required, k.unit)}, {not_known(self.inputs, k.name)}" for k in open_]
+        ] + [
+            f"The accuracy requirement is not decided: {k.name} {'>=' if k.name == 'positioning_accuracy' and self.inputs.unknown else '='} "
+            f"{fmt(k.required, k.unit)}, {not_known(self.inputs, k.name)}"
+            for k in open_
+        ]
         return Verdict(False if failing else (None if open_ else True), reasons)
 
 
