@@ -33,13 +33,14 @@ def main(argv=None) -> int:
     rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
     rp.add_argument("--summary", action="store_true",
                     help="also write summary.pdf and summary.csv in the output folder: one row per case")
+    rp.add_argument("-j", "--jobs", type=int, metavar="N", help="build N reports at a time (default: the number of cores)")
     for p in (ev, ra, rp):
         p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
     if args.command == "report":
         from .publish import main as report
 
-        return report(args.cases, args.output, strict=args.strict, summary=args.summary)
+        return report(args.cases, args.output, strict=args.strict, summary=args.summary, jobs=args.jobs)
 
     from .case import read_case
     from .sections import SHOWN_CANDIDATES, evaluate

@@ -256,9 +256,10 @@ def test_front_page_lists_every_governing_check_and_what_is_not_checked():
     # gives no rated torque or top speed), the accuracy requirement; the bearing's F_2r is not
     # checked, as the catalog gives no F_2R for NPT035-10 (catalogs/gearboxes.csv).
     page = str(build_report(DERIVED_EXAMPLE).front_page())
-    assert r"Gearbox NPT035-10: $F_{\mathrm{2r}}$ ≤ $F_{\mathrm{2R}}$: not checked: the catalog gives no F\_2R" in page
+    assert (r"Gearbox NPT035-10: $F_{\mathrm{2r}}$ ≤ $F_{\mathrm{2R}}$: \notchecked{} {\footnotesize the catalog gives no "
+            r"$F_{\mathrm{2R}}$}") in page
     assert r"Motor: $T_{\mathrm{1peak}}$ ≤ $T_{\mathrm{1B}}$: " in page and "against 12" in page
-    assert r"Accuracy: positioning\_accuracy ≤ required: 1.424" in page
+    assert r"Accuracy: positioning accuracy ≤ required: 1.424" in page
     assert r"$d_{\mathrm{hub,max}}$" in page
 
 

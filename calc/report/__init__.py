@@ -31,7 +31,7 @@ from ..sections import Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
 from . import accuracy, coupling, drive, duty, gearbox, motion, motor, ratios
 from .common import ERRATA, results_of
-from .latex import Latex, itemize, latex_escape, prose, q, render, table, util
+from .latex import Latex, itemize, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
 __all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
@@ -147,9 +147,9 @@ class Report:
             for k in checks:
                 if not k.get("governs", True):
                     continue
-                crit = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+                crit = prose(k.get("criterion") or k["name"])
                 if k.get("passes") is None:
-                    lines.append(rf"{latex_escape(owner)}: {crit}: not checked: {latex_escape(k.get('not_made') or 'no rating')}")
+                    lines.append(rf"{latex_escape(owner)}: {crit}: {verdict_mark(None, k.get('not_made') or 'no rating')}")
                     continue
                 reached, limit = (k["required"], k["rated"]) if "rated" in k else (k["value"], k["required"])
                 lines.append(rf"{latex_escape(owner)}: {crit}: {q(reached)} against {q(limit)}, utilization {util(k['utilization'])}")
@@ -214,6 +214,15 @@ class Report:
         if not self.results:
             return Latex("")
         return Latex(render("order.tex.j2", lines=_parts("order_lines", self)))
+
+    def blocks(self) -> list[tuple[object, dict]]:
+        """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:
+        LaTeX blocks, and each figure with its caption. The report notebook displays them; the PDF
+        is built from them in this process (:mod:`calc.publish`), so both give the same content."""
+        out = [(b(), {}) for b in (self.front_page, self.method, self.inputs, self.calculations, self.section_results,
+                                   self.checks, self.candidates, self.figures_heading)]
+        out += [(figure, {"caption": caption}) for figure, caption in self.figures()]
+        return out + [(self.order_lines(), {})]
 
 
 def build_report(case_path) -> Report:

@@ -18,7 +18,7 @@ from pathlib import Path
 from ..formula import REGISTRY
 from ..gearbox import inertia_ratio
 from ..units import pretty_unit, sig
-from .latex import itemize, latex_escape, prose, q, table, text_math, util, value_unit, verdict_mark
+from .latex import itemize, latex_escape, prose, q, table, util, value_unit, verdict_mark
 
 _METHOD = tomllib.loads((Path(__file__).parent / "errata.toml").read_text(encoding="utf-8"))
 #: The sections of the source document each section of a case is computed from.
@@ -70,10 +70,10 @@ def checks_table(candidate: dict, caption: str) -> str:
     rows = []
     for k in candidate["checks"]:
         grey = "" if k.get("governs", True) else r"\color{infogrey}"
-        name = text_math(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+        name = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
         cells = [grey + name] + ([grey + latex_escape(k.get("mode", ""))] if modes else [])
         cells += [grey + q(k["required"]), grey + q(k["rated"]), grey + util(k["utilization"]),
-                  grey + verdict_mark(k["passes"]) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)")]
+                  grey + verdict_mark(k["passes"], k.get("not_made")) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)")]
         rows.append(cells)
     header = ["Criterion"] + (["Mode"] if modes else []) + ["Required", "Rated", "Utilization", "Verdict"]
     return table("@{}l " + ("l " if modes else "") + "r r r l@{}", header, rows, caption=latex_escape(caption),
@@ -82,7 +82,7 @@ def checks_table(candidate: dict, caption: str) -> str:
 
 def requirement_table(checks: list, caption: str) -> str:
     """Checks of a value reached against a limit the case requires (``value <= required``)."""
-    rows = [[prose(k["criterion"].replace("_", " ")), q(k["value"]), q(k["required"]), util(k["utilization"]), verdict_mark(k["passes"])]
+    rows = [[prose(k["criterion"]), q(k["value"]), q(k["required"]), util(k["utilization"]), verdict_mark(k["passes"])]
             for k in checks]
     return table(r"@{}l r r r l@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
                  caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")
@@ -94,7 +94,7 @@ def candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
     names = list(dict.fromkeys(k["name"] for k in checks))  # every check any candidate has, in order
     governs = {k["name"]: k.get("governs", True) for k in checks}
     header = ["Part"] + [
-        (r"\color{infogrey}" if not governs[n] else "") + text_math(n) for n in names
+        (r"\color{infogrey}" if not governs[n] else "") + prose(n) for n in names
     ] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
     rows = []
     for c in section["candidates"]:
@@ -107,7 +107,7 @@ def candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
         rows.append(cells)
     cols = "@{}l " + "r " * (len(names) + (1 if inertia else 0)) + "l@{}"
     criteria = {k["name"]: k.get("criterion") for c in section["candidates"] for k in c.get("checks", [])}
-    note = "Checks: " + "; ".join(text_math(criteria[n]) if criteria.get(n) else latex_escape(n) for n in names) + "."
+    note = "Checks: " + "; ".join(prose(criteria[n]) if criteria.get(n) else latex_escape(n) for n in names) + "."
     if inertia:
         note += rf" ${inertia_ratio.latex()}$, load to motor inertia ratio (E6)."
     return table(cols, header, rows, caption=caption, note=note)

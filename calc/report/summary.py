@@ -148,14 +148,14 @@ def _worst_cell(row: dict) -> str:
     if w is None:
         return "–"
     where = " ".join(latex_escape(x) for x in (w["section"], w["part"]) if x)
-    check = prose(w["check"] if w["part"] else w["check"].replace("_", " "))  # a section's own check: words
+    check = prose(w["check"])
     return rf"{util(w['utilization'])}\newline{{\footnotesize {where}: {check}}}"
 
 
-def summary_latex(rows: list[dict], reports: list, built: str, commit: str) -> Latex:
+def summary_latex(rows: list[dict], files_read: list, built: str, commit: str) -> Latex:
     """The summary PDF's content: heading, the count of each verdict, the table of cases and the
     title block (each case file and catalog read, with its SHA-256; build date, package, commit).
-    ``reports`` are the rows' :class:`calc.report.Report` objects, for the files they read."""
+    ``files_read`` are the files each row's report rests on (:attr:`calc.report.Report.files`)."""
     body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r), _verdict_cell(r), *(_part_cell(r, n) for n in CHOSEN),
              _worst_cell(r), _report_link(r["report"])] for k, r in enumerate(rows)]  # rows of several lines set apart
     cases = table(
@@ -166,8 +166,8 @@ def summary_latex(rows: list[dict], reports: list, built: str, commit: str) -> L
              "Each report's file name links to it, in the folder of this summary.",
     )
     files = {}  # path text -> (label, sha256): each file once, in the order read
-    for report in reports:
-        for label, path, digest in report.files:
+    for each in files_read:
+        for label, path, digest in each:
             files.setdefault(path, (label, digest))
     block = []
     for path, (label, digest) in files.items():
