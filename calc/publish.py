@@ -1,8 +1,9 @@
 """Calc reports as PDF: ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--summary]``.
 
-For each case the report notebook (``reports/calc-report.ipynb``) is executed by papermill with the
-case as its parameter, then exported by nbconvert through xelatex with the code hidden, using our
-LaTeX template (``reports/template/calc-report``). A progress bar runs over the cases; at the end
+For each case the report's blocks (:meth:`calc.report.Report.blocks`, what the report notebook
+``reports/calc-report.ipynb`` shows when run) become a notebook in this process, with no kernel,
+which nbconvert exports through xelatex with our LaTeX template (``reports/template/calc-report``).
+Several cases are built at a time (``-j``, default the number of cores). A progress bar runs over the cases; at the end
 one line per case gives its verdict and its PDF. A case that fails its checks, or cannot be
 evaluated, still gets its PDF (saying FAIL and why); only a PDF that cannot be built is an error.
 With ``--summary`` the output folder also gets ``summary.pdf`` and ``summary.csv``: one row per
