@@ -21,6 +21,7 @@ FAIL and it says why.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -30,7 +31,7 @@ from ..errors import CalcError
 from ..sections import Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
 from . import accuracy, coupling, drive, duty, gearbox, motion, motor, ratios
-from .common import ERRATA, results_of
+from .common import ERRATA, INPUT_COLUMNS, rejected_in_full, results_of
 from .latex import Latex, itemize, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
@@ -106,6 +107,12 @@ class Report:
             what = " ".join(self.reasons[:2])
         return f"{self.verdict.word}  {display_path(self.path)}: {what}"
 
+    def shown_path(self, text: str) -> str:
+        """A file's path as the report prints it: as the results write it (``catalogs/...``, or
+        relative to the project), and a path outside the project relative to the case file's
+        folder, as a case names it, never the absolute path of the machine that built the report."""
+        return os.path.relpath(text, self.path.resolve().parent) if Path(text).is_absolute() else text
+
     # -- the blocks, in the order of the report ------------------------------------------------
 
     def front_page(self) -> Latex:
@@ -116,19 +123,20 @@ class Report:
             rows = [[w, latex_escape(p) if p else r"\textcolor{failred}{none passes}", latex_escape(d)] for w, p, d in self.chosen]
             chosen = table(r"@{}l l p{0.55\linewidth}@{}", ["Part", "Chosen", "Basis"], rows)
         rows = [
-            ["Case file", rf"\texttt{{{latex_escape(display_path(self.path))}}}"],
+            ["Case file", rf"\texttt{{{latex_escape(self.shown_path(display_path(self.path)))}}}"],
             ["SHA-256", rf"\texttt{{\footnotesize {self.files[0][2]}}}" if self.files else "unreadable"],
         ]
         for label, path, digest in self.files[1:]:
-            rows += [[latex_escape(label), rf"\texttt{{{latex_escape(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
+            rows += [[latex_escape(label), rf"\texttt{{{latex_escape(self.shown_path(path))}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
         rows += [
             ["Built", latex_escape(self.built)],
             ["Package", latex_escape(PACKAGE)],
             ["Commit", rf"\texttt{{\footnotesize {latex_escape(self.commit)}}}"],
         ]
         return Latex(render(
-            "front-page.tex.j2", title=self.title, case=display_path(self.path), word=self.verdict.word, passes=self.passes,
-            governing=self._governing_lines(), reasons=[rf"\item {render_reason(r)}" for r in self.reasons], chosen=chosen,
+            "front-page.tex.j2", title=self.title, case=self.shown_path(display_path(self.path)), word=self.verdict.word, passes=self.passes,
+            governing=self._governing_lines(), chosen=chosen,
+            reasons=[rf"\item {render_reason(r.replace(str(self.path.resolve()), self.path.name))}" for r in self.reasons],
             title_block=table(r"@{}l p{0.78\linewidth}@{}", ["Item", "Value"], rows),
         ))
 
@@ -175,7 +183,7 @@ class Report:
         out = [r"\section{Inputs}"]
         rows = _parts("input_rows", self)
         if rows:
-            out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
+            out.append(table(INPUT_COLUMNS, ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
         return Latex("\n".join(out + _parts("inputs", self)))
 
     def calculations(self) -> Latex:
@@ -215,6 +223,11 @@ class Report:
             return Latex("")
         return Latex(render("order.tex.j2", lines=_parts("order_lines", self)))
 
+    def appendix(self) -> Latex:
+        """Every rejected candidate with its reasons, where the candidates' pages show only the closest."""
+        out = [x for m in BLOCKS if (s := results_of(m.NAME, self)) and s.get("candidates") for x in rejected_in_full(m.NAME, s)]
+        return Latex("\n".join([r"\clearpage\appendix\section{Rejected candidates}", *out]) if out else "")
+
     def blocks(self) -> list[tuple[object, dict]]:
         """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:
         LaTeX blocks, and each figure with its caption. The report notebook displays them; the PDF
@@ -222,7 +235,7 @@ class Report:
         out = [(b(), {}) for b in (self.front_page, self.method, self.inputs, self.calculations, self.section_results,
                                    self.checks, self.candidates, self.figures_heading)]
         out += [(figure, {"caption": caption}) for figure, caption in self.figures()]
-        return out + [(self.order_lines(), {})]
+        return out + [(self.order_lines(), {}), (self.appendix(), {})]
 
 
 def build_report(case_path) -> Report:

@@ -10,8 +10,8 @@ from ..gearbox import M_2k, T_2max, inertia_ratio, n_1
 from ..profile import n_2m
 from ..units import Q_, sig
 from . import common
-from .common import candidates_table, checks_table, gearbox_symbols, input_row, nothing, rejected, results_of
-from .latex import latex_escape, num, step_block, table
+from .common import candidates_table, case_key, checks_table, gearbox_symbols, input_row, nothing, rejected, results_of
+from .latex import breakable, latex_escape, num, prose, sources_list, stacked, step_block, table
 
 NAME = "gearbox"
 
@@ -30,13 +30,13 @@ def input_rows(report) -> list[list[str]]:
     c = report.case
     rows = [input_row(gearbox_symbols()["i"], c.ratio, "gearbox.ratio")] if c.ratio is not None else []
     if c.gearbox_part:
-        rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", r"\texttt{\footnotesize gearbox.part}"])
+        rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", case_key("gearbox.part")])
     if c.gearbox_catalog and (c.ratio is not None or c.gearbox_part):
         names = c.gearbox_catalog if isinstance(c.gearbox_catalog, list) else [c.gearbox_catalog]
         rows.append(["–", latex_escape(", ".join(names)), "–", "gearbox catalog" + ("s, ranked together" if len(names) > 1 else ""),
-                     r"\texttt{\footnotesize gearbox.catalog}"])
+                     case_key("gearbox.catalog")])
     if c.motor_shaft is not None:
-        rows.append(["–", latex_escape(c.motor_shaft.text), "–", "motor shaft: picks the clamping hub of $J_1$", r"\texttt{\footnotesize motor.shaft}"])
+        rows.append(["–", latex_escape(c.motor_shaft.text), "–", prose("motor shaft: picks the clamping hub of J_1"), case_key("motor.shaft")])
     load = c.output_load
     if load is not None:
         for key, q, what in (("axial_force", load.axial_force, "axial force on the output, F_2a"),
@@ -44,7 +44,7 @@ def input_rows(report) -> list[list[str]]:
                              ("lever_arm", load.lever_arm, "lever arm of F_2r from the output flange, x_2"),
                              ("axial_force_radius", load.axial_radius, "distance of F_2a from the axis, y_2")):
             if q is not None:
-                rows.append(["–", latex_escape(f"{q:~P}"), "–", latex_escape(what), r"\texttt{\footnotesize load." + latex_escape(key) + "}"])
+                rows.append(["–", latex_escape(f"{q:~P}"), "–", prose(what), case_key(f"load.{key}")])
     return rows
 
 
@@ -101,6 +101,7 @@ def candidates(report) -> list[str]:
     several = len(cat.members) > 1
     family, size, unclear = cat.family, cat.text_or_blank("size"), cat.text_or_blank("unclear")
     best = sel.best_of_family
+    numbers, source_list = sources_list(str(cat.text["source"][r]) for r in sel.order)
     rows = []
     for r in sel.order:
         illustrative |= bool(cat.illustrative[r])
@@ -115,20 +116,24 @@ def candidates(report) -> list[str]:
             num(cat["T_2N"][r], "N*m"), num(cat["T_2B"][r], "N*m"),
             num(cat["n_1N"][r], "rpm"), num(cat["n_1max"][r], "rpm"),
             num(cat["eta"][r], "percent"),
-            "–" if np.isnan(j1.magnitude) else num(j1, "kg*cm**2") + ("" if np.isnan(hub.magnitude) else f" ({sig(hub.m_as('mm'))} mm)"),
+            "–" if np.isnan(j1.magnitude) else num(j1, "kg*cm**2"),
+            "–" if np.isnan(hub.magnitude) else sig(hub.m_as("mm")),
+            f"[{numbers[str(cat.text['source'][r])]}]",
         ])
-    sources = sorted({str(cat.text["source"][r]) for r in sel.order})
-    note = r"$\star$ smallest adequate size of its family. $J_1$ for the clamping hub in brackets. Sources: " + "; ".join(latex_escape(s) for s in sources)
+    note = r"$\star$ smallest adequate size of its family. $J_1$ for the clamping hub of bore $d_{\mathrm{hub}}$. Sources by number below."
     if doubts:
-        note = "".join(rf"$^{{\dagger{k}}}$ doubtful figures of {latex_escape(d)}. " for k, d in enumerate(doubts, start=1)) + note
+        note = "".join(rf"$^{{\dagger{k}}}$ doubtful figures of {breakable(d)}. " for k, d in enumerate(doubts, start=1)) + note
     if illustrative:
         note = r"$^{*}$ illustrative row: not a maker's own figures. " + note
     return [
         table(
-            r"@{}l l r r r r r r@{}",
-            ["Part", "Family, size", "$T_{2N}$ [N·m]", "$T_{2B}$ [N·m]", "$n_{1N}$ [rpm]", "$n_{1\\mathrm{max}}$ [rpm]", r"$\eta$ [\%]", "$J_1$ [kg·cm²]"],
-            rows, caption=latex_escape(f"Catalog ratings of the candidates ({g['catalog']}), best first"), note=note,
+            r"@{}l l r r r r r r r r@{}",
+            ["Part", "Family, size", *(stacked(symbol, f"[{unit}]") for symbol, unit in (
+                ("$T_{2N}$", "N·m"), ("$T_{2B}$", "N·m"), ("$n_{1N}$", "rpm"), (r"$n_{1\mathrm{max}}$", "rpm"), (r"$\eta$", r"\%"),
+                ("$J_1$", "kg·cm²"), (r"$d_{\mathrm{hub}}$", "mm"))), "Src."],
+            rows, caption=latex_escape(f"Catalog ratings of the candidates ({g['catalog']}), best first"), note=note, small=True, narrow=True,
         ),
+        r"\paragraph{Sources of the rows.}" + source_list,
         candidates_table(g, f"Utilization of each check (required / rated), {g['mode']} governs; "
                             "checks in grey are for information", inertia=True),
         *rejected(g),

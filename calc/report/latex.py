@@ -82,6 +82,27 @@ def listed(value) -> str:
     return ", ".join(map(str, value)) if isinstance(value, (list, tuple)) else str(value)
 
 
+def breakable(text: str, escape=latex_escape) -> str:
+    """Text as LaTeX (``escape``) that may break after a slash, an underscore or an ampersand
+    (paths, addresses and case keys in narrow columns and notes)."""
+    out = escape(text)
+    for c in ("/", r"\&", r"\_"):
+        out = out.replace(c, c + r"\allowbreak{}")
+    return out
+
+
+def stacked(*lines: str) -> str:
+    """Lines set one above the other in one table cell (a column's symbol over its unit)."""
+    return r"\begin{tabular}[b]{@{}c@{}}" + r" \\ \relax ".join(lines) + r"\end{tabular}"  # \relax: a line may start with [
+
+
+def sources_list(sources) -> tuple[dict, str]:
+    """Each source once, numbered in the order given: the number of each, and the list as LaTeX."""
+    numbers = {s: k for k, s in enumerate(dict.fromkeys(sources), start=1)}
+    items = "".join(rf"\item[{{[{k}]}}] {breakable(s)}" for s, k in numbers.items())
+    return numbers, (r"{\footnotesize\begin{description}\setlength{\itemsep}{0pt}" + items + r"\end{description}}") if numbers else ""
+
+
 def itemize(items) -> str:
     """Items (LaTeX already) as a list."""
     return r"\begin{itemize}" + "".join(rf"\item {x}" for x in items) + r"\end{itemize}"
@@ -97,17 +118,20 @@ def value_unit(value) -> tuple[str, str]:
     return latex_escape(value), "–"
 
 
-def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "", small: bool = False) -> str:
+def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "", small: bool = False,
+          narrow: bool = False) -> str:
     """A booktabs longtable: a long one breaks across pages with its header repeated, a short one
     (up to 15 rows) stays on one page. Cells are LaTeX already; the note goes below the table.
-    Only captioned tables are numbered (longtable counts every one)."""
+    Only captioned tables are numbered (longtable counts every one). ``small`` sets it in a
+    smaller type, ``narrow`` with less space between columns (tables of many columns, to fit the
+    text width)."""
     end = r" \\*" if len(rows) <= 15 else r" \\"
     return render(
         "table.tex.j2",
         columns=re.sub(r"(?<!})p\{", r">{\\raggedright\\arraybackslash}p{", columns),  # no stretched words
         head=" & ".join(rf"\textbf{{{h}}}" for h in header) + r" \\",
         body="\n".join(" & ".join(r) + end for r in rows),
-        caption=caption, note=note, small=small,
+        caption=caption, note=note, small=small, narrow=narrow,
     )
 
 

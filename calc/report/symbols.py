@@ -39,8 +39,8 @@ def latex_escape(text) -> str:
 #: Greek letters written out in code, as LaTeX and as text.
 GREEK = {"phi": (r"\varphi", "φ"), "eta": (r"\eta", "η"), "lambda": (r"\lambda", "λ")}
 _GREEK_NAMES = "|".join(GREEK)
-# A case key, ``motor.peak_torque`` or ``coupling.shaft_1`` (code, set as code).
-_TABLES = "|".join(k for k in TOP_KEYS if k != "title")
+# A case key, ``motor.peak_torque`` or ``coupling.shaft_1``, or a name in the package (code, set as code).
+_TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])  # and the package's own names, calc.gearbox.x
 _KEY = rf"(?P<key>(?<![\w.])(?:{_TABLES})(?:\[\d+\])?(?:\.[a-z][a-z0-9_]*(?:\[\d+\])?)+)"
 # A symbol as written in code: a letter (or a Greek name) and its subscript, ``d_hub,max`` whole.
 _SYMBOL = rf"(?P<sym>(?<![\w.])(?P<base>{_GREEK_NAMES}|[^\W\d_])_(?P<sub>[^\W_]+(?:,[^\W_]+)*)(?![\w]))"
@@ -48,7 +48,7 @@ _SYMBOL = rf"(?P<sym>(?<![\w.])(?P<base>{_GREEK_NAMES}|[^\W\d_])_(?P<sub>[^\W_]+
 _WORDS = r"(?P<words>(?<![\w.])[a-z]{2,}(?:_[a-z]{2,})+\b)"
 # A lone letter or Greek name next to an operator, ``i`` of ``n_2m · i`` and ``J_L / i²`` (not
 # a unit after its number, ``0.3 s + 0.3 s``).
-_LONE = rf"(?P<lone>(?<![\w.])(?<!\d )(?:(?<=[·/=≤≥+] )(?:{_GREEK_NAMES}|[A-Za-z])(?=[\s²)]|$)|(?:{_GREEK_NAMES}|[A-Za-z])(?= [·/=≤≥+] )))"
+_LONE = rf"(?P<lone>(?<![\w.])(?<!\d )(?:(?<=[·/=≤≥+] )(?:{_GREEK_NAMES}|[A-Za-zα-ωϑ])(?=[\s²)]|$)|(?:{_GREEK_NAMES}|[A-Za-zα-ωϑ])(?= [·/=≤≥+] )))"
 _TOKEN = re.compile("|".join((_KEY, _SYMBOL, _WORDS, _LONE)))
 
 
