@@ -21,7 +21,6 @@ FAIL and it says why.
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -107,11 +106,14 @@ class Report:
             what = " ".join(self.reasons[:2])
         return f"{self.verdict.word}  {display_path(self.path)}: {what}"
 
-    def shown_path(self, text: str) -> str:
-        """A file's path as the report prints it: as the results write it (``catalogs/...``, or
-        relative to the project), and a path outside the project relative to the case file's
-        folder, as a case names it, never the absolute path of the machine that built the report."""
-        return os.path.relpath(text, self.path.resolve().parent) if Path(text).is_absolute() else text
+    def relative(self, text: str) -> str:
+        """LaTeX with the absolute path of the case file's folder (and of the folder above it, where
+        a case names ``../data/...``) written as the case writes it, relative to its folder: a
+        report never prints where on the building machine its files were."""
+        folder = self.path.resolve().parent
+        for base, shown in ((folder, ""), (folder.parent, "../")):
+            text = text.replace(latex_escape(f"{base}/"), shown)
+        return text
 
     # -- the blocks, in the order of the report ------------------------------------------------
 
@@ -123,20 +125,20 @@ class Report:
             rows = [[w, latex_escape(p) if p else r"\textcolor{failred}{none passes}", latex_escape(d)] for w, p, d in self.chosen]
             chosen = table(r"@{}l l p{0.55\linewidth}@{}", ["Part", "Chosen", "Basis"], rows)
         rows = [
-            ["Case file", rf"\texttt{{{latex_escape(self.shown_path(display_path(self.path)))}}}"],
+            ["Case file", rf"\texttt{{{latex_escape(display_path(self.path))}}}"],
             ["SHA-256", rf"\texttt{{\footnotesize {self.files[0][2]}}}" if self.files else "unreadable"],
         ]
         for label, path, digest in self.files[1:]:
-            rows += [[latex_escape(label), rf"\texttt{{{latex_escape(self.shown_path(path))}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
+            rows += [[latex_escape(label), rf"\texttt{{{latex_escape(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
         rows += [
             ["Built", latex_escape(self.built)],
             ["Package", latex_escape(PACKAGE)],
             ["Commit", rf"\texttt{{\footnotesize {latex_escape(self.commit)}}}"],
         ]
         return Latex(render(
-            "front-page.tex.j2", title=self.title, case=self.shown_path(display_path(self.path)), word=self.verdict.word, passes=self.passes,
+            "front-page.tex.j2", title=self.title, case=display_path(self.path), word=self.verdict.word, passes=self.passes,
             governing=self._governing_lines(), chosen=chosen,
-            reasons=[rf"\item {render_reason(r.replace(str(self.path.resolve()), self.path.name))}" for r in self.reasons],
+            reasons=[rf"\item {render_reason(r)}" for r in self.reasons],
             title_block=table(r"@{}l p{0.78\linewidth}@{}", ["Item", "Value"], rows),
         ))
 
@@ -232,10 +234,10 @@ class Report:
         """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:
         LaTeX blocks, and each figure with its caption. The report notebook displays them; the PDF
         is built from them in this process (:mod:`calc.publish`), so both give the same content."""
-        out = [(b(), {}) for b in (self.front_page, self.method, self.inputs, self.calculations, self.section_results,
-                                   self.checks, self.candidates, self.figures_heading)]
-        out += [(figure, {"caption": caption}) for figure, caption in self.figures()]
-        return out + [(self.order_lines(), {}), (self.appendix(), {})]
+        out = [(Latex(self.relative(b())), {}) for b in (self.front_page, self.method, self.inputs, self.calculations,
+                                                         self.section_results, self.checks, self.candidates, self.figures_heading)]
+        out += [(figure, {"caption": self.relative(caption)}) for figure, caption in self.figures()]
+        return out + [(Latex(self.relative(b())), {}) for b in (self.order_lines, self.appendix)]
 
 
 def build_report(case_path) -> Report:
