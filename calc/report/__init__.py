@@ -106,13 +106,14 @@ class Report:
             what = " ".join(self.reasons[:2])
         return f"{self.verdict.word}  {display_path(self.path)}: {what}"
 
-    def relative(self, text: str) -> str:
-        """LaTeX with the absolute path of the case file's folder (and of the folder above it, where
-        a case names ``../data/...``) written as the case writes it, relative to its folder: a
-        report never prints where on the building machine its files were."""
+    def relative(self, text: str, escape=latex_escape) -> str:
+        """Text (LaTeX: ``escape``; plain text: ``str``) with the absolute path of the case file's
+        folder (and of the folder above it, where a case names ``../data/...``) written as the case
+        writes it, relative to its folder: a report never prints where on the building machine its
+        files were."""
         folder = self.path.resolve().parent
         for base, shown in ((folder, ""), (folder.parent, "../")):
-            text = text.replace(latex_escape(f"{base}/"), shown)
+            text = text.replace(escape(f"{base}/"), shown)
         return text
 
     # -- the blocks, in the order of the report ------------------------------------------------

@@ -3,9 +3,11 @@ with the shock factor, and the figures of the cycle and of the shock factor."""
 
 from __future__ import annotations
 
+import dataclasses
+
 from ..gearbox import SHOCK_FACTORS
-from ..sections import duty as sections_duty
 from ..profile import t_k as t_k_symbol
+from ..sections import duty as sections_duty
 from ..units import sig
 from .common import gearbox_symbols, nothing
 from .latex import latex_escape, num, render, step_block, table
@@ -64,10 +66,10 @@ def figures(report) -> list:
     if report.evaluated is None:
         return []
     d = _result(report)
+    shown = dataclasses.replace(d.shock_factors, source=report.relative(d.fs_table, str))  # the case's table, its path as the case names it
     return [
         (load_cycle_figure(d.profile), "Load cycle at the gearbox output, with ED and the operating mode (E3)."),
-        (shock_factor_figure(d.Zh, d.shock_factors), latex_escape(f"Shock factor against cycles per hour ({d.fs_table}); "
-                                                                 "the case's point marked (E4).")),
+        (shock_factor_figure(d.Zh, shown), latex_escape(f"Shock factor against cycles per hour ({shown.source}); the case's point marked (E4).")),
     ]
 
 
