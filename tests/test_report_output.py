@@ -50,7 +50,7 @@ def reports(cases):
     return built
 
 
-STEP = re.compile(r"\\calcstep\{(?P<title>[^}]*)\}.*?\\begin\{aligned\}(?P<body>.*?)\\end\{aligned\}", re.S)
+STEP = re.compile(r"\\calcstep\{(?P<title>[^}]*)\}(?:(?!\\calcstep).)*?\\begin\{aligned\}(?P<body>.*?)\\end\{aligned\}", re.S)
 
 
 def steps_of(report) -> dict:
@@ -79,6 +79,19 @@ def test_every_number_of_the_duty_and_coupling_steps_is_the_json_number(reports,
     assert rf"+ {number(gearbox['J_1'])}\," in load[2], load[2]
     assert load[3].startswith(number({"value": 1500 / 10**2 + gearbox["J_1"]["value"]}))  # J_L = 1500 kg·cm², i = 10
     assert steps["Nominal torque of the coupling"][-1].startswith(number(j["coupling"]["M_N"]))
+
+
+@pytest.mark.parametrize("name", ["example", "shaft-24", "shock-1.5"])
+def test_every_gearbox_step_is_the_required_value_of_its_check_in_the_json(reports, name):
+    r = reports[name]
+    g, steps = r.results["gearbox"], steps_of(r)
+    checks = {k["name"]: k for k in g["candidates"][0]["checks"]}
+    for title, check in (("Input speed at the mean output speed (S1)", "n_1N"), ("Input speed at the highest output speed (S5)", "n_1max"),
+                         ("Maximum output torque", "T_2B"), ("Tilting moment on the output bearing", "M_2K")):
+        assert steps[title][-1].startswith(number(checks[check]["required"])), (title, steps[title][-1], checks[check]["required"])
+    assert steps["Load to motor inertia ratio"][-1] == sig(g["candidates"][0]["inertia_ratio"])
+    # The shock factor of T_2max is the case's: 1.5 in the variant, 1.6 (the source's, Z_h = 2400 /h) otherwise.
+    assert rf"\cdot {r.results['cyclic']['fs']:g} \cdot" in steps["Maximum output torque"][2]
 
 
 def test_the_24_mm_hub_is_the_j1_of_every_step(reports):

@@ -6,9 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..gearbox import M_2k, T_2max, inertia_ratio, n_1
-from ..profile import n_2m
-from ..units import Q_, sig
+from ..units import sig
 from . import common
 from .common import candidates_table, case_key, checks_table, gearbox_symbols, input_row, nothing, rejected, results_of
 from .latex import breakable, latex_escape, num, prose, sources_list, stacked, step_block, table
@@ -49,37 +47,13 @@ def input_rows(report) -> list[list[str]]:
 
 
 def steps(report) -> list[str]:
+    """The best-ranked row's checks as the gearbox section computed them."""
     sel = report.selection
     if sel is None:
         return []
-    p, fs = report.case.profile, report.results["cyclic"]["fs"]
-    row = int(sel.order[0])
-    cat = sel.catalog
-    i = cat["ratio"][row]
     chosen = "the chosen gearbox" if sel.selected else "the closest candidate (none passes)"
-    out = [rf"\subsection{{Checks of {chosen}, {latex_escape(str(cat.parts[row]))}}}"]
-    n2m = n_2m(**{k: v for k, v in p.moving_values().items() if k != "T_2k"})
-    out.append(step_block("Input speed at the mean output speed (S1)", n_1.step(n_2=n2m, i=i), "compared with n_1N"))
-    out.append(step_block("Input speed at the highest output speed (S5)", n_1.step(n_2=p.n_2max, i=i), "compared with n_1max"))
-    if report.case.motor_peak_torque is not None:
-        out.append(step_block("Maximum output torque", T_2max.step(T_1B=report.case.motor_peak_torque, i=i, f_s=Q_(fs, ""),
-                                                                  eta=cat["eta"][row]), "compared with T_2B"))
-    if sel.inertia_ratio is not None and not np.isnan(sel.J_1[row].magnitude):
-        hub = sel.J_1_hub[row]
-        which = "errata E6" + ("" if np.isnan(hub.magnitude) else f"; J_1 for the {sig(hub.m_as('mm'))} mm clamping hub")
-        out.append(step_block("Load to motor inertia ratio", inertia_ratio.step(
-            J_1=sel.J_1[row], J_L=report.case.load_inertia, i=i, J_motor=report.case.motor_inertia), which))
-    load = report.case.output_load
-    if load is not None:
-        zero, z_2 = Q_(0.0, "mm"), cat["z_2"][row]
-        out.append(step_block("Tilting moment on the output bearing", M_2k.step(
-            F_2a=load.axial_force if load.axial_force is not None else Q_(0.0, "N"),
-            y_2=load.axial_radius if load.axial_radius is not None else zero,
-            F_2r=load.radial_force if load.radial_force is not None else Q_(0.0, "N"),
-            x_2=load.lever_arm if load.lever_arm is not None else zero,
-            z_2=zero if np.isnan(z_2.magnitude) else z_2,
-        ), "compared with M_2K; WITTENSTEIN's form" + ("; z_2 = 0, the catalog gives none" if np.isnan(z_2.magnitude) else "")))
-    return out
+    out = [rf"\subsection{{Checks of {chosen}, {latex_escape(str(sel.catalog.parts[int(sel.order[0])]))}}}"]
+    return out + [step_block(title, step, note) for title, step, note in report.evaluated[NAME].steps]
 
 
 def checks(report) -> list[str]:
