@@ -203,3 +203,20 @@ def test_a_number_of_parallel_builds_below_one_is_refused(capsys):
 
     assert main(["report", str(DERIVED_EXAMPLE), "-j", "0"]) == 2
     assert capsys.readouterr().err.strip() == "error: -j 0: expected a number of parallel builds of 1 or more"
+
+
+def test_the_report_notebook_shows_the_blocks_the_pdf_typesets(reports):
+    # reports/calc-report.ipynb, run as a user runs it in JupyterLab (a kernel, the example case):
+    # its LaTeX outputs and figure captions are the blocks calc.publish typesets, in order.
+    import nbformat
+    from nbclient import NotebookClient
+
+    from calc.report import Latex
+
+    notebook = nbformat.read(publish.NOTEBOOK, as_version=4)
+    NotebookClient(notebook, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(publish.NOTEBOOK.parent)}}).execute()
+    shown = [(o["data"].get("text/latex"), o.get("metadata", {}).get("caption")) for c in notebook.cells for o in c.get("outputs", [])
+             if o["output_type"] == "display_data"]
+    blocks = [(str(b), None) if isinstance(b, Latex) else (None, m["caption"]) for b, m in reports["example"].blocks()]
+    built = re.compile(r"\d{4}-\d\d-\d\d \d\d:\d\d UTC")  # the build date, to the minute
+    assert [(built.sub("", t or ""), c) for t, c in shown] == [(built.sub("", t or ""), c) for t, c in blocks]
