@@ -36,6 +36,7 @@ def main(argv=None) -> int:
     rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
     rp.add_argument("--summary", action="store_true",
                     help="also write summary.pdf and summary.csv in the output folder: one row per case")
+    rp.add_argument("-j", "--jobs", type=int, metavar="N", help="build N reports at a time (default: the number of cores)")
     cp = sub.add_parser("compare", help="compare design cases side by side (verdict, chosen parts, utilizations, key results)")
     cp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one column each")
     cp.add_argument("--json", action="store_true", help="print the table as JSON")
@@ -54,7 +55,7 @@ def _run(args) -> int:
     if args.command == "report":
         from .publish import main as report
 
-        return report(args.cases, args.output, strict=args.strict, summary=args.summary)
+        return report(args.cases, args.output, strict=args.strict, summary=args.summary, jobs=args.jobs)
 
     from .case import read_case
     from .sections import SHOWN_CANDIDATES, evaluate

@@ -9,6 +9,8 @@ with symbol and unit, a title, a legend.
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 
 from .errors import CalcError
@@ -115,10 +117,11 @@ def load_cycle_figure(profile: Profile, duty: Duty | None = None):
     return fig
 
 
-def shock_factor_figure(cycles_per_hour=None):
-    """The shock-factor table (errata E4) as a step plot against ``Z_h``, the case's point marked.
+def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
+    """A shock-factor table (errata E4) as a step plot against ``Z_h``, the case's point marked.
 
-    Each band of :data:`calc.gearbox.SHOCK_FACTORS` is a horizontal line from its lowest ``Z_h``
+    Each band of ``table`` (the source's, :data:`calc.gearbox.SHOCK_FACTORS`, unless the case names
+    another with ``[gearbox] shock_factors``) is a horizontal line from its lowest ``Z_h``
     (filled marker: the boundary belongs to this band) to the next band's lowest ``Z_h`` (open
     marker: excluded), so a boundary takes the higher factor, as E4 reads the source's table.
 
@@ -126,6 +129,8 @@ def shock_factor_figure(cycles_per_hour=None):
     ----------
     cycles_per_hour : Quantity [1/time], optional
         The case's ``Z_h``; marked with its factor from :func:`calc.gearbox.shock_factor`.
+    table : calc.bands.BandTable
+        The table the case's ``f_s`` is read from.
 
     Returns
     -------
@@ -142,15 +147,16 @@ def shock_factor_figure(cycles_per_hour=None):
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
-    bounds, factors = SHOCK_FACTORS.bounds, SHOCK_FACTORS.factors
+    bounds, factors = table.bounds, table.factors
     z_case = None
     if cycles_per_hour is not None:
         z = as_kind(cycles_per_hour, "per_hour", "cycles_per_hour").m_as("1/hour")
         if np.ndim(z) != 0:
             raise CalcError(f"cycles_per_hour: expected one number of cycles per hour, found {np.size(z)} of them")
         z_case = float(z)
-        f_case = float(shock_factor(cycles_per_hour))
-    x_end = bounds[-1] + (bounds[-1] - bounds[-2])
+        f_case = float(shock_factor(cycles_per_hour, table))
+    span = bounds[-1] - bounds[-2] if len(bounds) > 1 else max(bounds[-1], 1000.0)  # a table of one band: 0 to 1000 /h shown
+    x_end = bounds[-1] + span
     if z_case is not None and z_case > 0.9 * x_end:
         x_end = 1.15 * z_case
 
@@ -186,7 +192,7 @@ def shock_factor_figure(cycles_per_hour=None):
     ax.grid(True, color="#dddddd", linewidth=0.6, zorder=0)
     ax.set_xlabel("cycles per hour $Z_h$ = 3600 s / $t_{cycle}$ [1/h]")
     ax.set_ylabel("shock factor $f_s$ [–]")
-    ax.set_title("Shock factor against cycles per hour (source S5 table, read with errata E4)\n"
+    ax.set_title(textwrap.fill(f"Shock factor against cycles per hour: {table.source}", 90) + "\n"
                  "makers rate $T_{2B}$ for up to 1000 cycles per hour; $f_s$ covers more", fontsize=10)
     fig.legend(handles=handles, loc="outside lower center", ncols=1, fontsize=8, frameon=False)
     return fig

@@ -1,8 +1,9 @@
 """Calc reports as PDF: ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--summary]``.
 
-For each case the report notebook (``reports/calc-report.ipynb``) is executed by papermill with the
-case as its parameter, then exported by nbconvert through xelatex with the code hidden, using our
-LaTeX template (``reports/template/calc-report``). A progress bar runs over the cases; at the end
+For each case the report's blocks (:meth:`calc.report.Report.blocks`, what the report notebook
+``reports/calc-report.ipynb`` shows when run) become a notebook in this process, with no kernel,
+which nbconvert exports through xelatex with our LaTeX template (``reports/template/calc-report``).
+Several cases are built at a time (``-j``, default the number of cores). A progress bar runs over the cases; at the end
 one line per case gives its verdict and its PDF. A case that fails its checks, or cannot be
 evaluated, still gets its PDF (saying FAIL and why); only a PDF that cannot be built is an error.
 With ``--summary`` the output folder also gets ``summary.pdf`` and ``summary.csv``: one row per
@@ -13,7 +14,6 @@ from __future__ import annotations
 
 import shutil
 import sys
-import tempfile
 from pathlib import Path
 
 from .catalog import display_path, package_folder
@@ -83,10 +83,43 @@ def summary_rows(cases, output: str | None = None) -> list[dict]:
     return [summary_row(build_report(c), pdf) for c, pdf in zip(paths, output_paths(paths, str(summary_folder(paths, output))))]
 
 
+def _without_iri_grammars() -> None:
+    """Keep jsonschema (imported by nbformat) from compiling the IRI grammars of rfc3987_syntax,
+    when that is installed: some 40 of them, 2 s of CPU at every import, for a format check that
+    no notebook's schema uses. A process that imported jsonschema already keeps what it has."""
+    if "jsonschema" not in sys.modules:
+        sys.modules.setdefault("rfc3987_syntax", None)
+
+
+#: What xelatex writes to its log when a second pass would set the document differently (page
+#: references, longtable's column widths).
+RERUN = ("Rerun to get", "Rerun LaTeX", "Label(s) may have changed", "There were undefined references")
+
+
 def exporter():
-    """nbconvert's PDF exporter with our template, code and prompts hidden."""
+    """nbconvert's PDF exporter with our template, code and prompts hidden; xelatex runs until its
+    log asks for no further pass (two for most reports, where nbconvert always runs three), and
+    no bibtex (a report cites no bibliography)."""
+    _without_iri_grammars()
     from nbconvert import PDFExporter
+    from nbconvert.exporters.pdf import LatexFailed
     from traitlets.config import Config
+
+    class ReportPDF(PDFExporter):
+        def run_latex(self, filename, raise_on_failure=LatexFailed):
+            def log_error(command, out):
+                self.log.critical("%s failed: %s\n%s", command[0], command, out)
+
+            log = Path(filename).with_suffix(".log")
+            for _ in range(self.latex_count):
+                self.run_command(self.latex_command, filename, 1, log_error, raise_on_failure)
+                self.latex_log = log.read_text(encoding="utf-8", errors="replace")  # of the last pass: the tests read its overfull boxes
+                if not any(line in self.latex_log for line in RERUN):
+                    break
+            return True
+
+        def run_bib(self, filename, raise_on_failure=False):
+            return False
 
     c = Config()
     c.PDFExporter.extra_template_basedirs = TEMPLATE_DIRS
@@ -96,41 +129,55 @@ def exporter():
     c.PDFExporter.exclude_output_prompt = True
     c.TagRemovePreprocessor.enabled = True
     c.TagRemovePreprocessor.remove_cell_tags = {"remove"}
-    return PDFExporter(config=c)
+    return ReportPDF(config=c)
 
 
-def render_pdf(case: Path, pdf: Path, workdir: Path) -> None:
-    """Execute the report notebook for ``case`` and write its PDF to ``pdf``.
+def figure_pdf(figure) -> str:
+    """A matplotlib figure as vector PDF, base64 as a notebook output holds it (the figures lay
+    themselves out, so no tight bounding box: that would draw each one twice)."""
+    import base64
+    import io
 
-    The kernel talks over local sockets in ``workdir`` (IPC), not over TCP.
-    """
-    import papermill
-    from jupyter_client.manager import KernelManager
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format="pdf")
+    return base64.b64encode(buffer.getvalue()).decode("ascii")
+
+
+def report_notebook(report):
+    """The report's blocks (:meth:`calc.report.Report.blocks`) as the outputs of a notebook, the
+    notebook ``reports/calc-report.ipynb`` gives when run, built here without a kernel."""
+    _without_iri_grammars()
+    import nbformat
+
+    from .report import Latex
+
+    outputs = []
+    for shown, metadata in report.blocks():
+        if isinstance(shown, Latex):
+            if shown:
+                outputs.append(nbformat.v4.new_output("display_data", data={"text/latex": str(shown)}))
+        else:
+            outputs.append(nbformat.v4.new_output("display_data", data={"application/pdf": figure_pdf(shown), "text/plain": "figure"},
+                                                  metadata=metadata))
+    return nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(outputs=outputs)])
+
+
+def render_pdf(report, pdf: Path) -> None:
+    """Write the PDF of ``report`` (a :class:`calc.report.Report`) to ``pdf``."""
     from nbconvert.exporters.pdf import LatexFailed
 
-    executed = workdir / f"{pdf.stem}.ipynb"
-    km = KernelManager(kernel_name="python3", transport="ipc", ip=str(workdir / "kernel"))
     try:
-        nb = papermill.execute_notebook(
-            str(NOTEBOOK), str(executed), parameters={"case": str(case.resolve())},
-            cwd=str(NOTEBOOK.parent), progress_bar=False, log_output=False, kernel_name="python3", km=km,
-        )
-    except papermill.PapermillExecutionError as exc:
-        raise CalcError(f"{case}: the report notebook stopped: {exc.ename}: {exc.evalue}") from None
-    finally:
-        if km.has_kernel:  # a kernel manager handed to papermill is ours to shut down
-            km.shutdown_kernel()
-    try:
-        body, _ = exporter().from_notebook_node(nb, resources={"metadata": {"name": pdf.stem}})
+        body, _ = exporter().from_notebook_node(report_notebook(report), resources={"metadata": {"name": pdf.stem}})
     except LatexFailed as exc:
         tail = "\n".join(exc.output.splitlines()[-15:])
-        raise CalcError(f"{case}: xelatex could not typeset the report:\n{tail}") from None
+        raise CalcError(f"{display_path(report.path)}: xelatex could not typeset the report:\n{tail}") from None
     pdf.parent.mkdir(parents=True, exist_ok=True)
     pdf.write_bytes(body)
 
 
-def render_summary(rows: list[dict], reports: list, folder: Path) -> tuple[Path, Path]:
-    """Write ``summary.pdf`` and ``summary.csv`` of ``rows`` into ``folder``; the PDF goes through
+def render_summary(rows: list[dict], files: list, folder: Path) -> tuple[Path, Path]:
+    """Write ``summary.pdf`` and ``summary.csv`` of ``rows`` into ``folder`` (``files``: the files
+    each row's report rests on, for the title block); the PDF goes through
     the reports' own template (a notebook of one output, nothing executed)."""
     import nbformat
     from nbconvert.exporters.pdf import LatexFailed
@@ -140,7 +187,7 @@ def render_summary(rows: list[dict], reports: list, folder: Path) -> tuple[Path,
 
     pdf, table = folder / f"{SUMMARY}.pdf", folder / f"{SUMMARY}.csv"
     write_csv(rows, table)
-    latex = summary_latex(rows, reports, build_date(), git_commit())
+    latex = summary_latex(rows, files, build_date(), git_commit())
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(outputs=[
         nbformat.v4.new_output("display_data", data={"text/latex": str(latex)})])])
     try:
@@ -152,23 +199,56 @@ def render_summary(rows: list[dict], reports: list, folder: Path) -> tuple[Path,
     return pdf, table
 
 
-def main(cases: list[str], output: str | None = None, strict: bool = False, summary: bool = False) -> int:
-    """Build one PDF per case with a progress bar; print one line per case; with ``summary``, also
-    the summary's PDF and CSV in the output folder.
+def build_one(case: Path, pdf: Path) -> dict:
+    """Read, evaluate and typeset one case: its line for the terminal, its summary row, the files
+    its results rest on, and whether it is an input error or does not pass (plain data, so that
+    a worker process can hand it back)."""
+    from .report import build_report
+    from .report.summary import summary_row
+
+    report = build_report(case)
+    try:
+        render_pdf(report, pdf)
+    except CalcError as exc:
+        return {"line": f"ERROR {display_path(case)}: no PDF: {exc}", "row": summary_row(report, None), "files": report.files,
+                "input_error": True, "not_passing": False}
+    return {"line": f"{report.summary_line()}  ->  {pdf}", "row": summary_row(report, pdf), "files": report.files,
+            "input_error": report.error is not None, "not_passing": report.verdict.passes is not True}
+
+
+def built(paths: list[Path], pdfs: list[Path], jobs: int):
+    """:func:`build_one` of each case, in the order of the cases, ``jobs`` at a time (worker
+    processes forked from this one, which has the package imported already)."""
+    if jobs <= 1 or len(paths) <= 1:
+        yield from map(build_one, paths, pdfs)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(min(jobs, len(paths)), mp_context=multiprocessing.get_context("fork")) as pool:
+        yield from pool.map(build_one, paths, pdfs)
+
+
+def main(cases: list[str], output: str | None = None, strict: bool = False, summary: bool = False, jobs: int | None = None) -> int:
+    """Build one PDF per case, ``jobs`` at a time (default: the number of cores), with a progress
+    bar; print one line per case; with ``summary``, also the summary's PDF and CSV in the output folder.
 
     Exit status (``spec/case-format.md``): 2 when a case could not be read or a PDF could not be
     built (a report of an unreadable case is still written, saying why), else 1 with ``strict``
     when a verdict is not PASS, else 0."""
+    import os
+
     from tqdm import tqdm
 
-    from .report import build_report
-    from .report.summary import counts_text, summary_row
+    from .report.summary import counts_text
 
     paths = [Path(c) for c in cases]
     try:
         for p in paths:
             if not p.is_file():
                 raise CalcError(f"{p}: the case file does not exist")
+        if jobs is not None and jobs < 1:
+            raise CalcError(f"-j {jobs}: expected a number of parallel builds of 1 or more")
         if summary:
             output = str(summary_folder(paths, output))
         pdfs = output_paths(paths, output)
@@ -176,25 +256,14 @@ def main(cases: list[str], output: str | None = None, strict: bool = False, summ
     except CalcError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    lines, input_errors, not_passing, reports, rows = [], 0, 0, [], []
-    with tempfile.TemporaryDirectory(prefix="calc-report-") as tmp:
-        for case, pdf in zip(tqdm(paths, desc="calc reports", unit="case", file=sys.stderr), pdfs):
-            report = build_report(case)
-            try:
-                render_pdf(case, pdf, Path(tmp))
-            except CalcError as exc:
-                input_errors += 1
-                lines.append(f"ERROR {display_path(case)}: no PDF: {exc}")
-                pdf = None
-            else:
-                input_errors += report.error is not None
-                not_passing += report.verdict.passes is not True
-                lines.append(f"{report.summary_line()}  ->  {pdf}")
-            reports.append(report)
-            rows.append(summary_row(report, pdf))
+    done = list(tqdm(built(paths, pdfs, jobs or os.cpu_count() or 1), total=len(paths), desc="calc reports", unit="case", file=sys.stderr))
+    lines = [d["line"] for d in done]
+    rows = [d["row"] for d in done]
+    input_errors = sum(d["input_error"] for d in done)
+    not_passing = sum(d["not_passing"] for d in done)
     if summary:
         try:
-            written = render_summary(rows, reports, Path(output))
+            written = render_summary(rows, [d["files"] for d in done], Path(output))
         except CalcError as exc:
             input_errors += 1
             lines.append(f"ERROR no summary: {exc}")

@@ -15,11 +15,10 @@ from .error_sites import error_sites, site_at
 #: Sites that no input reaches, by file, function and message start (so that moved lines keep
 #: them): they report a failure of the report machinery itself. A case that cannot be evaluated
 #: gives a report saying FAIL and why, and every text set in TeX is escaped, so only a fault in
-#: the package (an exception other than CalcError in the notebook) or in the TeX installation
+#: the package (an exception other than CalcError while the report is built) or in the TeX installation
 #: gets here.
 NOT_FROM_INPUT = {
-    ("calc/publish.py", "render_pdf", "{case}: the report notebook stopped"),
-    ("calc/publish.py", "render_pdf", "{case}: xelatex could not typeset the report"),
+    ("calc/publish.py", "render_pdf", "{display_path(report.path)}: xelatex could not typeset the report"),
     ("calc/publish.py", "render_summary", "{pdf}: xelatex could not typeset the summary"),
     # A backstop of the JSON writer: inputs are held to calc.units.SI_SCALE, within which no formula overflows.
     ("calc/sections/common.py", "number", "{key}: the calculation overflows"),

@@ -320,10 +320,11 @@ def test_the_report_has_the_motor_and_the_ratio():
 
 def test_the_reports_inputs_list_the_motors_ratings_and_the_stop_torque(write_case):
     from calc.report import report_of
+    from calc.report.common import case_key
 
     extra = 'rated_torque = "4.5 N*m"\nmax_speed = "6000 rpm"'
     case = read_case(write_case(MOTOR.format(peak="12 N*m", extra=extra) + 'emergency_stop_torque = "200 N*m"\n' + PROFILE_TOML))
     inputs = report_of(case).inputs()
-    for key in ("motor.rated\\_torque", "motor.max\\_speed", "gearbox.emergency\\_stop\\_torque"):
-        assert key in inputs
+    for key in ("motor.rated_torque", "motor.max_speed", "gearbox.emergency_stop_torque"):
+        assert case_key(key) in inputs
     assert "T_{2,\\mathrm{stop}}" in inputs and "200" in inputs

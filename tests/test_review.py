@@ -114,7 +114,7 @@ def test_results_html_of_the_example(case):
     assert text.count("<thead><tr><th>rank</th>") == 2
     assert "True" not in text and "False" not in text
     # A check the catalog cannot decide says so, not FAIL (NPT035-10's row gives no F_2R).
-    assert '<span class="open">not made: the catalog gives no <i>F</i><sub>2R</sub></span>' in text and "<sub>hub,max</sub>" in text
+    assert '<span class="open">not checked: the catalog gives no <i>F</i><sub>2R</sub></span>' in text and "<sub>hub,max</sub>" in text
     # The motor's peak torque governs too: the typed cycle through NPT035-10 (i = 10, η = 0.97) needs
     # 60 N·m / (10 · 0.97) = 6.186 N·m at the motor (no rotor term), against T_1B = 12 N·m.
     assert '<td class="">motor</td>' in text and "6.186 N·m" in text

@@ -230,7 +230,7 @@ def test_many_rows_break_across_pages_with_the_header_repeated(tmp_path):
     texts["axis-07"] = texts["axis-07"].replace('"axis 7"', json.dumps(LONG_TITLE))
     cases = write_cases(tmp_path / "cases", **texts)
     rows = summary_rows(cases, str(tmp_path))
-    pdf, table = render_summary(rows, [build_report(c) for c in cases], tmp_path)
+    pdf, table = render_summary(rows, [build_report(c).files for c in cases], tmp_path)
     pages = pdf_text(pdf).split("\f")
     with_rows = [p for p in pages if re.search(r"^\s*axis \d+\s+(PASS|FAIL)", p, re.M)]
     assert len(with_rows) >= 2

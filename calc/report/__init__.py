@@ -30,8 +30,8 @@ from ..errors import CalcError
 from ..sections import Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
 from . import accuracy, coupling, drive, duty, gearbox, motion, motor, ratios
-from .common import ERRATA, results_of
-from .latex import Latex, itemize, latex_escape, prose, q, render, table, util
+from .common import ERRATA, INPUT_COLUMNS, rejected_in_full, results_of
+from .latex import Latex, itemize, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
 __all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
@@ -106,6 +106,16 @@ class Report:
             what = " ".join(self.reasons[:2])
         return f"{self.verdict.word}  {display_path(self.path)}: {what}"
 
+    def relative(self, text: str, escape=latex_escape) -> str:
+        """Text (LaTeX: ``escape``; plain text: ``str``) with the absolute path of the case file's
+        folder (and of the folder above it, where a case names ``../data/...``) written as the case
+        writes it, relative to its folder: a report never prints where on the building machine its
+        files were."""
+        folder = self.path.resolve().parent
+        for base, shown in ((folder, ""), (folder.parent, "../")):
+            text = text.replace(escape(f"{base}/"), shown)
+        return text
+
     # -- the blocks, in the order of the report ------------------------------------------------
 
     def front_page(self) -> Latex:
@@ -128,7 +138,8 @@ class Report:
         ]
         return Latex(render(
             "front-page.tex.j2", title=self.title, case=display_path(self.path), word=self.verdict.word, passes=self.passes,
-            governing=self._governing_lines(), reasons=[rf"\item {render_reason(r)}" for r in self.reasons], chosen=chosen,
+            governing=self._governing_lines(), chosen=chosen,
+            reasons=[rf"\item {render_reason(r)}" for r in self.reasons],
             title_block=table(r"@{}l p{0.78\linewidth}@{}", ["Item", "Value"], rows),
         ))
 
@@ -147,9 +158,9 @@ class Report:
             for k in checks:
                 if not k.get("governs", True):
                     continue
-                crit = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+                crit = prose(k.get("criterion") or k["name"])
                 if k.get("passes") is None:
-                    lines.append(rf"{latex_escape(owner)}: {crit}: not checked: {latex_escape(k.get('not_made') or 'no rating')}")
+                    lines.append(rf"{latex_escape(owner)}: {crit}: {verdict_mark(None, k.get('not_made') or 'no rating')}")
                     continue
                 reached, limit = (k["required"], k["rated"]) if "rated" in k else (k["value"], k["required"])
                 lines.append(rf"{latex_escape(owner)}: {crit}: {q(reached)} against {q(limit)}, utilization {util(k['utilization'])}")
@@ -175,7 +186,7 @@ class Report:
         out = [r"\section{Inputs}"]
         rows = _parts("input_rows", self)
         if rows:
-            out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
+            out.append(table(INPUT_COLUMNS, ["Symbol", "Value", "Unit", "Description", "Case key"], rows))
         return Latex("\n".join(out + _parts("inputs", self)))
 
     def calculations(self) -> Latex:
@@ -214,6 +225,20 @@ class Report:
         if not self.results:
             return Latex("")
         return Latex(render("order.tex.j2", lines=_parts("order_lines", self)))
+
+    def appendix(self) -> Latex:
+        """Every rejected candidate with its reasons, where the candidates' pages show only the closest."""
+        out = [x for m in BLOCKS if (s := results_of(m.NAME, self)) and s.get("candidates") for x in rejected_in_full(m.NAME, s)]
+        return Latex("\n".join([r"\clearpage\appendix\section{Rejected candidates}", *out]) if out else "")
+
+    def blocks(self) -> list[tuple[object, dict]]:
+        """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:
+        LaTeX blocks, and each figure with its caption. The report notebook displays them; the PDF
+        is built from them in this process (:mod:`calc.publish`), so both give the same content."""
+        out = [(Latex(self.relative(b())), {}) for b in (self.front_page, self.method, self.inputs, self.calculations,
+                                                         self.section_results, self.checks, self.candidates, self.figures_heading)]
+        out += [(figure, {"caption": self.relative(caption)}) for figure, caption in self.figures()]
+        return out + [(Latex(self.relative(b())), {}) for b in (self.order_lines, self.appendix)]
 
 
 def build_report(case_path) -> Report:

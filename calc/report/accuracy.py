@@ -119,8 +119,8 @@ def figures(report) -> list:
             model = model_for_part(part, str(sel.catalog.path))
             loop = model.loop(800)
             out.append((hysteresis_figure(loop, analyze_loop(loop, model.nominal_torque)),
-                        latex_escape(f"Hysteresis loop of {part} modelled from its catalog figures (C_t21, backlash, T_2N), "
-                                     "not a measurement (E12).")))
+                        prose(f"Hysteresis loop of {part} modelled from its catalog figures (C_t21, backlash, T_2N), "
+                              "not a measurement (E12).")))
     if spec is not None:
         for name, (path, analysis) in spec.traces.items():
             out.append((transmission_error_figure(analysis), latex_escape(f"Transmission error of {name}, from {path}.")))

@@ -18,7 +18,7 @@ from pathlib import Path
 from ..formula import REGISTRY
 from ..gearbox import inertia_ratio
 from ..units import pretty_unit, sig
-from .latex import itemize, latex_escape, prose, q, table, text_math, util, value_unit, verdict_mark
+from .latex import breakable, itemize, latex_escape, prose, q, sources_list, table, util, value_unit, verdict_mark
 
 _METHOD = tomllib.loads((Path(__file__).parent / "errata.toml").read_text(encoding="utf-8"))
 #: The sections of the source document each section of a case is computed from.
@@ -56,11 +56,20 @@ def gearbox_symbols() -> dict:
     return {s.name: s for f in REGISTRY if f.key.startswith(own) for s in (f.result, *f.inputs)}
 
 
+#: The columns of an inputs table: symbol, value, unit, description, case key (which may break after a dot or underscore).
+INPUT_COLUMNS = r"@{}l r l p{0.36\linewidth} p{0.27\linewidth}@{}"
+
+
+def case_key(key: str) -> str:
+    """A case key in an inputs table: code, breakable."""
+    return rf"\texttt{{\footnotesize {breakable(key)}}}"
+
+
 def input_row(symbol, quantity, key: str) -> list[str]:
     """A row of the inputs table: symbol, value, unit, description, case key."""
     unit = symbol.unit
     return [f"${symbol.latex}$", sig(quantity.m_as(unit)), latex_escape(pretty_unit(unit)) or "–",
-            latex_escape(symbol.description), rf"\texttt{{\footnotesize {latex_escape(key)}}}"]
+            latex_escape(symbol.description), case_key(key)]
 
 
 def checks_table(candidate: dict, caption: str) -> str:
@@ -70,20 +79,20 @@ def checks_table(candidate: dict, caption: str) -> str:
     rows = []
     for k in candidate["checks"]:
         grey = "" if k.get("governs", True) else r"\color{infogrey}"
-        name = text_math(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
+        name = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
         cells = [grey + name] + ([grey + latex_escape(k.get("mode", ""))] if modes else [])
         cells += [grey + q(k["required"]), grey + q(k["rated"]), grey + util(k["utilization"]),
-                  grey + verdict_mark(k["passes"]) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)")]
+                  grey + verdict_mark(k["passes"], k.get("not_made")) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)")]
         rows.append(cells)
     header = ["Criterion"] + (["Mode"] if modes else []) + ["Required", "Rated", "Utilization", "Verdict"]
-    return table("@{}l " + ("l " if modes else "") + "r r r l@{}", header, rows, caption=latex_escape(caption),
+    return table("@{}l " + ("l " if modes else "") + r"r r r >{\raggedright\arraybackslash}p{0.24\linewidth}@{}", header, rows,
+                 caption=latex_escape(caption), small=True,
                  note="Utilization = required / rated; a check passes at 1.00 or below.")
 
 
 def requirement_table(checks: list, caption: str) -> str:
     """Checks of a value reached against a limit the case requires (``value <= required``)."""
-    rows = [[prose(k["criterion"].replace("_", " ")), (r"$\geq$ " if k["passes"] is None else "") + q(k["value"]), q(k["required"]),
-             util(k["utilization"]), verdict_mark(k["passes"]) if k["passes"] is not None else prose("not made: " + k.get("not_made", ""))]
+    rows = [[prose(k["criterion"]), q(k["value"]), q(k["required"]), util(k["utilization"]), verdict_mark(k["passes"], k.get("not_made"))]
             for k in checks]
     return table(r"@{}l r r r l@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
                  caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")
@@ -95,7 +104,7 @@ def candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
     names = list(dict.fromkeys(k["name"] for k in checks))  # every check any candidate has, in order
     governs = {k["name"]: k.get("governs", True) for k in checks}
     header = ["Part"] + [
-        (r"\color{infogrey}" if not governs[n] else "") + text_math(n) for n in names
+        (r"\color{infogrey}" if not governs[n] else "") + prose(n) for n in names
     ] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
     rows = []
     for c in section["candidates"]:
@@ -108,19 +117,39 @@ def candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
         rows.append(cells)
     cols = "@{}l " + "r " * (len(names) + (1 if inertia else 0)) + "l@{}"
     criteria = {k["name"]: k.get("criterion") for c in section["candidates"] for k in c.get("checks", [])}
-    note = "Checks: " + "; ".join(text_math(criteria[n]) if criteria.get(n) else latex_escape(n) for n in names) + "."
+    note = "Checks: " + "; ".join(prose(criteria[n]) if criteria.get(n) else latex_escape(n) for n in names) + "."
     if inertia:
         note += rf" ${inertia_ratio.latex()}$, load to motor inertia ratio (E6)."
-    return table(cols, header, rows, caption=caption, note=note)
+    return table(cols, header, rows, caption=caption, note=note, small=True, narrow=True)
+
+
+#: Rejected candidates whose reasons a report lists where they are ranked, closest first; the
+#: appendix lists all (:func:`rejected_in_full`), as the JSON does.
+SHOWN_REJECTIONS = 5
+
+
+def _rejections(section: dict) -> list[str]:
+    return [rf"\textbf{{{latex_escape(c['part'])}}}: {prose('; '.join(c['reasons']))}" for c in section["candidates"] if c.get("reasons")]
 
 
 def rejected(section: dict) -> list[str]:
-    """Why the rejected candidates fail, one item each; nothing when none is."""
-    out = [c for c in section["candidates"] if c.get("reasons")]
-    if not out:
+    """Why the closest rejected candidates fail, one item each, and how many more the appendix
+    lists; nothing when none is rejected."""
+    items = _rejections(section)
+    if not items:
         return []
-    items = [rf"\textbf{{{latex_escape(c['part'])}}}: {prose('; '.join(c['reasons']))}" for c in out]
-    return [r"\paragraph{Why the others are rejected.}" + itemize(items)]
+    more = len(items) - SHOWN_REJECTIONS
+    tail = [rf"\emph{{and {more} more, each with its reasons in the appendix}}"] if more > 0 else []
+    return [r"\paragraph{Why the others are rejected (the closest first).}" + itemize(items[:SHOWN_REJECTIONS] + tail)]
+
+
+def rejected_in_full(name: str, section: dict) -> list[str]:
+    """Every rejected candidate of a section with its reasons, where the report shows only the
+    closest (:data:`SHOWN_REJECTIONS`)."""
+    items = _rejections(section)
+    if len(items) <= SHOWN_REJECTIONS:
+        return []
+    return [rf"\subsection*{{Every rejected {latex_escape(name)} candidate, closest first}}", r"{\small" + itemize(items) + "}"]
 
 
 def raw_section_tables(name: str, raw: dict, symbols: dict, keys: dict, derived: dict) -> str:
@@ -137,13 +166,13 @@ def raw_section_tables(name: str, raw: dict, symbols: dict, keys: dict, derived:
         sym_name, desc = keys.get(key, (None, ""))
         sym = symbols.get(sym_name)
         value, unit = value_unit(v)
-        where = rf"\texttt{{{latex_escape(f'{name}.{key}')}}}" + (r"\textsuperscript{\dag}" if key in derived else "")
+        where = case_key(f"{name}.{key}") + (r"\textsuperscript{\dag}" if key in derived else "")
         rows.append([f"${sym.latex}$" if sym else "–", value, unit, latex_escape(sym.description if sym else desc), where])
     out = [rf"\subsection*{{{latex_escape(name.capitalize())}}}"]
     if rows:
         note = (r"\textsuperscript{\dag} Not in the case file: taken from the rest of the case (a coupling between "
                 r"motor and gearbox, E8); the calculations show how.") if derived else ""
-        out.append(table(r"@{}l r l p{0.38\linewidth} l@{}", ["Symbol", "Value", "Unit", "Description", "Case key"], rows, note=note))
+        out.append(table(INPUT_COLUMNS, ["Symbol", "Value", "Unit", "Description", "Case key"], rows, note=note))
     if members:
         body = []
         for key, k, x in members:
@@ -190,9 +219,9 @@ def further_candidates(name: str, report) -> list[str]:
         return []
     listed = s["candidates"]
     doubts = [f"{c['part']}: {c['unclear']}" for c in listed if c.get("unclear")]
-    sources = sorted({c["source"] for c in listed if c.get("source")})
-    notes = ([r"\noindent Doubtful figures of the rows listed: " + latex_escape("; ".join(doubts)) + r"\par"] if doubts else []) + (
-        [r"\noindent{\footnotesize Sources of the rows listed: " + latex_escape("; ".join(sources)) + r"\par}"] if sources else [])
+    _, source_list = sources_list(c["source"] for c in listed if c.get("source"))
+    notes = ([r"\noindent Doubtful figures of the rows listed: " + breakable("; ".join(doubts)) + r"\par"] if doubts else []) + (
+        [r"\paragraph{Sources of the rows listed.}" + source_list] if source_list else [])
     return [rf"\subsection*{{{name.capitalize()}}}",
             candidates_table(s, latex_escape(f"Utilization of each check of the {name} candidates, best first")),
             *notes, *rejected(s)]

@@ -66,13 +66,7 @@ def steps(report) -> list[str]:
     part = latex_escape(str(cat.parts[row]))
     chosen = "the chosen coupling" if sel.selected else "the closest candidate (none passes)"
     out = [r"\subsection{Coupling: nominal torque and resonance}"]
-    if "load_inertia" in _derived_inputs(report, report.case.sections[NAME]) and report.selection is not None:
-        g = report.selection.catalog
-        k = int(report.selection.order[0])
-        out.append(step_block(
-            f"Load inertia seen by the coupling, through {latex_escape(str(g.parts[k]))}",
-            cp.J_load_at_input.step(J_L=report.case.load_inertia, i=g["ratio"][k], J_1=g["J_1"][k]),
-        ))
+    out += [step_block(title, step) for title, step in cc.steps]  # as the section computed them
     if sel.not_made:
         # The case lacks what M_N and f_e need (the contract's partial cases): no step to show.
         return out + [latex_escape(f"Not checked: {c.text}, {c.not_made}.") + "\n" for c in sel.not_made]

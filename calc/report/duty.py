@@ -3,9 +3,11 @@ with the shock factor, and the figures of the cycle and of the shock factor."""
 
 from __future__ import annotations
 
+import dataclasses
+
 from ..gearbox import SHOCK_FACTORS
-from ..profile import ED, T_2m, Z_h, n_2m
 from ..profile import t_k as t_k_symbol
+from ..sections import duty as sections_duty
 from ..units import sig
 from .common import gearbox_symbols, nothing
 from .latex import latex_escape, num, render, step_block, table
@@ -39,29 +41,35 @@ def inputs(report) -> list[str]:
     )]
 
 
+def _result(report):
+    return report.evaluated[sections_duty.NAME]
+
+
 def steps(report) -> list[str]:
-    p = report.case.profile
-    seg = p.moving_values()
-    s_zh = Z_h.step(t_cycle=p.t_cycle)
+    d = _result(report)
+    (t_ed, ed), (t_n, n2m), (t_t, t2m), (t_z, zh) = d.steps
     return [
         r"\subsection{Duty cycle and operating mode}",
-        step_block("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle), f"operating mode {report.results['duty']['mode']} (E3)"),
+        step_block(t_ed, ed, f"operating mode {d.duty.mode} (E3)"),
         r"\subsection{Continuous operation (S1)}",
-        step_block("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),
-        step_block("Cubic mean output torque", T_2m.step(**seg)),
+        step_block(t_n, n2m),
+        step_block(t_t, t2m),
         r"\subsection{Cycle operation (S5)}",
-        step_block("Cycles per hour", s_zh),
-        shock_factor_block(s_zh.result, SHOCK_FACTORS if report.case.shock_factors is None else report.case.shock_factors),
+        step_block(t_z, zh),
+        shock_factor_block(zh.result, d.shock_factors),
     ]
 
 
 def figures(report) -> list:
     from ..plots import load_cycle_figure, shock_factor_figure
 
-    p = report.case.profile
+    if report.evaluated is None:
+        return []
+    d = _result(report)
+    shown = dataclasses.replace(d.shock_factors, source=report.relative(d.fs_table, str))  # the case's table, its path as the case names it
     return [
-        (load_cycle_figure(p), "Load cycle at the gearbox output, with ED and the operating mode (E3)."),
-        (shock_factor_figure(Z_h(t_cycle=p.t_cycle)), "Shock factor against cycles per hour; the case's point marked (E4)."),
+        (load_cycle_figure(d.profile), "Load cycle at the gearbox output, with ED and the operating mode (E3)."),
+        (shock_factor_figure(d.Zh, shown), latex_escape(f"Shock factor against cycles per hour ({shown.source}); the case's point marked (E4).")),
     ]
 
 

@@ -6,12 +6,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..gearbox import M_2k, T_2max, inertia_ratio, n_1
-from ..profile import n_2m
-from ..units import Q_, sig
+from ..units import sig
 from . import common
-from .common import candidates_table, checks_table, gearbox_symbols, input_row, nothing, rejected, results_of
-from .latex import latex_escape, num, step_block, table
+from .common import candidates_table, case_key, checks_table, gearbox_symbols, input_row, nothing, rejected, results_of
+from .latex import breakable, latex_escape, num, prose, sources_list, stacked, step_block, table
 
 NAME = "gearbox"
 
@@ -30,13 +28,13 @@ def input_rows(report) -> list[list[str]]:
     c = report.case
     rows = [input_row(gearbox_symbols()["i"], c.ratio, "gearbox.ratio")] if c.ratio is not None else []
     if c.gearbox_part:
-        rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", r"\texttt{\footnotesize gearbox.part}"])
+        rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", case_key("gearbox.part")])
     if c.gearbox_catalog and (c.ratio is not None or c.gearbox_part):
         names = c.gearbox_catalog if isinstance(c.gearbox_catalog, list) else [c.gearbox_catalog]
         rows.append(["–", latex_escape(", ".join(names)), "–", "gearbox catalog" + ("s, ranked together" if len(names) > 1 else ""),
-                     r"\texttt{\footnotesize gearbox.catalog}"])
+                     case_key("gearbox.catalog")])
     if c.motor_shaft is not None:
-        rows.append(["–", latex_escape(c.motor_shaft.text), "–", "motor shaft: picks the clamping hub of $J_1$", r"\texttt{\footnotesize motor.shaft}"])
+        rows.append(["–", latex_escape(c.motor_shaft.text), "–", prose("motor shaft: picks the clamping hub of J_1"), case_key("motor.shaft")])
     load = c.output_load
     if load is not None:
         for key, q, what in (("axial_force", load.axial_force, "axial force on the output, F_2a"),
@@ -44,42 +42,18 @@ def input_rows(report) -> list[list[str]]:
                              ("lever_arm", load.lever_arm, "lever arm of F_2r from the output flange, x_2"),
                              ("axial_force_radius", load.axial_radius, "distance of F_2a from the axis, y_2")):
             if q is not None:
-                rows.append(["–", latex_escape(f"{q:~P}"), "–", latex_escape(what), r"\texttt{\footnotesize load." + latex_escape(key) + "}"])
+                rows.append(["–", latex_escape(f"{q:~P}"), "–", prose(what), case_key(f"load.{key}")])
     return rows
 
 
 def steps(report) -> list[str]:
+    """The best-ranked row's checks as the gearbox section computed them."""
     sel = report.selection
     if sel is None:
         return []
-    p, fs = report.case.profile, report.results["cyclic"]["fs"]
-    row = int(sel.order[0])
-    cat = sel.catalog
-    i = cat["ratio"][row]
     chosen = "the chosen gearbox" if sel.selected else "the closest candidate (none passes)"
-    out = [rf"\subsection{{Checks of {chosen}, {latex_escape(str(cat.parts[row]))}}}"]
-    n2m = n_2m(**{k: v for k, v in p.moving_values().items() if k != "T_2k"})
-    out.append(step_block("Input speed at the mean output speed (S1)", n_1.step(n_2=n2m, i=i), "compared with n_1N"))
-    out.append(step_block("Input speed at the highest output speed (S5)", n_1.step(n_2=p.n_2max, i=i), "compared with n_1max"))
-    if report.case.motor_peak_torque is not None:
-        out.append(step_block("Maximum output torque", T_2max.step(T_1B=report.case.motor_peak_torque, i=i, f_s=Q_(fs, ""),
-                                                                  eta=cat["eta"][row]), "compared with T_2B"))
-    if sel.inertia_ratio is not None and not np.isnan(sel.J_1[row].magnitude):
-        hub = sel.J_1_hub[row]
-        which = "errata E6" + ("" if np.isnan(hub.magnitude) else f"; J_1 for the {sig(hub.m_as('mm'))} mm clamping hub")
-        out.append(step_block("Load to motor inertia ratio", inertia_ratio.step(
-            J_1=sel.J_1[row], J_L=report.case.load_inertia, i=i, J_motor=report.case.motor_inertia), which))
-    load = report.case.output_load
-    if load is not None:
-        zero, z_2 = Q_(0.0, "mm"), cat["z_2"][row]
-        out.append(step_block("Tilting moment on the output bearing", M_2k.step(
-            F_2a=load.axial_force if load.axial_force is not None else Q_(0.0, "N"),
-            y_2=load.axial_radius if load.axial_radius is not None else zero,
-            F_2r=load.radial_force if load.radial_force is not None else Q_(0.0, "N"),
-            x_2=load.lever_arm if load.lever_arm is not None else zero,
-            z_2=zero if np.isnan(z_2.magnitude) else z_2,
-        ), "compared with M_2K; WITTENSTEIN's form" + ("; z_2 = 0, the catalog gives none" if np.isnan(z_2.magnitude) else "")))
-    return out
+    out = [rf"\subsection{{Checks of {chosen}, {latex_escape(str(sel.catalog.parts[int(sel.order[0])]))}}}"]
+    return out + [step_block(title, step, note) for title, step, note in report.evaluated[NAME].steps]
 
 
 def checks(report) -> list[str]:
@@ -101,6 +75,7 @@ def candidates(report) -> list[str]:
     several = len(cat.members) > 1
     family, size, unclear = cat.family, cat.text_or_blank("size"), cat.text_or_blank("unclear")
     best = sel.best_of_family
+    numbers, source_list = sources_list(str(cat.text["source"][r]) for r in sel.order)
     rows = []
     for r in sel.order:
         illustrative |= bool(cat.illustrative[r])
@@ -115,20 +90,24 @@ def candidates(report) -> list[str]:
             num(cat["T_2N"][r], "N*m"), num(cat["T_2B"][r], "N*m"),
             num(cat["n_1N"][r], "rpm"), num(cat["n_1max"][r], "rpm"),
             num(cat["eta"][r], "percent"),
-            "–" if np.isnan(j1.magnitude) else num(j1, "kg*cm**2") + ("" if np.isnan(hub.magnitude) else f" ({sig(hub.m_as('mm'))} mm)"),
+            "–" if np.isnan(j1.magnitude) else num(j1, "kg*cm**2"),
+            "–" if np.isnan(hub.magnitude) else sig(hub.m_as("mm")),
+            f"[{numbers[str(cat.text['source'][r])]}]",
         ])
-    sources = sorted({str(cat.text["source"][r]) for r in sel.order})
-    note = r"$\star$ smallest adequate size of its family. $J_1$ for the clamping hub in brackets. Sources: " + "; ".join(latex_escape(s) for s in sources)
+    note = r"$\star$ smallest adequate size of its family. $J_1$ for the clamping hub of bore $d_{\mathrm{hub}}$. Sources by number below."
     if doubts:
-        note = "".join(rf"$^{{\dagger{k}}}$ doubtful figures of {latex_escape(d)}. " for k, d in enumerate(doubts, start=1)) + note
+        note = "".join(rf"$^{{\dagger{k}}}$ doubtful figures of {breakable(d)}. " for k, d in enumerate(doubts, start=1)) + note
     if illustrative:
         note = r"$^{*}$ illustrative row: not a maker's own figures. " + note
     return [
         table(
-            r"@{}l l r r r r r r@{}",
-            ["Part", "Family, size", "$T_{2N}$ [N·m]", "$T_{2B}$ [N·m]", "$n_{1N}$ [rpm]", "$n_{1\\mathrm{max}}$ [rpm]", r"$\eta$ [\%]", "$J_1$ [kg·cm²]"],
-            rows, caption=latex_escape(f"Catalog ratings of the candidates ({g['catalog']}), best first"), note=note,
+            r"@{}l l r r r r r r r r@{}",
+            ["Part", "Family, size", *(stacked(symbol, f"[{unit}]") for symbol, unit in (
+                ("$T_{2N}$", "N·m"), ("$T_{2B}$", "N·m"), ("$n_{1N}$", "rpm"), (r"$n_{1\mathrm{max}}$", "rpm"), (r"$\eta$", r"\%"),
+                ("$J_1$", "kg·cm²"), (r"$d_{\mathrm{hub}}$", "mm"))), "Src."],
+            rows, caption=latex_escape(f"Catalog ratings of the candidates ({g['catalog']}), best first"), note=note, small=True, narrow=True,
         ),
+        r"\paragraph{Sources of the rows.}" + source_list,
         candidates_table(g, f"Utilization of each check (required / rated), {g['mode']} governs; "
                             "checks in grey are for information", inertia=True),
         *rejected(g),

@@ -10,8 +10,11 @@ from pathlib import Path
 import jinja2
 import numpy as np
 
+from ..checks import within_rating
 from ..formula import Step
 from ..units import NUMBER, pretty_unit, sig
+from .symbols import latex as prose
+from .symbols import latex_escape
 
 
 class Latex(str):
@@ -19,49 +22,6 @@ class Latex(str):
 
     def _repr_latex_(self):
         return str(self)
-
-
-_SPECIAL = {
-    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
-    "^": r"\textasciicircum{}", "_": r"\_", "%": r"\%", "~": r"\textasciitilde{}",
-}
-_LIGATURE = re.compile(r"(?<=[-`',<>!?])(?=[-`',<>!?])")
-
-
-def latex_escape(text) -> str:
-    r"""Text as LaTeX that prints exactly as written.
-
-    The ten special characters are escaped, line breaks become spaces, and ``{}`` is put between
-    characters that TeX would join (``--`` into a dash, ``''`` into a quote).
-
-    >>> print(latex_escape("Axis #3 — 50% load & T_2 {v2} \\ 100$"))
-    Axis \#3 — 50\% load \& T\_2 \{v2\} \textbackslash{} 100\$
-    >>> print(latex_escape("a--b"))
-    a-{}-b
-    """
-    out = "".join(_SPECIAL.get(c, c) for c in " ".join(str(text).splitlines()))
-    return _LIGATURE.sub("{}", out)
-
-
-_SYMBOL = re.compile(r"\b(phi|eta|lambda|[A-Za-z])_([A-Za-z0-9]+(?:,[A-Za-z]+)?)\b")  # d_hub,max whole
-_GREEK = {"phi": r"\varphi", "eta": r"\eta", "lambda": r"\lambda"}
-
-
-def prose(text: str) -> str:
-    """Our own running text (readings, assumptions, reasons) as LaTeX: escaped, with each symbol
-    written as in code (``n_2m``, ``J_motor``) set in math and ``<=``, ``>=`` as ≤, ≥.
-
-    >>> print(prose("n_2m · i <= n_1N, 100%"))
-    $n_{\\mathrm{2m}}$ · i ≤ $n_{\\mathrm{1N}}$, 100\\%
-    >>> print(prose("d_motor <= d_hub,max"))
-    $d_{\\mathrm{motor}}$ ≤ $d_{\\mathrm{hub,max}}$
-    """
-    out, last = [], 0
-    text = text.replace("<=", "≤").replace(">=", "≥")
-    for m in _SYMBOL.finditer(text):
-        out += [latex_escape(text[last:m.start()]), rf"${_GREEK.get(m.group(1), m.group(1))}_{{\mathrm{{{m.group(2)}}}}}$"]
-        last = m.end()
-    return "".join(out) + latex_escape(text[last:])
 
 
 _TEMPLATES = jinja2.Environment(
@@ -78,12 +38,6 @@ def render(template: str, **values) -> str:
     """A template of ``templates/`` filled in; values are LaTeX already (the templates escape
     what they take as text with the ``escape_latex`` and ``prose`` filters)."""
     return _TEMPLATES.get_template(template).render(**values)
-
-
-def text_math(text: str) -> str:
-    """A criterion written in plain text (``n_2m · i <= n_1N``) as LaTeX math."""
-    out = re.sub(r"\b([A-Za-z])_([A-Za-z0-9]+)", r"\1_{\\mathrm{\2}}", text)
-    return "$" + out.replace("<=", r"\le").replace(">=", r"\ge").replace("·", r"\cdot") + "$"
 
 
 def signed(text: str) -> str:
@@ -109,20 +63,44 @@ def num(quantity, unit: str) -> str:
 
 
 def util(u) -> str:
-    """A utilization, in bold red above 1."""
+    """A utilization, in bold red where it fails the one pass rule (:func:`calc.checks.within_rating`)."""
     if u is None or (isinstance(u, float) and np.isnan(u)):
         return "no rating"
     text = f"{u:.2f}"
-    return rf"\textcolor{{failred}}{{\textbf{{{text}}}}}" if u > 1 else text
+    return text if within_rating(u) else rf"\textcolor{{failred}}{{\textbf{{{text}}}}}"
 
 
-def verdict_mark(passes: bool) -> str:
+def verdict_mark(passes: bool | None, not_made: str | None = None) -> str:
+    """PASS or FAIL; a check not made (``passes`` None) as not checked, with its reason."""
+    if passes is None:
+        return r"\notchecked" + (rf"{{}} {{\footnotesize {prose(not_made)}}}" if not_made else "")
     return r"\pass" if passes else r"\fail"
 
 
 def listed(value) -> str:
     """A list as ``a, b``; anything else as its text."""
     return ", ".join(map(str, value)) if isinstance(value, (list, tuple)) else str(value)
+
+
+def breakable(text: str, escape=latex_escape) -> str:
+    """Text as LaTeX (``escape``) that may break after a slash, an underscore or an ampersand
+    (paths, addresses and case keys in narrow columns and notes)."""
+    out = escape(text)
+    for c in ("/", r"\&", r"\_"):
+        out = out.replace(c, c + r"\allowbreak{}")
+    return out
+
+
+def stacked(*lines: str) -> str:
+    """Lines set one above the other in one table cell (a column's symbol over its unit)."""
+    return r"\begin{tabular}[b]{@{}c@{}}" + r" \\ \relax ".join(lines) + r"\end{tabular}"  # \relax: a line may start with [
+
+
+def sources_list(sources) -> tuple[dict, str]:
+    """Each source once, numbered in the order given: the number of each, and the list as LaTeX."""
+    numbers = {s: k for k, s in enumerate(dict.fromkeys(sources), start=1)}
+    items = "".join(rf"\item[{{[{k}]}}] {breakable(s)}" for s, k in numbers.items())
+    return numbers, (r"{\footnotesize\begin{description}\setlength{\itemsep}{0pt}" + items + r"\end{description}}") if numbers else ""
 
 
 def itemize(items) -> str:
@@ -140,17 +118,20 @@ def value_unit(value) -> tuple[str, str]:
     return latex_escape(value), "–"
 
 
-def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "", small: bool = False) -> str:
+def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "", small: bool = False,
+          narrow: bool = False) -> str:
     """A booktabs longtable: a long one breaks across pages with its header repeated, a short one
     (up to 15 rows) stays on one page. Cells are LaTeX already; the note goes below the table.
-    Only captioned tables are numbered (longtable counts every one)."""
+    Only captioned tables are numbered (longtable counts every one). ``small`` sets it in a
+    smaller type, ``narrow`` with less space between columns (tables of many columns, to fit the
+    text width)."""
     end = r" \\*" if len(rows) <= 15 else r" \\"
     return render(
         "table.tex.j2",
         columns=re.sub(r"(?<!})p\{", r">{\\raggedright\\arraybackslash}p{", columns),  # no stretched words
         head=" & ".join(rf"\textbf{{{h}}}" for h in header) + r" \\",
         body="\n".join(" & ".join(r) + end for r in rows),
-        caption=caption, note=note, small=small,
+        caption=caption, note=note, small=small, narrow=narrow,
     )
 
 

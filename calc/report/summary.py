@@ -15,7 +15,7 @@ from pathlib import Path
 
 from ..catalog import display_path
 from ..sections import Verdict
-from .latex import Latex, latex_escape, prose, render, table, util
+from .latex import Latex, breakable, latex_escape, prose, render, table, util
 from .provenance import PACKAGE
 
 #: The sections whose chosen part a row names, in the order of the columns.
@@ -108,15 +108,10 @@ def write_csv(rows: list[dict], path: Path) -> None:
                           r["report"] or "", r["reason"] or ""])
 
 
-def _breakable(text: str, escape=latex_escape) -> str:
-    """Text as LaTeX (``escape``) that may break after a slash (long paths in narrow columns)."""
-    return escape(text).replace("/", r"/\allowbreak{}")
-
-
 def _report_link(name: str | None) -> str:
     if name is None:
         return r"\textcolor{failred}{not built}"
-    shown = rf"\texttt{{\footnotesize {_breakable(name)}}}"
+    shown = rf"\texttt{{\footnotesize {breakable(name)}}}"
     return rf"\href{{{name}}}{{{shown}}}" if _LINKABLE.fullmatch(name) else shown
 
 
@@ -127,11 +122,11 @@ def _verdict_cell(row: dict) -> str:
 
 
 def _case_cell(row: dict) -> str:
-    out = rf"{latex_escape(row['title'])}\newline\texttt{{\footnotesize {_breakable(row['case'])}}}"
+    out = rf"{latex_escape(row['title'])}\newline\texttt{{\footnotesize {breakable(row['case'])}}}"
     worst = row["worst"]
     if row["reason"] and (row["error"] or worst is None or worst["utilization"] <= 1):  # else the worst check says why
         colour = "failred" if row["passes"] is False else "infogrey"
-        reason = _breakable(row["reason"], latex_escape if row["error"] else prose)  # an error quotes the case as written
+        reason = breakable(row["reason"], latex_escape if row["error"] else prose)  # an error quotes the case as written
         out += rf"\newline{{\footnotesize\color{{{colour}}} {reason}}}"
     return out
 
@@ -148,14 +143,14 @@ def _worst_cell(row: dict) -> str:
     if w is None:
         return "–"
     where = " ".join(latex_escape(x) for x in (w["section"], w["part"]) if x)
-    check = prose(w["check"] if w["part"] else w["check"].replace("_", " "))  # a section's own check: words
+    check = prose(w["check"])
     return rf"{util(w['utilization'])}\newline{{\footnotesize {where}: {check}}}"
 
 
-def summary_latex(rows: list[dict], reports: list, built: str, commit: str) -> Latex:
+def summary_latex(rows: list[dict], files_read: list, built: str, commit: str) -> Latex:
     """The summary PDF's content: heading, the count of each verdict, the table of cases and the
     title block (each case file and catalog read, with its SHA-256; build date, package, commit).
-    ``reports`` are the rows' :class:`calc.report.Report` objects, for the files they read."""
+    ``files_read`` are the files each row's report rests on (:attr:`calc.report.Report.files`)."""
     body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r), _verdict_cell(r), *(_part_cell(r, n) for n in CHOSEN),
              _worst_cell(r), _report_link(r["report"])] for k, r in enumerate(rows)]  # rows of several lines set apart
     cases = table(
@@ -166,12 +161,12 @@ def summary_latex(rows: list[dict], reports: list, built: str, commit: str) -> L
              "Each report's file name links to it, in the folder of this summary.",
     )
     files = {}  # path text -> (label, sha256): each file once, in the order read
-    for report in reports:
-        for label, path, digest in report.files:
+    for each in files_read:
+        for label, path, digest in each:
             files.setdefault(path, (label, digest))
     block = []
     for path, (label, digest) in files.items():
-        block += [[latex_escape(label), rf"\texttt{{{_breakable(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
+        block += [[latex_escape(label), rf"\texttt{{{breakable(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
     block += [["Built", latex_escape(built)], ["Package", latex_escape(PACKAGE)],
               ["Commit", rf"\texttt{{\footnotesize {latex_escape(commit)}}}"]]
     n = counts(rows)

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import contextvars
 import dataclasses
-import re
 from html import escape
 
 import numpy as np
@@ -19,16 +18,11 @@ import numpy as np
 from ..case import Case
 from ..catalog import display_path
 from ..report import Report, report_of
+from ..report.symbols import html as typeset
 from ..sections.common import quantity_text
 from ..units import Q_, sig
 
 PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
-_GREEK = {"phi": "φ", "eta": "η", "lambda": "λ"}
-# A symbol as written in code: a letter (or phi, eta, lambda) and its subscript, ``T_2B``, ``K_ϑ``.
-_SYMBOL = re.compile(r"(?<!\w)(phi|eta|lambda|[^\W\d_])_([^\W_]+(?:,[^\W_]+)*)(?!\w)")  # d_hub,max too
-# A name written in code, ``positioning_accuracy`` (not a key path's part, ``motor.peak_torque``).
-_WORDS = re.compile(r"(?<![.\w])([a-z]{2,})_([a-z]{2,})\b")
-
 STYLE = f"""<style>
 .dr {{ font-size: 13px; line-height: 1.35; color: #1a1a1a; }}
 .dr h3 {{ font-size: 14px; margin: 12px 0 4px; }}
@@ -52,24 +46,6 @@ STYLE = f"""<style>
 .dr td.differs {{ background: #fff4d6; font-weight: 600; }}
 .dr .values {{ color: #333; }} .dr .values b {{ font-weight: 600; }} .dr .note {{ color: #666; font-size: 12px; }}
 </style>"""
-
-
-def typeset(text: str) -> str:
-    """Our running text as HTML: escaped, each symbol written as in code (``n_2m``, ``phi_LM``) with
-    its subscript, ``<=``, ``>=`` as ≤, ≥, and a name written in code (``positioning_accuracy``)
-    in words.
-
-    >>> typeset("T_2max <= T_2B: required 189.1 N·m > rated 126 N·m")
-    '<i>T</i><sub>2max</sub> ≤ <i>T</i><sub>2B</sub>: required 189.1 N·m &gt; rated 126 N·m'
-    >>> typeset("positioning_accuracy 9 arcmin")
-    'positioning accuracy 9 arcmin'
-    """
-    text = _WORDS.sub(r"\1 \2", text.replace("<=", "≤").replace(">=", "≥"))
-    out, last = [], 0
-    for m in _SYMBOL.finditer(text):
-        out += [escape(text[last:m.start()]), f"<i>{_GREEK.get(m.group(1), m.group(1))}</i><sub>{escape(m.group(2))}</sub>"]
-        last = m.end()
-    return "".join(out) + escape(text[last:])
 
 
 def evaluated(case: Case) -> tuple[Report, list[str]]:
@@ -117,7 +93,7 @@ def _q(d) -> str:
 def _verdict_cell(passes, not_made: str | None = None) -> str:
     """PASS or FAIL; a check that could not be made (``passes`` None) says why, in grey."""
     if passes is None:
-        return f'<span class="open">not made{": " + typeset(not_made) if not_made else ""}</span>'
+        return f'<span class="open">not checked{": " + typeset(not_made) if not_made else ""}</span>'
     return '<span class="pass">PASS</span>' if passes else '<span class="fail">FAIL</span>'
 
 

@@ -46,6 +46,8 @@ class CouplingCase:
     missing: dict = field(default_factory=dict)  # key -> what the case lacks for it (side = "input"); its checks are not made
     drive_train: DriveTrain | None = None  # the members around the coupling (calc.torsion)
     drive_steps: tuple = ()  # (title, Step) of each member referred to the coupling's shaft
+    #: (title, calc.formula.Step) of each input computed from the rest of the case, as computed
+    steps: list = field(default_factory=list)
 
 
 def read(case: Case) -> CouplingCase:
@@ -70,7 +72,7 @@ def read(case: Case) -> CouplingCase:
     side = s.text("side")
     if side is not None and side not in SIDES:
         raise CalcError(f"{s.where('side')}: expected one of {', '.join(SIDES)}, found {side!r}")
-    derived = _from_the_case(case, s) if side == "input" else {}
+    derived, derived_steps = _from_the_case(case, s) if side == "input" else ({}, {})
     for key in ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "shaft_1", "shaft_2"):
         if not s.has(key) and key not in derived:
             hint = " (with side = \"input\" it comes from [motor], [load] and the gearbox when they give it)" if side == "input" else ""
@@ -101,7 +103,8 @@ def read(case: Case) -> CouplingCase:
     inputs["starts_per_hour"] = given_or_derived("starts_per_hour", "per_hour")
     notes = [text for key, (q, text) in derived.items() if not s.has(key) and q is not None]
     missing = {key: text for key, (q, text) in derived.items() if not s.has(key) and q is None}
-    return CouplingCase(catalog, wanted, side, inputs, bores, notes, missing, *_drive_train(case, side, inputs))
+    steps = [step for key, step in derived_steps.items() if not s.has(key)]
+    return CouplingCase(catalog, wanted, side, inputs, bores, notes, missing, *_drive_train(case, side, inputs), steps=steps)
 
 
 def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain | None, tuple]:
@@ -152,9 +155,9 @@ def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain
     return DriveTrain((Member("motor", j_m.result), Member("gearbox", j_g.result, C_t21)), two_mass[1], stand_in, shaft), steps
 
 
-def _from_the_case(case: Case, s: Table) -> dict:
+def _from_the_case(case: Case, s: Table) -> tuple[dict, dict]:
     """What a coupling between motor and gearbox can take from the rest of the case, by key:
-    ``(quantity, sentence)``. ``load_inertia`` is the load reflected to the input plus the gearbox's
+    ``(quantity, sentence)``, and the calculations among them, by key: ``(title, Step)``. ``load_inertia`` is the load reflected to the input plus the gearbox's
     J_1 (E8), ``speed`` the highest input speed ``n_2max · i``, ``accel_torque`` the motor's peak
     torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given.
     Where the case does not give what ``accel_torque``, ``drive_inertia`` or ``load_inertia`` needs,
@@ -165,12 +168,13 @@ def _from_the_case(case: Case, s: Table) -> dict:
         "drive_inertia": (None, "motor.inertia (or coupling.drive_inertia)"),
         "load_inertia": (None, "load.inertia (or the mechanism's) and a gearbox, or coupling.load_inertia"),
     }
+    steps = {}
     if case.motor_peak_torque is not None:
         out["accel_torque"] = (case.motor_peak_torque, f"accel_torque M_a = motor.peak_torque = {fmt(case.motor_peak_torque, 'N*m')}")
     if case.motor_inertia is not None:
         out["drive_inertia"] = (case.motor_inertia, f"drive_inertia J_drive = motor.inertia = {fmt(case.motor_inertia, 'kg*cm**2')}")
     if not gearbox.applies(case):
-        return out
+        return out, steps
     selection = gearbox.gearbox_selection(case)
     row = selection.order[0]
     part = str(selection.catalog.parts[row])
@@ -183,15 +187,17 @@ def _from_the_case(case: Case, s: Table) -> dict:
     elif np.isnan(J_1.magnitude):
         out["load_inertia"] = (None, f"the gearbox's J_1, which {selection.catalog.catalog_of(row)} does not give for {part} (or coupling.load_inertia)")
     else:
-        J = J_load_at_input(J_L=case.load_inertia, i=i, J_1=J_1)
+        step = J_load_at_input.step(J_L=case.load_inertia, i=i, J_1=J_1)
+        J = step.result
         which = part if selection.passes[row] else f"{part}, the best-ranked gearbox (none passes)"
         which += "" if np.isnan(hub.magnitude) else f", {fmt(hub, 'mm')} clamping hub"
+        steps["load_inertia"] = (f"Load inertia seen by the coupling, through {which}", step)
         out["load_inertia"] = (
             J,
             f"load_inertia J_load = J_L / i² + J_1 = {fmt(case.load_inertia, 'kg*cm**2')} / {sig(i.m_as(''))}² + "
             f"{fmt(J_1, 'kg*cm**2')} ({which}) = {fmt(J, 'kg*cm**2')} (E8)",
         )
-    return out
+    return out, steps
 
 
 def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:

@@ -3,13 +3,14 @@ values (E4, E5), which every other section builds on."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
+from ..bands import BandTable
 from ..case import Case, Table, once
 from ..cycle import SampledCycle
 from ..errors import CalcError
 from ..gearbox import SHOCK_FACTORS, shock_factor
-from ..profile import Duty, Profile, T_2m, Z_h, duty, n_2m
+from ..profile import ED, Duty, Profile, T_2m, Z_h, duty, n_2m
 from . import gearbox
 from .common import Verdict, quantity, quantity_text
 
@@ -46,7 +47,14 @@ class DutyResult:
     T2max: object = None  # of the best-ranked gearbox, when the case has one and the motor's peak torque
     T2max_part: str | None = None
     cycle: SampledCycle | None = None  # the sampled cycle where the motion form derived it
-    fs_table: str = SHOCK_FACTORS.source  # where the table of f_s comes from ([gearbox] shock_factors)
+    shock_factors: BandTable = SHOCK_FACTORS  # the table f_s is read from ([gearbox] shock_factors)
+    #: (title, calc.formula.Step) of ED, n_2m, T_2m and Z_h, as computed here
+    steps: list = field(default_factory=list)
+
+    @property
+    def fs_table(self) -> str:
+        """Where the table of f_s comes from."""
+        return self.shock_factors.source
 
     def to_json(self, candidates: int | None = None) -> dict:
         d = self.duty
@@ -103,10 +111,12 @@ def evaluate(case: Case) -> DutyResult:
 def _evaluate(case: Case) -> DutyResult:
     p = case.profile
     seg = p.moving_values()
-    zh = Z_h(t_cycle=p.t_cycle)
+    steps = [("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle)), ("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),
+             ("Cubic mean output torque", T_2m.step(**seg)), ("Cycles per hour", Z_h.step(t_cycle=p.t_cycle))]
+    _, n2m, t2m, zh = (step.result for _, step in steps)
     table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors
-    out = DutyResult(p, duty(p), n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), T_2m(**seg), zh, float(shock_factor(zh, table)),
-                     cycle=None if case.motion is None else case.motion.cycle, fs_table=table.source)
+    out = DutyResult(p, duty(p), n2m, t2m, zh, float(shock_factor(zh, table)),
+                     cycle=None if case.motion is None else case.motion.cycle, shock_factors=table, steps=steps)
     if gearbox.applies(case):
         selection = gearbox.gearbox_selection(case)
         if selection.T_2max is not None:

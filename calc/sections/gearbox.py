@@ -3,7 +3,7 @@ checked for the duty of the load cycle and ranked (:mod:`calc.gearbox`, E1 to E6
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -11,8 +11,9 @@ from ..bands import factor_table
 from ..case import Case, Table, once
 from ..catalog import display_path, load_catalogs
 from ..errors import CalcError
-from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, rows_at_ratio, select_gearbox
-from ..units import fmt
+from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
+from ..profile import Z_h, n_2m
+from ..units import Q_, fmt, sig
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity
 
 NAME = "gearbox"
@@ -82,9 +83,12 @@ def _select(case: Case) -> GearboxSelection:
 
 @dataclass
 class GearboxResult:
-    """The ranked gearbox candidates of a case and the part chosen."""
+    """The ranked gearbox candidates of a case and the part chosen, with the calculations of the
+    best-ranked row's checks as steps."""
 
     selection: GearboxSelection
+    #: (title, calc.formula.Step, what it is compared with) of the best-ranked row's checks
+    steps: list = field(default_factory=list)
 
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         s = self.selection
@@ -158,5 +162,39 @@ class GearboxResult:
         return Verdict(False, no_candidate_passes(f"No {what} passes the {s.mode} checks:", s.catalog.parts, s.order, s.reasons))
 
 
+def check_steps(case: Case, sel: GearboxSelection) -> list:
+    """The calculations of the best-ranked row's checks, each as (title, Step, what it is compared
+    with): the input speeds, T_2max with the case's shock factor, the inertia ratio with the J_1 of
+    the row's clamping hub and the tilting moment of the output bearing."""
+    p = case.profile
+    row = int(sel.order[0])
+    cat = sel.catalog
+    i = cat["ratio"][row]
+    table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors
+    seg = p.moving_values()
+    out = [("Input speed at the mean output speed (S1)", n_1.step(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i), "compared with n_1N"),
+           ("Input speed at the highest output speed (S5)", n_1.step(n_2=p.n_2max, i=i), "compared with n_1max")]
+    if case.motor_peak_torque is not None:
+        f_s = Q_(float(shock_factor(Z_h(t_cycle=p.t_cycle), table)), "")
+        out.append(("Maximum output torque", T_2max.step(T_1B=case.motor_peak_torque, i=i, f_s=f_s, eta=cat["eta"][row]), "compared with T_2B"))
+    if sel.inertia_ratio is not None and not np.isnan(sel.J_1[row].magnitude):
+        hub = sel.J_1_hub[row]
+        which = "errata E6" + ("" if np.isnan(hub.magnitude) else f"; J_1 for the {sig(hub.m_as('mm'))} mm clamping hub")
+        out.append(("Load to motor inertia ratio",
+                    inertia_ratio.step(J_1=sel.J_1[row], J_L=case.load_inertia, i=i, J_motor=case.motor_inertia), which))
+    load = case.output_load
+    if load is not None:
+        zero, z_2 = Q_(0.0, "mm"), cat["z_2"][row]
+        out.append(("Tilting moment on the output bearing", M_2k.step(
+            F_2a=load.axial_force if load.axial_force is not None else Q_(0.0, "N"),
+            y_2=load.axial_radius if load.axial_radius is not None else zero,
+            F_2r=load.radial_force if load.radial_force is not None else Q_(0.0, "N"),
+            x_2=load.lever_arm if load.lever_arm is not None else zero,
+            z_2=zero if np.isnan(z_2.magnitude) else z_2,
+        ), "compared with M_2K; WITTENSTEIN's form" + ("; z_2 = 0, the catalog gives none" if np.isnan(z_2.magnitude) else "")))
+    return out
+
+
 def evaluate(case: Case) -> GearboxResult:
-    return GearboxResult(gearbox_selection(case))
+    selection = gearbox_selection(case)
+    return GearboxResult(selection, check_steps(case, selection))

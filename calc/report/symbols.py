@@ -1,0 +1,130 @@
+"""The one typesetter of the package's own text: symbols as written in code (``T_2B``,
+``d_hub,max``, ``K_ϑ``, ``phi_LM``) with their subscripts, ``<=`` and ``>=`` as ≤ and ≥, names
+written in code (``positioning_accuracy``) in words, and case keys (``motor.peak_torque``) as code.
+
+Every criterion, reason, note and reading the package emits goes through :func:`tokens` once;
+:func:`latex` (the calc report) and :func:`html` (the design review) only render its tokens, so the
+two outputs typeset the same symbols the same way.
+"""
+
+from __future__ import annotations
+
+import re
+from html import escape
+
+from ..sections import TOP_KEYS
+
+_SPECIAL = {
+    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
+    "^": r"\textasciicircum{}", "_": r"\_", "%": r"\%", "~": r"\textasciitilde{}",
+}
+_LIGATURE = re.compile(r"(?<=[-`',<>!?])(?=[-`',<>!?])")
+
+
+def latex_escape(text) -> str:
+    r"""Text as LaTeX that prints exactly as written.
+
+    The ten special characters are escaped, line breaks become spaces, and ``{}`` is put between
+    characters that TeX would join (``--`` into a dash, ``''`` into a quote).
+
+    >>> print(latex_escape("Axis #3 — 50% load & T_2 {v2} \\ 100$"))
+    Axis \#3 — 50\% load \& T\_2 \{v2\} \textbackslash{} 100\$
+    >>> print(latex_escape("a--b"))
+    a-{}-b
+    """
+    out = "".join(_SPECIAL.get(c, c) for c in " ".join(str(text).splitlines()))
+    return _LIGATURE.sub("{}", out)
+
+
+#: Greek letters written out in code, as LaTeX and as text.
+GREEK = {"phi": (r"\varphi", "φ"), "eta": (r"\eta", "η"), "lambda": (r"\lambda", "λ")}
+_GREEK_NAMES = "|".join(GREEK)
+# A case key, ``motor.peak_torque`` or ``coupling.shaft_1``, or a name in the package (code, set as code).
+_TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])  # and the package's own names, calc.gearbox.x
+_KEY = rf"(?P<key>(?<![\w.])(?:{_TABLES})(?:\[\d+\])?(?:\.[a-z][a-z0-9_]*(?:\[\d+\])?)+)"
+# A symbol as written in code: a letter (or a Greek name) and its subscript, ``d_hub,max`` whole.
+_SYMBOL = rf"(?P<sym>(?<![\w.])(?P<base>{_GREEK_NAMES}|[^\W\d_])_(?P<sub>[^\W_]+(?:,[^\W_]+)*)(?![\w]))"
+# A name written in code, ``positioning_accuracy``: words.
+_WORDS = r"(?P<words>(?<![\w.])[a-z]{2,}(?:_[a-z]{2,})+\b)"
+# A lone letter or Greek name next to an operator, ``i`` of ``n_2m · i`` and ``J_L / i²`` (not
+# a unit after its number, ``0.3 s + 0.3 s``).
+_LONE = rf"(?P<lone>(?<![\w.])(?<!\d )(?:(?<=[·/=≤≥+] )(?:{_GREEK_NAMES}|[A-Za-zα-ωϑ])(?=[\s²)]|$)|(?:{_GREEK_NAMES}|[A-Za-zα-ωϑ])(?= [·/=≤≥+] )))"
+_TOKEN = re.compile("|".join((_KEY, _SYMBOL, _WORDS, _LONE)))
+
+
+def tokens(text: str) -> list[tuple[str, ...]]:
+    """The text as tokens: ``("text", s)``, ``("symbol", base, subscript)`` (subscript empty for a
+    lone letter), ``("code", s)``.
+
+    >>> tokens("d_motor <= d_hub,max")
+    [('symbol', 'd', 'motor'), ('text', ' ≤ '), ('symbol', 'd', 'hub,max')]
+    >>> tokens("n_2m · i <= n_1N")
+    [('symbol', 'n', '2m'), ('text', ' · '), ('symbol', 'i', ''), ('text', ' ≤ '), ('symbol', 'n', '1N')]
+    >>> tokens("positioning_accuracy <= required, motor.peak_torque")
+    [('text', 'positioning accuracy'), ('text', ' ≤ required, '), ('code', 'motor.peak_torque')]
+    """
+    text = str(text).replace("<=", "≤").replace(">=", "≥")
+    out, last = [], 0
+    for m in _TOKEN.finditer(text):
+        if m.start() > last:
+            out.append(("text", text[last:m.start()]))
+        if m.group("key"):
+            out.append(("code", m.group("key")))
+        elif m.group("sym"):
+            out.append(("symbol", m.group("base"), m.group("sub")))
+        elif m.group("words"):
+            out.append(("text", m.group("words").replace("_", " ")))
+        else:
+            out.append(("symbol", m.group("lone"), ""))
+        last = m.end()
+    if last < len(text):
+        out.append(("text", text[last:]))
+    return out
+
+
+def _latex_subscript(sub: str) -> str:
+    """Upright letters and digits (a subscript names, it does not multiply); a Greek letter as is."""
+    return sub if len(sub) == 1 and not sub.isascii() else rf"\mathrm{{{sub}}}"
+
+
+def latex(text: str) -> str:
+    r"""The text as LaTeX: escaped, each symbol in math.
+
+    >>> print(latex("M_N · K_ϑ <= T_KN"))
+    $M_{\mathrm{N}}$ · $K_{ϑ}$ ≤ $T_{\mathrm{KN}}$
+    >>> print(latex("d_motor <= d_hub,max, 100%"))
+    $d_{\mathrm{motor}}$ ≤ $d_{\mathrm{hub,max}}$, 100\%
+    """
+    out = []
+    for kind, *rest in tokens(text):
+        if kind == "text":
+            out.append(latex_escape(rest[0]))
+        elif kind == "code":
+            out.append(rf"\texttt{{{latex_escape(rest[0])}}}")
+        else:
+            base, sub = rest
+            letter = GREEK[base][0] if base in GREEK else base
+            out.append(f"${letter}_{{{_latex_subscript(sub)}}}$" if sub else f"${letter}$")
+    return "".join(out)
+
+
+def html(text: str) -> str:
+    """The text as HTML: escaped, each symbol in italics with its subscript (a case key as written:
+    HTML has no underscore to escape).
+
+    >>> html("T_2max <= T_2B: required 189.1 N·m > rated 126 N·m")
+    '<i>T</i><sub>2max</sub> ≤ <i>T</i><sub>2B</sub>: required 189.1 N·m &gt; rated 126 N·m'
+    >>> html("positioning_accuracy 9 arcmin")
+    'positioning accuracy 9 arcmin'
+    """
+    out = []
+    for kind, *rest in tokens(text):
+        if kind == "text":
+            out.append(escape(rest[0]))
+        elif kind == "code":
+            out.append(escape(rest[0]))  # a case key reads as written
+        else:
+            base, sub = rest
+            letter = GREEK[base][1] if base in GREEK else base
+            out.append(f"<i>{escape(letter)}</i>" + (f"<sub>{escape(sub)}</sub>" if sub else ""))
+    return "".join(out)
