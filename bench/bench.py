@@ -24,11 +24,13 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
 * ``catalog_load_100k``: reading and validating that catalog's CSV file, the first
   :func:`calc.catalog.load_catalog` of it in the run (a later one is served from what was read;
   no target; not part of ``rank_100k``).
-* ``evaluate_100k``: ``python -m calc evaluate --json`` of a copy of the example case whose
-  ``gearbox.catalog`` is a synthetic catalog of 100,000 rows at its ratio (the shipped rows at
-  that ratio among them, as the accuracy chain names one), end to end in a fresh process;
-  ``evaluate_100k_vs_shipped`` its time over that of the example with the shipped catalog, and
-  ``evaluate_100k_memory`` its peak resident memory.
+* ``evaluate_100k_blank``, ``evaluate_100k_filled``: ``python -m calc evaluate --json`` of a copy
+  of the example case whose ``gearbox.catalog`` is a synthetic catalog of 100,000 rows at its
+  ratio (the shipped rows at that ratio among them, as the accuracy chain names one), end to end
+  in a fresh process, once with the optional columns (:data:`OPTIONAL`) blank in every made-up row
+  and once filled; ``..._vs_shipped`` its time over that of the example with the shipped catalog
+  (a catalog's size must cost linearly, whatever it leaves blank), and ``..._memory`` its peak
+  resident memory.
 * ``hysteresis_1M``: the analysis of a measured hysteresis loop of 10^6 samples.
 * ``motion_1M``: deriving a load cycle of 10^6 samples from its moves and mechanism (a quarter-turn
   trapezoid index and a dwell of a rotary table: :func:`calc.motion.sample`, the mechanism's torque,
@@ -160,12 +162,16 @@ HEADER = (
     "part,series,ratio [1],T_2N [N*m],T_2B [N*m],T_2Not [N*m],n_1N [rpm],n_1max [rpm],eta [percent],"
     "backlash [arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],illustrative,source"
 )
+#: Optional columns a maker's file may leave blank; ``evaluate_100k`` runs with them blank and filled.
+OPTIONAL = "family,size,unclear,F_2A [N],M_2K [N*m],T_2a [N*m]"
 
 
-def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1) -> None:
+def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1, optional: str | None = None) -> None:
     """A gearbox catalog of ``rows`` made-up rows, all at ``ratio`` (or, for a sequence of ratios,
     each in turn), in the units makers print (whole rpm, so some rows sit exactly on a speed
-    check's boundary, as real ones do)."""
+    check's boundary, as real ones do). With ``optional`` ``"blank"`` or ``"filled"`` it has the
+    :data:`OPTIONAL` columns too, every cell empty (each row's own series then stands for its
+    family) or given (50 families of 20 sizes)."""
     ratios = np.resize(np.atleast_1d(np.asarray(ratio, float)), rows)
     rng = np.random.default_rng(seed)
     t_2n = rng.uniform(10, 2000, rows).round(1)
@@ -178,12 +184,18 @@ def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1) -> None
     c_t21 = rng.uniform(5, 500, rows).round(1)
     j_1 = rng.uniform(0.1, 50, rows).round(2)
     illustrative = np.where(rng.uniform(size=rows) < 0.3, "yes", "no")
+    series = [f"SYN{k:06d}" if optional == "blank" else "SYN" for k in range(rows)]
+    extra = {
+        None: lambda k: "",
+        "blank": lambda k: ",,,,,,",
+        "filled": lambda k: f",SYN-{k % 50},{k % 20},,{(t_2n[k] * 20).round()},{(t_2n[k] * 1.5).round()},{t_2b[k]}",
+    }[optional]
     with open(path, "w", encoding="utf-8") as f:
-        f.write(HEADER + "\n")
+        f.write(HEADER + ("," + OPTIONAL if optional else "") + "\n")
         for k in range(rows):
             f.write(
-                f"SYN{k:06d}-{ratios[k]:g},SYN,{ratios[k]:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},{eta[k]},"
-                f"{backlash[k]},{c_t21[k]},{j_1[k]},{illustrative[k]},synthetic\n"
+                f"SYN{k:06d}-{ratios[k]:g},{series[k]},{ratios[k]:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},{eta[k]},"
+                f"{backlash[k]},{c_t21[k]},{j_1[k]},{illustrative[k]},synthetic{extra(k)}\n"
             )
 
 
@@ -489,20 +501,21 @@ def measure_ratios(size: Size, workdir: Path) -> list[str]:
     ]
 
 
-def write_large_case(workdir: Path, rows: int) -> Path:
+def write_large_case(workdir: Path, rows: int, optional: str) -> Path:
     """A copy of the example case whose ``gearbox.catalog`` is a synthetic catalog of ``rows`` rows
-    at its ratio: the shipped rows at that ratio (the accuracy chain names one of them) and made-up
-    rows whose ratings vary, so the ranking has work to do. The folder links the project's
-    ``data`` so that the case's measurement paths hold."""
+    at its ratio, its :data:`OPTIONAL` columns ``optional`` (``"blank"`` or ``"filled"``): the
+    shipped rows at that ratio (the accuracy chain names one of them) and made-up rows whose
+    ratings vary, so the ranking has work to do. The folder links the project's ``data`` so that
+    the case's measurement paths hold."""
     from calc.case import read_case
 
     ratio = read_case(EXAMPLE).ratio.m_as("")
-    folder = workdir / "large" / "cases"
+    folder = workdir / f"large-{optional}" / "cases"
     folder.mkdir(parents=True)
     (folder.parent / "data").symlink_to(ROOT / "data")
     with open(ROOT / "catalogs" / "gearboxes.csv", encoding="utf-8", newline="") as f:
         header, *shipped = csv.reader(f)
-    names = HEADER.split(",")
+    names = f"{HEADER},{OPTIONAL}".split(",")
     if not set(names) <= set(header):
         raise RuntimeError("evaluate_100k: catalogs/gearboxes.csv no longer has the synthetic catalog's columns")
     # The shipped rows in the synthetic catalog's columns; partial rows (never ranked) left out.
@@ -513,7 +526,7 @@ def write_large_case(workdir: Path, rows: int) -> Path:
         if float(row[header.index("ratio [1]")]) == ratio and (partial is None or not row[partial])
     ]
     catalog = folder / "gearboxes-large.csv"
-    write_synthetic_catalog(catalog, rows - len(shipped), ratio)
+    write_synthetic_catalog(catalog, rows - len(shipped), ratio, optional=optional)
     with open(catalog, "a", encoding="utf-8", newline="") as f:
         csv.writer(f, lineterminator="\n").writerows(shipped)
     text = EXAMPLE.read_text(encoding="utf-8")
@@ -525,18 +538,25 @@ def write_large_case(workdir: Path, rows: int) -> Path:
 
 
 def measure_evaluate_large(size: Size, workdir: Path) -> list[str]:
-    case = write_large_case(workdir, size.rows)
     py = sys.executable
     shipped = [measured_run([py, "-m", "calc", "evaluate", str(EXAMPLE.relative_to(ROOT)), "--json"]) for _ in range(size.runs)]
-    large = [measured_run([py, "-m", "calc", "evaluate", str(case), "--json"]) for _ in range(size.runs)]
     shipped_time = statistics.median(t for t, _ in shipped)
-    large_time = statistics.median(t for t, _ in large)
     runs = f"median of {size.runs}"
-    return [
-        line("evaluate_100k", large_time, "s", note=f"python -m calc evaluate --json, {size.rows} catalog rows at the example's ratio, {runs}; shipped catalog {shipped_time:.3g} s"),
-        line("evaluate_100k_vs_shipped", large_time / shipped_time, "x", ("<=", 3)),
-        line("evaluate_100k_memory", max(m for _, m in large), "MB", ("<=", 500), note="peak resident memory of the process"),
-    ]
+    out = []
+    for optional in ("blank", "filled"):
+        case = write_large_case(workdir, size.rows, optional)
+        large = [measured_run([py, "-m", "calc", "evaluate", str(case), "--json"]) for _ in range(size.runs)]
+        large_time = statistics.median(t for t, _ in large)
+        name = f"evaluate_100k_{optional}"
+        out += [
+            line(name, large_time, "s", note=(
+                f"python -m calc evaluate --json, {size.rows} catalog rows at the example's ratio, optional columns {optional}, "
+                f"{runs}; shipped catalog {shipped_time:.3g} s"
+            )),
+            line(f"{name}_vs_shipped", large_time / shipped_time, "x", ("<=", 3)),
+            line(f"{name}_memory", max(m for _, m in large), "MB", ("<=", 500), note="peak resident memory of the process"),
+        ]
+    return out
 
 
 # --- sweep: a design space ------------------------------------------------------------------------

@@ -24,7 +24,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, describe_units, kind, pretty_unit, ureg
+from .units import Q_, SI_SCALE, describe_units, kind, pretty_unit, ureg
 
 
 def _project_dir() -> Path | None:
@@ -128,16 +128,23 @@ class Catalog:
         return display_path(self.members[self.member[row]][0])
 
     def text_or_blank(self, column: str) -> np.ndarray:
-        """A text column's cells, blank where the file has no such column."""
-        return self.text.get(column, np.full(len(self), "", dtype=object))
+        """A text column's cells, blank where the file has no such column (one blank column per
+        catalog, not one per call: results ask per candidate)."""
+        if column in self.text:
+            return self.text[column]
+        return self._blank
 
-    @property
+    @functools.cached_property
+    def _blank(self) -> np.ndarray:
+        return np.full(len(self), "", dtype=object)
+
+    @functools.cached_property
     def family(self) -> np.ndarray:
         """Each row's family (``TP+``), or its series where the file gives no family."""
         family = self.text_or_blank("family")
         return np.where(family == "", self.text_or_blank("series"), family)
 
-    @property
+    @functools.cached_property
     def partial(self) -> np.ndarray:
         """True for a partial row (:attr:`Schema.partial`): kept, never checked or chosen."""
         return self.text_or_blank(self.schema.partial) != "" if self.schema.partial else np.zeros(len(self), bool)
@@ -413,6 +420,9 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         j = repeats[0]
         raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row {lines[first[j]]}")
     values = {c.name: Q_(numbers[c.name].values, units[c.name]) for c in schema.columns}
+    problem = _out_of_scale(path, schema, lines, parts, values, numbers)
+    if problem:
+        raise CalcError(problem)
     for rule in schema.rules:
         with np.errstate(invalid="ignore"):
             ok = np.asarray(rule.holds(values), dtype=bool)
@@ -502,6 +512,29 @@ def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict
         return f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"
     c = next(c for c in schema.columns if c.name == name)
     return numbers[name].problem(j, c, f"{path}, row {lines[j]} ({texts['part'][j]}), column {name}")
+
+
+def _out_of_scale(path: Path, schema: Schema, lines, parts, values: dict, numbers: dict) -> str | None:
+    """The message of the first cell, row by row, whose value is not zero and lies outside
+    :data:`calc.units.SI_SCALE` in SI units, as a case file's values may not: a formula fed such
+    a value overflows far from the cell (``1e-320`` as a stiffness, inverted), so the cell is
+    named here. None if every cell is in scale."""
+    low, high = SI_SCALE
+    firsts = []
+    for order, c in enumerate(schema.columns):
+        q = values[c.name]
+        with np.errstate(all="ignore"):  # a cell near float's limit may overflow in SI units: out of scale too
+            si = np.abs(q.to_base_units().magnitude)
+            bad = (si != 0) & ~((si >= low) & (si <= high)) & ~np.isnan(si)
+        if bad.any():
+            firsts.append((int(np.argmax(bad)), order, c.name, q.to_base_units().units, si))
+    if not firsts:
+        return None
+    j, _, name, si_units, si = min(firsts, key=lambda f: f[:2])
+    return (
+        f"{path}, row {lines[j]} ({parts[j]}), column {name}: expected a magnitude between {low:g} and {high:g} in SI units "
+        f"({si_units:~P}), found {numbers[name].cells[j].strip()!r}, which is {si[j]:.3g}"
+    )
 
 
 def _header_unit(path: Path, c: Column, unit_text):

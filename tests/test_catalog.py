@@ -90,6 +90,11 @@ def test_a_catalog_in_other_units_loads_the_same(tmp_path):
         (HEADER, ROW.replace(",0.57,", ",NaN,"), "column J_1: expected a number, found 'NaN'"),
         (HEADER, ROW.replace(",3100,", ",3_100,"), "column n_1N: expected a number, found '3_100'"),
         (HEADER, ROW.replace(",81,", ",0x51,"), "column T_2N: expected a number, found '0x51'"),
+        # Out of calc.units.SI_SCALE: a formula would overflow far from the cell (C_t21 inverted, T_2N cubed).
+        (HEADER, ROW.replace(",23,", ",1e-320,"),
+         "row 2 (G-10), column C_t21: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²/rad), found '1e-320'"),
+        (HEADER, ROW.replace(",81,126,", ",1e-308,1e-308,"), "row 2 (G-10), column T_2N: expected a magnitude between 1e-12 and 1e+12"),
+        (HEADER, ROW.replace(",0.57,", ",1e300,"), "column J_1: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²), found '1e300', which is 1e+296"),
         # A header unit never carries a number (pint refuses a scaling factor), so none can be infinite.
         (HEADER.replace("T_2N [N*m]", "T_2N [1e999*N*m]"), ROW, "column T_2N: the unit '1e999*N*m' is not one the unit registry knows"),
     ],

@@ -110,3 +110,30 @@ def test_evaluate_into_a_pipe_closed_early_exits_quietly():
         err = proc.stderr.read().decode()
         proc.stderr.close()
         assert proc.wait() == 1 and err == ""
+
+
+@pytest.mark.parametrize(
+    "cells, fragment",
+    [
+        ({"C_t21 [N*m/arcmin]": "1e-320"}, "column C_t21: expected a magnitude between 1e-12 and 1e+12"),
+        ({"T_2N [N*m]": "1e-308", "T_2B [N*m]": "1e-308"}, "column T_2N: expected a magnitude between 1e-12 and 1e+12"),
+    ],
+)
+def test_a_hostile_catalog_gives_one_line_on_standard_error(tmp_path, cells, fragment):
+    # A fresh process, as a user runs it: numpy's warnings (overflow in power, divide by zero) would
+    # print there before the message, while pytest would only record them.
+    import csv
+
+    with open(ROOT / "catalogs" / "gearboxes.csv", encoding="utf-8", newline="") as f:
+        header, *rows = csv.reader(f)
+    for row in rows:
+        for column, cell in cells.items():
+            row[header.index(column)] = cell
+    with open(tmp_path / "hostile.csv", "w", encoding="utf-8", newline="") as f:
+        csv.writer(f, lineterminator="\n").writerows([header, *rows])
+    case = tmp_path / "case.toml"
+    case.write_text(HEAD_TOML + 'catalog = "hostile.csv"\n' + PROFILE_TOML, encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(case), "--json"], cwd=ROOT, capture_output=True, text=True)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr.count("\n") == 1 and done.stderr.startswith(f"error: {tmp_path / 'hostile.csv'}, row 2 "), done.stderr
+    assert fragment in done.stderr
