@@ -170,8 +170,8 @@ def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1, optiona
     """A gearbox catalog of ``rows`` made-up rows, all at ``ratio`` (or, for a sequence of ratios,
     each in turn), in the units makers print (whole rpm, so some rows sit exactly on a speed
     check's boundary, as real ones do). With ``optional`` ``"blank"`` or ``"filled"`` it has the
-    :data:`OPTIONAL` columns too, every cell empty (each row's own series then stands for its
-    family) or given (50 families of 20 sizes)."""
+    :data:`OPTIONAL` columns too, every cell empty (then each row's series, one of 1,000, stands
+    for its family) or given (1,000 families)."""
     ratios = np.resize(np.atleast_1d(np.asarray(ratio, float)), rows)
     rng = np.random.default_rng(seed)
     t_2n = rng.uniform(10, 2000, rows).round(1)
@@ -184,11 +184,11 @@ def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1, optiona
     c_t21 = rng.uniform(5, 500, rows).round(1)
     j_1 = rng.uniform(0.1, 50, rows).round(2)
     illustrative = np.where(rng.uniform(size=rows) < 0.3, "yes", "no")
-    series = [f"SYN{k:06d}" if optional == "blank" else "SYN" for k in range(rows)]
+    series = [f"SYN{k % 1000}" if optional == "blank" else "SYN" for k in range(rows)]
     extra = {
         None: lambda k: "",
         "blank": lambda k: ",,,,,,",
-        "filled": lambda k: f",SYN-{k % 50},{k % 20},,{(t_2n[k] * 20).round()},{(t_2n[k] * 1.5).round()},{t_2b[k]}",
+        "filled": lambda k: f",SYN-{k % 1000},{k % 20},,{(t_2n[k] * 20).round()},{(t_2n[k] * 1.5).round()},{t_2b[k]}",
     }[optional]
     with open(path, "w", encoding="utf-8") as f:
         f.write(HEADER + ("," + OPTIONAL if optional else "") + "\n")

@@ -404,7 +404,7 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         return cells[columns[name][0]::width]
 
     texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
+    numbers = {c.name: _numbers(column(c.name)) if c.name in columns else _absent(len(lines)) for c in schema.columns}
     problem = _first_problem(path, schema, lines, texts, numbers)
     if problem:
         raise CalcError(problem)
@@ -473,6 +473,11 @@ class _Numbers:
         if c.positive:
             return f"{where}: expected a value above zero, found {cell}"
         return f"{where}: expected a value of zero or more, found {cell}"
+
+
+def _absent(rows: int) -> _Numbers:
+    """A numeric column the file leaves out: every cell empty (made at once, not parsed per cell)."""
+    return _Numbers([""] * rows, np.full(rows, math.nan), np.ones(rows, bool), np.zeros(rows, bool))
 
 
 def _numbers(cells: list) -> _Numbers:
