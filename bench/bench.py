@@ -24,13 +24,12 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
 * ``catalog_load_100k``: reading and validating that catalog's CSV file, the first
   :func:`calc.catalog.load_catalog` of it in the run (a later one is served from what was read;
   no target; not part of ``rank_100k``).
-* ``evaluate_100k_blank``, ``evaluate_100k_filled``: ``python -m calc evaluate --json`` of a copy
-  of the example case whose ``gearbox.catalog`` is a synthetic catalog of 100,000 rows at its
-  ratio (the shipped rows at that ratio among them, as the accuracy chain names one), end to end
-  in a fresh process, once with the optional columns (:data:`OPTIONAL`) blank in every made-up row
-  and once filled; ``..._vs_shipped`` its time over that of the example with the shipped catalog
-  (a catalog's size must cost linearly, whatever it leaves blank), and ``..._memory`` its peak
-  resident memory.
+* ``evaluate_100k_filled`` and ``evaluate_100k_blank``: ``python -m calc evaluate --json`` of a
+  copy of the example case whose ``gearbox.catalog`` is a synthetic catalog of 100,000 rows at its
+  ratio (the shipped rows at that ratio among them, as the accuracy chain names one), in the
+  shipped catalog's columns with the optional ones (family, size, forces, ...) filled or left
+  blank, end to end in a fresh process; ``_vs_shipped`` its time over that of the example with
+  the shipped catalog, and ``_memory`` its peak resident memory.
 * ``hysteresis_1M``: the analysis of a measured hysteresis loop of 10^6 samples.
 * ``motion_1M``: deriving a load cycle of 10^6 samples from its moves and mechanism (a quarter-turn
   trapezoid index and a dwell of a rotary table: :func:`calc.motion.sample`, the mechanism's torque,
@@ -162,16 +161,12 @@ HEADER = (
     "part,series,ratio [1],T_2N [N*m],T_2B [N*m],T_2Not [N*m],n_1N [rpm],n_1max [rpm],eta [percent],"
     "backlash [arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],illustrative,source"
 )
-#: Optional columns a maker's file may leave blank; ``evaluate_100k`` runs with them blank and filled.
-OPTIONAL = "family,size,unclear,F_2A [N],M_2K [N*m],T_2a [N*m]"
 
 
-def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1, optional: str | None = None) -> None:
+def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1) -> None:
     """A gearbox catalog of ``rows`` made-up rows, all at ``ratio`` (or, for a sequence of ratios,
     each in turn), in the units makers print (whole rpm, so some rows sit exactly on a speed
-    check's boundary, as real ones do). With ``optional`` ``"blank"`` or ``"filled"`` it has the
-    :data:`OPTIONAL` columns too, every cell empty (then each row's series, one of 1,000, stands
-    for its family) or given (1,000 families)."""
+    check's boundary, as real ones do)."""
     ratios = np.resize(np.atleast_1d(np.asarray(ratio, float)), rows)
     rng = np.random.default_rng(seed)
     t_2n = rng.uniform(10, 2000, rows).round(1)
@@ -184,18 +179,12 @@ def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1, optiona
     c_t21 = rng.uniform(5, 500, rows).round(1)
     j_1 = rng.uniform(0.1, 50, rows).round(2)
     illustrative = np.where(rng.uniform(size=rows) < 0.3, "yes", "no")
-    series = [f"SYN{k % 1000}" if optional == "blank" else "SYN" for k in range(rows)]
-    extra = {
-        None: lambda k: "",
-        "blank": lambda k: ",,,,,,",
-        "filled": lambda k: f",SYN-{k % 1000},{k % 20},,{(t_2n[k] * 20).round()},{(t_2n[k] * 1.5).round()},{t_2b[k]}",
-    }[optional]
     with open(path, "w", encoding="utf-8") as f:
-        f.write(HEADER + ("," + OPTIONAL if optional else "") + "\n")
+        f.write(HEADER + "\n")
         for k in range(rows):
             f.write(
-                f"SYN{k:06d}-{ratios[k]:g},{series[k]},{ratios[k]:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},{eta[k]},"
-                f"{backlash[k]},{c_t21[k]},{j_1[k]},{illustrative[k]},synthetic{extra(k)}\n"
+                f"SYN{k:06d}-{ratios[k]:g},SYN,{ratios[k]:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},{eta[k]},"
+                f"{backlash[k]},{c_t21[k]},{j_1[k]},{illustrative[k]},synthetic\n"
             )
 
 
@@ -501,12 +490,28 @@ def measure_ratios(size: Size, workdir: Path) -> list[str]:
     ]
 
 
+#: The optional columns of the shipped gearbox catalog that the large catalog fills (``filled``) or
+#: leaves blank (``blank``), with a made-up value of row ``k`` for the filled kind: a catalog that
+#: leaves them blank must cost no more than one that fills them.
+OPTIONAL_CELLS = {
+    "family": lambda k: f"SYN{k % 40}",
+    "size": lambda k: f"{k % 25 * 5 + 40:03d}",
+    "stages [1]": lambda k: str(1 + k % 2),
+    "J_1_hub [mm]": lambda k: "14",
+    "F_2A [N]": lambda k: str(2000 + k % 900),
+    "F_2R [N]": lambda k: str(1500 + k % 700),
+    "M_2K [N*m]": lambda k: str(100 + k % 300),
+    "m [kg]": lambda k: "1.2",
+    "unclear": lambda k: "the rated speed is read from a chart" if k % 97 == 0 else "",
+}
+
+
 def write_large_case(workdir: Path, rows: int, optional: str) -> Path:
     """A copy of the example case whose ``gearbox.catalog`` is a synthetic catalog of ``rows`` rows
-    at its ratio, its :data:`OPTIONAL` columns ``optional`` (``"blank"`` or ``"filled"``): the
-    shipped rows at that ratio (the accuracy chain names one of them) and made-up rows whose
-    ratings vary, so the ranking has work to do. The folder links the project's ``data`` so that
-    the case's measurement paths hold."""
+    at its ratio, in the shipped catalog's columns, with the :data:`OPTIONAL_CELLS` ``"blank"`` or
+    ``"filled"``: the shipped rows at that ratio (the accuracy chain names one of them) and made-up
+    rows whose ratings vary, so the ranking has work to do. The folder links the project's
+    ``data`` so that the case's measurement paths hold."""
     from calc.case import read_case
 
     ratio = read_case(EXAMPLE).ratio.m_as("")
@@ -515,20 +520,27 @@ def write_large_case(workdir: Path, rows: int, optional: str) -> Path:
     (folder.parent / "data").symlink_to(ROOT / "data")
     with open(ROOT / "catalogs" / "gearboxes.csv", encoding="utf-8", newline="") as f:
         header, *shipped = csv.reader(f)
-    names = f"{HEADER},{OPTIONAL}".split(",")
-    if not set(names) <= set(header):
+    names = HEADER.split(",")
+    if not set(names) | set(OPTIONAL_CELLS) <= set(header):
         raise RuntimeError("evaluate_100k: catalogs/gearboxes.csv no longer has the synthetic catalog's columns")
-    # The shipped rows in the synthetic catalog's columns; partial rows (never ranked) left out.
-    columns = [header.index(name) for name in names]
+    # The shipped rows at the ratio; partial rows (never ranked) left out.
     partial = header.index("partial") if "partial" in header else None
-    shipped = [
-        [row[k] for k in columns] for row in shipped
-        if float(row[header.index("ratio [1]")]) == ratio and (partial is None or not row[partial])
-    ]
+    shipped = [row for row in shipped if float(row[header.index("ratio [1]")]) == ratio and (partial is None or not row[partial])]
+    synthetic = workdir / f"synthetic-{optional}.csv"
+    write_synthetic_catalog(synthetic, rows - len(shipped), ratio)
     catalog = folder / "gearboxes-large.csv"
-    write_synthetic_catalog(catalog, rows - len(shipped), ratio, optional=optional)
-    with open(catalog, "a", encoding="utf-8", newline="") as f:
-        csv.writer(f, lineterminator="\n").writerows(shipped)
+    with open(synthetic, encoding="utf-8", newline="") as f, open(catalog, "w", encoding="utf-8", newline="") as out:
+        made, *made_rows = csv.reader(f)
+        writer = csv.writer(out, lineterminator="\n")
+        writer.writerow(header)
+        for k, row in enumerate(made_rows):
+            cells = dict(zip(made, row))
+            writer.writerow([
+                cells[name] if name in cells
+                else OPTIONAL_CELLS[name](k) if optional == "filled" and name in OPTIONAL_CELLS else ""
+                for name in header
+            ])
+        writer.writerows(shipped)
     text = EXAMPLE.read_text(encoding="utf-8")
     if text.count('catalog = "gearboxes"\n') != 1:
         raise RuntimeError(f"evaluate_100k: {EXAMPLE} no longer names its gearbox catalog as this benchmark expects")
@@ -541,18 +553,15 @@ def measure_evaluate_large(size: Size, workdir: Path) -> list[str]:
     py = sys.executable
     shipped = [measured_run([py, "-m", "calc", "evaluate", str(EXAMPLE.relative_to(ROOT)), "--json"]) for _ in range(size.runs)]
     shipped_time = statistics.median(t for t, _ in shipped)
-    runs = f"median of {size.runs}"
     out = []
-    for optional in ("blank", "filled"):
+    for optional in ("filled", "blank"):
         case = write_large_case(workdir, size.rows, optional)
         large = [measured_run([py, "-m", "calc", "evaluate", str(case), "--json"]) for _ in range(size.runs)]
         large_time = statistics.median(t for t, _ in large)
         name = f"evaluate_100k_{optional}"
         out += [
-            line(name, large_time, "s", note=(
-                f"python -m calc evaluate --json, {size.rows} catalog rows at the example's ratio, optional columns {optional}, "
-                f"{runs}; shipped catalog {shipped_time:.3g} s"
-            )),
+            line(name, large_time, "s", note=f"python -m calc evaluate --json, {size.rows} catalog rows at the example's ratio, "
+                 f"optional columns {optional}, median of {size.runs}; shipped catalog {shipped_time:.3g} s"),
             line(f"{name}_vs_shipped", large_time / shipped_time, "x", ("<=", 3)),
             line(f"{name}_memory", max(m for _, m in large), "MB", ("<=", 500), note="peak resident memory of the process"),
         ]

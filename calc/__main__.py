@@ -15,6 +15,8 @@ import json
 import os
 import sys
 
+import numpy as np
+
 from .errors import CalcError
 
 
@@ -36,11 +38,9 @@ def main(argv=None) -> int:
     for p in (ev, ra, rp):
         p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
-    import numpy as np
-
-    # No numpy warning reaches standard error, whatever the input (spec/case-format.md): inputs
-    # out of scale are refused where they are read, naming the key or catalog cell, and a result
-    # that still overflows is an error naming the result (calc.sections.common.number).
+    # Nothing but the results and the one-line error reach the terminal: numpy's floating-point
+    # warnings are not printed (a non-finite result is an input error naming where it came from,
+    # calc.sections.common.number; the loaders hold every value within calc.units.SI_SCALE).
     with np.errstate(all="ignore"):
         return _run(args)
 

@@ -1,7 +1,6 @@
-"""Dependencies as declared as they are used: every module the package imports comes from a
-distribution that pyproject.toml declares (its dependencies or an extra), and environment.txt
-pins every distribution of the tested environment (a complete lock: ``make setup`` installs
-exactly it)."""
+"""Dependencies as declared as they are used: every distribution the package, its tests and its
+benchmark import (or run as ``python -m NAME``) is declared in pyproject.toml, and environment.txt
+pins exactly what is installed, so a clean machine gets the set the tests ran against."""
 
 import ast
 import importlib.metadata
@@ -11,64 +10,74 @@ import tomllib
 
 from .conftest import ROOT
 
+PYPROJECT = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
+#: Modules run as ``python -m NAME`` (a kernel, a server) rather than imported.
+RUN_AS_MODULE = re.compile(r"""["']-m["'],\s*["']([A-Za-z_][A-Za-z0-9_]*)["']""")
 
-def normal(name: str) -> str:
-    """A distribution's name as packaging compares it (``Jinja2``, ``jupyter_client`` ->
-    ``jinja2``, ``jupyter-client``)."""
+
+def normalized(name: str) -> str:
+    """A distribution's name as the packaging standards compare them (PEP 503)."""
     return re.sub(r"[-_.]+", "-", name).lower()
 
 
 def requirement_name(requirement: str) -> str:
-    return normal(re.match(r"[A-Za-z0-9][A-Za-z0-9._-]*", requirement.strip()).group(0))
+    return normalized(re.match(r"[A-Za-z0-9_.-]+", requirement).group(0))
 
 
-def imported_modules() -> dict[str, str]:
-    """Each third-party top-level module ``calc/`` imports, with one file that imports it."""
-    out = {}
-    for path in sorted((ROOT / "calc").rglob("*.py")):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if isinstance(node, ast.Import):
-                names = [alias.name for alias in node.names]
-            elif isinstance(node, ast.ImportFrom) and node.level == 0:
-                names = [node.module]
-            else:
-                continue
-            for name in names:
-                top = name.split(".")[0]
-                if top not in sys.stdlib_module_names and top != "calc":
-                    out.setdefault(top, path.relative_to(ROOT).as_posix())
-    return out
+def modules_used(folders) -> dict:
+    """Top-level modules outside the standard library that the files import or run, each with a
+    file that does."""
+    used = {}
+    for folder in folders:
+        for path in sorted((ROOT / folder).rglob("*.py")):
+            text = path.read_text(encoding="utf-8")
+            names = set(RUN_AS_MODULE.findall(text))
+            for node in ast.walk(ast.parse(text)):
+                if isinstance(node, ast.Import):
+                    names |= {alias.name.split(".")[0] for alias in node.names}
+                elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+                    names.add(node.module.split(".")[0])
+            # pip comes with every virtual environment (python -m venv), the others are the project's own.
+            for name in names - set(sys.stdlib_module_names) - {"calc", "tests", "bench", "review_browser", "__future__", "pip"}:
+                used.setdefault(name, path.relative_to(ROOT))
+    return used
 
 
-def declared() -> set[str]:
-    project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
-    requirements = [*project["dependencies"], *(r for extra in project["optional-dependencies"].values() for r in extra)]
-    return {requirement_name(r) for r in requirements}
+def undeclared(used: dict, declared: set) -> list[str]:
+    distributions = importlib.metadata.packages_distributions()
+    missing = []
+    for module, where in sorted(used.items()):
+        found = {normalized(d) for d in distributions.get(module, [])}
+        assert found, f"{where} uses {module}, which no installed distribution provides"
+        if not found & declared:
+            missing.append(f"{module} ({', '.join(sorted(found))}), used in {where}")
+    return missing
 
 
-def test_every_module_the_package_imports_is_declared():
-    providers = importlib.metadata.packages_distributions()
-    names = declared()
-    undeclared = [
-        f"{module} (imported by {path}, from {' or '.join(providers.get(module, ['no installed distribution']))})"
-        for module, path in imported_modules().items()
-        if not any(normal(d) in names for d in providers.get(module, []))
-    ]
-    assert not undeclared, f"pyproject.toml declares no distribution of: {'; '.join(undeclared)}"
+def test_what_the_package_uses_is_declared():
+    extras = PYPROJECT["optional-dependencies"]
+    declared = {requirement_name(r) for r in PYPROJECT["dependencies"]}
+    declared |= {requirement_name(r) for name, reqs in extras.items() if name != "test" for r in reqs}
+    assert undeclared(modules_used(["calc"]), declared) == []
 
 
-def test_environment_txt_pins_every_installed_distribution():
+def test_what_the_tests_and_benchmark_use_is_declared():
+    declared = {requirement_name(r) for reqs in [PYPROJECT["dependencies"], *PYPROJECT["optional-dependencies"].values()] for r in reqs}
+    assert undeclared(modules_used(["tests", "bench"]), declared) == []
+
+
+def test_environment_txt_pins_exactly_what_is_installed():
     pinned = {}
     for line in (ROOT / "environment.txt").read_text(encoding="utf-8").splitlines():
-        if line.strip() and not line.startswith("#"):
+        line = line.split("#")[0].strip()
+        if line:
             name, _, version = line.partition("==")
-            pinned[normal(name)] = version.strip()
+            assert version, f"environment.txt: expected NAME==VERSION, found {line!r}"
+            pinned[normalized(name)] = version
     installed = {
-        normal(d.metadata["Name"]): d.version for d in importlib.metadata.distributions()
-        if normal(d.metadata["Name"]) not in {"pip", "drivetrain-calc"}  # the installer and the project itself
+        normalized(d.metadata["Name"]): d.version
+        for d in importlib.metadata.distributions()
+        if normalized(d.metadata["Name"]) not in {"pip", normalized(PYPROJECT["name"])}
     }
-    unpinned = sorted(f"{name}=={version}" for name, version in installed.items() if name not in pinned)
-    assert not unpinned, f"environment.txt does not pin {', '.join(unpinned)} (installed in the tested environment)"
-    wrong = sorted(f"{name}: pinned {pinned[name]}, installed {version}" for name, version in installed.items() if pinned[name] != version)
-    assert not wrong, f"environment.txt pins other versions than the tested environment has: {'; '.join(wrong)}"
-    assert declared() <= set(pinned), f"environment.txt does not pin {', '.join(sorted(declared() - set(pinned)))}"
+    assert {k: v for k, v in installed.items() if pinned.get(k) != v} == {}, "installed but not pinned (or at another version)"
+    assert {k: v for k, v in pinned.items() if installed.get(k) != v} == {}, "pinned but not installed (or at another version)"

@@ -4,7 +4,7 @@ the ordering text of the one chosen."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -12,13 +12,14 @@ from ..bands import factor_table
 from ..case import Case, Table, once
 from ..catalog import Catalog, display_path, load_catalogs
 from ..coupling import (
-    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, J_load_at_input, check_types, f_e_min, order_lines,
-    select_coupling,
+    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input, check_types, f_e_min,
+    order_lines, select_coupling,
 )
 from ..errors import CalcError
 from ..fits import parse_bore
 from ..gearbox import n_1
 from ..profile import Z_h
+from ..torsion import Member, gearbox_at_input, inertia_at_output, load_at_input
 from ..units import Q_, fmt, sig
 from . import gearbox
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity, quantity_text, shown
@@ -42,6 +43,9 @@ class CouplingCase:
     inputs: dict
     bores: tuple
     derived: list  # what was taken from the rest of the case (side = "input"), as sentences
+    missing: dict = field(default_factory=dict)  # key -> what the case lacks for it (side = "input"); its checks are not made
+    drive_train: DriveTrain | None = None  # the members around the coupling (calc.torsion)
+    drive_steps: tuple = ()  # (title, Step) of each member referred to the coupling's shaft
 
 
 def read(case: Case) -> CouplingCase:
@@ -95,16 +99,72 @@ def read(case: Case) -> CouplingCase:
             z = Z_h(t_cycle=case.profile.t_cycle)
             derived["starts_per_hour"] = (z, f"starts_per_hour = Z_h of the load cycle (one start per cycle) = {fmt(z, '1/hour')}")
     inputs["starts_per_hour"] = given_or_derived("starts_per_hour", "per_hour")
-    notes = [text for key, (_, text) in derived.items() if not s.has(key)]
-    return CouplingCase(catalog, wanted, side, inputs, bores, notes)
+    notes = [text for key, (q, text) in derived.items() if not s.has(key) and q is not None]
+    missing = {key: text for key, (q, text) in derived.items() if not s.has(key) and q is None}
+    return CouplingCase(catalog, wanted, side, inputs, bores, notes, missing, *_drive_train(case, side, inputs))
+
+
+def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain | None, tuple]:
+    """The drive train around the coupling, every member referred to the coupling's shaft
+    (:mod:`calc.torsion`), and the steps that referred them there.
+
+    Without a gearbox (a direct drive) the chain is the drive, the coupling and the load as
+    the section gives them. With a gearbox, between motor and gearbox (``side = "input"``): the
+    motor, the coupling, the gearbox's ``J_1`` and its ``C_t21 / i²``, the load ``J_L / i²``;
+    between gearbox and load (``side = "output"``): the motor and ``J_1`` times ``i²``, the
+    gearbox's ``C_t21``, the coupling, the load as the section gives it. A member the case does not
+    give is named in ``missing`` and left out (the gearbox then counts as rigid), so the chain
+    still has the coupling's two sides. Without the inertias of the coupling's two sides (a partial
+    case) there is no chain: the resonance checks are then not made (:func:`select_coupling`)."""
+    if inputs["drive_inertia"] is None or inputs["load_inertia"] is None:
+        return None, ()
+    two_mass = (Member("motor", inputs["drive_inertia"]),), (Member("load", inputs["load_inertia"]),)
+    if not gearbox.applies(case):
+        return DriveTrain(*two_mass), ()
+    if side is None:
+        return DriveTrain(*two_mass, missing=("coupling.side (where the coupling sits: input or output of the gearbox)",)), ()
+    selection = gearbox.gearbox_selection(case)
+    row = selection.order[0]
+    part = str(selection.catalog.parts[row])
+    i, C_t21, J_1 = selection.catalog["ratio"][row], selection.catalog["C_t21"][row], selection.J_1[row]
+    missing = []
+    if np.isnan(C_t21.magnitude):
+        missing.append(f"the gearbox's torsional stiffness C_t21 ({part}: the catalog leaves it empty)")
+    if np.isnan(J_1.magnitude):
+        missing.append(f"the gearbox's J_1 ({part}: the catalog gives none for the motor's shaft)")
+    end, shaft = ("load", "the gearbox input") if side == "input" else ("motor", "the gearbox output")
+    given = {"load": case.load_inertia, "motor": case.motor_inertia}[end]
+    if given is None:
+        missing.append(f"the {end}'s inertia ({'[load] inertia or [mechanism]' if end == 'load' else 'motor.inertia'})")
+    if missing:
+        return DriveTrain(*two_mass, missing=tuple(missing), shaft=shaft), ()
+    # A gearbox that is not selected stands in for the one the case will get: its modes inform.
+    stand_in = () if selection.selected == part else (f"a selected gearbox ({part}, the best-ranked, stands in: none is selected)",)
+    if side == "input":
+        j_l = load_at_input.step(J_L=given, i=i)
+        c_g = gearbox_at_input.step(C_t21=C_t21, i=i)
+        steps = (("Load reflected to the gearbox input", j_l), (f"Stiffness of {part} at its input", c_g))
+        train = DriveTrain(two_mass[0], (Member("gearbox", J_1, c_g.result), Member("load", j_l.result)), stand_in, shaft)
+        return train, steps
+    j_m = inertia_at_output.step(J_in=given, i=i)
+    j_g = inertia_at_output.step(J_in=J_1, i=i)
+    steps = (("Motor referred to the gearbox output", j_m), (f"J_1 of {part} referred to its output", j_g))
+    return DriveTrain((Member("motor", j_m.result), Member("gearbox", j_g.result, C_t21)), two_mass[1], stand_in, shaft), steps
 
 
 def _from_the_case(case: Case, s: Table) -> dict:
     """What a coupling between motor and gearbox can take from the rest of the case, by key:
     ``(quantity, sentence)``. ``load_inertia`` is the load reflected to the input plus the gearbox's
     J_1 (E8), ``speed`` the highest input speed ``n_2max · i``, ``accel_torque`` the motor's peak
-    torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given."""
-    out = {}
+    torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given.
+    Where the case does not give what ``accel_torque``, ``drive_inertia`` or ``load_inertia`` needs,
+    the key holds ``(None, what is missing)``: the checks that need it are not made, naming it
+    (the contract's partial cases)."""
+    out = {
+        "accel_torque": (None, "motor.peak_torque (or coupling.accel_torque)"),
+        "drive_inertia": (None, "motor.inertia (or coupling.drive_inertia)"),
+        "load_inertia": (None, "load.inertia (or the mechanism's) and a gearbox, or coupling.load_inertia"),
+    }
     if case.motor_peak_torque is not None:
         out["accel_torque"] = (case.motor_peak_torque, f"accel_torque M_a = motor.peak_torque = {fmt(case.motor_peak_torque, 'N*m')}")
     if case.motor_inertia is not None:
@@ -118,7 +178,11 @@ def _from_the_case(case: Case, s: Table) -> dict:
     speed = n_1(n_2=case.profile.n_2max, i=i)
     out["speed"] = (speed, f"speed = n_2max · i = {fmt(case.profile.n_2max, 'rpm')} · {sig(i.m_as(''))} = {fmt(speed, 'rpm')}")
     J_1, hub = selection.J_1[row], selection.J_1_hub[row]
-    if case.load_inertia is not None and not np.isnan(J_1.magnitude):
+    if case.load_inertia is None:
+        out["load_inertia"] = (None, "load.inertia (or the mechanism's), or coupling.load_inertia")
+    elif np.isnan(J_1.magnitude):
+        out["load_inertia"] = (None, f"the gearbox's J_1, which {selection.catalog.catalog_of(row)} does not give for {part} (or coupling.load_inertia)")
+    else:
         J = J_load_at_input(J_L=case.load_inertia, i=i, J_1=J_1)
         which = part if selection.passes[row] else f"{part}, the best-ranked gearbox (none passes)"
         which += "" if np.isnan(hub.magnitude) else f", {fmt(hub, 'mm')} clamping hub"
@@ -136,7 +200,10 @@ def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:
     def compute():
         cc = read(case)
         where = f"{case.path}: coupling"
-        return cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], where=where, **cc.inputs)
+        return cc, select_coupling(
+            cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train, where=where,
+            sources=cc.missing, **cc.inputs,
+        )
 
     return once(case, "coupling", compute)
 
@@ -165,8 +232,9 @@ class CouplingResult:
                     "part": str(cc.catalog.parts[row]),
                     "type": str(types[row]),
                     "illustrative": bool(cc.catalog.illustrative[row]),
-                    "passes": bool(sel.passes[row]),
+                    "passes": sel.decided(row),
                     "f_e": quantity(sel.f_e[row], "Hz"),
+                    "f_1": None if sel.modes is None else quantity(sel.modes[row, 0], "Hz"),
                     "C_T": quantity(sel.C_T[row], "N*m/rad"),
                     "temperature_factor": float(sel.temperature_factor[row]),
                     "required_torque": quantity(sel.M_Nt[row], "N*m"),
@@ -226,7 +294,29 @@ class CouplingResult:
             "candidates": listed,
             "selected": selected,
             "order": order,
+            "torsion": self.torsion_json(),
             "notes": notes,
+        }
+
+    def torsion_json(self) -> dict | None:
+        """The drive train's torsional modes (:mod:`calc.torsion`) with the chosen coupling (the
+        best-ranked where none passes): its masses and springs, referred to the coupling's shaft,
+        the natural frequencies lowest first without the rigid-body mode, and the check of the
+        first against 2 f_er."""
+        sel = self.selection
+        if sel.chain is None:
+            return None
+        row = int(sel.order[0])
+        chain, train = sel.chain, sel.drive_train
+        return {
+            "part": str(sel.catalog.parts[row]),
+            "shaft": train.shaft,
+            "complete": train.complete,
+            "missing": list(train.missing),
+            "masses": [{"members": name, "J": quantity(chain.inertias[row, k], "kg*cm**2")} for k, name in enumerate(chain.masses)],
+            "springs": [{"member": name, "C": quantity(chain.stiffnesses[row, k], "N*m/rad")} for k, name in enumerate(chain.springs)],
+            "natural_frequencies": [quantity(f, "Hz") for f in sel.modes[row]],
+            "checks": [check_json(c.at(row)) for c in sel.checks if c.name == "f_1"],
         }
 
     def summary_lines(self, candidates: int | None = SHOWN_CANDIDATES) -> list[str]:
@@ -244,7 +334,7 @@ class CouplingResult:
             lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
         several = len(section["catalogs"]) > 1
         for c, row in zip(section["candidates"], shown(self.selection.order, candidates)):
-            verdict = "PASS" if c["passes"] else "FAIL"
+            verdict = {True: "PASS", False: "FAIL", None: "OPEN"}[c["passes"]]
             where = f" [{c['catalog']}]" if several else ""
             lines.append(f"  {verdict}  {c['part']}{where} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {quantity_text(c['f_e'])}")
             lines += [f"        {check_line(k.at(row), 20)}" for k in self.selection.checks if k.applies_to(row)]
@@ -254,16 +344,43 @@ class CouplingResult:
                 lines.append(f"        rejected: {r}")
         if section["candidate_count"] > len(section["candidates"]):
             lines.append(f"  ... {section['candidate_count'] - len(section['candidates'])} more candidates (--all-candidates lists them)")
-        lines.append(f"Selected coupling: {section['selected'] or 'none passes'}")
+        lines.append(f"Selected coupling: {section['selected'] or self.not_chosen}")
+        lines += self._torsion_lines(section["torsion"])
         if section["order"]:
             lines.append(f"Order: {section['order']}")
         lines += [f"Note: {n}" for n in section["notes"]]
+        return lines
+
+    @property
+    def not_chosen(self) -> str:
+        """Why no coupling is chosen: a check the case cannot feed, or none passes."""
+        sel = self.selection
+        if sel.not_made and sel.passes[sel.order[0]]:
+            return "none: " + "; ".join(f"{c.text}: not checked, {c.not_made}" for c in sel.not_made)
+        return "none passes"
+
+    def _torsion_lines(self, t: dict | None) -> list[str]:
+        if t is None:
+            return []
+        chain = " | ".join(
+            [f"{m['members']} {quantity_text(m['J'])}" for m in t["masses"][:1]]
+            + [f"{c['member']} {quantity_text(c['C'])} | {m['members']} {quantity_text(m['J'])}" for c, m in zip(t["springs"], t["masses"][1:])]
+        )
+        frequencies = ", ".join(quantity_text(f) for f in t["natural_frequencies"])
+        row = int(self.selection.order[0])
+        lines = [
+            f"Drive train with {t['part']}, at {t['shaft']}{'' if t['complete'] else ' (incomplete)'}: {chain}",
+            f"  natural frequencies {frequencies} (rigid-body mode left out)",
+        ]
+        lines += [f"  {check_line(c.at(row), 20)}" for c in self.selection.checks if c.name == "f_1"]
         return lines
 
     def verdict(self) -> Verdict:
         sel = self.selection
         if sel.selected is not None:
             return Verdict(True)
+        if sel.not_made and sel.passes[sel.order[0]]:
+            return Verdict(None, [f"No coupling can be chosen: {c.text}: not checked, {c.not_made}" for c in sel.not_made])
         return Verdict(False, no_candidate_passes("No coupling passes its checks:", sel.catalog.parts, sel.order, sel.reasons))
 
 
