@@ -2,6 +2,7 @@
 # make report  set up what is missing, then build the example's calc report
 # make bench   set up what is missing, then print the benchmark
 # make review  set up what is missing, then serve the design review on http://localhost:8866/
+# make book    set up what is missing, then build the course as a static website in build/book/
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
@@ -9,7 +10,7 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed-$(shell cat environment.txt pyproject.toml | sha256sum | cut -c1-12)
 EXAMPLE := cases/indexing-table.toml
 
-.PHONY: setup tex browser test report bench review notebooks clean
+.PHONY: setup tex browser test report bench review notebooks book clean
 
 setup: $(STAMP)
 
@@ -72,12 +73,18 @@ bench: setup tex browser
 review: setup
 	$(PY) -m calc.review.serve
 
+# The course as a static website from the notebooks as stored (nothing is executed, nothing fetched):
+# open build/book/index.html in a browser.
+book: setup
+	$(PY) -m sphinx -q -W --keep-going -c book . build/book
+	@echo "the book: build/book/index.html"
+
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
 # No execution times are recorded, so a re-run changes only what the calculation changed; no widget
 # state is stored either (notebook 07's panel: some 170 KB of it, new on every run, and a live kernel
 # rebuilds it anyway).
 notebooks: setup
-	for nb in notebooks/*.ipynb; do \
+	for nb in notebooks/*.ipynb notebooks/instructor/*.ipynb; do \
 	  $(PY) -m jupyter nbconvert --to notebook --execute --inplace --ExecutePreprocessor.record_timing=False \
 	    --ExecutePreprocessor.store_widget_state=False "$$nb" || exit 1; done
 

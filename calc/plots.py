@@ -22,7 +22,10 @@ TORQUE_COLOR = "#b2222a"
 ON_COLOR = "#d7e6f5"
 PAUSE_COLOR = "#e4e4e4"
 CASE_COLOR = "#d95f02"
-CHECK_COLORS = ("#1f5fa8", "#e08a1e", "#5a9e3a", "#8e5ba8")
+PASS_COLOR = "#4c9a3f"
+FAIL_COLOR = "#c0392b"
+#: Where the utilization figure's axis ends: far-failing rows would flatten the rest.
+UTILIZATION_AXIS_END = 2.0
 
 #: A segment narrower than this share of the cycle gets no value or phase label (they would overlap).
 _LABEL_MIN_SHARE = 0.06
@@ -190,10 +193,14 @@ def shock_factor_figure(cycles_per_hour=None):
 
 
 def utilization_figure(selection: GearboxSelection, limit: int = 12):
-    """Bar chart of each candidate's governing-check utilizations (required / rated), best first.
+    """Each candidate's governing-check utilizations (required / rated), best first, read at a glance.
 
-    The dashed line at 1 is the limit; a bar above it is a failed check (hatched). A check whose
-    rated value the catalog leaves empty has no bar and is labelled "no rating".
+    One row per candidate: its bar is its highest governing utilization, green where the candidate
+    passes and red where it fails (the verdict of its checks, not a second reading of the numbers),
+    labelled with the value and the check that decides it; a dot for each of its other governing
+    checks. The dashed line at 1 is the limit. The axis stops at 2: a bar beyond it is cut and its
+    label gives the value. A check whose rated value the catalog leaves empty has no dot and is
+    named after "no rating".
 
     Parameters
     ----------
@@ -205,43 +212,46 @@ def utilization_figure(selection: GearboxSelection, limit: int = 12):
     Returns
     -------
     matplotlib.figure.Figure
-        One axes, one bar group per candidate, one bar per governing check.
+        One axes, one row per candidate, the best at the top.
     """
     from matplotlib.figure import Figure
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
 
     candidates = selection.candidates(limit)
     total = len(selection.order)
-    checks = [c for c in candidates[0].checks if c.governs]
-    x = np.arange(len(candidates))
-    width = 0.8 / len(checks)
-
-    fig = Figure(figsize=(max(6.5, 1.15 * len(candidates) + 2.5), 4.8), layout="constrained")
+    fig = Figure(figsize=(10.0, 0.38 * len(candidates) + 1.9), layout="constrained")
     ax = fig.subplots()
-    top = 1.0
-    for j, check in enumerate(checks):
-        u = np.array([next(k.utilization for k in c.checks if k.name == check.name) for c in candidates], dtype=float)
-        bars = ax.bar(x + (j - (len(checks) - 1) / 2) * width, np.nan_to_num(u, nan=0.0), width, color=CHECK_COLORS[j % len(CHECK_COLORS)],
-                      label=check.criterion, zorder=2)
-        for bar, value in zip(bars, u):
-            if value > 1.0:
-                bar.set_hatch("///")
-                bar.set_edgecolor("black")
-        ax.bar_label(bars, labels=["no rating" if np.isnan(v) else f"{v:.2f}" for v in u], fontsize=8, padding=2)
-        top = max(top, np.nanmax(u, initial=0.0))
-    ax.axhline(1.0, color="black", linestyle="--", linewidth=1.2, zorder=3, label="limit: utilization 1")
-    labels = []
-    for c in candidates:
-        verdict = "PASS" if c.passes else "FAIL"
-        mark = " (selected)" if c.part == selection.selected else ""
-        labels.append(f"{c.part}\n{verdict}{mark}" + ("\nillustrative" if c.illustrative else ""))
-    ax.set_xticks(x, labels, fontsize=8)
-    ax.set_ylim(0.0, 1.18 * top)
-    ax.set_ylabel("utilization = required / rated [–]")
-    ax.set_xlabel("catalog candidate, best first")
+    for row, c in enumerate(candidates):
+        governing = [k for k in c.checks if k.governs]
+        u = np.array([k.utilization for k in governing], dtype=float)
+        rated = ~np.isnan(u)
+        worst = int(np.nanargmax(u)) if rated.any() else None
+        value = u[worst] if worst is not None else 0.0
+        ax.barh(row, min(value, UTILIZATION_AXIS_END), 0.62, color=PASS_COLOR if c.passes else FAIL_COLOR, zorder=2)
+        others = np.array([v for j, v in enumerate(u) if j != worst and rated[j]])
+        ax.plot(np.minimum(others, UTILIZATION_AXIS_END), np.full(len(others), row), "o", color="#333333", markersize=3.5, zorder=3)
+        label = "" if worst is None else f"{value:.2f}  {governing[worst].criterion}"
+        unrated = [k.criterion for k, r in zip(governing, rated) if not r]
+        label += ("; " if label else "") + ("no rating: " + ", ".join(unrated) if unrated else "")
+        ax.text(min(value, UTILIZATION_AXIS_END) + 0.03, row, label, va="center", fontsize=8, zorder=4)
+    ax.axvline(1.0, color="black", linestyle="--", linewidth=1.2, zorder=3)
+    marks = [" (selected)" if c.part == selection.selected else "" for c in candidates]
+    ax.set_yticks(range(len(candidates)), [f"{c.part}  {'PASS' if c.passes else 'FAIL'}{m}" + ("  illustrative" if c.illustrative else "")
+                                            for c, m in zip(candidates, marks)], fontsize=8)
+    ax.set_ylim(len(candidates) - 0.5, -0.5)  # the best at the top
+    # Room on the right for the labels; the ticks stop at the axis end.
+    ax.set_xlim(0.0, UTILIZATION_AXIS_END + 2.0)
+    ax.set_xticks(np.arange(0.0, UTILIZATION_AXIS_END + 0.01, 0.25))
+    ax.set_xlabel("utilization = required / rated [–]")
     shown = f"best {len(candidates)} of {total}" if total > len(candidates) else f"{total} candidate{'s' if total != 1 else ''}"
-    ax.set_title(f"Utilization of the governing {selection.mode} checks, {shown} (hatched: over the limit)", fontsize=10)
-    ax.grid(True, axis="y", color="#dddddd", linewidth=0.6, zorder=0)
-    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=len(checks) + 1, fontsize=8, frameon=False)
+    ax.set_title(f"Utilization of the governing {selection.mode} checks, {shown}\n"
+                 f"bar: the highest, with the check that decides it (cut at {UTILIZATION_AXIS_END:g}); dots: the others", fontsize=10)
+    ax.grid(True, axis="x", color="#dddddd", linewidth=0.6, zorder=0)
+    handles = [Patch(color=PASS_COLOR, label="passes"), Patch(color=FAIL_COLOR, label="fails"),
+               Line2D([], [], marker="o", linestyle="none", color="#333333", markersize=3.5, label="other governing checks"),
+               Line2D([], [], color="black", linestyle="--", label="limit: utilization 1")]
+    fig.legend(handles=handles, loc="outside lower center", ncols=4, fontsize=8, frameon=False)
     return fig
 
 

@@ -2,12 +2,13 @@
 
 import numpy as np
 import pytest
+from matplotlib.colors import to_rgb
 from matplotlib.patches import StepPatch
 
 from calc import CalcError, Q_
 from calc.catalog import load_catalog
 from calc.gearbox import SCHEMA, SHOCK_FACTORS, candidates_summary, candidates_table, rows_at_ratio, select_gearbox
-from calc.plots import load_cycle_figure, shock_factor_figure, utilization_figure
+from calc.plots import FAIL_COLOR, PASS_COLOR, load_cycle_figure, shock_factor_figure, utilization_figure
 from calc.profile import Profile, Z_h, duty
 
 from .conftest import GEARBOXES
@@ -119,32 +120,37 @@ def test_shock_factor_figure_takes_one_point():
 def test_utilization_figure_bars_the_governing_checks(selection):
     fig = utilization_figure(selection)
     (ax,) = fig.axes
-    bars = {c.get_label(): c for c in ax.containers}
-    # S5 governs: the S1 checks are not drawn; the emergency stop governs in both modes
-    assert set(bars) == {"n_2max · i <= n_1max", "T_2max <= T_2B", "T_2stop <= T_2Not"}
+    bars = ax.patches
     # Best first (T_2B and n_1max of each row in catalogs/gearboxes.csv): T_2max = 151.32 N·m (η 0.97),
-    # 148.2 N·m for TP300 and TP500 (η 0.95); n_2max · i = 3000 rpm.
-    heights = [b.get_height() for b in bars["T_2max <= T_2B"]]
-    t2b = [220, 400, 400, 648, 2280, 4000, 126, 90, 42, 35, 35, 13]
-    t2max = [151.32] * 4 + [148.2] * 2 + [151.32] * 6
-    np.testing.assert_allclose(heights, np.array(t2max) / t2b)
-    n1max = [6000, 4000, 4000, 5000, 3000, 3000, 7500, 7000, 7500, 8000, 8000, 10000]
-    np.testing.assert_allclose([b.get_height() for b in bars["n_2max · i <= n_1max"]], 3000 / np.array(n1max))
-    assert [b.get_hatch() for b in bars["T_2max <= T_2B"]] == [None] * 6 + ["///"] * 6
-    # T_2stop = 12 N·m · 10 = 120 N·m against each row's T_2Not, in the same order
-    t2not = [480, 1000, 1000, 1250, 8750, 15000, 251, 190, 100, 80, 75, 26]  # NPS015 before NPT015 (a tie on T_2B)
-    np.testing.assert_allclose([b.get_height() for b in bars["T_2stop <= T_2Not"]], 120 / np.array(t2not))
-    labels = [t.get_text() for t in ax.get_xticklabels()]
-    assert labels[:2] == ["NPT035-10\nPASS (selected)", "NPS045-10\nPASS"] and labels[6] == "TP010-10\nFAIL"
-    limit = [line for line in ax.lines if line.get_label() == "limit: utilization 1"]
-    assert limit and limit[0].get_ydata()[0] == 1.0
-    assert "S5" in ax.get_title() and "[–]" in ax.get_ylabel()
+    # 148.2 N·m for TP300 and TP500 (η 0.95); n_2max · i = 3000 rpm. Each bar is the highest governing
+    # utilization, cut at the axis end 2.
+    t2b = np.array([220, 400, 400, 648, 2280, 4000, 126, 90, 42, 35, 35, 13])
+    t2max = np.array([151.32] * 4 + [148.2] * 2 + [151.32] * 6)
+    n1max = np.array([6000, 4000, 4000, 5000, 3000, 3000, 7500, 7000, 7500, 8000, 8000, 10000])
+    t2not = np.array([480, 1000, 1000, 1250, 8750, 15000, 251, 190, 100, 80, 75, 26])  # T_2stop = 12 N·m · 10 = 120 N·m
+    worst = np.maximum.reduce([t2max / t2b, 3000 / n1max, 120 / t2not])
+    # the hub check governs too: its utilization (d_motor / d_hub,max) is below the others here but for NPT005-10
+    heights = np.array([b.get_width() for b in bars])
+    np.testing.assert_allclose(heights[:11], np.minimum(worst, 2.0)[:11])
+    assert heights[11] == 2.0
+    # The colour is the verdict: TP300-10 and TP500-10 sit at utilization 1.00 on the speed check, and pass.
+    colours = [b.get_facecolor()[:3] for b in bars]
+    assert colours == [to_rgb(PASS_COLOR)] * 6 + [to_rgb(FAIL_COLOR)] * 6
+    texts = [t.get_text() for t in ax.texts]
+    assert texts[0].startswith("0.69  T_2max <= T_2B") and texts[4].startswith("1.00  n_2max · i <= n_1max")
+    assert texts[11].startswith("11.64  T_2max <= T_2B")
+    labels = [t.get_text() for t in ax.get_yticklabels()]
+    assert labels[:2] == ["NPT035-10  PASS (selected)", "NPS045-10  PASS"] and labels[6] == "TP010-10  FAIL"
+    assert ax.get_ylim()[0] > ax.get_ylim()[1]  # the best at the top
+    limit = [line for line in ax.lines if line.get_linestyle() == "--"]
+    assert limit and limit[0].get_xdata()[0] == 1.0
+    assert "S5" in ax.get_title() and "[–]" in ax.get_xlabel()
 
 
 def test_utilization_figure_limits_the_candidates(selection):
     fig = utilization_figure(selection, limit=2)
     (ax,) = fig.axes
-    assert len(ax.get_xticks()) == 2
+    assert len(ax.get_yticks()) == 2
     assert "best 2 of 12" in ax.get_title()
 
 
@@ -162,7 +168,7 @@ def test_utilization_figure_marks_a_missing_rating():
     sel = select_gearbox(p, rows)
     fig = utilization_figure(sel)
     texts = [t.get_text() for t in fig.axes[0].texts]
-    assert "no rating" in texts
+    assert any("no rating: n_2m · i <= n_1N" in t for t in texts)
     table = candidates_table(sel)
     missing = table[(table.part == "NPT035-10") & (table.check == "n_2m · i <= n_1N")]
     assert np.isnan(missing.utilization.iloc[0]) and missing.verdict.iloc[0] == "FAIL"

@@ -1,0 +1,30 @@
+"""The course as a static website: the notebooks as stored (never executed here), their math
+typeset by a MathJax copy shipped with the build, so the pages need no network.
+
+Build: ``make book`` (``sphinx-build -c book . build/book``); open ``build/book/book/index.html``.
+"""
+
+project = "Servo drive-train workbook"
+author = "the workbook's authors"
+extensions = ["myst_nb", "sphinx-mathjax-offline"]  # the second copies MathJax into _static/
+root_doc = "book/index"
+# The students' notebooks and the book's front page; the lecturer's notebook (notebooks/instructor/) stays out.
+include_patterns = ["book/index.md", "notebooks/*.ipynb", "notebooks/figures/*"]
+exclude_patterns = ["**/.ipynb_checkpoints", ".venv", "build"]
+nb_execution_mode = "off"  # the stored outputs, which nbval keeps true
+myst_enable_extensions = ["dollarmath", "amsmath"]
+nb_merge_streams = True
+html_theme = "alabaster"
+html_theme_options = {"nosidebar": False, "page_width": "1100px", "body_max_width": "none"}
+html_title = project
+html_show_sourcelink = False
+html_copy_source = False
+# Tables the notebooks display (the glossary's symbols) write their math as $...$, which JupyterLab
+# typesets in any output; MathJax does the same here, in the notebooks' outputs.
+mathjax3_config = {
+    "tex": {"inlineMath": [["\\(", "\\)"], ["$", "$"]]},
+    "options": {"processHtmlClass": "tex2jax_process|mathjax_process|math|output_area|cell_output"},
+}
+myst_update_mathjax = False  # the configuration above is the whole of it
+nb_render_markdown_format = "myst"  # Markdown outputs parsed as the cells are, their $...$ as math
+html_extra_path = ["_root"]  # build/book/index.html, the address to open, leads to the front page

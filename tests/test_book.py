@@ -1,0 +1,91 @@
+"""The course as a static website (``make book``): built from a clean checkout's notebooks as
+stored, with Sphinx warnings as errors, then every page opened in headless Chromium from the files
+alone: it loads, asks for nothing on the network and nothing missing, its images show, its local
+links reach a page of the book, MathJax (shipped in the build) typesets its math with no error,
+and the self-checks open to their feedback. The build time and the page count are printed."""
+
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from urllib.parse import unquote, urlparse
+
+import pytest
+
+from bench.review_browser import CHROMIUM, CHROMIUM_ARGS
+
+from .conftest import ROOT
+
+pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason=f"no Chromium at {CHROMIUM} (make browser installs it)")
+
+RAW_TEX = re.compile(r"\$\\?[A-Za-z][^$\n]*\$")  # $T_{2m}$ or $\\mathrm{ED}$ left as typed
+NOTEBOOKS = sorted(p.stem for p in (ROOT / "notebooks").glob("*.ipynb"))
+
+
+@pytest.fixture(scope="module")
+def book(tmp_path_factory):
+    out = tmp_path_factory.mktemp("book")
+    start = time.perf_counter()
+    run = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-W", "--keep-going", "-c", "book", ".", str(out)],
+                         cwd=ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    pages = sorted(out.glob("notebooks/*.html")) + [out / "book" / "index.html"]
+    print(f"\nbook: built in {time.perf_counter() - start:.1f} s, {len(pages)} pages")
+    return out, pages
+
+
+def test_every_students_notebook_is_a_page_and_the_lecturers_is_not(book):
+    out, pages = book
+    assert sorted(p.stem for p in pages if p.parent.name == "notebooks") == NOTEBOOKS
+    assert not list(out.rglob("*99-answers*"))
+    front = (out / "book" / "index.html").read_text()
+    assert all(f"{name}.html" in front for name in NOTEBOOKS)  # the table of contents links each
+    assert 'url=book/index.html' in (out / "index.html").read_text()  # the address make book names leads there
+
+
+def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(book):
+    from playwright.sync_api import sync_playwright
+
+    out, pages = book
+    problems = []
+    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
+        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True, args=CHROMIUM_ARGS)
+        try:
+            page = browser.new_page()
+            asked, failed, typeset = [], [], 0
+            page.on("request", lambda r: asked.append(r.url))
+            page.on("requestfailed", lambda r: failed.append(r.url))
+            for path in pages:
+                name = path.relative_to(out)
+                asked.clear(), failed.clear()
+                page.goto(path.as_uri(), wait_until="load")
+                if page.locator("script[src*='mathjax']").count():  # Sphinx adds MathJax to the pages with math
+                    page.wait_for_function("() => window.MathJax && MathJax.startup && MathJax.startup.promise", timeout=30_000)
+                    page.evaluate("() => MathJax.startup.promise")
+                    typeset += page.evaluate("() => document.querySelectorAll('mjx-container').length")
+                problems += [f"{name}: asks the network for {u}" for u in asked if not u.startswith("file:")]
+                problems += [f"{name}: {u} is missing" for u in failed]
+                broken = page.evaluate("() => [...document.images].filter(i => !i.complete || i.naturalWidth === 0).map(i => i.src)")
+                problems += [f"{name}: image {u} does not show" for u in broken]
+                for href in page.evaluate("() => [...document.querySelectorAll('a[href]')].map(a => a.href)"):
+                    target = urlparse(href)
+                    if target.scheme == "file" and not Path(unquote(target.path)).exists():
+                        problems += [f"{name}: link to {href} leads nowhere"]
+                errors = page.evaluate("() => [...document.querySelectorAll('mjx-merror')].map(e => e.getAttribute('data-mjx-error') || e.textContent)")
+                problems += [f"{name}: math error {e!r}" for e in errors]
+                prose = page.evaluate("() => { const b = document.body.cloneNode(true); b.querySelectorAll('pre, code, script').forEach(e => e.remove()); return b.textContent; }")
+                raw = RAW_TEX.findall(prose)  # code shows its $...$ as written
+                problems += [f"{name}: shows raw TeX {raw[:3]}"] if raw else []
+                left = page.evaluate("() => [...document.querySelectorAll('.math')].filter(m => !m.querySelector('mjx-container')).length")
+                problems += [f"{name}: {left} formulas left untypeset"] if left else []
+                if path.parent.name == "notebooks" and "Self-check" in page.inner_text("body"):
+                    answer = page.locator("details").first
+                    answer.locator("summary").click()
+                    if not answer.evaluate("d => d.open") or not answer.inner_text().split("\n", 1)[-1].strip():
+                        problems.append(f"{name}: a self-check's answer does not open to its feedback")
+        finally:
+            browser.close()
+    assert not problems, problems
+    assert typeset > 300  # the formulas of every page, the glossary's included
