@@ -67,6 +67,35 @@ def write_case(tmp_path):
     return write
 
 
+# The cases whose calc reports the tests read: the example, a title of LaTeX's special characters,
+# a case no gearbox passes, one that cannot be evaluated.
+REPORT_TITLE = r"Axis #3 — 50% load & T_2 {v2} \ 100$"
+REPORT_CASES = {
+    "escape": f"title = '{REPORT_TITLE}'\n" + HEAD_TOML.replace('title = "test axis"', "") + PROFILE_TOML,
+    # 400 N·m · 10 · 1.3 · η (0.95 to 0.97) >= 4940 N·m, above every T_2B at ratio 10 (the largest: TP500-10, 4000 N·m)
+    "failing": HEAD_TOML.replace('"12 N*m"', '"400 N*m"') + PROFILE_TOML,
+    "unreadable": HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML,
+}
+
+
+@pytest.fixture(scope="session")
+def report_run(tmp_path_factory):
+    """The PDFs the tests read, built once per run: ``python -m calc report`` of the example and
+    :data:`REPORT_CASES` with ``--summary --strict`` (a PDF build takes seconds; each test file
+    building its own made the suite twice as long). The cases, the output folder and the process."""
+    import subprocess
+
+    folder = tmp_path_factory.mktemp("reports")
+    cases = [EXAMPLE]
+    for name, text in REPORT_CASES.items():
+        (folder / f"{name}.toml").write_text(text, encoding="utf-8")
+        cases.append(folder / f"{name}.toml")
+    out = folder / "out"
+    proc = subprocess.run([sys.executable, "-m", "calc", "report", *map(str, cases), "--summary", "--strict", "-o", str(out)],
+                          capture_output=True, text=True, cwd=ROOT)
+    return cases, out, proc
+
+
 # --- Which error messages the tests trigger (checked by tests/test_error_sites.py) -------------
 #
 # Only items under tests/ count: the check must give the same verdict under ``pytest tests`` as

@@ -18,8 +18,8 @@ from calc.report import build_report, latex_escape, prose
 from calc.report.common import case_key
 
 from .conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT
+from .conftest import REPORT_TITLE as TITLE
 
-TITLE = r"Axis #3 — 50% load & T_2 {v2} \ 100$"
 needs_tex = pytest.mark.skipif(
     any(shutil.which(t) is None for t in ("xelatex", "pandoc", "pdftotext")),
     reason="the PDF report needs xelatex, pandoc and pdftotext: run `make tex` (Debian) or install them",
@@ -119,38 +119,10 @@ def test_missing_programs_are_named_with_what_to_install(capsys, monkeypatch, tm
 # -- the PDFs ---------------------------------------------------------------------------------
 
 
-@pytest.fixture(scope="module")
-def example_pdf(tmp_path_factory):
-    pdf = tmp_path_factory.mktemp("example") / "example.pdf"
-    proc = report(EXAMPLE, "-o", pdf)
-    assert proc.returncode == 0, proc.stderr
-    return pdf, proc
-
-
-@pytest.fixture(scope="module")
-def batch(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("batch")
-    cases = {
-        "escape": f"title = '{TITLE}'\n" + HEAD_TOML.replace('title = "test axis"', "") + PROFILE_TOML,
-        "failing": HEAD_TOML.replace('"12 N*m"', '"400 N*m"') + PROFILE_TOML,
-        "broken": HEAD_TOML.replace("ratio = 10", "ratio = 13") + PROFILE_TOML,
-    }
-    for name, text in cases.items():
-        (folder / f"{name}.toml").write_text(text, encoding="utf-8")
-    out = folder / "pdf"
-    # Exit status (spec): a case that cannot be read exits 2 (its PDF still says why) ...
-    broken = report(folder / "broken.toml", "-o", out)
-    assert broken.returncode == 2, broken.stderr
-    # ... and with --strict a verdict that is not PASS exits 1 (without it, 0: the example's run).
-    proc = report(folder / "escape.toml", folder / "failing.toml", "-o", out, "--strict")
-    assert proc.returncode == 1, proc.stderr
-    return out, proc
-
-
 @needs_tex
-def test_example_pdf_has_title_verdict_parts_and_numbers(example_pdf):
-    pdf, proc = example_pdf
-    text = pdf_text(pdf)
+def test_example_pdf_has_title_verdict_parts_and_numbers(report_run):
+    _, out, proc = report_run
+    text = pdf_text(out / "indexing-table-profile.pdf")
     assert "Rotary indexing table, axis 3" in text
     assert "Verdict: PASS" in text
     assert "NPT035-10" in text
@@ -170,32 +142,44 @@ def test_example_pdf_has_title_verdict_parts_and_numbers(example_pdf):
 
 
 @needs_tex
-def test_title_from_the_case_prints_exactly_as_written(batch):
-    out, _ = batch
+def test_title_from_the_case_prints_exactly_as_written(report_run):
+    _, out, _ = report_run
     text = pdf_text(out / "escape.pdf")
     assert TITLE in text
 
 
 @needs_tex
-def test_failing_case_report_says_fail_and_why(batch):
-    out, _ = batch
+def test_failing_case_report_says_fail_and_why(report_run):
+    _, out, _ = report_run
     text = pdf_text(out / "failing.pdf")
     assert "Verdict: FAIL" in text
     assert "The design does not pass. Why:" in text
     assert "No gearbox of ratio 10 in catalogs/gearboxes.csv passes the S5 checks" in text
     assert "Nothing to order: no part passes." in text
-    text = pdf_text(out / "broken.pdf")
+    text = pdf_text(out / "unreadable.pdf")
     assert "Verdict: FAIL" in text and "The case cannot be evaluated" in text
 
 
 @needs_tex
-def test_batch_builds_one_pdf_each_with_a_progress_bar_and_a_summary(batch):
-    out, proc = batch
-    assert sorted(p.name for p in out.iterdir()) == ["broken.pdf", "escape.pdf", "failing.pdf"]
-    assert "calc reports" in proc.stderr and "2/2" in proc.stderr
+def test_batch_builds_one_pdf_each_with_a_progress_bar_and_a_summary(report_run):
+    cases, out, proc = report_run
+    # Exit status (spec): a case that cannot be read exits 2 (its PDF still says why), before --strict's 1.
+    assert proc.returncode == 2, proc.stderr
+    assert sorted(p.name for p in out.iterdir()) == [
+        "escape.pdf", "failing.pdf", "indexing-table-profile.pdf", "summary.csv", "summary.pdf", "unreadable.pdf",
+    ]
+    assert "calc reports" in proc.stderr and "4/4" in proc.stderr
     lines = proc.stdout.strip().splitlines()
-    assert [line.split()[0] for line in lines] == ["PASS", "FAIL"]
-    assert lines[0].endswith(str(out / "escape.pdf"))
+    assert [line.split()[0] for line in lines[:-1]] == ["PASS", "PASS", "FAIL", "FAIL"]
+    assert lines[1].endswith(str(out / "escape.pdf"))
+
+
+@needs_tex
+def test_strict_exits_1_when_a_verdict_is_not_pass(report_run, tmp_path):
+    cases, _, _ = report_run
+    proc = report(cases[2], "--strict", "-o", tmp_path / "failing.pdf")  # failing: no gearbox passes
+    assert proc.returncode == 1, proc.stderr
+    assert proc.stdout.startswith("FAIL  ")
 
 
 def test_inputs_describe_the_load_inertia_of_the_gearbox_section():
