@@ -25,7 +25,7 @@ from .units import kind_phrase, parse_quantity
 class Key:
     """One key of a case file's table, declared once by the section that reads it.
 
-    ``kind`` is a quantity kind of :mod:`calc.units` (``"torque"``) or one of :data:`KINDS`;
+    ``kind`` is a quantity kind of :mod:`calc.units` (``"torque"``) or one of :data:`OTHER_KINDS`;
     ``symbol`` the source document's symbol in code form (``"T_1B"``) where the key has one;
     ``default`` the value as a case file would write it, which the reader takes when the key is
     left out (None: none, or one the description states because it comes from the rest of the
@@ -44,7 +44,7 @@ class Key:
 
 
 #: Kinds of keys that are not quantities: what a case file writes for them.
-KINDS = {
+OTHER_KINDS = {
     "text": "a text in quotes",
     "choice": "one of the texts the description lists",
     "catalog": "a catalog name or path, or a list of them ranked together",

@@ -5,7 +5,8 @@ for the second segment, ``coupling.temperature``, ``mechanism.mass``, ``move[1].
 :func:`with_inputs` writes values at key paths into a copy of a case (a mechanism's or a move's
 into the tables the motion was derived from, which derive it again). The panel's controls are
 built from :func:`input_specs`, so a further input is one more line in :data:`SCALARS` or
-:data:`MECHANISM` (or one more rule for a list of tables like ``profile`` or ``move``).
+:data:`MECHANISM` (or one more rule for a list of tables like ``profile`` or ``move``); its kind and
+unit come from the key's declaration in its section (:func:`calc.sections.declared`).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import numpy as np
 
 from ..case import Case, Table
 from ..profile import Profile
+from ..sections import declared
 from ..sections import motion as motion_section
 from ..units import NUMBER, Q_, parse_quantity, pretty_unit
 
@@ -93,13 +95,14 @@ def _temperature(_v: float) -> tuple[float, float]:
     return -20.0, TEMPERATURE_FACTORS.top
 
 
-#: The single-valued inputs, where the case gives them: key path, label, unit, kind, range rule.
+#: The single-valued inputs, where the case gives them: key path, label, range rule (the unit and
+#: the kind are the key's declared ones).
 SCALARS = (
-    ("motor.peak_torque", "motor peak torque T_1B", "N*m", "torque", _scaled),
-    ("motor.inertia", "motor inertia J_motor", "kg*cm**2", "inertia", _scaled),
-    ("load.inertia", "load inertia J_L", "kg*cm**2", "inertia", _scaled),
-    ("coupling.temperature", "coupling temperature ϑ", "degC", "temperature", _temperature),
-    ("accuracy.applied_torque", "applied torque T", "N*m", "torque", lambda t: (0.0, max(5 * t, 10.0))),
+    ("motor.peak_torque", "motor peak torque T_1B", _scaled),
+    ("motor.inertia", "motor inertia J_motor", _scaled),
+    ("load.inertia", "load inertia J_L", _scaled),
+    ("coupling.temperature", "coupling temperature ϑ", _temperature),
+    ("accuracy.applied_torque", "applied torque T", lambda t: (0.0, max(5 * t, 10.0))),
 )
 
 
@@ -115,21 +118,22 @@ def _distance(v: float) -> tuple[float, float]:
     return (5 * v, v / 10) if v < 0 else (v / 10, 5 * v)
 
 
-#: The inputs of a mechanism: key, label, kind, unit (SI, inch-pound) where the file leaves it
-#: out, range rule, above zero. The radius and own inertia follow the type (:data:`OWN_KEYS`).
+#: The inputs of a mechanism: key, label, unit (SI, inch-pound) where the file leaves it out,
+#: range rule, above zero (the kind is the key's declared one). The radius and own inertia follow
+#: the type (:func:`calc.sections.motion.keys_of`).
 MECHANISM = {
-    "inertia": ("load inertia J_L", "inertia", ("kg*cm**2", "lb*in**2"), _scaled, True),
-    "friction_torque": ("friction torque T_f", "torque", ("N*m", "lbf*in"), _signed, False),
-    "process_torque": ("process torque T_p", "torque", ("N*m", "lbf*in"), _signed, False),
-    "mass": ("moved mass m", "mass", ("kg", "lb"), _scaled, True),
-    "friction_coefficient": ("friction coefficient μ", "dimensionless", ("", ""), lambda v: (0.0, max(5 * v, 0.2)), False),
-    "incline": ("incline θ", "angle", ("deg", "deg"), lambda _v: (-90.0, 90.0), False),
-    "force": ("process force F_p", "force", ("N", "lbf"), _signed, False),
-    "eta": ("efficiency η", "dimensionless", ("", ""), lambda _v: (0.5, 1.0), True),
-    "lead": ("screw lead p", "length", ("mm", "in"), _scaled, True),
-    "pitch_diameter": ("pinion pitch diameter d", "length", ("mm", "in"), _scaled, True),
-    "pulley_diameter": ("pulley diameter d", "length", ("mm", "in"), _scaled, True),
-    **{own: (f"{what} inertia J_M", "inertia", ("kg*cm**2", "lb*in**2"), _signed, False)
+    "inertia": ("load inertia J_L", ("kg*cm**2", "lb*in**2"), _scaled, True),
+    "friction_torque": ("friction torque T_f", ("N*m", "lbf*in"), _signed, False),
+    "process_torque": ("process torque T_p", ("N*m", "lbf*in"), _signed, False),
+    "mass": ("moved mass m", ("kg", "lb"), _scaled, True),
+    "friction_coefficient": ("friction coefficient μ", ("", ""), lambda v: (0.0, max(5 * v, 0.2)), False),
+    "incline": ("incline θ", ("deg", "deg"), lambda _v: (-90.0, 90.0), False),
+    "force": ("process force F_p", ("N", "lbf"), _signed, False),
+    "eta": ("efficiency η", ("", ""), lambda _v: (0.5, 1.0), True),
+    "lead": ("screw lead p", ("mm", "in"), _scaled, True),
+    "pitch_diameter": ("pinion pitch diameter d", ("mm", "in"), _scaled, True),
+    "pulley_diameter": ("pulley diameter d", ("mm", "in"), _scaled, True),
+    **{own: (f"{what} inertia J_M", ("kg*cm**2", "lb*in**2"), _signed, False)
        for own, what in (("screw_inertia", "screw"), ("pinion_inertia", "pinion"), ("pulley_inertia", "pulley"))},
 }
 #: A move's inputs: its time, and its ramps within it (so a ramp can be made too long for the move).
@@ -157,17 +161,18 @@ def motion_specs(case: Case) -> list[InputSpec]:
     where = f"{case.path}: mechanism"
     inch_pound = any(_INCH_POUND.search(_unit_of(v)) for k, v in mechanism.items() if k in MECHANISM)
     specs = []
-    for name in motion_section.keys_of(mechanism["type"]):
+    for key in motion_section.keys_of(mechanism["type"]):
+        name = key.name
         if name not in MECHANISM:
             continue
-        label, kind, units, reach, positive = MECHANISM[name]
+        label, units, reach, positive = MECHANISM[name]
         text = mechanism.get(name)
-        unit, v = (units[inch_pound], 0.0) if text is None else _as_written(text, kind, f"{where}.{name}")
+        unit, v = (units[inch_pound], 0.0) if text is None else _as_written(text, key.kind, f"{where}.{name}")
         specs.append(_spec(f"mechanism.{name}", f"mechanism: {label}", unit, v, *reach(v), positive=positive))
     for k, move in enumerate(tables["move"], start=1):
         where = f"{case.path}: move[{k}]"
         if "dwell" in move:
-            unit, v = _as_written(move["dwell"], "time", f"{where}.dwell")
+            unit, v = _as_written(move["dwell"], declared("move.dwell").kind, f"{where}.dwell")
             specs.append(_spec(f"move[{k}].dwell", f"{k} dwell: time t", unit, v, 0.0, max(3 * v, float(Q_(1, "s").m_as(unit))), positive=True))
             continue
         unit, v = _as_written(move["distance"], case.motion.mechanism.distance_kind, f"{where}.distance")
@@ -175,7 +180,7 @@ def motion_specs(case: Case) -> list[InputSpec]:
         time = parse_quantity(move["time"], "time", f"{where}.time")
         for name, label in MOVE_TIMES:
             if name in move:
-                unit, v = _as_written(move[name], "time", f"{where}.{name}")
+                unit, v = _as_written(move[name], declared(f"move.{name}").kind, f"{where}.{name}")
                 # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
                 high = 3 * v if name == "time" else float(time.m_as(unit))
                 specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=True))
@@ -186,9 +191,10 @@ def motion_specs(case: Case) -> list[InputSpec]:
 DEFAULTS = {"coupling.temperature": "20 degC"}
 
 
-def value_at(case: Case, key: str, unit: str, kind: str):
-    """The case's value at ``key`` in ``unit`` (a float; a quantity of ``kind``), or None where the
+def value_at(case: Case, key: str):
+    """The case's value at ``key`` in the unit its declaration shows (a float), or None where the
     case does not give it."""
+    unit, kind = declared(key).unit, declared(key).kind
     if key in CASE_FIELDS:
         q = getattr(case, CASE_FIELDS[key])
         return None if q is None else float(q.m_as(unit))
@@ -220,10 +226,10 @@ def input_specs(case: Case, ratios=()) -> list[InputSpec]:
         specs.append(_spec("gearbox.ratio", "gearbox ratio i", "", r, 0, 1, options=tuple(sorted({*ratios, r}))))
     moves = case.motion is not None and bool(case.motion.moves)
     specs += motion_specs(case) if moves else segment_specs(case)
-    for key, label, unit, kind, reach in SCALARS:
-        v = value_at(case, key, unit, kind)
+    for key, label, reach in SCALARS:
+        v = value_at(case, key)
         if v is not None and not (moves and key == "load.inertia"):  # the mechanism gives J_L
-            specs.append(_spec(key, label, unit, v, *reach(v)))
+            specs.append(_spec(key, label, declared(key).unit, v, *reach(v)))
     return specs
 
 

@@ -369,7 +369,7 @@ class AccuracyResult:
     accuracy: ChainAccuracy
 
     def to_json(self, candidates: int | None = None) -> dict:
-        """The ``accuracy`` section of the results (``spec/case-format.md``): ``C_total`` referred to
+        """The ``accuracy`` section of the results (``docs/case-format.md``): ``C_total`` referred to
         the output, ``lost_motion``, ``positioning_accuracy``, ``repeatability`` and the
         ``components`` with their ``stiffness_at_output`` and ``backlash_at_output``, each quantity as
         ``{"value", "unit"}``; measured loops, traces and positioning records where the case names them.

@@ -36,7 +36,7 @@ TABLES = (Declared(NAME, (
     Key("accel_torque", "torque", "acceleration torque of the motor" + _FROM_CASE, "M_a", unit="N*m"),
     Key("drive_inertia", "inertia", "the drive side's inertia without the coupling" + _FROM_CASE, "J_drive", unit="kg*cm**2"),
     Key("load_inertia", "inertia", "the load side's inertia as the coupling sees it, without the coupling (E8)" + _FROM_CASE, "J_load", unit="kg*cm**2"),
-    Key("service_factor", "dimensionless", "service factor (E8; a bare number)", "S_A", DEFAULT_SERVICE_FACTOR),
+    Key("service_factor", "dimensionless", "service factor (E8)", "S_A", DEFAULT_SERVICE_FACTOR),
     Key("temperature", "temperature", "operating temperature, needed by elastomer couplings (E9)", "vartheta", unit="degC"),
     Key("excitation_frequency", "frequency", "excitation frequency of the drive: f_e >= 2 f_er (E7)", "f_er", unit="Hz"),
     Key("speed", "speed", "speed of the coupling" + _FROM_CASE, "n", unit="rpm"),

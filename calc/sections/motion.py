@@ -1,4 +1,4 @@
-"""The load cycle derived instead of typed (``spec/case-format.md``, "Motion and mechanism"):
+"""The load cycle derived instead of typed (``docs/case-format.md``, "Motion and mechanism"):
 the moves of the load (``[[move]]``) through its mechanism (``[mechanism]``), or a time series a
 drive recorded (``[drive_record]``), sampled at the gearbox output (:class:`calc.cycle.SampledCycle`)
 and cut into the seed's segments, which the duty section uses as if they were typed."""
@@ -32,10 +32,10 @@ MECHANISM = Declared("mechanism", (
     Key("friction_torque", "torque", "friction torque, against the motion while moving", "T_f", "0 N*m", "N*m", ("rotary",)),
     Key("process_torque", "torque", "process torque, against the motion while moving", "T_p", "0 N*m", "N*m", ("rotary",)),
     Key("mass", "mass", "the moved mass", "m", unit="kg", only=_LINEAR),
-    Key("friction_coefficient", "dimensionless", "friction coefficient (a bare number)", "mu", 0, only=_LINEAR),
+    Key("friction_coefficient", "dimensionless", "friction coefficient", "mu", 0, only=_LINEAR),
     Key("incline", "angle", "incline of the axis (90 deg: vertical, up is forwards)", "theta", "0 deg", "deg", _LINEAR),
     Key("force", "force", "process force against the motion while moving", "F_p", "0 N", "N", _LINEAR),
-    Key("eta", "dimensionless", "efficiency of the mechanism, above 0 and at most 1 (a bare number)", "eta", only=_LINEAR),
+    Key("eta", "dimensionless", "efficiency of the mechanism, above 0 and at most 1", "eta", only=_LINEAR),
     Key("lead", "length", "lead of the screw", "p", unit="mm", only=("ball-screw",)),
     Key("screw_inertia", "inertia", "the screw's own inertia", "J_M", "0 kg*m**2", "kg*cm**2", ("ball-screw",)),
     Key("pitch_diameter", "length", "pitch diameter of the pinion", "d", unit="mm", only=("rack-pinion",)),
