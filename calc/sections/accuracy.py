@@ -36,7 +36,7 @@ COMPONENT_KEYS = (
     Key("name", "text", "name of the member (default: its part)"),
     Key("side", "choice", "input | output of the gearbox; input is referred to the output through the ratio (E11)", default="output"),
     Key("kind", "choice", "which catalog a part comes from: gearbox | coupling (a bellows or safety coupling)", default="gearbox"),
-    Key("stiffness", "stiffness", "torsional stiffness, always with its angle unit (\"1.3 N*m/arcmin\")", "C", unit="N*m/arcmin"),
+    Key("stiffness", "stiffness", "torsional stiffness at the output, always with its angle unit (\"1.3 N*m/arcmin\")", "C", unit="N*m/arcmin"),
     Key("backlash", "angle", "backlash (\"0 arcmin\" for none)", "phi_B", unit="arcmin"),
     Key("transmission_accuracy", "angle", "transmission accuracy", unit="arcsec"),
     Key("nominal_torque", "torque", "nominal torque of the member (a measured loop is analysed at it, E12)", "T_N", unit="N*m"),
@@ -48,7 +48,7 @@ COMPONENT_KEYS = (
     Key("stiffness_curve", "table", "the stiffness as a curve of three slopes instead of one", keys=CURVE_KEYS),
 )
 TABLES = (Declared(NAME, (
-    Key("applied_torque", "torque", "torque at the output for lost motion and positioning accuracy", "T", unit="N*m"),
+    Key("applied_torque", "torque", "applied torque at the output, for lost motion and positioning accuracy", "T", unit="N*m"),
     Key("nominal_torque", "torque", "nominal torque for the 3 % rule (E13; default: the chain's)", "T_N", unit="N*m"),
     Key("component", "tables", "the members of the chain, drive to load ([[accuracy.component]])", keys=COMPONENT_KEYS),
     Key("positions", "file", "measured positions: the scatter of repeated moves"),

@@ -19,7 +19,7 @@ from ..errors import CalcError
 from ..fits import parse_bore
 from ..gearbox import n_1
 from ..profile import Z_h
-from ..units import Q_, fmt, sig
+from ..units import fmt, sig
 from . import gearbox
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity, quantity_text, shown
 
@@ -34,16 +34,16 @@ TABLES = (Declared(NAME, (
     Key("part", "text", "check this one part instead of ranking the catalog"),
     Key("side", "choice", "where the coupling sits: input (between motor and gearbox) | output"),
     Key("accel_torque", "torque", "acceleration torque of the motor" + _FROM_CASE, "M_a", unit="N*m"),
-    Key("drive_inertia", "inertia", "the drive side's inertia without the coupling" + _FROM_CASE, "J_drive", unit="kg*cm**2"),
-    Key("load_inertia", "inertia", "the load side's inertia as the coupling sees it, without the coupling (E8)" + _FROM_CASE, "J_load", unit="kg*cm**2"),
-    Key("service_factor", "dimensionless", "service factor (E8)", "S_A", DEFAULT_SERVICE_FACTOR),
+    Key("drive_inertia", "inertia", "drive-side inertia, without the coupling" + _FROM_CASE, "J_drive", unit="kg*cm**2"),
+    Key("load_inertia", "inertia", "load-side inertia as the coupling sees it, without the coupling (E8)" + _FROM_CASE, "J_load", unit="kg*cm**2"),
+    Key("service_factor", "dimensionless", "load (shock) factor (E8)", "S_A", DEFAULT_SERVICE_FACTOR),
     Key("temperature", "temperature", "operating temperature, needed by elastomer couplings (E9)", "vartheta", unit="degC"),
     Key("excitation_frequency", "frequency", "excitation frequency of the drive: f_e >= 2 f_er (E7)", "f_er", unit="Hz"),
     Key("speed", "speed", "speed of the coupling" + _FROM_CASE, "n", unit="rpm"),
     Key("shaft_1", "bore", "bore 1 with its fit"),
     Key("shaft_2", "bore", "bore 2 with its fit"),
     Key("disengagement_torque", "torque", "disengagement torque of a safety coupling (E10)", "T_A", unit="N*m"),
-    Key("shaft_distance", "length", "shaft distance of a line shaft", "A", unit="mm"),
+    Key("shaft_distance", "length", "distance between the shafts of a line shaft", "A", unit="mm"),
     Key("temperature_factors", "factor table", "the table of the temperature factor K_ϑ (E9): source | roba-es | comintec | a path", default="source"),
     Key("start_factors", "factor table", "the table of the start factor S_z: roba-es | a path; the peak-torque check T_S · S_z · K_ϑ <= T_Kmax"),
     Key("starts_per_hour", "per_hour", "starts per hour for the start factor (default: Z_h of the load cycle)", "Z_h", unit="1/hour"),

@@ -10,14 +10,14 @@ from ..gearbox import OutputLoad
 
 ORDER = 10
 MOTOR = Declared("motor", (
-    Key("peak_torque", "torque", "peak torque of the motor (S5)", "T_1B", unit="N*m"),
-    Key("inertia", "inertia", "inertia of the motor's rotor (the inertia ratio, the rotor term)", "J_motor", unit="kg*cm**2"),
+    Key("peak_torque", "torque", "maximum torque of the motor (S5)", "T_1B", unit="N*m"),
+    Key("inertia", "inertia", "motor inertia (the inertia ratio, the rotor term)", "J_motor", unit="kg*cm**2"),
     Key("rated_torque", "torque", "continuous torque of the motor, at most its peak: the RMS check", "T_1N", unit="N*m"),
     Key("max_speed", "speed", "highest speed of the motor", "n_max", unit="rpm"),
     Key("shaft", "bore", "the motor's shaft as ordered (\"19 mm k6\"): picks the gearbox's clamping hub and so its J_1"),
 ), "the motor driving the gearbox")
 LOAD = Declared("load", (
-    Key("inertia", "inertia", "the load's inertia at the gearbox output (left out where a [mechanism] gives it)", "J_L", unit="kg*cm**2"),
+    Key("inertia", "inertia", "load inertia at the gearbox output (left out where a [mechanism] gives it)", "J_L", unit="kg*cm**2"),
     Key("axial_force", "force", "axial force on the gearbox output", "F_2a", unit="N"),
     Key("radial_force", "force", "radial force on the gearbox output, with its lever_arm", "F_2r", unit="N"),
     Key("lever_arm", "length", "distance of the radial force from the output flange", "x_2", unit="mm"),

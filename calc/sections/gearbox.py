@@ -18,7 +18,7 @@ from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candid
 NAME = "gearbox"
 ORDER = 40
 TABLES = (Declared(NAME, (
-    Key("ratio", "dimensionless", "the desired ratio (needed unless a part is named)", "i"),
+    Key("ratio", "dimensionless", "ratio of the gearbox, as desired (needed unless a part is named)", "i"),
     Key("catalog", "catalog", "the gearbox catalog(s): a name in catalogs/ or a path to a CSV file", default="gearboxes"),
     Key("part", "text", "check this one part instead of ranking the catalog (never a partial row)"),
     Key("hubs", "catalog", "the table of clamping hubs (J_1 per hub), picked by motor.shaft", default="gearbox-hubs"),
