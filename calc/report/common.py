@@ -74,7 +74,7 @@ def input_row(path: str, value, derived: bool = False) -> list[str]:
         shown, unit = sig(value.m_as(key.unit)), latex_escape(pretty_unit(key.unit)) or "–"
     else:
         shown, unit = value_unit(listed(value) if isinstance(value, list) else value)
-    where = rf"\texttt{{\footnotesize {latex_escape(path)}}}" + (r"\textsuperscript{\dag}" if derived else "")
+    where = rf"\texttt{{\footnotesize {latex_escape(path)}" + (r"\textsuperscript{\dag}" if derived else "") + "}"
     return [f"${latex}$" if latex else "–", shown, unit, latex_escape(key.description), where]
 
 

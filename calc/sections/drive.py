@@ -17,7 +17,7 @@ MOTOR = Declared("motor", (
     Key("shaft", "bore", "the motor's shaft as ordered (\"19 mm k6\"): picks the gearbox's clamping hub and so its J_1"),
 ), "the motor driving the gearbox")
 LOAD = Declared("load", (
-    Key("inertia", "inertia", "load inertia at the gearbox output (left out where a [mechanism] gives it)", "J_L", unit="kg*cm**2"),
+    Key("inertia", "inertia", "load inertia at the output of the gearbox (left out where a [mechanism] gives it)", "J_L", unit="kg*cm**2"),
     Key("axial_force", "force", "axial force on the gearbox output", "F_2a", unit="N"),
     Key("radial_force", "force", "radial force on the gearbox output, with its lever_arm", "F_2r", unit="N"),
     Key("lever_arm", "length", "distance of the radial force from the output flange", "x_2", unit="mm"),
