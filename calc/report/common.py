@@ -57,11 +57,17 @@ def gearbox_symbols() -> dict:
     return {s.name: s for f in REGISTRY if f.key.startswith(own) for s in (f.result, *f.inputs)}
 
 
+#: Symbols named by a Greek letter alone (the coupling's temperature ϑ has no formula of its own).
+GREEK = ("alpha", "beta", "gamma", "delta", "eta", "theta", "vartheta", "lambda", "mu", "tau", "phi", "varphi", "omega")
+
+
 def symbol_latex(name: str) -> str:
     """A symbol's LaTeX by its name in code: the formulas' own where a formula has it, else the
-    name set as math (``T_1N`` as T with the subscript 1N); empty for none."""
+    name set as math (``T_1N`` as T with the subscript 1N, ``vartheta`` as ϑ); empty for none."""
     own = next((s for f in REGISTRY for s in (f.result, *f.inputs) if s.name == name), None)
-    return "" if not name else own.latex if own is not None else text_math(name).strip("$")
+    if not name or own is not None:
+        return own.latex if own is not None else ""
+    return "\\" + name if name in GREEK else text_math(name).strip("$")
 
 
 def input_row(path: str, value, derived: bool = False) -> list[str]:
@@ -75,7 +81,7 @@ def input_row(path: str, value, derived: bool = False) -> list[str]:
     else:
         shown, unit = value_unit(listed(value) if isinstance(value, list) else value)
     where = rf"\texttt{{\footnotesize {latex_escape(path)}" + (r"\textsuperscript{\dag}" if derived else "") + "}"
-    return [f"${latex}$" if latex else "–", shown, unit, latex_escape(key.description), where]
+    return [f"${latex}$" if latex else "–", shown, unit, prose(key.description), where]
 
 
 def checks_table(candidate: dict, caption: str) -> str:
