@@ -1,13 +1,14 @@
 """What the section blocks of the calc report share.
 
-Every block module (:mod:`.drive`, :mod:`.duty`, :mod:`.gearbox`, :mod:`.coupling`,
-:mod:`.accuracy`) has the same shape: ``NAME`` (its key in the results), and functions of the
+Every block module (one per section module of :mod:`calc.sections`, of the same name) has the
+same shape: ``NAME`` (its key in the results), and functions of the
 :class:`calc.report.Report` that each give that section's part of one block of the report, empty
 where the section has none: ``sources`` and ``readings`` (method), ``input_rows`` (rows of the
 inputs table) and ``inputs`` (tables after it), ``steps`` (calculations), ``results``, ``checks``,
 ``candidates``, ``figures`` ((figure, caption) pairs), ``chosen`` ((what, part, detail) rows) and
 ``order_lines``. The further sections (coupling, accuracy) write their checks, candidates, chosen
-part and order line the same way (:func:`further_checks` ...).
+part and order line the same way (:func:`further_checks` ...). An input row is written from its
+key's declaration (:func:`input_row`).
 """
 
 from __future__ import annotations

@@ -45,11 +45,11 @@ def declared(path: str):
     ``profile[2].torque``, ``accuracy.component[1].stiffness_curve.K1``); a table's own path gives
     its :class:`calc.case.Declared`."""
     names = [part.split("[")[0] for part in path.split(".")]
-    table = next(t for t in DECLARED if t.name == names[0])
-    out = table
+    out = next(t for t in DECLARED if t.name == names[0])
     for name in names[1:]:
         out = next(k for k in out.keys if k.name == name)
     return out
+
 
 NOTHING_CHECKED = "Nothing is checked: the case names no gearbox ratio or part, no coupling and no accuracy requirement."
 
