@@ -10,7 +10,10 @@ to E15. Everything is referred to the output shaft (E11, :mod:`calc.stiffness`).
   torque the backlash is not taken up, ``φ_TA + j_t`` (:data:`positioning_accuracy_low`);
   above, the twist is what counts, ``φ_TA + |T| / C`` (:data:`positioning_accuracy_high`).
 * Repeatability (E13): at ``T = 0`` it is the backlash; under torque it is bounded by the lost
-  motion at that torque (:func:`repeatability`).
+  motion at that torque (:func:`repeatability`). The bound is loose: a repeated approach under
+  the same torque ends within the backlash and the scatter of the drive, not the whole twist;
+  what the 3 % rule decides is whether the torque changes sign between approaches (a torque
+  that keeps its sign holds the flanks in contact, and the backlash does not enter).
 * A measured positioning record (a target and the actual position, each target approached
   several times) gives the measured accuracy, the largest error, and repeatability, the largest
   spread at one target (:func:`analyze_positions`).
@@ -206,6 +209,10 @@ def positioning_accuracy(applied_torque, nominal_torque, transmission_accuracy, 
 def repeatability(applied_torque, backlash, stiffness):
     """Positioning repeatability (E13): the backlash at ``T = 0``; under torque at most the lost
     motion at that torque, ``j_t + |T| / C`` (which is the backlash at ``T = 0``).
+
+    The bound under torque is the source's, and loose: the twist ``|T| / C`` is the same on every
+    approach under the same torque, so it shifts the position without spreading it. An axis
+    positioned to within ±a cannot repeat worse than 2a, whatever this bound says.
 
     Returns
     -------

@@ -5,7 +5,9 @@ E14 and E15. The coupling sees the acceleration torque ``M_a`` of the motor spli
 on its two sides; the load factor ``S_A`` (E8) gives its nominal torque ``M_N``, and an
 elastomer coupling's torque is further multiplied by a temperature factor (E9). The coupling is
 the spring of a two-mass system whose natural frequency ``f_e`` must be at least twice the
-excitation frequency of the drive (E7). A line shaft's stiffness comes from its two bellows and
+excitation frequency of the drive (E7). That system leaves out every other spring of the drive
+train: given the members around the coupling (:class:`DriveTrain`), the first mode ``f_1`` of the
+whole chain (:mod:`calc.torsion`) is checked against the same ``2 f_er``. A line shaft's stiffness comes from its two bellows and
 its tube at the case's shaft distance; a safety coupling's disengagement torque ``T_A`` must lie
 in the size's adjustable range and above the peak torque of normal operation (E10).
 
@@ -30,7 +32,8 @@ from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, 
 from .errors import CalcError
 from .fits import Bore, parse_bore
 from .formula import Formula, Symbol
-from .checks import CheckArray, rank, selected_part
+from .checks import CheckArray, rank, selected_part, within_rating
+from .torsion import Chain, Member, lumped
 from .units import Q_, as_kind, fmt, sig
 
 TYPES = ("bellows", "elastomer", "safety", "line-shaft")
@@ -282,9 +285,12 @@ class CouplingCheck(CheckArray):
     missing: object = "the catalog gives no rated value"  # text, or one text per row
     lower_bound: bool = False  # "least <= value": the rated side is the value checked
     optional: bool = False  # a row without a rating is reported as not checked, and passes
+    informs: bool = False  # reported for information: it decides nothing (a drive train the case gives in part)
 
     @property
     def passes(self) -> np.ndarray:
+        if self.informs:
+            return np.ones(np.shape(self.utilization), bool)
         ok = super().passes
         if self.optional:
             ok = ok | np.isnan(self.utilization)
@@ -296,7 +302,13 @@ class CouplingCheck(CheckArray):
     def at(self, row: int, governs: bool = True):
         """This check for one row; a row an optional check cannot be made for says why, and
         decides nothing."""
-        check = super().at(row, governs)
+        check = super().at(row, governs and not self.informs)
+        if self.informs:
+            # The verdict it would give, shown though it decides nothing; none where it cannot be made.
+            made = check.utilization is not None
+            missing = self.missing if isinstance(self.missing, str) else self.missing[row]
+            return dataclasses.replace(check, passes=bool(within_rating(self.utilization[row])) if made else None,
+                                       not_made=None if made else missing)
         if self.optional and check.utilization is None:
             missing = self.missing if isinstance(self.missing, str) else self.missing[row]
             return dataclasses.replace(check, passes=None, governs=False, not_made=missing)
@@ -314,6 +326,24 @@ class CouplingCheck(CheckArray):
                 f"{sig(100 * (1 - 1 / u), 3)} % short"
             )
         return super().reason(row)
+
+
+@dataclass(frozen=True)
+class DriveTrain:
+    """The drive train around the coupling (:mod:`calc.torsion`), every member referred to the
+    coupling's shaft: ``drive`` the members before it, ``load`` those after it, drive to load.
+    ``missing`` names the members the case does not give; the chain is then incomplete, and the
+    check of its first mode is reported for information only. ``shaft`` says which shaft the
+    members are referred to."""
+
+    drive: tuple
+    load: tuple
+    missing: tuple = ()
+    shaft: str = "the coupling's shaft"
+
+    @property
+    def complete(self) -> bool:
+        return not self.missing
 
 
 @dataclass
@@ -336,6 +366,9 @@ class CouplingSelection:
     worst: np.ndarray  # highest utilization of the checks that apply (inf where one cannot be made)
     order: np.ndarray
     notes: list
+    drive_train: "DriveTrain | None" = None  # the members around the coupling, as the case gives them
+    chain: Chain | None = None  # the drive train lumped, its arrays over the rows (None without drive_train)
+    modes: object = None  # its natural frequencies per row, lowest first (quantity, rows × modes)
 
     @property
     def selected(self) -> str | None:
@@ -399,6 +432,7 @@ def select_coupling(
     temperature_factors=TEMPERATURE_FACTORS,
     start_factors=None,
     starts_per_hour=None,
+    drive_train: "DriveTrain | None" = None,
     where: str = "coupling",
 ) -> CouplingSelection:
     """Check every coupling of ``catalog`` (already narrowed to a type or a part) and rank them.
@@ -408,6 +442,8 @@ def select_coupling(
     * torque: ``M_N · K_ϑ <= T_KN``, ``K_ϑ`` the temperature factor for elastomer couplings
       (E9), 1 for the others; ``M_N = M_a · J_load / (J_load + J_drive) · S_A`` (E8);
     * resonance: ``2 f_er <= f_e`` (E7), ``J_A`` and ``J_L`` each with half the coupling;
+    * with ``drive_train``, the first mode of the whole chain: ``2 f_er <= f_1``
+      (:mod:`calc.torsion`), which sees the gearbox's spring the two-mass ``f_e`` leaves out;
     * speed: ``n <= n_max`` (when ``speed`` is given);
     * bores: ``d_min <= D <= d_max`` for each hub, on the nominal diameter;
     * safety couplings: ``T_Amin <= T_A <= T_Amax`` and ``T_op <= T_A``, ``T_op`` the peak torque
@@ -448,6 +484,11 @@ def select_coupling(
         ``S_z`` against starts per hour (a maker's table); with it the ``T_Kmax`` check is made.
     starts_per_hour : Quantity [1/time], optional
         Starts per hour; needed with ``start_factors``.
+    drive_train : DriveTrain, optional
+        The members around the coupling. With it, each candidate is put in the chain (half its
+        inertia on each end of its spring, as for ``f_e``) and the chain's first mode is checked,
+        ``2 f_er <= f_1`` (:mod:`calc.torsion`): governing where the chain is complete, for
+        information where the case leaves a member out.
     where : str
         Prefix of error messages (the case file and section).
 
@@ -534,6 +575,12 @@ def select_coupling(
             c_line = np.where(fits_in, C_T_line(C_B=catalog["C_T"], Z=Z(A=A, H=catalog["H"]), C_tube=catalog["C_tube"]).m_as("N*m/rad"), np.nan)
         c_t = Q_(np.where(is_line, c_line, catalog["C_T"].m_as("N*m/rad")), "N*m/rad")
         fe = f_e(C_T=c_t, J_A=j_a, J_L=j_l)
+        chain = modes = None
+        if drive_train is not None:
+            # Half the coupling on each end of its spring, as J_A and J_L take it (E7).
+            half = catalog["J"] / 2
+            chain = lumped((*drive_train.drive, Member("coupling", half, c_t, half), *drive_train.load), f"{where}: drive train")
+            modes = chain.natural_frequencies()
 
     def full(q):
         return q * np.ones(n)
@@ -547,17 +594,29 @@ def select_coupling(
 
     no_c, no_j = np.isnan(c_t.magnitude), np.isnan(catalog["J"].magnitude)
     empty = np.where(no_c & no_j, "torsional stiffness C_T and inertia J", np.where(no_c, "torsional stiffness C_T", "inertia J"))
-    no_f_e = np.where(
-        is_line & (A is None),
-        "a line shaft's stiffness needs coupling.shaft_distance",
-        np.char.add(np.char.add("f_e needs the coupling's ", empty.astype(str)), ", which the catalog leaves empty"),
-    )
+    def needs(what: str):
+        return np.where(
+            is_line & (A is None),
+            "a line shaft's stiffness needs coupling.shaft_distance",
+            np.char.add(np.char.add(f"{what} needs the coupling's ", empty.astype(str)), ", which the catalog leaves empty"),
+        )
+
+    no_f_e = needs("f_e")
     checks = [
         CouplingCheck(
             "T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", ~(is_safety & np.isnan(catalog["T_KN"].magnitude))
         ),
         CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e),
     ]
+    if modes is not None:
+        checks.append(
+            CouplingCheck("f_1", "coupling", "2 f_er <= f_1", full(f_e_min(f_er=f_er)), modes[:, 0], "Hz", None,
+                          needs("the first mode of the drive train"), informs=not drive_train.complete)
+        )
+        if not drive_train.complete:
+            notes.append(
+                f"the drive train's first mode f_1 is reported for information: the case does not give {', '.join(drive_train.missing)}"
+            )
     m_smax = None
     if S_z is not None:
         m_smax = M_Smax(T_S=m_n, S_z=Q_(S_z, ""), K_T=Q_(K_T, ""))
@@ -593,13 +652,15 @@ def select_coupling(
     passes = np.logical_and.reduce([c.passes for c in checks])
     # A row an optional check cannot be made for counts as unburdened by it (it decides nothing there).
     utilizations = np.array(
-        [np.where(c.applies if c.applies is not None else True, np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0) for c in checks]
+        [np.where(c.applies if c.applies is not None else True, np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0)
+         for c in checks if not c.informs]
     )
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
     size = catalog["T_KN"].m_as("N*m")
     size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)  # a safety coupling rated by its T_A range alone
     order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
-    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes)
+    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes,
+                             drive_train, chain, modes)
 
 
 def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str) -> None:

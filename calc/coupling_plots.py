@@ -118,7 +118,8 @@ def natural_frequency_figure(selection: CouplingSelection, f_e_min):
     """The natural frequency ``f_e`` of each candidate against the required ``2 f_er`` (E7).
 
     Candidates in ranked order; a bar is green where ``f_e >= 2 f_er``, red where not, and a grey
-    stub marked "n/a" where the catalog leaves ``C_T`` or ``J`` empty.
+    stub marked "n/a" where the catalog leaves ``C_T`` or ``J`` empty. Where the selection has the
+    drive train (:mod:`calc.torsion`), a black diamond marks each candidate's first mode ``f_1``.
 
     Examples
     --------
@@ -148,10 +149,16 @@ def natural_frequency_figure(selection: CouplingSelection, f_e_min):
         ax.barh([yy], [top * 0.02], color=MISSING_COLOR)
         ax.text(top * 0.03, yy, "n/a (catalog gives no C_T or J)", va="center", fontsize=8, color="dimgray")
     ax.axvline(need, color=CASE_COLOR, linewidth=2, label=f"2 f_er = {sig(need)} Hz")
+    title = "Each candidate as the spring of the two-mass system: f_e >= 2 f_er (E7)"
+    if selection.modes is not None:
+        # The drive train's first mode, where the case gives the chain (calc.torsion).
+        f_1 = selection.modes[order, 0].m_as("Hz")
+        ax.plot(f_1, y, "D", color="black", markersize=5, label="first mode of the drive train $f_1$")
+        title += "\nand in the drive train (the gearbox's spring too): f_1 >= 2 f_er"
     ax.set_yticks(y, parts)
     ax.set_xlim(0, top)
     ax.set_xlabel("natural frequency $f_e$ [Hz]")
-    ax.set_title("Each candidate as the spring of the two-mass system: f_e >= 2 f_er (E7)", fontsize=10)
+    ax.set_title(title, fontsize=10)
     ax.legend(loc="lower right", fontsize=8)
     return fig
 

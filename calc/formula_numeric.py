@@ -218,6 +218,18 @@ def stiffness__C_sec(T, phi):
     return T/phi
 
 
+def torsion__J_L1(J_L, i):
+    return J_L/i**2
+
+
+def torsion__C_t1(C_t21, i):
+    return C_t21/i**2
+
+
+def torsion__J_out(J_in, i):
+    return J_in*i**2
+
+
 def transmission__Delta_phi_2(phi_2, phi_1, i):
     return phi_2 - phi_1/i
 
@@ -278,6 +290,9 @@ FUNCTIONS = {
     "calc.stiffness.phi_c2": ("7066f7e6b7e257a7", stiffness__phi_c2),
     "calc.stiffness.phi_c3": ("38012b778d9a9e60", stiffness__phi_c3),
     "calc.stiffness.C_sec": ("21f78c548e68d498", stiffness__C_sec),
+    "calc.torsion.J_L1": ("d8caa04565d5e06c", torsion__J_L1),
+    "calc.torsion.C_t1": ("42909c5a4b2369c6", torsion__C_t1),
+    "calc.torsion.J_out": ("2fe27874694a70e5", torsion__J_out),
     "calc.transmission.Delta_phi_2": ("ed18015dc98282df", transmission__Delta_phi_2),
     "calc.transmission.phi_TA": ("80cb419f2cbded1e", transmission__phi_TA),
 }

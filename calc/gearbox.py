@@ -124,7 +124,8 @@ T_2max = Formula(
         Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the gearbox"),
     ),
     lambda sp, T_1B, i, f_s, eta: sp.Mul(T_1B, i, f_s, eta, evaluate=False),  # in the source's order
-    "source, S5 calculation 2",
+    "source, S5 calculation 2; read as written: η credited, as for a peak the motor drives through the gearbox "
+    "(a braking peak, the load driving back, reaches the output as T_1B · i / η, higher by 1/η²)",
 )
 
 T_2stop = Formula(
@@ -428,7 +429,11 @@ def select_gearbox(
 
     S1 checks: ``n_2m · i <= n_1N`` (E1), ``T_2m <= T_2N`` (E2). S5 checks: ``n_2max · i <=
     n_1max`` (E5), ``T_2max <= T_2B`` with ``T_2max = T_1B · i · f_s · η`` (E4), which is not made
-    without the motor's peak torque ``T_1B`` (it says so; no part is then selected in S5). The
+    without the motor's peak torque ``T_1B`` (it says so; no part is then selected in S5).
+    ``T_2max`` is read as the source writes it, a reading like the errata's: the efficiency is
+    credited, as for a peak the motor drives through the gearbox; a braking peak, with the load
+    driving back through the gearbox, reaches the output as ``T_1B · i / η``, higher by ``1/η²``
+    (6.3 % at η = 0.97). The
     operating mode of the profile (E3) says which group governs ``passes``; the other group is
     reported for information. In both modes the emergency-stop torque (``emergency_stop_torque``,
     default ``T_2stop = T_1B · i``) is checked against the catalog's ``T_2Not`` where a row gives

@@ -47,7 +47,9 @@ T_2m = Formula(
     lambda sp, n, t, T: sp.cbrt(
         segment_sum(sp.Mul(abs(n), t, abs(T) ** 3, evaluate=False)) / segment_sum(sp.Mul(abs(n), t, evaluate=False))
     ),
-    "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes)",
+    "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes; the exponent 3 is the rolling-bearing "
+    "life exponent of ISO 281 and the gearbox makers' convention for T_2m, not a gear fatigue exponent: gear S-N curves are "
+    "much steeper, ISO 6336)",
 )
 
 Z_h = Formula(

@@ -16,7 +16,7 @@ COUPLING_TOML = """
 type = "bellows"
 side = "input"
 service_factor = 2.5
-excitation_frequency = "150 Hz"
+excitation_frequency = "100 Hz"
 shaft_1 = "19 mm k6"
 shaft_2 = "16 mm h7"
 """

@@ -11,7 +11,7 @@ CALC = Path(__file__).resolve().parent.parent / "calc"
 
 LAYERS = {
     "machinery": ("errors", "units", "formula", "formula_numeric", "codegen", "checks", "bands", "catalog", "measurement", "cycle"),
-    "domain": ("profile", "motion", "mechanism", "gearbox", "coupling", "fits", "stiffness", "hysteresis", "accuracy", "transmission", "motor", "ratios"),
+    "domain": ("profile", "motion", "mechanism", "gearbox", "coupling", "fits", "stiffness", "torsion", "hysteresis", "accuracy", "transmission", "motor", "ratios"),
     "figures": ("plots", "coupling_plots", "accuracy_plots", "motion_plots", "motor_plots", "glossary"),
     "case": ("case", "sections"),
     "top": ("report", "review", "publish", "__main__", "__init__", "resources"),

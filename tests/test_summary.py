@@ -117,10 +117,11 @@ def test_summary_rows_are_plain_data_one_per_case(capsys, tmp_path):
     rows = summary_rows([EXAMPLE, *cases], str(tmp_path / "out"))
     assert [r["verdict"] for r in rows] == ["PASS", "FAIL", "FAIL", "NOT DECIDED"]
     example, failing, unreadable, undecided = rows
-    # The example: NPT035-10 and AKD-30; its worst check T_2max <= T_2B, 151.32 / 220 = 0.688.
+    # The example: NPT035-10 and AKD-30; its worst check is the drive train's first mode against
+    # 2 f_er, 200 Hz / 207.96 Hz = 0.962 (tests/test_torsion.py), above T_2max / T_2B = 151.32 / 220 = 0.688.
     assert example["chosen"] == {"gearbox": "NPT035-10", "coupling": "AKD-30"}
-    assert example["worst"]["check"] == "T_2max <= T_2B" and example["worst"]["part"] == "NPT035-10"
-    assert example["worst"]["utilization"] == pytest.approx(12 * 10 * 1.3 * 0.97 / 220)
+    assert example["worst"]["check"] == "2 f_er <= f_1" and example["worst"]["part"] == "AKD-30"
+    assert example["worst"]["utilization"] == pytest.approx(200 / 207.963, rel=1e-5)
     assert example["report"] == "indexing-table-profile.pdf" and example["report_path"] == str(tmp_path / "out" / "indexing-table-profile.pdf")
     assert example["error"] is None and example["reason"] is None
     # Failing: no gearbox passes; its worst check is over 1 (4940 / 4000 = 1.235 for TP500-10, η 0.95).
@@ -201,7 +202,7 @@ def test_summary_of_three_cases(capsys, three_cases):
     flat = " ".join(text.split())
     for title, verdict in (("Rotary indexing table, axis 3", "PASS"), ("test axis", "FAIL")):
         assert re.search(rf"{re.escape(title)}\s+{verdict}", text), title
-    assert re.search(r"Rotary indexing table, axis 3\s+PASS\s+NPT035-10\s+AKD-30\s+0\.69", text)
+    assert re.search(r"Rotary indexing table, axis 3\s+PASS\s+NPT035-10\s+AKD-30\s+0\.96", text)
     assert re.search(r"test axis\s+FAIL\s+none\s+–\s+1\.24", text)  # 400 · 10 · 1.3 · 0.95 = 4940 N·m / 4000 (TP500-10, the closest)
     assert "has ratio 13" in flat
     # Title block: each data file the cases rest on (case files, catalogs, tables, measurements)

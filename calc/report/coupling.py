@@ -80,6 +80,30 @@ def steps(report) -> list[str]:
         out.append(step_block("Stiffness of the line shaft", cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row])))
     out.append(step_block("Natural frequency", cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L=sel.J_L[row]),
                           "compared with 2 f_er"))
+    return out + _torsion(report, cc)
+
+
+def _torsion(report, cc) -> list[str]:
+    """The drive train as a chain of masses and springs (calc.torsion): the members referred to
+    the coupling's shaft, the chain, and its natural frequencies beside the two-mass f_e."""
+    t = (results_of(NAME, report) or {}).get("torsion")
+    if not t:
+        return []
+    out = [rf"\subsection{{Torsional modes of the drive train, with {latex_escape(t['part'])}}}",
+           prose("The two-mass f_e takes the coupling as the only spring. The drive train has more: it is lumped as a chain, "
+                 f"every member referred to {t['shaft']}: the motor with half the coupling, the other half with the gearbox's J_1, "
+                 "the load J_L / i²; springs: the coupling's C_T and the gearbox's C_t21 / i². Its natural frequencies are "
+                 "the roots of the eigenproblem (K − ω² J) φ = 0, the rigid-body mode left out.")]
+    out += [step_block(title, step) for title, step in cc.drive_steps]
+    rows = [[str(k + 1), prose(m["members"]), q(m["J"]), prose(s["member"]) if s else "", q(s["C"]) if s else ""]
+            for k, (m, s) in enumerate(zip(t["masses"], [*t["springs"], None]))]
+    out.append(table(r"@{}r l r l r@{}", ["Mass", "Members", "Inertia", "Spring to the next", "Stiffness"], rows,
+                     caption=f"The drive train as masses and springs, referred to {latex_escape(t['shaft'])}"))
+    frequencies = ", ".join(q(f) for f in t["natural_frequencies"])
+    out.append(prose("Natural frequencies, lowest first: ") + frequencies + ".")
+    if not t["complete"]:
+        out.append(prose("The chain is incomplete, so its first mode is reported for information: the case does not give "
+                         + "; ".join(t["missing"]) + "."))
     return out
 
 

@@ -196,14 +196,30 @@ def _coupling_table(s: dict, shown: int | None) -> str:
 
     rows = [
         [str(k), escape(c["part"]), escape(c.get("type", "")), _verdict_cell(c["passes"]), _q(c.get("required_torque")), rated(c, "T_KN"),
-         _q(c.get("f_e")), _utilization(_worst(c)), "<br>".join(typeset(x) for x in c.get("reasons", []))]
+         _q(c.get("f_e")), _q(c.get("f_1")), _utilization(_worst(c)), "<br>".join(typeset(x) for x in c.get("reasons", []))]
         for k, c in enumerate(s["candidates"], start=1)
     ]
-    header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"), "worst utilization", "reasons"]
+    header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"), typeset("f_1"), "worst utilization", "reasons"]
     notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in s.get("notes", []))
     rows, more = _shown(rows, shown)
     return (f"<h3>Coupling candidates</h3><div class=note>{typeset(s['ranking'])}</div>"
-            + _table(header, rows, numeric={0, 4, 5, 6, 7}, marked=0 if s.get("selected") else None) + more + notes)
+            + _table(header, rows, numeric={0, 4, 5, 6, 7, 8}, marked=0 if s.get("selected") else None) + more + notes
+            + _torsion_table(s.get("torsion")))
+
+
+def _torsion_table(t: dict | None) -> str:
+    """The drive train as masses and springs with its natural frequencies (results' coupling.torsion)."""
+    if not t:
+        return ""
+    springs = [*t["springs"], None]
+    rows = [[escape(m["members"]), _q(m["J"]), escape(k["member"]) if k else "", _q(k["C"]) if k else ""] for m, k in zip(t["masses"], springs)]
+    frequencies = ", ".join(_q(f) for f in t["natural_frequencies"])
+    check = "".join(f"<div class=note>{typeset(c['criterion'])}: {_q(c['rated'])}, utilization {_utilization(c['utilization'])}"
+                    f"{'' if c['governs'] else ' (for information)'}</div>" for c in t["checks"])
+    missing = "" if t["complete"] else f"<div class=note>incomplete: the case does not give {escape('; '.join(t['missing']))}</div>"
+    return (f"<h3>Drive train with {escape(t['part'])}, at {escape(t['shaft'])}</h3>"
+            + _table(["masses", "inertia", "spring to the next", "stiffness"], rows, numeric={1, 3})
+            + f"<div class=note>natural frequencies {frequencies} (rigid-body mode left out)</div>" + check + missing)
 
 
 def _accuracy_table(a: dict) -> str:

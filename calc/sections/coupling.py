@@ -12,13 +12,14 @@ from ..bands import factor_table
 from ..case import Case, Declared, Key, Table, once
 from ..catalog import Catalog, display_path, load_catalogs
 from ..coupling import (
-    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, J_load_at_input, check_types, f_e_min, order_lines,
-    select_coupling,
+    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input, check_types, f_e_min,
+    order_lines, select_coupling,
 )
 from ..errors import CalcError
 from ..fits import parse_bore
 from ..gearbox import n_1
 from ..profile import Z_h
+from ..torsion import Member, gearbox_at_input, inertia_at_output, load_at_input
 from ..units import fmt, sig
 from . import gearbox
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity, quantity_text, shown
@@ -61,6 +62,8 @@ class CouplingCase:
     inputs: dict
     bores: tuple
     derived: list  # what was taken from the rest of the case (side = "input"), as sentences
+    drive_train: DriveTrain | None = None  # the members around the coupling (calc.torsion)
+    drive_steps: tuple = ()  # (title, Step) of each member referred to the coupling's shaft
 
 
 def read(case: Case) -> CouplingCase:
@@ -115,7 +118,52 @@ def read(case: Case) -> CouplingCase:
             derived["starts_per_hour"] = (z, f"starts_per_hour = Z_h of the load cycle (one start per cycle) = {fmt(z, '1/hour')}")
     inputs["starts_per_hour"] = given_or_derived("starts_per_hour")
     notes = [text for key, (_, text) in derived.items() if not s.has(key)]
-    return CouplingCase(catalog, wanted, side, inputs, bores, notes)
+    return CouplingCase(catalog, wanted, side, inputs, bores, notes, *_drive_train(case, side, inputs))
+
+
+def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain, tuple]:
+    """The drive train around the coupling, every member referred to the coupling's shaft
+    (:mod:`calc.torsion`), and the steps that referred them there.
+
+    Without a gearbox (a direct drive) the chain is the drive, the coupling and the load as
+    the section gives them. With a gearbox, between motor and gearbox (``side = "input"``): the
+    motor, the coupling, the gearbox's ``J_1`` and its ``C_t21 / i²``, the load ``J_L / i²``;
+    between gearbox and load (``side = "output"``): the motor and ``J_1`` times ``i²``, the
+    gearbox's ``C_t21``, the coupling, the load as the section gives it. A member the case does not
+    give is named in ``missing`` and left out (the gearbox then counts as rigid), so the chain
+    still has the coupling's two sides."""
+    two_mass = (Member("motor", inputs["drive_inertia"]),), (Member("load", inputs["load_inertia"]),)
+    if not gearbox.applies(case):
+        return DriveTrain(*two_mass), ()
+    if side is None:
+        return DriveTrain(*two_mass, missing=("coupling.side (where the coupling sits: input or output of the gearbox)",)), ()
+    selection = gearbox.gearbox_selection(case)
+    row = selection.order[0]
+    part = str(selection.catalog.parts[row])
+    i, C_t21, J_1 = selection.catalog["ratio"][row], selection.catalog["C_t21"][row], selection.J_1[row]
+    missing = []
+    if np.isnan(C_t21.magnitude):
+        missing.append(f"the gearbox's torsional stiffness C_t21 ({part}: the catalog leaves it empty)")
+    if np.isnan(J_1.magnitude):
+        missing.append(f"the gearbox's J_1 ({part}: the catalog gives none for the motor's shaft)")
+    end, shaft = ("load", "the gearbox input") if side == "input" else ("motor", "the gearbox output")
+    given = {"load": case.load_inertia, "motor": case.motor_inertia}[end]
+    if given is None:
+        missing.append(f"the {end}'s inertia ({'[load] inertia or [mechanism]' if end == 'load' else 'motor.inertia'})")
+    if missing:
+        return DriveTrain(*two_mass, missing=tuple(missing), shaft=shaft), ()
+    # A gearbox that is not selected stands in for the one the case will get: its modes inform.
+    stand_in = () if selection.selected == part else (f"a selected gearbox ({part}, the best-ranked, stands in: none is selected)",)
+    if side == "input":
+        j_l = load_at_input.step(J_L=given, i=i)
+        c_g = gearbox_at_input.step(C_t21=C_t21, i=i)
+        steps = (("Load reflected to the gearbox input", j_l), (f"Stiffness of {part} at its input", c_g))
+        train = DriveTrain(two_mass[0], (Member("gearbox", J_1, c_g.result), Member("load", j_l.result)), stand_in, shaft)
+        return train, steps
+    j_m = inertia_at_output.step(J_in=given, i=i)
+    j_g = inertia_at_output.step(J_in=J_1, i=i)
+    steps = (("Motor referred to the gearbox output", j_m), (f"J_1 of {part} referred to its output", j_g))
+    return DriveTrain((Member("motor", j_m.result), Member("gearbox", j_g.result, C_t21)), two_mass[1], stand_in, shaft), steps
 
 
 def _from_the_case(case: Case, s: Table) -> dict:
@@ -155,7 +203,7 @@ def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:
     def compute():
         cc = read(case)
         where = f"{case.path}: coupling"
-        return cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], where=where, **cc.inputs)
+        return cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train, where=where, **cc.inputs)
 
     return once(case, "coupling", compute)
 
@@ -186,6 +234,7 @@ class CouplingResult:
                     "illustrative": bool(cc.catalog.illustrative[row]),
                     "passes": bool(sel.passes[row]),
                     "f_e": quantity(sel.f_e[row], "Hz"),
+                    "f_1": None if sel.modes is None else quantity(sel.modes[row, 0], "Hz"),
                     "C_T": quantity(sel.C_T[row], "N*m/rad"),
                     "temperature_factor": float(sel.temperature_factor[row]),
                     "required_torque": quantity(sel.M_Nt[row], "N*m"),
@@ -245,7 +294,29 @@ class CouplingResult:
             "candidates": listed,
             "selected": selected,
             "order": order,
+            "torsion": self.torsion_json(),
             "notes": notes,
+        }
+
+    def torsion_json(self) -> dict | None:
+        """The drive train's torsional modes (:mod:`calc.torsion`) with the chosen coupling (the
+        best-ranked where none passes): its masses and springs, referred to the coupling's shaft,
+        the natural frequencies lowest first without the rigid-body mode, and the check of the
+        first against 2 f_er."""
+        sel = self.selection
+        if sel.chain is None:
+            return None
+        row = int(sel.order[0])
+        chain, train = sel.chain, sel.drive_train
+        return {
+            "part": str(sel.catalog.parts[row]),
+            "shaft": train.shaft,
+            "complete": train.complete,
+            "missing": list(train.missing),
+            "masses": [{"members": name, "J": quantity(chain.inertias[row, k], "kg*cm**2")} for k, name in enumerate(chain.masses)],
+            "springs": [{"member": name, "C": quantity(chain.stiffnesses[row, k], "N*m/rad")} for k, name in enumerate(chain.springs)],
+            "natural_frequencies": [quantity(f, "Hz") for f in sel.modes[row]],
+            "checks": [check_json(c.at(row)) for c in sel.checks if c.name == "f_1"],
         }
 
     def summary_lines(self, candidates: int | None = SHOWN_CANDIDATES) -> list[str]:
@@ -274,9 +345,26 @@ class CouplingResult:
         if section["candidate_count"] > len(section["candidates"]):
             lines.append(f"  ... {section['candidate_count'] - len(section['candidates'])} more candidates (--all-candidates lists them)")
         lines.append(f"Selected coupling: {section['selected'] or 'none passes'}")
+        lines += self._torsion_lines(section["torsion"])
         if section["order"]:
             lines.append(f"Order: {section['order']}")
         lines += [f"Note: {n}" for n in section["notes"]]
+        return lines
+
+    def _torsion_lines(self, t: dict | None) -> list[str]:
+        if t is None:
+            return []
+        chain = " | ".join(
+            [f"{m['members']} {quantity_text(m['J'])}" for m in t["masses"][:1]]
+            + [f"{c['member']} {quantity_text(c['C'])} | {m['members']} {quantity_text(m['J'])}" for c, m in zip(t["springs"], t["masses"][1:])]
+        )
+        frequencies = ", ".join(quantity_text(f) for f in t["natural_frequencies"])
+        row = int(self.selection.order[0])
+        lines = [
+            f"Drive train with {t['part']}, at {t['shaft']}{'' if t['complete'] else ' (incomplete)'}: {chain}",
+            f"  natural frequencies {frequencies} (rigid-body mode left out)",
+        ]
+        lines += [f"  {check_line(c.at(row), 20)}" for c in self.selection.checks if c.name == "f_1"]
         return lines
 
     def verdict(self) -> Verdict:
