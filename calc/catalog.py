@@ -24,7 +24,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
-from .units import Q_, describe_units, kind, pretty_unit, ureg
+from .units import Q_, SI_SCALE, describe_units, kind, pretty_unit, ureg
 
 
 def _project_dir() -> Path | None:
@@ -129,18 +129,25 @@ class Catalog:
 
     def text_or_blank(self, column: str) -> np.ndarray:
         """A text column's cells, blank where the file has no such column."""
-        return self.text.get(column, np.full(len(self), "", dtype=object))
+        return self.text[column] if column in self.text else self._blank
 
-    @property
+    # Each of these is worked out once over the whole catalog and carried to the catalogs of its
+    # rows (:meth:`rows`): callers index them per candidate, and a per-candidate pass over 10^5
+    # rows made writing the results quadratic in the catalog.
+    @functools.cached_property
+    def _blank(self) -> np.ndarray:
+        return _read_only(np.full(len(self), "", dtype=object))
+
+    @functools.cached_property
     def family(self) -> np.ndarray:
         """Each row's family (``TP+``), or its series where the file gives no family."""
         family = self.text_or_blank("family")
-        return np.where(family == "", self.text_or_blank("series"), family)
+        return _read_only(np.where(family == "", self.text_or_blank("series"), family))
 
-    @property
+    @functools.cached_property
     def partial(self) -> np.ndarray:
         """True for a partial row (:attr:`Schema.partial`): kept, never checked or chosen."""
-        return self.text_or_blank(self.schema.partial) != "" if self.schema.partial else np.zeros(len(self), bool)
+        return _read_only(self.text_or_blank(self.schema.partial) != "" if self.schema.partial else np.zeros(len(self), bool))
 
     @functools.cached_property
     def illustrative(self) -> np.ndarray:
@@ -165,7 +172,8 @@ class Catalog:
             {k: v[mask] for k, v in self.values.items()}, {k: v[mask] for k, v in self.text.items()},
             self.lines[mask], self.header_units, self.members, self.member[mask],
         )
-        out.illustrative = self.illustrative[mask]
+        for name in ("illustrative", "family", "partial"):
+            setattr(out, name, getattr(self, name)[mask])
         return out
 
     def index(self, part: str, where: str) -> int:
@@ -194,6 +202,12 @@ class Catalog:
             data[f"{c.name} [{pretty_unit(self.header_units[c.name])}]"] = self.values[c.name].magnitude
         data.update({k: v for k, v in self.text.items() if k != "part"})
         return pd.DataFrame(data)
+
+
+def _read_only(a: np.ndarray) -> np.ndarray:
+    """``a``, which no caller may change: it is shared by every caller of the catalog."""
+    a.flags.writeable = False
+    return a
 
 
 def some_parts(parts) -> str:
@@ -398,7 +412,7 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
 
     texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
     numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
-    problem = _first_problem(path, schema, lines, texts, numbers)
+    problem = _first_problem(path, schema, lines, texts, numbers, {name: _si(u) for name, u in units.items()})
     if problem:
         raise CalcError(problem)
     if misfit is not None:
@@ -445,13 +459,19 @@ class _Numbers:
     empty: np.ndarray
     malformed: np.ndarray
 
-    def bad(self, c: Column) -> np.ndarray:
+    def bad(self, c: Column, si_factor: float) -> np.ndarray:
         """Where a cell fails column ``c``: empty though required, or given but not a finite
-        number in range (NaN, the mark of a malformed cell, is neither)."""
+        number in range (NaN, the mark of a malformed cell, is neither), or out of
+        :data:`calc.units.SI_SCALE` once in SI units (``si_factor``: the header unit's), where
+        the calculations would overflow or lose the value to underflow."""
         ok = np.isfinite(self.values) & (self.values > 0 if c.positive else self.values >= 0)
+        low, high = SI_SCALE
+        with np.errstate(over="ignore", invalid="ignore"):
+            si = np.abs(self.values * si_factor)
+        ok &= (si == 0) | ((si >= low) & (si <= high))
         return np.where(self.empty, c.required, ~ok)
 
-    def problem(self, j: int, c: Column, where: str) -> str:
+    def problem(self, j: int, c: Column, si_factor: float, si_unit, where: str) -> str:
         """What is wrong with cell ``j``, one that :meth:`bad` marks."""
         cell = self.cells[j].strip()
         if self.empty[j]:
@@ -460,9 +480,13 @@ class _Numbers:
             return f"{where}: expected a number, found {cell!r}"
         if not math.isfinite(self.values[j]):
             return f"{where}: expected a finite number, found {cell!r}"
-        if c.positive:
+        if c.positive and not self.values[j] > 0:
             return f"{where}: expected a value above zero, found {cell}"
-        return f"{where}: expected a value of zero or more, found {cell}"
+        if not self.values[j] >= 0:
+            return f"{where}: expected a value of zero or more, found {cell}"
+        low, high = SI_SCALE
+        return (f"{where}: expected a magnitude between {low:g} and {high:g} in SI units ({si_unit:~P}), "
+                f"found {cell}, which is {abs(self.values[j] * si_factor):.3g}")
 
 
 def _numbers(cells: list) -> _Numbers:
@@ -473,24 +497,28 @@ def _numbers(cells: list) -> _Numbers:
     stripped = [spelling.strip() for spelling in spellings]
     parsed = np.array([float(cell) if cell and _FLOAT.match(cell) else math.nan for cell in stripped], float)
     blank = np.array([not cell for cell in stripped], bool)
-    index = dict(zip(spellings, range(len(spellings))))
-    at = np.fromiter(map(index.__getitem__, cells), np.intp, len(cells))
+    if len(spellings) == 1:  # a blank or constant column (a maker's table that leaves one out): no lookups
+        at = np.zeros(len(cells), np.intp)
+    else:
+        index = dict(zip(spellings, range(len(spellings))))
+        at = np.fromiter(map(index.__getitem__, cells), np.intp, len(cells))
     values, empty = parsed[at], blank[at]
     # A number's spelling never parses to NaN: NaN marks the empty and the malformed cells.
     return _Numbers(cells, values, empty, np.isnan(values) & ~empty)
 
 
-def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict) -> str | None:
+def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict, si: dict) -> str | None:
     """The message of the first bad cell a reader meets going row by row and, in a row, column by
     column (the text columns, then the numeric ones in the schema's order), or None. Each
-    column's bad cells are found over the whole column at once."""
+    column's bad cells are found over the whole column at once; ``si`` gives each numeric
+    column's factor to SI and its SI unit (:func:`_si`)."""
     firsts = []  # (row index, column order, column name) of each column's first bad cell
     for order, name in enumerate(texts):
         if name in schema.text_columns and "" in texts[name]:
             firsts.append((texts[name].index(""), order, name))
     partial = np.array(texts[schema.partial], dtype=object) != "" if schema.partial in texts else False
     for order, c in enumerate(schema.columns, start=len(texts)):
-        bad = numbers[c.name].bad(c)
+        bad = numbers[c.name].bad(c, si[c.name][0])
         if c.required:
             bad &= ~(partial & numbers[c.name].empty)  # a partial row may leave a required cell empty
         if bad.any():
@@ -501,7 +529,13 @@ def _first_problem(path: Path, schema: Schema, lines, texts: dict, numbers: dict
     if name in texts:
         return f"{path}, row {lines[j]}, column {name}: expected a value, found an empty cell"
     c = next(c for c in schema.columns if c.name == name)
-    return numbers[name].problem(j, c, f"{path}, row {lines[j]} ({texts['part'][j]}), column {name}")
+    return numbers[name].problem(j, c, *si[name], f"{path}, row {lines[j]} ({texts['part'][j]}), column {name}")
+
+
+def _si(units) -> tuple[float, object]:
+    """The factor that takes a column's unit to SI, and the SI unit."""
+    base = ureg.Quantity(1.0, units).to_base_units()
+    return float(base.magnitude), base.units
 
 
 def _header_unit(path: Path, c: Column, unit_text):

@@ -23,6 +23,7 @@ after, closest to passing first. Ties go by part name (:func:`calc.checks.rank`)
 from __future__ import annotations
 
 import dataclasses
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -316,6 +317,8 @@ class CouplingCheck(CheckArray):
 
     def reason(self, row: int) -> str:
         """Why the row fails this check: the excess, the shortfall, or what is missing."""
+        if not self.made:
+            return f"{self.text}: not checked, {self.not_made}"
         u = self.utilization[row]
         if np.isnan(u):
             missing = self.missing if isinstance(self.missing, str) else self.missing[row]
@@ -371,12 +374,22 @@ class CouplingSelection:
     modes: object = None  # its natural frequencies per row, lowest first (quantity, rows × modes)
 
     @property
+    def not_made(self) -> list:
+        """The checks the case gives too little for (no acceleration torque): none can be decided."""
+        return [c for c in self.checks if not c.made]
+
+    @property
     def selected(self) -> str | None:
-        """Part of the best passing candidate, or None."""
-        return selected_part(self.catalog.parts, self.passes, self.order)
+        """Part of the best passing candidate, or None (also when a check could not be made)."""
+        return None if self.not_made else selected_part(self.catalog.parts, self.passes, self.order)
+
+    def decided(self, row: int) -> bool | None:
+        """Whether a row passes: None where every check made passes but one could not be made."""
+        passes = bool(self.passes[row])
+        return None if passes and self.not_made else passes
 
     def reasons(self, row: int) -> list[str]:
-        return [c.reason(row) for c in self.checks if c.applies_to(row) and not c.passes[row]]
+        return [c.reason(row) for c in self.checks if c.applies_to(row) and (not c.made or not c.passes[row])]
 
     def row_type(self, row: int) -> str:
         return str(self.catalog.text["type"][row])
@@ -434,6 +447,7 @@ def select_coupling(
     starts_per_hour=None,
     drive_train: "DriveTrain | None" = None,
     where: str = "coupling",
+    sources: dict | None = None,
 ) -> CouplingSelection:
     """Check every coupling of ``catalog`` (already narrowed to a type or a part) and rank them.
 
@@ -459,11 +473,16 @@ def select_coupling(
     ----------
     catalog : Catalog
         Rows of :data:`SCHEMA`.
-    accel_torque : Quantity [torque]
+    accel_torque : Quantity [torque] or None
         ``M_a``, acceleration torque of the motor.
-    drive_inertia, load_inertia : Quantity [inertia]
+    drive_inertia, load_inertia : Quantity [inertia] or None
         ``J_drive`` and ``J_load`` without the coupling (with a coupling between motor and
         gearbox, ``J_load`` is ``J_L / i² + J_1``, E8).
+
+        Any of these three may be None (the contract's partial cases): the checks that need it
+        (the torque checks ``T_KN``, ``T_Kmax``, ``T_op <= T_A`` need all three, the resonance
+        check the two inertias) are not made, naming the missing value as ``sources`` gives it
+        (by key; default ``<where>.<key>``), and no coupling is chosen; the others are made.
     excitation_frequency : Quantity [frequency]
         ``f_er`` of the drive (E7).
     shaft_1, shaft_2 : Bore or str
@@ -514,14 +533,19 @@ def select_coupling(
     types = catalog.text["type"]
     is_el, is_safety, is_line = (types == "elastomer"), (types == "safety"), (types == "line-shaft")
     n = len(catalog)
-    M_a = as_kind(accel_torque, "torque", f"{where}.accel_torque")
-    J_drive = as_kind(drive_inertia, "inertia", f"{where}.drive_inertia")
-    J_load = as_kind(load_inertia, "inertia", f"{where}.load_inertia")
+    given = {"accel_torque": accel_torque, "drive_inertia": drive_inertia, "load_inertia": load_inertia}
+    absent = [(sources or {}).get(key, f"{where}.{key}") for key, value in given.items() if value is None]
+    absent_inertia = [(sources or {}).get(key, f"{where}.{key}") for key in ("drive_inertia", "load_inertia") if given[key] is None]
+    no_torque = "needs " + " and ".join(absent) if absent else None
+    no_inertia = "needs " + " and ".join(absent_inertia) if absent_inertia else None
+    M_a = Q_(math.nan, "N*m") if accel_torque is None else as_kind(accel_torque, "torque", f"{where}.accel_torque")
+    J_drive = Q_(math.nan, "kg*m**2") if drive_inertia is None else as_kind(drive_inertia, "inertia", f"{where}.drive_inertia")
+    J_load = Q_(math.nan, "kg*m**2") if load_inertia is None else as_kind(load_inertia, "inertia", f"{where}.load_inertia")
     f_er = as_kind(excitation_frequency, "frequency", f"{where}.excitation_frequency")
     S_A = as_kind(service_factor, "dimensionless", f"{where}.service_factor")
-    _positive(M_a, f"{where}.accel_torque", "a torque", "N*m")
-    _positive(J_drive, f"{where}.drive_inertia", "an inertia", "kg*cm**2")
-    _positive(J_load, f"{where}.load_inertia", "an inertia", "kg*cm**2")
+    _positive(None if accel_torque is None else M_a, f"{where}.accel_torque", "a torque", "N*m")
+    _positive(None if drive_inertia is None else J_drive, f"{where}.drive_inertia", "an inertia", "kg*cm**2")
+    _positive(None if load_inertia is None else J_load, f"{where}.load_inertia", "an inertia", "kg*cm**2")
     _positive(f_er, f"{where}.excitation_frequency", "a frequency", "Hz")
     if not S_A.m_as("") >= 1:
         raise CalcError(f"{where}.service_factor: expected a load factor S_A of 1 or more (E8), found {sig(S_A.m_as(''))}")
@@ -604,14 +628,15 @@ def select_coupling(
     no_f_e = needs("f_e")
     checks = [
         CouplingCheck(
-            "T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", ~(is_safety & np.isnan(catalog["T_KN"].magnitude))
+            "T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", ~(is_safety & np.isnan(catalog["T_KN"].magnitude)),
+            not_made=no_torque,
         ),
-        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e),
+        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e, not_made=no_inertia),
     ]
     if modes is not None:
         checks.append(
             CouplingCheck("f_1", "coupling", "2 f_er <= f_1", full(f_e_min(f_er=f_er)), modes[:, 0], "Hz", None,
-                          needs("the first mode of the drive train"), informs=not drive_train.complete)
+                          needs("the first mode of the drive train"), informs=not drive_train.complete, not_made=no_inertia)
         )
         if not drive_train.complete:
             notes.append(
@@ -623,7 +648,7 @@ def select_coupling(
         checks.append(
             CouplingCheck(
                 "T_Kmax", "coupling", "T_S · S_z · K_ϑ <= T_Kmax", m_smax, catalog["T_Kmax"], "N*m", is_el,
-                "the catalog gives no maximum torque T_Kmax", optional=True,
+                "the catalog gives no maximum torque T_Kmax", optional=True, not_made=no_torque,
             )
         )
     elif is_el.any():
@@ -640,7 +665,7 @@ def select_coupling(
         checks += [
             CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", is_safety, missing, True),
             CouplingCheck("T_Amax", "coupling", "T_A <= T_Amax", t_a, catalog["T_Amax"], "N*m", is_safety, missing),
-            CouplingCheck("T_A", "coupling", "T_op <= T_A", full(t_op), t_a, "N*m", is_safety, missing),
+            CouplingCheck("T_A", "coupling", "T_op <= T_A", full(t_op), t_a, "N*m", is_safety, missing, not_made=no_torque),
         ]
     if is_line.any():
         a = Q_(np.full(n, np.nan), "mm") if A is None else full(A)
@@ -649,11 +674,12 @@ def select_coupling(
             CouplingCheck("A_min", "coupling", "2 H <= A", 2 * catalog["H"], a, "mm", is_line, "needs coupling.shaft_distance", True),
             CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", is_line, missing),
         ]
-    passes = np.logical_and.reduce([c.passes for c in checks])
+    made = [c for c in checks if c.made]  # a check the case cannot feed decides no row (CouplingSelection.not_made)
+    passes = np.logical_and.reduce([c.passes for c in made])
     # A row an optional check cannot be made for counts as unburdened by it (it decides nothing there).
     utilizations = np.array(
         [np.where(c.applies if c.applies is not None else True, np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0)
-         for c in checks if not c.informs]
+         for c in made if not c.informs]
     )
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
     size = catalog["T_KN"].m_as("N*m")

@@ -9,7 +9,8 @@ from tests.conftest import ROOT
 LINES = (
     "catalog_load_100k", "rank_100k", "rank_numpy_100k", "loop_100k", "rank_vs_numpy", "loop_vs_rank",
     "ratios_100k", "ratios_numpy_100k", "ratios_loop_100k", "ratios_vs_numpy", "loop_vs_ratios",
-    "evaluate_100k", "evaluate_100k_vs_shipped", "evaluate_100k_memory",
+    "evaluate_100k_filled", "evaluate_100k_filled_vs_shipped", "evaluate_100k_filled_memory",
+    "evaluate_100k_blank", "evaluate_100k_blank_vs_shipped", "evaluate_100k_blank_memory",
     "sweep", "sweep_numpy", "sweep_vs_numpy", "sweep_1M", "sweep_1M_numpy", "sweep_1M_vs_numpy", "hysteresis_1M",
     "motion_1M", "motion_numpy_1M", "motion_loop_1M", "motion_vs_numpy", "motion_loop_vs_motion",
     "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report",

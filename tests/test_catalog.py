@@ -90,6 +90,14 @@ def test_a_catalog_in_other_units_loads_the_same(tmp_path):
         (HEADER, ROW.replace(",0.57,", ",NaN,"), "column J_1: expected a number, found 'NaN'"),
         (HEADER, ROW.replace(",3100,", ",3_100,"), "column n_1N: expected a number, found '3_100'"),
         (HEADER, ROW.replace(",81,", ",0x51,"), "column T_2N: expected a number, found '0x51'"),
+        # Numbers a float holds but a calculation cannot: 1e-320 N·m/arcmin is a subnormal whose inverse
+        # overflows (the series stiffness, the twist), and T_2N = T_2B = 1e-308 N·m makes every utilization
+        # infinite. Held to calc.units.SI_SCALE as a case file's values are: 1e-320 N·m/arcmin is
+        # 1e-320 / (π / 10800) = 3.44e-317 N·m/rad.
+        (HEADER, ROW.replace(",23,", ",1e-320,"),
+         "row 2 (G-10), column C_t21: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²/rad), found 1e-320, which is 3.44e-317"),
+        (HEADER, ROW.replace(",81,126,", ",1e-308,1e-308,"), "column T_2N: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²), found 1e-308"),
+        (HEADER, ROW.replace(",3100,", ",2e13,"), "column n_1N: expected a magnitude between 1e-12 and 1e+12 in SI units (rad/s), found 2e13, which is 2.09e+12"),
         # A header unit never carries a number (pint refuses a scaling factor), so none can be infinite.
         (HEADER.replace("T_2N [N*m]", "T_2N [1e999*N*m]"), ROW, "column T_2N: the unit '1e999*N*m' is not one the unit registry knows"),
     ],
@@ -149,6 +157,9 @@ BACKLASH_CELLS = st.one_of(
 FILES = itertools.count()
 
 
+ARCMIN = math.pi / 10800  # rad
+
+
 @settings(max_examples=150, deadline=None)
 @given(st.lists(BACKLASH_CELLS, min_size=1, max_size=5))
 def test_a_cell_loads_exactly_when_it_is_a_finite_number_in_range(tmp_path_factory, cells):
@@ -168,6 +179,9 @@ def test_a_cell_loads_exactly_when_it_is_a_finite_number_in_range(tmp_path_facto
             expected.append(where + f"expected a finite number, found {cell!r}")
         elif float(cell) < 0:
             expected.append(where + f"expected a value of zero or more, found {cell}")
+        elif float(cell) != 0 and not 1e-12 <= float(cell) * ARCMIN <= 1e12:
+            # Held to the SI scale of a case file's values (calc.units.SI_SCALE): 1 arcmin = π / 10800 rad.
+            expected.append(where + f"expected a magnitude between 1e-12 and 1e+12 in SI units (rad), found {cell}, which is {float(cell) * ARCMIN:.3g}")
         else:
             expected.append(float(cell))
     first_error = next((e for e in expected if isinstance(e, str)), None)

@@ -3,6 +3,7 @@ characters in the title, a measured record out of time order, and a reader that 
 Each input error is one line on standard error naming the file and key, exit code 2, nothing on
 standard output."""
 
+import csv
 import json
 import os
 import subprocess
@@ -10,7 +11,7 @@ import sys
 
 import pytest
 
-from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, run
+from .conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, run
 
 
 def one_line_error(capsys, path, *fragments):
@@ -110,3 +111,34 @@ def test_evaluate_into_a_pipe_closed_early_exits_quietly():
         err = proc.stderr.read().decode()
         proc.stderr.close()
         assert proc.wait() == 1 and err == ""
+
+
+@pytest.mark.parametrize(
+    "cells, message",
+    [
+        ({"C_t21 [N*m/arcmin]": "1e-320"}, "column C_t21: expected a magnitude between 1e-12 and 1e+12 in SI units"),
+        ({"T_2N [N*m]": "1e-308", "T_2B [N*m]": "1e-308"}, "column T_2N: expected a magnitude between 1e-12 and 1e+12 in SI units"),
+    ],
+)
+def test_a_hostile_catalog_gives_one_line_on_standard_error(tmp_path, cells, message):
+    # The example's chosen row with numbers a float holds but a calculation cannot: before the
+    # loader held cells to SI_SCALE, numpy's overflow and divide-by-zero warnings (7 to 9 lines)
+    # reached standard error ahead of an error that named a result, not the cell.
+    rows = list(csv.reader((ROOT / "catalogs" / "gearboxes.csv").open(encoding="utf-8")))
+    header = rows[0]
+    chosen = next(k for k, row in enumerate(rows) if row[0] == "NPT035-10")
+    for column, value in cells.items():
+        rows[chosen][header.index(column)] = value
+    folder = tmp_path / "cases"
+    folder.mkdir()
+    (tmp_path / "data").symlink_to(ROOT / "data")
+    with (folder / "hostile.csv").open("w", encoding="utf-8", newline="") as f:
+        csv.writer(f, lineterminator="\n").writerows(rows)
+    text = DERIVED_EXAMPLE.read_text(encoding="utf-8")
+    assert text.count('catalog = "gearboxes"\n') == 1
+    case = folder / "case.toml"
+    case.write_text(text.replace('catalog = "gearboxes"\n', 'catalog = "hostile.csv"\n'), encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(case), "--json"], capture_output=True, text=True, cwd=ROOT)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr.count("\n") == 1, done.stderr
+    assert done.stderr.startswith(f"error: {folder / 'hostile.csv'}, row {chosen + 1} (NPT035-10), ") and message in done.stderr

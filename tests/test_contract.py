@@ -5,11 +5,12 @@ Numbers are worked by hand from the example's load cycle (tests/conftest.py): ED
 1800 /h so f_s = 1.3 (E4); NPT035-10 has T_2B = 220 N·m, eta = 0.97, n_1max = 6000 rpm.
 """
 
+import csv
 import json
 
 import pytest
 
-from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, run
+from .conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, run
 
 COUPLING_TOML = """
 [coupling]
@@ -63,6 +64,58 @@ def test_s5_without_peak_torque_evaluates_every_section(capsys, write_case):
     assert any("motor.peak_torque" in reason for reason in r["verdict"]["reasons"])
     code, out, _ = run(capsys, case)
     assert code == 0 and "Verdict: NOT DECIDED" in out
+
+
+def test_an_input_side_coupling_without_the_motors_peak_torque(capsys, write_case):
+    # The same partial case with the coupling taking M_a from [motor] (side = "input"), as the
+    # contract's example says: the coupling's torque check T_KN is not made, naming
+    # motor.peak_torque; its resonance, speed and bore checks are made; no coupling is chosen.
+    case = write_case(HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML + COUPLING_TOML)
+    r = results(capsys, case)
+    c = r["coupling"]
+    assert c["selected"] is None and c["M_N"]["value"] is None
+    best = c["candidates"][0]
+    checks = {k["name"]: k for k in best["checks"]}
+    assert checks["T_KN"]["passes"] is None and checks["T_KN"]["required"] is None
+    assert checks["T_KN"]["not_made"] == "needs motor.peak_torque (or coupling.accel_torque)"
+    # f_e is made: J_load = 1500 / 10² + J_1 of the best-ranked gearbox, J_drive = motor.inertia.
+    assert checks["f_e"]["passes"] is True and checks["n_max"]["passes"] is True
+    assert best["passes"] is None and "T_KN" in " ".join(best["reasons"])
+    assert r["verdict"]["passes"] is None
+    assert "No coupling can be chosen: M_N · K_ϑ <= T_KN: not checked, needs motor.peak_torque (or coupling.accel_torque)" in r["verdict"]["reasons"]
+    code, out, _ = run(capsys, case)
+    assert code == 0 and "Selected coupling: none: M_N · K_ϑ <= T_KN: not checked, needs motor.peak_torque" in out
+
+
+def test_the_motor_and_coupling_without_the_gearboxs_J_1(capsys, write_case, tmp_path):
+    # The derived example through a catalog that leaves every J_1 empty (and no motor.shaft, so no
+    # clamping-hub table gives one): the motor's torques need J_1 in the rotor term, the input-side
+    # coupling needs it in J_load = J_L / i² + J_1. Their checks are not made, naming J_1 and the
+    # part; the motor's speed check (n_2max · i = 42.86 · 10 = 428.6 rpm) is still made.
+    rows = list(csv.reader((ROOT / "catalogs" / "gearboxes.csv").open(encoding="utf-8")))
+    j_1, partial = rows[0].index("J_1 [kg*cm**2]"), rows[0].index("partial")
+    for row in rows[1:]:
+        if not row[partial]:
+            row[j_1] = ""
+    (tmp_path / "data").symlink_to(ROOT / "data")
+    folder = tmp_path / "cases"
+    folder.mkdir()
+    with (folder / "no-j1.csv").open("w", encoding="utf-8", newline="") as f:
+        csv.writer(f, lineterminator="\n").writerows(rows)
+    text = DERIVED_EXAMPLE.read_text(encoding="utf-8").replace('catalog = "gearboxes"\n', 'catalog = "no-j1.csv"\n')
+    text = text.replace('shaft = "19 mm k6" ', 'max_speed = "6000 rpm" ').replace('peak_torque = "12 N*m"', 'peak_torque = "12 N*m"\nrated_torque = "4 N*m"')
+    case = write_case(text, "cases/no-j1.toml")
+    r = results(capsys, case)
+    motor = {k["name"]: k for k in r["motor"]["checks"]}
+    for name in ("T_1B", "T_1N"):
+        assert motor[name]["passes"] is None and motor[name]["required"] is None
+        assert motor[name]["not_made"] == "the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for NPT035-10"
+    assert motor["n_max"]["passes"] is True and motor["n_max"]["required"]["value"] == pytest.approx(428.57, abs=0.01)
+    assert r["motor"]["peak_torque_required"] is None
+    f_e = next(k for k in r["coupling"]["candidates"][0]["checks"] if k["name"] == "f_e")
+    assert f_e["passes"] is None and "the gearbox's J_1, which" in f_e["not_made"] and "for NPT035-10" in f_e["not_made"]
+    assert r["gearbox"]["selected"] == "NPT035-10" and r["accuracy"]["positioning_accuracy"]["value"] is not None
+    assert r["verdict"]["passes"] is None
 
 
 def test_exit_status(capsys, write_case):

@@ -217,10 +217,25 @@ def test_keys_given_are_used_as_given(capsys, write_case):
     "text, fragment",
     [
         (HEAD_TOML + PROFILE_TOML + INPUT_SIDE.replace('"input"', '"motor"'), "coupling.side: expected one of input, output, found 'motor'"),
-        (HEAD_TOML.replace('[load]\ninertia = "1500 kg*cm**2"\n', "") + PROFILE_TOML + INPUT_SIDE, "coupling.load_inertia: expected a value (with side = \"input\""),
+        (HEAD_TOML + PROFILE_TOML + INPUT_SIDE.replace('excitation_frequency = "100 Hz"\n', ""),
+         "coupling.excitation_frequency: expected a value (with side = \"input\" it comes from [motor], [load] and the gearbox when they give it), found none"),
     ],
 )
 def test_bad_side(capsys, write_case, text, fragment):
     path = write_case(text)
     code, out, err = run(capsys, path, "--json")
     assert code != 0 and out == "" and fragment in err and str(path) in err
+
+
+def test_an_input_side_coupling_without_the_load_inertia(capsys, write_case):
+    # A partial case (the contract): no [load] inertia, so J_load = J_L / i² + J_1 cannot be
+    # formed. The torque and resonance checks, which need it, are not made and name it; the speed
+    # and bore checks are made; no coupling is chosen and the verdict is not decided.
+    path = write_case(HEAD_TOML.replace('[load]\ninertia = "1500 kg*cm**2"\n', "") + PROFILE_TOML + INPUT_SIDE)
+    r = json.loads(run(capsys, path, "--json")[1])
+    checks = {k["name"]: k for k in r["coupling"]["candidates"][0]["checks"]}
+    for name in ("T_KN", "f_e"):
+        assert checks[name]["passes"] is None
+        assert checks[name]["not_made"] == "needs load.inertia (or the mechanism's), or coupling.load_inertia"
+    assert checks["n_max"]["passes"] is True and checks["d_1max"]["passes"] is True
+    assert r["coupling"]["selected"] is None and r["verdict"]["passes"] is None

@@ -4,7 +4,7 @@ the ordering text of the one chosen."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -62,6 +62,7 @@ class CouplingCase:
     inputs: dict
     bores: tuple
     derived: list  # what was taken from the rest of the case (side = "input"), as sentences
+    missing: dict = field(default_factory=dict)  # key -> what the case lacks for it (side = "input"); its checks are not made
     drive_train: DriveTrain | None = None  # the members around the coupling (calc.torsion)
     drive_steps: tuple = ()  # (title, Step) of each member referred to the coupling's shaft
 
@@ -117,11 +118,12 @@ def read(case: Case) -> CouplingCase:
             z = Z_h(t_cycle=case.profile.t_cycle)
             derived["starts_per_hour"] = (z, f"starts_per_hour = Z_h of the load cycle (one start per cycle) = {fmt(z, '1/hour')}")
     inputs["starts_per_hour"] = given_or_derived("starts_per_hour")
-    notes = [text for key, (_, text) in derived.items() if not s.has(key)]
-    return CouplingCase(catalog, wanted, side, inputs, bores, notes, *_drive_train(case, side, inputs))
+    notes = [text for key, (q, text) in derived.items() if not s.has(key) and q is not None]
+    missing = {key: text for key, (q, text) in derived.items() if not s.has(key) and q is None}
+    return CouplingCase(catalog, wanted, side, inputs, bores, notes, missing, *_drive_train(case, side, inputs))
 
 
-def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain, tuple]:
+def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain | None, tuple]:
     """The drive train around the coupling, every member referred to the coupling's shaft
     (:mod:`calc.torsion`), and the steps that referred them there.
 
@@ -131,7 +133,10 @@ def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain
     between gearbox and load (``side = "output"``): the motor and ``J_1`` times ``i²``, the
     gearbox's ``C_t21``, the coupling, the load as the section gives it. A member the case does not
     give is named in ``missing`` and left out (the gearbox then counts as rigid), so the chain
-    still has the coupling's two sides."""
+    still has the coupling's two sides. Without the inertias of the coupling's two sides (a partial
+    case) there is no chain: the resonance checks are then not made (:func:`select_coupling`)."""
+    if inputs["drive_inertia"] is None or inputs["load_inertia"] is None:
+        return None, ()
     two_mass = (Member("motor", inputs["drive_inertia"]),), (Member("load", inputs["load_inertia"]),)
     if not gearbox.applies(case):
         return DriveTrain(*two_mass), ()
@@ -170,8 +175,15 @@ def _from_the_case(case: Case, s: Table) -> dict:
     """What a coupling between motor and gearbox can take from the rest of the case, by key:
     ``(quantity, sentence)``. ``load_inertia`` is the load reflected to the input plus the gearbox's
     J_1 (E8), ``speed`` the highest input speed ``n_2max · i``, ``accel_torque`` the motor's peak
-    torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given."""
-    out = {}
+    torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given.
+    Where the case does not give what ``accel_torque``, ``drive_inertia`` or ``load_inertia`` needs,
+    the key holds ``(None, what is missing)``: the checks that need it are not made, naming it
+    (the contract's partial cases)."""
+    out = {
+        "accel_torque": (None, "motor.peak_torque (or coupling.accel_torque)"),
+        "drive_inertia": (None, "motor.inertia (or coupling.drive_inertia)"),
+        "load_inertia": (None, "load.inertia (or the mechanism's) and a gearbox, or coupling.load_inertia"),
+    }
     if case.motor_peak_torque is not None:
         out["accel_torque"] = (case.motor_peak_torque, f"accel_torque M_a = motor.peak_torque = {fmt(case.motor_peak_torque, 'N*m')}")
     if case.motor_inertia is not None:
@@ -185,7 +197,11 @@ def _from_the_case(case: Case, s: Table) -> dict:
     speed = n_1(n_2=case.profile.n_2max, i=i)
     out["speed"] = (speed, f"speed = n_2max · i = {fmt(case.profile.n_2max, 'rpm')} · {sig(i.m_as(''))} = {fmt(speed, 'rpm')}")
     J_1, hub = selection.J_1[row], selection.J_1_hub[row]
-    if case.load_inertia is not None and not np.isnan(J_1.magnitude):
+    if case.load_inertia is None:
+        out["load_inertia"] = (None, "load.inertia (or the mechanism's), or coupling.load_inertia")
+    elif np.isnan(J_1.magnitude):
+        out["load_inertia"] = (None, f"the gearbox's J_1, which {selection.catalog.catalog_of(row)} does not give for {part} (or coupling.load_inertia)")
+    else:
         J = J_load_at_input(J_L=case.load_inertia, i=i, J_1=J_1)
         which = part if selection.passes[row] else f"{part}, the best-ranked gearbox (none passes)"
         which += "" if np.isnan(hub.magnitude) else f", {fmt(hub, 'mm')} clamping hub"
@@ -203,7 +219,10 @@ def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:
     def compute():
         cc = read(case)
         where = f"{case.path}: coupling"
-        return cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train, where=where, **cc.inputs)
+        return cc, select_coupling(
+            cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train, where=where,
+            sources=cc.missing, **cc.inputs,
+        )
 
     return once(case, "coupling", compute)
 
@@ -232,7 +251,7 @@ class CouplingResult:
                     "part": str(cc.catalog.parts[row]),
                     "type": str(types[row]),
                     "illustrative": bool(cc.catalog.illustrative[row]),
-                    "passes": bool(sel.passes[row]),
+                    "passes": sel.decided(row),
                     "f_e": quantity(sel.f_e[row], "Hz"),
                     "f_1": None if sel.modes is None else quantity(sel.modes[row, 0], "Hz"),
                     "C_T": quantity(sel.C_T[row], "N*m/rad"),
@@ -334,7 +353,7 @@ class CouplingResult:
             lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
         several = len(section["catalogs"]) > 1
         for c, row in zip(section["candidates"], shown(self.selection.order, candidates)):
-            verdict = "PASS" if c["passes"] else "FAIL"
+            verdict = {True: "PASS", False: "FAIL", None: "OPEN"}[c["passes"]]
             where = f" [{c['catalog']}]" if several else ""
             lines.append(f"  {verdict}  {c['part']}{where} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {quantity_text(c['f_e'])}")
             lines += [f"        {check_line(k.at(row), 20)}" for k in self.selection.checks if k.applies_to(row)]
@@ -344,12 +363,20 @@ class CouplingResult:
                 lines.append(f"        rejected: {r}")
         if section["candidate_count"] > len(section["candidates"]):
             lines.append(f"  ... {section['candidate_count'] - len(section['candidates'])} more candidates (--all-candidates lists them)")
-        lines.append(f"Selected coupling: {section['selected'] or 'none passes'}")
+        lines.append(f"Selected coupling: {section['selected'] or self.not_chosen}")
         lines += self._torsion_lines(section["torsion"])
         if section["order"]:
             lines.append(f"Order: {section['order']}")
         lines += [f"Note: {n}" for n in section["notes"]]
         return lines
+
+    @property
+    def not_chosen(self) -> str:
+        """Why no coupling is chosen: a check the case cannot feed, or none passes."""
+        sel = self.selection
+        if sel.not_made and sel.passes[sel.order[0]]:
+            return "none: " + "; ".join(f"{c.text}: not checked, {c.not_made}" for c in sel.not_made)
+        return "none passes"
 
     def _torsion_lines(self, t: dict | None) -> list[str]:
         if t is None:
@@ -371,6 +398,8 @@ class CouplingResult:
         sel = self.selection
         if sel.selected is not None:
             return Verdict(True)
+        if sel.not_made and sel.passes[sel.order[0]]:
+            return Verdict(None, [f"No coupling can be chosen: {c.text}: not checked, {c.not_made}" for c in sel.not_made])
         return Verdict(False, no_candidate_passes("No coupling passes its checks:", sel.catalog.parts, sel.order, sel.reasons))
 
 
