@@ -4,7 +4,7 @@ catalog, and the ratio to pick) and
 ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--strict] [--summary]`` and
 ``python -m calc compare A.toml B.toml [...] [--json] [--pdf FILE]`` (the designs side by side).
 
-Exit status (``spec/case-format.md``): 0 when results were produced, whatever the verdict; with
+Exit status (``docs/case-format.md``): 0 when results were produced, whatever the verdict; with
 ``--strict``, 1 when the verdict is not PASS (for ``ratios``: when no ratio can be picked); 2 on
 input errors, always.
 """
@@ -26,7 +26,7 @@ def main(argv=None) -> int:
     sub = parser.add_subparsers(dest="command", required=True)
     ev = sub.add_parser("evaluate", help="evaluate a design case and print its results")
     ev.add_argument("case", help="the design-case TOML file")
-    ev.add_argument("--json", action="store_true", help="print the results as JSON (the contract of spec/case-format.md)")
+    ev.add_argument("--json", action="store_true", help="print the results as JSON (the contract of docs/case-format.md)")
     ev.add_argument("--all-candidates", action="store_true", help="list every candidate (default: the best 20 and the count)")
     ra = sub.add_parser("ratios", help="evaluate a design case at every ratio of its gearbox catalog and pick one")
     ra.add_argument("case", help="the design-case TOML file")

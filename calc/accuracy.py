@@ -18,7 +18,7 @@ to E15. Everything is referred to the output shaft (E11, :mod:`calc.stiffness`).
   several times) gives the measured accuracy, the largest error, and repeatability, the largest
   spread at one target (:func:`analyze_positions`).
 
-The case's ``[accuracy]`` table (``spec/case-format.md``) is read by :func:`read_accuracy` and
+The case's ``[accuracy]`` table (``docs/case-format.md``) is read by :func:`read_accuracy` and
 evaluated by :func:`section_results` (the JSON contract) and :func:`summary_lines`.
 """
 

@@ -1,8 +1,12 @@
-"""Reading a design-case file (TOML, ``../shared/spec/case-format.md``).
+"""Reading a design-case file (TOML, ``docs/case-format.md``).
 
 The file is parsed by the standard library's ``tomllib``; every dimensional value is a string
 parsed by :func:`calc.units.parse_quantity` and checked for its kind. Nothing is evaluated. Each
 error names the file and the key (``profile[2].duration``).
+
+Each section declares the tables and keys it reads once (:class:`Key`, :class:`Declared`); the
+reader (:class:`Table`) takes a key's kind and default from there, and the report's inputs, the
+design review's inputs and the format document (checked by the tests) follow the same declaration.
 """
 
 from __future__ import annotations
@@ -17,14 +21,74 @@ from .profile import Profile
 from .units import kind_phrase, parse_quantity
 
 
-class Table:
-    """One table of the case file, read key by key; unknown keys are an error."""
+@dataclass(frozen=True)
+class Key:
+    """One key of a case file's table, declared once by the section that reads it.
 
-    def __init__(self, path: Path, name: str, data, allowed: tuple[str, ...]):
+    ``kind`` is a quantity kind of :mod:`calc.units` (``"torque"``) or one of :data:`OTHER_KINDS`;
+    ``symbol`` the source document's symbol in code form (``"T_1B"``) where the key has one;
+    ``default`` the value as a case file would write it, which the reader takes when the key is
+    left out (None: none, or one the description states because it comes from the rest of the
+    case); ``unit`` the unit the report and the design review show it in; ``only`` the types of
+    a typed table (a mechanism's) the key belongs to, empty for every type; ``keys`` the keys of
+    an inline table or of each table of an array."""
+
+    name: str
+    kind: str
+    description: str
+    symbol: str = ""
+    default: object = None
+    unit: str = ""
+    only: tuple = ()
+    keys: tuple = ()
+
+
+#: Kinds of keys that are not quantities: what a case file writes for them.
+OTHER_KINDS = {
+    "text": "a text in quotes",
+    "choice": "one of the texts the description lists",
+    "catalog": "a catalog name or path, or a list of them ranked together",
+    "factor table": "a factor table's name (catalogs/factors) or a path to a CSV file",
+    "file": "a path to a CSV file, relative to the case file",
+    "bore": "a shaft with its fit, metric (ISO 286) or inch",
+    "flag": "true or false",
+    "table": "an inline table of the keys below",
+    "tables": "an array of tables ([[...]]) of the keys below",
+    "angle or length": "an angle, or with accuracy.radius a length at that radius",
+    "distance": "an angle (a rotary mechanism) or a length (a linear one)",
+}
+
+
+@dataclass(frozen=True)
+class Declared:
+    """A top-level table of a case file as a section declares it: its name, its keys, whether it
+    is an array of tables (``[[profile]]``) and what it holds."""
+
+    name: str
+    keys: tuple
+    description: str
+    array: bool = False
+
+    def key(self, name: str) -> Key:
+        return next(k for k in self.keys if k.name == name)
+
+
+def key_names(keys) -> tuple[str, ...]:
+    """The names of declared keys or tables (plain names pass through)."""
+    return tuple(k if isinstance(k, str) else k.name for k in keys)
+
+
+class Table:
+    """One table of the case file, read key by key as its section declares them (:class:`Key`:
+    the kind and default of each); unknown keys are an error."""
+
+    def __init__(self, path: Path, name: str, data, allowed: tuple):
         self.path, self.name = path, name
         if not isinstance(data, dict):
             raise CalcError(f"{path}: {name}: expected a table of keys, found {type(data).__name__}")
         self.data = data
+        self.declared = {k.name: k for k in allowed if isinstance(k, Key)}
+        allowed = key_names(allowed)
         for key in data:
             if key not in allowed:
                 raise CalcError(f"{path}: {self.key(key)}: unknown key; {name} takes {', '.join(allowed)}")
@@ -38,46 +102,59 @@ class Table:
     def has(self, key: str) -> bool:
         return key in self.data
 
-    def quantity(self, key: str, kind: str, required: bool = False, default=None):
-        if key not in self.data:
-            if required:
-                raise CalcError(f"{self.where(key)}: expected a value, found none")
-            return default
-        return parse_quantity(self.data[key], kind, self.where(key))
+    def kind(self, key: str) -> str:
+        """The declared kind of ``key``."""
+        return self.declared[key].kind
 
-    def positive(self, key: str, kind: str, required: bool = False, what: str | None = None):
+    def _absent(self, key: str, required: bool):
+        """What a key left out reads as: an error when required, else its declared default."""
+        if required:
+            raise CalcError(f"{self.where(key)}: expected a value, found none")
+        return self.declared[key].default if key in self.declared else None
+
+    def quantity(self, key: str, kind: str | None = None, required: bool = False):
+        """The quantity at ``key`` of its declared kind (or ``kind``); its declared default, parsed,
+        where the table leaves it out (None without one)."""
+        kind = kind or self.kind(key)
+        value = self.data[key] if key in self.data else self._absent(key, required)
+        return None if value is None else parse_quantity(value, kind, self.where(key))
+
+    def positive(self, key: str, kind: str | None = None, required: bool = False, what: str | None = None):
         """:meth:`quantity`, which must be above zero; ``what`` names it in the error (default:
         its kind)."""
+        kind = kind or self.kind(key)
         q = self.quantity(key, kind, required)
         if q is not None and not q.magnitude > 0:
             raise CalcError(f"{self.where(key)}: expected {what or kind_phrase(kind)} above zero, found {self.data[key]!r}")
         return q
 
     def text(self, key: str, required: bool = False, default=None):
+        """The text at ``key``; where the table leaves it out, ``default`` (one that comes from the
+        rest of the case) or else its declared default."""
         if key not in self.data:
-            if required:
-                raise CalcError(f"{self.where(key)}: expected a value, found none")
-            return default
+            declared = self._absent(key, required)
+            return declared if default is None else default
         value = self.data[key]
         if not isinstance(value, str):
             raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
         return value
 
-    def catalogs(self, key: str, default: str):
-        """A catalog key: one name or path, or a list of them ranked together."""
-        value = self.data.get(key, default)
+    def catalogs(self, key: str):
+        """A catalog key: one name or path, or a list of them ranked together (its declared
+        default where the table leaves it out)."""
+        value = self.data[key] if key in self.data else self._absent(key, False)
         if isinstance(value, list) and value and all(isinstance(v, str) for v in value):
             return value
         if not isinstance(value, str):
             raise CalcError(f"{self.where(key)}: expected a catalog name or path in quotes, or a list of them, found {value!r}")
         return value
 
-    def table(self, key: str, allowed: tuple[str, ...]) -> "Table | None":
+    def table(self, key: str, allowed: tuple) -> "Table | None":
         if key not in self.data:
             return None
         return Table(self.path, self.key(key), self.data[key], allowed)
 
-    def tables(self, key: str, allowed: tuple[str, ...]) -> list["Table"]:
+    def tables(self, key: str, allowed: tuple) -> list["Table"]:
         items = self.data.get(key, [])
         if not isinstance(items, list):
             raise CalcError(f"{self.where(key)}: expected an array of tables ([[{self.key(key)}]]), found {type(items).__name__}")

@@ -20,7 +20,7 @@ lead ``p``, ``r = d / 2`` of a pinion's pitch diameter or a pulley's diameter. T
 A rotary table: ``T_2 = J_L·α_2 / rad + s_v·(T_f + T_p)``, its friction and process torque
 against the motion while it moves.
 
-These are a reading (``spec/case-format.md``, "Motion and mechanism"): g = 9.80665 m/s²; forces
+These are a reading (``docs/case-format.md``, "Motion and mechanism"): g = 9.80665 m/s²; forces
 that oppose motion are positive while moving forwards.
 """
 

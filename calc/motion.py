@@ -9,7 +9,7 @@ The law is written once, at the gearbox output (angles): the mechanism (:mod:`ca
 turns a load's distance into the output's angle first, and its travel is proportional to that
 angle, so the load's law is the same law scaled.
 
-Formulas (a reading, ``spec/case-format.md``, "Motion and mechanism")::
+Formulas (a reading, ``docs/case-format.md``, "Motion and mechanism")::
 
     ω_2max = φ_2 / (t_m - (t_a + t_d) / 2)          peak speed of a trapezoid
     α_2max = ω_2max / (t_r - t_j)                    peak acceleration of a ramp of t_r (t_a or t_d)

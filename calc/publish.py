@@ -233,7 +233,7 @@ def main(cases: list[str], output: str | None = None, strict: bool = False, summ
     """Build one PDF per case, ``jobs`` at a time (default: the number of cores), with a progress
     bar; print one line per case; with ``summary``, also the summary's PDF and CSV in the output folder.
 
-    Exit status (``spec/case-format.md``): 2 when a case could not be read or a PDF could not be
+    Exit status (``docs/case-format.md``): 2 when a case could not be read or a PDF could not be
     built (a report of an unreadable case is still written, saying why), else 1 with ``strict``
     when a verdict is not PASS, else 0."""
     import os

@@ -2,6 +2,7 @@
 and the record of which error messages of the package the tests trigger."""
 
 import fnmatch
+import json
 import sys
 from pathlib import Path
 
@@ -47,12 +48,40 @@ ratio = 10
 
 
 def run(capsys, *args):
-    """``python -m calc evaluate ARGS`` in this process: exit code, standard output, standard error."""
+    """``python -m calc evaluate ARGS`` in this process: exit code, standard output, standard error.
+    Results written as JSON are checked against the contract's schema (docs/results.schema.json),
+    so every case a test evaluates checks it."""
     from calc.__main__ import main
 
     code = main(["evaluate", *map(str, args)])
     out, err = capsys.readouterr()
+    if code in (0, 1) and "--json" in args:
+        check_results(out)
     return code, out, err
+
+
+def check_results(text: str) -> dict:
+    """The results of ``evaluate --json`` read strictly (no NaN or infinity, which JSON lacks)
+    and validated against docs/results.schema.json; an error names where it breaks the schema."""
+
+    def refuse(constant):
+        raise AssertionError(f"the results hold {constant}, which JSON does not have")
+
+    results = json.loads(text, parse_constant=refuse)
+    errors = sorted(RESULTS_SCHEMA.iter_errors(results), key=lambda e: list(e.absolute_path))
+    assert not errors, "; ".join(f"{'/'.join(map(str, e.absolute_path))}: {e.message}" for e in errors[:5])
+    return results
+
+
+def _results_schema():
+    import jsonschema
+
+    schema = json.loads((ROOT / "docs" / "results.schema.json").read_text(encoding="utf-8"))
+    jsonschema.Draft202012Validator.check_schema(schema)
+    return jsonschema.Draft202012Validator(schema)
+
+
+RESULTS_SCHEMA = _results_schema()
 
 
 @pytest.fixture

@@ -93,7 +93,7 @@ def test_lost_motion_grows_with_torque_and_never_falls_below_the_backlash(t, j, 
 
 
 def test_chain_accuracy_of_the_contract_example():
-    # spec/case-format.md: EKM-15 and EPL-W-064 on the output side, 20 N·m; T_N 40 N·m from the gearbox.
+    # docs/case-format.md: EKM-15 and EPL-W-064 on the output side, 20 N·m; T_N 40 N·m from the gearbox.
     a = chain_accuracy(Chain((COUPLING, GEARBOX)), Q_(20, "N*m"))
     assert a.chain.stiffness.m_as("N*m/arcmin") == pytest.approx(0.202597, rel=1e-5)
     assert a.nominal_torque.m_as("N*m") == 40 and not a.low_torque

@@ -1,4 +1,4 @@
-"""The second round of the contract (spec/case-format.md, "What every run promises"): one verdict,
+"""The second round of the contract (docs/case-format.md, "What every run promises"): one verdict,
 partial cases, exit status, finite numbers, bounded candidate lists and ``part = "selected"``.
 
 Numbers are worked by hand from the example's load cycle (tests/conftest.py): ED 50 % (S5), Z_h =

@@ -53,7 +53,7 @@ def test_summary_shows_the_coupling(capsys):
 
 
 def test_the_spec_example_section_is_accepted(capsys, write_case):
-    # The [coupling] table of spec/case-format.md, as written there.
+    # The [coupling] table of docs/case-format.md, as written there.
     spec = """
 [coupling]
 catalog = "couplings"

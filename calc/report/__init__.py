@@ -10,8 +10,9 @@ figures; the order lines. Each part is a :class:`Latex` block: the report notebo
 (``reports/calc-report.ipynb``) displays it and nbconvert passes it unchanged into the PDF
 (:mod:`calc.publish`).
 
-Each section of a case has its block module (:data:`BLOCKS`, the shape in :mod:`.common`); a block
-of the report is its frame with each section's part in turn. The LaTeX helpers are in
+Each section of a case has its block module, of the same name as the section's module
+(:data:`BLOCKS`, in the sections' order; the shape in :mod:`.common`); a block of the report is
+its frame with each section's part in turn. The LaTeX helpers are in
 :mod:`.latex`, the skeletons of the blocks in ``templates/``.
 
 Text from a case file or a catalog goes through :func:`latex_escape`, so it prints as written. A
@@ -21,23 +22,24 @@ FAIL and it says why.
 
 from __future__ import annotations
 
+import importlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..case import Case, read_case
 from ..catalog import display_path, recording_files_read
 from ..errors import CalcError
-from ..sections import Results, Verdict, evaluate
+from ..sections import MODULES, Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
-from . import accuracy, coupling, drive, duty, gearbox, motion, motor, ratios
+from . import accuracy, coupling, gearbox, motor
 from .common import ERRATA, INPUT_COLUMNS, rejected_in_full, results_of
 from .latex import Latex, itemize, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
 __all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
 
-#: The block module of each section, in the order the report shows them.
-BLOCKS = (drive, motion, duty, gearbox, coupling, motor, ratios, accuracy)
+#: The block module of each section (:data:`calc.sections.MODULES`), in their order.
+BLOCKS = tuple(importlib.import_module(f"{__name__}.{m.__name__.rpartition('.')[2]}") for m in MODULES)
 
 #: What every report assumes.
 ASSUMPTIONS = (

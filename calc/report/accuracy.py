@@ -19,24 +19,10 @@ from .provenance import PROJECT_DIR
 
 NAME = "accuracy"
 
-#: What each key of ``[accuracy]`` means, for the inputs table: (symbol name in the accuracy
-#: formulas, or None; description when there is no symbol).
-KEYS = {
-    "applied_torque": ("T", ""), "nominal_torque": (None, "nominal torque for the 3 % rule (E13)"),
-    "positions": (None, "file of measured positions"),
-    "required_positioning_accuracy": (None, "positioning accuracy required"),
-    "required_repeatability": (None, "repeatability required"),
-    "radius": (None, "radius at which angles are also given as arcs s = r · φ"),
-}
-
-
 def inputs(report) -> list[str]:
     if not described(NAME, report):
         return []
-    from ..accuracy import lost_motion
-
-    symbols = {s.name: s for s in (lost_motion.result, *lost_motion.inputs)}
-    return [raw_section_tables(NAME, report.case.sections[NAME], symbols, KEYS, {})]
+    return [raw_section_tables(NAME, report.case.sections[NAME], {})]
 
 
 def steps(report) -> list[str]:

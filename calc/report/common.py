@@ -1,13 +1,14 @@
 """What the section blocks of the calc report share.
 
-Every block module (:mod:`.drive`, :mod:`.duty`, :mod:`.gearbox`, :mod:`.coupling`,
-:mod:`.accuracy`) has the same shape: ``NAME`` (its key in the results), and functions of the
+Every block module (one per section module of :mod:`calc.sections`, of the same name) has the
+same shape: ``NAME`` (its key in the results), and functions of the
 :class:`calc.report.Report` that each give that section's part of one block of the report, empty
 where the section has none: ``sources`` and ``readings`` (method), ``input_rows`` (rows of the
 inputs table) and ``inputs`` (tables after it), ``steps`` (calculations), ``results``, ``checks``,
 ``candidates``, ``figures`` ((figure, caption) pairs), ``chosen`` ((what, part, detail) rows) and
 ``order_lines``. The further sections (coupling, accuracy) write their checks, candidates, chosen
-part and order line the same way (:func:`further_checks` ...).
+part and order line the same way (:func:`further_checks` ...). An input row is written from its
+key's declaration (:func:`input_row`).
 """
 
 from __future__ import annotations
@@ -17,8 +18,10 @@ from pathlib import Path
 
 from ..formula import REGISTRY
 from ..gearbox import inertia_ratio
+from ..sections import declared
 from ..units import pretty_unit, sig
-from .latex import breakable, itemize, latex_escape, prose, q, sources_list, table, util, value_unit, verdict_mark
+from . import symbols
+from .latex import breakable, itemize, latex_escape, listed, prose, q, sources_list, table, util, value_unit, verdict_mark
 
 _METHOD = tomllib.loads((Path(__file__).parent / "errata.toml").read_text(encoding="utf-8"))
 #: The sections of the source document each section of a case is computed from.
@@ -65,11 +68,31 @@ def case_key(key: str) -> str:
     return rf"\texttt{{\footnotesize {breakable(key)}}}"
 
 
-def input_row(symbol, quantity, key: str) -> list[str]:
-    """A row of the inputs table: symbol, value, unit, description, case key."""
-    unit = symbol.unit
-    return [f"${symbol.latex}$", sig(quantity.m_as(unit)), latex_escape(pretty_unit(unit)) or "–",
-            latex_escape(symbol.description), case_key(key)]
+#: Symbols named by a Greek letter alone (the coupling's temperature ϑ has no formula of its own).
+GREEK = ("alpha", "beta", "gamma", "delta", "eta", "theta", "vartheta", "lambda", "mu", "tau", "phi", "varphi", "omega")
+
+
+def symbol_latex(name: str) -> str:
+    """A symbol's LaTeX by its name in code: the formulas' own where a formula has it, else the
+    name set as math (``T_1N`` as T with the subscript 1N, ``vartheta`` as ϑ); empty for none."""
+    own = next((s for f in REGISTRY for s in (f.result, *f.inputs) if s.name == name), None)
+    if not name or own is not None:
+        return own.latex if own is not None else ""
+    return "\\" + name if name in GREEK else symbols.latex(name).strip("$")
+
+
+def input_row(path: str, value, derived: bool = False) -> list[str]:
+    """A row of the inputs table as the key at ``path`` is declared (:func:`calc.sections.declared`):
+    symbol, value (a quantity in the unit the declaration shows, or a text as written), unit,
+    description, case key (marked where the package took the value from the rest of the case)."""
+    key = declared(path)
+    latex = symbol_latex(key.symbol)
+    if hasattr(value, "m_as"):
+        shown, unit = sig(value.m_as(key.unit)), latex_escape(pretty_unit(key.unit)) or "–"
+    else:
+        shown, unit = value_unit(listed(value) if isinstance(value, list) else value)
+    where = case_key(path) + (r"\textsuperscript{\dag}" if derived else "")
+    return [f"${latex}$" if latex else "–", shown, unit, prose(key.description), where]
 
 
 def checks_table(candidate: dict, caption: str) -> str:
@@ -152,22 +175,17 @@ def rejected_in_full(name: str, section: dict) -> list[str]:
     return [rf"\subsection*{{Every rejected {latex_escape(name)} candidate, closest first}}", r"{\small" + itemize(items) + "}"]
 
 
-def raw_section_tables(name: str, raw: dict, symbols: dict, keys: dict, derived: dict) -> str:
-    """A further section of the case as its inputs: symbol, value, unit, description, key; its
-    arrays of tables (the members of an accuracy chain) as one row each, figures as written.
-    ``symbols`` are the section's formulas' symbols by name, ``keys`` what each key means (symbol
-    name or None, description where there is no symbol), ``derived`` the inputs the case left out
-    and the package took from the rest of the case."""
+def raw_section_tables(name: str, raw: dict, derived: dict) -> str:
+    """A further section of the case as its inputs, each row as its key is declared: symbol,
+    value and unit as written, description, key; its arrays of tables (the members of an accuracy
+    chain) as one row each, figures as written. ``derived`` are the inputs the case left out and
+    the package took from the rest of the case."""
     rows, members = [], []
     for key, v in {**raw, **derived}.items():
         if isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
             members += [(key, k, x) for k, x in enumerate(v, start=1)]
             continue
-        sym_name, desc = keys.get(key, (None, ""))
-        sym = symbols.get(sym_name)
-        value, unit = value_unit(v)
-        where = case_key(f"{name}.{key}") + (r"\textsuperscript{\dag}" if key in derived else "")
-        rows.append([f"${sym.latex}$" if sym else "–", value, unit, latex_escape(sym.description if sym else desc), where])
+        rows.append(input_row(f"{name}.{key}", v, derived=key in derived))
     out = [rf"\subsection*{{{latex_escape(name.capitalize())}}}"]
     if rows:
         note = (r"\textsuperscript{\dag} Not in the case file: taken from the rest of the case (a coupling between "

@@ -18,23 +18,6 @@ from .latex import itemize, latex_escape, plain, prose, q, step_block, table
 
 NAME = "coupling"
 
-#: What each key of ``[coupling]`` means, for the inputs table: (symbol name in the coupling's
-#: formulas, or None; description when there is no symbol).
-KEYS = {
-    "catalog": (None, "coupling catalog"), "type": (None, "coupling type"), "part": (None, "coupling part to check"),
-    "side": (None, "where the coupling sits (input: between motor and gearbox)"),
-    "accel_torque": ("M_a", ""), "drive_inertia": ("J_drive", ""), "load_inertia": ("J_load", ""),
-    "service_factor": ("S_A", ""), "temperature": (None, "operating temperature (elastomer couplings, E9)"),
-    "excitation_frequency": ("f_er", ""), "speed": (None, "speed of the coupling"),
-    "shaft_1": (None, "shaft 1 with its fit"), "shaft_2": (None, "shaft 2 with its fit"),
-    "disengagement_torque": (None, "disengagement torque T_A (safety couplings, E10)"),
-    "shaft_distance": ("A", ""),
-    "temperature_factors": (None, "table of the temperature factor K_ϑ (catalogs/factors, or a file)"),
-    "start_factors": (None, "table of the start factor S_z (catalogs/factors, or a file)"),
-    "starts_per_hour": (None, "starts per hour (the start factor S_z)"),
-}
-
-
 def _derived_inputs(report, raw: dict) -> dict:
     """The inputs that the case left out and the package took from the rest of it (a motor-side
     coupling's M_a, J_drive, J_load, speed), as the case would write them."""
@@ -48,11 +31,8 @@ def _derived_inputs(report, raw: dict) -> dict:
 def inputs(report) -> list[str]:
     if not described(NAME, report):
         return []
-    from .. import coupling as cp
-
     raw = report.case.sections[NAME]
-    symbols = {s.name: s for f in (cp.M_N, cp.f_e_min, cp.Z) for s in (f.result, *f.inputs)}
-    return [raw_section_tables(NAME, raw, symbols, KEYS, _derived_inputs(report, raw))]
+    return [raw_section_tables(NAME, raw, _derived_inputs(report, raw))]
 
 
 def steps(report) -> list[str]:

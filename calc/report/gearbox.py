@@ -8,8 +8,8 @@ import numpy as np
 
 from ..units import sig
 from . import common
-from .common import candidates_table, case_key, checks_table, gearbox_symbols, input_row, nothing, rejected, results_of
-from .latex import breakable, latex_escape, num, prose, sources_list, stacked, step_block, table
+from .common import candidates_table, checks_table, input_row, nothing, rejected, results_of
+from .latex import breakable, latex_escape, num, sources_list, stacked, step_block, table
 
 NAME = "gearbox"
 
@@ -26,23 +26,18 @@ def readings(report) -> set[str]:
 
 def input_rows(report) -> list[list[str]]:
     c = report.case
-    rows = [input_row(gearbox_symbols()["i"], c.ratio, "gearbox.ratio")] if c.ratio is not None else []
+    rows = [input_row("gearbox.ratio", c.ratio)] if c.ratio is not None else []
     if c.gearbox_part:
-        rows.append(["–", latex_escape(c.gearbox_part), "–", "gearbox part to check", case_key("gearbox.part")])
+        rows.append(input_row("gearbox.part", c.gearbox_part))
     if c.gearbox_catalog and (c.ratio is not None or c.gearbox_part):
-        names = c.gearbox_catalog if isinstance(c.gearbox_catalog, list) else [c.gearbox_catalog]
-        rows.append(["–", latex_escape(", ".join(names)), "–", "gearbox catalog" + ("s, ranked together" if len(names) > 1 else ""),
-                     case_key("gearbox.catalog")])
+        rows.append(input_row("gearbox.catalog", c.gearbox_catalog))
     if c.motor_shaft is not None:
-        rows.append(["–", latex_escape(c.motor_shaft.text), "–", prose("motor shaft: picks the clamping hub of J_1"), case_key("motor.shaft")])
+        rows.append(input_row("motor.shaft", c.motor_shaft.text))
     load = c.output_load
     if load is not None:
-        for key, q, what in (("axial_force", load.axial_force, "axial force on the output, F_2a"),
-                             ("radial_force", load.radial_force, "radial force on the output, F_2r"),
-                             ("lever_arm", load.lever_arm, "lever arm of F_2r from the output flange, x_2"),
-                             ("axial_force_radius", load.axial_radius, "distance of F_2a from the axis, y_2")):
-            if q is not None:
-                rows.append(["–", latex_escape(f"{q:~P}"), "–", prose(what), case_key(f"load.{key}")])
+        given = (("axial_force", load.axial_force), ("radial_force", load.radial_force), ("lever_arm", load.lever_arm),
+                 ("axial_force_radius", load.axial_radius))
+        rows += [input_row(f"load.{key}", q) for key, q in given if q is not None]
     return rows
 
 

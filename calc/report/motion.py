@@ -8,19 +8,16 @@ from __future__ import annotations
 from .. import mechanism as mech
 from ..cycle import PHASES
 from ..motion import alpha_2max, omega_2max
+from ..sections.motion import keys_of
 from ..units import Q_, sig
 from .common import input_row, nothing
 from .latex import latex_escape, num, step_block, table
 
 NAME = "motion"
 
-#: Per input of a mechanism: its symbol, its field of :class:`calc.mechanism.Mechanism`, its case key.
-ROTARY_ROWS = ((mech.J_L_sym, "inertia", "inertia"), (mech.T_f, "friction_torque", "friction_torque"), (mech.T_p, "process_torque", "process_torque"))
-LINEAR_ROWS = ((mech.m, "mass", "mass"), (mech.mu, "friction_coefficient", "friction_coefficient"), (mech.theta, "incline", "incline"),
-               (mech.F_p, "force", "force"), (mech.eta, "eta", "eta"))
-OWN_ROWS = {"ball-screw": ((mech.p, "lead", "lead"), (mech.J_M, "own_inertia", "screw_inertia")),
-            "rack-pinion": ((mech.d, "diameter", "pitch_diameter"), (mech.J_M, "own_inertia", "pinion_inertia")),
-            "belt": ((mech.d, "diameter", "pulley_diameter"), (mech.J_M, "own_inertia", "pulley_inertia"))}
+#: The field of :class:`calc.mechanism.Mechanism` of each of its quantities' keys, where it differs.
+FIELDS = {"screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia",
+          "pitch_diameter": "diameter", "pulley_diameter": "diameter"}
 
 
 def _motion(report):
@@ -32,8 +29,8 @@ def input_rows(report) -> list[list[str]]:
     if m is None or m.mechanism is None:
         return []
     k = m.mechanism
-    rows = ROTARY_ROWS if not k.linear else LINEAR_ROWS + OWN_ROWS[k.type]
-    return [input_row(symbol, Q_(getattr(k, field)), f"mechanism.{key}") for symbol, field, key in rows]
+    quantities = [key.name for key in keys_of(k.type) if key.unit or key.kind == "dimensionless"]
+    return [input_row(f"mechanism.{key}", Q_(getattr(k, FIELDS.get(key, key)))) for key in quantities]
 
 
 def inputs(report) -> list[str]:

@@ -6,8 +6,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..formula import Symbol
-from ..gearbox import T_2stop
 from ..motor import T_1_back, T_1_drive, T_1rms, alpha_1, driven_back
 from ..sections.motor import output_load
 from ..units import Q_, latex_unit, sig
@@ -16,11 +14,10 @@ from .latex import itemize, latex_escape, prose, step_block
 
 NAME = "motor"
 
-#: The motor's ratings (no formula has them as symbols) and the stop torque, as the case gives them.
+#: The motor's ratings and the stop torque, as the case gives them: the case's field, the key.
 RATINGS = (
-    (Symbol("T_1N", "T_{1N}", "torque", "N*m", "rated (continuous) torque of the motor"), "motor_rated_torque", "motor.rated_torque"),
-    (Symbol("n_max", r"n_{\mathrm{max}}", "speed", "rpm", "top speed of the motor"), "motor_max_speed", "motor.max_speed"),
-    (T_2stop.result, "emergency_stop_torque", "gearbox.emergency_stop_torque"),
+    ("motor_rated_torque", "motor.rated_torque"), ("motor_max_speed", "motor.max_speed"),
+    ("emergency_stop_torque", "gearbox.emergency_stop_torque"),
 )
 #: Above this many samples the RMS is shown as its formula and result, not every substituted term.
 SHOWN_TERMS = 12
@@ -28,7 +25,7 @@ SHOWN_TERMS = 12
 
 def input_rows(report) -> list[list[str]]:
     c = report.case
-    return [input_row(sym, getattr(c, attr), key) for sym, attr, key in RATINGS if getattr(c, attr) is not None]
+    return [input_row(key, getattr(c, attr)) for attr, key in RATINGS if getattr(c, attr) is not None]
 
 
 def steps(report) -> list[str]:

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..accuracy import ChainAccuracy, PositioningScatter, angle_of_arc, arc_length, chain_accuracy, read_positions
-from ..case import Case, Table, once
+from ..case import Case, Declared, Key, Table, once
 from ..catalog import display_path, load_catalog, load_catalogs, resolve
 from ..checks import CheckArray
 from ..errors import CalcError
@@ -18,21 +18,46 @@ from ..units import Q_, fmt, parse_quantity, sig
 from ..measurement import measurement_path
 from ..stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
-from .common import Verdict, check_json, check_line, number, quantity, quantity_text
+from .common import Verdict, number, quantity, quantity_text
 
 NAME = "accuracy"
-KEYS = (
-    "applied_torque", "nominal_torque", "component", "positions",
-    "required_positioning_accuracy", "required_repeatability", "radius",
+ORDER = 80
+#: The case keeps the table raw and this section reads it when evaluated.
+FURTHER = True
+#: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.stiffness.StiffnessCurve`).
+CURVE_KEYS = (
+    Key("T1", "torque", "the torque up to which K1 holds", "T_1", unit="N*m"),
+    Key("T2", "torque", "the torque up to which K2 holds", "T_2", unit="N*m"),
+    Key("K1", "stiffness", "slope up to T1", "K_1", unit="N*m/rad"),
+    Key("K2", "stiffness", "slope from T1 to T2", "K_2", unit="N*m/rad"),
+    Key("K3", "stiffness", "slope above T2", "K_3", unit="N*m/rad"),
 )
 COMPONENT_KEYS = (
-    "name", "side", "kind", "stiffness", "backlash", "transmission_accuracy", "nominal_torque",
-    "part", "catalog", "hysteresis", "transmission_trace", "measured_part", "stiffness_curve",
+    Key("name", "text", "name of the member (default: its part)"),
+    Key("side", "choice", "input | output of the gearbox; input is referred to the output through the ratio (E11)", default="output"),
+    Key("kind", "choice", "which catalog a part comes from: gearbox | coupling (a bellows or safety coupling)", default="gearbox"),
+    Key("stiffness", "stiffness", "torsional stiffness at the output, always with its angle unit (\"1.3 N*m/arcmin\")", "C", unit="N*m/arcmin"),
+    Key("backlash", "angle", "backlash (\"0 arcmin\" for none)", "phi_B", unit="arcmin"),
+    Key("transmission_accuracy", "angle", "transmission accuracy", unit="arcsec"),
+    Key("nominal_torque", "torque", "nominal torque of the member (a measured loop is analysed at it, E12)", "T_N", unit="N*m"),
+    Key("part", "text", "a catalog part whose figures the member takes; \"selected\": the selection's choice"),
+    Key("catalog", "catalog", "the catalog of the part (default: gearbox.catalog, or couplings)"),
+    Key("hysteresis", "file", "a measured hysteresis loop: torque [N*m], twist [arcmin]"),
+    Key("transmission_trace", "file", "a position trace over one output revolution"),
+    Key("measured_part", "text", "with part = \"selected\": the part the measurements were made on"),
+    Key("stiffness_curve", "table", "the stiffness as a curve of three slopes instead of one", keys=CURVE_KEYS),
 )
+TABLES = (Declared(NAME, (
+    Key("applied_torque", "torque", "applied torque at the output, for lost motion and positioning accuracy", "T", unit="N*m"),
+    Key("nominal_torque", "torque", "nominal torque for the 3 % rule (E13; default: the chain's)", "T_N", unit="N*m"),
+    Key("component", "tables", "the members of the chain, drive to load ([[accuracy.component]])", keys=COMPONENT_KEYS),
+    Key("positions", "file", "measured positions: the scatter of repeated moves"),
+    Key("required_positioning_accuracy", "angle or length", "positioning accuracy required: a check", unit="arcmin"),
+    Key("required_repeatability", "angle or length", "repeatability required: a check", unit="arcmin"),
+    Key("radius", "length", "radius at which angles are also given as arcs s = r · φ (a pinion, a table's edge)", "r", unit="mm"),
+), "the accuracy of the drive chain at the output"),)
 #: The keys of a component that read a measurement of one physical part.
 MEASUREMENTS = ("hysteresis", "transmission_trace")
-#: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.stiffness.StiffnessCurve`).
-CURVE_KEYS = {"T1": "torque", "T2": "torque", "K1": "stiffness", "K2": "stiffness", "K3": "stiffness"}
 
 
 @dataclass
@@ -61,8 +86,8 @@ class AccuracyCase:
 
 def read_accuracy(case: Case) -> AccuracyCase:
     """Read the case's ``[accuracy]`` table; every error names the file and the key."""
-    sec = Table(case.path, NAME, case.sections[NAME], KEYS)
-    applied = sec.quantity("applied_torque", "torque", required=True)
+    sec = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
+    applied = sec.quantity("applied_torque", required=True)
     nominal = _positive(sec, "nominal_torque", "torque")
     tables = sec.tables("component", COMPONENT_KEYS)
     if not tables:
@@ -83,7 +108,7 @@ def read_accuracy(case: Case) -> AccuracyCase:
     out.chain = Chain(tuple(components), ratio)
     if sec.has("positions"):
         out.positions = read_positions(measurement_path(sec.data["positions"], case.folder, sec.where("positions")))
-    out.radius = sec.positive("radius", "length", what="a radius")
+    out.radius = sec.positive("radius", what="a radius")
     for key in ("required_positioning_accuracy", "required_repeatability"):
         q = _requirement(sec, key, out)
         if q is not None:
@@ -226,13 +251,13 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
     """One ``[[accuracy.component]]``: from its keys, a catalog part (or the selection's choice),
     or measurements."""
     part = t.text("part")
-    kind = t.text("kind", default="gearbox")
+    kind = t.text("kind")
     if kind not in PART_KINDS:
         raise CalcError(f"{t.where('kind')}: expected one of {', '.join(PART_KINDS)}, found {kind!r}")
     if t.has("kind") and part is None:
         raise CalcError(f"{t.where('kind')}: kind says which catalog a part comes from; give part as well")
     name = t.text("name", required=part is None, default=part)
-    side = t.text("side", required=part is None, default="output")
+    side = t.text("side", required=part is None)
     if side not in SIDES:
         raise CalcError(f"{t.where('side')}: expected input or output, found {side!r}")
     stiffness = _positive(t, "stiffness", "stiffness")
@@ -241,8 +266,8 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         for key in ("stiffness", "part", "hysteresis"):
             if t.has(key):
                 raise CalcError(f"{t.where('stiffness_curve')}: the curve gives the member's stiffness; give either stiffness_curve or {key}")
-        c = t.table("stiffness_curve", tuple(CURVE_KEYS))
-        curve = StiffnessCurve(*(c.quantity(key, kind, required=True) for key, kind in CURVE_KEYS.items()), where=f"{c.path}: {c.name}")
+        c = t.table("stiffness_curve", CURVE_KEYS)
+        curve = StiffnessCurve(*(c.quantity(key.name, required=True) for key in CURVE_KEYS), where=f"{c.path}: {c.name}")
         stiffness = curve.K_1
     backlash = t.quantity("backlash", "angle")
     if backlash is not None and not backlash.magnitude >= 0:
@@ -368,7 +393,7 @@ class AccuracyResult:
     accuracy: ChainAccuracy
 
     def to_json(self, candidates: int | None = None) -> dict:
-        """The ``accuracy`` section of the results (``spec/case-format.md``): ``C_total`` referred to
+        """The ``accuracy`` section of the results (``docs/case-format.md``): ``C_total`` referred to
         the output, ``lost_motion``, ``positioning_accuracy``, ``repeatability`` and the
         ``components`` with their ``stiffness_at_output`` and ``backlash_at_output``, each quantity as
         ``{"value", "unit"}``; measured loops, traces and positioning records where the case names them.

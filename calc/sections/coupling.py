@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..bands import factor_table
-from ..case import Case, Table, once
+from ..case import Case, Declared, Key, Table, once
 from ..catalog import Catalog, display_path, load_catalogs
 from ..coupling import (
     DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input, check_types, f_e_min,
@@ -20,16 +20,35 @@ from ..fits import parse_bore
 from ..gearbox import n_1
 from ..profile import Z_h
 from ..torsion import Member, gearbox_at_input, inertia_at_output, load_at_input
-from ..units import Q_, fmt, sig
+from ..units import fmt, sig
 from . import gearbox
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity, quantity_text, shown
 
 NAME = "coupling"
-KEYS = (
-    "catalog", "type", "part", "side", "accel_torque", "drive_inertia", "load_inertia", "service_factor", "temperature",
-    "excitation_frequency", "speed", "shaft_1", "shaft_2", "disengagement_torque", "shaft_distance",
-    "temperature_factors", "start_factors", "starts_per_hour",
-)
+ORDER = 50
+#: The case keeps the table raw and this section reads it when evaluated.
+FURTHER = True
+_FROM_CASE = " (with side = \"input\": from the rest of the case)"
+TABLES = (Declared(NAME, (
+    Key("catalog", "catalog", "the coupling catalog(s): a name in catalogs/ or a path to a CSV file", default="couplings"),
+    Key("type", "choice", "check only couplings of this type: bellows | elastomer | safety | line-shaft"),
+    Key("part", "text", "check this one part instead of ranking the catalog"),
+    Key("side", "choice", "where the coupling sits: input (between motor and gearbox) | output"),
+    Key("accel_torque", "torque", "acceleration torque of the motor" + _FROM_CASE, "M_a", unit="N*m"),
+    Key("drive_inertia", "inertia", "drive-side inertia, without the coupling" + _FROM_CASE, "J_drive", unit="kg*cm**2"),
+    Key("load_inertia", "inertia", "load-side inertia as the coupling sees it, without the coupling (E8)" + _FROM_CASE, "J_load", unit="kg*cm**2"),
+    Key("service_factor", "dimensionless", "load (shock) factor (E8)", "S_A", DEFAULT_SERVICE_FACTOR),
+    Key("temperature", "temperature", "operating temperature, needed by elastomer couplings (E9)", "vartheta", unit="degC"),
+    Key("excitation_frequency", "frequency", "excitation frequency of the drive: f_e >= 2 f_er (E7)", "f_er", unit="Hz"),
+    Key("speed", "speed", "speed of the coupling" + _FROM_CASE, "n", unit="rpm"),
+    Key("shaft_1", "bore", "bore 1 with its fit"),
+    Key("shaft_2", "bore", "bore 2 with its fit"),
+    Key("disengagement_torque", "torque", "disengagement torque of a safety coupling (E10)", "T_A", unit="N*m"),
+    Key("shaft_distance", "length", "distance between the shafts of a line shaft", "A", unit="mm"),
+    Key("temperature_factors", "factor table", "the table of the temperature factor K_ϑ (E9): source | roba-es | comintec | a path", default="source"),
+    Key("start_factors", "factor table", "the table of the start factor S_z: roba-es | a path; the peak-torque check T_S · S_z · K_ϑ <= T_Kmax"),
+    Key("starts_per_hour", "per_hour", "starts per hour for the start factor (default: Z_h of the load cycle)", "Z_h", unit="1/hour"),
+), "the coupling: its inputs, the candidates checked and ranked, and the order line of the one chosen"),)
 
 
 @dataclass
@@ -52,8 +71,8 @@ class CouplingCase:
 
 def read(case: Case) -> CouplingCase:
     """Read ``[coupling]`` key by key; errors name the file and the key."""
-    s = Table(case.path, NAME, case.sections[NAME], KEYS)
-    catalog = load_catalogs(s.catalogs("catalog", default="couplings"), case.folder, s.where("catalog"), SCHEMA)
+    s = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
+    catalog = load_catalogs(s.catalogs("catalog"), case.folder, s.where("catalog"), SCHEMA)
     check_types(catalog)
     wanted = s.text("type")
     if wanted is not None and wanted not in TYPES:
@@ -79,19 +98,19 @@ def read(case: Case) -> CouplingCase:
             raise CalcError(f"{s.where(key)}: expected a value{hint}, found none")
     bores = tuple(parse_bore(s.data[key], s.where(key)) for key in ("shaft_1", "shaft_2"))
 
-    def given_or_derived(key, kind):
-        return s.quantity(key, kind) if s.has(key) else derived.get(key, (None, ""))[0]
+    def given_or_derived(key):
+        return s.quantity(key) if s.has(key) else derived.get(key, (None, ""))[0]
 
     inputs = dict(
-        accel_torque=given_or_derived("accel_torque", "torque"),
-        drive_inertia=given_or_derived("drive_inertia", "inertia"),
-        load_inertia=given_or_derived("load_inertia", "inertia"),
-        excitation_frequency=s.quantity("excitation_frequency", "frequency"),
-        service_factor=s.quantity("service_factor", "dimensionless", default=Q_(DEFAULT_SERVICE_FACTOR, "")),
-        temperature=s.quantity("temperature", "temperature"),
-        speed=given_or_derived("speed", "speed"),
-        disengagement_torque=s.quantity("disengagement_torque", "torque"),
-        shaft_distance=s.quantity("shaft_distance", "length"),
+        accel_torque=given_or_derived("accel_torque"),
+        drive_inertia=given_or_derived("drive_inertia"),
+        load_inertia=given_or_derived("load_inertia"),
+        excitation_frequency=s.quantity("excitation_frequency"),
+        service_factor=s.quantity("service_factor"),
+        temperature=s.quantity("temperature"),
+        speed=given_or_derived("speed"),
+        disengagement_torque=s.quantity("disengagement_torque"),
+        shaft_distance=s.quantity("shaft_distance"),
     )
     inputs["temperature_factors"] = factor_table("temperature", s.text("temperature_factors"), case.folder, s.where("temperature_factors"))
     if s.has("start_factors"):
@@ -100,7 +119,7 @@ def read(case: Case) -> CouplingCase:
             # One start from rest per cycle of the load cycle.
             z = Z_h(t_cycle=case.profile.t_cycle)
             derived["starts_per_hour"] = (z, f"starts_per_hour = Z_h of the load cycle (one start per cycle) = {fmt(z, '1/hour')}")
-    inputs["starts_per_hour"] = given_or_derived("starts_per_hour", "per_hour")
+    inputs["starts_per_hour"] = given_or_derived("starts_per_hour")
     notes = [text for key, (q, text) in derived.items() if not s.has(key) and q is not None]
     missing = {key: text for key, (q, text) in derived.items() if not s.has(key) and q is None}
     steps = [step for key, step in derived_steps.items() if not s.has(key)]

@@ -3,13 +3,27 @@ and accuracy sections share. They have no results of their own."""
 
 from __future__ import annotations
 
-from ..case import Case, Table
+from ..case import Case, Declared, Key, Table
 from ..errors import CalcError
 from ..fits import parse_bore
 from ..gearbox import OutputLoad
 
-MOTOR_KEYS = ("peak_torque", "inertia", "rated_torque", "max_speed", "shaft")
-LOAD_KEYS = ("inertia", "axial_force", "radial_force", "lever_arm", "axial_force_radius")
+ORDER = 10
+MOTOR = Declared("motor", (
+    Key("peak_torque", "torque", "maximum torque of the motor (S5)", "T_1B", unit="N*m"),
+    Key("inertia", "inertia", "motor inertia (the inertia ratio, the rotor term)", "J_motor", unit="kg*cm**2"),
+    Key("rated_torque", "torque", "continuous torque of the motor, at most its peak: the RMS check", "T_1N", unit="N*m"),
+    Key("max_speed", "speed", "highest speed of the motor", "n_max", unit="rpm"),
+    Key("shaft", "bore", "the motor's shaft as ordered (\"19 mm k6\"): picks the gearbox's clamping hub and so its J_1"),
+), "the motor driving the gearbox")
+LOAD = Declared("load", (
+    Key("inertia", "inertia", "load inertia at the output of the gearbox (left out where a [mechanism] gives it)", "J_L", unit="kg*cm**2"),
+    Key("axial_force", "force", "axial force on the gearbox output", "F_2a", unit="N"),
+    Key("radial_force", "force", "radial force on the gearbox output, with its lever_arm", "F_2r", unit="N"),
+    Key("lever_arm", "length", "distance of the radial force from the output flange", "x_2", unit="mm"),
+    Key("axial_force_radius", "length", "distance of the axial force from the axis", "y_2", unit="mm"),
+), "the load at the gearbox output")
+TABLES = (MOTOR, LOAD)
 
 
 def read(top: Table, case: Case) -> None:
@@ -20,12 +34,12 @@ def read(top: Table, case: Case) -> None:
     (``load.axial_force``, ``radial_force``, its ``lever_arm`` from the output flange, and
     ``axial_force_radius``, the axial force's distance from the axis) are checked against the
     output bearing's ratings."""
-    motor = top.table("motor", MOTOR_KEYS)
+    motor = top.table(MOTOR.name, MOTOR.keys)
     if motor:
-        case.motor_peak_torque = motor.positive("peak_torque", "torque")
-        case.motor_inertia = motor.positive("inertia", "inertia")
-        case.motor_rated_torque = motor.positive("rated_torque", "torque")
-        case.motor_max_speed = motor.positive("max_speed", "speed")
+        case.motor_peak_torque = motor.positive("peak_torque")
+        case.motor_inertia = motor.positive("inertia")
+        case.motor_rated_torque = motor.positive("rated_torque")
+        case.motor_max_speed = motor.positive("max_speed")
         peak, rated = case.motor_peak_torque, case.motor_rated_torque
         if peak is not None and rated is not None and rated.m_as("N*m") > peak.m_as("N*m"):
             raise CalcError(
@@ -35,12 +49,12 @@ def read(top: Table, case: Case) -> None:
             )
         if motor.has("shaft"):
             case.motor_shaft = parse_bore(motor.data["shaft"], motor.where("shaft"))
-    load = top.table("load", LOAD_KEYS)
+    load = top.table(LOAD.name, LOAD.keys)
     if load:
-        case.load_inertia = load.positive("inertia", "inertia")
+        case.load_inertia = load.positive("inertia")
         forces = OutputLoad(
-            axial_force=load.positive("axial_force", "force", what="an axial force"),
-            radial_force=load.positive("radial_force", "force", what="a radial force"),
+            axial_force=load.positive("axial_force", what="an axial force"),
+            radial_force=load.positive("radial_force", what="a radial force"),
             lever_arm=_distance(load, "lever_arm"),
             axial_radius=_distance(load, "axial_force_radius"),
         )
@@ -55,7 +69,7 @@ def read(top: Table, case: Case) -> None:
 
 def _distance(load: Table, key: str):
     """A distance of a force on the output: zero or more."""
-    q = load.quantity(key, "length")
+    q = load.quantity(key)
     if q is not None and not q.magnitude >= 0:
         raise CalcError(f"{load.where(key)}: expected a distance of zero or more, found {load.data[key]!r}")
     return q

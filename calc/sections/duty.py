@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..bands import BandTable
-from ..case import Case, Table, once
+from ..case import Case, Declared, Key, Table, once
 from ..cycle import SampledCycle
 from ..errors import CalcError
 from ..gearbox import SHOCK_FACTORS, shock_factor
@@ -15,7 +15,13 @@ from . import gearbox
 from .common import Verdict, quantity, quantity_text
 
 NAME = "profile"
-KEYS = ("phase", "duration", "speed", "torque")
+ORDER = 30  # after the motion, which may derive the load cycle
+TABLES = (Declared(NAME, (
+    Key("phase", "choice", "accel | const | decel | pause"),
+    Key("duration", "time", "duration of the segment", "t_k", unit="s"),
+    Key("speed", "speed", "mean output speed during the segment (a pause needs none)", "n_2k", unit="rpm"),
+    Key("torque", "torque", "output torque during the segment; the sign may be negative (a pause needs none)", "T_2k", unit="N*m"),
+), "the load cycle at the gearbox output, one table per segment in time order (or [[move]] or [drive_record] instead)", array=True),)
 
 
 def read(top: Table) -> Profile:
@@ -25,11 +31,11 @@ def read(top: Table) -> Profile:
     segments = [
         (
             seg.text("phase", required=True),
-            seg.quantity("duration", "time", required=True),
-            seg.quantity("speed", "speed"),
-            seg.quantity("torque", "torque"),
+            seg.quantity("duration", required=True),
+            seg.quantity("speed"),
+            seg.quantity("torque"),
         )
-        for seg in top.tables("profile", KEYS)
+        for seg in top.tables(NAME, TABLES[0].keys)
     ]
     return Profile.from_segments(segments, where=f"{top.path}: profile")
 
@@ -37,6 +43,9 @@ def read(top: Table) -> Profile:
 @dataclass
 class DutyResult:
     """The duty, the S1 means and the S5 values of the load cycle."""
+
+    #: The JSON contract writes its objects (duty, continuous, cyclic) at the top level.
+    AT_TOP = True
 
     profile: Profile
     duty: Duty

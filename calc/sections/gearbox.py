@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..bands import factor_table
-from ..case import Case, Table, once
+from ..case import Case, Declared, Key, Table, once
 from ..catalog import display_path, load_catalogs
 from ..errors import CalcError
 from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
@@ -17,7 +17,15 @@ from ..units import Q_, fmt, sig
 from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity
 
 NAME = "gearbox"
-KEYS = ("ratio", "catalog", "part", "hubs", "emergency_stop_torque", "shock_factors")
+ORDER = 40
+TABLES = (Declared(NAME, (
+    Key("ratio", "dimensionless", "ratio of the gearbox, as desired (needed unless a part is named)", "i"),
+    Key("catalog", "catalog", "the gearbox catalog(s): a name in catalogs/ or a path to a CSV file", default="gearboxes"),
+    Key("part", "text", "check this one part instead of ranking the catalog (never a partial row)"),
+    Key("hubs", "catalog", "the table of clamping hubs (J_1 per hub), picked by motor.shaft", default="gearbox-hubs"),
+    Key("emergency_stop_torque", "torque", "torque of an emergency stop against the catalog's T_2Not (default T_1B · i)", "T_2stop", unit="N*m"),
+    Key("shock_factors", "factor table", "the table of the shock factor f_s (E4): source, or a path to a CSV file", default="source"),
+), "the gearbox: the rows at the desired ratio (or the named part) checked for the duty and ranked"),)
 RANKING = (
     "passing first; published rows before illustrative ones; then smallest governing torque rating "
     "(T_2B in S5, T_2N in S1); then lowest worst utilization (the emergency stop's included where the row gives T_2Not); "
@@ -28,14 +36,14 @@ RANKING = (
 def read(top: Table, case: Case) -> None:
     """Read ``[gearbox]`` into the case: the ratio (above zero; needed unless a part is named),
     the catalog and the part."""
-    gearbox = top.table("gearbox", KEYS)
+    gearbox = top.table(NAME, TABLES[0].keys)
     if not gearbox:
         return
-    case.ratio = gearbox.positive("ratio", "dimensionless", required=not gearbox.has("part"), what="a ratio")
-    case.gearbox_catalog = gearbox.catalogs("catalog", default="gearboxes")
-    case.gearbox_hubs = gearbox.catalogs("hubs", default="gearbox-hubs")
+    case.ratio = gearbox.positive("ratio", required=not gearbox.has("part"), what="a ratio")
+    case.gearbox_catalog = gearbox.catalogs("catalog")
+    case.gearbox_hubs = gearbox.catalogs("hubs")
     case.gearbox_part = gearbox.text("part")
-    case.emergency_stop_torque = gearbox.positive("emergency_stop_torque", "torque")
+    case.emergency_stop_torque = gearbox.positive("emergency_stop_torque")
     case.shock_factors = factor_table("shock", gearbox.text("shock_factors"), case.folder, gearbox.where("shock_factors"))
 
 

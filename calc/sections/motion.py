@@ -1,4 +1,4 @@
-"""The load cycle derived instead of typed (``spec/case-format.md``, "Motion and mechanism"):
+"""The load cycle derived instead of typed (``docs/case-format.md``, "Motion and mechanism"):
 the moves of the load (``[[move]]``) through its mechanism (``[mechanism]``), or a time series a
 drive recorded (``[drive_record]``), sampled at the gearbox output (:class:`calc.cycle.SampledCycle`)
 and cut into the seed's segments, which the duty section uses as if they were typed."""
@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..case import Case, Table
+from ..case import Case, Declared, Key, Table, key_names
 from ..catalog import Column
 from ..cycle import PHASES, SampledCycle
 from ..errors import CalcError
@@ -21,25 +21,50 @@ from ..units import Q_, kind_phrase, parse_quantity
 from .common import quantity, quantity_text
 
 NAME = "motion"
-#: The tables of a case that give its motion; each is also a key at the case file's top level.
-TABLES = ("mechanism", "move", "drive_record")
-#: The ways to give the load cycle; a case gives exactly one.
-FORMS = ("profile", "move", "drive_record")
-
-COMMON_KEYS = ("type", "holding_brake")
-ROTARY_KEYS = ("inertia", "friction_torque", "process_torque")
-LINEAR_KEYS = ("mass", "friction_coefficient", "incline", "force", "eta")
+ORDER = 20
 #: Per linear type: the key of its radius (a lead or a diameter) and of its own inertia.
 OWN_KEYS = {"ball-screw": ("lead", "screw_inertia"), "rack-pinion": ("pitch_diameter", "pinion_inertia"), "belt": ("pulley_diameter", "pulley_inertia")}
-MOVE_KEYS = ("distance", "time", "accel_time", "decel_time", "jerk_time", "dwell")
-RECORD_KEYS = ("file",)
+_LINEAR = tuple(OWN_KEYS)
+MECHANISM = Declared("mechanism", (
+    Key("type", "choice", "rotary | ball-screw | rack-pinion | belt; the type says which keys below it takes"),
+    Key("holding_brake", "flag", "a brake holds the load in the dwells (no torque there)", default=False),
+    Key("inertia", "inertia", "inertia of the load at the gearbox output", "J_L", unit="kg*cm**2", only=("rotary",)),
+    Key("friction_torque", "torque", "friction torque of the table, against the motion while it moves", "T_f", "0 N*m", "N*m", ("rotary",)),
+    Key("process_torque", "torque", "process torque, against the motion while it moves", "T_p", "0 N*m", "N*m", ("rotary",)),
+    Key("mass", "mass", "moved mass", "m", unit="kg", only=_LINEAR),
+    Key("friction_coefficient", "dimensionless", "friction coefficient of the guide", "mu", 0, only=_LINEAR),
+    Key("incline", "angle", "incline of the axis (90°: vertical, up is forwards)", "theta", "0 deg", "deg", _LINEAR),
+    Key("force", "force", "process force, against the motion while it moves", "F_p", "0 N", "N", _LINEAR),
+    Key("eta", "dimensionless", "efficiency of the mechanism, above 0 and at most 1", "eta", only=_LINEAR),
+    Key("lead", "length", "lead of the screw: travel per revolution", "p", unit="mm", only=("ball-screw",)),
+    Key("screw_inertia", "inertia", "own inertia of the screw", "J_M", "0 kg*m**2", "kg*cm**2", ("ball-screw",)),
+    Key("pitch_diameter", "length", "pitch diameter of the pinion", "d", unit="mm", only=("rack-pinion",)),
+    Key("pinion_inertia", "inertia", "own inertia of the pinion", "J_M", "0 kg*m**2", "kg*cm**2", ("rack-pinion",)),
+    Key("pulley_diameter", "length", "diameter of the pulley", "d", unit="mm", only=("belt",)),
+    Key("pulley_inertia", "inertia", "own inertia of the pulley", "J_M", "0 kg*m**2", "kg*cm**2", ("belt",)),
+), "the mechanism between the load and the gearbox output")
+MOVE = Declared("move", (
+    Key("distance", "distance", "distance of the move; negative: back", "phi_2"),
+    Key("time", "time", "time of the move", "t_m", unit="s"),
+    Key("accel_time", "time", "acceleration time (a trapezoid; accel + decel = time is a triangle)", "t_a", unit="s"),
+    Key("decel_time", "time", "deceleration time (default: accel_time)", "t_d", unit="s"),
+    Key("jerk_time", "time", "an S-curve: each ramp starts and ends with constant jerk this long, at most half a ramp", "t_j", unit="s"),
+    Key("dwell", "time", "a pause of this time, instead of a move (takes no other key)", unit="s"),
+), "the moves of the load in order, one table each; the cycle repeats after the last", array=True)
+RECORD = Declared("drive_record", (
+    Key("file", "file", "a drive's record: columns time [s], speed [rpm] and optionally torque [N*m] (else the mechanism's)"),
+), "a time series a drive recorded, instead of the moves")
+#: The tables of a case that give its motion; each is also a key at the case file's top level.
+TABLES = (MECHANISM, MOVE, RECORD)
+#: The ways to give the load cycle; a case gives exactly one.
+FORMS = ("profile", "move", "drive_record")
 RECORD_COLUMNS = (Column("time", "time", "time of the sample"), Column("speed", "speed", "output speed"))
 RECORD_TORQUE = Column("torque", "torque", "output torque")
 
 
-def keys_of(type_: str) -> tuple[str, ...]:
+def keys_of(type_: str) -> tuple[Key, ...]:
     """The keys a mechanism of one type takes."""
-    return COMMON_KEYS + (ROTARY_KEYS if type_ == "rotary" else LINEAR_KEYS + OWN_KEYS[type_])
+    return tuple(k for k in MECHANISM.keys if not k.only or type_ in k.only)
 
 
 @dataclass
@@ -77,11 +102,11 @@ class Motion:
         return Q_(float(np.abs(self.cycle.acceleration).max()), "rad/s**2")
 
 
-def nonnegative(table: Table, key: str, kind: str, default: str):
-    """:meth:`Table.quantity` with a default, which must not be below zero."""
-    q = table.quantity(key, kind, default=Q_(default))
+def nonnegative(table: Table, key: str):
+    """:meth:`Table.quantity` (one with a default), which must not be below zero."""
+    q = table.quantity(key)
     if q.magnitude < 0:
-        raise CalcError(f"{table.where(key)}: expected {kind_phrase(kind)} of zero or more, found {table.data[key]!r}")
+        raise CalcError(f"{table.where(key)}: expected {kind_phrase(table.kind(key))} of zero or more, found {table.data[key]!r}")
     return q
 
 
@@ -90,34 +115,32 @@ def read_mechanism(top: Table) -> Mechanism | None:
     raw = top.data.get("mechanism")
     if raw is None:
         return None
-    type_ = Table(top.path, "mechanism", raw, tuple(raw) if isinstance(raw, dict) else ()).text("type", required=True)
+    type_ = Table(top.path, MECHANISM.name, raw, tuple(raw) if isinstance(raw, dict) else ()).text("type", required=True)
     if type_ not in TYPES:
         raise CalcError(f"{top.path}: mechanism.type: expected one of {', '.join(TYPES)}, found {type_!r}")
     allowed = keys_of(type_)
+    names = key_names(allowed)
     for key in raw:
-        owner = next((t for t in TYPES if key in keys_of(t)), None)
-        if key not in allowed and owner is not None:
-            raise CalcError(f"{top.path}: mechanism.{key}: a key of a {owner} mechanism; a {type_} mechanism takes {', '.join(allowed)}")
-    t = Table(top.path, "mechanism", raw, allowed)
-    brake = t.data.get("holding_brake", False)
+        owner = next((t for t in TYPES if key in key_names(keys_of(t))), None)
+        if key not in names and owner is not None:
+            raise CalcError(f"{top.path}: mechanism.{key}: a key of a {owner} mechanism; a {type_} mechanism takes {', '.join(names)}")
+    t = Table(top.path, MECHANISM.name, raw, allowed)
+    brake = t.data.get("holding_brake", MECHANISM.key("holding_brake").default)
     if not isinstance(brake, bool):
         raise CalcError(f"{t.where('holding_brake')}: expected true or false, found {brake!r}")
     if type_ == "rotary":
         return Mechanism(
-            type_, holding_brake=brake, inertia=t.positive("inertia", "inertia", required=True),
-            friction_torque=nonnegative(t, "friction_torque", "torque", "0 N*m"),
-            process_torque=nonnegative(t, "process_torque", "torque", "0 N*m"),
+            type_, holding_brake=brake, inertia=t.positive("inertia", required=True),
+            friction_torque=nonnegative(t, "friction_torque"), process_torque=nonnegative(t, "process_torque"),
         )
-    eta = t.positive("eta", "dimensionless", required=True, what="an efficiency")
+    eta = t.positive("eta", required=True, what="an efficiency")
     if eta.m_as("") > 1:
         raise CalcError(f"{t.where('eta')}: expected an efficiency of at most 1, found {t.data['eta']!r}")
     radius_key, own_key = OWN_KEYS[type_]
-    size = t.positive(radius_key, "length", required=True)
+    size = t.positive(radius_key, required=True)
     return Mechanism(
-        type_, holding_brake=brake, mass=t.positive("mass", "mass", required=True),
-        friction_coefficient=nonnegative(t, "friction_coefficient", "dimensionless", "0"),
-        incline=t.quantity("incline", "angle", default=Q_(0, "deg")), force=t.quantity("force", "force", default=Q_(0, "N")),
-        eta=eta, own_inertia=nonnegative(t, own_key, "inertia", "0 kg*m**2"),
+        type_, holding_brake=brake, mass=t.positive("mass", required=True), friction_coefficient=nonnegative(t, "friction_coefficient"),
+        incline=t.quantity("incline"), force=t.quantity("force"), eta=eta, own_inertia=nonnegative(t, own_key),
         **({"lead": size} if type_ == "ball-screw" else {"diameter": size}),
     )
 
@@ -129,7 +152,7 @@ def read_move(t: Table, mechanism: Mechanism):
         other = next((k for k in t.data if k != "dwell"), None)
         if other is not None:
             raise CalcError(f"{t.where(other)}: a dwell takes only its time (dwell), found {other} beside it")
-        return Move(0.0, t.positive("dwell", "time").m_as("s")), None
+        return Move(0.0, t.positive("dwell").m_as("s")), None
     if not t.has("distance"):
         raise CalcError(f"{t.where('distance')}: expected a distance (a move) or a dwell, found neither")
     distance_kind = mechanism.distance_kind
@@ -139,16 +162,16 @@ def read_move(t: Table, mechanism: Mechanism):
         raise CalcError(f"{exc} (a {mechanism.type} mechanism moves its load by {kind_phrase(distance_kind)})") from None
     if distance.magnitude == 0:
         raise CalcError(f"{t.where('distance')}: expected a distance other than zero (a pause is a dwell), found {t.data['distance']!r}")
-    time = t.positive("time", "time", required=True).m_as("s")
-    accel = t.positive("accel_time", "time", required=True).m_as("s")
-    decel = t.positive("decel_time", "time")
+    time = t.positive("time", required=True).m_as("s")
+    accel = t.positive("accel_time", required=True).m_as("s")
+    decel = t.positive("decel_time")
     decel = accel if decel is None else decel.m_as("s")
     if accel + decel > time * (1 + 1e-12):
         raise CalcError(
             f"{t.where('accel_time')}: expected acceleration and deceleration times that fit in the move "
             f"(accel_time + decel_time <= time), found {accel:g} s + {decel:g} s > {time:g} s"
         )
-    jerk = t.positive("jerk_time", "time")
+    jerk = t.positive("jerk_time")
     jerk = 0.0 if jerk is None else jerk.m_as("s")
     if jerk > min(accel, decel) / 2 * (1 + 1e-12):
         raise CalcError(
@@ -175,7 +198,7 @@ def derive(top: Table) -> Motion | None:
     if mechanism is not None and isinstance(top.data.get("load"), dict) and "inertia" in top.data["load"]:
         raise CalcError(f"{top.path}: load.inertia: the mechanism gives the load's inertia J_L; leave load.inertia out")
     motion = read_moves(top, mechanism) if forms == ["move"] else read_record(top, mechanism)
-    motion.tables = {name: top.data[name] for name in TABLES if name in top.data}
+    motion.tables = {name: top.data[name] for name in key_names(TABLES) if name in top.data}
     return motion
 
 
@@ -191,7 +214,7 @@ def read_moves(top: Table, mechanism: Mechanism | None) -> Motion:
     where = f"{top.path}: move"
     if mechanism is None:
         raise CalcError(f"{where}: moves need the mechanism that carries the load ([mechanism] with its type), found none")
-    read_rows = [read_move(t, mechanism) for t in top.tables("move", MOVE_KEYS)]
+    read_rows = [read_move(t, mechanism) for t in top.tables(MOVE.name, MOVE.keys)]
     if not read_rows:
         raise CalcError(f"{where}: expected one [[move]] table per move, found none")
     moves = [m for m, _ in read_rows]
@@ -202,7 +225,7 @@ def read_moves(top: Table, mechanism: Mechanism | None) -> Motion:
 
 
 def read_record(top: Table, mechanism: Mechanism | None) -> Motion:
-    t = top.table("drive_record", RECORD_KEYS)
+    t = top.table(RECORD.name, RECORD.keys)
     path = measurement_path(t.data.get("file"), top.path.parent, t.where("file"))
     m = read_measurement(path, RECORD_COLUMNS, optional=(RECORD_TORQUE,))
     time, speed = m["time"].m_as("s"), m["speed"].m_as("rad/s")

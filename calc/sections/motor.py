@@ -18,6 +18,7 @@ from . import coupling, duty, gearbox
 from .common import Verdict, check_json, check_line, quantity, quantity_text
 
 NAME = "motor"
+ORDER = 60
 
 TYPED = (
     "the load cycle is typed ([[profile]]): its accelerations are not known, so the rotor term "

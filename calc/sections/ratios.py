@@ -16,6 +16,10 @@ from .common import Verdict, check_json, number, quantity
 from .motor import TYPED, output_load, rotor_inertia
 
 
+#: Not evaluated with the case (its own command, :func:`search`); its place in the report.
+ORDER = 70
+
+
 @dataclass
 class RatioResult:
     """The ratio search of a case, as the ``ratios`` command writes it."""
