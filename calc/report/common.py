@@ -117,7 +117,8 @@ def requirement_table(checks: list, caption: str) -> str:
     """Checks of a value reached against a limit the case requires (``value <= required``)."""
     rows = [[prose(k["criterion"]), q(k["value"]), q(k["required"]), util(k["utilization"]), verdict_mark(k["passes"], k.get("not_made"))]
             for k in checks]
-    return table(r"@{}l r r r l@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
+    # The verdict is a paragraph: a check not made gives its reason, which may be long.
+    return table(r"@{}p{0.2\linewidth} r r r p{0.3\linewidth}@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
                  caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")
 
 

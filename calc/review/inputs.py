@@ -159,7 +159,7 @@ def motion_specs(case: Case) -> list[InputSpec]:
     where = f"{case.path}: mechanism"
     inch_pound = any(is_inch_pound(_unit_of(v)) for k, v in mechanism.items() if k in MECHANISM)
     specs = []
-    for name in motion_section.keys_of(mechanism["type"]):
+    for name in (key.name for key in motion_section.keys_of(mechanism["type"])):
         if name not in MECHANISM:
             continue
         label, kind, units, reach, positive = MECHANISM[name]
