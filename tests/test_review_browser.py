@@ -10,7 +10,6 @@ On the derived example, a move's time and the mechanism's inertia are changed, a
 shows its input error, and the calc report linked beside the verdict answers as a PDF.
 """
 
-import shutil
 import subprocess
 
 import pytest
