@@ -68,17 +68,13 @@ def case_key(key: str) -> str:
     return rf"\texttt{{\footnotesize {breakable(key)}}}"
 
 
-#: Symbols named by a Greek letter alone (the coupling's temperature ϑ has no formula of its own).
-GREEK = ("alpha", "beta", "gamma", "delta", "eta", "theta", "vartheta", "lambda", "mu", "tau", "phi", "varphi", "omega")
-
-
 def symbol_latex(name: str) -> str:
     """A symbol's LaTeX by its name in code: the formulas' own where a formula has it, else the
     name set as math (``T_1N`` as T with the subscript 1N, ``vartheta`` as ϑ); empty for none."""
     own = next((s for f in REGISTRY for s in (f.result, *f.inputs) if s.name == name), None)
     if not name or own is not None:
         return own.latex if own is not None else ""
-    return "\\" + name if name in GREEK else symbols.latex(name).strip("$")
+    return symbols.symbol_latex(name)
 
 
 def input_row(path: str, value, derived: bool = False) -> list[str]:

@@ -49,7 +49,7 @@ def steps(report) -> list[str]:
     out += [step_block(title, step) for title, step in cc.steps]  # as the section computed them
     if sel.not_made:
         # The case lacks what M_N and f_e need (the contract's partial cases): no step to show.
-        return out + [latex_escape(f"Not checked: {c.text}, {c.not_made}.") + "\n" for c in sel.not_made]
+        return out + [prose(f"Not checked: {c.text}, {c.not_made}.") + "\n" for c in sel.not_made]
     m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
     out.append(step_block("Nominal torque of the coupling", m_n, "compared with T_KN"))
     if sel.row_type(row) == "elastomer":

@@ -37,7 +37,7 @@ def latex_escape(text) -> str:
 
 
 #: Greek letters written out in code, as LaTeX and as text.
-GREEK = {"phi": (r"\varphi", "φ"), "eta": (r"\eta", "η"), "lambda": (r"\lambda", "λ")}
+GREEK = {"phi": (r"\varphi", "φ"), "eta": (r"\eta", "η"), "lambda": (r"\lambda", "λ"), "vartheta": (r"\vartheta", "ϑ")}
 _GREEK_NAMES = "|".join(GREEK)
 # A case key, ``motor.peak_torque`` or ``coupling.shaft_1``, or a name in the package (code, set as code).
 _TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])  # and the package's own names, calc.gearbox.x
@@ -102,10 +102,24 @@ def latex(text: str) -> str:
         elif kind == "code":
             out.append(rf"\texttt{{{latex_escape(rest[0])}}}")
         else:
-            base, sub = rest
-            letter = GREEK[base][0] if base in GREEK else base
-            out.append(f"${letter}_{{{_latex_subscript(sub)}}}$" if sub else f"${letter}$")
+            out.append(f"${_symbol_latex(*rest)}$")
     return "".join(out)
+
+
+def _symbol_latex(base: str, sub: str) -> str:
+    letter = GREEK[base][0] if base in GREEK else base
+    return f"{letter}_{{{_latex_subscript(sub)}}}" if sub else letter
+
+
+def symbol_latex(name: str) -> str:
+    r"""A symbol by its name in code (``T_1N``, ``d_hub,max``, ``vartheta``) as LaTeX math, without
+    the dollars.
+
+    >>> print(symbol_latex("T_1N"), symbol_latex("vartheta"), symbol_latex("phi_B"))
+    T_{\mathrm{1N}} \vartheta \varphi_{\mathrm{B}}
+    """
+    base, _, sub = name.partition("_")
+    return _symbol_latex(base, sub)
 
 
 def html(text: str) -> str:

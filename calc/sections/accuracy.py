@@ -365,6 +365,12 @@ def accuracy_of(case: Case) -> tuple:
     return once(case, "accuracy", compute)
 
 
+def relation(spec: AccuracyCase, name: str) -> str:
+    """How a value relates to what the chain reaches: ``>=`` for a positioning accuracy that
+    is a lower bound (a term of it unknown for the chosen parts), else ``=``."""
+    return ">=" if name == "positioning_accuracy" and spec.unknown else "="
+
+
 def not_known(spec: AccuracyCase, name: str) -> str | None:
     """Why the check of ``name`` cannot be made, or None: a followed selection chooses no part
     (the chain is of a part that stands in), or the positioning accuracy is a lower bound (a term
@@ -522,7 +528,7 @@ class AccuracyResult:
         lines += [
             f"  C_total = {quantity_text(s['C_total'])}{' (secant |T| / φ at the applied torque: a member gives a stiffness curve)' if s['C_total_is_secant'] else ''}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
             f"  Lost motion = j_t + |T| / C = {quantity_text(s['lost_motion'])} (E12)",
-            f"  Positioning accuracy ({s['positioning_rule']}{t_n}) {'>=' if s['unknown'] else '='} {quantity_text(s['positioning_accuracy'])} (E13)"
+            f"  Positioning accuracy ({s['positioning_rule']}{t_n}) {relation(self.inputs, 'positioning_accuracy')} {quantity_text(s['positioning_accuracy'])} (E13)"
             + (f"; a lower bound: unknown {'; '.join(s['unknown'])}" if s["unknown"] else ""),
             f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {quantity_text(s['repeatability'])} "
             f"({'bounded by the lost motion under torque' if s['repeatability_is_bound'] else 'the backlash at T = 0'}, E13)",
@@ -550,8 +556,7 @@ class AccuracyResult:
             )
         for k in s.get("checks", []):
             if k["passes"] is None:
-                bound = ">=" if k["name"] == "positioning_accuracy" and s["unknown"] else "="
-                lines.append(f"  {k['name']:<22} {bound} {quantity_text(k['value'])} required <= {quantity_text(k['required'])}  not made: {k['not_made']}")
+                lines.append(f"  {k['name']:<22} {relation(self.inputs, k['name'])} {quantity_text(k['value'])} required <= {quantity_text(k['required'])}  not made: {k['not_made']}")
                 continue
             lines.append(
                 f"  {k['name']:<22} {quantity_text(k['value']):>12} required <= {quantity_text(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
@@ -571,7 +576,7 @@ class AccuracyResult:
             f"{sig(100 * (k.utilization - 1), 3)} % over"
             for k in failing
         ] + [
-            f"The accuracy requirement is not decided: {k.name} {'>=' if k.name == 'positioning_accuracy' and self.inputs.unknown else '='} "
+            f"The accuracy requirement is not decided: {k.name} {relation(self.inputs, k.name)} "
             f"{fmt(k.required, k.unit)}, {not_known(self.inputs, k.name)}"
             for k in open_
         ]
