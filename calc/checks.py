@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .units import fmt, magnitude_in, sig
+from .units import Value, fmt, magnitude_in, sig
 
 #: A value within this relative distance of a boundary (of E3, of E4, or a utilization of 1) counts
 #: as on it: sums and unit conversions carry rounding (0.6 s + 0.7 s + 0.2 s = 1.4999999999999998 s,
@@ -52,6 +52,16 @@ class Check:
     governs: bool = True
     mode: str | None = None
     not_made: str | None = None
+
+    @property
+    def required_value(self) -> Value | None:
+        """The required value as outputs print it; None where the check is not made."""
+        return None if self.required is None else Value.of(self.required, self.unit, self.name)
+
+    @property
+    def rated_value(self) -> Value:
+        """The rated value as outputs print it (no value where the catalog gives none)."""
+        return Value.of(self.rated, self.unit, self.name)
 
     def reason(self) -> str:
         """Why the check does not pass: its excess, or what it needs."""

@@ -33,9 +33,11 @@ from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, 
 from .errors import CalcError
 from .fits import Bore, parse_bore
 from .formula import Formula, Symbol
-from .checks import CheckArray, rank, selected_part, within_rating
+from . import selection
+from .checks import CheckArray, rank, within_rating
 from .torsion import Chain, Member, lumped
-from .units import Q_, as_kind, fmt, sig
+from .selection import Selection
+from .units import Q_, Value, as_kind, fmt, sig
 
 TYPES = ("bellows", "elastomer", "safety", "line-shaft")
 
@@ -349,8 +351,21 @@ class DriveTrain:
         return not self.missing
 
 
+@dataclass(kw_only=True)
+class CouplingCandidate(selection.Candidate):
+    """One coupling with its checks and key figures, as every output lists it."""
+
+    type: str
+    f_e: Value  # the two-mass natural frequency (no value where the catalog lacks C_T or J)
+    f_1: Value | None  # the drive train's first mode; None without the drive train
+    C_T: Value
+    temperature_factor: float
+    required_torque: Value  # M_N · K_ϑ
+    peak_torque_required: Value | None  # M_Smax; None without the start factor
+
+
 @dataclass
-class CouplingSelection:
+class CouplingSelection(Selection):
     """The candidate couplings, checked and ranked. Arrays run over the rows of ``catalog``."""
 
     catalog: Catalog
@@ -373,23 +388,21 @@ class CouplingSelection:
     chain: Chain | None = None  # the drive train lumped, its arrays over the rows (None without drive_train)
     modes: object = None  # its natural frequencies per row, lowest first (quantity, rows × modes)
 
-    @property
-    def not_made(self) -> list:
-        """The checks the case gives too little for (no acceleration torque): none can be decided."""
-        return [c for c in self.checks if not c.made]
+    candidate_type = CouplingCandidate
 
-    @property
-    def selected(self) -> str | None:
-        """Part of the best passing candidate, or None (also when a check could not be made)."""
-        return None if self.not_made else selected_part(self.catalog.parts, self.passes, self.order)
+    def applies(self, check, row: int) -> bool:
+        return check.applies_to(row)
 
-    def decided(self, row: int) -> bool | None:
-        """Whether a row passes: None where every check made passes but one could not be made."""
-        passes = bool(self.passes[row])
-        return None if passes and self.not_made else passes
-
-    def reasons(self, row: int) -> list[str]:
-        return [c.reason(row) for c in self.checks if c.applies_to(row) and (not c.made or not c.passes[row])]
+    def row_fields(self, row: int) -> dict:
+        return dict(
+            type=self.row_type(row),
+            f_e=Value.of(self.f_e[row], "Hz"),
+            f_1=None if self.modes is None else Value.of(self.modes[row, 0], "Hz"),
+            C_T=Value.of(self.C_T[row], "N*m/rad"),
+            temperature_factor=float(self.temperature_factor[row]),
+            required_torque=Value.of(self.M_Nt[row], "N*m"),
+            peak_torque_required=None if self.M_Smax is None else Value.of(self.M_Smax[row], "N*m"),
+        )
 
     def row_type(self, row: int) -> str:
         return str(self.catalog.text["type"][row])

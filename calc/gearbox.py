@@ -31,9 +31,11 @@ from .bands import factor_table
 from .catalog import Catalog, Column, Rule, Schema, some_parts, no_less
 from .errors import CalcError
 from .formula import Formula, Symbol
-from .checks import CheckArray, rank, selected_part
+from . import selection
+from .checks import CheckArray, rank
 from .profile import Profile, T_2m, Z_h, duty, n_2m
-from .units import Q_, as_kind, magnitude_in, pretty_unit
+from .selection import Selection
+from .units import Q_, Value, as_kind, magnitude_in, pretty_unit
 
 #: The columns of a gearbox's stiffness curve, all five or none in a row (calc.stiffness.StiffnessCurve).
 CURVE_COLUMNS = ("T_L1", "T_L2", "K_1", "K_2", "K_3")
@@ -280,30 +282,20 @@ def shock_factor(cycles_per_hour, table=SHOCK_FACTORS):
     return table.lookup(cycles_per_hour, "cycles_per_hour")
 
 
-@dataclass
-class Candidate:
-    """One gearbox with its checks (:class:`calc.checks.Check`), as listed in results and notebooks."""
+@dataclass(kw_only=True)
+class Candidate(selection.Candidate):
+    """One gearbox with its checks, as every output lists it."""
 
-    part: str
     ratio: float
-    passes: bool | None  # None: every governing check made passes, but one could not be made
-    checks: list
-    T_2max: object
-    inertia_ratio: float | None
-    reasons: list
-    illustrative: bool
-    catalog: str = ""  # the file of the row
-    family: str = ""
-    size: str = ""
-    source: str = ""
-    unclear: str = ""  # the row's doubtful figures, as its catalog says
-    J_1: object = None  # for the clamping hub of J_1_hub (NaN where unknown)
-    J_1_hub: object = None
+    T_2max: Value | None = None  # None without the motor's peak torque
+    inertia_ratio: float | None = None
+    J_1: Value | None = None  # for the clamping hub of J_1_hub (no value where unknown)
+    J_1_hub: Value | None = None
     best_of_family: bool = False  # the best-ranked passing candidate of its family
 
 
 @dataclass
-class GearboxSelection:
+class GearboxSelection(Selection):
     """The catalog rows at the desired ratio, checked and ranked.
 
     Arrays are over the rows of ``catalog`` in catalog order; ``order`` ranks them best first.
@@ -321,13 +313,11 @@ class GearboxSelection:
     J_1_hub: object = None  # quantity array: the hub bore J_1 is for (NaN where unknown)
     notes: list = None
 
+    candidate_type = Candidate
+
     def governs(self, check: CheckArray) -> bool:
         """Whether a check decides the verdict (:func:`governs`)."""
         return governs(check, self.mode)
-
-    @property
-    def governing(self) -> list:
-        return [c for c in self.checks if self.governs(c)]
 
     @functools.cached_property
     def best_of_family(self) -> np.ndarray:
@@ -340,57 +330,17 @@ class GearboxSelection:
         out[list(first.values())] = True
         return out
 
-    @property
-    def not_made(self) -> list:
-        """The governing checks that could not be made (an input is missing)."""
-        return [c for c in self.governing if not c.made]
-
-    @property
-    def selected(self) -> str | None:
-        """Part number of the best passing candidate, or None (also when a governing check
-        could not be made)."""
-        return None if self.not_made else selected_part(self.catalog.parts, self.passes, self.order)
-
-    def reasons(self, row: int) -> list[str]:
-        """Why a row does not pass: each failing governing check with its excess, and each
-        governing check that could not be made."""
-        return [c.reason(row) for c in self.governing if not c.passes[row]]
-
-    @property
-    def _texts(self):
-        cat = self.catalog
-        return cat.family, cat.text_or_blank("size"), cat.text_or_blank("source"), cat.text_or_blank("unclear")
-
-    def candidate(self, row: int, texts=None, best=None) -> Candidate:
-        """One row as a :class:`Candidate` (``texts`` and ``best``: the family, size, source and
-        doubt texts and :attr:`best_of_family`, when already at hand)."""
-        family, size, source, unclear = texts or self._texts
-        best = self.best_of_family if best is None else best
+    def row_fields(self, row: int) -> dict:
         lam = None if self.inertia_ratio is None else float(self.inertia_ratio[row])
-        passes = bool(self.passes[row])
-        return Candidate(
-            part=str(self.catalog.parts[row]),
+        part = str(self.catalog.parts[row])
+        return dict(
             ratio=float(self.catalog["ratio"][row].m_as("")),
-            passes=None if passes and self.not_made else passes,
-            checks=[c.at(row, governs=self.governs(c)) for c in self.checks],
-            T_2max=None if self.T_2max is None else self.T_2max[row],
+            T_2max=None if self.T_2max is None else Value.of(self.T_2max[row], "N*m", f"gearbox {part}: T2max"),
             inertia_ratio=None if lam is None or np.isnan(lam) else lam,
-            reasons=self.reasons(row),
-            illustrative=bool(self.catalog.illustrative[row]),
-            catalog=self.catalog.catalog_of(row),
-            family=str(family[row]),
-            size=str(size[row]),
-            source=str(source[row]),
-            unclear=str(unclear[row]),
-            J_1=self.J_1[row],
-            J_1_hub=self.J_1_hub[row],
-            best_of_family=bool(best[row]),
+            J_1=Value.of(self.J_1[row], "kg*cm**2", f"gearbox {part}: J_1"),
+            J_1_hub=Value.of(self.J_1_hub[row], "mm", f"gearbox {part}: J_1_hub"),
+            best_of_family=bool(self.best_of_family[row]),
         )
-
-    def candidates(self, limit: int | None = None) -> list[Candidate]:
-        """The rows as :class:`Candidate` objects, best first; the first ``limit`` (all for None)."""
-        texts, best = self._texts, self.best_of_family
-        return [self.candidate(row, texts, best) for row in (self.order if limit is None else self.order[:limit])]
 
 
 def governs(check: CheckArray, mode: str) -> bool:

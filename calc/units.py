@@ -304,3 +304,35 @@ def latex_unit(unit: str) -> str:
     body = unit.replace("percent", r"\%").replace("degC", r"^{\circ}C")
     body = re.sub(r"\*\*(-?\d+)", r"^{\1}", body).replace("*", r"\,")
     return r"\mathrm{" + body + "}"
+
+
+def number(x, key: str = "result") -> float | None:
+    """A result as a plain float; NaN (no value) becomes None, infinity is an error naming the
+    result (no output holds one)."""
+    x = float(x)
+    if math.isnan(x):
+        return None
+    if math.isinf(x):
+        raise CalcError(f"{key}: the calculation overflows (found {x}); check the inputs it comes from for values out of scale")
+    return x
+
+
+@dataclass(frozen=True)
+class Value:
+    """A scalar result as every output prints it: its magnitude in the unit it is shown in, None
+    where there is no value. The results hold these; the JSON writes ``{"value", "unit"}``."""
+
+    value: float | None
+    unit: str
+
+    @classmethod
+    def of(cls, q, unit_text: str, key: str = "result") -> "Value":
+        """A scalar quantity in ``unit_text`` (NaN: no value; infinity: an error naming ``key``)."""
+        return cls(number(magnitude_in(q, unit_text), key), unit_text)
+
+    def to_json(self) -> dict:
+        return {"value": self.value, "unit": self.unit}
+
+    def __str__(self) -> str:
+        """As a reader writes it: ``151.3 N·m``; n/a for no value."""
+        return "n/a" if self.value is None else f"{sig(self.value)} {pretty_unit(self.unit)}".rstrip()

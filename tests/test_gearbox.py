@@ -10,6 +10,7 @@ from calc.catalog import load_catalog
 from calc.checks import rank
 from calc.gearbox import SCHEMA, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
 from calc.profile import Profile
+from calc.units import Value
 
 from .conftest import GEARBOXES
 from .test_profile import example_profile
@@ -65,7 +66,7 @@ def test_example_s5_selection_by_hand(catalog):
     assert n1n.passes is False and n1n.governs is False and by_part["NPT045-10"].passes
     # E6: λ = (J_1 + J_L/i²)/J_motor = (0.93 + 1500/100)/4.2 = 3.7929, J_1 of the 19 mm hub.
     assert by_part["NPT035-10"].inertia_ratio == pytest.approx((0.93 + 15) / 4.2)
-    assert by_part["NPT035-10"].J_1_hub.m_as("mm") == 19
+    assert by_part["NPT035-10"].J_1_hub == Value(19.0, "mm") and by_part["NPT035-10"].J_1 == Value(0.93, "kg*cm**2")
     # A row without J_1 has no ratio rather than a wrong one.
     no_j1 = rows.rows([rows.index("NPT035-10", "part")])
     no_j1.values = dict(no_j1.values, J_1=Q_([np.nan], "kg*cm**2"))

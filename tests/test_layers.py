@@ -10,7 +10,7 @@ import pytest
 CALC = Path(__file__).resolve().parent.parent / "calc"
 
 LAYERS = {
-    "machinery": ("errors", "units", "formula", "formula_numeric", "codegen", "checks", "bands", "catalog", "measurement", "cycle"),
+    "machinery": ("errors", "units", "formula", "formula_numeric", "codegen", "checks", "selection", "bands", "catalog", "measurement", "cycle"),
     "domain": ("profile", "motion", "mechanism", "gearbox", "coupling", "fits", "stiffness", "torsion", "hysteresis", "accuracy", "transmission", "motor", "ratios"),
     "figures": ("plots", "coupling_plots", "accuracy_plots", "motion_plots", "motor_plots", "glossary", "schematic"),
     "case": ("case", "sections"),

@@ -11,12 +11,10 @@ result type, and that type's ``to_json(candidates)``, ``summary_lines(candidates
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 from ..checks import Check
-from ..errors import CalcError
-from ..units import magnitude_in, pretty_unit, sig
+from ..units import Value, number, pretty_unit, sig
 
 #: Candidates listed by default in the JSON and the text summary; ``--all-candidates`` lists all.
 SHOWN_CANDIDATES = 20
@@ -27,17 +25,12 @@ REASONED_CANDIDATES = 3
 def quantity(q, unit: str, key: str = "result") -> dict:
     """A scalar quantity as the contract writes it: ``{"value": 21.3, "unit": "N*m"}``; NaN (no
     value) becomes null. An infinite value is an error naming the result: JSON never holds one."""
-    return {"value": number(magnitude_in(q, unit), key), "unit": unit}
+    return Value.of(q, unit, key).to_json()
 
 
-def number(x, key: str = "result"):
-    """A float for JSON; NaN (no value) becomes null, infinity is an error."""
-    x = float(x)
-    if math.isnan(x):
-        return None
-    if math.isinf(x):
-        raise CalcError(f"{key}: the calculation overflows (found {x}); check the inputs it comes from for values out of scale")
-    return x
+def json_of(value: Value | None) -> dict | None:
+    """A result's :class:`calc.units.Value` as the contract writes it; None stays null."""
+    return None if value is None else value.to_json()
 
 
 def quantity_text(d: dict | None) -> str:
@@ -52,8 +45,8 @@ def check_json(check: Check) -> dict:
         "mode": check.mode,
         "governs": check.governs,
         "criterion": check.criterion,
-        "required": None if check.required is None else quantity(check.required, check.unit, check.name),
-        "rated": quantity(check.rated, check.unit, check.name),
+        "required": json_of(check.required_value),
+        "rated": check.rated_value.to_json(),
         "utilization": None if check.utilization is None else number(check.utilization, check.name),
         "passes": check.passes,
     }
@@ -69,9 +62,8 @@ def check_line(check: Check, width: int = 22) -> str:
     util = "n/a" if check.utilization is None else f"{check.utilization:.2f}"
     verdict = f"not checked: {check.not_made or 'no rating'}" if check.passes is None else ("ok" if check.passes else "FAIL")
     mark = "" if check.governs else "  (for information)"
-    required = "n/a" if check.required is None else f"{sig(magnitude_in(check.required, check.unit))} {pretty_unit(check.unit)}"
-    rated_value = magnitude_in(check.rated, check.unit)
-    rated = "n/a" if math.isnan(rated_value) else f"{sig(rated_value)} {pretty_unit(check.unit)}"
+    required = "n/a" if check.required is None else str(check.required_value)
+    rated = str(check.rated_value)
     return f"{check.criterion:<{width}} required {required:>12}  rated {rated:>12}  utilization {util:>5}  {verdict}{mark}"
 
 
@@ -79,6 +71,18 @@ def no_candidate_passes(sentence: str, parts, order, reasons) -> list[str]:
     """The reasons of a verdict where no candidate passes: ``sentence``, then why the best
     :data:`REASONED_CANDIDATES` fail (``reasons(row)``: a list of texts)."""
     return [sentence] + [f"{parts[row]}: {'; '.join(reasons(row))}" for row in order[:REASONED_CANDIDATES]]
+
+
+def selection_verdict(sel, what: str, fails: str) -> Verdict:
+    """The verdict of a selection (:class:`calc.selection.Selection`): it passes where a part is
+    chosen; it is not decided where the best row passes every check made but a governing check
+    cannot be made (saying which); else no ``what`` passes ``fails``, and why the closest fail."""
+    if sel.selected is not None:
+        return Verdict(True)
+    best = sel.order[0]
+    if sel.passes[best] and sel.not_made:
+        return Verdict(None, [f"No {what} can be chosen: {c.reason(best)}" for c in sel.not_made])
+    return Verdict(False, no_candidate_passes(f"No {what} passes {fails}:", sel.catalog.parts, sel.order, sel.reasons))
 
 
 def shown(order, candidates: int | None):

@@ -4,6 +4,7 @@ the ordering text of the one chosen."""
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -20,9 +21,9 @@ from ..fits import parse_bore
 from ..gearbox import n_1
 from ..profile import Z_h
 from ..torsion import Member, gearbox_at_input, inertia_at_output, load_at_input
-from ..units import fmt, sig
+from ..units import Value, fmt, sig
 from . import gearbox
-from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity, quantity_text, shown
+from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, json_of, selection_verdict
 
 NAME = "coupling"
 ORDER = 50
@@ -233,147 +234,232 @@ def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:
     return once(case, "coupling", compute)
 
 
+@dataclass(frozen=True)
+class Torsion:
+    """The drive train's torsional modes (:mod:`calc.torsion`) with the best-ranked coupling: its
+    masses and springs referred to ``shaft``, drive to load, the natural frequencies lowest first
+    without the rigid-body mode, and the check of the first against 2 f_er."""
+
+    part: str
+    shaft: str
+    complete: bool
+    missing: list
+    masses: list  # (members, J: Value)
+    springs: list  # (member, C: Value), one fewer than the masses
+    natural_frequencies: list  # Value
+    checks: list  # calc.checks.Check
+
+    def to_json(self) -> dict:
+        return {
+            "part": self.part,
+            "shaft": self.shaft,
+            "complete": self.complete,
+            "missing": list(self.missing),
+            "masses": [{"members": name, "J": J.to_json()} for name, J in self.masses],
+            "springs": [{"member": name, "C": C.to_json()} for name, C in self.springs],
+            "natural_frequencies": [f.to_json() for f in self.natural_frequencies],
+            "checks": [check_json(c) for c in self.checks],
+        }
+
+    def lines(self) -> list[str]:
+        """The chain and its modes as lines of the text summary."""
+        chain = " | ".join([f"{name} {J}" for name, J in self.masses[:1]]
+                           + [f"{spring} {C} | {name} {J}" for (spring, C), (name, J) in zip(self.springs, self.masses[1:])])
+        return [
+            f"Drive train with {self.part}, at {self.shaft}{'' if self.complete else ' (incomplete)'}: {chain}",
+            f"  natural frequencies {', '.join(map(str, self.natural_frequencies))} (rigid-body mode left out)",
+            *[f"  {check_line(c, 20)}" for c in self.checks],
+        ]
+
+
+@dataclass(frozen=True)
+class BoreResult:
+    """A shaft of the coupling as written and as its fit gives it (ISO 286)."""
+
+    key: str
+    text: str
+    nominal: Value
+    tolerance: str | None
+    limits: str
+    lower: Value | None
+    upper: Value | None
+    keyway: Value | None
+
+    def to_json(self) -> dict:
+        return {"key": self.key, "text": self.text, "nominal": self.nominal.to_json(), "tolerance": self.tolerance, "limits": self.limits,
+                "lower": json_of(self.lower), "upper": json_of(self.upper), "keyway": json_of(self.keyway)}
+
+
 @dataclass
 class CouplingResult:
-    """The coupling section as read, its candidates checked and ranked, and the part chosen."""
+    """The coupling section as read, its candidates checked and ranked, and the part chosen; the
+    figures every output prints are computed once here."""
 
     inputs: CouplingCase
     selection: CouplingSelection
 
-    def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
-        """The ``coupling`` results of the JSON contract."""
-        cc, sel = self.inputs, self.selection
-        types = cc.catalog.text["type"]
-        notes = [f"taken from the case: {text}" for text in cc.derived] + list(sel.notes)
-        for k, bore in enumerate(cc.bores, start=1):
-            if bore.tolerance is None:
-                notes.append(f"coupling.shaft_{k} gives no tolerance; state one when ordering (the source asks for shaft sizes and tolerances)")
-        listed = []
-        family, size, source, unclear = (cc.catalog.family, cc.catalog.text_or_blank("size"), cc.catalog.text_or_blank("source"),
-                                         cc.catalog.text_or_blank("unclear"))
-        for row in shown(sel.order, candidates):
-            listed.append(
-                {
-                    "part": str(cc.catalog.parts[row]),
-                    "type": str(types[row]),
-                    "illustrative": bool(cc.catalog.illustrative[row]),
-                    "passes": sel.decided(row),
-                    "f_e": quantity(sel.f_e[row], "Hz"),
-                    "f_1": None if sel.modes is None else quantity(sel.modes[row, 0], "Hz"),
-                    "C_T": quantity(sel.C_T[row], "N*m/rad"),
-                    "temperature_factor": float(sel.temperature_factor[row]),
-                    "required_torque": quantity(sel.M_Nt[row], "N*m"),
-                    "peak_torque_required": None if sel.M_Smax is None else quantity(sel.M_Smax[row], "N*m"),
-                    "checks": [check_json(c.at(row)) for c in sel.checks if c.applies_to(row)],
-                    "reasons": sel.reasons(row),
-                    "catalog": cc.catalog.catalog_of(row),
-                    "family": str(family[row]),
-                    "size": str(size[row]),
-                    "source": str(source[row]),
-                    "unclear": str(unclear[row]) or None,
-                }
-            )
-        selected = sel.selected
-        order = None
-        if selected is not None:
-            row = sel.order[0]
-            t = str(types[row])
-            order = "; ".join(
-                order_lines(
-                    selected, t, cc.bores,
-                    cc.inputs["disengagement_torque"] if t == "safety" else None,
-                    cc.inputs["shaft_distance"] if t == "line-shaft" else None,
-                )
-            )
-        temperature = cc.inputs["temperature"]
-        return {
-            "catalog": cc.catalog.shown_name,
-            "catalog_sha256": cc.catalog.sha256,
-            "catalogs": [{"catalog": display_path(path), "sha256": sha} for path, sha in cc.catalog.members],
-            "type": cc.type,
-            "M_N": quantity(sel.M_N, "N*m"),
-            "service_factor": float(cc.inputs["service_factor"].m_as("")),
-            "T_op": quantity(sel.T_op, "N*m"),
-            "temperature": None if temperature is None else quantity(temperature, "degC"),
-            "temperature_factor": float(sel.temperature_factor[types == "elastomer"][0]) if (types == "elastomer").any() else 1.0,
-            "temperature_factors": cc.inputs["temperature_factors"].source,
-            "start_factors": None if "start_factors" not in cc.inputs else cc.inputs["start_factors"].source,
-            "starts_per_hour": None if cc.inputs["starts_per_hour"] is None else quantity(cc.inputs["starts_per_hour"], "1/hour"),
-            "start_factor": sel.start_factor,
-            "f_e_min": quantity(f_e_min(f_er=cc.inputs["excitation_frequency"]), "Hz"),
-            "bores": [
-                {
-                    "key": f"shaft_{k}",
-                    "text": bore.text,
-                    "nominal": quantity(bore.nominal, "mm"),
-                    "tolerance": bore.tolerance,
-                    "limits": bore.limits_text(),
-                    "lower": None if bore.lower is None else quantity(bore.lower, "mm"),
-                    "upper": None if bore.upper is None else quantity(bore.upper, "mm"),
-                    "keyway": None if bore.keyway is None else quantity(bore.keyway, "mm"),
-                }
-                for k, bore in enumerate(cc.bores, start=1)
-            ],
-            "ranking": "passing first; published rows before illustrative ones; then smallest rated torque T_KN; then lowest worst utilization",
-            "candidate_count": len(sel.order),
-            "candidates": listed,
-            "selected": selected,
-            "order": order,
-            "torsion": self.torsion_json(),
-            "notes": notes,
-        }
+    @functools.cached_property
+    def notes(self) -> list[str]:
+        """What the case left to the package, and what it does not give."""
+        cc = self.inputs
+        out = [f"taken from the case: {text}" for text in cc.derived] + list(self.selection.notes)
+        return out + [f"coupling.shaft_{k} gives no tolerance; state one when ordering (the source asks for shaft sizes and tolerances)"
+                      for k, bore in enumerate(cc.bores, start=1) if bore.tolerance is None]
 
-    def torsion_json(self) -> dict | None:
-        """The drive train's torsional modes (:mod:`calc.torsion`) with the chosen coupling (the
-        best-ranked where none passes): its masses and springs, referred to the coupling's shaft,
-        the natural frequencies lowest first without the rigid-body mode, and the check of the
-        first against 2 f_er."""
+    @functools.cached_property
+    def order(self) -> str | None:
+        """The order line of the chosen coupling; None where none is chosen."""
+        cc, sel = self.inputs, self.selection
+        if sel.selected is None:
+            return None
+        t = sel.row_type(int(sel.order[0]))
+        return "; ".join(order_lines(sel.selected, t, cc.bores, cc.inputs["disengagement_torque"] if t == "safety" else None,
+                                     cc.inputs["shaft_distance"] if t == "line-shaft" else None))
+
+    @property
+    def M_N(self) -> Value:
+        return Value.of(self.selection.M_N, "N*m")
+
+    @property
+    def T_op(self) -> Value:
+        return Value.of(self.selection.T_op, "N*m")
+
+    @property
+    def service_factor(self) -> float:
+        return float(self.inputs.inputs["service_factor"].m_as(""))
+
+    @property
+    def temperature(self) -> Value | None:
+        t = self.inputs.inputs["temperature"]
+        return None if t is None else Value.of(t, "degC")
+
+    @property
+    def temperature_factor(self) -> float:
+        """K_ϑ of the elastomer couplings (1 where there are none)."""
+        sel = self.selection
+        elastomer = sel.catalog.text["type"] == "elastomer"
+        return float(sel.temperature_factor[elastomer][0]) if elastomer.any() else 1.0
+
+    @property
+    def temperature_factors(self) -> str:
+        return self.inputs.inputs["temperature_factors"].source
+
+    @property
+    def start_factors(self) -> str | None:
+        return None if "start_factors" not in self.inputs.inputs else self.inputs.inputs["start_factors"].source
+
+    @property
+    def starts_per_hour(self) -> Value | None:
+        z = self.inputs.inputs["starts_per_hour"]
+        return None if z is None else Value.of(z, "1/hour")
+
+    @property
+    def f_e_min(self) -> Value:
+        return Value.of(f_e_min(f_er=self.inputs.inputs["excitation_frequency"]), "Hz")
+
+    @property
+    def bores(self) -> list[BoreResult]:
+        def length(q):
+            return None if q is None else Value.of(q, "mm")
+
+        return [BoreResult(f"shaft_{k}", b.text, Value.of(b.nominal, "mm"), b.tolerance, b.limits_text(), length(b.lower), length(b.upper),
+                     length(b.keyway)) for k, b in enumerate(self.inputs.bores, start=1)]
+
+    @functools.cached_property
+    def torsion(self) -> Torsion | None:
+        """The drive train's modes with the best-ranked coupling; None without the drive train."""
         sel = self.selection
         if sel.chain is None:
             return None
         row = int(sel.order[0])
         chain, train = sel.chain, sel.drive_train
+        return Torsion(
+            part=str(sel.catalog.parts[row]), shaft=train.shaft, complete=train.complete, missing=list(train.missing),
+            masses=[(name, Value.of(chain.inertias[row, k], "kg*cm**2")) for k, name in enumerate(chain.masses)],
+            springs=[(name, Value.of(chain.stiffnesses[row, k], "N*m/rad")) for k, name in enumerate(chain.springs)],
+            natural_frequencies=[Value.of(f, "Hz") for f in sel.modes[row]],
+            checks=[c.at(row) for c in sel.checks if c.name == "f_1"],
+        )
+
+    def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
+        """The ``coupling`` results of the JSON contract."""
+        cc, sel = self.inputs, self.selection
+        listed = [
+            {
+                "part": c.part,
+                "type": c.type,
+                "illustrative": c.illustrative,
+                "passes": c.passes,
+                "f_e": c.f_e.to_json(),
+                "f_1": json_of(c.f_1),
+                "C_T": c.C_T.to_json(),
+                "temperature_factor": c.temperature_factor,
+                "required_torque": c.required_torque.to_json(),
+                "peak_torque_required": json_of(c.peak_torque_required),
+                "checks": [check_json(k) for k in c.checks],
+                "reasons": c.reasons,
+                "catalog": c.catalog,
+                "family": c.family,
+                "size": c.size,
+                "source": c.source,
+                "unclear": c.unclear or None,
+            }
+            for c in sel.candidates(candidates)
+        ]
         return {
-            "part": str(sel.catalog.parts[row]),
-            "shaft": train.shaft,
-            "complete": train.complete,
-            "missing": list(train.missing),
-            "masses": [{"members": name, "J": quantity(chain.inertias[row, k], "kg*cm**2")} for k, name in enumerate(chain.masses)],
-            "springs": [{"member": name, "C": quantity(chain.stiffnesses[row, k], "N*m/rad")} for k, name in enumerate(chain.springs)],
-            "natural_frequencies": [quantity(f, "Hz") for f in sel.modes[row]],
-            "checks": [check_json(c.at(row)) for c in sel.checks if c.name == "f_1"],
+            "catalog": cc.catalog.shown_name,
+            "catalog_sha256": cc.catalog.sha256,
+            "catalogs": [{"catalog": display_path(path), "sha256": sha} for path, sha in cc.catalog.members],
+            "type": cc.type,
+            "M_N": self.M_N.to_json(),
+            "service_factor": self.service_factor,
+            "T_op": self.T_op.to_json(),
+            "temperature": json_of(self.temperature),
+            "temperature_factor": self.temperature_factor,
+            "temperature_factors": self.temperature_factors,
+            "start_factors": self.start_factors,
+            "starts_per_hour": json_of(self.starts_per_hour),
+            "start_factor": sel.start_factor,
+            "f_e_min": self.f_e_min.to_json(),
+            "bores": [b.to_json() for b in self.bores],
+            "ranking": RANKING,
+            "candidate_count": len(sel.order),
+            "candidates": listed,
+            "selected": sel.selected,
+            "order": self.order,
+            "torsion": None if self.torsion is None else self.torsion.to_json(),
+            "notes": self.notes,
         }
 
     def summary_lines(self, candidates: int | None = SHOWN_CANDIDATES) -> list[str]:
         """The coupling results as lines of the terminal summary."""
-        section = self.to_json(candidates)
+        cc, sel = self.inputs, self.selection
+        table = "E9" if self.temperature_factors == TEMPERATURE_FACTORS.source else self.temperature_factors
         lines = [
-            f"Coupling candidates (catalog {section['catalog']}{', type ' + section['type'] if section['type'] else ''}):",
-            f"  M_N = {quantity_text(section['M_N'])} (S_A = {section['service_factor']:g}, E8); temperature factor "
-            f"{section['temperature_factor']:g} ({'E9' if section['temperature_factors'] == TEMPERATURE_FACTORS.source else section['temperature_factors']}); "
-            f"2 f_er = {quantity_text(section['f_e_min'])} (E7)",
+            f"Coupling candidates (catalog {cc.catalog.shown_name}{', type ' + cc.type if cc.type else ''}):",
+            f"  M_N = {self.M_N} (S_A = {self.service_factor:g}, E8); temperature factor {self.temperature_factor:g} ({table}); "
+            f"2 f_er = {self.f_e_min} (E7)",
         ]
-        if section["start_factor"] is not None:
-            lines.append(f"  start factor S_z = {section['start_factor']:g} at {quantity_text(section['starts_per_hour'])} ({section['start_factors']})")
-        for b in section["bores"]:
-            lines.append(f"  {b['key']}: {b['text']} ({b['limits']})")
-        several = len(section["catalogs"]) > 1
-        for c, row in zip(section["candidates"], shown(self.selection.order, candidates)):
-            verdict = {True: "PASS", False: "FAIL", None: "OPEN"}[c["passes"]]
-            where = f" [{c['catalog']}]" if several else ""
-            lines.append(f"  {verdict}  {c['part']}{where} ({c['type']}{', illustrative' if c['illustrative'] else ''}), f_e = {quantity_text(c['f_e'])}")
-            lines += [f"        {check_line(k.at(row), 20)}" for k in self.selection.checks if k.applies_to(row)]
-            if c["unclear"]:
-                lines.append(f"        doubtful figures: {c['unclear']}")
-            for r in c["reasons"]:
-                lines.append(f"        rejected: {r}")
-        if section["candidate_count"] > len(section["candidates"]):
-            lines.append(f"  ... {section['candidate_count'] - len(section['candidates'])} more candidates (--all-candidates lists them)")
-        lines.append(f"Selected coupling: {section['selected'] or self.not_chosen}")
-        lines += self._torsion_lines(section["torsion"])
-        if section["order"]:
-            lines.append(f"Order: {section['order']}")
-        lines += [f"Note: {n}" for n in section["notes"]]
+        if sel.start_factor is not None:
+            lines.append(f"  start factor S_z = {sel.start_factor:g} at {self.starts_per_hour} ({self.start_factors})")
+        lines += [f"  {b.key}: {b.text} ({b.limits})" for b in self.bores]
+        several = len(cc.catalog.members) > 1
+        listed = sel.candidates(candidates)
+        for c in listed:
+            verdict = {True: "PASS", False: "FAIL", None: "OPEN"}[c.passes]
+            where = f" [{c.catalog}]" if several else ""
+            lines.append(f"  {verdict}  {c.part}{where} ({c.type}{', illustrative' if c.illustrative else ''}), f_e = {c.f_e}")
+            lines += [f"        {check_line(k, 20)}" for k in c.checks]
+            if c.unclear:
+                lines.append(f"        doubtful figures: {c.unclear}")
+            lines += [f"        rejected: {r}" for r in c.reasons]
+        if len(sel.order) > len(listed):
+            lines.append(f"  ... {len(sel.order) - len(listed)} more candidates (--all-candidates lists them)")
+        lines.append(f"Selected coupling: {sel.selected or self.not_chosen}")
+        lines += [] if self.torsion is None else self.torsion.lines()
+        if self.order:
+            lines.append(f"Order: {self.order}")
+        lines += [f"Note: {n}" for n in self.notes]
         return lines
 
     @property
@@ -381,32 +467,15 @@ class CouplingResult:
         """Why no coupling is chosen: a check the case cannot feed, or none passes."""
         sel = self.selection
         if sel.not_made and sel.passes[sel.order[0]]:
-            return "none: " + "; ".join(f"{c.text}: not checked, {c.not_made}" for c in sel.not_made)
+            return "none: " + "; ".join(c.reason(int(sel.order[0])) for c in sel.not_made)
         return "none passes"
 
-    def _torsion_lines(self, t: dict | None) -> list[str]:
-        if t is None:
-            return []
-        chain = " | ".join(
-            [f"{m['members']} {quantity_text(m['J'])}" for m in t["masses"][:1]]
-            + [f"{c['member']} {quantity_text(c['C'])} | {m['members']} {quantity_text(m['J'])}" for c, m in zip(t["springs"], t["masses"][1:])]
-        )
-        frequencies = ", ".join(quantity_text(f) for f in t["natural_frequencies"])
-        row = int(self.selection.order[0])
-        lines = [
-            f"Drive train with {t['part']}, at {t['shaft']}{'' if t['complete'] else ' (incomplete)'}: {chain}",
-            f"  natural frequencies {frequencies} (rigid-body mode left out)",
-        ]
-        lines += [f"  {check_line(c.at(row), 20)}" for c in self.selection.checks if c.name == "f_1"]
-        return lines
-
     def verdict(self) -> Verdict:
-        sel = self.selection
-        if sel.selected is not None:
-            return Verdict(True)
-        if sel.not_made and sel.passes[sel.order[0]]:
-            return Verdict(None, [f"No coupling can be chosen: {c.text}: not checked, {c.not_made}" for c in sel.not_made])
-        return Verdict(False, no_candidate_passes("No coupling passes its checks:", sel.catalog.parts, sel.order, sel.reasons))
+        return selection_verdict(self.selection, "coupling", "its checks")
+
+
+#: How the coupling candidates are ranked (:func:`calc.checks.rank`).
+RANKING = "passing first; published rows before illustrative ones; then smallest rated torque T_KN; then lowest worst utilization"
 
 
 def applies(case: Case) -> bool:

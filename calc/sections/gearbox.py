@@ -13,8 +13,8 @@ from ..catalog import display_path, load_catalogs
 from ..errors import CalcError
 from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
 from ..profile import Z_h, n_2m
-from ..units import Q_, fmt, sig
-from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, no_candidate_passes, quantity
+from ..units import Q_, sig
+from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, json_of, selection_verdict
 
 NAME = "gearbox"
 ORDER = 40
@@ -100,28 +100,27 @@ class GearboxResult:
 
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         s = self.selection
-        listed = []
-        for c in s.candidates(candidates):
-            listed.append(
-                {
-                    "part": c.part,
-                    "ratio": c.ratio,
-                    "passes": c.passes,
-                    "illustrative": c.illustrative,
-                    "checks": [check_json(k) for k in c.checks],
-                    "inertia_ratio": c.inertia_ratio,
-                    "T2max": None if c.T_2max is None else quantity(c.T_2max, "N*m", f"gearbox {c.part}: T2max"),
-                    "reasons": c.reasons,
-                    "catalog": c.catalog,
-                    "family": c.family,
-                    "size": c.size,
-                    "source": c.source,
-                    "unclear": c.unclear or None,
-                    "best_of_family": c.best_of_family,
-                    "J_1": None if c.J_1 is None else quantity(c.J_1, "kg*cm**2", f"gearbox {c.part}: J_1"),
-                    "J_1_hub": None if c.J_1_hub is None else quantity(c.J_1_hub, "mm", f"gearbox {c.part}: J_1_hub"),
-                }
-            )
+        listed = [
+            {
+                "part": c.part,
+                "ratio": c.ratio,
+                "passes": c.passes,
+                "illustrative": c.illustrative,
+                "checks": [check_json(k) for k in c.checks],
+                "inertia_ratio": c.inertia_ratio,
+                "T2max": json_of(c.T_2max),
+                "reasons": c.reasons,
+                "catalog": c.catalog,
+                "family": c.family,
+                "size": c.size,
+                "source": c.source,
+                "unclear": c.unclear or None,
+                "best_of_family": c.best_of_family,
+                "J_1": json_of(c.J_1),
+                "J_1_hub": json_of(c.J_1_hub),
+            }
+            for c in s.candidates(candidates)
+        ]
         return {
             "catalog": s.catalog.shown_name,
             "catalog_sha256": s.catalog.sha256,
@@ -142,9 +141,7 @@ class GearboxResult:
         for c in s.candidates(candidates):
             verdict = {True: "PASS", False: "FAIL", None: "OPEN"}[c.passes]
             lam = "" if c.inertia_ratio is None else f", inertia ratio {c.inertia_ratio:.2f}"
-            hub = "" if c.J_1 is None or np.isnan(c.J_1.magnitude) else f", J_1 {fmt(c.J_1, 'kg*cm**2')}" + (
-                "" if np.isnan(c.J_1_hub.magnitude) else f" ({fmt(c.J_1_hub, 'mm')} hub)"
-            )
+            hub = "" if c.J_1.value is None else f", J_1 {c.J_1}" + ("" if c.J_1_hub.value is None else f" ({c.J_1_hub} hub)")
             best = f", smallest adequate {c.family}" if c.best_of_family else ""
             where = f" [{c.catalog}]" if several else ""
             lines.append(f"  {verdict}  {c.part}{where}{' (illustrative)' if c.illustrative else ''}{best}{lam}{hub}")
@@ -160,14 +157,8 @@ class GearboxResult:
 
     def verdict(self) -> Verdict:
         s = self.selection
-        if s.selected is not None:
-            return Verdict(True)
-        best = s.order[0]
         ratios = ", ".join(sorted({f"{r:g}" for r in s.catalog["ratio"].m_as("")}))
-        what = f"gearbox of ratio {ratios} in {s.catalog.shown_name}"
-        if s.passes[best] and s.not_made:
-            return Verdict(None, [f"No {what} can be chosen: {c.reason(best)}" for c in s.not_made])
-        return Verdict(False, no_candidate_passes(f"No {what} passes the {s.mode} checks:", s.catalog.parts, s.order, s.reasons))
+        return selection_verdict(s, f"gearbox of ratio {ratios} in {s.catalog.shown_name}", f"the {s.mode} checks")
 
 
 def check_steps(case: Case, sel: GearboxSelection) -> list:
