@@ -12,7 +12,7 @@ import numpy as np
 
 from ..checks import within_rating
 from ..formula import Step
-from ..units import NUMBER, pretty_unit, sig
+from ..units import NUMBER, Value, pretty_unit, sig
 from .symbols import latex as prose
 from .symbols import latex_escape
 
@@ -45,11 +45,13 @@ def signed(text: str) -> str:
     return text.replace("-", "−", 1) if text.startswith("-") else text
 
 
-def plain(d) -> str:
-    """A result quantity ``{"value", "unit"}`` as plain text (``151.3 N·m``)."""
-    if d is None or d.get("value") is None:
+def plain(v: Value | None) -> str:
+    """A result value as plain text (``151.3 N·m``, a minus sign where negative)."""
+    if isinstance(v, dict):  # TRANSITIONAL: a JSON quantity read back, until every section's result is typed
+        v = Value(**v)
+    if v is None or v.value is None:
         return "n/a"
-    return f"{signed(sig(d['value']))} {pretty_unit(d['unit'])}".rstrip()
+    return f"{signed(sig(v.value))} {pretty_unit(v.unit)}".rstrip()
 
 
 def q(d) -> str:

@@ -19,8 +19,8 @@ from ..case import Case
 from ..catalog import display_path
 from ..report import Report, report_of
 from ..report.symbols import html as typeset
-from ..sections.common import quantity_text
-from ..units import Q_, sig
+from ..checks import within_rating
+from ..units import Q_, Value, sig
 
 PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 STYLE = f"""<style>
@@ -71,23 +71,31 @@ INCH_POUND = {"N*m": "lbf*in", "N": "lbf", "mm": "in", "m": "in", "kg*cm**2": "l
               "N*m/arcmin": "lbf*in/arcmin", "N*m/rad": "lbf*in/rad", "m/s": "in/s", "mm/s": "in/s", "m/s**2": "in/s**2"}
 
 
-def in_system(d: dict | None) -> dict | None:
-    """A result quantity ``{"value", "unit"}`` in the unit system shown (:data:`SYSTEM`).
+def in_system(v: Value | None) -> Value | None:
+    """A result value in the unit system shown (:data:`SYSTEM`).
 
     >>> token = SYSTEM.set("inch-pound")
-    >>> in_system({"value": 6.779, "unit": "N*m"})["unit"], round(in_system({"value": 6.779, "unit": "N*m"})["value"], 2)
+    >>> shown = in_system(Value(6.779, "N*m"))
+    >>> shown.unit, round(shown.value, 2)
     ('lbf*in', 60.0)
     >>> SYSTEM.reset(token)
     """
-    if d is None or d.get("value") is None or SYSTEM.get() == "SI" or d.get("unit") not in INCH_POUND:
-        return d
-    unit = INCH_POUND[d["unit"]]
-    return {**d, "value": float(Q_(d["value"], d["unit"]).m_as(unit)), "unit": unit}
+    v = _bridge(v)
+    if v is None or v.value is None or SYSTEM.get() == "SI" or v.unit not in INCH_POUND:
+        return v
+    unit = INCH_POUND[v.unit]
+    return Value(float(Q_(v.value, v.unit).m_as(unit)), unit)
 
 
-def _q(d) -> str:
-    """A result quantity as text, in the unit system shown; blank where not given."""
-    return "" if d is None or d.get("value") is None else escape(quantity_text(in_system(d)).replace(" 1/hour", " /h"))
+def _bridge(v):
+    # TRANSITIONAL: a JSON quantity read back, until every section's result is typed.
+    return Value(**v) if isinstance(v, dict) else v
+
+
+def _q(v: Value | None) -> str:
+    """A result value as text, in the unit system shown; blank where not given."""
+    v = _bridge(v)
+    return "" if v is None or v.value is None else escape(str(in_system(v)).replace(" 1/hour", " /h"))
 
 
 def _verdict_cell(passes, not_made: str | None = None) -> str:
@@ -102,7 +110,7 @@ def _utilization(u) -> str:
     if u is None:
         return ""
     width = max(0.0, min(u, 1.0)) * 100
-    color = FAIL_COLOR if u > 1 + 1e-9 else PASS_COLOR  # 1.0000000000000002 is a rounding of 1, which passes
+    color = PASS_COLOR if within_rating(u) else FAIL_COLOR
     return f'{100 * u:.0f} %<span class="bar"><span style="width:{width:.0f}%;background:{color}"></span></span>'
 
 
@@ -327,7 +335,7 @@ def comparison_rows(variants: list[tuple[str, dict]]) -> list[tuple[str, list[st
         d = r
         for p in path:
             d = (d or {}).get(p)
-        return "" if d is None else quantity_text(in_system(d))
+        return "" if d is None else str(in_system(d))
 
     def verdict(r):
         v = r.get("verdict") or {}
