@@ -52,6 +52,7 @@ class Check:
     governs: bool = True
     mode: str | None = None
     not_made: str | None = None
+    at_least: bool = False  # the required value is a lower bound: a term of it is unknown
 
     @property
     def required_value(self) -> Value | None:

@@ -32,7 +32,8 @@ from ..errors import CalcError
 from ..sections import MODULES, Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
 from . import accuracy, coupling, gearbox, motor
-from .common import ERRATA, INPUT_COLUMNS, rejected_in_full, results_of
+from ..selection import Selection
+from .common import ERRATA, INPUT_COLUMNS, rejected_in_full
 from .latex import Latex, itemize, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
@@ -81,7 +82,7 @@ class Report:
     @property
     def chosen(self) -> list[tuple[str, str, str]]:
         """(what, part, detail) of each chosen part; part is None where none passes."""
-        return _parts("chosen", self) if self.results is not None else []
+        return _parts("chosen", self) if self.evaluated is not None else []
 
     @property
     def verdict(self) -> Verdict:
@@ -149,23 +150,16 @@ class Report:
         """The governing checks of each chosen part, and of each section's own checks (the motor's,
         the accuracy's requirements), one line each with its utilization, or why it is not made."""
         lines = []
-        for name in (m.NAME for m in BLOCKS):
-            s = results_of(name, self)
-            if s and s.get("candidates") and s.get("selected"):
-                owner, checks = f"{name.capitalize()} {s['candidates'][0]['part']}", s["candidates"][0].get("checks", [])
-            elif s and isinstance(s.get("checks"), list):
-                owner, checks = name.capitalize(), s["checks"]
-            else:
+        for g in self.evaluated.governing() if self.evaluated is not None else []:
+            if g.part is not None and not g.chosen:
                 continue
-            for k in checks:
-                if not k.get("governs", True):
-                    continue
-                crit = prose(k.get("criterion") or k["name"])
-                if k.get("passes") is None:
-                    lines.append(rf"{latex_escape(owner)}: {crit}: {verdict_mark(None, k.get('not_made') or 'no rating')}")
-                    continue
-                reached, limit = (k["required"], k["rated"]) if "rated" in k else (k["value"], k["required"])
-                lines.append(rf"{latex_escape(owner)}: {crit}: {q(reached)} against {q(limit)}, utilization {util(k['utilization'])}")
+            owner = latex_escape(g.section.capitalize() + (f" {g.part}" if g.part else ""))
+            for k in g.checks:
+                crit = prose(k.criterion or k.name)
+                if k.passes is None:
+                    lines.append(rf"{owner}: {crit}: {verdict_mark(None, k.not_made or 'no rating')}")
+                else:
+                    lines.append(rf"{owner}: {crit}: {q(k.required_value)} against {q(k.rated_value)}, utilization {util(k.utilization)}")
         return itemize(lines) if lines else ""
 
     def method(self) -> Latex:
@@ -173,8 +167,7 @@ class Report:
         if self.case is None:
             return Latex("")
         applied = set(_parts("readings", self))
-        rankings = [f"Ranking of the {m.NAME} candidates: {s['ranking']}."
-                    for m in BLOCKS if (s := results_of(m.NAME, self)) and s.get("ranking")]
+        rankings = [f"Ranking of the {name} candidates: {r.ranking}." for name, r in self._ranked()]
         return Latex(render(
             "method.tex.j2", sources=_parts("sources", self),
             readings=[(k, e["text"]) for k, e in ERRATA.items() if "section" not in e or k in applied],
@@ -230,8 +223,13 @@ class Report:
 
     def appendix(self) -> Latex:
         """Every rejected candidate with its reasons, where the candidates' pages show only the closest."""
-        out = [x for m in BLOCKS if (s := results_of(m.NAME, self)) and s.get("candidates") for x in rejected_in_full(m.NAME, s)]
+        out = [x for name, r in self._ranked() for x in rejected_in_full(name, r.selection.candidates())]
         return Latex("\n".join([r"\clearpage\appendix\section{Rejected candidates}", *out]) if out else "")
+
+    def _ranked(self) -> list:
+        """(name, result) of each section that ranks a catalog (:class:`calc.selection.Selection`)."""
+        sections = self.evaluated.sections if self.evaluated is not None else {}
+        return [(name, r) for name, r in sections.items() if isinstance(getattr(r, "selection", None), Selection)]
 
     def blocks(self) -> list[tuple[object, dict]]:
         """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:
@@ -286,9 +284,6 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     if motor.NAME in evaluated.sections:
         report.motor = evaluated[motor.NAME]
     report.ratios = ratios
-    for m in BLOCKS:
-        s = results_of(m.NAME, report)
-        if s and s.get("catalog") and s.get("catalog_sha256"):
-            for entry in s.get("catalogs") or [{"catalog": s["catalog"], "sha256": s["catalog_sha256"]}]:
-                report.files.append((f"{m.NAME.capitalize()} catalog", entry["catalog"], entry["sha256"]))
+    for name, r in report._ranked():
+        report.files += [(f"{name.capitalize()} catalog", display_path(path), sha) for path, sha in r.selection.catalog.members]
     return report

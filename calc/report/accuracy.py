@@ -11,7 +11,7 @@ import numpy as np
 
 from . import common
 from .common import (
-    described, further_candidates, further_checks, further_chosen, further_order_lines, further_readings, further_sources,
+    described, further_checks, further_readings, further_sources,
     raw_section_tables, results_of,
 )
 from .latex import latex_escape, listed, plain, prose, q, step_block, table
@@ -119,9 +119,6 @@ def figures(report) -> list:
 sources = functools.partial(further_sources, NAME)
 readings = functools.partial(further_readings, NAME)
 checks = functools.partial(further_checks, NAME)
-candidates = functools.partial(further_candidates, NAME)
-chosen = functools.partial(further_chosen, NAME)
-order_lines = functools.partial(further_order_lines, NAME)
 
 
-input_rows = common.nothing
+input_rows = candidates = chosen = order_lines = common.nothing

@@ -21,7 +21,7 @@ from ..gearbox import inertia_ratio
 from ..sections import declared
 from ..units import pretty_unit, sig
 from . import symbols
-from .latex import breakable, itemize, latex_escape, listed, prose, q, sources_list, table, util, value_unit, verdict_mark
+from .latex import breakable, itemize, latex_escape, listed, prose, q, table, util, value_unit, verdict_mark
 
 _METHOD = tomllib.loads((Path(__file__).parent / "errata.toml").read_text(encoding="utf-8"))
 #: The sections of the source document each section of a case is computed from.
@@ -91,17 +91,21 @@ def input_row(path: str, value, derived: bool = False) -> list[str]:
     return [f"${latex}$" if latex else "–", shown, unit, prose(key.description), where]
 
 
-def checks_table(candidate: dict, caption: str) -> str:
-    """Required, rated, utilization and verdict of each check of one candidate; checks of the
-    other operating mode (gearboxes) in grey, for information."""
-    modes = any(k.get("mode") for k in candidate["checks"])
+def result_of(name: str, report):
+    """A section's result (:mod:`calc.sections`); None where the case has none or cannot be evaluated."""
+    return report.evaluated.sections.get(name) if report.evaluated is not None else None
+
+
+def checks_table(checks: list, caption: str) -> str:
+    """Required, rated, utilization and verdict of each check (:class:`calc.checks.Check`) of one
+    candidate; checks of the other operating mode (gearboxes) in grey, for information."""
+    modes = any(k.mode for k in checks)
     rows = []
-    for k in candidate["checks"]:
-        grey = "" if k.get("governs", True) else r"\color{infogrey}"
-        name = prose(k["criterion"]) if k.get("criterion") else latex_escape(k["name"])
-        cells = [grey + name] + ([grey + latex_escape(k.get("mode", ""))] if modes else [])
-        cells += [grey + q(k["required"]), grey + q(k["rated"]), grey + util(k["utilization"]),
-                  grey + verdict_mark(k["passes"], k.get("not_made")) + ("" if k.get("governs", True) else r"{} \footnotesize(for information)")]
+    for k in checks:
+        grey = "" if k.governs else r"\color{infogrey}"
+        cells = [grey + (prose(k.criterion) if k.criterion else latex_escape(k.name))] + ([grey + latex_escape(k.mode or "")] if modes else [])
+        cells += [grey + q(k.required_value), grey + q(k.rated_value), grey + util(k.utilization),
+                  grey + verdict_mark(k.passes, k.not_made) + ("" if k.governs else r"{} \footnotesize(for information)")]
         rows.append(cells)
     header = ["Criterion"] + (["Mode"] if modes else []) + ["Required", "Rated", "Utilization", "Verdict"]
     return table("@{}l " + ("l " if modes else "") + r"r r r >{\raggedright\arraybackslash}p{0.24\linewidth}@{}", header, rows,
@@ -118,26 +122,25 @@ def requirement_table(checks: list, caption: str) -> str:
                  caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")
 
 
-def candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
-    """The utilization of each check of each candidate, best first (and its inertia ratio)."""
-    checks = [k for c in section["candidates"] for k in c.get("checks", [])]
-    names = list(dict.fromkeys(k["name"] for k in checks))  # every check any candidate has, in order
-    governs = {k["name"]: k.get("governs", True) for k in checks}
-    header = ["Part"] + [
-        (r"\color{infogrey}" if not governs[n] else "") + prose(n) for n in names
-    ] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
+def candidates_table(candidates: list, selected: str | None, caption: str, inertia: bool = False) -> str:
+    """The utilization of each check of each candidate (:class:`calc.selection.Candidate`), best
+    first (and its inertia ratio); ``selected``: the chosen part."""
+    checks = [k for c in candidates for k in c.checks]
+    names = list(dict.fromkeys(k.name for k in checks))  # every check any candidate has, in order
+    governs = {k.name: k.governs for k in checks}
+    criteria = {k.name: k.criterion for k in checks}
+    header = ["Part"] + [(r"\color{infogrey}" if not governs[n] else "") + prose(n) for n in names] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
     rows = []
-    for c in section["candidates"]:
-        by = {k["name"]: k for k in c.get("checks", [])}
-        cells = [latex_escape(c.get("part", ""))]
-        cells += [(r"\color{infogrey}" if not governs[n] else "") + util(by[n]["utilization"]) if n in by else "–" for n in names]
+    for c in candidates:
+        by = {k.name: k for k in c.checks}
+        cells = [latex_escape(c.part)]
+        cells += [(r"\color{infogrey}" if not governs[n] else "") + util(by[n].utilization) if n in by else "–" for n in names]
         if inertia:
-            cells.append("–" if c.get("inertia_ratio") is None else f"{c['inertia_ratio']:.2f}")
-        cells.append(verdict_mark(c.get("passes", False)) + (r"{} \footnotesize(chosen)" if c.get("part") == section.get("selected") else ""))
+            cells.append("–" if c.inertia_ratio is None else f"{c.inertia_ratio:.2f}")
+        cells.append(verdict_mark(c.passes) + (r"{} \footnotesize(chosen)" if c.part == selected else ""))
         rows.append(cells)
     cols = "@{}l " + "r " * (len(names) + (1 if inertia else 0)) + "l@{}"
-    criteria = {k["name"]: k.get("criterion") for c in section["candidates"] for k in c.get("checks", [])}
-    note = "Checks: " + "; ".join(prose(criteria[n]) if criteria.get(n) else latex_escape(n) for n in names) + "."
+    note = "Checks: " + "; ".join(prose(criteria[n]) if criteria[n] else latex_escape(n) for n in names) + "."
     if inertia:
         note += rf" ${inertia_ratio.latex()}$, load to motor inertia ratio (E6)."
     return table(cols, header, rows, caption=caption, note=note, small=True, narrow=True)
@@ -148,14 +151,14 @@ def candidates_table(section: dict, caption: str, inertia: bool = False) -> str:
 SHOWN_REJECTIONS = 5
 
 
-def _rejections(section: dict) -> list[str]:
-    return [rf"\textbf{{{latex_escape(c['part'])}}}: {prose('; '.join(c['reasons']))}" for c in section["candidates"] if c.get("reasons")]
+def _rejections(candidates: list) -> list[str]:
+    return [rf"\textbf{{{latex_escape(c.part)}}}: {prose('; '.join(c.reasons))}" for c in candidates if c.reasons]
 
 
-def rejected(section: dict) -> list[str]:
+def rejected(candidates: list) -> list[str]:
     """Why the closest rejected candidates fail, one item each, and how many more the appendix
     lists; nothing when none is rejected."""
-    items = _rejections(section)
+    items = _rejections(candidates)
     if not items:
         return []
     more = len(items) - SHOWN_REJECTIONS
@@ -163,10 +166,10 @@ def rejected(section: dict) -> list[str]:
     return [r"\paragraph{Why the others are rejected (the closest first).}" + itemize(items[:SHOWN_REJECTIONS] + tail)]
 
 
-def rejected_in_full(name: str, section: dict) -> list[str]:
+def rejected_in_full(name: str, candidates: list) -> list[str]:
     """Every rejected candidate of a section with its reasons, where the report shows only the
     closest (:data:`SHOWN_REJECTIONS`)."""
-    items = _rejections(section)
+    items = _rejections(candidates)
     if len(items) <= SHOWN_REJECTIONS:
         return []
     return [rf"\subsection*{{Every rejected {latex_escape(name)} candidate, closest first}}", r"{\small" + itemize(items) + "}"]
@@ -218,37 +221,12 @@ def further_readings(name: str, report) -> set[str]:
 
 
 def further_checks(name: str, report) -> list[str]:
-    """The checks of the first candidate, or the checks against the case's requirements."""
+    """The checks of the best-ranked candidate, or the checks against the case's requirements."""
+    r = result_of(name, report)
+    if r is not None and hasattr(r, "selection"):
+        best = r.selection.best
+        return [checks_table(best.checks, f"Checks of {name} {best.part}")] if best.checks else []
     s = results_of(name, report)
-    if s and s.get("candidates"):
-        first = s["candidates"][0]
-        return [checks_table(first, f"Checks of {name} {first.get('part', '')}")] if first.get("checks") else []
     if s and s.get("checks"):
         return [requirement_table(s["checks"], f"{name.capitalize()} against the requirements of the case")]
     return []
-
-
-def further_candidates(name: str, report) -> list[str]:
-    s = results_of(name, report)
-    if not (s and s.get("candidates")):
-        return []
-    listed = s["candidates"]
-    doubts = [f"{c['part']}: {c['unclear']}" for c in listed if c.get("unclear")]
-    _, source_list = sources_list(c["source"] for c in listed if c.get("source"))
-    notes = ([r"\noindent Doubtful figures of the rows listed: " + breakable("; ".join(doubts)) + r"\par"] if doubts else []) + (
-        [r"\paragraph{Sources of the rows listed.}" + source_list] if source_list else [])
-    return [rf"\subsection*{{{name.capitalize()}}}",
-            candidates_table(s, latex_escape(f"Utilization of each check of the {name} candidates, best first")),
-            *notes, *rejected(s)]
-
-
-def further_chosen(name: str, report) -> list[tuple]:
-    s = results_of(name, report)
-    if s and "selected" in s:
-        return [(name.capitalize(), s["selected"], f"catalog {s['catalog']}" if s.get("catalog") else "")]
-    return []
-
-
-def further_order_lines(name: str, report) -> list[str]:
-    s = results_of(name, report)
-    return [latex_escape(s["order"])] if s and s.get("order") else []

@@ -6,15 +6,12 @@ from __future__ import annotations
 
 import functools
 
-import numpy as np
-
-from ..units import Q_, sig
+from ..units import sig
 from . import common
 from .common import (
-    described, further_candidates, further_checks, further_chosen, further_order_lines, further_readings, further_sources,
-    raw_section_tables, results_of,
+    candidates_table, described, further_checks, further_readings, further_sources, raw_section_tables, rejected, result_of,
 )
-from .latex import itemize, latex_escape, plain, prose, q, step_block, table
+from .latex import breakable, itemize, latex_escape, plain, prose, q, sources_list, step_block, table
 
 NAME = "coupling"
 
@@ -36,97 +33,97 @@ def inputs(report) -> list[str]:
 
 
 def steps(report) -> list[str]:
-    if report.coupling is None:
+    """The coupling's calculations as the section computed them: the inputs taken from the rest
+    of the case, M_N with its factors, 2 f_er, the best-ranked row's natural frequency and the
+    drive train's modes."""
+    r = result_of(NAME, report)
+    if r is None:
         return []
-    from .. import coupling as cp
-
-    cc, sel = report.coupling
-    x, cat = cc.inputs, sel.catalog
-    row = int(sel.order[0])
-    part = latex_escape(str(cat.parts[row]))
-    chosen = "the chosen coupling" if sel.selected else "the closest candidate (none passes)"
     out = [r"\subsection{Coupling: nominal torque and resonance}"]
-    out += [step_block(title, step) for title, step in cc.steps]  # as the section computed them
+    out += [step_block(title, step) for title, step in r.inputs.steps]
+    sel = r.selection
     if sel.not_made:
         # The case lacks what M_N and f_e need (the contract's partial cases): no step to show.
         return out + [prose(f"Not checked: {c.text}, {c.not_made}.") + "\n" for c in sel.not_made]
-    m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
-    out.append(step_block("Nominal torque of the coupling", m_n, "compared with T_KN"))
-    if sel.row_type(row) == "elastomer":
-        bands = x["temperature_factors"]
-        band = bands.text(int(bands.band(x["temperature"], "coupling.temperature")))
-        k_t = Q_(float(sel.temperature_factor[row]), "")
-        out.append(step_block(f"With the temperature factor ({part})", cp.M_Nt.step(M_N=m_n.result, K_T=k_t),
-                              f"the factor of the band {band} ({bands.source})"))
-        if sel.M_Smax is not None:
-            starts = x["start_factors"]
-            s_band = starts.text(int(starts.band(x["starts_per_hour"], "coupling.starts_per_hour")))
-            out.append(step_block(f"Peak torque with the start and temperature factors ({part})",
-                                  cp.M_Smax.step(T_S=m_n.result, S_z=Q_(sel.start_factor, ""), K_T=k_t),
-                                  f"compared with T_Kmax; S_z of the band {s_band} ({starts.source})"))
-    out.append(step_block("Lowest natural frequency allowed", cp.f_e_min.step(f_er=x["excitation_frequency"])))
-    if np.isnan(sel.f_e[row].magnitude):
-        return out
-    out.append(rf"\subsection{{Natural frequency of {chosen}, {part}}}")
-    J = cat["J"][row]
-    out.append(step_block("Drive side with half the coupling", cp.J_A.step(J_drive=x["drive_inertia"], J_K=J)))
-    out.append(step_block("Load side with half the coupling", cp.J_L.step(J_load=x["load_inertia"], J_K=J)))
-    if sel.row_type(row) == "line-shaft" and x["shaft_distance"] is not None:
-        z = cp.Z.step(A=x["shaft_distance"], H=cat["H"][row])
-        out.append(step_block("Tube length", z))
-        out.append(step_block("Stiffness of the line shaft", cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row])))
-    out.append(step_block("Natural frequency", cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L=sel.J_L[row]),
-                          "compared with 2 f_er"))
-    return out + _torsion(report, cc)
+    out += [step_block(*s) for s in r.torque_steps]
+    if r.resonance_steps:
+        chosen = "the chosen coupling" if sel.selected else "the closest candidate (none passes)"
+        out.append(rf"\subsection{{Natural frequency of {chosen}, {latex_escape(sel.best.part)}}}")
+        out += [step_block(*s) for s in r.resonance_steps]
+    return out + _torsion(r)
 
 
-def _torsion(report, cc) -> list[str]:
+def _torsion(r) -> list[str]:
     """The drive train as a chain of masses and springs (calc.torsion): the members referred to
     the coupling's shaft, the chain, and its natural frequencies beside the two-mass f_e."""
-    t = (results_of(NAME, report) or {}).get("torsion")
-    if not t:
+    t = r.torsion
+    if t is None:
         return []
-    out = [rf"\subsection{{Torsional modes of the drive train, with {latex_escape(t['part'])}}}",
+    out = [rf"\subsection{{Torsional modes of the drive train, with {latex_escape(t.part)}}}",
            prose("The two-mass f_e takes the coupling as the only spring. The drive train has more: it is lumped as a chain, "
-                 f"every member referred to {t['shaft']}: the motor with half the coupling, the other half with the gearbox's J_1, "
+                 f"every member referred to {t.shaft}: the motor with half the coupling, the other half with the gearbox's J_1, "
                  "the load J_L / i²; springs: the coupling's C_T and the gearbox's C_t21 / i². Its natural frequencies are "
                  "the roots of the eigenproblem (K − ω² J) φ = 0, the rigid-body mode left out.")]
-    out += [step_block(title, step) for title, step in cc.drive_steps]
-    rows = [[str(k + 1), prose(m["members"]), q(m["J"]), prose(s["member"]) if s else "", q(s["C"]) if s else ""]
-            for k, (m, s) in enumerate(zip(t["masses"], [*t["springs"], None]))]
+    out += [step_block(title, step) for title, step in r.inputs.drive_steps]
+    rows = [[str(k + 1), prose(members), q(J), prose(spring[0]) if spring else "", q(spring[1]) if spring else ""]
+            for k, ((members, J), spring) in enumerate(zip(t.masses, [*t.springs, None]))]
     out.append(table(r"@{}r l r l r@{}", ["Mass", "Members", "Inertia", "Spring to the next", "Stiffness"], rows,
-                     caption=f"The drive train as masses and springs, referred to {latex_escape(t['shaft'])}"))
-    frequencies = ", ".join(q(f) for f in t["natural_frequencies"])
-    out.append(prose("Natural frequencies, lowest first: ") + frequencies + ".")
-    if not t["complete"]:
+                     caption=f"The drive train as masses and springs, referred to {latex_escape(t.shaft)}"))
+    out.append(prose("Natural frequencies, lowest first: ") + ", ".join(q(f) for f in t.natural_frequencies) + ".")
+    if not t.complete:
         out.append(prose("The chain is incomplete, so its first mode is reported for information: the case does not give "
-                         + "; ".join(t["missing"]) + "."))
+                         + "; ".join(t.missing) + "."))
     return out
 
 
 def results(report) -> list[str]:
     """What the coupling gives besides its checks: M_N, T_op, K_ϑ, f_e,min, the shafts, notes."""
-    c = results_of(NAME, report)
-    if not c:
+    r = result_of(NAME, report)
+    if r is None:
         return []
     rows = [
-        [r"$M_{N}$", q(c["M_N"]), prose(f"nominal torque of the coupling, S_A = {c['service_factor']:g} included (E8)")],
-        [r"$T_{\mathrm{op}}$", q(c["T_op"]), prose("peak torque of normal operation (M_N with S_A = 1)")],
-        [r"$K_{\vartheta}$", f"{c['temperature_factor']:g}",
-         prose("temperature factor (elastomer couplings, E9)" + (f" at {plain(c['temperature'])}" if c.get("temperature") else ""))],
-        [r"$f_{e,\mathrm{min}}$", q(c["f_e_min"]), prose("lowest natural frequency allowed, 2 f_er (E7)")],
+        [r"$M_{N}$", q(r.M_N), prose(f"nominal torque of the coupling, S_A = {r.service_factor:g} included (E8)")],
+        [r"$T_{\mathrm{op}}$", q(r.T_op), prose("peak torque of normal operation (M_N with S_A = 1)")],
+        [r"$K_{\vartheta}$", f"{r.temperature_factor:g}",
+         prose("temperature factor (elastomer couplings, E9)" + (f" at {plain(r.temperature)}" if r.temperature else ""))],
+        [r"$f_{e,\mathrm{min}}$", q(r.f_e_min), prose("lowest natural frequency allowed, 2 f_er (E7)")],
     ]
-    if c.get("start_factor") is not None:
-        rows.append([r"$S_{z}$", f"{c['start_factor']:g}", prose(f"start factor at {plain(c['starts_per_hour'])} ({c['start_factors']})")])
+    if r.selection.start_factor is not None:
+        rows.append([r"$S_{z}$", f"{r.selection.start_factor:g}", prose(f"start factor at {plain(r.starts_per_hour)} ({r.start_factors})")])
     out = [r"\subsection{Coupling: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows)]
-    bores = [[rf"\texttt{{\footnotesize coupling.{latex_escape(b['key'])}}}", latex_escape(b["text"]),
-              latex_escape(b.get("limits") or "–")] for b in c.get("bores", [])]
+    bores = [[rf"\texttt{{\footnotesize coupling.{latex_escape(b.key)}}}", latex_escape(b.text), latex_escape(b.limits or "–")] for b in r.bores]
     if bores:
         out.append(table(r"@{}l l l@{}", ["Case key", "Shaft as written", "Limits of the shaft (ISO 286)"], bores,
                          caption="Shafts of the coupling"))
-    if c.get("notes"):
-        out.append(r"\paragraph{Notes.}" + itemize(prose(n) for n in c["notes"]))
+    if r.notes:
+        out.append(r"\paragraph{Notes.}" + itemize(prose(n) for n in r.notes))
     return out
+
+
+def candidates(report) -> list[str]:
+    """Every candidate's utilization of each check, the doubtful figures and sources of the rows,
+    and why the closest rejected ones fail."""
+    r = result_of(NAME, report)
+    if r is None:
+        return []
+    listed = r.selection.candidates()
+    doubts = [f"{c.part}: {c.unclear}" for c in listed if c.unclear]
+    _, source_list = sources_list(c.source for c in listed if c.source)
+    notes = ([r"\noindent Doubtful figures of the rows listed: " + breakable("; ".join(doubts)) + r"\par"] if doubts else []) + (
+        [r"\paragraph{Sources of the rows listed.}" + source_list] if source_list else [])
+    return [rf"\subsection*{{{NAME.capitalize()}}}",
+            candidates_table(listed, r.selection.selected, latex_escape(f"Utilization of each check of the {NAME} candidates, best first")),
+            *notes, *rejected(listed)]
+
+
+def chosen(report) -> list[tuple]:
+    r = result_of(NAME, report)
+    return [] if r is None else [(NAME.capitalize(), r.selection.selected, f"catalog {r.inputs.catalog.shown_name}")]
+
+
+def order_lines(report) -> list[str]:
+    r = result_of(NAME, report)
+    return [latex_escape(r.order)] if r is not None and r.order else []
 
 
 def figures(report) -> list:
@@ -148,9 +145,6 @@ def figures(report) -> list:
 sources = functools.partial(further_sources, NAME)
 readings = functools.partial(further_readings, NAME)
 checks = functools.partial(further_checks, NAME)
-candidates = functools.partial(further_candidates, NAME)
-chosen = functools.partial(further_chosen, NAME)
-order_lines = functools.partial(further_order_lines, NAME)
 
 
 input_rows = common.nothing

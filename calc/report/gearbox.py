@@ -8,7 +8,7 @@ import numpy as np
 
 from ..units import sig
 from . import common
-from .common import candidates_table, checks_table, input_row, nothing, rejected, results_of
+from .common import candidates_table, checks_table, input_row, nothing, rejected, result_of
 from .latex import breakable, latex_escape, num, sources_list, stacked, step_block, table
 
 NAME = "gearbox"
@@ -52,24 +52,26 @@ def steps(report) -> list[str]:
 
 
 def checks(report) -> list[str]:
-    g = results_of(NAME, report)
-    if not g:
+    r = result_of(NAME, report)
+    if r is None:
         return []
-    c = g["candidates"][0]
-    return [checks_table(c, f"Checks of gearbox {c['part']}" + (" (chosen)" if g["selected"] else " (the closest candidate; none passes)"))]
+    best = r.selection.best
+    return [checks_table(best.checks, f"Checks of gearbox {best.part}" + (" (chosen)" if r.selection.selected else " (the closest candidate; none passes)"))]
 
 
 def candidates(report) -> list[str]:
     """Every candidate at the ratio: its catalog ratings, and the utilization of each check."""
-    g, sel = results_of(NAME, report), report.selection
-    if not g:
+    r = result_of(NAME, report)
+    if r is None:
         return []
+    sel = r.selection
     cat = sel.catalog
     illustrative = False
     doubts = []
     several = len(cat.members) > 1
     family, size, unclear = cat.family, cat.text_or_blank("size"), cat.text_or_blank("unclear")
     best = sel.best_of_family
+    listed = sel.candidates()
     numbers, source_list = sources_list(str(cat.text["source"][r]) for r in sel.order)
     rows = []
     for r in sel.order:
@@ -100,12 +102,12 @@ def candidates(report) -> list[str]:
             ["Part", "Family, size", *(stacked(symbol, f"[{unit}]") for symbol, unit in (
                 ("$T_{2N}$", "N·m"), ("$T_{2B}$", "N·m"), ("$n_{1N}$", "rpm"), (r"$n_{1\mathrm{max}}$", "rpm"), (r"$\eta$", r"\%"),
                 ("$J_1$", "kg·cm²"), (r"$d_{\mathrm{hub}}$", "mm"))), "Src."],
-            rows, caption=latex_escape(f"Catalog ratings of the candidates ({g['catalog']}), best first"), note=note, small=True, narrow=True,
+            rows, caption=latex_escape(f"Catalog ratings of the candidates ({cat.shown_name}), best first"), note=note, small=True, narrow=True,
         ),
         r"\paragraph{Sources of the rows.}" + source_list,
-        candidates_table(g, f"Utilization of each check (required / rated), {g['mode']} governs; "
-                            "checks in grey are for information", inertia=True),
-        *rejected(g),
+        candidates_table(listed, sel.selected, f"Utilization of each check (required / rated), {sel.mode} governs; "
+                                                "checks in grey are for information", inertia=True),
+        *rejected(listed),
     ]
 
 
@@ -122,22 +124,21 @@ def figures(report) -> list:
 
 
 def chosen(report) -> list[tuple]:
-    g = results_of(NAME, report)
-    if not g:
+    r = result_of(NAME, report)
+    if r is None:
         return []
-    best = g["candidates"][0] if g["candidates"] else None
-    detail = f"ratio {best['ratio']:g}, {report.selection.mode} checks, catalog {g['catalog']}" if best else ""
-    return [("Gearbox", g["selected"], detail)]
+    sel = r.selection
+    return [("Gearbox", sel.selected, f"ratio {sel.best.ratio:g}, {sel.mode} checks, catalog {sel.catalog.shown_name}")]
 
 
 def order_lines(report) -> list[str]:
-    g = results_of(NAME, report)
-    if not (g and g["selected"]):
+    r = result_of(NAME, report)
+    if r is None or r.selection.selected is None:
         return []
-    sel = report.selection
-    r = int(sel.order[0])
-    return [rf"Gearbox \textbf{{{latex_escape(g['selected'])}}}, ratio $i = {sig(sel.catalog['ratio'][r].m_as(''))}$"
-            rf" (series {latex_escape(str(sel.catalog.text['series'][r]))})"]
+    sel = r.selection
+    row = int(sel.order[0])
+    return [rf"Gearbox \textbf{{{latex_escape(sel.selected)}}}, ratio $i = {sig(sel.best.ratio)}$"
+            rf" (series {latex_escape(str(sel.catalog.text['series'][row]))})"]
 
 
 inputs = results = nothing

@@ -9,7 +9,7 @@ import numpy as np
 from ..motor import T_1_back, T_1_drive, T_1rms, alpha_1, driven_back
 from ..sections.motor import output_load
 from ..units import Q_, latex_unit, sig
-from .common import checks_table, input_row, nothing, results_of
+from .common import checks_table, input_row, nothing, result_of
 from .latex import itemize, latex_escape, prose, step_block
 
 NAME = "motor"
@@ -61,11 +61,11 @@ def steps(report) -> list[str]:
 
 
 def checks(report) -> list[str]:
-    m = results_of(NAME, report)
-    if not m:
+    m = result_of(NAME, report)
+    if m is None:
         return []
-    out = [checks_table({"checks": m["checks"]}, f"The motor through gearbox {m['gearbox']}")] if m["checks"] else []
-    return out + ([itemize([latex_escape(n) for n in m["notes"]])] if m["notes"] else [])
+    out = [checks_table(m.row_checks, f"The motor through gearbox {m.part}")] if m.row_checks else []
+    return out + ([itemize([latex_escape(n) for n in m.notes])] if m.notes else [])
 
 
 def figures(report) -> list:

@@ -67,6 +67,16 @@ class Results:
     def verdict(self) -> Verdict:
         return Verdict.combine([r.verdict() for r in self.sections.values()], NOTHING_CHECKED)
 
+    def governing(self) -> list:
+        """The governing checks of each section that has checks (:class:`calc.sections.common.Governing`)."""
+        return [g for r in self.sections.values() if hasattr(r, "governing") and (g := r.governing()) is not None]
+
+    def not_made(self) -> list[str]:
+        """Every governing check not made, each with why; and the motor's checks left out for want
+        of a rating."""
+        return [x for g in self.governing() for x in g.not_made] + [
+            x for r in self.sections.values() if hasattr(r, "unchecked") for x in r.unchecked()]
+
     def __getitem__(self, name: str):
         return self.sections[name]
 

@@ -5,6 +5,7 @@ E11 to E13), and the required values checked."""
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -18,7 +19,7 @@ from ..units import Q_, fmt, parse_quantity, sig
 from ..measurement import measurement_path
 from ..stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
-from .common import Verdict, number, quantity, quantity_text
+from .common import Governing, Verdict, number, quantity, quantity_text
 
 NAME = "accuracy"
 ORDER = 80
@@ -563,6 +564,16 @@ class AccuracyResult:
                 + (f"  (as arcs: {quantity_text(k['value_arc'])} <= {quantity_text(k['required_arc'])})" if "value_arc" in k else "")
             )
         return lines
+
+    def governing(self) -> Governing | None:
+        """The checks against the case's requirements (the chain's value as the required side, the
+        case's limit as the rated one); a value that is a lower bound decides nothing. None
+        without requirements."""
+        checks = []
+        for k in (c.at(0) for c in requirement_checks(self.inputs, self.accuracy)):
+            why = not_known(self.inputs, k.name)
+            checks.append(k if why is None else dataclasses.replace(k, passes=None, utilization=None, not_made=why, at_least=True))
+        return Governing(NAME, None, True, checks) if checks else None
 
     def verdict(self) -> Verdict | None:
         """The required values govern; a chain without requirements decides nothing."""

@@ -73,6 +73,30 @@ def no_candidate_passes(sentence: str, parts, order, reasons) -> list[str]:
     return [sentence] + [f"{parts[row]}: {'; '.join(reasons(row))}" for row in order[:REASONED_CANDIDATES]]
 
 
+@dataclass(frozen=True)
+class Governing:
+    """The checks that decide a section's verdict (:class:`calc.checks.Check`), and whose they
+    are: a candidate's (``part``; ``chosen`` False where none passes and it is only the closest),
+    or the section's own (``part`` None)."""
+
+    section: str
+    part: str | None
+    chosen: bool
+    checks: list
+
+    @property
+    def not_made(self) -> list[str]:
+        """Each check not made, with why: ``gearbox NPS045-10: F_2R: the catalog gives no F_2R``."""
+        owner = self.section + (f" {self.part}" if self.part else "")
+        return [f"{owner}: {k.name}: {k.not_made or 'not made'}" for k in self.checks if k.passes is None]
+
+
+def selection_governing(name: str, sel) -> Governing:
+    """The governing checks of a selection's best-ranked candidate (:class:`calc.selection.Selection`)."""
+    best = sel.best
+    return Governing(name, best.part, sel.selected is not None, best.governing)
+
+
 def selection_verdict(sel, what: str, fails: str) -> Verdict:
     """The verdict of a selection (:class:`calc.selection.Selection`): it passes where a part is
     chosen; it is not decided where the best row passes every check made but a governing check

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import coupling as cp
 from ..bands import factor_table
 from ..case import Case, Declared, Key, Table, once
 from ..catalog import Catalog, display_path, load_catalogs
@@ -21,9 +22,9 @@ from ..fits import parse_bore
 from ..gearbox import n_1
 from ..profile import Z_h
 from ..torsion import Member, gearbox_at_input, inertia_at_output, load_at_input
-from ..units import Value, fmt, sig
+from ..units import Q_, Value, fmt, sig
 from . import gearbox
-from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, json_of, selection_verdict
+from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, selection_governing, selection_verdict
 
 NAME = "coupling"
 ORDER = 50
@@ -290,6 +291,10 @@ class BoreResult:
                 "lower": json_of(self.lower), "upper": json_of(self.upper), "keyway": json_of(self.keyway)}
 
 
+#: How the coupling candidates are ranked (:func:`calc.checks.rank`).
+RANKING = "passing first; published rows before illustrative ones; then smallest rated torque T_KN; then lowest worst utilization"
+
+
 @dataclass
 class CouplingResult:
     """The coupling section as read, its candidates checked and ranked, and the part chosen; the
@@ -297,6 +302,7 @@ class CouplingResult:
 
     inputs: CouplingCase
     selection: CouplingSelection
+    ranking = RANKING
 
     @functools.cached_property
     def notes(self) -> list[str]:
@@ -381,6 +387,49 @@ class CouplingResult:
             checks=[c.at(row) for c in sel.checks if c.name == "f_1"],
         )
 
+    @functools.cached_property
+    def torque_steps(self) -> list:
+        """(title, Step, what it is compared with) of M_N; of an elastomer best-ranked row also
+        M_N · K_ϑ and M_Smax; then 2 f_er. Empty where a check cannot be made (no M_N to show)."""
+        x, sel = self.inputs.inputs, self.selection
+        if sel.not_made:
+            return []
+        row = int(sel.order[0])
+        part = str(sel.catalog.parts[row])
+        m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
+        out = [("Nominal torque of the coupling", m_n, "compared with T_KN")]
+        if sel.row_type(row) == "elastomer":
+            bands = x["temperature_factors"]
+            band = bands.text(int(bands.band(x["temperature"], "coupling.temperature")))
+            k_t = Q_(float(sel.temperature_factor[row]), "")
+            out.append((f"With the temperature factor ({part})", cp.M_Nt.step(M_N=m_n.result, K_T=k_t),
+                        f"the factor of the band {band} ({bands.source})"))
+            if sel.M_Smax is not None:
+                starts = x["start_factors"]
+                s_band = starts.text(int(starts.band(x["starts_per_hour"], "coupling.starts_per_hour")))
+                out.append((f"Peak torque with the start and temperature factors ({part})",
+                            cp.M_Smax.step(T_S=m_n.result, S_z=Q_(sel.start_factor, ""), K_T=k_t),
+                            f"compared with T_Kmax; S_z of the band {s_band} ({starts.source})"))
+        return out + [("Lowest natural frequency allowed", cp.f_e_min.step(f_er=x["excitation_frequency"]), "")]
+
+    @functools.cached_property
+    def resonance_steps(self) -> list:
+        """(title, Step, what it is compared with) of the best-ranked row's two-mass natural
+        frequency: J_A, J_L, a line shaft's stiffness, f_e. Empty where f_e has no value."""
+        x, sel = self.inputs.inputs, self.selection
+        row = int(sel.order[0])
+        if sel.not_made or np.isnan(sel.f_e[row].magnitude):
+            return []
+        cat = sel.catalog
+        J = cat["J"][row]
+        out = [("Drive side with half the coupling", cp.J_A.step(J_drive=x["drive_inertia"], J_K=J), ""),
+               ("Load side with half the coupling", cp.J_L.step(J_load=x["load_inertia"], J_K=J), "")]
+        if sel.row_type(row) == "line-shaft" and x["shaft_distance"] is not None:
+            z = cp.Z.step(A=x["shaft_distance"], H=cat["H"][row])
+            out += [("Tube length", z, ""),
+                    ("Stiffness of the line shaft", cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row]), "")]
+        return out + [("Natural frequency", cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L=sel.J_L[row]), "compared with 2 f_er")]
+
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         """The ``coupling`` results of the JSON contract."""
         cc, sel = self.inputs, self.selection
@@ -422,7 +471,7 @@ class CouplingResult:
             "start_factor": sel.start_factor,
             "f_e_min": self.f_e_min.to_json(),
             "bores": [b.to_json() for b in self.bores],
-            "ranking": RANKING,
+            "ranking": self.ranking,
             "candidate_count": len(sel.order),
             "candidates": listed,
             "selected": sel.selected,
@@ -470,12 +519,11 @@ class CouplingResult:
             return "none: " + "; ".join(c.reason(int(sel.order[0])) for c in sel.not_made)
         return "none passes"
 
+    def governing(self) -> Governing:
+        return selection_governing(NAME, self.selection)
+
     def verdict(self) -> Verdict:
         return selection_verdict(self.selection, "coupling", "its checks")
-
-
-#: How the coupling candidates are ranked (:func:`calc.checks.rank`).
-RANKING = "passing first; published rows before illustrative ones; then smallest rated torque T_KN; then lowest worst utilization"
 
 
 def applies(case: Case) -> bool:

@@ -14,7 +14,7 @@ from ..errors import CalcError
 from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
 from ..profile import Z_h, n_2m
 from ..units import Q_, sig
-from .common import SHOWN_CANDIDATES, Verdict, check_json, check_line, json_of, selection_verdict
+from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, selection_governing, selection_verdict
 
 NAME = "gearbox"
 ORDER = 40
@@ -97,6 +97,7 @@ class GearboxResult:
     selection: GearboxSelection
     #: (title, calc.formula.Step, what it is compared with) of the best-ranked row's checks
     steps: list = field(default_factory=list)
+    ranking = RANKING
 
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         s = self.selection
@@ -126,7 +127,7 @@ class GearboxResult:
             "catalog_sha256": s.catalog.sha256,
             "catalogs": [{"catalog": display_path(path), "sha256": sha} for path, sha in s.catalog.members],
             "mode": s.mode,
-            "ranking": RANKING,
+            "ranking": self.ranking,
             "candidate_count": len(s.order),
             "candidates": listed,
             "selected": s.selected,
@@ -154,6 +155,9 @@ class GearboxResult:
         lines += [f"  note: {note}" for note in s.notes or []]
         lines.append(f"Selected gearbox: {s.selected or ('none: ' + s.not_made[0].not_made if s.not_made else 'none passes')}")
         return lines
+
+    def governing(self) -> Governing:
+        return selection_governing(NAME, self.selection)
 
     def verdict(self) -> Verdict:
         s = self.selection

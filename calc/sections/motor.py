@@ -15,7 +15,7 @@ from ..gearbox import n_1
 from ..motor import MotorLoad, OutputLoad, motor_checks, motor_load
 from ..units import fmt
 from . import coupling, duty, gearbox
-from .common import Verdict, check_json, check_line, quantity, quantity_text
+from .common import Governing, Verdict, check_json, check_line, quantity, quantity_text
 
 NAME = "motor"
 ORDER = 60
@@ -83,6 +83,11 @@ class MotorResult:
     checks: list  # CheckArray of one row each
     notes: list
 
+    @property
+    def row_checks(self) -> list:
+        """The motor's checks (:class:`calc.checks.Check`) through the gearbox."""
+        return [c.at(0) for c in self.checks]
+
     def to_json(self, candidates: int | None = None) -> dict:
         load = self.load
         return {
@@ -96,7 +101,7 @@ class MotorResult:
             "peak_torque_required": None if load is None else quantity(load.peak[0], "N*m", "motor.peak_torque_required"),
             "rms_torque_required": None if load is None else quantity(load.rms[0], "N*m", "motor.rms_torque_required"),
             "max_speed_required": quantity(self.speed[0], "rpm", "motor.max_speed_required"),
-            "checks": [check_json(c.at(0)) for c in self.checks],
+            "checks": [check_json(c) for c in self.row_checks],
             "notes": list(self.notes),
         }
 
@@ -109,6 +114,15 @@ class MotorResult:
         ]
         lines += [f"        {check_line(c.at(0))}" for c in self.checks]
         return lines + [f"  Note: {n}" for n in self.notes]
+
+    def governing(self) -> Governing | None:
+        """The motor's checks; None where the case gives no rating to check."""
+        governing = [k for k in self.row_checks if k.governs]
+        return Governing(NAME, None, True, governing) if governing else None
+
+    def unchecked(self) -> list[str]:
+        """The motor's checks not made for want of a rating, each with why."""
+        return [f"{NAME}: {n}" for n in self.notes if " not checked" in n]
 
     def verdict(self) -> Verdict | None:
         """False where a check fails, None where one cannot be made; no verdict without a rating."""
