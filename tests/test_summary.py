@@ -18,7 +18,10 @@ import pytest
 from calc.catalog import display_path
 from calc.publish import render_summary, summary_rows
 from calc.report import build_report
+from calc import Q_
+from calc.checks import Check
 from calc.report.summary import CSV_COLUMNS, worst_check, write_csv
+from calc.sections.common import Governing
 
 from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, REPORT_CASES, run
 from .test_report import needs_tex, pdf_text, report_here
@@ -91,22 +94,24 @@ def check_row_against_json(capsys, row: dict, case):
 
 
 def test_worst_check_takes_governing_checks_with_a_utilization():
-    # Hand-built results: the S1 pair of an S5 case is for information only; a check not made has
-    # no utilization; accuracy's own checks count; the second candidate is not the chosen one.
-    results = {
-        "title": "t", "verdict": {"passes": True, "reasons": []}, "duty": {"mode": "S5"},
-        "gearbox": {"selected": "A", "candidates": [
-            {"part": "A", "checks": [{"name": "n_1N", "criterion": "n_2m · i <= n_1N", "governs": False, "utilization": 1.4},
-                                     {"name": "T_2B", "criterion": "T_2max <= T_2B", "governs": True, "utilization": 0.5}]},
-            {"part": "B", "checks": [{"name": "T_2B", "criterion": "T_2max <= T_2B", "governs": True, "utilization": 0.9}]}]},
-        "motor": {"checks": [{"name": "rms", "criterion": "rms <= rated", "utilization": None}]},
-        "accuracy": {"checks": [{"name": "positioning_accuracy", "criterion": "positioning_accuracy <= required",
-                                 "utilization": 0.7}]},
-    }
-    assert worst_check(results) == {"utilization": 0.7, "check": "positioning_accuracy <= required", "section": "accuracy", "part": None}
-    results["accuracy"]["checks"][0]["utilization"] = 0.3
-    assert worst_check(results) == {"utilization": 0.5, "check": "T_2max <= T_2B", "section": "gearbox", "part": "A"}
-    assert worst_check({"title": "t", "duty": {}}) is None
+    # Hand-built governing checks: a check not made has no utilization; accuracy's own checks
+    # count; the closest gearbox counts where none is chosen.
+    def check(name, criterion, utilization):
+        return Check(name, criterion, Q_(1.0, "N*m"), Q_(1.0, "N*m"), "N*m", utilization, utilization is not None and utilization <= 1)
+
+    class Evaluated:
+        def __init__(self, *governing):
+            self.governing = lambda: list(governing)
+
+    gearbox = Governing("gearbox", "A", False, [check("T_2B", "T_2max <= T_2B", 0.5)])
+    motor = Governing("motor", None, True, [check("rms", "rms <= rated", None)])
+    accuracy = Governing("accuracy", None, True, [check("positioning_accuracy", "positioning_accuracy <= required", 0.7)])
+    assert worst_check(Evaluated(gearbox, motor, accuracy)) == {
+        "utilization": 0.7, "check": "positioning_accuracy <= required", "section": "accuracy", "part": None}
+    lower = Governing("accuracy", None, True, [check("positioning_accuracy", "positioning_accuracy <= required", 0.3)])
+    assert worst_check(Evaluated(gearbox, motor, lower)) == {"utilization": 0.5, "check": "T_2max <= T_2B", "section": "gearbox", "part": "A"}
+    assert worst_check(Evaluated()) is None
+    assert worst_check(Evaluated(motor)) is None
 
 
 def test_summary_rows_are_plain_data_one_per_case(capsys, tmp_path):

@@ -28,26 +28,21 @@ NONE_PASSES = "none passes"
 _LINKABLE = re.compile(r"[A-Za-z0-9._+-]+\.pdf")
 
 
-def worst_check(results: dict) -> dict | None:
-    """The governing check with the highest utilization of the whole case: of the first candidate
-    of each section that ranks candidates (the chosen part, or the closest when none passes), and
-    of each section's own checks (the accuracy against its requirements). None when no governing
-    check has a utilization.
+def worst_check(results) -> dict | None:
+    """The governing check with the highest utilization of the whole case (a
+    :class:`calc.sections.Results`): of the first candidate of each section that ranks candidates
+    (the chosen part, or the closest when none passes), and of each section's own checks (the
+    motor's, the accuracy against its requirements). None when no governing check has a
+    utilization.
 
     Returns ``{"utilization", "check", "section", "part"}``; ``check`` is the criterion as the
     results write it (``T_2max <= T_2B``), ``part`` None for a section's own checks.
     """
     worst = None
-    for section, s in results.items():
-        if not isinstance(s, dict):
-            continue
-        first = s["candidates"][0] if s.get("candidates") else None
-        for k in first.get("checks", []) if first else s.get("checks", []):
-            if not k.get("governs", True) or k.get("utilization") is None:
-                continue
-            if worst is None or k["utilization"] > worst["utilization"]:
-                worst = {"utilization": k["utilization"], "check": k.get("criterion") or k["name"], "section": section,
-                         "part": first.get("part") if first else None}
+    for g in results.governing():
+        for k in g.checks:
+            if k.utilization is not None and (worst is None or k.utilization > worst["utilization"]):
+                worst = {"utilization": k.utilization, "check": k.criterion or k.name, "section": g.section, "part": g.part}
     return worst
 
 
@@ -61,15 +56,15 @@ def summary_row(report, pdf: Path | None) -> dict:
 
     ``report`` is a :class:`calc.report.Report`.
     """
-    results = report.results or {}
+    sections = report.evaluated.sections if report.evaluated is not None else {}
     verdict = report.verdict
     return {
         "case": display_path(report.path),
         "title": report.title,
         "verdict": verdict.word,
         "passes": verdict.passes,
-        "chosen": {name: results[name].get("selected") for name in CHOSEN if name in results},
-        "worst": worst_check(results),
+        "chosen": {name: sections[name].selection.selected for name in CHOSEN if name in sections},
+        "worst": None if report.evaluated is None else worst_check(report.evaluated),
         "report": None if pdf is None else pdf.name,
         "report_path": None if pdf is None else str(pdf),
         "error": report.error,

@@ -401,11 +401,11 @@ class DesignReview:
     def _idle_inputs(self, report) -> None:
         """An input that has no effect on the design as it stands says so under its row (a
         temperature on a coupling type without a temperature factor)."""
-        if "coupling.temperature" not in self._messages or report.results is None:
+        if "coupling.temperature" not in self._messages or report.evaluated is None:
             return
-        c = report.results.get("coupling") or {}
+        c = report.evaluated.sections.get("coupling")
         idle = ""
-        if c.get("type") == "bellows":
+        if c is not None and c.inputs.type == "bellows":
             idle = "no effect on this design: a metal bellows coupling has no temperature factor (E9)"
         self._show_message("coupling.temperature", idle)
 

@@ -125,27 +125,14 @@ def _table(header: list[str], rows: list[list[str]], numeric: set[int] = frozens
     return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
 
 
-def _governing(r: dict) -> str:
+def _governing(results) -> str:
     """The governing checks of each chosen part (the closest candidate where none passes), the
     motor's and the accuracy requirements, one row each."""
     rows = []
-    for name in ("gearbox", "coupling"):
-        s = r.get(name)
-        if not s or not s.get("candidates"):
-            continue
-        c = s["candidates"][0]
-        who = f"{name} {escape(c['part'])}" + ("" if s.get("selected") else " (closest)")
-        for k in c["checks"]:
-            if k.get("governs", True):
-                rows.append([who, typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]),
-                             _verdict_cell(k["passes"], k.get("not_made"))])
-    for k in (r.get("motor") or {}).get("checks", []):
-        if k.get("governs", True):
-            rows.append(["motor", typeset(k["criterion"] or k["name"]), _q(k["required"]), _q(k["rated"]), _utilization(k["utilization"]),
-                         _verdict_cell(k["passes"], k.get("not_made"))])
-    for k in (r.get("accuracy") or {}).get("checks", []):
-        rows.append(["accuracy", typeset(k["criterion"]), ("≥ " if k["passes"] is None else "") + _q(k["value"]), _q(k["required"]),
-                     _utilization(k["utilization"]), _verdict_cell(k["passes"], k.get("not_made"))])
+    for g in results.governing():
+        who = g.section + (f" {escape(g.part)}" if g.part else "") + ("" if g.chosen else " (closest)")
+        rows += [[who, typeset(k.criterion or k.name), ("≥ " if k.at_least else "") + _q(k.required_value), _q(k.rated_value),
+                  _utilization(k.utilization), _verdict_cell(k.passes, k.not_made)] for k in g.checks]
     if not rows:
         return ""
     return "<h3>Governing checks</h3>" + _table(["part", "check", "required", "rated", "utilization", "verdict"], rows, numeric={2, 3, 4})
@@ -178,11 +165,6 @@ def _motion(r: dict, typed_by_hand: bool) -> str:
     return '<div class="values">Motion: ' + " · ".join(p for p in parts if p) + "</div>"
 
 
-def _worst(c: dict):
-    us = [k["utilization"] for k in c["checks"] if k.get("governs", True) and k["utilization"] is not None]
-    return max(us) if us else None
-
-
 def _shown(rows: list, shown: int | None) -> tuple[list, str]:
     """The first ``shown`` rows (all for None), and a note of how many are left out."""
     if shown is None or len(rows) <= shown:
@@ -190,47 +172,52 @@ def _shown(rows: list, shown: int | None) -> tuple[list, str]:
     return rows[:shown], f"<div class=note>{shown} of {len(rows)} candidates shown; tick <i>all candidates</i> for the rest.</div>"
 
 
-def _gearbox_table(g: dict, shown: int | None) -> str:
+def _gearbox_table(g, shown: int | None) -> str:
+    """The gearbox candidates (a :class:`calc.sections.gearbox.GearboxResult`), best first."""
+    sel = g.selection
     rows = [
-        [str(k), escape(c["part"]), _verdict_cell(c["passes"]), _utilization(_worst(c)), _q(c.get("T2max")),
-         "" if c.get("inertia_ratio") is None else sig(c["inertia_ratio"], 3), "illustrative" if c.get("illustrative") else "",
-         "<br>".join(typeset(x) for x in c.get("reasons", []))]
-        for k, c in enumerate(g["candidates"], start=1)
+        [str(k), escape(c.part), _verdict_cell(c.passes), _utilization(c.worst), _q(c.T_2max),
+         "" if c.inertia_ratio is None else sig(c.inertia_ratio, 3), "illustrative" if c.illustrative else "",
+         "<br>".join(typeset(x) for x in c.reasons)]
+        for k, c in enumerate(sel.candidates(), start=1)
     ]
     header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data", "reasons"]
     rows, more = _shown(rows, shown)
-    return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g['ranking'])}</div>"
-            + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if g.get("selected") else None) + more)
+    return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}</div>"
+            + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None) + more)
 
 
-def _coupling_table(s: dict, shown: int | None) -> str:
+def _coupling_table(s, shown: int | None) -> str:
+    """The coupling candidates (a :class:`calc.sections.coupling.CouplingResult`), best first, and
+    the drive train's modes."""
     def rated(c, name):
-        return next((_q(k["rated"]) for k in c["checks"] if k["name"] == name), "")
+        return next((_q(k.rated_value) for k in c.checks if k.name == name), "")
 
+    sel = s.selection
     rows = [
-        [str(k), escape(c["part"]), escape(c.get("type", "")), _verdict_cell(c["passes"]), _q(c.get("required_torque")), rated(c, "T_KN"),
-         _q(c.get("f_e")), _q(c.get("f_1")), _utilization(_worst(c)), "<br>".join(typeset(x) for x in c.get("reasons", []))]
-        for k, c in enumerate(s["candidates"], start=1)
+        [str(k), escape(c.part), escape(c.type), _verdict_cell(c.passes), _q(c.required_torque), rated(c, "T_KN"),
+         _q(c.f_e), _q(c.f_1), _utilization(c.worst), "<br>".join(typeset(x) for x in c.reasons)]
+        for k, c in enumerate(sel.candidates(), start=1)
     ]
     header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"), typeset("f_1"), "worst utilization", "reasons"]
-    notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in s.get("notes", []))
+    notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in s.notes)
     rows, more = _shown(rows, shown)
-    return (f"<h3>Coupling candidates</h3><div class=note>{typeset(s['ranking'])}</div>"
-            + _table(header, rows, numeric={0, 4, 5, 6, 7, 8}, marked=0 if s.get("selected") else None) + more + notes
-            + _torsion_table(s.get("torsion")))
+    return (f"<h3>Coupling candidates</h3><div class=note>{typeset(s.ranking)}</div>"
+            + _table(header, rows, numeric={0, 4, 5, 6, 7, 8}, marked=0 if sel.selected else None) + more + notes
+            + _torsion_table(s.torsion))
 
 
-def _torsion_table(t: dict | None) -> str:
-    """The drive train as masses and springs with its natural frequencies (results' coupling.torsion)."""
-    if not t:
+def _torsion_table(t) -> str:
+    """The drive train as masses and springs with its natural frequencies (:class:`calc.sections.coupling.Torsion`)."""
+    if t is None:
         return ""
-    springs = [*t["springs"], None]
-    rows = [[escape(m["members"]), _q(m["J"]), escape(k["member"]) if k else "", _q(k["C"]) if k else ""] for m, k in zip(t["masses"], springs)]
-    frequencies = ", ".join(_q(f) for f in t["natural_frequencies"])
-    check = "".join(f"<div class=note>{typeset(c['criterion'])}: {_q(c['rated'])}, utilization {_utilization(c['utilization'])}"
-                    f"{'' if c['governs'] else ' (for information)'}</div>" for c in t["checks"])
-    missing = "" if t["complete"] else f"<div class=note>incomplete: the case does not give {escape('; '.join(t['missing']))}</div>"
-    return (f"<h3>Drive train with {escape(t['part'])}, at {escape(t['shaft'])}</h3>"
+    rows = [[escape(members), _q(J), escape(spring[0]) if spring else "", _q(spring[1]) if spring else ""]
+            for (members, J), spring in zip(t.masses, [*t.springs, None])]
+    frequencies = ", ".join(_q(f) for f in t.natural_frequencies)
+    check = "".join(f"<div class=note>{typeset(c.criterion)}: {_q(c.rated_value)}, utilization {_utilization(c.utilization)}"
+                    f"{'' if c.governs else ' (for information)'}</div>" for c in t.checks)
+    missing = "" if t.complete else f"<div class=note>incomplete: the case does not give {escape('; '.join(t.missing))}</div>"
+    return (f"<h3>Drive train with {escape(t.part)}, at {escape(t.shaft)}</h3>"
             + _table(["masses", "inertia", "spring to the next", "stiffness"], rows, numeric={1, 3})
             + f"<div class=note>natural frequencies {frequencies} (rigid-body mode left out)</div>" + check + missing)
 
@@ -247,25 +234,9 @@ def _accuracy_table(a: dict) -> str:
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
 
 
-def not_made(r: dict) -> list[str]:
-    """The checks of the results that were not made, each with why: those of the chosen parts
-    (the closest candidates where none passes), the accuracy's, and the motor's checks the case
-    gives no rating for."""
-    out = []
-    for name in ("gearbox", "coupling"):
-        s = r.get(name)
-        if s and s.get("candidates"):
-            c = s["candidates"][0]
-            out += [f"{name} {c['part']}: {k['name']}: {k.get('not_made') or 'not made'}"
-                    for k in c["checks"] if k.get("governs", True) and k["passes"] is None]
-    out += [f"accuracy: {k['name']}: {k.get('not_made') or 'not made'}" for k in (r.get("accuracy") or {}).get("checks", []) if k["passes"] is None]
-    out += [f"motor: {n}" for n in (r.get("motor") or {}).get("notes", []) if " not checked" in n]
-    return out
-
-
-def _not_made_html(r: dict | None) -> str:
+def _not_made_html(results) -> str:
     """Beside the verdict: how many checks were not made, and (a click away) which and why."""
-    missing = not_made(r) if r is not None else []
+    missing = results.not_made() if results is not None else []
     if not missing:
         return ""
     items = "".join(f"<li>{typeset(x)}</li>" for x in missing)
@@ -294,65 +265,60 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused) 
     chosen = " · ".join(f"{escape(w)} <b>{escape(p)}</b>" if p else f"{escape(w)} <span class=fail>none passes</span>" for w, p, _ in report.chosen)
     link = f' <a href="{escape(report_link)}" target="_blank">calc report</a>' if report_link else ""
     out = [STYLE, '<div class="dr">', f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}'
-           f"{_not_made_html(report.results)}</div>"]
+           f"{_not_made_html(report.evaluated)}</div>"]
     if refused:
         out.append('<div class="refused"><b>Not applied</b> (the results are those of the values before): '
                    + "; ".join(typeset(x) for x in refused) + "</div>")
     reasons = [*left_out, *report.reasons]
     if reasons and not passes:
         out.append('<ul class="reasons">' + "".join(f"<li>{typeset(x)}</li>" for x in reasons) + "</ul>")
-    r = report.results
-    if r is not None:
-        out += [_governing(r), _motion(r, typed_by_hand), _duty(r)]
-        if r.get("gearbox"):
-            out.append(_gearbox_table(r["gearbox"], shown))
-        if r.get("coupling"):
-            out.append(_coupling_table(r["coupling"], shown))
+    r, evaluated = report.results, report.evaluated
+    if evaluated is not None:
+        out += [_governing(evaluated), _motion(r, typed_by_hand), _duty(r)]
+        if "gearbox" in evaluated.sections:
+            out.append(_gearbox_table(evaluated["gearbox"], shown))
+        if "coupling" in evaluated.sections:
+            out.append(_coupling_table(evaluated["coupling"], shown))
         if r.get("accuracy"):
             out.append(_accuracy_table(r["accuracy"]))
     out.append("</div>")
     return "".join(out)
 
 
-def comparison_rows(variants: list[tuple[str, dict]]) -> list[tuple[str, list[str]]]:
-    """The side-by-side comparison of designs, ``(name, results as the JSON contract has them)``:
-    one row per quantity (verdict, chosen parts, the worst governing utilization of each, the
-    checks not made, the duty and accuracy values), one column per design, as plain text."""
+def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[str]]]:
+    """The side-by-side comparison of designs, ``(name, report)``: one row per quantity (verdict,
+    chosen parts, the worst governing utilization of each, the checks not made, the duty and
+    accuracy values), one column per design, as plain text."""
+    def section(r, name):
+        return r.evaluated.sections.get(name) if r.evaluated is not None else None
+
     def chosen(r, name):
-        s = r.get(name)
-        if not s:
-            return ""
-        return s["selected"] or "none passes"
+        s = section(r, name)
+        return "" if s is None else s.selection.selected or "none passes"
 
     def worst(r, name):
-        s = r.get(name)
-        if not s or not s.get("candidates"):
-            return ""
-        u = _worst(s["candidates"][0])
+        s = section(r, name)
+        u = None if s is None else s.selection.best.worst
         return "" if u is None else f"{100 * u:.0f} %"
 
     def value(r, *path):
-        d = r
+        d = r.results
         for p in path:
             d = (d or {}).get(p)
         return "" if d is None else str(in_system(d))
 
-    def verdict(r):
-        v = r.get("verdict") or {}
-        return {True: "PASS", False: "FAIL"}.get(v.get("passes"), "NOT DECIDED")
-
     rows = [
-        ("verdict", verdict),
+        ("verdict", lambda r: r.verdict.word),
         ("gearbox", lambda r: chosen(r, "gearbox")),
         ("gearbox worst utilization", lambda r: worst(r, "gearbox")),
         ("coupling", lambda r: chosen(r, "coupling")),
         ("coupling worst utilization", lambda r: worst(r, "coupling")),
-        ("checks not made", lambda r: str(len(not_made(r)))),
-        ("mode", lambda r: (r.get("duty") or {}).get("mode", "")),
+        ("checks not made", lambda r: str(len(r.evaluated.not_made()) if r.evaluated is not None else 0)),
+        ("mode", lambda r: ((r.results or {}).get("duty") or {}).get("mode", "")),
         ("ED", lambda r: value(r, "duty", "ED")),
         ("T_2max", lambda r: value(r, "cyclic", "T2max")),
         ("T_2m", lambda r: value(r, "continuous", "T2m")),
-        ("positioning accuracy", lambda r: ("≥ " if (r.get("accuracy") or {}).get("unknown") else "") + value(r, "accuracy", "positioning_accuracy")),
+        ("positioning accuracy", lambda r: ("≥ " if ((r.results or {}).get("accuracy") or {}).get("unknown") else "") + value(r, "accuracy", "positioning_accuracy")),
         ("lost motion", lambda r: value(r, "accuracy", "lost_motion")),
     ]
     return [(name, [f(r) for _, r in variants]) for name, f in rows]
@@ -363,7 +329,7 @@ def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> s
     ``system``; a value that differs from the first variant's is highlighted."""
     token = SYSTEM.set(system)
     try:
-        rows = comparison_rows([(n, r.results or {"verdict": {"passes": r.verdict.passes}}) for n, r in variants])
+        rows = comparison_rows(variants)
     finally:
         SYSTEM.reset(token)
     head = "".join(f"<th>{escape(n)}</th>" for n, _ in variants)
@@ -423,9 +389,12 @@ def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
     from pathlib import Path
 
     from ..case import read_case
-    from ..sections import evaluate
+    from ..errors import CalcError
 
-    designs = [(Path(p).name, evaluate(read_case(p)).to_json()) for p in paths]
+    designs = [(Path(p).name, report_of(read_case(p))) for p in paths]
+    for _, r in designs:
+        if r.error is not None:
+            raise CalcError(r.error)
     rows = comparison_rows(designs)
     names = [n for n, _ in designs]
     if pdf is not None:
