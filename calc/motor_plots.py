@@ -33,7 +33,8 @@ def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak
     T = np.atleast_2d(torques.T_1.m_as("N*m"))[row]
     fig = Figure(figsize=(7.5, 3.8), layout="constrained")
     ax = fig.subplots()
-    ax.stairs(T, t, color="tab:blue", linewidth=1.6, label="motor torque $T_1$", baseline=None)
+    # Steps drawn as one line (a stairs patch of thousands of samples costs a second to lay out).
+    ax.plot(t, np.append(T, T[-1]), drawstyle="steps-post", color="tab:blue", linewidth=1.6, label="motor torque $T_1$")
     rms = float(np.atleast_1d(torques.rms.m_as("N*m"))[row])
     ax.axhline(rms, color="tab:green", linestyle="-.", linewidth=1.2, label=f"RMS {rms:.3g} N·m")
     if rated_torque is not None:

@@ -12,6 +12,7 @@ case (:mod:`calc.report.summary`), the rows :func:`summary_rows` gives the desig
 
 from __future__ import annotations
 
+import contextlib
 import shutil
 import sys
 from pathlib import Path
@@ -84,11 +85,16 @@ def summary_rows(cases, output: str | None = None) -> list[dict]:
 
 
 def _without_iri_grammars() -> None:
-    """Keep jsonschema (imported by nbformat) from compiling the IRI grammars of rfc3987_syntax,
-    when that is installed: some 40 of them, 2 s of CPU at every import, for a format check that
-    no notebook's schema uses. A process that imported jsonschema already keeps what it has."""
+    """Keep jsonschema (imported by nbformat, which nbconvert imports) from compiling the IRI
+    grammars of rfc3987_syntax, when that is installed: some 40 of them, 2 s of CPU at every
+    import, for a format check that no notebook's schema uses. Done once, as this module is
+    imported, before any import of nbconvert; a process that imported jsonschema already keeps
+    what it has."""
     if "jsonschema" not in sys.modules:
         sys.modules.setdefault("rfc3987_syntax", None)
+
+
+_without_iri_grammars()
 
 
 #: What xelatex writes to its log when a second pass would set the document differently (page
@@ -100,7 +106,6 @@ def exporter():
     """nbconvert's PDF exporter with our template, code and prompts hidden; xelatex runs until its
     log asks for no further pass (two for most reports, where nbconvert always runs three), and
     no bibtex (a report cites no bibliography)."""
-    _without_iri_grammars()
     from nbconvert import PDFExporter
     from nbconvert.exporters.pdf import LatexFailed
     from traitlets.config import Config
@@ -143,31 +148,77 @@ def figure_pdf(figure) -> str:
     return base64.b64encode(buffer.getvalue()).decode("ascii")
 
 
-def report_notebook(report):
+#: The report whose figures forked workers make (:func:`figures_made`).
+_MAKING = None
+
+
+def _block_figures(k: int) -> list[tuple[str, str]]:
+    """The figures of block ``k`` (:data:`calc.report.BLOCKS`) of :data:`_MAKING`, as (PDF, caption)."""
+    from .report import BLOCKS
+
+    return [(figure_pdf(figure), caption) for figure, caption in BLOCKS[k].figures(_MAKING)]
+
+
+@contextlib.contextmanager
+def figures_made(report, jobs: int = 1):
+    """A function giving the report's figures (:meth:`calc.report.Report.figures`) as (vector
+    PDF, caption), in their order. With ``jobs`` > 1 they are made from the moment the context
+    opens, ``jobs`` blocks at a time in processes forked from this one, while this one goes on
+    (making and writing the figures is most of a report's time)."""
+    if jobs <= 1 or report.case is None:
+        yield lambda: [(figure_pdf(figure), caption) for figure, caption in report.figures()]
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    import matplotlib.figure  # noqa: F401 (imported once here, not in every worker)
+
+    from .report import BLOCKS
+
+    global _MAKING
+    _MAKING = report
+    try:
+        with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork")) as pool:
+            # The last blocks (the accuracy's loops and traces) have the most figures: they start first.
+            futures = {k: pool.submit(_block_figures, k) for k in reversed(range(len(BLOCKS)))}
+            yield lambda: [x for k in range(len(BLOCKS)) for x in futures[k].result()]
+    finally:
+        _MAKING = None
+
+
+def report_notebook(report, figures=None):
     """The report's blocks (:meth:`calc.report.Report.blocks`) as the outputs of a notebook, the
-    notebook ``reports/calc-report.ipynb`` gives when run, built here without a kernel."""
-    _without_iri_grammars()
+    notebook ``reports/calc-report.ipynb`` gives when run, built here without a kernel;
+    ``figures``: a function giving them as (vector PDF, caption), as :func:`figures_made` does
+    (default: made here, one after the other)."""
     import nbformat
 
     from .report import Latex
 
+    with contextlib.ExitStack() as stack:
+        figures = figures or stack.enter_context(figures_made(report))
+        blocks = report.blocks(figures)
     outputs = []
-    for shown, metadata in report.blocks():
+    for shown, metadata in blocks:
         if isinstance(shown, Latex):
             if shown:
                 outputs.append(nbformat.v4.new_output("display_data", data={"text/latex": str(shown)}))
         else:
-            outputs.append(nbformat.v4.new_output("display_data", data={"application/pdf": figure_pdf(shown), "text/plain": "figure"},
+            outputs.append(nbformat.v4.new_output("display_data", data={"application/pdf": shown, "text/plain": "figure"},
                                                   metadata=metadata))
     return nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(outputs=outputs)])
 
 
-def render_pdf(report, pdf: Path) -> None:
-    """Write the PDF of ``report`` (a :class:`calc.report.Report`) to ``pdf``."""
+def render_pdf(report, pdf: Path, jobs: int = 1) -> None:
+    """Write the PDF of ``report`` (a :class:`calc.report.Report`) to ``pdf``, its figures made
+    ``jobs`` at a time."""
+    with figures_made(report, jobs) as figures:
+        export = exporter()  # importing nbconvert goes on beside the figures
+        notebook = report_notebook(report, figures)
     from nbconvert.exporters.pdf import LatexFailed
 
     try:
-        body, _ = exporter().from_notebook_node(report_notebook(report), resources={"metadata": {"name": pdf.stem}})
+        body, _ = export.from_notebook_node(notebook, resources={"metadata": {"name": pdf.stem}})
     except LatexFailed as exc:
         tail = "\n".join(exc.output.splitlines()[-15:])
         raise CalcError(f"{display_path(report.path)}: xelatex could not typeset the report:\n{tail}") from None
@@ -199,16 +250,16 @@ def render_summary(rows: list[dict], files: list, folder: Path) -> tuple[Path, P
     return pdf, table
 
 
-def build_one(case: Path, pdf: Path) -> dict:
-    """Read, evaluate and typeset one case: its line for the terminal, its summary row, the files
-    its results rest on, and whether it is an input error or does not pass (plain data, so that
-    a worker process can hand it back)."""
+def build_one(case: Path, pdf: Path, jobs: int = 1) -> dict:
+    """Read, evaluate and typeset one case, its figures made ``jobs`` at a time: its line for the
+    terminal, its summary row, the files its results rest on, and whether it is an input error or
+    does not pass (plain data, so that a worker process can hand it back)."""
     from .report import build_report
     from .report.summary import summary_row
 
     report = build_report(case)
     try:
-        render_pdf(report, pdf)
+        render_pdf(report, pdf, jobs)
     except CalcError as exc:
         return {"line": f"ERROR {display_path(case)}: no PDF: {exc}", "row": summary_row(report, None), "files": report.files,
                 "input_error": True, "not_passing": False}
@@ -218,9 +269,10 @@ def build_one(case: Path, pdf: Path) -> dict:
 
 def built(paths: list[Path], pdfs: list[Path], jobs: int):
     """:func:`build_one` of each case, in the order of the cases, ``jobs`` at a time (worker
-    processes forked from this one, which has the package imported already)."""
+    processes forked from this one, which has the package imported already); one case makes its
+    figures ``jobs`` at a time instead."""
     if jobs <= 1 or len(paths) <= 1:
-        yield from map(build_one, paths, pdfs)
+        yield from (build_one(path, pdf, jobs) for path, pdf in zip(paths, pdfs))
         return
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor

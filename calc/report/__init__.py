@@ -231,13 +231,15 @@ class Report:
         sections = self.evaluated.sections if self.evaluated is not None else {}
         return [(name, r) for name, r in sections.items() if isinstance(getattr(r, "selection", None), Selection)]
 
-    def blocks(self) -> list[tuple[object, dict]]:
+    def blocks(self, figures=None) -> list[tuple[object, dict]]:
         """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:
         LaTeX blocks, and each figure with its caption. The report notebook displays them; the PDF
-        is built from them in this process (:mod:`calc.publish`), so both give the same content."""
+        is built from them in this process (:mod:`calc.publish`), so both give the same content.
+        ``figures``: a function giving the (figure, caption) pairs of :meth:`figures` made
+        elsewhere, called once the text is set (the PDF makes them meanwhile, as vector PDF)."""
         out = [(Latex(self.relative(b())), {}) for b in (self.front_page, self.method, self.inputs, self.calculations,
                                                          self.section_results, self.checks, self.candidates, self.figures_heading)]
-        out += [(figure, {"caption": self.relative(caption)}) for figure, caption in self.figures()]
+        out += [(figure, {"caption": self.relative(caption)}) for figure, caption in (figures or self.figures)()]
         return out + [(Latex(self.relative(b())), {}) for b in (self.order_lines, self.appendix)]
 
 
