@@ -135,7 +135,7 @@ def test_example_pdf_has_title_verdict_parts_and_numbers(report_run):
     assert "Load inertia seen by the coupling, through NPT035-10" in text
     for heading in ("Method and assumptions", "Inputs", "Calculations", "Checks", "Candidates", "Figures", "Order"):
         assert re.search(rf"^\s*\d+\s+{heading}", text, re.M), heading
-    assert re.search(r"SHA-256\s+[0-9a-f]{64}", text)
+    assert re.search(r"Case file\s+\S+\s+[0-9a-f]{64}", text)  # each file with its SHA-256 on one row
     pages = int(re.search(r"Page 1 of (\d+)", text).group(1))
     assert pages >= 5
     assert proc.stdout.strip().startswith("PASS  tests/cases/indexing-table-profile.toml: gearbox NPT035-10")

@@ -220,3 +220,16 @@ def test_the_report_notebook_shows_the_blocks_the_pdf_typesets(reports):
     blocks = [(str(b), None) if isinstance(b, Latex) else (None, m["caption"]) for b, m in reports["example"].blocks()]
     built = re.compile(r"\d{4}-\d\d-\d\d \d\d:\d\d UTC")  # the build date, to the minute
     assert [(built.sub("", t or ""), c) for t, c in shown] == [(built.sub("", t or ""), c) for t, c in blocks]
+
+
+@needs_tex
+@pytest.mark.parametrize("name", ["example", "shaft-24", "shock-1.5"])
+def test_the_signature_lines_are_on_the_front_page(pdfs, name):
+    # The front page is what a reviewer signs: the verdict, the governing checks, the title block
+    # with every file's SHA-256 and the signature lines below them, on one page.
+    import subprocess
+
+    pdf, _ = pdfs[name]
+    first = subprocess.run(["pdftotext", "-f", "1", "-l", "1", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
+    assert "Title block" in first and "Approved by" in first
+    assert "generated.csv" in first  # the last file listed (the path breaks in its column)

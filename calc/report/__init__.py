@@ -34,7 +34,7 @@ from ..sections.ratios import search as ratio_search
 from . import accuracy, coupling, gearbox, motor
 from ..selection import Selection
 from .common import ERRATA, INPUT_COLUMNS, rejected_in_full
-from .latex import Latex, itemize, latex_escape, prose, q, render, table, util, verdict_mark
+from .latex import Latex, breakable, itemize, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
 __all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
@@ -128,22 +128,21 @@ class Report:
         if self.chosen:
             rows = [[w, latex_escape(p) if p else r"\textcolor{failred}{none passes}", latex_escape(d)] for w, p, d in self.chosen]
             chosen = table(r"@{}l l p{0.55\linewidth}@{}", ["Part", "Chosen", "Basis"], rows)
-        rows = [
-            ["Case file", rf"\texttt{{{latex_escape(display_path(self.path))}}}"],
-            ["SHA-256", rf"\texttt{{\footnotesize {self.files[0][2]}}}" if self.files else "unreadable"],
-        ]
-        for label, path, digest in self.files[1:]:
-            rows += [[latex_escape(label), rf"\texttt{{{latex_escape(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
-        rows += [
-            ["Built", latex_escape(self.built)],
-            ["Package", latex_escape(PACKAGE)],
-            ["Commit", rf"\texttt{{\footnotesize {latex_escape(self.commit)}}}"],
-        ]
+        # One row per file, its SHA-256 beside it: the signature lines stay on the front page.
+        def digest(text: str) -> str:
+            return rf"\texttt{{\scriptsize {text}}}"
+
+        files = self.files or [("Case file", display_path(self.path), None)]
+        rows = [[latex_escape(label), rf"\texttt{{\footnotesize {breakable(path)}}}", digest(sha) if sha else "unreadable"]
+                for label, path, sha in files]
+        rows += [["Built", latex_escape(self.built), ""], ["Package", latex_escape(PACKAGE), ""],
+                 ["Commit", rf"\multicolumn{{2}}{{p{{0.7\linewidth}}}}{{\texttt{{\footnotesize {latex_escape(self.commit)}}}}}", None]]
+        rows = [[c for c in row if c is not None] for row in rows]
         return Latex(render(
             "front-page.tex.j2", title=self.title, case=display_path(self.path), word=self.verdict.word, passes=self.passes,
             governing=self._governing_lines(), chosen=chosen,
             reasons=[rf"\item {render_reason(r)}" for r in self.reasons],
-            title_block=table(r"@{}l p{0.78\linewidth}@{}", ["Item", "Value"], rows),
+            title_block=table(r"@{}l p{0.28\linewidth} l@{}", ["Item", "File", "SHA-256"], rows, small=True, narrow=True),
         ))
 
     def _governing_lines(self) -> str:
@@ -160,7 +159,9 @@ class Report:
                     lines.append(rf"{owner}: {crit}: {verdict_mark(None, k.not_made or 'no rating')}")
                 else:
                     lines.append(rf"{owner}: {crit}: {q(k.required_value)} against {q(k.rated_value)}, utilization {util(k.utilization)}")
-        return itemize(lines) if lines else ""
+        # Compact (no space between items): the signature lines stay on the front page.
+        return (r"{\small\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}"
+                + "".join(rf"\item {x}" for x in lines) + r"\end{itemize}}") if lines else ""
 
     def method(self) -> Latex:
         """The source's sections, the errata readings that apply, and the assumptions."""
