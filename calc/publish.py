@@ -238,7 +238,7 @@ def render_summary(rows: list[dict], files: list, folder: Path) -> tuple[Path, P
 
     pdf, table = folder / f"{SUMMARY}.pdf", folder / f"{SUMMARY}.csv"
     write_csv(rows, table)
-    latex = summary_latex(rows, files, build_date(), git_commit())
+    latex = summary_latex(rows, files, build_date(), git_commit(), folder)
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(outputs=[
         nbformat.v4.new_output("display_data", data={"text/latex": str(latex)})])])
     try:

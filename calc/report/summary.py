@@ -10,6 +10,7 @@ pages with its header repeated) and the count of each verdict.
 from __future__ import annotations
 
 import csv
+import os
 import re
 from pathlib import Path
 
@@ -116,12 +117,21 @@ def _verdict_cell(row: dict) -> str:
     return rf"\textcolor{{{colour}}}{{\textbf{{{words}}}}}"
 
 
-def _case_cell(row: dict) -> str:
-    out = rf"{latex_escape(row['title'])}\newline\texttt{{\footnotesize {breakable(row['case'])}}}"
+def shown_path(path: str, folder: Path) -> str:
+    """A path as the summary prints it: relative to the summary's folder where it lies outside
+    the project (a summary never prints where on the building machine its files were)."""
+    return os.path.relpath(path, folder) if os.path.isabs(path) else path
+
+
+def _case_cell(row: dict, folder: Path) -> str:
+    out = rf"{latex_escape(row['title'])}\newline\texttt{{\footnotesize {breakable(shown_path(row['case'], folder))}}}"
     worst = row["worst"]
     if row["reason"] and (row["error"] or worst is None or worst["utilization"] <= 1):  # else the worst check says why
         colour = "failred" if row["passes"] is False else "infogrey"
-        reason = breakable(row["reason"], latex_escape if row["error"] else prose)  # an error quotes the case as written
+        text = row["reason"]
+        if os.path.isabs(row["case"]):
+            text = text.replace(row["case"], shown_path(row["case"], folder))
+        reason = breakable(text, latex_escape if row["error"] else prose)  # an error quotes the case as written
         out += rf"\newline{{\footnotesize\color{{{colour}}} {reason}}}"
     return out
 
@@ -142,11 +152,12 @@ def _worst_cell(row: dict) -> str:
     return rf"{util(w['utilization'])}\newline{{\footnotesize {where}: {check}}}"
 
 
-def summary_latex(rows: list[dict], files_read: list, built: str, commit: str) -> Latex:
+def summary_latex(rows: list[dict], files_read: list, built: str, commit: str, folder: Path) -> Latex:
     """The summary PDF's content: heading, the count of each verdict, the table of cases and the
     title block (each case file and catalog read, with its SHA-256; build date, package, commit).
-    ``files_read`` are the files each row's report rests on (:attr:`calc.report.Report.files`)."""
-    body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r), _verdict_cell(r), *(_part_cell(r, n) for n in CHOSEN),
+    ``files_read`` are the files each row's report rests on (:attr:`calc.report.Report.files`);
+    ``folder`` is where the summary is written (paths outside the project are shown from there)."""
+    body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r, folder), _verdict_cell(r), *(_part_cell(r, n) for n in CHOSEN),
              _worst_cell(r), _report_link(r["report"])] for k, r in enumerate(rows)]  # rows of several lines set apart
     cases = table(
         r"@{} p{0.29\linewidth} p{0.1\linewidth} p{0.11\linewidth} p{0.08\linewidth} p{0.16\linewidth} p{0.12\linewidth}@{}",
@@ -161,7 +172,7 @@ def summary_latex(rows: list[dict], files_read: list, built: str, commit: str) -
             files.setdefault(path, (label, digest))
     block = []
     for path, (label, digest) in files.items():
-        block += [[latex_escape(label), rf"\texttt{{{breakable(path)}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
+        block += [[latex_escape(label), rf"\texttt{{{breakable(shown_path(path, folder))}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
     block += [["Built", latex_escape(built)], ["Package", latex_escape(PACKAGE)],
               ["Commit", rf"\texttt{{\footnotesize {latex_escape(commit)}}}"]]
     n = counts(rows)
