@@ -333,6 +333,11 @@ class Value:
     def to_json(self) -> dict:
         return {"value": self.value, "unit": self.unit}
 
+    @property
+    def quantity(self) -> pint.Quantity:
+        """The value as a quantity (NaN for no value), for a figure that plots it."""
+        return Q_(math.nan if self.value is None else self.value, self.unit)
+
     def __str__(self) -> str:
         """As a reader writes it: ``151.3 N·m``; n/a for no value."""
         return "n/a" if self.value is None else f"{sig(self.value)} {pretty_unit(self.unit)}".rstrip()

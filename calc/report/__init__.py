@@ -34,7 +34,7 @@ from ..sections.ratios import search as ratio_search
 from . import accuracy, coupling, gearbox, motor
 from ..selection import Selection
 from .common import ERRATA, INPUT_COLUMNS, rejected_in_full
-from .latex import Latex, breakable, itemize, latex_escape, prose, q, render, table, util, verdict_mark
+from .latex import Latex, breakable, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
 __all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]

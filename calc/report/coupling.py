@@ -18,10 +18,11 @@ NAME = "coupling"
 def _derived_inputs(report, raw: dict) -> dict:
     """The inputs that the case left out and the package took from the rest of it (a motor-side
     coupling's M_a, J_drive, J_load, speed), as the case would write them."""
-    if report.coupling is None:
+    r = result_of(NAME, report)
+    if r is None:
         return {}
     units = {"accel_torque": "N*m", "drive_inertia": "kg*cm**2", "load_inertia": "kg*cm**2", "speed": "rpm"}
-    x = report.coupling[0].inputs
+    x = r.inputs.inputs
     return {k: f"{sig(x[k].m_as(u))} {u}" for k, u in units.items() if k not in raw and x.get(k) is not None}
 
 
@@ -127,13 +128,13 @@ def order_lines(report) -> list[str]:
 
 
 def figures(report) -> list:
-    if report.coupling is None:
+    r = result_of(NAME, report)
+    if r is None:
         return []
-    from ..coupling import f_e_min
     from ..coupling_plots import natural_frequency_figure, temperature_factor_figure
 
-    cc, sel = report.coupling
-    out = [(natural_frequency_figure(sel, f_e_min(f_er=cc.inputs["excitation_frequency"])),
+    cc, sel = r.inputs, r.selection
+    out = [(natural_frequency_figure(sel, r.f_e_min.quantity),
             prose("Natural frequency of each coupling candidate against the lowest allowed, 2 f_er (E7)."))]
     if (sel.catalog.text["type"] == "elastomer").any():
         out.append((temperature_factor_figure(cc.inputs["temperature"], cc.inputs["temperature_factors"]),

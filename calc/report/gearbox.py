@@ -21,7 +21,8 @@ def sources(report) -> list[str]:
 def readings(report) -> set[str]:
     """Every gearbox reading; the inertia match (E6) only where the report gives the ratio."""
     out = common.readings(NAME)
-    return out if report.selection is not None and report.selection.inertia_ratio is not None else out - {"E6"}
+    r = result_of(NAME, report)
+    return out if r is not None and r.selection.inertia_ratio is not None else out - {"E6"}
 
 
 def input_rows(report) -> list[list[str]]:
@@ -43,12 +44,13 @@ def input_rows(report) -> list[list[str]]:
 
 def steps(report) -> list[str]:
     """The best-ranked row's checks as the gearbox section computed them."""
-    sel = report.selection
-    if sel is None:
+    r = result_of(NAME, report)
+    if r is None:
         return []
+    sel = r.selection
     chosen = "the chosen gearbox" if sel.selected else "the closest candidate (none passes)"
     out = [rf"\subsection{{Checks of {chosen}, {latex_escape(str(sel.catalog.parts[int(sel.order[0])]))}}}"]
-    return out + [step_block(title, step, note) for title, step, note in report.evaluated[NAME].steps]
+    return out + [step_block(title, step, note) for title, step, note in r.steps]
 
 
 def checks(report) -> list[str]:
@@ -112,13 +114,14 @@ def candidates(report) -> list[str]:
 
 
 def figures(report) -> list:
-    if report.selection is None:
+    r = result_of(NAME, report)
+    if r is None:
         return []
     from ..plots import comparison_figure, utilization_figure
 
     return [
-        (utilization_figure(report.selection), "Utilization of the governing checks of each candidate, best first."),
-        (comparison_figure(report.selection), "The makers compared: the highest governing utilization of each candidate, "
+        (utilization_figure(r.selection), "Utilization of the governing checks of each candidate, best first."),
+        (comparison_figure(r.selection), "The makers compared: the highest governing utilization of each candidate, "
                                               "coloured by family (and catalog, where several are ranked together)."),
     ]
 
