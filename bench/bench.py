@@ -36,6 +36,13 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   :func:`calc.motion.segments`), beside ``motion_numpy_1M``, the same cycle on a uniform grid in raw
   numpy (the floor), and ``motion_loop_1M``, the obvious loop over the samples with Python floats,
   run on a slice and scaled. The three must give the same segments; the run stops if they do not.
+* ``combinations``: every motor with every gearbox row at every ratio (:data:`COMBINATIONS`: 200
+  synthetic motors × 100 series × 16 ratios over a 20,000-sample cycle) checked and one pair picked
+  through :func:`calc.combinations.search` (the motor torque's peak and RMS from the cycle's
+  moments), beside ``combinations_numpy``, the same in raw numpy with a pass over the samples for
+  each gearbox row and every motor, and ``combinations_loop``, :func:`calc.motor.motor_load` per
+  pair, run on ten pairs and scaled. The three must agree on the torques and the pick; the run
+  stops if they do not.
 * ``import_calc``, ``evaluate_cli``, ``report``: cold runs of a fresh interpreter (median of 5 for
   the first two), beside ``import_numpy``.
 * ``notebooks``: the nbval run of every notebook, ``pytest notebooks``.
@@ -766,6 +773,100 @@ def measure_motion(size: Size) -> list[str]:
     ]
 
 
+# --- every motor with every gearbox at every ratio ------------------------------------------------
+
+#: Motors, gearbox series and ratios of the combination search, and the samples of its cycle.
+COMBINATIONS = dict(motors=200, gearboxes=100, ratios=(3, 4, 5, 7, 8, 10, 12, 15, 16, 20, 25, 28, 35, 40, 50, 70), samples=20_000)
+
+
+def combination_inputs(motors: int, gearboxes: int, ratios, samples: int, seed: int = 3):
+    """A sampled cycle at the output (the motion benchmark's index of a rotary table, its load
+    ten times lighter), ``gearboxes`` series each at every ratio and ``motors`` motors with
+    ratings that grow with their size, as float arrays in SI units."""
+    from calc import Q_
+    from calc.mechanism import Mechanism
+    from calc.motion import Move, sample
+
+    m = MOTION
+    table = Mechanism("rotary", inertia=Q_(m["J"] / 10, "kg*m**2"), friction_torque=Q_(m["T_f"] / 10, "N*m"), process_torque=Q_(0, "N*m"))
+    s = sample([Move(m["distance"], m["time"], m["ramp"], m["ramp"]), Move(0.0, m["dwell"])], samples)
+    torque = np.asarray(table.torque(s.speed, s.acceleration), float)  # N·m, SI floats
+    cycle = (s.dt, torque, s.speed, s.acceleration)
+    rng = np.random.default_rng(seed)
+    i = np.tile(np.asarray(ratios, float), gearboxes)
+    series = np.repeat(rng.uniform(5.0, 500.0, gearboxes), len(ratios))  # the T_2B of each series
+    eta = np.where(i > 10, 0.94, 0.97)
+    gear = {"i": i, "eta": eta, "J_1": np.repeat(rng.uniform(1e-5, 5e-4, gearboxes), len(ratios)) / i ** 0.5,
+            "passes": rng.random(len(i)) > 0.1, "peak_limit": series / (i * 1.6 * eta), "size": series, "J_L": m["J"] / 10}
+    rated = np.geomspace(0.1, 40.0, motors)
+    motor = {"J": 1.5e-5 * rated ** 1.3, "rated_torque": rated, "peak_torque": 3.2 * rated,
+             "max_speed": np.full(motors, 6000 * np.pi / 30) / (1 + rated / 40)}
+    return cycle, float(np.abs(s.speed).max()), gear, motor
+
+
+def combinations_numpy(cycle, top_speed, gear, motor):
+    """The same search in raw numpy: each gearbox row's motor torque over every sample for every
+    motor at once (motors × samples), its peak and RMS, and the same checks and rule."""
+    dt, T, w, a = cycle
+    back = T * w < 0
+    peak = np.empty((len(gear["i"]), len(motor["J"])))
+    rms = np.empty_like(peak)
+    for g, (i, eta, J_1) in enumerate(zip(gear["i"], gear["eta"], gear["J_1"])):
+        T_1 = (motor["J"][:, None] + J_1) * i * a + np.where(back, T * eta / i, T / (i * eta))
+        peak[g] = np.abs(T_1).max(axis=1)
+        rms[g] = np.sqrt((T_1 * T_1) @ dt / dt.sum())
+    i = gear["i"][:, None]
+    lam = (gear["J_1"][:, None] + gear["J_L"] / i**2) / motor["J"]
+    u = (peak / motor["peak_torque"], rms / motor["rated_torque"], top_speed * i / motor["max_speed"],
+         motor["peak_torque"] / gear["peak_limit"][:, None], lam / 10.0)
+    feasible = gear["passes"][:, None] & np.logical_and.reduce([x <= 1 + 1e-9 for x in u])
+    rows, cols = np.nonzero(feasible)
+    keys = (gear["i"][rows], rms[rows, cols] / motor["rated_torque"][cols], gear["size"][rows], motor["J"][cols], motor["rated_torque"][cols])
+    best = np.lexsort(keys)[0]
+    return (int(rows[best]), int(cols[best])), peak, rms
+
+
+def combinations_loop(cycle, gear, motor, pairs):
+    """The per-combination loop: :func:`calc.motor.motor_load` (quantities, a pass over the samples)
+    for each (gearbox row, motor) pair given."""
+    from calc import Q_
+    from calc.motor import motor_load
+
+    dt, T, w, a = (Q_(cycle[0], "s"), Q_(cycle[1], "N*m"), Q_(cycle[2], "rad/s"), Q_(cycle[3], "rad/s**2"))
+    out = []
+    for g, m in pairs:
+        load = motor_load(dt, T, w, Q_(gear["i"][g], ""), Q_(gear["eta"][g], ""), a, Q_(motor["J"][m], "kg*m**2"), Q_(gear["J_1"][g], "kg*m**2"))
+        out.append((float(load.peak.m_as("N*m")), float(load.rms.m_as("N*m"))))
+    return out
+
+
+def measure_combinations(size: Size) -> list[str]:
+    from calc.combinations import CycleMoments, search
+
+    c = COMBINATIONS if size.judged else dict(motors=20, gearboxes=5, ratios=(5, 10), samples=2_000)
+    cycle, top, gear, motor = combination_inputs(c["motors"], c["gearboxes"], c["ratios"], c["samples"])
+    pairs = len(gear["i"]) * len(motor["J"])
+    api_time, found = min((timed(lambda: search(CycleMoments.of(*cycle), top, gear, motor)) for _ in range(max(1, size.repeats // 3))),
+                          key=lambda x: x[0])
+    floor_time, (floor_pick, floor_peak, floor_rms) = timed(lambda: combinations_numpy(cycle, top, gear, motor))
+    if found.pick != floor_pick or not (np.allclose(found.peak, floor_peak, rtol=1e-9) and np.allclose(found.rms, floor_rms, rtol=1e-9)):
+        raise RuntimeError("combinations: the moments and the raw numpy floor give different torques or picks")
+    rng = np.random.default_rng(5)
+    sample = [found.pick, *zip(rng.integers(0, len(gear["i"]), 9).tolist(), rng.integers(0, len(motor["J"]), 9).tolist())]
+    loop_time, loop = timed(lambda: combinations_loop(cycle, gear, motor, sample))
+    if not np.allclose(loop, [(found.peak[g, m], found.rms[g, m]) for g, m in sample], rtol=1e-9):
+        raise RuntimeError("combinations: the per-combination loop gives other torques than the moments")
+    loop_scaled = loop_time * pairs / len(sample)
+    what = f"{len(motor['J'])} motors x {c['gearboxes']} gearboxes x {len(c['ratios'])} ratios over {c['samples']} samples"
+    return [
+        line("combinations", api_time, "s", ("<=", 1), note=f"{what}: the cycle's moments, every pair's peak, RMS and checks, the pick"),
+        line("combinations_numpy", floor_time, "s", note="raw numpy: each gearbox row's motor torque over every sample for every motor"),
+        line("combinations_loop", loop_scaled, "s", note=f"calc.motor.motor_load per pair: {len(sample)} pairs timed, scaled to {pairs}"),
+        line("combinations_numpy_vs_ours", floor_time / api_time, "x", note="the three agree on the pick and on the torques"),
+        line("combinations_loop_vs_ours", loop_scaled / api_time, "x"),
+    ]
+
+
 def measure_cold(size: Size) -> list[str]:
     py = sys.executable
     numpy_time = median_run([py, "-c", "import numpy"], size.runs)
@@ -857,6 +958,7 @@ def main(argv=None) -> int:
             lambda: measure_sweep(size),
             lambda: measure_hysteresis(size),
             lambda: measure_motion(size),
+            lambda: measure_combinations(size),
             lambda: measure_cold(size),
             lambda: measure_notebooks(size, args.quick),
             lambda: measure_report(size, args.quick, Path(tmp)),
