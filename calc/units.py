@@ -10,15 +10,28 @@ from __future__ import annotations
 
 import functools
 import math
+import os
 import re
+import sys
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import pint
 
 from .errors import CalcError
 
-ureg = pint.UnitRegistry(cache_folder=":auto:")
+
+def _cache_folder():
+    """Where pint keeps its parsed unit definitions: in this Python environment, so that the
+    cache goes with it. A cache shared by every environment (pint's ":auto:", the user's cache
+    folder) records the definition files of the environment that wrote it, and breaks every other
+    once that one is deleted. None (no cache) where the environment is not writable."""
+    folder = Path(sys.prefix) / "pint-cache"
+    return folder if os.access(folder if folder.exists() else sys.prefix, os.W_OK) else None
+
+
+ureg = pint.UnitRegistry(cache_folder=_cache_folder())
 ureg.define("@alias revolution = rev")  # "rev/s" and "rev/min" as speed units engineers write
 ureg.formatter.default_format = "~P"
 ureg.formatter.default_sort_func = None  # units in the order written: "N·m", not pint's alphabetical "m·N"

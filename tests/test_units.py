@@ -189,3 +189,17 @@ def test_quantities_print_their_units_in_the_order_written():
     assert f"{Q_(-1, 'N*m'):~P}" == "-1 N·m"
     assert f"{Q_(2, 'N') * Q_(3, 'm'):~P}" == "6 N·m"
     assert f"{Q_(1.3, 'N*m/arcmin'):~P}" == "1.3 N·m/arcmin"
+
+
+def test_the_unit_cache_belongs_to_this_environment():
+    # pint's shared cache (":auto:") records the definition files of the environment that wrote
+    # it; a second environment of the same pint then reads those, and breaks once the first is
+    # deleted. The package keeps the cache inside its own environment (or none where read-only).
+    import sys
+    from pathlib import Path
+
+    from calc.units import _cache_folder, ureg
+
+    folder = _cache_folder()
+    assert folder is None or folder.is_relative_to(Path(sys.prefix))
+    assert ureg._diskcache is None or Path(ureg._diskcache.cache_folder) == folder
