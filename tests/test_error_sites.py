@@ -20,8 +20,8 @@ from .error_sites import error_sites, site_at
 NOT_FROM_INPUT = {
     ("calc/publish.py", "render_pdf", "{display_path(report.path)}: xelatex could not typeset the report"),
     ("calc/publish.py", "render_summary", "{pdf}: xelatex could not typeset the summary"),
-    # A backstop of the JSON writer: inputs are held to calc.units.SI_SCALE, within which no formula overflows.
-    ("calc/sections/common.py", "number", "{key}: the calculation overflows"),
+    # A backstop of the results: inputs are held to calc.units.SI_SCALE, within which no formula overflows.
+    ("calc/units.py", "number", "{key}: the calculation overflows"),
 }
 
 
