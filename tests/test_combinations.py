@@ -91,3 +91,15 @@ def test_the_pick_is_the_smallest_adequate_motor_then_the_smallest_gearbox():
     # A gearbox whose T_2B takes a motor peak of at most 15 N·m (T_2B / (i · f_s · η)) refuses B there.
     limited = {**gearboxes, "peak_limit": [15.0, np.inf, np.inf]}
     assert search(m, 10.0, limited, motors).feasible[0].tolist() == [True, False]
+
+
+def test_the_figure_shows_the_lowest_working_utilization_of_each_motor_and_ratio():
+    # Rows: two gearboxes at i = 5 and one at i = 10; motors A, B. At i = 5 motor A works through
+    # the first (0.7) and second (0.4): the cell shows 0.4; B works through none there: grey (no
+    # value). At i = 10 A fails (1.3), B works (0.9).
+    from calc.combination_plots import combinations_figure
+
+    u = np.array([[0.7, 1.1], [0.4, 1.5], [1.3, 0.9]])
+    fig = combinations_figure(u, u <= 1, [5.0, 10.0], ["A", "B"], pick=(1, 0), ratio_of_rows=np.array([5.0, 5.0, 10.0]))
+    shown = np.ma.filled(fig.axes[0].images[0].get_array().astype(float), np.nan)
+    assert np.allclose(shown, [[0.4, np.nan], [np.nan, 0.9]], equal_nan=True)  # rows: motors; columns: ratios
