@@ -683,3 +683,15 @@ def test_a_move_is_reversed_and_a_ramp_the_file_leaves_out_is_set():
     panel.fields["move[1].decel_time"].value = "0.2"  # not in the file: written into the move
     panel.settled()
     assert panel.shown[0].motion.tables["move"][0]["decel_time"] == "0.2 second" and 'decel_time = "0.2 s"' in panel.case_text()
+
+
+def test_compare_of_a_case_that_cannot_be_evaluated_names_it(tmp_path):
+    # python -m calc compare stops at a case the package cannot evaluate, with its one-line error.
+    from calc import CalcError
+    from calc.review.view import compare_cases
+
+    bad = tmp_path / "bad.toml"
+    bad.write_text(EXAMPLE.read_text(encoding="utf-8").replace('catalog = "gearboxes"', 'catalog = "nosuch"', 1),
+                   encoding="utf-8")
+    with pytest.raises(CalcError, match="gearbox.catalog: the catalog 'nosuch' does not exist"):
+        compare_cases([str(EXAMPLE), str(bad)])
