@@ -11,6 +11,7 @@ which of its checks govern (:meth:`Selection.governs`), which apply to a row
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 from .checks import selected_part
@@ -112,7 +113,7 @@ class Selection:
         texts = self._texts()
         return [self.candidate(row, texts) for row in (self.order if limit is None else self.order[:limit])]
 
-    @property
+    @functools.cached_property
     def best(self) -> Candidate:
         """The best-ranked row: the chosen part, or the closest where none passes."""
         return self.candidate(int(self.order[0]))

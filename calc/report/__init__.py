@@ -32,8 +32,7 @@ from ..errors import CalcError
 from ..sections import MODULES, Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
 from . import accuracy, coupling, gearbox, motor
-from ..selection import Selection
-from .common import ERRATA, INPUT_COLUMNS, rejected_in_full
+from .common import ERRATA, INPUT_COLUMNS, ranks, rejected_in_full
 from .latex import Latex, breakable, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
@@ -230,7 +229,7 @@ class Report:
     def _ranked(self) -> list:
         """(name, result) of each section that ranks a catalog (:class:`calc.selection.Selection`)."""
         sections = self.evaluated.sections if self.evaluated is not None else {}
-        return [(name, r) for name, r in sections.items() if isinstance(getattr(r, "selection", None), Selection)]
+        return [(name, r) for name, r in sections.items() if ranks(r)]
 
     def blocks(self, figures=None) -> list[tuple[object, dict]]:
         """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:

@@ -19,6 +19,7 @@ from pathlib import Path
 from ..formula import REGISTRY
 from ..gearbox import inertia_ratio
 from ..sections import declared
+from ..selection import Selection
 from ..units import pretty_unit, sig
 from . import symbols
 from .latex import breakable, itemize, latex_escape, listed, prose, q, table, util, value_unit, verdict_mark
@@ -89,6 +90,11 @@ def input_row(path: str, value, derived: bool = False) -> list[str]:
         shown, unit = value_unit(listed(value) if isinstance(value, list) else value)
     where = case_key(path) + (r"\textsuperscript{\dag}" if derived else "")
     return [f"${latex}$" if latex else "–", shown, unit, prose(key.description), where]
+
+
+def ranks(result) -> bool:
+    """Whether a section's result ranks a catalog (:class:`calc.selection.Selection`)."""
+    return isinstance(getattr(result, "selection", None), Selection)
 
 
 def result_of(name: str, report):
@@ -223,7 +229,7 @@ def further_readings(name: str, report) -> set[str]:
 def further_checks(name: str, report) -> list[str]:
     """The checks of the best-ranked candidate, or the checks against the case's requirements."""
     r = result_of(name, report)
-    if r is not None and hasattr(r, "selection"):
+    if ranks(r):
         best = r.selection.best
         return [checks_table(best.checks, f"Checks of {name} {best.part}")] if best.checks else []
     s = results_of(name, report)

@@ -577,18 +577,18 @@ class AccuracyResult:
 
     def verdict(self) -> Verdict | None:
         """The required values govern; a chain without requirements decides nothing."""
-        checks = [c.at(0) for c in requirement_checks(self.inputs, self.accuracy)]
-        if not checks:
+        g = self.governing()
+        if g is None:
             return None
-        open_ = [k for k in checks if not_known(self.inputs, k.name)]
-        failing = [k for k in checks if not k.passes and k not in open_]
+        open_ = [k for k in g.checks if k.passes is None]
+        failing = [k for k in g.checks if k.passes is False]
         reasons = [
             f"The accuracy requirement is not met: {k.name} {fmt(k.required, k.unit)} > required {fmt(k.rated, k.unit)}, "
             f"{sig(100 * (k.utilization - 1), 3)} % over"
             for k in failing
         ] + [
             f"The accuracy requirement is not decided: {k.name} {relation(self.inputs, k.name)} "
-            f"{fmt(k.required, k.unit)}, {not_known(self.inputs, k.name)}"
+            f"{fmt(k.required, k.unit)}, {k.not_made}"
             for k in open_
         ]
         return Verdict(False if failing else (None if open_ else True), reasons)

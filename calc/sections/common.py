@@ -73,6 +73,13 @@ def no_candidate_passes(sentence: str, parts, order, reasons) -> list[str]:
     return [sentence] + [f"{parts[row]}: {'; '.join(reasons(row))}" for row in order[:REASONED_CANDIDATES]]
 
 
+def row_json(c) -> dict:
+    """What a candidate (:class:`calc.selection.Candidate`) says of its catalog row, as the
+    contract writes it: why it does not pass, and the row's file, family, size, source and doubts."""
+    return {"reasons": c.reasons, "catalog": c.catalog, "family": c.family, "size": c.size, "source": c.source,
+            "unclear": c.unclear or None}
+
+
 @dataclass(frozen=True)
 class Governing:
     """The checks that decide a section's verdict (:class:`calc.checks.Check`), and whose they

@@ -24,7 +24,7 @@ from ..profile import Z_h
 from ..torsion import Member, gearbox_at_input, inertia_at_output, load_at_input
 from ..units import Q_, Value, fmt, sig
 from . import gearbox
-from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, selection_governing, selection_verdict
+from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
 
 NAME = "coupling"
 ORDER = 50
@@ -446,12 +446,7 @@ class CouplingResult:
                 "required_torque": c.required_torque.to_json(),
                 "peak_torque_required": json_of(c.peak_torque_required),
                 "checks": [check_json(k) for k in c.checks],
-                "reasons": c.reasons,
-                "catalog": c.catalog,
-                "family": c.family,
-                "size": c.size,
-                "source": c.source,
-                "unclear": c.unclear or None,
+                **row_json(c),
             }
             for c in sel.candidates(candidates)
         ]

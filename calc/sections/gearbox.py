@@ -14,7 +14,7 @@ from ..errors import CalcError
 from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
 from ..profile import Z_h, n_2m
 from ..units import Q_, sig
-from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, selection_governing, selection_verdict
+from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
 
 NAME = "gearbox"
 ORDER = 40
@@ -110,12 +110,7 @@ class GearboxResult:
                 "checks": [check_json(k) for k in c.checks],
                 "inertia_ratio": c.inertia_ratio,
                 "T2max": json_of(c.T_2max),
-                "reasons": c.reasons,
-                "catalog": c.catalog,
-                "family": c.family,
-                "size": c.size,
-                "source": c.source,
-                "unclear": c.unclear or None,
+                **row_json(c),
                 "best_of_family": c.best_of_family,
                 "J_1": json_of(c.J_1),
                 "J_1_hub": json_of(c.J_1_hub),
