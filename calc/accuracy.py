@@ -24,17 +24,17 @@ evaluated by :func:`section_results` (the JSON contract) and :func:`summary_line
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from .checks import BOUNDARY_RTOL
-from .catalog import Column, display_path, load_catalog, resolve
+from .catalog import Column
 from .errors import CalcError
 from .formula import Formula, Symbol
-from .measurement import check_pair, measurement_path, read_measurement
-from .stiffness import SIDES, Chain, Component, angle_at_output, series_stiffness, stiffness_at_output
-from .units import Q_, as_kind, fmt, sig  # noqa: F401 (fmt: the doctests print with it)
+from .measurement import check_pair, read_measurement
+from .stiffness import Chain, Component, angle_at_output, series_stiffness, stiffness_at_output  # noqa: F401 (Component: the doctests)
+from .units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
 
 #: E13: "torque <= 3 % nominal torque" selects the backlash form of positioning accuracy.
 LOW_TORQUE_SHARE = 0.03

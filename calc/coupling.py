@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .bands import factor_table
-from .catalog import Catalog, Column, Rule, Schema, display_path, load_catalog, no_less, resolve
+from .catalog import Catalog, Column, Rule, Schema, load_catalog, no_less, resolve  # noqa: F401 (load_catalog, resolve: the doctests)
 from .errors import CalcError
 from .fits import Bore, parse_bore
 from .formula import Formula, Symbol

@@ -35,7 +35,7 @@ from . import selection
 from .checks import CheckArray, rank
 from .profile import Profile, T_2m, Z_h, duty, n_2m
 from .selection import Selection
-from .units import Q_, Value, as_kind, magnitude_in, pretty_unit
+from .units import Q_, Value, as_kind, pretty_unit
 
 #: The columns of a gearbox's stiffness curve, all five or none in a row (calc.stiffness.StiffnessCurve).
 CURVE_COLUMNS = ("T_L1", "T_L2", "K_1", "K_2", "K_3")

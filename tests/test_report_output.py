@@ -58,6 +58,11 @@ def steps_of(report) -> dict:
     return {m["title"]: [side.strip() for side in m["body"].split("&=")] for m in STEP.finditer(str(report.calculations()))}
 
 
+def json_of(report) -> dict:
+    """The results of the report's case as ``evaluate --json --all-candidates`` writes them."""
+    return report.evaluated.to_json(candidates=None)
+
+
 def number(d: dict, unit_factor: float = 1.0) -> str:
     """A JSON quantity's number as a step prints it."""
     return sig(d["value"] * unit_factor).replace("-", "−", 1)
@@ -66,7 +71,7 @@ def number(d: dict, unit_factor: float = 1.0) -> str:
 @pytest.mark.parametrize("name", ["example", "shaft-24", "shock-1.5"])
 def test_every_number_of_the_duty_and_coupling_steps_is_the_json_number(reports, name):
     r = reports[name]
-    j, steps = r.results, steps_of(r)
+    j, steps = json_of(r), steps_of(r)
     # The duty: ED in %, n_2m in rpm, T_2m in N·m, Z_h in 1/h, as the JSON writes them.
     for title, value in (("Duty cycle", j["duty"]["ED"]), ("Mean output speed", j["continuous"]["n2m"]),
                          ("Cubic mean output torque", j["continuous"]["T2m"]), ("Cycles per hour", j["cyclic"]["Zh"])):
@@ -84,14 +89,14 @@ def test_every_number_of_the_duty_and_coupling_steps_is_the_json_number(reports,
 @pytest.mark.parametrize("name", ["example", "shaft-24", "shock-1.5"])
 def test_every_gearbox_step_is_the_required_value_of_its_check_in_the_json(reports, name):
     r = reports[name]
-    g, steps = r.results["gearbox"], steps_of(r)
+    g, steps = json_of(r)["gearbox"], steps_of(r)
     checks = {k["name"]: k for k in g["candidates"][0]["checks"]}
     for title, check in (("Input speed at the mean output speed (S1)", "n_1N"), ("Input speed at the highest output speed (S5)", "n_1max"),
                          ("Maximum output torque", "T_2B"), ("Tilting moment on the output bearing", "M_2K")):
         assert steps[title][-1].startswith(number(checks[check]["required"])), (title, steps[title][-1], checks[check]["required"])
     assert steps["Load to motor inertia ratio"][-1] == sig(g["candidates"][0]["inertia_ratio"])
     # The shock factor of T_2max is the case's: 1.5 in the variant, 1.6 (the source's, Z_h = 2400 /h) otherwise.
-    assert rf"\cdot {r.results['cyclic']['fs']:g} \cdot" in steps["Maximum output torque"][2]
+    assert rf"\cdot {json_of(r)['cyclic']['fs']:g} \cdot" in steps["Maximum output torque"][2]
 
 
 def test_the_24_mm_hub_is_the_j1_of_every_step(reports):
@@ -104,7 +109,7 @@ def test_the_24_mm_hub_is_the_j1_of_every_step(reports):
 @pytest.mark.parametrize("name, fs", [("example", 1.6), ("shock-1.5", 1.5)])
 def test_the_shock_factor_figure_plots_the_case_table(reports, name, fs):
     r = reports[name]
-    assert r.results["cyclic"]["fs"] == fs
+    assert json_of(r)["cyclic"]["fs"] == fs
     figure = next(f for f, caption in r.figures() if caption.startswith("Shock factor"))
     point = next(line for line in figure.axes[0].lines if line.get_gid() == "case")
     assert float(point.get_ydata()[0]) == fs
@@ -132,7 +137,7 @@ GREEK = {r"\varphi": "φ", r"\eta": "η", r"\lambda": "λ"}
 
 
 def test_every_criterion_and_reason_typesets_the_same_in_latex_and_html(reports):
-    texts = sorted({t for r in reports.values() for t in emitted_texts(r.results)})
+    texts = sorted({t for r in reports.values() for t in emitted_texts(json_of(r))})
     assert len(texts) > 50 and any("d_hub,max" in t for t in texts) and any("K_ϑ" in t for t in texts)
     for text in texts:
         tex, page = latex(text), html(text)
@@ -147,7 +152,7 @@ def test_every_criterion_and_reason_typesets_the_same_in_latex_and_html(reports)
 def test_a_check_not_made_prints_as_not_checked_in_text_latex_and_html(reports):
     # NPT035-10 (catalogs/gearboxes.csv) has no F_2R: the check F_2r <= F_2R is not made.
     r = reports["example"]
-    check = next(k for k in r.results["gearbox"]["candidates"][0]["checks"] if k["name"] == "F_2R")
+    check = next(k for k in json_of(r)["gearbox"]["candidates"][0]["checks"] if k["name"] == "F_2R")
     assert check["passes"] is None and check["not_made"] == "the catalog gives no F_2R"
     assert "F_2r <= F_2R" in r.evaluated.summary() and "not checked: the catalog gives no F_2R" in r.evaluated.summary()
     row = next(line for line in str(r.checks()).splitlines() if line.startswith(r"$F_{\mathrm{2r}}$"))
@@ -158,7 +163,7 @@ def test_a_check_not_made_prints_as_not_checked_in_text_latex_and_html(reports):
 
 def test_a_rejection_list_shows_the_closest_few_and_the_appendix_all(reports):
     r = reports["example"]
-    rejected = [c for c in r.results["coupling"]["candidates"] if c.get("reasons")]
+    rejected = [c for c in json_of(r)["coupling"]["candidates"] if c.get("reasons")]
     assert len(rejected) > 5  # catalogs/couplings.csv: most rows fail AKD-30's case
     candidates = str(r.candidates())
     assert f"and {len(rejected) - 5} more, each with its reasons in the appendix" in candidates

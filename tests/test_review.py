@@ -244,7 +244,7 @@ def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
     assert "FAIL" in shown and "The accuracy section cannot be evaluated with these inputs" in shown
     assert "NPT035-10" in shown
     # catalogs/gearboxes.csv, the complete rows at ratio 8 (the SP+ rows are partial, never ranked).
-    assert {c["part"] for c in report.results["gearbox"]["candidates"]} == {f"{s}-8" for s in (
+    assert {c.part for c in report.evaluated["gearbox"].selection.candidates()} == {f"{s}-8" for s in (
         "TP004", "TP010", "TP050", "TP300", "TP500", "NPT005", "NPT015", "NPT025", "NPT035", "NPT045", "NPS015", "NPS045")}
     assert "Coupling candidates" in shown and "Accuracy of the chain" not in shown
 
@@ -647,7 +647,7 @@ def test_the_load_cycle_figure_draws_the_segments_steps():
     from calc.review.figures import HEIGHT, LEFT, RIGHT, WIDTH, load_cycle_svg
 
     case = read_case(EXAMPLE)  # 0.2 s, 0.6 s, 0.2 s, then a pause of 1 s: edges at 0, 0.2, 0.8, 1.0, 2.0 s
-    svg = load_cycle_svg(case.profile, evaluate(case)["duty"])
+    svg = load_cycle_svg(case.profile, evaluate_case(case)["profile"].shown)
     scale = (WIDTH - LEFT - RIGHT) / 2.0
     speed = svg.split('<polyline points="')[1].split('"')[0].split()
     assert [float(p.split(",")[0]) for p in speed] == pytest.approx(

@@ -31,7 +31,7 @@ from ..catalog import display_path, recording_files_read
 from ..errors import CalcError
 from ..sections import MODULES, Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
-from . import accuracy, coupling, gearbox, motor
+from . import gearbox
 from .common import ERRATA, INPUT_COLUMNS, ranks, rejected_in_full
 from .latex import Latex, breakable, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
@@ -67,11 +67,6 @@ class Report:
     commit: str
     case: Case | None = None
     evaluated: Results | None = None
-    results: dict | None = None  # evaluated, as the JSON contract writes it (every candidate)
-    selection: object = None  # GearboxSelection
-    coupling: object = None  # (CouplingCase, CouplingSelection) when the case has [coupling]
-    accuracy: object = None  # (AccuracyCase, ChainAccuracy) when the case has [accuracy]
-    motor: object = None  # MotorResult when the case has the motor's side
     ratios: object = None  # RatioResult: the case at every ratio of its gearbox catalog
     error: str | None = None  # why the case could not be evaluated
     files: list = field(default_factory=list)  # (label, path text, sha256)
@@ -186,24 +181,24 @@ class Report:
 
     def calculations(self) -> Latex:
         """Every formula used, as ``symbol = formula = values = result`` with its reference."""
-        if self.results is None:
+        if self.evaluated is None:
             return Latex("")
         return Latex("\n".join([r"\section{Calculations}", *_parts("steps", self)]))
 
     def checks(self) -> Latex:
         """The checks of each chosen part (or the closest candidate) with required, rated,
         utilization and verdict."""
-        out = _parts("checks", self) if self.results else []
+        out = _parts("checks", self) if self.evaluated is not None else []
         return Latex("\n".join([r"\section{Checks}", *out]) if out else "")
 
     def candidates(self) -> Latex:
         """Every candidate: its catalog ratings, and the utilization of each check."""
-        out = _parts("candidates", self) if self.results else []
+        out = _parts("candidates", self) if self.evaluated is not None else []
         return Latex("\n".join([r"\section{Candidates}", *out]) if out else "")
 
     def section_results(self) -> Latex:
         """What the coupling and accuracy sections and the ratio search give besides the checks."""
-        out = _parts("results", self) if self.results else []
+        out = _parts("results", self) if self.evaluated is not None else []
         return Latex("\n".join([r"\section{Further results}", *out]) if out else "")
 
     def figures(self) -> list:
@@ -217,7 +212,7 @@ class Report:
 
     def order_lines(self) -> Latex:
         """What to order: one line per chosen part."""
-        if not self.results:
+        if self.evaluated is None:
             return Latex("")
         return Latex(render("order.tex.j2", lines=_parts("order_lines", self)))
 
@@ -271,20 +266,11 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     report.case, report.title = case, case.title
     try:
         evaluated = evaluate(case)
-        results = evaluated.to_json(candidates=None)
         ratios = ratio_search(case) if gearbox.NAME in evaluated.sections else None
     except CalcError as exc:
         report.error = str(exc)
         return report
-    report.evaluated, report.results = evaluated, results
-    if gearbox.NAME in evaluated.sections:
-        report.selection = evaluated[gearbox.NAME].selection
-    if coupling.NAME in evaluated.sections:
-        report.coupling = (evaluated[coupling.NAME].inputs, evaluated[coupling.NAME].selection)
-    if accuracy.NAME in evaluated.sections:
-        report.accuracy = (evaluated[accuracy.NAME].inputs, evaluated[accuracy.NAME].accuracy)
-    if motor.NAME in evaluated.sections:
-        report.motor = evaluated[motor.NAME]
+    report.evaluated = evaluated
     report.ratios = ratios
     for name, r in report._ranked():
         report.files += [(f"{name.capitalize()} catalog", display_path(path), sha) for path, sha in r.selection.catalog.members]

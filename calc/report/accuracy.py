@@ -9,15 +9,21 @@ from pathlib import Path
 
 import numpy as np
 
+from ..sections import gearbox
 from . import common
 from .common import (
     described, further_checks, further_readings, further_sources,
-    raw_section_tables, results_of,
+    raw_section_tables, result_of,
 )
 from .latex import latex_escape, listed, plain, prose, q, step_block, table
 from .provenance import PROJECT_DIR
 
 NAME = "accuracy"
+
+def _result(report):
+    """The accuracy section's result (:class:`calc.sections.accuracy.AccuracyResult`), None without one."""
+    return result_of(NAME, report)
+
 
 def inputs(report) -> list[str]:
     if not described(NAME, report):
@@ -26,9 +32,10 @@ def inputs(report) -> list[str]:
 
 
 def steps(report) -> list[str]:
-    if report.accuracy is None:
+    r = _result(report)
+    if r is None:
         return []
-    spec, a = report.accuracy
+    spec, a = r.inputs, r.accuracy
     out = []
     for name, (path, analysis) in spec.loops.items():
         out.append(rf"\subsection{{Measured hysteresis loop of {latex_escape(name)}}}")
@@ -53,44 +60,44 @@ def steps(report) -> list[str]:
 def results(report) -> list[str]:
     """The chain's stiffness, backlash, transmission accuracy, lost motion, positioning accuracy
     and repeatability, and each member referred to the output."""
-    a = results_of(NAME, report)
-    if not a:
+    r = _result(report)
+    if r is None:
         return []
-    rep = "repeatability, an upper bound under torque (E13)" if a["repeatability_is_bound"] else "repeatability (E13)"
+    a = r.shown
+    rep = "repeatability, an upper bound under torque (E13)" if a.repeatability_is_bound else "repeatability (E13)"
     rows = [
-        [r"$C_{\mathrm{total}}$", q(a["C_total"]), prose("total torsional stiffness at the output (E11)")],
-        [r"$j_{t}$", q(a["backlash"]), prose("torsional backlash at the output")],
-        [r"$\varphi_{\mathrm{TA}}$", q(a["transmission_accuracy"]),
-         prose("angular transmission accuracy, from " + listed(a["transmission_accuracy_from"]))],
-        [r"$\varphi_{\mathrm{LM}}$", q(a["lost_motion"]), prose("total lost motion at the applied torque (E12)")],
-        [r"$\Delta\varphi_{P}$", (r"$\geq$ " if a["unknown"] else "") + q(a["positioning_accuracy"]),
-         prose(f"positioning accuracy, {a['positioning_rule']} (E13)" + (f"; a lower bound: unknown {'; '.join(a['unknown'])}" if a["unknown"] else ""))],
-        ["–", q(a["repeatability"]), prose(rep)],
+        [r"$C_{\mathrm{total}}$", q(a.C_total), prose("total torsional stiffness at the output (E11)")],
+        [r"$j_{t}$", q(a.backlash), prose("torsional backlash at the output")],
+        [r"$\varphi_{\mathrm{TA}}$", q(a.transmission_accuracy),
+         prose("angular transmission accuracy, from " + listed(a.transmission_accuracy_from))],
+        [r"$\varphi_{\mathrm{LM}}$", q(a.lost_motion), prose("total lost motion at the applied torque (E12)")],
+        [r"$\Delta\varphi_{P}$", (r"$\geq$ " if a.unknown else "") + q(a.positioning_accuracy),
+         prose(f"positioning accuracy, {a.positioning_rule} (E13)" + (f"; a lower bound: unknown {'; '.join(a.unknown)}" if a.unknown else ""))],
+        ["–", q(a.repeatability), prose(rep)],
     ]
-    if "radius" in a:
-        rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(a[f"{key}_arc"]), prose(f"as an arc at r = {plain(a['radius'])}")]
-                 for key in ("backlash", "lost_motion", "positioning_accuracy", "repeatability")]
-    comp = [[latex_escape(m["name"]), latex_escape(m["side"]), q(m["stiffness_at_output"]), q(m["backlash_at_output"]),
-             q(m.get("transmission_accuracy_at_output")), f"{100 * m['share_of_compliance']:.1f}", q(m["twist_at_applied_torque"])]
-            for m in a["components"]]
+    rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(arc), prose(f"as an arc at r = {plain(a.radius)}")] for key, arc in a.arcs.items()]
+    comp = [[latex_escape(m.name), latex_escape(m.side), q(m.stiffness_at_output), q(m.backlash_at_output),
+             q(m.transmission_accuracy_at_output), f"{100 * m.share_of_compliance:.1f}", q(m.twist_at_applied_torque)]
+            for m in a.members]
     return [
         r"\subsection{Accuracy: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows),
         table(r"@{}l l r r r r r@{}", ["Member", "Side", "$C$", "$j_t$", r"$\varphi_{\mathrm{TA}}$",
                                        r"$1/C$ [\%]", r"Twist at $T$"], comp, small=True,
-              caption=prose(f"Members of the chain referred to the output, at T = {plain(a['applied_torque'])}")),
+              caption=prose(f"Members of the chain referred to the output, at T = {plain(a.applied_torque)}")),
     ]
 
 
 def figures(report) -> list:
     """The chain's figures; without measured loops, the chosen gearbox's loop modelled from its
     catalog figures (also for a case without ``[accuracy]``)."""
-    if report.accuracy is None and report.selection is None:
+    r, g = _result(report), result_of(gearbox.NAME, report)
+    if r is None and g is None:
         return []
     from ..accuracy_plots import hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure
     from ..hysteresis import analyze_loop, model_for_part, read_loop
 
     out = []
-    spec = report.accuracy[0] if report.accuracy else None
+    spec = None if r is None else r.inputs
     if spec is not None:
         out.append((stiffness_chain_figure(spec.chain, spec.applied_torque),
                     "Stiffness chain referred to the output (E11): each member's share of the twist."))
@@ -98,8 +105,8 @@ def figures(report) -> list:
             # a relative display path lies in the checkout (an installed calc shows measurements absolute)
             loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
             out.append((hysteresis_figure(loop, analysis), latex_escape(f"Measured hysteresis loop of {name} (E12).")))
-    if (spec is None or not spec.loops) and report.selection is not None:
-        sel, row = report.selection, int(report.selection.order[0])
+    if (spec is None or not spec.loops) and g is not None:
+        sel, row = g.selection, int(g.selection.order[0])
         if not (np.isnan(sel.catalog["C_t21"][row].magnitude) or np.isnan(sel.catalog["backlash"][row].magnitude)):
             part = str(sel.catalog.parts[row])
             model = model_for_part(part, str(sel.catalog.path))

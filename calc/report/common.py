@@ -47,11 +47,6 @@ def readings(name: str) -> set[str]:
     return {k for k, e in ERRATA.items() if e.get("section") == name}
 
 
-def results_of(name: str, report) -> dict | None:
-    """A section's results as the JSON contract writes them; None where it has none."""
-    return (report.results or {}).get(name)
-
-
 def gearbox_symbols() -> dict:
     """The symbols of the load cycle's and the gearbox's formulas, by their name in code (the
     case's [motor], [load], [gearbox] and [[profile]] inputs; the further sections have their own:
@@ -120,8 +115,9 @@ def checks_table(checks: list, caption: str) -> str:
 
 
 def requirement_table(checks: list, caption: str) -> str:
-    """Checks of a value reached against a limit the case requires (``value <= required``)."""
-    rows = [[prose(k["criterion"]), q(k["value"]), q(k["required"]), util(k["utilization"]), verdict_mark(k["passes"], k.get("not_made"))]
+    """Checks (:class:`calc.checks.Check`) of a value reached (its required side) against a limit
+    the case requires (its rated side): ``value <= required``."""
+    rows = [[prose(k.criterion), q(k.required_value), q(k.rated_value), util(k.utilization), verdict_mark(k.passes, k.not_made)]
             for k in checks]
     # The verdict is a paragraph: a check not made gives its reason, which may be long.
     return table(r"@{}p{0.2\linewidth} r r r p{0.3\linewidth}@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
@@ -232,7 +228,5 @@ def further_checks(name: str, report) -> list[str]:
     if ranks(r):
         best = r.selection.best
         return [checks_table(best.checks, f"Checks of {name} {best.part}")] if best.checks else []
-    s = results_of(name, report)
-    if s and s.get("checks"):
-        return [requirement_table(s["checks"], f"{name.capitalize()} against the requirements of the case")]
-    return []
+    g = None if r is None else r.governing()
+    return [] if g is None else [requirement_table(g.checks, f"{name.capitalize()} against the requirements of the case")]

@@ -47,8 +47,6 @@ def signed(text: str) -> str:
 
 def plain(v: Value | None) -> str:
     """A result value as plain text (``151.3 N·m``, a minus sign where negative)."""
-    if isinstance(v, dict):  # TRANSITIONAL: a JSON quantity read back, until every section's result is typed
-        v = Value(**v)
     if v is None or v.value is None:
         return "n/a"
     return f"{signed(sig(v.value))} {pretty_unit(v.unit)}".rstrip()

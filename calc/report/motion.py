@@ -5,13 +5,10 @@ torque over the cycle."""
 
 from __future__ import annotations
 
-from .. import mechanism as mech
-from ..cycle import PHASES
-from ..motion import alpha_2max, omega_2max
 from ..sections.motion import keys_of
 from ..units import Q_, sig
 from .common import input_row, nothing
-from .latex import latex_escape, num, step_block, table
+from .latex import latex_escape, signed, step_block, table
 
 NAME = "motion"
 
@@ -58,36 +55,15 @@ def inputs(report) -> list[str]:
 
 
 def steps(report) -> list[str]:
-    m = _motion(report)
-    if m is None:
+    if report.evaluated is None or NAME not in report.evaluated.sections:
         return []
-    out = [r"\subsection{Motion and mechanism}"]
-    k = m.mechanism
-    if k is not None and k.linear:
-        out += [step_block("Transmission radius", k.radius_step()), step_block("Load inertia at the gearbox output", k.load_inertia_step())]
-    for n, (move, given) in enumerate(zip(m.moves, m.distances), start=1):
-        if move.dwell:
-            continue
-        phi = k.to_output(given)
-        if k.linear:
-            out.append(step_block(f"Move {n}: distance at the output", mech.phi_2.step(result=phi, s=given, r=k.radius)))
-        times = {"t_m": Q_(move.time, "s"), "t_a": Q_(move.accel_time, "s"), "t_d": Q_(move.decel_time, "s")}
-        w = omega_2max.step(phi_2=phi, **times)
-        out.append(step_block(f"Move {n}: peak output speed", w))
-        accel = alpha_2max.step(omega_2max=w.result, t_r=times["t_a"], t_j=Q_(move.jerk_time, "s"))
-        out.append(step_block(f"Move {n}: peak output acceleration", accel))
-        if move.decel_time != move.accel_time:
-            out.append(step_block(f"Move {n}: peak output deceleration", alpha_2max.step(omega_2max=w.result, t_r=times["t_d"], t_j=Q_(move.jerk_time, "s"))))
-        for phase, a in (("acceleration", accel.result), ("constant speed", Q_(0.0, "rad/s**2")), ("deceleration", -accel.result)):
-            for step in k.steps(w.result, a):
-                out.append(step_block(f"Move {n}, {phase}: {step.formula.result.description}", step))
-    g = m.segments
-    rows = [[str(j), PHASES[p], num(Q_(t, "s"), "s"), num(Q_(n, "rad/s"), "rpm"), num(Q_(T, "N*m"), "N*m")]
-            for j, (p, t, n, T) in enumerate(zip(g.phase, g.duration, g.speed, g.torque), start=1)]
+    r = report.evaluated[NAME]
+    out = [r"\subsection{Motion and mechanism}"] + [step_block(title, step) for title, step in r.steps]
+    rows = [[str(j), g.phase, *(signed(sig(v.value)) for v in (g.duration, g.speed, g.torque))] for j, g in enumerate(r.segments, start=1)]
     out.append(table(
         r"@{}r l r r r@{}", ["k", "Phase", "$t_k$ [s]", "$n_{2,k}$ [rpm]", "$T_{2,k}$ [N·m]"], rows,
         caption="Segments derived from the sampled cycle, used as the load cycle",
-        note=(f"{len(m.cycle.dt)} samples per cycle. Mean speed of each segment; its torque gives the segment's cubic mean "
+        note=(f"{r.samples} samples per cycle. Mean speed of each segment; its torque gives the segment's cubic mean "
               "(the integral over the samples; in a trapezoid's phase the torque is constant and this is its value). "
               "A pause holds the torque that keeps the load at rest."),
     ))

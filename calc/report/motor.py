@@ -29,7 +29,7 @@ def input_rows(report) -> list[list[str]]:
 
 
 def steps(report) -> list[str]:
-    m = report.motor
+    m = result_of(NAME, report)
     if m is None or m.load is None:
         return []
     out = output_load(report.case)
@@ -69,7 +69,7 @@ def checks(report) -> list[str]:
 
 
 def figures(report) -> list:
-    m = report.motor
+    m = result_of(NAME, report)
     if m is None or m.load is None:
         return []
     from ..motor_plots import motor_torque_figure

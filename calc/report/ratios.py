@@ -3,6 +3,7 @@ the ratio a reviewer should pick and why (the rule of :mod:`calc.ratios`), and t
 
 from __future__ import annotations
 
+from ..catalog import display_path
 from ..ratios import RULE
 from .latex import latex_escape, prose, q, table, util, verdict_mark
 from .common import nothing
@@ -14,21 +15,16 @@ def results(report) -> list[str]:
     r = report.ratios
     if r is None:
         return []
-    j = r.to_json()
-    rows = []
-    for x in j["ratios"]:
-        mark = r"{} \footnotesize(pick)" if j["pick"] and j["pick"]["ratio"] == x["ratio"] else ""
-        rows.append([f"{x['ratio']:g}", latex_escape(x["part"]), util(x["utilization"]),
-                     "–" if x["inertia_ratio"] is None else f"{x['inertia_ratio']:.2f}",
-                     q(x["peak_torque_required"]) if x["peak_torque_required"] else "–",
-                     q(x["rms_torque_required"]) if x["rms_torque_required"] else "–", q(x["max_speed_required"]),
-                     verdict_mark(x["passes"]) + mark])
+    rows = [[f"{x.ratio:g}", latex_escape(x.part), util(x.utilization), "–" if x.inertia_ratio is None else f"{x.inertia_ratio:.2f}",
+             "–" if x.peak_torque_required is None else q(x.peak_torque_required),
+             "–" if x.rms_torque_required is None else q(x.rms_torque_required), q(x.max_speed_required),
+             verdict_mark(x.passes) + (r"{} \footnotesize(pick)" if x.pick else "")] for x in r.rows]
     return [
         r"\subsection*{The ratio}",
-        prose(j["reason"]),
+        prose(r.search.reason),
         table(r"@{}r l r r r r r l@{}", ["$i$", "Best gearbox", "Utilization", r"$\lambda$", r"$T_{1,\mathrm{peak}}$",
                                           r"$T_{1,\mathrm{rms}}$", r"$n_{2\mathrm{max}} \cdot i$", "Verdict"], rows,
-              caption=latex_escape(f"The case at every ratio of {j['catalog']}, each with its best gearbox"),
+              caption=latex_escape(f"The case at every ratio of {display_path(r.search.selection.catalog.path)}, each with its best gearbox"),
               note=prose(f"Rule: {RULE}.")),
     ]
 

@@ -18,7 +18,7 @@ from html import escape
 
 import numpy as np
 
-from ..units import Q_, pretty_unit
+from ..units import pretty_unit
 
 WIDTH, HEIGHT = 540, 300
 LEFT, RIGHT, TOP, GAP, BOTTOM = 58, 10, 26, 22, 30
@@ -62,10 +62,10 @@ def _panel(edges, values, top: float, label: str, moving) -> list[str]:
     return out
 
 
-def load_cycle_svg(profile, duty: dict | None = None, torque_unit: str = "N*m") -> str:
+def load_cycle_svg(profile, duty=None, torque_unit: str = "N*m") -> str:
     """The load cycle ``profile`` as an SVG text: mean output speed [rpm] above, output torque
-    below (in ``torque_unit``), against time; pauses shaded; ``duty`` (the results' ``duty``
-    section) gives the title's ED, cycle time and mode.
+    below (in ``torque_unit``), against time; pauses shaded; ``duty`` (the load cycle's values,
+    :class:`calc.sections.duty.DutyValues`) gives the title's ED, cycle time and mode.
 
     >>> from calc import Q_
     >>> from calc.profile import Profile
@@ -79,9 +79,8 @@ def load_cycle_svg(profile, duty: dict | None = None, torque_unit: str = "N*m") 
     torques = np.nan_to_num(profile.torques.m_as(torque_unit))
     moving = profile.moving
     title = "Load cycle (each segment at its mean speed)"
-    if duty:
-        title = (f"Load cycle: ED = {Q_(duty['ED']['value'], duty['ED']['unit']).m_as('percent'):.3g} %, "
-                 f"cycle {duty['t_cycle']['value']:.3g} s, mode {duty['mode']}")
+    if duty is not None:
+        title = f"Load cycle: ED = {duty.ED.quantity.m_as('percent'):.3g} %, cycle {duty.t_cycle.quantity.m_as('s'):.3g} s, mode {duty.mode}"
     body = [f'<text x="{LEFT}" y="16" font-weight="600">{escape(title)}</text>']
     body += _panel(edges, speeds, TOP, "n₂ [rpm]", moving)
     body += _panel(edges, torques, TOP + PANEL + GAP, f"T₂ [{pretty_unit(torque_unit)}]", moving)
@@ -96,28 +95,28 @@ def load_cycle_svg(profile, duty: dict | None = None, torque_unit: str = "N*m") 
             f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
 
 
-def stiffness_chain_svg(accuracy: dict) -> str:
+def stiffness_chain_svg(accuracy) -> str:
     """Each member's share of the chain's twist at the output, as horizontal bars labelled with its
-    twist and stiffness at the output, from the results' ``accuracy`` section (E11): the data of
+    twist and stiffness at the output, from the chain's accuracy
+    (:class:`calc.sections.accuracy.AccuracyValues`, E11): the data of
     :func:`calc.accuracy_plots.stiffness_chain_figure`, drawn by the browser.
 
-    >>> a = {"applied_torque": {"value": 8, "unit": "N*m"}, "C_total": {"value": 21.35, "unit": "N*m/arcmin"},
-    ...      "components": [{"name": "AKD-30", "side": "input", "share_of_compliance": 0.03,
-    ...                      "twist_at_applied_torque": {"value": 0.011, "unit": "arcmin"},
-    ...                      "stiffness_at_output": {"value": 727.2, "unit": "N*m/arcmin"}}]}
+    >>> from calc.case import read_case
+    >>> from calc.catalog import CATALOG_DIR
+    >>> from calc.sections import accuracy
+    >>> a = accuracy.evaluate(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml")).shown
     >>> svg = stiffness_chain_svg(a)
-    >>> svg.count("<rect"), "3 %: 0.011 arcmin, C = 727.2 N·m/arcmin" in svg
-    (1, True)
+    >>> svg.count("<rect"), [m.name for m in a.members]
+    (2, ['AKD-30', 'NPT035-10'])
     """
     from ..accuracy_plots import SIDE_COLORS  # the report figure's colours
-    from ..sections.common import quantity_text
 
-    members = accuracy["components"]
+    members = accuracy.members
     row, left, top = 30, 130, 24
     height = top + row * len(members) + 34
     scale = (WIDTH - left - 10) / 110  # 0 to 110 %
-    twist = sum(m["twist_at_applied_torque"]["value"] for m in members)
-    title = (f"Stiffness chain at {quantity_text(accuracy['applied_torque'])}: C_total = {quantity_text(accuracy['C_total'])}, "
+    twist = sum(m.twist_at_applied_torque.quantity.m_as("arcmin") for m in members)
+    title = (f"Stiffness chain at {accuracy.applied_torque}: C_total = {accuracy.C_total}, "
              f"twist {twist:.3g} arcmin (E11)")
     body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
     for share in range(0, 101, 20):
@@ -126,11 +125,11 @@ def stiffness_chain_svg(accuracy: dict) -> str:
         body.append(f'<text x="{x:.1f}" y="{height - 18}" text-anchor="middle">{share}</text>')
     for k, m in enumerate(members):
         y = top + row * k + 5
-        share = 100 * m["share_of_compliance"]
-        label = f"{share:.3g} %: {quantity_text(m['twist_at_applied_torque'])}, C = {quantity_text(m['stiffness_at_output'])}"
-        body += [f'<rect x="{left}" y="{y}" width="{scale * share:.1f}" height="{row - 10}" fill="{SIDE_COLORS.get(m["side"], "#888")}"/>',
-                 f'<text x="{left - 6}" y="{y + 9}" text-anchor="end">{escape(m["name"])}</text>',
-                 f'<text x="{left - 6}" y="{y + 20}" text-anchor="end" fill="#666">({escape(m["side"])} side)</text>',
+        share = 100 * m.share_of_compliance
+        label = f"{share:.3g} %: {m.twist_at_applied_torque}, C = {m.stiffness_at_output}"
+        body += [f'<rect x="{left}" y="{y}" width="{scale * share:.1f}" height="{row - 10}" fill="{SIDE_COLORS.get(m.side, "#888")}"/>',
+                 f'<text x="{left - 6}" y="{y + 9}" text-anchor="end">{escape(m.name)}</text>',
+                 f'<text x="{left - 6}" y="{y + 20}" text-anchor="end" fill="#666">({escape(m.side)} side)</text>',
                  # beside a short bar, inside a long one (so it stays in the figure)
                  f'<text x="{left + scale * share + 4:.1f}" y="{y + 14}">{escape(label)}</text>' if share < 50 else
                  f'<text x="{left + scale * share - 4:.1f}" y="{y + 14}" text-anchor="end" fill="#fff">{escape(label)}</text>']

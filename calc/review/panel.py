@@ -376,12 +376,13 @@ class DesignReview:
         if drawn is not None:
             case, report = drawn
             torque_unit = "lbf*in" if self.units.value == "inch-pound" else "N*m"
-            self.load_cycle.value = load_cycle_svg(case.profile, (report.results or {}).get("duty"), torque_unit)
+            sections = report.evaluated.sections
+            self.load_cycle.value = load_cycle_svg(case.profile, sections["profile"].shown, torque_unit)
             self.load_cycle.layout.display = None
-            accuracy = (report.results or {}).get("accuracy")
-            if accuracy:
-                self.chain.value = stiffness_chain_svg(accuracy)
-            self.chain.layout.display = None if accuracy else "none"
+            accuracy = sections.get("accuracy")
+            if accuracy is not None:
+                self.chain.value = stiffness_chain_svg(accuracy.shown)
+            self.chain.layout.display = None if accuracy is not None else "none"
             self._idle_inputs(report)
             self._chooser_verdict(report, changes)
         else:  # the figures of the last good inputs no longer apply

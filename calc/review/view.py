@@ -80,21 +80,14 @@ def in_system(v: Value | None) -> Value | None:
     ('lbf*in', 60.0)
     >>> SYSTEM.reset(token)
     """
-    v = _bridge(v)
     if v is None or v.value is None or SYSTEM.get() == "SI" or v.unit not in INCH_POUND:
         return v
     unit = INCH_POUND[v.unit]
     return Value(float(Q_(v.value, v.unit).m_as(unit)), unit)
 
 
-def _bridge(v):
-    # TRANSITIONAL: a JSON quantity read back, until every section's result is typed.
-    return Value(**v) if isinstance(v, dict) else v
-
-
 def _q(v: Value | None) -> str:
     """A result value as text, in the unit system shown; blank where not given."""
-    v = _bridge(v)
     return "" if v is None or v.value is None else escape(str(in_system(v)).replace(" 1/hour", " /h"))
 
 
@@ -138,30 +131,25 @@ def _governing(results) -> str:
     return "<h3>Governing checks</h3>" + _table(["part", "check", "required", "rated", "utilization", "verdict"], rows, numeric={2, 3, 4})
 
 
-def _duty(r: dict) -> str:
-    """The duty values in one line: mode, ED, the S5 and S1 values."""
-    if "duty" not in r:
-        return ""
-    d, cy, co = r["duty"], r.get("cyclic", {}), r.get("continuous", {})
-    parts = [f"<b>{escape(d['mode'])}</b>", f"ED {_q(d['ED'])}", f"cycle {_q(d['t_cycle'])}"]
-    if cy:
-        parts += [f"{typeset('Z_h')} {_q(cy.get('Zh'))}", f"{typeset('f_s')} {sig(cy['fs'])}" if cy.get("fs") is not None else "",
-                  f"{typeset('n_2max')} {_q(cy.get('n2max'))}", f"{typeset('T_2max')} {_q(cy.get('T2max'))}" if cy.get("T2max") else ""]
-    if co:
-        parts += [f"{typeset('n_2m')} {_q(co.get('n2m'))}", f"{typeset('T_2m')} {_q(co.get('T2m'))}"]
+def _duty(d) -> str:
+    """The duty values (:class:`calc.sections.duty.DutyValues`) in one line: mode, ED, the S5 and S1 values."""
+    parts = [f"<b>{escape(d.mode)}</b>", f"ED {_q(d.ED)}", f"cycle {_q(d.t_cycle)}",
+             f"{typeset('Z_h')} {_q(d.Z_h)}", f"{typeset('f_s')} {sig(d.f_s)}", f"{typeset('n_2max')} {_q(d.n_2max)}",
+             f"{typeset('T_2max')} {_q(d.T_2max)}" if d.T_2max is not None else "",
+             f"{typeset('n_2m')} {_q(d.n_2m)}", f"{typeset('T_2m')} {_q(d.T_2m)}"]
     return '<div class="values">Duty: ' + " · ".join(p for p in parts if p) + "</div>"
 
 
-def _motion(r: dict, typed_by_hand: bool) -> str:
-    """Where the load cycle comes from: the motion's peak values, or that its segments were changed
-    by hand (then the moves and mechanism no longer derive it)."""
+def _motion(m, typed_by_hand: bool) -> str:
+    """Where the load cycle comes from: the motion's peak values (a
+    :class:`calc.sections.motion.MotionResult`, None without one), or that its segments were
+    changed by hand (then the moves and mechanism no longer derive it)."""
     if typed_by_hand:
         return '<div class="values">Load cycle: the segments as changed here (the case derives them from its motion; reset to derive them again)</div>'
-    m = r.get("motion")
-    if not m:
+    if m is None:
         return ""
-    parts = [f"{escape(m.get('mechanism') or '')} from its {escape(m.get('source', ''))}s".strip(), f"peak speed {_q(m.get('peak_speed'))}",
-             f"peak acceleration {_q(m.get('peak_acceleration'))}", f"{typeset('J_L')} {_q(m.get('J_L'))}" if m.get("J_L") else ""]
+    parts = [f"{escape(m.mechanism or '')} from its {escape(m.source)}s".strip(), f"peak speed {_q(m.peak_speed)}",
+             f"peak acceleration {_q(m.peak_acceleration)}", f"{typeset('J_L')} {_q(m.J_L)}" if m.J_L is not None else ""]
     return '<div class="values">Motion: ' + " · ".join(p for p in parts if p) + "</div>"
 
 
@@ -222,14 +210,15 @@ def _torsion_table(t) -> str:
             + f"<div class=note>natural frequencies {frequencies} (rigid-body mode left out)</div>" + check + missing)
 
 
-def _accuracy_table(a: dict) -> str:
+def _accuracy_table(a) -> str:
+    """The chain's accuracy (:class:`calc.sections.accuracy.AccuracyValues`)."""
     rows = [
-        [typeset("C_total"), "total torsional stiffness at the output", _q(a.get("C_total"))],
-        [typeset("phi_LM"), f"lost motion at the applied torque {_q(a.get('applied_torque'))}", _q(a.get("lost_motion"))],
-        ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.get('positioning_rule', ''))})"
-         + (f"; <b>a lower bound</b>: unknown {typeset('; '.join(a['unknown']))}" if a.get("unknown") else ""),
-         ("≥ " if a.get("unknown") else "") + _q(a.get("positioning_accuracy"))],
-        ["", "repeatability" + (" (upper bound)" if a.get("repeatability_is_bound") else ""), _q(a.get("repeatability"))],
+        [typeset("C_total"), "total torsional stiffness at the output", _q(a.C_total)],
+        [typeset("phi_LM"), f"lost motion at the applied torque {_q(a.applied_torque)}", _q(a.lost_motion)],
+        ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.positioning_rule)})"
+         + (f"; <b>a lower bound</b>: unknown {typeset('; '.join(a.unknown))}" if a.unknown else ""),
+         ("≥ " if a.unknown else "") + _q(a.positioning_accuracy)],
+        ["", "repeatability" + (" (upper bound)" if a.repeatability_is_bound else ""), _q(a.repeatability)],
     ]
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
 
@@ -272,15 +261,15 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused) 
     reasons = [*left_out, *report.reasons]
     if reasons and not passes:
         out.append('<ul class="reasons">' + "".join(f"<li>{typeset(x)}</li>" for x in reasons) + "</ul>")
-    r, evaluated = report.results, report.evaluated
+    evaluated = report.evaluated
     if evaluated is not None:
-        out += [_governing(evaluated), _motion(r, typed_by_hand), _duty(r)]
+        out += [_governing(evaluated), _motion(evaluated.sections.get("motion"), typed_by_hand), _duty(evaluated["profile"].shown)]
         if "gearbox" in evaluated.sections:
             out.append(_gearbox_table(evaluated["gearbox"], shown))
         if "coupling" in evaluated.sections:
             out.append(_coupling_table(evaluated["coupling"], shown))
-        if r.get("accuracy"):
-            out.append(_accuracy_table(r["accuracy"]))
+        if "accuracy" in evaluated.sections:
+            out.append(_accuracy_table(evaluated["accuracy"].shown))
     out.append("</div>")
     return "".join(out)
 
@@ -301,11 +290,14 @@ def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[
         u = None if s is None else s.selection.best.worst
         return "" if u is None else f"{100 * u:.0f} %"
 
-    def value(r, *path):
-        d = r.results
-        for p in path:
-            d = (d or {}).get(p)
-        return "" if d is None else str(in_system(d))
+    def shown(r, name, field):
+        s = section(r, name)
+        v = None if s is None else getattr(s.shown, field)
+        return "" if v is None else str(in_system(v))
+
+    def bound(r):
+        s = section(r, "accuracy")
+        return "≥ " if s is not None and s.shown.unknown else ""
 
     rows = [
         ("verdict", lambda r: r.verdict.word),
@@ -314,12 +306,12 @@ def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[
         ("coupling", lambda r: chosen(r, "coupling")),
         ("coupling worst utilization", lambda r: worst(r, "coupling")),
         ("checks not made", lambda r: str(len(r.evaluated.not_made()) if r.evaluated is not None else 0)),
-        ("mode", lambda r: ((r.results or {}).get("duty") or {}).get("mode", "")),
-        ("ED", lambda r: value(r, "duty", "ED")),
-        ("T_2max", lambda r: value(r, "cyclic", "T2max")),
-        ("T_2m", lambda r: value(r, "continuous", "T2m")),
-        ("positioning accuracy", lambda r: ("≥ " if ((r.results or {}).get("accuracy") or {}).get("unknown") else "") + value(r, "accuracy", "positioning_accuracy")),
-        ("lost motion", lambda r: value(r, "accuracy", "lost_motion")),
+        ("mode", lambda r: "" if section(r, "profile") is None else section(r, "profile").shown.mode),
+        ("ED", lambda r: shown(r, "profile", "ED")),
+        ("T_2max", lambda r: shown(r, "profile", "T_2max")),
+        ("T_2m", lambda r: shown(r, "profile", "T_2m")),
+        ("positioning accuracy", lambda r: bound(r) + shown(r, "accuracy", "positioning_accuracy")),
+        ("lost motion", lambda r: shown(r, "accuracy", "lost_motion")),
     ]
     return [(name, [f(r) for _, r in variants]) for name, f in rows]
 

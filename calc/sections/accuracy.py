@@ -6,6 +6,7 @@ E11 to E13), and the required values checked."""
 from __future__ import annotations
 
 import dataclasses
+import functools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -15,11 +16,11 @@ from ..case import Case, Declared, Key, Table, once
 from ..catalog import display_path, load_catalog, load_catalogs, resolve
 from ..checks import CheckArray
 from ..errors import CalcError
-from ..units import Q_, fmt, parse_quantity, sig
+from ..units import Q_, Value, fmt, parse_quantity, sig
 from ..measurement import measurement_path
 from ..stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
-from .common import Governing, Verdict, number, quantity, quantity_text
+from .common import Governing, Verdict, json_of, number, quantity
 
 NAME = "accuracy"
 ORDER = 80
@@ -392,12 +393,153 @@ def requirement_checks(spec: AccuracyCase, a: ChainAccuracy) -> list[CheckArray]
     ]
 
 
+@dataclass(frozen=True)
+class MeasuredLoop:
+    """A member's measured hysteresis loop as analysed (E12)."""
+
+    file: str
+    stiffness_positive: Value
+    stiffness_negative: Value
+    backlash: Value
+    lost_motion: Value
+
+
+@dataclass(frozen=True)
+class MeasuredTrace:
+    """A member's measured transmission error over one output revolution."""
+
+    file: str
+    transmission_accuracy: Value
+    direction: str
+
+
+@dataclass(frozen=True)
+class MeasuredPositioning:
+    """The scatter of repeated moves to targets, measured at the output."""
+
+    file: str
+    targets: int
+    approaches: int
+    accuracy: Value
+    repeatability: Value
+
+
+@dataclass(frozen=True)
+class Member:
+    """A member of the chain referred to the output, as the outputs print it."""
+
+    name: str
+    side: str
+    source: str
+    stiffness_at_output: Value  # the secant |T| / φ(T) at the applied torque where it has a curve
+    backlash_at_output: Value
+    transmission_accuracy_at_output: Value | None
+    share_of_compliance: float
+    twist_at_applied_torque: Value
+    stiffness_curve: dict | None = None  # T1, T2, K1, K2, K3 as Values
+    measured_loop: MeasuredLoop | None = None
+    measured_trace: MeasuredTrace | None = None
+
+
+@dataclass(frozen=True)
+class AccuracyValues:
+    """The chain's accuracy at the output as the outputs print it (:attr:`AccuracyResult.shown`)."""
+
+    applied_torque: Value
+    ratio: float | None
+    nominal_torque: Value | None
+    nominal_torque_from: str | None
+    C_total: Value
+    C_total_is_secant: bool
+    backlash: Value
+    transmission_accuracy: Value
+    transmission_accuracy_from: list
+    lost_motion: Value
+    positioning_rule: str
+    positioning_accuracy: Value
+    unknown: list  # the terms unknown for the chosen parts: the positioning accuracy is a lower bound
+    repeatability: Value
+    repeatability_is_bound: bool
+    members: list  # Member
+    radius: Value | None
+    arcs: dict  # backlash, lost_motion, positioning_accuracy, repeatability as arcs at the radius
+    check_arcs: dict  # per check: (the chain's value, the required value) as arcs at the radius
+    positioning: MeasuredPositioning | None
+
+
+def _member(spec: AccuracyCase, c: Chain, k: int, share: float, twist) -> Member:
+    comp = c.components[k]
+    ta = c.transmission_accuracy_at_output[k]
+    curve = loop = trace = None
+    if comp.stiffness_curve is not None:
+        sc = comp.stiffness_curve
+        curve = {"T1": Value.of(sc.T_1, "N*m"), "T2": Value.of(sc.T_2, "N*m"),
+                 **{key: Value.of(getattr(sc, f"K_{key[1]}"), "N*m/rad") for key in ("K1", "K2", "K3")}}
+    if comp.name in spec.loops:
+        path, m = spec.loops[comp.name]
+        loop = MeasuredLoop(path, Value.of(m.stiffness_positive, "N*m/arcmin"), Value.of(m.stiffness_negative, "N*m/arcmin"),
+                            Value.of(m.backlash, "arcmin"), Value.of(m.lost_motion, "arcmin"))
+    if comp.name in spec.traces:
+        path, t = spec.traces[comp.name]
+        trace = MeasuredTrace(path, Value.of(t.accuracy, "arcsec"), t.governing)
+    return Member(comp.name, comp.side, comp.source, Value.of(c.stiffness_at_output[k], "N*m/arcmin"), Value.of(c.backlash_at_output[k], "arcmin"),
+                  None if np.isnan(ta.magnitude) else Value.of(ta, "arcsec"), number(share), Value.of(twist, "arcmin"), curve, loop, trace)
+
+
+def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
+    """The values of the chain's accuracy in the units every output shows them in."""
+    c = a.chain
+    twist = c.twist(a.applied_torque)
+    members = [_member(spec, c, k, share, twist[k]) for k, share in enumerate(c.compliance_shares)]
+    arcs, check_arcs = {}, {}
+    if spec.radius is not None:
+        r = spec.radius
+        for key in ("backlash", "lost_motion", "positioning_accuracy", "repeatability"):
+            angle = c.backlash if key == "backlash" else getattr(a, key)
+            arcs[key] = Value.of(arc_length(r=r, phi=angle), "mm", f"accuracy.{key}_arc")
+        for k in (k.at(0) for k in requirement_checks(spec, a)):
+            check_arcs[k.name] = (Value.of(arc_length(r=r, phi=k.required), "mm", f"accuracy.{k.name}"),
+                                  Value.of(arc_length(r=r, phi=k.rated), "mm", f"accuracy.required_{k.name}"))
+    p = spec.positions
+    positioning = None if p is None else MeasuredPositioning(display_path(p.source), p.targets, len(p.error.magnitude),
+                                                             Value.of(p.accuracy, "arcmin"), Value.of(p.repeatability, "arcmin"))
+    return AccuracyValues(
+        applied_torque=Value.of(a.applied_torque, "N*m"), ratio=None if c.ratio is None else number(c.ratio.m_as("")),
+        nominal_torque=None if a.nominal_torque is None else Value.of(a.nominal_torque, "N*m"),
+        nominal_torque_from="accuracy.nominal_torque" if spec.nominal_torque is not None else c.nominal_torque_from,
+        C_total=Value.of(c.stiffness, "N*m/arcmin"), C_total_is_secant=c.has_curves, backlash=Value.of(c.backlash, "arcmin"),
+        transmission_accuracy=Value.of(c.transmission_accuracy, "arcsec"), transmission_accuracy_from=c.transmission_accuracy_from,
+        lost_motion=Value.of(a.lost_motion, "arcmin"), positioning_rule=a.rule.text, positioning_accuracy=Value.of(a.positioning_accuracy, "arcmin"),
+        unknown=list(spec.unknown), repeatability=Value.of(a.repeatability, "arcmin"), repeatability_is_bound=a.repeatability_is_bound,
+        members=members, radius=None if spec.radius is None else Value.of(spec.radius, "mm"), arcs=arcs, check_arcs=check_arcs,
+        positioning=positioning,
+    )
+
+
+def _member_json(m: Member) -> dict:
+    out = {"name": m.name, "side": m.side, "source": m.source, "stiffness_at_output": m.stiffness_at_output.to_json(),
+           "backlash_at_output": m.backlash_at_output.to_json(), "transmission_accuracy_at_output": json_of(m.transmission_accuracy_at_output),
+           "share_of_compliance": m.share_of_compliance, "twist_at_applied_torque": m.twist_at_applied_torque.to_json()}
+    if m.stiffness_curve is not None:
+        out["stiffness_curve"] = {key: v.to_json() for key, v in m.stiffness_curve.items()}
+        out["stiffness_is_secant"] = True  # stiffness_at_output: |T| / φ(T) at the applied torque
+    if m.measured_loop is not None:
+        out["measured_loop"] = dataclasses.asdict(m.measured_loop)
+    if m.measured_trace is not None:
+        out["measured_trace"] = dataclasses.asdict(m.measured_trace)
+    return out
+
+
 @dataclass
 class AccuracyResult:
     """The chain as read, its accuracy at the output, and the required values checked."""
 
     inputs: AccuracyCase
     accuracy: ChainAccuracy
+
+    @functools.cached_property
+    def shown(self) -> AccuracyValues:
+        return accuracy_values(self.inputs, self.accuracy)
 
     def to_json(self, candidates: int | None = None) -> dict:
         """The ``accuracy`` section of the results (``docs/case-format.md``): ``C_total`` referred to
@@ -411,157 +553,98 @@ class AccuracyResult:
         >>> round(r["C_total"]["value"], 2), r["C_total"]["unit"], [c["side"] for c in r["components"]]
         (21.35, 'N*m/arcmin', ['input', 'output'])
         """
-        spec, a = self.inputs, self.accuracy
-        c = a.chain
-        shares = c.compliance_shares
-        twist = c.twist(a.applied_torque)
-        components = []
-        for k, comp in enumerate(c.components):
-            ta = c.transmission_accuracy_at_output[k]
-            item = {
-                "name": comp.name,
-                "side": comp.side,
-                "source": comp.source,
-                "stiffness_at_output": quantity(c.stiffness_at_output[k], "N*m/arcmin"),
-                "backlash_at_output": quantity(c.backlash_at_output[k], "arcmin"),
-                "transmission_accuracy_at_output": None if np.isnan(ta.magnitude) else quantity(ta, "arcsec"),
-                "share_of_compliance": number(shares[k]),
-                "twist_at_applied_torque": quantity(twist[k], "arcmin"),
-            }
-            if comp.stiffness_curve is not None:
-                curve = comp.stiffness_curve
-                item["stiffness_curve"] = {
-                    "T1": quantity(curve.T_1, "N*m"), "T2": quantity(curve.T_2, "N*m"),
-                    "K1": quantity(curve.K_1, "N*m/rad"), "K2": quantity(curve.K_2, "N*m/rad"), "K3": quantity(curve.K_3, "N*m/rad"),
-                }
-                item["stiffness_is_secant"] = True  # stiffness_at_output: |T| / φ(T) at the applied torque
-            if comp.name in spec.loops:
-                path, loop = spec.loops[comp.name]
-                item["measured_loop"] = {
-                    "file": path,
-                    "stiffness_positive": quantity(loop.stiffness_positive, "N*m/arcmin"),
-                    "stiffness_negative": quantity(loop.stiffness_negative, "N*m/arcmin"),
-                    "backlash": quantity(loop.backlash, "arcmin"),
-                    "lost_motion": quantity(loop.lost_motion, "arcmin"),
-                }
-            if comp.name in spec.traces:
-                path, trace = spec.traces[comp.name]
-                item["measured_trace"] = {"file": path, "transmission_accuracy": quantity(trace.accuracy, "arcsec"), "direction": trace.governing}
-            components.append(item)
+        v = self.shown
         out = {
-            "applied_torque": quantity(a.applied_torque, "N*m"),
-            "ratio": None if c.ratio is None else number(c.ratio.m_as("")),
-            "nominal_torque": None if a.nominal_torque is None else quantity(a.nominal_torque, "N*m"),
-            "nominal_torque_from": "accuracy.nominal_torque" if spec.nominal_torque is not None else c.nominal_torque_from,
-            "C_total": quantity(c.stiffness, "N*m/arcmin"),
-            "C_total_is_secant": c.has_curves,
-            "backlash": quantity(c.backlash, "arcmin"),
-            "transmission_accuracy": quantity(c.transmission_accuracy, "arcsec"),
-            "transmission_accuracy_from": c.transmission_accuracy_from,
-            "lost_motion": quantity(a.lost_motion, "arcmin"),
-            "positioning_rule": a.rule.text,
-            "positioning_accuracy": quantity(a.positioning_accuracy, "arcmin"),
+            "applied_torque": v.applied_torque.to_json(), "ratio": v.ratio, "nominal_torque": json_of(v.nominal_torque),
+            "nominal_torque_from": v.nominal_torque_from, "C_total": v.C_total.to_json(), "C_total_is_secant": v.C_total_is_secant,
+            "backlash": v.backlash.to_json(), "transmission_accuracy": v.transmission_accuracy.to_json(),
+            "transmission_accuracy_from": v.transmission_accuracy_from, "lost_motion": v.lost_motion.to_json(),
+            "positioning_rule": v.positioning_rule, "positioning_accuracy": v.positioning_accuracy.to_json(),
             # A term unknown for the chosen parts: the value above is a lower bound, and says which.
-            "positioning_accuracy_is_lower_bound": bool(spec.unknown),
-            "unknown": list(spec.unknown),
-            "repeatability": quantity(a.repeatability, "arcmin"),
-            "repeatability_is_bound": a.repeatability_is_bound,
-            "components": components,
+            "positioning_accuracy_is_lower_bound": bool(v.unknown), "unknown": v.unknown,
+            "repeatability": v.repeatability.to_json(), "repeatability_is_bound": v.repeatability_is_bound,
+            "components": [_member_json(m) for m in v.members],
         }
-        if spec.radius is not None:
-            r = spec.radius
-            out["radius"] = quantity(r, "mm")
-            for key in ("backlash", "lost_motion", "positioning_accuracy", "repeatability"):
-                angle = c.backlash if key == "backlash" else getattr(a, key)
-                out[f"{key}_arc"] = quantity(arc_length(r=r, phi=angle), "mm", f"accuracy.{key}_arc")
-        if spec.positions is not None:
-            p = spec.positions
-            out["measured_positioning"] = {
-                "file": display_path(p.source),
-                "targets": p.targets,
-                "approaches": len(p.error.magnitude),
-                "accuracy": quantity(p.accuracy, "arcmin"),
-                "repeatability": quantity(p.repeatability, "arcmin"),
-            }
-        checks = [c.at(0) for c in requirement_checks(spec, a)]
-        if checks:
+        if v.radius is not None:
+            out["radius"] = v.radius.to_json()
+            out.update({f"{key}_arc": arc.to_json() for key, arc in v.arcs.items()})
+        if v.positioning is not None:
+            out["measured_positioning"] = dataclasses.asdict(v.positioning)
+        g = self.governing()
+        if g is not None:
             # An accuracy check lists the chain's value and the limit the case requires of it.
-            out["checks"] = [
-                {
-                    "name": k.name,
-                    "criterion": k.criterion,
-                    "value": quantity(k.required, k.unit, f"accuracy.{k.name}"),
-                    "required": quantity(k.rated, k.unit, f"accuracy.required_{k.name}"),
-                    "utilization": None if not_known(spec, k.name) else number(k.utilization, f"accuracy.{k.name}"),
-                    "passes": None if not_known(spec, k.name) else k.passes,
-                    **({"not_made": not_known(spec, k.name)} if not_known(spec, k.name) else {}),
-                    "governs": True,
-                    **(
-                        {}
-                        if spec.radius is None
-                        else {
-                            "value_arc": quantity(arc_length(r=spec.radius, phi=k.required), "mm", f"accuracy.{k.name}"),
-                            "required_arc": quantity(arc_length(r=spec.radius, phi=k.rated), "mm", f"accuracy.required_{k.name}"),
-                        }
-                    ),
-                }
-                for k in checks
-            ]
+            out["checks"] = [self._check_json(k) for k in g.checks]
             out["passes"] = self.verdict().passes
+        return out
+
+    def _check_json(self, k) -> dict:
+        out = {"name": k.name, "criterion": k.criterion, "value": quantity(k.required, k.unit, f"accuracy.{k.name}"),
+               "required": quantity(k.rated, k.unit, f"accuracy.required_{k.name}"),
+               "utilization": None if k.utilization is None else number(k.utilization, f"accuracy.{k.name}"), "passes": k.passes}
+        if k.not_made is not None:
+            out["not_made"] = k.not_made
+        out["governs"] = True
+        if k.name in self.shown.check_arcs:
+            value_arc, required_arc = self.shown.check_arcs[k.name]
+            out.update(value_arc=value_arc.to_json(), required_arc=required_arc.to_json())
         return out
 
     def summary_lines(self, candidates: int | None = None) -> list[str]:
         """The accuracy results as lines of the terminal report: the chain table, then C_total, lost
         motion, positioning accuracy with the rule that applied, and repeatability, each with its
         errata entry; measurements and checks after."""
-        s = self.to_json()
-        ratio = "" if s["ratio"] is None else f", ratio {s['ratio']:g}"
-        lines = [f"Accuracy at the output (applied torque {quantity_text(s['applied_torque'])}{ratio}; E11 to E13):"]
-        width = max(len("component"), *(len(c["name"]) for c in s["components"]))
+        v = self.shown
+        ratio = "" if v.ratio is None else f", ratio {v.ratio:g}"
+        lines = [f"Accuracy at the output (applied torque {v.applied_torque}{ratio}; E11 to E13):"]
+        width = max(len("component"), *(len(m.name) for m in v.members))
         lines.append(f"  {'component':<{width}}  side    {'stiffness at output':>20}  {'share of twist':>14}  {'backlash at output':>18}  source")
-        for c in s["components"]:
+        for m in v.members:
             lines.append(
-                f"  {c['name']:<{width}}  {c['side']:<6}  {quantity_text(c['stiffness_at_output']):>20}  {100 * c['share_of_compliance']:>12.1f} %"
-                f"  {quantity_text(c['backlash_at_output']):>18}  {c['source']}"
+                f"  {m.name:<{width}}  {m.side:<6}  {str(m.stiffness_at_output):>20}  {100 * m.share_of_compliance:>12.1f} %"
+                f"  {str(m.backlash_at_output):>18}  {m.source}"
             )
-        ta_from = ", ".join(s["transmission_accuracy_from"]) or "no component gives one"
-        t_n = "" if s["nominal_torque"] is None else f", T_N = {quantity_text(s['nominal_torque'])} ({s['nominal_torque_from']})"
+        ta_from = ", ".join(v.transmission_accuracy_from) or "no component gives one"
+        t_n = "" if v.nominal_torque is None else f", T_N = {v.nominal_torque} ({v.nominal_torque_from})"
         lines += [
-            f"  C_total = {quantity_text(s['C_total'])}{' (secant |T| / φ at the applied torque: a member gives a stiffness curve)' if s['C_total_is_secant'] else ''}; backlash = {quantity_text(s['backlash'])}; transmission accuracy = {quantity_text(s['transmission_accuracy'])} ({ta_from})",
-            f"  Lost motion = j_t + |T| / C = {quantity_text(s['lost_motion'])} (E12)",
-            f"  Positioning accuracy ({s['positioning_rule']}{t_n}) {relation(self.inputs, 'positioning_accuracy')} {quantity_text(s['positioning_accuracy'])} (E13)"
-            + (f"; a lower bound: unknown {'; '.join(s['unknown'])}" if s["unknown"] else ""),
-            f"  Repeatability {'<=' if s['repeatability_is_bound'] else '='} {quantity_text(s['repeatability'])} "
-            f"({'bounded by the lost motion under torque' if s['repeatability_is_bound'] else 'the backlash at T = 0'}, E13)",
+            f"  C_total = {v.C_total}{' (secant |T| / φ at the applied torque: a member gives a stiffness curve)' if v.C_total_is_secant else ''}; backlash = {v.backlash}; transmission accuracy = {v.transmission_accuracy} ({ta_from})",
+            f"  Lost motion = j_t + |T| / C = {v.lost_motion} (E12)",
+            f"  Positioning accuracy ({v.positioning_rule}{t_n}) {relation(self.inputs, 'positioning_accuracy')} {v.positioning_accuracy} (E13)"
+            + (f"; a lower bound: unknown {'; '.join(v.unknown)}" if v.unknown else ""),
+            f"  Repeatability {'<=' if v.repeatability_is_bound else '='} {v.repeatability} "
+            f"({'bounded by the lost motion under torque' if v.repeatability_is_bound else 'the backlash at T = 0'}, E13)",
         ]
-        if "radius" in s:
+        if v.radius is not None:
+            a = v.arcs
             lines.append(
-                f"  As arcs s = r · φ at r = {quantity_text(s['radius'])}: backlash {quantity_text(s['backlash_arc'])}, lost motion {quantity_text(s['lost_motion_arc'])}, "
-                f"positioning accuracy {quantity_text(s['positioning_accuracy_arc'])}, repeatability {quantity_text(s['repeatability_arc'])}"
+                f"  As arcs s = r · φ at r = {v.radius}: backlash {a['backlash']}, lost motion {a['lost_motion']}, "
+                f"positioning accuracy {a['positioning_accuracy']}, repeatability {a['repeatability']}"
             )
-        for c in s["components"]:
-            if "measured_loop" in c:
-                m = c["measured_loop"]
+        for m in v.members:
+            if m.measured_loop is not None:
+                loop = m.measured_loop
                 lines.append(
-                    f"  Measured loop of {c['name']} ({m['file']}): C = {quantity_text(m['stiffness_positive'])} / {quantity_text(m['stiffness_negative'])} "
-                    f"(+ / -), backlash {quantity_text(m['backlash'])}, lost motion ±3 % {quantity_text(m['lost_motion'])}"
+                    f"  Measured loop of {m.name} ({loop.file}): C = {loop.stiffness_positive} / {loop.stiffness_negative} "
+                    f"(+ / -), backlash {loop.backlash}, lost motion ±3 % {loop.lost_motion}"
                 )
-            if "measured_trace" in c:
-                m = c["measured_trace"]
-                lines.append(f"  Measured trace of {c['name']} ({m['file']}): transmission accuracy {quantity_text(m['transmission_accuracy'])} ({m['direction']})")
-        if "measured_positioning" in s:
-            m = s["measured_positioning"]
+            if m.measured_trace is not None:
+                t = m.measured_trace
+                lines.append(f"  Measured trace of {m.name} ({t.file}): transmission accuracy {t.transmission_accuracy} ({t.direction})")
+        if v.positioning is not None:
+            p = v.positioning
             lines.append(
-                f"  Measured positioning ({m['file']}, {m['approaches']} approaches to {m['targets']} targets): "
-                f"accuracy {quantity_text(m['accuracy'])}, repeatability {quantity_text(m['repeatability'])}"
+                f"  Measured positioning ({p.file}, {p.approaches} approaches to {p.targets} targets): "
+                f"accuracy {p.accuracy}, repeatability {p.repeatability}"
             )
-        for k in s.get("checks", []):
-            if k["passes"] is None:
-                lines.append(f"  {k['name']:<22} {relation(self.inputs, k['name'])} {quantity_text(k['value'])} required <= {quantity_text(k['required'])}  not made: {k['not_made']}")
+        g = self.governing()
+        for k in [] if g is None else g.checks:
+            value, limit = k.required_value, k.rated_value
+            if k.passes is None:
+                lines.append(f"  {k.name:<22} {relation(self.inputs, k.name)} {value} required <= {limit}  not made: {k.not_made}")
                 continue
+            arcs = v.check_arcs.get(k.name)
             lines.append(
-                f"  {k['name']:<22} {quantity_text(k['value']):>12} required <= {quantity_text(k['required']):>12}  utilization {k['utilization']:.2f}  {'ok' if k['passes'] else 'FAIL'}"
-                + (f"  (as arcs: {quantity_text(k['value_arc'])} <= {quantity_text(k['required_arc'])})" if "value_arc" in k else "")
+                f"  {k.name:<22} {str(value):>12} required <= {str(limit):>12}  utilization {k.utilization:.2f}  {'ok' if k.passes else 'FAIL'}"
+                + (f"  (as arcs: {arcs[0]} <= {arcs[1]})" if arcs else "")
             )
         return lines
 

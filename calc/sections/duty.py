@@ -4,6 +4,7 @@ values (E4, E5), which every other section builds on."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 from ..bands import BandTable
 from ..case import Case, Declared, Key, Table, once
@@ -12,7 +13,8 @@ from ..errors import CalcError
 from ..gearbox import SHOCK_FACTORS, shock_factor
 from ..profile import ED, Duty, Profile, T_2m, Z_h, duty, n_2m
 from . import gearbox
-from .common import Verdict, quantity, quantity_text
+from ..units import Value
+from .common import Verdict
 
 NAME = "profile"
 ORDER = 30  # after the motion, which may derive the load cycle
@@ -40,6 +42,24 @@ def read(top: Table) -> Profile:
     return Profile.from_segments(segments, where=f"{top.path}: profile")
 
 
+@dataclass(frozen=True)
+class DutyValues:
+    """The load cycle's values as the outputs print them (:attr:`DutyResult.shown`)."""
+
+    t_on: Value
+    t_cycle: Value
+    ED: Value
+    mode: str
+    n_2m: Value
+    T_2m: Value
+    Z_h: Value
+    f_s: float
+    f_s_table: str
+    n_2max: Value
+    T_2max: Value | None  # of the best-ranked gearbox, where the case has one
+    T_2max_part: str | None
+
+
 @dataclass
 class DutyResult:
     """The duty, the S1 means and the S5 values of the load cycle."""
@@ -65,41 +85,38 @@ class DutyResult:
         """Where the table of f_s comes from."""
         return self.shock_factors.source
 
-    def to_json(self, candidates: int | None = None) -> dict:
+    @cached_property
+    def shown(self) -> "DutyValues":
+        """The values every output prints, in the units they are shown in."""
         d = self.duty
+        return DutyValues(
+            t_on=Value.of(d.t_on, "s", "duty.t_on"), t_cycle=Value.of(d.t_cycle, "s", "duty.t_cycle"),
+            ED=Value.of(d.ED, "percent", "duty.ED"), mode=d.mode,
+            n_2m=Value.of(self.n2m, "rpm", "continuous.n2m"), T_2m=Value.of(self.T2m, "N*m", "continuous.T2m"),
+            Z_h=Value.of(self.Zh, "1/hour", "cyclic.Zh"), f_s=self.fs, f_s_table=self.fs_table,
+            n_2max=Value.of(self.profile.n_2max, "rpm", "cyclic.n2max"),
+            T_2max=None if self.T2max is None else Value.of(self.T2max, "N*m", "cyclic.T2max"), T_2max_part=self.T2max_part,
+        )
+
+    def to_json(self, candidates: int | None = None) -> dict:
+        v = self.shown
         out = {
-            "duty": {
-                "t_on": quantity(d.t_on, "s", "duty.t_on"),
-                "t_cycle": quantity(d.t_cycle, "s", "duty.t_cycle"),
-                "ED": quantity(d.ED, "percent", "duty.ED"),
-                "mode": d.mode,
-            },
-            "continuous": {
-                "n2m": quantity(self.n2m, "rpm", "continuous.n2m"),
-                "T2m": quantity(self.T2m, "N*m", "continuous.T2m"),
-                "governs": d.mode == "S1",
-            },
-            "cyclic": {
-                "Zh": quantity(self.Zh, "1/hour", "cyclic.Zh"),
-                "fs": self.fs,
-                "fs_table": self.fs_table,
-                "n2max": quantity(self.profile.n_2max, "rpm", "cyclic.n2max"),
-                "governs": d.mode == "S5",
-            },
+            "duty": {"t_on": v.t_on.to_json(), "t_cycle": v.t_cycle.to_json(), "ED": v.ED.to_json(), "mode": v.mode},
+            "continuous": {"n2m": v.n_2m.to_json(), "T2m": v.T_2m.to_json(), "governs": v.mode == "S1"},
+            "cyclic": {"Zh": v.Z_h.to_json(), "fs": v.f_s, "fs_table": v.f_s_table, "n2max": v.n_2max.to_json(), "governs": v.mode == "S5"},
         }
-        if self.T2max is not None:
-            out["cyclic"]["T2max"] = quantity(self.T2max, "N*m", "cyclic.T2max")
-            out["cyclic"]["T2max_part"] = self.T2max_part
+        if v.T_2max is not None:
+            out["cyclic"]["T2max"] = v.T_2max.to_json()
+            out["cyclic"]["T2max_part"] = v.T_2max_part
         return out
 
     def summary_lines(self, candidates: int | None = None) -> list[str]:
-        j = self.to_json()
-        d, s1, s5 = j["duty"], j["continuous"], j["cyclic"]
+        v = self.shown
         return [
-            f"Duty cycle: t_on = {quantity_text(d['t_on'])}, t_cycle = {quantity_text(d['t_cycle'])}, ED = {quantity_text(d['ED'])} -> mode {d['mode']} (E3)",
-            f"S1{' (governs)' if s1['governs'] else ''}: n_2m = {quantity_text(s1['n2m'])}, T_2m = {quantity_text(s1['T2m'])}",
-            f"S5{' (governs)' if s5['governs'] else ''}: Z_h = {quantity_text(s5['Zh'])}, f_s = {self.fs:g}, n_2max = {quantity_text(s5['n2max'])}"
-            + (f", T_2max = {quantity_text(s5['T2max'])} ({s5['T2max_part']})" if "T2max" in s5 else ""),
+            f"Duty cycle: t_on = {v.t_on}, t_cycle = {v.t_cycle}, ED = {v.ED} -> mode {v.mode} (E3)",
+            f"S1{' (governs)' if v.mode == 'S1' else ''}: n_2m = {v.n_2m}, T_2m = {v.T_2m}",
+            f"S5{' (governs)' if v.mode == 'S5' else ''}: Z_h = {v.Z_h}, f_s = {v.f_s:g}, n_2max = {v.n_2max}"
+            + (f", T_2max = {v.T_2max} ({v.T_2max_part})" if v.T_2max is not None else ""),
         ]
 
     def verdict(self) -> Verdict | None:

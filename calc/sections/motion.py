@@ -14,11 +14,11 @@ from ..catalog import Column
 from ..cycle import PHASES, SampledCycle
 from ..errors import CalcError
 from ..measurement import measurement_path, read_measurement
-from ..mechanism import TYPES, Mechanism
-from ..motion import Move, Samples, record_samples, sample
+from ..mechanism import TYPES, Mechanism, phi_2
+from ..motion import Move, Samples, alpha_2max, omega_2max, record_samples, sample
 from ..profile import Profile, segments
-from ..units import Q_, kind_phrase, parse_quantity
-from .common import quantity, quantity_text
+from ..units import Q_, Value, kind_phrase, parse_quantity
+from .common import json_of
 
 NAME = "motion"
 ORDER = 20
@@ -256,43 +256,52 @@ def _motion(mechanism, moves, distances, s: Samples, torque: np.ndarray, where: 
     return Motion(mechanism, moves, distances, s, cycle, g, profile)
 
 
-@dataclass
+@dataclass(frozen=True)
+class Segment:
+    """A derived segment of the load cycle as the outputs print it."""
+
+    phase: str
+    duration: Value
+    speed: Value
+    torque: Value
+
+
+@dataclass(frozen=True)
 class MotionResult:
-    """The derived segments, the peaks and the load's inertia at the output."""
+    """The derived segments, the peaks and the load's inertia at the output, and the steps that
+    derived them (the transmission radius, the load's inertia, each move's distance, peak speed
+    and acceleration, and the output torque of each of its phases)."""
 
     motion: Motion
+    segments: list  # Segment
+    peak_speed: Value
+    peak_acceleration: Value
+    J_L: Value | None
+    mechanism: str | None
+    source: str  # "move" or "drive_record"
+    samples: int
+    steps: list  # (title, calc.formula.Step), as computed here
 
     def to_json(self, candidates: int | None = None) -> dict:
-        m = self.motion
-        g = m.segments
-        rows = [
-            {
-                "phase": PHASES[p],
-                "duration": quantity(Q_(t, "s"), "s", "motion.segments.duration"),
-                "speed": quantity(Q_(n, "rad/s"), "rpm", "motion.segments.speed"),
-                "torque": quantity(Q_(T, "N*m"), "N*m", "motion.segments.torque"),
-            }
-            for p, t, n, T in zip(g.phase, g.duration, g.speed, g.torque)
-        ]
         return {
-            "segments": rows,
-            "peak_speed": quantity(m.peak_speed, "rpm", "motion.peak_speed"),
-            "peak_acceleration": quantity(m.peak_acceleration, "rad/s**2", "motion.peak_acceleration"),
-            "J_L": None if m.J_L is None else quantity(m.J_L, "kg*cm**2", "motion.J_L"),
-            "mechanism": None if m.mechanism is None else m.mechanism.type,
-            "source": "drive_record" if m.record is not None else "move",
-            "samples": int(len(m.cycle.dt)),
+            "segments": [{"phase": g.phase, "duration": g.duration.to_json(), "speed": g.speed.to_json(), "torque": g.torque.to_json()}
+                         for g in self.segments],
+            "peak_speed": self.peak_speed.to_json(),
+            "peak_acceleration": self.peak_acceleration.to_json(),
+            "J_L": json_of(self.J_L),
+            "mechanism": self.mechanism,
+            "source": self.source,
+            "samples": self.samples,
         }
 
     def summary_lines(self, candidates: int | None = None) -> list[str]:
-        j = self.to_json()
-        head = f"Motion ({j['mechanism'] or 'recorded torque'}, from {'the drive record' if j['source'] == 'drive_record' else 'the moves'}): "
-        head += f"peak speed {quantity_text(j['peak_speed'])}, peak acceleration {quantity_text(j['peak_acceleration'])}"
-        if j["J_L"] is not None:
-            head += f", J_L = {quantity_text(j['J_L'])}"
+        head = f"Motion ({self.mechanism or 'recorded torque'}, from {'the drive record' if self.source == 'drive_record' else 'the moves'}): "
+        head += f"peak speed {self.peak_speed}, peak acceleration {self.peak_acceleration}"
+        if self.J_L is not None:
+            head += f", J_L = {self.J_L}"
         lines = [head]
-        for k, s in enumerate(j["segments"], start=1):
-            lines.append(f"  {k:>2} {s['phase']:<6} {quantity_text(s['duration']):>10}  {quantity_text(s['speed']):>12}  {quantity_text(s['torque']):>12}")
+        for k, g in enumerate(self.segments, start=1):
+            lines.append(f"  {k:>2} {g.phase:<6} {str(g.duration):>10}  {str(g.speed):>12}  {str(g.torque):>12}")
         return lines
 
     def verdict(self):
@@ -300,9 +309,42 @@ class MotionResult:
         return None
 
 
+def motion_steps(m: Motion) -> list:
+    """(title, step) of how the moves give the output's speed, acceleration and torque."""
+    k = m.mechanism
+    out = []
+    if k is not None and k.linear:
+        out += [("Transmission radius", k.radius_step()), ("Load inertia at the gearbox output", k.load_inertia_step())]
+    for n, (move, given) in enumerate(zip(m.moves, m.distances), start=1):
+        if move.dwell:
+            continue
+        phi = k.to_output(given)
+        if k.linear:
+            out.append((f"Move {n}: distance at the output", phi_2.step(result=phi, s=given, r=k.radius)))
+        times = {"t_m": Q_(move.time, "s"), "t_a": Q_(move.accel_time, "s"), "t_d": Q_(move.decel_time, "s")}
+        w = omega_2max.step(phi_2=phi, **times)
+        out.append((f"Move {n}: peak output speed", w))
+        accel = alpha_2max.step(omega_2max=w.result, t_r=times["t_a"], t_j=Q_(move.jerk_time, "s"))
+        out.append((f"Move {n}: peak output acceleration", accel))
+        if move.decel_time != move.accel_time:
+            out.append((f"Move {n}: peak output deceleration",
+                        alpha_2max.step(omega_2max=w.result, t_r=times["t_d"], t_j=Q_(move.jerk_time, "s"))))
+        for phase, a in (("acceleration", accel.result), ("constant speed", Q_(0.0, "rad/s**2")), ("deceleration", -accel.result)):
+            out += [(f"Move {n}, {phase}: {step.formula.result.description}", step) for step in k.steps(w.result, a)]
+    return out
+
+
 def applies(case: Case) -> bool:
     return case.motion is not None
 
 
 def evaluate(case: Case) -> MotionResult:
-    return MotionResult(case.motion)
+    m = case.motion
+    g = m.segments
+    segments = [Segment(PHASES[p], Value.of(Q_(t, "s"), "s", "motion.segments.duration"), Value.of(Q_(n, "rad/s"), "rpm", "motion.segments.speed"),
+                        Value.of(Q_(T, "N*m"), "N*m", "motion.segments.torque"))
+                for p, t, n, T in zip(g.phase, g.duration, g.speed, g.torque)]
+    return MotionResult(
+        m, segments, Value.of(m.peak_speed, "rpm", "motion.peak_speed"), Value.of(m.peak_acceleration, "rad/s**2", "motion.peak_acceleration"),
+        None if m.J_L is None else Value.of(m.J_L, "kg*cm**2", "motion.J_L"), None if m.mechanism is None else m.mechanism.type,
+        "drive_record" if m.record is not None else "move", int(len(m.cycle.dt)), motion_steps(m))

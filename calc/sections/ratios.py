@@ -5,19 +5,38 @@ evaluation: its own command, with the same exit status rules."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 from ..case import Case, once
 from ..catalog import display_path
 from ..errors import CalcError
 from ..ratios import INERTIA_RATIO_LIMIT, RULE, RatioSearch, search_ratios
-from ..units import sig
+from ..units import Value, pretty_unit, sig
 from .gearbox import catalogs, selection_inputs
-from .common import Verdict, check_json, number, quantity
+from .common import Verdict, check_json, json_of, number
 from .motor import TYPED, output_load, rotor_inertia
 
 
 #: Not evaluated with the case (its own command, :func:`search`); its place in the report.
 ORDER = 70
+
+
+@dataclass(frozen=True)
+class RatioRow:
+    """The case at one ratio, with its best gearbox, as the outputs print it."""
+
+    ratio: float
+    part: str
+    passes: bool  # the gearbox and the motor at this ratio
+    gearbox_passes: bool
+    utilization: float | None  # the best gearbox's highest governing utilization
+    inertia_ratio: float | None
+    peak_torque_required: Value | None  # of the motor; None where the case has no motor side
+    rms_torque_required: Value | None
+    max_speed_required: Value
+    checks: list  # the motor's (calc.checks.Check)
+    reasons: list
+    pick: bool
 
 
 @dataclass
@@ -33,24 +52,32 @@ class RatioResult:
         s = self.search
         return Verdict(True) if s.pick is not None else Verdict(False, [s.reason])
 
-    def to_json(self) -> dict:
+    @cached_property
+    def rows(self) -> list:
+        """Each ratio of the catalog (:class:`RatioRow`), in ascending order."""
         s = self.search
         load = s.load
-        rows = []
+        out = []
         for k, ratio in enumerate(s.ratios):
-            rows.append({
-                "ratio": float(ratio),
-                "part": str(s.parts[k]),
-                "passes": bool(s.feasible[k]),
-                "gearbox_passes": bool(s.gearbox_passes[k]),
-                "utilization": number(s.utilization[k], f"ratio {ratio:g}: utilization"),
-                "inertia_ratio": number(s.inertia_ratio[k], f"ratio {ratio:g}: inertia_ratio"),
-                "peak_torque_required": None if load is None else quantity(load.peak[k], "N*m", f"ratio {ratio:g}: peak torque"),
-                "rms_torque_required": None if load is None else quantity(load.rms[k], "N*m", f"ratio {ratio:g}: RMS torque"),
-                "max_speed_required": quantity(s.speed[k], "rpm", f"ratio {ratio:g}: speed"),
-                "checks": [check_json(c.at(k)) for c in s.motor],
-                "reasons": s.gearbox_reasons(k) + s.motor_reasons(k),
-            })
+            where = f"ratio {ratio:g}"
+            out.append(RatioRow(
+                float(ratio), str(s.parts[k]), bool(s.feasible[k]), bool(s.gearbox_passes[k]),
+                number(s.utilization[k], f"{where}: utilization"), number(s.inertia_ratio[k], f"{where}: inertia_ratio"),
+                None if load is None else Value.of(load.peak[k], "N*m", f"{where}: peak torque"),
+                None if load is None else Value.of(load.rms[k], "N*m", f"{where}: RMS torque"),
+                Value.of(s.speed[k], "rpm", f"{where}: speed"), [c.at(k) for c in s.motor],
+                s.gearbox_reasons(k) + s.motor_reasons(k), k == s.pick,
+            ))
+        return out
+
+    def to_json(self) -> dict:
+        s = self.search
+        rows = [{
+            "ratio": r.ratio, "part": r.part, "passes": r.passes, "gearbox_passes": r.gearbox_passes, "utilization": r.utilization,
+            "inertia_ratio": r.inertia_ratio, "peak_torque_required": json_of(r.peak_torque_required),
+            "rms_torque_required": json_of(r.rms_torque_required), "max_speed_required": r.max_speed_required.to_json(),
+            "checks": [check_json(c) for c in r.checks], "reasons": r.reasons,
+        } for r in self.rows]
         cat = s.selection.catalog
         return {
             "title": self.case.title,
@@ -60,7 +87,7 @@ class RatioResult:
             "mode": s.selection.mode,
             "rule": RULE,
             "inertia_ratio_limit": INERTIA_RATIO_LIMIT,
-            "rotor_term": bool(load is not None and load.rotor_term),
+            "rotor_term": bool(s.load is not None and s.load.rotor_term),
             "ratios": rows,
             "pick": None if s.pick is None else {"ratio": float(s.ratios[s.pick]), "part": str(s.parts[s.pick]), "reason": s.reason},
             "reason": s.reason,
@@ -69,23 +96,21 @@ class RatioResult:
         }
 
     def summary(self) -> str:
-        j = self.to_json()
         title = f"{self.case.title}: the ratio"
-        lines = [title, "=" * len(title), j["reason"], f"Rule: {RULE}.", "",
+        lines = [title, "=" * len(title), self.search.reason, f"Rule: {RULE}.", "",
                  f"{'ratio':>6}  {'gearbox':<14} {'verdict':<7} {'util.':>6} {'λ':>7} {'T_1peak':>10} {'T_1rms':>10} {'n_1':>9}"]
-        for r in j["ratios"]:
-            def val(d, unit):
-                return "n/a" if d is None or d["value"] is None else f"{sig(d['value'], 4)} {unit}"
+        for r in self.rows:
+            def val(v):
+                return "n/a" if v is None or v.value is None else f"{sig(v.value, 4)} {pretty_unit(v.unit)}"
 
-            lam = "n/a" if r["inertia_ratio"] is None else f"{r['inertia_ratio']:.2f}"
-            util = "n/a" if r["utilization"] is None else f"{r['utilization']:.2f}"
-            mark = "  <- pick" if j["pick"] and j["pick"]["ratio"] == r["ratio"] else ""
+            lam = "n/a" if r.inertia_ratio is None else f"{r.inertia_ratio:.2f}"
+            util = "n/a" if r.utilization is None else f"{r.utilization:.2f}"
             lines.append(
-                f"{r['ratio']:>6g}  {r['part']:<14} {'PASS' if r['passes'] else 'FAIL':<7} {util:>6} {lam:>7} "
-                f"{val(r['peak_torque_required'], 'N·m'):>10} {val(r['rms_torque_required'], 'N·m'):>10} {val(r['max_speed_required'], 'rpm'):>9}{mark}"
+                f"{r.ratio:>6g}  {r.part:<14} {'PASS' if r.passes else 'FAIL':<7} {util:>6} {lam:>7} "
+                f"{val(r.peak_torque_required):>10} {val(r.rms_torque_required):>10} {val(r.max_speed_required):>9}{'  <- pick' if r.pick else ''}"
             )
-            lines += [f"          {reason}" for reason in r["reasons"]]
-        return "\n".join(lines + [f"Note: {n}" for n in j["notes"]])
+            lines += [f"          {reason}" for reason in r.reasons]
+        return "\n".join(lines + [f"Note: {n}" for n in self.notes])
 
 
 def search(case: Case) -> RatioResult:
