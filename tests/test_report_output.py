@@ -238,3 +238,28 @@ def test_the_signature_lines_are_on_the_front_page(pdfs, name):
     first = subprocess.run(["pdftotext", "-f", "1", "-l", "1", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
     assert "Title block" in first and "Approved by" in first
     assert "generated.csv" in first  # the last file listed (the path breaks in its column)
+
+
+@needs_tex
+def test_the_compiled_preamble_typesets_what_xelatex_alone_does(reports, pdfs, monkeypatch, tmp_path):
+    import subprocess
+
+    def text(path):
+        return subprocess.run(["pdftotext", str(path), "-"], capture_output=True, text=True, check=True).stdout
+
+    pdf, log = pdfs["example"]
+    # The format drops the kernel's preloaded Latin Modern fonts (calc.publish.compiled_preamble):
+    # a glyph set in one of them would be lost, and xelatex would say so.
+    assert "preloaded format=report-" in log.splitlines()[0] and "Missing character" not in log
+    monkeypatch.setattr(publish, "compiled_preamble", lambda tex: None)
+    exporter = publish.exporter()
+    body, _ = exporter.from_notebook_node(publish.report_notebook(reports["example"]), resources={"metadata": {"name": "example"}})
+    (tmp_path / "alone.pdf").write_bytes(body)
+    assert "preloaded format=xelatex" in exporter.latex_log.splitlines()[0]
+    assert text(tmp_path / "alone.pdf") == text(pdf)
+
+
+def test_a_preamble_without_its_end_mark_is_not_compiled(tmp_path):
+    tex = tmp_path / "plain.tex"
+    tex.write_text("\\documentclass{article}\n\\begin{document}x\\end{document}\n", encoding="utf-8")
+    assert publish.compiled_preamble(tex) is None
