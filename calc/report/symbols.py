@@ -37,7 +37,8 @@ def latex_escape(text) -> str:
 
 
 #: Greek letters written out in code, as LaTeX and as text.
-GREEK = {"phi": (r"\varphi", "φ"), "eta": (r"\eta", "η"), "lambda": (r"\lambda", "λ"), "vartheta": (r"\vartheta", "ϑ")}
+GREEK = {"phi": (r"\varphi", "φ"), "eta": (r"\eta", "η"), "lambda": (r"\lambda", "λ"), "vartheta": (r"\vartheta", "ϑ"),
+         "theta": (r"\theta", "θ"), "mu": (r"\mu", "μ")}
 _GREEK_NAMES = "|".join(GREEK)
 # A case key, ``motor.peak_torque`` or ``coupling.shaft_1``, or a name in the package (code, set as code).
 _TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])  # and the package's own names, calc.gearbox.x
@@ -120,6 +121,17 @@ def symbol_latex(name: str) -> str:
     """
     base, _, sub = name.partition("_")
     return _symbol_latex(base, sub)
+
+
+def symbol_text(name: str) -> str:
+    """A symbol by its name in code as plain text, its Greek letter written as the letter
+    (``vartheta`` as ϑ, ``T_1B`` as is).
+
+    >>> symbol_text("vartheta"), symbol_text("T_1B"), symbol_text("mu")
+    ('ϑ', 'T_1B', 'μ')
+    """
+    base, sep, sub = name.partition("_")
+    return GREEK[base][1] + sep + sub if base in GREEK else name
 
 
 def html(text: str) -> str:

@@ -5,7 +5,9 @@ for the second segment, ``coupling.temperature``, ``mechanism.mass``, ``move[1].
 :func:`with_inputs` writes values at key paths into a copy of a case (a mechanism's or a move's
 into the tables the motion was derived from, which derive it again). The panel's controls are
 built from :func:`input_specs`, so a further input is one more line in :data:`SCALARS` or
-:data:`MECHANISM` (or one more rule for a list of tables like ``profile`` or ``move``).
+:data:`MECHANISM` (or one more rule for a list of tables like ``profile`` or ``move``): its name
+in the panel and the range of its slider; its kind, unit and symbol come from the key's
+declaration in its section.
 """
 
 from __future__ import annotations
@@ -18,8 +20,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..case import Case, Table
+from ..case import Case, Key, Table
 from ..profile import Profile
+from ..report.symbols import symbol_text
+from ..sections import declared
 from ..sections import motion as motion_section
 from ..units import NUMBER, Q_, parse_quantity, pretty_unit
 
@@ -93,14 +97,21 @@ def _temperature(_v: float) -> tuple[float, float]:
     return -20.0, TEMPERATURE_FACTORS.top
 
 
-#: The single-valued inputs, where the case gives them: key path, label, unit, kind, range rule.
+#: The single-valued inputs, where the case gives them: key path, what the panel calls it, and the
+#: rule of its slider's range; its kind, unit and symbol are the key's declaration
+#: (:func:`calc.sections.declared`).
 SCALARS = (
-    ("motor.peak_torque", "motor peak torque T_1B", "N*m", "torque", _scaled),
-    ("motor.inertia", "motor inertia J_motor", "kg*cm**2", "inertia", _scaled),
-    ("load.inertia", "load inertia J_L", "kg*cm**2", "inertia", _scaled),
-    ("coupling.temperature", "coupling temperature ϑ", "degC", "temperature", _temperature),
-    ("accuracy.applied_torque", "applied torque T", "N*m", "torque", lambda t: (0.0, max(5 * t, 10.0))),
+    ("motor.peak_torque", "motor peak torque", _scaled),
+    ("motor.inertia", "motor inertia", _scaled),
+    ("load.inertia", "load inertia", _scaled),
+    ("coupling.temperature", "coupling temperature", _temperature),
+    ("accuracy.applied_torque", "applied torque", lambda t: (0.0, max(5 * t, 10.0))),
 )
+
+
+def input_label(key: Key, name: str) -> str:
+    """What the panel calls an input: its name and the key's symbol (``motor peak torque T_1B``)."""
+    return f"{name} {symbol_text(key.symbol)}" if key.symbol else name
 
 
 def _signed(v: float, floor: float = 10.0) -> tuple[float, float]:
@@ -116,21 +127,22 @@ def _distance(v: float) -> tuple[float, float]:
     return -5 * abs(v), 5 * abs(v)
 
 
-#: The inputs of a mechanism: key, label, kind, unit (SI, inch-pound) where the file leaves it
-#: out, range rule, above zero. The radius and own inertia follow the type (:data:`OWN_KEYS`).
+#: The inputs of a mechanism (its keys, :data:`calc.sections.motion.MECHANISM`): what the panel
+#: calls it, its inch-pound unit where the file leaves it out, the rule of its slider's range,
+#: and whether it is above zero. The radius and own inertia follow the type (``OWN_KEYS``).
 MECHANISM = {
-    "inertia": ("load inertia J_L", "inertia", ("kg*cm**2", "lb*in**2"), _scaled, True),
-    "friction_torque": ("friction torque T_f", "torque", ("N*m", "lbf*in"), _signed, False),
-    "process_torque": ("process torque T_p", "torque", ("N*m", "lbf*in"), _signed, False),
-    "mass": ("moved mass m", "mass", ("kg", "lb"), _scaled, True),
-    "friction_coefficient": ("friction coefficient μ", "dimensionless", ("", ""), lambda v: (0.0, max(5 * v, 0.2)), False),
-    "incline": ("incline θ", "angle", ("deg", "deg"), lambda _v: (-90.0, 90.0), False),
-    "force": ("process force F_p", "force", ("N", "lbf"), _signed, False),
-    "eta": ("efficiency η", "dimensionless", ("", ""), lambda _v: (0.5, 1.0), True),
-    "lead": ("screw lead p", "length", ("mm", "in"), _scaled, True),
-    "pitch_diameter": ("pinion pitch diameter d", "length", ("mm", "in"), _scaled, True),
-    "pulley_diameter": ("pulley diameter d", "length", ("mm", "in"), _scaled, True),
-    **{own: (f"{what} inertia J_M", "inertia", ("kg*cm**2", "lb*in**2"), _signed, False)
+    "inertia": ("load inertia", "lb*in**2", _scaled, True),
+    "friction_torque": ("friction torque", "lbf*in", _signed, False),
+    "process_torque": ("process torque", "lbf*in", _signed, False),
+    "mass": ("moved mass", "lb", _scaled, True),
+    "friction_coefficient": ("friction coefficient", "", lambda v: (0.0, max(5 * v, 0.2)), False),
+    "incline": ("incline", "deg", lambda _v: (-90.0, 90.0), False),
+    "force": ("process force", "lbf", _signed, False),
+    "eta": ("efficiency", "", lambda _v: (0.5, 1.0), True),
+    "lead": ("screw lead", "in", _scaled, True),
+    "pitch_diameter": ("pinion pitch diameter", "in", _scaled, True),
+    "pulley_diameter": ("pulley diameter", "in", _scaled, True),
+    **{own: (f"{what} inertia", "lb*in**2", _signed, False)
        for own, what in (("screw_inertia", "screw"), ("pinion_inertia", "pinion"), ("pulley_inertia", "pulley"))},
 }
 #: A move's inputs: its time, and its ramps within it (so a ramp can be made too long for the move).
@@ -159,13 +171,13 @@ def motion_specs(case: Case) -> list[InputSpec]:
     where = f"{case.path}: mechanism"
     inch_pound = any(is_inch_pound(_unit_of(v)) for k, v in mechanism.items() if k in MECHANISM)
     specs = []
-    for name in (key.name for key in motion_section.keys_of(mechanism["type"])):
-        if name not in MECHANISM:
+    for key in motion_section.keys_of(mechanism["type"]):
+        if key.name not in MECHANISM:
             continue
-        label, kind, units, reach, positive = MECHANISM[name]
-        text = mechanism.get(name)
-        unit, v = (units[inch_pound], 0.0) if text is None else _as_written(text, kind, f"{where}.{name}")
-        specs.append(_spec(f"mechanism.{name}", f"mechanism: {label}", unit, v, *reach(v), positive=positive))
+        name, inch_unit, reach, positive = MECHANISM[key.name]
+        text = mechanism.get(key.name)
+        unit, v = ((inch_unit if inch_pound else key.unit), 0.0) if text is None else _as_written(text, key.kind, f"{where}.{key.name}")
+        specs.append(_spec(f"mechanism.{key.name}", f"mechanism: {input_label(key, name)}", unit, v, *reach(v), positive=positive))
     for k, move in enumerate(tables["move"], start=1):
         where = f"{case.path}: move[{k}]"
         if "dwell" in move:
@@ -245,11 +257,12 @@ def input_specs(case: Case, ratios=()) -> list[InputSpec]:
         specs.append(_spec("gearbox.ratio", "gearbox ratio i", "", r, 0, 1, options=tuple(sorted({*ratios, r}))))
     moves = case.motion is not None and bool(case.motion.moves)
     specs += motion_specs(case) if moves else segment_specs(case)
-    for key, label, unit, kind, reach in SCALARS:
-        unit = written_unit(case, key) or unit
-        v = value_at(case, key, unit, kind)
-        if v is not None and not (moves and key == "load.inertia"):  # the mechanism gives J_L
-            specs.append(_spec(key, label, unit, v, *reach(v)))
+    for path, name, reach in SCALARS:
+        key = declared(path)
+        unit = written_unit(case, path) or key.unit
+        v = value_at(case, path, unit, key.kind)
+        if v is not None and not (moves and path == "load.inertia"):  # the mechanism gives J_L
+            specs.append(_spec(path, input_label(key, name), unit, v, *reach(v)))
     return specs
 
 
