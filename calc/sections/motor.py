@@ -6,14 +6,14 @@ motor's side")."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..case import Case
 from ..gearbox import n_1
-from ..motor import MotorLoad, OutputLoad, motor_checks, motor_load
-from ..units import fmt
+from ..motor import T_1_back, T_1_drive, T_1rms, MotorLoad, OutputLoad, alpha_1, driven_back, motor_checks, motor_load
+from ..units import Q_, fmt
 from . import coupling, duty, gearbox
 from .common import Governing, Verdict, check_json, check_line, quantity, quantity_text
 
@@ -82,6 +82,10 @@ class MotorResult:
     # load and speed hold one row (the gearbox): load.T_1 has shape (1, samples)
     checks: list  # CheckArray of one row each
     notes: list
+    output: OutputLoad | None = None  # the load cycle at the gearbox output the torques are of
+    #: (title, calc.formula.Step, note or None) of the motor torque at the driving and the driven-back
+    #: peak and of its RMS, as computed here; the RMS step holds every sample
+    steps: list = field(default_factory=list)
 
     @property
     def row_checks(self) -> list:
@@ -171,5 +175,30 @@ def evaluate(case: Case) -> MotorResult:
     for key, what in (("peak_torque", "peak"), ("rated_torque", "RMS"), ("max_speed", "speed")):
         if getattr(case, f"motor_{key}") is None:
             notes.append(f"the motor's {what} is not checked: the case gives no motor.{key}")
-    return MotorResult(part, sel.selected is not None, i, eta, None if missing or J_1 is None else J_1[0], J_c, load, speed, checks, notes)
+    J_1 = None if missing or J_1 is None else J_1[0]
+    steps = [] if load is None else motor_steps(out, load, i, eta, case.motor_inertia, J_1)
+    return MotorResult(part, sel.selected is not None, i, eta, J_1, J_c, load, speed, checks, notes, out, steps)
+
+
+def motor_steps(out: OutputLoad, load: MotorLoad, i, eta, J_motor, J_1) -> list:
+    """(title, step, note) of the motor torque at the highest driving and driven-back sample (with
+    the motor's acceleration there, where the cycle is sampled), and of its RMS over the cycle."""
+    none = Q_(0.0, "kg*m**2")  # a typed cycle counts no inertia (its α_1 is zero too)
+    args = dict(i=i, eta=eta, J_motor=none if J_motor is None else J_motor, J_1=none if J_1 is None else J_1)
+    T_1 = load.T_1[0]
+    back = driven_back(out.torque, out.speed)
+    steps = []
+    for title, formula, mask in (("Motor torque at the peak, driving", T_1_drive, ~back), ("Motor torque at the peak, driven back", T_1_back, back)):
+        if not mask.any():
+            continue
+        k = int(np.flatnonzero(mask)[np.argmax(np.abs(T_1.m_as("N*m")[mask]))])
+        a_1 = Q_(0.0, "rad/s**2")
+        if out.sampled:
+            a = alpha_1.step(alpha_2=out.alpha_2[k], i=i)
+            steps.append((f"{title}: motor acceleration", a, None))
+            a_1 = a.result
+        steps.append((title, formula.step(alpha_1=a_1, T_2=out.torque[k], **args),
+                      "driven back: T_2 · ω_2 < 0" if formula is T_1_back else "driving: T_2 · ω_2 >= 0"))
+    steps.append(("RMS motor torque over the whole cycle", T_1rms.step(result=load.rms[0], T_1k=T_1, t_k=out.dt), None))
+    return steps
 
