@@ -85,3 +85,16 @@ def test_a_length_requirement_fails_like_its_angle(capsys, write_case):
 def test_errors_name_the_key(capsys, write_case, extra, message):
     code, out, err = evaluate(capsys, write_case, extra)
     assert code == 2 and out == "" and message in err and err.count("\n") == 1, err
+
+
+def test_the_report_prints_the_arc_steps_of_the_evaluation(write_case):
+    from calc.report import build_report
+    from calc.units import sig
+
+    path = write_case(HEAD_TOML + PROFILE_TOML + CHAIN.format(extra='radius = "200 mm"\nrequired_positioning_accuracy = "1 mm"'), "r.toml")
+    report = build_report(path)
+    a = report.evaluated["accuracy"].shown
+    calculations = str(report.calculations())
+    # s = r · φ of the positioning accuracy, and the required 1 mm as an angle: 1/200 rad = 17.19 arcmin.
+    assert "Positioning accuracy as an arc at the radius" in calculations and sig(a.arcs["positioning_accuracy"].value) in calculations
+    assert "Required positioning accuracy given as an arc" in calculations and sig(10800 / math.pi / 200) in calculations

@@ -48,12 +48,7 @@ def steps(report) -> list[str]:
     out.append(r"\subsection{Accuracy of the drive train at the output}")
     out.append(prose(f"Applied torque: {a.rule.why}, so the positioning rule of E13 for that range applies, {a.rule.text}."))
     out += [step_block(s.formula.result.description.capitalize(), s) for s in a.steps()]
-    if spec.radius is not None:
-        from ..accuracy import angle_of_arc, arc_length
-
-        out.append(step_block("Positioning accuracy as an arc at the radius", arc_length.step(r=spec.radius, phi=a.positioning_accuracy)))
-        out += [step_block(f"Required {name.replace('_', ' ')} given as an arc", angle_of_arc.step(s=arc, r=spec.radius))
-                for name, arc in spec.required_arcs.items()]
+    out += [step_block(title, step) for title, step in r.arc_steps]
     return out
 
 

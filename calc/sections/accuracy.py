@@ -541,6 +541,17 @@ class AccuracyResult:
     def shown(self) -> AccuracyValues:
         return accuracy_values(self.inputs, self.accuracy)
 
+    @functools.cached_property
+    def arc_steps(self) -> list:
+        """(title, step) of the positioning accuracy as an arc at the case's radius, and of each
+        required value the case gives as an arc, as an angle; none without a radius."""
+        spec, a = self.inputs, self.accuracy
+        if spec.radius is None:
+            return []
+        return [("Positioning accuracy as an arc at the radius", arc_length.step(r=spec.radius, phi=a.positioning_accuracy))] + [
+            (f"Required {name.replace('_', ' ')} given as an arc", angle_of_arc.step(s=arc, r=spec.radius))
+            for name, arc in spec.required_arcs.items()]
+
     def to_json(self, candidates: int | None = None) -> dict:
         """The ``accuracy`` section of the results (``docs/case-format.md``): ``C_total`` referred to
         the output, ``lost_motion``, ``positioning_accuracy``, ``repeatability`` and the
