@@ -181,6 +181,10 @@ class Case:
     emergency_stop_torque: object = None
     gearbox_hubs: str | list | None = None
     motor_shaft: object = None  # Bore of the motor's shaft: picks the gearbox's clamping hub
+    motor_catalog: str | list | None = None  # [motor] catalog: the motor chosen from it (or its part)
+    motor_part: str | None = None
+    motor_max_inertia_ratio: tuple = (10.0, "the default")  # the limit of λ and where it comes from
+    motor_dc_link: object = None
     output_load: object = None  # calc.gearbox.OutputLoad: forces on the gearbox output
     sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
     motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record

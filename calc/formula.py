@@ -242,7 +242,8 @@ class Formula:
             unit = kind(s.kind).si_unit
             # A distinct value per input, so a difference of two inputs is never zero.
             args.append(Q_(np.array([1.0, 2.0]) if s.per_segment else 1.5 + 0.1 * k, unit))
-        out = self.numeric(*args)
+        with np.errstate(invalid="ignore"):  # only the unit counts: a root of a negative test value is NaN of the right unit
+            out = self.numeric(*args)
         if not hasattr(out, "units"):
             out = Q_(out, "")
         if not kind(self.result.kind).accepts(out.units):

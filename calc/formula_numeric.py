@@ -170,6 +170,14 @@ def motor__T_1rms(T_1k, t_k):
     return sqrt(SegmentSum(T_1k**2*t_k)/SegmentSum(t_k))
 
 
+def motor_ratings__T_peak_line(M_max, M_N, n, n_N, n_max):
+    return M_max - (-M_N + M_max)*(n - n_N)/(-n_N + n_max)
+
+
+def motor_ratings__T_V(U_DC, k_E, k_T, R_ph, L_ph, poles, n, rad):
+    return k_T*(-1/3*sqrt(3)*R_ph*k_E*n + sqrt(-1/12*L_ph**2*k_E**2*n**4*poles**2/rad**2 + (1/6)*U_DC**2*((1/4)*L_ph**2*n**2*poles**2/rad**2 + R_ph**2)))/((1/4)*L_ph**2*n**2*poles**2/rad**2 + R_ph**2)
+
+
 def profile__ED(t_on, t_cycle):
     return t_on/t_cycle
 
@@ -278,6 +286,8 @@ FUNCTIONS = {
     "calc.motor.T_1_drive": ("e75a7aaf85e98fc5", motor__T_1_drive),
     "calc.motor.T_1_back": ("289b3c3741bf545e", motor__T_1_back),
     "calc.motor.T_1rms": ("1d82e3cfb254f05f", motor__T_1rms),
+    "calc.motor_ratings.T_peak_line": ("f011ced4e1a656a4", motor_ratings__T_peak_line),
+    "calc.motor_ratings.T_V": ("c3e5f4ec424088bb", motor_ratings__T_V),
     "calc.profile.ED": ("2103e372a6f8efab", profile__ED),
     "calc.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
     "calc.profile.T_2m": ("7f4431ae67c9b21f", profile__T_2m),

@@ -102,6 +102,9 @@ class Results:
 def evaluate(case: Case) -> Results:
     """Evaluate every section the case gives; numpy's floating-point warnings are not printed
     (what overflows gives inf or NaN, which the results report: :func:`calc.sections.common.number`)."""
+    from .motor import with_chosen_motor
+
     with np.errstate(all="ignore"):
+        case = with_chosen_motor(case)
         return Results(case, {m.NAME: m.evaluate(case) for m in SECTIONS if m.applies(case)})
 

@@ -3,10 +3,14 @@ and accuracy sections share. They have no results of their own."""
 
 from __future__ import annotations
 
-from ..case import Case, Declared, Key, Table
+import numpy as np
+
+from ..case import Case, Declared, Key, Table, once
+from ..catalog import load_catalogs
 from ..errors import CalcError
 from ..fits import parse_bore
 from ..gearbox import OutputLoad
+from ..motor_ratings import ELECTRICAL, SCHEMA
 
 ORDER = 10
 MOTOR = Declared("motor", (
@@ -15,6 +19,10 @@ MOTOR = Declared("motor", (
     Key("rated_torque", "torque", "continuous torque of the motor, at most its peak: the RMS check", "T_1N", unit="N*m"),
     Key("max_speed", "speed", "highest speed of the motor", "n_max", unit="rpm"),
     Key("shaft", "bore", "the motor's shaft as ordered (\"19 mm k6\"): picks the gearbox's clamping hub and so its J_1"),
+    Key("catalog", "catalog", "a motor catalog (\"motors\" is catalogs/motors.csv): every motor in it is checked against the cycle and ranked"),
+    Key("part", "text", "check this motor of the catalog (its ratings and inertia then hold for every section) instead of typed ratings"),
+    Key("max_inertia_ratio", "dimensionless", "highest load-to-motor inertia ratio λ a catalog motor may have", "lambda_max", 10),
+    Key("dc_link_voltage", "voltage", "DC-link voltage of the drive: with a catalog's electrical data, the voltage limit", "U_DC", unit="V"),
 ), "the motor driving the gearbox")
 LOAD = Declared("load", (
     Key("inertia", "inertia", "load inertia at the output of the gearbox (left out where a [mechanism] gives it)", "J_L", unit="kg*cm**2"),
@@ -35,7 +43,12 @@ def read(top: Table, case: Case) -> None:
     ``axial_force_radius``, the axial force's distance from the axis) are checked against the
     output bearing's ratings."""
     motor = top.table(MOTOR.name, MOTOR.keys)
-    if motor:
+    if motor and (motor.has("catalog") or motor.has("part")):
+        read_catalog_motor(motor, case)
+    elif motor:
+        for key in ("max_inertia_ratio", "dc_link_voltage"):
+            if motor.has(key):
+                raise CalcError(f"{motor.where(key)}: a key of a catalog motor; give motor.catalog (or motor.part with it) as well")
         case.motor_peak_torque = motor.positive("peak_torque")
         case.motor_inertia = motor.positive("inertia")
         case.motor_rated_torque = motor.positive("rated_torque")
@@ -65,6 +78,37 @@ def read(top: Table, case: Case) -> None:
         if forces.axial_radius is not None and forces.axial_force is None:
             raise CalcError(f"{load.where('axial_force_radius')}: the distance of load.axial_force from the axis, but no axial_force is given")
         case.output_load = forces if forces.given else None
+
+
+def read_catalog_motor(motor: Table, case: Case) -> None:
+    """A motor from a catalog: ``part`` names one (its ratings and inertia become the case's, so
+    every section checks with them), else every motor of ``catalog`` is ranked by the motor
+    section; typed ratings beside a catalog are an error (they would disagree with its rows)."""
+    typed = [k for k in ("peak_torque", "inertia", "rated_torque", "max_speed") if motor.has(k)]
+    if typed:
+        raise CalcError(f"{motor.where(typed[0])}: a catalog motor's ratings come from its catalog row; "
+                        f"give either motor.catalog / motor.part or the typed ratings, found both")
+    case.motor_catalog = motor.catalogs("catalog") if motor.has("catalog") else "motors"
+    case.motor_part = motor.text("part")
+    ratio = motor.positive("max_inertia_ratio", what="an inertia ratio")
+    case.motor_max_inertia_ratio = (float(ratio.m_as("")), "motor.max_inertia_ratio" if motor.has("max_inertia_ratio") else "the default")
+    case.motor_dc_link = motor.positive("dc_link_voltage")
+    if motor.has("shaft"):
+        case.motor_shaft = parse_bore(motor.data["shaft"], motor.where("shaft"))
+    if case.motor_part is not None:
+        cat = motor_catalog(case)
+        row = cat.usable_index(case.motor_part, motor.where("part"))
+        case.motor_peak_torque, case.motor_rated_torque = cat["M_max"][row], cat["M_N"][row]
+        case.motor_max_speed, case.motor_inertia = cat["n_max"][row], cat["J"][row]
+        missing = [c for c in ELECTRICAL if np.isnan(cat[c][row].magnitude)]
+        if case.motor_dc_link is not None and missing:
+            raise CalcError(f"{motor.where('dc_link_voltage')}: the voltage limit needs the electrical data of {case.motor_part}, "
+                            f"but {cat.catalog_of(row)} (row {cat.lines[row]}) gives no {', '.join(missing)}")
+
+
+def motor_catalog(case: Case):
+    """The case's motor catalog (:data:`calc.motor_ratings.SCHEMA`); one read per case."""
+    return once(case, "motor catalog", lambda: load_catalogs(case.motor_catalog, case.folder, f"{case.path}: motor.catalog", SCHEMA))
 
 
 def _distance(load: Table, key: str):

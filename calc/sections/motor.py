@@ -6,16 +6,20 @@ motor's side")."""
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..case import Case
-from ..gearbox import n_1
-from ..motor import T_1_back, T_1_drive, T_1rms, MotorLoad, OutputLoad, alpha_1, driven_back, motor_checks, motor_load
+from ..catalog import display_path
+from ..errors import CalcError
+from ..gearbox import inertia_ratio, n_1
+from ..motor import T_1_back, T_1_drive, T_1rms, MotorLoad, OutputLoad, alpha_1, driven_back, motor_checks, motor_load, motor_torque
+from ..motor_ratings import Cycle, MotorSelection, select_motors
 from ..units import Q_, fmt
-from . import coupling, duty, gearbox
-from .common import Governing, Verdict, check_json, check_line, quantity, quantity_text
+from . import coupling, drive, duty, gearbox
+from .common import Governing, Verdict, check_json, check_line, quantity, quantity_text, row_json, selection_governing, selection_verdict
 
 NAME = "motor"
 ORDER = 60
@@ -50,7 +54,7 @@ def motor_side_coupling(case: Case) -> tuple:
     return cc.catalog["J"][row], part
 
 
-def rotor_inertia(case: Case, J_1) -> tuple:
+def rotor_inertia(case: Case, J_1, motor_inertia_given: bool | None = None) -> tuple:
     """What the rotor term of a sampled cycle adds to the motor's inertia, for gearbox rows of
     input inertia ``J_1`` (an array, NaN where the catalog gives none): ``(J_1 with a motor-side
     coupling's whole inertia, that coupling's inertia or None, what the term lacks or None,
@@ -62,7 +66,7 @@ def rotor_inertia(case: Case, J_1) -> tuple:
         notes.append(f"the motor-side coupling {coupling_part} turns with the motor: its whole inertia J = {fmt(J_c, 'kg*cm**2')} is added to J_1")
         if np.isnan(J_c.magnitude):
             missing = f"the rotor term needs the inertia J of the motor-side coupling {coupling_part}, which its catalog does not give"
-    if case.motor_inertia is None:
+    if not (case.motor_inertia is not None if motor_inertia_given is None else motor_inertia_given):
         missing = "the rotor term (J_motor + J_1) · α_1 needs the motor's inertia (motor.inertia)"
     return (J_1 if J_c is None else J_1 + J_c), J_c, missing, notes
 
@@ -71,7 +75,7 @@ def rotor_inertia(case: Case, J_1) -> tuple:
 class MotorResult:
     """The motor torque through one gearbox and the motor's checks."""
 
-    part: str
+    part: str | None  # the gearbox; None for a direct drive
     selected: bool  # the gearbox is the selection's choice (or the named part); else the best-ranked
     i: object
     eta: object
@@ -83,18 +87,27 @@ class MotorResult:
     checks: list  # CheckArray of one row each
     notes: list
     output: OutputLoad | None = None  # the load cycle at the gearbox output the torques are of
+    selection: MotorSelection | None = None  # the catalog motors ranked ([motor] catalog or part)
     #: (title, calc.formula.Step, note or None) of the motor torque at the driving and the driven-back
     #: peak and of its RMS, as computed here; the RMS step holds every sample
     steps: list = field(default_factory=list)
 
     @property
     def row_checks(self) -> list:
-        """The motor's checks (:class:`calc.checks.Check`) through the gearbox."""
+        """The motor's checks (:class:`calc.checks.Check`) through the gearbox: the typed ratings',
+        or the best-ranked catalog motor's."""
+        if self.selection is not None:
+            return self.selection.best.checks
         return [c.at(0) for c in self.checks]
+
+    @property
+    def through(self) -> str:
+        """What the motor drives: ``gearbox NPT035-10`` or ``the load directly`` (a direct drive)."""
+        return "the load directly" if self.part is None else f"gearbox {self.part}"
 
     def to_json(self, candidates: int | None = None) -> dict:
         load = self.load
-        return {
+        out = {
             "gearbox": self.part,
             "gearbox_selected": self.selected,
             "ratio": float(self.i.m_as("")),
@@ -108,19 +121,48 @@ class MotorResult:
             "checks": [check_json(c) for c in self.row_checks],
             "notes": list(self.notes),
         }
+        sel = self.selection
+        if sel is not None:
+            out.update({
+                "catalog": display_path(sel.catalog.path) if len(sel.catalog.members) == 1 else [display_path(p) for p, _ in sel.catalog.members],
+                "selected": sel.selected,
+                "mean_speed": quantity(Q_(sel.mean_speed, "rad/s"), "rpm", "motor.mean_speed"),
+                "max_inertia_ratio": {"value": sel.inertia_limit, "from": sel.inertia_limit_from},
+                "dc_link_voltage": None if sel.dc_link is None else quantity(sel.dc_link, "V", "motor.dc_link_voltage"),
+                "candidates": [{"part": c.part, "passes": c.passes, "characteristic": c.form, "rated_torque": c.rated_torque.to_json(),
+                                "rotor_inertia": c.rotor_inertia.to_json(), "inertia_ratio": c.inertia_ratio,
+                                "checks": [check_json(k) for k in c.checks], **row_json(c)}
+                               for c in sel.candidates(candidates)],
+            })
+        return out
 
     def summary_lines(self, candidates: int | None = None) -> list[str]:
         j = self.to_json()
-        which = self.part if self.selected else f"{self.part}, the best-ranked gearbox (none is selected)"
+        which = self.through if self.selected or self.part is None else f"{self.through}, the best-ranked gearbox (none is selected)"
         lines = [
-            f"Motor through gearbox {which}: T_1peak = {quantity_text(j['peak_torque_required'])}, "
-            f"T_1rms = {quantity_text(j['rms_torque_required'])}, n_2max · i = {quantity_text(j['max_speed_required'])}"
+            f"Motor through {which}: T_1peak = {quantity_text(j['peak_torque_required'])}, "
+            f"T_1rms = {quantity_text(j['rms_torque_required'])}, n_max required = {quantity_text(j['max_speed_required'])}"
         ]
-        lines += [f"        {check_line(c.at(0))}" for c in self.checks]
+        sel = self.selection
+        if sel is None:
+            lines += [f"        {check_line(c.at(0))}" for c in self.checks]
+        else:
+            shown = sel.candidates(candidates)
+            lines.append(f"  Motor {sel.selected or 'none passes'} from {sel.catalog.shown_name} ({len(sel.order)} ranked; "
+                         f"mean speed {quantity_text(j['mean_speed'])}, λ <= {sel.inertia_limit:g} from {sel.inertia_limit_from}):")
+            for k, c in enumerate(shown, start=1):
+                verdict = {True: "PASS", False: "FAIL", None: "NOT DECIDED"}[c.passes]
+                worst = "n/a" if c.worst is None else f"{c.worst:.2f}"
+                lines.append(f"  {k:>3}. {c.part:<28} {verdict:<11} worst {worst:>5}  M_N {c.rated_torque}  J {c.rotor_inertia}  ({c.form})"
+                             + (f"  {'; '.join(c.reasons)}" if c.reasons else ""))
+            lines.append(f"  Checks of {sel.best.part}" + ("" if sel.selected else " (the closest; none passes)") + ":")
+            lines += [f"        {check_line(k)}" for k in self.row_checks]
         return lines + [f"  Note: {n}" for n in self.notes]
 
     def governing(self) -> Governing | None:
         """The motor's checks; None where the case gives no rating to check."""
+        if self.selection is not None:
+            return selection_governing(NAME, self.selection)
         governing = [k for k in self.row_checks if k.governs]
         return Governing(NAME, None, True, governing) if governing else None
 
@@ -130,44 +172,69 @@ class MotorResult:
 
     def verdict(self) -> Verdict | None:
         """False where a check fails, None where one cannot be made; no verdict without a rating."""
+        if self.selection is not None:
+            return selection_verdict(self.selection, "motor", f"the cycle through {self.through}")
         if not self.checks:
             return None
         made = [c.at(0) for c in self.checks]
-        failing = [f"Motor through gearbox {self.part}: {c.reason()}" for c in made if c.passes is False]
+        failing = [f"Motor through {self.through}: {c.reason()}" for c in made if c.passes is False]
         if failing:
             return Verdict(False, failing)
-        open_ = [f"Motor through gearbox {self.part}: {c.reason()}" for c in made if c.passes is None]
+        open_ = [f"Motor through {self.through}: {c.reason()}" for c in made if c.passes is None]
         return Verdict(None, open_) if open_ else Verdict(True)
 
 
 def applies(case: Case) -> bool:
-    """With a gearbox (the ratio and efficiency) and any of the motor's figures."""
-    given = (case.motor_peak_torque, case.motor_inertia, case.motor_rated_torque, case.motor_max_speed)
-    return gearbox.applies(case) and any(q is not None for q in given)
+    """With a catalog motor, or any of the motor's figures; through the gearbox, or directly."""
+    given = (case.motor_peak_torque, case.motor_inertia, case.motor_rated_torque, case.motor_max_speed, case.motor_catalog)
+    return any(q is not None for q in given)
 
 
-def evaluate(case: Case) -> MotorResult:
+@dataclass(frozen=True)
+class Transmission:
+    """What is between the motor and the load's cycle: the gearbox row the motor drives through
+    (its part, ratio, efficiency and input inertia as a one-row array), or nothing (a direct
+    drive: ratio and efficiency 1, no J_1)."""
+
+    part: str | None
+    selected: bool
+    i: object
+    eta: object
+    J_1: object
+    notes: list
+
+
+def transmission(case: Case) -> Transmission:
+    if not gearbox.applies(case):
+        return Transmission(None, True, Q_(1.0, ""), Q_(1.0, ""), Q_(np.zeros(1), "kg*m**2"), [])
     sel = gearbox.gearbox_selection(case)
     row = int(sel.order[0])
     cat = sel.catalog
-    part, i, eta = str(cat.parts[row]), cat["ratio"][row], cat["eta"][row]
-    one = slice(row, row + 1)  # the checks run over rows of gearboxes: here the one row
+    notes = [] if sel.selected is not None else [f"no gearbox is selected: the motor is checked through {cat.parts[row]}, the best-ranked"]
+    return Transmission(str(cat.parts[row]), sel.selected is not None, cat["ratio"][row], cat["eta"][row], sel.J_1[row:row + 1], notes)
+
+
+def evaluate(case: Case) -> MotorResult:
+    t = transmission(case)
     out = output_load(case)
-    notes = [] if sel.selected is not None else [f"no gearbox is selected: the motor is checked through {part}, the best-ranked"]
+    notes = list(t.notes)
     J_1 = J_c = None
     missing = None
+    given_inertia = True if case.motor_catalog is not None else None  # a catalog row gives the rotor's
     if out.sampled:
-        J_1, J_c, missing, more = rotor_inertia(case, sel.J_1[one])  # for the motor shaft's clamping hub
+        J_1, J_c, missing, more = rotor_inertia(case, t.J_1, given_inertia)  # for the motor shaft's clamping hub
         notes += more
         if missing is None and np.isnan(J_1[0].magnitude):
-            missing = f"the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for {part}"
+            missing = f"the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for {t.part}"
     else:
         notes.append(TYPED)
-    load = None if missing else motor_load(
-        out.dt, out.torque, out.speed, cat["ratio"][one, None], cat["eta"][one, None], out.alpha_2, case.motor_inertia,
-        None if J_1 is None else J_1[:, None],
-    )
-    speed = n_1(n_2=out.n_2max, i=cat["ratio"][one])
+    speed = n_1(n_2=out.n_2max, i=t.i * np.ones(1))
+    J_1 = None if missing or J_1 is None else J_1[0]
+    if case.motor_catalog is not None:
+        return _catalog_motor(case, t, out, J_1, J_c, missing, speed, notes)
+    load = None if missing else motor_load(out.dt, out.torque, out.speed, t.i, t.eta, out.alpha_2, case.motor_inertia, J_1)
+    if load is not None:
+        load = MotorLoad(load.T_1[None, :], load.peak[None], load.rms[None], load.rotor_term)  # one row: the gearbox
     checks = motor_checks(
         speed, None if load is None else load.peak, None if load is None else load.rms,
         case.motor_peak_torque, case.motor_rated_torque, case.motor_max_speed, not_made=missing,
@@ -175,9 +242,58 @@ def evaluate(case: Case) -> MotorResult:
     for key, what in (("peak_torque", "peak"), ("rated_torque", "RMS"), ("max_speed", "speed")):
         if getattr(case, f"motor_{key}") is None:
             notes.append(f"the motor's {what} is not checked: the case gives no motor.{key}")
-    J_1 = None if missing or J_1 is None else J_1[0]
-    steps = [] if load is None else motor_steps(out, load, i, eta, case.motor_inertia, J_1)
-    return MotorResult(part, sel.selected is not None, i, eta, J_1, J_c, load, speed, checks, notes, out, steps)
+    steps = [] if load is None else motor_steps(out, load, t.i, t.eta, case.motor_inertia, J_1)
+    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, checks, notes, output=out, steps=steps)
+
+
+#: Rounds of choosing the motor and the gearbox in turn before the choice must have settled.
+ROUNDS = 4
+
+
+def with_chosen_motor(case: Case) -> Case:
+    """The case with the ratings and inertia of the motor its catalog gives (``[motor] catalog``
+    without a ``part``), so that every section checks with that motor: the motor is ranked through
+    the gearbox, the gearbox chosen with the motor's peak torque, and again, until the motor stays
+    the same (the case itself where it names its motor or types it)."""
+    if case.motor_catalog is None or case.motor_part is not None:
+        return case
+    cat = drive.motor_catalog(case)
+    chosen, seen = None, []
+    for _ in range(ROUNDS):
+        sel = evaluate(case).selection
+        pick = int(sel.order[0])
+        if pick == chosen:
+            return case
+        chosen = pick
+        seen.append(str(cat.parts[pick]))
+        case = dataclasses.replace(case, motor_peak_torque=cat["M_max"][pick], motor_rated_torque=cat["M_N"][pick],
+                                   motor_max_speed=cat["n_max"][pick], motor_inertia=cat["J"][pick])
+    raise CalcError(f"{case.path}: motor.catalog: the motor and the gearbox chosen in turn do not settle "
+                    f"({' -> '.join(seen)}); name the motor with motor.part")
+
+
+def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missing, speed, notes) -> MotorResult:
+    """Every motor of the case's catalog (or its part alone) against the cycle through ``t``."""
+    cat = drive.motor_catalog(case)
+    if case.motor_part is not None:
+        cat = cat.rows(cat.parts == case.motor_part)
+    J = cat["J"]
+    if missing is not None:  # J_1 or the coupling's inertia unknown: the rotor term counts what is known
+        notes.append(missing)
+    J_1q = Q_(0.0, "kg*m**2") if J_1 is None else J_1
+    T_1 = motor_torque(out.torque, out.speed, t.i, t.eta, out.alpha_2, J[:, None], J_1q)
+    T_1 = Q_(np.broadcast_to(T_1.m_as("N*m"), (len(cat), len(out.dt))), "N*m")
+    rms = T_1rms(T_1k=T_1, t_k=out.dt)
+    J_L = case.load_inertia
+    lam = None if J_L is None else inertia_ratio(J_1=J_1q, J_L=J_L, i=t.i, J_motor=J).m_as("")
+    cycle = Cycle(T_1.m_as("N*m"), (out.speed * t.i).m_as("rad/s"), out.dt.m_as("s"), rms.m_as("N*m"), lam,
+                  None if J_L is not None else "the inertia ratio needs the load's inertia (load.inertia or a [mechanism])")
+    limit, where = case.motor_max_inertia_ratio
+    sel = select_motors(cat, cycle, case.motor_dc_link, limit, where, float(case.profile.t_cycle.m_as("s")))
+    best = int(sel.order[0])
+    load = MotorLoad(T_1[best:best + 1], np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
+    steps = motor_steps(out, load, t.i, t.eta, J[best], J_1)
+    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out, steps=steps, selection=sel)
 
 
 def motor_steps(out: OutputLoad, load: MotorLoad, i, eta, J_motor, J_1) -> list:
