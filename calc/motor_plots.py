@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .motor import MotorLoad, OutputLoad
+from .motor_ratings import MotorSelection, peak_limit
 from .ratios import INERTIA_RATIO_LIMIT, RatioSearch
 
 
@@ -48,6 +49,44 @@ def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak
     ax.set_ylabel("motor torque $T_1$ [N·m]")
     rotor = "rotor and gearbox inertia included" if torques.rotor_term else "rotor term left out (typed load cycle)"
     ax.set_title(f"Motor torque over the cycle{' through ' + part if part else ''}; {rotor}", fontsize=10)
+    ax.grid(True, color="#dddddd", linewidth=0.6)
+    ax.legend(fontsize=8, loc="best")
+    return fig
+
+
+def torque_speed_figure(selection: MotorSelection, row: int):
+    """The torque-speed plane of one catalog motor: the cycle's operating points (each sample's
+    motor speed and torque magnitude), the motor's peak characteristic at the speeds of the cycle
+    and up to its maximum speed, its rated point ``(n_N, M_N)`` and the cycle's RMS torque at its
+    mean speed (the S1 check).
+
+    Parameters
+    ----------
+    selection : calc.motor_ratings.MotorSelection
+        The catalog motors checked against the cycle.
+    row : int
+        The motor's row in ``selection.catalog``.
+    """
+    from matplotlib.figure import Figure
+
+    cat, cycle = selection.catalog, selection.cycle
+    to_rpm = 60 / (2 * np.pi)
+    n_max = float(cat["n_max"][row].m_as("rad/s"))
+    grid = np.linspace(0.0, n_max, 200)
+    limit, forms = peak_limit(cat.rows(np.arange(len(cat)) == row), grid, selection.dc_link)
+    fig = Figure(figsize=(7.5, 4.2), layout="constrained")
+    ax = fig.subplots()
+    ax.plot(grid * to_rpm, limit[0], color="tab:red", linewidth=1.6, label=f"peak torque ({forms[0]})")
+    ax.plot(np.abs(cycle.speed) * to_rpm, np.abs(cycle.torque[row]), ".", color="tab:blue", markersize=3, alpha=0.5,
+            label="operating points $|n_1|, |T_1|$")
+    ax.plot([cat["n_N"][row].m_as("rpm")], [cat["M_N"][row].m_as("N*m")], "s", color="tab:orange", label="rated point $(n_N, M_N)$")
+    ax.plot([selection.mean_speed * to_rpm], [cycle.rms[row]], "D", color="tab:green",
+            label=f"RMS {cycle.rms[row]:.3g} N·m at the mean speed")
+    ax.set_xlim(0, n_max * to_rpm * 1.05)
+    ax.set_ylim(0, None)
+    ax.set_xlabel("motor speed $n_1$ [rpm]")
+    ax.set_ylabel("motor torque $|T_1|$ [N·m]")
+    ax.set_title(f"{cat.parts[row]}: the cycle in the torque-speed plane", fontsize=10)
     ax.grid(True, color="#dddddd", linewidth=0.6)
     ax.legend(fontsize=8, loc="best")
     return fig

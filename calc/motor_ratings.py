@@ -44,6 +44,9 @@ from .units import Q_, Value
 VOLTAGE_CLEARANCE = 0.9
 #: A cycle longer than this share of the thermal time constant gets a note (the RMS method assumes it short).
 THERMAL_SHARE = 0.1
+#: How :func:`select_motors` ranks the catalog's motors.
+RANKING = ("passing first; then the smallest adequate motor, the lowest rated torque M_N, ties to the lower rotor inertia; "
+           "then lowest worst utilization; partial rows are never ranked")
 #: The load-to-motor inertia ratio a case may leave out ([motor] max_inertia_ratio).
 INERTIA_RATIO_LIMIT = 10.0
 
@@ -201,9 +204,8 @@ class MotorSelection(Selection):
 def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, inertia_limit: float = INERTIA_RATIO_LIMIT,
                   inertia_limit_from: str = "the default", t_cycle: float | None = None) -> MotorSelection:
     """Every row of ``cat`` (no partial row) against the cycle at the motor (:class:`Cycle`), its
-    checks (module docstring) and the ranking: passing first; among them the smallest adequate
-    motor, the lowest rated torque ``M_N``, ties to the lower rotor inertia, then the larger
-    margin; failing rows after, closest to passing first."""
+    checks (module docstring) and the ranking (:data:`RANKING`); failing rows after the passing
+    ones, closest to passing first."""
     rows = len(cat)
     limit, forms = peak_limit(cat, cycle.speed, dc_link)
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -266,12 +266,12 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     report.case, report.title = case, case.title
     try:
         evaluated = evaluate(case)
-        ratios = ratio_search(case) if gearbox.NAME in evaluated.sections else None
+        ratios = ratio_search(evaluated.case) if gearbox.NAME in evaluated.sections else None
     except CalcError as exc:
         report.error = str(exc)
         return report
-    report.evaluated = evaluated
-    report.ratios = ratios
+    # The case as evaluated: with a motor from a catalog, its ratings and inertia are the chosen motor's.
+    report.case, report.evaluated, report.ratios = evaluated.case, evaluated, ratios
     for name, r in report._ranked():
         report.files += [(f"{name.capitalize()} catalog", display_path(path), sha) for path, sha in r.selection.catalog.members]
     return report

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 from ..motor import T_1rms
 from ..units import latex_unit, sig
-from .common import checks_table, input_row, nothing, result_of
-from .latex import itemize, latex_escape, prose, step_block
+from .common import candidates_table, checks_table, input_row, nothing, rejected, result_of
+from .latex import itemize, latex_escape, prose, q, step_block, table
 
 NAME = "motor"
 
@@ -18,6 +18,8 @@ RATINGS = (
 )
 #: Above this many samples the RMS is shown as its formula and result, not every substituted term.
 SHOWN_TERMS = 12
+#: The catalog motors whose ratings the report lists, best first.
+SHOWN_ROWS = 12
 
 
 def input_rows(report) -> list[list[str]]:
@@ -29,8 +31,14 @@ def steps(report) -> list[str]:
     m = result_of(NAME, report)
     if m is None or m.load is None:
         return []
-    which = "the selected gearbox" if m.selected else "the best-ranked gearbox (none is selected)"
-    blocks = [rf"\subsection{{The motor through {which}, {latex_escape(m.part)}}}"]
+    if m.part is None:
+        heading = "The motor, driving the load directly"
+    else:
+        which = "the selected gearbox" if m.selected else "the best-ranked gearbox (none is selected)"
+        heading = f"The motor through {which}, {m.part}"
+    if m.selection is not None:
+        heading += f": {m.selection.best.part}" + ("" if m.selection.selected else " (the closest; none passes)")
+    blocks = [rf"\subsection{{{latex_escape(heading)}}}"]
     if not m.load.rotor_term:
         blocks.append(prose("The load cycle is typed: its accelerations are not known, so the rotor term (J_motor + J_1) · α_1 is left out."))
     for title, step, note in m.steps:
@@ -47,8 +55,35 @@ def checks(report) -> list[str]:
     m = result_of(NAME, report)
     if m is None:
         return []
-    out = [checks_table(m.row_checks, f"The motor through gearbox {m.part}")] if m.row_checks else []
+    motor = "The motor" if m.selection is None else f"Motor {m.selection.best.part}"
+    out = [checks_table(m.row_checks, f"{motor} through {m.through}")] if m.row_checks else []
     return out + ([itemize([latex_escape(n) for n in m.notes])] if m.notes else [])
+
+
+def candidates(report) -> list[str]:
+    """The catalog motors: each one's ratings and characteristic, the utilization of each check,
+    and why the closest rejected ones fail."""
+    m = result_of(NAME, report)
+    if m is None or m.selection is None:
+        return []
+    sel = m.selection
+    listed = sel.candidates()
+    rows = [[latex_escape(c.part), q(c.rated_torque), q(c.rotor_inertia), "–" if c.inertia_ratio is None else f"{c.inertia_ratio:.2f}",
+             latex_escape(c.form)] for c in listed[:SHOWN_ROWS]]
+    more = f"; {len(listed) - SHOWN_ROWS} more in the candidates' utilization below" if len(listed) > SHOWN_ROWS else ""
+    return [r"\subsection*{Motor}",
+            table(r"@{}l r r r l@{}", ["Part", "$M_N$", r"$J_{\mathrm{motor}}$", r"$\lambda$", "Peak characteristic"], rows,
+                  caption=latex_escape(f"The motors of {sel.catalog.shown_name}, best first ({sel.inertia_limit:g} is the limit of λ, "
+                                       f"from {sel.inertia_limit_from}){more}"), small=True),
+            candidates_table(listed, sel.selected, latex_escape("Utilization of each check of the motor candidates, best first")),
+            *rejected(listed)]
+
+
+def chosen(report) -> list[tuple]:
+    m = result_of(NAME, report)
+    if m is None or m.selection is None:
+        return []
+    return [("Motor", m.selection.selected, f"catalog {m.selection.catalog.shown_name}")]
 
 
 def figures(report) -> list:
@@ -58,8 +93,26 @@ def figures(report) -> list:
     from ..motor_plots import motor_torque_figure
 
     c = report.case
-    fig = motor_torque_figure(m.output, m.load, 0, c.motor_peak_torque, c.motor_rated_torque, m.part)
-    return [(fig, latex_escape(f"Motor torque over the cycle through {m.part}, its RMS and the motor's ratings."))]
+    out = [(motor_torque_figure(m.output, m.load, 0, c.motor_peak_torque, c.motor_rated_torque, m.part or ""),
+            latex_escape(f"Motor torque over the cycle through {m.through}, its RMS and the motor's ratings."))]
+    if m.selection is not None:
+        from ..motor_plots import torque_speed_figure
+
+        best = int(m.selection.order[0])
+        out.append((torque_speed_figure(m.selection, best),
+                    latex_escape(f"The cycle's operating points under the peak characteristic of {m.selection.catalog.parts[best]}, "
+                                 "its rated point and the RMS torque at the mean speed.")))
+    return out
 
 
-inputs = results = candidates = chosen = order_lines = sources = readings = nothing
+def order_lines(report) -> list[str]:
+    m = result_of(NAME, report)
+    if m is None or m.selection is None or m.selection.selected is None:
+        return []
+    sel = m.selection
+    row = int(sel.order[0])
+    family = str(sel.catalog.family[row])
+    return [rf"Motor \textbf{{{latex_escape(sel.selected)}}}" + latex_escape(f" ({sel.catalog.text['maker'][row]}" + (f", {family}" if family else "") + ")")]
+
+
+inputs = results = sources = readings = nothing

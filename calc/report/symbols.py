@@ -61,10 +61,14 @@ def tokens(text: str) -> list[tuple[str, ...]]:
     [('symbol', 'd', 'motor'), ('text', ' ≤ '), ('symbol', 'd', 'hub,max')]
     >>> tokens("n_2m · i <= n_1N")
     [('symbol', 'n', '2m'), ('text', ' · '), ('symbol', 'i', ''), ('text', ' ≤ '), ('symbol', 'n', '1N')]
+    >>> tokens("lambda")
+    [('symbol', 'lambda', '')]
     >>> tokens("positioning_accuracy <= required, motor.peak_torque")
     [('text', 'positioning accuracy'), ('text', ' ≤ required, '), ('code', 'motor.peak_torque')]
     """
     text = str(text).replace("<=", "≤").replace(">=", "≥")
+    if text in GREEK:  # a name that is one Greek letter (a check's, a column's): the letter
+        return [("symbol", text, "")]
     out, last = [], 0
     for m in _TOKEN.finditer(text):
         if m.start() > last:

@@ -195,6 +195,20 @@ def _coupling_table(s, shown: int | None) -> str:
             + _torsion_table(s.torsion))
 
 
+def _motor_table(m, shown: int | None) -> str:
+    """The catalog motors (a :class:`calc.sections.motor.MotorResult` with its selection), best first."""
+    sel = m.selection
+    rows = [
+        [str(k), escape(c.part), _verdict_cell(c.passes), _utilization(c.worst), _q(c.rated_torque), _q(c.rotor_inertia),
+         "" if c.inertia_ratio is None else sig(c.inertia_ratio, 3), escape(c.form), "<br>".join(typeset(x) for x in c.reasons)]
+        for k, c in enumerate(sel.candidates(), start=1)
+    ]
+    header = ["rank", "part", "verdict", "worst utilization", typeset("M_N"), typeset("J_motor"), "inertia ratio λ", "peak characteristic", "reasons"]
+    rows, more = _shown(rows, shown)
+    return (f"<h3>Motor candidates, through {escape(m.through)}</h3><div class=note>{typeset(m.ranking)}</div>"
+            + _table(header, rows, numeric={0, 3, 4, 5, 6}, marked=0 if sel.selected else None) + more)
+
+
 def _torsion_table(t) -> str:
     """The drive train as masses and springs with its natural frequencies (:class:`calc.sections.coupling.Torsion`)."""
     if t is None:
@@ -268,6 +282,8 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused) 
             out.append(_gearbox_table(evaluated["gearbox"], shown))
         if "coupling" in evaluated.sections:
             out.append(_coupling_table(evaluated["coupling"], shown))
+        if "motor" in evaluated.sections and evaluated["motor"].selection is not None:
+            out.append(_motor_table(evaluated["motor"], shown))
         if "accuracy" in evaluated.sections:
             out.append(_accuracy_table(evaluated["accuracy"].shown))
     out.append("</div>")

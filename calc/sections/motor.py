@@ -16,7 +16,7 @@ from ..catalog import display_path
 from ..errors import CalcError
 from ..gearbox import inertia_ratio, n_1
 from ..motor import T_1_back, T_1_drive, T_1rms, MotorLoad, OutputLoad, alpha_1, driven_back, motor_checks, motor_load, motor_torque
-from ..motor_ratings import Cycle, MotorSelection, select_motors
+from ..motor_ratings import RANKING, Cycle, MotorSelection, select_motors
 from ..units import Q_, fmt
 from . import coupling, drive, duty, gearbox
 from .common import Governing, Verdict, check_json, check_line, quantity, quantity_text, row_json, selection_governing, selection_verdict
@@ -100,6 +100,8 @@ class MotorResult:
             return self.selection.best.checks
         return [c.at(0) for c in self.checks]
 
+    ranking = RANKING
+
     @property
     def through(self) -> str:
         """What the motor drives: ``gearbox NPT035-10`` or ``the load directly`` (a direct drive)."""
@@ -126,6 +128,7 @@ class MotorResult:
             out.update({
                 "catalog": display_path(sel.catalog.path) if len(sel.catalog.members) == 1 else [display_path(p) for p, _ in sel.catalog.members],
                 "selected": sel.selected,
+                "ranking": self.ranking,
                 "mean_speed": quantity(Q_(sel.mean_speed, "rad/s"), "rpm", "motor.mean_speed"),
                 "max_inertia_ratio": {"value": sel.inertia_limit, "from": sel.inertia_limit_from},
                 "dc_link_voltage": None if sel.dc_link is None else quantity(sel.dc_link, "V", "motor.dc_link_voltage"),
