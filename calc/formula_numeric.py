@@ -130,16 +130,16 @@ def mechanism__a_load(alpha_2, r, rad):
     return alpha_2*r/rad
 
 
-def mechanism__F(m, a, g, theta, s_v, mu, F_p):
-    return a*m + g*m*sin(theta) + s_v*(F_p + g*m*mu*cos(theta))
+def mechanism__F(m, m_c, a, g, theta, s_v, mu, F_p):
+    return a*(m + m_c) + g*(m*sin(theta) - m_c) + s_v*(F_p + g*m*mu*cos(theta))
 
 
-def mechanism__T_2_linear(F, r, eta, d_P, J_M, alpha_2, rad):
-    return F*eta**(-d_P)*r + J_M*alpha_2/rad
+def mechanism__T_2_linear(F, r, eta, d_P, J_M, alpha_2, rad, s_v, T_d):
+    return F*eta**(-d_P)*r + J_M*alpha_2/rad + T_d*s_v
 
 
-def mechanism__J_L_linear(m, r, J_M):
-    return J_M + m*r**2
+def mechanism__J_L_linear(m, m_c, r, J_M):
+    return J_M + r**2*(m + m_c)
 
 
 def mechanism__T_2_rotary(J_L, alpha_2, rad, s_v, T_f, T_p):
@@ -168,6 +168,14 @@ def motor__T_1_back(J_motor, J_1, alpha_1, T_2, i, eta):
 
 def motor__T_1rms(T_1k, t_k):
     return sqrt(SegmentSum(T_1k**2*t_k)/SegmentSum(t_k))
+
+
+def motor__P_1(T_1, omega_1, rad):
+    return T_1*omega_1/rad
+
+
+def motor__W_regen(P_back_k, t_k):
+    return SegmentSum(P_back_k*t_k)
 
 
 def motor_ratings__T_peak_line(M_max, M_N, n, n_N, n_max):
@@ -276,9 +284,9 @@ FUNCTIONS = {
     "calc.mechanism.r_diameter": ("3c22fac8d4d45760", mechanism__r_diameter),
     "calc.mechanism.phi_2": ("1da2b6341980cde8", mechanism__phi_2),
     "calc.mechanism.a_load": ("283188e31b440e36", mechanism__a_load),
-    "calc.mechanism.F": ("fdef0999c09fa208", mechanism__F),
-    "calc.mechanism.T_2_linear": ("7cb37b487f014454", mechanism__T_2_linear),
-    "calc.mechanism.J_L_linear": ("cc83898ce63d05f5", mechanism__J_L_linear),
+    "calc.mechanism.F": ("b2caab605235c779", mechanism__F),
+    "calc.mechanism.T_2_linear": ("4831b3baf9de2446", mechanism__T_2_linear),
+    "calc.mechanism.J_L_linear": ("540adb6b4ce9c2ee", mechanism__J_L_linear),
     "calc.mechanism.T_2_rotary": ("aafb091340bd4c90", mechanism__T_2_rotary),
     "calc.motion.omega_2max": ("19ada2db93ec5338", motion__omega_2max),
     "calc.motion.alpha_2max": ("75ca44b9204f8349", motion__alpha_2max),
@@ -286,6 +294,8 @@ FUNCTIONS = {
     "calc.motor.T_1_drive": ("e75a7aaf85e98fc5", motor__T_1_drive),
     "calc.motor.T_1_back": ("289b3c3741bf545e", motor__T_1_back),
     "calc.motor.T_1rms": ("1d82e3cfb254f05f", motor__T_1rms),
+    "calc.motor.P_1": ("be4c0de4e25e2bae", motor__P_1),
+    "calc.motor.W_regen": ("39af690bbe817330", motor__W_regen),
     "calc.motor_ratings.T_peak_line": ("f011ced4e1a656a4", motor_ratings__T_peak_line),
     "calc.motor_ratings.T_V": ("c3e5f4ec424088bb", motor_ratings__T_V),
     "calc.profile.ED": ("2103e372a6f8efab", profile__ED),

@@ -8,14 +8,19 @@ lead ``p``, ``r = d / 2`` of a pinion's pitch diameter or a pulley's diameter. T
 * a distance as the output's angle ``φ_2 = s·rad / r`` (the radian of errata E15: one radian of
   output moves the load by r), so the motion law runs at the output (:mod:`calc.motion`), and
   the load's acceleration ``a = α_2·r / rad``;
-* the force on the load: ``F = m·a + m·g·sin θ + s_v·(μ·m·g·cos θ + F_p)``, with ``s_v`` the
-  direction of motion (+1 forwards, −1 back, 0 at rest): inertia and gravity (up is forwards) act
-  always, friction and the process force oppose the motion while it moves;
-* the output torque ``T_2 = F·r·η^(−d) + J_M·α_2 / rad``: the efficiency divides the force torque
-  while the drive drives (``d = +1``, power into the load) and multiplies it while the load drives
-  back (``d = −1``, at rest too: the load held against gravity pulls back through the mechanism);
-  ``J_M`` is the screw's, pinion's or pulley's own inertia, outside the efficiency;
-* the load's inertia at the output ``J_L = m·r² + J_M`` (no efficiency).
+* the force on the load: ``F = (m + m_c)·a + (m·sin θ − m_c)·g + s_v·(μ·m·g·cos θ + F_p)``, with
+  ``s_v`` the direction of motion (+1 forwards, −1 back, 0 at rest): inertia and gravity (up is
+  forwards) act always, friction and the process force oppose the motion while it moves; a
+  counterweight ``m_c`` hangs on a rope over the same lead or radius and travels as far as the load,
+  the other way and vertically (a reading): its mass accelerates with the load, its weight pulls
+  against the load's (on a vertical axis ``(m − m_c)·g``);
+* the output torque ``T_2 = F·r·η^(−d) + J_M·α_2 / rad + s_v·T_d``: the efficiency divides the force
+  torque while the drive drives (``d = +1``, power into the load) and multiplies it while the load
+  drives back (``d = −1``, at rest too: the load held against gravity pulls back through the
+  mechanism); ``J_M`` is the screw's, pinion's or pulley's own inertia, outside the efficiency;
+  ``T_d`` a drag torque at that shaft (a ball screw's preload, seals), against the motion while it
+  moves and outside the efficiency, none at rest;
+* the load's inertia at the output ``J_L = (m + m_c)·r² + J_M`` (no efficiency).
 
 A rotary table: ``T_2 = J_L·α_2 / rad + s_v·(T_f + T_p)``, its friction and process torque
 against the motion while it moves.
@@ -47,6 +52,8 @@ r = Symbol("r", "r", "length", "mm", "transmission radius: the load's travel per
 s = Symbol("s", "s", "length", "mm", "distance of the load")
 a = Symbol("a", "a", "linear_acceleration", "m/s**2", "acceleration of the load")
 m = Symbol("m", "m", "mass", "kg", "moved mass")
+m_c = Symbol("m_c", r"m_{c}", "mass", "kg", "counterweight, moving the other way")
+T_d = Symbol("T_d", r"T_{d}", "torque", "N*m", "drag torque at the screw, pinion or pulley shaft, against the motion while it moves")
 mu = Symbol("mu", r"\mu", "dimensionless", "", "friction coefficient of the guide")
 theta = Symbol("theta", r"\theta", "angle", "deg", "incline of the axis (90°: vertical, up is forwards)")
 F_p = Symbol("F_p", r"F_{p}", "force", "N", "process force, against the motion while it moves")
@@ -72,19 +79,20 @@ a_load = Formula(
     lambda sp, alpha, r, rad: alpha * r / rad, f"{READING}; E15",
 )
 F = Formula(
-    F_sym, (m, a, g, theta, s_v, mu, F_p),
-    lambda sp, m, a, g, theta, s_v, mu, F_p: m * a + m * g * sp.sin(theta) + s_v * (mu * m * g * sp.cos(theta) + F_p),
-    f"{READING}: inertia, gravity on the incline, friction of the guide and the process force",
+    F_sym, (m, m_c, a, g, theta, s_v, mu, F_p),
+    lambda sp, m, m_c, a, g, theta, s_v, mu, F_p: (m + m_c) * a + (m * sp.sin(theta) - m_c) * g + s_v * (mu * m * g * sp.cos(theta) + F_p),
+    f"{READING}: inertia, gravity on the incline, a counterweight, friction of the guide and the process force",
 )
 T_2_linear = Formula(
     Symbol("T_2_linear", r"T_{2}", "torque", "N*m", "output torque of a linear mechanism"),
-    (F_sym, r, eta, d_P, J_M, alpha_2, RADIAN),
-    lambda sp, F, r, eta, d_P, J_M, alpha, rad: F * r * eta ** (-d_P) + J_M * alpha / rad,
-    f"{READING}: the efficiency divides while driving, multiplies while driven back; E15",
+    (F_sym, r, eta, d_P, J_M, alpha_2, RADIAN, s_v, T_d),
+    lambda sp, F, r, eta, d_P, J_M, alpha, rad, s_v, T_d: F * r * eta ** (-d_P) + J_M * alpha / rad + s_v * T_d,
+    f"{READING}: the efficiency divides while driving, multiplies while driven back; the drag outside it; E15",
 )
 J_L_linear = Formula(
     Symbol("J_L_linear", r"J_{L}", "inertia", "kg*cm**2", "inertia of the load at the gearbox output"),
-    (m, r, J_M), lambda sp, m, r, J_M: m * r**2 + J_M, f"{READING}: the moved mass reflected through r, no efficiency",
+    (m, m_c, r, J_M), lambda sp, m, m_c, r, J_M: (m + m_c) * r**2 + J_M,
+    f"{READING}: the moved masses (load and counterweight) reflected through r, no efficiency",
 )
 T_2_rotary = Formula(
     Symbol("T_2_rotary", r"T_{2}", "torque", "N*m", "output torque of a rotary table"),
@@ -100,8 +108,9 @@ class Mechanism:
 
     ``type`` is one of :data:`TYPES`. A rotary table has ``inertia``, ``friction_torque`` and
     ``process_torque``; a linear one ``mass``, ``friction_coefficient``, ``incline``, ``force``,
-    ``eta``, its ``lead`` (ball screw) or ``diameter`` (pinion, pulley) and the own inertia
-    ``own_inertia``. ``holding_brake``: a brake holds the load in a dwell (no torque there).
+    ``eta``, its ``lead`` (ball screw) or ``diameter`` (pinion, pulley), the own inertia
+    ``own_inertia``, a ``counterweight`` and a ``drag_torque`` (None: none). ``holding_brake``: a
+    brake holds the load in a dwell (no torque there).
     """
 
     type: str
@@ -116,7 +125,17 @@ class Mechanism:
     lead: object = None
     diameter: object = None
     own_inertia: object = None
+    counterweight: object = None
+    drag_torque: object = None
     holding_brake: bool = False
+
+    @property
+    def _counterweight(self):
+        return Q_(0.0, "kg") if self.counterweight is None else self.counterweight
+
+    @property
+    def _drag(self):
+        return Q_(0.0, "N*m") if self.drag_torque is None else self.drag_torque
 
     @property
     def linear(self) -> bool:
@@ -139,7 +158,7 @@ class Mechanism:
 
     def load_inertia_step(self):
         """The step giving J_L, the load's inertia at the output (linear types)."""
-        return J_L_linear.step(m=self.mass, r=self.radius, J_M=self.own_inertia)
+        return J_L_linear.step(m=self.mass, m_c=self._counterweight, r=self.radius, J_M=self.own_inertia)
 
     @property
     def load_inertia(self):
@@ -164,10 +183,11 @@ class Mechanism:
         s_v = np.sign(speed)
         if self.linear:
             r = self.to_load()
-            force = F.si(m=self._si(self.mass, "kg"), a=a_load.si(alpha_2=acceleration, r=r), theta=self._si(self.incline, "rad"), s_v=s_v,
-                         mu=self._si(self.friction_coefficient, ""), F_p=self._si(self.force, "N"))
+            force = F.si(m=self._si(self.mass, "kg"), m_c=self._si(self._counterweight, "kg"), a=a_load.si(alpha_2=acceleration, r=r),
+                         theta=self._si(self.incline, "rad"), s_v=s_v, mu=self._si(self.friction_coefficient, ""), F_p=self._si(self.force, "N"))
             d_power = np.where(force * speed > 0, 1.0, -1.0)
-            out = T_2_linear.si(F=force, r=r, eta=self._si(self.eta, ""), d_P=d_power, J_M=self._si(self.own_inertia, "kg*m**2"), alpha_2=acceleration)
+            out = T_2_linear.si(F=force, r=r, eta=self._si(self.eta, ""), d_P=d_power, J_M=self._si(self.own_inertia, "kg*m**2"), alpha_2=acceleration,
+                                s_v=s_v, T_d=self._si(self._drag, "N*m"))
         else:
             out = T_2_rotary.si(J_L=self._si(self.inertia, "kg*m**2"), alpha_2=acceleration, s_v=s_v,
                                 T_f=self._si(self.friction_torque, "N*m"), T_p=self._si(self.process_torque, "N*m"))
@@ -190,7 +210,7 @@ class Mechanism:
             return [T_2_rotary.step(J_L=self.inertia, alpha_2=acceleration, s_v=s_v, T_f=self.friction_torque, T_p=self.process_torque)]
         r_q = self.radius
         acc = a_load.step(alpha_2=acceleration, r=r_q)
-        f = F.step(m=self.mass, a=acc.result, theta=self.incline, s_v=s_v, mu=self.friction_coefficient, F_p=self.force)
+        f = F.step(m=self.mass, m_c=self._counterweight, a=acc.result, theta=self.incline, s_v=s_v, mu=self.friction_coefficient, F_p=self.force)
         d_power = Q_(1.0 if f.result.m_as("N") * w > 0 else -1.0, "")
-        t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration)
+        t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration, s_v=s_v, T_d=self._drag)
         return [acc, f, t]

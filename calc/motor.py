@@ -71,6 +71,74 @@ T_1rms = Formula(
 )
 
 
+P_1 = Formula(
+    Symbol("P_1", "P_{1}", "power", "W", "mechanical power at the motor shaft (negative: the load drives back, the drive brakes)"),
+    (Symbol("T_1", "T_{1}", "torque", "N*m", "motor torque"), Symbol("omega_1", r"\omega_{1}", "speed", "rpm", "motor speed"),
+     Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (E15)", value="1 rad")),
+    lambda sp, T, w, rad: T * w / rad,
+    "mechanics: power = torque · angular speed (E15)",
+)
+
+W_regen = Formula(
+    Symbol("W_regen", r"W_{\mathrm{regen}}", "energy", "J", "energy the load gives back to the drive per cycle (its braking resistor or DC link)"),
+    (Symbol("P_back_k", r"P_{\mathrm{back},k}", "power", "W", "braking power of sample k, |P_1| where P_1 < 0, else 0", per_segment=True),
+     Symbol("t_k", "t_{k}", "time", "s", "duration of sample k", per_segment=True)),
+    lambda sp, P, t: segment_sum(P * t),
+    "mechanics: the work of the braking samples, before the motor's and the drive's losses",
+)
+
+
+@dataclass(frozen=True)
+class Energy:
+    """The motor's power over a cycle: its peak driving and braking power [W] and the energy given
+    back per cycle [J] (at the shaft: the motor's copper losses and the drive's would lower it)."""
+
+    peak_power: float
+    peak_braking_power: float
+    regenerated_per_cycle: float
+
+
+def energy(dt, speed_1, T_1) -> Energy:
+    """:class:`Energy` of the samples of a cycle at the motor: durations [s], speeds [rad/s] and
+    torques [N·m] (SI float arrays).
+
+    Braking 2 N·m at 300 rad/s for 0.1 s gives back 2 · 300 · 0.1 = 60 J; driving 3 N·m at 300
+    rad/s is 900 W:
+
+    >>> e = energy(np.array([0.1, 0.1]), np.array([300.0, 300.0]), np.array([3.0, -2.0]))
+    >>> e.peak_power, e.peak_braking_power, round(e.regenerated_per_cycle, 9)
+    (900.0, 600.0, 60.0)
+    """
+    power = P_1.si(T_1=np.asarray(T_1, float), omega_1=np.asarray(speed_1, float))
+    back = np.where(power < 0, -power, 0.0)
+    return Energy(float(max(power.max(), 0.0)), float(back.max()), float(W_regen.si(P_back_k=back, t_k=np.asarray(dt, float))))
+
+
+@dataclass(frozen=True)
+class Phase:
+    """One segment of the cycle at the motor: its phase name, duration [s], mean speed [rad/s],
+    RMS and peak torque [N·m]."""
+
+    phase: str
+    duration: float
+    speed: float
+    rms_torque: float
+    peak_torque: float
+
+
+def phases(segment, names, dt, speed_1, T_1) -> list[Phase]:
+    """The cycle at the motor, segment by segment: ``segment`` gives each sample's segment number
+    (contiguous, from 0), ``names`` each segment's phase; durations, speeds and torques per sample
+    (SI float arrays)."""
+    segment, dt, v, T = (np.asarray(x) for x in (segment, dt, speed_1, T_1))
+    starts = np.searchsorted(segment, np.arange(len(names)))
+    duration = np.add.reduceat(dt, starts)
+    speed = np.add.reduceat(v * dt, starts) / duration
+    rms = np.sqrt(np.add.reduceat(T**2 * dt, starts) / duration)
+    peak = np.maximum.reduceat(np.abs(T), starts)
+    return [Phase(str(n), float(t), float(w), float(r), float(p)) for n, t, w, r, p in zip(names, duration, speed, rms, peak)]
+
+
 @dataclass(frozen=True)
 class OutputLoad:
     """The load cycle at the gearbox output as the motor's side reads it: an entry per sample (or

@@ -109,6 +109,8 @@ KINDS: dict[str, Kind] = {
         Kind("linear_speed", "[length]/[time]", 0, "m/s", '"0.5 m/s"'),
         Kind("linear_acceleration", "[length]/[time]**2", 0, "m/s**2", '"9.80665 m/s**2"'),
         Kind("linear_stiffness", "[mass]/[time]**2", 0, "N/m", '"200 N/mm"'),
+        Kind("power", "[mass]*[length]**2/[time]**3", 0, "W", '"400 W"'),
+        Kind("energy", "[mass]*[length]**2/[time]**2", 0, "J", '"60 J"'),
         Kind("voltage", "[mass]*[length]**2/[time]**3/[current]", 0, "V", '"565 V"'),
         Kind("current", "[current]", 0, "A", '"5.7 A"'),
         Kind("resistance", "[mass]*[length]**2/[time]**3/[current]**2", 0, "ohm", '"0.61 ohm"'),

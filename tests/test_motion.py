@@ -49,7 +49,9 @@ def test_transmission_radius_and_reflected_inertia_by_hand():
     # r = 20 mm / 2π = 3.183099 mm; J_L = 50 kg · (3.183099e-3 m)² + 1 kg·cm² = 5.066059 + 1 = 6.066059 kg·cm².
     r = r_lead(p=Q_(20, "mm"))
     assert r.m_as("mm") == pytest.approx(3.183099, rel=1e-6)
-    assert J_L_linear(m=Q_(50, "kg"), r=r, J_M=Q_(1, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(6.066059, rel=1e-6)
+    assert J_L_linear(m=Q_(50, "kg"), m_c=Q_(0, "kg"), r=r, J_M=Q_(1, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(6.066059, rel=1e-6)
+    # A 30 kg counterweight travels as far: J_L = 80 kg · r² + 1 kg·cm² = 8.105695 + 1 = 9.105695 kg·cm².
+    assert J_L_linear(m=Q_(50, "kg"), m_c=Q_(30, "kg"), r=r, J_M=Q_(1, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(9.105695, rel=1e-6)
     assert r_diameter(d=Q_(50, "mm")).m_as("mm") == 25.0
     # 100 mm of travel is 100 / 3.183099 = 31.4159 rad = 1800° of the screw.
     assert phi_2(s=Q_(100, "mm"), r=r).m_as("deg") == pytest.approx(1800.0, rel=1e-12)
@@ -60,9 +62,27 @@ def test_the_torque_formulas_by_hand():
     t = T_2_rotary(J_L=Q_(1500, "kg*cm**2"), alpha_2=Q_(40, "rad/s**2"), s_v=-1, T_f=Q_(2, "N*m"), T_p=Q_(3, "N*m"))
     assert t.m_as("N*m") == pytest.approx(1.0, rel=1e-12)
     # Screw: 100 N · 5 mm / 0.8 = 0.625 N·m driving, 100 N · 5 mm · 0.8 = 0.4 N·m driven back; + 1e-4 kg·m² · 1000 rad/s² = 0.1.
-    common = dict(F=Q_(100, "N"), r=Q_(5, "mm"), eta=0.8, J_M=Q_(1, "kg*cm**2"), alpha_2=Q_(1000, "rad/s**2"))
+    common = dict(F=Q_(100, "N"), r=Q_(5, "mm"), eta=0.8, J_M=Q_(1, "kg*cm**2"), alpha_2=Q_(1000, "rad/s**2"), s_v=1, T_d=Q_(0, "N*m"))
     assert T_2_linear(d_P=1, **common).m_as("N*m") == pytest.approx(0.725, rel=1e-12)
     assert T_2_linear(d_P=-1, **common).m_as("N*m") == pytest.approx(0.5, rel=1e-12)
+    # A drag torque of 0.2 N·m against the motion, outside the efficiency: + 0.2 moving forwards, − 0.2 back.
+    assert T_2_linear(d_P=1, **{**common, "T_d": Q_(0.2, "N*m")}).m_as("N*m") == pytest.approx(0.925, rel=1e-12)
+    assert T_2_linear(d_P=-1, **{**common, "s_v": -1, "T_d": Q_(0.2, "N*m")}).m_as("N*m") == pytest.approx(0.3, rel=1e-12)
+
+
+def test_a_drag_torque_and_a_counterweight_on_a_vertical_screw_by_hand():
+    # A 20 kg load on a vertical screw (lead 10 mm: r = 1.591549 mm, η 0.9, no friction), 15 kg
+    # counterweight, 0.3 N·m drag. Lifting at constant speed: F = (20 − 15) kg · 9.80665 = 49.033 N;
+    # T_2 = 49.033 · 1.591549e-3 / 0.9 + 0.3 = 0.086710 + 0.3 = 0.386710 N·m. Held at rest: the load
+    # pulls back through the screw, 49.033 · 1.591549e-3 · 0.9 = 0.070235 N·m, and no drag.
+    # Accelerating up at 100 rad/s² of the screw (a = 0.159155 m/s²): F = 35 kg · 0.159155 + 49.033
+    # = 54.603 N; T_2 = 54.603 · 1.591549e-3 / 0.9 + 2e-4 · 100 + 0.3 = 0.096560 + 0.02 + 0.3 = 0.416560 N·m.
+    screw = Mechanism("ball-screw", mass=Q_(20, "kg"), friction_coefficient=Q_(0, ""), incline=Q_(90, "deg"), force=Q_(0, "N"),
+                      eta=Q_(0.9, ""), lead=Q_(10, "mm"), own_inertia=Q_(2, "kg*cm**2"), counterweight=Q_(15, "kg"), drag_torque=Q_(0.3, "N*m"))
+    T = screw.torque(np.array([10.0, 0.0, 10.0]), np.array([0.0, 0.0, 100.0]))
+    assert T == pytest.approx([0.386709, 0.070235, 0.416561], rel=1e-5)
+    # J_L = 35 kg · r² + 2 kg·cm² = 35 · 2.533030e-6 m² = 0.886560 + 2 = 2.886560 kg·cm².
+    assert screw.load_inertia.m_as("kg*cm**2") == pytest.approx(2.886560, rel=1e-6)
 
 
 VERTICAL_SCREW = Mechanism(

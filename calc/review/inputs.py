@@ -139,6 +139,8 @@ MECHANISM = {
     "incline": ("incline", "deg", lambda _v: (-90.0, 90.0), False),
     "force": ("process force", "lbf", _signed, False),
     "eta": ("efficiency", "", lambda _v: (0.5, 1.0), True),
+    "counterweight": ("counterweight", "lb", _signed, False),
+    "drag_torque": ("drag torque", "lbf*in", _signed, False),
     "lead": ("screw lead", "in", _scaled, True),
     "pitch_diameter": ("pinion pitch diameter", "in", _scaled, True),
     "pulley_diameter": ("pulley diameter", "in", _scaled, True),

@@ -36,6 +36,10 @@ MECHANISM = Declared("mechanism", (
     Key("incline", "angle", "incline of the axis (90°: vertical, up is forwards)", "theta", "0 deg", "deg", _LINEAR),
     Key("force", "force", "process force, against the motion while it moves", "F_p", "0 N", "N", _LINEAR),
     Key("eta", "dimensionless", "efficiency of the mechanism, above 0 and at most 1", "eta", only=_LINEAR),
+    Key("counterweight", "mass", "counterweight on a rope over the same lead or radius, travelling the other way: its mass "
+        "accelerates with the load, its weight pulls against the load's", "m_c", "0 kg", "kg", _LINEAR),
+    Key("drag_torque", "torque", "drag torque at the screw, pinion or pulley shaft (preload, seals), against the motion while "
+        "it moves, outside the efficiency", "T_d", "0 N*m", "N*m", _LINEAR),
     Key("lead", "length", "lead of the screw: travel per revolution", "p", unit="mm", only=("ball-screw",)),
     Key("screw_inertia", "inertia", "own inertia of the screw", "J_M", "0 kg*m**2", "kg*cm**2", ("ball-screw",)),
     Key("pitch_diameter", "length", "pitch diameter of the pinion", "d", unit="mm", only=("rack-pinion",)),
@@ -141,6 +145,7 @@ def read_mechanism(top: Table) -> Mechanism | None:
     return Mechanism(
         type_, holding_brake=brake, mass=t.positive("mass", required=True), friction_coefficient=nonnegative(t, "friction_coefficient"),
         incline=t.quantity("incline"), force=t.quantity("force"), eta=eta, own_inertia=nonnegative(t, own_key),
+        counterweight=nonnegative(t, "counterweight"), drag_torque=nonnegative(t, "drag_torque"),
         **({"lead": size} if type_ == "ball-screw" else {"diameter": size}),
     )
 

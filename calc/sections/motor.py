@@ -15,7 +15,10 @@ from ..case import Case
 from ..catalog import display_path
 from ..errors import CalcError
 from ..gearbox import inertia_ratio, n_1
-from ..motor import T_1_back, T_1_drive, T_1rms, MotorLoad, OutputLoad, alpha_1, driven_back, motor_checks, motor_load, motor_torque
+from ..cycle import PHASES
+from ..motor import (
+    T_1_back, T_1_drive, T_1rms, Energy, MotorLoad, OutputLoad, alpha_1, driven_back, energy, motor_checks, motor_load, motor_torque, phases,
+)
 from ..motor_ratings import RANKING, Cycle, MotorSelection, select_motors
 from ..units import Q_, fmt
 from . import coupling, drive, duty, gearbox
@@ -88,6 +91,8 @@ class MotorResult:
     notes: list
     output: OutputLoad | None = None  # the load cycle at the gearbox output the torques are of
     selection: MotorSelection | None = None  # the catalog motors ranked ([motor] catalog or part)
+    phases: list = field(default_factory=list)  # calc.motor.Phase of each segment of the cycle, at the motor
+    energy: Energy | None = None  # its power and the energy given back per cycle
     #: (title, calc.formula.Step, note or None) of the motor torque at the driving and the driven-back
     #: peak and of its RMS, as computed here; the RMS step holds every sample
     steps: list = field(default_factory=list)
@@ -122,7 +127,15 @@ class MotorResult:
             "max_speed_required": quantity(self.speed[0], "rpm", "motor.max_speed_required"),
             "checks": [check_json(c) for c in self.row_checks],
             "notes": list(self.notes),
+            "phases": [{"phase": p.phase, "duration": quantity(Q_(p.duration, "s"), "s"), "speed": quantity(Q_(p.speed, "rad/s"), "rpm"),
+                        "rms_torque": quantity(Q_(p.rms_torque, "N*m"), "N*m"), "peak_torque": quantity(Q_(p.peak_torque, "N*m"), "N*m")}
+                       for p in self.phases],
         }
+        if self.energy is not None:
+            e = self.energy
+            out["energy"] = {"regenerated_per_cycle": quantity(Q_(e.regenerated_per_cycle, "J"), "J", "motor.energy"),
+                             "peak_power": quantity(Q_(e.peak_power, "W"), "W", "motor.peak_power"),
+                             "peak_braking_power": quantity(Q_(e.peak_braking_power, "W"), "W", "motor.peak_braking_power")}
         sel = self.selection
         if sel is not None:
             out.update({
@@ -146,6 +159,10 @@ class MotorResult:
             f"Motor through {which}: T_1peak = {quantity_text(j['peak_torque_required'])}, "
             f"T_1rms = {quantity_text(j['rms_torque_required'])}, n_max required = {quantity_text(j['max_speed_required'])}"
         ]
+        if self.energy is not None:
+            e = self.energy
+            lines.append(f"  Power at the motor: peak {Q_(e.peak_power, 'W'):.4g~P} driving, {Q_(e.peak_braking_power, 'W'):.4g~P} braking; "
+                         f"{Q_(e.regenerated_per_cycle, 'J'):.4g~P} given back per cycle")
         sel = self.selection
         if sel is None:
             lines += [f"        {check_line(c.at(0))}" for c in self.checks]
@@ -246,7 +263,8 @@ def evaluate(case: Case) -> MotorResult:
         if getattr(case, f"motor_{key}") is None:
             notes.append(f"the motor's {what} is not checked: the case gives no motor.{key}")
     steps = [] if load is None else motor_steps(out, load, t.i, t.eta, case.motor_inertia, J_1)
-    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, checks, notes, output=out, steps=steps)
+    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, checks, notes, output=out, steps=steps,
+                       **({} if load is None else at_the_motor(case, out, t.i, load)))
 
 
 #: Rounds of choosing the motor and the gearbox in turn before the choice must have settled.
@@ -296,7 +314,20 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     best = int(sel.order[0])
     load = MotorLoad(T_1[best:best + 1], np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
     steps = motor_steps(out, load, t.i, t.eta, J[best], J_1)
-    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out, steps=steps, selection=sel)
+    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out, steps=steps, selection=sel,
+                       **at_the_motor(case, out, t.i, load))
+
+
+def at_the_motor(case: Case, out: OutputLoad, i, load: MotorLoad) -> dict:
+    """The cycle at the motor, segment by segment (the motion's segments, or the typed ones), and
+    its power and energy, for the motor whose torques ``load`` holds (one row)."""
+    speed, dt, T = (out.speed * i).m_as("rad/s"), out.dt.m_as("s"), load.T_1[0].m_as("N*m")
+    if case.motion is not None:
+        s = case.motion.samples
+        segment, names = s.segment, [PHASES[p] for p in s.segment_phases]
+    else:
+        segment, names = np.arange(len(dt)), list(case.profile.phases)
+    return {"phases": phases(segment, names, dt, speed, T), "energy": energy(dt, speed, T)}
 
 
 def motor_steps(out: OutputLoad, load: MotorLoad, i, eta, J_motor, J_1) -> list:
