@@ -221,3 +221,15 @@ def test_the_json_names_the_fixed_keys(write_case, capsys):
     assert m["max_inertia_ratio"] == {"value": 5.0, "from": "motor.max_inertia_ratio"}
     # A limit of 5: SGM7J-02A's λ of 8.4 fails it; the smallest motor with a rotor of J_L / 5 or more passes.
     assert m["selected"] != "SGM7J-02A" and all(c["inertia_ratio"] <= 5 for c in m["candidates"] if c["passes"])
+
+
+def test_a_motor_and_gearbox_that_do_not_settle_are_an_error(write_case, capsys, monkeypatch):
+    from calc.__main__ import main
+    from calc.sections import motor
+
+    # One round only: the motor ranked without the motor's ratings in the gearbox's checks is not yet
+    # the one ranked with them, so the choice has not been seen to settle.
+    monkeypatch.setattr(motor, "ROUNDS", 1)
+    path = write_case(DIRECT_DRIVE.format(motor=""), "dd.toml")
+    assert main(["evaluate", str(path)]) == 2
+    assert "motor.catalog: the motor and the gearbox chosen in turn do not settle (SGM7J-02A); name the motor with motor.part" in capsys.readouterr().err

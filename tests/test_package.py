@@ -72,7 +72,7 @@ def test_pip_install_runs_the_example_case_from_package_data(source, tmp_path):
     target = tmp_path / "site"
     run([sys.executable, *PIP, "--target", str(target), str(source)], env=child_env())
     installed = target / "calc"
-    assert sorted(p.name for p in (installed / "catalogs").glob("*.csv")) == ["couplings.csv", "gearbox-hubs.csv", "gearboxes.csv"]
+    assert sorted(p.name for p in (installed / "catalogs").glob("*.csv")) == ["couplings.csv", "gearbox-hubs.csv", "gearboxes.csv", "motors.csv"]
     assert not list(installed.rglob("*.pdf"))  # generated reports stay out of the package
 
     # The example case and the measurement it names (../data/...) in a folder of their own.

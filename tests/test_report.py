@@ -226,7 +226,7 @@ def test_a_linear_axis_shows_its_radius_inertia_and_force():
     # r = 1 in / 2π = 4.043 mm; J_L = 60 lb · r² + 2.7 lb·in² = 4.448 + 7.901 = 12.35 kg·cm².
     assert r"r &= \frac{p}{2 \cdot \pi}" in steps and r"&= 4.043\,\mathrm{mm}" in steps
     assert r"&= 12.35\,\mathrm{kg\,cm^{2}}" in steps
-    assert r"F &= a \cdot m" in steps and r"T_{2} &= F \cdot r \cdot \eta^{- d_{P}}" in steps
+    assert r"F &= a \cdot \left(m + m_{c}\right)" in steps and r"T_{2} &= T_{d} \cdot s_{v} + F \cdot r \cdot \eta^{- d_{P}}" in steps
 
 
 def test_a_derived_load_inertia_is_not_listed_as_a_case_key():

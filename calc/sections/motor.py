@@ -157,7 +157,7 @@ class MotorResult:
         which = self.through if self.selected or self.part is None else f"{self.through}, the best-ranked gearbox (none is selected)"
         lines = [
             f"Motor through {which}: T_1peak = {quantity_text(j['peak_torque_required'])}, "
-            f"T_1rms = {quantity_text(j['rms_torque_required'])}, n_max required = {quantity_text(j['max_speed_required'])}"
+            f"T_1rms = {quantity_text(j['rms_torque_required'])}, {'n_2max' if self.part is None else 'n_2max · i'} = {quantity_text(j['max_speed_required'])}"
         ]
         if self.energy is not None:
             e = self.energy
