@@ -114,6 +114,34 @@ def hysteresis__phi_LM3(phi_max_3, phi_min_3):
     return phi_max_3 - phi_min_3
 
 
+def inertia__m_cylinder(rho, D, L):
+    return (1/4)*pi*D**2*L*rho
+
+
+def inertia__m_hollow(rho, D, d, L):
+    return (1/4)*pi*L*rho*(D**2 - d**2)
+
+
+def inertia__m_plate(rho, a, b, L):
+    return L*a*b*rho
+
+
+def inertia__J_cylinder(m, D):
+    return (1/8)*D**2*m
+
+
+def inertia__J_hollow(m, D, d):
+    return (1/8)*m*(D**2 + d**2)
+
+
+def inertia__J_plate(m, a, b):
+    return (1/12)*m*(a**2 + b**2)
+
+
+def inertia__J_body(J_own, m, e):
+    return J_own + e**2*m
+
+
 def mechanism__r_lead(p):
     return (1/2)*p/pi
 
@@ -280,6 +308,13 @@ FUNCTIONS = {
     "calc.hysteresis.C_t": ("41fae874a638b2da", hysteresis__C_t),
     "calc.hysteresis.j_t": ("a86089e6e3b95b15", hysteresis__j_t),
     "calc.hysteresis.phi_LM3": ("5ec97fde2a6e3296", hysteresis__phi_LM3),
+    "calc.inertia.m_cylinder": ("15419d6fe8474db7", inertia__m_cylinder),
+    "calc.inertia.m_hollow": ("302296a77e02444a", inertia__m_hollow),
+    "calc.inertia.m_plate": ("85ffc659ac0426d4", inertia__m_plate),
+    "calc.inertia.J_cylinder": ("550071dc6497fbb3", inertia__J_cylinder),
+    "calc.inertia.J_hollow": ("19f9c6b1c17f9cee", inertia__J_hollow),
+    "calc.inertia.J_plate": ("0ca8f1e0aa0d865d", inertia__J_plate),
+    "calc.inertia.J_body": ("47de21268ba8c289", inertia__J_body),
     "calc.mechanism.r_lead": ("3fee99b76dbd0a6f", mechanism__r_lead),
     "calc.mechanism.r_diameter": ("3c22fac8d4d45760", mechanism__r_diameter),
     "calc.mechanism.phi_2": ("1da2b6341980cde8", mechanism__phi_2),

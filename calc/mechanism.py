@@ -128,6 +128,8 @@ class Mechanism:
     counterweight: object = None
     drag_torque: object = None
     holding_brake: bool = False
+    bodies: tuple = ()  # calc.inertia.Body of a rotary table, whose inertias are in ``inertia``
+    given_inertia: object = None  # the inertia the case gives besides the bodies
 
     @property
     def _counterweight(self):

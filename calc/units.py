@@ -109,6 +109,7 @@ KINDS: dict[str, Kind] = {
         Kind("linear_speed", "[length]/[time]", 0, "m/s", '"0.5 m/s"'),
         Kind("linear_acceleration", "[length]/[time]**2", 0, "m/s**2", '"9.80665 m/s**2"'),
         Kind("linear_stiffness", "[mass]/[time]**2", 0, "N/m", '"200 N/mm"'),
+        Kind("density", "[mass]/[length]**3", 0, "kg/m**3", '"7850 kg/m**3"'),
         Kind("power", "[mass]*[length]**2/[time]**3", 0, "W", '"400 W"'),
         Kind("energy", "[mass]*[length]**2/[time]**2", 0, "J", '"60 J"'),
         Kind("voltage", "[mass]*[length]**2/[time]**3/[current]", 0, "V", '"565 V"'),

@@ -11,7 +11,7 @@ CALC = Path(__file__).resolve().parent.parent / "calc"
 
 LAYERS = {
     "machinery": ("errors", "units", "formula", "formula_numeric", "codegen", "checks", "selection", "bands", "catalog", "measurement", "cycle"),
-    "domain": ("profile", "motion", "mechanism", "gearbox", "coupling", "fits", "stiffness", "torsion", "hysteresis", "accuracy", "transmission", "motor", "motor_ratings", "ratios", "combinations"),
+    "domain": ("profile", "motion", "mechanism", "gearbox", "coupling", "fits", "stiffness", "torsion", "hysteresis", "accuracy", "transmission", "inertia", "motor", "motor_ratings", "ratios", "combinations"),
     "figures": ("plots", "combination_plots", "coupling_plots", "accuracy_plots", "motion_plots", "motor_plots", "glossary", "schematic"),
     "case": ("case", "sections"),
     "top": ("report", "review", "publish", "__main__", "__init__", "resources"),

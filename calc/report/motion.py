@@ -13,7 +13,7 @@ from .latex import latex_escape, signed, step_block, table
 NAME = "motion"
 
 #: The field of :class:`calc.mechanism.Mechanism` of each of its quantities' keys, where it differs.
-FIELDS = {"screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia",
+FIELDS = {"inertia": "given_inertia", "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia",
           "pitch_diameter": "diameter", "pulley_diameter": "diameter"}
 
 
@@ -27,7 +27,8 @@ def input_rows(report) -> list[list[str]]:
         return []
     k = m.mechanism
     quantities = [key.name for key in keys_of(k.type) if key.unit or key.kind == "dimensionless"]
-    return [input_row(f"mechanism.{key}", Q_(getattr(k, FIELDS.get(key, key)))) for key in quantities]
+    given = {key: getattr(k, FIELDS.get(key, key)) for key in quantities}
+    return [input_row(f"mechanism.{key}", Q_(q)) for key, q in given.items() if q is not None]
 
 
 def inputs(report) -> list[str]:

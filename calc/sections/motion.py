@@ -14,6 +14,7 @@ from ..catalog import Column
 from ..cycle import PHASES, SampledCycle
 from ..errors import CalcError
 from ..measurement import measurement_path, read_measurement
+from ..inertia import FORMULAS, SHAPES, Body
 from ..mechanism import TYPES, Mechanism, phi_2
 from ..motion import Move, Samples, alpha_2max, omega_2max, record_samples, sample
 from ..profile import Profile, segments
@@ -25,10 +26,26 @@ ORDER = 20
 #: Per linear type: the key of its radius (a lead or a diameter) and of its own inertia.
 OWN_KEYS = {"ball-screw": ("lead", "screw_inertia"), "rack-pinion": ("pitch_diameter", "pinion_inertia"), "belt": ("pulley_diameter", "pulley_inertia")}
 _LINEAR = tuple(OWN_KEYS)
+#: The keys of a body of the load ([[mechanism.body]], :class:`calc.inertia.Body`): the dimension
+#: each key gives, by its formula name.
+BODY_KEYS = (
+    Key("shape", "choice", "cylinder | hollow-cylinder | plate"),
+    Key("diameter", "length", "outer diameter (a cylinder)", "D", unit="mm"),
+    Key("inner_diameter", "length", "inner diameter (a hollow cylinder)", "d", unit="mm"),
+    Key("length", "length", "length along the axis of rotation (a plate's thickness)", "L", unit="mm"),
+    Key("width", "length", "side of a plate across the axis", "a", unit="mm"),
+    Key("depth", "length", "other side of a plate across the axis", "b", unit="mm"),
+    Key("mass", "mass", "mass of the body (or its density)", "m", unit="kg"),
+    Key("density", "density", "density of its material (or its mass)", "rho", unit="kg/m**3"),
+    Key("offset", "length", "distance of its own axis from the axis of rotation (the parallel-axis term)", "e", "0 mm", "mm"),
+)
+BODY_DIMENSIONS = {"diameter": "D", "inner_diameter": "d", "length": "L", "width": "a", "depth": "b"}
 MECHANISM = Declared("mechanism", (
     Key("type", "choice", "rotary | ball-screw | rack-pinion | belt; the type says which keys below it takes"),
     Key("holding_brake", "flag", "a brake holds the load in the dwells (no torque there)", default=False),
-    Key("inertia", "inertia", "inertia of the load at the gearbox output", "J_L", unit="kg*cm**2", only=("rotary",)),
+    Key("inertia", "inertia", "inertia of the load at the gearbox output (with bodies: besides them)", "J_L", unit="kg*cm**2", only=("rotary",)),
+    Key("body", "tables", "bodies of the load whose inertia the geometry gives, added to inertia ([[mechanism.body]])",
+        only=("rotary",), keys=BODY_KEYS),
     Key("friction_torque", "torque", "friction torque of the table, against the motion while it moves", "T_f", "0 N*m", "N*m", ("rotary",)),
     Key("process_torque", "torque", "process torque, against the motion while it moves", "T_p", "0 N*m", "N*m", ("rotary",)),
     Key("mass", "mass", "moved mass", "m", unit="kg", only=_LINEAR),
@@ -133,8 +150,11 @@ def read_mechanism(top: Table) -> Mechanism | None:
     if not isinstance(brake, bool):
         raise CalcError(f"{t.where('holding_brake')}: expected true or false, found {brake!r}")
     if type_ == "rotary":
+        bodies = tuple(read_body(b) for b in t.tables("body", BODY_KEYS))
+        given = t.positive("inertia", required=not bodies)
+        inertia = sum((b.inertia for b in bodies), Q_(0.0, "kg*cm**2") if given is None else given.to("kg*cm**2"))
         return Mechanism(
-            type_, holding_brake=brake, inertia=t.positive("inertia", required=True),
+            type_, holding_brake=brake, inertia=inertia, bodies=bodies, given_inertia=given,
             friction_torque=nonnegative(t, "friction_torque"), process_torque=nonnegative(t, "process_torque"),
         )
     eta = t.positive("eta", required=True, what="an efficiency")
@@ -148,6 +168,26 @@ def read_mechanism(top: Table) -> Mechanism | None:
         counterweight=nonnegative(t, "counterweight"), drag_torque=nonnegative(t, "drag_torque"),
         **({"lead": size} if type_ == "ball-screw" else {"diameter": size}),
     )
+
+
+def read_body(t: Table) -> Body:
+    """One ``[[mechanism.body]]``: its shape, the dimensions the shape takes (others refused), its
+    mass or its density (one of them), and its offset."""
+    shape = t.text("shape", required=True)
+    if shape not in SHAPES:
+        raise CalcError(f"{t.where('shape')}: expected one of {', '.join(SHAPES)}, found {shape!r}")
+    needed = FORMULAS[shape][2]
+    dimensions = {}
+    for key, name in BODY_DIMENSIONS.items():
+        if name in needed:
+            dimensions[name] = t.positive(key, required=True)
+        elif t.has(key):
+            raise CalcError(f"{t.where(key)}: a {shape} takes {', '.join(k for k, n in BODY_DIMENSIONS.items() if n in needed)}, not {key}")
+    if shape == "hollow-cylinder" and not dimensions["d"] < dimensions["D"]:
+        raise CalcError(f"{t.where('inner_diameter')}: expected an inner diameter below the outer {t.data['diameter']!r}, found {t.data['inner_diameter']!r}")
+    if t.has("mass") == t.has("density"):
+        raise CalcError(f"{t.where('mass')}: give the body's mass or its material's density, one of them, found {'both' if t.has('mass') else 'neither'}")
+    return Body(shape, dimensions, mass=t.positive("mass"), density=t.positive("density"), offset=nonnegative(t, "offset"))
 
 
 def read_move(t: Table, mechanism: Mechanism):
@@ -320,6 +360,8 @@ def motion_steps(m: Motion) -> list:
     out = []
     if k is not None and k.linear:
         out += [("Transmission radius", k.radius_step()), ("Load inertia at the gearbox output", k.load_inertia_step())]
+    for n, body in enumerate(() if k is None else k.bodies, start=1):
+        out += [(f"Body {n} ({body.shape}): {step.formula.result.description}", step) for step in body.steps()]
     for n, (move, given) in enumerate(zip(m.moves, m.distances), start=1):
         if move.dwell:
             continue
