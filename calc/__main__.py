@@ -31,6 +31,10 @@ def main(argv=None) -> int:
     ra = sub.add_parser("ratios", help="evaluate a design case at every ratio of its gearbox catalog and pick one")
     ra.add_argument("case", help="the design-case TOML file")
     ra.add_argument("--json", action="store_true", help="print the results as JSON")
+    co = sub.add_parser("combinations", help="every motor of the case's motor catalog with every gearbox at every ratio: the feasible pairs and the pick")
+    co.add_argument("case", help="the design-case TOML file (with [motor] catalog and [gearbox] catalog)")
+    co.add_argument("--json", action="store_true", help="print the results as JSON")
+    co.add_argument("--figure", metavar="FILE", help="also draw the motors against the ratios (PDF, PNG or SVG, by the file's suffix)")
     rp = sub.add_parser("report", help="build the PDF calc report of one or more design cases")
     rp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one PDF each")
     rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
@@ -41,7 +45,7 @@ def main(argv=None) -> int:
     cp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one column each")
     cp.add_argument("--json", action="store_true", help="print the table as JSON")
     cp.add_argument("--pdf", help="also write the table and a comparison figure as a PDF file")
-    for p in (ev, ra, rp):
+    for p in (ev, ra, co, rp):
         p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
     # Nothing but the results and the one-line error reach the terminal: numpy's floating-point
@@ -66,7 +70,15 @@ def _run(args) -> int:
 
             print(compare_cases(args.cases, args.json, args.pdf))
             return 0
-        if args.command == "ratios":
+        if args.command == "combinations":
+            from .sections.pairs import search_pairs
+
+            results = search_pairs(read_case(args.case))
+            text = json.dumps(results.to_json(), indent=2, ensure_ascii=False, allow_nan=False) if args.json else results.summary()
+            passes = results.verdict().passes
+            if args.figure:
+                results.figure().savefig(args.figure)
+        elif args.command == "ratios":
             from .sections.ratios import search
 
             results = search(read_case(args.case))

@@ -1,0 +1,160 @@
+"""Every motor of a case's motor catalog with every gearbox of its gearbox catalog, at every ratio
+(``python -m calc combinations CASE``): the feasible pairs and the one to pick by
+:data:`calc.combinations.RULE`, from the cycle's moments (:mod:`calc.combinations`: exact, with no
+pass over the samples per pair). Not a section of the evaluation: its own command, with the same
+exit status rules.
+
+What a pair must pass: the gearbox's own governing checks at its ratio (all of
+:func:`calc.gearbox.select_gearbox` but those that need the motor), its ``T_2B`` against the
+motor's peak through it (E4, in S5), the motor's peak torque ``M_max``, its RMS torque ``M_N``, its
+top speed and the inertia ratio (E6; ``[motor] max_inertia_ratio``). The motor's peak is screened
+against ``M_max`` at every speed: the speed-torque characteristic (:mod:`calc.motor_ratings`) and
+the emergency stop are checked when the case is evaluated with the pair it picks.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from ..case import Case
+from ..catalog import display_path
+from ..combinations import RULE, CycleMoments, search
+from ..errors import CalcError
+from ..gearbox import select_gearbox, shock_factor
+from ..profile import Z_h, duty
+from ..units import sig
+from . import drive
+from .common import Verdict
+from .gearbox import catalogs, selection_inputs
+from .motor import output_load
+
+
+@dataclass(frozen=True)
+class Pick:
+    """The pair picked, as the outputs print it."""
+
+    motor: str
+    gearbox: str
+    ratio: float
+    peak_torque: float  # N·m at the motor
+    rms_torque: float
+    utilization: float
+
+
+@dataclass
+class PairSearch:
+    """The pairs of a case: the gearbox rows (all ratios, no partial row) and the motors (no
+    partial row), their arrays (gearbox rows × motors) and the pick."""
+
+    case: Case
+    gearbox_parts: np.ndarray
+    ratios: np.ndarray  # of the gearbox rows
+    motor_parts: np.ndarray
+    motor_rated: np.ndarray  # M_N, N·m: the motors' order for the figure
+    result: object  # calc.combinations.Combinations
+    notes: list
+
+    @cached_property
+    def pick(self) -> Pick | None:
+        r = self.result
+        if r.pick is None:
+            return None
+        g, m = r.pick
+        return Pick(str(self.motor_parts[m]), str(self.gearbox_parts[g]), float(self.ratios[g]), float(r.peak[g, m]),
+                    float(r.rms[g, m]), float(r.utilization[g, m]))
+
+    @property
+    def feasible_count(self) -> int:
+        return int(self.result.feasible.sum())
+
+    def verdict(self) -> Verdict:
+        if self.pick is not None:
+            return Verdict(True)
+        return Verdict(False, [f"No motor of the catalog works with any gearbox of the catalog at any ratio "
+                               f"({self.result.feasible.size} pairs checked)"])
+
+    def to_json(self) -> dict:
+        p = self.pick
+        return {
+            "title": self.case.title,
+            "case": display_path(self.case.path),
+            "rule": RULE,
+            "pairs": int(self.result.feasible.size),
+            "feasible": self.feasible_count,
+            "gearboxes": int(len(self.gearbox_parts)),
+            "motors": int(len(self.motor_parts)),
+            "ratios": sorted({float(r) for r in self.ratios}),
+            "pick": None if p is None else {
+                "motor": p.motor, "gearbox": p.gearbox, "ratio": p.ratio, "peak_torque": {"value": p.peak_torque, "unit": "N*m"},
+                "rms_torque": {"value": p.rms_torque, "unit": "N*m"}, "utilization": p.utilization,
+            },
+            "notes": list(self.notes),
+            "verdict": self.verdict().to_json(),
+        }
+
+    def summary(self) -> str:
+        title = f"{self.case.title}: motor x gearbox x ratio"
+        lines = [title, "=" * len(title),
+                 f"{self.result.feasible.size} pairs ({len(self.motor_parts)} motors x {len(self.gearbox_parts)} gearbox rows at "
+                 f"{len(set(self.ratios.tolist()))} ratios), {self.feasible_count} feasible.", f"Rule: {RULE}."]
+        p = self.pick
+        if p is None:
+            lines.append(self.verdict().reasons[0])
+        else:
+            lines.append(f"Pick: motor {p.motor} with gearbox {p.gearbox} (i = {p.ratio:g}): motor peak {sig(p.peak_torque)} N·m, "
+                         f"RMS {sig(p.rms_torque)} N·m, highest utilization {p.utilization:.2f}.")
+            lines.append(f"Check it in full: [motor] part = \"{p.motor}\", [gearbox] part = \"{p.gearbox}\", then python -m calc evaluate.")
+        return "\n".join(lines + [f"Note: {n}" for n in self.notes])
+
+    def figure(self):
+        """The motors (smallest rated torque first) against the ratios: :func:`calc.combination_plots.combinations_figure`."""
+        from ..combination_plots import combinations_figure
+
+        order = np.argsort(self.motor_rated, kind="stable")
+        r = self.result
+        pick = None if r.pick is None else (r.pick[0], int(np.flatnonzero(order == r.pick[1])[0]))
+        return combinations_figure(r.utilization[:, order], r.feasible[:, order], sorted(set(self.ratios.tolist())),
+                                   [str(p) for p in self.motor_parts[order]], pick, ratio_of_rows=self.ratios)
+
+
+def search_pairs(case: Case) -> PairSearch:
+    """Every (gearbox row, motor) pair of the case's catalogs against its cycle."""
+    if case.motor_catalog is None:
+        raise CalcError(f"{case.path}: motor.catalog: the search of motors and gearboxes needs a motor catalog ([motor] catalog = \"motors\"), found none")
+    if case.gearbox_catalog is None:
+        raise CalcError(f"{case.path}: gearbox: the search of motors and gearboxes needs a [gearbox] table (its catalog gives the gearboxes), found none")
+    gear, hubs = catalogs(case)
+    gear = gear.rows(~gear.partial)
+    inputs = {**selection_inputs(case), "motor_peak_torque": None, "motor_inertia": None}
+    sel = select_gearbox(case.profile, gear, hubs=hubs, **inputs)
+    d = duty(case.profile)
+    f_s = float(shock_factor(Z_h(t_cycle=case.profile.t_cycle), inputs["shock_factors"]))
+    i, eta = gear["ratio"].m_as(""), gear["eta"].m_as("")
+    # T_2max = T_1B · i · f_s · η <= T_2B (E4): the highest motor peak each row takes, in S5
+    peak_limit = gear["T_2B"].m_as("N*m") / (i * f_s * eta) if d.mode == "S5" else np.full(len(gear), np.inf)
+    J_L = case.load_inertia
+    motors = drive.motor_catalog(case)
+    motors = motors.rows(~motors.partial)
+    out = output_load(case)
+    alpha = np.zeros(len(out.dt)) if out.alpha_2 is None else out.alpha_2.m_as("rad/s**2")
+    moments = CycleMoments.of(out.dt.m_as("s"), out.torque.m_as("N*m"), out.speed.m_as("rad/s"), alpha)
+    J_1 = np.nan_to_num(sel.J_1.m_as("kg*m**2"))
+    notes = [] if out.sampled else ["the load cycle is typed: its accelerations are not known, so the rotor term is left out"]
+    if np.isnan(sel.J_1.magnitude).any():
+        notes.append("a gearbox row without J_1 is counted with none")
+    if J_L is None:
+        notes.append("the case gives no load inertia: the inertia ratio is counted with none")
+    if case.sections.get("coupling", {}).get("side") == "input":
+        notes.append("the motor-side coupling's inertia is not counted here (evaluate counts it)")
+    result = search(
+        moments, float(out.n_2max.m_as("rad/s")),
+        {"i": i, "eta": eta, "J_1": J_1, "passes": sel.passes.astype(float), "peak_limit": peak_limit,
+         "size": gear["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m"), "J_L": 0.0 if J_L is None else float(J_L.m_as("kg*m**2"))},
+        {"J": motors["J"].m_as("kg*m**2"), "rated_torque": motors["M_N"].m_as("N*m"), "peak_torque": motors["M_max"].m_as("N*m"),
+         "max_speed": motors["n_max"].m_as("rad/s")},
+        case.motor_max_inertia_ratio[0],
+    )
+    return PairSearch(case, gear.parts, i, motors.parts, motors["M_N"].m_as("N*m"), result, notes + sel.notes)
