@@ -60,3 +60,12 @@ def test_the_search_needs_a_motor_catalog(capsys):
     assert main(["combinations", str(EXAMPLE)]) == 2
     err = capsys.readouterr().err
     assert "motor.catalog: the search of motors and gearboxes needs a motor catalog ([motor] catalog = \"motors\"), found none" in err
+
+
+def test_the_search_needs_a_gearbox_catalog(write_case, capsys):
+    from calc.__main__ import main
+
+    from .test_motor_ratings import DIRECT_DRIVE
+
+    assert main(["combinations", str(write_case(DIRECT_DRIVE.format(motor=""), "dd.toml"))]) == 2
+    assert "gearbox: the search of motors and gearboxes needs a [gearbox] table (its catalog gives the gearboxes), found none" in capsys.readouterr().err
