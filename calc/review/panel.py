@@ -376,8 +376,8 @@ class DesignReview:
         if drawn is not None:
             case, report = drawn
             torque_unit = "lbf*in" if self.units.value == "inch-pound" else "N*m"
-            sections = report.evaluated.sections
-            self.load_cycle.value = load_cycle_svg(case.profile, sections["profile"].shown, torque_unit)
+            sections = {} if report.evaluated is None else report.evaluated.sections  # None: the case cannot be evaluated
+            self.load_cycle.value = load_cycle_svg(case.profile, sections["profile"].shown if sections else None, torque_unit)
             self.load_cycle.layout.display = None
             accuracy = sections.get("accuracy")
             if accuracy is not None:

@@ -6,6 +6,7 @@ and cut into the seed's segments, which the duty section uses as if they were ty
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -325,7 +326,6 @@ class MotionResult:
     mechanism: str | None
     source: str  # "move" or "drive_record"
     samples: int
-    steps: list  # (title, calc.formula.Step), as computed here
 
     def to_json(self, candidates: int | None = None) -> dict:
         return {
@@ -352,6 +352,12 @@ class MotionResult:
     def verdict(self):
         """The motion has no checks of its own."""
         return None
+
+    @cached_property
+    def steps(self) -> list:
+        """(title, calc.formula.Step) of how the moves give the output's motion and torque, computed
+        here on first use (the review's changes need none of them)."""
+        return motion_steps(self.motion)
 
 
 def motion_steps(m: Motion) -> list:
@@ -394,4 +400,4 @@ def evaluate(case: Case) -> MotionResult:
     return MotionResult(
         m, segments, Value.of(m.peak_speed, "rpm", "motion.peak_speed"), Value.of(m.peak_acceleration, "rad/s**2", "motion.peak_acceleration"),
         None if m.J_L is None else Value.of(m.J_L, "kg*cm**2", "motion.J_L"), None if m.mechanism is None else m.mechanism.type,
-        "drive_record" if m.record is not None else "move", int(len(m.cycle.dt)), motion_steps(m))
+        "drive_record" if m.record is not None else "move", int(len(m.cycle.dt)))

@@ -7,7 +7,8 @@ motor's side")."""
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass, field
+import functools
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -90,12 +91,10 @@ class MotorResult:
     checks: list  # CheckArray of one row each
     notes: list
     output: OutputLoad | None = None  # the load cycle at the gearbox output the torques are of
+    J_motor: object = None  # the rotor's inertia the torques count (None: none)
     selection: MotorSelection | None = None  # the catalog motors ranked ([motor] catalog or part)
-    phases: list = field(default_factory=list)  # calc.motor.Phase of each segment of the cycle, at the motor
-    energy: Energy | None = None  # its power and the energy given back per cycle
-    #: (title, calc.formula.Step, note or None) of the motor torque at the driving and the driven-back
-    #: peak and of its RMS, as computed here; the RMS step holds every sample
-    steps: list = field(default_factory=list)
+    #: each sample's segment number and each segment's phase name (the motion's segments, or the typed ones)
+    segments: tuple | None = None
 
     @property
     def row_checks(self) -> list:
@@ -106,6 +105,31 @@ class MotorResult:
         return [c.at(0) for c in self.checks]
 
     ranking = RANKING
+
+    @functools.cached_property
+    def phases(self) -> list:
+        """The cycle at the motor, segment by segment (:class:`calc.motor.Phase`), for the motor
+        whose torques ``load`` holds; computed on first use."""
+        if self.load is None or self.segments is None:
+            return []
+        return phases(*self.segments, *self._at_motor)
+
+    @functools.cached_property
+    def energy(self) -> Energy | None:
+        """Its power and the energy it gives back per cycle (:func:`calc.motor.energy`)."""
+        return None if self.load is None else energy(*self._at_motor)
+
+    @property
+    def _at_motor(self) -> tuple:
+        """Durations [s], motor speeds [rad/s] and motor torques [N·m] of the samples."""
+        out = self.output
+        return out.dt.m_as("s"), (out.speed * self.i).m_as("rad/s"), self.load.T_1[0].m_as("N*m")
+
+    @functools.cached_property
+    def steps(self) -> list:
+        """(title, calc.formula.Step, note or None) of the motor torque at the driving and the
+        driven-back peak and of its RMS (:func:`motor_steps`), computed here on first use."""
+        return [] if self.load is None else motor_steps(self.output, self.load, self.i, self.eta, self.J_motor, self.J_1)
 
     @property
     def through(self) -> str:
@@ -262,9 +286,8 @@ def evaluate(case: Case) -> MotorResult:
     for key, what in (("peak_torque", "peak"), ("rated_torque", "RMS"), ("max_speed", "speed")):
         if getattr(case, f"motor_{key}") is None:
             notes.append(f"the motor's {what} is not checked: the case gives no motor.{key}")
-    steps = [] if load is None else motor_steps(out, load, t.i, t.eta, case.motor_inertia, J_1)
-    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, checks, notes, output=out, steps=steps,
-                       **({} if load is None else at_the_motor(case, out, t.i, load)))
+    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, checks, notes, output=out, J_motor=case.motor_inertia,
+                       segments=segments_of(case))
 
 
 #: Rounds of choosing the motor and the gearbox in turn before the choice must have settled.
@@ -313,21 +336,17 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     sel = select_motors(cat, cycle, case.motor_dc_link, limit, where, float(case.profile.t_cycle.m_as("s")))
     best = int(sel.order[0])
     load = MotorLoad(T_1[best:best + 1], np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
-    steps = motor_steps(out, load, t.i, t.eta, J[best], J_1)
-    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out, steps=steps, selection=sel,
-                       **at_the_motor(case, out, t.i, load))
+    return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out, J_motor=J[best], selection=sel,
+                       segments=segments_of(case))
 
 
-def at_the_motor(case: Case, out: OutputLoad, i, load: MotorLoad) -> dict:
-    """The cycle at the motor, segment by segment (the motion's segments, or the typed ones), and
-    its power and energy, for the motor whose torques ``load`` holds (one row)."""
-    speed, dt, T = (out.speed * i).m_as("rad/s"), out.dt.m_as("s"), load.T_1[0].m_as("N*m")
+def segments_of(case: Case) -> tuple:
+    """Each sample's segment number and each segment's phase name: the motion's segments, or the
+    typed segments one sample each."""
     if case.motion is not None:
         s = case.motion.samples
-        segment, names = s.segment, [PHASES[p] for p in s.segment_phases]
-    else:
-        segment, names = np.arange(len(dt)), list(case.profile.phases)
-    return {"phases": phases(segment, names, dt, speed, T), "energy": energy(dt, speed, T)}
+        return s.segment, [PHASES[p] for p in s.segment_phases]
+    return np.arange(len(case.profile.phases)), list(case.profile.phases)
 
 
 def motor_steps(out: OutputLoad, load: MotorLoad, i, eta, J_motor, J_1) -> list:
