@@ -233,3 +233,13 @@ def test_a_motor_and_gearbox_that_do_not_settle_are_an_error(write_case, capsys,
     path = write_case(DIRECT_DRIVE.format(motor=""), "dd.toml")
     assert main(["evaluate", str(path)]) == 2
     assert "motor.catalog: the motor and the gearbox chosen in turn do not settle (SGM7J-02A); name the motor with motor.part" in capsys.readouterr().err
+
+
+def test_the_shipped_direct_drive_chooses_its_motor_with_every_check_made():
+    from calc.case import read_case
+    from calc.sections import evaluate
+
+    results = evaluate(read_case(DERIVED_EXAMPLE.parent / "ball-screw-direct.toml"))
+    m = results["motor"]
+    assert m.part is None and m.selection.selected == "SGM7J-02A" and results.verdict.passes is True
+    assert all(k.passes is True for k in m.row_checks) and {k.name for k in m.row_checks} == {"peak", "RMS", "n_N", "n_max", "lambda"}
