@@ -695,3 +695,21 @@ def test_compare_of_a_case_that_cannot_be_evaluated_names_it(tmp_path):
                    encoding="utf-8")
     with pytest.raises(CalcError, match="gearbox.catalog: the catalog 'nosuch' does not exist"):
         compare_cases([str(EXAMPLE), str(bad)])
+
+
+def test_a_forced_catalog_motor_is_checked_alone_and_saved_by_name():
+    from .conftest import ROOT
+
+    panel = DesignReview(ROOT / "cases" / "ball-screw-direct.toml")
+    spec = panel._spec("motor.part")
+    assert panel.controls["motor.part"].value == "the selection's" and "SGM7J-04A" in spec.options
+    assert "AM8031-wCyz (230 V AC)" not in spec.options  # a partial row is never checked
+    assert "Motor <b>SGM7J-02A</b>" in panel.results.value
+    panel.controls["motor.part"].value = "SGM7J-04A"
+    panel.settled()
+    # SGM7J-04A alone: the catalog's next size up (M_N 1.27 N·m, J 0.486 kg·cm²): λ = 2.213 / 0.486 = 4.55.
+    assert "Motor <b>SGM7J-04A</b>" in panel.results.value and "PASS" in panel.results.value and ">4.55<" in panel.results.value
+    assert 'part = "SGM7J-04A"' in panel.case_text() and "motor.part (not given) -> SGM7J-04A" in panel.case_text()
+    panel.controls["motor.part"].value = "the selection's"
+    panel.settled()
+    assert "Motor <b>SGM7J-02A</b>" in panel.results.value and panel.changes() == {}

@@ -28,6 +28,7 @@ from urllib.parse import quote
 from ..case import Case, read_case
 from ..errors import CalcError
 from ..publish import summary_rows
+from ..sections import drive
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
@@ -63,6 +64,15 @@ def forced_part_spec(case: Case) -> InputSpec:
     parts = [str(p) for p, r, partial in zip(catalog.parts, catalog["ratio"].m_as(""), catalog.partial) if r == ratio and not partial]
     value = case.gearbox_part or SELECTION
     return InputSpec("gearbox.part", "gearbox part forced", "", 0, 0, 0, value, tuple(dict.fromkeys([SELECTION, *parts, value])))
+
+
+def forced_motor_spec(case: Case) -> InputSpec:
+    """The motor the reviewer forces (``[motor] part``, checked alone): a choice among the motor
+    catalog's rows (not the partial ones), or the catalog's choice."""
+    catalog = drive.motor_catalog(case)
+    parts = [str(p) for p, partial in zip(catalog.parts, catalog.partial) if not partial]
+    value = case.motor_part or SELECTION
+    return InputSpec("motor.part", "motor part forced", "", 0, 0, 0, value, tuple(dict.fromkeys([SELECTION, *parts, value])))
 
 
 #: A number as a reviewer types it: digits with a point or a decimal comma (``0,6``), a sign, an exponent.
@@ -216,7 +226,8 @@ class DesignReview:
             self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(_without_folder(str(exc), self.case_file.value))}'
             return
         self.case, self.message.value = case, self._note
-        self.specs = input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
+        self.specs = (input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
+                      + ([forced_motor_spec(case)] if case.motor_catalog is not None else []))
         self.controls, self.fields, self._messages, self._labels, self.refused = {}, {}, {}, {}, {}
         old = self.controls_box.children
         self.controls_box.children = [self._row(spec) for spec in self.specs]
@@ -324,9 +335,14 @@ class DesignReview:
         7.8269 N·m stays, and stays derived)."""
         changes = self.changes()
         forced = changes.pop("gearbox.part", (None, ""))[0]
+        motor = changes.pop("motor.part", (None, ""))[0]
         case = with_inputs(self.case, {key: Q_(v, unit) for key, (v, unit) in changes.items()})
         # A part forced is checked alone (the file's part, where it names one, is the unchanged value).
-        return case if forced is None else dataclasses.replace(case, gearbox_part=None if forced == SELECTION else forced)
+        if forced is not None:
+            case = dataclasses.replace(case, gearbox_part=None if forced == SELECTION else forced)
+        if motor is not None:
+            case = drive.with_motor_part(case, None if motor == SELECTION else motor, f"{case.path}: motor.part")
+        return case
 
     def _draw(self):
         """The results text and the changed case (None where the inputs cannot make one)."""

@@ -3,6 +3,8 @@ and accuracy sections share. They have no results of their own."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from ..case import Case, Declared, Key, Table, once
@@ -98,12 +100,27 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
     if case.motor_part is not None:
         cat = motor_catalog(case)
         row = cat.usable_index(case.motor_part, motor.where("part"))
-        case.motor_peak_torque, case.motor_rated_torque = cat["M_max"][row], cat["M_N"][row]
-        case.motor_max_speed, case.motor_inertia = cat["n_max"][row], cat["J"][row]
+        for field, value in motor_ratings(cat, row).items():
+            setattr(case, field, value)
         missing = [c for c in ELECTRICAL if np.isnan(cat[c][row].magnitude)]
         if case.motor_dc_link is not None and missing:
             raise CalcError(f"{motor.where('dc_link_voltage')}: the voltage limit needs the electrical data of {case.motor_part}, "
                             f"but {cat.catalog_of(row)} (row {cat.lines[row]}) gives no {', '.join(missing)}")
+
+
+def motor_ratings(cat, row: int) -> dict:
+    """The case's fields a catalog motor gives (its row of :data:`calc.motor_ratings.SCHEMA`): its
+    maximum torque as T_1B, its rated torque, top speed and rotor inertia."""
+    return {"motor_peak_torque": cat["M_max"][row], "motor_rated_torque": cat["M_N"][row],
+            "motor_max_speed": cat["n_max"][row], "motor_inertia": cat["J"][row]}
+
+
+def with_motor_part(case: Case, part: str | None, where: str) -> Case:
+    """A copy of ``case`` checking the motor ``part`` of its catalog (None: the catalog's choice)."""
+    if part is None:
+        return dataclasses.replace(case, motor_part=None, **dict.fromkeys(("motor_peak_torque", "motor_rated_torque", "motor_max_speed", "motor_inertia")))
+    cat = motor_catalog(case)
+    return dataclasses.replace(case, motor_part=part, **motor_ratings(cat, cat.usable_index(part, where)))
 
 
 def motor_catalog(case: Case):

@@ -310,8 +310,7 @@ def with_chosen_motor(case: Case) -> Case:
             return case
         chosen = pick
         seen.append(str(cat.parts[pick]))
-        case = dataclasses.replace(case, motor_peak_torque=cat["M_max"][pick], motor_rated_torque=cat["M_N"][pick],
-                                   motor_max_speed=cat["n_max"][pick], motor_inertia=cat["J"][pick])
+        case = dataclasses.replace(case, **drive.motor_ratings(cat, pick))
     raise CalcError(f"{case.path}: motor.catalog: the motor and the gearbox chosen in turn do not settle "
                     f"({' -> '.join(seen)}); name the motor with motor.part")
 
