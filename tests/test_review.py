@@ -412,7 +412,7 @@ def test_the_chooser_gives_each_verdict_and_links_a_built_report(tmp_path):
     from calc.review import serve
 
     panel = DesignReview(DERIVED_EXAMPLE, reports=tmp_path, report_link=lambda pdf: serve.report_address(pdf, tmp_path))
-    assert [label for label, _ in panel.case_file.options] == ["indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
+    assert [label for label, _ in panel.case_file.options] == ["ball-screw-direct.toml · PASS", "indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
     assert "calc report" not in panel.results.value  # not built yet
     (tmp_path / "indexing-table.pdf").write_bytes(b"%PDF-1.4\n")
     panel.reset.click()

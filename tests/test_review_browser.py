@@ -118,7 +118,7 @@ def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
     assert impossible.startswith("input error") and "found 0.3 s + 0.3 s > 0.5 s" in impossible and "Governing checks" not in impossible
     assert seen["move[1].accel_time = 0.15"] == first
     # The chooser gives each case's verdict; the built report is linked, and served as a PDF.
-    assert [c.replace("\xa0", " ") for c in visit.choices] == ["indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
+    assert [c.replace("\xa0", " ") for c in visit.choices] == ["ball-screw-direct.toml · PASS", "indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
     href, status, content_type, head = visit.report
     assert href == serve.report_address(tmp_path / "indexing-table.pdf", tmp_path)
     assert status == 200 and content_type == "application/pdf" and head == b"%PDF-"
