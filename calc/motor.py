@@ -30,6 +30,7 @@ import numpy as np
 from .checks import CheckArray
 from .cycle import SampledCycle
 from .formula import Formula, Symbol, segment_sum
+from .mechanism import RADIAN
 from .units import Q_, as_kind
 
 _i = Symbol("i", "i", "dimensionless", "", "ratio")
@@ -73,8 +74,7 @@ T_1rms = Formula(
 
 P_1 = Formula(
     Symbol("P_1", "P_{1}", "power", "W", "mechanical power at the motor shaft (negative: the load drives back, the drive brakes)"),
-    (Symbol("T_1", "T_{1}", "torque", "N*m", "motor torque"), Symbol("omega_1", r"\omega_{1}", "speed", "rpm", "motor speed"),
-     Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (E15)", value="1 rad")),
+    (Symbol("T_1", "T_{1}", "torque", "N*m", "motor torque"), Symbol("omega_1", r"\omega_{1}", "speed", "rpm", "motor speed"), RADIAN),
     lambda sp, T, w, rad: T * w / rad,
     "mechanics: power = torque · angular speed (E15)",
 )

@@ -41,6 +41,7 @@ import numpy as np
 from .catalog import Catalog, Column, Rule, Schema, no_less
 from .checks import CheckArray
 from .formula import Formula, Symbol
+from .mechanism import RADIAN
 from .selection import Candidate, Selection
 from .units import Q_, Value
 
@@ -89,7 +90,6 @@ SCHEMA = Schema(
 #: The columns the voltage limit needs besides the case's DC-link voltage.
 ELECTRICAL = ("k_T", "k_E", "R_ph", "L_ph", "poles")
 
-RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (E15)", value="1 rad")
 _n = Symbol("n", "n", "speed", "rpm", "motor speed")
 _M_max = Symbol("M_max", r"M_{\mathrm{max}}", "torque", "N*m", "maximum torque of the motor")
 _M_N = Symbol("M_N", r"M_{N}", "torque", "N*m", "rated torque of the motor")
