@@ -185,6 +185,7 @@ class Case:
     motor_part: str | None = None
     motor_max_inertia_ratio: tuple = (10.0, "the default")  # the limit of λ and where it comes from
     motor_dc_link: object = None
+    motor_curves: object = None  # Path of the motors' curves file
     output_load: object = None  # calc.gearbox.OutputLoad: forces on the gearbox output
     sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
     motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record

@@ -73,7 +73,7 @@ def torque_speed_figure(selection: MotorSelection, row: int):
     to_rpm = 60 / (2 * np.pi)
     n_max = float(cat["n_max"][row].m_as("rad/s"))
     grid = np.linspace(0.0, n_max, 200)
-    limit, forms = peak_limit(cat.rows(np.arange(len(cat)) == row), grid, selection.dc_link)
+    limit, forms = peak_limit(cat.rows(np.arange(len(cat)) == row), grid, selection.dc_link, selection.curves)
     fig = Figure(figsize=(7.5, 4.2), layout="constrained")
     ax = fig.subplots()
     ax.plot(grid * to_rpm, limit[0], color="tab:red", linewidth=1.6, label=f"peak torque ({forms[0]})")

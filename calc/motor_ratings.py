@@ -1,9 +1,12 @@
 """A servo motor against its ratings: the motor catalog, the speed-torque characteristic, and a
 load cycle at the motor checked against every catalog motor at once.
 
-The characteristic takes one of two forms, the first the data allow (each a reading, as the
+The characteristic takes one of three forms, the first the data allow (each a reading, as the
 errata are; ``docs/case-format.md``, "The motor chosen from a catalog"):
 
+* **Curves** digitised from the maker's chart (a curves file, :func:`read_curves`: per part its
+  ``peak`` and ``S1`` curves as points of speed and torque): straight between the points, no torque
+  beyond the last; the RMS is then checked against the S1 curve at the cycle's mean speed.
 * **Voltage limit**, where the catalog gives the electrical data (``k_T``, ``k_E``, ``R_ph``,
   ``L_ph``, ``poles``) and the case the drive's DC-link voltage ``U_DC``: a permanent-magnet
   synchronous motor under field-oriented control without field weakening (``i_d = 0``), in steady
@@ -25,7 +28,8 @@ errata are; ``docs/case-format.md``, "The motor chosen from a catalog"):
 
 The checks of a cycle (motor torque ``T_1`` and speed ``n_1`` per sample, durations ``t_k``): every
 sample under the peak characteristic at its speed; the RMS torque within the rated torque,
-``T_1rms <= M_N``, with the cycle's mean speed ``<= n_N``; the top speed
+``T_1rms <= M_N``, with the cycle's mean speed ``<= n_N`` (with an S1 curve: within the curve at
+the mean speed); the top speed
 ``<= n_max``; the load-to-motor inertia ratio within a limit. The RMS holds only while the cycle is
 short against the motor's thermal time constant ``T_th``: a cycle longer than a tenth of ``T_th``
 gets a note (the winding's temperature then swings within the cycle by a share of its rise of the
@@ -34,11 +38,14 @@ order of ``t_cycle / T_th``).
 
 from __future__ import annotations
 
+import csv
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
-from .catalog import Catalog, Column, Rule, Schema, no_less
+from .catalog import _FLOAT, _HEADER, Catalog, Column, Rule, Schema, _header_unit, no_less, note_file_read
+from .errors import CalcError
 from .checks import CheckArray
 from .formula import Formula, Symbol
 from .mechanism import RADIAN
@@ -123,6 +130,71 @@ T_V = Formula(
 )
 
 
+#: The curves a curves file may give per part.
+CURVES = ("peak", "S1")
+CURVE_COLUMNS = (Column("speed", "speed", "motor speed", positive=False), Column("torque", "torque", "torque on the curve", positive=False))
+
+
+@dataclass(frozen=True)
+class Curves:
+    """Speed-torque curves digitised from the makers' charts: per (part, curve) the points as
+    speeds [rad/s] and torques [N·m], speed ascending, and the file they come from."""
+
+    points: dict
+    path: Path
+
+    def of(self, part: str, curve: str):
+        return self.points.get((part, curve))
+
+
+def read_curves(path: Path, parts) -> Curves:
+    """A curves file: the columns ``part``, ``curve`` (``peak`` or ``S1``), ``speed`` and ``torque``
+    with their units in brackets, and ``source``; a curve's rows in ascending speed. An error names
+    the file, row and column: an unknown part (not in ``parts``, the catalog's), an unknown curve,
+    a speed not above the one before, a negative or malformed number, a missing source."""
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise CalcError(f"{path}: cannot read the curves file ({type(exc).__name__})") from None
+    rows = list(csv.reader(text.splitlines()))
+    if not rows:
+        raise CalcError(f"{path}: expected a header and rows of part, curve, speed [unit], torque [unit], source, found an empty file")
+    header = {}
+    for cell in rows[0]:
+        m = _HEADER.match(cell)
+        if m:
+            header[m.group(1)] = (len(header), m.group(2))
+    for name in ("part", "curve", "source", "speed", "torque"):
+        if name not in header:
+            raise CalcError(f"{path}, header: expected a column {name!r}, found {', '.join(header) or 'none'}")
+    factor = {c.name: Q_(1.0, _header_unit(path, c, header[c.name][1])).m_as("rad/s" if c.name == "speed" else "N*m") for c in CURVE_COLUMNS}
+    known = set(str(p) for p in parts)
+    points: dict = {}
+    for line, row in enumerate(rows[1:], start=2):
+        if not any(cell.strip() for cell in row):
+            continue
+        cell = {name: (row[k].strip() if k < len(row) else "") for name, (k, _) in header.items()}
+        where = f"{path}, row {line}"
+        if cell["part"] not in known:
+            raise CalcError(f"{where}, column part: {cell['part']!r} is no part of the motor catalog")
+        if cell["curve"] not in CURVES:
+            raise CalcError(f"{where}, column curve: expected one of {', '.join(CURVES)}, found {cell['curve']!r}")
+        if not cell["source"]:
+            raise CalcError(f"{where}, column source: expected the chart the points are read from, found an empty cell")
+        values = []
+        for name in ("speed", "torque"):
+            if not _FLOAT.match(cell[name]) or float(cell[name]) < 0:
+                raise CalcError(f"{where}, column {name}: expected a number of zero or more, found {cell[name]!r}")
+            values.append(float(cell[name]) * factor[name])
+        speeds, torques = points.setdefault((cell["part"], cell["curve"]), ([], []))
+        if speeds and not values[0] > speeds[-1]:
+            raise CalcError(f"{where}, column speed: expected a speed above the curve's one before ({cell['speed']}), the points in ascending speed")
+        speeds.append(values[0])
+        torques.append(values[1])
+    note_file_read(path, "Motor curves")
+    return Curves({key: (np.array(n), np.array(t)) for key, (n, t) in points.items()}, path)
+
+
 @dataclass(frozen=True)
 class Cycle:
     """A load cycle at the motor: per sample, the motor torque of each motor (rows × samples,
@@ -137,7 +209,7 @@ class Cycle:
     inertia_ratio_missing: str | None = None
 
 
-def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None) -> tuple[np.ndarray, list]:
+def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None, curves: Curves | None = None) -> tuple[np.ndarray, list]:
     """The peak torque of each catalog row at each speed (rows × speeds, N·m; ``speed`` in rad/s,
     magnitudes), and the form each row's came from (see the module)."""
     n = np.abs(np.asarray(speed, float))[None, :]
@@ -161,7 +233,23 @@ def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None) -> tuple[np.ndarra
             limit[rows] = np.minimum(limit[rows], VOLTAGE_CLEARANCE * volts)
             for r in rows:
                 forms[r] = "voltage limit"
+    if curves is not None:
+        for r, part in enumerate(cat.parts):
+            points = curves.of(str(part), "peak")
+            if points is not None:
+                limit[r] = np.interp(n[0], *points, right=0.0)
+                forms[r] = "curves"
     return limit, forms
+
+
+def s1_limit(cat: Catalog, speed: float, curves: Curves | None) -> np.ndarray:
+    """Each row's continuous torque at ``speed`` [rad/s] on its S1 curve; NaN without one."""
+    out = np.full(len(cat), np.nan)
+    for r, part in enumerate(cat.parts):
+        points = None if curves is None else curves.of(str(part), "S1")
+        if points is not None:
+            out[r] = np.interp(abs(speed), *points, right=0.0)
+    return out
 
 
 def mean_speed(speed: np.ndarray, dt: np.ndarray) -> float:
@@ -186,8 +274,10 @@ class MotorSelection(Selection):
     catalog: Catalog
     cycle: Cycle
     limit: np.ndarray  # peak torque of each row at each sample's speed (N·m)
-    forms: list  # per row: "ratings" or "voltage limit"
+    forms: list  # per row: "ratings", "voltage limit" or "curves"
     dc_link: object  # the drive's DC-link voltage (a quantity), None where the case gives none
+    s1: np.ndarray  # per row: its S1 curve at the mean speed (N·m), NaN without one
+    curves: Curves | None  # the curves file the case names, None without one
     mean_speed: float  # rad/s
     inertia_limit: float
     inertia_limit_from: str
@@ -199,19 +289,23 @@ class MotorSelection(Selection):
 
     candidate_type = MotorCandidate
 
+    def applies(self, check, row: int) -> bool:
+        """A row with an S1 curve is held to it at the mean speed, not to its rated speed."""
+        return check.name != "n_N" or np.isnan(self.s1[row])
+
     def row_fields(self, row: int) -> dict:
         lam = None if self.cycle.inertia_ratio is None else float(self.cycle.inertia_ratio[row])
         return dict(rated_torque=Value.of(self.catalog["M_N"][row], "N*m"), rotor_inertia=Value.of(self.catalog["J"][row], "kg*cm**2"),
                     form=self.forms[row], inertia_ratio=lam)
 
 
-def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, inertia_limit: float = INERTIA_RATIO_LIMIT,
+def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | None = None, inertia_limit: float = INERTIA_RATIO_LIMIT,
                   inertia_limit_from: str = "the default", t_cycle: float | None = None) -> MotorSelection:
     """Every row of ``cat`` (no partial row) against the cycle at the motor (:class:`Cycle`), its
     checks (module docstring) and the ranking (:data:`RANKING`); failing rows after the passing
     ones, closest to passing first."""
     rows = len(cat)
-    limit, forms = peak_limit(cat, cycle.speed, dc_link)
+    limit, forms = peak_limit(cat, cycle.speed, dc_link, curves)
     with np.errstate(invalid="ignore", divide="ignore"):
         ratio = np.abs(cycle.torque) / limit
     ratio = np.where(np.isnan(ratio), np.inf, ratio)  # a torque where no torque is available
@@ -220,20 +314,24 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, inertia_limit: float
     worst_torque = np.abs(cycle.torque[at, k])
     worst_limit = limit[at, k]
     n_mean = mean_speed(cycle.speed, cycle.dt)
+    s1 = s1_limit(cat, n_mean, curves)
+    on_curve = ~np.isnan(s1)
     top = float(np.max(np.abs(cycle.speed)))
     ones = np.ones(rows)
     checks = [
         CheckArray("peak", None, "|T_1| <= T_peak(n_1) at every sample", Q_(worst_torque, "N*m"), Q_(worst_limit, "N*m"), "N*m"),
-        CheckArray("RMS", None, "T_1rms <= M_N", Q_(cycle.rms, "N*m"), cat["M_N"], "N*m"),
+        CheckArray("RMS", None, "T_1rms <= M_N" if not on_curve.any() else "T_1rms <= T_S1(n_1mean), M_N without an S1 curve", Q_(cycle.rms, "N*m"),
+                   Q_(np.where(on_curve, s1, cat["M_N"].m_as("N*m")), "N*m"), "N*m"),
         CheckArray("n_N", None, "n_1mean <= n_N", Q_(n_mean * ones, "rad/s"), cat["n_N"], "rpm"),
         CheckArray("n_max", None, "n_1max <= n_max", Q_(top * ones, "rad/s"), cat["n_max"], "rpm"),
     ]
     if cycle.inertia_ratio is not None or cycle.inertia_ratio_missing is not None:
         checks.append(CheckArray("lambda", None, "λ <= λ_max", None if cycle.inertia_ratio is None else Q_(cycle.inertia_ratio, ""),
                                  Q_(inertia_limit * ones, ""), "", not_made=cycle.inertia_ratio_missing))
-    passes = np.logical_and.reduce([c.passes for c in checks if c.made])
+    passes = np.logical_and.reduce([c.passes | (on_curve if c.name == "n_N" else False) for c in checks if c.made])
     passes &= ~cat.partial
-    worst = np.max([np.where(np.isnan(c.utilization), np.inf if c.made else 0.0, c.utilization) for c in checks], axis=0)
+    worst = np.max([np.where(on_curve & (c.name == "n_N"), 0.0, np.where(np.isnan(c.utilization), np.inf if c.made else 0.0, c.utilization))
+                    for c in checks], axis=0)
     worst = np.where(cat.partial, np.inf, worst)
     keys = (worst, np.where(passes, cat["J"].m_as("kg*m**2"), 0.0), np.where(passes, cat["M_N"].m_as("N*m"), 0.0), ~passes)
     order = np.lexsort(keys)
@@ -247,4 +345,4 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, inertia_limit: float
                          "the RMS torque understates the winding's peak temperature")
     if cat.partial.any():
         notes.append(f"{int(cat.partial.sum())} partial rows of the motor catalog are never ranked (no rated or peak torque published)")
-    return MotorSelection(cat, cycle, limit, forms, dc_link, n_mean, inertia_limit, inertia_limit_from, checks, passes, worst, order, notes)
+    return MotorSelection(cat, cycle, limit, forms, dc_link, s1, curves, n_mean, inertia_limit, inertia_limit_from, checks, passes, worst, order, notes)

@@ -243,3 +243,62 @@ def test_the_shipped_direct_drive_chooses_its_motor_with_every_check_made():
     m = results["motor"]
     assert m.part is None and m.selection.selected == "SGM7J-02A" and results.verdict.passes is True
     assert all(k.passes is True for k in m.row_checks) and {k.name for k in m.row_checks} == {"peak", "RMS", "n_N", "n_max", "lambda"}
+
+
+CURVES = """part,curve,speed [rpm],torque [N*m],source
+SGM7J-02A,peak,0,2.23,a test chart
+SGM7J-02A,peak,3000,2.23,a test chart
+SGM7J-02A,peak,6000,1.0,a test chart
+SGM7J-02A,S1,0,0.637,a test chart
+SGM7J-02A,S1,6000,0.5,a test chart
+"""
+
+
+def test_a_motor_with_its_curves_is_checked_on_them_by_hand(write_case, capsys):
+    from calc.__main__ import main
+
+    write_case(CURVES, "curves.csv")
+    path = write_case(DIRECT_DRIVE.format(motor='part = "SGM7J-02A"\ncurves = "curves.csv"'), "dd.toml")
+    assert main(["evaluate", str(path), "--json"]) == 0
+    m = check_results(capsys.readouterr().out)["motor"]
+    c = m["candidates"][0]
+    assert c["part"] == "SGM7J-02A" and c["characteristic"] == "curves"
+    checks = {k["name"]: k for k in c["checks"]}
+    # The S1 curve at the mean speed of 1800 rpm: 0.637 − (0.637 − 0.5) · 1800 / 6000 = 0.5959 N·m,
+    # and the rated speed is no limit of a motor held to its S1 curve.
+    assert checks["RMS"]["rated"]["value"] == pytest.approx(0.5959, rel=1e-9) and "n_N" not in checks
+    # The peak curve at the top speed of 3600 rpm: 2.23 − 1.23 · 600 / 3000 = 1.984 N·m; the worst
+    # sample is at or below that speed, where the curve allows between 1.984 and 2.23 N·m.
+    assert 1.984 - 1e-9 <= checks["peak"]["rated"]["value"] <= 2.23
+
+
+@pytest.mark.parametrize("rows, message", [
+    ("SGM7J-99Z,peak,0,2,a chart", "row 2, column part: 'SGM7J-99Z' is no part of the motor catalog"),
+    ("SGM7J-02A,peak,3000,2,a chart\nSGM7J-02A,peak,1000,2,a chart", "row 3, column speed: expected a speed above the curve's one before (1000)"),
+    ("SGM7J-02A,peak,0,-1,a chart", "row 2, column torque: expected a number of zero or more, found '-1'"),
+    ("SGM7J-02A,intermittent,0,2,a chart", "row 2, column curve: expected one of peak, S1, found 'intermittent'"),
+])
+def test_a_bad_curves_file_gets_one_sentence(write_case, capsys, rows, message):
+    from calc.__main__ import main
+
+    write_case("part,curve,speed [rpm],torque [N*m],source\n" + rows + "\n", "curves.csv")
+    path = write_case(DIRECT_DRIVE.format(motor='curves = "curves.csv"'), "dd.toml")
+    assert main(["evaluate", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert message in err and len(err.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("content, message", [
+    (b"", "expected a header and rows of part, curve, speed [unit], torque [unit], source, found an empty file"),
+    (b"part,curve,speed [rpm],source\n", "header: expected a column 'torque', found part, curve, speed, source"),
+    (b"part,curve,speed [rpm],torque [N*m],source\nSGM7J-02A,peak,0,2,\n", "row 2, column source: expected the chart the points are read from"),
+    (b"part,curve,speed [rpm],torque [N*m],source\nSGM7J-02A,peak,0,2,\xff\n", "cannot read the curves file (UnicodeDecodeError)"),
+])
+def test_a_curves_file_that_cannot_be_read_is_named(write_case, tmp_path, capsys, content, message):
+    from calc.__main__ import main
+
+    (tmp_path / "curves.csv").write_bytes(content)
+    path = write_case(DIRECT_DRIVE.format(motor='curves = "curves.csv"'), "dd.toml")
+    assert main(["evaluate", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert message in err and len(err.strip().splitlines()) == 1

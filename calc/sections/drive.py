@@ -11,6 +11,7 @@ from ..case import Case, Declared, Key, Table, once
 from ..catalog import load_catalogs
 from ..errors import CalcError
 from ..fits import parse_bore
+from ..measurement import measurement_path
 from ..gearbox import OutputLoad
 from ..motor_ratings import ELECTRICAL, SCHEMA
 
@@ -25,6 +26,7 @@ MOTOR = Declared("motor", (
     Key("part", "text", "check this motor of the catalog (its ratings and inertia then hold for every section) instead of typed ratings"),
     Key("max_inertia_ratio", "dimensionless", "highest load-to-motor inertia ratio λ a catalog motor may have", "lambda_max", 10),
     Key("dc_link_voltage", "voltage", "DC-link voltage of the drive: with a catalog's electrical data, the voltage limit", "U_DC", unit="V"),
+    Key("curves", "file", "the catalog motors' peak and S1 curves read from the makers' charts: part, curve, speed [unit], torque [unit], source"),
 ), "the motor driving the gearbox")
 LOAD = Declared("load", (
     Key("inertia", "inertia", "load inertia at the output of the gearbox (left out where a [mechanism] gives it)", "J_L", unit="kg*cm**2"),
@@ -48,7 +50,7 @@ def read(top: Table, case: Case) -> None:
     if motor and (motor.has("catalog") or motor.has("part")):
         read_catalog_motor(motor, case)
     elif motor:
-        for key in ("max_inertia_ratio", "dc_link_voltage"):
+        for key in ("max_inertia_ratio", "dc_link_voltage", "curves"):
             if motor.has(key):
                 raise CalcError(f"{motor.where(key)}: a key of a catalog motor; give motor.catalog (or motor.part with it) as well")
         case.motor_peak_torque = motor.positive("peak_torque")
@@ -95,6 +97,8 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
     ratio = motor.positive("max_inertia_ratio", what="an inertia ratio")
     case.motor_max_inertia_ratio = (float(ratio.m_as("")), "motor.max_inertia_ratio" if motor.has("max_inertia_ratio") else "the default")
     case.motor_dc_link = motor.positive("dc_link_voltage")
+    if motor.has("curves"):
+        case.motor_curves = measurement_path(motor.data["curves"], case.folder, motor.where("curves"))
     if motor.has("shaft"):
         case.motor_shaft = parse_bore(motor.data["shaft"], motor.where("shaft"))
     if case.motor_part is not None:

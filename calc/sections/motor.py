@@ -20,7 +20,7 @@ from ..cycle import PHASES
 from ..motor import (
     T_1_back, T_1_drive, T_1rms, Energy, MotorLoad, OutputLoad, alpha_1, driven_back, energy, motor_checks, motor_load, motor_torque, phases,
 )
-from ..motor_ratings import RANKING, Cycle, MotorSelection, select_motors
+from ..motor_ratings import RANKING, Cycle, MotorSelection, read_curves, select_motors
 from ..units import Q_, fmt
 from . import coupling, drive, duty, gearbox
 from .common import Governing, Verdict, check_json, check_line, quantity, quantity_text, row_json, selection_governing, selection_verdict
@@ -332,7 +332,8 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     cycle = Cycle(T_1.m_as("N*m"), (out.speed * t.i).m_as("rad/s"), out.dt.m_as("s"), rms.m_as("N*m"), lam,
                   None if J_L is not None else "the inertia ratio needs the load's inertia (load.inertia or a [mechanism])")
     limit, where = case.motor_max_inertia_ratio
-    sel = select_motors(cat, cycle, case.motor_dc_link, limit, where, float(case.profile.t_cycle.m_as("s")))
+    curves = None if case.motor_curves is None else read_curves(case.motor_curves, drive.motor_catalog(case).parts)
+    sel = select_motors(cat, cycle, case.motor_dc_link, curves, limit, where, float(case.profile.t_cycle.m_as("s")))
     best = int(sel.order[0])
     load = MotorLoad(T_1[best:best + 1], np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
     return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out, J_motor=J[best], selection=sel,
