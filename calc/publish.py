@@ -113,7 +113,8 @@ def compiled_preamble(tex: Path) -> Path | None:
     first use into the Python environment (beside pint's cache), one per preamble and TeX
     installation; it saves loading every package on every pass (about a third of each). None
     (xelatex reads the preamble itself) where the file has no such mark, the folder is not
-    writable or the format cannot be made."""
+    writable or the format cannot be made (then a marker beside it says so, and no later report
+    tries again with this preamble and TeX)."""
     import hashlib
     import os
     import subprocess
@@ -129,17 +130,21 @@ def compiled_preamble(tex: Path) -> Path | None:
     fmt = folder / f"report-{key}.fmt"
     if fmt.is_file():
         return fmt.with_suffix("")
+    failed = fmt.with_suffix(".failed")
+    if failed.is_file():
+        return None
     if not os.access(folder if folder.exists() else sys.prefix, os.W_OK):
         return None
     folder.mkdir(exist_ok=True)
     with tempfile.TemporaryDirectory(dir=folder) as work:
         subprocess.run(["xelatex", "-ini", "-interaction=batchmode", f"-jobname={fmt.stem}", "&xelatex", "mylatexformat.ltx", str(tex.resolve())],
-                              cwd=work, capture_output=True)
+                       cwd=work, capture_output=True)
         made, log = Path(work) / fmt.name, (Path(work) / fmt.stem).with_suffix(".log")
         errors = [line for line in log.read_text(errors="replace").splitlines() if line.startswith("! ")] if log.is_file() else ["no log"]
         # The only errors allowed: the kernel's own Latin Modern fonts, which a format cannot keep
         # (XeTeX loads fonts natively); the report sets its fonts after the format, so never uses them.
         if not made.is_file() or any(e != r"! Can't \dump a format with native fonts or font-mappings." for e in errors):
+            failed.write_text("\n".join(errors[:20]) + "\n", encoding="utf-8")  # what xelatex said, for whoever looks
             return None
         made.replace(fmt)  # atomic: reports built side by side may make it at once
     return fmt.with_suffix("")

@@ -263,3 +263,22 @@ def test_a_preamble_without_its_end_mark_is_not_compiled(tmp_path):
     tex = tmp_path / "plain.tex"
     tex.write_text("\\documentclass{article}\n\\begin{document}x\\end{document}\n", encoding="utf-8")
     assert publish.compiled_preamble(tex) is None
+
+
+@needs_tex
+def test_a_preamble_that_cannot_be_compiled_is_tried_once(tmp_path, monkeypatch):
+    import subprocess
+
+    tex = tmp_path / "broken.tex"
+    # A class no TeX has: xelatex cannot make the format, and says so in a marker beside it.
+    tex.write_text(f"\\documentclass{{no-such-class}}\n{publish.END_OF_DUMP}\n\\begin{{document}}x\\end{{document}}\n",
+                   encoding="utf-8")
+    assert publish.compiled_preamble(tex) is None
+    real = subprocess.run
+
+    def no_xelatex(command, *args, **kwargs):
+        assert command[0] != "xelatex", "a failed preamble is compiled again"
+        return real(command, *args, **kwargs)
+
+    monkeypatch.setattr(subprocess, "run", no_xelatex)
+    assert publish.compiled_preamble(tex) is None
