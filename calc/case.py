@@ -139,6 +139,17 @@ class Table:
             raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
         return value
 
+    def texts(self, key: str) -> tuple:
+        """A text or a list of texts, as a tuple (empty where the table leaves it out)."""
+        if key not in self.data:
+            return ()
+        value = self.data[key]
+        if isinstance(value, str):
+            return (value,)
+        if isinstance(value, list) and value and all(isinstance(v, str) for v in value):
+            return tuple(value)
+        raise CalcError(f"{self.where(key)}: expected a text in quotes, or a list of them, found {value!r}")
+
     def catalogs(self, key: str):
         """A catalog key: one name or path, or a list of them ranked together (its declared
         default where the table leaves it out)."""
@@ -177,6 +188,7 @@ class Case:
     ratio: object = None
     gearbox_catalog: str | list | None = None
     gearbox_part: str | None = None
+    gearbox_family: tuple = ()  # [gearbox] family: only rows of these families are checked (all where empty)
     shock_factors: object = None  # the table of f_s (calc.bands.BandTable) of [gearbox]; None: the source's
     emergency_stop_torque: object = None
     gearbox_hubs: str | list | None = None

@@ -155,6 +155,18 @@ class OutputLoad:
     def sampled(self) -> bool:
         return self.alpha_2 is not None
 
+    def distinct(self) -> "OutputLoad":
+        """The same cycle with its equal samples merged, their durations summed, in the order each
+        first appears: every peak, duration-weighted mean and RMS over it is the one over the cycle,
+        at a fraction of the cost where the cycle dwells or runs at constant speed."""
+        columns = [self.torque.m_as("N*m"), self.speed.m_as("rad/s")] + ([] if self.alpha_2 is None else [self.alpha_2.m_as("rad/s**2")])
+        _, first, inverse = np.unique(np.stack(columns), axis=1, return_index=True, return_inverse=True)
+        order = np.argsort(first, kind="stable")
+        dt = np.bincount(inverse.ravel(), weights=self.dt.m_as("s"))[order]
+        keep = first[order]
+        alpha = None if self.alpha_2 is None else self.alpha_2[keep]
+        return OutputLoad(Q_(dt, "s"), self.torque[keep], self.speed[keep], alpha, self.n_2max)
+
     @classmethod
     def from_cycle(cls, cycle: SampledCycle) -> "OutputLoad":
         speed = Q_(cycle.speed, "rad/s")

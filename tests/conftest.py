@@ -12,6 +12,15 @@ ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = ROOT / "tests" / "cases" / "indexing-table-profile.toml"  # the typed load cycle the tests work by hand
 DERIVED_EXAMPLE = ROOT / "cases" / "indexing-table.toml"  # the example: its cycle derived from the motion
 GEARBOXES = ROOT / "catalogs" / "gearboxes.csv"
+# The example's motor as ratings typed into the case (the motor the tests work by hand), in place of the catalog's choice.
+TYPED_MOTOR = 'peak_torque = "12 N*m"\ninertia = "4.2 kg*cm**2"\n'
+
+
+def derived_with_typed_motor() -> str:
+    """The example's case file with :data:`TYPED_MOTOR` in place of its motor catalog."""
+    text = DERIVED_EXAMPLE.read_text(encoding="utf-8")
+    assert text.count('catalog = "motors"\n') == 1, "the example no longer chooses its motor from catalogs/motors.csv"
+    return text.replace('catalog = "motors"\n', TYPED_MOTOR)
 
 # The typed example's load cycle, in the case-file format (used to build variants in tests).
 PROFILE_TOML = """

@@ -128,6 +128,11 @@ GOOD_CSV = GEARBOXES.read_text()
         (HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = ""') + PROFILE_TOML, "gearbox.catalog: expected a catalog name or a path to a CSV file, found ''"),
         # TP010-5 is the 5:1 gearbox of the shipped catalog (row 3).
         (HEAD_TOML.replace("ratio = 10", 'ratio = 10\npart = "TP010-5"') + PROFILE_TOML, "gearbox.part: TP010-5 has ratio 5, but gearbox.ratio is 10"),
+        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "XP"') + PROFILE_TOML,
+         "gearbox.family: the catalog catalogs/gearboxes.csv has no gearbox of family 'XP'; its families are "),
+        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "NPT"\npart = "TP010-10"') + PROFILE_TOML,
+         "gearbox.part: TP010-10 is of family 'TP+', but gearbox.family is 'NPT'"),
+        (HEAD_TOML.replace("ratio = 10", "ratio = 10\nfamily = 3") + PROFILE_TOML, "gearbox.family: expected a text in quotes, or a list of them, found 3"),
     ],
 )
 def test_bad_case_files_give_one_line_naming_file_and_key(capsys, write_case, text, fragment):
@@ -194,3 +199,18 @@ def test_no_value_is_evaluated_as_code(capsys, write_case, tmp_path):
     path = write_case(HEAD_TOML + PROFILE_TOML.replace('"0.6 s"', f'"{payload}"'))
     code, out, err = run(capsys, path)
     assert code != 0 and not marker.exists()
+
+
+def test_a_gearbox_family_narrows_the_candidates_and_says_so(capsys, write_case):
+    # HEAD_TOML's 10:1 rows span the families TP+, NPT, NPS (and others); family keeps to the named ones.
+    every = json.loads(run(capsys, write_case(HEAD_TOML + PROFILE_TOML), "--json", "--all-candidates")[1])["gearbox"]
+    npt = json.loads(run(capsys, write_case(HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "NPT"') + PROFILE_TOML),
+                         "--json", "--all-candidates")[1])["gearbox"]
+    both = json.loads(run(capsys, write_case(HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = ["NPT", "TP+"]') + PROFILE_TOML),
+                          "--json", "--all-candidates")[1])["gearbox"]
+    parts = {c["part"] for c in every["candidates"]}
+    assert {c["part"] for c in npt["candidates"]} == {p for p in parts if p.startswith("NPT")}
+    assert {c["part"] for c in both["candidates"]} == {p for p in parts if p.startswith(("NPT", "TP"))}
+    assert len(both["candidates"]) < len(every["candidates"])
+    assert "only gearboxes of family NPT are checked (gearbox.family)" in npt["notes"]
+    assert not any("gearbox.family" in n for n in every["notes"])

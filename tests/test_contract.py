@@ -10,7 +10,7 @@ import json
 
 import pytest
 
-from .conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, run
+from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, derived_with_typed_motor, run
 
 COUPLING_TOML = """
 [coupling]
@@ -102,7 +102,7 @@ def test_the_motor_and_coupling_without_the_gearboxs_J_1(capsys, write_case, tmp
     folder.mkdir()
     with (folder / "no-j1.csv").open("w", encoding="utf-8", newline="") as f:
         csv.writer(f, lineterminator="\n").writerows(rows)
-    text = DERIVED_EXAMPLE.read_text(encoding="utf-8").replace('catalog = "gearboxes"\n', 'catalog = "no-j1.csv"\n')
+    text = derived_with_typed_motor().replace('catalog = "gearboxes"\n', 'catalog = "no-j1.csv"\n')
     text = text.replace('shaft = "19 mm k6" ', 'max_speed = "6000 rpm" ').replace('peak_torque = "12 N*m"', 'peak_torque = "12 N*m"\nrated_torque = "4 N*m"')
     case = write_case(text, "cases/no-j1.toml")
     r = results(capsys, case)
@@ -125,7 +125,7 @@ def test_a_chain_that_follows_a_selection_choosing_no_part(capsys, write_case, t
     # requirement is not decided and says why; the verdict is null.
     (tmp_path / "data").symlink_to(ROOT / "data")  # the example's measurement paths hold
     (tmp_path / "cases").mkdir()
-    text = DERIVED_EXAMPLE.read_text(encoding="utf-8").replace('peak_torque = "12 N*m"', "")
+    text = derived_with_typed_motor().replace('peak_torque = "12 N*m"', "")
     r = results(capsys, write_case(text, "cases/example-without-peak.toml"))
     a = r["accuracy"]
     assert a["positioning_accuracy"]["value"] > 0 and [c["side"] for c in a["components"]] == ["input", "output"]

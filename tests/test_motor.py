@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from calc import Q_
 from calc.case import read_case
 from calc.cycle import SampledCycle
-from calc.motor import T_1_back, T_1_drive, T_1rms, alpha_1, motor_load, motor_torque
+from calc.motor import OutputLoad, T_1_back, T_1_drive, T_1rms, alpha_1, motor_load, motor_torque
 from calc.sections import duty, evaluate
 
 from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, run
@@ -119,6 +119,26 @@ def test_rms_lies_between_zero_and_peak(samples, i, eta):
     m = motor_load(Q_(t, "s"), Q_(T, "N*m"), Q_(n, "rpm"), Q_(i, ""), Q_(eta, ""))
     rms, peak = m.rms.m_as("N*m"), m.peak.m_as("N*m")
     assert 0 <= rms <= peak * (1 + 1e-12)
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.lists(st.tuples(st.floats(1e-3, 10.0), st.sampled_from([-20.0, 0.0, 3.5, 12.0]), st.sampled_from([-300.0, 0.0, 150.0]),
+                          st.sampled_from([-40.0, 0.0, 25.0])), min_size=1, max_size=30), ratios, efficiencies)
+def test_merging_equal_samples_keeps_every_peak_and_rms(samples, i, eta):
+    # Values drawn from few choices, so that many samples repeat: merged, the cycle gives the same
+    # motor torques in the order each first appears, durations summed.
+    t, T, n, a = (np.array(x) for x in zip(*samples))
+    out = OutputLoad(Q_(t, "s"), Q_(T, "N*m"), Q_(n, "rpm"), Q_(a, "rad/s**2"), Q_(np.abs(n).max(), "rpm"))
+    few = out.distinct()
+    assert few.dt.m_as("s").sum() == pytest.approx(t.sum(), rel=1e-12)
+    firsts = list(dict.fromkeys(zip(T, n, a)))
+    np.testing.assert_allclose(np.column_stack([few.torque.m_as("N*m"), few.speed.m_as("rpm"), few.alpha_2.m_as("rad/s**2")]),
+                               np.array(firsts), rtol=1e-12)
+    J = Q_(2.0, "kg*cm**2")
+    whole = motor_load(out.dt, out.torque, out.speed, Q_(i, ""), Q_(eta, ""), out.alpha_2, J, J)
+    merged = motor_load(few.dt, few.torque, few.speed, Q_(i, ""), Q_(eta, ""), few.alpha_2, J, J)
+    assert merged.peak.m_as("N*m") == pytest.approx(whole.peak.m_as("N*m"), rel=1e-12, abs=1e-15)
+    assert merged.rms.m_as("N*m") == pytest.approx(whole.rms.m_as("N*m"), rel=1e-9, abs=1e-15)
 
 
 # --- the section -----------------------------------------------------------------------------------

@@ -237,19 +237,23 @@ def test_a_derived_load_inertia_is_not_listed_as_a_case_key():
 
 
 def test_front_page_lists_every_governing_check_and_what_is_not_checked():
-    # The example: the chosen gearbox's and coupling's checks, the motor's peak torque (the case
-    # gives no rated torque or top speed), the accuracy requirement; the bearing's F_2r is not
-    # checked, as the catalog gives no F_2R for NPT035-10 (catalogs/gearboxes.csv).
+    # The example: the chosen gearbox's, coupling's and motor's checks under each part's name, the
+    # accuracy requirement; the bearing's F_2r is not checked, as the catalog gives no F_2R for
+    # NPT035-10 (catalogs/gearboxes.csv). The motor is SGMUH-10DA of catalogs/motors.csv
+    # (M_max = 6.5 N·m, M_N = 1.59 N·m): its peak, RMS, speeds and inertia ratio.
     page = str(build_report(DERIVED_EXAMPLE).front_page())
-    assert (r"Gearbox NPT035-10: $F_{\mathrm{2r}}$ ≤ $F_{\mathrm{2R}}$: \notchecked{} {\footnotesize the catalog gives no "
-            r"$F_{\mathrm{2R}}$}") in page
-    assert r"Motor: $T_{\mathrm{1peak}}$ ≤ $T_{\mathrm{1B}}$: " in page and "against 12" in page
-    assert r"Accuracy: positioning accuracy ≤ required: 1.424" in page
-    assert r"$d_{\mathrm{hub,max}}$" in page
+    gearbox, motor, accuracy = (page.split(rf"\textbf{{{name}}}")[1].split(r"\end{itemize}")[0]
+                                for name in ("Gearbox NPT035-10", "Motor SGMUH-10DA", "Accuracy"))
+    assert (r"$F_{\mathrm{2r}}$ ≤ $F_{\mathrm{2R}}$: \notchecked{} {\footnotesize the catalog gives no "
+            r"$F_{\mathrm{2R}}$}") in gearbox and r"$d_{\mathrm{hub,max}}$" in gearbox
+    assert r"at every sample: 1.006 N·m against 6.5 N·m" in motor and r"$T_{\mathrm{1rms}}$ ≤ $M_{\mathrm{N}}$: 0.3199 N·m against 1.59 N·m" in motor
+    assert motor.count(r"\item ") == 5
+    assert r"positioning accuracy ≤ required: 1.447" in accuracy
+    assert r"\textbf{Coupling AKN-18}" in page
 
 
 def test_title_block_lists_every_data_file_the_results_rest_on():
-    # The derived example reads, beside its case and the two catalogs it names, the clamping-hub
+    # The derived example reads, beside its case and the three catalogs it names, the clamping-hub
     # table (motor.shaft), the source's shock and temperature tables (E4, E9, the defaults) and
     # the generated transmission trace of its chain: each once, with its SHA-256.
     files = {label_path[1]: label_path[0] for label_path in build_report(DERIVED_EXAMPLE).files}
@@ -257,6 +261,7 @@ def test_title_block_lists_every_data_file_the_results_rest_on():
         "cases/indexing-table.toml": "Case file",
         "catalogs/gearboxes.csv": "Gearbox catalog",
         "catalogs/couplings.csv": "Coupling catalog",
+        "catalogs/motors.csv": "Motor catalog",
         "catalogs/gearbox-hubs.csv": "Catalog",
         "catalogs/factors/shock-source.csv": "Factor table",
         "catalogs/factors/temperature-source.csv": "Factor table",

@@ -282,8 +282,7 @@ def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     specs = {s.key: s for s in panel.specs}
     assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque", "mechanism.process_torque",
                            "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].decel_time", "move[1].jerk_time",
-                           "move[2].dwell", "motor.peak_torque", "motor.inertia", "coupling.temperature", "accuracy.applied_torque",
-                           "gearbox.part"]
+                           "move[2].dwell", "coupling.temperature", "accuracy.applied_torque", "gearbox.part", "motor.part"]
     # The decel time the file leaves out is offered at the value reading the file takes: the accel time.
     assert (specs["move[1].decel_time"].unit, specs["move[1].decel_time"].value) == ("s", 0.15)
     # In the file's units: the index of 90 deg, the table's 1500 kg·cm²; the friction 3 N·m, the
@@ -460,16 +459,16 @@ def test_a_typed_value_is_read_with_a_decimal_comma_and_refused_outside_its_rang
     assert panel.controls["move[2].dwell"].value == 0.6 and panel.fields["move[2].dwell"].value == "0.6"
     assert panel.generation > first and not panel.refused
     for typed, why in (("1e9", "outside the range"), ("-40", "outside the range"), ("abc", "is not a number"), ("0", "outside the range")):
-        panel.fields["motor.peak_torque"].value = typed
+        panel.fields["mechanism.inertia"].value = typed
         panel.settled()
-        assert panel.controls["motor.peak_torque"].value == 12.0  # kept, not clamped
-        assert why in panel._messages["motor.peak_torque"].value and "dr-refused" in panel.fields["motor.peak_torque"]._dom_classes
-        assert "Not applied" in panel.results.value and "motor peak torque" in panel.results.value
-    panel.fields["motor.peak_torque"].value = "16"
+        assert panel.controls["mechanism.inertia"].value == 1500.0  # kept, not clamped
+        assert why in panel._messages["mechanism.inertia"].value and "dr-refused" in panel.fields["mechanism.inertia"]._dom_classes
+        assert "Not applied" in panel.results.value and "load inertia" in panel.results.value
+    panel.fields["mechanism.inertia"].value = "1600"
     panel.settled()
-    assert not panel.refused and panel._messages["motor.peak_torque"].value == "" and "Not applied" not in panel.results.value
+    assert not panel.refused and panel._messages["mechanism.inertia"].value == "" and "Not applied" not in panel.results.value
     # The results carry the field texts they were computed for, and the changed ones.
-    assert '&quot;motor.peak_torque&quot;: &quot;16&quot;' in panel.results.value
+    assert '&quot;mechanism.inertia&quot;: &quot;1600&quot;' in panel.results.value
 
 
 def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_path):
@@ -485,7 +484,7 @@ def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_pa
     original.write_text(text)
     panel = DesignReview(original)
     panel.controls["move[1].time"].value = 0.6
-    panel.controls["motor.peak_torque"].value = 16.0
+    panel.controls["mechanism.inertia"].value = 1600.0
     panel.controls["coupling.temperature"].value = 60.0
     panel.settled()
     assert panel.save("indexing-table.toml") is None and "exists" in panel.kept.value  # never over a file
@@ -493,11 +492,11 @@ def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_pa
     saved = panel.save("axis-3-slower.toml")
     assert saved == tmp_path / "axis-3-slower.toml" and original.read_text() == text
     written = saved.read_text()
-    assert written.startswith("# Changed in the design review from indexing-table.toml: move[1].time 0.5 s -> 0.6 s; "
-                              "motor.peak_torque 12 N*m -> 16 N*m; coupling.temperature 40 degC -> 60 degC\n")
+    assert written.startswith("# Changed in the design review from indexing-table.toml: mechanism.inertia 1500 kg*cm**2 -> 1600 kg*cm**2; "
+                              "move[1].time 0.5 s -> 0.6 s; coupling.temperature 40 degC -> 60 degC\n")
     # Only the changed values rewritten: every comment and every other line as it was.
-    assert written.count("\n") == text.count("\n") + 1 and "# T_1B, maximum torque of the servo motor" in written
-    assert 'peak_torque = "16 N*m"         # T_1B' in written
+    assert written.count("\n") == text.count("\n") + 1 and "# T_f, against the motion while the table turns" in written
+    assert 'inertia = "1600 kg*cm**2"      # J_L at the gearbox output' in written
     # The file re-evaluates to the screen's results.
     assert evaluate(read_case(saved))["verdict"] == evaluate(panel.shown[0])["verdict"]
     assert evaluate(read_case(saved))["cyclic"] == evaluate(panel.shown[0])["cyclic"]
@@ -622,8 +621,8 @@ def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si
     from tests.conftest import ROOT
 
     panel = DesignReview(ROOT / "cases" / "linear-axis-inch.toml")
-    # The motor's inputs as the file writes them (60 lbf·in, not 6.8 N·m rounded from 6.779 N·m).
-    assert panel.fields["motor.peak_torque"].value == "60" and panel._spec("motor.peak_torque").unit == "lbf*in"
+    # The inputs as the file writes them (60 lb, not 27.2 kg rounded from 27.216 kg).
+    assert panel.fields["mechanism.mass"].value == "60" and panel._spec("mechanism.mass").unit == "lb"
     assert panel.units.value == "inch-pound"
     inch = panel.results.value
     assert "lbf·in" in inch and "N·m</td>" not in inch
@@ -638,9 +637,9 @@ def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si
     t_in = float(re.search(r"<sub>2max</sub> ([\d.]+) lbf·in", inch).group(1))
     assert t_in * 0.112985 == pytest.approx(t_si, rel=2e-3)
     # A changed inch value is saved as the file writes it.
-    panel.fields["motor.peak_torque"].value = "70"
+    panel.fields["mechanism.mass"].value = "70"
     panel.settled()
-    assert 'peak_torque = "70 lbf*in"' in panel.case_text()
+    assert 'mass = "70 lb"' in panel.case_text()
 
 
 def test_the_load_cycle_figure_draws_the_segments_steps():

@@ -22,7 +22,9 @@ FAIL and it says why.
 
 from __future__ import annotations
 
+import functools
 import importlib
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -124,38 +126,41 @@ class Report:
             chosen = table(r"@{}l l p{0.55\linewidth}@{}", ["Part", "Chosen", "Basis"], rows)
         # One row per file, its SHA-256 beside it: the signature lines stay on the front page.
         def digest(text: str) -> str:
-            return rf"\texttt{{\scriptsize {text}}}"
+            return rf"\texttt{{\tiny {text}}}"
 
         files = self.files or [("Case file", display_path(self.path), None)]
         rows = [[latex_escape(label), rf"\texttt{{\footnotesize {breakable(path)}}}", digest(sha) if sha else "unreadable"]
                 for label, path, sha in files]
-        rows += [["Built", latex_escape(self.built), ""], ["Package", latex_escape(PACKAGE), ""],
+        rows += [["Built", rf"\multicolumn{{2}}{{l}}{{{latex_escape(f'{self.built} by {PACKAGE}')}}}", None],
                  ["Commit", rf"\multicolumn{{2}}{{p{{0.7\linewidth}}}}{{\texttt{{\footnotesize {latex_escape(self.commit)}}}}}", None]]
         rows = [[c for c in row if c is not None] for row in rows]
         return Latex(render(
             "front-page.tex.j2", title=self.title, case=display_path(self.path), word=self.verdict.word, passes=self.passes,
             governing=self._governing_lines(), chosen=chosen,
             reasons=[rf"\item {render_reason(r)}" for r in self.reasons],
-            title_block=table(r"@{}l p{0.28\linewidth} l@{}", ["Item", "File", "SHA-256"], rows, small=True, narrow=True),
+            title_block=table(r"@{}l p{0.39\linewidth} l@{}", ["Item", "File", "SHA-256"], rows, small=True, narrow=True),
         ))
 
     def _governing_lines(self) -> str:
         """The governing checks of each chosen part, and of each section's own checks (the motor's,
         the accuracy's requirements), one line each with its utilization, or why it is not made."""
-        lines = []
+        groups = []
         for g in self.evaluated.governing() if self.evaluated is not None else []:
-            if g.part is not None and not g.chosen:
+            if g.part is not None and not g.chosen or not g.checks:
                 continue
-            owner = latex_escape(g.section.capitalize() + (f" {g.part}" if g.part else ""))
+            lines = []
             for k in g.checks:
                 crit = prose(k.criterion or k.name)
                 if k.passes is None:
-                    lines.append(rf"{owner}: {crit}: {verdict_mark(None, k.not_made or 'no rating')}")
+                    lines.append(rf"{crit}: {verdict_mark(None, k.not_made or 'no rating')}")
                 else:
-                    lines.append(rf"{owner}: {crit}: {q(k.required_value)} against {q(k.rated_value)}, utilization {util(k.utilization)}")
-        # Compact (no space between items): the signature lines stay on the front page.
-        return (r"{\small\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}"
-                + "".join(rf"\item {x}" for x in lines) + r"\end{itemize}}") if lines else ""
+                    lines.append(rf"{crit}: {q(k.required_value)} against {q(k.rated_value)}, $u$ = {util(k.utilization)}")
+            owner = latex_escape(g.section.capitalize() + (f" {g.part}" if g.part else ""))
+            groups.append(rf"\par\textbf{{{owner}}}\nopagebreak\begin{{itemize}}\setlength{{\itemsep}}{{0pt}}\setlength{{\parskip}}{{0pt}}"
+                          + "".join(rf"\item {x}" for x in lines) + r"\end{itemize}")
+        # Compact, in two columns under each part's name: the signature lines stay on the front page.
+        return (r" {\footnotesize ($u$: utilization, the required over the rated value)}{\footnotesize\raggedright\begin{multicols}{2}"
+                + "".join(groups) + r"\end{multicols}}") if groups else ""
 
     def method(self) -> Latex:
         """The source's sections, the errata readings that apply, and the assumptions."""
@@ -238,13 +243,22 @@ class Report:
         return out + [(Latex(self.relative(b())), {}) for b in (self.order_lines, self.appendix)]
 
 
+def report_path(p, folder: Path) -> str:
+    """:func:`display_path`, but a file outside the project relative to the case's ``folder``: the
+    report names no folder of the machine it was built on."""
+    text = display_path(p)
+    return os.path.relpath(p, folder) if os.path.isabs(text) else text
+
+
 def build_report(case_path) -> Report:
     """Read and evaluate a case and collect its report; a case that cannot be evaluated gives a
     report whose verdict is FAIL with the reason (never an exception for bad input)."""
     path = Path(case_path)
     report = Report(path=path, title=path.stem, built=build_date(), commit=git_commit())
+    shown = functools.partial(report_path, folder=path.parent)
+
     if path.is_file():
-        report.files.append(("Case file", display_path(path), sha256(path)))
+        report.files.append(("Case file", shown(path), sha256(path)))
     with recording_files_read() as read:
         try:
             case = read_case(path)
@@ -254,7 +268,7 @@ def build_report(case_path) -> Report:
         report = report_of(case, report)
     # Every other data file the results rest on (hub and factor tables, measurements), once each.
     listed = {p for _, p, _ in report.files}
-    report.files += [(what, display_path(p), digest) for p, (what, digest) in read.items() if display_path(p) not in listed]
+    report.files += [(what, shown(p), digest) for p, (what, digest) in read.items() if shown(p) not in listed]
     return report
 
 
@@ -273,5 +287,5 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     # The case as evaluated: with a motor from a catalog, its ratings and inertia are the chosen motor's.
     report.case, report.evaluated, report.ratios = evaluated.case, evaluated, ratios
     for name, r in report._ranked():
-        report.files += [(f"{name.capitalize()} catalog", display_path(path), sha) for path, sha in r.selection.catalog.members]
+        report.files += [(f"{name.capitalize()} catalog", report_path(path, case.folder), sha) for path, sha in r.selection.catalog.members]
     return report

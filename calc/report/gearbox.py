@@ -32,6 +32,8 @@ def input_rows(report) -> list[list[str]]:
         rows.append(input_row("gearbox.part", c.gearbox_part))
     if c.gearbox_catalog and (c.ratio is not None or c.gearbox_part):
         rows.append(input_row("gearbox.catalog", c.gearbox_catalog))
+    if c.gearbox_family:
+        rows.append(input_row("gearbox.family", " or ".join(c.gearbox_family)))
     if c.motor_shaft is not None:
         rows.append(input_row("motor.shaft", c.motor_shaft.text))
     load = c.output_load

@@ -103,11 +103,11 @@ def stiffness_chain_svg(accuracy) -> str:
 
     >>> from calc.case import read_case
     >>> from calc.catalog import CATALOG_DIR
-    >>> from calc.sections import accuracy
-    >>> a = accuracy.evaluate(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml")).shown
+    >>> from calc.sections import evaluate
+    >>> a = evaluate(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml")).sections["accuracy"].shown
     >>> svg = stiffness_chain_svg(a)
     >>> svg.count("<rect"), [m.name for m in a.members]
-    (2, ['AKD-30', 'NPT035-10'])
+    (2, ['AKN-18', 'NPT035-10'])
     """
     from ..accuracy_plots import SIDE_COLORS  # the report figure's colours
 

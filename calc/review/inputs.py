@@ -338,9 +338,9 @@ def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_pea
     >>> from pathlib import Path
     >>> from calc.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
-    >>> changed = with_changes(case, motor_peak_torque=Q_(30, "N*m"))
-    >>> changed.motor_peak_torque, case.motor_peak_torque
-    (<Quantity(30, 'newton * meter')>, <Quantity(12.0, 'newton * meter')>)
+    >>> changed = with_changes(case, ratio=Q_(7, ""))
+    >>> changed.ratio, case.ratio
+    (<Quantity(7, 'dimensionless')>, <Quantity(10.0, 'dimensionless')>)
     """
     values = {"gearbox.ratio": ratio, "motor.peak_torque": motor_peak_torque, "motor.inertia": motor_inertia,
               "load.inertia": load_inertia, "coupling.temperature": temperature, "accuracy.applied_torque": applied_torque}

@@ -29,6 +29,7 @@ from ..case import Case, read_case
 from ..errors import CalcError
 from ..publish import summary_rows
 from ..sections import drive
+from ..sections.gearbox import catalogs as gearbox_catalogs
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
@@ -40,16 +41,9 @@ LABEL_WIDTH = "15.5em"
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
 
 
-def _gearbox_catalog(case: Case):
-    from ..catalog import load_catalog, resolve
-    from ..gearbox import SCHEMA
-
-    return load_catalog(resolve(case.gearbox_catalog, case.folder, "gearbox.catalog"), SCHEMA)
-
-
 def _ratios(case: Case) -> list[float]:
     """The ratios of the case's gearbox catalog (the choices of the ratio control)."""
-    return sorted(set(_gearbox_catalog(case)["ratio"].m_as("").tolist()))
+    return sorted(set(gearbox_catalogs(case)[0]["ratio"].m_as("").tolist()))
 
 
 #: The gearbox choice that leaves the part to the selection (``[gearbox] part`` not given).
@@ -59,7 +53,7 @@ SELECTION = "the selection's"
 def forced_part_spec(case: Case) -> InputSpec:
     """The gearbox part the reviewer forces (``[gearbox] part``, checked alone): a choice among
     the catalog's rows at the case's ratio (not the partial ones), or the selection's."""
-    catalog = _gearbox_catalog(case)
+    catalog = gearbox_catalogs(case)[0]
     ratio = float(case.ratio.m_as(""))
     parts = [str(p) for p, r, partial in zip(catalog.parts, catalog["ratio"].m_as(""), catalog.partial) if r == ratio and not partial]
     value = case.gearbox_part or SELECTION

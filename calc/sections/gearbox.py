@@ -22,6 +22,7 @@ TABLES = (Declared(NAME, (
     Key("ratio", "dimensionless", "ratio of the gearbox, as desired (needed unless a part is named)", "i"),
     Key("catalog", "catalog", "the gearbox catalog(s): a name in catalogs/ or a path to a CSV file", default="gearboxes"),
     Key("part", "text", "check this one part instead of ranking the catalog (never a partial row)"),
+    Key("family", "text", "check only gearboxes of this family (the catalog's family column: \"NPT\"), or of these (a list)"),
     Key("hubs", "catalog", "the table of clamping hubs (J_1 per hub), picked by motor.shaft", default="gearbox-hubs"),
     Key("emergency_stop_torque", "torque", "torque of an emergency stop against the catalog's T_2Not (default T_1B · i)", "T_2stop", unit="N*m"),
     Key("shock_factors", "factor table", "the table of the shock factor f_s (E4): source, or a path to a CSV file", default="source"),
@@ -43,6 +44,7 @@ def read(top: Table, case: Case) -> None:
     case.gearbox_catalog = gearbox.catalogs("catalog")
     case.gearbox_hubs = gearbox.catalogs("hubs")
     case.gearbox_part = gearbox.text("part")
+    case.gearbox_family = gearbox.texts("family")
     case.emergency_stop_torque = gearbox.positive("emergency_stop_torque")
     case.shock_factors = factor_table("shock", gearbox.text("shock_factors"), case.folder, gearbox.where("shock_factors"))
 
@@ -58,10 +60,21 @@ def gearbox_selection(case: Case) -> GearboxSelection:
 
 
 def catalogs(case: Case) -> tuple:
-    """The case's gearbox catalog (its rows together, when it names several) and hub table."""
+    """The case's gearbox catalog (its rows together, when it names several; only those of its
+    families where it names some) and hub table."""
     where = f"{case.path}: gearbox"
-    return (load_catalogs(case.gearbox_catalog, case.folder, f"{where}.catalog", SCHEMA),
-            load_catalogs(case.gearbox_hubs, case.folder, f"{where}.hubs", HUB_SCHEMA))
+    catalog = load_catalogs(case.gearbox_catalog, case.folder, f"{where}.catalog", SCHEMA)
+    if case.gearbox_family:
+        unknown = [f for f in case.gearbox_family if not (catalog.family == f).any()]
+        if unknown:
+            known = ", ".join(sorted(set(catalog.family.tolist())))
+            raise CalcError(f"{where}.family: the catalog {catalog.shown_name} has no gearbox of family {unknown[0]!r}; its families are {known}")
+        if case.gearbox_part is not None:
+            family = catalog.family[catalog.index(case.gearbox_part, f"{where}.part")]
+            if family not in case.gearbox_family:
+                raise CalcError(f"{where}.part: {case.gearbox_part} is of family {family!r}, but gearbox.family is {' or '.join(map(repr, case.gearbox_family))}")
+        catalog = catalog.rows(np.isin(catalog.family, case.gearbox_family))
+    return catalog, load_catalogs(case.gearbox_hubs, case.folder, f"{where}.hubs", HUB_SCHEMA)
 
 
 def selection_inputs(case: Case) -> dict:
@@ -86,7 +99,10 @@ def _select(case: Case) -> GearboxSelection:
             )
     else:
         rows = rows_at_ratio(catalog, case.ratio, f"{where}.ratio")
-    return select_gearbox(case.profile, rows, hubs=hubs, **selection_inputs(case))
+    selection = select_gearbox(case.profile, rows, hubs=hubs, **selection_inputs(case))
+    if case.gearbox_family:
+        selection.notes.append(f"only gearboxes of family {' or '.join(case.gearbox_family)} are checked (gearbox.family)")
+    return selection
 
 
 @dataclass

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..case import Case
+from ..case import Case, once
 from ..catalog import display_path
 from ..errors import CalcError
 from ..gearbox import inertia_ratio, n_1
@@ -259,6 +259,11 @@ def transmission(case: Case) -> Transmission:
 
 
 def evaluate(case: Case) -> MotorResult:
+    """The motor's checks through the case's gearbox (or directly); computed once per case."""
+    return once(case, "motor", lambda: _evaluate(case))
+
+
+def _evaluate(case: Case) -> MotorResult:
     t = transmission(case)
     out = output_load(case)
     notes = list(t.notes)
@@ -324,18 +329,20 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     if missing is not None:  # J_1 or the coupling's inertia unknown: the rotor term counts what is known
         notes.append(missing)
     J_1q = Q_(0.0, "kg*m**2") if J_1 is None else J_1
-    T_1 = motor_torque(out.torque, out.speed, t.i, t.eta, out.alpha_2, J[:, None], J_1q)
-    T_1 = Q_(np.broadcast_to(T_1.m_as("N*m"), (len(cat), len(out.dt))), "N*m")
-    rms = T_1rms(T_1k=T_1, t_k=out.dt)
+    few = out.distinct()  # every motor against each distinct sample once
+    T_1 = motor_torque(few.torque, few.speed, t.i, t.eta, few.alpha_2, J[:, None], J_1q)
+    T_1 = Q_(np.broadcast_to(T_1.m_as("N*m"), (len(cat), len(few.dt))), "N*m")
+    rms = T_1rms(T_1k=T_1, t_k=few.dt)
     J_L = case.load_inertia
     lam = None if J_L is None else inertia_ratio(J_1=J_1q, J_L=J_L, i=t.i, J_motor=J).m_as("")
-    cycle = Cycle(T_1.m_as("N*m"), (out.speed * t.i).m_as("rad/s"), out.dt.m_as("s"), rms.m_as("N*m"), lam,
+    cycle = Cycle(T_1.m_as("N*m"), (few.speed * t.i).m_as("rad/s"), few.dt.m_as("s"), rms.m_as("N*m"), lam,
                   None if J_L is not None else "the inertia ratio needs the load's inertia (load.inertia or a [mechanism])")
     limit, where = case.motor_max_inertia_ratio
     curves = None if case.motor_curves is None else read_curves(case.motor_curves, drive.motor_catalog(case).parts)
     sel = select_motors(cat, cycle, case.motor_dc_link, curves, limit, where, float(case.profile.t_cycle.m_as("s")))
     best = int(sel.order[0])
-    load = MotorLoad(T_1[best:best + 1], np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
+    T_best = motor_torque(out.torque, out.speed, t.i, t.eta, out.alpha_2, J[best:best + 1, None], J_1q)  # every sample, in time
+    load = MotorLoad(T_best, np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
     return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out, J_motor=J[best], selection=sel,
                        segments=segments_of(case))
 
