@@ -343,6 +343,4 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | Non
         if long:
             notes.append(f"the cycle ({t_cycle:g} s) is not short against the thermal time constant of {', '.join(long)}: "
                          "the RMS torque understates the winding's peak temperature")
-    if cat.partial.any():
-        notes.append(f"{int(cat.partial.sum())} partial rows of the motor catalog are never ranked (no rated or peak torque published)")
     return MotorSelection(cat, cycle, limit, forms, dc_link, s1, curves, n_mean, inertia_limit, inertia_limit_from, checks, passes, worst, order, notes)

@@ -153,24 +153,26 @@ def _motion(m, typed_by_hand: bool) -> str:
     return '<div class="values">Motion: ' + " · ".join(p for p in parts if p) + "</div>"
 
 
-def _shown(rows: list, shown: int | None) -> tuple[list, str]:
-    """The first ``shown`` rows (all for None), and a note of how many are left out."""
-    if shown is None or len(rows) <= shown:
-        return rows, ""
-    return rows[:shown], f"<div class=note>{shown} of {len(rows)} candidates shown; tick <i>all candidates</i> for the rest.</div>"
+def _shown(sel, shown: int | None) -> tuple[list, str]:
+    """The first ``shown`` candidates of a selection, best first (all for None; only those are
+    made into records), and a note of how many are left out."""
+    listed, total = sel.candidates(shown), len(sel.order)
+    if len(listed) == total:
+        return listed, ""
+    return listed, f"<div class=note>{len(listed)} of {total} candidates shown; tick <i>all candidates</i> for the rest.</div>"
 
 
 def _gearbox_table(g, shown: int | None) -> str:
     """The gearbox candidates (a :class:`calc.sections.gearbox.GearboxResult`), best first."""
     sel = g.selection
+    listed, more = _shown(sel, shown)
     rows = [
         [str(k), escape(c.part), _verdict_cell(c.passes), _utilization(c.worst), _q(c.T_2max),
          "" if c.inertia_ratio is None else sig(c.inertia_ratio, 3), "illustrative" if c.illustrative else "",
          "<br>".join(typeset(x) for x in c.reasons)]
-        for k, c in enumerate(sel.candidates(), start=1)
+        for k, c in enumerate(listed, start=1)
     ]
     header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data", "reasons"]
-    rows, more = _shown(rows, shown)
     return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}</div>"
             + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None) + more)
 
@@ -182,14 +184,14 @@ def _coupling_table(s, shown: int | None) -> str:
         return next((_q(k.rated_value) for k in c.checks if k.name == name), "")
 
     sel = s.selection
+    listed, more = _shown(sel, shown)
     rows = [
         [str(k), escape(c.part), escape(c.type), _verdict_cell(c.passes), _q(c.required_torque), rated(c, "T_KN"),
          _q(c.f_e), _q(c.f_1), _utilization(c.worst), "<br>".join(typeset(x) for x in c.reasons)]
-        for k, c in enumerate(sel.candidates(), start=1)
+        for k, c in enumerate(listed, start=1)
     ]
     header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"), typeset("f_1"), "worst utilization", "reasons"]
     notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in s.notes)
-    rows, more = _shown(rows, shown)
     return (f"<h3>Coupling candidates</h3><div class=note>{typeset(s.ranking)}</div>"
             + _table(header, rows, numeric={0, 4, 5, 6, 7, 8}, marked=0 if sel.selected else None) + more + notes
             + _torsion_table(s.torsion))
@@ -198,13 +200,13 @@ def _coupling_table(s, shown: int | None) -> str:
 def _motor_table(m, shown: int | None) -> str:
     """The catalog motors (a :class:`calc.sections.motor.MotorResult` with its selection), best first."""
     sel = m.selection
+    listed, more = _shown(sel, shown)
     rows = [
         [str(k), escape(c.part), _verdict_cell(c.passes), _utilization(c.worst), _q(c.rated_torque), _q(c.rotor_inertia),
          "" if c.inertia_ratio is None else sig(c.inertia_ratio, 3), escape(c.form), "<br>".join(typeset(x) for x in c.reasons)]
-        for k, c in enumerate(sel.candidates(), start=1)
+        for k, c in enumerate(listed, start=1)
     ]
     header = ["rank", "part", "verdict", "worst utilization", typeset("M_N"), typeset("J_motor"), "inertia ratio λ", "peak characteristic", "reasons"]
-    rows, more = _shown(rows, shown)
     return (f"<h3>Motor candidates, through {escape(m.through)}</h3><div class=note>{typeset(m.ranking)}</div>"
             + _table(header, rows, numeric={0, 3, 4, 5, 6}, marked=0 if sel.selected else None) + more)
 

@@ -306,16 +306,15 @@ def with_chosen_motor(case: Case) -> Case:
     the same (the case itself where it names its motor or types it)."""
     if case.motor_catalog is None or case.motor_part is not None:
         return case
-    cat = drive.motor_catalog(case)
     chosen, seen = None, []
     for _ in range(ROUNDS):
         sel = evaluate(case).selection
-        pick = int(sel.order[0])
+        pick = str(sel.catalog.parts[sel.order[0]])
         if pick == chosen:
             return case
         chosen = pick
-        seen.append(str(cat.parts[pick]))
-        case = dataclasses.replace(case, **drive.motor_ratings(cat, pick))
+        seen.append(pick)
+        case = dataclasses.replace(case, **drive.motor_ratings(sel.catalog, int(sel.order[0])))
     raise CalcError(f"{case.path}: motor.catalog: the motor and the gearbox chosen in turn do not settle "
                     f"({' -> '.join(seen)}); name the motor with motor.part")
 
@@ -325,6 +324,9 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     cat = drive.motor_catalog(case)
     if case.motor_part is not None:
         cat = cat.rows(cat.parts == case.motor_part)
+    elif cat.partial.any():  # never ranked: not computed either
+        notes.append(f"{int(cat.partial.sum())} partial rows of the motor catalog are never ranked (no rated or peak torque published)")
+        cat = cat.rows(~cat.partial)
     J = cat["J"]
     if missing is not None:  # J_1 or the coupling's inertia unknown: the rotor term counts what is known
         notes.append(missing)
