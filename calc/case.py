@@ -139,26 +139,24 @@ class Table:
             raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
         return value
 
+    def _one_or_more(self, key: str, value, what: str):
+        """``value`` where it is a text or a non-empty list of texts; else an error naming ``what``."""
+        if isinstance(value, str) or (isinstance(value, list) and value and all(isinstance(v, str) for v in value)):
+            return value
+        raise CalcError(f"{self.where(key)}: expected {what} in quotes, or a list of them, found {value!r}")
+
     def texts(self, key: str) -> tuple:
         """A text or a list of texts, as a tuple (empty where the table leaves it out)."""
         if key not in self.data:
             return ()
-        value = self.data[key]
-        if isinstance(value, str):
-            return (value,)
-        if isinstance(value, list) and value and all(isinstance(v, str) for v in value):
-            return tuple(value)
-        raise CalcError(f"{self.where(key)}: expected a text in quotes, or a list of them, found {value!r}")
+        value = self._one_or_more(key, self.data[key], "a text")
+        return (value,) if isinstance(value, str) else tuple(value)
 
     def catalogs(self, key: str):
         """A catalog key: one name or path, or a list of them ranked together (its declared
         default where the table leaves it out)."""
         value = self.data[key] if key in self.data else self._absent(key, False)
-        if isinstance(value, list) and value and all(isinstance(v, str) for v in value):
-            return value
-        if not isinstance(value, str):
-            raise CalcError(f"{self.where(key)}: expected a catalog name or path in quotes, or a list of them, found {value!r}")
-        return value
+        return self._one_or_more(key, value, "a catalog name or path")
 
     def table(self, key: str, allowed: tuple) -> "Table | None":
         if key not in self.data:

@@ -130,13 +130,15 @@ def phases(segment, names, dt, speed_1, T_1) -> list[Phase]:
     """The cycle at the motor, segment by segment: ``segment`` gives each sample's segment number
     (contiguous, from 0), ``names`` each segment's phase; durations, speeds and torques per sample
     (SI float arrays)."""
-    segment, dt, v, T = (np.asarray(x) for x in (segment, dt, speed_1, T_1))
-    starts = np.searchsorted(segment, np.arange(len(names)))
-    duration = np.add.reduceat(dt, starts)
-    speed = np.add.reduceat(v * dt, starts) / duration
-    rms = np.sqrt(np.add.reduceat(T**2 * dt, starts) / duration)
-    peak = np.maximum.reduceat(np.abs(T), starts)
-    return [Phase(str(n), float(t), float(w), float(r), float(p)) for n, t, w, r, p in zip(names, duration, speed, rms, peak)]
+    segment, dt, v, T = (np.asarray(x, float) for x in (segment, dt, speed_1, T_1))
+    bounds = [*np.searchsorted(segment, np.arange(len(names))), len(segment)]
+    out = []
+    for name, a, b in zip(names, bounds[:-1], bounds[1:]):  # a few segments: one pass each
+        t, torque = dt[a:b], T[a:b]
+        duration = float(t.sum())
+        out.append(Phase(str(name), duration, float(np.sum(v[a:b] * t) / duration), float(T_1rms.si(T_1k=torque, t_k=t)),
+                         float(np.abs(torque).max())))
+    return out
 
 
 @dataclass(frozen=True)

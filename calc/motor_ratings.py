@@ -49,6 +49,7 @@ from .errors import CalcError
 from .checks import CheckArray
 from .formula import Formula, Symbol
 from .mechanism import RADIAN
+from .profile import n_2m
 from .selection import Candidate, Selection
 from .units import Q_, Value
 
@@ -252,11 +253,6 @@ def s1_limit(cat: Catalog, speed: float, curves: Curves | None) -> np.ndarray:
     return out
 
 
-def mean_speed(speed: np.ndarray, dt: np.ndarray) -> float:
-    """The cycle's mean speed magnitude, each sample weighed by its duration (rad/s)."""
-    return float(np.sum(np.abs(speed) * dt) / np.sum(dt))
-
-
 @dataclass(kw_only=True)
 class MotorCandidate(Candidate):
     """A catalog motor with its checks, its ratings and the form of its characteristic."""
@@ -313,7 +309,7 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | Non
     at = np.arange(rows)
     worst_torque = np.abs(cycle.torque[at, k])
     worst_limit = limit[at, k]
-    n_mean = mean_speed(cycle.speed, cycle.dt)
+    n_mean = float(n_2m.si(n_2k=cycle.speed, t_k=cycle.dt))  # the mean over every sample, pauses included
     s1 = s1_limit(cat, n_mean, curves)
     on_curve = ~np.isnan(s1)
     top = float(np.max(np.abs(cycle.speed)))

@@ -245,3 +245,20 @@ def test_a_noisy_record_of_an_s_curve_keeps_its_four_phases():
     record = record_samples(times, speed)
     assert [int(p) for p in record.segment_phases] == [ACCEL, CONST, DECEL, PAUSE]
     assert record.durations == pytest.approx([0.15, 0.2, 0.15, 1.0], abs=0.021)
+
+
+def test_the_steps_of_a_move_decelerating_slower_than_it_accelerates(tmp_path):
+    # A quarter turn in 1 s, accelerating in 0.1 s and decelerating in 0.2 s, no jerk, a table of
+    # 1 kg·m² without friction. By hand: ω_2max = (π/2) / (1 − 0.1/2 − 0.2/2) = 1.84800 rad/s,
+    # α = 1.84800 / 0.1 = 18.4800 rad/s², decelerating 1.84800 / 0.2 = 9.24000 rad/s²; the torques
+    # J_L·α: 18.48 N·m while accelerating, −9.24 N·m while decelerating.
+    case = tmp_path / "table.toml"
+    case.write_text('title = "table"\n[mechanism]\ntype = "rotary"\ninertia = "1 kg*m**2"\n'
+                    '[[move]]\ndistance = "90 deg"\ntime = "1 s"\naccel_time = "0.1 s"\ndecel_time = "0.2 s"\n[[move]]\ndwell = "1 s"\n')
+    steps = dict(evaluate(read_case(case)).sections["motion"].steps)
+    omega = (np.pi / 2) / 0.85
+    assert steps["Move 1: peak output speed"].result.m_as("rad/s") == pytest.approx(omega, rel=1e-12)
+    assert steps["Move 1: peak output deceleration"].result.m_as("rad/s**2") == pytest.approx(omega / 0.2, rel=1e-12)
+    torque = {phase: step.result.m_as("N*m") for title, step in steps.items() for phase in ("acceleration", "deceleration")
+              if title.startswith(f"Move 1, {phase}: output torque")}
+    assert torque == pytest.approx({"acceleration": omega / 0.1, "deceleration": -omega / 0.2}, rel=1e-12)

@@ -379,10 +379,11 @@ def motion_steps(m: Motion) -> list:
         out.append((f"Move {n}: peak output speed", w))
         accel = alpha_2max.step(omega_2max=w.result, t_r=times["t_a"], t_j=Q_(move.jerk_time, "s"))
         out.append((f"Move {n}: peak output acceleration", accel))
+        decel = accel
         if move.decel_time != move.accel_time:
-            out.append((f"Move {n}: peak output deceleration",
-                        alpha_2max.step(omega_2max=w.result, t_r=times["t_d"], t_j=Q_(move.jerk_time, "s"))))
-        for phase, a in (("acceleration", accel.result), ("constant speed", Q_(0.0, "rad/s**2")), ("deceleration", -accel.result)):
+            decel = alpha_2max.step(omega_2max=w.result, t_r=times["t_d"], t_j=Q_(move.jerk_time, "s"))
+            out.append((f"Move {n}: peak output deceleration", decel))
+        for phase, a in (("acceleration", accel.result), ("constant speed", Q_(0.0, "rad/s**2")), ("deceleration", -decel.result)):
             out += [(f"Move {n}, {phase}: {step.formula.result.description}", step) for step in k.steps(w.result, a)]
     return out
 

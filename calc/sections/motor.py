@@ -58,19 +58,19 @@ def motor_side_coupling(case: Case) -> tuple:
     return cc.catalog["J"][row], part
 
 
-def rotor_inertia(case: Case, J_1, motor_inertia_given: bool | None = None) -> tuple:
+def rotor_inertia(case: Case, J_1, catalog_rotors: bool = False) -> tuple:
     """What the rotor term of a sampled cycle adds to the motor's inertia, for gearbox rows of
     input inertia ``J_1`` (an array, NaN where the catalog gives none): ``(J_1 with a motor-side
     coupling's whole inertia, that coupling's inertia or None, what the term lacks or None,
-    notes)``. The term lacks the motor's inertia where the case gives none, and the coupling's
-    where its catalog gives none."""
+    notes)``. The term lacks the motor's inertia where the case gives none (and ``catalog_rotors``
+    is not set: each catalog motor brings its own), and the coupling's where its catalog gives none."""
     J_c, coupling_part = motor_side_coupling(case)
     notes, missing = [], None
     if J_c is not None:
         notes.append(f"the motor-side coupling {coupling_part} turns with the motor: its whole inertia J = {fmt(J_c, 'kg*cm**2')} is added to J_1")
         if np.isnan(J_c.magnitude):
             missing = f"the rotor term needs the inertia J of the motor-side coupling {coupling_part}, which its catalog does not give"
-    if not (case.motor_inertia is not None if motor_inertia_given is None else motor_inertia_given):
+    if case.motor_inertia is None and not catalog_rotors:
         missing = "the rotor term (J_motor + J_1) · α_1 needs the motor's inertia (motor.inertia)"
     return (J_1 if J_c is None else J_1 + J_c), J_c, missing, notes
 
@@ -269,9 +269,8 @@ def _evaluate(case: Case) -> MotorResult:
     notes = list(t.notes)
     J_1 = J_c = None
     missing = None
-    given_inertia = True if case.motor_catalog is not None else None  # a catalog row gives the rotor's
     if out.sampled:
-        J_1, J_c, missing, more = rotor_inertia(case, t.J_1, given_inertia)  # for the motor shaft's clamping hub
+        J_1, J_c, missing, more = rotor_inertia(case, t.J_1, catalog_rotors=case.motor_catalog is not None)  # for the motor shaft's clamping hub
         notes += more
         if missing is None and np.isnan(J_1[0].magnitude):
             missing = f"the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for {t.part}"

@@ -23,8 +23,8 @@ from ..case import Case
 from ..catalog import display_path
 from ..combinations import RULE, CycleMoments, search
 from ..errors import CalcError
-from ..gearbox import select_gearbox, shock_factor
-from ..profile import Z_h, duty
+from ..gearbox import T_2max, select_gearbox, shock_factor
+from ..profile import Z_h
 from ..units import sig
 from . import drive
 from .common import Verdict
@@ -130,11 +130,10 @@ def search_pairs(case: Case) -> PairSearch:
     gear = gear.rows(~gear.partial)
     inputs = {**selection_inputs(case), "motor_peak_torque": None, "motor_inertia": None}
     sel = select_gearbox(case.profile, gear, hubs=hubs, **inputs)
-    d = duty(case.profile)
     f_s = float(shock_factor(Z_h(t_cycle=case.profile.t_cycle), inputs["shock_factors"]))
     i, eta = gear["ratio"].m_as(""), gear["eta"].m_as("")
-    # T_2max = T_1B · i · f_s · η <= T_2B (E4): the highest motor peak each row takes, in S5
-    peak_limit = gear["T_2B"].m_as("N*m") / (i * f_s * eta) if d.mode == "S5" else np.full(len(gear), np.inf)
+    # T_2max <= T_2B (E4): the highest motor peak each row takes, in S5 (T_2max is T_1B times the rest)
+    peak_limit = gear["T_2B"].m_as("N*m") / T_2max.si(T_1B=1.0, i=i, f_s=f_s, eta=eta) if sel.mode == "S5" else np.full(len(gear), np.inf)
     J_L = case.load_inertia
     motors = drive.motor_catalog(case)
     motors = motors.rows(~motors.partial)
@@ -152,7 +151,7 @@ def search_pairs(case: Case) -> PairSearch:
     result = search(
         moments, float(out.n_2max.m_as("rad/s")),
         {"i": i, "eta": eta, "J_1": J_1, "passes": sel.passes.astype(float), "peak_limit": peak_limit,
-         "size": gear["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m"), "J_L": 0.0 if J_L is None else float(J_L.m_as("kg*m**2"))},
+         "size": gear["T_2B" if sel.mode == "S5" else "T_2N"].m_as("N*m"), "J_L": 0.0 if J_L is None else float(J_L.m_as("kg*m**2"))},
         {"J": motors["J"].m_as("kg*m**2"), "rated_torque": motors["M_N"].m_as("N*m"), "peak_torque": motors["M_max"].m_as("N*m"),
          "max_speed": motors["n_max"].m_as("rad/s")},
         case.motor_max_inertia_ratio[0],
