@@ -14,7 +14,7 @@ from calc.cycle import SampledCycle
 from calc.motor import OutputLoad, T_1_back, T_1_drive, T_1rms, alpha_1, motor_load, motor_torque
 from calc.sections import duty, evaluate
 
-from .conftest import EXAMPLE, HEAD_TOML, PROFILE_TOML, run
+from .conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, run
 
 # A trapezoid move of a rotary load, by hand: J_L = 0.1 kg·m², friction 2 N·m against the motion;
 # accelerate at 100 rad/s² for 0.1 s to 10 rad/s, run 0.3 s, brake at -100 rad/s² for 0.1 s, dwell
@@ -351,3 +351,20 @@ def test_the_reports_inputs_list_the_motors_ratings_and_the_stop_torque(write_ca
     for key in ("motor.rated_torque", "motor.max_speed", "gearbox.emergency_stop_torque"):
         assert case_key(key) in inputs
     assert "T_{2,\\mathrm{stop}}" in inputs and "200" in inputs
+
+
+def test_typed_segments_pick_their_motor_from_the_catalog():
+    """The example's derived segments with the dwell shortened are typed (no rotor term); the motor
+    is still the catalog's choice, and each phase's torque at the motor is T_2 through the gearbox."""
+    from calc.review import with_changes
+
+    typed = with_changes(read_case(DERIVED_EXAMPLE), durations=Q_(np.array([0.15, 0.2, 0.15, 0.25]), "s"))
+    result = evaluate(typed)
+    motor = result.sections["motor"]
+    assert typed.motion is None and result.to_json()["gearbox"]["selected"] == "NPT015-10"
+    # by hand, through the chosen NPT015-10 (S1 now: ED = 0.5 / 0.75 = 66.7 %), eta = 0.97 and i = 10:
+    #   driving:  T_1 = T_2 / (i · eta) = 7.82691 / 9.7 = 0.80690 N·m; 3 / 9.7 = 0.30928 N·m
+    #   braking:  T_1 = T_2 · eta / i = 2.34763 · 0.097 = 0.22772 N·m (magnitude)
+    peaks = [p.peak_torque for p in motor.phases]
+    assert [p.phase for p in motor.phases] == ["accel", "const", "decel", "pause"]
+    assert np.allclose(peaks, [0.80690, 0.30928, 0.22772, 0.0], atol=5e-5)

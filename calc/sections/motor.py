@@ -343,6 +343,7 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     sel = select_motors(cat, cycle, case.motor_dc_link, curves, limit, where, float(case.profile.t_cycle.m_as("s")))
     best = int(sel.order[0])
     T_best = motor_torque(out.torque, out.speed, t.i, t.eta, out.alpha_2, J[best:best + 1, None], J_1q)  # every sample, in time
+    T_best = Q_(np.atleast_2d(T_best.m_as("N*m")), "N*m")  # one row, the chosen motor's, with or without a rotor term
     load = MotorLoad(T_best, np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
     return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out, J_motor=J[best], selection=sel,
                        segments=segments_of(case))
