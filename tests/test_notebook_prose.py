@@ -1,19 +1,43 @@
-"""Prose that cannot drift: every number an answer quotes in markdown is one its code prints or
-states. For each markdown cell of a checked notebook, each number in its text (outside headings
-and links) must appear, at the precision quoted, among the stored outputs or the code literals of
-the code cells it introduces (the run of code cells just after it); comments do not count, being
+"""Prose that cannot drift: every number a notebook quotes in markdown is one its code prints or
+states. In the answers, for each markdown cell each number in its text (outside headings and
+links) must appear, at the precision quoted, among the stored outputs or the code literals of the
+code cells it introduces (the run of code cells just after it); comments do not count, being
 prose themselves. Integers up to 10 are exempt (counts, list items, exponents), and so are the
-digits of a part's name (NPT035-10)."""
+digits of a part's name (NPT035-10).
+
+In the course's notebooks, whose prose explains a figure or a table above or below it, a number
+must appear among the outputs or code literals of any code cell of the notebook; the names of
+standards (ISO 286) and of files are not numbers, and the exercises and self-checks pose
+hypothetical values (their answers are checked above). A figure quoted from a source, not computed,
+is listed in ``QUOTED`` with where it comes from."""
 
 import json
 import re
+from pathlib import Path
 
 import pytest
 
 from .conftest import ROOT
 
-# The notebooks whose prose is checked number by number.
+# The notebooks whose prose is checked number by number, beside the code it introduces.
 CHECKED = ("notebooks/instructor/99-answers.ipynb",)
+# The course's notebooks: each number of their prose is printed or stated somewhere in them.
+COURSE = tuple(sorted(str(p.relative_to(ROOT)) for p in (ROOT / "notebooks").glob("*.ipynb")))
+# Figures the course quotes from a source rather than computing: (notebook, number): the source.
+QUOTED = {
+    ("02-s1-selection.ipynb", "6.6"): "ISO 6336-2's life factor for flank pitting, as a torque exponent",
+    ("03-s5-selection.ipynb", "3600"): "seconds per hour, in the source's Z_h = 3600 / t_cycle",
+    ("03a-motion-and-mechanism.ipynb", "60"): "the inch case file's load, 60 lb (cases/linear-axis-inch.toml)",
+    ("03a-motion-and-mechanism.ipynb", "200"): "the pinion's travel per revolution, pi · 63.66 mm",
+    ("04-couplings.ipynb", "0.012"): "ISO 286-2: k6 over 10 up to 18 mm (calc.fits, tests/test_fits.py)",
+    ("04-couplings.ipynb", "0.015"): "ISO 286-2: k6 over 18 up to 30 mm (calc.fits, tests/test_fits.py)",
+    ("04-couplings.ipynb", "0.018"): "ISO 286-2: k6 over 30 up to 50 mm (calc.fits, tests/test_fits.py)",
+    ("05-stiffness-backlash-lost-motion.ipynb", "50"): "the band of the loop the stiffness is read in, 50 % to 100 % of T_N (calc.hysteresis)",
+    ("06-transmission-and-positioning-accuracy.ipynb", "31"): "the generated trace's tooth mesh, 31 per input turn (data/transmission-NPT035-10-generated.csv)",
+    ("06-transmission-and-positioning-accuracy.ipynb", "310"): "the same mesh per output turn, 31 · 10",
+}
+NAMES = re.compile(r"\b(?:ISO|IEC|DIN)\s[\d-]+|[\w/.-]+\.(?:ipynb|toml|csv|py|png)\b")  # standards and files
+POSED = re.compile(r"^## (?:Exercises|Self-check)", re.MULTILINE)  # questions: hypothetical values
 NUMBER = re.compile(r"(?<![\w.])(?<!\w-)\d+(?:[ ,]\d{3})*(?:\.\d+)?")
 NOT_PROSE = re.compile(r"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s", re.MULTILINE)  # headings, link targets, errata, "02 · "
 
@@ -54,6 +78,36 @@ def unfounded(notebook: dict) -> list[str]:
             j += 1
         found += [f"cell {k}: {n} is quoted but not printed beside it" for n in quoted(text(cell["source"])) if not matches(n, beside)]
     return found
+
+
+def unfounded_anywhere(notebook: dict, name: str) -> list[str]:
+    """Each number of a course notebook's prose that none of its code cells prints or states."""
+    cells = notebook["cells"]
+    everywhere = [v for cell in cells if cell["cell_type"] == "code" for v in stated(cell)]
+    found = []
+    for k, cell in enumerate(cells):
+        source = text(cell["source"])
+        if cell["cell_type"] != "markdown" or POSED.search(source):
+            continue
+        found += [f"cell {k}: {n} is quoted but printed nowhere" for n in quoted(NAMES.sub(" ", source))
+                  if not matches(n, everywhere) and (name, n) not in QUOTED]
+    return found
+
+
+@pytest.mark.parametrize("path", COURSE)
+def test_every_number_the_course_quotes_is_printed(path):
+    problems = unfounded_anywhere(json.loads((ROOT / path).read_text()), Path(path).name)
+    assert not problems, problems
+
+
+def test_the_course_check_finds_a_stale_figure():
+    code = {"cell_type": "code", "source": "i = 10", "outputs": [{"output_type": "stream", "name": "stdout", "text": "C = 20.1 N·m/arcmin, the gearbox 91 % of the twist"}]}
+    notebook = {"cells": [code, {"cell_type": "markdown", "source": "See ISO 286 and 05-x.ipynb: 91 % of the twist, C = 20.1 N·m/arcmin"}]}
+    assert unfounded_anywhere(notebook, "05-x.ipynb") == []
+    notebook["cells"][1]["source"] = "97 % of the twist, C = 21.35 N·m/arcmin"
+    assert unfounded_anywhere(notebook, "05-x.ipynb") == ["cell 1: 97 is quoted but printed nowhere", "cell 1: 21.35 is quoted but printed nowhere"]
+    notebook["cells"][1]["source"] = "## Exercises\n\nTry 97 % and 21.35 N·m/arcmin."
+    assert unfounded_anywhere(notebook, "05-x.ipynb") == []
 
 
 @pytest.mark.parametrize("path", CHECKED)
