@@ -148,7 +148,7 @@ class DesignReview:
         self.undo_button.on_click(lambda _: self.undo())
         self.redo_button.on_click(lambda _: self.redo())
         self.report_link = report_link
-        self.all_candidates = w.Checkbox(description="all candidates", indent=False,
+        self.all_candidates = w.Checkbox(description="all candidates", indent=False, layout=w.Layout(width="auto", flex="1 1 auto"),
                                          tooltip=f"list every candidate in the tables, not the best {SHOWN_CANDIDATES}")
         self.controls_box = w.VBox(layout=w.Layout(overflow="hidden"))
         self.state = w.HTML(state_html())
@@ -179,7 +179,7 @@ class DesignReview:
         top = w.HBox([self.case_file, self.reset, self.undo_button, self.redo_button], layout=w.Layout(width="100%"))
         self.all_candidates.observe(self._changed, names="value")
         self.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the results",
-                                     style={"button_width": "6em"})
+                                     style={"button_width": "7.5em"}, layout=w.Layout(width="auto", flex="0 0 auto"))
         self.units.observe(self._changed, names="value")
         left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, w.HBox([self.all_candidates, self.units]), keep, self.load_cycle],
                       layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
@@ -251,7 +251,7 @@ class DesignReview:
         self._messages[spec.key] = message
         if spec.options:
             control = w.Dropdown(options=[(_text_of(r), r) for r in spec.options], value=spec.value, tooltip=spec.text,
-                                 layout=w.Layout(width="8em"))
+                                 layout=w.Layout(width="auto", flex="1 1 auto"))  # the row's width: no choice cut short
             self.controls[spec.key] = control
             line = w.HBox([label, control])
         else:
