@@ -158,13 +158,15 @@ def _significant(values, digits: int = 12) -> np.ndarray:
     return np.where(scaled, np.round(x * scale) / scale, x)
 
 
-def rank(passes, size, worst_utilization, parts, illustrative=None) -> np.ndarray:
-    """Indices best first: passing first, published before illustrative rows, then smallest size
-    and larger margin; failing rows after, closest to passing first (the rule of :mod:`calc.gearbox`)."""
+def rank(passes, size, worst_utilization, parts, later=None) -> np.ndarray:
+    """Indices best first: passing first, and among them the rows not marked ``later`` (an
+    illustrative row; a gearbox whose drive train is not shown to clear the excitation) before the
+    others, then smallest size and larger margin; failing rows after, closest to passing first (the
+    rule of :mod:`calc.gearbox`)."""
     passes = np.asarray(passes, bool)
     worst = np.where(np.isnan(worst_utilization), np.inf, _significant(worst_utilization))
     size_key = np.where(passes, _significant(size), 0.0)
-    shown_later = np.zeros(len(passes), bool) if illustrative is None else passes & np.asarray(illustrative, bool)
+    shown_later = np.zeros(len(passes), bool) if later is None else passes & np.asarray(later, bool)
     keys = (worst, size_key, shown_later, ~passes)
     order = np.lexsort(keys)
     # Rows tied on every key go by part name. Names are sorted within the tied runs only: sorting

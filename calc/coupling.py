@@ -697,7 +697,7 @@ def select_coupling(
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
     size = catalog["T_KN"].m_as("N*m")
     size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)  # a safety coupling rated by its T_A range alone
-    order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
+    order = rank(passes, size, worst, catalog.parts, later=catalog.illustrative)
     return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes,
                              drive_train, chain, modes)
 

@@ -34,6 +34,7 @@ from .formula import Formula, Symbol
 from . import selection
 from .checks import CheckArray, rank
 from .profile import Profile, T_2m, Z_h, duty, n_2m
+from .torsion import CouplingSpan, highest_first_mode
 from .selection import Selection
 from .units import Q_, Value, as_kind, pretty_unit
 
@@ -343,6 +344,11 @@ class GearboxSelection(Selection):
         )
 
 
+#: The mode of the drive train's check (``2 f_er <= f_1,max``): for information and the ranking, in
+#: either operating mode.
+TRAIN = "drive train"
+
+
 def governs(check: CheckArray, mode: str) -> bool:
     """Whether a gearbox check decides the verdict in operating mode ``mode`` (E3): a check of that
     mode does; a check of no mode (the emergency stop, the output bearing, the clamping hub) does
@@ -376,6 +382,7 @@ def select_gearbox(
     hubs: Catalog | None = None,
     motor_shaft=None,
     shock_factors=SHOCK_FACTORS,
+    coupling_span: CouplingSpan | None = None,
 ) -> GearboxSelection:
     """Check every row of ``catalog`` (already narrowed to the desired ratio, or to one part).
 
@@ -394,7 +401,13 @@ def select_gearbox(
     ``motor_shaft``, checked ``d <= d_hub,max``). The output bearing's checks
     (:func:`bearing_checks`) are made when ``output_load`` gives a force; they and the hub check
     govern in both modes. ``shock_factors`` is the table of ``f_s`` (:data:`SHOCK_FACTORS`, the
-    source's, by default).
+    source's, by default). With ``coupling_span`` (the couplings a case may fit between motor and
+    gearbox) each row's drive train is checked, for information, for the highest first mode any of
+    those couplings gives it, ``2 f_er <= f_1,max`` (:func:`calc.torsion.highest_first_mode`). The
+    gearbox is the train's soft spring: the ranking puts the passing rows this check shows to clear
+    the excitation before the others (a row it fails, or cannot check for want of ``C_t21``), as it
+    puts published rows before illustrative ones; the resonance itself is decided by the coupling
+    that is chosen (:func:`calc.coupling.select_coupling`), not here.
     """
     d = duty(profile)
     i = catalog["ratio"]
@@ -431,6 +444,15 @@ def select_gearbox(
                 "z_2, which understates it by F_2r · z_2"
             )
     J_1, d_hub, d_max = clamping_hubs(catalog, hubs, motor_shaft)
+    later = catalog.illustrative
+    if coupling_span is not None:
+        f_1 = highest_first_mode(coupling_span, Q_(J_1, "kg*cm**2"), catalog["C_t21"], i)
+        train = CheckArray("f_1", TRAIN, "2 f_er <= f_1,max", coupling_span.f_min * np.ones(len(catalog)), f_1, "Hz",
+                           unrated="the catalog gives no C_t21, or no J_1 for the motor's shaft")
+        checks.append(train)
+        later = later | ~(train.passes & ~train.unrated_rows)
+        notes.append(f"f_1,max is the drive train's first mode with the one of {coupling_span.couplings} that gives it the highest; "
+                     "passing gearboxes whose f_1,max clears 2 f_er rank first; the coupling section checks the coupling it chooses")
     if motor_shaft is not None:
         shaft = as_kind(motor_shaft, "length", "motor.shaft")
         checks.append(
@@ -445,7 +467,7 @@ def select_gearbox(
     # fmax: a row that a check cannot rate (no T_2Not, no bearing rating) is ranked on its others
     worst = np.fmax.reduce([c.ranked_utilization for c in governing if c.made], axis=0)
     size = catalog["T_2B" if d.mode == "S5" else "T_2N"].m_as("N*m")
-    order = rank(passes, size, worst, catalog.parts, illustrative=catalog.illustrative)
+    order = rank(passes, size, worst, catalog.parts, later=later)
     return GearboxSelection(
         catalog, d.mode, checks, t2max, lam, passes, worst, order, Q_(J_1, "kg*cm**2"), Q_(d_hub, "mm"), notes
     )

@@ -192,3 +192,48 @@ def natural_frequencies(inertias, stiffnesses, where: str = "drive train"):
     out = np.full(J.shape[:-1] + (n - 1,), np.nan)
     out[valid] = omega / (2 * np.pi)
     return from_si(out, "frequency", "Hz")
+
+
+@dataclass(frozen=True)
+class CouplingSpan:
+    """The couplings a case may fit between motor and gearbox, and what the drive train around
+    them holds fixed: enough to bound, for any gearbox, the first mode its train can reach.
+
+    ``drive_inertia`` is the motor's rotor, ``load_inertia`` the load at the gearbox output;
+    ``stiffness`` and ``inertia`` are arrays over the couplings (each its ``C_T`` and its whole
+    ``J``, half on each end of its spring); ``f_min`` is the lowest first mode allowed (``2 f_er``,
+    E7); ``couplings`` says which couplings they are."""
+
+    drive_inertia: object
+    load_inertia: object
+    stiffness: object
+    inertia: object
+    f_min: object
+    couplings: str
+
+
+def highest_first_mode(span: CouplingSpan, J_1, C_t21, i):
+    """For each gearbox (arrays ``J_1``, ``C_t21`` and ``i`` over gearboxes), the highest first
+    natural frequency of the train motor, coupling, gearbox, load that any coupling of ``span``
+    gives it: the train lumped as :func:`lumped` does, seen from the gearbox input (the load as
+    ``J_L / i²``, the gearbox's spring as ``C_t21 / i²``). NaN for a gearbox whose ``J_1`` or
+    ``C_t21`` is unknown.
+
+    A gearbox is the train's soft spring: where even the best coupling leaves the first mode below
+    ``2 f_er``, no coupling can rescue it.
+
+    >>> from calc.units import Q_
+    >>> span = CouplingSpan(Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2"), Q_([25_000, 6_000], "N*m/rad"),
+    ...                     Q_([1.0, 0.6], "kg*cm**2"), Q_(200, "Hz"), "two bellows")
+    >>> highest_first_mode(span, Q_([0.93], "kg*cm**2"), Q_([22], "N*m/arcmin"), Q_([10], "")).m_as("Hz").round(1).tolist()
+    [208.0]
+    """
+    half = span.inertia[None, :] / 2
+    gearbox = Member("gearbox", J_1[:, None], gearbox_at_input(C_t21=C_t21, i=i)[:, None])
+    train = lumped([Member("motor", span.drive_inertia), Member("coupling", half, span.stiffness[None, :], half), gearbox,
+                    Member("load", load_at_input(J_L=span.load_inertia, i=i)[:, None])], "drive train bound")
+    first = train.natural_frequencies().m_as("Hz")[..., 0]
+    best = np.full(first.shape[0], np.nan)
+    known = ~np.isnan(first).all(axis=1)
+    best[known] = np.nanmax(first[known], axis=1)
+    return from_si(best, "frequency", "Hz")

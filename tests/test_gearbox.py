@@ -155,7 +155,7 @@ def test_rank_puts_published_rows_before_illustrative_ones():
     size = np.array([50.0, 80.0, 10.0])
     worst = np.array([0.5, 0.5, 1.2])
     parts = np.array(["small-illustrative", "large-published", "failing"], dtype=object)
-    order = rank(passes, size, worst, parts, illustrative=np.array([True, False, True]))
+    order = rank(passes, size, worst, parts, later=np.array([True, False, True]))
     assert list(order) == [1, 0, 2]
 
 
@@ -184,7 +184,7 @@ def test_rank_breaks_ties_by_part_name_as_a_full_sort_does(rows, seed):
     parts = np.array([f"P{k:03d}" for k in np.random.default_rng(seed).permutation(len(rows))], dtype=object)
     passes, illustrative = passes.astype(bool), illustrative.astype(bool)
     full = np.lexsort((parts.astype(str), np.where(np.isnan(worst), np.inf, worst), np.where(passes, size, 0.0), passes & illustrative, ~passes))
-    assert list(rank(passes, size, worst, parts, illustrative=illustrative)) == list(full)
+    assert list(rank(passes, size, worst, parts, later=illustrative)) == list(full)
 
 
 def test_a_required_speed_equal_to_the_rating_passes(catalog):

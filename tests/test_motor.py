@@ -361,8 +361,9 @@ def test_typed_segments_pick_their_motor_from_the_catalog():
     typed = with_changes(read_case(DERIVED_EXAMPLE), durations=Q_(np.array([0.15, 0.2, 0.15, 0.25]), "s"))
     result = evaluate(typed)
     motor = result.sections["motor"]
-    assert typed.motion is None and result.to_json()["gearbox"]["selected"] == "NPT015-10"
-    # by hand, through the chosen NPT015-10 (S1 now: ED = 0.5 / 0.75 = 66.7 %), eta = 0.97 and i = 10:
+    assert typed.motion is None and result.to_json()["gearbox"]["selected"] == "NPT035-10"
+    # by hand, through the chosen NPT035-10 (S1 now: ED = 0.5 / 0.75 = 66.7 %; NPT015-10 would carry the
+    # cycle, but no coupling lifts its drive train above 2 f_er), eta = 0.97 and i = 10:
     #   driving:  T_1 = T_2 / (i · eta) = 7.82691 / 9.7 = 0.80690 N·m; 3 / 9.7 = 0.30928 N·m
     #   braking:  T_1 = T_2 · eta / i = 2.34763 · 0.097 = 0.22772 N·m (magnitude)
     peaks = [p.peak_torque for p in motor.phases]

@@ -2,6 +2,7 @@
 frequencies against the source's two-mass formula (E7) and a three-mass hand calculation, the laws
 of the eigenproblem, and the chain in the coupling selection and the case's results."""
 
+import dataclasses
 import math
 
 import numpy as np
@@ -17,7 +18,7 @@ from calc.sections import evaluate
 from calc.case import read_case
 from calc.torsion import Member, gearbox_at_input, inertia_at_output, load_at_input, lumped, natural_frequencies
 
-from .conftest import EXAMPLE as EXAMPLE_CASE
+from .conftest import DERIVED_EXAMPLE, EXAMPLE as EXAMPLE_CASE
 
 KG_CM2 = "kg*cm**2"
 
@@ -275,3 +276,60 @@ def test_an_informing_check_without_a_value_says_why():
     check = next(c for c in s.checks if c.name == "f_1").at(0)
     assert check.passes is None and check.governs is False
     assert check.not_made == "the first mode of the drive train needs the coupling's inertia J, which the catalog leaves empty"
+
+
+def test_the_highest_first_mode_a_coupling_can_give_by_hand():
+    # NPT025-10 (C_t21 = 8.5 N·m/arcmin, J_1 = 0.5 kg·cm² for the 19 mm hub, i = 10) behind the
+    # example's SGMUH-10DA (1.74 kg·cm²), the table 1500 kg·cm². Of the bellows couplings the light
+    # DKN-20-L32 (1500 N·m/rad, 0.025 kg·cm²) gives the highest first mode:
+    #   J_1 = 1.74 + 0.0125 = 1.7525, J_2 = 0.0125 + 0.5 = 0.5125, J_3 = 15 kg·cm²;
+    #   C_1 = 1500 N·m/rad, C_2 = 8.5 · 10800/π / 10² = 292.208 N·m/rad;
+    #   b = C_1 (1/J_1 + 1/J_2) + C_2 (1/J_2 + 1/J_3) = 4.37239e7 1/s², c = C_1 C_2 ΣJ / ΠJ = 5.61704e13 1/s⁴;
+    #   ω² = (b - √(b² - 4c)) / 2 = 1.32480e6 1/s², f = √ω² / 2π = 183.19 Hz.
+    from calc.coupling import SCHEMA as COUPLING_SCHEMA
+    from calc.torsion import CouplingSpan, highest_first_mode
+
+    couplings = load_catalog(resolve("couplings", None, "catalog"), COUPLING_SCHEMA)
+    bellows = couplings.rows((couplings.text["type"] == "bellows") & ~np.isnan(couplings["C_T"].magnitude))
+    span = CouplingSpan(Q_(1.74, KG_CM2), Q_(1500, KG_CM2), bellows["C_T"], bellows["J"], Q_(200, "Hz"), "bellows")
+    J_1, C_t21, i = Q_([0.5, 0.93, 0.5], KG_CM2), Q_([8.5, 22, np.nan], "N*m/arcmin"), Q_([10, 10, 10], "")
+    best = highest_first_mode(span, J_1, C_t21, i).m_as("Hz")
+    assert best[0] == pytest.approx(183.19, abs=0.01) and np.isnan(best[2])
+    # The bound is the highest of the chains with each coupling alone (calc.torsion.lumped).
+    each = [lumped([Member("motor", Q_(1.74, KG_CM2)), Member("coupling", J / 2, C, J / 2),
+                    Member("gearbox", Q_(0.93, KG_CM2), gearbox_at_input(C_t21=Q_(22, "N*m/arcmin"), i=Q_(10, ""))),
+                    Member("load", Q_(15, KG_CM2))]).natural_frequencies().m_as("Hz")[0]
+            for C, J in zip(bellows["C_T"], bellows["J"])]
+    assert best[1] == pytest.approx(max(each), rel=1e-12)
+
+
+def test_the_gearbox_ranks_first_the_rows_whose_drive_train_clears_the_excitation():
+    # The example with a 3.2 s dwell: f_s = 1.0, T_2max = 6.5 · 10 · 1.0 · 0.97 = 63.05 N·m, which
+    # NPT025-10 (T_2B 90 N·m) carries. But its drive train stays at 183.2 Hz with the best bellows
+    # coupling (the test above), below 2 f_er = 200 Hz: no coupling could pass. NPT035-10, whose
+    # train reaches 265.5 Hz, ranks first; NPT025-10 still passes its own checks, the train check
+    # informing (it does not govern), and the coupling section decides the resonance.
+    from calc.review.inputs import with_inputs
+
+    case = with_inputs(read_case(DERIVED_EXAMPLE), {"move[2].dwell": Q_(3.2, "s")})
+    result = evaluate(case)
+    g = result.to_json()["gearbox"]
+    train = {c["part"]: next(k for k in c["checks"] if k["name"] == "f_1") for c in g["candidates"]}
+    assert [c["part"] for c in g["candidates"]][:2] == ["NPT035-10", "NPT025-10"] and g["selected"] == "NPT035-10"
+    assert g["candidates"][1]["passes"] is True
+    assert train["NPT025-10"]["rated"]["value"] == pytest.approx(183.19, abs=0.01) and train["NPT025-10"]["passes"] is False
+    assert train["NPT025-10"]["governs"] is False and train["NPT025-10"]["mode"] == "drive train"
+    assert train["NPT035-10"]["rated"]["value"] == pytest.approx(265.5, abs=0.1)
+    assert train["NPT045-10"]["passes"] is None and "C_t21" in train["NPT045-10"]["not_made"]  # no C_t21: ranked after
+    assert result.verdict.word == "PASS" and result.to_json()["coupling"]["selected"] == "AKN-18"
+
+
+def test_the_train_check_needs_a_coupling_between_motor_and_gearbox(write_case):
+    # Without [coupling], or with the coupling on the output side, the gearbox has no train check.
+    from calc.sections.coupling import coupling_span
+
+    assert coupling_span(read_case(EXAMPLE_CASE)) is not None  # side = "input", f_er, both inertias
+    text = DERIVED_EXAMPLE.read_text(encoding="utf-8")
+    assert coupling_span(read_case(write_case(text.replace('side = "input"', 'side = "output"')))) is None
+    without = read_case(EXAMPLE_CASE)
+    assert coupling_span(dataclasses.replace(without, sections={k: v for k, v in without.sections.items() if k != "coupling"})) is None

@@ -136,13 +136,13 @@ def candidates_table(candidates: list, selected: str | None, caption: str, inert
     for c in candidates:
         by = {k.name: k for k in c.checks}
         cells = [latex_escape(c.part)]
-        cells += [(r"\color{infogrey}" if not governs[n] else "") + util(by[n].utilization) if n in by else "–" for n in names]
+        cells += [(r"\color{infogrey}" if not governs[n] else "") + util(by[n].utilization, missing="n/r") if n in by else "–" for n in names]
         if inertia:
             cells.append("–" if c.inertia_ratio is None else f"{c.inertia_ratio:.2f}")
         cells.append(verdict_mark(c.passes) + (r"{} \footnotesize(chosen)" if c.part == selected else ""))
         rows.append(cells)
     cols = "@{}l " + "r " * (len(names) + (1 if inertia else 0)) + "l@{}"
-    note = "Checks: " + "; ".join(prose(criteria[n]) if criteria[n] else latex_escape(n) for n in names) + "."
+    note = "Checks: " + "; ".join(prose(criteria[n]) if criteria[n] else latex_escape(n) for n in names) + ". n/r: the catalog gives no rating."
     if inertia:
         note += rf" ${inertia_ratio.latex()}$, load to motor inertia ratio (E6)."
     return table(cols, header, rows, caption=caption, note=note, small=True, narrow=True)

@@ -62,10 +62,11 @@ def num(quantity, unit: str) -> str:
     return signed(sig(quantity.m_as(unit)))
 
 
-def util(u) -> str:
-    """A utilization, in bold red where it fails the one pass rule (:func:`calc.checks.within_rating`)."""
+def util(u, missing: str = "no rating") -> str:
+    """A utilization, in bold red where it fails the one pass rule (:func:`calc.checks.within_rating`);
+    ``missing`` where there is none (a table of many columns says it shorter)."""
     if u is None or (isinstance(u, float) and np.isnan(u)):
-        return "no rating"
+        return missing
     text = f"{u:.2f}"
     return text if within_rating(u) else rf"\textcolor{{failred}}{{\textbf{{{text}}}}}"
 

@@ -21,7 +21,7 @@ from ..errors import CalcError
 from ..fits import parse_bore
 from ..gearbox import n_1
 from ..profile import Z_h
-from ..torsion import Member, gearbox_at_input, inertia_at_output, load_at_input
+from ..torsion import CouplingSpan, Member, gearbox_at_input, inertia_at_output, load_at_input
 from ..units import Q_, Value, fmt, sig
 from . import gearbox
 from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
@@ -74,22 +74,7 @@ class CouplingCase:
 def read(case: Case) -> CouplingCase:
     """Read ``[coupling]`` key by key; errors name the file and the key."""
     s = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
-    catalog = load_catalogs(s.catalogs("catalog"), case.folder, s.where("catalog"), SCHEMA)
-    check_types(catalog)
-    wanted = s.text("type")
-    if wanted is not None and wanted not in TYPES:
-        raise CalcError(f"{s.where('type')}: unknown coupling type {wanted!r}; expected one of {', '.join(TYPES)}")
-    part = s.text("part")
-    if part is not None:
-        row = catalog.usable_index(part, s.where("part"))
-        if wanted is not None and catalog.text["type"][row] != wanted:
-            raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, but coupling.type is {wanted!r}")
-        catalog = catalog.rows([row])
-    elif wanted is not None:
-        mask = catalog.text["type"] == wanted
-        if not mask.any():
-            raise CalcError(f"{s.where('type')}: the catalog {catalog.shown_name} has no {wanted} coupling")
-        catalog = catalog.rows(mask)
+    catalog, wanted = _candidates(case, s)
     side = s.text("side")
     if side is not None and side not in SIDES:
         raise CalcError(f"{s.where('side')}: expected one of {', '.join(SIDES)}, found {side!r}")
@@ -126,6 +111,48 @@ def read(case: Case) -> CouplingCase:
     missing = {key: text for key, (q, text) in derived.items() if not s.has(key) and q is None}
     steps = [step for key, step in derived_steps.items() if not s.has(key)]
     return CouplingCase(catalog, wanted, side, inputs, bores, notes, missing, *_drive_train(case, side, inputs), steps=steps)
+
+
+def _candidates(case: Case, s: Table) -> tuple[Catalog, str | None]:
+    """The section's coupling catalog narrowed to its ``part`` or ``type``, and the type asked for."""
+    catalog = load_catalogs(s.catalogs("catalog"), case.folder, s.where("catalog"), SCHEMA)
+    check_types(catalog)
+    wanted = s.text("type")
+    if wanted is not None and wanted not in TYPES:
+        raise CalcError(f"{s.where('type')}: unknown coupling type {wanted!r}; expected one of {', '.join(TYPES)}")
+    part = s.text("part")
+    if part is not None:
+        row = catalog.usable_index(part, s.where("part"))
+        if wanted is not None and catalog.text["type"][row] != wanted:
+            raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, but coupling.type is {wanted!r}")
+        return catalog.rows([row]), wanted
+    if wanted is not None:
+        mask = catalog.text["type"] == wanted
+        if not mask.any():
+            raise CalcError(f"{s.where('type')}: the catalog {catalog.shown_name} has no {wanted} coupling")
+        catalog = catalog.rows(mask)
+    return catalog, wanted
+
+
+def coupling_span(case: Case) -> CouplingSpan | None:
+    """The couplings the case may fit between motor and gearbox, with the motor's and the load's
+    inertia and ``2 f_er``: what the gearbox selection bounds each row's drive train with
+    (:func:`calc.gearbox.select_gearbox`). None where the case has no coupling there, or gives no
+    motor inertia, load inertia or excitation frequency, or no candidate has a stiffness and an
+    inertia (a line shaft's stiffness needs its length: line shafts are left out)."""
+    if NAME not in case.sections:
+        return None
+    s = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
+    drive = s.quantity("drive_inertia") if s.has("drive_inertia") else case.motor_inertia
+    if s.text("side") != "input" or not s.has("excitation_frequency") or drive is None or case.load_inertia is None:
+        return None
+    catalog, wanted = _candidates(case, s)
+    known = ~np.isnan(catalog["C_T"].magnitude) & ~np.isnan(catalog["J"].magnitude) & (catalog.text["type"] != "line-shaft")
+    if not known.any():
+        return None
+    rows = catalog.rows(known)
+    which = str(rows.parts[0]) if s.has("part") else f"the {wanted + ' ' if wanted else ''}couplings of {rows.shown_name}"
+    return CouplingSpan(drive, case.load_inertia, rows["C_T"], rows["J"], f_e_min(f_er=s.quantity("excitation_frequency")), which)
 
 
 def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain | None, tuple]:

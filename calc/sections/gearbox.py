@@ -14,6 +14,7 @@ from ..errors import CalcError
 from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
 from ..profile import Z_h, n_2m
 from ..units import Q_, sig
+from . import coupling
 from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
 
 NAME = "gearbox"
@@ -28,7 +29,8 @@ TABLES = (Declared(NAME, (
     Key("shock_factors", "factor table", "the table of the shock factor f_s (E4): source, or a path to a CSV file", default="source"),
 ), "the gearbox: the rows at the desired ratio (or the named part) checked for the duty and ranked"),)
 RANKING = (
-    "passing first; published rows before illustrative ones; then smallest governing torque rating "
+    "passing first; published rows before illustrative ones, and where the case fits a coupling between motor and "
+    "gearbox, rows whose drive train some coupling lifts above 2 f_er (f_1,max) before those it does not; then smallest governing torque rating "
     "(T_2B in S5, T_2N in S1); then lowest worst utilization (the emergency stop's included where the row gives T_2Not); "
     "partial rows are never ranked"
 )
@@ -84,6 +86,7 @@ def selection_inputs(case: Case) -> dict:
         emergency_stop_torque=case.emergency_stop_torque, output_load=case.output_load,
         motor_shaft=None if case.motor_shaft is None else case.motor_shaft.nominal,
         shock_factors=SHOCK_FACTORS if case.shock_factors is None else case.shock_factors,
+        coupling_span=coupling.coupling_span(case),
     )
 
 

@@ -128,7 +128,9 @@ def search_pairs(case: Case) -> PairSearch:
         raise CalcError(f"{case.path}: gearbox: the search of motors and gearboxes needs a [gearbox] table (its catalog gives the gearboxes), found none")
     gear, hubs = catalogs(case)
     gear = gear.rows(~gear.partial)
-    inputs = {**selection_inputs(case), "motor_peak_torque": None, "motor_inertia": None}
+    # Per pair, not per case: the motor's peak and rotor (the drive train's bound needs the rotor; the
+    # case is evaluated with the pair it picks, where the coupling checks the train).
+    inputs = {**selection_inputs(case), "motor_peak_torque": None, "motor_inertia": None, "coupling_span": None}
     sel = select_gearbox(case.profile, gear, hubs=hubs, **inputs)
     f_s = float(shock_factor(Z_h(t_cycle=case.profile.t_cycle), inputs["shock_factors"]))
     i, eta = gear["ratio"].m_as(""), gear["eta"].m_as("")
