@@ -32,7 +32,7 @@ from .bands import factor_table
 from .catalog import Catalog, Column, Rule, Schema, load_catalog, no_less, resolve  # noqa: F401 (load_catalog, resolve: the doctests)
 from .errors import CalcError
 from .fits import Bore, parse_bore
-from .formula import Formula, Symbol
+from .formula import RADIAN, Formula, Symbol
 from . import selection
 from .checks import CheckArray, rank, within_rating
 from .torsion import Chain, Member, lumped
@@ -129,11 +129,6 @@ _C_B = Symbol("C_B", "C_{B}", "stiffness", "N*m/rad", "stiffness of the two bell
 _C_tube = Symbol("C_tube", r"C_{\mathrm{tube}}", "stiffness_length", "N*m**2/rad", "tube stiffness per unit length")
 _T = Symbol("T", "T", "torque", "N*m", "torque through the coupling")
 
-#: The radian as a constant of a formula. With angles counted as a dimension (errata E15), the
-#: law of rotation reads J·α = T·rad: a torque of 1 N·m accelerates 1 kg·m² at 1 rad/s². So a
-#: spring rate in N·m/rad over an inertia gives 1/s² only after that factor; pint, which drops
-#: angles, computes the same number.
-RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad with angles as a dimension, E15)", value="1 rad")
 
 M_N = Formula(
     _M_N,

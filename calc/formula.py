@@ -56,6 +56,13 @@ class Symbol:
     value: str | None = None
 
 
+#: The radian as a constant of a formula. With angles counted as a dimension (errata E15), the
+#: law of rotation reads J·α = T·rad: a torque of 1 N·m accelerates 1 kg·m² at 1 rad/s². So a
+#: spring rate in N·m/rad over an inertia gives 1/s² only after that factor; pint, which drops
+#: angles, computes the same number.
+RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad with angles as a dimension, E15)", value="1 rad")
+
+
 @functools.cache
 def _sympy() -> SimpleNamespace:
     """sympy, and the Σ-over-segments function, built on first use."""

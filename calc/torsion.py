@@ -33,7 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import CalcError
-from .formula import Formula, Symbol
+from .formula import RADIAN, Formula, Symbol
 from .units import as_kind, fmt, from_si, to_si
 
 _i = Symbol("i", "i", "dimensionless", "", "ratio")
@@ -212,6 +212,28 @@ class CouplingSpan:
     couplings: str
 
 
+_J = [Symbol(f"J_{k}", f"J_{{{k}}}", "inertia", "kg*cm**2", f"{what}, referred to one shaft")
+      for k, what in ((1, "the first mass of the chain (the drive)"), (2, "its middle mass"), (3, "its last mass (the load)"))]
+_C = [Symbol(f"C_{k}", f"C_{{{k}}}", "stiffness", "N*m/rad", f"{what}, referred to the same shaft")
+      for k, what in ((1, "the spring between the first and the middle mass"), (2, "the spring between the middle and the last mass"))]
+
+
+def _first_mode_of_three(sp, J_1, J_2, J_3, C_1, C_2, rad):
+    # det(K - ω² J) = ω² (ω⁴ - b ω² + c) for three masses free at both ends; the lower root of the
+    # quadratic, written 2c / (b + √(b² - 4c)) so that it keeps its digits where b² ≫ 4c.
+    b = C_1 * rad * (1 / J_1 + 1 / J_2) + C_2 * rad * (1 / J_2 + 1 / J_3)
+    c = C_1 * rad * C_2 * rad * (J_1 + J_2 + J_3) / (J_1 * J_2 * J_3)
+    return sp.sqrt(2 * c / (b + sp.sqrt(b**2 - 4 * c))) / (2 * sp.pi)
+
+
+first_mode_of_three = Formula(
+    Symbol("f_1", "f_{1}", "frequency", "Hz", "first natural frequency of a chain of three masses"),
+    (*_J, *_C, RADIAN),
+    _first_mode_of_three,
+    "the eigenproblem of three masses and two springs, free at both ends, solved in closed form (calc.torsion)",
+)
+
+
 def highest_first_mode(span: CouplingSpan, J_1, C_t21, i):
     """For each gearbox (arrays ``J_1``, ``C_t21`` and ``i`` over gearboxes), the highest first
     natural frequency of the train motor, coupling, gearbox, load that any coupling of ``span``
@@ -228,11 +250,21 @@ def highest_first_mode(span: CouplingSpan, J_1, C_t21, i):
     >>> highest_first_mode(span, Q_([0.93], "kg*cm**2"), Q_([22], "N*m/arcmin"), Q_([10], "")).m_as("Hz").round(1).tolist()
     [208.0]
     """
-    half = span.inertia[None, :] / 2
-    gearbox = Member("gearbox", J_1[:, None], gearbox_at_input(C_t21=C_t21, i=i)[:, None])
-    train = lumped([Member("motor", span.drive_inertia), Member("coupling", half, span.stiffness[None, :], half), gearbox,
-                    Member("load", load_at_input(J_L=span.load_inertia, i=i)[:, None])], "drive train bound")
-    first = train.natural_frequencies().m_as("Hz")[..., 0]
+    C, J = span.stiffness.m_as("N*m/rad"), span.inertia.m_as("kg*m**2")
+    # A stiffer spring raises every mode and more inertia lowers every one: a coupling that another
+    # beats on both (stiffer, no heavier; or lighter, no softer) cannot give the highest.
+    better = (C[None, :] >= C[:, None]) & (J[None, :] <= J[:, None]) & ((C[None, :] > C[:, None]) | (J[None, :] < J[:, None]))
+    C, J = C[~better.any(axis=1)], J[~better.any(axis=1)]
+    # Gearboxes down, couplings across: SI magnitudes, checked as quantities by the formulas above.
+    half = J[None, :] / 2
+    with np.errstate(invalid="ignore"):
+        first = first_mode_of_three.si(
+            J_1=span.drive_inertia.m_as("kg*m**2") + half,
+            J_2=half + J_1.m_as("kg*m**2")[:, None],
+            J_3=load_at_input(J_L=span.load_inertia, i=i).m_as("kg*m**2")[:, None],
+            C_1=C[None, :],
+            C_2=gearbox_at_input(C_t21=C_t21, i=i).m_as("N*m/rad")[:, None],
+        )
     best = np.full(first.shape[0], np.nan)
     known = ~np.isnan(first).all(axis=1)
     best[known] = np.nanmax(first[known], axis=1)

@@ -336,3 +336,21 @@ def test_the_train_check_needs_a_coupling_between_motor_and_gearbox(write_case):
     assert coupling_span(read_case(write_case(text.replace('side = "input"', 'side = "output"')))) is None
     without = read_case(EXAMPLE_CASE)
     assert coupling_span(dataclasses.replace(without, sections={k: v for k, v in without.sections.items() if k != "coupling"})) is None
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(positive, positive), min_size=1, max_size=8), positive, positive, positive, positive, st.floats(1.5, 100))
+def test_the_highest_first_mode_is_the_best_of_the_chains_one_by_one(couplings, J_motor, J_1, C_t21, J_L, i):
+    # Whatever couplings are offered (those another beats on stiffness and inertia left out), the
+    # bound is the highest first mode of the chains built with each alone.
+    from calc.torsion import CouplingSpan, highest_first_mode
+
+    C = Q_([c for c, _ in couplings], "N*m/arcmin").to("N*m/rad")
+    J = Q_([j for _, j in couplings], KG_CM2)
+    span = CouplingSpan(Q_(J_motor, KG_CM2), Q_(J_L, KG_CM2), C, J, Q_(200, "Hz"), "drawn")
+    best = highest_first_mode(span, Q_([J_1], KG_CM2), Q_([C_t21], "N*m/arcmin"), Q_([i], "")).m_as("Hz")[0]
+    modes = np.array([natural_frequencies(Q_([J_motor + j / 2, j / 2 + J_1, J_L / i**2], KG_CM2),
+                                          Q_([c, gearbox_at_input(C_t21=Q_(C_t21, "N*m/arcmin"), i=Q_(i, "")).m_as("N*m/rad")], "N*m/rad")).m_as("Hz")
+                      for c, j in zip(C.m_as("N*m/rad"), J.m_as(KG_CM2))])
+    # to the eigensolver's precision, relative to the highest mode (test_reflection_through_a_ratio_keeps_the_modes)
+    assert best == pytest.approx(modes[:, 0].max(), rel=1e-9, abs=1e-9 * modes.max())
