@@ -274,8 +274,8 @@ def torsion__J_out(J_in, i):
     return J_in*i**2
 
 
-def torsion__f_1(J_1, J_2, J_3, C_1, C_2, rad):
-    return (1/2)*sqrt(2)*sqrt(C_1*C_2*rad**2*(J_1 + J_2 + J_3)/(J_1*J_2*J_3*(C_1*rad*(J_2**(-1.0) + J_1**(-1.0)) + C_2*rad*(J_3**(-1.0) + J_2**(-1.0)) + sqrt(-4*C_1*C_2*rad**2*(J_1 + J_2 + J_3)/(J_1*J_2*J_3) + (C_1*rad*(J_2**(-1.0) + J_1**(-1.0)) + C_2*rad*(J_3**(-1.0) + J_2**(-1.0)))**2))))/pi
+def torsion__f_1(J_a, J_b, J_c, C_ab, C_bc, rad):
+    return (1/2)*sqrt(2)*sqrt(C_ab*C_bc*rad**2*(J_a + J_b + J_c)/(J_a*J_b*J_c*(C_ab*rad*(J_b**(-1.0) + J_a**(-1.0)) + C_bc*rad*(J_c**(-1.0) + J_b**(-1.0)) + sqrt(-4*C_ab*C_bc*rad**2*(J_a + J_b + J_c)/(J_a*J_b*J_c) + (C_ab*rad*(J_b**(-1.0) + J_a**(-1.0)) + C_bc*rad*(J_c**(-1.0) + J_b**(-1.0)))**2))))/pi
 
 
 def transmission__Delta_phi_2(phi_2, phi_1, i):
@@ -352,7 +352,7 @@ FUNCTIONS = {
     "calc.torsion.J_L1": ("d8caa04565d5e06c", torsion__J_L1),
     "calc.torsion.C_t1": ("42909c5a4b2369c6", torsion__C_t1),
     "calc.torsion.J_out": ("2fe27874694a70e5", torsion__J_out),
-    "calc.torsion.f_1": ("9efd7486b4a79a38", torsion__f_1),
+    "calc.torsion.f_1": ("75a2d369bcd76ce9", torsion__f_1),
     "calc.transmission.Delta_phi_2": ("ed18015dc98282df", transmission__Delta_phi_2),
     "calc.transmission.phi_TA": ("80cb419f2cbded1e", transmission__phi_TA),
 }

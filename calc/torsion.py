@@ -212,22 +212,23 @@ class CouplingSpan:
     couplings: str
 
 
-_J = [Symbol(f"J_{k}", f"J_{{{k}}}", "inertia", "kg*cm**2", f"{what}, referred to one shaft")
-      for k, what in ((1, "the first mass of the chain (the drive)"), (2, "its middle mass"), (3, "its last mass (the load)"))]
-_C = [Symbol(f"C_{k}", f"C_{{{k}}}", "stiffness", "N*m/rad", f"{what}, referred to the same shaft")
-      for k, what in ((1, "the spring between the first and the middle mass"), (2, "the spring between the middle and the last mass"))]
+# Named a, b, c drive to load (J_1 is the gearbox's inertia everywhere else).
+_J = [Symbol(f"J_{k}", f"J_{{{k}}}", "inertia", "kg*cm**2", f"{what} of a chain of three masses, referred to one shaft")
+      for k, what in (("a", "the first mass (the drive)"), ("b", "the middle mass"), ("c", "the last mass (the load)"))]
+_C = [Symbol(f"C_{k}", f"C_{{{k}}}", "stiffness", "N*m/rad", f"{what} of a chain of three masses, referred to the same shaft")
+      for k, what in (("ab", "the spring between the first and the middle mass"), ("bc", "the spring between the middle and the last mass"))]
 
 
-def _first_mode_of_three(sp, J_1, J_2, J_3, C_1, C_2, rad):
-    # det(K - ω² J) = ω² (ω⁴ - b ω² + c) for three masses free at both ends; the lower root of the
-    # quadratic, written 2c / (b + √(b² - 4c)) so that it keeps its digits where b² ≫ 4c.
-    b = C_1 * rad * (1 / J_1 + 1 / J_2) + C_2 * rad * (1 / J_2 + 1 / J_3)
-    c = C_1 * rad * C_2 * rad * (J_1 + J_2 + J_3) / (J_1 * J_2 * J_3)
-    return sp.sqrt(2 * c / (b + sp.sqrt(b**2 - 4 * c))) / (2 * sp.pi)
+def _first_mode_of_three(sp, J_a, J_b, J_c, C_ab, C_bc, rad):
+    # det(K - ω² J) = ω² (ω⁴ - p ω² + q) for three masses free at both ends; the lower root of the
+    # quadratic, written 2q / (p + √(p² - 4q)) so that it keeps its digits where p² ≫ 4q.
+    p = C_ab * rad * (1 / J_a + 1 / J_b) + C_bc * rad * (1 / J_b + 1 / J_c)
+    q = C_ab * rad * C_bc * rad * (J_a + J_b + J_c) / (J_a * J_b * J_c)
+    return sp.sqrt(2 * q / (p + sp.sqrt(p**2 - 4 * q))) / (2 * sp.pi)
 
 
 first_mode_of_three = Formula(
-    Symbol("f_1", "f_{1}", "frequency", "Hz", "first natural frequency of a chain of three masses"),
+    Symbol("f_1", "f_{1}", "frequency", "Hz", "first natural frequency of the drive train (of a chain of three masses)"),
     (*_J, *_C, RADIAN),
     _first_mode_of_three,
     "the eigenproblem of three masses and two springs, free at both ends, solved in closed form (calc.torsion)",
@@ -259,11 +260,11 @@ def highest_first_mode(span: CouplingSpan, J_1, C_t21, i):
     half = J[None, :] / 2
     with np.errstate(invalid="ignore"):
         first = first_mode_of_three.si(
-            J_1=span.drive_inertia.m_as("kg*m**2") + half,
-            J_2=half + J_1.m_as("kg*m**2")[:, None],
-            J_3=load_at_input(J_L=span.load_inertia, i=i).m_as("kg*m**2")[:, None],
-            C_1=C[None, :],
-            C_2=gearbox_at_input(C_t21=C_t21, i=i).m_as("N*m/rad")[:, None],
+            J_a=span.drive_inertia.m_as("kg*m**2") + half,
+            J_b=half + J_1.m_as("kg*m**2")[:, None],
+            J_c=load_at_input(J_L=span.load_inertia, i=i).m_as("kg*m**2")[:, None],
+            C_ab=C[None, :],
+            C_bc=gearbox_at_input(C_t21=C_t21, i=i).m_as("N*m/rad")[:, None],
         )
     best = np.full(first.shape[0], np.nan)
     known = ~np.isnan(first).all(axis=1)

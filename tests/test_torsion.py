@@ -46,6 +46,12 @@ def test_three_masses_by_hand():
     #   f = √ω² / 2π = 1306.7 / 2π = 207.96 Hz and 15 234.9 / 2π = 2424.71 Hz.
     modes = natural_frequencies(Q_([4.7, 1.43, 15], KG_CM2), Q_([25_000, 22 * 10800 / math.pi / 100], "N*m/rad"))
     assert modes.m_as("Hz") == pytest.approx([207.96, 2424.71], abs=0.01)
+    # The same quadratic in closed form, as the gearbox's drive-train bound evaluates it.
+    from calc.torsion import first_mode_of_three
+
+    f_1 = first_mode_of_three(J_a=Q_(4.7, KG_CM2), J_b=Q_(1.43, KG_CM2), J_c=Q_(15, KG_CM2),
+                              C_ab=Q_(25_000, "N*m/rad"), C_bc=Q_(22, "N*m/arcmin") / 100)
+    assert f_1.m_as("Hz") == pytest.approx(207.96, abs=0.01)
 
 
 def test_reflection_formulas_by_hand():
