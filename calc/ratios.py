@@ -108,7 +108,8 @@ def search_ratios(
     (a note says so).
     """
     motor_peak_torque, motor_inertia = selection.get("motor_peak_torque"), selection.get("motor_inertia")
-    catalog = catalog.rows(np.flatnonzero(~catalog.partial))  # partial rows are never ranked
+    if catalog.partial.any():  # partial rows are never ranked (no copy of a catalog without them)
+        catalog = catalog.rows(np.flatnonzero(~catalog.partial))
     sel = select_gearbox(profile, catalog, hubs=hubs, **selection)
     ratios, rows = best_rows(sel)
     i, eta = catalog["ratio"][rows], catalog["eta"][rows]
