@@ -670,6 +670,15 @@ def test_a_forced_gearbox_part_is_checked_alone_and_saved_by_name():
     assert "PASS" in panel.results.value and panel.changes() == {}
 
 
+def test_each_candidate_row_can_force_its_part():
+    # The gearbox and motor tables mark each row with the control it sets and the part (the served
+    # page's script sets it on a click; tests/test_review_browser.py clicks one).
+    panel = DesignReview(DERIVED_EXAMPLE)
+    html = panel.results.value
+    assert 'data-force="gearbox.part" data-part="NPT025-10"' in html and 'data-force="motor.part" data-part="SGMUH-10DA"' in html
+    assert 'data-force="coupling' not in html  # no control forces a coupling
+
+
 def test_a_move_is_reversed_and_a_ramp_the_file_leaves_out_is_set():
     panel = DesignReview(DERIVED_EXAMPLE)
     first = evaluate(panel.changed_case())

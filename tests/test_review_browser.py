@@ -227,3 +227,28 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         assert "Connection to the server lost" in page.inner_text(".design-review .dr-state")
         assert "dr-lost" in page.get_attribute(".design-review", "class")
         page.screenshot(path=str(shots / "connection-lost.png"))
+
+
+def test_a_click_on_a_candidate_forces_it(tmp_path):
+    """Clicking NPT025-10's row in the gearbox table sets *gearbox part forced* to it, as choosing it
+    there would: the page shows the design checked with NPT025-10 alone, which fails on the motor's
+    peak through it (T_2max = 6.5 · 10 · 1.6 · 0.97 = 100.9 N·m against its T_2B of 90 N·m)."""
+    from bench.review_browser import browser_page, row, wait_for_results
+
+    shots = SHOTS / "force"
+    shots.mkdir(parents=True, exist_ok=True)
+    with served(DERIVED_EXAMPLE) as server, browser_page() as page:
+        page.goto(server.url)
+        page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
+        first = page.inner_text(RESULTS_SELECTOR)
+        assert first.startswith("PASS") and "Gearbox NPT035-10" in first
+        g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
+        page.locator('.design-review tr[data-part="NPT025-10"]').first.click()
+        wait_for_results(page, g)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
+        shown = page.inner_text(RESULTS_SELECTOR)
+        assert shown.startswith("FAIL") and "NPT025-10: T2max ≤ T2B: required 100.9 N·m > rated 90 N·m" in shown.replace("\n", "")
+        choice = row(page, "gearbox.part").locator("select")
+        assert choice.evaluate("s => s.options[s.selectedIndex].text") == "NPT025-10"
+        page.screenshot(path=str(shots / "forced.png"))
+

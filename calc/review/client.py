@@ -7,7 +7,8 @@ script compares them: results whose inputs differ from the fields, or asked for 
 arrived, are greyed and marked out of date; a lost connection to the kernel (the server stopped,
 a tunnel dropped) greys them too and says how to get back. It keeps the changed values in the
 page's address (``#…``), so a reload or a shared link types them in again, and asks before a
-reload or a switch of case drops changes. Voilà runs it from the page's notebook
+reload or a switch of case drops changes; a click on a candidate's row forces that part (its
+control set as a reviewer would set it). Voilà runs it from the page's notebook
 (``design-review.ipynb``); in JupyterLab the kernel is beside the notebook and it is not needed.
 """
 
@@ -25,6 +26,8 @@ STYLE = """<style>
 .design-review .dr-message { color: #b2222a; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
 .design-review .dr-idle { color: #666; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
 .design-review > .widget-vbox:last-child { overflow-x: auto; }  /* a wide table scrolls in its column, never cut */
+.design-review tr[data-force] { cursor: pointer; }
+.design-review tr[data-force]:hover td { background: #eef3fb; }
 .design-review .dr-changed { color: #1f5fbf; border-left: 4px solid #1f5fbf; padding-left: 4px; margin-left: -8px; }
 @media (max-width: 1180px) {
   /* a narrow screen: the controls' column narrows so that the verdict stays beside them */
@@ -147,6 +150,11 @@ SCRIPT = r"""<script>
     ask(); show();
   }, true);
   document.addEventListener('input', e => { if (e.target.closest && e.target.closest('.design-review')) show(); }, true);
+  // A click on a candidate's row forces that part: its control is set as a reviewer would set it.
+  document.addEventListener('click', e => {
+    const tr = e.target.closest && e.target.closest('.design-review tr[data-force]');
+    if (tr) type(tr.dataset.force, tr.dataset.part);
+  }, true);
   document.addEventListener('pointerup', e => {
     if (e.target.closest && e.target.closest('.design-review .dr-row .widget-slider')) { ask(); show(); }
   }, true);

@@ -107,10 +107,20 @@ def _utilization(u) -> str:
     return f'{100 * u:.0f} %<span class="bar"><span style="width:{width:.0f}%;background:{color}"></span></span>'
 
 
-def _table(header: list[str], rows: list[list[str]], numeric: set[int] = frozenset(), marked: int | None = None) -> str:
+def _table(header: list[str], rows: list[list[str]], numeric: set[int] = frozenset(), marked: int | None = None,
+           force: tuple[str, list[str]] | None = None) -> str:
+    """An HTML table; with ``force`` (a control's key and each row's part) a click on a row forces
+    that part (the page's script sets the control, :mod:`calc.review.client`)."""
     head = "".join(f"<th>{h}</th>" for h in header)
+
+    def forcing(k: int) -> str:
+        if force is None:
+            return ""
+        key, parts = force
+        return f' data-force="{escape(key)}" data-part="{escape(parts[k])}" title="click to force {escape(parts[k])}"'
+
     body = "".join(
-        f'<tr{" class=chosen" if k == marked else ""}>'
+        f'<tr{" class=chosen" if k == marked else ""}{forcing(k)}>'
         + "".join(f'<td class="{"n" if j in numeric else ("why" if h in ("reasons", "verdict") else "")}">{c}</td>' for j, (h, c) in enumerate(zip(header, row)))
         + "</tr>"
         for k, row in enumerate(rows)
@@ -173,8 +183,9 @@ def _gearbox_table(g, shown: int | None) -> str:
         for k, c in enumerate(listed, start=1)
     ]
     header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data", "reasons"]
-    return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}</div>"
-            + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None) + more)
+    return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}; on the served page, a click on a row forces that part</div>"
+            + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None, force=("gearbox.part", [c.part for c in listed]))
+            + more)
 
 
 def _coupling_table(s, shown: int | None) -> str:
@@ -207,8 +218,9 @@ def _motor_table(m, shown: int | None) -> str:
         for k, c in enumerate(listed, start=1)
     ]
     header = ["rank", "part", "verdict", "worst utilization", typeset("M_N"), typeset("J_motor"), "inertia ratio λ", "peak characteristic", "reasons"]
-    return (f"<h3>Motor candidates, through {escape(m.through)}</h3><div class=note>{typeset(m.ranking)}</div>"
-            + _table(header, rows, numeric={0, 3, 4, 5, 6}, marked=0 if sel.selected else None) + more)
+    return (f"<h3>Motor candidates, through {escape(m.through)}</h3><div class=note>{typeset(m.ranking)}; on the served page, a click on a row forces that part</div>"
+            + _table(header, rows, numeric={0, 3, 4, 5, 6}, marked=0 if sel.selected else None, force=("motor.part", [c.part for c in listed]))
+            + more)
 
 
 def _torsion_table(t) -> str:
