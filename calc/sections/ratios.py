@@ -14,7 +14,8 @@ from ..ratios import INERTIA_RATIO_LIMIT, RULE, RatioSearch, search_ratios
 from ..units import Value, pretty_unit, sig
 from .gearbox import catalogs, selection_inputs
 from .common import Verdict, check_json, json_of, number
-from .motor import TYPED, output_load, rotor_inertia
+from .motor import TYPED, output_load, rotor_inertia, with_chosen_motor
+from .motor import evaluate as motor_section
 
 
 #: Not evaluated with the case (its own command, :func:`search`); its place in the report.
@@ -121,9 +122,15 @@ def search(case: Case) -> RatioResult:
 def _search(case: Case) -> RatioResult:
     if case.gearbox_catalog is None:
         raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the ratios to try), found none")
+    notes = []
+    chosen = with_chosen_motor(case)
+    if chosen is not case:  # a motor from the catalog: the one the case chooses at its ratio, kept at every ratio
+        sel = motor_section(chosen).selection
+        notes.append(f"the motor is {sel.catalog.parts[sel.order[0]]}, the motor catalog's choice at the case's ratio "
+                     f"{sig(case.ratio.m_as(''))}, kept at every ratio (python -m calc combinations chooses motor and gearbox together)")
+        case = chosen
     catalog, hubs = catalogs(case)
     load = output_load(case)
-    notes = []
     if case.gearbox_part is not None:
         notes.append(f"gearbox.part = {case.gearbox_part!r} is not kept to: every row of the catalog is tried")
     if not load.sampled:
