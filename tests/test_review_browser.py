@@ -252,3 +252,27 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
         assert choice.evaluate("s => s.options[s.selectedIndex].text") == "NPT025-10"
         page.screenshot(path=str(shots / "forced.png"))
 
+
+
+def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
+    """Ticking *ratio search* adds the case at every ratio of the catalog to the page, as
+    ``python -m calc ratios`` gives it: the example's pick is 10 (NPT035-10), the only ratio that
+    keeps λ ≤ 10 with SGMUH-10DA ((0.93 + 15) / 1.74 = 9.16), drawn as bars with the pick outlined."""
+    from bench.review_browser import browser_page, wait_for_results
+
+    shots = SHOTS / "ratios"
+    shots.mkdir(parents=True, exist_ok=True)
+    with served(DERIVED_EXAMPLE) as server, browser_page() as page:
+        page.goto(server.url)
+        page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
+        assert "Ratio search" not in page.inner_text(RESULTS_SELECTOR)
+        g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
+        page.locator(".design-review label", has_text="ratio search").click()
+        wait_for_results(page, g)
+        shown = page.inner_text(RESULTS_SELECTOR)
+        assert "Ratio 10 (NPT035-10): 6 of 6 ratios are feasible, and only this one keeps λ ≤ 10 (λ = 9.16)." in shown
+        assert "the motor is SGMUH-10DA" in shown
+        figure = page.locator(".design-review svg.dr-ratios")
+        assert figure.count() == 1 and figure.locator("rect").count() == 6
+        figure.scroll_into_view_if_needed()
+        page.screenshot(path=str(shots / "ratio-search.png"))

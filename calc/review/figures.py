@@ -136,3 +136,53 @@ def stiffness_chain_svg(accuracy) -> str:
     body.append(f'<text x="{left}" y="{height - 4}">share of the twist at the output [%]; input side purple, output side blue</text>')
     return (f'<svg class="dr-chain" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
             f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
+
+
+def ratio_search_svg(found: dict) -> str:
+    """The ratio search (the JSON of :func:`calc.sections.ratios.search`) as bars: each ratio's RMS
+    motor torque through its best gearbox, green where the ratio is feasible and keeps λ within its
+    limit, light green where it is feasible with λ over it, grey where it is not feasible; the pick
+    outlined; λ above each bar. The data of :func:`calc.motor_plots.ratio_figure`, drawn by the
+    browser.
+
+    >>> from calc.case import read_case
+    >>> from calc.catalog import CATALOG_DIR
+    >>> from calc.sections.ratios import search
+    >>> svg = ratio_search_svg(search(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml")).to_json())
+    >>> svg.count("<rect"), svg.count('stroke-width="2.5"')  # six ratios, the pick outlined
+    (6, 1)
+    """
+    rows, limit = found["ratios"], found["inertia_ratio_limit"]
+    pick = None if found["pick"] is None else found["pick"]["ratio"]
+    rms = [r["rms_torque_required"]["value"] if r["rms_torque_required"] else None for r in rows]
+    unit = next((r["rms_torque_required"]["unit"] for r in rows if r["rms_torque_required"]), "N*m")
+    known = [v for v in rms if v is not None]
+    top_value = max(known) if known else 1.0
+    ticks = nice_ticks(0.0, top_value)
+    height, bottom, top = 220, 40, 34
+    plot = height - bottom - top
+    scale = plot / ticks[-1] if ticks[-1] > 0 else 1.0
+    step = (WIDTH - LEFT - RIGHT) / max(len(rows), 1)
+    title = f"RMS motor torque at each ratio, its best gearbox; λ above (limit {limit:g})"
+    body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
+    for t in ticks:
+        y = height - bottom - scale * t
+        body += [f'<line x1="{LEFT}" x2="{WIDTH - RIGHT}" y1="{y:.1f}" y2="{y:.1f}" stroke="#e2e2e2"/>',
+                 f'<text x="{LEFT - 4}" y="{y + 4:.1f}" text-anchor="end">{t:g}</text>']
+    body.append(f'<text x="12" y="{height - bottom - plot / 2:.0f}" transform="rotate(-90 12 {height - bottom - plot / 2:.0f})" '
+                f'text-anchor="middle">{escape(pretty_unit(unit))}</text>')
+    for k, (r, v) in enumerate(zip(rows, rms)):
+        x = LEFT + step * k + step * 0.2
+        lam = r["inertia_ratio"]
+        within = lam is not None and lam <= limit
+        fill = "#2e7d32" if r["passes"] and within else ("#a5d6a7" if r["passes"] else "#bdbdbd")
+        h = 0.0 if v is None else scale * v
+        outline = ' stroke="#000" stroke-width="2.5"' if r["ratio"] == pick else ""
+        over = "" if within else ' fill="#b2222a"'  # λ over its limit, in red
+        lam_text = "–" if lam is None else f"{lam:.3g}"
+        body += [f'<rect x="{x:.1f}" y="{height - bottom - h:.1f}" width="{step * 0.6:.1f}" height="{h:.1f}" fill="{fill}"{outline}/>',
+                 f'<text x="{x + step * 0.3:.1f}" y="{height - bottom + 14}" text-anchor="middle">{r["ratio"]:g}</text>',
+                 f'<text x="{x + step * 0.3:.1f}" y="{height - bottom + 27}" text-anchor="middle" fill="#666">{escape(r["part"])}</text>',
+                 f'<text x="{x + step * 0.3:.1f}" y="{height - bottom - h - 4:.1f}" text-anchor="middle"{over}>λ {lam_text}</text>']
+    return (f'<svg class="dr-ratios" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
+            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")

@@ -30,6 +30,7 @@ from ..errors import CalcError
 from ..publish import summary_rows
 from ..sections import drive
 from ..sections.gearbox import catalogs as gearbox_catalogs
+from ..sections.ratios import search as search_ratios
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
@@ -178,10 +179,13 @@ class DesignReview:
         keep.add_class("dr-keep")
         top = w.HBox([self.case_file, self.reset, self.undo_button, self.redo_button], layout=w.Layout(width="100%"))
         self.all_candidates.observe(self._changed, names="value")
+        self.ratio_search = w.Checkbox(description="ratio search", indent=False, layout=w.Layout(width="auto", flex="1 1 auto"),
+                                       tooltip="the case at every ratio of the gearbox catalog, and the ratio to pick")
+        self.ratio_search.observe(self._changed, names="value")
         self.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the results",
                                      style={"button_width": "7.5em"}, layout=w.Layout(width="auto", flex="0 0 auto"))
         self.units.observe(self._changed, names="value")
-        left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, w.HBox([self.all_candidates, self.units]), keep, self.load_cycle],
+        left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, w.HBox([self.all_candidates, self.ratio_search, self.units]), keep, self.load_cycle],
                       layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
         right = w.VBox([self.state, self.results, self.chain, self.variants_html], layout=w.Layout(flex="1 1 560px", min_width="560px"))
         # Side by side on a screen; on a narrow one (a notebook beside a file browser) the results go under.
@@ -350,8 +354,14 @@ class DesignReview:
         typed = self.case.motion is not None and case.motion is None
         shown = None if self.all_candidates.value else SHOWN_CANDIDATES
         refused = [f"{self._spec(k).label}: {why}" for k, (_, why) in self.refused.items()]
-        return (results_html(report, left_out, link, typed_by_hand=typed, shown=shown, refused=refused, system=self.units.value),
-                (case, report))
+        ratios = None
+        if self.ratio_search.value:  # asked for: its own command's result, the case at every ratio
+            try:
+                ratios = search_ratios(case).to_json()
+            except CalcError as exc:
+                ratios = self._in_words(str(exc))
+        return (results_html(report, left_out, link, typed_by_hand=typed, shown=shown, refused=refused, system=self.units.value,
+                             ratios=ratios), (case, report))
 
     def _spec(self, key: str) -> InputSpec:
         return next(s for s in self.specs if s.key == key)

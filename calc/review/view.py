@@ -21,6 +21,7 @@ from ..report import Report, report_of
 from ..report.symbols import html as typeset
 from ..checks import within_rating
 from ..units import Q_, Value, sig
+from .figures import ratio_search_svg
 
 PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 STYLE = f"""<style>
@@ -251,6 +252,30 @@ def _accuracy_table(a) -> str:
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
 
 
+def _ratio_block(found) -> str:
+    """The ratio search (its JSON, :func:`calc.sections.ratios.search`), or why it cannot be made
+    (a sentence): each ratio's best gearbox, whether it is feasible, λ and the motor's torques, the
+    pick and why, and the bars of :func:`calc.review.figures.ratio_search_svg`."""
+    if isinstance(found, str):
+        return f"<h3>Ratio search</h3><div class=note>{typeset(found)}</div>"
+
+    def value(v):
+        return "" if v is None else _q(Value(v["value"], v["unit"]))
+
+    pick = None if found["pick"] is None else found["pick"]["ratio"]
+    rows = [
+        [sig(r["ratio"]), escape(r["part"]), _verdict_cell(r["passes"]), _utilization(r["utilization"]),
+         "" if r["inertia_ratio"] is None else sig(r["inertia_ratio"], 3), value(r["peak_torque_required"]),
+         value(r["rms_torque_required"]), value(r["max_speed_required"]), "pick" if r["ratio"] == pick else ""]
+        for r in found["ratios"]
+    ]
+    header = ["ratio i", "best gearbox", "feasible", "utilization", "inertia ratio λ", typeset("T_1peak"), typeset("T_1rms"), typeset("n_1max"), ""]
+    marked = next((k for k, r in enumerate(found["ratios"]) if r["ratio"] == pick), None)
+    notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in found["notes"])
+    return (f"<h3>Ratio search</h3><div class=note>{typeset(found['rule'])}</div><div><b>{typeset(found['reason'])}</b></div>"
+            + _table(header, rows, numeric={0, 3, 4, 5, 6, 7}, marked=marked) + notes + ratio_search_svg(found))
+
+
 def _not_made_html(results) -> str:
     """Beside the verdict: how many checks were not made, and (a click away) which and why."""
     missing = results.not_made() if results is not None else []
@@ -261,21 +286,22 @@ def _not_made_html(results) -> str:
 
 
 def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False,
-                 shown: int | None = None, refused: list[str] = (), system: str = "SI") -> str:
+                 shown: int | None = None, refused: list[str] = (), system: str = "SI", ratios=None) -> str:
     """The review of an evaluated case as one HTML text (see the module's docstring);
     ``report_link``, where given, is the address of the case's report, linked beside the verdict;
     ``typed_by_hand``: the case's derived load cycle was changed segment by segment; ``shown``:
     the candidates listed in each table, best first (all for None); ``refused``: the values typed
     and refused (the results are those of the values before them), each with why; ``system``:
-    the unit system of the values shown, "SI" or "inch-pound" (:data:`INCH_POUND`)."""
+    the unit system of the values shown, "SI" or "inch-pound" (:data:`INCH_POUND`); ``ratios``: the
+    ratio search's JSON, or why it cannot be made, shown after the gearbox (None: not asked for)."""
     token = SYSTEM.set(system)
     try:
-        return _results_html(report, left_out, report_link, typed_by_hand, shown, refused)
+        return _results_html(report, left_out, report_link, typed_by_hand, shown, refused, ratios)
     finally:
         SYSTEM.reset(token)
 
 
-def _results_html(report, left_out, report_link, typed_by_hand, shown, refused) -> str:
+def _results_html(report, left_out, report_link, typed_by_hand, shown, refused, ratios) -> str:
     word = "FAIL" if left_out else report.verdict.word
     passes = word == "PASS"
     cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
@@ -294,6 +320,8 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused) 
         out += [_governing(evaluated), _motion(evaluated.sections.get("motion"), typed_by_hand), _duty(evaluated["profile"].shown)]
         if "gearbox" in evaluated.sections:
             out.append(_gearbox_table(evaluated["gearbox"], shown))
+        if ratios is not None:
+            out.append(_ratio_block(ratios))
         if "coupling" in evaluated.sections:
             out.append(_coupling_table(evaluated["coupling"], shown))
         if "motor" in evaluated.sections and evaluated["motor"].selection is not None:
