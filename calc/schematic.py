@@ -7,6 +7,8 @@ train the notebook's symbols sit. Built without pyplot, like the other figures (
 
 from __future__ import annotations
 
+import numpy as np
+
 from .errors import CalcError
 
 #: The members, drive to load: (key, name, its symbols). Subscripts follow the source's index table.
@@ -79,12 +81,16 @@ def drive_train_figure(focus: tuple[str, ...] = ()):
 def _gear(center, radius: float, teeth: int, depth: float, internal: bool = False):
     """The outline of a gear as a polygon: ``teeth`` trapezoids of ``depth`` on a pitch circle of
     ``radius``, pointing out (an external gear) or in (the ring's internal teeth)."""
-    import numpy as np
-
     steps = np.arange(teeth * 4) * (2 * np.pi / (teeth * 4))
     # Each tooth pitch: root, flank up, tip, flank down.
     r = radius + np.tile([-depth / 2, depth / 2, depth / 2, -depth / 2], teeth) * (-1 if internal else 1)
     return np.column_stack([center[0] + r * np.cos(steps), center[1] + r * np.sin(steps)])
+
+
+def _label(ax, labels) -> None:
+    """Each ``(point, place, text)``: the text at ``place``, a thin line to the ``point`` it names."""
+    for point, place, text in labels:
+        ax.annotate(text, point, place, fontsize=8.5, va="center", arrowprops={"arrowstyle": "-", "linewidth": 0.8, "color": "0.3"})
 
 
 def planetary_gearbox_figure():
@@ -97,7 +103,6 @@ def planetary_gearbox_figure():
     >>> sorted(t.get_text().split(":")[0] for t in fig.axes[0].texts if ":" in t.get_text())
     ['carrier (dashed)', 'planets', 'ring gear', 'sun']
     """
-    import numpy as np
     from matplotlib.figure import Figure
     from matplotlib.patches import Circle, Polygon
 
@@ -123,8 +128,7 @@ def planetary_gearbox_figure():
          "carrier (dashed): holds the planets, turns the output\n(index 2: $n_2 = n_1 / i$, $T_2$)"),
         ((ring * np.cos(np.radians(40)), ring * np.sin(np.radians(40))), (1.35, 0.95), "ring gear: fixed in the housing"),
     )
-    for point, place, text in labels:
-        ax.annotate(text, point, place, fontsize=8.5, va="center", arrowprops={"arrowstyle": "-", "linewidth": 0.8, "color": "0.3"})
+    _label(ax, labels)
     ax.text(0, -1.2, "the sun turns $i$ times while the carrier turns once (here $i$ = 10)", ha="center", fontsize=8.5)
     ax.set_xlim(-1.1, 3.3)
     ax.set_ylim(-1.3, 1.15)
@@ -142,7 +146,6 @@ def bellows_coupling_figure():
     >>> sorted(t.get_text().split(":")[0] for t in fig.axes[0].texts if ":" in t.get_text())
     ['hub 1', 'hub 2', 'metal bellows']
     """
-    import numpy as np
     from matplotlib.figure import Figure
     from matplotlib.patches import Rectangle
 
@@ -166,8 +169,7 @@ def bellows_coupling_figure():
         (((left + right) / 2, -0.55), ((left + right) / 2 - 1.2, -1.15),
          "metal bellows: stiff in torsion ($C_T$), soft against misalignment;\nno backlash, no temperature factor (E9)"),
     )
-    for point, place, text in labels:
-        ax.annotate(text, point, place, fontsize=8.5, va="center", arrowprops={"arrowstyle": "-", "linewidth": 0.8, "color": "0.3"})
+    _label(ax, labels)
     ax.text(-0.9, 0.0, "motor ", ha="right", va="center", fontsize=8.5)
     ax.text(right + hub + 0.9, 0.0, " gearbox", ha="left", va="center", fontsize=8.5)
     ax.set_xlim(-1.6, right + hub + 1.7)

@@ -254,8 +254,8 @@ def highest_first_mode(span: CouplingSpan, J_1, C_t21, i):
     C, J = span.stiffness.m_as("N*m/rad"), span.inertia.m_as("kg*m**2")
     # A stiffer spring raises every mode and more inertia lowers every one: a coupling that another
     # beats on both (stiffer, no heavier; or lighter, no softer) cannot give the highest.
-    better = (C[None, :] >= C[:, None]) & (J[None, :] <= J[:, None]) & ((C[None, :] > C[:, None]) | (J[None, :] < J[:, None]))
-    C, J = C[~better.any(axis=1)], J[~better.any(axis=1)]
+    beaten = ((C[None, :] >= C[:, None]) & (J[None, :] <= J[:, None]) & ((C[None, :] > C[:, None]) | (J[None, :] < J[:, None]))).any(axis=1)
+    C, J = C[~beaten], J[~beaten]
     # Gearboxes down, couplings across: SI magnitudes, checked as quantities by the formulas above.
     half = J[None, :] / 2
     with np.errstate(invalid="ignore"):

@@ -108,6 +108,10 @@ def _utilization(u) -> str:
     return f'{100 * u:.0f} %<span class="bar"><span style="width:{width:.0f}%;background:{color}"></span></span>'
 
 
+#: Under a table whose rows force their part (:func:`_table`'s ``force``).
+FORCING = "on the served page, a click on a row forces that part"
+
+
 def _table(header: list[str], rows: list[list[str]], numeric: set[int] = frozenset(), marked: int | None = None,
            force: tuple[str, list[str]] | None = None) -> str:
     """An HTML table; with ``force`` (a control's key and each row's part) a click on a row forces
@@ -184,7 +188,7 @@ def _gearbox_table(g, shown: int | None) -> str:
         for k, c in enumerate(listed, start=1)
     ]
     header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data", "reasons"]
-    return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}; on the served page, a click on a row forces that part</div>"
+    return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}; {FORCING}</div>"
             + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None, force=("gearbox.part", [c.part for c in listed]))
             + more)
 
@@ -219,7 +223,7 @@ def _motor_table(m, shown: int | None) -> str:
         for k, c in enumerate(listed, start=1)
     ]
     header = ["rank", "part", "verdict", "worst utilization", typeset("M_N"), typeset("J_motor"), "inertia ratio λ", "peak characteristic", "reasons"]
-    return (f"<h3>Motor candidates, through {escape(m.through)}</h3><div class=note>{typeset(m.ranking)}; on the served page, a click on a row forces that part</div>"
+    return (f"<h3>Motor candidates, through {escape(m.through)}</h3><div class=note>{typeset(m.ranking)}; {FORCING}</div>"
             + _table(header, rows, numeric={0, 3, 4, 5, 6}, marked=0 if sel.selected else None, force=("motor.part", [c.part for c in listed]))
             + more)
 
