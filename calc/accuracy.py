@@ -249,14 +249,17 @@ class ChainAccuracy:
         """Each formula with the chain's numbers, in the order a reviewer reads them."""
         c = self.chain
         out = []
-        for comp, c_out, j_out in zip(c.components, c.stiffness_at_output, c.backlash_at_output):
+        # A member of unknown stiffness stands in rigid (its 1/C is zero): its steps are left out.
+        known = np.isfinite(c.stiffness_at_output.magnitude)
+        for comp, rigid in zip(c.components, ~known):
             if comp.stiffness_curve is not None:
                 i = 1.0 if comp.side == "output" else c.ratio.m_as("")
                 out += comp.stiffness_curve.steps(self.applied_torque / i)
             if comp.side == "input":
-                out.append(stiffness_at_output.step(C_1=comp.stiffness, i=c.ratio))
+                out += [] if rigid else [stiffness_at_output.step(C_1=comp.stiffness, i=c.ratio)]
                 out.append(angle_at_output.step(phi_1=comp.backlash, i=c.ratio))
-        out.append(series_stiffness.step(C_k=c.stiffness_at_output))
+        if known.any():
+            out.append(series_stiffness.step(C_k=c.stiffness_at_output[known]))
         values = dict(j_t=c.backlash, T=self.applied_torque, C=c.stiffness)
         out.append(lost_motion.step(**values))
         out.append(self.rule.step(c.transmission_accuracy, c.backlash, c.stiffness))

@@ -147,7 +147,8 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     ax.barh(y, shares, color=colors, height=0.6, zorder=2)
     for k in range(len(names)):
         ax.annotate(
-            f"{sig(shares[k], 3)} %: {sig(twist[k], 3)} arcmin, C = {fmt(c_out[k], 'N*m/arcmin', 4)}",
+            f"{sig(shares[k], 3)} %: {sig(twist[k], 3)} arcmin, C = {fmt(c_out[k], 'N*m/arcmin', 4)}" if np.isfinite(c_out[k].magnitude)
+            else "C unknown: reckoned rigid, so the twist is more",
             (shares[k], y[k]), xytext=(4, 0), textcoords="offset points", va="center", fontsize=8,
         )
     ax.set_yticks(y, [f"{n}\n({c.side} side)" for n, c in zip(names, chain.components)], fontsize=8)

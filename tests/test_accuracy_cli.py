@@ -221,3 +221,46 @@ def test_a_trace_needs_the_gearbox_ratio(capsys, write_case, tmp_path):
         "accuracy.component[1].transmission_trace: the transmission error is reckoned through the gearbox ratio, "
         "but the case gives no gearbox.ratio" in err
     )
+
+
+def _forced(write_case, required="5 arcmin"):
+    """The shipped example with NPT045-10 forced: catalogs/gearboxes.csv row 50 leaves its C_t21 empty (cut
+    off in the source, its comment says); backlash 8 arcmin, T_2N 350 N·m."""
+    trace = ROOT / "data" / "transmission-NPT035-10-generated.csv"
+    text = ((ROOT / "cases" / "indexing-table.toml").read_text().replace('family = "NPT"', 'family = "NPT"\npart = "NPT045-10"')
+            .replace("../data/transmission-NPT035-10-generated.csv", str(trace))
+            .replace('required_positioning_accuracy = "5 arcmin"', f'required_positioning_accuracy = "{required}"'))
+    return write_case(text)
+
+
+def test_a_selected_gearbox_without_its_stiffness_gives_bounds_not_numbers(capsys, write_case):
+    # The chain is reckoned with NPT045-10 rigid, so by hand (8 N·m <= 3 % of 350 N·m = 10.5 N·m:
+    # the backlash form, E13) the positioning accuracy is at least 0 + 8 = 8 arcmin, over the
+    # required 5: a lower bound already over the limit fails. C_total is the coupling's alone (an
+    # upper bound) and the lost motion 8 + 8 / C_total at least.
+    code, out, err = run(capsys, _forced(write_case), "--json")
+    assert code == 0, err
+    r = json.loads(out)
+    a = r["accuracy"]
+    coupling, gearbox = a["components"]
+    assert gearbox["name"] == "NPT045-10" and gearbox["stiffness_at_output"]["value"] is None
+    assert gearbox["twist_at_applied_torque"]["value"] is None and gearbox["share_of_compliance"] == 0
+    assert a["C_total"]["value"] == pytest.approx(coupling["stiffness_at_output"]["value"], rel=1e-12)
+    assert a["lost_motion"]["value"] == pytest.approx(8 + 8 / a["C_total"]["value"], rel=1e-12)
+    assert a["positioning_accuracy"]["value"] == pytest.approx(8.0, rel=1e-12)
+    assert a["C_total_is_upper_bound"] and a["lost_motion_is_lower_bound"] and a["repeatability_is_lower_bound"]
+    assert a["unknown"][0] == "NPT045-10: its torsional stiffness C_t21 (empty in catalogs/gearboxes.csv row 50; reckoned rigid)"
+    check = a["checks"][0]
+    assert check["passes"] is False and check["value_is_lower_bound"] and check["utilization"] == pytest.approx(1.6)
+    assert r["verdict"]["passes"] is False
+    assert "positioning_accuracy >= 8 arcmin > required 5 arcmin, at least 60 % over (a lower bound: unknown NPT045-10" in r["verdict"]["reasons"][0]
+
+
+def test_a_lower_bound_within_the_limit_decides_nothing(capsys, write_case):
+    # Required 10 arcmin: at least 8 arcmin may or may not be within it.
+    code, out, err = run(capsys, _forced(write_case, "10 arcmin"))
+    assert code == 0, err
+    assert "Verdict: NOT DECIDED" in out
+    assert "Positioning accuracy (|T| <= 3 % of T_N: phi_TA + j_t, T_N = 350 N·m (NPT045-10)) >= 8 arcmin (E13)" in out
+    assert "C_total <= " in out and "Lost motion = j_t + |T| / C >= 8.0" in out
+    assert "not made: the positioning accuracy is a lower bound: unknown NPT045-10: its torsional stiffness C_t21" in out

@@ -61,14 +61,16 @@ def results(report) -> list[str]:
     a = r.shown
     rep = "repeatability, an upper bound under torque (E13)" if a.repeatability_is_bound else "repeatability (E13)"
     rows = [
-        [r"$C_{\mathrm{total}}$", q(a.C_total), prose("total torsional stiffness at the output (E11)")],
+        [r"$C_{\mathrm{total}}$", (r"$\leq$ " if a.unknown_chain else "") + q(a.C_total),
+         prose("total torsional stiffness at the output (E11)" + ("; an upper bound" if a.unknown_chain else ""))],
         [r"$j_{t}$", q(a.backlash), prose("torsional backlash at the output")],
         [r"$\varphi_{\mathrm{TA}}$", q(a.transmission_accuracy),
          prose("angular transmission accuracy, from " + listed(a.transmission_accuracy_from))],
-        [r"$\varphi_{\mathrm{LM}}$", q(a.lost_motion), prose("total lost motion at the applied torque (E12)")],
+        [r"$\varphi_{\mathrm{LM}}$", (r"$\geq$ " if a.unknown_chain else "") + q(a.lost_motion),
+         prose("total lost motion at the applied torque (E12)" + ("; a lower bound" if a.unknown_chain else ""))],
         [r"$\Delta\varphi_{P}$", (r"$\geq$ " if a.unknown else "") + q(a.positioning_accuracy),
          prose(f"positioning accuracy, {a.positioning_rule} (E13)" + (f"; a lower bound: unknown {'; '.join(a.unknown)}" if a.unknown else ""))],
-        ["–", q(a.repeatability), prose(rep)],
+        ["–", q(a.repeatability), prose(rep + (f"; not known: unknown {'; '.join(a.unknown_chain)}" if a.unknown_chain else ""))],
     ]
     rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(arc), prose(f"as an arc at r = {plain(a.radius)}")] for key, arc in a.arcs.items()]
     comp = [[latex_escape(m.name), latex_escape(m.side), q(m.stiffness_at_output), q(m.backlash_at_output),

@@ -117,8 +117,9 @@ def checks_table(checks: list, caption: str) -> str:
 def requirement_table(checks: list, caption: str) -> str:
     """Checks (:class:`calc.checks.Check`) of a value reached (its required side) against a limit
     the case requires (its rated side): ``value <= required``."""
-    rows = [[prose(k.criterion), q(k.required_value), q(k.rated_value), util(k.utilization), verdict_mark(k.passes, k.not_made)]
-            for k in checks]
+    at_least = lambda k: r"$\geq$ " if k.at_least else ""  # noqa: E731 (a lower bound: a term of it unknown)
+    rows = [[prose(k.criterion), at_least(k) + q(k.required_value), q(k.rated_value), at_least(k) + util(k.utilization),
+             verdict_mark(k.passes, k.not_made)] for k in checks]
     # The verdict is a paragraph: a check not made gives its reason, which may be long.
     return table(r"@{}p{0.2\linewidth} r r r p{0.3\linewidth}@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
                  caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")

@@ -115,7 +115,7 @@ def stiffness_chain_svg(accuracy) -> str:
     row, left, top = 30, 130, 24
     height = top + row * len(members) + 34
     scale = (WIDTH - left - 10) / 110  # 0 to 110 %
-    twist = sum(m.twist_at_applied_torque.quantity.m_as("arcmin") for m in members)
+    twist = np.nansum([m.twist_at_applied_torque.quantity.m_as("arcmin") for m in members])  # a member of unknown C: none
     title = (f"Stiffness chain at {accuracy.applied_torque}: C_total = {accuracy.C_total}, "
              f"twist {twist:.3g} arcmin (E11)")
     body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
@@ -126,7 +126,8 @@ def stiffness_chain_svg(accuracy) -> str:
     for k, m in enumerate(members):
         y = top + row * k + 5
         share = 100 * m.share_of_compliance
-        label = f"{share:.3g} %: {m.twist_at_applied_torque}, C = {m.stiffness_at_output}"
+        label = (f"{share:.3g} %: {m.twist_at_applied_torque}, C = {m.stiffness_at_output}" if m.stiffness_at_output.value is not None
+                 else "C unknown: reckoned rigid, so the twist is more")
         body += [f'<rect x="{left}" y="{y}" width="{scale * share:.1f}" height="{row - 10}" fill="{SIDE_COLORS.get(m.side, "#888")}"/>',
                  f'<text x="{left - 6}" y="{y + 9}" text-anchor="end">{escape(m.name)}</text>',
                  f'<text x="{left - 6}" y="{y + 20}" text-anchor="end" fill="#666">({escape(m.side)} side)</text>',

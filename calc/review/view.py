@@ -246,12 +246,15 @@ def _torsion_table(t) -> str:
 def _accuracy_table(a) -> str:
     """The chain's accuracy (:class:`calc.sections.accuracy.AccuracyValues`)."""
     rows = [
-        [typeset("C_total"), "total torsional stiffness at the output", _q(a.C_total)],
-        [typeset("phi_LM"), f"lost motion at the applied torque {_q(a.applied_torque)}", _q(a.lost_motion)],
+        [typeset("C_total"), "total torsional stiffness at the output" + (" (<b>an upper bound</b>)" if a.unknown_chain else ""),
+         ("≤ " if a.unknown_chain else "") + _q(a.C_total)],
+        [typeset("phi_LM"), f"lost motion at the applied torque {_q(a.applied_torque)}" + (" (<b>a lower bound</b>)" if a.unknown_chain else ""),
+         ("≥ " if a.unknown_chain else "") + _q(a.lost_motion)],
         ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.positioning_rule)})"
          + (f"; <b>a lower bound</b>: unknown {typeset('; '.join(a.unknown))}" if a.unknown else ""),
          ("≥ " if a.unknown else "") + _q(a.positioning_accuracy)],
-        ["", "repeatability" + (" (upper bound)" if a.repeatability_is_bound else ""), _q(a.repeatability)],
+        ["", "repeatability" + (" (<b>not known</b>: a member's twist or backlash unknown)" if a.unknown_chain
+                                else " (upper bound)" if a.repeatability_is_bound else ""), _q(a.repeatability)],
     ]
     return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
 
@@ -357,9 +360,9 @@ def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[
         v = None if s is None else getattr(s.shown, field)
         return "" if v is None else str(in_system(v))
 
-    def bound(r):
+    def bound(r, field="unknown"):
         s = section(r, "accuracy")
-        return "≥ " if s is not None and s.shown.unknown else ""
+        return "≥ " if s is not None and getattr(s.shown, field) else ""
 
     rows = [
         ("verdict", lambda r: r.verdict.word),
@@ -373,7 +376,7 @@ def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[
         ("T_2max", lambda r: shown(r, "profile", "T_2max")),
         ("T_2m", lambda r: shown(r, "profile", "T_2m")),
         ("positioning accuracy", lambda r: bound(r) + shown(r, "accuracy", "positioning_accuracy")),
-        ("lost motion", lambda r: shown(r, "accuracy", "lost_motion")),
+        ("lost motion", lambda r: bound(r, "unknown_chain") + shown(r, "accuracy", "lost_motion")),
     ]
     return [(name, [f(r) for _, r in variants]) for name, f in rows]
 

@@ -78,6 +78,10 @@ class AccuracyCase:
     #: The terms of the positioning accuracy not known for the chosen parts, each naming the part
     #: and the missing figure: the accuracy reckoned without them is a lower bound.
     unknown: list = field(default_factory=list)
+    #: Of those, the members' twist or backlash unknown (a followed selection's row leaves its
+    #: C_t21 or backlash empty): the member is reckoned rigid and free of backlash, so the lost
+    #: motion and repeatability are lower bounds as well, and the chain's stiffness an upper one.
+    unknown_chain: list = field(default_factory=list)
     #: The components whose followed selection chooses no part (its best-ranked stands in), as
     #: sentences: no requirement can be decided on a chain of parts that will not be ordered.
     unchosen: list = field(default_factory=list)
@@ -308,9 +312,16 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         if not np.isnan(rows["K_1"][row].magnitude):  # the catalog gives the gear's stiffness curve
             curve = StiffnessCurve(*(rows[name][row] for name in ("T_L1", "T_L2", "K_1", "K_2", "K_3")))
             stiffness = curve.K_1
-        for column, q in (("C_t21", stiffness), ("backlash", backlash)):
-            if np.isnan(q.magnitude):
-                raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), column {column}: expected a value, found an empty cell")
+        empty = [column for column, q in (("C_t21", stiffness), ("backlash", backlash)) if np.isnan(q.magnitude)]
+        if empty and part != SELECTED:  # a part named here: its figures are asked for
+            raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), column {empty[0]}: expected a value, found an empty cell")
+        if empty:  # the selection's part: the chain is reckoned without the figure, and says so
+            figures = " and ".join({"C_t21": "torsional stiffness C_t21", "backlash": "backlash"}[c] for c in empty)
+            unknown = f"{chosen_part}: its {figures} (empty in {rows.catalog_of(row)} row {rows.lines[row]}; reckoned {'rigid' if 'C_t21' in empty else 'free of backlash'})"
+            out.unknown.append(unknown)
+            out.unknown_chain.append(unknown)
+            stiffness = Q_(np.inf, "N*m/arcmin") if "C_t21" in empty else stiffness
+            backlash = Q_(0.0, "arcmin") if "backlash" in empty else backlash
         sources.append(source)
     elif t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: a catalog is read only for a part; give part as well")
@@ -367,19 +378,26 @@ def accuracy_of(case: Case) -> tuple:
     return once(case, "accuracy", compute)
 
 
+def _unknown_terms(spec: AccuracyCase, name: str) -> list:
+    """The unknown terms that leave ``name`` (positioning_accuracy, repeatability, lost_motion)
+    below what the chain reaches: every one for the positioning accuracy, a member's twist or
+    backlash for the others."""
+    return spec.unknown if name == "positioning_accuracy" else spec.unknown_chain if name in ("repeatability", "lost_motion") else []
+
+
 def relation(spec: AccuracyCase, name: str) -> str:
-    """How a value relates to what the chain reaches: ``>=`` for a positioning accuracy that
-    is a lower bound (a term of it unknown for the chosen parts), else ``=``."""
-    return ">=" if name == "positioning_accuracy" and spec.unknown else "="
+    """How a value relates to what the chain reaches: ``>=`` for a value that is a lower bound (a
+    term of it unknown for the chosen parts), else ``=``."""
+    return ">=" if _unknown_terms(spec, name) else "="
 
 
 def not_known(spec: AccuracyCase, name: str) -> str | None:
     """Why the check of ``name`` cannot be made, or None: a followed selection chooses no part
-    (the chain is of a part that stands in), or the positioning accuracy is a lower bound (a term
-    of it is unknown for the chosen parts)."""
+    (the chain is of a part that stands in), or the value is a lower bound (a term of it is
+    unknown for the chosen parts)."""
     reasons = list(spec.unchosen)
-    if name == "positioning_accuracy" and spec.unknown:
-        reasons.append("the positioning accuracy is a lower bound: unknown " + "; ".join(spec.unknown))
+    if _unknown_terms(spec, name):
+        reasons.append(f"the {name.replace('_', ' ')} is a lower bound: unknown " + "; ".join(_unknown_terms(spec, name)))
     return "; ".join(reasons) or None
 
 
@@ -458,6 +476,9 @@ class AccuracyValues:
     positioning_rule: str
     positioning_accuracy: Value
     unknown: list  # the terms unknown for the chosen parts: the positioning accuracy is a lower bound
+    #: a member's twist or backlash unknown: the lost motion and the repeatability are lower bounds,
+    #: C_total an upper one
+    unknown_chain: list
     repeatability: Value
     repeatability_is_bound: bool
     members: list  # Member
@@ -482,8 +503,14 @@ def _member(spec: AccuracyCase, c: Chain, k: int, share: float, twist) -> Member
     if comp.name in spec.traces:
         path, t = spec.traces[comp.name]
         trace = MeasuredTrace(path, Value.of(t.accuracy, "arcsec"), t.governing)
-    return Member(comp.name, comp.side, comp.source, Value.of(c.stiffness_at_output[k], "N*m/arcmin"), Value.of(c.backlash_at_output[k], "arcmin"),
-                  None if np.isnan(ta.magnitude) else Value.of(ta, "arcsec"), number(share), Value.of(twist, "arcmin"), curve, loop, trace)
+    rigid = np.isinf(comp.stiffness.magnitude)  # its stiffness unknown (spec.unknown_chain): no stiffness, no twist to show
+    return Member(comp.name, comp.side, comp.source, _known(c.stiffness_at_output[k], "N*m/arcmin", rigid), Value.of(c.backlash_at_output[k], "arcmin"),
+                  None if np.isnan(ta.magnitude) else Value.of(ta, "arcsec"), number(share), _known(twist, "arcmin", rigid), curve, loop, trace)
+
+
+def _known(q, unit: str, unknown: bool) -> Value:
+    """A value, or no value (``n/a``, JSON null) where a term of it is unknown."""
+    return Value(None, unit) if unknown else Value.of(q, unit)
 
 
 def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
@@ -507,10 +534,10 @@ def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
         applied_torque=Value.of(a.applied_torque, "N*m"), ratio=None if c.ratio is None else number(c.ratio.m_as("")),
         nominal_torque=None if a.nominal_torque is None else Value.of(a.nominal_torque, "N*m"),
         nominal_torque_from="accuracy.nominal_torque" if spec.nominal_torque is not None else c.nominal_torque_from,
-        C_total=Value.of(c.stiffness, "N*m/arcmin"), C_total_is_secant=c.has_curves, backlash=Value.of(c.backlash, "arcmin"),
+        C_total=_known(c.stiffness, "N*m/arcmin", np.isinf(c.stiffness.magnitude)), C_total_is_secant=c.has_curves, backlash=Value.of(c.backlash, "arcmin"),
         transmission_accuracy=Value.of(c.transmission_accuracy, "arcsec"), transmission_accuracy_from=c.transmission_accuracy_from,
         lost_motion=Value.of(a.lost_motion, "arcmin"), positioning_rule=a.rule.text, positioning_accuracy=Value.of(a.positioning_accuracy, "arcmin"),
-        unknown=list(spec.unknown), repeatability=Value.of(a.repeatability, "arcmin"), repeatability_is_bound=a.repeatability_is_bound,
+        unknown=list(spec.unknown), unknown_chain=list(spec.unknown_chain), repeatability=Value.of(a.repeatability, "arcmin"), repeatability_is_bound=a.repeatability_is_bound,
         members=members, radius=None if spec.radius is None else Value.of(spec.radius, "mm"), arcs=arcs, check_arcs=check_arcs,
         positioning=positioning,
     )
@@ -574,6 +601,9 @@ class AccuracyResult:
             "positioning_rule": v.positioning_rule, "positioning_accuracy": v.positioning_accuracy.to_json(),
             # A term unknown for the chosen parts: the value above is a lower bound, and says which.
             "positioning_accuracy_is_lower_bound": bool(v.unknown), "unknown": v.unknown,
+            # A member's twist or backlash unknown (reckoned rigid, free of backlash): bounds too.
+            "lost_motion_is_lower_bound": bool(v.unknown_chain), "repeatability_is_lower_bound": bool(v.unknown_chain),
+            "C_total_is_upper_bound": bool(v.unknown_chain),
             "repeatability": v.repeatability.to_json(), "repeatability_is_bound": v.repeatability_is_bound,
             "components": [_member_json(m) for m in v.members],
         }
@@ -595,6 +625,8 @@ class AccuracyResult:
                "utilization": None if k.utilization is None else number(k.utilization, f"accuracy.{k.name}"), "passes": k.passes}
         if k.not_made is not None:
             out["not_made"] = k.not_made
+        if k.at_least and k.passes is False:
+            out["value_is_lower_bound"] = True  # a term unknown, and the bound already over the limit
         out["governs"] = True
         if k.name in self.shown.check_arcs:
             value_arc, required_arc = self.shown.check_arcs[k.name]
@@ -618,12 +650,14 @@ class AccuracyResult:
         ta_from = ", ".join(v.transmission_accuracy_from) or "no component gives one"
         t_n = "" if v.nominal_torque is None else f", T_N = {v.nominal_torque} ({v.nominal_torque_from})"
         lines += [
-            f"  C_total = {v.C_total}{' (secant |T| / φ at the applied torque: a member gives a stiffness curve)' if v.C_total_is_secant else ''}; backlash = {v.backlash}; transmission accuracy = {v.transmission_accuracy} ({ta_from})",
-            f"  Lost motion = j_t + |T| / C = {v.lost_motion} (E12)",
+            f"  C_total {'<=' if v.unknown_chain else '='} {v.C_total}{' (secant |T| / φ at the applied torque: a member gives a stiffness curve)' if v.C_total_is_secant else ''}; "
+            f"backlash {'>=' if v.unknown_chain else '='} {v.backlash}; transmission accuracy = {v.transmission_accuracy} ({ta_from})",
+            f"  Lost motion = j_t + |T| / C {relation(self.inputs, 'lost_motion')} {v.lost_motion} (E12)",
             f"  Positioning accuracy ({v.positioning_rule}{t_n}) {relation(self.inputs, 'positioning_accuracy')} {v.positioning_accuracy} (E13)"
             + (f"; a lower bound: unknown {'; '.join(v.unknown)}" if v.unknown else ""),
             f"  Repeatability {'<=' if v.repeatability_is_bound else '='} {v.repeatability} "
-            f"({'bounded by the lost motion under torque' if v.repeatability_is_bound else 'the backlash at T = 0'}, E13)",
+            f"({'bounded by the lost motion under torque' if v.repeatability_is_bound else 'the backlash at T = 0'}, E13)"
+            + (f"; not known: unknown {'; '.join(v.unknown_chain)}" if v.unknown_chain else ""),
         ]
         if v.radius is not None:
             a = v.arcs
@@ -655,7 +689,8 @@ class AccuracyResult:
                 continue
             arcs = v.check_arcs.get(k.name)
             lines.append(
-                f"  {k.name:<22} {str(value):>12} required <= {str(limit):>12}  utilization {k.utilization:.2f}  {'ok' if k.passes else 'FAIL'}"
+                f"  {k.name:<22} {('>= ' if k.at_least else '') + str(value):>12} required <= {str(limit):>12}  "
+                f"utilization {'>= ' if k.at_least else ''}{k.utilization:.2f}  {'ok' if k.passes else 'FAIL'}"
                 + (f"  (as arcs: {arcs[0]} <= {arcs[1]})" if arcs else "")
             )
         return lines
@@ -667,7 +702,10 @@ class AccuracyResult:
         checks = []
         for k in (c.at(0) for c in requirement_checks(self.inputs, self.accuracy)):
             why = not_known(self.inputs, k.name)
-            checks.append(k if why is None else dataclasses.replace(k, passes=None, utilization=None, not_made=why, at_least=True))
+            if why is not None and k.passes is False and not self.inputs.unchosen:
+                checks.append(dataclasses.replace(k, at_least=True))  # a lower bound already over the limit: it fails
+            else:
+                checks.append(k if why is None else dataclasses.replace(k, passes=None, utilization=None, not_made=why, at_least=True))
         return Governing(NAME, None, True, checks) if checks else None
 
     def verdict(self) -> Verdict | None:
@@ -678,8 +716,9 @@ class AccuracyResult:
         open_ = [k for k in g.checks if k.passes is None]
         failing = [k for k in g.checks if k.passes is False]
         reasons = [
-            f"The accuracy requirement is not met: {k.name} {fmt(k.required, k.unit)} > required {fmt(k.rated, k.unit)}, "
-            f"{sig(100 * (k.utilization - 1), 3)} % over"
+            f"The accuracy requirement is not met: {k.name} {'>= ' if k.at_least else ''}{fmt(k.required, k.unit)} > required {fmt(k.rated, k.unit)}, "
+            f"{'at least ' if k.at_least else ''}{sig(100 * (k.utilization - 1), 3)} % over"
+            + (f" (a lower bound: unknown {'; '.join(_unknown_terms(self.inputs, k.name))})" if k.at_least else "")
             for k in failing
         ] + [
             f"The accuracy requirement is not decided: {k.name} {relation(self.inputs, k.name)} "
