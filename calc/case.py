@@ -216,8 +216,10 @@ def once(case: Case, name: str, compute):
     return case.computed[name]
 
 
-def read_case(path) -> Case:
+def read_case(path, text: str | None = None) -> Case:
     """Read and check a case file; raise :class:`CalcError` naming the file and key on bad input.
+    ``text``, where given, is read as the file's text (a case edited in memory, its files found
+    beside ``path`` as the file's would be).
 
     The shared inputs are read here by their sections (:mod:`calc.sections`): the load cycle
     (typed, or derived from the moves and the mechanism or from a drive record), the motor and
@@ -225,11 +227,14 @@ def read_case(path) -> Case:
     from .sections import FURTHER, TOP_KEYS, drive, duty, gearbox, motion
 
     path = Path(path)
-    if path.is_dir():
+    if text is not None:
+        raw = text.encode("utf-8")
+    elif path.is_dir():
         raise CalcError(f"{path}: expected a case file, found a directory")
-    if not path.is_file():
+    elif not path.is_file():
         raise CalcError(f"{path}: the case file does not exist")
-    raw = path.read_bytes()
+    else:
+        raw = path.read_bytes()
     try:
         data = tomllib.loads(raw.decode("utf-8-sig"))  # an editor's byte-order mark is not TOML; catalogs accept one too
     except UnicodeDecodeError:

@@ -721,3 +721,51 @@ def test_a_forced_catalog_motor_is_checked_alone_and_saved_by_name():
     panel.controls["motor.part"].value = "the selection's"
     panel.settled()
     assert "Motor <b>SGM7J-02A</b>" in panel.results.value and panel.changes() == {}
+
+
+def test_moves_added_and_removed_follow_and_are_kept(tmp_path):
+    """Entries of the moves added and removed in the panel. The example's cycle is one move of
+    0.5 s and a dwell of 1 s: ED = 0.5 / 1.5 = 33.3 %. A dwell added after the dwell (as long as
+    the last one, 1 s): ED = 0.5 / 2.5 = 20 %. A move added after the first (a copy of it, 90 deg in
+    0.5 s) and turned back: ED = 1.0 / 3.0 = 33.3 % and the table ends where it started. The saved
+    file has the edited moves, its comments, and re-evaluates to the screen."""
+    case = tmp_path / "axis.toml"
+    case.write_text(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{DERIVED_EXAMPLE.parents[1]}/data/'))
+    panel = DesignReview(case).settled()
+    ed = lambda: panel.shown[1].evaluated.sections["profile"].shown.ED.value  # noqa: E731
+    assert ed() == pytest.approx(100 / 3) and [label for label, _ in panel.entry.options] == ["1 move", "2 dwell"]
+    panel.add_entry(2, "dwell")
+    panel.settled()
+    assert ed() == pytest.approx(20.0) and [label for label, _ in panel.entry.options] == ["1 move", "2 dwell", "3 dwell"]
+    assert "dr-changed" in panel._labels["move[3].dwell"].value and "dr-changed" not in panel._labels["move[2].dwell"].value
+    panel.add_entry(1, "move")
+    panel.settled()
+    panel.controls["move[2].distance"].value = -90.0
+    panel.settled()
+    assert [label for label, _ in panel.entry.options] == ["1 move", "2 move", "3 dwell", "4 dwell"]
+    assert ed() == pytest.approx(100 / 3)
+    assert panel.shown[0].motion.tables["move"][1] == {"distance": "-90 degree", "time": "0.5 s", "accel_time": "0.15 s", "jerk_time": "0.03 s"}
+    panel.remove_entry(4)
+    panel.settled()
+    assert ed() == pytest.approx(1.0 / 2.0 * 100)
+    shown = panel.shown[1].evaluated.to_json()
+    saved = panel.save("axis-back-and-forth.toml")
+    text = saved.read_text()
+    assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3; move 90 deg in 0.5 s added as "
+                           "entry 2; entry 4 of the moves removed; move[2].distance 90 deg -> -90 deg\n")
+    assert "# One index: 90 deg in 0.5 s" in text and text.count("\n[[move]]\n") == 3
+    again = evaluate_case(read_case(saved)).to_json()
+    assert again["verdict"] == shown["verdict"] and again["gearbox"]["selected"] == shown["gearbox"]["selected"]
+    assert again["duty"] == shown["duty"]
+    # Undo steps back through the edits too: the move turned forwards again, then the move taken out.
+    panel.undo()
+    assert [label for label, _ in panel.entry.options] == ["1 move", "2 move", "3 dwell", "4 dwell"]
+    panel.undo()
+    assert panel.controls["move[2].distance"].value == 90.0
+    panel.undo()
+    assert [label for label, _ in panel.entry.options] == ["1 move", "2 dwell", "3 dwell"]
+    # The only move cannot be removed: the panel says why and keeps the moves.
+    panel.load()
+    panel.remove_entry(1)
+    assert panel.message.value.endswith("not removed</b>: axis.toml: move: expected at least one move with a distance, found only dwells")
+    assert [label for label, _ in panel.entry.options] == ["1 move", "2 dwell"]

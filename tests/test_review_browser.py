@@ -276,3 +276,41 @@ def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
         assert figure.count() == 1 and figure.locator("rect").count() == 6
         figure.scroll_into_view_if_needed()
         page.screenshot(path=str(shots / "ratio-search.png"))
+
+
+def test_a_dwell_added_and_kept_in_the_address(tmp_path):
+    """*+ dwell* puts a dwell as long as the last one (1 s) after the chosen entry (the last): the
+    cycle is 0.5 + 1 + 1 = 2.5 s, ED = 0.5 / 2.5 = 20 %, and its row shows, marked as added. The
+    edit goes into the page's address: a reload gives the same moves and results. Saved, the
+    file has the three entries."""
+    from bench.review_browser import browser_page, row, wait_for_results
+
+    case = tmp_path / "axis.toml"
+    case.write_text(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{ROOT}/data/'))
+    shots = SHOTS / "moves"
+    shots.mkdir(parents=True, exist_ok=True)
+    with served(case) as server, browser_page() as page:
+        page.goto(server.url)
+        page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
+        assert "ED 33.33 %" in page.inner_text(RESULTS_SELECTOR)
+        g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
+        page.locator(".design-review .dr-moves button", has_text="+ dwell").click()
+        wait_for_results(page, g)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
+        shown = page.inner_text(RESULTS_SELECTOR)
+        assert "ED 20 %" in shown and "cycle 2.5 s" in shown
+        assert row(page, "move[3].dwell").locator(".dr-changed").count() == 1
+        row(page, "move[3].dwell").scroll_into_view_if_needed()
+        page.screenshot(path=str(shots / "dwell-added.png"))
+        address = page.url
+        assert '"edits"' in page.evaluate("decodeURIComponent(location.hash)")
+        page.goto("about:blank")
+        page.goto(address)
+        page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')?.dataset.edits?.includes('dwell')",
+                               timeout=60_000)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
+        assert page.inner_text(RESULTS_SELECTOR) == shown
+        page.locator(".design-review button", has_text="Save as case file").click()
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('saved as axis-variant-1.toml')")
+        text = (tmp_path / "axis-variant-1.toml").read_text()
+        assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3\n") and text.count("\n[[move]]\n") == 3

@@ -8,7 +8,8 @@ arrived, are greyed and marked out of date; a lost connection to the kernel (the
 a tunnel dropped) greys them too and says how to get back. It keeps the changed values in the
 page's address (``#…``), so a reload or a shared link types them in again, and asks before a
 reload or a switch of case drops changes; a click on a candidate's row forces that part (its
-control set as a reviewer would set it). Voilà runs it from the page's notebook
+control set as a reviewer would set it). The moves' edits (entries added or removed) go into the
+address too; a link's are handed back to the kernel through a hidden field (``dr-edits``). Voilà runs it from the page's notebook
 (``design-review.ipynb``); in JupyterLab the kernel is beside the notebook and it is not needed.
 """
 
@@ -96,7 +97,7 @@ SCRIPT = r"""<script>
       const text = lost
         ? 'Connection to the server lost: the results shown are not those of the fields. Start the server again (make review) and reload the page; the changed values are kept in its address.'
         : stale ? 'Out of date: computing the results of the values changed (a value typed counts once Enter is pressed or the field is left).'
-        : 'Current: the results are those of the values shown' + (r.dataset.changed && r.dataset.changed !== '{}' ? ' (changed values marked)' : ' (the case file’s values)') + '.';
+        : 'Current: the results are those of the values shown' + (modified(r) ? ' (changed values marked)' : ' (the case file’s values)') + '.';
       // Written only when it changes: the observer below sees every write.
       if (state.textContent !== text) state.textContent = text;
       const word = lost ? 'lost' : stale ? 'stale' : 'current';
@@ -104,10 +105,14 @@ SCRIPT = r"""<script>
     }
     if (same && !lost && restoring === false) keepInAddress(r);  // not before the address was read
   }
-  // The changed values in the page's address, so that a reload or a link types them in again.
+  // Whether the screen differs from the case file: a value changed, or the moves edited.
+  const edited = r => r.dataset.edits && r.dataset.edits !== '[]';
+  const modified = r => (r.dataset.changed && r.dataset.changed !== '{}') || edited(r);
+  // The changed values (and the moves' edits) in the page's address, so that a reload or a link types them in again.
   function keepInAddress(r) {
     const changed = JSON.parse(r.dataset.changed || '{}'), name = r.dataset.case || '';
-    const hash = Object.keys(changed).length ? '#' + encodeURIComponent(JSON.stringify({case: name, values: changed})) : '';
+    const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed} : {case: name, values: changed};
+    const hash = modified(r) ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
     if (location.hash !== hash) history.replaceState(null, '', location.pathname + location.search + hash);
   }
   function rowOf(key) {
@@ -140,6 +145,15 @@ SCRIPT = r"""<script>
       restoring = 'case'; choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
       return;  // the values follow once the case is loaded
     }
+    // The moves' edits first (the kernel makes them at once, from the file's moves), then the values.
+    const edits = JSON.stringify(wanted.edits || []);
+    if (edits !== (r.dataset.edits || '[]')) {
+      if (restoring === 'edits') { if (Date.now() - loadedAt > 20000) restoring = false; return; }  // asked for, not drawn yet
+      const field = document.querySelector('.design-review .dr-edits input');
+      if (!field) { if (Date.now() - loadedAt > 20000) restoring = false; return; }  // not drawn yet
+      restoring = 'edits'; field.value = edits; field.dispatchEvent(new Event('change', {bubbles: true}));
+      return;
+    }
     // The controls are drawn after the results at times: wait for every row asked for (not forever).
     if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < 20000) return;
     restoring = false;
@@ -154,6 +168,7 @@ SCRIPT = r"""<script>
   document.addEventListener('click', e => {
     const tr = e.target.closest && e.target.closest('.design-review tr[data-force]');
     if (tr) type(tr.dataset.force, tr.dataset.part);
+    if (e.target.closest && e.target.closest('.design-review .dr-moves button')) { ask(); show(); }  // an entry added or removed
   }, true);
   document.addEventListener('pointerup', e => {
     if (e.target.closest && e.target.closest('.design-review .dr-row .widget-slider')) { ask(); show(); }
@@ -162,7 +177,7 @@ SCRIPT = r"""<script>
   document.addEventListener('change', e => {
     const r = results();
     if (restoring === 'case' || !e.target.closest || !e.target.closest('.design-review .dr-case') || !r) return;
-    if (r.dataset.changed && r.dataset.changed !== '{}' && !confirm('Switch the case and drop the changed values? (Save as case file keeps them.)')) {
+    if (modified(r) && !confirm('Switch the case and drop the changed values? (Save as case file keeps them.)')) {
       e.stopImmediatePropagation();
       const choice = e.target, name = r.dataset.case;
       choice.selectedIndex = [...choice.options].findIndex(o => optionText(o).split(' · ')[0] === name);
@@ -170,7 +185,7 @@ SCRIPT = r"""<script>
   }, true);
   window.addEventListener('beforeunload', e => {
     const r = results();
-    if (r && r.dataset.changed && r.dataset.changed !== '{}' && !location.hash) { e.preventDefault(); e.returnValue = ''; }
+    if (r && modified(r) && !location.hash) { e.preventDefault(); e.returnValue = ''; }
   });
   new MutationObserver(() => { if (restoring === 'case') restore(); show(); })
     .observe(document.body, {subtree: true, childList: true, attributes: true, attributeFilter: ['data-generation', 'data-inputs']});

@@ -28,11 +28,79 @@ def value_text(number: float, unit: str) -> str:
     return f"{number:.12g} {unit}" if unit else f"{number:.12g}"
 
 
-def changed_text(original: str, changes: dict, source: str) -> str:
+def _trailing(table) -> list:
+    """The comments and blank lines at the end of a table (those before the next one), taken off it."""
+    body, out = table.value.body, []
+    while body and body[-1][0] is None:
+        out.insert(0, body.pop()[1])
+    return out
+
+
+def with_moves_edited(original: str, edits, source: str) -> str:
+    """The TOML text ``original`` with its ``[[move]]`` entries edited in order: ``("add", k,
+    keys)`` puts a new entry of ``keys`` (its texts, as a case file writes them) after entry ``k``
+    (0: before the first), ``("remove", k)`` takes entry ``k`` out (counted from 1). The other
+    tables, comments and layout are kept; the comments after the last entry stay after it.
+
+    >>> text = '[[move]]\\ndistance = "90 deg"\\ntime = "0.5 s"\\n[[move]]\\ndwell = "1 s"\\n\\n# the coupling\\n[coupling]\\n'
+    >>> print(with_moves_edited(text, [("add", 2, {"dwell": "0.5 s"}), ("remove", 2)], "a.toml"))
+    [[move]]
+    distance = "90 deg"
+    time = "0.5 s"
+    [[move]]
+    dwell = "0.5 s"
+    <BLANKLINE>
+    # the coupling
+    [coupling]
+    <BLANKLINE>
+    """
+    import tomlkit
+
+    doc = tomlkit.parse(original)
+    moves = doc.get("move")
+    if not isinstance(moves, tomlkit.items.AoT):
+        raise CalcError(f"{source}: the case gives no [[move]] tables to add to or remove from")
+    for edit in edits:
+        k = edit[1]
+        if not 0 <= k <= len(moves) or (edit[0] == "remove" and k == 0):
+            raise CalcError(f"{source}: move entry {k}: the case has {len(moves)} [[move]] tables")
+        if edit[0] == "add":
+            table = tomlkit.table()
+            for key, text in edit[2].items():
+                table[key] = text
+            if k == len(moves):  # after the last: what followed it follows the new one
+                for item in _trailing(moves[-1]):
+                    table.value.append(None, item)
+            moves.insert(k, table)
+        elif len(moves) == 1:
+            raise CalcError(f"{source}: move entry 1 is the only one: a motion needs at least one move")
+        else:
+            trail = _trailing(moves[k - 1]) if k == len(moves) else []
+            del moves[k - 1]
+            for item in trail:
+                moves[-1].value.append(None, item)
+    return tomlkit.dumps(doc)
+
+
+def edit_text(edit) -> str:
+    """An edit of the moves (:func:`with_moves_edited`) in words.
+
+    >>> edit_text(("add", 2, {"dwell": "0.5 s"})), edit_text(("remove", 1))
+    ('dwell 0.5 s added as entry 3', 'entry 1 of the moves removed')
+    """
+    if edit[0] == "remove":
+        return f"entry {edit[1]} of the moves removed"
+    keys = edit[2]
+    what = f"dwell {keys['dwell']}" if "dwell" in keys else f"move {keys.get('distance')} in {keys.get('time')}"
+    return f"{what} added as entry {edit[1] + 1}"
+
+
+def changed_text(original: str, changes: dict, source: str, edits=()) -> str:
     """The TOML text ``original`` with each ``changes[key] = (number, unit)`` written at its key
     path (a key the file leaves out is added to its table; a text, a part's name, is written as
     it is, and None removes the key), and a first comment naming the changes and the file
-    ``source`` they were made to.
+    ``source`` they were made to (after the ``edits`` of the moves the text already carries,
+    :func:`with_moves_edited`).
 
     >>> text = '# axis\\n[motor]\\npeak_torque = "12 N*m"  # T_1B\\n'
     >>> print(changed_text(text, {"motor.peak_torque": (16.0, "N*m")}, "a.toml"))
@@ -45,7 +113,7 @@ def changed_text(original: str, changes: dict, source: str) -> str:
     import tomlkit
 
     doc = tomlkit.parse(original)
-    said = []
+    said = [edit_text(e) for e in edits]
     for key, (number, unit) in changes.items():
         m = _KEY.match(key)
         if m is None:

@@ -34,8 +34,8 @@ from ..sections.ratios import search as search_ratios
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
-from .inputs import InputSpec, input_specs, is_inch_pound, with_inputs
-from .keep import changed_text, free_name, save_path, value_text
+from .inputs import MOVE_TIMES, InputSpec, input_specs, is_inch_pound, with_inputs
+from .keep import changed_text, edit_text, free_name, save_path, value_text, with_moves_edited
 from .view import FAIL_COLOR, comparison_html, evaluated, results_html, typeset
 
 LABEL_WIDTH = "15.5em"
@@ -185,7 +185,26 @@ class DesignReview:
         self.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the results",
                                      style={"button_width": "7.5em"}, layout=w.Layout(width="auto", flex="0 0 auto"))
         self.units.observe(self._changed, names="value")
-        left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, w.HBox([self.all_candidates, self.ratio_search, self.units]), keep, self.load_cycle],
+        # The moves as a reviewer edits them: an entry taken out, a move or a dwell put in after it.
+        self.entry = w.Dropdown(description="moves", tooltip="an entry of the moves: remove it, or add a move or a dwell after it", style={"description_width": "3.5em"},
+                                layout=w.Layout(width="auto", flex="1 1 auto"))
+        self.remove_button = w.Button(description="remove", tooltip="take the chosen entry out of the moves", layout=w.Layout(width="5.5em"))
+        self.add_move_button = w.Button(description="+ move", tooltip="a move after the chosen entry (a copy of the move at or before it)",
+                                        layout=w.Layout(width="5.5em"))
+        self.add_dwell_button = w.Button(description="+ dwell", tooltip="a dwell after the chosen entry (as long as the last dwell, else 1 s)",
+                                         layout=w.Layout(width="5.5em"))
+        self.remove_button.on_click(lambda _: self.remove_entry(self.entry.value))
+        self.add_move_button.on_click(lambda _: self.add_entry(self.entry.value, "move"))
+        self.add_dwell_button.on_click(lambda _: self.add_entry(self.entry.value, "dwell"))
+        # The page's script replays the edits a link carries through this field (hidden).
+        self.edits_field = w.Text(continuous_update=False, layout=w.Layout(display="none"))
+        self.edits_field.add_class("dr-edits")
+        self.edits_field.observe(lambda change: self._edits_asked(change["new"]), names="value")
+        self.moves_editor = w.VBox([w.HBox([self.entry, self.remove_button, self.add_move_button, self.add_dwell_button], layout=w.Layout(width="100%")),
+                                    self.edits_field], layout=w.Layout(width="100%"))
+        self.moves_editor.add_class("dr-moves")
+        left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, self.moves_editor,
+                       w.HBox([self.all_candidates, self.ratio_search, self.units]), keep, self.load_cycle],
                       layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
         right = w.VBox([self.state, self.results, self.chain, self.variants_html], layout=w.Layout(flex="1 1 560px", min_width="560px"))
         # Side by side on a screen; on a narrow one (a notebook beside a file browser) the results go under.
@@ -197,10 +216,13 @@ class DesignReview:
         self._labels: dict = {}  # key path -> its label
         self.refused: dict = {}  # key path -> the refused text, with why
         self.specs: list[InputSpec] = []
-        self.case: Case | None = None
+        self.case: Case | None = None  # the case the controls start from: the file's, with the moves' edits
+        self.file_text: str | None = None
+        self.edits: list = []  # the edits of the moves (calc.review.keep.with_moves_edited), in order
+        self._added: set = set()  # the entries of the moves added by them
         self.shown: tuple | None = None  # (case, report) of the results on the screen
-        self._history: list[dict] = []  # the controls' values after each change, for undo and redo
-        self._undone: list[dict] = []
+        self._history: list[tuple] = []  # (edits of the moves, the controls' values) after each change, for undo and redo
+        self._undone: list[tuple] = []
         self._stepping = False
         self._dirty = False
         self._worker: threading.Thread | None = None
@@ -218,50 +240,69 @@ class DesignReview:
     def load(self) -> None:
         """Read the chosen case file and build one control row per input."""
         try:
-            case = read_case(self.case_file.value)
+            self.file_text = self.case_file.value.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            self.file_text = None  # the reader says why
+        if self._build([], {}):
+            self._history, self._undone = [self._state()], []
+            self.save_name.value = free_name(self.case.path)
+            self.refresh()
+
+    def _build(self, edits: list, values: dict, failed: str = "error") -> bool:
+        """Build one control row per input of the case file with the moves' ``edits``, the controls
+        at ``values`` (by key path) where given, else at the case's; False, and the reason in the
+        message, where the edited case cannot be read."""
+        path = self.case_file.value
+        try:
+            text = with_moves_edited(self.file_text, edits, path.name) if edits else self.file_text
+            case = read_case(path, text)  # no text: the file as it is, or why it cannot be read
             ratios = _ratios(case) if case.ratio is not None else []
         except CalcError as exc:
-            self.message.value = f'<b style="color:{FAIL_COLOR}">error</b>: {typeset(_without_folder(str(exc), self.case_file.value))}'
-            return
-        self.case, self.message.value = case, self._note
+            self.message.value = f'<b style="color:{FAIL_COLOR}">{failed}</b>: {typeset(_without_folder(str(exc), path))}'
+            return False
+        self.case, self.edits, self.message.value = case, list(edits), self._note
         self.specs = (input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
                       + ([forced_motor_spec(case)] if case.motor_catalog is not None else []))
+        self._added = _added_entries(edits)
         self.controls, self.fields, self._messages, self._labels, self.refused = {}, {}, {}, {}, {}
         old = self.controls_box.children
-        self.controls_box.children = [self._row(spec) for spec in self.specs]
+        self.controls_box.children = [self._row(spec, values.get(spec.key, spec.value)) for spec in self.specs]
         for row in old:
             _close(row)
         for control in self.controls.values():
             control.observe(self._changed, names="value")
-        self._history, self._undone = [self._values()], []
+        entries = case.motion.tables["move"] if case.motion is not None and case.motion.moves else []
+        self.moves_editor.layout.display = None if entries else "none"
+        self.entry.options = [(f"{k} {'dwell' if 'dwell' in m else 'move'}", k) for k, m in enumerate(entries, start=1)]
+        self.entry.value = len(entries) if entries else None
+        self.remove_button.disabled = len(entries) < 2
         # The results in the units the case file writes: inch-pound where its inputs are.
         inch = any(is_inch_pound(s.unit) for s in self.specs)
         self.units.unobserve(self._changed, names="value")
         self.units.value = "inch-pound" if inch else "SI"
         self.units.observe(self._changed, names="value")
-        self.save_name.value = free_name(case.path)
-        self.refresh()
+        return True
 
-    def _row(self, spec: InputSpec):
+    def _row(self, spec: InputSpec, value):
         """One input: its label with unit (the whole of it also as tooltip, its key path as
         ``data-key``), a slider and a number field, or a choice; under it, where there is one, a
         message (a refused value, or that the input has no effect on the design)."""
         import ipywidgets as w
 
-        label = w.HTML(self._label_html(spec, changed=False), layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
+        label = w.HTML(self._label_html(spec, changed=False, added=self._is_added(spec.key)), layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
         label.add_class("dr-label")
         self._labels[spec.key] = label
         message = w.HTML()
         self._messages[spec.key] = message
         if spec.options:
-            control = w.Dropdown(options=[(_text_of(r), r) for r in spec.options], value=spec.value, tooltip=spec.text,
+            control = w.Dropdown(options=[(_text_of(r), r) for r in spec.options], value=value, tooltip=spec.text,
                                  layout=w.Layout(width="auto", flex="1 1 auto"))  # the row's width: no choice cut short
             self.controls[spec.key] = control
             line = w.HBox([label, control])
         else:
-            slider = w.FloatSlider(value=spec.value, min=spec.low, max=spec.high, step=spec.step, readout=False,
+            slider = w.FloatSlider(value=value, min=spec.low, max=spec.high, step=spec.step, readout=False,
                                    continuous_update=False, tooltip=spec.text, layout=w.Layout(flex="1 1 auto", width="auto"))
-            field = w.Text(value=f"{spec.value:g}", continuous_update=False, tooltip=f"{spec.text}: {spec.low:g} to {spec.high:g}",
+            field = w.Text(value=f"{value:g}", continuous_update=False, tooltip=f"{spec.text}: {spec.low:g} to {spec.high:g}",
                            layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
             # The field is read here, not by the browser's number input, which clamps to the range
             # and drops a decimal comma without a word.
@@ -274,10 +315,11 @@ class DesignReview:
         return row
 
     @staticmethod
-    def _label_html(spec: InputSpec, changed: bool) -> str:
+    def _label_html(spec: InputSpec, changed: bool, added: bool = False) -> str:
         unit = " [" + pretty_unit(spec.unit) + "]" if spec.unit else ""
-        was = f" (changed; the file: {_text_of(spec.value)}{' ' + pretty_unit(spec.unit) if spec.unit else ''})" if changed else ""
-        return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{" class=dr-changed" if changed else ""}>'
+        was = (" (an entry added here: not in the file)" if added
+               else f" (changed; the file: {_text_of(spec.value)}{' ' + pretty_unit(spec.unit) if spec.unit else ''})" if changed else "")
+        return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{" class=dr-changed" if changed or added else ""}>'
                 f"{typeset(spec.label)}{unit}</span>")
 
     def _typed(self, spec: InputSpec, text: str) -> None:
@@ -317,9 +359,73 @@ class DesignReview:
     def _values(self) -> dict:
         return {s.key: self.controls[s.key].value for s in self.specs}
 
+    def _state(self) -> tuple:
+        """What undo and redo step through: the moves' edits and the controls' values."""
+        return json.dumps(self.edits), self._values()
+
     def changes(self) -> dict:
-        """The inputs changed from the case file: key path -> (number, unit)."""
+        """The inputs changed from the case file (with the moves' edits): key path -> (number, unit)."""
         return {s.key: (v, s.unit) for s in self.specs if (v := self.controls[s.key].value) != s.value}
+
+    def modified(self) -> bool:
+        """Whether the screen differs from the case file: a value changed, or the moves edited."""
+        return bool(self.edits or self.changes())
+
+    def _is_added(self, key: str) -> bool:
+        """Whether ``key`` is an input of an entry of the moves added here."""
+        m = _ENTRY.match(key)
+        return m is not None and int(m.group(1)) in self._added
+
+    # -- the moves edited: entries added and removed ---------------------------------------------------
+
+    def _entry_texts(self, k: int) -> dict:
+        """Entry ``k`` of the moves as a case file writes it, at the controls' values (a ramp the
+        file leaves out only where it was changed)."""
+        table = self.case.motion.tables["move"][k - 1]
+        names = ("dwell",) if "dwell" in table else ("distance", *(n for n, _ in MOVE_TIMES))
+        out = {}
+        for name in names:
+            key = f"move[{k}].{name}"
+            if key in self.controls and (name in table or key in self.changes()):
+                out[name] = value_text(self.controls[key].value, self._spec(key).unit)
+        return out
+
+    def add_entry(self, after: int, kind: str) -> None:
+        """Put a move (a copy of the move at or before entry ``after``, else the first) or a dwell
+        (as long as the last dwell, else 1 s) in after entry ``after``."""
+        entries = self.case.motion.tables["move"]
+        is_move = lambda k: "dwell" not in entries[k - 1]  # noqa: E731
+        before = list(range(after, 0, -1)) + list(range(after + 1, len(entries) + 1))
+        if kind == "move":
+            source = next(k for k in before if is_move(k))  # a motion has a move
+            keys = self._entry_texts(source)
+        else:
+            dwells = [k for k in range(len(entries), 0, -1) if not is_move(k)]
+            keys = self._entry_texts(dwells[0]) if dwells else {"dwell": "1 s"}
+        self._edit_moves(("add", after, keys))
+
+    def remove_entry(self, k: int) -> None:
+        """Take entry ``k`` out of the moves."""
+        self._edit_moves(("remove", k))
+
+    def _edit_moves(self, edit) -> None:
+        """Rebuild the controls for the moves with ``edit`` as well, each value carried to its
+        entry's new place (an entry removed takes its values with it)."""
+        values = _moved(self._values(), edit)
+        if self._build([*self.edits, edit], values, failed="not added" if edit[0] == "add" else "not removed"):
+            self._changed(None)
+
+    def _edits_asked(self, text: str) -> None:
+        """The edits of the moves a link carries (the page's script writes them here): the
+        case file's moves with those edits, at the file's values (the link's values follow)."""
+        if not text:
+            return
+        try:
+            edits = [tuple(e) for e in json.loads(text)]
+        except (ValueError, TypeError):
+            return
+        if edits != self.edits and self._build(edits, {}):
+            self._changed(None)
 
     def _shown_texts(self) -> dict:
         """Each control's text as the page shows it (the results' stamp, compared in the browser)."""
@@ -350,7 +456,7 @@ class DesignReview:
             return f'<div class="dr"><b style="color:{FAIL_COLOR}">input error</b>: {typeset(self._in_words(str(exc)))}</div>', None
         report, left_out = evaluated(case)
         left_out = [self._in_words(x) for x in left_out]
-        link = self._report_address(case.path) if not self.changes() else None  # the file's report, while the screen is the file
+        link = self._report_address(case.path) if not self.modified() else None  # the file's report, while the screen is the file
         typed = self.case.motion is not None and case.motion is None
         shown = None if self.all_candidates.value else SHOWN_CANDIDATES
         refused = [f"{self._spec(k).label}: {why}" for k, (_, why) in self.refused.items()]
@@ -408,14 +514,14 @@ class DesignReview:
         else:  # the figures of the last good inputs no longer apply
             self.load_cycle.layout.display = self.chain.layout.display = "none"
         for spec in self.specs:
-            label = self._label_html(spec, spec.key in changes)
+            label = self._label_html(spec, spec.key in changes, self._is_added(spec.key))
             if self._labels[spec.key].value != label:  # each value set is a message to the page
                 self._labels[spec.key].value = label
         self._keep_history()
         self._offer_download(changes)
         self.generation += 1
         attributes = (f'data-generation="{self.generation}" data-case="{escape(self.case.path.name)}" '
-                      f'data-inputs="{escape(json.dumps(stamp))}" '
+                      f'data-inputs="{escape(json.dumps(stamp))}" data-edits="{escape(json.dumps(self.edits))}" '
                       f'data-changed="{escape(json.dumps({k: stamp[k] for k in changes}))}"')
         self.results.value = text.replace('<div class="dr">', f'<div class="dr" {attributes}>', 1)
 
@@ -436,8 +542,9 @@ class DesignReview:
         path = self.case.path
         if path not in self.labels:
             return
-        word = report.verdict.word if not changes else f"{report.verdict.word} (changed here)"
-        label = f"{path.name} · {word}" if (changes or " · " in self.labels[path]) else self.labels[path]
+        changed = bool(changes or self.edits)
+        word = report.verdict.word if not changed else f"{report.verdict.word} (changed here)"
+        label = f"{path.name} · {word}" if (changed or " · " in self.labels[path]) else self.labels[path]
         options = [(label if p == path else self.labels[p], p) for _, p in self.case_file.options]
         if options != list(self.case_file.options):
             self._relabel(options)
@@ -486,15 +593,18 @@ class DesignReview:
     # -- kept: undo, save, download, variants ------------------------------------------------------
 
     def _keep_history(self) -> None:
-        values = self._values()
-        if not self._stepping and values != self._history[-1]:
-            self._history.append(values)
+        state = self._state()
+        if not self._stepping and state != self._history[-1]:
+            self._history.append(state)
             self._undone = []
         self.undo_button.disabled, self.redo_button.disabled = len(self._history) < 2, not self._undone
 
-    def _step_to(self, values: dict) -> None:
+    def _step_to(self, state: tuple) -> None:
+        edits, values = state
         self._stepping = True
         try:
+            if edits != json.dumps(self.edits):
+                self._build([tuple(e) for e in json.loads(edits)], values)
             for key, v in values.items():
                 self.controls[key].value = v
             self.settled()
@@ -518,7 +628,8 @@ class DesignReview:
         """The case file with the changed values written in (:func:`calc.review.keep.changed_text`)."""
         path = self.case.path
         changes = {k: ((None, u) if v == SELECTION else (v, u)) for k, (v, u) in self.changes().items()}
-        return changed_text(path.read_text(encoding="utf-8"), changes, path.name)
+        text = with_moves_edited(self.file_text, self.edits, path.name) if self.edits else self.file_text
+        return changed_text(text, changes, path.name, self.edits)
 
     def save(self, name: str | None = None) -> Path | None:
         """Write the changed values as the new case file ``name`` (by default the save field's)
@@ -540,7 +651,7 @@ class DesignReview:
 
     def _offer_download(self, changes: dict) -> None:
         """The same file as *Save as case file* writes, as a link to download."""
-        if not changes or self.refused:
+        if not (changes or self.edits) or self.refused:
             self.download.value = ""
             return
         try:
@@ -557,7 +668,7 @@ class DesignReview:
         file that reproduces it. The PDF goes to the reports' folder (the case's folder where none
         is given) and is linked under the buttons once built (``python -m calc report``, some 15 s,
         in a process of its own so the page keeps answering). Returns the thread building it."""
-        path = self.case.path if not self.changes() else self.save()
+        path = self.case.path if not self.modified() else self.save()
         if path is None:
             return None
         folder = Path(self.reports_folder) if self.reports_folder else path.parent
@@ -589,11 +700,49 @@ class DesignReview:
             return
         _, report = self.shown
         changes = self.changes()
-        said = "; ".join(f"{self._spec(k).label} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items())
+        said = "; ".join([edit_text(e) for e in self.edits]
+                         + [f"{self._spec(k).label} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items()])
         name = f"{len(self.variants) + 1}: {self.case.path.name}" + (f" with {said}" if said else " as written")
         self.variants.append((name, report))
         self.variants_html.value = comparison_html(self.variants, self.units.value)
         self.kept.value = f"kept variant {len(self.variants)}"
+
+
+#: An input of an entry of the moves: ``move[2].time``.
+_ENTRY = re.compile(r"^move\[(\d+)\]\.")
+
+
+def _added_entries(edits) -> set:
+    """The entries of the moves (counted from 1, after ``edits``) that the edits added."""
+    added: list = []  # the added entries' places, kept up to date edit by edit
+    for edit in edits:
+        if edit[0] == "add":
+            added = [k + 1 if k > edit[1] else k for k in added] + [edit[1] + 1]
+        else:
+            added = [k - 1 if k > edit[1] else k for k in added if k != edit[1]]
+    return set(added)
+
+
+def _moved(values: dict, edit) -> dict:
+    """The controls' ``values`` with each entry's inputs at its place after ``edit``.
+
+    >>> _moved({"move[1].time": 0.5, "move[2].dwell": 1.0, "motor.inertia": 2.0}, ("add", 1, {}))
+    {'move[1].time': 0.5, 'move[3].dwell': 1.0, 'motor.inertia': 2.0}
+    >>> _moved({"move[1].time": 0.5, "move[2].dwell": 1.0}, ("remove", 1))
+    {'move[1].dwell': 1.0}
+    """
+    out = {}
+    for key, v in values.items():
+        m = _ENTRY.match(key)
+        if m is None:
+            out[key] = v
+            continue
+        k = int(m.group(1))
+        if edit[0] == "remove" and k == edit[1]:
+            continue
+        moved = k + 1 if edit[0] == "add" and k > edit[1] else k - 1 if edit[0] == "remove" and k > edit[1] else k
+        out[f"move[{moved}]." + key[m.end():]] = v
+    return out
 
 
 def _text_of(value) -> str:
