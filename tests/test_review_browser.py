@@ -281,7 +281,7 @@ def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
 def test_a_dwell_added_and_kept_in_the_address(tmp_path):
     """*+ dwell* puts a dwell as long as the last one (1 s) after the chosen entry (the last): the
     cycle is 0.5 + 1 + 1 = 2.5 s, ED = 0.5 / 2.5 = 20 %, and its row shows, marked as added. The
-    edit goes into the page's address: a reload gives the same moves and results. Saved, the
+    edit and the unit system go into the page's address: a reload gives the same moves and results. Saved, the
     file has the three entries."""
     from bench.review_browser import browser_page, row, wait_for_results
 
@@ -302,11 +302,19 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
         assert row(page, "move[3].dwell").locator(".dr-changed").count() == 1
         row(page, "move[3].dwell").scroll_into_view_if_needed()
         page.screenshot(path=str(shots / "dwell-added.png"))
+        g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
+        page.locator(".design-review button", has_text="inch-pound").click()  # the other unit system, kept too
+        wait_for_results(page, g)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
+        shown = page.inner_text(RESULTS_SELECTOR)
+        assert "lbf·in" in shown
+        page.wait_for_function("() => decodeURIComponent(location.hash).includes('inch-pound')")
         address = page.url
         assert '"edits"' in page.evaluate("decodeURIComponent(location.hash)")
         page.goto("about:blank")
         page.goto(address)
-        page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')?.dataset.edits?.includes('dwell')",
+        page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')?.dataset.edits?.includes('dwell')"
+                               " && document.querySelector('.design-review .dr[data-generation]')?.dataset.units === 'inch-pound'",
                                timeout=60_000)
         page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
         assert page.inner_text(RESULTS_SELECTOR) == shown

@@ -8,8 +8,8 @@ arrived, are greyed and marked out of date; a lost connection to the kernel (the
 a tunnel dropped) greys them too and says how to get back. It keeps the changed values in the
 page's address (``#…``), so a reload or a shared link types them in again, and asks before a
 reload or a switch of case drops changes; a click on a candidate's row forces that part (its
-control set as a reviewer would set it). The moves' edits (entries added or removed) go into the
-address too; a link's are handed back to the kernel through a hidden field (``dr-edits``). Voilà runs it from the page's notebook
+control set as a reviewer would set it). The moves' edits (entries added or removed) and the unit system, where it
+is not the file's, go into the address too; a link's are handed back to the kernel through a hidden field (``dr-edits``). Voilà runs it from the page's notebook
 (``design-review.ipynb``); in JupyterLab the kernel is beside the notebook and it is not needed.
 """
 
@@ -112,7 +112,9 @@ SCRIPT = r"""<script>
   function keepInAddress(r) {
     const changed = JSON.parse(r.dataset.changed || '{}'), name = r.dataset.case || '';
     const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed} : {case: name, values: changed};
-    const hash = modified(r) ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
+    const units = r.dataset.units !== r.dataset.fileUnits;  // the other unit system than the file's
+    if (units) state.units = r.dataset.units;
+    const hash = modified(r) || units ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
     if (location.hash !== hash) history.replaceState(null, '', location.pathname + location.search + hash);
   }
   function rowOf(key) {
@@ -147,7 +149,7 @@ SCRIPT = r"""<script>
     }
     // The moves' edits first (the kernel makes them at once, from the file's moves), then the values.
     const edits = JSON.stringify(wanted.edits || []);
-    if (edits !== (r.dataset.edits || '[]')) {
+    if (edits !== JSON.stringify(JSON.parse(r.dataset.edits || '[]'))) {
       if (restoring === 'edits') { if (Date.now() - loadedAt > 20000) restoring = false; return; }  // asked for, not drawn yet
       const field = document.querySelector('.design-review .dr-edits input');
       if (!field) { if (Date.now() - loadedAt > 20000) restoring = false; return; }  // not drawn yet
@@ -158,6 +160,10 @@ SCRIPT = r"""<script>
     if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < 20000) return;
     restoring = false;
     for (const [key, text] of Object.entries(wanted.values)) type(key, text);
+    if (wanted.units && wanted.units !== r.dataset.units) {  // the unit system the link was shown in
+      const button = [...document.querySelectorAll('.design-review .widget-toggle-buttons button')].find(b => b.textContent.trim() === wanted.units);
+      if (button) { ask(); button.click(); }
+    }
   }
   document.addEventListener('change', e => {
     if (!e.target.closest || !e.target.closest('.design-review .dr-row')) return;

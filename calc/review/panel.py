@@ -218,6 +218,7 @@ class DesignReview:
         self.specs: list[InputSpec] = []
         self.case: Case | None = None  # the case the controls start from: the file's, with the moves' edits
         self.file_text: str | None = None
+        self.file_units = "SI"  # the unit system the case file writes its inputs in
         self.edits: list = []  # the edits of the moves (calc.review.keep.with_moves_edited), in order
         self._added: set = set()  # the entries of the moves added by them
         self.shown: tuple | None = None  # (case, report) of the results on the screen
@@ -244,6 +245,11 @@ class DesignReview:
         except (OSError, UnicodeDecodeError):
             self.file_text = None  # the reader says why
         if self._build([], {}):
+            # The results in the units the case file writes: inch-pound where its inputs are.
+            self.file_units = "inch-pound" if any(is_inch_pound(s.unit) for s in self.specs) else "SI"
+            self.units.unobserve(self._changed, names="value")
+            self.units.value = self.file_units
+            self.units.observe(self._changed, names="value")
             self._history, self._undone = [self._state()], []
             self.save_name.value = free_name(self.case.path)
             self.refresh()
@@ -276,11 +282,6 @@ class DesignReview:
         self.entry.options = [(f"{k} {'dwell' if 'dwell' in m else 'move'}", k) for k, m in enumerate(entries, start=1)]
         self.entry.value = len(entries) if entries else None
         self.remove_button.disabled = len(entries) < 2
-        # The results in the units the case file writes: inch-pound where its inputs are.
-        inch = any(is_inch_pound(s.unit) for s in self.specs)
-        self.units.unobserve(self._changed, names="value")
-        self.units.value = "inch-pound" if inch else "SI"
-        self.units.observe(self._changed, names="value")
         return True
 
     def _row(self, spec: InputSpec, value):
@@ -522,6 +523,7 @@ class DesignReview:
         self.generation += 1
         attributes = (f'data-generation="{self.generation}" data-case="{escape(self.case.path.name)}" '
                       f'data-inputs="{escape(json.dumps(stamp))}" data-edits="{escape(json.dumps(self.edits))}" '
+                      f'data-units="{escape(self.units.value)}" data-file-units="{escape(self.file_units)}" '
                       f'data-changed="{escape(json.dumps({k: stamp[k] for k in changes}))}"')
         self.results.value = text.replace('<div class="dr">', f'<div class="dr" {attributes}>', 1)
 
