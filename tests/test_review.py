@@ -534,6 +534,10 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
     # 30 N·m · 10 · 1.3 · 0.97 = 378.3 N·m: NPS045-10 instead of NPT035-10, marked as a difference.
     assert "Variants compared" in table and '<td class="differs">NPS045-10</td>' in table and '<td class="">NPT035-10</td>' in table
     assert '<td class="differs">378.3 N·m</td>' in table and "with motor peak torque" in table
+    # The comparison figure: each variant's worst governing utilization per part; the first's
+    # gearbox is NPT035-10's T_2max / T_2B = 151.3 / 220 = 69 %.
+    figure = table[table.index('<svg class="dr-compared"'):]
+    assert '<td class="">69 %</td>' in table and ">69 %</text>" in figure and "variant 2" in figure
     import json
     import subprocess
     import sys

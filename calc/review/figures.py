@@ -139,6 +139,51 @@ def stiffness_chain_svg(accuracy) -> str:
             f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
 
 
+#: A part's colour in the comparison of variants.
+PART_COLORS = {"gearbox": "#1f5fbf", "coupling": "#7b3fa0", "motor": "#2e7d32"}
+
+
+def comparison_svg(names: list[str], worst: dict) -> str:
+    """The variants' worst governing utilization of each part (``worst``: part -> percent per
+    variant, None where it has none, :func:`calc.review.view.worst_utilizations`) as grouped bars,
+    one group per variant named ``names``, with the limit of 100 % in red and a value over it
+    written in red.
+
+    >>> svg = comparison_svg(["1", "2"], {"gearbox": [32.0, 120.0], "coupling": [67.0, None], "motor": [94.0, 94.0]})
+    >>> svg.count("<rect"), svg.count('fill="#b2222a">120 %')  # five bars (no coupling in 2) and three keys; one over
+    (8, 1)
+    """
+    parts = list(worst)
+    known = [v for u in worst.values() for v in u if v is not None]
+    ticks = nice_ticks(0.0, max([100.0, *known]))
+    height, bottom, top = 210, 40, 34
+    plot = height - bottom - top
+    scale = plot / ticks[-1]
+    step = (WIDTH - LEFT - RIGHT) / max(len(names), 1)
+    bar = step * 0.8 / len(parts)
+    body = [f'<text x="0" y="14" font-weight="600">Worst governing utilization of each variant\'s parts [%]</text>']
+    for t in ticks:
+        y = height - bottom - scale * t
+        body += [f'<line x1="{LEFT}" x2="{WIDTH - RIGHT}" y1="{y:.1f}" y2="{y:.1f}" stroke="{"#b2222a" if t == 100 else "#e2e2e2"}"/>',
+                 f'<text x="{LEFT - 4}" y="{y + 4:.1f}" text-anchor="end">{t:g}</text>']
+    for k, name in enumerate(names):
+        x0 = LEFT + step * k + step * 0.1
+        for j, part in enumerate(parts):
+            v = worst[part][k]
+            if v is None:
+                continue
+            x, h = x0 + bar * j, scale * v
+            over = ' fill="#b2222a"' if v > 100 else ""
+            body += [f'<rect x="{x:.1f}" y="{height - bottom - h:.1f}" width="{bar * 0.9:.1f}" height="{h:.1f}" fill="{PART_COLORS.get(part, "#888")}"/>',
+                     f'<text x="{x + bar * 0.45:.1f}" y="{height - bottom - h - 3:.1f}" text-anchor="middle" font-size="9"{over}>{v:.0f} %</text>']
+        body.append(f'<text x="{x0 + step * 0.4:.1f}" y="{height - bottom + 14}" text-anchor="middle">variant {escape(name)}</text>')
+    legend = "".join(f'<rect x="{LEFT + 90 * j}" y="{height - 14}" width="10" height="10" fill="{PART_COLORS.get(p, "#888")}"/>'
+                     f'<text x="{LEFT + 90 * j + 14}" y="{height - 5}">{escape(p)}</text>' for j, p in enumerate(parts))
+    return (f'<svg class="dr-compared" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
+            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="worst utilization of each variant">'
+            + "".join(body) + legend + "</svg>")
+
+
 def ratio_search_svg(found: dict) -> str:
     """The ratio search (the JSON of :func:`calc.sections.ratios.search`) as bars: each ratio's RMS
     motor torque through its best gearbox, green where the ratio is feasible and keeps λ within its

@@ -348,11 +348,11 @@ def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[
 
     def chosen(r, name):
         s = section(r, name)
-        return "" if s is None else s.selection.selected or "none passes"
+        return "" if s is None or s.selection is None else s.selection.selected or "none passes"
 
     def worst(r, name):
-        s = section(r, name)
-        u = None if s is None else s.selection.best.worst
+        s = section(r, name)  # a motor the case types has no selection: its checks stand alone
+        u = None if s is None or s.selection is None else s.selection.best.worst
         return "" if u is None else f"{100 * u:.0f} %"
 
     def shown(r, name, field):
@@ -370,6 +370,8 @@ def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[
         ("gearbox worst utilization", lambda r: worst(r, "gearbox")),
         ("coupling", lambda r: chosen(r, "coupling")),
         ("coupling worst utilization", lambda r: worst(r, "coupling")),
+        ("motor", lambda r: chosen(r, "motor")),
+        ("motor worst utilization", lambda r: worst(r, "motor")),
         ("checks not made", lambda r: str(len(r.evaluated.not_made()) if r.evaluated is not None else 0)),
         ("mode", lambda r: "" if section(r, "profile") is None else section(r, "profile").shown.mode),
         ("ED", lambda r: shown(r, "profile", "ED")),
@@ -389,13 +391,27 @@ def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> s
         rows = comparison_rows(variants)
     finally:
         SYSTEM.reset(token)
+    from .figures import comparison_svg
+
     head = "".join(f"<th>{escape(n)}</th>" for n, _ in variants)
     body = "".join(
         f"<tr><td>{typeset(name)}</td>" + "".join(f'<td class="{"differs" if k and v != values[0] else ""}">{escape(v)}</td>' for k, v in enumerate(values)) + "</tr>"
         for name, values in rows
     )
+    figure = comparison_svg([str(k) for k in range(1, len(variants) + 1)], worst_utilizations(rows))
     return (f'{STYLE}<div class="dr dr-variants"><h3>Variants compared</h3><table><thead><tr><th></th>{head}</tr></thead>'
-            f"<tbody>{body}</tbody></table><div class=note>A value that differs from the first variant's is marked.</div></div>")
+            f"<tbody>{body}</tbody></table><div class=note>A value that differs from the first variant's is marked.</div>{figure}</div>")
+
+
+#: The parts whose worst governing utilization the comparison figures draw.
+COMPARED_PARTS = ("gearbox", "coupling", "motor")
+
+
+def worst_utilizations(rows: list[tuple[str, list[str]]]) -> dict:
+    """Each part's worst governing utilization per design, in percent, from the comparison's rows
+    (:func:`comparison_rows`, which print them to the percent); None where a design has none."""
+    by = dict(rows)
+    return {part: [float(v.rstrip(" %")) if v else None for v in by[f"{part} worst utilization"]] for part in COMPARED_PARTS}
 
 
 def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
@@ -425,11 +441,10 @@ def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], path) ->
         for k, v in enumerate(values[1:], start=2):
             if v != values[0]:
                 shown[r, k].set_facecolor("#fff0c0")
-    by = dict(rows)
     x = np.arange(len(names))
-    for offset, what in ((-0.2, "gearbox"), (0.2, "coupling")):
-        u = [float(v.rstrip(" %")) if v else 0.0 for v in by[f"{what} worst utilization"]]
-        bars.bar(x + offset, u, width=0.38, label=what)
+    width = 0.8 / len(COMPARED_PARTS)
+    for k, (what, u) in enumerate(worst_utilizations(rows).items()):
+        bars.bar(x + (k - (len(COMPARED_PARTS) - 1) / 2) * width, [0.0 if v is None else v for v in u], width=width * 0.95, label=what)
     bars.axhline(100, color="#b2222a", linewidth=1)
     bars.set_xticks(x, names, fontsize=8)
     bars.set_ylabel("worst governing utilization [%]", fontsize=8)
