@@ -773,3 +773,29 @@ def test_moves_added_and_removed_follow_and_are_kept(tmp_path):
     panel.remove_entry(1)
     assert panel.message.value.endswith("not removed</b>: axis.toml: move: expected at least one move with a distance, found only dwells")
     assert [label for label, _ in panel.entry.options] == ["1 move", "2 dwell"]
+
+
+def test_the_results_are_marked_out_of_date_while_a_change_is_computed():
+    """The kernel marks the results out of date as a change arrives and current once they are
+    drawn: in JupyterLab (notebook 07), where the page's script does not run, that is the mark."""
+    import threading
+
+    panel = DesignReview(EXAMPLE)
+    assert "dr-busy" not in panel.panel._dom_classes and 'data-state="current"' in panel.state.value
+    drawing, go_on = threading.Event(), threading.Event()
+    refresh = panel.refresh
+
+    def held():  # the computation held until the marks are read
+        drawing.set()
+        go_on.wait(10)
+        refresh()
+
+    panel.refresh = held
+    panel.controls["motor.peak_torque"].value = 16.0
+    assert drawing.wait(10)
+    assert "dr-busy" in panel.panel._dom_classes and 'data-state="stale"' in panel.state.value
+    assert "Out of date: computing" in panel.state.value
+    go_on.set()
+    panel.settled()
+    assert "dr-busy" not in panel.panel._dom_classes and 'data-state="current"' in panel.state.value
+    assert "201.8 N·m" in panel.results.value  # 16 · 10 · 1.3 · 0.97

@@ -19,10 +19,10 @@ from html import escape
 
 STYLE = """<style>
 .design-review .dr-state { font-size: 13px; padding: 3px 8px; border-radius: 3px; margin: 0 0 4px; background: #eef6ee; color: #1b5e20; }
-.design-review.dr-stale .dr-state { background: #fff4d6; color: #6d4c00; }
+.design-review.dr-stale .dr-state, .design-review.dr-busy .dr-state { background: #fff4d6; color: #6d4c00; }
 .design-review.dr-lost .dr-state { background: #b2222a; color: #fff; }
-.design-review.dr-stale .dr, .design-review.dr-lost .dr { opacity: 0.42; filter: grayscale(1); }
-.design-review.dr-stale .dr-figures, .design-review.dr-lost .dr-figures { opacity: 0.42; }
+.design-review.dr-stale .dr, .design-review.dr-lost .dr, .design-review.dr-busy .dr { opacity: 0.42; filter: grayscale(1); }
+.design-review.dr-stale .dr-figures, .design-review.dr-lost .dr-figures, .design-review.dr-busy .dr-figures { opacity: 0.42; }
 .design-review .dr-refused input { border: 2px solid #b2222a !important; background: #fff0f0 !important; }
 .design-review .dr-message { color: #b2222a; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
 .design-review .dr-idle { color: #666; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
@@ -90,7 +90,7 @@ SCRIPT = r"""<script>
     if (restoring !== false && restoring !== 'case') restore();
     const state = p.querySelector('.dr-state'), link = connection(), lost = link !== null && link !== 'connected';
     const same = current(), waiting = askedAfter !== null && Number(r.dataset.generation) <= askedAfter && Date.now() - askedAt < 3000;
-    const stale = !same || waiting;
+    const stale = !same || waiting || p.classList.contains('dr-busy');  // dr-busy: the kernel computing a change
     p.classList.toggle('dr-lost', lost);
     p.classList.toggle('dr-stale', stale && !lost);
     if (state) {
@@ -205,6 +205,14 @@ def page_html() -> str:
     return STYLE + SCRIPT
 
 
-def state_html() -> str:
-    """The line the script keeps up to date (the kernel writes its first words)."""
-    return f'<div class="dr-state" data-state="current">{escape("Current: the results are those of the values shown.")}</div>'
+#: What the kernel says while it computes the results of a change (the panel is marked ``dr-busy``).
+BUSY = "Out of date: computing the results of the values changed."
+
+
+def state_html(busy: bool = False) -> str:
+    """The line saying whether the results are current. The kernel writes it as it starts and
+    ends computing a change (in JupyterLab, where no script of the page runs, that is what marks
+    the results out of date); in the served page the script keeps it up to date with what only
+    the browser knows (a value typed, the connection lost)."""
+    word, text = ("stale", BUSY) if busy else ("current", "Current: the results are those of the values shown.")
+    return f'<div class="dr-state" data-state="{word}">{escape(text)}</div>'

@@ -561,19 +561,27 @@ class DesignReview:
             self._relabelling = False
 
     def _changed(self, _change) -> None:
-        """A control moved: draw in the worker thread; what moves meanwhile is drawn after, once."""
+        """A control moved: the results marked out of date at once, and drawn in the worker
+        thread; what moves meanwhile is drawn after, once."""
         with self._lock:
             self._dirty = True
             if self._worker is not None:
                 return
+            self._busy(True)
             self._worker = threading.Thread(target=self._work, daemon=True)
             self._worker.start()
+
+    def _busy(self, busy: bool) -> None:
+        """Mark the results out of date while a change is computed (``dr-busy``, the state line)."""
+        (self.panel.add_class if busy else self.panel.remove_class)("dr-busy")
+        self.state.value = state_html(busy)
 
     def _work(self) -> None:
         while True:
             with self._lock:  # "nothing left" and "no worker" at once, so no change slips between
                 if not self._dirty:
                     self._worker = None
+                    self._busy(False)
                     return
                 self._dirty = False
             try:
@@ -581,6 +589,7 @@ class DesignReview:
             except BaseException:  # a fault shows in the log; the next change starts a worker again
                 with self._lock:
                     self._worker = None
+                    self._busy(False)
                 raise
 
     def settled(self) -> "DesignReview":
