@@ -525,6 +525,8 @@ def test_undo_and_redo_step_through_the_changes():
 
 
 def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
+    import json
+
     panel = DesignReview(EXAMPLE)
     panel.keep_variant()
     panel.controls["motor.peak_torque"].value = 30.0
@@ -538,7 +540,16 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
     # gearbox is NPT035-10's T_2max / T_2B = 151.3 / 220 = 69 %.
     figure = table[table.index('<svg class="dr-compared"'):]
     assert '<td class="">69 %</td>' in table and ">69 %</text>" in figure and "variant 2" in figure
-    import json
+    panel.units.value = "inch-pound"  # the comparison follows the unit system shown: 378.3 N·m = 3348 lbf·in
+    panel.settled()
+    assert '<td class="differs">3348 lbf·in</td>' in panel.variants_html.value
+    # The variants' states go with the results (the page's address); a second panel given them
+    # (as the page's script gives a link's) shows the same comparison.
+    again = DesignReview(EXAMPLE)
+    again.units.value = "inch-pound"
+    again.settled()
+    again.variants_field.value = json.dumps(panel.variant_states)
+    assert again.variants_html.value == panel.variants_html.value and [n for n, _ in again.variants] == [n for n, _ in panel.variants]
     import subprocess
     import sys
 

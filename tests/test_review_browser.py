@@ -281,7 +281,8 @@ def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
 def test_a_dwell_added_and_kept_in_the_address(tmp_path):
     """*+ dwell* puts a dwell as long as the last one (1 s) after the chosen entry (the last): the
     cycle is 0.5 + 1 + 1 = 2.5 s, ED = 0.5 / 2.5 = 20 %, and its row shows, marked as added. The
-    edit and the unit system go into the page's address: a reload gives the same moves and results. Saved, the
+    edit, the unit system and the variants kept go into the page's address: a reload gives the same
+    moves, results and comparison. Saved, the
     file has the three entries."""
     from bench.review_browser import browser_page, row, wait_for_results
 
@@ -293,6 +294,8 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
         page.goto(server.url)
         page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
         assert "ED 33.33 %" in page.inner_text(RESULTS_SELECTOR)
+        page.locator(".design-review button", has_text="Keep as variant").click()  # the file's design, kept
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('kept variant 1')")
         g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
         page.locator(".design-review .dr-moves button", has_text="+ dwell").click()
         wait_for_results(page, g)
@@ -308,7 +311,11 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
         page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
         shown = page.inner_text(RESULTS_SELECTOR)
         assert "lbf·in" in shown
-        page.wait_for_function("() => decodeURIComponent(location.hash).includes('inch-pound')")
+        page.locator(".design-review button", has_text="Keep as variant").click()  # and the one with the dwell
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('kept variant 2')")
+        variants = page.inner_text(".design-review .dr-variants")
+        assert "2: axis.toml with dwell 1 s added as entry 3" in variants and "20 %" in variants
+        page.wait_for_function("() => decodeURIComponent(location.hash).includes('inch-pound') && decodeURIComponent(location.hash).includes('variants')")
         address = page.url
         assert '"edits"' in page.evaluate("decodeURIComponent(location.hash)")
         page.goto("about:blank")
@@ -318,6 +325,8 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
                                timeout=60_000)
         page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
         assert page.inner_text(RESULTS_SELECTOR) == shown
+        page.wait_for_selector(".design-review .dr-variants", timeout=30_000)
+        assert page.inner_text(".design-review .dr-variants") == variants  # the variants too, from the address
         page.locator(".design-review button", has_text="Save as case file").click()
         page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('saved as axis-variant-1.toml')")
         text = (tmp_path / "axis-variant-1.toml").read_text()

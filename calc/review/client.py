@@ -114,7 +114,9 @@ SCRIPT = r"""<script>
     const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed} : {case: name, values: changed};
     const units = r.dataset.units !== r.dataset.fileUnits;  // the other unit system than the file's
     if (units) state.units = r.dataset.units;
-    const hash = modified(r) || units ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
+    const variants = JSON.parse(r.dataset.variants || '[]');  // the variants kept, each as its edits and values
+    if (variants.length) state.variants = variants;
+    const hash = modified(r) || units || variants.length ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
     if (location.hash !== hash) history.replaceState(null, '', location.pathname + location.search + hash);
   }
   function rowOf(key) {
@@ -131,6 +133,18 @@ SCRIPT = r"""<script>
     if (target) { ask(); target.dispatchEvent(new Event('change', {bubbles: true})); }
   }
   function ask() { const r = results(); askedAfter = r ? Number(r.dataset.generation) : 0; askedAt = Date.now(); }
+  // Hand what a link carries (``wanted``) to the kernel through its hidden field, unless the
+  // results already carry it (``has``) or say it was asked for (``asked``: the kernel says why
+  // what it could not take was left out); true once so. Not forever: 20 s after the page loaded.
+  function handOver(what, selector, wanted, has, asked) {
+    const same = text => JSON.stringify(wanted) === JSON.stringify(JSON.parse(text || '[]'));
+    if (same(has) || (asked !== undefined && same(asked))) return true;
+    const field = document.querySelector('.design-review ' + selector);
+    if (Date.now() - loadedAt > 20000) { restoring = false; return false; }
+    if (restoring === what || !field) return false;  // asked for and not drawn yet, or the field not drawn yet
+    restoring = what; field.value = JSON.stringify(wanted); field.dispatchEvent(new Event('change', {bubbles: true}));
+    return false;
+  }
   function restore() {  // once, when the panel is first shown
     if (restoring === false) return;
     if (!location.hash) { restoring = false; return; }
@@ -147,15 +161,10 @@ SCRIPT = r"""<script>
       restoring = 'case'; choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
       return;  // the values follow once the case is loaded
     }
-    // The moves' edits first (the kernel makes them at once, from the file's moves), then the values.
-    const edits = JSON.stringify(wanted.edits || []);
-    if (edits !== JSON.stringify(JSON.parse(r.dataset.edits || '[]'))) {
-      if (restoring === 'edits') { if (Date.now() - loadedAt > 20000) restoring = false; return; }  // asked for, not drawn yet
-      const field = document.querySelector('.design-review .dr-edits input');
-      if (!field) { if (Date.now() - loadedAt > 20000) restoring = false; return; }  // not drawn yet
-      restoring = 'edits'; field.value = edits; field.dispatchEvent(new Event('change', {bubbles: true}));
-      return;
-    }
+    // The variants first (the kernel evaluates each from its case file), then the moves' edits
+    // (made at once, from the file's moves), then the values.
+    if (!handOver('variants', '.dr-variants-asked input', wanted.variants || [], r.dataset.variants, r.dataset.variantsAsked)) return;
+    if (!handOver('edits', '.dr-edits input', wanted.edits || [], r.dataset.edits)) return;
     // The controls are drawn after the results at times: wait for every row asked for (not forever).
     if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < 20000) return;
     restoring = false;

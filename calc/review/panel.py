@@ -174,8 +174,14 @@ class DesignReview:
         self.kept = w.HTML()
         self.variants_html = w.HTML(layout=w.Layout(width="100%"))
         self.variants: list = []  # (name, Report) pinned by keep_variant
+        self.variant_states: list = []  # each variant's moves' edits and changed values as shown (for the page's address)
+        self._variants_asked_for: list = []  # the variants' states a link asked for
+        # The page's script hands the variants a link carries to the kernel through this field (hidden).
+        self.variants_field = w.Text(continuous_update=False, layout=w.Layout(display="none"))
+        self.variants_field.add_class("dr-variants-asked")
+        self.variants_field.observe(lambda change: self._variants_asked(change["new"]), names="value")
         keep = w.VBox([w.HBox([self.save_name, self.save_button], layout=w.Layout(width="100%")),
-                       w.HBox([self.variant_button, self.report_button]), self.download, self.kept])
+                       w.HBox([self.variant_button, self.report_button]), self.download, self.kept, self.variants_field])
         keep.add_class("dr-keep")
         top = w.HBox([self.case_file, self.reset, self.undo_button, self.redo_button], layout=w.Layout(width="100%"))
         self.all_candidates.observe(self._changed, names="value")
@@ -267,8 +273,7 @@ class DesignReview:
             self.message.value = f'<b style="color:{FAIL_COLOR}">{failed}</b>: {typeset(_without_folder(str(exc), path))}'
             return False
         self.case, self.edits, self.message.value = case, list(edits), self._note
-        self.specs = (input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
-                      + ([forced_motor_spec(case)] if case.motor_catalog is not None else []))
+        self.specs = _specs_of(case, ratios)
         self._added = _added_entries(edits)
         self.controls, self.fields, self._messages, self._labels, self.refused = {}, {}, {}, {}, {}
         old = self.controls_box.children
@@ -438,16 +443,7 @@ class DesignReview:
         """The loaded case with the values of the controls that were moved (one left where it
         started keeps the case's own value, not the control's rounding of it: a derived cycle's
         7.8269 N·m stays, and stays derived)."""
-        changes = self.changes()
-        forced = changes.pop("gearbox.part", (None, ""))[0]
-        motor = changes.pop("motor.part", (None, ""))[0]
-        case = with_inputs(self.case, {key: Q_(v, unit) for key, (v, unit) in changes.items()})
-        # A part forced is checked alone (the file's part, where it names one, is the unchanged value).
-        if forced is not None:
-            case = dataclasses.replace(case, gearbox_part=None if forced == SELECTION else forced)
-        if motor is not None:
-            case = drive.with_motor_part(case, None if motor == SELECTION else motor, f"{case.path}: motor.part")
-        return case
+        return _with_changes(self.case, self.changes())
 
     def _draw(self):
         """The results text and the changed case (None where the inputs cannot make one)."""
@@ -500,6 +496,7 @@ class DesignReview:
         text, drawn = self._draw()
         self.shown = drawn
         changes = self.changes()
+        self._shown_state = (json.loads(json.dumps(self.edits)), {k: stamp[k] for k in changes}, changes)
         if drawn is not None:
             case, report = drawn
             torque_unit = "lbf*in" if self.units.value == "inch-pound" else "N*m"
@@ -520,10 +517,15 @@ class DesignReview:
                 self._labels[spec.key].value = label
         self._keep_history()
         self._offer_download(changes)
+        if self.variants:  # in the unit system shown
+            compared = comparison_html(self.variants, self.units.value)
+            if self.variants_html.value != compared:
+                self.variants_html.value = compared
         self.generation += 1
         attributes = (f'data-generation="{self.generation}" data-case="{escape(self.case.path.name)}" '
                       f'data-inputs="{escape(json.dumps(stamp))}" data-edits="{escape(json.dumps(self.edits))}" '
                       f'data-units="{escape(self.units.value)}" data-file-units="{escape(self.file_units)}" '
+                      f'{self._variants_attribute()} '
                       f'data-changed="{escape(json.dumps({k: stamp[k] for k in changes}))}"')
         self.results.value = text.replace('<div class="dr">', f'<div class="dr" {attributes}>', 1)
 
@@ -710,13 +712,96 @@ class DesignReview:
             self.kept.value = f'<span style="color:{FAIL_COLOR}">not kept: the inputs give no design (an input error)</span>'
             return
         _, report = self.shown
-        changes = self.changes()
-        said = "; ".join([edit_text(e) for e in self.edits]
-                         + [f"{self._spec(k).label} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items()])
-        name = f"{len(self.variants) + 1}: {self.case.path.name}" + (f" with {said}" if said else " as written")
+        edits, texts, changes = self._shown_state
+        name = _variant_name(len(self.variants) + 1, self.case.path.name, self.specs, changes, edits)
         self.variants.append((name, report))
-        self.variants_html.value = comparison_html(self.variants, self.units.value)
+        self.variant_states.append({"case": self.case.path.name, "edits": edits, "values": texts})
+        self._show_variants()
         self.kept.value = f"kept variant {len(self.variants)}"
+
+    def _show_variants(self) -> None:
+        self.variants_html.value = comparison_html(self.variants, self.units.value) if self.variants else ""
+        # The results carry the variants' states, for the page's address.
+        self.results.value = re.sub(r'data-variants="[^"]*" data-variants-asked="[^"]*"', self._variants_attribute(), self.results.value, count=1)
+
+    def _variants_attribute(self) -> str:
+        """The variants' states, and those a link asked for (which the page's script waits for)."""
+        return (f'data-variants="{escape(json.dumps(self.variant_states))}" '
+                f'data-variants-asked="{escape(json.dumps(self._variants_asked_for))}"')
+
+    def _variants_asked(self, text: str) -> None:
+        """The variants a link carries (the page's script writes their states here: the moves'
+        edits and the changed values as the fields showed them), each evaluated again from the
+        case file; one that no longer reads is left out and said."""
+        try:
+            states = json.loads(text) if text else []
+            states = [{"case": str(st["case"]), "edits": [list(e) for e in st["edits"]], "values": dict(st["values"])} for st in states]
+        except (ValueError, TypeError, KeyError, AttributeError):
+            return
+        self._variants_asked_for = states
+        if states == self.variant_states:
+            self._show_variants()
+            return
+        variants, kept, missed = [], [], []
+        for k, state in enumerate(states, start=1):
+            try:
+                variants.append(self._variant_of(len(variants) + 1, state))
+                kept.append(state)
+            except CalcError as exc:
+                missed.append(f"variant {k}: {self._in_words(str(exc))}")
+        self.variants, self.variant_states = variants, kept
+        self.kept.value = f'<span style="color:{FAIL_COLOR}">not kept from the link: {typeset("; ".join(missed))}</span>' if missed else ""
+        self._show_variants()
+
+    def _variant_of(self, number: int, state: dict) -> tuple:
+        """(name, report) of a variant's state, from its case file (one of the chooser's) as :meth:`load` reads it."""
+        path = next((p for p in self.labels if p.name == state["case"]), None)
+        if path is None:
+            raise CalcError(f"no case file {state['case']!r} among the cases")
+        edits = [tuple(e) for e in state["edits"]]
+        text = path.read_text(encoding="utf-8")
+        case = read_case(path, with_moves_edited(text, edits, path.name) if edits else text)
+        specs = {spec.key: spec for spec in _specs_of(case, _ratios(case) if case.ratio is not None else [])}
+        changes = {}
+        for key, text in state["values"].items():
+            spec = specs.get(key)
+            if spec is None:
+                raise CalcError(f"{path.name} has no input {key}")
+            value = next((o for o in spec.options if _text_of(o) == text), None) if spec.options else read_typed(text, spec)
+            if value is None:
+                raise CalcError(f"{spec.label}: {text!r} is not one of its choices")
+            if value != spec.value:
+                changes[key] = (value, spec.unit)
+        report, _ = evaluated(_with_changes(case, dict(changes)))
+        return _variant_name(number, path.name, specs.values(), changes, edits), report
+
+
+def _specs_of(case: Case, ratios) -> list[InputSpec]:
+    """The panel's inputs of ``case``: :func:`calc.review.inputs.input_specs`, and the parts to force."""
+    return (input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
+            + ([forced_motor_spec(case)] if case.motor_catalog is not None else []))
+
+
+def _with_changes(case: Case, changes: dict) -> Case:
+    """``case`` with the inputs ``changes`` (key path -> (number or part, unit)) written in; a part
+    forced is checked alone (the file's part, where it names one, is the unchanged value)."""
+    changes = dict(changes)
+    forced = changes.pop("gearbox.part", (None, ""))[0]
+    motor = changes.pop("motor.part", (None, ""))[0]
+    case = with_inputs(case, {key: Q_(v, unit) for key, (v, unit) in changes.items()})
+    if forced is not None:
+        case = dataclasses.replace(case, gearbox_part=None if forced == SELECTION else forced)
+    if motor is not None:
+        case = drive.with_motor_part(case, None if motor == SELECTION else motor, f"{case.path}: motor.part")
+    return case
+
+
+def _variant_name(number: int, file: str, specs, changes: dict, edits) -> str:
+    """A variant's name: its number, the case file, and what was changed in it."""
+    labels = {spec.key: spec.label for spec in specs}
+    said = "; ".join([edit_text(e) for e in edits]
+                     + [f"{labels[k]} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items()])
+    return f"{number}: {file}" + (f" with {said}" if said else " as written")
 
 
 #: An input of an entry of the moves: ``move[2].time``.
