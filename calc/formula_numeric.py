@@ -174,6 +174,26 @@ def mechanism__T_2_rotary(J_L, alpha_2, rad, s_v, T_f, T_p):
     return J_L*alpha_2/rad + s_v*(T_f + T_p)
 
 
+def mechanism__m_equivalent(J_L, r):
+    return J_L/r**2
+
+
+def mechanism__T_d_equivalent(T_f, T_p):
+    return T_f + T_p
+
+
+def mechanism__J_L_equivalent(m, m_c, r, eta, J_M):
+    return J_M + r**2*(m + m_c)/eta
+
+
+def mechanism__T_f_equivalent(mu, m, g, theta, r, eta, T_d):
+    return T_d + g*m*mu*r*cos(theta)/eta
+
+
+def mechanism__T_p_equivalent(F_p, r, eta):
+    return F_p*r/eta
+
+
 def motion__omega_2max(phi_2, t_m, t_a, t_d):
     return phi_2/(-1/2*t_a - 1/2*t_d + t_m)
 
@@ -327,6 +347,11 @@ FUNCTIONS = {
     "calc.mechanism.T_2_linear": ("4831b3baf9de2446", mechanism__T_2_linear),
     "calc.mechanism.J_L_linear": ("540adb6b4ce9c2ee", mechanism__J_L_linear),
     "calc.mechanism.T_2_rotary": ("aafb091340bd4c90", mechanism__T_2_rotary),
+    "calc.mechanism.m_equivalent": ("8e9554e6f8565eb6", mechanism__m_equivalent),
+    "calc.mechanism.T_d_equivalent": ("34fa00482de50c33", mechanism__T_d_equivalent),
+    "calc.mechanism.J_L_equivalent": ("124964635440cc74", mechanism__J_L_equivalent),
+    "calc.mechanism.T_f_equivalent": ("8dc243551aaf4d01", mechanism__T_f_equivalent),
+    "calc.mechanism.T_p_equivalent": ("a01e89087a2a53bf", mechanism__T_p_equivalent),
     "calc.motion.omega_2max": ("19ada2db93ec5338", motion__omega_2max),
     "calc.motion.alpha_2max": ("75ca44b9204f8349", motion__alpha_2max),
     "calc.motor.alpha_1": ("81a7d283d47982ec", motor__alpha_1),

@@ -216,3 +216,88 @@ class Mechanism:
         d_power = Q_(1.0 if f.result.m_as("N") * w > 0 else -1.0, "")
         t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration, s_v=s_v, T_d=self._drag)
         return [acc, f, t]
+
+
+# -- another type for the same drive: the starting values of a mechanism changed in a review ----------
+
+m_equivalent = Formula(
+    Symbol("m_equivalent", "m", "mass", "kg", "moved mass of a linear axis with the table's inertia at the output"), (J_L_sym, r),
+    lambda sp, J_L, r: J_L / r**2, "the inverse of J_L = m·r² (no counterweight, no own inertia)",
+)
+T_d_equivalent = Formula(
+    Symbol("T_d_equivalent", r"T_{d}", "torque", "N*m", T_d.description), (T_f, T_p),
+    lambda sp, T_f, T_p: T_f + T_p, "the table's torques against the motion, at the same shaft",
+)
+J_L_equivalent = Formula(
+    Symbol("J_L_equivalent", r"J_{L}", "inertia", "kg*cm**2", "inertia of a table that needs the axis' torque to accelerate"), (m, m_c, r, eta, J_M),
+    lambda sp, m, m_c, r, eta, J_M: (m + m_c) * r**2 / eta + J_M, "T_2 while the drive accelerates the load: (m + m_c)·a·r / η + J_M·α_2",
+)
+T_f_equivalent = Formula(
+    Symbol("T_f_equivalent", r"T_{f}", "torque", "N*m", T_f.description), (mu, m, g, theta, r, eta, T_d),
+    lambda sp, mu, m, g, theta, r, eta, T_d: mu * m * g * sp.cos(theta) * r / eta + T_d, "the guide's friction and the drag while the drive drives",
+)
+T_p_equivalent = Formula(
+    Symbol("T_p_equivalent", r"T_{p}", "torque", "N*m", T_p.description), (F_p, r, eta),
+    lambda sp, F_p, r, eta: F_p * r / eta, "the process force while the drive drives",
+)
+
+
+def radius_of(type_: str, size):
+    """The transmission radius of a linear type from its lead (a screw) or diameter."""
+    return r_lead(p=size) if type_ == "ball-screw" else r_diameter(d=size)
+
+
+def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[str]]:
+    """A mechanism of ``type_`` in place of ``mech`` (a linear one of lead or diameter ``size``),
+    and what it leaves out, in words: the starting values of a design whose mechanism changes.
+
+    * Table to linear axis: the same motion and torques at the gearbox output. The moved mass has
+      the table's inertia at the output (``m = J_L / r²``, η = 1, no friction of the guide) and
+      the table's friction and process torque are the drag at the shaft.
+    * Linear axis to table: the torques the drive gives while it drives: ``J_L = (m + m_c)·r² / η
+      + J_M``, friction ``μ·m·g·cos θ·r / η + T_d``, process ``F_p·r / η``. Gravity on an incline
+      and the counterweight's weight pull one way only, which a table's torques cannot: left out.
+    * Linear axis to another: the same carriage (mass, forces, efficiency, own inertia) on the
+      new drive of radius ``size``.
+
+    A move's distance follows :func:`converted_distance`.
+
+    >>> table = Mechanism("rotary", inertia=Q_(1500, "kg*cm**2"), friction_torque=Q_(3, "N*m"), process_torque=Q_(0, "N*m"))
+    >>> screw, left = converted(table, "ball-screw", Q_(20, "mm"))
+    >>> round(screw.mass.m_as("kg"), 2), screw.drag_torque, float(screw.load_inertia.m_as("kg*cm**2")), left  # 0.15 / (0.02 / 2π)²
+    (14804.41, <Quantity(3, 'newton * meter')>, 1500.0, [])
+    """
+    zero = {"incline": Q_(0.0, "deg"), "force": Q_(0.0, "N"), "counterweight": Q_(0.0, "kg")}
+    size_key = {"lead": size} if type_ == "ball-screw" else {"diameter": size}
+    if not mech.linear and type_ == "rotary":
+        return mech, []
+    if not mech.linear:
+        r_new = radius_of(type_, size)
+        return Mechanism(type_, holding_brake=mech.holding_brake, mass=m_equivalent(J_L=mech.load_inertia, r=r_new).to("kg"),
+                         friction_coefficient=Q_(0.0, ""), eta=Q_(1.0, ""), own_inertia=Q_(0.0, "kg*cm**2"),
+                         drag_torque=T_d_equivalent(T_f=mech.friction_torque, T_p=mech.process_torque), **zero, **size_key), []
+    r_old, eta_old, incline = mech.radius, mech.eta, Q_(0.0, "deg") if mech.incline is None else mech.incline
+    if type_ != "rotary":
+        return Mechanism(type_, **{k: getattr(mech, k) for k in ("mass", "friction_coefficient", "incline", "force", "eta", "own_inertia",
+                                                                  "counterweight", "drag_torque", "holding_brake")}, **size_key), []
+    mu_ = Q_(0.0, "") if mech.friction_coefficient is None else mech.friction_coefficient
+    own = Q_(0.0, "kg*cm**2") if mech.own_inertia is None else mech.own_inertia
+    table = Mechanism("rotary", holding_brake=mech.holding_brake,
+                      inertia=J_L_equivalent(m=mech.mass, m_c=mech._counterweight, r=r_old, eta=eta_old, J_M=own).to("kg*cm**2"),
+                      friction_torque=T_f_equivalent(mu=mu_, m=mech.mass, theta=incline, r=r_old, eta=eta_old, T_d=mech._drag).to("N*m"),
+                      process_torque=T_p_equivalent(F_p=Q_(0.0, "N") if mech.force is None else mech.force, r=r_old, eta=eta_old).to("N*m"))
+    pulling = (mech.mass * np.sin(incline.m_as("rad")) - mech._counterweight).m_as("kg")
+    left = [] if pulling == 0 else [f"gravity pulling one way ((m·sin θ − m_c)·g = {pulling * 9.80665:.4g} N on the load): a table's torques oppose the motion"]
+    if mech.force is not None and mech.force.m_as("N") < 0:
+        left.append("a process force that drives the load (negative) is taken as one against it")
+    return table, left
+
+
+def converted_distance(old: Mechanism, new: Mechanism, distance):
+    """A move's distance for the mechanism ``new`` that replaced ``old`` (:func:`converted`): the
+    same travel of the carriage from one linear axis to another, else the same angle of the
+    gearbox output."""
+    if old.linear and new.linear:
+        return distance
+    angle = old.to_output(distance)
+    return angle.to("deg") if not new.linear else (angle.to("rad").magnitude * new.radius).to("mm")

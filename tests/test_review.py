@@ -810,3 +810,55 @@ def test_the_results_are_marked_out_of_date_while_a_change_is_computed():
     panel.settled()
     assert "dr-busy" not in panel.panel._dom_classes and 'data-state="current"' in panel.state.value
     assert "201.8 N·m" in panel.results.value  # 16 · 10 · 1.3 · 0.97
+
+
+def test_the_mechanism_changes_type_from_equivalent_values(tmp_path):
+    """*change type* puts a mechanism of another type in, its values equivalent at the gearbox
+    output (calc.mechanism.converted). The example's table as a ball screw of 20 mm lead: the moved
+    mass 0.15 kg·m² / (0.02 m / 2π)² = 14 804.4 kg, the friction as drag torque 3 N·m, the quarter
+    turn as 0.25 · 20 mm = 5 mm: the output torques are the table's; back to a table, its values
+    again. The saved file reads and gives the screen's results."""
+    case = tmp_path / "axis.toml"
+    case.write_text(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{DERIVED_EXAMPLE.parents[1]}/data/'))
+    panel = DesignReview(case).settled()
+    before = panel.shown[0].profile
+    panel.change_mechanism("ball-screw", "20")
+    panel.settled()
+    screw = panel.shown[0]
+    mechanism = screw.motion.tables["mechanism"]
+    assert mechanism["type"] == "ball-screw" and mechanism["lead"] == "20 mm" and mechanism["drag_torque"] == "3 N*m"
+    assert float(mechanism["mass"].split()[0]) == pytest.approx(0.15 / (0.02 / (2 * np.pi)) ** 2, rel=1e-9)
+    assert screw.motion.tables["move"][0]["distance"] == "5 mm"
+    np.testing.assert_allclose(screw.profile.torques.m_as("N*m"), before.torques.m_as("N*m"), rtol=1e-9)
+    np.testing.assert_allclose(screw.profile.durations.m_as("s"), before.durations.m_as("s"), rtol=1e-12)
+    assert "set by the change of the mechanism" in panel._labels["mechanism.mass"].value
+    # The field shows the mass used, not the slider's step (500 kg over its range): 14804.4066, not 15000.
+    assert panel.fields["mechanism.mass"].value == "14804.4066" and panel.controls["mechanism.mass"].value == 15000
+    assert "mechanism.mass" not in panel.changes()
+    saved = panel.save("axis-screw.toml")
+    assert saved.read_text().startswith("# Changed in the design review from axis.toml: mechanism rotary -> ball-screw of 20 mm")
+    assert evaluate_case(read_case(saved)).to_json()["verdict"] == panel.shown[1].evaluated.to_json()["verdict"]
+    panel.change_mechanism("rotary")
+    panel.settled()
+    table = panel.shown[0].motion.tables["mechanism"]
+    assert table == {"type": "rotary", "inertia": "1500 kg*cm**2", "friction_torque": "3 N*m", "process_torque": "0 N*m"}
+    panel.change_mechanism("belt", "0")
+    assert "type not changed</b>: a belt needs its diameter: expected a number above zero (in mm), found &#x27;0&#x27;" in panel.message.value
+
+
+def test_a_linear_axis_becomes_a_table_with_the_torques_the_drive_gives():
+    """The direct ball screw (40 kg, lead 10 mm, screw 1.2 kg·cm², η 0.9, μ 0.05, drag 0.05 N·m) as a
+    table, by hand with r = 10 mm / 2π = 1.59155 mm: J_L = 40 · r² / 0.9 + 1.2 = 2.32579 kg·cm²,
+    T_f = 0.05 · 40 · 9.80665 · r / 0.9 + 0.05 = 0.084684 N·m; a move of s mm turns s / r rad."""
+    from pathlib import Path
+
+    panel = DesignReview(Path(DERIVED_EXAMPLE).parent / "ball-screw-direct.toml").settled()
+    before = panel.shown[0].motion
+    panel.change_mechanism("rotary")
+    panel.settled()
+    table = panel.shown[0].motion.tables["mechanism"]
+    assert float(table["inertia"].split()[0]) == pytest.approx(2.32579, abs=5e-6)
+    assert float(table["friction_torque"].split()[0]) == pytest.approx(0.084684, abs=5e-7)
+    r = 10 / (2 * np.pi)
+    s = float(before.tables["move"][0]["distance"].split()[0])
+    assert float(panel.shown[0].motion.tables["move"][0]["distance"].split()[0]) == pytest.approx(np.degrees(s / r), rel=1e-9)

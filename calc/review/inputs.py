@@ -54,6 +54,16 @@ class InputSpec:
     step: float
     value: float
     options: tuple = ()
+    exact: float | None = None  # the case's value where the slider's (``value``, on its step) rounds it
+
+    def field_text(self, v: float) -> str:
+        """A slider's value as its number field shows it: the case's own value where the slider
+        stands at its rounding of it (so a field never shows 15000 for the 14804.4 kg used)."""
+        return f"{self.exact:.10g}" if self.exact is not None and v == self.value else f"{v:g}"
+
+    def is_case_value(self, v) -> bool:
+        """Whether ``v`` is the case's value: the slider's rounding of it, or the value itself."""
+        return v == self.value or (self.exact is not None and v == self.exact)
 
     @property
     def text(self) -> str:
@@ -77,7 +87,9 @@ def _spec(key, label, unit, value, low, high, options=(), positive=False) -> Inp
     step = nice_step(high - low)
     low = max(low, step) if positive else low  # a segment lasts some time, a mass is some
     on_step = lambda x: round(round(x / step) * step, 12)  # noqa: E731 (no 0.30000000000000004 in a field)
-    return InputSpec(key, label, unit, on_step(low), on_step(high), step, on_step(value) if not options else value, options)
+    if options:
+        return InputSpec(key, label, unit, on_step(low), on_step(high), step, value, options)
+    return InputSpec(key, label, unit, on_step(low), on_step(high), step, on_step(value), options, None if on_step(value) == value else value)
 
 
 def _torque_range(t: float) -> tuple[float, float]:

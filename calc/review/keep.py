@@ -39,8 +39,11 @@ def _trailing(table) -> list:
 def with_moves_edited(original: str, edits, source: str) -> str:
     """The TOML text ``original`` with its ``[[move]]`` entries edited in order: ``("add", k,
     keys)`` puts a new entry of ``keys`` (its texts, as a case file writes them) after entry ``k``
-    (0: before the first), ``("remove", k)`` takes entry ``k`` out (counted from 1). The other
-    tables, comments and layout are kept; the comments after the last entry stay after it.
+    (0: before the first), ``("remove", k)`` takes entry ``k`` out (counted from 1);
+    ``("mechanism", keys, distances, said)`` makes ``[mechanism]`` the table of ``keys`` (its
+    comments kept where its keys stay) and writes ``distances[k]`` (entry k, as text) as the moves'
+    distances. The other tables, comments and layout are kept; the comments after the last entry
+    stay after it.
 
     >>> text = '[[move]]\\ndistance = "90 deg"\\ntime = "0.5 s"\\n[[move]]\\ndwell = "1 s"\\n\\n# the coupling\\n[coupling]\\n'
     >>> print(with_moves_edited(text, [("add", 2, {"dwell": "0.5 s"}), ("remove", 2)], "a.toml"))
@@ -61,6 +64,9 @@ def with_moves_edited(original: str, edits, source: str) -> str:
     if not isinstance(moves, tomlkit.items.AoT):
         raise CalcError(f"{source}: the case gives no [[move]] tables to add to or remove from")
     for edit in edits:
+        if edit[0] == "mechanism":
+            _mechanism_edited(doc, moves, edit[1], edit[2])
+            continue
         k = edit[1]
         if not 0 <= k <= len(moves) or (edit[0] == "remove" and k == 0):
             raise CalcError(f"{source}: move entry {k}: the case has {len(moves)} [[move]] tables")
@@ -82,6 +88,17 @@ def with_moves_edited(original: str, edits, source: str) -> str:
     return tomlkit.dumps(doc)
 
 
+def _mechanism_edited(doc, moves, keys: dict, distances: dict) -> None:
+    """``[mechanism]`` as the table of ``keys``, and the moves' ``distances`` (by entry, from 1)."""
+    table = doc["mechanism"]
+    for key in [k for k in table if k not in keys]:
+        del table[key]
+    for key, value in keys.items():
+        table[key] = value
+    for k, text in distances.items():
+        moves[int(k) - 1]["distance"] = text
+
+
 def edit_text(edit) -> str:
     """An edit of the moves (:func:`with_moves_edited`) in words.
 
@@ -90,6 +107,8 @@ def edit_text(edit) -> str:
     """
     if edit[0] == "remove":
         return f"entry {edit[1]} of the moves removed"
+    if edit[0] == "mechanism":
+        return edit[3]
     keys = edit[2]
     what = f"dwell {keys['dwell']}" if "dwell" in keys else f"move {keys.get('distance')} in {keys.get('time')}"
     return f"{what} added as entry {edit[1] + 1}"

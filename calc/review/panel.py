@@ -2,6 +2,8 @@
 
 Left: the case, chosen among the case files of its folder (no path is typed, so the panel reads no
 other file), with buttons back to its values and through the changes, one row per input
+(the entries of the moves added and removed, the mechanism's type changed: :meth:`DesignReview.add_entry`,
+:meth:`DesignReview.change_mechanism`, each an edit of the file's text the rows are built from)
 (:func:`calc.review.inputs.input_specs`: the label with its unit and key path, a slider and a number
 field read by :func:`read_typed`), the unit system, saving and variants, and the load-cycle
 figure (SVG, drawn by the browser). Right: the state of the results
@@ -34,7 +36,9 @@ from ..sections.ratios import search as search_ratios
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
-from .inputs import MOVE_TIMES, InputSpec, input_specs, is_inch_pound, with_inputs
+from ..mechanism import TYPES as MECHANISM_TYPES, converted, converted_distance
+from ..sections import motion as motion_section
+from .inputs import MECHANISM, MOVE_TIMES, InputSpec, input_specs, is_inch_pound, with_inputs
 from .keep import changed_text, edit_text, free_name, save_path, value_text, with_moves_edited
 from .view import FAIL_COLOR, comparison_html, evaluated, results_html, typeset
 
@@ -206,7 +210,16 @@ class DesignReview:
         self.edits_field = w.Text(continuous_update=False, layout=w.Layout(display="none"))
         self.edits_field.add_class("dr-edits")
         self.edits_field.observe(lambda change: self._edits_asked(change["new"]), names="value")
+        # The mechanism of another type, its starting values equivalent (calc.mechanism.converted).
+        self.mechanism_type = w.Dropdown(options=list(MECHANISM_TYPES), description="type", tooltip="the mechanism's type",
+                                         style={"description_width": "3.5em"}, layout=w.Layout(width="auto", flex="1 1 auto"))
+        self.mechanism_size = w.Text(placeholder="lead / diameter", tooltip="a screw's lead, a pinion's or pulley's diameter (a linear type)",
+                                     layout=w.Layout(width="9em", flex="0 0 9em"))
+        self.mechanism_button = w.Button(description="change type", layout=w.Layout(width="8em"),
+                                         tooltip="the mechanism of the chosen type, starting from values equivalent at the gearbox output")
+        self.mechanism_button.on_click(lambda _: self.change_mechanism(self.mechanism_type.value, self.mechanism_size.value))
         self.moves_editor = w.VBox([w.HBox([self.entry, self.remove_button, self.add_move_button, self.add_dwell_button], layout=w.Layout(width="100%")),
+                                    w.HBox([self.mechanism_type, self.mechanism_size, self.mechanism_button], layout=w.Layout(width="100%")),
                                     self.edits_field], layout=w.Layout(width="100%"))
         self.moves_editor.add_class("dr-moves")
         left = w.VBox([w.HTML(PAGE_STYLE), top, self.message, self.controls_box, self.moves_editor,
@@ -287,7 +300,18 @@ class DesignReview:
         self.entry.options = [(f"{k} {'dwell' if 'dwell' in m else 'move'}", k) for k, m in enumerate(entries, start=1)]
         self.entry.value = len(entries) if entries else None
         self.remove_button.disabled = len(entries) < 2
+        if entries:
+            self.mechanism_type.value = case.motion.mechanism.type
+            unit = self._length_unit()
+            size = case.motion.mechanism.lead if case.motion.mechanism.type == "ball-screw" else case.motion.mechanism.diameter
+            self.mechanism_size.value = "" if size is None else f"{size.m_as(unit):.6g}"
+            self.mechanism_size.description = ""
+            self.mechanism_size.placeholder = f"lead / diameter [{unit}]"
         return True
+
+    def _length_unit(self) -> str:
+        """The unit of a mechanism's lead or diameter: inch where the case writes inch-pound."""
+        return "in" if any(is_inch_pound(s.unit) for s in self.specs) else "mm"
 
     def _row(self, spec: InputSpec, value):
         """One input: its label with unit (the whole of it also as tooltip, its key path as
@@ -295,7 +319,7 @@ class DesignReview:
         message (a refused value, or that the input has no effect on the design)."""
         import ipywidgets as w
 
-        label = w.HTML(self._label_html(spec, changed=False, added=self._is_added(spec.key)), layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
+        label = w.HTML(self._label_html(spec, changed=False, added=self._from_edits(spec.key)), layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
         label.add_class("dr-label")
         self._labels[spec.key] = label
         message = w.HTML()
@@ -308,7 +332,7 @@ class DesignReview:
         else:
             slider = w.FloatSlider(value=value, min=spec.low, max=spec.high, step=spec.step, readout=False,
                                    continuous_update=False, tooltip=spec.text, layout=w.Layout(flex="1 1 auto", width="auto"))
-            field = w.Text(value=f"{value:g}", continuous_update=False, tooltip=f"{spec.text}: {spec.low:g} to {spec.high:g}",
+            field = w.Text(value=spec.field_text(value), continuous_update=False, tooltip=f"{spec.text}: {spec.low:g} to {spec.high:g}",
                            layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
             # The field is read here, not by the browser's number input, which clamps to the range
             # and drops a decimal comma without a word.
@@ -321,10 +345,10 @@ class DesignReview:
         return row
 
     @staticmethod
-    def _label_html(spec: InputSpec, changed: bool, added: bool = False) -> str:
+    def _label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
         unit = " [" + pretty_unit(spec.unit) + "]" if spec.unit else ""
-        was = (" (an entry added here: not in the file)" if added
-               else f" (changed; the file: {_text_of(spec.value)}{' ' + pretty_unit(spec.unit) if spec.unit else ''})" if changed else "")
+        was = (f" ({added})" if added
+               else f" (changed; the file: {spec.field_text(spec.value) if not spec.options else _text_of(spec.value)}{' ' + pretty_unit(spec.unit) if spec.unit else ''})" if changed else "")
         return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{" class=dr-changed" if changed or added else ""}>'
                 f"{typeset(spec.label)}{unit}</span>")
 
@@ -351,8 +375,9 @@ class DesignReview:
 
     def _slid(self, key: str, v: float) -> None:
         field = self.fields[key]
-        if key not in self.refused and field.value.strip() != f"{v:g}":
-            field.value = f"{v:g}"
+        text = self._spec(key).field_text(v)
+        if key not in self.refused and field.value.strip() != text:
+            field.value = text
 
     def _show_message(self, key: str, idle: str = "") -> None:
         if key in self.refused:
@@ -371,16 +396,21 @@ class DesignReview:
 
     def changes(self) -> dict:
         """The inputs changed from the case file (with the moves' edits): key path -> (number, unit)."""
-        return {s.key: (v, s.unit) for s in self.specs if (v := self.controls[s.key].value) != s.value}
+        return {s.key: (v, s.unit) for s in self.specs if not s.is_case_value(v := self.controls[s.key].value)}
 
     def modified(self) -> bool:
         """Whether the screen differs from the case file: a value changed, or the moves edited."""
         return bool(self.edits or self.changes())
 
-    def _is_added(self, key: str) -> bool:
-        """Whether ``key`` is an input of an entry of the moves added here."""
+    def _from_edits(self, key: str) -> str | None:
+        """What the edits of the moves made of the input ``key``, or None: an entry added here,
+        or a value set by a change of the mechanism's type."""
         m = _ENTRY.match(key)
-        return m is not None and int(m.group(1)) in self._added
+        if m is not None and int(m.group(1)) in self._added:
+            return "an entry added here: not in the file"
+        if any(e[0] == "mechanism" for e in self.edits) and (key.startswith("mechanism.") or (m is not None and key.endswith(".distance"))):
+            return "set by the change of the mechanism's type: not in the file"
+        return None
 
     # -- the moves edited: entries added and removed ---------------------------------------------------
 
@@ -419,6 +449,47 @@ class DesignReview:
         entry's new place (an entry removed takes its values with it)."""
         values = _moved(self._values(), edit)
         if self._build([*self.edits, edit], values, failed="not added" if edit[0] == "add" else "not removed"):
+            self._changed(None)
+
+    def change_mechanism(self, type_: str, size_text: str = "") -> None:
+        """The mechanism of ``type_`` in place of the case's (of lead or diameter ``size_text`` in
+        the case's length unit, for a linear type), its values and the moves' distances starting
+        equivalent (:func:`calc.mechanism.converted`): what it leaves out is said under the moves."""
+        try:
+            case = self.changed_case()
+            old = case.motion.mechanism
+            size = None
+            if type_ != "rotary":
+                t = size_text.strip().replace(",", ".")
+                if not _TYPED.match(t) or not float(t) > 0:
+                    raise CalcError(f"a {type_} needs its {'lead' if type_ == 'ball-screw' else 'diameter'}: expected a number above zero "
+                                    f"(in {self._length_unit()}), found {size_text.strip()!r}")
+                size = Q_(float(t), self._length_unit())
+            new, left = converted(old, type_, size)
+        except CalcError as exc:
+            self.message.value = f'<b style="color:{FAIL_COLOR}">type not changed</b>: {typeset(self._in_words(str(exc)))}'
+            return
+        inch = self._length_unit() == "in"
+        keys = {}
+        for key in motion_section.keys_of(type_):
+            attribute = MECHANISM_ATTRIBUTES.get(key.name, key.name)
+            q = getattr(new, attribute, None) if key.name != "type" else type_
+            if key.name == "type" or (key.name == "holding_brake" and q):
+                keys[key.name] = q
+            elif q is not None and key.name in MECHANISM:
+                unit = MECHANISM[key.name][1] if inch else key.unit
+                v = float(q.m_as(unit or ""))
+                v = 0.0 if abs(v) < 1e-9 else v  # cos 90° is 6e-17 in floating point: a vertical axis' guide carries nothing
+                keys[key.name] = v if not unit else value_text(v, unit)
+        distances, unit = {}, "deg" if not new.linear else ("in" if inch else "mm")
+        for k, given in enumerate(case.motion.distances, start=1):  # None: a dwell
+            if given is not None:
+                distances[k] = value_text(float(converted_distance(old, new, given).m_as(unit)), unit)
+        said = f"mechanism {old.type} -> {type_}" + (f" of {value_text(size.magnitude, self._length_unit())}" if size is not None else "")
+        said += " (equivalent at the gearbox output" + (f"; left out: {'; '.join(left)})" if left else ")")
+        edit = ("mechanism", keys, distances, said)
+        if self._build([*self.edits, edit], _moved(self._values(), edit), failed="type not changed"):
+            self.message.value = typeset(said)
             self._changed(None)
 
     def _edits_asked(self, text: str) -> None:
@@ -512,7 +583,7 @@ class DesignReview:
         else:  # the figures of the last good inputs no longer apply
             self.load_cycle.layout.display = self.chain.layout.display = "none"
         for spec in self.specs:
-            label = self._label_html(spec, spec.key in changes, self._is_added(spec.key))
+            label = self._label_html(spec, spec.key in changes, self._from_edits(spec.key))
             if self._labels[spec.key].value != label:  # each value set is a message to the page
                 self._labels[spec.key].value = label
         self._keep_history()
@@ -770,7 +841,7 @@ class DesignReview:
             value = next((o for o in spec.options if _text_of(o) == text), None) if spec.options else read_typed(text, spec)
             if value is None:
                 raise CalcError(f"{spec.label}: {text!r} is not one of its choices")
-            if value != spec.value:
+            if not spec.is_case_value(value):
                 changes[key] = (value, spec.unit)
         report, _ = evaluated(_with_changes(case, dict(changes)))
         return _variant_name(number, path.name, specs.values(), changes, edits), report
@@ -804,6 +875,10 @@ def _variant_name(number: int, file: str, specs, changes: dict, edits) -> str:
     return f"{number}: {file}" + (f" with {said}" if said else " as written")
 
 
+#: The attribute of :class:`calc.mechanism.Mechanism` of each of its keys that is named otherwise.
+MECHANISM_ATTRIBUTES = {"lead": "lead", "pitch_diameter": "diameter", "pulley_diameter": "diameter",
+                        "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia"}
+
 #: An input of an entry of the moves: ``move[2].time``.
 _ENTRY = re.compile(r"^move\[(\d+)\]\.")
 
@@ -814,7 +889,7 @@ def _added_entries(edits) -> set:
     for edit in edits:
         if edit[0] == "add":
             added = [k + 1 if k > edit[1] else k for k in added] + [edit[1] + 1]
-        else:
+        elif edit[0] == "remove":
             added = [k - 1 if k > edit[1] else k for k in added if k != edit[1]]
     return set(added)
 
@@ -827,6 +902,8 @@ def _moved(values: dict, edit) -> dict:
     >>> _moved({"move[1].time": 0.5, "move[2].dwell": 1.0}, ("remove", 1))
     {'move[1].dwell': 1.0}
     """
+    if edit[0] == "mechanism":  # it writes the mechanism's values and the distances itself
+        return {key: v for key, v in values.items() if not key.startswith("mechanism.") and not (_ENTRY.match(key) and key.endswith(".distance"))}
     out = {}
     for key, v in values.items():
         m = _ENTRY.match(key)
