@@ -862,3 +862,35 @@ def test_a_linear_axis_becomes_a_table_with_the_torques_the_drive_gives():
     r = 10 / (2 * np.pi)
     s = float(before.tables["move"][0]["distance"].split()[0])
     assert float(panel.shown[0].motion.tables["move"][0]["distance"].split()[0]) == pytest.approx(np.degrees(s / r), rel=1e-9)
+
+
+@pytest.mark.parametrize("text, edits, message", [
+    ('[motor]\npeak_torque = "1 N*m"\n', [("remove", 1)], "a.toml: the case gives no [[move]] tables to add to or remove from"),
+    ('[[move]]\ndistance = "90 deg"\ntime = "1 s"\n', [("add", 3, {"dwell": "1 s"})], "a.toml: move entry 3: the case has 1 [[move]] tables"),
+    ('[[move]]\ndistance = "90 deg"\ntime = "1 s"\n', [("remove", 0)], "a.toml: move entry 0: the case has 1 [[move]] tables"),
+    ('[[move]]\ndistance = "90 deg"\ntime = "1 s"\n', [("remove", 1)], "a.toml: move entry 1 is the only one: a motion needs at least one move"),
+])
+def test_an_edit_of_the_moves_that_cannot_be_made_says_why(text, edits, message):
+    from calc.errors import CalcError
+    from calc.review.keep import with_moves_edited
+
+    with pytest.raises(CalcError) as err:
+        with_moves_edited(text, edits, "a.toml")
+    assert str(err.value) == message
+
+
+def test_a_link_variant_that_no_longer_reads_is_left_out_saying_why():
+    import json
+
+    panel = DesignReview(DERIVED_EXAMPLE).settled()
+    panel.variants_field.value = json.dumps([
+        {"case": "gone.toml", "edits": [], "values": {}},
+        {"case": DERIVED_EXAMPLE.name, "edits": [], "values": {"move[9].time": "1"}},
+        {"case": DERIVED_EXAMPLE.name, "edits": [], "values": {"gearbox.ratio": "11"}},
+        {"case": DERIVED_EXAMPLE.name, "edits": [], "values": {"move[1].time": "0.6"}},
+    ])
+    said = panel.kept.value
+    assert "variant 1: no case file &#x27;gone.toml&#x27; among the cases" in said
+    assert f"variant 2: {DERIVED_EXAMPLE.name} has no input move[9].time" in said
+    assert "variant 3: gearbox ratio i: &#x27;11&#x27; is not one of its choices" in said
+    assert [name for name, _ in panel.variants] == ["1: indexing-table.toml with 1 move: time t 0.6 s"]
