@@ -158,7 +158,7 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     ax.grid(True, axis="x", color="#dddddd", linewidth=0.6, zorder=0)
     ratio = "" if chain.ratio is None else f", input side × i² with i = {sig(chain.ratio.m_as(''))}"
     ax.set_title(
-        f"Stiffness chain at {fmt(torque, 'N*m')}: $C_{{total}}$ = {fmt(chain.stiffness, 'N*m/arcmin', 4)}, "
+        f"Stiffness chain at {fmt(torque, 'N*m')}: $C_{{total}}$ {'≤' if np.isinf(c_out.magnitude).any() else '='} {fmt(chain.stiffness, 'N*m/arcmin', 4)}, "
         f"twist {sig(twist.sum(), 3)} arcmin (E11{ratio})",
         fontsize=9,
     )

@@ -116,7 +116,7 @@ def stiffness_chain_svg(accuracy) -> str:
     height = top + row * len(members) + 34
     scale = (WIDTH - left - 10) / 110  # 0 to 110 %
     twist = np.nansum([m.twist_at_applied_torque.quantity.m_as("arcmin") for m in members])  # a member of unknown C: none
-    title = (f"Stiffness chain at {accuracy.applied_torque}: C_total = {accuracy.C_total}, "
+    title = (f"Stiffness chain at {accuracy.applied_torque}: C_total {'≤' if accuracy.unknown_chain else '='} {accuracy.C_total}, "
              f"twist {twist:.3g} arcmin (E11)")
     body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
     for share in range(0, 101, 20):
