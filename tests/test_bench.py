@@ -15,7 +15,7 @@ LINES = (
     "motion_1M", "motion_numpy_1M", "motion_loop_1M", "motion_vs_numpy", "motion_loop_vs_motion",
     "combinations", "combinations_numpy", "combinations_loop", "combinations_numpy_vs_ours", "combinations_loop_vs_ours",
     "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report", "report_20_cases",
-    "review_page_ready", "review_change_median", "review_change_max",
+    "review_start", "review_page_ready", "review_change_median", "review_change_max",
 )
 
 
