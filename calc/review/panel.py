@@ -29,15 +29,15 @@ from urllib.parse import quote
 
 from ..case import Case, read_case
 from ..errors import CalcError
+from ..mechanism import TYPES as MECHANISM_TYPES, converted, converted_distance
 from ..publish import summary_rows
 from ..sections import drive
+from ..sections import motion as motion_section
 from ..sections.gearbox import catalogs as gearbox_catalogs
 from ..sections.ratios import search as search_ratios
 from ..units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
-from ..mechanism import TYPES as MECHANISM_TYPES, converted, converted_distance
-from ..sections import motion as motion_section
 from .inputs import MECHANISM, MOVE_TIMES, InputSpec, input_specs, is_inch_pound, with_inputs
 from .keep import changed_text, edit_text, free_name, save_path, value_text, with_moves_edited
 from .view import FAIL_COLOR, comparison_html, evaluated, results_html, typeset
@@ -265,7 +265,7 @@ class DesignReview:
             self.file_text = None  # the reader says why
         if self._build([], {}):
             # The results in the units the case file writes: inch-pound where its inputs are.
-            self.file_units = "inch-pound" if any(is_inch_pound(s.unit) for s in self.specs) else "SI"
+            self.file_units = "inch-pound" if self._writes_inch_pound() else "SI"
             self.units.unobserve(self._changed, names="value")
             self.units.value = self.file_units
             self.units.observe(self._changed, names="value")
@@ -279,8 +279,7 @@ class DesignReview:
         message, where the edited case cannot be read."""
         path = self.case_file.value
         try:
-            text = with_moves_edited(self.file_text, edits, path.name) if edits else self.file_text
-            case = read_case(path, text)  # no text: the file as it is, or why it cannot be read
+            case = _edited_case(path, self.file_text, edits)  # no text: the file as it is, or why it cannot be read
             ratios = _ratios(case) if case.ratio is not None else []
         except CalcError as exc:
             self.message.value = f'<b style="color:{FAIL_COLOR}">{failed}</b>: {typeset(_without_folder(str(exc), path))}'
@@ -305,13 +304,16 @@ class DesignReview:
             unit = self._length_unit()
             size = case.motion.mechanism.lead if case.motion.mechanism.type == "ball-screw" else case.motion.mechanism.diameter
             self.mechanism_size.value = "" if size is None else f"{size.m_as(unit):.6g}"
-            self.mechanism_size.description = ""
             self.mechanism_size.placeholder = f"lead / diameter [{unit}]"
         return True
 
+    def _writes_inch_pound(self) -> bool:
+        """Whether the case file writes its inputs in inch-pound units."""
+        return any(is_inch_pound(s.unit) for s in self.specs)
+
     def _length_unit(self) -> str:
         """The unit of a mechanism's lead or diameter: inch where the case writes inch-pound."""
-        return "in" if any(is_inch_pound(s.unit) for s in self.specs) else "mm"
+        return "in" if self._writes_inch_pound() else "mm"
 
     def _row(self, spec: InputSpec, value):
         """One input: its label with unit (the whole of it also as tooltip, its key path as
@@ -419,10 +421,10 @@ class DesignReview:
         file leaves out only where it was changed)."""
         table = self.case.motion.tables["move"][k - 1]
         names = ("dwell",) if "dwell" in table else ("distance", *(n for n, _ in MOVE_TIMES))
-        out = {}
+        out, changed = {}, self.changes()
         for name in names:
             key = f"move[{k}].{name}"
-            if key in self.controls and (name in table or key in self.changes()):
+            if key in self.controls and (name in table or key in changed):
                 out[name] = value_text(self.controls[key].value, self._spec(key).unit)
         return out
 
@@ -469,7 +471,7 @@ class DesignReview:
         except CalcError as exc:
             self.message.value = f'<b style="color:{FAIL_COLOR}">type not changed</b>: {typeset(self._in_words(str(exc)))}'
             return
-        inch = self._length_unit() == "in"
+        inch = self._writes_inch_pound()
         keys = {}
         for key in motion_section.keys_of(type_):
             attribute = MECHANISM_ATTRIBUTES.get(key.name, key.name)
@@ -712,8 +714,7 @@ class DesignReview:
         """The case file with the changed values written in (:func:`calc.review.keep.changed_text`)."""
         path = self.case.path
         changes = {k: ((None, u) if v == SELECTION else (v, u)) for k, (v, u) in self.changes().items()}
-        text = with_moves_edited(self.file_text, self.edits, path.name) if self.edits else self.file_text
-        return changed_text(text, changes, path.name, self.edits)
+        return changed_text(_edited_text(path, self.file_text, self.edits), changes, path.name, self.edits)
 
     def save(self, name: str | None = None) -> Path | None:
         """Write the changed values as the new case file ``name`` (by default the save field's)
@@ -830,8 +831,7 @@ class DesignReview:
         if path is None:
             raise CalcError(f"no case file {state['case']!r} among the cases")
         edits = [tuple(e) for e in state["edits"]]
-        text = path.read_text(encoding="utf-8")
-        case = read_case(path, with_moves_edited(text, edits, path.name) if edits else text)
+        case = _edited_case(path, path.read_text(encoding="utf-8"), edits)
         specs = {spec.key: spec for spec in _specs_of(case, _ratios(case) if case.ratio is not None else [])}
         changes = {}
         for key, text in state["values"].items():
@@ -845,6 +845,16 @@ class DesignReview:
                 changes[key] = (value, spec.unit)
         report, _ = evaluated(_with_changes(case, dict(changes)))
         return _variant_name(number, path.name, specs.values(), changes, edits), report
+
+
+def _edited_text(path: Path, text: str | None, edits) -> str | None:
+    """The text ``text`` of the case file ``path`` with the moves' ``edits`` (none: the text)."""
+    return with_moves_edited(text, edits, path.name) if edits else text
+
+
+def _edited_case(path: Path, text: str | None, edits) -> Case:
+    """The case file ``path`` of the text ``text`` (None: as the file reads) with the moves' ``edits``."""
+    return read_case(path, _edited_text(path, text, edits))
 
 
 def _specs_of(case: Case, ratios) -> list[InputSpec]:
@@ -876,21 +886,27 @@ def _variant_name(number: int, file: str, specs, changes: dict, edits) -> str:
 
 
 #: The attribute of :class:`calc.mechanism.Mechanism` of each of its keys that is named otherwise.
-MECHANISM_ATTRIBUTES = {"lead": "lead", "pitch_diameter": "diameter", "pulley_diameter": "diameter",
+MECHANISM_ATTRIBUTES = {"pitch_diameter": "diameter", "pulley_diameter": "diameter",
                         "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia"}
 
 #: An input of an entry of the moves: ``move[2].time``.
 _ENTRY = re.compile(r"^move\[(\d+)\]\.")
 
 
+def _place(k: int, edit) -> int | None:
+    """The place of entry ``k`` of the moves after ``edit`` (None: the entry removed)."""
+    if edit[0] == "add":
+        return k + 1 if k > edit[1] else k
+    if edit[0] == "remove":
+        return None if k == edit[1] else k - 1 if k > edit[1] else k
+    return k
+
+
 def _added_entries(edits) -> set:
     """The entries of the moves (counted from 1, after ``edits``) that the edits added."""
     added: list = []  # the added entries' places, kept up to date edit by edit
     for edit in edits:
-        if edit[0] == "add":
-            added = [k + 1 if k > edit[1] else k for k in added] + [edit[1] + 1]
-        elif edit[0] == "remove":
-            added = [k - 1 if k > edit[1] else k for k in added if k != edit[1]]
+        added = [p for k in added if (p := _place(k, edit)) is not None] + ([edit[1] + 1] if edit[0] == "add" else [])
     return set(added)
 
 
@@ -910,11 +926,9 @@ def _moved(values: dict, edit) -> dict:
         if m is None:
             out[key] = v
             continue
-        k = int(m.group(1))
-        if edit[0] == "remove" and k == edit[1]:
-            continue
-        moved = k + 1 if edit[0] == "add" and k > edit[1] else k - 1 if edit[0] == "remove" and k > edit[1] else k
-        out[f"move[{moved}]." + key[m.end():]] = v
+        moved = _place(int(m.group(1)), edit)
+        if moved is not None:
+            out[f"move[{moved}]." + key[m.end():]] = v
     return out
 
 

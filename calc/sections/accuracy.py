@@ -317,7 +317,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
             raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), column {empty[0]}: expected a value, found an empty cell")
         if empty:  # the selection's part: the chain is reckoned without the figure, and says so
             figures = " and ".join({"C_t21": "torsional stiffness C_t21", "backlash": "backlash"}[c] for c in empty)
-            unknown = f"{chosen_part}: its {figures} (empty in {rows.catalog_of(row)} row {rows.lines[row]}; reckoned {'rigid' if 'C_t21' in empty else 'free of backlash'})"
+            unknown = f"{chosen_part}: its {figures} (empty in {rows.catalog_of(row)} row {rows.lines[row]}; reckoned {' and '.join({'C_t21': 'rigid', 'backlash': 'free of backlash'}[c] for c in empty)})"
             out.unknown.append(unknown)
             out.unknown_chain.append(unknown)
             stiffness = Q_(np.inf, "N*m/arcmin") if "C_t21" in empty else stiffness
