@@ -896,3 +896,27 @@ def test_a_link_variant_that_no_longer_reads_is_left_out_saying_why():
     assert f"variant 2: {DERIVED_EXAMPLE.name} has no input move[9].time" in said
     assert "variant 3: gearbox ratio i: &#x27;11&#x27; is not one of its choices" in said
     assert [name for name, _ in panel.variants] == ["1: indexing-table.toml with 1 move: time t 0.6 s"]
+
+
+def test_the_variants_as_a_pdf(tmp_path):
+    """*Variants as PDF* writes the comparison with its figure beside the case (no reports'
+    folder given), never over a file, the variants named in full under the title."""
+    import shutil
+    import subprocess
+
+    case = tmp_path / "axis.toml"
+    case.write_text(EXAMPLE.read_text().replace('"../../data/', f'"{EXAMPLE.parents[2]}/data/'))
+    panel = DesignReview(case).settled()
+    assert panel.variants_pdf_button.disabled and panel.variants_pdf() is None
+    panel.keep_variant()
+    panel.controls["motor.peak_torque"].value = 30.0
+    panel.settled()
+    panel.keep_variant()
+    assert not panel.variants_pdf_button.disabled
+    first, second = panel.variants_pdf(), panel.variants_pdf()
+    assert (first.name, second.name) == ("axis-variants-1.pdf", "axis-variants-2.pdf")
+    assert first.read_bytes()[:5] == b"%PDF-" and "the variants compared, as a PDF" in panel.kept.value
+    if shutil.which("pdftotext"):
+        text = subprocess.run(["pdftotext", "-layout", str(first), "-"], capture_output=True, text=True).stdout
+        assert "variant 1" in text and "variant 2" in text and "378.3 N·m" in text and "NPS045-10" in text
+        assert "2: axis.toml with motor peak torque" in text and "worst governing utilization" in text

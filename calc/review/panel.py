@@ -40,7 +40,7 @@ from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import MECHANISM, MOVE_TIMES, InputSpec, input_specs, is_inch_pound, with_inputs
 from .keep import changed_text, edit_text, free_name, save_path, value_text, with_moves_edited
-from .view import FAIL_COLOR, comparison_html, evaluated, results_html, typeset
+from .view import FAIL_COLOR, comparison_html, comparison_pdf, comparison_rows, evaluated, results_html, typeset
 
 LABEL_WIDTH = "15.5em"
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
@@ -174,6 +174,9 @@ class DesignReview:
         self.report_button = w.Button(description="Calc report of this screen", layout=w.Layout(width="15em"),
                                       tooltip="save the changed values as a case file (Save as case file) and build its calc report (PDF)")
         self.report_button.on_click(lambda _: self.report_of_screen())
+        self.variants_pdf_button = w.Button(description="Variants as PDF", layout=w.Layout(width="11em"), disabled=True,
+                                            tooltip="the variants kept, side by side with their figure, as a PDF (A4)")
+        self.variants_pdf_button.on_click(lambda _: self.variants_pdf())
         self.download = w.HTML()
         self.kept = w.HTML()
         self.variants_html = w.HTML(layout=w.Layout(width="100%"))
@@ -185,7 +188,8 @@ class DesignReview:
         self.variants_field.add_class("dr-variants-asked")
         self.variants_field.observe(lambda change: self._variants_asked(change["new"]), names="value")
         keep = w.VBox([w.HBox([self.save_name, self.save_button], layout=w.Layout(width="100%")),
-                       w.HBox([self.variant_button, self.report_button]), self.download, self.kept, self.variants_field])
+                       w.HBox([self.variant_button, self.variants_pdf_button, self.report_button], layout=w.Layout(flex_flow="row wrap")),
+                       self.download, self.kept, self.variants_field])
         keep.add_class("dr-keep")
         top = w.HBox([self.case_file, self.reset, self.undo_button, self.redo_button], layout=w.Layout(width="100%"))
         self.all_candidates.observe(self._changed, names="value")
@@ -793,8 +797,26 @@ class DesignReview:
 
     def _show_variants(self) -> None:
         self.variants_html.value = comparison_html(self.variants, self.units.value) if self.variants else ""
+        self.variants_pdf_button.disabled = not self.variants
         # The results carry the variants' states, for the page's address.
         self.results.value = re.sub(r'data-variants="[^"]*" data-variants-asked="[^"]*"', self._variants_attribute(), self.results.value, count=1)
+
+    def variants_pdf(self) -> Path | None:
+        """The variants kept, side by side with their figure (:func:`calc.review.view.comparison_pdf`,
+        in the unit system shown), as ``<case>-variants-N.pdf`` in the reports' folder (the case's
+        folder where none is given), never over a file; linked under the buttons."""
+        if not self.variants:
+            return None
+        folder = Path(self.reports_folder) if self.reports_folder else self.case.path.parent
+        n = 1
+        while (pdf := folder / f"{self.case.path.stem}-variants-{n}.pdf").exists():
+            n += 1
+        rows = comparison_rows(self.variants, self.units.value)
+        comparison_pdf([f"variant {k}" for k in range(1, len(self.variants) + 1)], rows, pdf, legend=[name for name, _ in self.variants])
+        address = self.report_link(pdf) if self.report_link is not None else None
+        link = f'<a href="{escape(address)}" target="_blank">{escape(pdf.name)}</a>' if address else escape(str(pdf))
+        self.kept.value = f"the variants compared, as a PDF: {link}"
+        return pdf
 
     def _variants_attribute(self) -> str:
         """The variants' states, and those a link asked for (which the page's script waits for)."""

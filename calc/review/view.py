@@ -339,10 +339,10 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused, 
     return "".join(out)
 
 
-def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[str]]]:
+def comparison_rows(variants: list[tuple[str, Report]], system: str = "SI") -> list[tuple[str, list[str]]]:
     """The side-by-side comparison of designs, ``(name, report)``: one row per quantity (verdict,
     chosen parts, the worst governing utilization of each, the checks not made, the duty and
-    accuracy values), one column per design, as plain text."""
+    accuracy values), one column per design, as plain text in the unit system ``system``."""
     def section(r, name):
         return r.evaluated.sections.get(name) if r.evaluated is not None else None
 
@@ -380,18 +380,19 @@ def comparison_rows(variants: list[tuple[str, Report]]) -> list[tuple[str, list[
         ("positioning accuracy", lambda r: bound(r) + shown(r, "accuracy", "positioning_accuracy")),
         ("lost motion", lambda r: bound(r, "unknown_chain") + shown(r, "accuracy", "lost_motion")),
     ]
-    return [(name, [f(r) for _, r in variants]) for name, f in rows]
+    token = SYSTEM.set(system)
+    try:
+        return [(name, [f(r) for _, r in variants]) for name, f in rows]
+    finally:
+        SYSTEM.reset(token)
 
 
 def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> str:
     """The variants kept in the review side by side (:func:`comparison_rows`), in the unit system
     ``system``; a value that differs from the first variant's is highlighted."""
-    token = SYSTEM.set(system)
-    try:
-        rows = comparison_rows(variants)
-    finally:
-        SYSTEM.reset(token)
     from .figures import comparison_svg
+
+    rows = comparison_rows(variants, system)
 
     head = "".join(f"<th>{escape(n)}</th>" for n, _ in variants)
     body = "".join(
@@ -423,16 +424,21 @@ def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
     return "\n".join([lines[0], "  ".join("-" * w for w in widths), *lines[1:], "* differs from the first design"])
 
 
-def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], path) -> None:
+def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], path, legend: list[str] = ()) -> None:
     """:func:`comparison_rows` as a one-page PDF (A4 landscape): the table, a value that differs
     from the first design's shaded, and a comparison figure of the worst governing utilization of
-    each design's gearbox and coupling (matplotlib; no TeX needed)."""
+    each design's gearbox, coupling and motor (matplotlib; no TeX needed). ``legend``: what each
+    design is, where its name is short (the review's variants by number), printed under the title."""
+    import textwrap
+
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(11.69, 8.27))
-    table_ax, bars = fig.add_axes((0.03, 0.36, 0.94, 0.58)), fig.add_axes((0.1, 0.06, 0.85, 0.22))
+    table_ax, bars = fig.add_axes((0.03, 0.36, 0.94, 0.52 if legend else 0.58)), fig.add_axes((0.1, 0.06, 0.85, 0.22))
     table_ax.axis("off")
-    table_ax.set_title("Designs compared (shaded: differs from the first design)", fontsize=11, loc="left")
+    fig.text(0.03, 0.965, "Designs compared (shaded: differs from the first design)", fontsize=11, va="top")
+    if legend:
+        fig.text(0.03, 0.935, "\n".join(textwrap.wrap("; ".join(legend), 190)[:4]), fontsize=7, va="top")
     cells = [[name.replace("_", " "), *values] for name, values in rows]
     shown = table_ax.table(cellText=cells, colLabels=["", *names], loc="upper left", cellLoc="left")
     shown.auto_set_font_size(False)
