@@ -251,7 +251,7 @@ def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
     if hubs is None:
         return J_1, d_hub, d_max
     shaft = None if motor_shaft is None else as_kind(motor_shaft, "length", "motor.shaft").m_as("mm")
-    row_of = {part: k for k, part in enumerate(catalog.parts.tolist())}
+    row_of = dict(zip(catalog.parts.tolist(), range(len(catalog))))  # a part's last row, as a comprehension would keep
     best = np.full(len(catalog), np.inf)
     best_J = np.full(len(catalog), np.nan)
     for gearbox, d, j in zip(hubs.text["gearbox"].tolist(), hubs["d_hub"].m_as("mm").tolist(), hubs["J_1"].m_as("kg*cm**2").tolist()):

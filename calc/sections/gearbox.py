@@ -175,7 +175,7 @@ class GearboxResult:
 
     def verdict(self) -> Verdict:
         s = self.selection
-        ratios = ", ".join(sorted({f"{r:g}" for r in s.catalog["ratio"].m_as("")}))
+        ratios = ", ".join(sorted({f"{r:g}" for r in np.unique(s.catalog["ratio"].m_as(""))}))  # distinct first: 10^5 rows
         return selection_verdict(s, f"gearbox of ratio {ratios} in {s.catalog.shown_name}", f"the {s.mode} checks")
 
 
