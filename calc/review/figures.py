@@ -39,6 +39,19 @@ def nice_ticks(low: float, high: float, count: int = 4) -> list[float]:
     return [round(first + k * step, 12) for k in range(int(math.ceil((high - first) / step - 1e-9)) + 1)]
 
 
+def _svg(cls: str, height: float, label: str, body: list[str]) -> str:
+    """A figure of the page: ``body`` in an SVG of the page's width and font, named ``label``."""
+    return (f'<svg class="{cls}" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
+            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(label)}">' + "".join(body) + "</svg>")
+
+
+def _grid(ticks, y, stroke=lambda v: "#e2e2e2") -> list[str]:
+    """A line across the plot and its value at each tick; ``y`` gives a value's height."""
+    return [part for v in ticks for part in (
+        f'<line x1="{LEFT}" x2="{WIDTH - RIGHT}" y1="{y(v):.1f}" y2="{y(v):.1f}" stroke="{stroke(v)}"/>',
+        f'<text x="{LEFT - 4}" y="{y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')]
+
+
 def _panel(edges, values, top: float, label: str, moving) -> list[str]:
     """One panel: its axis, ticks, the pauses shaded and the step line."""
     ticks = nice_ticks(min(0.0, float(np.min(values))), max(0.0, float(np.max(values))))
@@ -53,9 +66,7 @@ def _panel(edges, values, top: float, label: str, moving) -> list[str]:
 
     out = [f'<rect x="{x(a):.1f}" y="{top:.1f}" width="{x(b) - x(a):.1f}" height="{PANEL:.1f}" fill="#eeeeee"/>'
            for a, b, m in zip(edges[:-1], edges[1:], moving) if not m]
-    for v in ticks:
-        out.append(f'<line x1="{LEFT}" x2="{WIDTH - RIGHT}" y1="{y(v):.1f}" y2="{y(v):.1f}" stroke="{"#999" if v == 0 else "#e2e2e2"}"/>')
-        out.append(f'<text x="{LEFT - 4}" y="{y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')
+    out += _grid(ticks, y, lambda v: "#999" if v == 0 else "#e2e2e2")
     points = " ".join(f"{x(t):.1f},{y(v):.1f}" for a, b, v in zip(edges[:-1], edges[1:], values) for t in (a, b))
     out.append(f'<polyline points="{points}" fill="none" stroke="#1f5fbf" stroke-width="2"/>')
     out.append(f'<text x="12" y="{top + PANEL / 2:.1f}" transform="rotate(-90 12 {top + PANEL / 2:.1f})" text-anchor="middle">{escape(label)}</text>')
@@ -91,8 +102,7 @@ def load_cycle_svg(profile, duty=None, torque_unit: str = "N*m") -> str:
             px = LEFT + (WIDTH - LEFT - RIGHT) * t / span_x
             body.append(f'<text x="{px:.1f}" y="{bottom + 14:.1f}" text-anchor="middle">{t:g}</text>')
     body.append(f'<text x="{WIDTH - RIGHT}" y="{bottom + 27:.1f}" text-anchor="end">time t [s]; pauses shaded</text>')
-    return (f'<svg class="dr-load-cycle" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {HEIGHT}" width="100%" '
-            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
+    return _svg("dr-load-cycle", HEIGHT, title, body)
 
 
 def stiffness_chain_svg(accuracy) -> str:
@@ -135,8 +145,7 @@ def stiffness_chain_svg(accuracy) -> str:
                  f'<text x="{left + scale * share + 4:.1f}" y="{y + 14}">{escape(label)}</text>' if share < 50 else
                  f'<text x="{left + scale * share - 4:.1f}" y="{y + 14}" text-anchor="end" fill="#fff">{escape(label)}</text>']
     body.append(f'<text x="{left}" y="{height - 4}">share of the twist at the output [%]; input side purple, output side blue</text>')
-    return (f'<svg class="dr-chain" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
-            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
+    return _svg("dr-chain", height, title, body)
 
 
 #: A part's colour in the comparison of variants.
@@ -162,10 +171,7 @@ def comparison_svg(names: list[str], worst: dict) -> str:
     step = (WIDTH - LEFT - RIGHT) / max(len(names), 1)
     bar = step * 0.8 / len(parts)
     body = [f'<text x="0" y="14" font-weight="600">Worst governing utilization of each variant\'s parts [%]</text>']
-    for t in ticks:
-        y = height - bottom - scale * t
-        body += [f'<line x1="{LEFT}" x2="{WIDTH - RIGHT}" y1="{y:.1f}" y2="{y:.1f}" stroke="{"#b2222a" if t == 100 else "#e2e2e2"}"/>',
-                 f'<text x="{LEFT - 4}" y="{y + 4:.1f}" text-anchor="end">{t:g}</text>']
+    body += _grid(ticks, lambda t: height - bottom - scale * t, lambda t: "#b2222a" if t == 100 else "#e2e2e2")
     for k, name in enumerate(names):
         x0 = LEFT + step * k + step * 0.1
         for j, part in enumerate(parts):
@@ -177,11 +183,9 @@ def comparison_svg(names: list[str], worst: dict) -> str:
             body += [f'<rect x="{x:.1f}" y="{height - bottom - h:.1f}" width="{bar * 0.9:.1f}" height="{h:.1f}" fill="{PART_COLORS.get(part, "#888")}"/>',
                      f'<text x="{x + bar * 0.45:.1f}" y="{height - bottom - h - 3:.1f}" text-anchor="middle" font-size="9"{over}>{v:.0f} %</text>']
         body.append(f'<text x="{x0 + step * 0.4:.1f}" y="{height - bottom + 14}" text-anchor="middle">variant {escape(name)}</text>')
-    legend = "".join(f'<rect x="{LEFT + 90 * j}" y="{height - 14}" width="10" height="10" fill="{PART_COLORS.get(p, "#888")}"/>'
-                     f'<text x="{LEFT + 90 * j + 14}" y="{height - 5}">{escape(p)}</text>' for j, p in enumerate(parts))
-    return (f'<svg class="dr-compared" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
-            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="worst utilization of each variant">'
-            + "".join(body) + legend + "</svg>")
+    body += [f'<rect x="{LEFT + 90 * j}" y="{height - 14}" width="10" height="10" fill="{PART_COLORS.get(p, "#888")}"/>'
+             f'<text x="{LEFT + 90 * j + 14}" y="{height - 5}">{escape(p)}</text>' for j, p in enumerate(parts)]  # the key
+    return _svg("dr-compared", height, "worst utilization of each variant", body)
 
 
 def ratio_search_svg(found: dict) -> str:
@@ -211,10 +215,7 @@ def ratio_search_svg(found: dict) -> str:
     step = (WIDTH - LEFT - RIGHT) / max(len(rows), 1)
     title = f"RMS motor torque at each ratio, its best gearbox; λ above (limit {limit:g})"
     body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
-    for t in ticks:
-        y = height - bottom - scale * t
-        body += [f'<line x1="{LEFT}" x2="{WIDTH - RIGHT}" y1="{y:.1f}" y2="{y:.1f}" stroke="#e2e2e2"/>',
-                 f'<text x="{LEFT - 4}" y="{y + 4:.1f}" text-anchor="end">{t:g}</text>']
+    body += _grid(ticks, lambda t: height - bottom - scale * t)
     body.append(f'<text x="12" y="{height - bottom - plot / 2:.0f}" transform="rotate(-90 12 {height - bottom - plot / 2:.0f})" '
                 f'text-anchor="middle">{escape(pretty_unit(unit))}</text>')
     for k, (r, v) in enumerate(zip(rows, rms)):
@@ -230,5 +231,4 @@ def ratio_search_svg(found: dict) -> str:
                  f'<text x="{x + step * 0.3:.1f}" y="{height - bottom + 14}" text-anchor="middle">{r["ratio"]:g}</text>',
                  f'<text x="{x + step * 0.3:.1f}" y="{height - bottom + 27}" text-anchor="middle" fill="#666">{escape(r["part"])}</text>',
                  f'<text x="{x + step * 0.3:.1f}" y="{height - bottom - h - 4:.1f}" text-anchor="middle"{over}>λ {lam_text}</text>']
-    return (f'<svg class="dr-ratios" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
-            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(title)}">' + "".join(body) + "</svg>")
+    return _svg("dr-ratios", height, title, body)

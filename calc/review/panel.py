@@ -40,7 +40,7 @@ from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import MECHANISM, MOVE_TIMES, InputSpec, input_specs, is_inch_pound, with_inputs
 from .keep import changed_text, edit_text, free_name, save_path, value_text, with_moves_edited
-from .view import FAIL_COLOR, comparison_html, comparison_pdf, comparison_rows, evaluated, results_html, typeset
+from .view import FAIL_COLOR, comparison_html, comparison_pdf, comparison_rows, evaluated, results_html, typeset, worst_utilizations
 
 LABEL_WIDTH = "15.5em"
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
@@ -812,7 +812,8 @@ class DesignReview:
         while (pdf := folder / f"{self.case.path.stem}-variants-{n}.pdf").exists():
             n += 1
         rows = comparison_rows(self.variants, self.units.value)
-        comparison_pdf([f"variant {k}" for k in range(1, len(self.variants) + 1)], rows, pdf, legend=[name for name, _ in self.variants])
+        comparison_pdf([f"variant {k}" for k in range(1, len(self.variants) + 1)], rows, worst_utilizations(self.variants), pdf,
+                       legend=[name for name, _ in self.variants])
         address = self.report_link(pdf) if self.report_link is not None else None
         link = f'<a href="{escape(address)}" target="_blank">{escape(pdf.name)}</a>' if address else escape(str(pdf))
         self.kept.value = f"the variants compared, as a PDF: {link}"

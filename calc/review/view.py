@@ -339,29 +339,37 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused, 
     return "".join(out)
 
 
+def _section(r: Report, name: str):
+    return r.evaluated.sections.get(name) if r.evaluated is not None else None
+
+
+def _worst(r: Report, part: str) -> float | None:
+    """The worst governing utilization of a design's ``part`` in percent; None where it has none
+    (a motor the case types has no selection: its checks stand alone)."""
+    s = _section(r, part)
+    u = None if s is None or s.selection is None else s.selection.best.worst
+    return None if u is None else 100 * u
+
+
 def comparison_rows(variants: list[tuple[str, Report]], system: str = "SI") -> list[tuple[str, list[str]]]:
     """The side-by-side comparison of designs, ``(name, report)``: one row per quantity (verdict,
     chosen parts, the worst governing utilization of each, the checks not made, the duty and
     accuracy values), one column per design, as plain text in the unit system ``system``."""
-    def section(r, name):
-        return r.evaluated.sections.get(name) if r.evaluated is not None else None
-
     def chosen(r, name):
-        s = section(r, name)
+        s = _section(r, name)
         return "" if s is None or s.selection is None else s.selection.selected or "none passes"
 
     def worst(r, name):
-        s = section(r, name)  # a motor the case types has no selection: its checks stand alone
-        u = None if s is None or s.selection is None else s.selection.best.worst
-        return "" if u is None else f"{100 * u:.0f} %"
+        u = _worst(r, name)
+        return "" if u is None else f"{u:.0f} %"
 
     def shown(r, name, field):
-        s = section(r, name)
+        s = _section(r, name)
         v = None if s is None else getattr(s.shown, field)
         return "" if v is None else str(in_system(v))
 
     def bound(r, field="unknown"):
-        s = section(r, "accuracy")
+        s = _section(r, "accuracy")
         return "≥ " if s is not None and getattr(s.shown, field) else ""
 
     rows = [
@@ -373,7 +381,7 @@ def comparison_rows(variants: list[tuple[str, Report]], system: str = "SI") -> l
         ("motor", lambda r: chosen(r, "motor")),
         ("motor worst utilization", lambda r: worst(r, "motor")),
         ("checks not made", lambda r: str(len(r.evaluated.not_made()) if r.evaluated is not None else 0)),
-        ("mode", lambda r: "" if section(r, "profile") is None else section(r, "profile").shown.mode),
+        ("mode", lambda r: "" if _section(r, "profile") is None else _section(r, "profile").shown.mode),
         ("ED", lambda r: shown(r, "profile", "ED")),
         ("T_2max", lambda r: shown(r, "profile", "T_2max")),
         ("T_2m", lambda r: shown(r, "profile", "T_2m")),
@@ -399,7 +407,7 @@ def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> s
         f"<tr><td>{typeset(name)}</td>" + "".join(f'<td class="{"differs" if k and v != values[0] else ""}">{escape(v)}</td>' for k, v in enumerate(values)) + "</tr>"
         for name, values in rows
     )
-    figure = comparison_svg([str(k) for k in range(1, len(variants) + 1)], worst_utilizations(rows))
+    figure = comparison_svg([str(k) for k in range(1, len(variants) + 1)], worst_utilizations(variants))
     return (f'{STYLE}<div class="dr dr-variants"><h3>Variants compared</h3><table><thead><tr><th></th>{head}</tr></thead>'
             f"<tbody>{body}</tbody></table><div class=note>A value that differs from the first variant's is marked.</div>{figure}</div>")
 
@@ -408,11 +416,10 @@ def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> s
 COMPARED_PARTS = ("gearbox", "coupling", "motor")
 
 
-def worst_utilizations(rows: list[tuple[str, list[str]]]) -> dict:
-    """Each part's worst governing utilization per design, in percent, from the comparison's rows
-    (:func:`comparison_rows`, which print them to the percent); None where a design has none."""
-    by = dict(rows)
-    return {part: [float(v.rstrip(" %")) if v else None for v in by[f"{part} worst utilization"]] for part in COMPARED_PARTS}
+def worst_utilizations(designs: list[tuple[str, Report]]) -> dict:
+    """Each part's worst governing utilization per design, ``(name, report)``, in percent (the
+    comparison's rows print them to the percent); None where a design has none."""
+    return {part: [_worst(r, part) for _, r in designs] for part in COMPARED_PARTS}
 
 
 def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
@@ -424,10 +431,11 @@ def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
     return "\n".join([lines[0], "  ".join("-" * w for w in widths), *lines[1:], "* differs from the first design"])
 
 
-def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], path, legend: list[str] = ()) -> None:
+def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: dict, path, legend: list[str] = ()) -> None:
     """:func:`comparison_rows` as a one-page PDF (A4 landscape): the table, a value that differs
     from the first design's shaded, and a comparison figure of the worst governing utilization of
-    each design's gearbox, coupling and motor (matplotlib; no TeX needed). ``legend``: what each
+    each design's gearbox, coupling and motor (``worst``, :func:`worst_utilizations`; matplotlib, no
+    TeX needed). ``legend``: what each
     design is, where its name is short (the review's variants by number), printed under the title."""
     import textwrap
 
@@ -449,7 +457,7 @@ def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], path, le
                 shown[r, k].set_facecolor("#fff0c0")
     x = np.arange(len(names))
     width = 0.8 / len(COMPARED_PARTS)
-    for k, (what, u) in enumerate(worst_utilizations(rows).items()):
+    for k, (what, u) in enumerate(worst.items()):
         bars.bar(x + (k - (len(COMPARED_PARTS) - 1) / 2) * width, [0.0 if v is None else v for v in u], width=width * 0.95, label=what)
     bars.axhline(100, color="#b2222a", linewidth=1)
     bars.set_xticks(x, names, fontsize=8)
@@ -476,7 +484,7 @@ def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
     rows = comparison_rows(designs)
     names = [n for n, _ in designs]
     if pdf is not None:
-        comparison_pdf(names, rows, pdf)
+        comparison_pdf(names, rows, worst_utilizations(designs), pdf)
     if as_json:
         return json.dumps({"designs": [str(p) for p in paths],
                            "rows": [{"name": name, "values": values, "differs": [k > 0 and v != values[0] for k, v in enumerate(values)]}
