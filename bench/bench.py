@@ -5,14 +5,14 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
 
 * ``rank_100k``: the gearbox selection of the example case (``cases/indexing-table.toml``) over a
   synthetic catalog of 100,000 rows at its ratio, through the public API
-  (:func:`calc.gearbox.rows_at_ratio`, :func:`calc.gearbox.select_gearbox`: quantities in,
+  (:func:`calc.domain.gearbox.rows_at_ratio`, :func:`calc.domain.gearbox.select_gearbox`: quantities in,
   quantities out). Beside it ``rank_numpy_100k``, the same computation in raw numpy on float
   arrays (the floor), and ``loop_100k``, the per-row loop with pint scalar quantities that a
   scalar library leads to, run on a slice and scaled. The three must give the same ranking; the
   run stops if they do not.
 * ``ratios_100k``: the best ratio of the example's typed form (``tests/cases/indexing-table-profile.toml``:
   segments, so the floor and the API both leave the rotor term out) over a synthetic catalog of 100,000 rows at
-  six ratios, through the public API (:func:`calc.ratios.search_ratios`: one selection over every
+  six ratios, through the public API (:func:`calc.domain.ratios.search_ratios`: one selection over every
   row, the best row of each ratio, the motor through each over the cycle, the pick), with the
   motor's rated torque and top speed set so that every check is made. Beside it
   ``ratios_numpy_100k``, the same in raw numpy, and ``ratios_loop_100k``, the per-row pint loop (a
@@ -22,7 +22,7 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   the package's Formula objects broadcast over arrays, beside the same in raw numpy; ``sweep_1M``
   the same with 10^6 points, where the fixed cost of each call weighs ten times less.
 * ``catalog_load_100k``: reading and validating that catalog's CSV file, the first
-  :func:`calc.catalog.load_catalog` of it in the run (a later one is served from what was read;
+  :func:`calc.data.catalog.load_catalog` of it in the run (a later one is served from what was read;
   no target; not part of ``rank_100k``).
 * ``evaluate_100k_filled`` and ``evaluate_100k_blank``: ``python -m calc evaluate --json`` of a
   copy of the example case whose ``gearbox.catalog`` is a synthetic catalog of 100,000 rows at its
@@ -32,15 +32,15 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   the shipped catalog, and ``_memory`` its peak resident memory.
 * ``hysteresis_1M``: the analysis of a measured hysteresis loop of 10^6 samples.
 * ``motion_1M``: deriving a load cycle of 10^6 samples from its moves and mechanism (a quarter-turn
-  trapezoid index and a dwell of a rotary table: :func:`calc.motion.sample`, the mechanism's torque,
-  :func:`calc.motion.segments`), beside ``motion_numpy_1M``, the same cycle on a uniform grid in raw
+  trapezoid index and a dwell of a rotary table: :func:`calc.domain.motion.sample`, the mechanism's torque,
+  :func:`calc.domain.motion.segments`), beside ``motion_numpy_1M``, the same cycle on a uniform grid in raw
   numpy (the floor), and ``motion_loop_1M``, the obvious loop over the samples with Python floats,
   run on a slice and scaled. The three must give the same segments; the run stops if they do not.
 * ``combinations``: every motor with every gearbox row at every ratio (:data:`COMBINATIONS`: 200
   synthetic motors × 100 series × 16 ratios over a 20,000-sample cycle) checked and one pair picked
-  through :func:`calc.combinations.search` (the motor torque's peak and RMS from the cycle's
+  through :func:`calc.domain.combinations.search` (the motor torque's peak and RMS from the cycle's
   moments), beside ``combinations_numpy``, the same in raw numpy with a pass over the samples for
-  each gearbox row and every motor, and ``combinations_loop``, :func:`calc.motor.motor_load` per
+  each gearbox row and every motor, and ``combinations_loop``, :func:`calc.domain.motor.motor_load` per
   pair, run on ten pairs and scaled. The three must agree on the torques and the pick; the run
   stops if they do not.
 * ``import_calc``, ``evaluate_cli``, ``report``: cold runs of a fresh interpreter (median of 5 for
@@ -204,8 +204,8 @@ def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1) -> None
 
 
 def rank_api(catalog, case):
-    """The public API: quantities in, a ranked :class:`calc.gearbox.GearboxSelection` out."""
-    from calc.gearbox import rows_at_ratio, select_gearbox
+    """The public API: quantities in, a ranked :class:`calc.domain.gearbox.GearboxSelection` out."""
+    from calc.domain.gearbox import rows_at_ratio, select_gearbox
 
     rows = rows_at_ratio(catalog, case.ratio)
     return select_gearbox(case.profile, rows, case.motor_peak_torque, case.motor_inertia, case.load_inertia)
@@ -270,8 +270,8 @@ def rank_numpy(f: Floats):
 
 def select_numpy(f: Floats, rows):
     """:func:`rank_numpy` over the rows ``rows`` (a mask or index), each at its own ratio."""
-    from calc.checks import BOUNDARY_RTOL, rank
-    from calc.gearbox import SHOCK_FACTORS
+    from calc.core.checks import BOUNDARY_RTOL, rank
+    from calc.domain.gearbox import SHOCK_FACTORS
 
     i, t_2n, t_2b, t_2not, n_1n, n_1max, eta, j_1, parts, illustrative = (
         a[rows] for a in (f.ratio, f.T_2N, f.T_2B, f.T_2Not, f.n_1N, f.n_1max, f.eta, f.J_1, f.parts, f.illustrative)
@@ -316,7 +316,7 @@ def loop_keys(catalog, case, rows: int) -> list:
     """:func:`rank_loop`'s ranking keys ``(fails, illustrative, size, worst, part, row)`` of the
     first ``rows`` rows (those at the case's ratio; every row where the case has none), sorted."""
     from calc import Q_
-    from calc.checks import BOUNDARY_RTOL
+    from calc.core.checks import BOUNDARY_RTOL
 
     p = case.profile
     segments = [(p.durations[k], p.speeds[k], p.torques[k]) for k in range(len(p.phases)) if p.phases[k] != "pause"]
@@ -357,10 +357,10 @@ def loop_keys(catalog, case, rows: int) -> list:
 
 
 def measure_rank(size: Size, workdir: Path) -> list[str]:
-    from calc.case import read_case
+    from calc.sections.case import read_case
     from calc.sections.motor import with_chosen_motor
-    from calc.catalog import load_catalog
-    from calc.gearbox import SCHEMA
+    from calc.data.catalog import load_catalog
+    from calc.domain.gearbox import SCHEMA
 
     case = with_chosen_motor(read_case(EXAMPLE))  # the motor the evaluation chooses from the motor catalog
     path = workdir / "synthetic-gearboxes.csv"
@@ -402,9 +402,9 @@ SEARCH_T_1N, SEARCH_N_MAX = 4.0, 6000.0  # N·m, rpm
 
 
 def ratios_api(catalog, case, load):
-    """The public API: quantities in, a :class:`calc.ratios.RatioSearch` out."""
+    """The public API: quantities in, a :class:`calc.domain.ratios.RatioSearch` out."""
     from calc import Q_
-    from calc.ratios import search_ratios
+    from calc.domain.ratios import search_ratios
 
     return search_ratios(catalog, case.profile, load, Q_(SEARCH_T_1N, "N*m"), Q_(SEARCH_N_MAX, "rpm"),
                          motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
@@ -416,8 +416,8 @@ def ratios_numpy(f: Floats):
     ``T_2 / (i η)``, driven back ``T_2 η / i``), its peak, RMS and speed checks, the inertia
     ratio and the pick (lowest RMS among feasible ratios with λ <= 10). Returns the best row of
     each ratio and the pick."""
-    from calc.checks import BOUNDARY_RTOL
-    from calc.ratios import INERTIA_RATIO_LIMIT
+    from calc.core.checks import BOUNDARY_RTOL
+    from calc.domain.ratios import INERTIA_RATIO_LIMIT
 
     order, passes, _, _ = select_numpy(f, slice(None))
     ratios, group = np.unique(f.ratio, return_inverse=True)
@@ -446,8 +446,8 @@ def ratios_loop(catalog, case, rows: int):
     import dataclasses
 
     from calc import Q_
-    from calc.checks import BOUNDARY_RTOL
-    from calc.ratios import INERTIA_RATIO_LIMIT
+    from calc.core.checks import BOUNDARY_RTOL
+    from calc.domain.ratios import INERTIA_RATIO_LIMIT
 
     best, fails = {}, {}
     for key in loop_keys(catalog, dataclasses.replace(case, ratio=None), rows):
@@ -476,9 +476,9 @@ def ratios_loop(catalog, case, rows: int):
 
 
 def measure_ratios(size: Size, workdir: Path) -> list[str]:
-    from calc.case import read_case
-    from calc.catalog import load_catalog
-    from calc.gearbox import SCHEMA
+    from calc.sections.case import read_case
+    from calc.data.catalog import load_catalog
+    from calc.domain.gearbox import SCHEMA
     from calc.sections.motor import output_load
 
     case = read_case(TYPED_EXAMPLE)  # typed segments: the floor leaves the rotor term out, as the API then does
@@ -528,7 +528,7 @@ def write_large_case(workdir: Path, rows: int, optional: str) -> Path:
     ``"filled"``: the shipped rows at that ratio (the accuracy chain names one of them) and made-up
     rows whose ratings vary, so the ranking has work to do. The folder links the project's
     ``data`` so that the case's measurement paths hold."""
-    from calc.case import read_case
+    from calc.sections.case import read_case
 
     ratio = read_case(EXAMPLE).ratio.m_as("")
     folder = workdir / f"large-{optional}" / "cases"
@@ -623,9 +623,9 @@ def sweep_api(q: dict):
     """Every point of the grid through the Formula objects (quantities in, quantities out):
     duty cycle, cycles per hour, shock factor, T_2max, peak input speed, the two S5 utilizations."""
     from calc import Q_
-    from calc.checks import CheckArray
-    from calc.gearbox import T_2max, n_1, shock_factor
-    from calc.profile import ED, Z_h
+    from calc.core.checks import CheckArray
+    from calc.domain.gearbox import T_2max, n_1, shock_factor
+    from calc.domain.profile import ED, Z_h
 
     ed = ED(t_on=q["t_on"], t_cycle=q["t_cycle"])
     f_s = shock_factor(Z_h(t_cycle=q["t_cycle"]))
@@ -638,8 +638,8 @@ def sweep_api(q: dict):
 
 def sweep_numpy(grid):
     """The same on float arrays."""
-    from calc.gearbox import SHOCK_FACTORS
-    from calc.checks import BOUNDARY_RTOL
+    from calc.domain.gearbox import SHOCK_FACTORS
+    from calc.core.checks import BOUNDARY_RTOL
 
     ratio, t_cycle, T_1B = grid
     ed = SWEEP_T_ON / t_cycle
@@ -674,10 +674,10 @@ def measure_sweep(size: Size) -> list[str]:
 
 
 def measure_hysteresis(size: Size) -> list[str]:
-    """:func:`calc.hysteresis.analyze_loop` on a loop drawn by the model of a catalog gearbox,
+    """:func:`calc.domain.hysteresis.analyze_loop` on a loop drawn by the model of a catalog gearbox,
     unevenly sampled, with noise on torque and twist (as a rig records it)."""
     from calc import Q_
-    from calc.hysteresis import analyze_loop, model_for_part
+    from calc.domain.hysteresis import analyze_loop, model_for_part
 
     model = model_for_part("NPT035-10")
     loop = model.loop(size.samples, noise_torque=Q_(0.05, "N*m"), noise_twist=Q_(0.02, "arcmin"), seed=1)
@@ -693,9 +693,9 @@ MOTION = dict(J=0.15, T_f=3.0, distance=np.pi / 2, time=0.5, ramp=0.15, dwell=1.
 
 def motion_api(samples: int):
     from calc import Q_
-    from calc.mechanism import Mechanism
-    from calc.motion import Move, sample
-    from calc.profile import segments
+    from calc.domain.mechanism import Mechanism
+    from calc.domain.motion import Move, sample
+    from calc.domain.profile import segments
 
     m = MOTION
     table = Mechanism("rotary", inertia=Q_(m["J"], "kg*m**2"), friction_torque=Q_(m["T_f"], "N*m"), process_torque=Q_(0, "N*m"))
@@ -790,8 +790,8 @@ def combination_inputs(motors: int, gearboxes: int, ratios, samples: int, seed: 
     ten times lighter), ``gearboxes`` series each at every ratio and ``motors`` motors with
     ratings that grow with their size, as float arrays in SI units."""
     from calc import Q_
-    from calc.mechanism import Mechanism
-    from calc.motion import Move, sample
+    from calc.domain.mechanism import Mechanism
+    from calc.domain.motion import Move, sample
 
     m = MOTION
     table = Mechanism("rotary", inertia=Q_(m["J"] / 10, "kg*m**2"), friction_torque=Q_(m["T_f"] / 10, "N*m"), process_torque=Q_(0, "N*m"))
@@ -833,10 +833,10 @@ def combinations_numpy(cycle, top_speed, gear, motor):
 
 
 def combinations_loop(cycle, gear, motor, pairs):
-    """The per-combination loop: :func:`calc.motor.motor_load` (quantities, a pass over the samples)
+    """The per-combination loop: :func:`calc.domain.motor.motor_load` (quantities, a pass over the samples)
     for each (gearbox row, motor) pair given."""
     from calc import Q_
-    from calc.motor import motor_load
+    from calc.domain.motor import motor_load
 
     dt, T, w, a = (Q_(cycle[0], "s"), Q_(cycle[1], "N*m"), Q_(cycle[2], "rad/s"), Q_(cycle[3], "rad/s**2"))
     out = []
@@ -847,7 +847,7 @@ def combinations_loop(cycle, gear, motor, pairs):
 
 
 def measure_combinations(size: Size) -> list[str]:
-    from calc.combinations import CycleMoments, search
+    from calc.domain.combinations import CycleMoments, search
 
     c = COMBINATIONS if size.judged else dict(motors=20, gearboxes=5, ratios=(5, 10), samples=2_000)
     cycle, top, gear, motor = combination_inputs(c["motors"], c["gearboxes"], c["ratios"], c["samples"])
@@ -867,7 +867,7 @@ def measure_combinations(size: Size) -> list[str]:
     return [
         line("combinations", api_time, "s", ("<=", 1), note=f"{what}: the cycle's moments, every pair's peak, RMS and checks, the pick"),
         line("combinations_numpy", floor_time, "s", note="raw numpy: each gearbox row's motor torque over every sample for every motor"),
-        line("combinations_loop", loop_scaled, "s", note=f"calc.motor.motor_load per pair: {len(sample)} pairs timed, scaled to {pairs}"),
+        line("combinations_loop", loop_scaled, "s", note=f"calc.domain.motor.motor_load per pair: {len(sample)} pairs timed, scaled to {pairs}"),
         line("combinations_numpy_vs_ours", floor_time / api_time, "x", note="the three agree on the pick and on the torques"),
         line("combinations_loop_vs_ours", loop_scaled / api_time, "x"),
     ]

@@ -1,5 +1,5 @@
 """The served design review (``make review``) in a real browser: headless Chromium from the system's
-packages, driven by Playwright. Used by the browser test (tests/test_review_browser.py) and by the
+packages, driven by Playwright. Used by the browser test (tests/outputs/test_review_browser.py) and by the
 benchmark's ``review_*`` lines.
 
 :func:`served` starts the server on a free port of this machine (``127.0.0.1``), waits for its
@@ -117,7 +117,7 @@ def new_values(case: Path, count: int) -> list[tuple[str, str]]:
     """``count`` changes ``(key path, value as typed)`` to the inputs the page offers for ``case``
     (:func:`calc.review.input_specs`), in turn, each to a value not seen before: a few steps up
     from the file's value, inside the input's range (the ratio: the next of the catalog's)."""
-    from calc.case import read_case
+    from calc.sections.case import read_case
     from calc.review import input_specs
     from calc.review.panel import _ratios, forced_part_spec
 

@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 
-from .errors import CalcError
+from .core.errors import CalcError
 
 
 def main(argv=None) -> int:
@@ -50,18 +50,18 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     # Nothing but the results and the one-line error reach the terminal: numpy's floating-point
     # warnings are not printed (a non-finite result is an input error naming where it came from,
-    # calc.sections.common.number; the loaders hold every value within calc.units.SI_SCALE).
+    # calc.sections.common.number; the loaders hold every value within calc.core.units.SI_SCALE).
     with np.errstate(all="ignore"):
         return _run(args)
 
 
 def _run(args) -> int:
     if args.command == "report":
-        from .publish import main as report
+        from .report.publish import main as report
 
         return report(args.cases, args.output, strict=args.strict, summary=args.summary, jobs=args.jobs)
 
-    from .case import read_case
+    from .sections.case import read_case
     from .sections import SHOWN_CANDIDATES, evaluate
 
     try:

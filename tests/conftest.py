@@ -158,7 +158,7 @@ class ErrorRecord:
 
 
 def pytest_configure(config):
-    from calc.errors import CalcError
+    from calc.core.errors import CalcError
 
     config.stash[_OWN_INIT] = CalcError.__dict__.get("__init__")
     inherited = CalcError.__init__
@@ -175,7 +175,7 @@ def pytest_configure(config):
 
 
 def pytest_unconfigure(config):
-    from calc.errors import CalcError
+    from calc.core.errors import CalcError
 
     if _OWN_INIT not in config.stash:
         return
@@ -199,7 +199,7 @@ def pytest_collection_modifyitems(session, config, items):
 
 def pytest_collection_finish(session):
     patterns = session.config.getini("python_files")
-    files = {p for p in TESTS.glob("*.py") if any(fnmatch.fnmatch(p.name, pat) for pat in patterns)}
+    files = {p for p in TESTS.rglob("*.py") if any(fnmatch.fnmatch(p.name, pat) for pat in patterns)}
     missing = files - {item.path for item in session.items}
     by_node_id = [arg for arg in session.config.args if "::" in arg]
     if missing:

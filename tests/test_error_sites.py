@@ -18,10 +18,10 @@ from .error_sites import error_sites, site_at
 #: the package (an exception other than CalcError while the report is built) or in the TeX installation
 #: gets here.
 NOT_FROM_INPUT = {
-    ("calc/publish.py", "render_pdf", "{display_path(report.path)}: xelatex could not typeset the report"),
-    ("calc/publish.py", "render_summary", "{pdf}: xelatex could not typeset the summary"),
-    # A backstop of the results: inputs are held to calc.units.SI_SCALE, within which no formula overflows.
-    ("calc/units.py", "number", "{key}: the calculation overflows"),
+    ("calc/report/publish.py", "render_pdf", "{display_path(report.path)}: xelatex could not typeset the report"),
+    ("calc/report/publish.py", "render_summary", "{pdf}: xelatex could not typeset the summary"),
+    # A backstop of the results: inputs are held to calc.core.units.SI_SCALE, within which no formula overflows.
+    ("calc/core/units.py", "number", "{key}: the calculation overflows"),
 }
 
 

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from calc.case import read_case
+from calc.sections.case import read_case
 from calc.sections import evaluate
 
 from .conftest import DERIVED_EXAMPLE as EXAMPLE, ROOT  # the example case as shipped
@@ -51,8 +51,8 @@ def run(args, **kw) -> str:
 # Where the installed calc finds its package data, printed by the child as JSON.
 WHERE = """
 import importlib.resources as r, json, calc
-from calc.catalog import CATALOG_DIR, PROJECT_DIR, display_path
-from calc.publish import NOTEBOOK, TEMPLATE_DIRS
+from calc.data.catalog import CATALOG_DIR, PROJECT_DIR, display_path
+from calc.report.publish import NOTEBOOK, TEMPLATE_DIRS
 from calc.report import git_commit
 print(json.dumps({
     "calc": calc.__file__,

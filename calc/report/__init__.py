@@ -5,10 +5,10 @@ they read it (efficalc's order): the verdict and the chosen parts; the title blo
 and each catalog with its SHA-256, the build date, the package version, the commit:
 :mod:`.provenance`); method and assumptions (the source's sections and the errata readings that
 apply, ``errata.toml``); the inputs; each calculation as ``symbol = formula = substituted values =
-result`` from the :class:`calc.formula.Formula` objects; the checks; the candidate tables; the
+result`` from the :class:`calc.core.formula.Formula` objects; the checks; the candidate tables; the
 figures; the order lines. Each part is a :class:`Latex` block: the report notebook
 (``reports/calc-report.ipynb``) displays it and nbconvert passes it unchanged into the PDF
-(:mod:`calc.publish`).
+(:mod:`calc.report.publish`).
 
 Each section of a case has its block module, of the same name as the section's module
 (:data:`BLOCKS`, in the sections' order; the shape in :mod:`.common`); a block of the report is
@@ -28,9 +28,9 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..case import Case, read_case
-from ..catalog import display_path, recording_files_read
-from ..errors import CalcError
+from ..sections.case import Case, read_case
+from ..data.catalog import display_path, recording_files_read
+from ..core.errors import CalcError
 from ..sections import MODULES, Results, Verdict, evaluate
 from ..sections.ratios import search as ratio_search
 from . import gearbox
@@ -227,14 +227,14 @@ class Report:
         return Latex("\n".join([r"\clearpage\appendix\section{Rejected candidates}", *out]) if out else "")
 
     def _ranked(self) -> list:
-        """(name, result) of each section that ranks a catalog (:class:`calc.selection.Selection`)."""
+        """(name, result) of each section that ranks a catalog (:class:`calc.core.selection.Selection`)."""
         sections = self.evaluated.sections if self.evaluated is not None else {}
         return [(name, r) for name, r in sections.items() if ranks(r)]
 
     def blocks(self, figures=None) -> list[tuple[object, dict]]:
         """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:
         LaTeX blocks, and each figure with its caption. The report notebook displays them; the PDF
-        is built from them in this process (:mod:`calc.publish`), so both give the same content.
+        is built from them in this process (:mod:`calc.report.publish`), so both give the same content.
         ``figures``: a function giving the (figure, caption) pairs of :meth:`figures` made
         elsewhere, called once the text is set (the PDF makes them meanwhile, as vector PDF)."""
         out = [(Latex(self.relative(b())), {}) for b in (self.front_page, self.method, self.inputs, self.calculations,

@@ -90,8 +90,8 @@ def figures(report) -> list:
     r, g = _result(report), result_of(gearbox.NAME, report)
     if r is None and g is None:
         return []
-    from ..accuracy_plots import hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure
-    from ..hysteresis import analyze_loop, model_for_part, read_loop
+    from ..figures.accuracy_plots import hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure
+    from ..domain.hysteresis import analyze_loop, model_for_part, read_loop
 
     out = []
     spec = None if r is None else r.inputs

@@ -16,11 +16,11 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from ..formula import REGISTRY
-from ..gearbox import inertia_ratio
+from ..core.formula import REGISTRY
+from ..domain.gearbox import inertia_ratio
 from ..sections import declared
-from ..selection import Selection
-from ..units import pretty_unit, sig
+from ..core.selection import Selection
+from ..core.units import pretty_unit, sig
 from . import symbols
 from .latex import breakable, itemize, latex_escape, listed, prose, q, table, util, value_unit, verdict_mark
 
@@ -51,7 +51,7 @@ def gearbox_symbols() -> dict:
     """The symbols of the load cycle's and the gearbox's formulas, by their name in code (the
     case's [motor], [load], [gearbox] and [[profile]] inputs; the further sections have their own:
     a coupling's J_L is another quantity than the gearbox's)."""
-    own = ("calc.profile.", "calc.gearbox.")
+    own = ("calc.domain.profile.", "calc.domain.gearbox.")
     return {s.name: s for f in REGISTRY if f.key.startswith(own) for s in (f.result, *f.inputs)}
 
 
@@ -88,7 +88,7 @@ def input_row(path: str, value, derived: bool = False) -> list[str]:
 
 
 def ranks(result) -> bool:
-    """Whether a section's result ranks a catalog (:class:`calc.selection.Selection`)."""
+    """Whether a section's result ranks a catalog (:class:`calc.core.selection.Selection`)."""
     return isinstance(getattr(result, "selection", None), Selection)
 
 
@@ -98,7 +98,7 @@ def result_of(name: str, report):
 
 
 def checks_table(checks: list, caption: str) -> str:
-    """Required, rated, utilization and verdict of each check (:class:`calc.checks.Check`) of one
+    """Required, rated, utilization and verdict of each check (:class:`calc.core.checks.Check`) of one
     candidate; checks of the other operating mode (gearboxes) in grey, for information."""
     modes = any(k.mode for k in checks)
     rows = []
@@ -115,7 +115,7 @@ def checks_table(checks: list, caption: str) -> str:
 
 
 def requirement_table(checks: list, caption: str) -> str:
-    """Checks (:class:`calc.checks.Check`) of a value reached (its required side) against a limit
+    """Checks (:class:`calc.core.checks.Check`) of a value reached (its required side) against a limit
     the case requires (its rated side): ``value <= required``."""
     at_least = lambda k: r"$\geq$ " if k.at_least else ""  # noqa: E731 (a lower bound: a term of it unknown)
     rows = [[prose(k.criterion), at_least(k) + q(k.required_value), q(k.rated_value), at_least(k) + util(k.utilization),
@@ -126,7 +126,7 @@ def requirement_table(checks: list, caption: str) -> str:
 
 
 def candidates_table(candidates: list, selected: str | None, caption: str, inertia: bool = False) -> str:
-    """The utilization of each check of each candidate (:class:`calc.selection.Candidate`), best
+    """The utilization of each check of each candidate (:class:`calc.core.selection.Candidate`), best
     first (and its inertia ratio); ``selected``: the chosen part."""
     checks = [k for c in candidates for k in c.checks]
     names = list(dict.fromkeys(k.name for k in checks))  # every check any candidate has, in order

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import functools
 
-from ..units import sig
+from ..core.units import sig
 from . import common
 from .common import (
     candidates_table, described, further_checks, further_readings, further_sources, raw_section_tables, rejected, result_of,
@@ -55,7 +55,7 @@ def steps(report) -> list[str]:
 
 
 def _torsion(r) -> list[str]:
-    """The drive train as a chain of masses and springs (calc.torsion): the members referred to
+    """The drive train as a chain of masses and springs (calc.domain.torsion): the members referred to
     the coupling's shaft, the chain, and its natural frequencies beside the two-mass f_e."""
     t = r.torsion
     if t is None:
@@ -131,7 +131,7 @@ def figures(report) -> list:
     r = result_of(NAME, report)
     if r is None:
         return []
-    from ..coupling_plots import natural_frequency_figure, temperature_factor_figure
+    from ..figures.coupling_plots import natural_frequency_figure, temperature_factor_figure
 
     cc, sel = r.inputs, r.selection
     out = [(natural_frequency_figure(sel, r.f_e_min.quantity),

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import dataclasses
 
-from ..gearbox import SHOCK_FACTORS
-from ..profile import t_k as t_k_symbol
+from ..domain.gearbox import SHOCK_FACTORS
+from ..domain.profile import t_k as t_k_symbol
 from ..sections import duty as sections_duty
-from ..units import sig
+from ..core.units import sig
 from .common import gearbox_symbols, nothing
 from .latex import latex_escape, num, render, step_block, table
 
@@ -16,7 +16,7 @@ NAME = "duty"
 
 
 def shock_factor_block(zh, table=SHOCK_FACTORS) -> str:
-    """The shock factor of ``Z_h`` (a quantity) with its band, the one calc.gearbox.shock_factor
+    """The shock factor of ``Z_h`` (a quantity) with its band, the one calc.domain.gearbox.shock_factor
     chooses from ``table`` (E4, with its boundary tolerance; the case's ``[gearbox] shock_factors``)."""
     k = int(table.band(zh, "Z_h"))
     return render(
@@ -61,7 +61,7 @@ def steps(report) -> list[str]:
 
 
 def figures(report) -> list:
-    from ..plots import load_cycle_figure, shock_factor_figure
+    from ..figures.plots import load_cycle_figure, shock_factor_figure
 
     if report.evaluated is None:
         return []

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..units import sig
+from ..core.units import sig
 from . import common
 from .common import candidates_table, checks_table, input_row, nothing, rejected, result_of
 from .latex import breakable, latex_escape, num, sources_list, stacked, step_block, table
@@ -119,7 +119,7 @@ def figures(report) -> list:
     r = result_of(NAME, report)
     if r is None:
         return []
-    from ..plots import comparison_figure, utilization_figure
+    from ..figures.plots import comparison_figure, utilization_figure
 
     return [
         (utilization_figure(r.selection), "Utilization of the governing checks of each candidate, best first."),

@@ -10,9 +10,9 @@ from pathlib import Path
 import jinja2
 import numpy as np
 
-from ..checks import within_rating
-from ..formula import Step
-from ..units import NUMBER, Value, pretty_unit, sig
+from ..core.checks import within_rating
+from ..core.formula import Step
+from ..core.units import NUMBER, Value, pretty_unit, sig
 from .symbols import latex as prose
 from .symbols import latex_escape
 
@@ -63,7 +63,7 @@ def num(quantity, unit: str) -> str:
 
 
 def util(u, missing: str = "no rating") -> str:
-    """A utilization, in bold red where it fails the one pass rule (:func:`calc.checks.within_rating`);
+    """A utilization, in bold red where it fails the one pass rule (:func:`calc.core.checks.within_rating`);
     ``missing`` where there is none (a table of many columns says it shorter)."""
     if u is None or (isinstance(u, float) and np.isnan(u)):
         return missing

@@ -6,13 +6,13 @@ torque over the cycle."""
 from __future__ import annotations
 
 from ..sections.motion import keys_of
-from ..units import Q_, sig
+from ..core.units import Q_, sig
 from .common import input_row, nothing
 from .latex import latex_escape, signed, step_block, table
 
 NAME = "motion"
 
-#: The field of :class:`calc.mechanism.Mechanism` of each of its quantities' keys, where it differs.
+#: The field of :class:`calc.domain.mechanism.Mechanism` of each of its quantities' keys, where it differs.
 FIELDS = {"inertia": "given_inertia", "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia",
           "pitch_diameter": "diameter", "pulley_diameter": "diameter"}
 
@@ -75,7 +75,7 @@ def figures(report) -> list:
     m = _motion(report)
     if m is None:
         return []
-    from ..motion_plots import motion_figure
+    from ..figures.motion_plots import motion_figure
 
     k = m.mechanism
     fig = motion_figure(m.samples, m.cycle.torque, m.segments, to_load=1.0 if k is None else k.to_load(),

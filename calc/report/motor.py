@@ -4,8 +4,8 @@ torque over the cycle as a figure."""
 
 from __future__ import annotations
 
-from ..motor import T_1rms
-from ..units import latex_unit, sig
+from ..domain.motor import T_1rms
+from ..core.units import latex_unit, sig
 from .common import candidates_table, checks_table, input_row, nothing, rejected, result_of
 from .latex import itemize, latex_escape, prose, q, step_block, table
 
@@ -90,13 +90,13 @@ def figures(report) -> list:
     m = result_of(NAME, report)
     if m is None or m.load is None:
         return []
-    from ..motor_plots import motor_torque_figure
+    from ..figures.motor_plots import motor_torque_figure
 
     c = report.case
     out = [(motor_torque_figure(m.output, m.load, 0, c.motor_peak_torque, c.motor_rated_torque, m.part or ""),
             latex_escape(f"Motor torque over the cycle through {m.through}, its RMS and the motor's ratings."))]
     if m.selection is not None:
-        from ..motor_plots import torque_speed_figure
+        from ..figures.motor_plots import torque_speed_figure
 
         best = int(m.selection.order[0])
         out.append((torque_speed_figure(m.selection, best),

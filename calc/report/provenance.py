@@ -9,7 +9,7 @@ from datetime import datetime, timezone
 from pathlib import Path
 
 from .. import __version__
-from ..catalog import PROJECT_DIR
+from ..data.catalog import PROJECT_DIR
 
 #: The package as the title block names it.
 PACKAGE = f"calc {__version__}"

@@ -1,10 +1,10 @@
 """The best ratio in the calc report: the case at every ratio of its gearbox catalog as a table,
-the ratio a reviewer should pick and why (the rule of :mod:`calc.ratios`), and the figure."""
+the ratio a reviewer should pick and why (the rule of :mod:`calc.domain.ratios`), and the figure."""
 
 from __future__ import annotations
 
-from ..catalog import display_path
-from ..ratios import RULE
+from ..data.catalog import display_path
+from ..domain.ratios import RULE
 from .latex import latex_escape, prose, q, table, util, verdict_mark
 from .common import nothing
 
@@ -33,7 +33,7 @@ def figures(report) -> list:
     r = report.ratios
     if r is None:
         return []
-    from ..motor_plots import ratio_figure
+    from ..figures.motor_plots import ratio_figure
 
     c = report.case
     return [(ratio_figure(r.search, c.motor_peak_torque, c.motor_rated_torque),

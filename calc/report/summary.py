@@ -14,7 +14,7 @@ import os
 import re
 from pathlib import Path
 
-from ..catalog import display_path
+from ..data.catalog import display_path
 from ..sections import Verdict
 from .latex import Latex, breakable, latex_escape, prose, render, table, util
 from .provenance import PACKAGE

@@ -41,7 +41,7 @@ GREEK = {"phi": (r"\varphi", "φ"), "eta": (r"\eta", "η"), "lambda": (r"\lambda
          "theta": (r"\theta", "θ"), "mu": (r"\mu", "μ")}
 _GREEK_NAMES = "|".join(GREEK)
 # A case key, ``motor.peak_torque`` or ``coupling.shaft_1``, or a name in the package (code, set as code).
-_TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])  # and the package's own names, calc.gearbox.x
+_TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])  # and the package's own names, calc.domain.gearbox.x
 _KEY = rf"(?P<key>(?<![\w.])(?:{_TABLES})(?:\[\d+\])?(?:\.[a-z][a-z0-9_]*(?:\[\d+\])?)+)"
 # A symbol as written in code: a letter (or a Greek name) and its subscript, ``d_hub,max`` whole.
 _SYMBOL = rf"(?P<sym>(?<![\w.])(?P<base>{_GREEK_NAMES}|[^\W\d_])_(?P<sub>[^\W_]+(?:,[^\W_]+)*)(?![\w]))"

@@ -1,8 +1,8 @@
 """The review's live figures, drawn by the browser: SVG texts of the load cycle's steps and of the
 stiffness chain's shares.
 
-The calc report and the notebooks draw them with matplotlib (:func:`calc.plots.load_cycle_figure`,
-:func:`calc.accuracy_plots.stiffness_chain_figure`); the review redraws them on changes (the load
+The calc report and the notebooks draw them with matplotlib (:func:`calc.figures.plots.load_cycle_figure`,
+:func:`calc.figures.accuracy_plots.stiffness_chain_figure`); the review redraws them on changes (the load
 cycle on every change of a move, the mechanism or a segment; the chain on a change of ratio, part
 or applied torque), and rendering such a figure to a PNG takes 0.2 to 0.4 s, most of a change's
 time. Here the kernel writes SVG (some 2 KB, under a millisecond) and the browser draws it: the
@@ -18,7 +18,7 @@ from html import escape
 
 import numpy as np
 
-from ..units import pretty_unit
+from ..core.units import pretty_unit
 
 WIDTH, HEIGHT = 540, 300
 LEFT, RIGHT, TOP, GAP, BOTTOM = 58, 10, 26, 22, 30
@@ -79,7 +79,7 @@ def load_cycle_svg(profile, duty=None, torque_unit: str = "N*m") -> str:
     :class:`calc.sections.duty.DutyValues`) gives the title's ED, cycle time and mode.
 
     >>> from calc import Q_
-    >>> from calc.profile import Profile
+    >>> from calc.domain.profile import Profile
     >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
     >>> svg = load_cycle_svg(p)
     >>> svg.count("<polyline"), 'points="58.0,' in svg
@@ -109,17 +109,17 @@ def stiffness_chain_svg(accuracy) -> str:
     """Each member's share of the chain's twist at the output, as horizontal bars labelled with its
     twist and stiffness at the output, from the chain's accuracy
     (:class:`calc.sections.accuracy.AccuracyValues`, E11): the data of
-    :func:`calc.accuracy_plots.stiffness_chain_figure`, drawn by the browser.
+    :func:`calc.figures.accuracy_plots.stiffness_chain_figure`, drawn by the browser.
 
-    >>> from calc.case import read_case
-    >>> from calc.catalog import CATALOG_DIR
+    >>> from calc.sections.case import read_case
+    >>> from calc.data.catalog import CATALOG_DIR
     >>> from calc.sections import evaluate
     >>> a = evaluate(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml")).sections["accuracy"].shown
     >>> svg = stiffness_chain_svg(a)
     >>> svg.count("<rect"), [m.name for m in a.members]
     (2, ['AKN-18', 'NPT035-10'])
     """
-    from ..accuracy_plots import SIDE_COLORS  # the report figure's colours
+    from ..figures.accuracy_plots import SIDE_COLORS  # the report figure's colours
 
     members = accuracy.members
     row, left, top = 30, 130, 24
@@ -192,11 +192,11 @@ def ratio_search_svg(found: dict) -> str:
     """The ratio search (the JSON of :func:`calc.sections.ratios.search`) as bars: each ratio's RMS
     motor torque through its best gearbox, green where the ratio is feasible and keeps λ within its
     limit, light green where it is feasible with λ over it, grey where it is not feasible; the pick
-    outlined; λ above each bar. The data of :func:`calc.motor_plots.ratio_figure`, drawn by the
+    outlined; λ above each bar. The data of :func:`calc.figures.motor_plots.ratio_figure`, drawn by the
     browser.
 
-    >>> from calc.case import read_case
-    >>> from calc.catalog import CATALOG_DIR
+    >>> from calc.sections.case import read_case
+    >>> from calc.data.catalog import CATALOG_DIR
     >>> from calc.sections.ratios import search
     >>> svg = ratio_search_svg(search(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml")).to_json())
     >>> svg.count("<rect"), svg.count('stroke-width="2.5"')  # six ratios, the pick outlined

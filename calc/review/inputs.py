@@ -20,12 +20,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..case import Case, Key, Table
-from ..profile import Profile
+from ..sections.case import Case, Key, Table
+from ..domain.profile import Profile
 from ..report.symbols import symbol_text
 from ..sections import declared
 from ..sections import motion as motion_section
-from ..units import NUMBER, Q_, parse_quantity, pretty_unit
+from ..core.units import NUMBER, Q_, parse_quantity, pretty_unit
 
 #: Key paths of the inputs that the case keeps as its own fields (the other sections keep their
 #: tables raw until evaluated, so their key paths are written into those tables).
@@ -104,7 +104,7 @@ def _scaled(v: float) -> tuple[float, float]:
 
 
 def _temperature(_v: float) -> tuple[float, float]:
-    from ..coupling import TEMPERATURE_FACTORS  # the slider ends at the table's top (E9)
+    from ..domain.coupling import TEMPERATURE_FACTORS  # the slider ends at the table's top (E9)
 
     return -20.0, TEMPERATURE_FACTORS.top
 
@@ -286,7 +286,7 @@ def with_inputs(case: Case, values: dict) -> Case:
     check it as if it stood in the file.
 
     >>> from pathlib import Path
-    >>> from calc.case import read_case
+    >>> from calc.sections.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
     >>> changed = with_inputs(case, {"profile[4].duration": Q_(3, "s"), "coupling.temperature": Q_(60, "degC")})
     >>> changed.profile.durations, changed.sections["coupling"]["temperature"], case.sections["coupling"]["temperature"]
@@ -348,7 +348,7 @@ def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_pea
     :func:`with_inputs` by name. ``durations`` and ``torques`` are quantity arrays over all segments.
 
     >>> from pathlib import Path
-    >>> from calc.case import read_case
+    >>> from calc.sections.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
     >>> changed = with_changes(case, ratio=Q_(7, ""))
     >>> changed.ratio, case.ratio

@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from ..errors import CalcError
+from ..core.errors import CalcError
 
 #: A key path into the file: ``motor.peak_torque``, ``move[2].time``, ``profile[1].duration``.
 _KEY = re.compile(r"^(\w+)(?:\[(\d+)\])?\.(\w+)$")

@@ -27,15 +27,15 @@ from html import escape
 from pathlib import Path
 from urllib.parse import quote
 
-from ..case import Case, read_case
-from ..errors import CalcError
-from ..mechanism import TYPES as MECHANISM_TYPES, converted, converted_distance
-from ..publish import summary_rows
+from ..sections.case import Case, read_case
+from ..core.errors import CalcError
+from ..domain.mechanism import TYPES as MECHANISM_TYPES, converted, converted_distance
+from ..report.publish import summary_rows
 from ..sections import drive
 from ..sections import motion as motion_section
 from ..sections.gearbox import catalogs as gearbox_catalogs
 from ..sections.ratios import search as search_ratios
-from ..units import Q_, pretty_unit
+from ..core.units import Q_, pretty_unit
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import MECHANISM, MOVE_TIMES, InputSpec, input_specs, is_inch_pound, with_inputs
@@ -90,7 +90,7 @@ def read_typed(text: str, spec: InputSpec) -> float:
     >>> read_typed("2", spec)
     Traceback (most recent call last):
     ...
-    calc.errors.CalcError: 2 s is outside the range of 1 move: time t, 0.05 s to 1.5 s: not applied
+    calc.core.errors.CalcError: 2 s is outside the range of 1 move: time t, 0.05 s to 1.5 s: not applied
     """
     t = text.strip()
     unit = f" {pretty_unit(spec.unit)}" if spec.unit else ""
@@ -115,7 +115,7 @@ class DesignReview:
 
     ``reports``, where given, is the folder of the calc reports (``python -m calc report
     cases/*.toml --summary -o reports/``): the case chooser shows each case's verdict as its file
-    reads (:func:`calc.publish.summary_rows`), and the link is shown only where the case's report
+    reads (:func:`calc.report.publish.summary_rows`), and the link is shown only where the case's report
     was built, ``report_link`` then getting the report's path. The chooser's entry of the case
     shown gives the screen's verdict once an input is changed.
 
@@ -214,7 +214,7 @@ class DesignReview:
         self.edits_field = w.Text(continuous_update=False, layout=w.Layout(display="none"))
         self.edits_field.add_class("dr-edits")
         self.edits_field.observe(lambda change: self._edits_asked(change["new"]), names="value")
-        # The mechanism of another type, its starting values equivalent (calc.mechanism.converted).
+        # The mechanism of another type, its starting values equivalent (calc.domain.mechanism.converted).
         self.mechanism_type = w.Dropdown(options=list(MECHANISM_TYPES), description="type", tooltip="the mechanism's type",
                                          style={"description_width": "3.5em"}, layout=w.Layout(width="auto", flex="1 1 auto"))
         self.mechanism_size = w.Text(placeholder="lead / diameter", tooltip="a screw's lead, a pinion's or pulley's diameter (a linear type)",
@@ -460,7 +460,7 @@ class DesignReview:
     def change_mechanism(self, type_: str, size_text: str = "") -> None:
         """The mechanism of ``type_`` in place of the case's (of lead or diameter ``size_text`` in
         the case's length unit, for a linear type), its values and the moves' distances starting
-        equivalent (:func:`calc.mechanism.converted`): what it leaves out is said under the moves."""
+        equivalent (:func:`calc.domain.mechanism.converted`): what it leaves out is said under the moves."""
         try:
             case = self.changed_case()
             old = case.motion.mechanism
@@ -908,7 +908,7 @@ def _variant_name(number: int, file: str, specs, changes: dict, edits) -> str:
     return f"{number}: {file}" + (f" with {said}" if said else " as written")
 
 
-#: The attribute of :class:`calc.mechanism.Mechanism` of each of its keys that is named otherwise.
+#: The attribute of :class:`calc.domain.mechanism.Mechanism` of each of its keys that is named otherwise.
 MECHANISM_ATTRIBUTES = {"pitch_diameter": "diameter", "pulley_diameter": "diameter",
                         "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia"}
 

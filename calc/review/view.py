@@ -15,12 +15,12 @@ from html import escape
 
 import numpy as np
 
-from ..case import Case
-from ..catalog import display_path
+from ..sections.case import Case
+from ..data.catalog import display_path
 from ..report import Report, report_of
 from ..report.symbols import html as typeset
-from ..checks import within_rating
-from ..units import Q_, Value, sig
+from ..core.checks import within_rating
+from ..core.units import Q_, Value, sig
 from .figures import ratio_search_svg
 
 PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
@@ -474,8 +474,8 @@ def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
     import json
     from pathlib import Path
 
-    from ..case import read_case
-    from ..errors import CalcError
+    from ..sections.case import read_case
+    from ..core.errors import CalcError
 
     designs = [(Path(p).name, report_of(read_case(p))) for p in paths]
     for _, r in designs:

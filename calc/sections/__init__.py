@@ -2,7 +2,7 @@
 
 Every section is a module of this package with the same shape (:mod:`calc.sections.common`):
 ``ORDER`` (its place in the results and the report), ``TABLES`` (the tables of the case file it
-reads, each key declared once: :class:`calc.case.Declared`), and where it has results ``NAME``,
+reads, each key declared once: :class:`calc.sections.case.Declared`), and where it has results ``NAME``,
 ``applies(case)`` and ``evaluate(case)`` returning a result with ``to_json``, ``summary_lines``
 and ``verdict``. The modules are found here, so a new section is its module alone:
 :data:`MODULES`, :data:`SECTIONS`, :data:`FURTHER` and :data:`TOP_KEYS` follow from them.
@@ -19,8 +19,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..case import Case, key_names
-from ..catalog import display_path
+from .case import Case, key_names
+from ..data.catalog import display_path
 from .common import SHOWN_CANDIDATES, Verdict  # noqa: F401 (SHOWN_CANDIDATES: the command line)
 
 
@@ -43,9 +43,9 @@ TOP_KEYS = ("title", *key_names(DECLARED))
 
 
 def declared(path: str):
-    """The declaration (:class:`calc.case.Key`) of a key path of a case file (``motor.inertia``,
+    """The declaration (:class:`calc.sections.case.Key`) of a key path of a case file (``motor.inertia``,
     ``profile[2].torque``, ``accuracy.component[1].stiffness_curve.K1``); a table's own path gives
-    its :class:`calc.case.Declared`."""
+    its :class:`calc.sections.case.Declared`."""
     names = [part.split("[")[0] for part in path.split(".")]
     out = next(t for t in DECLARED if t.name == names[0])
     for name in names[1:]:

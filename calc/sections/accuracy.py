@@ -1,6 +1,6 @@
 """The accuracy of a case's drive chain (``[accuracy]``): its components given, taken from a catalog
 part (the gearbox or coupling selection's choice with ``part = "selected"``) or measured, the
-stiffness, lost motion, positioning accuracy and repeatability at the output (:mod:`calc.accuracy`,
+stiffness, lost motion, positioning accuracy and repeatability at the output (:mod:`calc.domain.accuracy`,
 E11 to E13), and the required values checked."""
 
 from __future__ import annotations
@@ -11,14 +11,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..accuracy import ChainAccuracy, PositioningScatter, angle_of_arc, arc_length, chain_accuracy, read_positions
-from ..case import Case, Declared, Key, Table, once
-from ..catalog import display_path, load_catalog, load_catalogs, resolve
-from ..checks import CheckArray
-from ..errors import CalcError
-from ..units import Q_, Value, fmt, parse_quantity, sig
-from ..measurement import measurement_path
-from ..stiffness import SIDES, Chain, Component, StiffnessCurve
+from ..domain.accuracy import ChainAccuracy, PositioningScatter, angle_of_arc, arc_length, chain_accuracy, read_positions
+from .case import Case, Declared, Key, Table, once
+from ..data.catalog import display_path, load_catalog, load_catalogs, resolve
+from ..core.checks import CheckArray
+from ..core.errors import CalcError
+from ..core.units import Q_, Value, fmt, parse_quantity, sig
+from ..data.measurement import measurement_path
+from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
 from .common import Governing, Verdict, json_of, number, quantity
 
@@ -26,7 +26,7 @@ NAME = "accuracy"
 ORDER = 80
 #: The case keeps the table raw and this section reads it when evaluated.
 FURTHER = True
-#: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.stiffness.StiffnessCurve`).
+#: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.domain.stiffness.StiffnessCurve`).
 CURVE_KEYS = (
     Key("T1", "torque", "the torque up to which K1 holds", "T_1", unit="N*m"),
     Key("T2", "torque", "the torque up to which K2 holds", "T_2", unit="N*m"),
@@ -169,7 +169,7 @@ SELECTED = "selected"
 def _catalog_row(case: Case, catalog, part: str, where: str):
     """The gearbox catalog (one file or several, as ``gearbox.catalog``) and the row of ``part``;
     a partial row is an input error."""
-    from ..gearbox import SCHEMA
+    from ..domain.gearbox import SCHEMA
 
     rows = load_catalogs(catalog, case.folder, f"{where}.catalog", SCHEMA)
     return rows, rows.usable_index(part, f"{where}.part")
@@ -220,7 +220,7 @@ def _coupling_part(case: Case, t: Table, part: str):
         row, chosen, stand_in = _chosen_row(selection, "coupling")
         rows, side = selection.catalog, cc.side or "output"
     else:
-        from ..coupling import SCHEMA
+        from ..domain.coupling import SCHEMA
 
         rows = load_catalog(resolve(t.text("catalog", default="couplings"), case.folder, t.where("catalog")), SCHEMA)
         row = rows.index(part, t.where("part"))
@@ -334,7 +334,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         out.unknown.append(f"{chosen_part}: its transmission accuracy (the trace of {t.text('measured_part')} does not apply to it, "
                            f"and the case gives no transmission_accuracy)")
     if measured_applies and t.has("hysteresis"):
-        from ..hysteresis import analyze_loop, read_loop
+        from ..domain.hysteresis import analyze_loop, read_loop
 
         for key in ("stiffness", "backlash"):
             if t.has(key):
@@ -347,7 +347,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         out.loops[name] = (display_path(path), analysis)
         sources.append(f"measured loop {display_path(path)}")
     if measured_applies and t.has("transmission_trace"):
-        from ..transmission import analyze_trace, read_trace
+        from ..domain.transmission import analyze_trace, read_trace
 
         if accuracy is not None:
             raise CalcError(f"{t.where('transmission_accuracy')}: the trace gives the transmission accuracy; give either transmission_trace or transmission_accuracy")
@@ -585,8 +585,8 @@ class AccuracyResult:
         ``components`` with their ``stiffness_at_output`` and ``backlash_at_output``, each quantity as
         ``{"value", "unit"}``; measured loops, traces and positioning records where the case names them.
 
-        >>> from calc.case import read_case
-        >>> from calc.catalog import CATALOG_DIR
+        >>> from calc.sections.case import read_case
+        >>> from calc.data.catalog import CATALOG_DIR
         >>> from calc.sections.motor import with_chosen_motor  # the example's motor, from its catalog
         >>> r = evaluate(with_chosen_motor(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml"))).to_json()
         >>> round(r["C_total"]["value"], 2), r["C_total"]["unit"], [c["side"] for c in r["components"]]

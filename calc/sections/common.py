@@ -3,7 +3,7 @@ verdict of a section, and how many candidates a listing shows.
 
 A section module (:mod:`calc.sections`) has the same shape for every section: ``ORDER`` (its
 place), ``TABLES`` (the tables of the case file it reads, every key declared once,
-:class:`calc.case.Declared`), ``FURTHER = True`` where the case keeps its table raw until it is
+:class:`calc.sections.case.Declared`), ``FURTHER = True`` where the case keeps its table raw until it is
 evaluated, ``NAME`` (its key in the results), ``applies(case)``, ``evaluate(case)`` returning its
 result type, and that type's ``to_json(candidates)``, ``summary_lines(candidates)`` and
 ``verdict()``.
@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..checks import Check
-from ..units import Value, number, pretty_unit, sig
+from ..core.checks import Check
+from ..core.units import Value, number, pretty_unit, sig
 
 #: Candidates listed by default in the JSON and the text summary; ``--all-candidates`` lists all.
 SHOWN_CANDIDATES = 20
@@ -29,7 +29,7 @@ def quantity(q, unit: str, key: str = "result") -> dict:
 
 
 def json_of(value: Value | None) -> dict | None:
-    """A result's :class:`calc.units.Value` as the contract writes it; None stays null."""
+    """A result's :class:`calc.core.units.Value` as the contract writes it; None stays null."""
     return None if value is None else value.to_json()
 
 
@@ -39,7 +39,7 @@ def quantity_text(d: dict | None) -> str:
 
 
 def check_json(check: Check) -> dict:
-    """A :class:`calc.checks.Check` as the contract writes it."""
+    """A :class:`calc.core.checks.Check` as the contract writes it."""
     out = {
         "name": check.name,
         "mode": check.mode,
@@ -74,7 +74,7 @@ def no_candidate_passes(sentence: str, parts, order, reasons) -> list[str]:
 
 
 def row_json(c) -> dict:
-    """What a candidate (:class:`calc.selection.Candidate`) says of its catalog row, as the
+    """What a candidate (:class:`calc.core.selection.Candidate`) says of its catalog row, as the
     contract writes it: why it does not pass, and the row's file, family, size, source and doubts."""
     return {"reasons": c.reasons, "catalog": c.catalog, "family": c.family, "size": c.size, "source": c.source,
             "unclear": c.unclear or None}
@@ -82,7 +82,7 @@ def row_json(c) -> dict:
 
 @dataclass(frozen=True)
 class Governing:
-    """The checks that decide a section's verdict (:class:`calc.checks.Check`), and whose they
+    """The checks that decide a section's verdict (:class:`calc.core.checks.Check`), and whose they
     are: a candidate's (``part``; ``chosen`` False where none passes and it is only the closest),
     or the section's own (``part`` None)."""
 
@@ -99,13 +99,13 @@ class Governing:
 
 
 def selection_governing(name: str, sel) -> Governing:
-    """The governing checks of a selection's best-ranked candidate (:class:`calc.selection.Selection`)."""
+    """The governing checks of a selection's best-ranked candidate (:class:`calc.core.selection.Selection`)."""
     best = sel.best
     return Governing(name, best.part, sel.selected is not None, best.governing)
 
 
 def selection_verdict(sel, what: str, fails: str) -> Verdict:
-    """The verdict of a selection (:class:`calc.selection.Selection`): it passes where a part is
+    """The verdict of a selection (:class:`calc.core.selection.Selection`): it passes where a part is
     chosen; it is not decided where the best row passes every check made but a governing check
     cannot be made (saying which); else no ``what`` passes ``fails``, and why the closest fail."""
     if sel.selected is not None:

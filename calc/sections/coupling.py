@@ -1,5 +1,5 @@
 """The coupling of a case (``[coupling]``): its inputs, given or taken from the rest of the case
-(``side = "input"``, E8), the candidates checked and ranked (:mod:`calc.coupling`, E7 to E10) and
+(``side = "input"``, E8), the candidates checked and ranked (:mod:`calc.domain.coupling`, E7 to E10) and
 the ordering text of the one chosen."""
 
 from __future__ import annotations
@@ -9,20 +9,20 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import coupling as cp
-from ..bands import factor_table
-from ..case import Case, Declared, Key, Table, once
-from ..catalog import Catalog, display_path, load_catalogs
-from ..coupling import (
+from ..domain import coupling as cp
+from ..data.bands import factor_table
+from .case import Case, Declared, Key, Table, once
+from ..data.catalog import Catalog, display_path, load_catalogs
+from ..domain.coupling import (
     DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input, check_types, f_e_min,
     order_lines, select_coupling,
 )
-from ..errors import CalcError
-from ..fits import parse_bore
-from ..gearbox import n_1
-from ..profile import Z_h
-from ..torsion import CouplingSpan, Member, gearbox_at_input, inertia_at_output, load_at_input
-from ..units import Q_, Value, fmt, sig
+from ..core.errors import CalcError
+from ..domain.fits import parse_bore
+from ..domain.gearbox import n_1
+from ..domain.profile import Z_h
+from ..domain.torsion import CouplingSpan, Member, gearbox_at_input, inertia_at_output, load_at_input
+from ..core.units import Q_, Value, fmt, sig
 from . import gearbox
 from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
 
@@ -65,9 +65,9 @@ class CouplingCase:
     bores: tuple
     derived: list  # what was taken from the rest of the case (side = "input"), as sentences
     missing: dict = field(default_factory=dict)  # key -> what the case lacks for it (side = "input"); its checks are not made
-    drive_train: DriveTrain | None = None  # the members around the coupling (calc.torsion)
+    drive_train: DriveTrain | None = None  # the members around the coupling (calc.domain.torsion)
     drive_steps: tuple = ()  # (title, Step) of each member referred to the coupling's shaft
-    #: (title, calc.formula.Step) of each input computed from the rest of the case, as computed
+    #: (title, calc.core.formula.Step) of each input computed from the rest of the case, as computed
     steps: list = field(default_factory=list)
 
 
@@ -137,7 +137,7 @@ def _candidates(case: Case, s: Table) -> tuple[Catalog, str | None]:
 def coupling_span(case: Case) -> CouplingSpan | None:
     """The couplings the case may fit between motor and gearbox, with the motor's and the load's
     inertia and ``2 f_er``: what the gearbox selection bounds each row's drive train with
-    (:func:`calc.gearbox.select_gearbox`). None where the case has no coupling there, or gives no
+    (:func:`calc.domain.gearbox.select_gearbox`). None where the case has no coupling there, or gives no
     motor inertia, load inertia or excitation frequency, or no candidate has a stiffness and an
     inertia (a line shaft's stiffness needs its length: line shafts are left out)."""
     if NAME not in case.sections:
@@ -157,7 +157,7 @@ def coupling_span(case: Case) -> CouplingSpan | None:
 
 def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain | None, tuple]:
     """The drive train around the coupling, every member referred to the coupling's shaft
-    (:mod:`calc.torsion`), and the steps that referred them there.
+    (:mod:`calc.domain.torsion`), and the steps that referred them there.
 
     Without a gearbox (a direct drive) the chain is the drive, the coupling and the load as
     the section gives them. With a gearbox, between motor and gearbox (``side = "input"``): the
@@ -264,7 +264,7 @@ def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:
 
 @dataclass(frozen=True)
 class Torsion:
-    """The drive train's torsional modes (:mod:`calc.torsion`) with the best-ranked coupling: its
+    """The drive train's torsional modes (:mod:`calc.domain.torsion`) with the best-ranked coupling: its
     masses and springs referred to ``shaft``, drive to load, the natural frequencies lowest first
     without the rigid-body mode, and the check of the first against 2 f_er."""
 
@@ -275,7 +275,7 @@ class Torsion:
     masses: list  # (members, J: Value)
     springs: list  # (member, C: Value), one fewer than the masses
     natural_frequencies: list  # Value
-    checks: list  # calc.checks.Check
+    checks: list  # calc.core.checks.Check
 
     def to_json(self) -> dict:
         return {
@@ -318,7 +318,7 @@ class BoreResult:
                 "lower": json_of(self.lower), "upper": json_of(self.upper), "keyway": json_of(self.keyway)}
 
 
-#: How the coupling candidates are ranked (:func:`calc.checks.rank`).
+#: How the coupling candidates are ranked (:func:`calc.core.checks.rank`).
 RANKING = "passing first; published rows before illustrative ones; then smallest rated torque T_KN; then lowest worst utilization"
 
 

@@ -7,13 +7,13 @@ import dataclasses
 
 import numpy as np
 
-from ..case import Case, Declared, Key, Table, once
-from ..catalog import load_catalogs
-from ..errors import CalcError
-from ..fits import parse_bore
-from ..measurement import measurement_path
-from ..gearbox import OutputLoad
-from ..motor_ratings import ELECTRICAL, SCHEMA
+from .case import Case, Declared, Key, Table, once
+from ..data.catalog import load_catalogs
+from ..core.errors import CalcError
+from ..domain.fits import parse_bore
+from ..data.measurement import measurement_path
+from ..domain.gearbox import OutputLoad
+from ..domain.motor_ratings import ELECTRICAL, SCHEMA
 
 ORDER = 10
 MOTOR = Declared("motor", (
@@ -113,7 +113,7 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
 
 
 def motor_ratings(cat, row: int) -> dict:
-    """The case's fields a catalog motor gives (its row of :data:`calc.motor_ratings.SCHEMA`): its
+    """The case's fields a catalog motor gives (its row of :data:`calc.domain.motor_ratings.SCHEMA`): its
     maximum torque as T_1B, its rated torque, top speed and rotor inertia."""
     return {"motor_peak_torque": cat["M_max"][row], "motor_rated_torque": cat["M_N"][row],
             "motor_max_speed": cat["n_max"][row], "motor_inertia": cat["J"][row]}
@@ -128,7 +128,7 @@ def with_motor_part(case: Case, part: str | None, where: str) -> Case:
 
 
 def motor_catalog(case: Case):
-    """The case's motor catalog (:data:`calc.motor_ratings.SCHEMA`); one read per case."""
+    """The case's motor catalog (:data:`calc.domain.motor_ratings.SCHEMA`); one read per case."""
     return once(case, "motor catalog", lambda: load_catalogs(case.motor_catalog, case.folder, f"{case.path}: motor.catalog", SCHEMA))
 
 

@@ -6,14 +6,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import cached_property
 
-from ..bands import BandTable
-from ..case import Case, Declared, Key, Table, once
-from ..cycle import SampledCycle
-from ..errors import CalcError
-from ..gearbox import SHOCK_FACTORS, shock_factor
-from ..profile import ED, Duty, Profile, T_2m, Z_h, duty, n_2m
+from ..data.bands import BandTable
+from .case import Case, Declared, Key, Table, once
+from ..domain.cycle import SampledCycle
+from ..core.errors import CalcError
+from ..domain.gearbox import SHOCK_FACTORS, shock_factor
+from ..domain.profile import ED, Duty, Profile, T_2m, Z_h, duty, n_2m
 from . import gearbox
-from ..units import Value
+from ..core.units import Value
 from .common import Verdict
 
 NAME = "profile"
@@ -77,7 +77,7 @@ class DutyResult:
     T2max_part: str | None = None
     cycle: SampledCycle | None = None  # the sampled cycle where the motion form derived it
     shock_factors: BandTable = SHOCK_FACTORS  # the table f_s is read from ([gearbox] shock_factors)
-    #: (title, calc.formula.Step) of ED, n_2m, T_2m and Z_h, as computed here
+    #: (title, calc.core.formula.Step) of ED, n_2m, T_2m and Z_h, as computed here
     steps: list = field(default_factory=list)
 
     @property

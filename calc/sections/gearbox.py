@@ -1,5 +1,5 @@
 """The gearbox of a case (``[gearbox]``): the catalog rows at the desired ratio (or the named part)
-checked for the duty of the load cycle and ranked (:mod:`calc.gearbox`, E1 to E6)."""
+checked for the duty of the load cycle and ranked (:mod:`calc.domain.gearbox`, E1 to E6)."""
 
 from __future__ import annotations
 
@@ -7,13 +7,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..bands import factor_table
-from ..case import Case, Declared, Key, Table, once
-from ..catalog import display_path, load_catalogs
-from ..errors import CalcError
-from ..gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
-from ..profile import Z_h, n_2m
-from ..units import Q_, sig
+from ..data.bands import factor_table
+from .case import Case, Declared, Key, Table, once
+from ..data.catalog import display_path, load_catalogs
+from ..core.errors import CalcError
+from ..domain.gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
+from ..domain.profile import Z_h, n_2m
+from ..core.units import Q_, sig
 from . import coupling
 from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
 
@@ -80,7 +80,7 @@ def catalogs(case: Case) -> tuple:
 
 
 def selection_inputs(case: Case) -> dict:
-    """What :func:`calc.gearbox.select_gearbox` takes from the case beside the profile and rows."""
+    """What :func:`calc.domain.gearbox.select_gearbox` takes from the case beside the profile and rows."""
     return dict(
         motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia,
         emergency_stop_torque=case.emergency_stop_torque, output_load=case.output_load,
@@ -114,7 +114,7 @@ class GearboxResult:
     best-ranked row's checks as steps."""
 
     selection: GearboxSelection
-    #: (title, calc.formula.Step, what it is compared with) of the best-ranked row's checks
+    #: (title, calc.core.formula.Step, what it is compared with) of the best-ranked row's checks
     steps: list = field(default_factory=list)
     ranking = RANKING
 

@@ -1,6 +1,6 @@
 """The load cycle derived instead of typed (``docs/case-format.md``, "Motion and mechanism"):
 the moves of the load (``[[move]]``) through its mechanism (``[mechanism]``), or a time series a
-drive recorded (``[drive_record]``), sampled at the gearbox output (:class:`calc.cycle.SampledCycle`)
+drive recorded (``[drive_record]``), sampled at the gearbox output (:class:`calc.domain.cycle.SampledCycle`)
 and cut into the seed's segments, which the duty section uses as if they were typed."""
 
 from __future__ import annotations
@@ -10,16 +10,16 @@ from functools import cached_property
 
 import numpy as np
 
-from ..case import Case, Declared, Key, Table, key_names
-from ..catalog import Column
-from ..cycle import PHASES, SampledCycle
-from ..errors import CalcError
-from ..measurement import measurement_path, read_measurement
-from ..inertia import FORMULAS, SHAPES, Body
-from ..mechanism import TYPES, Mechanism, phi_2
-from ..motion import Move, Samples, alpha_2max, omega_2max, record_samples, sample
-from ..profile import Profile, segments
-from ..units import Q_, Value, kind_phrase, parse_quantity
+from .case import Case, Declared, Key, Table, key_names
+from ..data.catalog import Column
+from ..domain.cycle import PHASES, SampledCycle
+from ..core.errors import CalcError
+from ..data.measurement import measurement_path, read_measurement
+from ..domain.inertia import FORMULAS, SHAPES, Body
+from ..domain.mechanism import TYPES, Mechanism, phi_2
+from ..domain.motion import Move, Samples, alpha_2max, omega_2max, record_samples, sample
+from ..domain.profile import Profile, segments
+from ..core.units import Q_, Value, kind_phrase, parse_quantity
 from .common import json_of
 
 NAME = "motion"
@@ -27,7 +27,7 @@ ORDER = 20
 #: Per linear type: the key of its radius (a lead or a diameter) and of its own inertia.
 OWN_KEYS = {"ball-screw": ("lead", "screw_inertia"), "rack-pinion": ("pitch_diameter", "pinion_inertia"), "belt": ("pulley_diameter", "pulley_inertia")}
 _LINEAR = tuple(OWN_KEYS)
-#: The keys of a body of the load ([[mechanism.body]], :class:`calc.inertia.Body`): the dimension
+#: The keys of a body of the load ([[mechanism.body]], :class:`calc.domain.inertia.Body`): the dimension
 #: each key gives, by its formula name.
 BODY_KEYS = (
     Key("shape", "choice", "cylinder | hollow-cylinder | plate"),
@@ -100,7 +100,7 @@ class Motion:
     distances: list  # per move: the distance as the case gives it (None for a dwell)
     samples: Samples
     cycle: SampledCycle
-    segments: object  # calc.motion.Segments
+    segments: object  # calc.domain.motion.Segments
     profile: Profile
     record: str | None = None  # the drive record's file as the case names it
     tables: dict = field(default_factory=dict)  # the raw tables it was derived from, by name (mechanism, move, drive_record)
@@ -193,7 +193,7 @@ def read_body(t: Table) -> Body:
 
 def read_move(t: Table, mechanism: Mechanism):
     """One ``[[move]]``: a dwell, or a distance in a time with its ramps; returns the
-    :class:`calc.motion.Move` at the gearbox output and the distance as given (None for a dwell)."""
+    :class:`calc.domain.motion.Move` at the gearbox output and the distance as given (None for a dwell)."""
     if t.has("dwell"):
         other = next((k for k in t.data if k != "dwell"), None)
         if other is not None:
@@ -355,7 +355,7 @@ class MotionResult:
 
     @cached_property
     def steps(self) -> list:
-        """(title, calc.formula.Step) of how the moves give the output's motion and torque, computed
+        """(title, calc.core.formula.Step) of how the moves give the output's motion and torque, computed
         here on first use (the review's changes need none of them)."""
         return motion_steps(self.motion)
 

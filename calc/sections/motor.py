@@ -1,7 +1,7 @@
 """The motor's side of a case (``[motor]``): the motor torque over the load cycle through the
 selected (or named) gearbox, with the rotor and gearbox inertia where the cycle is sampled; its
 peak, its RMS over the whole cycle and the top speed checked against the motor's peak torque,
-rated torque and top speed, each where the case gives it (:mod:`calc.motor`, case format "The
+rated torque and top speed, each where the case gives it (:mod:`calc.domain.motor`, case format "The
 motor's side")."""
 
 from __future__ import annotations
@@ -12,16 +12,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..case import Case, once
-from ..catalog import display_path
-from ..errors import CalcError
-from ..gearbox import inertia_ratio, n_1
-from ..cycle import PHASES
-from ..motor import (
+from .case import Case, once
+from ..data.catalog import display_path
+from ..core.errors import CalcError
+from ..domain.gearbox import inertia_ratio, n_1
+from ..domain.cycle import PHASES
+from ..domain.motor import (
     T_1_back, T_1_drive, T_1rms, Energy, MotorLoad, OutputLoad, alpha_1, driven_back, energy, motor_checks, motor_load, motor_torque, phases,
 )
-from ..motor_ratings import RANKING, Cycle, MotorSelection, read_curves, select_motors
-from ..units import Q_, fmt
+from ..domain.motor_ratings import RANKING, Cycle, MotorSelection, read_curves, select_motors
+from ..core.units import Q_, fmt
 from . import coupling, drive, duty, gearbox
 from .common import Governing, Verdict, check_json, check_line, quantity, quantity_text, row_json, selection_governing, selection_verdict
 
@@ -98,7 +98,7 @@ class MotorResult:
 
     @property
     def row_checks(self) -> list:
-        """The motor's checks (:class:`calc.checks.Check`) through the gearbox: the typed ratings',
+        """The motor's checks (:class:`calc.core.checks.Check`) through the gearbox: the typed ratings',
         or the best-ranked catalog motor's."""
         if self.selection is not None:
             return self.selection.best.checks
@@ -108,7 +108,7 @@ class MotorResult:
 
     @functools.cached_property
     def phases(self) -> list:
-        """The cycle at the motor, segment by segment (:class:`calc.motor.Phase`), for the motor
+        """The cycle at the motor, segment by segment (:class:`calc.domain.motor.Phase`), for the motor
         whose torques ``load`` holds; computed on first use."""
         if self.load is None or self.segments is None:
             return []
@@ -116,7 +116,7 @@ class MotorResult:
 
     @functools.cached_property
     def energy(self) -> Energy | None:
-        """Its power and the energy it gives back per cycle (:func:`calc.motor.energy`)."""
+        """Its power and the energy it gives back per cycle (:func:`calc.domain.motor.energy`)."""
         return None if self.load is None else energy(*self._at_motor)
 
     @property
@@ -127,7 +127,7 @@ class MotorResult:
 
     @functools.cached_property
     def steps(self) -> list:
-        """(title, calc.formula.Step, note or None) of the motor torque at the driving and the
+        """(title, calc.core.formula.Step, note or None) of the motor torque at the driving and the
         driven-back peak and of its RMS (:func:`motor_steps`), computed here on first use."""
         return [] if self.load is None else motor_steps(self.output, self.load, self.i, self.eta, self.J_motor, self.J_1)
 

@@ -1,14 +1,14 @@
 """Every motor of a case's motor catalog with every gearbox of its gearbox catalog, at every ratio
 (``python -m calc combinations CASE``): the feasible pairs and the one to pick by
-:data:`calc.combinations.RULE`, from the cycle's moments (:mod:`calc.combinations`: exact, with no
+:data:`calc.domain.combinations.RULE`, from the cycle's moments (:mod:`calc.domain.combinations`: exact, with no
 pass over the samples per pair). Not a section of the evaluation: its own command, with the same
 exit status rules.
 
 What a pair must pass: the gearbox's own governing checks at its ratio (all of
-:func:`calc.gearbox.select_gearbox` but those that need the motor), its ``T_2B`` against the
+:func:`calc.domain.gearbox.select_gearbox` but those that need the motor), its ``T_2B`` against the
 motor's peak through it (E4, in S5), the motor's peak torque ``M_max``, its RMS torque ``M_N``, its
 top speed and the inertia ratio (E6; ``[motor] max_inertia_ratio``). The motor's peak is screened
-against ``M_max`` at every speed: the speed-torque characteristic (:mod:`calc.motor_ratings`) and
+against ``M_max`` at every speed: the speed-torque characteristic (:mod:`calc.domain.motor_ratings`) and
 the emergency stop are checked when the case is evaluated with the pair it picks.
 """
 
@@ -19,13 +19,13 @@ from functools import cached_property
 
 import numpy as np
 
-from ..case import Case
-from ..catalog import display_path
-from ..combinations import RULE, CycleMoments, search
-from ..errors import CalcError
-from ..gearbox import T_2max, select_gearbox, shock_factor
-from ..profile import Z_h
-from ..units import sig
+from .case import Case
+from ..data.catalog import display_path
+from ..domain.combinations import RULE, CycleMoments, search
+from ..core.errors import CalcError
+from ..domain.gearbox import T_2max, select_gearbox, shock_factor
+from ..domain.profile import Z_h
+from ..core.units import sig
 from . import drive
 from .common import Verdict
 from .gearbox import catalogs, selection_inputs
@@ -54,7 +54,7 @@ class PairSearch:
     ratios: np.ndarray  # of the gearbox rows
     motor_parts: np.ndarray
     motor_rated: np.ndarray  # M_N, N·m: the motors' order for the figure
-    result: object  # calc.combinations.Combinations
+    result: object  # calc.domain.combinations.Combinations
     notes: list
 
     @cached_property
@@ -110,8 +110,8 @@ class PairSearch:
         return "\n".join(lines + [f"Note: {n}" for n in self.notes])
 
     def figure(self):
-        """The motors (smallest rated torque first) against the ratios: :func:`calc.combination_plots.combinations_figure`."""
-        from ..combination_plots import combinations_figure
+        """The motors (smallest rated torque first) against the ratios: :func:`calc.figures.combination_plots.combinations_figure`."""
+        from ..figures.combination_plots import combinations_figure
 
         order = np.argsort(self.motor_rated, kind="stable")
         r = self.result

@@ -1,5 +1,5 @@
 """The best ratio of a case (``python -m calc ratios CASE``): the case evaluated at every ratio its
-gearbox catalog offers (:mod:`calc.ratios`), the ratio to pick and why. Not a section of the
+gearbox catalog offers (:mod:`calc.domain.ratios`), the ratio to pick and why. Not a section of the
 evaluation: its own command, with the same exit status rules."""
 
 from __future__ import annotations
@@ -7,11 +7,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property
 
-from ..case import Case, once
-from ..catalog import display_path
-from ..errors import CalcError
-from ..ratios import INERTIA_RATIO_LIMIT, RULE, RatioSearch, search_ratios
-from ..units import Value, pretty_unit, sig
+from .case import Case, once
+from ..data.catalog import display_path
+from ..core.errors import CalcError
+from ..domain.ratios import INERTIA_RATIO_LIMIT, RULE, RatioSearch, search_ratios
+from ..core.units import Value, pretty_unit, sig
 from .gearbox import catalogs, selection_inputs
 from .common import Verdict, check_json, json_of, number
 from .motor import TYPED, output_load, rotor_inertia, with_chosen_motor
@@ -35,7 +35,7 @@ class RatioRow:
     peak_torque_required: Value | None  # of the motor; None where the case has no motor side
     rms_torque_required: Value | None
     max_speed_required: Value
-    checks: list  # the motor's (calc.checks.Check)
+    checks: list  # the motor's (calc.core.checks.Check)
     reasons: list
     pick: bool
 

@@ -8,8 +8,8 @@ prints the reference to paste there.
 
 from __future__ import annotations
 
-from ..case import OTHER_KINDS, Declared, Key
-from ..units import KINDS, pretty_unit
+from .case import OTHER_KINDS, Declared, Key
+from ..core.units import KINDS, pretty_unit
 
 BEGIN = "<!-- key reference: written by calc.sections.reference.reference() -->"
 END = "<!-- end of the key reference -->"

@@ -1,0 +1,187 @@
+"""Checks and their ranking: what every section's checks share.
+
+A :class:`CheckArray` holds, for every candidate at once, the required value, the rated value, the
+unit both are shown in, the utilization (required / rated) and the verdict, under the one pass rule
+of the package (:func:`within_rating`); :class:`Check` is one of them for one candidate, as results
+list it. :func:`rank` orders candidates best first and :func:`selected_part` names the best passing
+one.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .units import Value, fmt, magnitude_in, sig
+
+#: A value within this relative distance of a boundary (of E3, of E4, or a utilization of 1) counts
+#: as on it: sums and unit conversions carry rounding (0.6 s + 0.7 s + 0.2 s = 1.4999999999999998 s,
+#: an ED of 1.5 s / 2.5 s would fall just below 60 %).
+BOUNDARY_RTOL = 1e-9
+
+
+def within_rating(utilization):
+    """The one pass rule: utilization <= 1, where a utilization within :data:`BOUNDARY_RTOL` above
+    1 is 1 (300 rpm · 10 comes back from rad/s as 3000.0000000000005 rpm, which meets 3000 rpm).
+    NaN compares false: no rating, no pass.
+
+    >>> within_rating(np.array([0.5, 1.0 + 1e-12, 1.001, np.nan])).tolist()
+    [True, True, False, False]
+    """
+    return np.asarray(utilization) <= 1.0 + BOUNDARY_RTOL
+
+
+@dataclass(frozen=True)
+class Check:
+    """One check of one candidate (or of a section's requirement), as results list it.
+
+    ``passes`` is None when the check could not be made; ``not_made`` then says which input it
+    needs. ``governs`` says whether the check decides the verdict (the other mode's checks are
+    reported for information, E3).
+    """
+
+    name: str
+    criterion: str
+    required: object  # scalar quantity, or None when not made
+    rated: object
+    unit: str
+    utilization: float | None
+    passes: bool | None
+    governs: bool = True
+    mode: str | None = None
+    not_made: str | None = None
+    at_least: bool = False  # the required value is a lower bound: a term of it is unknown
+
+    @property
+    def required_value(self) -> Value | None:
+        """The required value as outputs print it; None where the check is not made."""
+        return None if self.required is None else Value.of(self.required, self.unit, self.name)
+
+    @property
+    def rated_value(self) -> Value:
+        """The rated value as outputs print it (no value where the catalog gives none)."""
+        return Value.of(self.rated, self.unit, self.name)
+
+    def reason(self) -> str:
+        """Why the check does not pass: its excess, or what it needs."""
+        if self.not_made is not None:
+            return f"{self.criterion}: not checked, {self.not_made}"
+        if self.utilization is None:
+            return f"{self.criterion}: not checked, the catalog gives no rated value"
+        return (
+            f"{self.criterion}: required {fmt(self.required, self.unit)} > rated {fmt(self.rated, self.unit)}, "
+            f"{sig(100 * (self.utilization - 1), 3)} % over"
+        )
+
+
+@dataclass(frozen=True)
+class CheckArray:
+    """One criterion over all candidates: required and rated values as quantity arrays, and the
+    unit both are shown in."""
+
+    name: str
+    mode: str
+    text: str
+    required: object  # quantity array; None when the check cannot be made (see not_made)
+    rated: object
+    unit: str
+    not_made: str | None = field(default=None, kw_only=True)  # what the check needs that the case does not give
+    #: For a check whose rating a catalog may leave out (a bearing's force): what is missing, and
+    #: a row without the rating is not checked and does not fail; None: such a row fails.
+    unrated: str | None = field(default=None, kw_only=True)
+
+    @property
+    def made(self) -> bool:
+        return self.not_made is None
+
+    @functools.cached_property
+    def utilization(self) -> np.ndarray:
+        """required / rated; NaN where the catalog gives no rated value or the check is not made."""
+        rated = magnitude_in(self.rated, self.unit)
+        if not self.made:
+            return np.full(np.shape(rated), np.nan)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.asarray(magnitude_in(self.required, self.unit) / rated, dtype=float)
+
+    @functools.cached_property
+    def passes(self) -> np.ndarray:
+        """:func:`within_rating` of each row (false where the check is not made); computed once,
+        as listing candidates asks it of every row."""
+        ok = within_rating(self.utilization)
+        return ok | self.unrated_rows if self.made else ok
+
+    @functools.cached_property
+    def unrated_rows(self) -> np.ndarray:
+        """Rows not checked for want of a rating that may be left out (:attr:`unrated`)."""
+        if self.unrated is None:
+            return np.zeros(np.shape(self.utilization), bool)
+        return np.isnan(magnitude_in(self.rated, self.unit))
+
+    @functools.cached_property
+    def ranked_utilization(self) -> np.ndarray:
+        """The utilization as ranking counts it: 0 where a row is not checked for want of a
+        rating that may be left out (it neither fails nor pushes the row down)."""
+        return np.where(self.unrated_rows, 0.0, self.utilization)
+
+    def at(self, row: int, governs: bool = True) -> Check:
+        """This check for one row."""
+        u = float(self.utilization[row])
+        unrated = self.made and bool(self.unrated_rows[row])
+        return Check(
+            name=self.name,
+            criterion=self.text,
+            required=None if not self.made else self.required[row],
+            rated=self.rated[row],
+            unit=self.unit,
+            utilization=None if np.isnan(u) else u,
+            passes=None if not self.made or unrated else bool(self.passes[row]),
+            governs=governs,
+            mode=self.mode,
+            not_made=self.unrated if unrated else self.not_made,
+        )
+
+    def reason(self, row: int) -> str:
+        """Why the row does not pass this check: by how much the required value exceeds the
+        rated one, or what the check needs."""
+        return self.at(row).reason()
+
+
+def _significant(values, digits: int = 12) -> np.ndarray:
+    """``values`` rounded to ``digits`` significant digits, so that figures which differ only by
+    floating-point rounding (the same inputs given in other units) tie, and the tie goes by name."""
+    x = np.asarray(values, float)
+    scaled = np.isfinite(x) & (x != 0)
+    exponent = np.floor(np.log10(np.abs(np.where(scaled, x, 1.0))))
+    scale = 10.0 ** (digits - 1 - exponent)
+    return np.where(scaled, np.round(x * scale) / scale, x)
+
+
+def rank(passes, size, worst_utilization, parts, later=None) -> np.ndarray:
+    """Indices best first: passing first, and among them the rows not marked ``later`` (an
+    illustrative row; a gearbox whose drive train is not shown to clear the excitation) before the
+    others, then smallest size and larger margin; failing rows after, closest to passing first (the
+    rule of :mod:`calc.domain.gearbox`)."""
+    passes = np.asarray(passes, bool)
+    worst = np.where(np.isnan(worst_utilization), np.inf, _significant(worst_utilization))
+    size_key = np.where(passes, _significant(size), 0.0)
+    shown_later = np.zeros(len(passes), bool) if later is None else passes & np.asarray(later, bool)
+    keys = (worst, size_key, shown_later, ~passes)
+    order = np.lexsort(keys)
+    # Rows tied on every key go by part name. Names are sorted within the tied runs only: sorting
+    # text costs more than all the numeric keys together, and a catalog has few ties.
+    tied = np.logical_and.reduce([k[order][1:] == k[order][:-1] for k in keys])
+    if tied.any():
+        run = np.cumsum(np.concatenate(([True], ~tied)))
+        at = np.flatnonzero(np.concatenate(([False], tied)) | np.concatenate((tied, [False])))
+        rows = order[at]
+        order[at] = rows[np.lexsort((np.asarray(parts)[rows].astype(str), run[at]))]
+    return order
+
+
+def selected_part(parts, passes, order) -> str | None:
+    """The best-ranked part if it passes, else None."""
+    if len(order) and passes[order[0]]:
+        return str(parts[order[0]])
+    return None

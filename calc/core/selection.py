@@ -1,0 +1,124 @@
+"""A catalog's rows checked and ranked: what the gearbox and coupling selections share.
+
+A selection holds, over the rows of its ``catalog`` in catalog order, its checks
+(:class:`calc.core.checks.CheckArray`), whether each row passes, each row's worst utilization and the
+ranking ``order`` (:func:`calc.core.checks.rank`), and its notes. :class:`Selection` names the chosen
+part, says why a row fails and lists the rows, best first, as :class:`Candidate` records, which
+the JSON, the text summary, the calc report and the design review all print. A selection type says
+which of its checks govern (:meth:`Selection.governs`), which apply to a row
+(:meth:`Selection.applies`) and what else a row's record holds (:meth:`Selection.row_fields`).
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+from .checks import selected_part
+
+
+@dataclass(kw_only=True)
+class Candidate:
+    """One catalog row with its checks (:class:`calc.core.checks.Check`), as every output lists it."""
+
+    part: str
+    passes: bool | None  # None: every governing check made passes, but one could not be made
+    checks: list
+    reasons: list  # why the row does not pass: each failing check, each check not made
+    illustrative: bool
+    catalog: str = ""  # the file of the row
+    family: str = ""
+    size: str = ""
+    source: str = ""
+    unclear: str = ""  # the row's doubtful figures, as its catalog says
+
+    @property
+    def governing(self) -> list:
+        """The checks that decide the row's verdict."""
+        return [k for k in self.checks if k.governs]
+
+    @property
+    def worst(self) -> float | None:
+        """The highest utilization of the governing checks made; None where none has one."""
+        made = [k.utilization for k in self.governing if k.utilization is not None]
+        return max(made) if made else None
+
+
+class Selection:
+    """The methods a checked and ranked catalog shares; its fields are the selection type's
+    (``catalog``, ``checks``, ``passes``, ``order``, ``notes``)."""
+
+    #: The record of one row; a selection type may extend it.
+    candidate_type = Candidate
+
+    def governs(self, check) -> bool:
+        """Whether a check decides the verdict; all do, unless the selection type says otherwise."""
+        return True
+
+    def applies(self, check, row: int) -> bool:
+        """Whether a check applies to a row; all do, unless the selection type says otherwise."""
+        return True
+
+    @property
+    def governing(self) -> list:
+        return [c for c in self.checks if self.governs(c)]
+
+    @property
+    def not_made(self) -> list:
+        """The governing checks the case gives too little for: no row can be chosen."""
+        return [c for c in self.governing if not c.made]
+
+    @property
+    def selected(self) -> str | None:
+        """Part of the best passing row, or None (also when a governing check could not be made)."""
+        return None if self.not_made else selected_part(self.catalog.parts, self.passes, self.order)
+
+    def decided(self, row: int) -> bool | None:
+        """Whether a row passes: None where every check made passes but one could not be made."""
+        passes = bool(self.passes[row])
+        return None if passes and self.not_made else passes
+
+    def reasons(self, row: int) -> list[str]:
+        """Why a row does not pass: each governing check it fails, with the excess, and each that
+        could not be made."""
+        return [c.reason(row) for c in self.governing if self.applies(c, row) and (not c.made or not c.passes[row])]
+
+    def row_fields(self, row: int) -> dict:
+        """What the selection type's record of a row holds besides :class:`Candidate`'s fields."""
+        return {}
+
+    def _texts(self) -> tuple:
+        cat = self.catalog
+        return cat.family, cat.text_or_blank("size"), cat.text_or_blank("source"), cat.text_or_blank("unclear")
+
+    def candidate(self, row: int, texts: tuple | None = None) -> Candidate:
+        """One row as its record (``texts``: the family, size, source and doubt columns, when at hand)."""
+        family, size, source, unclear = texts or self._texts()
+        return self.candidate_type(
+            part=str(self.catalog.parts[row]),
+            passes=self.decided(row),
+            checks=[c.at(row, governs=self.governs(c)) for c in self.checks if self.applies(c, row)],
+            reasons=self.reasons(row),
+            illustrative=bool(self.catalog.illustrative[row]),
+            catalog=self.catalog.catalog_of(row),
+            family=str(family[row]),
+            size=str(size[row]),
+            source=str(source[row]),
+            unclear=str(unclear[row]),
+            **self.row_fields(row),
+        )
+
+    def candidates(self, limit: int | None = None) -> list[Candidate]:
+        """The rows as records, best first; the first ``limit`` (all for None)."""
+        texts = self._texts()
+        return [self.candidate(row, texts) for row in (self.order if limit is None else self.order[:limit])]
+
+    @functools.cached_property
+    def best(self) -> Candidate:
+        """The best-ranked row: the chosen part, or the closest where none passes."""
+        return self.candidate(int(self.order[0]))
+
+    @property
+    def chosen(self) -> Candidate | None:
+        """The chosen row; None where none is chosen."""
+        return self.best if self.selected is not None else None

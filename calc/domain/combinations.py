@@ -1,0 +1,176 @@
+"""Every motor with every gearbox at once: the motor torque's peak and RMS through each pair from a
+few moments of the cycle, exactly, without a pass over the samples per pair.
+
+Through a gearbox of ratio ``i`` and efficiency ``η``, with ``J = J_motor + J_1`` on the motor
+shaft, the motor torque of sample ``k`` is (:data:`calc.domain.motor.T_1_drive`, :data:`calc.domain.motor.T_1_back`)
+
+* driving (``T_2 · ω_2 >= 0``): ``T_1k = J · i · α_2k + T_2k / (i · η) = (T_2k + x_D · α_2k) / (i · η)``, ``x_D = J · i² · η``;
+* driven back: ``T_1k = J · i · α_2k + T_2k · η / i = (T_2k + x_B · α_2k) · η / i``, ``x_B = J · i² / η``.
+
+Which samples drive depends on the load alone, not on the pair. So
+
+* the RMS (:data:`calc.domain.motor.T_1rms`) is a quadratic form in the pair's figures,
+  ``T_1rms² · Σ t_k = (J · i)² · A + 2 · J · (S_D / η + S_B · η) + Q_D / (i · η)² + Q_B · (η / i)²``,
+  with five sums over the samples taken once: ``A = Σ t_k α_2k²``, ``S = Σ t_k α_2k T_2k`` and
+  ``Q = Σ t_k T_2k²`` over the driving (D) and driven-back (B) samples;
+* the peak ``max_k |T_1k|`` is ``max(E_D(x_D) / (i · η), E_B(x_B) · η / i)`` where
+  ``E(x) = max_k |T_2k + x · α_2k|`` over a set of samples: the upper envelope of the lines
+  ``±(T_2k + x · α_2k)``, a convex function of ``x`` taken once per set (:class:`Envelope`) and
+  read at each pair's ``x`` by a binary search.
+
+So a cycle of N samples costs O(N log N) once, and each pair O(log N) (:func:`motor_torques`), the
+same numbers as :func:`calc.domain.motor.motor_load` per pair (the tests hold them equal).
+
+:func:`search` checks every (gearbox row, motor) pair of a cycle and picks one by :data:`RULE`.
+Values are plain floats in SI units (N·m, rad/s², kg·m², s, rad/s), as the catalogs hold them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.checks import within_rating
+
+#: How :func:`search` picks a pair among the feasible ones.
+RULE = ("the smallest adequate motor (lowest rated torque, a tie to the lower rotor inertia), then the smallest adequate "
+        "gearbox for it (lowest rated torque of the gearbox), then the lowest RMS utilization of the motor, then the lower ratio")
+
+
+@dataclass(frozen=True)
+class Envelope:
+    """``E(x) = max_k |T_k + x · α_k|`` for ``x >= 0`` over a set of samples: the lines of the
+    upper envelope, by increasing slope, and the ``x`` where each next one takes over."""
+
+    intercepts: np.ndarray
+    slopes: np.ndarray
+    breaks: np.ndarray  # len(lines) - 1, increasing
+
+    @classmethod
+    def of(cls, T, alpha) -> "Envelope":
+        """The envelope of the lines ``±(T_k + x · α_k)`` (an empty set gives E = 0)."""
+        b = np.concatenate((T, -T, [0.0]))  # the zero line: no sample, no torque
+        a = np.concatenate((alpha, -alpha, [0.0]))
+        # Of lines of one slope only the highest counts; a trapezoidal cycle has few slopes.
+        order = np.lexsort((-b, a))
+        a, b = a[order], b[order]
+        first = np.concatenate(([True], a[1:] != a[:-1]))
+        a, b = a[first], b[first]
+        # Upper envelope on x >= 0 (the convex hull trick): lines by increasing slope, each kept
+        # while it is highest somewhere to the right of where the previous one is overtaken.
+        keep_a, keep_b, starts = [], [], []
+        for slope, intercept in zip(a.tolist(), b.tolist()):
+            while keep_a:
+                # where this line overtakes the last kept one
+                x = (keep_b[-1] - intercept) / (slope - keep_a[-1])
+                if x <= starts[-1]:
+                    keep_a.pop(), keep_b.pop(), starts.pop()
+                    continue
+                break
+            if keep_a:
+                starts.append(max(x, 0.0))
+            else:
+                starts.append(0.0)
+            keep_a.append(slope)
+            keep_b.append(intercept)
+        # a line that only takes over before x = 0 is dropped: the first kept line holds at 0
+        starts_arr = np.asarray(starts)
+        last_at_zero = np.flatnonzero(starts_arr <= 0.0)[-1]
+        return cls(np.asarray(keep_b[last_at_zero:]), np.asarray(keep_a[last_at_zero:]), starts_arr[last_at_zero + 1:])
+
+    def __call__(self, x):
+        """``E`` at ``x`` (an array, each >= 0)."""
+        k = np.searchsorted(self.breaks, x, side="right")
+        return self.intercepts[k] + x * self.slopes[k]
+
+
+@dataclass(frozen=True)
+class CycleMoments:
+    """What the motor torque through any gearbox with any motor needs of a sampled cycle at the
+    gearbox output: its duration, the five sums and the two envelopes of the module's docstring."""
+
+    duration: float
+    A: float
+    S_D: float
+    S_B: float
+    Q_D: float
+    Q_B: float
+    drive: Envelope
+    back: Envelope
+
+    @classmethod
+    def of(cls, dt, torque, speed, alpha) -> "CycleMoments":
+        """From each sample's duration [s], output torque [N·m], output speed [rad/s] and output
+        acceleration [rad/s²] (floats, samples on the one axis)."""
+        dt, T, w, a = (np.asarray(x, float) for x in (dt, torque, speed, alpha))
+        back = T * w < 0  # calc.domain.motor.driven_back: a hold at rest drives
+        d = ~back
+        return cls(
+            float(dt.sum()), float(np.dot(dt, a * a)),
+            float(np.dot(dt[d], a[d] * T[d])), float(np.dot(dt[back], a[back] * T[back])),
+            float(np.dot(dt[d], T[d] * T[d])), float(np.dot(dt[back], T[back] * T[back])),
+            Envelope.of(T[d], a[d]), Envelope.of(T[back], a[back]),
+        )
+
+
+def motor_torques(m: CycleMoments, i, eta, J) -> tuple[np.ndarray, np.ndarray]:
+    """The peak ``max |T_1|`` and the RMS of the motor torque through gearboxes of ratio ``i`` and
+    efficiency ``eta`` with ``J = J_motor + J_1`` on the motor shaft [kg·m²]; the arguments
+    broadcast (a column of gearboxes against a row of motors gives their table).
+
+    The example's cycle without the rotor term (i = 10, η = 0.97; :func:`calc.domain.motor.motor_load`):
+    peak 60 / 9.7 = 6.186 N·m, RMS 2.647 N·m.
+
+    >>> m = CycleMoments.of([0.2, 0.6, 0.2, 1.0], [60.0, 20.0, -45.0, 0.0], [15.7, 31.4, 15.7, 0.0], [0.0, 0.0, 0.0, 0.0])
+    >>> [round(float(x), 4) for x in motor_torques(m, 10.0, 0.97, 0.0)]
+    [6.1856, 2.647]
+    """
+    i, eta, J = np.broadcast_arrays(*(np.asarray(x, float) for x in (i, eta, J)))
+    square = ((J * i) ** 2 * m.A + 2 * J * (m.S_D / eta + m.S_B * eta) + m.Q_D / (i * eta) ** 2 + m.Q_B * (eta / i) ** 2) / m.duration
+    rms = np.sqrt(np.maximum(square, 0.0))  # rounding may leave a zero RMS a hair below zero
+    x = J * i * i
+    peak = np.maximum(m.drive(x * eta) / (i * eta), m.back(x / eta) * eta / i)
+    return peak, rms
+
+
+@dataclass
+class Combinations:
+    """Every (gearbox row, motor) pair of :func:`search`: arrays of shape (gearbox rows, motors)."""
+
+    peak: np.ndarray  # max |T_1| [N·m]
+    rms: np.ndarray  # T_1rms [N·m]
+    utilization: np.ndarray  # the highest of the pair's utilizations (gearbox and motor)
+    feasible: np.ndarray
+    pick: tuple[int, int] | None  # (gearbox row, motor) by RULE; None where no pair is feasible
+
+
+def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict, inertia_ratio_limit: float = 10.0) -> Combinations:
+    """Check every pair of a gearbox row and a motor against the cycle, and pick one (:data:`RULE`).
+
+    ``top_speed``: the highest output speed [rad/s]. ``gearboxes``: arrays over the rows (each at
+    its own ratio): ``i``, ``eta``, ``J_1`` [kg·m²], ``passes`` (its governing checks that do not
+    depend on the motor), ``peak_limit`` (the highest motor peak torque its T_2B takes,
+    ``T_2B / (i · f_s · η)`` (E2), inf where that check does not govern), ``size`` (its rated
+    torque, for the rule) and ``J_L`` (the load's inertia at the output, scalar). ``motors``: arrays
+    over the motors: ``J`` [kg·m²], ``rated_torque``, ``peak_torque`` [N·m], ``max_speed`` [rad/s].
+
+    A pair is feasible where the gearbox passes, its T_2B takes the motor's peak torque, the motor's
+    peak and RMS torque and its top speed ``n_2max · i`` are within the motor's ratings, and
+    ``λ = (J_1 + J_L / i²) / J_motor`` is at most ``inertia_ratio_limit`` (E6).
+    """
+    g = {k: np.asarray(v, float)[:, None] for k, v in gearboxes.items() if k != "J_L"}
+    mo = {k: np.asarray(v, float)[None, :] for k, v in motors.items()}
+    peak, rms = motor_torques(moments, g["i"], g["eta"], g["J_1"] + mo["J"])
+    lam = (g["J_1"] + float(gearboxes["J_L"]) / g["i"] ** 2) / mo["J"]
+    utilizations = (peak / mo["peak_torque"], rms / mo["rated_torque"], top_speed * g["i"] / mo["max_speed"],
+                    mo["peak_torque"] / g["peak_limit"], lam / inertia_ratio_limit)
+    utilization = np.maximum.reduce(utilizations)
+    feasible = (g["passes"] > 0) & np.logical_and.reduce([within_rating(u) for u in utilizations])
+    rows, cols = np.nonzero(feasible)
+    pick = None
+    if len(rows):
+        keys = (g["i"][rows, 0], rms[rows, cols] / mo["rated_torque"][0, cols], g["size"][rows, 0], mo["J"][0, cols], mo["rated_torque"][0, cols])
+        best = np.lexsort(keys)[0]
+        pick = (int(rows[best]), int(cols[best]))
+    return Combinations(peak, rms, utilization, feasible, pick)

@@ -1,0 +1,762 @@
+"""Couplings and safety couplings: sizing torque, temperature factor, resonance, selection, order.
+
+Source: "Sizing and Selecting for Couplings and Safety Couplings", read with errata E7 to E10,
+E14 and E15. The coupling sees the acceleration torque ``M_a`` of the motor split by the inertias
+on its two sides; the load factor ``S_A`` (E8) gives its nominal torque ``M_N``, and an
+elastomer coupling's torque is further multiplied by a temperature factor (E9). The coupling is
+the spring of a two-mass system whose natural frequency ``f_e`` must be at least twice the
+excitation frequency of the drive (E7). That system leaves out every other spring of the drive
+train: given the members around the coupling (:class:`DriveTrain`), the first mode ``f_1`` of the
+whole chain (:mod:`calc.domain.torsion`) is checked against the same ``2 f_er``. A line shaft's stiffness comes from its two bellows and
+its tube at the case's shaft distance; a safety coupling's disengagement torque ``T_A`` must lie
+in the size's adjustable range and above the peak torque of normal operation (E10).
+
+Every row of a catalog (or of the requested type) is checked at once, as numpy arrays over the
+rows. The case's inertias are those of the machine without the coupling: each candidate's own
+inertia is added, half to each side (E7).
+
+Ranking rule: passing candidates first, published rows before illustrative ones (as for
+gearboxes); among them the smallest adequate size, measured by the rated torque ``T_KN``, then the larger margin (lower worst utilization); failing candidates
+after, closest to passing first. Ties go by part name (:func:`calc.core.checks.rank`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..data.bands import factor_table
+from ..data.catalog import Catalog, Column, Rule, Schema, load_catalog, no_less, resolve  # noqa: F401 (load_catalog, resolve: the doctests)
+from ..core.errors import CalcError
+from .fits import Bore, parse_bore
+from ..core.formula import RADIAN, Formula, Symbol
+from ..core import selection
+from ..core.checks import CheckArray, rank, within_rating
+from .torsion import Chain, Member, lumped
+from ..core.selection import Selection
+from ..core.units import Q_, Value, as_kind, fmt, sig
+
+TYPES = ("bellows", "elastomer", "safety", "line-shaft")
+
+#: How the source's ordering examples head each kind of coupling.
+ORDER_TITLES = {
+    "bellows": "Standard coupling",
+    "elastomer": "Standard coupling",
+    "safety": "Safety coupling",
+    "line-shaft": "Drive shaft coupling",
+}
+
+#: S_A when the case gives none (errata E8: servo drives on machine tools 2 to 3).
+DEFAULT_SERVICE_FACTOR = 2.5
+
+#: Temperature factor of elastomer couplings (source, Sizing 3; errata E9: the higher factor at a
+#: boundary), ``catalogs/factors/temperature-source.csv``. The source's last band, "> 110 °C", is
+#: open; it means something only while the elastomer holds, and thermoplastic polyurethane inserts
+#: of servo couplings are rated up to +120 °C (98 Sh A inserts to +100 °C), so the table ends
+#: there. A maker's table (``temperature-roba-es.csv``, ``temperature-comintec.csv``, or the
+#: user's own) can be passed to :func:`temperature_factor` instead (``[coupling]
+#: temperature_factors``).
+TEMPERATURE_FACTORS = factor_table("temperature")
+
+SCHEMA = Schema(
+    kind="coupling",
+    columns=(
+        Column("T_KN", "torque", "rated torque (a safety coupling may give only its T_A range)", required=False),
+        Column("T_Kmax", "torque", "maximum torque", required=False),
+        Column("C_T", "stiffness", "torsional stiffness (of the two bellows for a line shaft)", required=False),
+        Column("C_tube", "stiffness_length", "tube stiffness per unit length (line shafts)", required=False),
+        Column("J", "inertia", "inertia of the whole coupling", required=False),
+        Column("n_max", "speed", "maximum speed", required=False),
+        Column("d_1min", "length", "smallest bore of hub 1", required=False),
+        Column("d_1max", "length", "largest bore of hub 1", required=False),
+        Column("d_2min", "length", "smallest bore of hub 2", required=False),
+        Column("d_2max", "length", "largest bore of hub 2", required=False),
+        Column("T_Amin", "torque", "smallest disengagement torque (safety couplings)", required=False),
+        Column("T_Amax", "torque", "largest disengagement torque (safety couplings)", required=False),
+        Column("H", "length", "hub length (line shafts)", required=False),
+        Column("A_max", "length", "longest distance between shafts (line shafts)", required=False),
+        *(
+            Column(name, kind_name, description, required=False, may_be_absent=True)
+            for name, kind_name, description in (
+                ("L", "length", "overall length"),
+                ("C_r", "linear_stiffness", "radial spring rate"),
+                ("C_a", "linear_stiffness", "axial spring rate"),
+                ("dK_a", "length", "permissible axial misalignment"),
+                ("dK_r", "length", "permissible radial misalignment"),
+                ("dK_w", "angle", "permissible angular misalignment"),
+                ("m", "mass", "mass"),
+                ("screw_torque", "torque", "tightening torque of the clamping screw"),
+            )
+        ),
+    ),
+    text_columns=("part", "series", "size", "type", "source"),
+    optional_text=("illustrative", "insert", "J_basis", "clamp_screw", "unclear"),
+    rules=(
+        Rule("T_Kmax >= T_KN", no_less("T_Kmax", "T_KN"), "T_Kmax"),
+        Rule("d_1max >= d_1min", no_less("d_1max", "d_1min"), "d_1max"),
+        Rule("d_2max >= d_2min", no_less("d_2max", "d_2min"), "d_2max"),
+        Rule("T_Amax >= T_Amin", no_less("T_Amax", "T_Amin"), "T_Amax"),
+        Rule("A_max > 2 H", lambda v: np.isnan(v["A_max"].magnitude) | (v["A_max"] > 2 * v["H"]), "A_max"),
+    ),
+)
+
+#: Columns a row of each type must fill. A safety coupling may give only the range of its
+#: disengagement torque T_A (Mayr's EAS-compact tables give no separate rated torque): the torque
+#: it passes is then bounded by T_A, which E10 checks.
+_TYPE_NEEDS = {
+    "bellows": ("T_KN",), "elastomer": ("T_KN",), "safety": ("T_Amin", "T_Amax"), "line-shaft": ("T_KN", "C_T", "C_tube", "H"),
+}
+
+# Symbols of the source's sizing section.
+_M_a = Symbol("M_a", "M_{a}", "torque", "N*m", "acceleration torque of the motor")
+_J_load = Symbol("J_load", r"J_{\mathrm{load}}", "inertia", "kg*cm**2", "load-side inertia as the coupling sees it")
+_J_drive = Symbol("J_drive", r"J_{\mathrm{drive}}", "inertia", "kg*cm**2", "drive-side inertia")
+_S_A = Symbol("S_A", "S_{A}", "dimensionless", "", "load (shock) factor")
+_M_N = Symbol("M_N", "M_{N}", "torque", "N*m", "nominal torque of the coupling")
+_K_T = Symbol("K_T", r"K_{\vartheta}", "dimensionless", "", "temperature factor (elastomer couplings)")
+_J_K = Symbol("J_K", "J_{K}", "inertia", "kg*cm**2", "inertia of the coupling")
+_J_A = Symbol("J_A", "J_{A}", "inertia", "kg*cm**2", "drive side with half the coupling")
+_J_L = Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load side with half the coupling")
+_C_T = Symbol("C_T", "C_{T}", "stiffness", "N*m/rad", "torsional stiffness of the coupling")
+_f_er = Symbol("f_er", "f_{er}", "frequency", "Hz", "excitation frequency of the drive")
+_A = Symbol("A", "A", "length", "mm", "distance between the shafts")
+_H = Symbol("H", "H", "length", "mm", "hub length")
+_Z = Symbol("Z", "Z", "length", "mm", "tube length")
+_C_B = Symbol("C_B", "C_{B}", "stiffness", "N*m/rad", "stiffness of the two bellows together")
+_C_tube = Symbol("C_tube", r"C_{\mathrm{tube}}", "stiffness_length", "N*m**2/rad", "tube stiffness per unit length")
+_T = Symbol("T", "T", "torque", "N*m", "torque through the coupling")
+
+
+M_N = Formula(
+    _M_N,
+    (_M_a, _J_load, _J_drive, _S_A),
+    lambda sp, M_a, J_load, J_drive, S_A: sp.Mul(  # in the source's order
+        M_a, J_load / sp.Add(J_load, J_drive, evaluate=False), S_A, evaluate=False
+    ),
+    "source, Couplings, Sizing 1; errata E8 (the factor 2.5 is the load factor S_A, default 2.5)",
+)
+
+J_load_at_input = Formula(
+    _J_load,
+    (
+        Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load inertia at the gearbox output"),
+        Symbol("i", "i", "dimensionless", "", "ratio of the gearbox"),
+        Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia referred to its input"),
+    ),
+    lambda sp, J_L, i, J_1: sp.Add(J_L / i**2, J_1, evaluate=False),  # in the order of E8
+    "errata E8 (a coupling between motor and gearbox sees the load reflected to the input plus the gearbox's J_1)",
+)
+
+M_Nt = Formula(
+    Symbol("M_Nt", r"M_{N\vartheta}", "torque", "N*m", "nominal torque with the temperature factor"),
+    (_M_N, _K_T),
+    lambda sp, M_N, K_T: M_N * K_T,
+    "source, Couplings, Sizing 3 (multiply M_N by the temperature factor); errata E9 (elastomer couplings only)",
+)
+
+
+M_Smax = Formula(
+    Symbol("M_Smax", r"M_{S\,\mathrm{max}}", "torque", "N*m", "peak torque with the start and temperature factors"),
+    (
+        Symbol("T_S", "T_{S}", "torque", "N*m", "peak torque at the coupling (the source's M_N: a drive-side shock with S_A)"),
+        Symbol("S_z", "S_{z}", "dimensionless", "", "start factor (starts per hour)"),
+        _K_T,
+    ),
+    lambda sp, T_S, S_z, K_T: sp.Mul(T_S, S_z, K_T, evaluate=False),
+    "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing of "
+    "elastomer couplings EK (T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature factor S_υ); "
+    "Mayr ROBA-ES B.9.6.EN p. 26 (S_z, S_δ); T_S read as the source's M_N (a drive-side shock: M_a · J_load / (J_load + J_drive) · S_A)",
+)
+
+
+def _with_half_coupling(result: Symbol, side: Symbol) -> Formula:
+    return Formula(
+        result,
+        (side, _J_K),
+        lambda sp, J, J_K: J + J_K / 2,
+        "source, Couplings (J_mot, J_moch: inertia + 1/2 coupling inertia); errata E7",
+    )
+
+
+J_A = _with_half_coupling(_J_A, _J_drive)
+J_L = _with_half_coupling(_J_L, _J_load)
+
+f_e = Formula(
+    Symbol("f_e", "f_{e}", "frequency", "Hz", "natural frequency of the two-mass system"),
+    (_C_T, RADIAN, _J_A, _J_L),
+    lambda sp, C_T, rad, J_A, J_L: sp.sqrt(C_T * rad * (J_A + J_L) / (J_A * J_L)) / (2 * sp.pi),
+    "source, Couplings, Sizing 2 (garbled there); errata E7 (two-mass system, coupling as the spring)",
+)
+
+f_e_min = Formula(
+    Symbol("f_e_min", r"f_{e,\mathrm{min}}", "frequency", "Hz", "lowest natural frequency allowed"),
+    (_f_er,),
+    lambda sp, f_er: 2 * f_er,
+    "source, Couplings (f_coupling >= 2 f_drive); errata E7",
+)
+
+Z = Formula(
+    _Z,
+    (_A, _H),
+    lambda sp, A, H: A - 2 * H,
+    "R+W ZA line shaft catalog: tube length Z = A - 2 H",
+)
+
+C_T_line = Formula(
+    _C_T,
+    (_C_B, _Z, _C_tube),
+    lambda sp, C_B, Z, C_tube: 1 / (1 / C_B + Z / C_tube),
+    "R+W ZA line shaft catalog: the bellows and the tube of length Z in series",
+)
+
+phi = Formula(
+    Symbol("phi", r"\varphi", "angle", "deg", "angle of twist"),
+    (_T, _C_T),
+    lambda sp, T, C_T: T / C_T,
+    "R+W ZA line shaft catalog, worked example (angle of twist under torque)",
+)
+
+
+def start_factor(starts_per_hour, table, where: str = "starts_per_hour"):
+    """Start factor ``S_z`` of an elastomer coupling for a number of starts per hour, from a
+    maker's table (:func:`calc.data.bands.factor_table` ``("starts", name)``), scalar or array.
+
+    Examples
+    --------
+    Mayr ROBA-ES (B.9.6.EN p. 26): 0-100 starts per hour 1, 101-200 1.2, 201-400 1.4, 401-800
+    1.6, 801-1000 1.8:
+
+    >>> from calc.data.bands import factor_table
+    >>> mayr = factor_table("starts", "roba-es")
+    >>> [float(start_factor(Q_(z, "1/hour"), mayr)) for z in (100, 101, 200, 400, 800, 1000)]
+    [1.0, 1.2, 1.2, 1.4, 1.6, 1.8]
+    """
+    return table.lookup(as_kind(starts_per_hour, "per_hour", where), where)
+
+
+def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "temperature"):
+    """Temperature factor of an elastomer coupling (errata E9), scalar or array.
+
+    Parameters
+    ----------
+    temperature : Quantity [temperature]
+        Operating temperature (``Q_(60, "degC")``; a temperature difference is refused).
+    table : calc.data.bands.BandTable
+        The factor by temperature band, the higher factor at a boundary. Default: the source's
+        table, :data:`TEMPERATURE_FACTORS`.
+
+    Returns
+    -------
+    float or ndarray
+        The factor ``K_ϑ`` that multiplies ``M_N``.
+
+    Notes
+    -----
+    A temperature below absolute zero is an input error, and so is one above the table's range:
+    the source's table ends at 120 °C, the highest temperature servo elastomer inserts
+    (thermoplastic polyurethane) are rated for; its last band, "> 110 °C", has no meaning beyond
+    the elastomer's range, where no elastomer coupling is sized by a factor (E9).
+
+    Examples
+    --------
+    >>> [float(temperature_factor(Q_(t, "degC"))) for t in (49.9, 50, 69.9, 70, 90, 110, 120)]
+    [1.0, 1.3, 1.3, 1.6, 1.8, 2.0, 2.0]
+    """
+    t = as_kind(temperature, "temperature", where)
+    if any(name.startswith("delta_") for name in t.units._units):
+        raise CalcError(f"{where}: expected a temperature such as \"60 degC\", found {t:~P}, which is a temperature difference")
+    kelvin = np.asarray(t.m_as("K"))
+    if np.any(kelvin < 0):
+        raise CalcError(f"{where}: expected a temperature above absolute zero (-273.15 °C), found {sig(kelvin[kelvin < 0][0] - 273.15)} °C")
+    return table.lookup(t, where)
+
+
+@dataclass(frozen=True)
+class CouplingCheck(CheckArray):
+    """A :class:`calc.core.checks.CheckArray` that may apply to some rows only (a safety coupling's
+    T_A range), and says why it cannot be made where a value is missing."""
+
+    applies: object = None  # bool array over the rows; None: every row
+    missing: object = "the catalog gives no rated value"  # text, or one text per row
+    lower_bound: bool = False  # "least <= value": the rated side is the value checked
+    optional: bool = False  # a row without a rating is reported as not checked, and passes
+    informs: bool = False  # reported for information: it decides nothing (a drive train the case gives in part)
+
+    @property
+    def passes(self) -> np.ndarray:
+        if self.informs:
+            return np.ones(np.shape(self.utilization), bool)
+        ok = super().passes
+        if self.optional:
+            ok = ok | np.isnan(self.utilization)
+        return ok if self.applies is None else ok | ~self.applies
+
+    def applies_to(self, row: int) -> bool:
+        return True if self.applies is None else bool(self.applies[row])
+
+    def at(self, row: int, governs: bool = True):
+        """This check for one row; a row an optional check cannot be made for says why, and
+        decides nothing."""
+        check = super().at(row, governs and not self.informs)
+        if self.informs:
+            # The verdict it would give, shown though it decides nothing; none where it cannot be made.
+            made = check.utilization is not None
+            missing = self.missing if isinstance(self.missing, str) else self.missing[row]
+            return dataclasses.replace(check, passes=bool(within_rating(self.utilization[row])) if made else None,
+                                       not_made=None if made else missing)
+        if self.optional and check.utilization is None:
+            missing = self.missing if isinstance(self.missing, str) else self.missing[row]
+            return dataclasses.replace(check, passes=None, governs=False, not_made=missing)
+        return check
+
+    def reason(self, row: int) -> str:
+        """Why the row fails this check: the excess, the shortfall, or what is missing."""
+        if not self.made:
+            return f"{self.text}: not checked, {self.not_made}"
+        u = self.utilization[row]
+        if np.isnan(u):
+            missing = self.missing if isinstance(self.missing, str) else self.missing[row]
+            return f"{self.text}: not checked, {missing}"
+        if self.lower_bound:
+            return (
+                f"{self.text}: {fmt(self.rated[row], self.unit)} is below the least {fmt(self.required[row], self.unit)}, "
+                f"{sig(100 * (1 - 1 / u), 3)} % short"
+            )
+        return super().reason(row)
+
+
+@dataclass(frozen=True)
+class DriveTrain:
+    """The drive train around the coupling (:mod:`calc.domain.torsion`), every member referred to the
+    coupling's shaft: ``drive`` the members before it, ``load`` those after it, drive to load.
+    ``missing`` names the members the case does not give; the chain is then incomplete, and the
+    check of its first mode is reported for information only. ``shaft`` says which shaft the
+    members are referred to."""
+
+    drive: tuple
+    load: tuple
+    missing: tuple = ()
+    shaft: str = "the coupling's shaft"
+
+    @property
+    def complete(self) -> bool:
+        return not self.missing
+
+
+@dataclass(kw_only=True)
+class CouplingCandidate(selection.Candidate):
+    """One coupling with its checks and key figures, as every output lists it."""
+
+    type: str
+    f_e: Value  # the two-mass natural frequency (no value where the catalog lacks C_T or J)
+    f_1: Value | None  # the drive train's first mode; None without the drive train
+    C_T: Value
+    temperature_factor: float
+    required_torque: Value  # M_N · K_ϑ
+    peak_torque_required: Value | None  # M_Smax; None without the start factor
+
+
+@dataclass
+class CouplingSelection(Selection):
+    """The candidate couplings, checked and ranked. Arrays run over the rows of ``catalog``."""
+
+    catalog: Catalog
+    M_N: object  # scalar quantity, before the temperature factor
+    T_op: object  # peak torque of normal operation, M_N with S_A = 1
+    temperature_factor: np.ndarray  # per row (1 for all but elastomer couplings)
+    M_Nt: object  # required torque per row
+    start_factor: float | None  # S_z at the case's starts per hour; None without a start-factor table
+    M_Smax: object  # peak torque with S_z and K_ϑ per row (elastomer couplings); None without S_z
+    C_T: object  # torsional stiffness per row (a line shaft's at the case's shaft distance)
+    J_A: object
+    J_L: object
+    f_e: object
+    checks: list
+    passes: np.ndarray
+    worst: np.ndarray  # highest utilization of the checks that apply (inf where one cannot be made)
+    order: np.ndarray
+    notes: list
+    drive_train: "DriveTrain | None" = None  # the members around the coupling, as the case gives them
+    chain: Chain | None = None  # the drive train lumped, its arrays over the rows (None without drive_train)
+    modes: object = None  # its natural frequencies per row, lowest first (quantity, rows × modes)
+
+    candidate_type = CouplingCandidate
+
+    def applies(self, check, row: int) -> bool:
+        return check.applies_to(row)
+
+    def row_fields(self, row: int) -> dict:
+        return dict(
+            type=self.row_type(row),
+            f_e=Value.of(self.f_e[row], "Hz"),
+            f_1=None if self.modes is None else Value.of(self.modes[row, 0], "Hz"),
+            C_T=Value.of(self.C_T[row], "N*m/rad"),
+            temperature_factor=float(self.temperature_factor[row]),
+            required_torque=Value.of(self.M_Nt[row], "N*m"),
+            peak_torque_required=None if self.M_Smax is None else Value.of(self.M_Smax[row], "N*m"),
+        )
+
+    def row_type(self, row: int) -> str:
+        return str(self.catalog.text["type"][row])
+
+
+def candidates_frame(selection: CouplingSelection):
+    """One row per candidate, best first, as a pandas DataFrame: verdict, the key figures and why.
+
+    Columns: ``rank``, ``part``, ``type``, ``verdict`` (PASS/FAIL), ``M_N·K_ϑ [N·m]``,
+    ``T_KN [N·m]``, ``f_e [Hz]`` (NaN where the catalog lacks C_T or J), ``worst utilization``
+    and ``reasons`` (each failed check; empty for a pass). Values are not rounded.
+    """
+    import pandas as pd
+
+    order = selection.order
+    return pd.DataFrame(
+        {
+            "rank": np.arange(1, len(order) + 1),
+            "part": selection.catalog.parts[order].astype(str),
+            "type": selection.catalog.text["type"][order].astype(str),
+            "verdict": np.where(selection.passes[order], "PASS", "FAIL"),
+            "M_N·K_ϑ [N·m]": selection.M_Nt[order].m_as("N*m"),
+            "T_KN [N·m]": selection.catalog["T_KN"][order].m_as("N*m"),
+            "f_e [Hz]": selection.f_e[order].m_as("Hz"),
+            "worst utilization": selection.worst[order],
+            "reasons": ["; ".join(selection.reasons(row)) for row in order],
+        }
+    )
+
+
+def _positive(q, where: str, what: str, unit: str):
+    if q is not None and not np.all(q.magnitude > 0):
+        raise CalcError(f"{where}: expected {what} above zero, found {fmt(q, unit)}")
+
+
+def _as_bore(value, where: str) -> Bore:
+    return value if isinstance(value, Bore) else parse_bore(value, where)
+
+
+def select_coupling(
+    catalog: Catalog,
+    accel_torque,
+    drive_inertia,
+    load_inertia,
+    excitation_frequency,
+    shaft_1,
+    shaft_2,
+    service_factor=DEFAULT_SERVICE_FACTOR,
+    temperature=None,
+    speed=None,
+    disengagement_torque=None,
+    shaft_distance=None,
+    temperature_factors=TEMPERATURE_FACTORS,
+    start_factors=None,
+    starts_per_hour=None,
+    drive_train: "DriveTrain | None" = None,
+    where: str = "coupling",
+    sources: dict | None = None,
+) -> CouplingSelection:
+    """Check every coupling of ``catalog`` (already narrowed to a type or a part) and rank them.
+
+    Checks, each with required, rated, utilization and verdict:
+
+    * torque: ``M_N · K_ϑ <= T_KN``, ``K_ϑ`` the temperature factor for elastomer couplings
+      (E9), 1 for the others; ``M_N = M_a · J_load / (J_load + J_drive) · S_A`` (E8);
+    * resonance: ``2 f_er <= f_e`` (E7), ``J_A`` and ``J_L`` each with half the coupling;
+    * with ``drive_train``, the first mode of the whole chain: ``2 f_er <= f_1``
+      (:mod:`calc.domain.torsion`), which sees the gearbox's spring the two-mass ``f_e`` leaves out;
+    * speed: ``n <= n_max`` (when ``speed`` is given);
+    * bores: ``d_min <= D <= d_max`` for each hub, on the nominal diameter;
+    * safety couplings: ``T_Amin <= T_A <= T_Amax`` and ``T_op <= T_A``, ``T_op`` the peak torque
+      of normal operation, ``M_N`` with ``S_A = 1`` (E10);
+    * line shafts: ``2 H <= A <= A_max``; ``C_T`` from the bellows and the tube of length
+      ``A - 2 H``;
+    * elastomer couplings, with a start-factor table: the peak torque ``T_S · S_z · K_ϑ <=
+      T_Kmax`` as KTR, R+W and Mayr size them, ``T_S`` the source's ``M_N`` (a drive-side shock
+      with ``S_A``), ``S_z`` the start factor at ``starts_per_hour``; a row without ``T_Kmax`` is
+      reported as not checked.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+    accel_torque : Quantity [torque] or None
+        ``M_a``, acceleration torque of the motor.
+    drive_inertia, load_inertia : Quantity [inertia] or None
+        ``J_drive`` and ``J_load`` without the coupling (with a coupling between motor and
+        gearbox, ``J_load`` is ``J_L / i² + J_1``, E8).
+
+        Any of these three may be None (the contract's partial cases): the checks that need it
+        (the torque checks ``T_KN``, ``T_Kmax``, ``T_op <= T_A`` need all three, the resonance
+        check the two inertias) are not made, naming the missing value as ``sources`` gives it
+        (by key; default ``<where>.<key>``), and no coupling is chosen; the others are made.
+    excitation_frequency : Quantity [frequency]
+        ``f_er`` of the drive (E7).
+    shaft_1, shaft_2 : Bore or str
+        The shafts as ordered (``"19 mm k6"``, see :func:`calc.domain.fits.parse_bore`).
+    service_factor : float or Quantity [dimensionless]
+        ``S_A`` (E8), 1 or more; default 2.5.
+    temperature : Quantity [temperature], optional
+        Operating temperature; needed when elastomer couplings are among the candidates.
+    speed : Quantity [speed], optional
+        Highest speed of the coupling.
+    disengagement_torque : Quantity [torque], optional
+        ``T_A``; only, and always, for safety couplings.
+    shaft_distance : Quantity [length], optional
+        ``A``; only, and always, for line shafts.
+    temperature_factors : calc.data.bands.BandTable
+        ``K_ϑ`` against temperature; default the source's table (E9).
+    start_factors : calc.data.bands.BandTable, optional
+        ``S_z`` against starts per hour (a maker's table); with it the ``T_Kmax`` check is made.
+    starts_per_hour : Quantity [1/time], optional
+        Starts per hour; needed with ``start_factors``.
+    drive_train : DriveTrain, optional
+        The members around the coupling. With it, each candidate is put in the chain (half its
+        inertia on each end of its spring, as for ``f_e``) and the chain's first mode is checked,
+        ``2 f_er <= f_1`` (:mod:`calc.domain.torsion`): governing where the chain is complete, for
+        information where the case leaves a member out.
+    where : str
+        Prefix of error messages (the case file and section).
+
+    Returns
+    -------
+    CouplingSelection
+
+    Examples
+    --------
+    The example case: motor 12 N·m, 4.2 kg·cm²; load 1500 kg·cm² through i = 10 plus the
+    gearbox's 0.93 kg·cm² gives J_load = 15.93 kg·cm² (E8):
+
+    >>> cat = load_catalog(resolve("couplings", None, "catalog"), SCHEMA)
+    >>> bellows = cat.rows(cat.text["type"] == "bellows")
+    >>> s = select_coupling(bellows, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"), Q_(15.93, "kg*cm**2"),
+    ...                     Q_(150, "Hz"), "19 mm k6", "16 mm h7", speed=Q_(3000, "rpm"))
+    >>> fmt(s.M_N, "N*m"), s.selected, fmt(s.f_e[cat.index("AKD-30", "part")], "Hz")
+    ('23.74 N·m', 'AKD-30', '1316 Hz')
+    """
+    if not len(catalog):
+        raise CalcError(f"{where}: no coupling to check, the catalog has no rows")
+    check_types(catalog)
+    types = catalog.text["type"]
+    is_el, is_safety, is_line = (types == "elastomer"), (types == "safety"), (types == "line-shaft")
+    n = len(catalog)
+    given = {"accel_torque": accel_torque, "drive_inertia": drive_inertia, "load_inertia": load_inertia}
+    absent = [(sources or {}).get(key, f"{where}.{key}") for key, value in given.items() if value is None]
+    absent_inertia = [(sources or {}).get(key, f"{where}.{key}") for key in ("drive_inertia", "load_inertia") if given[key] is None]
+    no_torque = "needs " + " and ".join(absent) if absent else None
+    no_inertia = "needs " + " and ".join(absent_inertia) if absent_inertia else None
+    M_a = Q_(math.nan, "N*m") if accel_torque is None else as_kind(accel_torque, "torque", f"{where}.accel_torque")
+    J_drive = Q_(math.nan, "kg*m**2") if drive_inertia is None else as_kind(drive_inertia, "inertia", f"{where}.drive_inertia")
+    J_load = Q_(math.nan, "kg*m**2") if load_inertia is None else as_kind(load_inertia, "inertia", f"{where}.load_inertia")
+    f_er = as_kind(excitation_frequency, "frequency", f"{where}.excitation_frequency")
+    S_A = as_kind(service_factor, "dimensionless", f"{where}.service_factor")
+    _positive(None if accel_torque is None else M_a, f"{where}.accel_torque", "a torque", "N*m")
+    _positive(None if drive_inertia is None else J_drive, f"{where}.drive_inertia", "an inertia", "kg*cm**2")
+    _positive(None if load_inertia is None else J_load, f"{where}.load_inertia", "an inertia", "kg*cm**2")
+    _positive(f_er, f"{where}.excitation_frequency", "a frequency", "Hz")
+    if not S_A.m_as("") >= 1:
+        raise CalcError(f"{where}.service_factor: expected a load factor S_A of 1 or more (E8), found {sig(S_A.m_as(''))}")
+    bore_1, bore_2 = _as_bore(shaft_1, f"{where}.shaft_1"), _as_bore(shaft_2, f"{where}.shaft_2")
+    if speed is not None:
+        speed = as_kind(speed, "speed", f"{where}.speed")
+        _positive(speed, f"{where}.speed", "a speed", "rpm")
+    T_A = None if disengagement_torque is None else as_kind(disengagement_torque, "torque", f"{where}.disengagement_torque")
+    A = None if shaft_distance is None else as_kind(shaft_distance, "length", f"{where}.shaft_distance")
+    _positive(T_A, f"{where}.disengagement_torque", "a torque", "N*m")
+    _positive(A, f"{where}.shaft_distance", "a distance", "mm")
+    _only_for(T_A, is_safety, types, "safety", f"{where}.disengagement_torque", "a disengagement torque T_A (E10)")
+    _only_for(A, is_line, types, "line-shaft", f"{where}.shaft_distance", "a distance between shafts")
+    if A is not None:
+        two_hubs = 2 * catalog["H"][is_line]
+        if not np.any(A >= two_hubs):
+            raise CalcError(
+                f"{where}.shaft_distance: {fmt(A, 'mm')} is shorter than the two hubs of every line shaft "
+                f"(2 H = {', '.join(fmt(h, 'mm') for h in two_hubs)}); expected A >= 2 H"
+            )
+
+    notes = []
+    K_T = np.ones(n)
+    if is_el.any():
+        if temperature is None:
+            raise CalcError(
+                f"{where}.temperature: elastomer couplings need the operating temperature for their factor (E9), found none; "
+                "give it, or a type that is not elastomer"
+            )
+        K_T = np.where(is_el, temperature_factor(temperature, temperature_factors, where=f"{where}.temperature"), 1.0)
+    elif temperature is not None:
+        temperature_factor(temperature, temperature_factors, where=f"{where}.temperature")  # checked, though no candidate uses it
+    S_z = None
+    if start_factors is not None:
+        if starts_per_hour is None:
+            raise CalcError(f"{where}.starts_per_hour: the start-factor table needs the number of starts per hour, found none")
+        S_z = float(start_factor(starts_per_hour, start_factors, f"{where}.starts_per_hour"))
+    elif starts_per_hour is not None:
+        raise CalcError(f"{where}.starts_per_hour: starts per hour are read against a start-factor table; give coupling.start_factors as well")
+
+    m_n = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=S_A)
+    t_op = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=Q_(1.0, ""))
+    m_nt = M_Nt(M_N=m_n, K_T=Q_(K_T, ""))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        j_a = J_A(J_drive=J_drive, J_K=catalog["J"])
+        j_l = J_L(J_load=J_load, J_K=catalog["J"])
+        # A line shaft's catalog C_T is its bellows alone; its own stiffness needs the tube's length.
+        c_line = np.full(n, np.nan)
+        if A is not None:
+            fits_in = A >= 2 * catalog["H"]
+            c_line = np.where(fits_in, C_T_line(C_B=catalog["C_T"], Z=Z(A=A, H=catalog["H"]), C_tube=catalog["C_tube"]).m_as("N*m/rad"), np.nan)
+        c_t = Q_(np.where(is_line, c_line, catalog["C_T"].m_as("N*m/rad")), "N*m/rad")
+        fe = f_e(C_T=c_t, J_A=j_a, J_L=j_l)
+        chain = modes = None
+        if drive_train is not None:
+            # Half the coupling on each end of its spring, as J_A and J_L take it (E7).
+            half = catalog["J"] / 2
+            chain = lumped((*drive_train.drive, Member("coupling", half, c_t, half), *drive_train.load), f"{where}: drive train")
+            modes = chain.natural_frequencies()
+
+    def full(q):
+        return q * np.ones(n)
+
+    def bore_checks(k: int, bore: Bore) -> list:
+        missing = f"the catalog gives no bore range for hub {k}"
+        return [
+            CouplingCheck(f"d_{k}min", "coupling", f"d_{k}min <= D_{k}", catalog[f"d_{k}min"], full(bore.nominal), "mm", None, missing, True),
+            CouplingCheck(f"d_{k}max", "coupling", f"D_{k} <= d_{k}max", full(bore.nominal), catalog[f"d_{k}max"], "mm", None, missing),
+        ]
+
+    no_c, no_j = np.isnan(c_t.magnitude), np.isnan(catalog["J"].magnitude)
+    empty = np.where(no_c & no_j, "torsional stiffness C_T and inertia J", np.where(no_c, "torsional stiffness C_T", "inertia J"))
+    def needs(what: str):
+        return np.where(
+            is_line & (A is None),
+            "a line shaft's stiffness needs coupling.shaft_distance",
+            np.char.add(np.char.add(f"{what} needs the coupling's ", empty.astype(str)), ", which the catalog leaves empty"),
+        )
+
+    no_f_e = needs("f_e")
+    checks = [
+        CouplingCheck(
+            "T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", ~(is_safety & np.isnan(catalog["T_KN"].magnitude)),
+            not_made=no_torque,
+        ),
+        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e, not_made=no_inertia),
+    ]
+    if modes is not None:
+        checks.append(
+            CouplingCheck("f_1", "coupling", "2 f_er <= f_1", full(f_e_min(f_er=f_er)), modes[:, 0], "Hz", None,
+                          needs("the first mode of the drive train"), informs=not drive_train.complete, not_made=no_inertia)
+        )
+        if not drive_train.complete:
+            notes.append(
+                f"the drive train's first mode f_1 is reported for information: the case does not give {', '.join(drive_train.missing)}"
+            )
+    m_smax = None
+    if S_z is not None:
+        m_smax = M_Smax(T_S=m_n, S_z=Q_(S_z, ""), K_T=Q_(K_T, ""))
+        checks.append(
+            CouplingCheck(
+                "T_Kmax", "coupling", "T_S · S_z · K_ϑ <= T_Kmax", m_smax, catalog["T_Kmax"], "N*m", is_el,
+                "the catalog gives no maximum torque T_Kmax", optional=True, not_made=no_torque,
+            )
+        )
+    elif is_el.any():
+        notes.append("coupling.start_factors not given: the peak-torque check T_S · S_z · K_ϑ <= T_Kmax of elastomer couplings is not made")
+    if speed is not None:
+        checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", full(speed), catalog["n_max"], "rpm", None, "the catalog gives no maximum speed"))
+    else:
+        notes.append("coupling.speed not given: the speed check n <= n_max is not made")
+    checks += bore_checks(1, bore_1) + bore_checks(2, bore_2)
+    if is_safety.any():
+        nan_torque = Q_(np.full(n, np.nan), "N*m")
+        t_a = nan_torque if T_A is None else full(T_A)
+        missing = "needs coupling.disengagement_torque (E10)"
+        checks += [
+            CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", is_safety, missing, True),
+            CouplingCheck("T_Amax", "coupling", "T_A <= T_Amax", t_a, catalog["T_Amax"], "N*m", is_safety, missing),
+            CouplingCheck("T_A", "coupling", "T_op <= T_A", full(t_op), t_a, "N*m", is_safety, missing, not_made=no_torque),
+        ]
+    if is_line.any():
+        a = Q_(np.full(n, np.nan), "mm") if A is None else full(A)
+        missing = "needs coupling.shaft_distance" if A is None else "the catalog gives no longest shaft distance A_max"
+        checks += [
+            CouplingCheck("A_min", "coupling", "2 H <= A", 2 * catalog["H"], a, "mm", is_line, "needs coupling.shaft_distance", True),
+            CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", is_line, missing),
+        ]
+    made = [c for c in checks if c.made]  # a check the case cannot feed decides no row (CouplingSelection.not_made)
+    passes = np.logical_and.reduce([c.passes for c in made])
+    # A row an optional check cannot be made for counts as unburdened by it (it decides nothing there).
+    utilizations = np.array(
+        [np.where(c.applies if c.applies is not None else True, np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0)
+         for c in made if not c.informs]
+    )
+    worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
+    size = catalog["T_KN"].m_as("N*m")
+    size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)  # a safety coupling rated by its T_A range alone
+    order = rank(passes, size, worst, catalog.parts, later=catalog.illustrative)
+    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes,
+                             drive_train, chain, modes)
+
+
+def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str) -> None:
+    """``value`` (T_A or A) is for couplings of one type: given, every candidate must be of that
+    type; not given, a catalog of that type alone cannot be checked."""
+    if value is not None and not rows_of_type.all():
+        others = sorted(set(types[~rows_of_type]))
+        raise CalcError(
+            f"{where}: {what} is for {type_name} couplings only, but the candidates include {', '.join(others)} couplings; "
+            f"set type = \"{type_name}\" or remove the key"
+        )
+    if value is None and rows_of_type.all():
+        raise CalcError(f"{where}: {type_name} couplings need {what}, found none")
+
+
+def order_lines(part: str, coupling_type: str, bores, disengagement_torque=None, shaft_distance=None) -> list[str]:
+    """The order text of a coupling, line by line, as the source's ordering examples write it.
+
+    Series and size, each shaft with its fit or limits and keyway (``D1 = 14 mm k6``), the
+    disengagement torque ``T_A`` for a safety coupling (E10), the distance between shafts for a
+    line shaft.
+
+    Examples
+    --------
+    >>> from calc.domain.fits import parse_bore
+    >>> order_lines("SKB-30", "safety", [parse_bore("19 mm k6")], disengagement_torque=Q_(25, "N*m"))
+    ['Safety coupling SKB-30', 'D1 = 19 mm k6', 'T_A (disengagement torque) = 25 N·m']
+    """
+    if coupling_type not in TYPES:
+        raise CalcError(f"coupling type: expected one of {', '.join(TYPES)}, found {coupling_type!r}")
+    if (disengagement_torque is not None) != (coupling_type == "safety"):
+        raise CalcError(f"{part}: a disengagement torque T_A is given for safety couplings, and only for them (E10)")
+    if (shaft_distance is not None) != (coupling_type == "line-shaft"):
+        raise CalcError(f"{part}: the distance between shafts is given for line shafts, and only for them")
+    lines = [f"{ORDER_TITLES[coupling_type]} {part}"]
+    lines += [f"D{k} = {bore.text}" for k, bore in enumerate(bores, start=1)]
+    if disengagement_torque is not None:
+        lines.append(f"T_A (disengagement torque) = {fmt(as_kind(disengagement_torque, 'torque', f'{part}: T_A'), 'N*m')}")
+    if shaft_distance is not None:
+        distance = as_kind(shaft_distance, "length", f"{part}: distance between shafts")
+        lines.append(f"Distance between shafts = {sig(distance.magnitude)} {distance.units:~}")  # in the unit given
+    return lines
+
+
+#: Where the coupling sits: ``input``, between motor and gearbox; ``output``, between gearbox and load.
+SIDES = ("input", "output")
+
+
+def check_types(catalog: Catalog) -> None:
+    """Each row's type is known and the row fills the columns its type needs; raises
+    :class:`CalcError` naming the file, row and column."""
+    types = catalog.text["type"]
+
+    def where(j):
+        return f"{catalog.path}, row {catalog.lines[j]} ({catalog.parts[j]})"
+
+    unknown = np.flatnonzero(~np.isin(types, TYPES))
+    if len(unknown):
+        j = unknown[0]
+        raise CalcError(f"{where(j)}, column type: expected one of {', '.join(TYPES)}, found {types[j]!r}")
+    for t, columns in _TYPE_NEEDS.items():
+        for column in columns:
+            empty = np.flatnonzero((types == t) & np.isnan(catalog[column].magnitude))
+            if len(empty):
+                raise CalcError(f"{where(empty[0])}, column {column}: a {t} coupling needs a value, found an empty cell")

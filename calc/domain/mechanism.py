@@ -1,0 +1,303 @@
+"""Mechanisms between the load and the gearbox output: a rotary table, a ball screw, a rack and
+pinion, a belt drive.
+
+A rotary table sits on the output: its angle is the output's. A linear mechanism turns the output
+through a transmission radius ``r`` (the load's travel per radian): ``r = p / (2π)`` of a screw of
+lead ``p``, ``r = d / 2`` of a pinion's pitch diameter or a pulley's diameter. Then
+
+* a distance as the output's angle ``φ_2 = s·rad / r`` (the radian of errata E15: one radian of
+  output moves the load by r), so the motion law runs at the output (:mod:`calc.domain.motion`), and
+  the load's acceleration ``a = α_2·r / rad``;
+* the force on the load: ``F = (m + m_c)·a + (m·sin θ − m_c)·g + s_v·(μ·m·g·cos θ + F_p)``, with
+  ``s_v`` the direction of motion (+1 forwards, −1 back, 0 at rest): inertia and gravity (up is
+  forwards) act always, friction and the process force oppose the motion while it moves; a
+  counterweight ``m_c`` hangs on a rope over the same lead or radius and travels as far as the load,
+  the other way and vertically (a reading): its mass accelerates with the load, its weight pulls
+  against the load's (on a vertical axis ``(m − m_c)·g``);
+* the output torque ``T_2 = F·r·η^(−d) + J_M·α_2 / rad + s_v·T_d``: the efficiency divides the force
+  torque while the drive drives (``d = +1``, power into the load) and multiplies it while the load
+  drives back (``d = −1``, at rest too: the load held against gravity pulls back through the
+  mechanism); ``J_M`` is the screw's, pinion's or pulley's own inertia, outside the efficiency;
+  ``T_d`` a drag torque at that shaft (a ball screw's preload, seals), against the motion while it
+  moves and outside the efficiency, none at rest;
+* the load's inertia at the output ``J_L = (m + m_c)·r² + J_M`` (no efficiency).
+
+A rotary table: ``T_2 = J_L·α_2 / rad + s_v·(T_f + T_p)``, its friction and process torque
+against the motion while it moves.
+
+These are a reading (``docs/case-format.md``, "Motion and mechanism"): g = 9.80665 m/s²; forces
+that oppose motion are positive while moving forwards.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.formula import Formula, Symbol
+from ..core.units import Q_
+
+#: The mechanism types a case may name.
+TYPES = ("rotary", "ball-screw", "rack-pinion", "belt")
+
+READING = "a reading (spec, Motion and mechanism)"
+
+RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad, and one radian of output moves the load by r; E15)", value="1 rad")
+g = Symbol("g", "g", "linear_acceleration", "m/s**2", "standard gravity", value="9.80665 m/s**2")
+
+p = Symbol("p", "p", "length", "mm", "lead of the screw: travel per revolution")
+d = Symbol("d", "d", "length", "mm", "pitch diameter of the pinion or diameter of the pulley")
+r = Symbol("r", "r", "length", "mm", "transmission radius: the load's travel per radian of the output")
+s = Symbol("s", "s", "length", "mm", "distance of the load")
+a = Symbol("a", "a", "linear_acceleration", "m/s**2", "acceleration of the load")
+m = Symbol("m", "m", "mass", "kg", "moved mass")
+m_c = Symbol("m_c", r"m_{c}", "mass", "kg", "counterweight, moving the other way")
+T_d = Symbol("T_d", r"T_{d}", "torque", "N*m", "drag torque at the screw, pinion or pulley shaft, against the motion while it moves")
+mu = Symbol("mu", r"\mu", "dimensionless", "", "friction coefficient of the guide")
+theta = Symbol("theta", r"\theta", "angle", "deg", "incline of the axis (90°: vertical, up is forwards)")
+F_p = Symbol("F_p", r"F_{p}", "force", "N", "process force, against the motion while it moves")
+s_v = Symbol("s_v", r"s_{v}", "dimensionless", "", "direction of motion: +1 forwards, −1 back, 0 at rest")
+d_P = Symbol("d_P", r"d_{P}", "dimensionless", "", "direction of power: +1 while the drive drives, −1 while the load drives back or is held")
+eta = Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the mechanism")
+J_M = Symbol("J_M", r"J_{M}", "inertia", "kg*cm**2", "own inertia of the screw, pinion or pulley")
+J_L_sym = Symbol("J_L", r"J_{L}", "inertia", "kg*cm**2", "inertia of the load at the gearbox output")
+alpha_2 = Symbol("alpha_2", r"\alpha_{2}", "angular_acceleration", "rad/s**2", "output acceleration")
+T_f = Symbol("T_f", r"T_{f}", "torque", "N*m", "friction torque of the table, against the motion while it moves")
+T_p = Symbol("T_p", r"T_{p}", "torque", "N*m", "process torque, against the motion while it moves")
+F_sym = Symbol("F", "F", "force", "N", "force on the load along its travel")
+
+r_lead = Formula(Symbol("r_lead", "r", "length", "mm", r.description), (p,), lambda sp, p: p / (2 * sp.pi), f"{READING}: a lead p per revolution of 2π rad")
+r_diameter = Formula(Symbol("r_diameter", "r", "length", "mm", r.description), (d,), lambda sp, d: d / 2, f"{READING}: the pitch circle's radius")
+
+phi_2 = Formula(
+    Symbol("phi_2", r"\varphi_{2}", "angle", "deg", "distance at the gearbox output"), (s, RADIAN, r),
+    lambda sp, s, rad, r: s * rad / r, f"{READING}; E15",
+)
+a_load = Formula(
+    Symbol("a_load", "a", "linear_acceleration", "m/s**2", a.description), (alpha_2, r, RADIAN),
+    lambda sp, alpha, r, rad: alpha * r / rad, f"{READING}; E15",
+)
+F = Formula(
+    F_sym, (m, m_c, a, g, theta, s_v, mu, F_p),
+    lambda sp, m, m_c, a, g, theta, s_v, mu, F_p: (m + m_c) * a + (m * sp.sin(theta) - m_c) * g + s_v * (mu * m * g * sp.cos(theta) + F_p),
+    f"{READING}: inertia, gravity on the incline, a counterweight, friction of the guide and the process force",
+)
+T_2_linear = Formula(
+    Symbol("T_2_linear", r"T_{2}", "torque", "N*m", "output torque of a linear mechanism"),
+    (F_sym, r, eta, d_P, J_M, alpha_2, RADIAN, s_v, T_d),
+    lambda sp, F, r, eta, d_P, J_M, alpha, rad, s_v, T_d: F * r * eta ** (-d_P) + J_M * alpha / rad + s_v * T_d,
+    f"{READING}: the efficiency divides while driving, multiplies while driven back; the drag outside it; E15",
+)
+J_L_linear = Formula(
+    Symbol("J_L_linear", r"J_{L}", "inertia", "kg*cm**2", "inertia of the load at the gearbox output"),
+    (m, m_c, r, J_M), lambda sp, m, m_c, r, J_M: (m + m_c) * r**2 + J_M,
+    f"{READING}: the moved masses (load and counterweight) reflected through r, no efficiency",
+)
+T_2_rotary = Formula(
+    Symbol("T_2_rotary", r"T_{2}", "torque", "N*m", "output torque of a rotary table"),
+    (J_L_sym, alpha_2, RADIAN, s_v, T_f, T_p),
+    lambda sp, J_L, alpha, rad, s_v, T_f, T_p: J_L * alpha / rad + s_v * (T_f + T_p),
+    f"{READING}; E15 (J·α = T·rad)",
+)
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A mechanism as the case gives it, quantities (checked by the case layer).
+
+    ``type`` is one of :data:`TYPES`. A rotary table has ``inertia``, ``friction_torque`` and
+    ``process_torque``; a linear one ``mass``, ``friction_coefficient``, ``incline``, ``force``,
+    ``eta``, its ``lead`` (ball screw) or ``diameter`` (pinion, pulley), the own inertia
+    ``own_inertia``, a ``counterweight`` and a ``drag_torque`` (None: none). ``holding_brake``: a
+    brake holds the load in a dwell (no torque there).
+    """
+
+    type: str
+    inertia: object = None
+    friction_torque: object = None
+    process_torque: object = None
+    mass: object = None
+    friction_coefficient: object = None
+    incline: object = None
+    force: object = None
+    eta: object = None
+    lead: object = None
+    diameter: object = None
+    own_inertia: object = None
+    counterweight: object = None
+    drag_torque: object = None
+    holding_brake: bool = False
+    bodies: tuple = ()  # calc.domain.inertia.Body of a rotary table, whose inertias are in ``inertia``
+    given_inertia: object = None  # the inertia the case gives besides the bodies
+
+    @property
+    def _counterweight(self):
+        return Q_(0.0, "kg") if self.counterweight is None else self.counterweight
+
+    @property
+    def _drag(self):
+        return Q_(0.0, "N*m") if self.drag_torque is None else self.drag_torque
+
+    @property
+    def linear(self) -> bool:
+        return self.type != "rotary"
+
+    @property
+    def distance_kind(self) -> str:
+        """What a move's distance must be: an angle on a table, a length on a linear axis."""
+        return "length" if self.linear else "angle"
+
+    def radius_step(self):
+        """The step giving r (linear types): ``p / (2π)`` of a screw, ``d / 2`` else."""
+        if self.type == "ball-screw":
+            return r_lead.step(p=self.lead)
+        return r_diameter.step(d=self.diameter)
+
+    @property
+    def radius(self):
+        return self.radius_step().result
+
+    def load_inertia_step(self):
+        """The step giving J_L, the load's inertia at the output (linear types)."""
+        return J_L_linear.step(m=self.mass, m_c=self._counterweight, r=self.radius, J_M=self.own_inertia)
+
+    @property
+    def load_inertia(self):
+        """J_L at the gearbox output [kg·cm²]."""
+        return self.load_inertia_step().result if self.linear else self.inertia.to("kg*cm**2")
+
+    def to_output(self, distance):
+        """A move's distance (an angle or a length) as the output's angle."""
+        if not self.linear:
+            return distance.to("deg")
+        return phi_2(s=distance, r=self.radius)
+
+    def to_load(self):
+        """The factor from the output's angle [rad] to the load's travel [m or rad] (SI floats)."""
+        return float(self.radius.m_as("m")) if self.linear else 1.0
+
+    def torque(self, speed: np.ndarray, acceleration: np.ndarray) -> np.ndarray:
+        """T_2 [N·m] at output speeds [rad/s] and accelerations [rad/s²] (SI float arrays): the
+        formulas of this module with the direction of motion from the speed's sign (0 at rest)
+        and, on a linear axis, the direction of power from the force's. Zero at rest where a
+        holding brake holds the load."""
+        s_v = np.sign(speed)
+        if self.linear:
+            r = self.to_load()
+            force = F.si(m=self._si(self.mass, "kg"), m_c=self._si(self._counterweight, "kg"), a=a_load.si(alpha_2=acceleration, r=r),
+                         theta=self._si(self.incline, "rad"), s_v=s_v, mu=self._si(self.friction_coefficient, ""), F_p=self._si(self.force, "N"))
+            d_power = np.where(force * speed > 0, 1.0, -1.0)
+            out = T_2_linear.si(F=force, r=r, eta=self._si(self.eta, ""), d_P=d_power, J_M=self._si(self.own_inertia, "kg*m**2"), alpha_2=acceleration,
+                                s_v=s_v, T_d=self._si(self._drag, "N*m"))
+        else:
+            out = T_2_rotary.si(J_L=self._si(self.inertia, "kg*m**2"), alpha_2=acceleration, s_v=s_v,
+                                T_f=self._si(self.friction_torque, "N*m"), T_p=self._si(self.process_torque, "N*m"))
+        out = np.broadcast_to(out, np.shape(speed)).astype(float)
+        if self.holding_brake:
+            out[speed == 0] = 0.0
+        return out
+
+    @staticmethod
+    def _si(q, unit: str) -> float:
+        return float(Q_(q).m_as(unit))
+
+    def steps(self, speed, acceleration) -> list:
+        """The steps of the output torque at one output speed and acceleration (quantities): the
+        force and the torque of a linear axis, the torque of a table. For the report and the
+        notebook; the direction of motion and of power as :meth:`torque` takes them."""
+        w = speed.m_as("rad/s")
+        s_v = Q_(float(np.sign(w)), "")
+        if not self.linear:
+            return [T_2_rotary.step(J_L=self.inertia, alpha_2=acceleration, s_v=s_v, T_f=self.friction_torque, T_p=self.process_torque)]
+        r_q = self.radius
+        acc = a_load.step(alpha_2=acceleration, r=r_q)
+        f = F.step(m=self.mass, m_c=self._counterweight, a=acc.result, theta=self.incline, s_v=s_v, mu=self.friction_coefficient, F_p=self.force)
+        d_power = Q_(1.0 if f.result.m_as("N") * w > 0 else -1.0, "")
+        t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration, s_v=s_v, T_d=self._drag)
+        return [acc, f, t]
+
+
+# -- another type for the same drive: the starting values of a mechanism changed in a review ----------
+
+m_equivalent = Formula(
+    Symbol("m_equivalent", "m", "mass", "kg", "moved mass of a linear axis with the table's inertia at the output"), (J_L_sym, r),
+    lambda sp, J_L, r: J_L / r**2, "the inverse of J_L = m·r² (no counterweight, no own inertia)",
+)
+T_d_equivalent = Formula(
+    Symbol("T_d_equivalent", r"T_{d}", "torque", "N*m", T_d.description), (T_f, T_p),
+    lambda sp, T_f, T_p: T_f + T_p, "the table's torques against the motion, at the same shaft",
+)
+J_L_equivalent = Formula(
+    Symbol("J_L_equivalent", r"J_{L}", "inertia", "kg*cm**2", "inertia of a table that needs the axis' torque to accelerate"), (m, m_c, r, eta, J_M),
+    lambda sp, m, m_c, r, eta, J_M: (m + m_c) * r**2 / eta + J_M, "T_2 while the drive accelerates the load: (m + m_c)·a·r / η + J_M·α_2",
+)
+T_f_equivalent = Formula(
+    Symbol("T_f_equivalent", r"T_{f}", "torque", "N*m", T_f.description), (mu, m, g, theta, r, eta, T_d),
+    lambda sp, mu, m, g, theta, r, eta, T_d: mu * m * g * sp.cos(theta) * r / eta + T_d, "the guide's friction and the drag while the drive drives",
+)
+T_p_equivalent = Formula(
+    Symbol("T_p_equivalent", r"T_{p}", "torque", "N*m", T_p.description), (F_p, r, eta),
+    lambda sp, F_p, r, eta: F_p * r / eta, "the process force while the drive drives",
+)
+
+
+def radius_of(type_: str, size):
+    """The transmission radius of a linear type from its lead (a screw) or diameter."""
+    return r_lead(p=size) if type_ == "ball-screw" else r_diameter(d=size)
+
+
+def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[str]]:
+    """A mechanism of ``type_`` in place of ``mech`` (a linear one of lead or diameter ``size``),
+    and what it leaves out, in words: the starting values of a design whose mechanism changes.
+
+    * Table to linear axis: the same motion and torques at the gearbox output. The moved mass has
+      the table's inertia at the output (``m = J_L / r²``, η = 1, no friction of the guide) and
+      the table's friction and process torque are the drag at the shaft.
+    * Linear axis to table: the torques the drive gives while it drives: ``J_L = (m + m_c)·r² / η
+      + J_M``, friction ``μ·m·g·cos θ·r / η + T_d``, process ``F_p·r / η``. Gravity on an incline
+      and the counterweight's weight pull one way only, which a table's torques cannot: left out.
+    * Linear axis to another: the same carriage (mass, forces, efficiency, own inertia) on the
+      new drive of radius ``size``.
+
+    A move's distance follows :func:`converted_distance`.
+
+    >>> table = Mechanism("rotary", inertia=Q_(1500, "kg*cm**2"), friction_torque=Q_(3, "N*m"), process_torque=Q_(0, "N*m"))
+    >>> screw, left = converted(table, "ball-screw", Q_(20, "mm"))
+    >>> round(screw.mass.m_as("kg"), 2), screw.drag_torque, float(screw.load_inertia.m_as("kg*cm**2")), left  # 0.15 / (0.02 / 2π)²
+    (14804.41, <Quantity(3, 'newton * meter')>, 1500.0, [])
+    """
+    zero = {"incline": Q_(0.0, "deg"), "force": Q_(0.0, "N"), "counterweight": Q_(0.0, "kg")}
+    size_key = {"lead": size} if type_ == "ball-screw" else {"diameter": size}
+    if not mech.linear and type_ == "rotary":
+        return mech, []
+    if not mech.linear:
+        r_new = radius_of(type_, size)
+        return Mechanism(type_, holding_brake=mech.holding_brake, mass=m_equivalent(J_L=mech.load_inertia, r=r_new).to("kg"),
+                         friction_coefficient=Q_(0.0, ""), eta=Q_(1.0, ""), own_inertia=Q_(0.0, "kg*cm**2"),
+                         drag_torque=T_d_equivalent(T_f=mech.friction_torque, T_p=mech.process_torque), **zero, **size_key), []
+    r_old, eta_old, incline = mech.radius, mech.eta, Q_(0.0, "deg") if mech.incline is None else mech.incline
+    if type_ != "rotary":
+        return Mechanism(type_, **{k: getattr(mech, k) for k in ("mass", "friction_coefficient", "incline", "force", "eta", "own_inertia",
+                                                                  "counterweight", "drag_torque", "holding_brake")}, **size_key), []
+    mu_ = Q_(0.0, "") if mech.friction_coefficient is None else mech.friction_coefficient
+    own = Q_(0.0, "kg*cm**2") if mech.own_inertia is None else mech.own_inertia
+    table = Mechanism("rotary", holding_brake=mech.holding_brake,
+                      inertia=J_L_equivalent(m=mech.mass, m_c=mech._counterweight, r=r_old, eta=eta_old, J_M=own).to("kg*cm**2"),
+                      friction_torque=T_f_equivalent(mu=mu_, m=mech.mass, theta=incline, r=r_old, eta=eta_old, T_d=mech._drag).to("N*m"),
+                      process_torque=T_p_equivalent(F_p=Q_(0.0, "N") if mech.force is None else mech.force, r=r_old, eta=eta_old).to("N*m"))
+    pulling = (mech.mass * np.sin(incline.m_as("rad")) - mech._counterweight).m_as("kg")
+    left = [] if pulling == 0 else [f"gravity pulling one way ((m·sin θ − m_c)·g = {pulling * 9.80665:.4g} N on the load): a table's torques oppose the motion"]
+    if mech.force is not None and mech.force.m_as("N") < 0:
+        left.append("a process force that drives the load (negative) is taken as one against it")
+    return table, left
+
+
+def converted_distance(old: Mechanism, new: Mechanism, distance):
+    """A move's distance for the mechanism ``new`` that replaced ``old`` (:func:`converted`): the
+    same travel of the carriage from one linear axis to another, else the same angle of the
+    gearbox output."""
+    if old.linear and new.linear:
+        return distance
+    angle = old.to_output(distance)
+    return angle.to("deg") if not new.linear else (angle.to("rad").magnitude * new.radius).to("mm")

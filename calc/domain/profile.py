@@ -1,0 +1,248 @@
+"""Load profile, duty cycle and operating mode (source: "Determination of the Duty Cycle").
+
+A profile is any number of segments in time order, each an ``accel``, ``const``, ``decel`` or
+``pause`` phase with its duration, mean output speed ``n_2`` and output torque ``T_2``. The moving
+segments are every segment but the pauses.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.errors import CalcError
+from ..core.checks import BOUNDARY_RTOL
+from .cycle import PAUSE, PHASES
+from ..core.formula import Formula, Symbol, segment_sum
+from ..core.units import Q_, as_kind
+
+#: E3: S5 needs ED below this and an on-time below :data:`S5_MAX_ON_TIME`.
+S5_MAX_ED = Q_(60, "percent")
+S5_MAX_ON_TIME = Q_(20, "min")
+
+t_on = Symbol("t_on", r"t_{\mathrm{on}}", "time", "s", "on-time, t_a + t_c + t_d (moving segments)")
+t_cycle = Symbol("t_cycle", r"t_{\mathrm{cycle}}", "time", "s", "cycle time, pauses included")
+t_k = Symbol("t_k", "t_{k}", "time", "s", "duration of moving segment k", per_segment=True)
+n_2k = Symbol("n_2k", "n_{2,k}", "speed", "rpm", "mean output speed of moving segment k", per_segment=True)
+T_2k = Symbol("T_2k", "T_{2,k}", "torque", "N*m", "output torque of moving segment k", per_segment=True)
+
+ED = Formula(
+    Symbol("ED", r"\mathrm{ED}", "dimensionless", "percent", "duty cycle"),
+    (t_on, t_cycle),
+    lambda sp, t_on, t_cycle: t_on / t_cycle,
+    "source, Determination of the Duty Cycle; errata E3",
+)
+
+n_2m = Formula(
+    Symbol("n_2m", "n_{2m}", "speed", "rpm", "mean output speed"),
+    (n_2k, t_k),
+    lambda sp, n, t: segment_sum(sp.Mul(abs(n), t, evaluate=False)) / segment_sum(t),  # the source's order
+    "source, S1 calculation 1; errata E2 (any number of segments, moving time only)",
+)
+
+T_2m = Formula(
+    Symbol("T_2m", "T_{2m}", "torque", "N*m", "cubic mean output torque"),
+    (n_2k, t_k, T_2k),
+    lambda sp, n, t, T: sp.cbrt(
+        segment_sum(sp.Mul(abs(n), t, abs(T) ** 3, evaluate=False)) / segment_sum(sp.Mul(abs(n), t, evaluate=False))
+    ),
+    "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes; the exponent 3 is the rolling-bearing "
+    "life exponent of ISO 281 and the gearbox makers' convention for T_2m, not a gear fatigue exponent: gear S-N curves are "
+    "much steeper, ISO 6336)",
+)
+
+Z_h = Formula(
+    Symbol("Z_h", "Z_{h}", "per_hour", "1/hour", "number of cycles per hour"),
+    (t_cycle,),
+    lambda sp, t_cycle: 1 / t_cycle,
+    "source, S5 calculation 1 (Z_h = 3600 / t_cycle with t_cycle in s)",
+)
+
+
+@dataclass(frozen=True)
+class Profile:
+    """The output-side load cycle: one entry per segment, arrays in time order.
+
+    ``speeds`` and ``torques`` are zero in pauses. Build one with :meth:`from_segments`.
+    """
+
+    phases: tuple[str, ...]
+    durations: object  # Quantity array [s]
+    speeds: object  # Quantity array [rpm]
+    torques: object  # Quantity array [N*m]
+
+    @classmethod
+    def from_segments(cls, segments, where: str = "profile") -> "Profile":
+        """Build a profile from ``(phase, duration, speed, torque)`` tuples of quantities.
+
+        A pause takes ``None`` for speed and torque. Raises :class:`CalcError` naming the segment
+        for an unknown phase, a duration that is not positive, a pause with a speed or a torque,
+        or a moving segment without them.
+        """
+        segments = list(segments)
+        if not segments:
+            raise CalcError(f"{where}: expected at least one segment, found none")
+        phases, durations, speeds, torques = [], [], [], []
+        for k, seg in enumerate(segments, start=1):
+            phase, duration, speed, torque = seg
+            at = f"{where}[{k}]"
+            if phase not in PHASES:
+                raise CalcError(f"{at}.phase: expected one of {', '.join(PHASES)}, found {phase!r}")
+            d = as_kind(duration, "time", f"{at}.duration").m_as("s")
+            if not d > 0:
+                raise CalcError(f"{at}.duration: expected a duration above zero, found {duration:~P}")
+            if phase == "pause":
+                if speed is not None or torque is not None:
+                    raise CalcError(f"{at}: a pause takes only a duration, found a {'speed' if speed is not None else 'torque'}")
+                n, T = 0.0, 0.0
+            else:
+                if speed is None or torque is None:
+                    raise CalcError(f"{at}: a {phase} segment needs a {'speed' if speed is None else 'torque'}, found none")
+                n = as_kind(speed, "speed", f"{at}.speed").m_as("rpm")
+                T = as_kind(torque, "torque", f"{at}.torque").m_as("N*m")
+            phases.append(phase)
+            durations.append(d)
+            speeds.append(n)
+            torques.append(T)
+        if not any(p != "pause" for p in phases):
+            raise CalcError(f"{where}: expected at least one moving segment (accel, const or decel), found only pauses")
+        if not any(n != 0 for n in speeds):
+            # n_2m would be 0 and T_2m = 0 / 0: the S1 means weight each torque by its speed.
+            raise CalcError(f"{where}: expected a moving segment with a speed other than zero (n_2m weights each torque by its speed), found every speed zero")
+        return cls(
+            tuple(phases),
+            Q_(np.array(durations, float), "s"),
+            Q_(np.array(speeds, float), "rpm"),
+            Q_(np.array(torques, float), "N*m"),
+        )
+
+    @property
+    def moving(self) -> np.ndarray:
+        """Boolean mask of the moving segments (every phase but pause)."""
+        return np.array([p != "pause" for p in self.phases])
+
+    @property
+    def t_on(self):
+        """On-time ``t_a + t_c + t_d``: the total of the moving segments."""
+        return self.durations[self.moving].sum()
+
+    @property
+    def t_cycle(self):
+        """Cycle time: every segment, pauses included (E3); summed as on-time plus pauses, so that
+        the duty cycle never rounds above 1."""
+        return self.t_on + self.durations[~self.moving].sum()
+
+    @property
+    def n_2max(self):
+        """Highest output speed of the cycle, in magnitude (E5)."""
+        return abs(self.speeds).max()
+
+    def moving_values(self) -> dict:
+        """The per-segment inputs of the S1 formulas, moving segments only."""
+        m = self.moving
+        return {"n_2k": self.speeds[m], "t_k": self.durations[m], "T_2k": self.torques[m]}
+
+    def to_frame(self):
+        """The segments as a pandas DataFrame, units in the column names (for display).
+
+        >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+        >>> f = p.to_frame()
+        >>> list(f.columns)
+        ['segment', 'phase', 'duration t [s]', 'mean output speed n_2 [rpm]', 'output torque T_2 [N·m]']
+        >>> f["duration t [s]"].tolist(), f["mean output speed n_2 [rpm]"].tolist()
+        ([1.0, 1.0], [100.0, 0.0])
+        """
+        import pandas as pd
+
+        return pd.DataFrame(
+            {
+                "segment": np.arange(1, len(self.phases) + 1),
+                "phase": self.phases,
+                "duration t [s]": np.asarray(self.durations.m_as("s"), dtype=float),
+                "mean output speed n_2 [rpm]": np.asarray(self.speeds.m_as("rpm"), dtype=float),
+                "output torque T_2 [N·m]": np.asarray(self.torques.m_as("N*m"), dtype=float),
+            }
+        )
+
+
+def operating_mode(duty_cycle, on_time) -> str:
+    """``"S5"`` if and only if ``ED < 60 %`` and ``t_on < 20 min``; every other case ``"S1"`` (E3).
+
+    A value within :data:`BOUNDARY_RTOL` below a boundary counts as on it (rounding of sums).
+
+    >>> operating_mode(Q_(50, "percent"), Q_(1, "s")), operating_mode(Q_(60, "percent"), Q_(1, "s"))
+    ('S5', 'S1')
+    >>> operating_mode(Q_((0.6 + 0.7 + 0.2) / 2.5, ""), Q_(1.5, "s"))  # 1.5 s of 2.5 s is 60 %
+    'S1'
+    """
+    ed = as_kind(duty_cycle, "dimensionless", "duty_cycle").m_as("")
+    t = as_kind(on_time, "time", "on_time").m_as("s")
+    below = 1 - BOUNDARY_RTOL
+    return "S5" if (ed < S5_MAX_ED.m_as("") * below and t < S5_MAX_ON_TIME.m_as("s") * below) else "S1"
+
+
+@dataclass(frozen=True)
+class Duty:
+    """Duty cycle of a profile: on-time, cycle time, ED and the operating mode (E3)."""
+
+    t_on: object
+    t_cycle: object
+    ED: object
+    mode: str
+
+
+def duty(profile: Profile) -> Duty:
+    """Duty cycle and operating mode of a profile.
+
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> d = duty(p); (float(d.ED.m_as("percent")), d.mode)
+    (50.0, 'S5')
+    """
+    ed = ED(t_on=profile.t_on, t_cycle=profile.t_cycle)
+    return Duty(profile.t_on, profile.t_cycle, ed, operating_mode(ed, profile.t_on))
+
+
+@dataclass(frozen=True)
+class Segments:
+    """The seed's segments of a sampled cycle (SI floats): phase code (:data:`PHASES`), duration
+    [s], mean speed [rad/s] and the torque [N·m] that gives the segment's cubic mean
+    (:func:`segments`)."""
+
+    phase: np.ndarray
+    duration: np.ndarray
+    speed: np.ndarray
+    torque: np.ndarray
+
+
+def segments(s, torque: np.ndarray) -> Segments:
+    """The seed's segments (accel, const, decel, pause) of a sampled cycle ``s`` (a
+    :class:`calc.domain.motion.Samples`: ``dt``, ``speed``, contiguous ``segment`` numbers, their
+    ``durations`` and ``segment_phases``) and its torque per sample.
+
+    For a moving segment k: ``t_k = ∫dt``, ``n_k = ∫n dt / t_k`` and the torque ``T_k`` whose
+    ``|n_k|·t_k·|T_k|³`` equals ``∫|n|·|T|³ dt``: :data:`T_2m` over the segment's samples, with the
+    sign of ``∫|n|·T³ dt``. So the S1 means of the segments (:data:`n_2m`, :data:`T_2m`) are the
+    integrals over the sampled cycle, whether the torque is constant in a phase (a trapezoid:
+    exactly its value) or varies (an S-curve). A pause's torque is its mean (the torque that holds
+    the load).
+
+    >>> from calc.domain.motion import Move, sample
+    >>> s = sample([Move(1.0, 1.0, 0.5, 0.5)], samples=100)   # a triangle: peak 2 rad/s, ±4 rad/s²
+    >>> g = segments(s, 2.0 * s.acceleration)                 # T = J·α with J = 2 kg·m²
+    >>> [PHASES[p] for p in g.phase], g.duration.round(12).tolist(), g.speed.round(12).tolist(), g.torque.round(12).tolist()
+    (['accel', 'decel'], [0.5, 0.5], [1.0, 1.0], [8.0, -8.0])
+    """
+    dt, v, T = s.dt, s.speed, np.asarray(torque, dtype=float)
+    duration, phase = s.durations, s.segment_phases
+    starts = np.searchsorted(s.segment, np.arange(len(duration)))
+    ends = np.r_[starts[1:], len(dt)]
+    speed = np.add.reduceat(v * dt, starts) / duration
+    out = np.add.reduceat(T * dt, starts) / duration  # a pause: the mean torque
+    for k in np.flatnonzero(phase != PAUSE):
+        at = slice(starts[k], ends[k])
+        magnitude = T_2m.si(n_2k=v[at], t_k=dt[at], T_2k=T[at])
+        out[k] = np.sign(np.sum(np.abs(v[at]) * dt[at] * T[at] ** 3)) * magnitude
+    speed[phase == PAUSE] = 0.0
+    return Segments(phase, duration, speed, out)
+

@@ -1,0 +1,167 @@
+"""The best ratio: a case evaluated at every ratio a gearbox catalog offers, all at once.
+
+Every row of the catalog is checked in one :func:`calc.domain.gearbox.select_gearbox` (each row at its
+own ratio: the formulas run over the rows); the best row of each ratio is the one the ranking of
+:mod:`calc.domain.gearbox` puts first among the rows of that ratio, so the one an evaluation of the case
+at that ratio would choose. The motor torque through each ratio's best gearbox over the whole
+cycle is one array (ratios × samples, :func:`calc.domain.motor.motor_load`), and the motor's checks
+(:func:`calc.domain.motor.motor_checks`) run over the ratios.
+
+A ratio is **feasible** when its best gearbox passes its governing checks and the motor passes
+each of its checks that the case gives a rating for.
+
+Rule for the ratio to pick (:data:`RULE`): among the feasible ratios whose load to motor inertia
+ratio ``λ = (J_1 + J_L / i²) / J_motor`` (E6, the gearbox's own inertia counted, as the motor
+feels it) is at most :data:`INERTIA_RATIO_LIMIT`, the one of lowest RMS motor torque (the motor's
+thermal load, which decides the size of a motor on a cyclic axis; at a given motor, the lowest RMS
+utilization); a tie goes to the lower ratio (lower speeds). If no feasible ratio keeps ``λ``
+within the limit, the feasible ratio of lowest ``λ``; where ``λ`` is not known (no inertias), the
+RMS rule alone. No feasible ratio: no pick.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..data.catalog import Catalog
+from ..core.checks import within_rating
+from .gearbox import GearboxSelection, n_1, select_gearbox
+from .motor import MotorLoad, OutputLoad, motor_checks, motor_load
+from .profile import Profile
+from ..core.units import fmt, sig
+
+#: E6: servo practice keeps the load to motor inertia ratio below roughly 5 to 10; the upper end.
+INERTIA_RATIO_LIMIT = 10.0
+
+RULE = (
+    "among the feasible ratios (best gearbox and motor pass) whose inertia ratio λ = (J_1 + J_L / i²) / J_motor is at "
+    f"most {INERTIA_RATIO_LIMIT:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within the "
+    "limit, the feasible ratio of lowest λ"
+)
+
+
+@dataclass
+class RatioSearch:
+    """The best gearbox of each ratio of a catalog, the motor through it, and the ratio to pick.
+
+    Arrays run over :attr:`ratios` (ascending) unless said otherwise.
+    """
+
+    selection: GearboxSelection  # every row of the catalog, each at its own ratio
+    ratios: np.ndarray
+    rows: np.ndarray  # the best row of each ratio, an index into the catalog
+    load: MotorLoad | None  # T_1 of shape (ratios, samples); None where the torques cannot be computed
+    speed: object  # highest motor speed n_2max · i
+    motor: list  # CheckArray over the ratios, one per motor rating given
+    inertia_ratio: np.ndarray  # λ of each ratio's best row (NaN where not known)
+    gearbox_passes: np.ndarray
+    feasible: np.ndarray
+    utilization: np.ndarray  # highest governing utilization of gearbox and motor
+    pick: int | None  # index into ratios
+    reason: str
+    notes: list  # what the motor torques count or lack
+
+    @property
+    def parts(self) -> np.ndarray:
+        return self.selection.catalog.parts[self.rows]
+
+    def gearbox_reasons(self, k: int) -> list[str]:
+        """Why the best gearbox of ratio ``k`` fails (empty when it passes)."""
+        return self.selection.reasons(int(self.rows[k]))
+
+    def motor_reasons(self, k: int) -> list[str]:
+        return [c.reason(k) for c in self.motor if not c.passes[k]]
+
+
+def best_rows(selection: GearboxSelection) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct ratios of the selection's catalog (ascending) and, for each, the row ranked
+    first among the rows of that ratio."""
+    ratio = selection.catalog["ratio"].m_as("")
+    ratios, group = np.unique(ratio, return_inverse=True)
+    ranked_groups = group[selection.order]
+    _, first = np.unique(ranked_groups, return_index=True)  # first place of each ratio in the ranking
+    return ratios, selection.order[first]
+
+
+def search_ratios(
+    catalog: Catalog,
+    profile: Profile,
+    load: OutputLoad,
+    rated_torque=None,
+    max_speed=None,
+    rotor_inertia=None,
+    hubs: Catalog | None = None,
+    **selection,
+) -> RatioSearch:
+    """Evaluate the case at every ratio of ``catalog`` (its rankable rows, every ratio).
+
+    ``profile`` gives the duty and the gearbox's checks; ``load`` the cycle at the output for the
+    motor's side (a sampled cycle with its accelerations counts the rotor and gearbox inertia;
+    typed segments leave the rotor term out). ``rotor_inertia(J_1)``, where given, turns the
+    gearboxes' ``J_1`` into what the rotor term counts beside the motor's own: ``(J_1, ...,
+    what it lacks or None, notes)`` (a motor-side coupling's inertia added). ``hubs`` and the
+    keyword arguments ``selection`` are those of :func:`calc.domain.gearbox.select_gearbox`;
+    ``rated_torque`` and ``max_speed`` those of :func:`calc.domain.motor.motor_checks`. A ratio whose
+    best gearbox gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible
+    (a note says so).
+    """
+    motor_peak_torque, motor_inertia = selection.get("motor_peak_torque"), selection.get("motor_inertia")
+    if catalog.partial.any():  # partial rows are never ranked (no copy of a catalog without them)
+        catalog = catalog.rows(np.flatnonzero(~catalog.partial))
+    sel = select_gearbox(profile, catalog, hubs=hubs, **selection)
+    ratios, rows = best_rows(sel)
+    i, eta = catalog["ratio"][rows], catalog["eta"][rows]
+    missing, J_1, notes = None, None, []
+    if load.sampled:
+        J_1 = sel.J_1[rows]  # for the clamping hub the motor's shaft picks
+        if rotor_inertia is not None:
+            J_1, _, missing, notes = rotor_inertia(J_1)
+        elif motor_inertia is None:
+            missing = "the rotor term (J_motor + J_1) · α_1 needs the motor's inertia (motor.inertia)"
+        lacking = [str(p) for p, j in zip(catalog.parts[rows], J_1.magnitude) if np.isnan(j)]
+        if lacking and missing is None:
+            notes = [*notes, f"the catalog gives no J_1 for {', '.join(lacking)}: the motor torque through them is not known, so their ratios are not feasible"]
+    torques = None
+    if missing is None:
+        torques = motor_load(load.dt, load.torque, load.speed, i[:, None], eta[:, None], load.alpha_2, motor_inertia,
+                             None if J_1 is None else J_1[:, None])
+    speed = n_1(n_2=load.n_2max, i=i)
+    motor = motor_checks(speed, None if torques is None else torques.peak, None if torques is None else torques.rms,
+                         motor_peak_torque, rated_torque, max_speed, not_made=missing)
+    gearbox_passes = sel.passes[rows] & (not sel.not_made)
+    feasible = gearbox_passes & np.logical_and.reduce([c.passes for c in motor], initial=True)
+    # rows without T_2Not and a catalog's missing figures leave NaN: fmax ranks on the others
+    utilization = np.fmax.reduce([sel.worst[rows], *[c.utilization for c in motor]], axis=0)
+    lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
+    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, [c.not_made for c in sel.not_made + motor if c.not_made])
+    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick, reason, notes)
+
+
+def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str]) -> tuple[int | None, str]:
+    """The ratio to pick by :data:`RULE` (an index into ``ratios``) and why, in one sentence."""
+    if not feasible.any():
+        why = "; ".join(dict.fromkeys(not_made)) if not_made else "at no ratio do the best gearbox and the motor pass"
+        return None, f"No ratio can be picked: {why}."
+    rms = np.zeros(len(ratios)) if torques is None else torques.rms.m_as("N*m")  # unknown: the ratio decides
+
+    def lowest_rms(k):
+        return "the lowest ratio (the motor torque is not known)" if torques is None else f"the lowest RMS motor torque, {fmt(torques.rms[k], 'N*m')}"
+
+    known = ~np.isnan(inertia_ratio)
+    within = feasible & known & within_rating(inertia_ratio / INERTIA_RATIO_LIMIT)
+    n = int(feasible.sum())
+    head = f"{n} of {len(ratios)} ratios are feasible"
+    if within.any():
+        k = int(np.lexsort((ratios, np.where(within, rms, np.inf)))[0])
+        why = f"{head}, {int(within.sum())} of them with λ <= {INERTIA_RATIO_LIMIT:g}; of these it needs {lowest_rms(k)}"
+        if within.sum() == 1:
+            why = f"{head}, and only this one keeps λ <= {INERTIA_RATIO_LIMIT:g} (λ = {sig(inertia_ratio[k], 3)})"
+    elif (feasible & known).any():
+        k = int(np.lexsort((ratios, np.where(feasible & known, inertia_ratio, np.inf)))[0])
+        why = f"{head}, none with λ <= {INERTIA_RATIO_LIMIT:g}; it has the lowest, λ = {sig(inertia_ratio[k], 3)}"
+    else:
+        k = int(np.lexsort((ratios, np.where(feasible, rms, np.inf)))[0])
+        why = f"{head}; the inertia ratio is not known (motor.inertia and load.inertia), and it needs {lowest_rms(k)}"
+    return k, f"Ratio {ratios[k]:g} ({parts[k]}): {why}."

@@ -1,0 +1,260 @@
+"""Reading a design-case file (TOML, ``docs/case-format.md``).
+
+The file is parsed by the standard library's ``tomllib``; every dimensional value is a string
+parsed by :func:`calc.core.units.parse_quantity` and checked for its kind. Nothing is evaluated. Each
+error names the file and the key (``profile[2].duration``).
+
+Each section declares the tables and keys it reads once (:class:`Key`, :class:`Declared`); the
+reader (:class:`Table`) takes a key's kind and default from there, and the report's inputs, the
+design review's inputs and the format document (checked by the tests) follow the same declaration.
+"""
+
+from __future__ import annotations
+
+import tomllib
+import unicodedata
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..core.errors import CalcError
+from ..domain.profile import Profile
+from ..core.units import kind_phrase, parse_quantity
+
+
+@dataclass(frozen=True)
+class Key:
+    """One key of a case file's table, declared once by the section that reads it.
+
+    ``kind`` is a quantity kind of :mod:`calc.core.units` (``"torque"``) or one of :data:`OTHER_KINDS`;
+    ``symbol`` the source document's symbol in code form (``"T_1B"``) where the key has one;
+    ``default`` the value as a case file would write it, which the reader takes when the key is
+    left out (None: none, or one the description states because it comes from the rest of the
+    case); ``unit`` the unit the report and the design review show it in; ``only`` the types of
+    a typed table (a mechanism's) the key belongs to, empty for every type; ``keys`` the keys of
+    an inline table or of each table of an array."""
+
+    name: str
+    kind: str
+    description: str
+    symbol: str = ""
+    default: object = None
+    unit: str = ""
+    only: tuple = ()
+    keys: tuple = ()
+
+
+#: Kinds of keys that are not quantities: what a case file writes for them.
+OTHER_KINDS = {
+    "text": "a text in quotes",
+    "choice": "one of the texts the description lists",
+    "catalog": "a catalog name or path, or a list of them ranked together",
+    "factor table": "a factor table's name (catalogs/factors) or a path to a CSV file",
+    "file": "a path to a CSV file, relative to the case file",
+    "bore": "a shaft with its fit, metric (ISO 286) or inch",
+    "flag": "true or false",
+    "table": "an inline table of the keys below",
+    "tables": "an array of tables ([[...]]) of the keys below",
+    "angle or length": "an angle, or with accuracy.radius a length at that radius",
+    "distance": "an angle (a rotary mechanism) or a length (a linear one)",
+}
+
+
+@dataclass(frozen=True)
+class Declared:
+    """A top-level table of a case file as a section declares it: its name, its keys, whether it
+    is an array of tables (``[[profile]]``) and what it holds."""
+
+    name: str
+    keys: tuple
+    description: str
+    array: bool = False
+
+    def key(self, name: str) -> Key:
+        return next(k for k in self.keys if k.name == name)
+
+
+def key_names(keys) -> tuple[str, ...]:
+    """The names of declared keys or tables (plain names pass through)."""
+    return tuple(k if isinstance(k, str) else k.name for k in keys)
+
+
+class Table:
+    """One table of the case file, read key by key as its section declares them (:class:`Key`:
+    the kind and default of each); unknown keys are an error."""
+
+    def __init__(self, path: Path, name: str, data, allowed: tuple):
+        self.path, self.name = path, name
+        if not isinstance(data, dict):
+            raise CalcError(f"{path}: {name}: expected a table of keys, found {type(data).__name__}")
+        self.data = data
+        self.declared = {k.name: k for k in allowed if isinstance(k, Key)}
+        allowed = key_names(allowed)
+        for key in data:
+            if key not in allowed:
+                raise CalcError(f"{path}: {self.key(key)}: unknown key; {name} takes {', '.join(allowed)}")
+
+    def key(self, key: str) -> str:
+        return f"{self.name}.{key}" if self.name else key
+
+    def where(self, key: str) -> str:
+        return f"{self.path}: {self.key(key)}"
+
+    def has(self, key: str) -> bool:
+        return key in self.data
+
+    def kind(self, key: str) -> str:
+        """The declared kind of ``key``."""
+        return self.declared[key].kind
+
+    def _absent(self, key: str, required: bool):
+        """What a key left out reads as: an error when required, else its declared default."""
+        if required:
+            raise CalcError(f"{self.where(key)}: expected a value, found none")
+        return self.declared[key].default if key in self.declared else None
+
+    def quantity(self, key: str, kind: str | None = None, required: bool = False):
+        """The quantity at ``key`` of its declared kind (or ``kind``); its declared default, parsed,
+        where the table leaves it out (None without one)."""
+        kind = kind or self.kind(key)
+        value = self.data[key] if key in self.data else self._absent(key, required)
+        return None if value is None else parse_quantity(value, kind, self.where(key))
+
+    def positive(self, key: str, kind: str | None = None, required: bool = False, what: str | None = None):
+        """:meth:`quantity`, which must be above zero; ``what`` names it in the error (default:
+        its kind)."""
+        kind = kind or self.kind(key)
+        q = self.quantity(key, kind, required)
+        if q is not None and not q.magnitude > 0:
+            raise CalcError(f"{self.where(key)}: expected {what or kind_phrase(kind)} above zero, found {self.data[key]!r}")
+        return q
+
+    def text(self, key: str, required: bool = False, default=None):
+        """The text at ``key``; where the table leaves it out, ``default`` (one that comes from the
+        rest of the case) or else its declared default."""
+        if key not in self.data:
+            declared = self._absent(key, required)
+            return declared if default is None else default
+        value = self.data[key]
+        if not isinstance(value, str):
+            raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
+        return value
+
+    def _one_or_more(self, key: str, value, what: str):
+        """``value`` where it is a text or a non-empty list of texts; else an error naming ``what``."""
+        if isinstance(value, str) or (isinstance(value, list) and value and all(isinstance(v, str) for v in value)):
+            return value
+        raise CalcError(f"{self.where(key)}: expected {what} in quotes, or a list of them, found {value!r}")
+
+    def texts(self, key: str) -> tuple:
+        """A text or a list of texts, as a tuple (empty where the table leaves it out)."""
+        if key not in self.data:
+            return ()
+        value = self._one_or_more(key, self.data[key], "a text")
+        return (value,) if isinstance(value, str) else tuple(value)
+
+    def catalogs(self, key: str):
+        """A catalog key: one name or path, or a list of them ranked together (its declared
+        default where the table leaves it out)."""
+        value = self.data[key] if key in self.data else self._absent(key, False)
+        return self._one_or_more(key, value, "a catalog name or path")
+
+    def table(self, key: str, allowed: tuple) -> "Table | None":
+        if key not in self.data:
+            return None
+        return Table(self.path, self.key(key), self.data[key], allowed)
+
+    def tables(self, key: str, allowed: tuple) -> list["Table"]:
+        items = self.data.get(key, [])
+        if not isinstance(items, list):
+            raise CalcError(f"{self.where(key)}: expected an array of tables ([[{self.key(key)}]]), found {type(items).__name__}")
+        return [Table(self.path, f"{self.key(key)}[{k}]", item, allowed) for k, item in enumerate(items, start=1)]
+
+
+@dataclass
+class Case:
+    """A design case as read from its file: the inputs the sections share, checked, and the raw
+    tables of the sections that read their own (``coupling``, ``accuracy``) when evaluated."""
+
+    path: Path
+    title: str
+    profile: Profile
+    motor_peak_torque: object = None
+    motor_inertia: object = None
+    motor_rated_torque: object = None
+    motor_max_speed: object = None
+    load_inertia: object = None
+    ratio: object = None
+    gearbox_catalog: str | list | None = None
+    gearbox_part: str | None = None
+    gearbox_family: tuple = ()  # [gearbox] family: only rows of these families are checked (all where empty)
+    shock_factors: object = None  # the table of f_s (calc.data.bands.BandTable) of [gearbox]; None: the source's
+    emergency_stop_torque: object = None
+    gearbox_hubs: str | list | None = None
+    motor_shaft: object = None  # Bore of the motor's shaft: picks the gearbox's clamping hub
+    motor_catalog: str | list | None = None  # [motor] catalog: the motor chosen from it (or its part)
+    motor_part: str | None = None
+    motor_max_inertia_ratio: tuple = (10.0, "the default")  # the limit of λ and where it comes from
+    motor_dc_link: object = None
+    motor_curves: object = None  # Path of the motors' curves file
+    output_load: object = None  # calc.domain.gearbox.OutputLoad: forces on the gearbox output
+    sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
+    motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record
+    raw: bytes = b""
+    # What has been computed from the case, by name (see :func:`once`); a changed copy starts empty.
+    computed: dict = field(default_factory=dict, init=False, repr=False, compare=False)
+
+    @property
+    def folder(self) -> Path:
+        return self.path.parent
+
+
+def once(case: Case, name: str, compute):
+    """``compute()`` the first time ``name`` is asked of this case, the same object after: the
+    evaluation, the report and a section that builds on the gearbox share one selection."""
+    if name not in case.computed:
+        case.computed[name] = compute()
+    return case.computed[name]
+
+
+def read_case(path, text: str | None = None) -> Case:
+    """Read and check a case file; raise :class:`CalcError` naming the file and key on bad input.
+    ``text``, where given, is read as the file's text (a case edited in memory, its files found
+    beside ``path`` as the file's would be).
+
+    The shared inputs are read here by their sections (:mod:`calc.sections`): the load cycle
+    (typed, or derived from the moves and the mechanism or from a drive record), the motor and
+    load, the gearbox; the further sections keep their tables for evaluation."""
+    from . import FURTHER, TOP_KEYS, drive, duty, gearbox, motion
+
+    path = Path(path)
+    if text is not None:
+        raw = text.encode("utf-8")
+    elif path.is_dir():
+        raise CalcError(f"{path}: expected a case file, found a directory")
+    elif not path.is_file():
+        raise CalcError(f"{path}: the case file does not exist")
+    else:
+        raw = path.read_bytes()
+    try:
+        data = tomllib.loads(raw.decode("utf-8-sig"))  # an editor's byte-order mark is not TOML; catalogs accept one too
+    except UnicodeDecodeError:
+        raise CalcError(f"{path}: expected a UTF-8 TOML file, found bytes that are not UTF-8") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise CalcError(f"{path}: TOML syntax error: {exc}") from None
+    top = Table(path, "", data, TOP_KEYS)
+    title = top.text("title", default=path.stem)
+    control = next((ch for ch in title if unicodedata.category(ch) == "Cc"), None)
+    if control is not None:
+        # Refused, not escaped: the title goes to the terminal, the JSON and the LaTeX report, and
+        # a control character (an escape sequence, a line break) means nothing in any of them.
+        raise CalcError(f"{top.where('title')}: expected one line of printable text, found the control character U+{ord(control):04X}")
+    case = Case(path=path, title=title, profile=None, raw=raw)
+    derived = motion.derive(top)
+    if derived is None:
+        case.profile = duty.read(top)
+    drive.read(top, case)
+    if derived is not None:
+        motion.apply(case, derived)  # after [load], whose inertia the mechanism gives instead
+    gearbox.read(top, case)
+    case.sections = {name: data[name] for name in FURTHER if name in data}
+    return case

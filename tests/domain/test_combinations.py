@@ -1,0 +1,105 @@
+"""Every motor with every gearbox: the moments of a cycle give the same motor torque as a pass over
+its samples per pair (calc.domain.motor.motor_load, which evaluates T_1_drive, T_1_back and T_1rms)."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from calc import Q_
+from calc.domain.combinations import CycleMoments, Envelope, motor_torques, search
+from calc.domain.motor import motor_load
+
+finite = st.floats(-500, 500, allow_nan=False)
+
+
+def brute_envelope(T, alpha, x):
+    return np.max(np.abs(np.asarray(T)[None, :] + np.outer(x, alpha)), axis=1, initial=0.0)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(finite, st.floats(-50, 50, allow_nan=False)), min_size=0, max_size=40),
+       st.lists(st.floats(0, 1e4, allow_nan=False), min_size=1, max_size=20))
+def test_the_envelope_is_the_largest_magnitude_of_every_line(lines, xs):
+    # E(x) = max_k |T_k + x α_k| for x >= 0, against the maximum over every sample.
+    T = np.array([t for t, _ in lines], float)
+    alpha = np.array([a for _, a in lines], float)
+    x = np.array(xs)
+    assert Envelope.of(T, alpha)(x) == pytest.approx(brute_envelope(T, alpha, x), rel=1e-9, abs=1e-9)
+
+
+def test_the_envelope_by_hand():
+    # Lines ±(10 - 2x) and ±(4 + x): at x = 0 the largest is 10; 10 - 2x and 4 + x cross at x = 2
+    # (value 6), 4 + x leads to x = 14 (18 against |10 - 28| = 18), and 2x - 10 beyond.
+    e = Envelope.of(np.array([10.0, 4.0]), np.array([-2.0, 1.0]))
+    assert e(np.array([0.0, 2.0, 7.0, 14.0, 20.0])).tolist() == pytest.approx([10.0, 6.0, 11.0, 18.0, 30.0])
+
+
+cycles = st.integers(1, 60).flatmap(lambda n: st.tuples(
+    st.lists(st.floats(1e-3, 1.0), min_size=n, max_size=n),
+    st.lists(finite, min_size=n, max_size=n),
+    st.lists(st.floats(-300, 300, allow_nan=False), min_size=n, max_size=n),
+    st.lists(st.floats(-5e3, 5e3, allow_nan=False), min_size=n, max_size=n),
+))
+
+
+@settings(max_examples=150, deadline=None)
+@given(cycles, st.floats(1.0, 100.0), st.floats(0.5, 1.0), st.floats(0.0, 1e-2))
+def test_moments_give_the_peak_and_rms_of_a_pass_over_the_samples(cycle, i, eta, J):
+    dt, T, w, a = (np.array(x, float) for x in cycle)
+    reference = motor_load(Q_(dt, "s"), Q_(T, "N*m"), Q_(w, "rad/s"), Q_(i, ""), Q_(eta, ""), Q_(a, "rad/s**2"),
+                           Q_(J, "kg*m**2"), Q_(0.0, "kg*m**2"))
+    peak, rms = motor_torques(CycleMoments.of(dt, T, w, a), i, eta, J)
+    scale = max(1.0, float(reference.peak.m_as("N*m")))
+    assert float(peak) == pytest.approx(float(reference.peak.m_as("N*m")), rel=1e-9, abs=1e-9 * scale)
+    assert float(rms) == pytest.approx(float(reference.rms.m_as("N*m")), rel=1e-7, abs=1e-7 * scale)
+
+
+def test_a_hand_cycle_through_two_gearboxes_and_two_motors():
+    # One acceleration, one braking, one hold: dt = 0.1, 0.1, 0.3 s; T_2 = 50, -30, 10 N·m;
+    # ω_2 = 10, 10, 0 rad/s; α_2 = 100, -100, 0 rad/s². Through i = 10, η = 0.9 with J = 1e-4 kg·m²:
+    # driving sample: 1e-4 · 10 · 100 + 50 / 9 = 0.1 + 5.5556 = 5.6556 N·m; driven back: -0.1 - 30 · 0.09
+    # = -2.8 N·m; hold (T_2 ω_2 = 0 drives): 10 / 9 = 1.1111 N·m. Peak 5.6556 N·m;
+    # RMS = √((5.6556² · 0.1 + 2.8² · 0.1 + 1.1111² · 0.3) / 0.5) = √((3.1985 + 0.784 + 0.3704) / 0.5) = 2.9505 N·m.
+    m = CycleMoments.of([0.1, 0.1, 0.3], [50.0, -30.0, 10.0], [10.0, 10.0, 0.0], [100.0, -100.0, 0.0])
+    peak, rms = motor_torques(m, np.array([[10.0], [5.0]]), np.array([[0.9], [0.9]]), np.array([[1e-4, 0.0]]))
+    assert peak[0, 0] == pytest.approx(5.6556, abs=1e-4) and rms[0, 0] == pytest.approx(2.9505, abs=1e-4)
+    # Without the rotor (J = 0) the peak is 50 / 9 = 5.5556 N·m; through i = 5, 50 / 4.5 = 11.111 N·m.
+    assert peak[0, 1] == pytest.approx(5.5556, abs=1e-4) and peak[1, 1] == pytest.approx(11.1111, abs=1e-4)
+
+
+def test_the_pick_is_the_smallest_adequate_motor_then_the_smallest_gearbox():
+    # The hand cycle above. Gearbox rows: i = 10 (size 100 N·m), i = 5 (size 60), i = 10 failing its
+    # own checks. Motors, J = 1e-4 kg·m² each: A 3 N·m rated / 12 N·m peak, B 6 N·m / 20 N·m.
+    m = CycleMoments.of([0.1, 0.1, 0.3], [50.0, -30.0, 10.0], [10.0, 10.0, 0.0], [100.0, -100.0, 0.0])
+    gearboxes = {"i": [10.0, 5.0, 10.0], "eta": [0.9, 0.9, 0.9], "J_1": [0.0, 0.0, 0.0], "passes": [True, True, False],
+                 "peak_limit": [np.inf, np.inf, np.inf], "size": [100.0, 60.0, 50.0], "J_L": 1e-3}
+    motors = {"J": [1e-4, 1e-4], "rated_torque": [3.0, 6.0], "peak_torque": [12.0, 20.0], "max_speed": [300.0, 300.0]}
+    found = search(m, 10.0, gearboxes, motors)
+    # At i = 5: driving 1e-4 · 5 · 100 + 50 / 4.5 = 11.161 N·m, driven back -0.05 - 30 · 0.9 / 5 = -5.45,
+    # hold 10 / 4.5 = 2.222; RMS = √((11.161² · 0.1 + 5.45² · 0.1 + 2.222² · 0.3) / 0.5) = 5.815 N·m:
+    # over A's 3 N·m, within B's 6. At i = 10 both pass (peak 5.66, RMS 2.95 N·m).
+    assert found.rms[1, 0] == pytest.approx(5.815, abs=1e-3)
+    assert found.feasible.tolist() == [[True, True], [False, True], [False, False]]
+    assert found.pick == (0, 0)  # the smaller motor A, through the only gearbox it can use
+    # Without A: B through the smaller gearbox (i = 5, size 60 N·m).
+    only_b = {k: v[1:] for k, v in motors.items()}
+    assert search(m, 10.0, gearboxes, only_b).pick == (1, 0)
+    # λ = (J_1 + J_L / i²) / J_motor = (0 + 1e-3 / 100) / 1e-4 = 0.1 at i = 10 (0.4 at i = 5): a limit
+    # of 0.05 refuses every pair.
+    assert search(m, 10.0, gearboxes, motors, inertia_ratio_limit=0.05).pick is None
+    # A gearbox whose T_2B takes a motor peak of at most 15 N·m (T_2B / (i · f_s · η)) refuses B there.
+    limited = {**gearboxes, "peak_limit": [15.0, np.inf, np.inf]}
+    assert search(m, 10.0, limited, motors).feasible[0].tolist() == [True, False]
+
+
+def test_the_figure_shows_the_lowest_working_utilization_of_each_motor_and_ratio():
+    # Rows: two gearboxes at i = 5 and one at i = 10; motors A, B. At i = 5 motor A works through
+    # the first (0.7) and second (0.4): the cell shows 0.4; B works through none there: grey (no
+    # value). At i = 10 A fails (1.3), B works (0.9).
+    from calc.figures.combination_plots import combinations_figure
+
+    u = np.array([[0.7, 1.1], [0.4, 1.5], [1.3, 0.9]])
+    fig = combinations_figure(u, u <= 1, [5.0, 10.0], ["A", "B"], pick=(1, 0), ratio_of_rows=np.array([5.0, 5.0, 10.0]))
+    shown = np.ma.filled(fig.axes[0].images[0].get_array().astype(float), np.nan)
+    assert np.allclose(shown, [[0.4, np.nan], [np.nan, 0.9]], equal_nan=True)  # rows: motors; columns: ratios
