@@ -121,9 +121,10 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
     """A shock-factor table (errata E4) as a step plot against ``Z_h``, the case's point marked.
 
     Each band of ``table`` (the source's, :data:`calc.domain.gearbox.SHOCK_FACTORS`, unless the case names
-    another with ``[gearbox] shock_factors``) is a horizontal line from its lowest ``Z_h``
-    (filled marker: the boundary belongs to this band) to the next band's lowest ``Z_h`` (open
-    marker: excluded), so a boundary takes the higher factor, as E4 reads the source's table.
+    another with ``[gearbox] shock_factors``) is a horizontal line from its lowest ``Z_h`` to the
+    next band's; a filled marker shows the band a boundary belongs to, an open one the band it is
+    excluded from, by the table's own rule (:attr:`calc.data.bands.BandTable.at_boundary`): the
+    higher factor at a boundary, as E4 reads the source's table, or the lower one.
 
     Parameters
     ----------
@@ -165,8 +166,12 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
     right = np.append(bounds[1:], x_end)
     ax.hlines(factors, bounds, right, color=SPEED_COLOR, linewidth=2.5, zorder=2)
     ax.vlines(bounds[1:], factors[:-1], factors[1:], color=SPEED_COLOR, linewidth=0.8, linestyles=":", zorder=1)
-    ax.plot(bounds, factors, "o", color=SPEED_COLOR, markersize=7, zorder=3, gid="included")
-    ax.plot(bounds[1:], factors[:-1], "o", markerfacecolor="white", markeredgecolor=SPEED_COLOR, markersize=7, zorder=3, gid="excluded")
+    higher = table.at_boundary == "higher"
+    # A boundary belongs to the band it starts (higher factor) or to the band it ends (lower factor).
+    kept, left = (factors, factors[:-1]) if higher else (np.append(factors[:1], factors[:-1]), factors[1:])
+    ax.plot(bounds, kept, "o", color=SPEED_COLOR, markersize=7, zorder=3, gid="included")
+    ax.plot(bounds[1:], left, "o", markerfacecolor="white", markeredgecolor=SPEED_COLOR, markersize=7, zorder=3,
+            gid="excluded")
     ax.annotate("", (x_end, factors[-1]), xytext=(x_end - 0.06 * x_end, factors[-1]),
                 arrowprops=dict(arrowstyle="->", color=SPEED_COLOR, linewidth=2.5))
     for lo, hi, f in zip(bounds, right, factors):
@@ -175,7 +180,8 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
     handles = [
         Line2D([], [], marker="o", color=SPEED_COLOR, linestyle="none", label="boundary included in the band"),
         Line2D([], [], marker="o", markerfacecolor="white", markeredgecolor=SPEED_COLOR, linestyle="none",
-               label="boundary excluded (the higher factor applies, E4)"),
+               label="boundary excluded (the higher factor applies, E4)" if higher
+               else "boundary excluded (the lower factor applies, as the table reads)"),
     ]
     if z_case is not None:
         ax.vlines(z_case, 0.0, f_case, color=CASE_COLOR, linewidth=1, linestyles="--", zorder=2)

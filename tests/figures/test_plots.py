@@ -6,6 +6,7 @@ from matplotlib.colors import to_rgb
 from matplotlib.patches import StepPatch
 
 from calc import CalcError, Q_
+from calc.data.bands import load_factor_table
 from calc.data.catalog import load_catalog
 from calc.domain.gearbox import SCHEMA, SHOCK_FACTORS, candidates_summary, candidates_table, rows_at_ratio, select_gearbox
 from calc.figures.plots import FAIL_COLOR, PASS_COLOR, load_cycle_figure, shock_factor_figure, utilization_figure
@@ -96,6 +97,24 @@ def test_shock_factor_figure_draws_the_table_with_e4_boundaries():
     assert "$Z_h$" in ax.get_xlabel() and "[1/h]" in ax.get_xlabel()
     assert "$f_s$" in ax.get_ylabel()
     assert "E4" in ax.get_title()
+
+
+def test_shock_factor_figure_follows_a_table_that_takes_the_lower_factor(tmp_path):
+    # A table whose boundaries take the lower factor (at_boundary = lower): each boundary is filled on
+    # the band it ends and open on the one it starts; 1000 /h reads 1.0 there, not E4's 1.1.
+    (tmp_path / "shock-lower.csv").write_text(
+        "from [1/h],to [1/h],factor [1],at_boundary,source\n"
+        "0,1000,1.0,lower,hand-written\n1000,2000,1.1,lower,hand-written\n2000,3000,1.6,lower,hand-written\n")
+    table = load_factor_table(tmp_path / "shock-lower.csv", "Z_h", "per_hour")
+    fig = shock_factor_figure(Q_(1000, "1/hour"), table)
+    lines = {line.get_gid(): line for line in fig.axes[0].lines}
+    np.testing.assert_array_equal(lines["included"].get_xdata(), [0, 1000, 2000])
+    np.testing.assert_array_equal(lines["included"].get_ydata(), [1.0, 1.0, 1.1])
+    np.testing.assert_array_equal(lines["excluded"].get_xdata(), [1000, 2000])
+    np.testing.assert_array_equal(lines["excluded"].get_ydata(), [1.1, 1.6])
+    assert lines["case"].get_ydata()[0] == 1.0
+    texts = _texts(fig)
+    assert "boundary excluded (the lower factor applies, as the table reads)" in texts and "E4)" not in texts
 
 
 @pytest.mark.parametrize("t_cycle, z, fs", [(2.0, 1800, 1.3), (2.4, 1500, 1.3), (7.2, 500, 1.0), (0.5, 7200, 2.0)])
