@@ -68,7 +68,7 @@ report: setup tex
 bench: setup tex browser
 	$(PY) bench/bench.py
 
-# The design-review panel alone as a web page (Voilà), on this machine only; README, "Design review",
+# The design-review panel alone as a web page (Voilà), on this machine only; docs/user-guide.md, "Design review",
 # says how to serve it on a network.
 review: setup
 	$(PY) -m calc.review.serve

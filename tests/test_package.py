@@ -29,9 +29,9 @@ def source(tmp_path):
     """A copy of what the build reads, with a generated report PDF in reports/ (not package data)."""
     src = tmp_path / "src"
     src.mkdir()
-    for name in ("pyproject.toml", "README.md"):
+    for name in ("pyproject.toml", "README.md", "LICENSE"):
         shutil.copy(ROOT / name, src / name)
-    for name in ("calc", "catalogs", "reports"):
+    for name in ("calc", "catalogs", "reports", "LICENSES"):
         shutil.copytree(ROOT / name, src / name, ignore=shutil.ignore_patterns("__pycache__", "*.pdf", "*.txt"))
     (src / "reports" / "indexing-table.pdf").write_bytes(b"%PDF-1.5 generated report\n")
     return src
@@ -74,6 +74,10 @@ def test_pip_install_runs_the_example_case_from_package_data(source, tmp_path):
     installed = target / "calc"
     assert sorted(p.name for p in (installed / "catalogs").glob("*.csv")) == ["couplings.csv", "gearbox-hubs.csv", "gearboxes.csv", "motors.csv"]
     assert not list(installed.rglob("*.pdf"))  # generated reports stay out of the package
+    # The licences travel with it: MIT for the code, CC BY 4.0 for the catalogs' compilation (LICENSE).
+    (info,) = target.glob("drivetrain_calc-*.dist-info")
+    assert "License-Expression: MIT AND CC-BY-4.0" in (info / "METADATA").read_text().splitlines()
+    assert (info / "licenses" / "LICENSE").is_file() and (info / "licenses" / "LICENSES" / "CC-BY-4.0.md").is_file()
 
     # The example case and the measurement it names (../data/...) in a folder of their own.
     work = tmp_path / "work"
