@@ -25,6 +25,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -539,15 +540,64 @@ def select_coupling(
         raise CalcError(f"{where}: no coupling to check, the catalog has no rows")
     check_types(catalog)
     types = catalog.text["type"]
-    is_el, is_safety, is_line = (types == "elastomer"), (types == "safety"), (types == "line-shaft")
-    n = len(catalog)
-    given = {"accel_torque": accel_torque, "drive_inertia": drive_inertia, "load_inertia": load_inertia}
-    absent = [(sources or {}).get(key, f"{where}.{key}") for key, value in given.items() if value is None]
-    absent_inertia = [(sources or {}).get(key, f"{where}.{key}") for key in ("drive_inertia", "load_inertia") if given[key] is None]
+    kinds = _Kinds(types == "elastomer", types == "safety", types == "line-shaft")
+    case = _checked_case(catalog, kinds, dict(accel_torque=accel_torque, drive_inertia=drive_inertia,
+                                              load_inertia=load_inertia), excitation_frequency, shaft_1, shaft_2,
+                         service_factor, speed, disengagement_torque, shaft_distance, where, sources or {})
+    K_T, S_z = _load_factors(kinds.elastomer, temperature, temperature_factors, start_factors, starts_per_hour, where)
+
+    m_n = M_N(M_a=case.M_a, J_load=case.J_load, J_drive=case.J_drive, S_A=case.S_A)
+    t_op = M_N(M_a=case.M_a, J_load=case.J_load, J_drive=case.J_drive, S_A=Q_(1.0, ""))
+    m_nt = M_Nt(M_N=m_n, K_T=Q_(K_T, ""))
+    j_a, j_l, c_t, fe, chain, modes = _two_masses_and_chain(catalog, case, kinds.line_shaft, drive_train, where)
+    notes = []
+    checks, m_smax = _operating_checks(catalog, case, kinds, c_t, fe, modes, drive_train, (m_n, m_nt, K_T, S_z), notes)
+    checks += _fit_checks(catalog, case, kinds, t_op)
+    passes, worst, order = _verdicts(catalog, checks)
+    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes,
+                             drive_train, chain, modes)
+
+
+class _Kinds(NamedTuple):
+    """Which rows are of the types with checks of their own (bool arrays over the rows)."""
+
+    elastomer: np.ndarray
+    safety: np.ndarray
+    line_shaft: np.ndarray
+
+
+@dataclass(frozen=True)
+class _Case:
+    """The case's values for the coupling, checked and in their kinds; a torque or inertia the case
+    leaves out is NaN, and ``no_torque``/``no_inertia`` say which checks that stops (None: none)."""
+
+    M_a: object
+    J_drive: object
+    J_load: object
+    f_er: object
+    S_A: object
+    bore_1: Bore
+    bore_2: Bore
+    speed: object
+    T_A: object
+    A: object
+    no_torque: str | None
+    no_inertia: str | None
+
+
+def _checked_case(catalog, kinds, given, excitation_frequency, shaft_1, shaft_2, service_factor, speed,
+                  disengagement_torque, shaft_distance, where, sources) -> _Case:
+    """The arguments of :func:`select_coupling` checked, in the order it names them (``given``: the
+    acceleration torque and the two inertias, each possibly None)."""
+    types = catalog.text["type"]
+    accel_torque, drive_inertia, load_inertia = given["accel_torque"], given["drive_inertia"], given["load_inertia"]
+    absent = [sources.get(key, f"{where}.{key}") for key, value in given.items() if value is None]
+    absent_inertia = [sources.get(key, f"{where}.{key}") for key in ("drive_inertia", "load_inertia") if given[key] is None]
     no_torque = "needs " + " and ".join(absent) if absent else None
     no_inertia = "needs " + " and ".join(absent_inertia) if absent_inertia else None
     M_a = Q_(math.nan, "N*m") if accel_torque is None else as_kind(accel_torque, "torque", f"{where}.accel_torque")
-    J_drive = Q_(math.nan, "kg*m**2") if drive_inertia is None else as_kind(drive_inertia, "inertia", f"{where}.drive_inertia")
+    J_drive = (Q_(math.nan, "kg*m**2") if drive_inertia is None
+               else as_kind(drive_inertia, "inertia", f"{where}.drive_inertia"))
     J_load = Q_(math.nan, "kg*m**2") if load_inertia is None else as_kind(load_inertia, "inertia", f"{where}.load_inertia")
     f_er = as_kind(excitation_frequency, "frequency", f"{where}.excitation_frequency")
     S_A = as_kind(service_factor, "dimensionless", f"{where}.service_factor")
@@ -556,145 +606,190 @@ def select_coupling(
     _positive(None if load_inertia is None else J_load, f"{where}.load_inertia", "an inertia", "kg*cm**2")
     _positive(f_er, f"{where}.excitation_frequency", "a frequency", "Hz")
     if not S_A.m_as("") >= 1:
-        raise CalcError(f"{where}.service_factor: expected a load factor S_A of 1 or more (E8), found {sig(S_A.m_as(''))}")
+        raise CalcError(
+            f"{where}.service_factor: expected a load factor S_A of 1 or more (E8), found {sig(S_A.m_as(''))}"
+        )
     bore_1, bore_2 = _as_bore(shaft_1, f"{where}.shaft_1"), _as_bore(shaft_2, f"{where}.shaft_2")
     if speed is not None:
         speed = as_kind(speed, "speed", f"{where}.speed")
         _positive(speed, f"{where}.speed", "a speed", "rpm")
-    T_A = None if disengagement_torque is None else as_kind(disengagement_torque, "torque", f"{where}.disengagement_torque")
+    T_A = (None if disengagement_torque is None
+           else as_kind(disengagement_torque, "torque", f"{where}.disengagement_torque"))
     A = None if shaft_distance is None else as_kind(shaft_distance, "length", f"{where}.shaft_distance")
     _positive(T_A, f"{where}.disengagement_torque", "a torque", "N*m")
     _positive(A, f"{where}.shaft_distance", "a distance", "mm")
-    _only_for(T_A, is_safety, types, "safety", f"{where}.disengagement_torque", "a disengagement torque T_A (E10)")
-    _only_for(A, is_line, types, "line-shaft", f"{where}.shaft_distance", "a distance between shafts")
+    _only_for(T_A, kinds.safety, types, "safety", f"{where}.disengagement_torque", "a disengagement torque T_A (E10)")
+    _only_for(A, kinds.line_shaft, types, "line-shaft", f"{where}.shaft_distance", "a distance between shafts")
     if A is not None:
-        two_hubs = 2 * catalog["H"][is_line]
+        two_hubs = 2 * catalog["H"][kinds.line_shaft]
         if not np.any(A >= two_hubs):
             raise CalcError(
                 f"{where}.shaft_distance: {fmt(A, 'mm')} is shorter than the two hubs of every line shaft "
                 f"(2 H = {', '.join(fmt(h, 'mm') for h in two_hubs)}); expected A >= 2 H"
             )
+    return _Case(M_a, J_drive, J_load, f_er, S_A, bore_1, bore_2, speed, T_A, A, no_torque, no_inertia)
 
-    notes = []
-    K_T = np.ones(n)
+
+def _load_factors(is_el, temperature, temperature_factors, start_factors, starts_per_hour, where: str):
+    """``K_ϑ`` per row (1 for all but elastomer couplings, E9) and ``S_z`` at the case's starts per
+    hour (None without a start-factor table)."""
+    K_T = np.ones(len(is_el))
     if is_el.any():
         if temperature is None:
             raise CalcError(
-                f"{where}.temperature: elastomer couplings need the operating temperature for their factor (E9), found none; "
-                "give it, or a type that is not elastomer"
+                f"{where}.temperature: elastomer couplings need the operating temperature for their factor (E9), "
+                "found none; give it, or a type that is not elastomer"
             )
         K_T = np.where(is_el, temperature_factor(temperature, temperature_factors, where=f"{where}.temperature"), 1.0)
     elif temperature is not None:
-        temperature_factor(temperature, temperature_factors, where=f"{where}.temperature")  # checked, though no candidate uses it
+        # Checked, though no candidate uses it.
+        temperature_factor(temperature, temperature_factors, where=f"{where}.temperature")
     S_z = None
     if start_factors is not None:
         if starts_per_hour is None:
-            raise CalcError(f"{where}.starts_per_hour: the start-factor table needs the number of starts per hour, found none")
+            raise CalcError(
+                f"{where}.starts_per_hour: the start-factor table needs the number of starts per hour, found none"
+            )
         S_z = float(start_factor(starts_per_hour, start_factors, f"{where}.starts_per_hour"))
     elif starts_per_hour is not None:
-        raise CalcError(f"{where}.starts_per_hour: starts per hour are read against a start-factor table; give coupling.start_factors as well")
+        raise CalcError(
+            f"{where}.starts_per_hour: starts per hour are read against a start-factor table; "
+            "give coupling.start_factors as well"
+        )
+    return K_T, S_z
 
-    m_n = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=S_A)
-    t_op = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=Q_(1.0, ""))
-    m_nt = M_Nt(M_N=m_n, K_T=Q_(K_T, ""))
+
+def _two_masses_and_chain(catalog: Catalog, case: _Case, is_line, drive_train, where: str):
+    """Per row: ``J_A``, ``J_L``, the stiffness ``C_T`` (a line shaft's at the case's distance), the
+    two-mass ``f_e``, and with ``drive_train`` its chain and natural frequencies (else None)."""
     with np.errstate(invalid="ignore", divide="ignore"):
-        j_a = J_A(J_drive=J_drive, J_K=catalog["J"])
-        j_l = J_L(J_load=J_load, J_K=catalog["J"])
+        j_a = J_A(J_drive=case.J_drive, J_K=catalog["J"])
+        j_l = J_L(J_load=case.J_load, J_K=catalog["J"])
         # A line shaft's catalog C_T is its bellows alone; its own stiffness needs the tube's length.
-        c_line = np.full(n, np.nan)
-        if A is not None:
-            fits_in = A >= 2 * catalog["H"]
-            c_line = np.where(fits_in, C_T_line(C_B=catalog["C_T"], Z=Z(A=A, H=catalog["H"]), C_tube=catalog["C_tube"]).m_as("N*m/rad"), np.nan)
+        c_line = np.full(len(catalog), np.nan)
+        if case.A is not None:
+            fits_in = case.A >= 2 * catalog["H"]
+            line = C_T_line(C_B=catalog["C_T"], Z=Z(A=case.A, H=catalog["H"]), C_tube=catalog["C_tube"])
+            c_line = np.where(fits_in, line.m_as("N*m/rad"), np.nan)
         c_t = Q_(np.where(is_line, c_line, catalog["C_T"].m_as("N*m/rad")), "N*m/rad")
         fe = f_e(C_T=c_t, J_A=j_a, J_L=j_l)
         chain = modes = None
         if drive_train is not None:
             # Half the coupling on each end of its spring, as J_A and J_L take it (E7).
             half = catalog["J"] / 2
-            chain = lumped((*drive_train.drive, Member("coupling", half, c_t, half), *drive_train.load), f"{where}: drive train")
+            members = (*drive_train.drive, Member("coupling", half, c_t, half), *drive_train.load)
+            chain = lumped(members, f"{where}: drive train")
             modes = chain.natural_frequencies()
+    return j_a, j_l, c_t, fe, chain, modes
 
-    def full(q):
-        return q * np.ones(n)
 
-    def bore_checks(k: int, bore: Bore) -> list:
-        missing = f"the catalog gives no bore range for hub {k}"
-        return [
-            CouplingCheck(f"d_{k}min", "coupling", f"d_{k}min <= D_{k}", catalog[f"d_{k}min"], full(bore.nominal), "mm", None, missing, True),
-            CouplingCheck(f"d_{k}max", "coupling", f"D_{k} <= d_{k}max", full(bore.nominal), catalog[f"d_{k}max"], "mm", None, missing),
-        ]
+def _over_rows(q, n: int):
+    """A scalar quantity repeated over ``n`` rows."""
+    return q * np.ones(n)
 
+
+def _operating_checks(catalog, case: _Case, kinds: _Kinds, c_t, fe, modes, drive_train, torques, notes: list):
+    """The checks of the coupling in operation: rated torque, resonance (two-mass and, with the
+    drive train, its first mode), peak torque with a start-factor table, speed. ``torques`` is
+    ``(M_N, M_N·K_ϑ, K_ϑ, S_z)``; what is not checked is added to ``notes``. Returns the checks and
+    the peak torque ``M_Smax`` per row (None without ``S_z``)."""
+    n = len(catalog)
+    m_n, m_nt, K_T, S_z = torques
     no_c, no_j = np.isnan(c_t.magnitude), np.isnan(catalog["J"].magnitude)
-    empty = np.where(no_c & no_j, "torsional stiffness C_T and inertia J", np.where(no_c, "torsional stiffness C_T", "inertia J"))
+    empty = np.where(no_c & no_j, "torsional stiffness C_T and inertia J",
+                     np.where(no_c, "torsional stiffness C_T", "inertia J"))
+
     def needs(what: str):
         return np.where(
-            is_line & (A is None),
+            kinds.line_shaft & (case.A is None),
             "a line shaft's stiffness needs coupling.shaft_distance",
             np.char.add(np.char.add(f"{what} needs the coupling's ", empty.astype(str)), ", which the catalog leaves empty"),
         )
 
-    no_f_e = needs("f_e")
+    f_min = _over_rows(f_e_min(f_er=case.f_er), n)
+    rated = ~(kinds.safety & np.isnan(catalog["T_KN"].magnitude))
     checks = [
-        CouplingCheck(
-            "T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", ~(is_safety & np.isnan(catalog["T_KN"].magnitude)),
-            not_made=no_torque,
-        ),
-        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e, not_made=no_inertia),
+        CouplingCheck("T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", rated, not_made=case.no_torque),
+        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", f_min, fe, "Hz", None, needs("f_e"), not_made=case.no_inertia),
     ]
     if modes is not None:
         checks.append(
-            CouplingCheck("f_1", "coupling", "2 f_er <= f_1", full(f_e_min(f_er=f_er)), modes[:, 0], "Hz", None,
-                          needs("the first mode of the drive train"), informs=not drive_train.complete, not_made=no_inertia)
+            CouplingCheck("f_1", "coupling", "2 f_er <= f_1", f_min, modes[:, 0], "Hz", None,
+                          needs("the first mode of the drive train"), informs=not drive_train.complete,
+                          not_made=case.no_inertia)
         )
         if not drive_train.complete:
             notes.append(
-                f"the drive train's first mode f_1 is reported for information: the case does not give {', '.join(drive_train.missing)}"
+                "the drive train's first mode f_1 is reported for information: the case does not give "
+                + ", ".join(drive_train.missing)
             )
     m_smax = None
     if S_z is not None:
         m_smax = M_Smax(T_S=m_n, S_z=Q_(S_z, ""), K_T=Q_(K_T, ""))
         checks.append(
             CouplingCheck(
-                "T_Kmax", "coupling", "T_S · S_z · K_ϑ <= T_Kmax", m_smax, catalog["T_Kmax"], "N*m", is_el,
-                "the catalog gives no maximum torque T_Kmax", optional=True, not_made=no_torque,
+                "T_Kmax", "coupling", "T_S · S_z · K_ϑ <= T_Kmax", m_smax, catalog["T_Kmax"], "N*m", kinds.elastomer,
+                "the catalog gives no maximum torque T_Kmax", optional=True, not_made=case.no_torque,
             )
         )
-    elif is_el.any():
-        notes.append("coupling.start_factors not given: the peak-torque check T_S · S_z · K_ϑ <= T_Kmax of elastomer couplings is not made")
-    if speed is not None:
-        checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", full(speed), catalog["n_max"], "rpm", None, "the catalog gives no maximum speed"))
+    elif kinds.elastomer.any():
+        notes.append("coupling.start_factors not given: the peak-torque check T_S · S_z · K_ϑ <= T_Kmax "
+                     "of elastomer couplings is not made")
+    if case.speed is not None:
+        checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", _over_rows(case.speed, n), catalog["n_max"], "rpm",
+                                    None, "the catalog gives no maximum speed"))
     else:
         notes.append("coupling.speed not given: the speed check n <= n_max is not made")
-    checks += bore_checks(1, bore_1) + bore_checks(2, bore_2)
-    if is_safety.any():
-        nan_torque = Q_(np.full(n, np.nan), "N*m")
-        t_a = nan_torque if T_A is None else full(T_A)
+    return checks, m_smax
+
+
+def _fit_checks(catalog, case: _Case, kinds: _Kinds, t_op) -> list:
+    """The checks of how the coupling fits the machine: each hub's bore range, a safety coupling's
+    ``T_A`` range and ``T_op <= T_A`` (E10), a line shaft's distance."""
+    n = len(catalog)
+    checks = []
+    for k, bore in ((1, case.bore_1), (2, case.bore_2)):
+        missing = f"the catalog gives no bore range for hub {k}"
+        D = _over_rows(bore.nominal, n)
+        checks += [
+            CouplingCheck(f"d_{k}min", "coupling", f"d_{k}min <= D_{k}", catalog[f"d_{k}min"], D, "mm", None, missing, True),
+            CouplingCheck(f"d_{k}max", "coupling", f"D_{k} <= d_{k}max", D, catalog[f"d_{k}max"], "mm", None, missing),
+        ]
+    if kinds.safety.any():
+        t_a = Q_(np.full(n, np.nan), "N*m") if case.T_A is None else _over_rows(case.T_A, n)
         missing = "needs coupling.disengagement_torque (E10)"
         checks += [
-            CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", is_safety, missing, True),
-            CouplingCheck("T_Amax", "coupling", "T_A <= T_Amax", t_a, catalog["T_Amax"], "N*m", is_safety, missing),
-            CouplingCheck("T_A", "coupling", "T_op <= T_A", full(t_op), t_a, "N*m", is_safety, missing, not_made=no_torque),
+            CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", kinds.safety, missing, True),
+            CouplingCheck("T_Amax", "coupling", "T_A <= T_Amax", t_a, catalog["T_Amax"], "N*m", kinds.safety, missing),
+            CouplingCheck("T_A", "coupling", "T_op <= T_A", _over_rows(t_op, n), t_a, "N*m", kinds.safety, missing,
+                          not_made=case.no_torque),
         ]
-    if is_line.any():
-        a = Q_(np.full(n, np.nan), "mm") if A is None else full(A)
-        missing = "needs coupling.shaft_distance" if A is None else "the catalog gives no longest shaft distance A_max"
+    if kinds.line_shaft.any():
+        a = Q_(np.full(n, np.nan), "mm") if case.A is None else _over_rows(case.A, n)
+        missing = "needs coupling.shaft_distance" if case.A is None else "the catalog gives no longest shaft distance A_max"
         checks += [
-            CouplingCheck("A_min", "coupling", "2 H <= A", 2 * catalog["H"], a, "mm", is_line, "needs coupling.shaft_distance", True),
-            CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", is_line, missing),
+            CouplingCheck("A_min", "coupling", "2 H <= A", 2 * catalog["H"], a, "mm", kinds.line_shaft,
+                          "needs coupling.shaft_distance", True),
+            CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", kinds.line_shaft, missing),
         ]
+    return checks
+
+
+def _verdicts(catalog: Catalog, checks: list):
+    """Per row: whether it passes every check made, its worst utilization, and the ranking."""
     made = [c for c in checks if c.made]  # a check the case cannot feed decides no row (CouplingSelection.not_made)
     passes = np.logical_and.reduce([c.passes for c in made])
     # A row an optional check cannot be made for counts as unburdened by it (it decides nothing there).
     utilizations = np.array(
-        [np.where(c.applies if c.applies is not None else True, np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0)
+        [np.where(c.applies if c.applies is not None else True,
+                  np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0)
          for c in made if not c.informs]
     )
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
     size = catalog["T_KN"].m_as("N*m")
     size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)  # a safety coupling rated by its T_A range alone
     order = rank(passes, size, worst, catalog.parts, later=catalog.illustrative)
-    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes,
-                             drive_train, chain, modes)
+    return passes, worst, order
 
 
 def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str) -> None:
