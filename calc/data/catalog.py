@@ -360,6 +360,48 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     """Read and validate a catalog file, column by column over all rows at once; see
     :func:`load_catalog`."""
     raw = path.read_bytes()
+    reader, width, columns, units = _header(path, raw, schema)
+    cells, lines, misfit = _rows(path, reader, width)
+
+    def column(name):
+        return cells[columns[name][0]::width]
+
+    texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
+    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
+    problem = _first_problem(path, schema, lines, texts, numbers, {name: _si(u) for name, u in units.items()})
+    if problem:
+        raise CalcError(problem)
+    if misfit is not None:
+        raise CalcError(f"{path}, row {misfit[0]}: expected {width} cells as in the header, found {misfit[1]}")
+
+    parts = np.array(texts["part"], dtype=object)
+    _no_repeated_part(path, parts, lines)
+    values = {c.name: Q_(numbers[c.name].values, units[c.name]) for c in schema.columns}
+    for rule in schema.rules:
+        with np.errstate(invalid="ignore"):
+            ok = np.asarray(rule.holds(values), dtype=bool)
+        if not ok.all():
+            j = int(np.flatnonzero(~ok)[0])
+            raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected {rule.text}")
+    text_arrays = {k: np.array(v, dtype=object) for k, v in texts.items()}
+    for a in (parts, lines, *text_arrays.values(), *(q.magnitude for q in values.values())):
+        a.flags.writeable = False  # shared by every caller of the run (load_catalog)
+    return Catalog(
+        name=path.stem,
+        path=path,
+        sha256=hashlib.sha256(raw).hexdigest(),
+        schema=schema,
+        parts=parts,
+        values=values,
+        text=text_arrays,
+        lines=lines,
+        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name]) for c in schema.columns},
+    )
+
+
+def _header(path: Path, raw: bytes, schema: Schema):
+    """The CSV reader past the header of a catalog file's bytes, the header's width, its columns
+    (name -> (index, unit text)) and the unit of each column of ``schema``, all checked."""
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
@@ -386,15 +428,23 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
             units[c.name] = ureg.parse_units(kind(c.kind).si_unit or "dimensionless")
             continue
         if c.name not in columns:
-            raise CalcError(f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}")
+            raise CalcError(
+                f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}"
+            )
         unit_text = columns[c.name][1]
         units[c.name] = _header_unit(path, c, unit_text)
+    return reader, len(header), columns, units
 
-    # The cells of all rows in one flat list (a column is a slice of it), up to the first row whose
-    # length differs from the header's; that row is reported after any problem in the rows before
-    # it, as a reader going row by row would. Each row's list is dropped at once: 10^5 row lists
-    # kept alive would make the garbage collector walk them again and again.
-    width, cells, lines, misfit = len(header), [], [], None
+
+def _rows(path: Path, reader, width: int):
+    """The cells of all data rows in one flat list, their line numbers, and the first row whose
+    length differs from the header's (``(line, length)``, or None).
+
+    The list stops at that row; it is reported after any problem in the rows before it, as a
+    reader going row by row would. Each row's list is dropped at once: 10^5 row lists kept alive
+    would make the garbage collector walk them again and again.
+    """
+    cells, lines, misfit = [], [], None
     for line, row in enumerate(reader, start=2):
         if not "".join(row).strip():
             continue  # a blank row
@@ -405,48 +455,18 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         lines.append(line)
     if not lines and misfit is None:
         raise CalcError(f"{path}: expected at least one row of data, found none")
-    lines = np.array(lines, dtype=int)
+    return cells, np.array(lines, dtype=int), misfit
 
-    def column(name):
-        return cells[columns[name][0]::width]
 
-    texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
-    problem = _first_problem(path, schema, lines, texts, numbers, {name: _si(u) for name, u in units.items()})
-    if problem:
-        raise CalcError(problem)
-    if misfit is not None:
-        raise CalcError(f"{path}, row {misfit[0]}: expected {width} cells as in the header, found {misfit[1]}")
-
-    parts = np.array(texts["part"], dtype=object)
-    # Duplicates: np.unique gives each part's first row; a row whose part first stands earlier repeats it.
-    _, first, inverse = np.unique(np.array(texts["part"], dtype=str), return_index=True, return_inverse=True)
+def _no_repeated_part(path: Path, parts: np.ndarray, lines: np.ndarray) -> None:
+    """Raises for the first row whose part already stands in an earlier row."""
+    # np.unique gives each part's first row; a row whose part first stands earlier repeats it.
+    _, first, inverse = np.unique(parts.astype(str), return_index=True, return_inverse=True)
     first = first[inverse.ravel()]
     repeats = np.flatnonzero(first != np.arange(len(parts)))
     if len(repeats):
         j = repeats[0]
         raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row {lines[first[j]]}")
-    values = {c.name: Q_(numbers[c.name].values, units[c.name]) for c in schema.columns}
-    for rule in schema.rules:
-        with np.errstate(invalid="ignore"):
-            ok = np.asarray(rule.holds(values), dtype=bool)
-        if not ok.all():
-            j = int(np.flatnonzero(~ok)[0])
-            raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected {rule.text}")
-    text_arrays = {k: np.array(v, dtype=object) for k, v in texts.items()}
-    for a in (parts, lines, *text_arrays.values(), *(q.magnitude for q in values.values())):
-        a.flags.writeable = False  # shared by every caller of the run (load_catalog)
-    return Catalog(
-        name=path.stem,
-        path=path,
-        sha256=hashlib.sha256(raw).hexdigest(),
-        schema=schema,
-        parts=parts,
-        values=values,
-        text=text_arrays,
-        lines=lines,
-        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name]) for c in schema.columns},
-    )
 
 
 @dataclass(frozen=True)

@@ -411,30 +411,8 @@ def select_gearbox(
     """
     d = duty(profile)
     i = catalog["ratio"]
-    seg = profile.moving_values()
-    checks = [
-        CheckArray("n_1N", "S1", "n_2m · i <= n_1N", n_1(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i), catalog["n_1N"], "rpm"),
-        CheckArray("T_2N", "S1", "T_2m <= T_2N", T_2m(**seg) * np.ones(len(catalog)), catalog["T_2N"], "N*m"),
-    ]
-    checks.append(CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"], "rpm"))
-    t2max = None
-    if motor_peak_torque is not None:
-        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle), shock_factors)
-        t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
-        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"))
-    else:
-        needs = "T_2max = T_1B · i · f_s · η needs the motor's peak torque T_1B (motor.peak_torque)"
-        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", None, catalog["T_2B"], "N*m", not_made=needs))
-    stop = "T_2stop <= T_2Not"
-    unrated = "the catalog gives no T_2Not"
-    if emergency_stop_torque is not None:
-        required = as_kind(emergency_stop_torque, "torque", "emergency_stop_torque") * np.ones(len(catalog))
-        checks.append(CheckArray("T_2Not", None, stop, required, catalog["T_2Not"], "N*m", unrated=unrated))
-    elif motor_peak_torque is not None:
-        checks.append(CheckArray("T_2Not", None, stop, T_2stop(T_1B=motor_peak_torque, i=i), catalog["T_2Not"], "N*m", unrated=unrated))
-    else:
-        needs = "the emergency-stop torque needs gearbox.emergency_stop_torque or the motor's peak torque (motor.peak_torque)"
-        checks.append(CheckArray("T_2Not", None, stop, None, catalog["T_2Not"], "N*m", not_made=needs, unrated=unrated))
+    checks, t2max = _duty_checks(profile, catalog, motor_peak_torque, shock_factors)
+    checks.append(_emergency_stop_check(catalog, emergency_stop_torque, motor_peak_torque))
     notes = []
     if output_load is not None and output_load.given:
         checks += bearing_checks(output_load, catalog)
@@ -471,6 +449,43 @@ def select_gearbox(
     return GearboxSelection(
         catalog, d.mode, checks, t2max, lam, passes, worst, order, Q_(J_1, "kg*cm**2"), Q_(d_hub, "mm"), notes
     )
+
+
+def _duty_checks(profile: Profile, catalog: Catalog, motor_peak_torque, shock_factors):
+    """The S1 checks (E1, E2) and the S5 checks (E5, E4) of every row, and ``T_2max`` per row (None
+    without the motor's peak torque, when the check of ``T_2B`` is not made)."""
+    i = catalog["ratio"]
+    seg = profile.moving_values()
+    checks = [
+        CheckArray("n_1N", "S1", "n_2m · i <= n_1N", n_1(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i),
+                   catalog["n_1N"], "rpm"),
+        CheckArray("T_2N", "S1", "T_2m <= T_2N", T_2m(**seg) * np.ones(len(catalog)), catalog["T_2N"], "N*m"),
+    ]
+    checks.append(CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"], "rpm"))
+    t2max = None
+    if motor_peak_torque is not None:
+        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle), shock_factors)
+        t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
+        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"))
+    else:
+        needs = "T_2max = T_1B · i · f_s · η needs the motor's peak torque T_1B (motor.peak_torque)"
+        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", None, catalog["T_2B"], "N*m", not_made=needs))
+    return checks, t2max
+
+
+def _emergency_stop_check(catalog: Catalog, emergency_stop_torque, motor_peak_torque) -> CheckArray:
+    """``T_2stop <= T_2Not`` for every row: the case's emergency-stop torque, else ``T_1B · i``; not
+    made without either."""
+    stop = "T_2stop <= T_2Not"
+    unrated = "the catalog gives no T_2Not"
+    if emergency_stop_torque is not None:
+        required = as_kind(emergency_stop_torque, "torque", "emergency_stop_torque") * np.ones(len(catalog))
+        return CheckArray("T_2Not", None, stop, required, catalog["T_2Not"], "N*m", unrated=unrated)
+    if motor_peak_torque is not None:
+        required = T_2stop(T_1B=motor_peak_torque, i=catalog["ratio"])
+        return CheckArray("T_2Not", None, stop, required, catalog["T_2Not"], "N*m", unrated=unrated)
+    needs = "the emergency-stop torque needs gearbox.emergency_stop_torque or the motor's peak torque (motor.peak_torque)"
+    return CheckArray("T_2Not", None, stop, None, catalog["T_2Not"], "N*m", not_made=needs, unrated=unrated)
 
 
 def candidates_table(selection: GearboxSelection):

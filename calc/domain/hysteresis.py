@@ -366,56 +366,15 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
     t_n = as_kind(nominal_torque, "torque", f"{where}: nominal torque").m_as("N*m")
     if not t_n > 0:
         raise CalcError(f"{where}: nominal torque: expected a torque above zero, found {nominal_torque:~P}")
-    torque = loop.torque.m_as("N*m")
-    twist = loop.twist.m_as("rad")
-    n = len(torque)
-    if n < MIN_SAMPLES:
-        raise CalcError(f"{where}: expected a loop of at least {MIN_SAMPLES} samples, found {n}")
-    if not (np.isfinite(torque).all() and np.isfinite(twist).all()):
-        raise CalcError(f"{where}: expected finite torque and twist samples, found NaN or infinity")
-    edge = LOST_MOTION_BAND * t_n
-    if torque.max() < edge or torque.min() > -edge:
-        raise CalcError(
-            f"{where}: the loop is loaded in one direction only (torque from {torque.min():.4g} to {torque.max():.4g} N·m); "
-            f"expected torque beyond both -3 % and +3 % of the nominal torque (±{edge:.4g} N·m)"
-        )
+    torque, twist = _checked_samples(loop, t_n)
     direction = travel_direction(torque)
-    passes = np.concatenate(([0], np.cumsum(direction[1:] != direction[:-1])))
-
-    fits = {}
-    for sign, name in ((1, "positive"), (-1, "negative")):
-        lo, hi = (x * t_n for x in STIFFNESS_BAND)
-        band = (sign * torque >= lo) & (sign * torque <= hi) & (direction == sign)
-        count = int(band.sum())
-        if count < MIN_BAND_SAMPLES:
-            raise CalcError(
-                f"{where}: expected at least {MIN_BAND_SAMPLES} samples loading in the {name} direction between 50 % and 100 % "
-                f"of the nominal torque ({sign * lo:.4g} to {sign * hi:.4g} N·m), found {count}"
-            )
-        slope, t_mean, phi_mean = _line(torque[band], twist[band])
-        if not slope > 0:
-            raise CalcError(f"{where}: the twist does not rise with the torque between 50 % and 100 % of the nominal torque in the {name} direction")
-        ends = np.array([lo, hi]) if sign > 0 else np.array([-hi, -lo])
-        fits[name] = LineFit(Q_(ends, "N*m"), Q_(phi_mean + slope * (ends - t_mean), "rad").to("arcmin"), count)
-
-    # Level readings use about ±0.5 % of T_N of path either side of a crossing (a record that
-    # mostly dwells has no typical step; then the two samples either side of it).
-    step = _torque_step(torque)
-    half_window = min(int(round(0.005 * t_n / step)), n // 10) if step > 0 else 0
-    # A record that starts unloaded is not on the loop until the torque first leaves the ±3 % band.
-    on_loop = np.ones(n, bool)
-    on_loop[: int(np.argmax(np.abs(torque) > edge))] = False
-    passes = np.where(on_loop, passes, -1)
-    at_zero = _level_twists(torque, twist, passes, 0.0, half_window)
-    if len(at_zero) < 2:
-        raise CalcError(f"{where}: expected the loop to pass 0 N·m in both directions, found {len(at_zero)} pass{'' if len(at_zero) == 1 else 'es'}")
-    band_twists = np.concatenate([at_zero, _level_twists(torque, twist, passes, -edge, half_window), _level_twists(torque, twist, passes, edge, half_window)])
+    fits = {name: _loading_fit(torque, twist, direction, sign, name, t_n, where)
+            for sign, name in ((1, "positive"), (-1, "negative"))}
+    zero_range, band_range = _level_ranges(torque, twist, direction, t_n, where)
 
     def stiffness(fit):
         return stiffness_from_slope(Delta_T=fit.torque[1] - fit.torque[0], Delta_phi=fit.twist[1] - fit.twist[0])
 
-    zero_range = Q_(np.array([at_zero.min(), at_zero.max()]), "rad").to("arcmin")
-    band_range = Q_(np.array([band_twists.min(), band_twists.max()]), "rad").to("arcmin")
     return LoopAnalysis(
         nominal_torque=Q_(t_n, "N*m"),
         stiffness_positive=stiffness(fits["positive"]),
@@ -428,6 +387,74 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
         lost_motion_range=band_range,
         source=where,
     )
+
+
+def _checked_samples(loop: Loop, t_n: float):
+    """The loop's torque [N·m] and twist [rad] as SI floats, once they are enough, finite and loaded
+    both ways beyond the ±3 % band of ``t_n`` [N·m]."""
+    where = loop.source
+    torque = loop.torque.m_as("N*m")
+    twist = loop.twist.m_as("rad")
+    n = len(torque)
+    if n < MIN_SAMPLES:
+        raise CalcError(f"{where}: expected a loop of at least {MIN_SAMPLES} samples, found {n}")
+    if not (np.isfinite(torque).all() and np.isfinite(twist).all()):
+        raise CalcError(f"{where}: expected finite torque and twist samples, found NaN or infinity")
+    edge = LOST_MOTION_BAND * t_n
+    if torque.max() < edge or torque.min() > -edge:
+        raise CalcError(
+            f"{where}: the loop is loaded in one direction only (torque from {torque.min():.4g} to "
+            f"{torque.max():.4g} N·m); expected torque beyond both -3 % and +3 % of the nominal torque (±{edge:.4g} N·m)"
+        )
+    return torque, twist
+
+
+def _loading_fit(torque, twist, direction, sign: int, name: str, t_n: float, where: str) -> LineFit:
+    """The line through the samples loading in one direction (``sign``, called ``name``) between 50 %
+    and 100 % of ``t_n`` [N·m]; SI floats in."""
+    lo, hi = (x * t_n for x in STIFFNESS_BAND)
+    band = (sign * torque >= lo) & (sign * torque <= hi) & (direction == sign)
+    count = int(band.sum())
+    if count < MIN_BAND_SAMPLES:
+        raise CalcError(
+            f"{where}: expected at least {MIN_BAND_SAMPLES} samples loading in the {name} direction between 50 % "
+            f"and 100 % of the nominal torque ({sign * lo:.4g} to {sign * hi:.4g} N·m), found {count}"
+        )
+    slope, t_mean, phi_mean = _line(torque[band], twist[band])
+    if not slope > 0:
+        raise CalcError(
+            f"{where}: the twist does not rise with the torque between 50 % and 100 % of the nominal torque "
+            f"in the {name} direction"
+        )
+    ends = np.array([lo, hi]) if sign > 0 else np.array([-hi, -lo])
+    return LineFit(Q_(ends, "N*m"), Q_(phi_mean + slope * (ends - t_mean), "rad").to("arcmin"), count)
+
+
+def _level_ranges(torque, twist, direction, t_n: float, where: str):
+    """The least and greatest twist [arcmin] over the loop's passes at 0 N·m, and at -3 %, 0 and
+    +3 % of ``t_n`` [N·m]; SI floats in."""
+    n = len(torque)
+    edge = LOST_MOTION_BAND * t_n
+    passes = np.concatenate(([0], np.cumsum(direction[1:] != direction[:-1])))
+    # Level readings use about ±0.5 % of T_N of path either side of a crossing (a record that
+    # mostly dwells has no typical step; then the two samples either side of it).
+    step = _torque_step(torque)
+    half_window = min(int(round(0.005 * t_n / step)), n // 10) if step > 0 else 0
+    # A record that starts unloaded is not on the loop until the torque first leaves the ±3 % band.
+    on_loop = np.ones(n, bool)
+    on_loop[: int(np.argmax(np.abs(torque) > edge))] = False
+    passes = np.where(on_loop, passes, -1)
+    at_zero = _level_twists(torque, twist, passes, 0.0, half_window)
+    if len(at_zero) < 2:
+        raise CalcError(
+            f"{where}: expected the loop to pass 0 N·m in both directions, "
+            f"found {len(at_zero)} pass{'' if len(at_zero) == 1 else 'es'}"
+        )
+    band_twists = np.concatenate([at_zero, _level_twists(torque, twist, passes, -edge, half_window),
+                                  _level_twists(torque, twist, passes, edge, half_window)])
+    zero_range = Q_(np.array([at_zero.min(), at_zero.max()]), "rad").to("arcmin")
+    band_range = Q_(np.array([band_twists.min(), band_twists.max()]), "rad").to("arcmin")
+    return zero_range, band_range
 
 
 def _torque_step(torque: np.ndarray) -> float:
