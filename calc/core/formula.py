@@ -351,7 +351,7 @@ class Formula:
         ----------
         result : pint.Quantity [the result's unit], optional
             The result when already computed.
-        **values : pint.Quantity
+        **values : pint.Quantity [each symbol's unit]
             Each input by its symbol's name.
 
         Returns

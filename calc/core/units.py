@@ -307,7 +307,7 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
 
     Parameters
     ----------
-    value : pint.Quantity or number
+    value : pint.Quantity [any unit] or number
         The value to check.
     expected : str or Kind
         The kind it must be.
@@ -348,7 +348,7 @@ def to_si(value, expected: str | Kind, where: str):
 
     Parameters
     ----------
-    value : pint.Quantity
+    value : pint.Quantity [any unit]
         The quantity, scalar or array.
     expected : str or Kind
         The kind it must be.
@@ -376,7 +376,7 @@ def magnitude_in(q: pint.Quantity, unit_text: str):
 
     Parameters
     ----------
-    q : pint.Quantity
+    q : pint.Quantity [any unit]
         The quantity, scalar or array.
     unit_text : str
         The unit wanted (``"rev/s"``).
@@ -467,7 +467,7 @@ def fmt(q, unit: str, digits: int = 4) -> str:
 
     Parameters
     ----------
-    q : pint.Quantity
+    q : pint.Quantity [any unit]
         A scalar quantity.
     unit : str
         The unit to show it in (``"N*m"``).
@@ -600,7 +600,7 @@ class Value:
 
         Parameters
         ----------
-        q : pint.Quantity
+        q : pint.Quantity [any unit]
             A scalar quantity.
         unit_text : str
             The unit to show it in.
