@@ -106,10 +106,24 @@ class BandTable:
         return np.asarray(self.values, dtype=float)
 
     def band(self, value, where: str = "value"):
-        """Index of the band of each value (a quantity of :attr:`kind`, scalar or array).
+        """Index of the band of each value.
 
-        Raises :class:`CalcError` naming ``where`` for a value of another kind or outside the
-        table, ``lower[0]`` to ``top``.
+        Parameters
+        ----------
+        value : pint.Quantity [a unit of kind]
+            Scalar or array, of the table's :attr:`kind`.
+        where : str
+            The argument or key, for error messages; default ``"value"``.
+
+        Returns
+        -------
+        int or numpy.ndarray of int
+            The band of each value.
+
+        Raises
+        ------
+        CalcError
+            Naming ``where``, for a value of another kind or outside the table, ``lower[0]`` to ``top``.
         """
         x = as_kind(value, self.kind, where).m_as(self.unit)
         up, down = x + np.abs(x) * BOUNDARY_RTOL, x - np.abs(x) * BOUNDARY_RTOL
@@ -122,12 +136,37 @@ class BandTable:
         return np.searchsorted(self.bounds[1:], down, side="left")  # just above a boundary is on it
 
     def lookup(self, value, where: str = "value"):
-        """The factor of each value (scalar or array), the higher one at a boundary."""
+        """The factor of each value (scalar or array), the higher one at a boundary.
+
+        Parameters
+        ----------
+        value : pint.Quantity [a unit of kind]
+            Scalar or array, of the table's :attr:`kind`.
+        where : str
+            The argument or key, for error messages; default ``"value"``.
+
+        Returns
+        -------
+        float or numpy.ndarray [1]
+            The factor of each value's band.
+        """
         return self.factors[self.band(value, where)]
 
     def text(self, k: int, latex: bool = False) -> str:
-        """Band ``k`` as a reader writes it, ``1500 <= Z_h < 2000 1/h``; with ``latex``, for math
-        mode (``\\le``, ``\\ge``, the unit as text)."""
+        r"""Band ``k`` as a reader writes it, ``1500 <= Z_h < 2000 1/h``.
+
+        Parameters
+        ----------
+        k : int
+            The band.
+        latex : bool
+            For math mode (``\le``, ``\ge``, the unit as text); default False.
+
+        Returns
+        -------
+        str
+            The band's range.
+        """
         le, ge = (r"\le", r"\ge") if latex else ("<=", ">=")
         low, last = self.bounds[k], k + 1 == len(self)
         high = self.top if last else self.bounds[k + 1]
@@ -148,7 +187,13 @@ class BandTable:
         return rf"{band}\ \text{{{unit}}}" if latex else f"{band} {unit}"
 
     def range_text(self) -> str:
-        """The values the table covers, ``Z_h >= 0 1/h`` or ``T <= 120 °C``."""
+        """The values the table covers, ``Z_h >= 0 1/h`` or ``T <= 120 °C``.
+
+        Returns
+        -------
+        str
+            The covered range as a reader writes it.
+        """
         low, high = self.bounds[0], self.top
         unit = pretty_unit(self.unit)
         if math.isinf(low):
@@ -165,7 +210,19 @@ FACTOR_DIR = CATALOG_DIR / "factors"
 @dataclass(frozen=True)
 class FactorRole:
     """What a factor table is looked up by: the symbol of the value, its kind, and the table used
-    when a case names none (None: the check that needs it is not made without one)."""
+    when a case names none (None: the check that needs it is not made without one).
+
+    Parameters
+    ----------
+    symbol : str
+        The looked-up value's symbol (``"Z_h"``).
+    kind : str
+        Its kind (``"per_hour"``).
+    default : str or None
+        The table used when a case names none.
+    what : str
+        What the factor is, in words.
+    """
 
     symbol: str
     kind: str
@@ -184,6 +241,18 @@ ROLES = {
 def table_names(role: str) -> list[str]:
     """The names of the tables of ``role`` shipped in :data:`FACTOR_DIR`.
 
+    Parameters
+    ----------
+    role : str
+        A key of :data:`ROLES` (``"temperature"``).
+
+    Returns
+    -------
+    list of str
+        The names, sorted.
+
+    Examples
+    --------
     >>> table_names("temperature")
     ['comintec', 'roba-es', 'source']
     """
@@ -191,10 +260,27 @@ def table_names(role: str) -> list[str]:
 
 
 def factor_table(role: str, name_or_path: str | None = None, base: Path | None = None, where: str = "factor table") -> BandTable:
-    """The factor table of ``role`` (a key of :data:`ROLES`) by name (``"roba-es"`` is
-    ``catalogs/factors/<role>-roba-es.csv``) or by path to a CSV file (relative to ``base``, the
-    case file's folder); the role's default for None.
+    """The factor table of ``role`` by name or by path; the role's default for None.
 
+    Parameters
+    ----------
+    role : str
+        A key of :data:`ROLES`.
+    name_or_path : str, optional
+        A table's name (``"roba-es"`` is ``catalogs/factors/<role>-roba-es.csv``) or a path to a CSV
+        file; None for the role's default.
+    base : pathlib.Path, optional
+        The case file's folder, which a relative path is read from.
+    where : str
+        The key, for error messages; default ``"factor table"``.
+
+    Returns
+    -------
+    BandTable
+        The table, read and checked once per run.
+
+    Examples
+    --------
     >>> float(factor_table("temperature", "roba-es").lookup(Q_(60, "degC")))
     1.5
     """
@@ -216,15 +302,34 @@ _COLUMNS = ("from", "to", "factor", "at_boundary", "source")
 
 
 def load_factor_table(path, symbol: str, kind: str) -> BandTable:
-    """Read and check a factor table: a CSV file with the columns ``from [unit]``, ``to [unit]``
-    (the band's ends, in a unit of ``kind``), ``factor [1]``, ``at_boundary`` (``higher`` or
-    ``lower``, the same in every row, :data:`AT_BOUNDARY`) and ``source``; one row per band, in
-    rising order. The first row's ``from`` and the last row's ``to`` may be empty (an open end).
+    """Read and check a factor table.
 
-    Raises :class:`CalcError` naming the file, row and column for a missing column, a unit of the
-    wrong kind, a cell that is not a number, a factor at or below zero, bands that do not rise, a
-    gap or overlap between bands (a row's ``from`` differs from the row before's ``to``), and
-    factors that fall as the value rises.
+    The file is a CSV file with the columns ``from [unit]``, ``to [unit]`` (the band's ends, in a
+    unit of ``kind``), ``factor [1]``, ``at_boundary`` (``higher`` or ``lower``, the same in every
+    row, :data:`AT_BOUNDARY`) and ``source``; one row per band, in rising order. The first row's
+    ``from`` and the last row's ``to`` may be empty (an open end).
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The CSV file.
+    symbol : str
+        The looked-up value's symbol, for the band texts.
+    kind : str
+        The kind of the band's ends.
+
+    Returns
+    -------
+    BandTable
+        The table.
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column for a missing column, a unit of the wrong kind, a cell that
+        is not a number, a factor at or below zero, bands that do not rise, a gap or overlap between
+        bands (a row's ``from`` differs from the row before's ``to``), and factors that fall as the
+        value rises.
     """
     path = Path(path)
     try:

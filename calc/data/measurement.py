@@ -40,7 +40,17 @@ TIME = Column("time", "time", "time of the sample")
 
 @dataclass(frozen=True)
 class Measurement:
-    """The columns of a measurement file as quantity arrays, with its comment lines."""
+    """The columns of a measurement file as quantity arrays, with its comment lines.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The file.
+    columns : dict
+        Each column by name, a quantity array in the file's unit.
+    comments : tuple of str
+        The file's comment lines, without their ``#``.
+    """
 
     path: Path
     columns: dict
@@ -51,7 +61,22 @@ class Measurement:
 
 
 def measurement_path(text, base: Path | None, where: str) -> Path:
-    """The file a case names (relative to the case file's folder); an error if it is missing."""
+    """The file a case names (relative to the case file's folder); an error if it is missing.
+
+    Parameters
+    ----------
+    text : str
+        The path as the case writes it.
+    base : pathlib.Path or None
+        The case file's folder.
+    where : str
+        The key, for error messages.
+
+    Returns
+    -------
+    pathlib.Path
+        The file.
+    """
     if not isinstance(text, str) or not text.strip():
         raise CalcError(f"{where}: expected the path of a CSV file in quotes, found {text!r}")
     path = Path(text)
@@ -63,12 +88,30 @@ def measurement_path(text, base: Path | None, where: str) -> Path:
 
 
 def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, ...] = ()) -> Measurement:
-    """Read a measurement file and check it against ``columns`` (name, kind, description) and
-    those of ``optional`` that its header has.
+    """Read a measurement file and check it against ``columns`` and those of ``optional`` that its
+    header has.
 
-    Raises :class:`CalcError` naming the file, row and column for: a missing column, a header
-    unit of the wrong kind, an empty or non-numeric cell, a value that is not finite, or a row
-    with too few cells. Cells may hold any sign (a twist, an error).
+    Cells may hold any sign (a twist, an error).
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The CSV file.
+    columns : tuple of Column
+        The columns it must have (name, kind, description).
+    optional : tuple of Column
+        Columns it may have.
+
+    Returns
+    -------
+    Measurement
+        Its columns and comment lines.
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column for: a missing column, a header unit of the wrong kind, an
+        empty or non-numeric cell, a value that is not finite, or a row with too few cells.
     """
     path = Path(path)
     try:
@@ -182,7 +225,22 @@ def _table_cell_by_cell(body: str, names: dict, columns, path: Path, first_row: 
 def write_measurement(path, columns: dict, units: dict, comments: tuple[str, ...], digits: int = 6) -> None:
     """Write quantity arrays as a measurement file: comment lines, a header with units, rows.
 
-    ``columns`` maps a name to a quantity array, ``units`` the name to the unit it is written in.
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file to write.
+    columns : dict
+        Each column by name, a quantity array.
+    units : dict
+        Each column by name, the unit it is written in.
+    comments : tuple of str
+        The comment lines.
+    digits : int
+        Significant figures of each cell; default 6.
+
+    Returns
+    -------
+    None
     """
     path = Path(path)
     arrays = [np.asarray(q.m_as(units[name]), dtype=float) for name, q in columns.items()]
@@ -196,6 +254,16 @@ def travel_direction(values: np.ndarray) -> np.ndarray:
     The sign of the mean of the next ``k`` samples minus the mean of the previous ``k``
     (``k = max(2, n // 500)``): noise shrinks as ``1/√k`` while the trend grows as ``k``. A run of
     fewer than ``k`` samples between two runs of the other sign is noise, and takes their sign.
+
+    Parameters
+    ----------
+    values : numpy.ndarray
+        The samples in the order recorded (magnitudes, any unit).
+
+    Returns
+    -------
+    numpy.ndarray of int
+        The direction of each sample.
     """
     n = len(values)
     k = max(2, n // 500)
@@ -217,8 +285,24 @@ def travel_direction(values: np.ndarray) -> np.ndarray:
 
 
 def check_pair(source: str, first: tuple, second: tuple) -> None:
-    """Check two recorded columns, each ``(name, quantity array, kind)``: their kinds, and that
-    they are two 1-D arrays of one length. Raises :class:`CalcError` naming ``source``."""
+    """Check two recorded columns: their kinds, and that they are two 1-D arrays of one length.
+
+    Parameters
+    ----------
+    source : str
+        Where they come from, for error messages.
+    first, second : tuple
+        Each ``(name, quantity array, kind)``.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    CalcError
+        Naming ``source``.
+    """
     (name_a, a, kind_a), (name_b, b, kind_b) = first, second
     a = as_kind(a, kind_a, f"{source}: {name_a}").magnitude
     b = as_kind(b, kind_b, f"{source}: {name_b}").magnitude
