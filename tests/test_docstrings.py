@@ -102,7 +102,8 @@ def arguments(function, bound: bool) -> tuple:
 
 
 def constructor_arguments(cls) -> tuple:
-    """The arguments a class takes when built: a dataclass's fields, a named tuple's fields, or its
+    """The arguments a class takes when built: a dataclass's fields (those it adds to a base
+    dataclass's), a named tuple's fields, or its
     own ``__init__``'s (one written outside calc, as an exception's, takes none of its own).
 
     Parameters
@@ -116,7 +117,9 @@ def constructor_arguments(cls) -> tuple:
         The argument names.
     """
     if dataclasses.is_dataclass(cls):
-        return tuple(f.name for f in dataclasses.fields(cls) if f.init)
+        # A base dataclass documents the fields it declares.
+        inherited = {f.name for base in cls.__mro__[1:] if dataclasses.is_dataclass(base) for f in dataclasses.fields(base)}
+        return tuple(f.name for f in dataclasses.fields(cls) if f.init and f.name not in inherited)
     if issubclass(cls, tuple) and hasattr(cls, "_fields"):
         return tuple(cls._fields)
     init = next(vars(c)["__init__"] for c in cls.__mro__ if "__init__" in vars(c))

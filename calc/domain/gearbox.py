@@ -172,7 +172,19 @@ M_2k = Formula(
 
 @dataclass(frozen=True)
 class OutputLoad:
-    """External forces on the gearbox output (``[load]``): each None where the case gives none."""
+    """External forces on the gearbox output (``[load]``): each None where the case gives none.
+
+    Parameters
+    ----------
+    axial_force : pint.Quantity [N], optional
+        ``F_2a``.
+    radial_force : pint.Quantity [N], optional
+        ``F_2r``.
+    lever_arm : pint.Quantity [mm], optional
+        ``x_2``, from the output flange to the radial force.
+    axial_radius : pint.Quantity [mm], optional
+        ``y_2``, from the axis to the axial force's line of action.
+    """
 
     axial_force: object = None  # F_2a
     radial_force: object = None  # F_2r
@@ -190,6 +202,18 @@ def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
     ``F_2a <= F_2A`` (axial), ``F_2r <= F_2R`` (radial) and ``M_2k <= M_2K`` (tilting moment,
     :data:`M_2k`), each made when the case gives its force; a row whose catalog gives no rating
     is not checked ("the catalog gives no F_2R") and does not fail. They govern in both modes.
+
+    Parameters
+    ----------
+    load : OutputLoad
+        The forces the case gives.
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+
+    Returns
+    -------
+    list of CheckArray
+        One check per force given, over the rows.
 
     Notes
     -----
@@ -236,8 +260,22 @@ def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
     takes the shaft (``d_hub >= d``) gives J_1; a row with hubs listed but none that fits has no
     J_1 (the hub check fails); a row with no hubs listed keeps the catalog's J_1.
 
-    Returns (J_1 [kg·cm²], d_hub [mm], d_hub_max [mm]) as float arrays over the rows.
+    Parameters
+    ----------
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+    hubs : Catalog or None
+        Rows of :data:`HUB_SCHEMA`, the clamping hubs of each gearbox.
+    motor_shaft : pint.Quantity [mm], optional
+        The motor's shaft diameter ``d``.
 
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ``(J_1 [kg·cm²], d_hub [mm], d_hub_max [mm])``, float arrays over the rows.
+
+    Examples
+    --------
     >>> from calc.data.catalog import load_catalog, resolve
     >>> cat = load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA)
     >>> hubs = load_catalog(resolve("gearbox-hubs", None, "catalog"), HUB_SCHEMA)
@@ -270,11 +308,25 @@ def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
 def shock_factor(cycles_per_hour, table=SHOCK_FACTORS):
     """Shock factor ``f_s`` for ``Z_h`` cycles per hour (errata E4), scalar or array.
 
-    The table is :data:`SHOCK_FACTORS` unless another is given; a value within :data:`calc.core.checks.BOUNDARY_RTOL` below a
-    boundary counts as on it (:class:`calc.data.bands.BandTable`): a cycle of 0.1 + 0.1 + 0.1 + 2.1 s =
+    A value within :data:`calc.core.checks.BOUNDARY_RTOL` below a boundary counts as on it
+    (:class:`calc.data.bands.BandTable`): a cycle of 0.1 + 0.1 + 0.1 + 2.1 s =
     2.4000000000000004 s gives 1499.9999999999998 cycles per hour, which is 1500. A negative
     ``Z_h`` is refused.
 
+    Parameters
+    ----------
+    cycles_per_hour : pint.Quantity [1/h]
+        ``Z_h``, scalar or array.
+    table : BandTable
+        ``f_s`` against ``Z_h``; default :data:`SHOCK_FACTORS`.
+
+    Returns
+    -------
+    float or numpy.ndarray [1]
+        ``f_s``.
+
+    Examples
+    --------
     >>> [float(shock_factor(Q_(z, "1/hour"))) for z in (999, 1000, 1499, 1500, 2000, 3000)]
     [1.0, 1.1, 1.1, 1.3, 1.6, 2.0]
     >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
@@ -285,7 +337,24 @@ def shock_factor(cycles_per_hour, table=SHOCK_FACTORS):
 
 @dataclass(kw_only=True)
 class Candidate(selection.Candidate):
-    """One gearbox with its checks, as every output lists it."""
+    """One gearbox with its checks, as every output lists it (the fields of
+    :class:`calc.core.selection.Candidate`, and these).
+
+    Parameters
+    ----------
+    ratio : float
+        Its ratio ``i`` [1].
+    T_2max : Value [N·m], optional
+        The peak output torque; None without the motor's peak torque.
+    inertia_ratio : float, optional
+        ``λ`` (E6) [1]; None without the inertias.
+    J_1 : Value [kg·cm²], optional
+        Its input inertia for the clamping hub of ``J_1_hub`` (no value where unknown).
+    J_1_hub : Value [mm], optional
+        The hub bore ``J_1`` is for.
+    best_of_family : bool
+        The best-ranked passing candidate of its family.
+    """
 
     ratio: float
     T_2max: Value | None = None  # None without the motor's peak torque
@@ -300,6 +369,31 @@ class GearboxSelection(Selection):
     """The catalog rows at the desired ratio, checked and ranked.
 
     Arrays are over the rows of ``catalog`` in catalog order; ``order`` ranks them best first.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        The rows checked.
+    mode : str
+        The profile's operating mode, ``"S1"`` or ``"S5"`` (E3).
+    checks : list of CheckArray
+        Every check, governing or not.
+    T_2max : pint.Quantity [N·m] or None
+        The peak output torque per row; None without the motor's peak torque.
+    inertia_ratio : numpy.ndarray or None
+        ``λ`` per row [1]; None without the inertias.
+    passes : numpy.ndarray of bool
+        Every governing check that could be made passes.
+    worst : numpy.ndarray [1]
+        Highest utilization of the governing checks (NaN where one has no rating).
+    order : numpy.ndarray of int
+        The rows, best first.
+    J_1 : pint.Quantity [kg·cm²], optional
+        Each row's J_1 for its clamping hub (:func:`clamping_hubs`).
+    J_1_hub : pint.Quantity [mm], optional
+        The hub bore J_1 is for (NaN where unknown).
+    notes : list of str, optional
+        What the outputs say besides the checks.
     """
 
     catalog: Catalog
@@ -317,7 +411,18 @@ class GearboxSelection(Selection):
     candidate_type = Candidate
 
     def governs(self, check: CheckArray) -> bool:
-        """Whether a check decides the verdict (:func:`governs`)."""
+        """Whether a check decides the verdict (:func:`governs`).
+
+        Parameters
+        ----------
+        check : CheckArray
+            One of the selection's checks.
+
+        Returns
+        -------
+        bool
+            True for a governing check in the selection's mode.
+        """
         return governs(check, self.mode)
 
     @functools.cached_property
@@ -352,12 +457,45 @@ TRAIN = "drive train"
 def governs(check: CheckArray, mode: str) -> bool:
     """Whether a gearbox check decides the verdict in operating mode ``mode`` (E3): a check of that
     mode does; a check of no mode (the emergency stop, the output bearing, the clamping hub) does
-    in both, once it can be made."""
+    in both, once it can be made.
+
+    Parameters
+    ----------
+    check : CheckArray
+        The check.
+    mode : str
+        ``"S1"`` or ``"S5"``.
+
+    Returns
+    -------
+    bool
+        True for a governing check.
+    """
     return check.mode == mode if check.mode is not None else check.made
 
 
 def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
-    """The rows of ``catalog`` whose ratio equals ``ratio`` (to 1 part in 10⁶)."""
+    """The rows of ``catalog`` whose ratio equals ``ratio`` (to 1 part in 10⁶).
+
+    Parameters
+    ----------
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+    ratio : float or pint.Quantity [1]
+        The ratio ``i``.
+    where : str
+        The key, for error messages; default ``"ratio"``.
+
+    Returns
+    -------
+    Catalog
+        The rows at that ratio, partial rows left out.
+
+    Raises
+    ------
+    CalcError
+        Where no usable row has the ratio, naming the catalog's ratios.
+    """
     i = as_kind(ratio, "dimensionless", where).m_as("")
     if not i > 0:
         raise CalcError(f"{where}: expected a ratio above zero, found {i:g}")
@@ -408,6 +546,36 @@ def select_gearbox(
     the excitation before the others (a row it fails, or cannot check for want of ``C_t21``), as it
     puts published rows before illustrative ones; the resonance itself is decided by the coupling
     that is chosen (:func:`calc.domain.coupling.select_coupling`), not here.
+
+    Parameters
+    ----------
+    profile : Profile
+        The load cycle at the gearbox output.
+    catalog : Catalog
+        Rows of :data:`SCHEMA`, at the desired ratio or one part.
+    motor_peak_torque : pint.Quantity [N·m], optional
+        ``T_1B``; without it ``T_2max`` is not checked.
+    motor_inertia : pint.Quantity [kg·cm²], optional
+        The motor's inertia, for the inertia ratio.
+    load_inertia : pint.Quantity [kg·cm²], optional
+        The load's inertia at the output, for the inertia ratio.
+    emergency_stop_torque : pint.Quantity [N·m], optional
+        ``T_2stop``; default ``T_1B · i``.
+    output_load : OutputLoad, optional
+        The forces on the output bearing.
+    hubs : Catalog, optional
+        Rows of :data:`HUB_SCHEMA`.
+    motor_shaft : pint.Quantity [mm], optional
+        The motor's shaft diameter.
+    shock_factors : BandTable
+        ``f_s`` against ``Z_h``; default :data:`SHOCK_FACTORS`.
+    coupling_span : CouplingSpan, optional
+        The couplings a case may fit between motor and gearbox.
+
+    Returns
+    -------
+    GearboxSelection
+        The rows checked and ranked.
     """
     d = duty(profile)
     i = catalog["ratio"]
@@ -497,6 +665,18 @@ def candidates_table(selection: GearboxSelection):
     (``pass``, ``FAIL``, or ``not checked`` where a check is not made or the row has no rating it
     may lack, such as ``T_2Not``). Values are not rounded; round them for display.
 
+    Parameters
+    ----------
+    selection : GearboxSelection
+        The checked rows.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per check of each candidate.
+
+    Examples
+    --------
     >>> from calc.data.catalog import load_catalog, resolve
     >>> from calc.domain.profile import Profile
     >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(240, "rpm"), Q_(40, "N*m")), ("pause", Q_(1, "s"), None, None)])
@@ -549,6 +729,16 @@ def candidates_summary(selection: GearboxSelection):
     its excess; empty for a pass), then ``catalog`` (the file of the row), ``family``, ``size``,
     ``best of family`` (the smallest adequate size of its family), ``J_1 [kg·cm²]`` and ``hub [mm]``
     (the clamping hub J_1 is for), ``doubtful`` (the row's doubtful figures) and ``source``.
+
+    Parameters
+    ----------
+    selection : GearboxSelection
+        The checked rows.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per candidate.
     """
     import pandas as pd
 

@@ -59,9 +59,22 @@ FORMULAS = {
 
 @dataclass(frozen=True)
 class Body:
-    """A body of one of :data:`SHAPES`, its dimensions (quantities by the names of the formulas:
-    ``D``, ``d``, ``L``, ``a``, ``b``), its mass or its density (one of them), and the distance
-    ``e`` of its axis from the axis of rotation."""
+    """A body of one of :data:`SHAPES` turning about an axis.
+
+    Parameters
+    ----------
+    shape : str
+        One of :data:`SHAPES`.
+    dimensions : dict
+        Its dimensions, quantities [mm] by the names of the formulas: ``D``, ``d``, ``L``, ``a``,
+        ``b``.
+    mass : pint.Quantity [kg], optional
+        Its mass; give it or ``density``.
+    density : pint.Quantity [kg/m³], optional
+        Its density; give it or ``mass``.
+    offset : pint.Quantity [mm], optional
+        The distance ``e`` of its axis from the axis of rotation.
+    """
 
     shape: str
     dimensions: dict
@@ -71,7 +84,13 @@ class Body:
 
     def steps(self) -> list:
         """The steps giving its inertia about the axis of rotation: its mass (from the density),
-        its own inertia, and the parallel-axis term where it is off the axis."""
+        its own inertia, and the parallel-axis term where it is off the axis.
+
+        Returns
+        -------
+        list of Step
+            The last one's result is the inertia.
+        """
         m_formula, J_formula, names = FORMULAS[self.shape]
         out = []
         mass = self.mass
