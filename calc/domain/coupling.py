@@ -225,6 +225,20 @@ def start_factor(starts_per_hour, table, where: str = "starts_per_hour"):
     """Start factor ``S_z`` of an elastomer coupling for a number of starts per hour, from a
     maker's table (:func:`calc.data.bands.factor_table` ``("starts", name)``), scalar or array.
 
+    Parameters
+    ----------
+    starts_per_hour : pint.Quantity [1/h]
+        Starts per hour, scalar or array.
+    table : BandTable
+        ``S_z`` against starts per hour.
+    where : str
+        The key, for error messages; default ``"starts_per_hour"``.
+
+    Returns
+    -------
+    float or numpy.ndarray [1]
+        ``S_z``.
+
     Examples
     --------
     Mayr ROBA-ES (B.9.6.EN p. 26): 0-100 starts per hour 1, 101-200 1.2, 201-400 1.4, 401-800
@@ -243,15 +257,17 @@ def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "tem
 
     Parameters
     ----------
-    temperature : Quantity [temperature]
+    temperature : pint.Quantity [°C]
         Operating temperature (``Q_(60, "degC")``; a temperature difference is refused).
     table : calc.data.bands.BandTable
         The factor by temperature band, the higher factor at a boundary. Default: the source's
         table, :data:`TEMPERATURE_FACTORS`.
+    where : str
+        The key, for error messages; default ``"temperature"``.
 
     Returns
     -------
-    float or ndarray
+    float or numpy.ndarray [1]
         The factor ``K_ϑ`` that multiplies ``M_N``.
 
     Notes
@@ -278,7 +294,22 @@ def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "tem
 @dataclass(frozen=True)
 class CouplingCheck(CheckArray):
     """A :class:`calc.core.checks.CheckArray` that may apply to some rows only (a safety coupling's
-    T_A range), and says why it cannot be made where a value is missing."""
+    T_A range), and says why it cannot be made where a value is missing.
+
+    Parameters
+    ----------
+    applies : numpy.ndarray of bool, optional
+        The rows it applies to; None: every row.
+    missing : str or numpy.ndarray of str
+        Why a row without a rated value is not checked; one text, or one per row.
+    lower_bound : bool
+        ``least <= value``: the rated side is the value checked; default False.
+    optional : bool
+        A row without a rating is reported as not checked, and passes; default False.
+    informs : bool
+        Reported for information: it decides nothing (a drive train the case gives in part);
+        default False.
+    """
 
     applies: object = None  # bool array over the rows; None: every row
     missing: object = "the catalog gives no rated value"  # text, or one text per row
@@ -296,11 +327,36 @@ class CouplingCheck(CheckArray):
         return ok if self.applies is None else ok | ~self.applies
 
     def applies_to(self, row: int) -> bool:
+        """Whether the check applies to a row.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        bool
+            True where it is made for the row.
+        """
         return True if self.applies is None else bool(self.applies[row])
 
     def at(self, row: int, governs: bool = True):
         """This check for one row; a row an optional check cannot be made for says why, and
-        decides nothing."""
+        decides nothing.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+        governs : bool
+            Whether it decides the row's verdict; default True.
+
+        Returns
+        -------
+        Check
+            The row's check.
+        """
         check = super().at(row, governs and not self.informs)
         if self.informs:
             # The verdict it would give, shown though it decides nothing; none where it cannot be made.
@@ -314,7 +370,18 @@ class CouplingCheck(CheckArray):
         return check
 
     def reason(self, row: int) -> str:
-        """Why the row fails this check: the excess, the shortfall, or what is missing."""
+        """Why the row fails this check: the excess, the shortfall, or what is missing.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        str
+            The reason as a line of text.
+        """
         if not self.made:
             return f"{self.text}: not checked, {self.not_made}"
         u = self.utilization[row]
@@ -332,10 +399,20 @@ class CouplingCheck(CheckArray):
 @dataclass(frozen=True)
 class DriveTrain:
     """The drive train around the coupling (:mod:`calc.domain.torsion`), every member referred to the
-    coupling's shaft: ``drive`` the members before it, ``load`` those after it, drive to load.
-    ``missing`` names the members the case does not give; the chain is then incomplete, and the
-    check of its first mode is reported for information only. ``shaft`` says which shaft the
-    members are referred to."""
+    coupling's shaft.
+
+    Parameters
+    ----------
+    drive : tuple of Member
+        The members before the coupling, drive to load.
+    load : tuple of Member
+        The members after it, drive to load.
+    missing : tuple of str
+        The members the case does not give; the chain is then incomplete, and the check of its
+        first mode is reported for information only.
+    shaft : str
+        Which shaft the members are referred to; default ``"the coupling's shaft"``.
+    """
 
     drive: tuple
     load: tuple
@@ -349,7 +426,26 @@ class DriveTrain:
 
 @dataclass(kw_only=True)
 class CouplingCandidate(selection.Candidate):
-    """One coupling with its checks and key figures, as every output lists it."""
+    """One coupling with its checks and key figures, as every output lists it (the fields of
+    :class:`calc.core.selection.Candidate`, and these).
+
+    Parameters
+    ----------
+    type : str
+        One of :data:`TYPES`.
+    f_e : Value [Hz]
+        The two-mass natural frequency (no value where the catalog lacks C_T or J).
+    f_1 : Value [Hz] or None
+        The drive train's first mode; None without the drive train.
+    C_T : Value [N·m/rad]
+        Its torsional stiffness.
+    temperature_factor : float
+        ``K_ϑ`` [1].
+    required_torque : Value [N·m]
+        ``M_N · K_ϑ``.
+    peak_torque_required : Value [N·m] or None
+        ``M_Smax``; None without the start factor.
+    """
 
     type: str
     f_e: Value  # the two-mass natural frequency (no value where the catalog lacks C_T or J)
@@ -362,7 +458,49 @@ class CouplingCandidate(selection.Candidate):
 
 @dataclass
 class CouplingSelection(Selection):
-    """The candidate couplings, checked and ranked. Arrays run over the rows of ``catalog``."""
+    """The candidate couplings, checked and ranked. Arrays run over the rows of ``catalog``.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        The rows checked.
+    M_N : pint.Quantity [N·m]
+        Scalar, before the temperature factor.
+    T_op : pint.Quantity [N·m]
+        Peak torque of normal operation, ``M_N`` with ``S_A = 1``.
+    temperature_factor : numpy.ndarray [1]
+        ``K_ϑ`` per row (1 for all but elastomer couplings).
+    M_Nt : pint.Quantity [N·m]
+        Required torque per row.
+    start_factor : float or None
+        ``S_z`` at the case's starts per hour; None without a start-factor table.
+    M_Smax : pint.Quantity [N·m] or None
+        Peak torque with ``S_z`` and ``K_ϑ`` per row (elastomer couplings); None without ``S_z``.
+    C_T : pint.Quantity [N·m/rad]
+        Torsional stiffness per row (a line shaft's at the case's shaft distance).
+    J_A : pint.Quantity [kg·cm²]
+        Drive-side inertia per row, with half the coupling (E7).
+    J_L : pint.Quantity [kg·cm²]
+        Load-side inertia per row, with half the coupling (E7).
+    f_e : pint.Quantity [Hz]
+        Two-mass natural frequency per row.
+    checks : list of CouplingCheck
+        Every check.
+    passes : numpy.ndarray of bool
+        Every check made passes.
+    worst : numpy.ndarray [1]
+        Highest utilization of the checks that apply (inf where one cannot be made).
+    order : numpy.ndarray of int
+        The rows, best first.
+    notes : list of str
+        What is not checked, and why.
+    drive_train : DriveTrain, optional
+        The members around the coupling, as the case gives them.
+    chain : Chain, optional
+        The drive train lumped, its arrays over the rows (None without ``drive_train``).
+    modes : pint.Quantity [Hz], optional
+        Its natural frequencies per row, lowest first (rows × modes).
+    """
 
     catalog: Catalog
     M_N: object  # scalar quantity, before the temperature factor
@@ -401,6 +539,18 @@ class CouplingSelection(Selection):
         )
 
     def row_type(self, row: int) -> str:
+        """The type of a row.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        str
+            One of :data:`TYPES`.
+        """
         return str(self.catalog.text["type"][row])
 
 
@@ -410,6 +560,16 @@ def candidates_frame(selection: CouplingSelection):
     Columns: ``rank``, ``part``, ``type``, ``verdict`` (PASS/FAIL), ``M_N·K_ϑ [N·m]``,
     ``T_KN [N·m]``, ``f_e [Hz]`` (NaN where the catalog lacks C_T or J), ``worst utilization``
     and ``reasons`` (each failed check; empty for a pass). Values are not rounded.
+
+    Parameters
+    ----------
+    selection : CouplingSelection
+        The checked rows.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per candidate.
     """
     import pandas as pd
 
@@ -519,10 +679,14 @@ def select_coupling(
         information where the case leaves a member out.
     where : str
         Prefix of error messages (the case file and section).
+    sources : dict, optional
+        The key that gives each of the acceleration torque and the two inertias, by argument name,
+        for the message of a check not made.
 
     Returns
     -------
     CouplingSelection
+        The candidates checked and ranked.
 
     Examples
     --------
@@ -812,6 +976,24 @@ def order_lines(part: str, coupling_type: str, bores, disengagement_torque=None,
     disengagement torque ``T_A`` for a safety coupling (E10), the distance between shafts for a
     line shaft.
 
+    Parameters
+    ----------
+    part : str
+        The coupling's part (series and size).
+    coupling_type : str
+        One of :data:`TYPES`.
+    bores : list of Bore
+        The shafts, hub 1 first.
+    disengagement_torque : pint.Quantity [N·m], optional
+        ``T_A``, for a safety coupling only.
+    shaft_distance : pint.Quantity [mm], optional
+        The distance between shafts, for a line shaft only (written in the unit given).
+
+    Returns
+    -------
+    list of str
+        The order's lines.
+
     Examples
     --------
     >>> from calc.domain.fits import parse_bore
@@ -839,8 +1021,22 @@ SIDES = ("input", "output")
 
 
 def check_types(catalog: Catalog) -> None:
-    """Each row's type is known and the row fills the columns its type needs; raises
-    :class:`CalcError` naming the file, row and column."""
+    """Each row's type is known and the row fills the columns its type needs.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column.
+    """
     types = catalog.text["type"]
 
     def where(j):

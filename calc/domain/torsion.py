@@ -64,9 +64,18 @@ inertia_at_output = Formula(
 class Member:
     """One member of a drive train, drive to load, referred to the chain's shaft.
 
-    ``inertia`` sits on the member's drive end; ``stiffness`` (None for a rigid mass) joins it to
-    ``load_inertia`` on its load end (half a coupling). Each value is a quantity, scalar or an
-    array over candidates.
+    Each value is a quantity, scalar or an array over candidates.
+
+    Parameters
+    ----------
+    name : str
+        What it is (``"gearbox"``).
+    inertia : pint.Quantity [kg·cm²]
+        The inertia on the member's drive end.
+    stiffness : pint.Quantity [N·m/rad], optional
+        The spring joining it to ``load_inertia``; None for a rigid mass.
+    load_inertia : pint.Quantity [kg·cm²], optional
+        The inertia on its load end (half a coupling).
     """
 
     name: str
@@ -79,8 +88,16 @@ class Member:
 class Chain:
     """Masses and springs in series, drive to load, as lumped from :class:`Member` s.
 
-    ``inertias`` has the masses on its last axis, ``stiffnesses`` the springs between them (one
-    fewer); leading axes run over candidates. ``masses`` and ``springs`` name what each holds.
+    Parameters
+    ----------
+    masses : tuple of str
+        What each mass holds (``"motor + coupling"``).
+    springs : tuple of str
+        What each spring is.
+    inertias : pint.Quantity [kg·cm²]
+        The masses on the last axis; leading axes run over candidates.
+    stiffnesses : pint.Quantity [N·m/rad]
+        The springs between them (one fewer) on the last axis.
     """
 
     masses: tuple
@@ -90,13 +107,31 @@ class Chain:
 
     def natural_frequencies(self):
         """The chain's natural frequencies, lowest first, the rigid-body mode left out
-        (:func:`natural_frequencies`)."""
+        (:func:`natural_frequencies`).
+
+        Returns
+        -------
+        pint.Quantity [Hz]
+            Shape ``(..., n - 1)``.
+        """
         return natural_frequencies(self.inertias, self.stiffnesses)
 
 
 def lumped(members, where: str = "drive train") -> Chain:
     """The chain of masses and springs of ``members`` (drive to load): inertias with no spring
     between them add into one mass.
+
+    Parameters
+    ----------
+    members : sequence of Member
+        The drive train, drive to load.
+    where : str
+        The train's name, for error messages; default ``"drive train"``.
+
+    Returns
+    -------
+    Chain
+        Its masses and springs.
 
     Examples
     --------
@@ -152,6 +187,8 @@ def natural_frequencies(inertias, stiffnesses, where: str = "drive train"):
         The masses, drive to load; leading axes run over candidates.
     stiffnesses : Quantity [stiffness], shape (..., n - 1)
         The springs between neighbouring masses (with their angle unit, E15).
+    where : str
+        The train's name, for error messages; default ``"drive train"``.
 
     Returns
     -------
@@ -199,10 +236,21 @@ class CouplingSpan:
     """The couplings a case may fit between motor and gearbox, and what the drive train around
     them holds fixed: enough to bound, for any gearbox, the first mode its train can reach.
 
-    ``drive_inertia`` is the motor's rotor, ``load_inertia`` the load at the gearbox output;
-    ``stiffness`` and ``inertia`` are arrays over the couplings (each its ``C_T`` and its whole
-    ``J``, half on each end of its spring); ``f_min`` is the lowest first mode allowed (``2 f_er``,
-    E7); ``couplings`` says which couplings they are."""
+    Parameters
+    ----------
+    drive_inertia : pint.Quantity [kg·cm²]
+        The motor's rotor.
+    load_inertia : pint.Quantity [kg·cm²]
+        The load at the gearbox output.
+    stiffness : pint.Quantity [N·m/rad]
+        Each coupling's ``C_T``, an array over the couplings.
+    inertia : pint.Quantity [kg·cm²]
+        Each coupling's whole ``J`` (half on each end of its spring), an array over the couplings.
+    f_min : pint.Quantity [Hz]
+        The lowest first mode allowed (``2 f_er``, E7).
+    couplings : str
+        Which couplings they are.
+    """
 
     drive_inertia: object
     load_inertia: object
@@ -236,15 +284,31 @@ first_mode_of_three = Formula(
 
 
 def highest_first_mode(span: CouplingSpan, J_1, C_t21, i):
-    """For each gearbox (arrays ``J_1``, ``C_t21`` and ``i`` over gearboxes), the highest first
-    natural frequency of the train motor, coupling, gearbox, load that any coupling of ``span``
-    gives it: the train lumped as :func:`lumped` does, seen from the gearbox input (the load as
-    ``J_L / i²``, the gearbox's spring as ``C_t21 / i²``). NaN for a gearbox whose ``J_1`` or
-    ``C_t21`` is unknown.
+    """For each gearbox, the highest first natural frequency of the train motor, coupling, gearbox,
+    load that any coupling of ``span`` gives it: the train lumped as :func:`lumped` does, seen from
+    the gearbox input (the load as ``J_L / i²``, the gearbox's spring as ``C_t21 / i²``).
 
     A gearbox is the train's soft spring: where even the best coupling leaves the first mode below
     ``2 f_er``, no coupling can rescue it.
 
+    Parameters
+    ----------
+    span : CouplingSpan
+        The couplings and the fixed members.
+    J_1 : pint.Quantity [kg·cm²]
+        Each gearbox's input inertia, an array over gearboxes.
+    C_t21 : pint.Quantity [N·m/arcmin]
+        Each gearbox's torsional stiffness at its output.
+    i : pint.Quantity [1]
+        Each gearbox's ratio.
+
+    Returns
+    -------
+    pint.Quantity [Hz]
+        Over gearboxes; NaN for a gearbox whose ``J_1`` or ``C_t21`` is unknown.
+
+    Examples
+    --------
     >>> from calc.core.units import Q_
     >>> span = CouplingSpan(Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2"), Q_([25_000, 6_000], "N*m/rad"),
     ...                     Q_([1.0, 0.6], "kg*cm**2"), Q_(200, "Hz"), "two bellows")
