@@ -85,7 +85,19 @@ lost_motion_from_loop = Formula(
 
 @dataclass(frozen=True)
 class Loop:
-    """A torque/twist loop: two quantity arrays in the order recorded, and where it came from."""
+    """A torque/twist loop: two quantity arrays in the order recorded, and where it came from.
+
+    Parameters
+    ----------
+    torque : pint.Quantity [N·m]
+        Torque at the output, per sample.
+    twist : pint.Quantity [arcmin]
+        Twist at the output, per sample.
+    source : str
+        Where it came from (a file), for error messages; default ``"loop"``.
+    comments : tuple of str
+        The file's comment lines.
+    """
 
     torque: object
     twist: object
@@ -97,13 +109,38 @@ class Loop:
 
 
 def read_loop(path) -> Loop:
-    """Read a measured loop: a CSV file with columns ``torque [unit]`` and ``twist [unit]``."""
+    """Read a measured loop: a CSV file with columns ``torque [unit]`` and ``twist [unit]``.
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file.
+
+    Returns
+    -------
+    Loop
+        Its samples in the order recorded.
+    """
     m = read_measurement(path, COLUMNS)
     return Loop(m["torque"], m["twist"], source=str(path), comments=m.comments)
 
 
 def write_loop(path, loop: Loop, comments: tuple[str, ...]) -> None:
-    """Write a loop as a measurement file (torque in N·m, twist in arcmin)."""
+    """Write a loop as a measurement file (torque in N·m, twist in arcmin).
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file to write.
+    loop : Loop
+        The loop.
+    comments : tuple of str
+        The file's comment lines.
+
+    Returns
+    -------
+    None
+    """
     write_measurement(path, {"torque": loop.torque, "twist": loop.twist}, {"torque": "N*m", "twist": "arcmin"}, comments)
 
 
@@ -196,7 +233,18 @@ class LoopModel:
         return torque / c + phi_s * np.tanh(torque / t_s) + 0.5 * g * np.tanh(torque / t_g)
 
     def middle_curve(self, torque):
-        """``e(T)``, the twist through the middle of the loop, for a torque quantity (array)."""
+        """``e(T)``, the twist through the middle of the loop.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            Scalar or array.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            The twist at each torque.
+        """
         t = as_kind(torque, "torque", "torque").m_as("N*m")
         return Q_(self._e(t), "rad").to("arcmin")
 
@@ -212,6 +260,16 @@ class LoopModel:
         The path is cut into monotone ramps at its turning points; on a rising ramp the
         internal torque is ``max(T - T_f, state)``, on a falling one ``min(T + T_f, state)``,
         ``state`` being where the previous ramp left it (a play operator, one step per ramp).
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            The torque path, an array.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            The twist at each point of the path.
         """
         t = as_kind(torque, "torque", "torque").m_as("N*m")
         t_f = self._si[5]
@@ -234,6 +292,11 @@ class LoopModel:
 
         The source's procedure loads to ``+T_N`` and then the other way to ``-T_N``; the last
         ramp back to ``+T_N`` closes the loop, so each branch passes 0 N·m and ±3 % whole.
+
+        Returns
+        -------
+        Loop
+            The sampled loop.
 
         Parameters
         ----------
@@ -272,6 +335,22 @@ class LoopModel:
 def model_for_part(part: str, catalog: str = "gearboxes", **shape) -> LoopModel:
     """The loop model of a catalog gearbox: ``C_t21``, backlash and ``T_2N`` from its row.
 
+    Parameters
+    ----------
+    part : str
+        The gearbox's part.
+    catalog : str
+        The catalog's name or path; default ``"gearboxes"``.
+    **shape : float
+        The shape factors of :class:`LoopModel` (``soft_share``, ...), by name.
+
+    Returns
+    -------
+    LoopModel
+        The gearbox's loop.
+
+    Examples
+    --------
     >>> m = model_for_part("TP010-10")
     >>> print(fmt(m.stiffness, "N*m/arcmin"), fmt(m.backlash, "arcmin"), fmt(m.nominal_torque, "N*m"))
     23 N·m/arcmin 3 arcmin 81 N·m
@@ -288,7 +367,17 @@ def model_for_part(part: str, catalog: str = "gearboxes", **shape) -> LoopModel:
 
 @dataclass(frozen=True)
 class LineFit:
-    """A fitted straight line of the loop, from torque ``T_a`` to ``T_b`` (for plots and steps)."""
+    """A fitted straight line of the loop, from torque ``T_a`` to ``T_b`` (for plots and steps).
+
+    Parameters
+    ----------
+    torque : pint.Quantity [N·m]
+        ``[T_a, T_b]``.
+    twist : pint.Quantity [arcmin]
+        The fitted twist at ``T_a`` and ``T_b``.
+    samples : int
+        The samples the line is fitted through.
+    """
 
     torque: object  # quantity array [T_a, T_b]
     twist: object  # quantity array, the fitted twist at T_a and T_b
@@ -297,7 +386,27 @@ class LineFit:
 
 @dataclass(frozen=True)
 class LoopAnalysis:
-    """Stiffness, backlash and lost motion of a loop (E12), with what a plot or report shows."""
+    """Stiffness, backlash and lost motion of a loop (E12), with what a plot or report shows.
+
+    Parameters
+    ----------
+    nominal_torque : pint.Quantity [N·m]
+        ``T_N``.
+    stiffness_positive, stiffness_negative : pint.Quantity [N·m/arcmin]
+        The stiffness loading each way.
+    fit_positive, fit_negative : LineFit
+        The lines they come from.
+    backlash : pint.Quantity [arcmin]
+        The loop's width at 0 N·m.
+    backlash_range : pint.Quantity [arcmin]
+        ``[min, max]`` of the twist at 0 N·m.
+    lost_motion : pint.Quantity [arcmin]
+        The loop's width over ±3 % of ``T_N``.
+    lost_motion_range : pint.Quantity [arcmin]
+        ``[min, max]`` of the twist over ±3 % of ``T_N``.
+    source : str
+        Where the loop came from.
+    """
 
     nominal_torque: object
     stiffness_positive: object
@@ -316,7 +425,13 @@ class LoopAnalysis:
         return min(self.stiffness_positive, self.stiffness_negative)
 
     def steps(self) -> list:
-        """The formulas with this loop's numbers, for a notebook or report."""
+        """The formulas with this loop's numbers, for a notebook or report.
+
+        Returns
+        -------
+        list of Step
+            The stiffness each way, the backlash and the lost motion.
+        """
         out = []
         for fit in (self.fit_positive, self.fit_negative):
             d_t, d_phi = fit.torque[1] - fit.torque[0], fit.twist[1] - fit.twist[0]
