@@ -99,6 +99,18 @@ def low_torque_limit(nominal_torque):
     """The torque up to which the backlash form of positioning accuracy applies (E13): 3 % of
     ``T_N``.
 
+    Parameters
+    ----------
+    nominal_torque : pint.Quantity [N·m]
+        ``T_N``.
+
+    Returns
+    -------
+    pint.Quantity [N·m]
+        3 % of it.
+
+    Examples
+    --------
     >>> print(fmt(low_torque_limit(Q_(110, "N*m")), "N*m"))
     3.3 N·m
     """
@@ -112,9 +124,15 @@ def low_torque_limit(nominal_torque):
 class PositioningRule:
     """Which form of positioning accuracy applies at an applied torque (E13), and why.
 
-    ``low_torque`` (a bool, or a bool array over an array of torques) is ``|T| <= 3 %`` of the
-    nominal torque: the backlash is not taken up, ``φ_TA + j_t``; else the twist counts,
-    ``φ_TA + |T| / C``. ``limit`` is 3 % of ``T_N`` (None at zero torque without a nominal torque).
+    Parameters
+    ----------
+    applied_torque : pint.Quantity [N·m]
+        The torque, scalar or array.
+    limit : pint.Quantity [N·m] or None
+        3 % of ``T_N`` (None at zero torque without a nominal torque).
+    low_torque : bool or numpy.ndarray of bool
+        ``|T| <= 3 %`` of the nominal torque: the backlash is not taken up, ``φ_TA + j_t``; else
+        the twist counts, ``φ_TA + |T| / C``.
     """
 
     applied_torque: object
@@ -135,13 +153,43 @@ class PositioningRule:
         return f"|T| = {t} {'<=' if self.low_torque else '>'} 3 % of T_N = {fmt(self.limit, 'N*m')}"
 
     def accuracy(self, transmission_accuracy, backlash, stiffness):
-        """Positioning accuracy by this rule, in arcmin (over every torque of the rule)."""
+        """Positioning accuracy by this rule (over every torque of the rule).
+
+        Parameters
+        ----------
+        transmission_accuracy : pint.Quantity [arcmin]
+            ``φ_TA``.
+        backlash : pint.Quantity [arcmin]
+            ``j_t``.
+        stiffness : pint.Quantity [N·m/arcmin]
+            ``C``.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            The positioning accuracy at each torque.
+        """
         low = positioning_accuracy_low(phi_TA=transmission_accuracy, j_t=backlash).m_as("arcmin")
         high = positioning_accuracy_high(phi_TA=transmission_accuracy, T=self.applied_torque, C=stiffness).m_as("arcmin")
         return Q_(np.where(self.low_torque, low, high)[()], "arcmin")
 
     def step(self, transmission_accuracy, backlash, stiffness):
-        """The formula that applies, with the numbers (one torque)."""
+        """The formula that applies, with the numbers (one torque).
+
+        Parameters
+        ----------
+        transmission_accuracy : pint.Quantity [arcmin]
+            ``φ_TA``.
+        backlash : pint.Quantity [arcmin]
+            ``j_t``.
+        stiffness : pint.Quantity [N·m/arcmin]
+            ``C``.
+
+        Returns
+        -------
+        Step
+            The evaluated formula.
+        """
         if self.low_torque:
             return positioning_accuracy_low.step(phi_TA=transmission_accuracy, j_t=backlash)
         return positioning_accuracy_high.step(phi_TA=transmission_accuracy, T=self.applied_torque, C=stiffness)
@@ -155,6 +203,20 @@ def positioning_rule(applied_torque, nominal_torque=None) -> PositioningRule:
     boundaries of E3 and E4. The nominal torque may be left out only at zero torque, where the
     backlash form holds whatever it is.
 
+    Parameters
+    ----------
+    applied_torque : pint.Quantity [N·m]
+        ``T``, scalar or array.
+    nominal_torque : pint.Quantity [N·m], optional
+        ``T_N``; may be left out only at zero torque.
+
+    Returns
+    -------
+    PositioningRule
+        The form that applies at each torque.
+
+    Examples
+    --------
     >>> r = positioning_rule(Q_(8, "N*m"), Q_(110, "N*m"))
     >>> r.text, r.why
     ('|T| > 3 % of T_N: phi_TA + |T| / C', '|T| = 8 N·m > 3 % of T_N = 3.3 N·m')
@@ -214,11 +276,22 @@ def repeatability(applied_torque, backlash, stiffness):
     approach under the same torque, so it shifts the position without spreading it. An axis
     positioned to within ±a cannot repeat worse than 2a, whatever this bound says.
 
+    Parameters
+    ----------
+    applied_torque : pint.Quantity [N·m]
+        ``T``, scalar or array.
+    backlash : pint.Quantity [arcmin]
+        ``j_t``.
+    stiffness : pint.Quantity [N·m/arcmin]
+        ``C``.
+
     Returns
     -------
-    (Quantity [arcmin], bool array)
+    tuple of (pint.Quantity [arcmin], numpy.ndarray of bool)
         The value and whether it is an upper bound (``T ≠ 0``) rather than the value itself.
 
+    Examples
+    --------
     >>> value, bound = repeatability(Q_(0, "N*m"), Q_(3, "arcmin"), Q_(23, "N*m/arcmin"))
     >>> print(fmt(value, "arcmin"), bool(bound))
     3 arcmin False
@@ -229,7 +302,27 @@ def repeatability(applied_torque, backlash, stiffness):
 
 @dataclass(frozen=True)
 class ChainAccuracy:
-    """Lost motion, positioning accuracy and repeatability of a chain at an applied torque."""
+    """Lost motion, positioning accuracy and repeatability of a chain at an applied torque.
+
+    Parameters
+    ----------
+    chain : Chain
+        The members, as evaluated at the torque.
+    applied_torque : pint.Quantity [N·m]
+        ``T`` at the output.
+    nominal_torque : pint.Quantity [N·m] or None
+        ``T_N`` for the 3 % rule; None only at zero torque.
+    rule : PositioningRule
+        The form of positioning accuracy that applies.
+    lost_motion : pint.Quantity [arcmin]
+        The chain's lost motion at the torque.
+    positioning_accuracy : pint.Quantity [arcmin]
+        By the rule.
+    repeatability : pint.Quantity [arcmin]
+        The value, or its upper bound under torque.
+    repeatability_is_bound : bool
+        ``repeatability`` is an upper bound (``T ≠ 0``).
+    """
 
     chain: Chain
     applied_torque: object
@@ -246,7 +339,13 @@ class ChainAccuracy:
         return bool(self.rule.low_torque)
 
     def steps(self) -> list:
-        """Each formula with the chain's numbers, in the order a reviewer reads them."""
+        """Each formula with the chain's numbers, in the order a reviewer reads them.
+
+        Returns
+        -------
+        list of Step
+            The evaluated formulas.
+        """
         c = self.chain
         out = []
         # A member of unknown stiffness stands in rigid (its 1/C is zero): its steps are left out.
@@ -275,6 +374,22 @@ def chain_accuracy(chain: Chain, applied_torque, nominal_torque=None) -> ChainAc
     (:meth:`calc.domain.stiffness.Chain.at_torque`), so the chain's stiffness is its secant at
     ``applied_torque`` and the twist in the lost motion and positioning accuracy is the curve's.
 
+    Parameters
+    ----------
+    chain : Chain
+        The members of the chain.
+    applied_torque : pint.Quantity [N·m]
+        ``T`` at the output.
+    nominal_torque : pint.Quantity [N·m], optional
+        ``T_N`` for the 3 % rule.
+
+    Returns
+    -------
+    ChainAccuracy
+        Lost motion, positioning accuracy and repeatability.
+
+    Examples
+    --------
     >>> from calc.domain.stiffness import Component
     >>> gearbox = Component("EPL-W-064 10:1", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"),
     ...                     Q_(60, "arcsec"), Q_(40, "N*m"))
@@ -316,7 +431,23 @@ POSITION_COLUMNS = (
 
 @dataclass(frozen=True)
 class PositioningScatter:
-    """A measured positioning record: errors per approach, measured accuracy and repeatability."""
+    """A measured positioning record: errors per approach, measured accuracy and repeatability.
+
+    Parameters
+    ----------
+    target : pint.Quantity [deg]
+        The target of each approach.
+    error : pint.Quantity [arcmin]
+        The error of each approach (actual minus target).
+    accuracy : pint.Quantity [arcmin]
+        The largest ``|error|``.
+    repeatability : pint.Quantity [arcmin]
+        The largest spread (max - min error) at one target.
+    targets : int
+        How many targets.
+    source : str
+        Where the record came from.
+    """
 
     target: object  # quantity array [deg], per approach
     error: object  # quantity array [arcmin], per approach
@@ -333,6 +464,22 @@ def analyze_positions(target, actual, source: str = "positions") -> PositioningS
     Accuracy); repeatability the largest spread of the actual position over the approaches to one
     target (source, Positioning Repeatability). Every target must be approached at least twice.
 
+    Parameters
+    ----------
+    target : pint.Quantity [deg]
+        The target of each approach.
+    actual : pint.Quantity [deg]
+        The position reached.
+    source : str
+        Where the record came from, for error messages; default ``"positions"``.
+
+    Returns
+    -------
+    PositioningScatter
+        The errors, accuracy and repeatability.
+
+    Examples
+    --------
     >>> r = analyze_positions(Q_([0, 0, 90, 90], "deg"), Q_([0.01, 0.02, 90.01, 90.03], "deg"))
     >>> print(fmt(r.accuracy, "arcmin"), fmt(r.repeatability, "arcmin"))
     1.8 arcmin 1.2 arcmin
@@ -359,6 +506,17 @@ def analyze_positions(target, actual, source: str = "positions") -> PositioningS
 
 
 def read_positions(path) -> PositioningScatter:
-    """Read and analyse a positioning record: a CSV file with ``target [unit]`` and ``actual [unit]``."""
+    """Read and analyse a positioning record: a CSV file with ``target [unit]`` and ``actual [unit]``.
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file.
+
+    Returns
+    -------
+    PositioningScatter
+        Its analysis (:func:`analyze_positions`).
+    """
     m = read_measurement(path, POSITION_COLUMNS)
     return analyze_positions(m["target"], m["actual"], source=str(path))

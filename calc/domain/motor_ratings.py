@@ -138,21 +138,60 @@ CURVE_COLUMNS = (Column("speed", "speed", "motor speed", positive=False), Column
 
 @dataclass(frozen=True)
 class Curves:
-    """Speed-torque curves digitised from the makers' charts: per (part, curve) the points as
-    speeds [rad/s] and torques [N·m], speed ascending, and the file they come from."""
+    """Speed-torque curves digitised from the makers' charts.
+
+    Parameters
+    ----------
+    points : dict
+        Per ``(part, curve)``, the points as ``(speeds [rad/s], torques [N·m])`` float arrays, speed
+        ascending.
+    path : pathlib.Path
+        The file they come from.
+    """
 
     points: dict
     path: Path
 
     def of(self, part: str, curve: str):
+        """One curve of one motor.
+
+        Parameters
+        ----------
+        part : str
+            The motor's part.
+        curve : str
+            ``"peak"`` or ``"S1"``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray or None
+            Its speeds [rad/s] and torques [N·m]; None where the file has no such curve.
+        """
         return self.points.get((part, curve))
 
 
 def read_curves(path: Path, parts) -> Curves:
     """A curves file: the columns ``part``, ``curve`` (``peak`` or ``S1``), ``speed`` and ``torque``
-    with their units in brackets, and ``source``; a curve's rows in ascending speed. An error names
-    the file, row and column: an unknown part (not in ``parts``, the catalog's), an unknown curve,
-    a speed not above the one before, a negative or malformed number, a missing source."""
+    with their units in brackets, and ``source``; a curve's rows in ascending speed.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The CSV file.
+    parts : numpy.ndarray of str
+        The catalog's parts, which the file's must be among.
+
+    Returns
+    -------
+    Curves
+        The curves by part and curve.
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column: an unknown part, an unknown curve, a speed not above the
+        one before, a negative or malformed number, a missing source.
+    """
     try:
         text = path.read_text(encoding="utf-8-sig")
     except (OSError, UnicodeDecodeError) as exc:
@@ -198,9 +237,23 @@ def read_curves(path: Path, parts) -> Curves:
 
 @dataclass(frozen=True)
 class Cycle:
-    """A load cycle at the motor: per sample, the motor torque of each motor (rows × samples,
-    N·m), the motor speed (rad/s) and the duration (s); the RMS torque of each motor; the
-    load-to-motor inertia ratio of each (None where it cannot be had) and what it misses."""
+    """A load cycle at the motor, per sample, with the RMS torque and inertia ratio of each motor.
+
+    Parameters
+    ----------
+    torque : numpy.ndarray [N·m]
+        The motor torque of each motor (rows × samples).
+    speed : numpy.ndarray [rad/s]
+        The motor speed of each sample.
+    dt : numpy.ndarray [s]
+        The duration of each sample.
+    rms : numpy.ndarray [N·m]
+        The RMS torque of each motor.
+    inertia_ratio : numpy.ndarray [1] or None
+        The load-to-motor inertia ratio of each; None where it cannot be had.
+    inertia_ratio_missing : str, optional
+        What the inertia ratio misses.
+    """
 
     torque: np.ndarray
     speed: np.ndarray
@@ -211,8 +264,26 @@ class Cycle:
 
 
 def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None, curves: Curves | None = None) -> tuple[np.ndarray, list]:
-    """The peak torque of each catalog row at each speed (rows × speeds, N·m; ``speed`` in rad/s,
-    magnitudes), and the form each row's came from (see the module)."""
+    """The peak torque of each catalog row at each speed, and the form each row's came from (see the
+    module).
+
+    Parameters
+    ----------
+    cat : Catalog
+        The motor rows.
+    speed : numpy.ndarray [rad/s]
+        The speeds (magnitudes).
+    dc_link : pint.Quantity [V], optional
+        The drive's DC-link voltage.
+    curves : Curves, optional
+        The digitised curves.
+
+    Returns
+    -------
+    tuple
+        ``(limit, forms)``: the peak torque [N·m], rows × speeds, and per row ``"ratings"``,
+        ``"voltage limit"`` or ``"curves"``.
+    """
     n = np.abs(np.asarray(speed, float))[None, :]
     M_max = cat["M_max"].m_as("N*m")[:, None]
     M_N = cat["M_N"].m_as("N*m")[:, None]
@@ -244,7 +315,22 @@ def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None, curves: Curves | N
 
 
 def s1_limit(cat: Catalog, speed: float, curves: Curves | None) -> np.ndarray:
-    """Each row's continuous torque at ``speed`` [rad/s] on its S1 curve; NaN without one."""
+    """Each row's continuous torque at ``speed`` on its S1 curve; NaN without one.
+
+    Parameters
+    ----------
+    cat : Catalog
+        The motor rows.
+    speed : float [rad/s]
+        The speed.
+    curves : Curves or None
+        The digitised curves.
+
+    Returns
+    -------
+    numpy.ndarray [N·m]
+        One per row.
+    """
     out = np.full(len(cat), np.nan)
     for r, part in enumerate(cat.parts):
         points = None if curves is None else curves.of(str(part), "S1")
@@ -255,7 +341,20 @@ def s1_limit(cat: Catalog, speed: float, curves: Curves | None) -> np.ndarray:
 
 @dataclass(kw_only=True)
 class MotorCandidate(Candidate):
-    """A catalog motor with its checks, its ratings and the form of its characteristic."""
+    """A catalog motor with its checks, its ratings and the form of its characteristic (the fields of
+    :class:`calc.core.selection.Candidate`, and these).
+
+    Parameters
+    ----------
+    rated_torque : Value [N·m]
+        Its rated torque ``T_1N``.
+    rotor_inertia : Value [kg·cm²]
+        Its rotor's inertia.
+    form : str
+        Where its peak torque comes from: ``"ratings"``, ``"voltage limit"`` or ``"curves"``.
+    inertia_ratio : float or None
+        The load-to-motor inertia ratio [1]; None where it cannot be had.
+    """
 
     rated_torque: Value
     rotor_inertia: Value
@@ -265,7 +364,41 @@ class MotorCandidate(Candidate):
 
 @dataclass
 class MotorSelection(Selection):
-    """The catalog motors checked against a cycle and ranked. Arrays run over the rows of ``catalog``."""
+    """The catalog motors checked against a cycle and ranked. Arrays run over the rows of ``catalog``.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        The rows checked.
+    cycle : Cycle
+        The cycle at the motor.
+    limit : numpy.ndarray [N·m]
+        Peak torque of each row at each sample's speed.
+    forms : list of str
+        Per row: ``"ratings"``, ``"voltage limit"`` or ``"curves"``.
+    dc_link : pint.Quantity [V] or None
+        The drive's DC-link voltage; None where the case gives none.
+    s1 : numpy.ndarray [N·m]
+        Each row's continuous torque on its S1 curve at the mean speed (NaN without one).
+    curves : Curves or None
+        The curves file the case names, None without one.
+    mean_speed : float [rad/s]
+        The cycle's mean speed.
+    inertia_limit : float [1]
+        The highest inertia ratio allowed.
+    inertia_limit_from : str
+        Where that limit comes from.
+    checks : list of CheckArray
+        Every check.
+    passes : numpy.ndarray of bool
+        Every check made passes.
+    worst : numpy.ndarray [1]
+        Highest utilization of each row.
+    order : numpy.ndarray of int
+        The rows, best first.
+    notes : list of str
+        What the outputs say besides the checks.
+    """
 
     catalog: Catalog
     cycle: Cycle
@@ -286,7 +419,20 @@ class MotorSelection(Selection):
     candidate_type = MotorCandidate
 
     def applies(self, check, row: int) -> bool:
-        """A row with an S1 curve is held to it at the mean speed, not to its rated speed."""
+        """A row with an S1 curve is held to it at the mean speed, not to its rated speed.
+
+        Parameters
+        ----------
+        check : CheckArray
+            One of the selection's checks.
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        bool
+            True where the check is made for the row.
+        """
         return check.name != "n_N" or np.isnan(self.s1[row])
 
     def row_fields(self, row: int) -> dict:
@@ -299,7 +445,30 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | Non
                   inertia_limit_from: str = "the default", t_cycle: float | None = None) -> MotorSelection:
     """Every row of ``cat`` (no partial row) against the cycle at the motor (:class:`Cycle`), its
     checks (module docstring) and the ranking (:data:`RANKING`); failing rows after the passing
-    ones, closest to passing first."""
+    ones, closest to passing first.
+
+    Parameters
+    ----------
+    cat : Catalog
+        The motor rows.
+    cycle : Cycle
+        The cycle at the motor.
+    dc_link : pint.Quantity [V], optional
+        The drive's DC-link voltage.
+    curves : Curves, optional
+        The digitised curves.
+    inertia_limit : float [1]
+        The highest inertia ratio allowed; default :data:`INERTIA_RATIO_LIMIT`.
+    inertia_limit_from : str
+        Where that limit comes from; default ``"the default"``.
+    t_cycle : float [s], optional
+        The cycle time, against the motors' thermal time constants.
+
+    Returns
+    -------
+    MotorSelection
+        The rows checked and ranked.
+    """
     rows = len(cat)
     limit, forms = peak_limit(cat, cycle.speed, dc_link, curves)
     with np.errstate(invalid="ignore", divide="ignore"):
