@@ -109,8 +109,44 @@ class Mechanism:
     ``type`` is one of :data:`TYPES`. A rotary table has ``inertia``, ``friction_torque`` and
     ``process_torque``; a linear one ``mass``, ``friction_coefficient``, ``incline``, ``force``,
     ``eta``, its ``lead`` (ball screw) or ``diameter`` (pinion, pulley), the own inertia
-    ``own_inertia``, a ``counterweight`` and a ``drag_torque`` (None: none). ``holding_brake``: a
-    brake holds the load in a dwell (no torque there).
+    ``own_inertia``, a ``counterweight`` and a ``drag_torque`` (None: none).
+
+    Parameters
+    ----------
+    type : str
+        One of :data:`TYPES`.
+    inertia : pint.Quantity [kg·cm²], optional
+        A table's inertia at the output.
+    friction_torque : pint.Quantity [N·m], optional
+        A table's friction torque.
+    process_torque : pint.Quantity [N·m], optional
+        A table's process torque.
+    mass : pint.Quantity [kg], optional
+        The moved mass of a linear axis.
+    friction_coefficient : pint.Quantity [1], optional
+        ``μ`` of its guide.
+    incline : pint.Quantity [deg], optional
+        ``θ``, the axis's angle to the horizontal.
+    force : pint.Quantity [N], optional
+        ``F_p``, the process force.
+    eta : pint.Quantity [1], optional
+        The mechanism's efficiency.
+    lead : pint.Quantity [mm], optional
+        ``p``, a ball screw's lead.
+    diameter : pint.Quantity [mm], optional
+        ``d``, a pinion's or pulley's diameter.
+    own_inertia : pint.Quantity [kg·cm²], optional
+        ``J_M``, the screw's, pinion's or pulleys' own inertia.
+    counterweight : pint.Quantity [kg], optional
+        ``m_c``.
+    drag_torque : pint.Quantity [N·m], optional
+        ``T_d``, a drag at the shaft.
+    holding_brake : bool
+        A brake holds the load in a dwell (no torque there); default False.
+    bodies : tuple of Body
+        A rotary table's bodies, whose inertias are in ``inertia``.
+    given_inertia : pint.Quantity [kg·cm²], optional
+        The inertia the case gives besides the bodies.
     """
 
     type: str
@@ -149,7 +185,13 @@ class Mechanism:
         return "length" if self.linear else "angle"
 
     def radius_step(self):
-        """The step giving r (linear types): ``p / (2π)`` of a screw, ``d / 2`` else."""
+        """The step giving r (linear types): ``p / (2π)`` of a screw, ``d / 2`` else.
+
+        Returns
+        -------
+        Step
+            Its result in mm.
+        """
         if self.type == "ball-screw":
             return r_lead.step(p=self.lead)
         return r_diameter.step(d=self.diameter)
@@ -159,7 +201,13 @@ class Mechanism:
         return self.radius_step().result
 
     def load_inertia_step(self):
-        """The step giving J_L, the load's inertia at the output (linear types)."""
+        """The step giving J_L, the load's inertia at the output (linear types).
+
+        Returns
+        -------
+        Step
+            Its result in kg·cm².
+        """
         return J_L_linear.step(m=self.mass, m_c=self._counterweight, r=self.radius, J_M=self.own_inertia)
 
     @property
@@ -168,20 +216,49 @@ class Mechanism:
         return self.load_inertia_step().result if self.linear else self.inertia.to("kg*cm**2")
 
     def to_output(self, distance):
-        """A move's distance (an angle or a length) as the output's angle."""
+        """A move's distance as the output's angle.
+
+        Parameters
+        ----------
+        distance : pint.Quantity [deg or mm]
+            An angle (a table) or a length (a linear axis).
+
+        Returns
+        -------
+        pint.Quantity [rad]
+            The output's angle.
+        """
         if not self.linear:
             return distance.to("deg")
         return phi_2(s=distance, r=self.radius)
 
     def to_load(self):
-        """The factor from the output's angle [rad] to the load's travel [m or rad] (SI floats)."""
+        """The factor from the output's angle to the load's travel (SI floats).
+
+        Returns
+        -------
+        float [m/rad or 1]
+            The load's travel per radian of the output: ``r`` of a linear axis, 1 for a table.
+        """
         return float(self.radius.m_as("m")) if self.linear else 1.0
 
     def torque(self, speed: np.ndarray, acceleration: np.ndarray) -> np.ndarray:
-        """T_2 [N·m] at output speeds [rad/s] and accelerations [rad/s²] (SI float arrays): the
-        formulas of this module with the direction of motion from the speed's sign (0 at rest)
-        and, on a linear axis, the direction of power from the force's. Zero at rest where a
-        holding brake holds the load."""
+        """``T_2`` at output speeds and accelerations: the formulas of this module with the direction of
+        motion from the speed's sign (0 at rest) and, on a linear axis, the direction of power from the
+        force's. Zero at rest where a holding brake holds the load.
+
+        Parameters
+        ----------
+        speed : numpy.ndarray [rad/s]
+            Output speeds (SI floats).
+        acceleration : numpy.ndarray [rad/s²]
+            Output accelerations (SI floats).
+
+        Returns
+        -------
+        numpy.ndarray [N·m]
+            ``T_2`` per sample.
+        """
         s_v = np.sign(speed)
         if self.linear:
             r = self.to_load()
@@ -203,9 +280,22 @@ class Mechanism:
         return float(Q_(q).m_as(unit))
 
     def steps(self, speed, acceleration) -> list:
-        """The steps of the output torque at one output speed and acceleration (quantities): the
-        force and the torque of a linear axis, the torque of a table. For the report and the
-        notebook; the direction of motion and of power as :meth:`torque` takes them."""
+        """The steps of the output torque at one output speed and acceleration: the force and the torque
+        of a linear axis, the torque of a table. For the report and the notebook; the direction of
+        motion and of power as :meth:`torque` takes them.
+
+        Parameters
+        ----------
+        speed : pint.Quantity [rpm]
+            The output speed.
+        acceleration : pint.Quantity [rad/s²]
+            The output acceleration.
+
+        Returns
+        -------
+        list of Step
+            The evaluated formulas.
+        """
         w = speed.m_as("rad/s")
         s_v = Q_(float(np.sign(w)), "")
         if not self.linear:
@@ -243,7 +333,20 @@ T_p_equivalent = Formula(
 
 
 def radius_of(type_: str, size):
-    """The transmission radius of a linear type from its lead (a screw) or diameter."""
+    """The transmission radius of a linear type from its lead (a screw) or diameter.
+
+    Parameters
+    ----------
+    type_ : str
+        A linear type of :data:`TYPES`.
+    size : pint.Quantity [mm]
+        The lead or the diameter.
+
+    Returns
+    -------
+    pint.Quantity [mm]
+        ``r``.
+    """
     return r_lead(p=size) if type_ == "ball-screw" else r_diameter(d=size)
 
 
@@ -262,6 +365,22 @@ def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[s
 
     A move's distance follows :func:`converted_distance`.
 
+    Parameters
+    ----------
+    mech : Mechanism
+        The mechanism replaced.
+    type_ : str
+        The new type, one of :data:`TYPES`.
+    size : pint.Quantity [mm], optional
+        The new lead or diameter (a linear type).
+
+    Returns
+    -------
+    tuple of (Mechanism, list of str)
+        The new mechanism and what it leaves out.
+
+    Examples
+    --------
     >>> table = Mechanism("rotary", inertia=Q_(1500, "kg*cm**2"), friction_torque=Q_(3, "N*m"), process_torque=Q_(0, "N*m"))
     >>> screw, left = converted(table, "ball-screw", Q_(20, "mm"))
     >>> round(screw.mass.m_as("kg"), 2), screw.drag_torque, float(screw.load_inertia.m_as("kg*cm**2")), left  # 0.15 / (0.02 / 2π)²
@@ -296,7 +415,22 @@ def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[s
 def converted_distance(old: Mechanism, new: Mechanism, distance):
     """A move's distance for the mechanism ``new`` that replaced ``old`` (:func:`converted`): the
     same travel of the carriage from one linear axis to another, else the same angle of the
-    gearbox output."""
+    gearbox output.
+
+    Parameters
+    ----------
+    old : Mechanism
+        The mechanism replaced.
+    new : Mechanism
+        Its replacement.
+    distance : pint.Quantity [deg or mm]
+        The move's distance on ``old``.
+
+    Returns
+    -------
+    pint.Quantity [deg or mm]
+        The distance on ``new``.
+    """
     if old.linear and new.linear:
         return distance
     angle = old.to_output(distance)

@@ -119,6 +119,17 @@ class StiffnessCurve:
     The twist under a torque of either sign is the curve's at ``|T|`` (a gear's curve is
     published for one direction; the other is taken as its mirror).
 
+    Parameters
+    ----------
+    T_1 : pint.Quantity [N·m]
+        The first limit torque.
+    T_2 : pint.Quantity [N·m]
+        The second limit torque, above ``T_1``.
+    K_1, K_2, K_3 : pint.Quantity [N·m/rad]
+        The slopes below ``T_1``, from ``T_1`` to ``T_2``, above ``T_2``.
+    where : str
+        The key, for error messages; default ``"stiffness_curve"``.
+
     Examples
     --------
     Harmonic Drive's engineering data for HFUC-32-100: T_1 = 29 N·m, K_1 = 6.7·10⁴ N·m/rad,
@@ -150,7 +161,18 @@ class StiffnessCurve:
 
     def band(self, torque) -> np.ndarray:
         """The slope ``|T|`` falls on: 0 up to ``T_1``, 1 up to ``T_2``, 2 above (a limit torque
-        belongs to the band below it)."""
+        belongs to the band below it).
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            Scalar or array, either sign.
+
+        Returns
+        -------
+        numpy.ndarray of int
+            The band of each torque.
+        """
         x = abs(as_kind(torque, "torque", "torque")).m_as("N*m")
         return np.searchsorted([self.T_1.m_as("N*m"), self.T_2.m_as("N*m")], x, side="left")
 
@@ -161,23 +183,55 @@ class StiffnessCurve:
         return (twist_low, low), (twist_middle, middle), (twist_high, dict(middle, T_2=self.T_2, K_3=self.K_3))
 
     def twist(self, torque):
-        """The twist under ``torque`` (scalar or array), in arcmin: by the slope of the band
-        ``|T|`` falls in (the three formulas :data:`twist_low`, :data:`twist_middle`,
-        :data:`twist_high`)."""
+        """The twist under ``torque``: by the slope of the band ``|T|`` falls in (the three formulas
+        :data:`twist_low`, :data:`twist_middle`, :data:`twist_high`).
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            Scalar or array, either sign.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            The twist at each torque.
+        """
         t = abs(as_kind(torque, "torque", "torque"))
         by_band = [f(T=t, **figures).m_as("arcmin") for f, figures in self._band_formulas()]
         return Q_(np.choose(self.band(t), np.broadcast_arrays(*by_band))[()], "arcmin")
 
     def steps(self, torque) -> list:
-        """The twist at ``torque`` by the formula of its band, and the secant stiffness from it."""
+        """The twist at ``torque`` by the formula of its band, and the secant stiffness from it.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            One torque.
+
+        Returns
+        -------
+        list of Step
+            The twist, and the secant stiffness where the torque is not zero.
+        """
         t = abs(as_kind(torque, "torque", "torque"))
         formula, figures = self._band_formulas()[int(self.band(t))]
         twist = formula.step(T=t, **figures)
         return [twist] if t.m_as("N*m") == 0 else [twist, secant_stiffness.step(T=t, phi=twist.result)]
 
     def secant(self, torque):
-        """The secant stiffness ``|T| / φ(T)`` (scalar or array); up to ``T_1``, zero torque
-        included, that is ``K_1`` itself."""
+        """The secant stiffness ``|T| / φ(T)``; up to ``T_1``, zero torque included, that is ``K_1``
+        itself.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            Scalar or array, either sign.
+
+        Returns
+        -------
+        pint.Quantity [N·m/arcmin]
+            The secant stiffness at each torque.
+        """
         t = abs(as_kind(torque, "torque", "torque"))
         first = t.m_as("N*m") <= self.T_1.m_as("N*m")
         with np.errstate(invalid="ignore", divide="ignore"):
@@ -244,9 +298,15 @@ class Component:
 class Chain:
     """Components from drive to load, every figure referred to the output shaft (E11).
 
-    ``ratio`` is the gearbox's ratio ``i``; it is needed as soon as one component sits on the
-    input side.
+    Parameters
+    ----------
+    components : tuple of Component
+        The members, drive to load.
+    ratio : pint.Quantity [1], optional
+        The gearbox's ratio ``i``; needed as soon as one component sits on the input side.
 
+    Examples
+    --------
     >>> coupling = Component("EKM-15", "output", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin"))
     >>> gearbox = Component("EPL-W-064 10:1", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"))
     >>> round(float(Chain((coupling, gearbox)).stiffness.m_as("N*m/arcmin")), 2)
@@ -273,7 +333,18 @@ class Chain:
             )
 
     def with_component(self, component: Component) -> "Chain":
-        """The chain with one more component at its load end."""
+        """The chain with one more component at its load end.
+
+        Parameters
+        ----------
+        component : Component
+            The member added.
+
+        Returns
+        -------
+        Chain
+            A new chain.
+        """
         return Chain((*self.components, component), self.ratio)
 
     @property
@@ -285,7 +356,18 @@ class Chain:
         """The chain at an output torque: each member with a stiffness curve stands in with its
         secant stiffness at the torque it carries (``|T| / i`` on the input side), so that
         ``|T| / C_k`` is the curve's own twist and ``C_total`` the chain's secant. A chain without
-        curves is returned as it is."""
+        curves is returned as it is.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            The torque at the output.
+
+        Returns
+        -------
+        Chain
+            The chain with secant stiffnesses.
+        """
         if not self.has_curves:
             return self
         t = abs(as_kind(torque, "torque", "torque"))
@@ -299,7 +381,18 @@ class Chain:
     def stiffness_at(self, torque):
         """The chain's stiffness at the output at each torque (scalar or array): ``C_total`` for a
         chain without curves; with curves the secant ``|T| / Σ φ_k(T)`` (at zero torque, the
-        series of the first slopes)."""
+        series of the first slopes).
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            The torque at the output, scalar or array.
+
+        Returns
+        -------
+        pint.Quantity [N·m/arcmin]
+            The chain's stiffness at each torque.
+        """
         if not self.has_curves:
             return self.stiffness
         t = abs(as_kind(torque, "torque", "torque"))
@@ -353,7 +446,18 @@ class Chain:
 
     def twist(self, torque):
         """Each component's twist under ``torque`` at the output, ``|T| / C_k`` (the sum is
-        ``|T| / C_total``); a member with a stiffness curve twists by its curve."""
+        ``|T| / C_total``); a member with a stiffness curve twists by its curve.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            The torque at the output.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            Each component's twist, drive to load (an array).
+        """
         t = as_kind(torque, "torque", "torque")
         return (abs(t) / self.at_torque(t).stiffness_at_output).to("arcmin")
 
