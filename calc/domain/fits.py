@@ -101,6 +101,20 @@ def _half_it(grade: int, band: np.ndarray) -> np.ndarray:
 def split_class(tolerance_class: str, where: str = "tolerance class") -> tuple[str, int]:
     """``"k6"`` → ``("k", 6)``, checked against the classes this module covers.
 
+    Parameters
+    ----------
+    tolerance_class : str
+        Such as ``"k6"`` or ``"H7"``.
+    where : str
+        The key, for error messages; default ``"tolerance class"``.
+
+    Returns
+    -------
+    tuple of (str, int)
+        The letter(s) and the grade.
+
+    Examples
+    --------
     >>> split_class("k6"), split_class("H7")
     (('k', 6), ('H', 7))
     """
@@ -136,6 +150,8 @@ def limit_deviations(nominal, tolerance_class: str, where: str = "tolerance clas
         Nominal size, scalar or array, over 0 up to 500 mm.
     tolerance_class : str
         Such as ``"k6"`` (shaft) or ``"H7"`` (hole).
+    where : str
+        The key, for error messages; default ``"tolerance class"``.
 
     Returns
     -------
@@ -184,10 +200,22 @@ def limit_deviations(nominal, tolerance_class: str, where: str = "tolerance clas
 class Bore:
     """A shaft (or bore) as ordered: nominal size, tolerance, limits and keyway.
 
-    ``tolerance`` is the ISO class (``"k6"``) or the limits as written (``'+0/-.0005"'``), or
-    None when the text gives none; ``lower`` and ``upper`` are the limits of size (None without
-    a tolerance). ``member`` is ``"shaft"`` for a lower-case ISO class, ``"hole"`` for an upper-case
-    one, None for written limits. ``text`` is the order text (``14 mm k6``).
+    Parameters
+    ----------
+    text : str
+        The order text (``14 mm k6``).
+    nominal : pint.Quantity [mm or in]
+        The nominal size, in the text's unit.
+    tolerance : str or None
+        The ISO class (``"k6"``) or the limits as written (``'+0/-.0005"'``); None when the text
+        gives none.
+    member : str or None
+        ``"shaft"`` for a lower-case ISO class, ``"hole"`` for an upper-case one, None for written
+        limits.
+    lower, upper : pint.Quantity [mm or in] or None
+        The limits of size; None without a tolerance.
+    keyway : pint.Quantity [mm or in] or None
+        The keyway's width; None without one.
     """
 
     text: str
@@ -204,7 +232,13 @@ class Bore:
         return "in" if self.nominal.units == ureg.inch else f"{self.nominal.units:~}"
 
     def limits_text(self) -> str:
-        """``19.002 / 19.015 mm``: the smallest and largest size, in the text's unit."""
+        """``19.002 / 19.015 mm``: the smallest and largest size, in the text's unit.
+
+        Returns
+        -------
+        str
+            The limits as text.
+        """
         if self.lower is None:
             return "no tolerance given"
         digits = 4 if self.unit == "in" else 3
@@ -269,6 +303,18 @@ def parse_bore(text, where: str = "bore") -> Bore:
 
     Raises :class:`CalcError` naming ``where`` for a malformed text, an unknown unit or ISO class,
     a size outside the ISO tables, or limits that leave no tolerance.
+
+    Parameters
+    ----------
+    text : str
+        The order text.
+    where : str
+        The key, for error messages; default ``"bore"``.
+
+    Returns
+    -------
+    Bore
+        The shaft.
 
     Examples
     --------

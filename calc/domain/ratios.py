@@ -47,6 +47,35 @@ class RatioSearch:
     """The best gearbox of each ratio of a catalog, the motor through it, and the ratio to pick.
 
     Arrays run over :attr:`ratios` (ascending) unless said otherwise.
+
+    Parameters
+    ----------
+    selection : GearboxSelection
+        Every row of the catalog, each at its own ratio.
+    ratios : numpy.ndarray [1]
+        The distinct ratios.
+    rows : numpy.ndarray of int
+        The best row of each ratio, an index into the catalog.
+    load : MotorLoad or None
+        ``T_1`` of shape (ratios, samples); None where the torques cannot be computed.
+    speed : pint.Quantity [rpm]
+        Highest motor speed ``n_2max · i``.
+    motor : list of CheckArray
+        Over the ratios, one per motor rating given.
+    inertia_ratio : numpy.ndarray [1]
+        ``λ`` of each ratio's best row (NaN where not known).
+    gearbox_passes : numpy.ndarray of bool
+        The best row passes.
+    feasible : numpy.ndarray of bool
+        The best row and the motor pass.
+    utilization : numpy.ndarray [1]
+        Highest governing utilization of gearbox and motor.
+    pick : int or None
+        The ratio picked, an index into ``ratios``.
+    reason : str
+        Why, in one sentence.
+    notes : list of str
+        What the motor torques count or lack.
     """
 
     selection: GearboxSelection  # every row of the catalog, each at its own ratio
@@ -68,16 +97,50 @@ class RatioSearch:
         return self.selection.catalog.parts[self.rows]
 
     def gearbox_reasons(self, k: int) -> list[str]:
-        """Why the best gearbox of ratio ``k`` fails (empty when it passes)."""
+        """Why the best gearbox of ratio ``k`` fails (empty when it passes).
+
+        Parameters
+        ----------
+        k : int
+            An index into :attr:`ratios`.
+
+        Returns
+        -------
+        list of str
+            One line per check.
+        """
         return self.selection.reasons(int(self.rows[k]))
 
     def motor_reasons(self, k: int) -> list[str]:
+        """Why the motor fails at ratio ``k`` (empty when it passes).
+
+        Parameters
+        ----------
+        k : int
+            An index into :attr:`ratios`.
+
+        Returns
+        -------
+        list of str
+            One line per motor check.
+        """
         return [c.reason(k) for c in self.motor if not c.passes[k]]
 
 
 def best_rows(selection: GearboxSelection) -> tuple[np.ndarray, np.ndarray]:
     """The distinct ratios of the selection's catalog (ascending) and, for each, the row ranked
-    first among the rows of that ratio."""
+    first among the rows of that ratio.
+
+    Parameters
+    ----------
+    selection : GearboxSelection
+        Every row of the catalog, checked.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The ratios [1] and the rows (indices into the catalog).
+    """
     ratio = selection.catalog["ratio"].m_as("")
     ratios, group = np.unique(ratio, return_inverse=True)
     ranked_groups = group[selection.order]
@@ -106,6 +169,30 @@ def search_ratios(
     ``rated_torque`` and ``max_speed`` those of :func:`calc.domain.motor.motor_checks`. A ratio whose
     best gearbox gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible
     (a note says so).
+
+    Parameters
+    ----------
+    catalog : Catalog
+        The gearbox rows, of every ratio.
+    profile : Profile
+        The load cycle at the output.
+    load : OutputLoad
+        The cycle at the output for the motor's side.
+    rated_torque : pint.Quantity [N·m], optional
+        The motor's ``T_1N``.
+    max_speed : pint.Quantity [rpm], optional
+        The motor's ``n_max``.
+    rotor_inertia : callable, optional
+        ``rotor_inertia(J_1)`` as above.
+    hubs : Catalog, optional
+        The clamping hubs.
+    **selection
+        Further arguments of :func:`calc.domain.gearbox.select_gearbox`.
+
+    Returns
+    -------
+    RatioSearch
+        Every ratio and the pick.
     """
     motor_peak_torque, motor_inertia = selection.get("motor_peak_torque"), selection.get("motor_inertia")
     if catalog.partial.any():  # partial rows are never ranked (no copy of a catalog without them)
@@ -140,7 +227,28 @@ def search_ratios(
 
 
 def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str]) -> tuple[int | None, str]:
-    """The ratio to pick by :data:`RULE` (an index into ``ratios``) and why, in one sentence."""
+    """The ratio to pick by :data:`RULE` and why, in one sentence.
+
+    Parameters
+    ----------
+    ratios : numpy.ndarray [1]
+        The distinct ratios.
+    parts : numpy.ndarray of str
+        The best part of each.
+    feasible : numpy.ndarray of bool
+        The best row and the motor pass.
+    inertia_ratio : numpy.ndarray [1]
+        ``λ`` of each (NaN where not known).
+    torques : MotorLoad or None
+        The motor torques of each; None where they cannot be computed.
+    not_made : list of str
+        What is missing, where no ratio is feasible for want of it.
+
+    Returns
+    -------
+    tuple of (int or None, str)
+        An index into ``ratios`` (None where none can be picked) and the reason.
+    """
     if not feasible.any():
         why = "; ".join(dict.fromkeys(not_made)) if not_made else "at no ratio do the best gearbox and the motor pass"
         return None, f"No ratio can be picked: {why}."

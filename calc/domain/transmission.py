@@ -57,7 +57,19 @@ transmission_accuracy = Formula(
 
 @dataclass(frozen=True)
 class Trace:
-    """Input and output positions in the order recorded (quantity arrays), and their source."""
+    """Input and output positions in the order recorded (quantity arrays), and their source.
+
+    Parameters
+    ----------
+    input : pint.Quantity [deg]
+        Input positions.
+    output : pint.Quantity [deg]
+        Output positions.
+    source : str
+        Where it came from; default ``"trace"``.
+    comments : tuple of str
+        The file's comment lines.
+    """
 
     input: object
     output: object
@@ -69,13 +81,38 @@ class Trace:
 
 
 def read_trace(path) -> Trace:
-    """Read a recorded trace: a CSV file with columns ``input [unit]`` and ``output [unit]``."""
+    """Read a recorded trace: a CSV file with columns ``input [unit]`` and ``output [unit]``.
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file.
+
+    Returns
+    -------
+    Trace
+        Its positions in the order recorded.
+    """
     m = read_measurement(path, COLUMNS)
     return Trace(m["input"], m["output"], source=str(path), comments=m.comments)
 
 
 def write_trace(path, trace: Trace, comments: tuple[str, ...]) -> None:
-    """Write a trace as a measurement file (positions in degrees, to 10 significant figures)."""
+    """Write a trace as a measurement file (positions in degrees, to 10 significant figures).
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file to write.
+    trace : Trace
+        The trace.
+    comments : tuple of str
+        The file's comment lines.
+
+    Returns
+    -------
+    None
+    """
     write_measurement(path, {"input": trace.input, "output": trace.output}, {"input": "deg", "output": "deg"}, comments, digits=10)
 
 
@@ -85,6 +122,11 @@ def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int 
     The error is a once-per-revolution term (eccentricity of the output), a twice-per-revolution
     term (out-of-roundness) and a tooth-mesh ripple ``teeth · i`` times per revolution, with
     random phases; its peak amplitudes are 1/2, 1/4 and 1/8 of ``amplitude``.
+
+    Returns
+    -------
+    Trace
+        The input and output positions.
 
     Parameters
     ----------
@@ -117,7 +159,25 @@ def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int 
 
 @dataclass(frozen=True)
 class TransmissionAnalysis:
-    """The transmission error of a trace and its range per direction of travel."""
+    """The transmission error of a trace and its range per direction of travel.
+
+    Parameters
+    ----------
+    output : pint.Quantity [deg]
+        Output position per sample.
+    error : pint.Quantity [arcsec]
+        Transmission error per sample, its mean over the record taken out.
+    direction : numpy.ndarray of int
+        +1 forward, -1 backward, per sample.
+    ranges : dict
+        Direction name to ``(min, max)`` quantity array [arcsec].
+    accuracy : pint.Quantity [arcsec]
+        The larger range.
+    governing : str
+        The direction of the larger range.
+    source : str
+        Where the trace came from.
+    """
 
     output: object  # quantity array, output position [deg]
     error: object  # quantity array, transmission error [arcsec], its mean over the record taken out
@@ -128,7 +188,13 @@ class TransmissionAnalysis:
     source: str
 
     def step(self):
-        """The accuracy formula with this trace's numbers."""
+        """The accuracy formula with this trace's numbers.
+
+        Returns
+        -------
+        Step
+            The evaluated formula.
+        """
         lo, hi = self.ranges[self.governing]
         return transmission_accuracy.step(Delta_phi_max=hi, Delta_phi_min=lo)
 
