@@ -302,7 +302,7 @@ class LoopModel:
         ----------
         samples : int
             Number of samples over the whole path.
-        noise_torque, noise_twist : Quantity, optional
+        noise_torque, noise_twist : pint.Quantity [N·m], [arcmin], optional
             Standard deviation of normal noise added to each torque and twist sample.
         seed : int
             Seed of the random generator (sampling positions and noise).

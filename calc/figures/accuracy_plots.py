@@ -49,6 +49,18 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
     Right: the detail of ±3 % of the nominal torque (the source's second figure), with the
     backlash (width at 0 N·m) and the lost motion (width over the ±3 % band) marked.
 
+    Parameters
+    ----------
+    loop : Loop
+        The measured or modelled loop.
+    analysis : LoopAnalysis
+        What :func:`calc.domain.hysteresis.analyze_loop` reads from it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two axes: the whole loop and the detail around zero.
+
     Examples
     --------
     >>> from calc import Q_
@@ -122,6 +134,18 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     compliance ``1/C``; each bar is labelled with its twist under ``applied_torque`` and its
     stiffness referred to the output.
 
+    Parameters
+    ----------
+    chain : Chain
+        The members, drive to load.
+    applied_torque : pint.Quantity [N·m]
+        The torque at the output.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes of horizontal bars.
+
     Examples
     --------
     >>> from calc import Q_
@@ -167,8 +191,18 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
 
 
 def transmission_error_figure(analysis: TransmissionAnalysis):
-    """Transmission error against the output position over one revolution, each direction, with
+    r"""Transmission error against the output position over one revolution, each direction, with
     the range that is the angular transmission accuracy.
+
+    Parameters
+    ----------
+    analysis : TransmissionAnalysis
+        The trace's error and ranges.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
 
     Examples
     --------
@@ -176,7 +210,7 @@ def transmission_error_figure(analysis: TransmissionAnalysis):
     >>> from calc.domain.transmission import analyze_trace, generate_trace
     >>> a = analyze_trace(generate_trace(Q_(10, ""), Q_(40, "arcsec")), Q_(10, ""))
     >>> transmission_error_figure(a).axes[0].get_ylabel()
-    'transmission error $\\\\Delta\\\\varphi_2$ [arcsec]'
+    'transmission error $\\Delta\\varphi_2$ [arcsec]'
     """
     from matplotlib.figure import Figure
 
@@ -211,7 +245,24 @@ def transmission_error_figure(analysis: TransmissionAnalysis):
 
 
 def target_points(offset, spread: float, count: int = 12, seed: int = 0) -> np.ndarray:
-    """Seeded hits around a target: ``count`` points, mean ``offset``, normal ``spread`` (x, y)."""
+    """Seeded hits around a target.
+
+    Parameters
+    ----------
+    offset : sequence of float
+        The mean ``(x, y)`` of the hits.
+    spread : float
+        The standard deviation of each coordinate.
+    count : int
+        How many points; default 12.
+    seed : int
+        Seed of the random generator; default 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``count`` rows of ``(x, y)``.
+    """
     rng = np.random.default_rng(seed)
     return np.asarray(offset, float) + rng.normal(0.0, spread, (count, 2))
 
@@ -223,6 +274,18 @@ def accuracy_targets_figure(seed: int = 0):
     is how close they come to each other. Poor/poor: scattered and off; poor/good: tight but
     off; good/good: tight and on.
 
+    Parameters
+    ----------
+    seed : int
+        Seed of the hits; default 0.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Three axes, one per target.
+
+    Examples
+    --------
     >>> [a.get_title().splitlines()[0] for a in accuracy_targets_figure().axes]
     ['Poor positioning accuracy,', 'Poor positioning accuracy,', 'Good positioning accuracy,']
     """
@@ -261,14 +324,26 @@ def _circle(radius, color):
 
 
 def positioning_scatter_figure(scatter: PositioningScatter):
-    """A measured positioning record: each approach's error at its target, with the measured
+    r"""A measured positioning record: each approach's error at its target, with the measured
     accuracy (largest error) and repeatability (largest spread at one target) marked.
 
+    Parameters
+    ----------
+    scatter : PositioningScatter
+        The measured record.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
+
+    Examples
+    --------
     >>> from calc import Q_
     >>> from calc.domain.accuracy import analyze_positions
     >>> s = analyze_positions(Q_([0, 0, 90, 90], "deg"), Q_([0.01, 0.02, 90.01, 90.03], "deg"))
     >>> positioning_scatter_figure(s).axes[0].get_ylabel()
-    'positioning error $\\\\Delta\\\\varphi$ [arcmin]'
+    'positioning error $\\Delta\\varphi$ [arcmin]'
     """
     from matplotlib.figure import Figure
 
@@ -307,6 +382,20 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     Up to 3 % of the nominal torque the backlash counts (``φ_TA + j_t``); above, the twist does
     (``φ_TA + |T| / C``), as the source writes it (E13), so the curve jumps at 3 %. Repeatability is
     the backlash at rest and at most the lost motion ``j_t + |T| / C`` under torque.
+
+    Parameters
+    ----------
+    chain : Chain
+        The members, drive to load.
+    nominal_torque : pint.Quantity [N·m], optional
+        ``T_N``; default the chain's.
+    applied_torque : pint.Quantity [N·m], optional
+        The case's torque, marked on the curves.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
 
     Examples
     --------

@@ -21,6 +21,28 @@ def combinations_figure(utilization, feasible, ratios, motor_names, pick=None, r
     ``ratio_of_rows`` the ratio of each gearbox row, ``ratios`` the columns (ascending),
     ``motor_names`` the rows, ``pick`` the (gearbox row, motor) picked.
 
+    Parameters
+    ----------
+    utilization : numpy.ndarray [1]
+        Gearbox rows × motors.
+    feasible : numpy.ndarray of bool
+        Gearbox rows × motors.
+    ratios : numpy.ndarray [1]
+        The columns, ascending.
+    motor_names : sequence of str
+        The rows.
+    pick : tuple of int, optional
+        The ``(gearbox row, motor)`` picked.
+    ratio_of_rows : numpy.ndarray [1], optional
+        The ratio of each gearbox row.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
+
+    Examples
+    --------
     >>> import numpy as np
     >>> u = np.array([[0.5, 0.9], [1.2, 0.4]])
     >>> fig = combinations_figure(u, u <= 1, [5.0, 10.0], ["A", "B"], (0, 0), ratio_of_rows=np.array([5.0, 10.0]))

@@ -28,6 +28,17 @@ def inertia_split_figure(accel_torque, drive_inertia, load_inertia, M_N):
     The coupling passes on the share ``J_load / (J_load + J_drive)`` of the motor's acceleration
     torque ``M_a`` (source, Sizing 1); ``M_N`` multiplies that by ``S_A`` (E8).
 
+    Parameters
+    ----------
+    accel_torque : pint.Quantity [N·m]
+        ``M_a``, the motor's acceleration torque.
+    drive_inertia : pint.Quantity [kg·cm²]
+        ``J_drive``, without the coupling.
+    load_inertia : pint.Quantity [kg·cm²]
+        ``J_load``, without the coupling.
+    M_N : pint.Quantity [N·m]
+        The coupling's nominal torque.
+
     Returns
     -------
     matplotlib.figure.Figure
@@ -69,6 +80,13 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
     Each band is a line from its lowest temperature (filled marker: the boundary belongs to this
     band, the higher factor) to the next band's (open marker); the last band ends at the table's
     top (filled), above which no elastomer coupling is sized.
+
+    Parameters
+    ----------
+    temperature : pint.Quantity [°C], optional
+        The case's temperature.
+    table : BandTable
+        ``K_ϑ`` against temperature; default the source's.
 
     Returns
     -------
@@ -121,6 +139,18 @@ def natural_frequency_figure(selection: CouplingSelection, f_e_min):
     stub marked "n/a" where the catalog leaves ``C_T`` or ``J`` empty. Where the selection has the
     drive train (:mod:`calc.domain.torsion`), a black diamond marks each candidate's first mode ``f_1``.
 
+    Parameters
+    ----------
+    selection : CouplingSelection
+        The checked candidates.
+    f_e_min : pint.Quantity [Hz]
+        ``2 f_er``.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes of bars.
+
     Examples
     --------
     >>> from calc import Q_
@@ -168,6 +198,18 @@ def bore_ranges_figure(selection: CouplingSelection, bores):
 
     Hub 1 above hub 2 for each candidate, in ranked order; a missing range is left out and
     labelled "n/a".
+
+    Parameters
+    ----------
+    selection : CouplingSelection
+        The checked candidates.
+    bores : sequence of Bore
+        The two shafts.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
 
     Examples
     --------

@@ -42,8 +42,15 @@ SOURCE_SYMBOLS = (
 
 
 def source_index_table():
-    """The source's index table as a pandas DataFrame (columns ``index``, ``meaning``, ``used in``).
+    """The source's index table.
 
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``index``, ``meaning``, ``used in``.
+
+    Examples
+    --------
     >>> source_index_table().iloc[3, :2].tolist()
     ['B', 'maximum acceleration']
     """
@@ -55,6 +62,13 @@ def source_index_table():
 def source_symbols_table():
     """The source's symbol table beside the workbook's notation, as a pandas DataFrame.
 
+    Returns
+    -------
+    pandas.DataFrame
+        One row per symbol.
+
+    Examples
+    --------
     >>> source_symbols_table().iloc[4, :5].tolist()
     ['n', 'RPM', 'Speed', 'n', 'rpm']
     """
@@ -74,6 +88,18 @@ def symbols_table(formulas=None):
     for), ``per segment`` (one value per profile segment) and ``formulas`` (the formulas it
     appears in, by the name of their result).
 
+    Parameters
+    ----------
+    formulas : list of Formula, optional
+        The formulas; default all defined so far.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per symbol and meaning.
+
+    Examples
+    --------
     >>> from calc.domain import profile
     >>> t = symbols_table([profile.T_2m])
     >>> t[["symbol", "unit", "kind", "formulas"]].values.tolist()[:2]

@@ -32,18 +32,23 @@ def motion_figure(samples: Samples, torque: np.ndarray, segments: Segments | Non
     ----------
     samples : calc.domain.motion.Samples
         One cycle at the gearbox output (SI).
-    torque : ndarray
-        The output torque of each sample [N·m].
+    torque : numpy.ndarray [N·m]
+        The output torque of each sample.
     segments : calc.domain.motion.Segments, optional
         The seed's segments of the cycle.
-    to_load : float
-        The load's travel per radian of the output (r of the mechanism [m], 1 for a table).
+    to_load : float [m/rad or 1]
+        The load's travel per radian of the output (r of the mechanism, 1 for a table).
     linear : bool
         Whether the load moves along a line (its scale in mm, mm/s, m/s²).
+    title : str
+        The figure's title; none by default.
+    rows : tuple of str
+        The axes, top to bottom: ``position``, ``speed``, ``acceleration``, ``torque``.
 
     Returns
     -------
     matplotlib.figure.Figure
+        One axes per row, sharing the time axis.
 
     Examples
     --------

@@ -18,14 +18,18 @@ def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak
     load : OutputLoad
         The cycle at the gearbox output (its durations place the samples in time).
     torques : MotorLoad
-        The motor torques of :func:`calc.domain.motor.motor_load`; ``row`` picks the gearbox where it
-        holds several.
-    peak_torque, rated_torque : Quantity [torque], optional
+        The motor torques of :func:`calc.domain.motor.motor_load`.
+    row : int
+        The gearbox whose torques are drawn, where ``torques`` holds several; default 0.
+    peak_torque, rated_torque : pint.Quantity [N·m], optional
         ``T_1B`` and ``T_1N``, drawn as limits (both signs for the peak).
+    part : str
+        The gearbox the torque passes through, for the title; none by default.
 
     Returns
     -------
     matplotlib.figure.Figure
+        One axes.
     """
     from matplotlib.figure import Figure
 
@@ -66,6 +70,11 @@ def torque_speed_figure(selection: MotorSelection, row: int):
         The catalog motors checked against the cycle.
     row : int
         The motor's row in ``selection.catalog``.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
     """
     from matplotlib.figure import Figure
 
@@ -96,6 +105,15 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     """The case against the ratio: the motor's peak and RMS torque through each ratio's best
     gearbox (top), the governing utilization and the inertia ratio (bottom); feasible ratios
     shaded, the picked one marked.
+
+    Parameters
+    ----------
+    search : RatioSearch
+        The case at every ratio.
+    peak_torque : pint.Quantity [N·m], optional
+        The motor's ``T_1B``, drawn as a limit.
+    rated_torque : pint.Quantity [N·m], optional
+        The motor's ``T_1N``, drawn as a limit.
 
     Returns
     -------

@@ -99,6 +99,13 @@ def planetary_gearbox_figure():
     (index 2), and the ring gear fixed in the housing. Drawn to a ratio of 10: the ring's pitch
     circle nine times the sun's (a 10:1 stage has a small sun and large planets).
 
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes without scales.
+
+    Examples
+    --------
     >>> fig = planetary_gearbox_figure()
     >>> sorted(t.get_text().split(":")[0] for t in fig.axes[0].texts if ":" in t.get_text())
     ['carrier (dashed)', 'planets', 'ring gear', 'sun']
@@ -142,6 +149,13 @@ def bellows_coupling_figure():
     gearbox input's ``D_2``) joined by a thin metal bellows, stiff in torsion (``C_T``) and soft
     against misalignment between the shafts.
 
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes without scales.
+
+    Examples
+    --------
     >>> fig = bellows_coupling_figure()
     >>> sorted(t.get_text().split(":")[0] for t in fig.axes[0].texts if ":" in t.get_text())
     ['hub 1', 'hub 2', 'metal bellows']
