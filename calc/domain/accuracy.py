@@ -241,13 +241,13 @@ def positioning_accuracy(applied_torque, nominal_torque, transmission_accuracy, 
 
     Parameters
     ----------
-    applied_torque, nominal_torque : Quantity [torque]
-    transmission_accuracy, backlash : Quantity [angle]
-    stiffness : Quantity [torque / angle]
+    applied_torque, nominal_torque : pint.Quantity [N·m]
+    transmission_accuracy, backlash : pint.Quantity [arcmin]
+    stiffness : pint.Quantity [N·m/arcmin]
 
     Returns
     -------
-    Quantity [arcmin]
+    pint.Quantity [arcmin]
 
     Notes
     -----

@@ -642,9 +642,9 @@ def select_coupling(
     ----------
     catalog : Catalog
         Rows of :data:`SCHEMA`.
-    accel_torque : Quantity [torque] or None
+    accel_torque : pint.Quantity [N·m] or None
         ``M_a``, acceleration torque of the motor.
-    drive_inertia, load_inertia : Quantity [inertia] or None
+    drive_inertia, load_inertia : pint.Quantity [kg·cm²] or None
         ``J_drive`` and ``J_load`` without the coupling (with a coupling between motor and
         gearbox, ``J_load`` is ``J_L / i² + J_1``, E8).
 
@@ -652,25 +652,25 @@ def select_coupling(
         (the torque checks ``T_KN``, ``T_Kmax``, ``T_op <= T_A`` need all three, the resonance
         check the two inertias) are not made, naming the missing value as ``sources`` gives it
         (by key; default ``<where>.<key>``), and no coupling is chosen; the others are made.
-    excitation_frequency : Quantity [frequency]
+    excitation_frequency : pint.Quantity [Hz]
         ``f_er`` of the drive (E7).
     shaft_1, shaft_2 : Bore or str
         The shafts as ordered (``"19 mm k6"``, see :func:`calc.domain.fits.parse_bore`).
-    service_factor : float or Quantity [dimensionless]
+    service_factor : float or pint.Quantity [1]
         ``S_A`` (E8), 1 or more; default 2.5.
-    temperature : Quantity [temperature], optional
+    temperature : pint.Quantity [°C], optional
         Operating temperature; needed when elastomer couplings are among the candidates.
-    speed : Quantity [speed], optional
+    speed : pint.Quantity [rpm], optional
         Highest speed of the coupling.
-    disengagement_torque : Quantity [torque], optional
+    disengagement_torque : pint.Quantity [N·m], optional
         ``T_A``; only, and always, for safety couplings.
-    shaft_distance : Quantity [length], optional
+    shaft_distance : pint.Quantity [mm], optional
         ``A``; only, and always, for line shafts.
     temperature_factors : calc.data.bands.BandTable
         ``K_ϑ`` against temperature; default the source's table (E9).
     start_factors : calc.data.bands.BandTable, optional
         ``S_z`` against starts per hour (a maker's table); with it the ``T_Kmax`` check is made.
-    starts_per_hour : Quantity [1/time], optional
+    starts_per_hour : pint.Quantity [1/h], optional
         Starts per hour; needed with ``start_factors``.
     drive_train : DriveTrain, optional
         The members around the coupling. With it, each candidate is put in the chain (half its

@@ -146,7 +146,7 @@ def limit_deviations(nominal, tolerance_class: str, where: str = "tolerance clas
 
     Parameters
     ----------
-    nominal : Quantity [length]
+    nominal : pint.Quantity [mm]
         Nominal size, scalar or array, over 0 up to 500 mm.
     tolerance_class : str
         Such as ``"k6"`` (shaft) or ``"H7"`` (hole).

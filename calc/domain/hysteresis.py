@@ -159,11 +159,11 @@ class LoopModel:
 
     Parameters
     ----------
-    stiffness : Quantity [torque / angle]
+    stiffness : pint.Quantity [N·m/arcmin]
         ``C``, the slope of the loop between 50 % and 100 % of the nominal torque (``C_t21``).
-    backlash : Quantity [angle]
+    backlash : pint.Quantity [arcmin]
         Width of the loop at 0 N·m.
-    nominal_torque : Quantity [torque]
+    nominal_torque : pint.Quantity [N·m]
         ``T_N`` (``T_2N``), the torque the loop is drawn to.
     soft_share : float
         The soft zone's extra twist ``φ_s`` as a share of the elastic twist at ``T_N`` (0.15).
@@ -448,7 +448,7 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
     ----------
     loop : Loop
         Torque and twist at the output, in the order recorded, loaded both ways.
-    nominal_torque : Quantity [torque]
+    nominal_torque : pint.Quantity [N·m]
         ``T_N``, which sets the 50 % to 100 % band and the ±3 % band.
 
     Returns

@@ -309,19 +309,19 @@ def motor_torque(torque, speed, i, eta, alpha_2=None, J_motor=None, J_1=None):
 
     Parameters
     ----------
-    torque, speed : Quantity [torque], [speed]
+    torque, speed : pint.Quantity [N·m], [rpm]
         ``T_2`` and ``ω_2`` at the gearbox output, per sample, signed alike (forwards positive).
-    i, eta : Quantity [dimensionless]
+    i, eta : pint.Quantity [1]
         Ratio and efficiency; arrays of shape ``(rows, 1)`` give one row of torques per gearbox.
-    alpha_2 : Quantity [angular acceleration], optional
+    alpha_2 : pint.Quantity [rad/s²], optional
         ``α_2`` per sample; None leaves the rotor term out (typed segments), and then the
         inertias are not needed.
-    J_motor, J_1 : Quantity [inertia]
+    J_motor, J_1 : pint.Quantity [kg·cm²]
         Needed with ``alpha_2``.
 
     Returns
     -------
-    Quantity [N·m]
+    pint.Quantity [N·m]
         ``T_1`` per sample, broadcast over the rows.
 
     Examples

@@ -250,13 +250,13 @@ class Component:
     side : {"input", "output"}
         Which side of the gearbox it sits on; the gearbox itself gives its figures at its output
         (``C_t21``), so it is an ``"output"`` component.
-    stiffness : Quantity [torque / angle]
+    stiffness : pint.Quantity [N·m/arcmin]
         Torsional stiffness, above zero.
-    backlash : Quantity [angle]
+    backlash : pint.Quantity [arcmin]
         Torsional backlash, zero or more.
-    transmission_accuracy : Quantity [angle], optional
+    transmission_accuracy : pint.Quantity [arcmin], optional
         Angular transmission accuracy (range of the transmission error over one revolution).
-    nominal_torque : Quantity [torque], optional
+    nominal_torque : pint.Quantity [N·m], optional
         Nominal torque (the 3 % rule of positioning accuracy, E13).
     source : str
         Where the figures come from (the case, a catalog row, a measured loop).

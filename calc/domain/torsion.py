@@ -183,16 +183,16 @@ def natural_frequencies(inertias, stiffnesses, where: str = "drive train"):
 
     Parameters
     ----------
-    inertias : Quantity [inertia], shape (..., n)
+    inertias : pint.Quantity [kg·cm²], shape (..., n)
         The masses, drive to load; leading axes run over candidates.
-    stiffnesses : Quantity [stiffness], shape (..., n - 1)
+    stiffnesses : pint.Quantity [N·m/rad], shape (..., n - 1)
         The springs between neighbouring masses (with their angle unit, E15).
     where : str
         The train's name, for error messages; default ``"drive train"``.
 
     Returns
     -------
-    Quantity [Hz], shape (..., n - 1)
+    pint.Quantity [Hz], shape (..., n - 1)
         NaN in a candidate whose inertias or stiffnesses hold a NaN (a value the catalog leaves
         empty).
 

@@ -130,13 +130,13 @@ def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int 
 
     Parameters
     ----------
-    ratio : Quantity [dimensionless]
+    ratio : pint.Quantity [1]
         ``i``, input turns per output turn.
-    amplitude : Quantity [angle]
+    amplitude : pint.Quantity [arcmin]
         Scale of the error (the range comes out somewhat below ``2 × amplitude``).
     samples : int
         Samples per direction.
-    noise : Quantity [angle], optional
+    noise : pint.Quantity [arcmin], optional
         Standard deviation of normal noise on the output position.
     seed : int
         Seed of the random phases and noise.
@@ -206,7 +206,7 @@ def analyze_trace(trace: Trace, ratio) -> TransmissionAnalysis:
     ----------
     trace : Trace
         Input and output positions, one or more output revolutions in one or both directions.
-    ratio : Quantity [dimensionless]
+    ratio : pint.Quantity [1]
         ``i`` of the gearbox.
 
     Returns

@@ -127,7 +127,7 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
 
     Parameters
     ----------
-    cycles_per_hour : Quantity [1/time], optional
+    cycles_per_hour : pint.Quantity [1/h], optional
         The case's ``Z_h``; marked with its factor from :func:`calc.domain.gearbox.shock_factor`.
     table : calc.data.bands.BandTable
         The table the case's ``f_s`` is read from.
