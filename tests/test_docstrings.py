@@ -118,7 +118,8 @@ def constructor_arguments(cls) -> tuple:
     """
     if dataclasses.is_dataclass(cls):
         # A base dataclass documents the fields it declares.
-        inherited = {f.name for base in cls.__mro__[1:] if dataclasses.is_dataclass(base) for f in dataclasses.fields(base)}
+        inherited = {f.name for base in cls.__mro__[1:] if dataclasses.is_dataclass(base)
+                     for f in dataclasses.fields(base)}
         return tuple(f.name for f in dataclasses.fields(cls) if f.init and f.name not in inherited)
     if issubclass(cls, tuple) and hasattr(cls, "_fields"):
         return tuple(cls._fields)

@@ -37,7 +37,8 @@ def docstring_lines(tree: ast.AST) -> set:
     for node in ast.walk(tree):
         if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)) and node.body:
             first = node.body[0]
-            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) and isinstance(first.value.value, str):
+            if isinstance(first, ast.Expr) and isinstance(first.value,
+                                                          ast.Constant) and isinstance(first.value.value, str):
                 lines |= set(range(first.lineno, first.end_lineno + 1))
     return lines
 

@@ -77,7 +77,8 @@ class Symbol:
 #: law of rotation reads J·α = T·rad: a torque of 1 N·m accelerates 1 kg·m² at 1 rad/s². So a
 #: spring rate in N·m/rad over an inertia gives 1/s² only after that factor; pint, which drops
 #: angles, computes the same number.
-RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad with angles as a dimension, E15)", value="1 rad")
+RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad with angles as a dimension, E15)",
+                value="1 rad")
 
 
 @functools.cache
@@ -250,7 +251,8 @@ class Formula:
     @functools.cached_property
     def _arguments(self) -> tuple:
         """Per input: the symbol and, for a constant, its SI magnitude."""
-        return tuple((s, None if s.value is None else Q_(s.value).m_as(unit(kind(s.kind).si_unit))) for s in self.inputs)
+        return tuple((s, None if s.value is None else Q_(s.value).m_as(unit(kind(s.kind).si_unit)))
+                     for s in self.inputs)
 
     @functools.cached_property
     def _takes(self) -> tuple:
@@ -272,7 +274,8 @@ class Formula:
             lengths = {self.inputs[k].name: np.shape(args[k])[-1] for k in self._per_segment if np.ndim(args[k])}
             if len(set(lengths.values())) > 1:
                 found = ", ".join(f"{name} {n}" for name, n in lengths.items())
-                raise CalcError(f"{self.name}: expected one value per segment in each per-segment argument, found lengths {found}")
+                raise CalcError(f"{self.name}: expected one value per segment in each per-segment argument, found "
+                                f"lengths {found}")
         return args
 
     @functools.cached_property
@@ -320,13 +323,15 @@ class Formula:
             unit = kind(s.kind).si_unit
             # A distinct value per input, so a difference of two inputs is never zero.
             args.append(Q_(np.array([1.0, 2.0]) if s.per_segment else 1.5 + 0.1 * k, unit))
-        with np.errstate(invalid="ignore"):  # only the unit counts: a root of a negative test value is NaN of the right unit
+        # only the unit counts: a root of a negative test value is NaN of the right unit
+        with np.errstate(invalid="ignore"):
             out = self.numeric(*args)
         if not hasattr(out, "units"):
             out = Q_(out, "")
         if not kind(self.result.kind).accepts(out.units):
             raise CalcError(
-                f"{self.name}: the expression gives {out.units:~P}, expected {kind(self.result.kind).name} ({self.result.unit})"
+                f"{self.name}: the expression gives {out.units:~P}, expected {kind(self.result.kind).name} "
+                f"({self.result.unit})"
             )
 
     def documentation(self) -> str:
@@ -338,9 +343,11 @@ class Formula:
             Summary, ``.. math::``, Parameters and References.
         """
         r = self.result
-        lines = [f"{r.name}: {r.description} [{pretty_unit(r.unit) or '-'}]", "", f".. math:: {self.latex()}", "", "Parameters", "----------"]
+        lines = [f"{r.name}: {r.description} [{pretty_unit(r.unit) or '-'}]", "", f".. math:: {self.latex()}", "",
+                 "Parameters", "----------"]
         for s in self.inputs:
-            lines += [f"{s.name} : {s.kind} [{pretty_unit(s.unit) or '-'}]{', per segment' if s.per_segment else ''}", f"    {s.description}"]
+            lines += [f"{s.name} : {s.kind} [{pretty_unit(s.unit) or '-'}]{', per segment' if s.per_segment else ''}",
+                      f"    {s.description}"]
         lines += ["", "References", "----------", self.reference]
         return "\n".join(lines)
 
@@ -394,7 +401,8 @@ class Formula:
             def expand(node):
                 terms = []
                 for k in range(count):
-                    repl = {sym: _value(s, values[spec.name][k], spec, f"{spec.name}_{k}") for sym, spec in segment_syms.items()}
+                    repl = {sym: _value(s, values[spec.name][k], spec, f"{spec.name}_{k}")
+                            for sym, spec in segment_syms.items()}
                     terms.append(node.args[0].xreplace(repl))
                 return s.sp.Add(*terms, evaluate=False)
 
@@ -426,7 +434,8 @@ def _builder_parts(build: Callable) -> list:
     values of the plain constants it reads from its module."""
     names = sorted(global_names(build.__code__))
     namespace = build.__globals__
-    return [_body_text(build), [repr(namespace[n]) for n in names if isinstance(namespace.get(n), (bool, int, float, str, tuple, dict))]]
+    return [_body_text(build),
+            [repr(namespace[n]) for n in names if isinstance(namespace.get(n), (bool, int, float, str, tuple, dict))]]
 
 
 def _body_text(build: Callable) -> str:
@@ -512,7 +521,8 @@ class Step:
         f = self.formula
         number = sig(self.result.m_as(f.result.unit))
         unit = latex_unit(f.result.unit)
-        return f.result.latex, f._latex(f.expr), f.substituted_latex(self.values), number + (rf"\,{unit}" if unit else "")
+        result = number + (rf"\,{unit}" if unit else "")
+        return f.result.latex, f._latex(f.expr), f.substituted_latex(self.values), result
 
     def latex(self) -> str:
         """The step as one LaTeX equation, its four sides joined by ``=``.

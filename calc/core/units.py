@@ -243,7 +243,8 @@ def _in_scale(quantity: pint.Quantity, where: str, found) -> pint.Quantity:
         raise CalcError(f"{where}: expected a finite number, found {found!r}")
     if si != 0 and not low <= si <= high:
         raise CalcError(
-            f"{where}: expected a magnitude between {low:g} and {high:g} in SI units ({quantity.to_base_units().units:~P}), "
+            f"{where}: expected a magnitude between {low:g} and {high:g} in SI units "
+            f"({quantity.to_base_units().units:~P}), "
             f"found {found!r}, which is {si:.3g}"
         )
     return quantity
@@ -283,7 +284,8 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
         if k.name == "dimensionless":
             return _in_scale(ureg.Quantity(float(text), ""), where, text)
         raise CalcError(
-            f"{where}: expected {_article(k.name)} {k.name} with its unit such as {k.example}, found the bare number {text!r}"
+            f"{where}: expected {_article(k.name)} {k.name} with its unit such as {k.example}, found the bare number "
+            f"{text!r}"
         )
     if not isinstance(text, str):
         raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {text!r}")
@@ -294,7 +296,8 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
     try:
         units = ureg.parse_units(unit_text) if unit_text else ureg.dimensionless
     except Exception as exc:  # pint's parser raises many types for malformed text, AssertionError among them
-        raise CalcError(f"{where}: the unit {unit_text!r} in {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
+        raise CalcError(f"{where}: the unit {unit_text!r} in {text!r} is not one the unit registry knows "
+                        f"({type(exc).__name__})") from None
     quantity = ureg.Quantity(float(number), units)
     return _in_scale(as_kind(quantity, k, where, found=text), where, text)
 
@@ -323,10 +326,12 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
     """
     k = kind(expected)
     if not isinstance(value, pint.Quantity):
-        if k.name == "dimensionless" and isinstance(value, (int, float, np.ndarray, np.number)) and not isinstance(value, bool):
+        bare = isinstance(value, (int, float, np.ndarray, np.number)) and not isinstance(value, bool)
+        if k.name == "dimensionless" and bare:
             return ureg.Quantity(np.asarray(value, dtype=float) if isinstance(value, np.ndarray) else float(value), "")
         raise CalcError(
-            f"{where}: expected {_article(k.name)} {k.name} as a quantity with a unit such as {k.example}, found {type(value).__name__} {value!r}"
+            f"{where}: expected {_article(k.name)} {k.name} as a quantity with a unit such as {k.example}, found "
+            f"{type(value).__name__} {value!r}"
         )
     if value._REGISTRY is not ureg:
         raise CalcError(f"{where}: the quantity {value} was made with another unit registry; use calc.ureg or calc.Q_")
@@ -334,9 +339,11 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
         shown = found if found is not None else f"{value:~P}"
         what = describe_units(value.units)
         hint = ""
-        if k.angle and angle_power(value.units) != k.angle and value.dimensionality == ureg.Quantity(1, k.si_unit).dimensionality:
+        same_dimension = value.dimensionality == ureg.Quantity(1, k.si_unit).dimensionality
+        if k.angle and angle_power(value.units) != k.angle and same_dimension:
             hint = " (its unit must carry the angle, errata E15)"
-        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {shown!r}, which is {what}{hint}")
+        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {shown!r}, which is "
+                        f"{what}{hint}")
     return value
 
 
@@ -574,7 +581,8 @@ def number(x, key: str = "result") -> float | None:
     if math.isnan(x):
         return None
     if math.isinf(x):
-        raise CalcError(f"{key}: the calculation overflows (found {x}); check the inputs it comes from for values out of scale")
+        raise CalcError(f"{key}: the calculation overflows (found {x}); check the inputs it comes from for values out "
+                        "of scale")
     return x
 
 

@@ -84,12 +84,15 @@ class BandTable:
 
     def __post_init__(self):
         if self.at_boundary not in AT_BOUNDARY:
-            raise CalcError(f"{self.source}: expected at_boundary to be one of {', '.join(AT_BOUNDARY)}, found {self.at_boundary!r}")
+            raise CalcError(f"{self.source}: expected at_boundary to be one of {', '.join(AT_BOUNDARY)}, found "
+                            f"{self.at_boundary!r}")
         lower = np.asarray(self.lower, dtype=float)
         if lower.ndim != 1 or len(lower) == 0 or len(self.values) != len(lower):
-            raise CalcError(f"{self.source}: expected one factor per band, found {len(self.values)} factors for {len(lower)} bands")
+            raise CalcError(f"{self.source}: expected one factor per band, found {len(self.values)} factors for "
+                            f"{len(lower)} bands")
         if not (np.all(np.diff(lower) > 0) and self.top > lower[-1]):
-            raise CalcError(f"{self.source}: expected band bounds that rise, found {', '.join(map(sig, lower))} up to {sig(self.top)}")
+            raise CalcError(f"{self.source}: expected band bounds that rise, found {', '.join(map(sig, lower))} up to "
+                            f"{sig(self.top)}")
 
     def __len__(self) -> int:
         """The number of bands."""
@@ -130,7 +133,8 @@ class BandTable:
         outside = (up < self.bounds[0]) | (down > self.top)
         if np.any(outside):
             bad = np.asarray(x)[outside] if np.ndim(x) else x
-            raise CalcError(f"{where}: expected {self.range_text()} ({self.source}), found {sig(np.ravel(bad)[0])} {pretty_unit(self.unit)}")
+            raise CalcError(f"{where}: expected {self.range_text()} ({self.source}), found {sig(np.ravel(bad)[0])} "
+                            f"{pretty_unit(self.unit)}")
         if self.at_boundary == "higher":
             return np.searchsorted(self.bounds, up, side="right") - 1  # just below a boundary is on it
         return np.searchsorted(self.bounds[1:], down, side="left")  # just above a boundary is on it
@@ -172,7 +176,8 @@ class BandTable:
         high = self.top if last else self.bounds[k + 1]
         if self.at_boundary == "lower":  # each band holds its highest value
             if k == 0:
-                band = f"{self.symbol} {le} {sig(high)}" if math.isinf(low) else f"{sig(low)} {le} {self.symbol} {le} {sig(high)}"
+                band = (f"{self.symbol} {le} {sig(high)}" if math.isinf(low)
+                        else f"{sig(low)} {le} {self.symbol} {le} {sig(high)}")
             elif math.isinf(high):
                 band = f"{self.symbol} > {sig(low)}"
             else:
@@ -259,7 +264,8 @@ def table_names(role: str) -> list[str]:
     return sorted(p.name[len(role) + 1 : -4] for p in FACTOR_DIR.glob(f"{role}-*.csv"))
 
 
-def factor_table(role: str, name_or_path: str | None = None, base: Path | None = None, where: str = "factor table") -> BandTable:
+def factor_table(role: str, name_or_path: str | None = None, base: Path | None = None,
+                 where: str = "factor table") -> BandTable:
     """The factor table of ``role`` by name or by path; the role's default for None.
 
     Parameters
@@ -287,12 +293,14 @@ def factor_table(role: str, name_or_path: str | None = None, base: Path | None =
     r = ROLES[role]
     name = r.default if name_or_path is None else name_or_path
     if not isinstance(name, str) or not name.strip():
-        raise CalcError(f"{where}: expected a table name ({', '.join(table_names(role))}) or a path to a CSV file, found {name!r}")
+        raise CalcError(f"{where}: expected a table name ({', '.join(table_names(role))}) or a path to a CSV file, "
+                        f"found {name!r}")
     path = given_path(name, base)
     if path is None:
         path = FACTOR_DIR / f"{role}-{name}.csv"
         if not path.is_file():
-            raise CalcError(f"{where}: unknown {role}-factor table {name!r}; expected one of {', '.join(table_names(role))} or a path to a CSV file")
+            raise CalcError(f"{where}: unknown {role}-factor table {name!r}; expected one of "
+                            f"{', '.join(table_names(role))} or a path to a CSV file")
     elif not path.is_file():
         raise CalcError(f"{where}: the factor table {name!r} does not exist (looked for {path})")
     return load_factor_table(path, r.symbol, r.kind)
@@ -349,9 +357,11 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
     missing = [c for c in _COLUMNS if c not in header]
     if missing:
         raise CalcError(f"{path}: expected the columns {', '.join(_COLUMNS)}, found no column {missing[0]!r}")
-    units = {c: _header_unit(path, Column(c, k, c), header[c][1]) for c, k in (("from", kind), ("to", kind), ("factor", "dimensionless"))}
+    units = {c: _header_unit(path, Column(c, k, c), header[c][1])
+             for c, k in (("from", kind), ("to", kind), ("factor", "dimensionless"))}
     if units["from"] != units["to"]:
-        raise CalcError(f"{path}, header: expected the columns from and to in one unit, found {header['from'][1]!r} and {header['to'][1]!r}")
+        raise CalcError(f"{path}, header: expected the columns from and to in one unit, found {header['from'][1]!r} "
+                        f"and {header['to'][1]!r}")
     body = rows[1:]
     if not body:
         raise CalcError(f"{path}: expected one row per band, found none")
@@ -369,7 +379,8 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
         if not text and empty is not None:
             return empty
         if not _FLOAT.match(text):
-            raise CalcError(f"{where(k, column)}: expected a number, found {text!r}" if text else f"{where(k, column)}: expected a number, found an empty cell")
+            raise CalcError(f"{where(k, column)}: expected a number, found {text!r}" if text
+                            else f"{where(k, column)}: expected a number, found an empty cell")
         return float(text)
 
     n = len(body)
@@ -380,22 +391,28 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
         if not factor[k] > 0:
             raise CalcError(f"{where(k, 'factor')}: expected a factor above zero, found {cell(k, 'factor')!r}")
         if not high[k] > low[k]:
-            raise CalcError(f"{where(k, 'to')}: expected a band that rises, to above from, found from {cell(k, 'from') or 'open'} and to {cell(k, 'to') or 'open'}")
+            raise CalcError(f"{where(k, 'to')}: expected a band that rises, to above from, found from "
+                            f"{cell(k, 'from') or 'open'} and to {cell(k, 'to') or 'open'}")
         if k and low[k] != high[k - 1]:
             what = "a gap" if low[k] > high[k - 1] else "an overlap"
-            raise CalcError(f"{where(k, 'from')}: expected the band to start where the row before ends ({cell(k - 1, 'to')}), found {cell(k, 'from')!r}, {what}")
+            raise CalcError(f"{where(k, 'from')}: expected the band to start where the row before ends "
+                            f"({cell(k - 1, 'to')}), found {cell(k, 'from')!r}, {what}")
         if k and factor[k] < factor[k - 1]:
             raise CalcError(
-                f"{where(k, 'factor')}: expected factors that never fall as {symbol} rises, found {cell(k, 'factor')} after {cell(k - 1, 'factor')}"
+                f"{where(k, 'factor')}: expected factors that never fall as {symbol} rises, found {cell(k, 'factor')} "
+                f"after {cell(k - 1, 'factor')}"
             )
     rule = cell(0, "at_boundary")
-    bad = next((k for k in range(n) if cell(k, "at_boundary") not in AT_BOUNDARY or cell(k, "at_boundary") != rule), None)
+    bad = next((k for k in range(n) if cell(k, "at_boundary") not in AT_BOUNDARY or cell(k, "at_boundary") != rule),
+               None)
     if bad is not None:
         found = cell(bad, "at_boundary")
-        expected = f"one of {', '.join(AT_BOUNDARY)}" if found not in AT_BOUNDARY else f"the same rule in every row ({rule!r} in the first)"
+        expected = (f"one of {', '.join(AT_BOUNDARY)}" if found not in AT_BOUNDARY
+                    else f"the same rule in every row ({rule!r} in the first)")
         raise CalcError(f"{where(bad, 'at_boundary')}: expected {expected}, found {found!r}")
     sources = list(dict.fromkeys(cell(k, "source") for k in range(n) if cell(k, "source")))
     if not sources:
         raise CalcError(f"{where(0, 'source')}: expected where the factors come from, found an empty cell")
-    shown = "; ".join(sources) if path.parent.resolve() == FACTOR_DIR.resolve() else f"{display_path(path)}: {'; '.join(sources)}"
+    shipped = path.parent.resolve() == FACTOR_DIR.resolve()
+    shown = "; ".join(sources) if shipped else f"{display_path(path)}: {'; '.join(sources)}"
     return BandTable(symbol, tuple(low), tuple(factor), header["from"][1].strip(), kind, shown, high[-1], rule)

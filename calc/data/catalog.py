@@ -250,7 +250,8 @@ class Catalog:
     @functools.cached_property
     def partial(self) -> np.ndarray:
         """True for a partial row (:attr:`Schema.partial`): kept, never checked or chosen."""
-        return _read_only(self.text_or_blank(self.schema.partial) != "" if self.schema.partial else np.zeros(len(self), bool))
+        return _read_only(self.text_or_blank(self.schema.partial) != "" if self.schema.partial
+                          else np.zeros(len(self), bool))
 
     @functools.cached_property
     def illustrative(self) -> np.ndarray:
@@ -334,7 +335,8 @@ class Catalog:
         if self.partial[row]:
             reason = self.text[self.schema.partial][row]
             raise CalcError(
-                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), kept for reference "
+                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), kept for "
+                "reference "
                 f"but never checked: {reason}"
             )
         return row
@@ -538,7 +540,9 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
     catalog = known[1]
     note_file_read(path, "Catalog", catalog.sha256)
     # The same file asked for by another spelling of its path is named as asked.
-    return catalog if catalog.path == path else dataclasses.replace(catalog, name=path.stem, path=path, members=((path, catalog.sha256),))
+    if catalog.path == path:
+        return catalog
+    return dataclasses.replace(catalog, name=path.stem, path=path, members=((path, catalog.sha256),))
 
 
 def load_catalogs(names, base: Path | None, where: str, schema: Schema) -> Catalog:
@@ -596,7 +600,8 @@ def combine(catalogs: list, where: str) -> Catalog:
             if part in seen and seen[part][0] != k:
                 other, other_line = seen[part]
                 raise CalcError(
-                    f"{where}: the part {part!r} stands in {display_path(catalogs[other].path)} (row {other_line}) and in "
+                    f"{where}: the part {part!r} stands in {display_path(catalogs[other].path)} (row {other_line}) and "
+                    "in "
                     f"{display_path(cat.path)} (row {line}); rename one, as candidates are named by part"
                 )
             seen.setdefault(part, (k, line))
@@ -631,7 +636,8 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     def column(name):
         return cells[columns[name][0]::width]
 
-    texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
+    texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text)
+             if name in columns}
     numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
     problem = _first_problem(path, schema, lines, texts, numbers, {name: _si(u) for name, u in units.items()})
     if problem:
@@ -647,7 +653,8 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
             ok = np.asarray(rule.holds(values), dtype=bool)
         if not ok.all():
             j = int(np.flatnonzero(~ok)[0])
-            raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected {rule.text}")
+            raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected "
+                            f"{rule.text}")
     text_arrays = {k: np.array(v, dtype=object) for k, v in texts.items()}
     for a in (parts, lines, *text_arrays.values(), *(q.magnitude for q in values.values())):
         a.flags.writeable = False  # shared by every caller of the run (load_catalog)
@@ -660,7 +667,8 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         values=values,
         text=text_arrays,
         lines=lines,
-        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name]) for c in schema.columns},
+        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name])
+                      for c in schema.columns},
     )
 
 
@@ -731,7 +739,8 @@ def _no_repeated_part(path: Path, parts: np.ndarray, lines: np.ndarray) -> None:
     repeats = np.flatnonzero(first != np.arange(len(parts)))
     if len(repeats):
         j = repeats[0]
-        raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row {lines[first[j]]}")
+        raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row "
+                        f"{lines[first[j]]}")
 
 
 @dataclass(frozen=True)
@@ -832,9 +841,12 @@ def _header_unit(path: Path, c: Column, unit_text):
     try:
         units = ureg.parse_units(text) if text not in ("", "1", "-") else ureg.dimensionless
     except Exception as exc:  # pint raises several types for unknown or malformed units
-        raise CalcError(f"{where}: the unit {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
+        raise CalcError(
+            f"{where}: the unit {text!r} is not one the unit registry knows ({type(exc).__name__})"
+        ) from None
     if not k.accepts(units):
-        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {text!r}, which is {describe_units(units)}")
+        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {text!r}, which is "
+                        f"{describe_units(units)}")
     return units
 
 

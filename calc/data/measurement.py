@@ -136,7 +136,8 @@ def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, 
     for i, cell in enumerate(header.strip().split(",")):
         m = _HEADER.match(cell)
         if not m:
-            raise CalcError(f"{path}, row {header_line}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
+            raise CalcError(f"{path}, row {header_line}: header column {i + 1} {cell!r} is not of the form 'name "
+                            "[unit]'")
         names[m.group(1)] = (i, m.group(2))
     columns = (*columns, *(c for c in optional if c.name in names))
     if TIME.name in names and all(c.name != TIME.name for c in columns):
@@ -145,7 +146,8 @@ def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, 
     for c in columns:
         if c.name not in names:
             raise CalcError(
-                f"{path}, row {header_line}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(names)}"
+                f"{path}, row {header_line}: expected a column '{c.name} [unit]' ({c.description}), found columns "
+                f"{', '.join(names)}"
             )
         units[c.name] = _header_unit(path, c, names[c.name][1])
 
@@ -167,7 +169,8 @@ def _check_time_order(time: np.ndarray, unit: str, path: Path, first_row: int) -
     if back.size:
         j = int(back[0]) + 1
         raise CalcError(
-            f"{path}, row {first_row + j}, column {TIME.name}: expected times that increase (the rows in the order measured), "
+            f"{path}, row {first_row + j}, column {TIME.name}: expected times that increase (the rows in the order "
+            "measured), "
             f"found {time[j]:g} {unit} after {time[j - 1]:g} {unit}"
         )
 
@@ -205,7 +208,8 @@ def _table_cell_by_cell(body: str, names: dict, columns, path: Path, first_row: 
     rows = [line.split(",") for line in body.split("\n")]
     for j, cells in enumerate(rows):
         if len(cells) > len(names):
-            raise CalcError(f"{path}: rows must have the header's {len(names)} cells (row {first_row + j} has {len(cells)})")
+            raise CalcError(f"{path}: rows must have the header's {len(names)} cells (row {first_row + j} has "
+                            f"{len(cells)})")
     table = np.full((len(rows), len(names)), np.nan)
     for c in columns:
         i = names[c.name][0]
@@ -244,8 +248,10 @@ def write_measurement(path, columns: dict, units: dict, comments: tuple[str, ...
     """
     path = Path(path)
     arrays = [np.asarray(q.m_as(units[name]), dtype=float) for name, q in columns.items()]
-    header = "\n".join([*(f"# {c}".rstrip() for c in comments), ",".join(f"{name} [{units[name]}]" for name in columns)])
-    np.savetxt(path, np.column_stack(arrays), fmt=f"%.{digits}g", delimiter=",", header=header, comments="", encoding="utf-8")
+    header = "\n".join([*(f"# {c}".rstrip() for c in comments),
+                        ",".join(f"{name} [{units[name]}]" for name in columns)])
+    np.savetxt(path, np.column_stack(arrays), fmt=f"%.{digits}g", delimiter=",", header=header, comments="",
+               encoding="utf-8")
 
 
 def travel_direction(values: np.ndarray) -> np.ndarray:
@@ -308,5 +314,6 @@ def check_pair(source: str, first: tuple, second: tuple) -> None:
     b = as_kind(b, kind_b, f"{source}: {name_b}").magnitude
     if np.ndim(a) != 1 or np.shape(a) != np.shape(b):
         raise CalcError(
-            f"{source}: expected {name_a} and {name_b} as two arrays of one length, found shapes {np.shape(a)} and {np.shape(b)}"
+            f"{source}: expected {name_a} and {name_b} as two arrays of one length, found shapes {np.shape(a)} and "
+            f"{np.shape(b)}"
         )

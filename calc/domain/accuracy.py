@@ -53,17 +53,21 @@ lost_motion = Formula(
 )
 
 positioning_accuracy_low = Formula(
-    Symbol("Delta_phi_P_low", r"\Delta\varphi_{P}", "angle", "arcmin", "positioning accuracy, torque up to 3 % of nominal"),
+    Symbol("Delta_phi_P_low", r"\Delta\varphi_{P}", "angle", "arcmin",
+           "positioning accuracy, torque up to 3 % of nominal"),
     (_TA, _j),
     lambda sp, ta, j: ta + j,
-    "source, Positioning Accuracy, torque <= 3 % of nominal torque: angular transmission accuracy + backlash; errata E13",
+    "source, Positioning Accuracy, torque <= 3 % of nominal torque: angular transmission accuracy + backlash; errata "
+    "E13",
 )
 
 positioning_accuracy_high = Formula(
-    Symbol("Delta_phi_P_high", r"\Delta\varphi_{P}", "angle", "arcmin", "positioning accuracy, torque above 3 % of nominal"),
+    Symbol("Delta_phi_P_high", r"\Delta\varphi_{P}", "angle", "arcmin",
+           "positioning accuracy, torque above 3 % of nominal"),
     (_TA, _T, _C),
     lambda sp, ta, T, C: ta + sp.Abs(T) / C,
-    "source, Positioning Accuracy, torque > 3 % of nominal torque: angular transmission accuracy + applied torque / stiffness; errata E13",
+    "source, Positioning Accuracy, torque > 3 % of nominal torque: angular transmission accuracy + applied torque / "
+    "stiffness; errata E13",
 )
 
 positioning_error = Formula(
@@ -78,7 +82,8 @@ positioning_error = Formula(
 
 
 _r = Symbol("r", "r", "length", "mm", "radius at which the angle is read (a pinion's pitch radius, a table's edge)")
-_RAD = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (an arc is r · φ with φ in radians, E15)", value="1 rad")
+_RAD = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (an arc is r · φ with φ in radians, E15)",
+              value="1 rad")
 
 arc_length = Formula(
     Symbol("s", "s", "length", "mm", "arc length at the radius"),
@@ -170,7 +175,8 @@ class PositioningRule:
             The positioning accuracy at each torque.
         """
         low = positioning_accuracy_low(phi_TA=transmission_accuracy, j_t=backlash).m_as("arcmin")
-        high = positioning_accuracy_high(phi_TA=transmission_accuracy, T=self.applied_torque, C=stiffness).m_as("arcmin")
+        high = positioning_accuracy_high(phi_TA=transmission_accuracy, T=self.applied_torque,
+                                         C=stiffness).m_as("arcmin")
         return Q_(np.where(self.low_torque, low, high)[()], "arcmin")
 
     def step(self, transmission_accuracy, backlash, stiffness):
@@ -226,7 +232,8 @@ def positioning_rule(applied_torque, nominal_torque=None) -> PositioningRule:
     t = as_kind(applied_torque, "torque", "applied_torque")
     if nominal_torque is None:
         if np.any(np.asarray(t.m_as("N*m")) != 0):
-            raise CalcError("nominal_torque: the 3 % rule of positioning accuracy (E13) needs the nominal torque, found none")
+            raise CalcError("nominal_torque: the 3 % rule of positioning accuracy (E13) needs the nominal torque, "
+                            "found none")
         return PositioningRule(t, None, np.full(np.shape(t.magnitude), True)[()])
     limit = low_torque_limit(nominal_torque)
     return PositioningRule(t, limit, (np.abs(t.m_as("N*m")) <= limit.m_as("N*m") * (1 + BOUNDARY_RTOL))[()])
@@ -490,7 +497,8 @@ def analyze_positions(target, actual, source: str = "positions") -> PositioningS
     tgt = target.m_as("deg")
     keys, g, count = np.unique(tgt, return_inverse=True, return_counts=True)
     if (count < 2).any():
-        raise CalcError(f"{source}: expected each target approached at least twice, found target {keys[count < 2][0]:g}° once")
+        raise CalcError(f"{source}: expected each target approached at least twice, found target "
+                        f"{keys[count < 2][0]:g}° once")
     spread = np.full(len(keys), -np.inf)
     low = np.full(len(keys), np.inf)
     np.maximum.at(spread, g, err)

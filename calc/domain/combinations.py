@@ -4,7 +4,8 @@ few moments of the cycle, exactly, without a pass over the samples per pair.
 Through a gearbox of ratio ``i`` and efficiency ``η``, with ``J = J_motor + J_1`` on the motor
 shaft, the motor torque of sample ``k`` is (:data:`calc.domain.motor.T_1_drive`, :data:`calc.domain.motor.T_1_back`)
 
-* driving (``T_2 · ω_2 >= 0``): ``T_1k = J · i · α_2k + T_2k / (i · η) = (T_2k + x_D · α_2k) / (i · η)``, ``x_D = J · i² · η``;
+* driving (``T_2 · ω_2 >= 0``): ``T_1k = J · i · α_2k + T_2k / (i · η) = (T_2k + x_D · α_2k) / (i · η)``,
+  ``x_D = J · i² · η``;
 * driven back: ``T_1k = J · i · α_2k + T_2k · η / i = (T_2k + x_B · α_2k) · η / i``, ``x_B = J · i² / η``.
 
 Which samples drive depends on the load alone, not on the pair. So
@@ -34,8 +35,10 @@ import numpy as np
 from ..core.checks import within_rating
 
 #: How :func:`search` picks a pair among the feasible ones.
-RULE = ("the smallest adequate motor (lowest rated torque, a tie to the lower rotor inertia), then the smallest adequate "
-        "gearbox for it (lowest rated torque of the gearbox), then the lowest RMS utilization of the motor, then the lower ratio")
+RULE = ("the smallest adequate motor (lowest rated torque, a tie to the lower rotor inertia), then the smallest "
+        "adequate "
+        "gearbox for it (lowest rated torque of the gearbox), then the lowest RMS utilization of the motor, then the "
+        "lower ratio")
 
 
 @dataclass(frozen=True)
@@ -193,12 +196,14 @@ def motor_torques(m: CycleMoments, i, eta, J) -> tuple[np.ndarray, np.ndarray]:
 
     Examples
     --------
-    >>> m = CycleMoments.of([0.2, 0.6, 0.2, 1.0], [60.0, 20.0, -45.0, 0.0], [15.7, 31.4, 15.7, 0.0], [0.0, 0.0, 0.0, 0.0])
+    >>> m = CycleMoments.of([0.2, 0.6, 0.2, 1.0], [60.0, 20.0, -45.0, 0.0], [15.7, 31.4, 15.7, 0.0],
+    ...                     [0.0, 0.0, 0.0, 0.0])
     >>> [round(float(x), 4) for x in motor_torques(m, 10.0, 0.97, 0.0)]
     [6.1856, 2.647]
     """
     i, eta, J = np.broadcast_arrays(*(np.asarray(x, float) for x in (i, eta, J)))
-    square = ((J * i) ** 2 * m.A + 2 * J * (m.S_D / eta + m.S_B * eta) + m.Q_D / (i * eta) ** 2 + m.Q_B * (eta / i) ** 2) / m.duration
+    square = ((J * i) ** 2 * m.A + 2 * J * (m.S_D / eta + m.S_B * eta)
+              + m.Q_D / (i * eta) ** 2 + m.Q_B * (eta / i) ** 2) / m.duration
     rms = np.sqrt(np.maximum(square, 0.0))  # rounding may leave a zero RMS a hair below zero
     x = J * i * i
     peak = np.maximum(m.drive(x * eta) / (i * eta), m.back(x / eta) * eta / i)
@@ -230,7 +235,8 @@ class Combinations:
     pick: tuple[int, int] | None  # (gearbox row, motor) by RULE; None where no pair is feasible
 
 
-def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict, inertia_ratio_limit: float = 10.0) -> Combinations:
+def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict,
+           inertia_ratio_limit: float = 10.0) -> Combinations:
     """Check every pair of a gearbox row and a motor against the cycle, and pick one (:data:`RULE`).
 
     ``top_speed``: the highest output speed [rad/s]. ``gearboxes``: arrays over the rows (each at
@@ -273,7 +279,8 @@ def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dic
     rows, cols = np.nonzero(feasible)
     pick = None
     if len(rows):
-        keys = (g["i"][rows, 0], rms[rows, cols] / mo["rated_torque"][0, cols], g["size"][rows, 0], mo["J"][0, cols], mo["rated_torque"][0, cols])
+        keys = (g["i"][rows, 0], rms[rows, cols] / mo["rated_torque"][0, cols], g["size"][rows, 0], mo["J"][0, cols],
+                mo["rated_torque"][0, cols])
         best = np.lexsort(keys)[0]
         pick = (int(rows[best]), int(cols[best]))
     return Combinations(peak, rms, utilization, feasible, pick)

@@ -7,17 +7,19 @@ elastomer coupling's torque is further multiplied by a temperature factor (E9). 
 the spring of a two-mass system whose natural frequency ``f_e`` must be at least twice the
 excitation frequency of the drive (E7). That system leaves out every other spring of the drive
 train: given the members around the coupling (:class:`DriveTrain`), the first mode ``f_1`` of the
-whole chain (:mod:`calc.domain.torsion`) is checked against the same ``2 f_er``. A line shaft's stiffness comes from its two bellows and
-its tube at the case's shaft distance; a safety coupling's disengagement torque ``T_A`` must lie
-in the size's adjustable range and above the peak torque of normal operation (E10).
+whole chain (:mod:`calc.domain.torsion`) is checked against the same ``2 f_er``. A line shaft's
+stiffness comes from its two bellows and its tube at the case's shaft distance; a safety
+coupling's disengagement torque ``T_A`` must lie in the size's adjustable range and above the peak
+torque of normal operation (E10).
 
 Every row of a catalog (or of the requested type) is checked at once, as numpy arrays over the
 rows. The case's inertias are those of the machine without the coupling: each candidate's own
 inertia is added, half to each side (E7).
 
 Ranking rule: passing candidates first, published rows before illustrative ones (as for
-gearboxes); among them the smallest adequate size, measured by the rated torque ``T_KN``, then the larger margin (lower worst utilization); failing candidates
-after, closest to passing first. Ties go by part name (:func:`calc.core.checks.rank`).
+gearboxes); among them the smallest adequate size, measured by the rated torque ``T_KN``, then the
+larger margin (lower worst utilization); failing candidates after, closest to passing first. Ties
+go by part name (:func:`calc.core.checks.rank`).
 """
 
 from __future__ import annotations
@@ -108,7 +110,8 @@ SCHEMA = Schema(
 #: disengagement torque T_A (Mayr's EAS-compact tables give no separate rated torque): the torque
 #: it passes is then bounded by T_A, which E10 checks.
 _TYPE_NEEDS = {
-    "bellows": ("T_KN",), "elastomer": ("T_KN",), "safety": ("T_Amin", "T_Amax"), "line-shaft": ("T_KN", "C_T", "C_tube", "H"),
+    "bellows": ("T_KN",), "elastomer": ("T_KN",), "safety": ("T_Amin", "T_Amax"),
+    "line-shaft": ("T_KN", "C_T", "C_tube", "H"),
 }
 
 # Symbols of the source's sizing section.
@@ -162,14 +165,18 @@ M_Nt = Formula(
 M_Smax = Formula(
     Symbol("M_Smax", r"M_{S\,\mathrm{max}}", "torque", "N*m", "peak torque with the start and temperature factors"),
     (
-        Symbol("T_S", "T_{S}", "torque", "N*m", "peak torque at the coupling (the source's M_N: a drive-side shock with S_A)"),
+        Symbol("T_S", "T_{S}", "torque", "N*m",
+               "peak torque at the coupling (the source's M_N: a drive-side shock with S_A)"),
         Symbol("S_z", "S_{z}", "dimensionless", "", "start factor (starts per hour)"),
         _K_T,
     ),
     lambda sp, T_S, S_z, K_T: sp.Mul(T_S, S_z, K_T, evaluate=False),
-    "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing of "
-    "elastomer couplings EK (T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature factor S_υ); "
-    "Mayr ROBA-ES B.9.6.EN p. 26 (S_z, S_δ); T_S read as the source's M_N (a drive-side shock: M_a · J_load / (J_load + J_drive) · S_A)",
+    "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing "
+    "of "
+    "elastomer couplings EK (T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature "
+    "factor S_υ); "
+    "Mayr ROBA-ES B.9.6.EN p. 26 (S_z, S_δ); T_S read as the source's M_N (a drive-side shock: M_a · J_load / (J_load "
+    "+ J_drive) · S_A)",
 )
 
 
@@ -284,10 +291,12 @@ def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "tem
     """
     t = as_kind(temperature, "temperature", where)
     if any(name.startswith("delta_") for name in t.units._units):
-        raise CalcError(f"{where}: expected a temperature such as \"60 degC\", found {t:~P}, which is a temperature difference")
+        raise CalcError(f"{where}: expected a temperature such as \"60 degC\", found {t:~P}, which is a temperature "
+                        "difference")
     kelvin = np.asarray(t.m_as("K"))
     if np.any(kelvin < 0):
-        raise CalcError(f"{where}: expected a temperature above absolute zero (-273.15 °C), found {sig(kelvin[kelvin < 0][0] - 273.15)} °C")
+        raise CalcError(f"{where}: expected a temperature above absolute zero (-273.15 °C), found "
+                        f"{sig(kelvin[kelvin < 0][0] - 273.15)} °C")
     return table.lookup(t, where)
 
 
@@ -390,7 +399,8 @@ class CouplingCheck(CheckArray):
             return f"{self.text}: not checked, {missing}"
         if self.lower_bound:
             return (
-                f"{self.text}: {fmt(self.rated[row], self.unit)} is below the least {fmt(self.required[row], self.unit)}, "
+                f"{self.text}: {fmt(self.rated[row], self.unit)} is below the least "
+                f"{fmt(self.required[row], self.unit)}, "
                 f"{sig(100 * (1 - 1 / u), 3)} % short"
             )
         return super().reason(row)
@@ -718,7 +728,8 @@ def select_coupling(
     checks, m_smax = _operating_checks(catalog, case, kinds, c_t, fe, modes, drive_train, (m_n, m_nt, K_T, S_z), notes)
     checks += _fit_checks(catalog, case, kinds, t_op)
     passes, worst, order = _verdicts(catalog, checks)
-    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes,
+    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst,
+                             order, notes,
                              drive_train, chain, modes)
 
 
@@ -756,13 +767,15 @@ def _checked_case(catalog, kinds, given, excitation_frequency, shaft_1, shaft_2,
     types = catalog.text["type"]
     accel_torque, drive_inertia, load_inertia = given["accel_torque"], given["drive_inertia"], given["load_inertia"]
     absent = [sources.get(key, f"{where}.{key}") for key, value in given.items() if value is None]
-    absent_inertia = [sources.get(key, f"{where}.{key}") for key in ("drive_inertia", "load_inertia") if given[key] is None]
+    absent_inertia = [sources.get(key, f"{where}.{key}") for key in ("drive_inertia", "load_inertia")
+                      if given[key] is None]
     no_torque = "needs " + " and ".join(absent) if absent else None
     no_inertia = "needs " + " and ".join(absent_inertia) if absent_inertia else None
     M_a = Q_(math.nan, "N*m") if accel_torque is None else as_kind(accel_torque, "torque", f"{where}.accel_torque")
     J_drive = (Q_(math.nan, "kg*m**2") if drive_inertia is None
                else as_kind(drive_inertia, "inertia", f"{where}.drive_inertia"))
-    J_load = Q_(math.nan, "kg*m**2") if load_inertia is None else as_kind(load_inertia, "inertia", f"{where}.load_inertia")
+    J_load = (Q_(math.nan, "kg*m**2") if load_inertia is None
+              else as_kind(load_inertia, "inertia", f"{where}.load_inertia"))
     f_er = as_kind(excitation_frequency, "frequency", f"{where}.excitation_frequency")
     S_A = as_kind(service_factor, "dimensionless", f"{where}.service_factor")
     _positive(None if accel_torque is None else M_a, f"{where}.accel_torque", "a torque", "N*m")
@@ -867,14 +880,17 @@ def _operating_checks(catalog, case: _Case, kinds: _Kinds, c_t, fe, modes, drive
         return np.where(
             kinds.line_shaft & (case.A is None),
             "a line shaft's stiffness needs coupling.shaft_distance",
-            np.char.add(np.char.add(f"{what} needs the coupling's ", empty.astype(str)), ", which the catalog leaves empty"),
+            np.char.add(np.char.add(f"{what} needs the coupling's ", empty.astype(str)),
+                        ", which the catalog leaves empty"),
         )
 
     f_min = _over_rows(f_e_min(f_er=case.f_er), n)
     rated = ~(kinds.safety & np.isnan(catalog["T_KN"].magnitude))
     checks = [
-        CouplingCheck("T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", rated, not_made=case.no_torque),
-        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", f_min, fe, "Hz", None, needs("f_e"), not_made=case.no_inertia),
+        CouplingCheck("T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", rated,
+                      not_made=case.no_torque),
+        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", f_min, fe, "Hz", None, needs("f_e"),
+                      not_made=case.no_inertia),
     ]
     if modes is not None:
         checks.append(
@@ -900,7 +916,8 @@ def _operating_checks(catalog, case: _Case, kinds: _Kinds, c_t, fe, modes, drive
         notes.append("coupling.start_factors not given: the peak-torque check T_S · S_z · K_ϑ <= T_Kmax "
                      "of elastomer couplings is not made")
     if case.speed is not None:
-        checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", _over_rows(case.speed, n), catalog["n_max"], "rpm",
+        checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", _over_rows(case.speed, n), catalog["n_max"],
+                                    "rpm",
                                     None, "the catalog gives no maximum speed"))
     else:
         notes.append("coupling.speed not given: the speed check n <= n_max is not made")
@@ -916,21 +933,24 @@ def _fit_checks(catalog, case: _Case, kinds: _Kinds, t_op) -> list:
         missing = f"the catalog gives no bore range for hub {k}"
         D = _over_rows(bore.nominal, n)
         checks += [
-            CouplingCheck(f"d_{k}min", "coupling", f"d_{k}min <= D_{k}", catalog[f"d_{k}min"], D, "mm", None, missing, True),
+            CouplingCheck(f"d_{k}min", "coupling", f"d_{k}min <= D_{k}", catalog[f"d_{k}min"], D, "mm", None, missing,
+                          True),
             CouplingCheck(f"d_{k}max", "coupling", f"D_{k} <= d_{k}max", D, catalog[f"d_{k}max"], "mm", None, missing),
         ]
     if kinds.safety.any():
         t_a = Q_(np.full(n, np.nan), "N*m") if case.T_A is None else _over_rows(case.T_A, n)
         missing = "needs coupling.disengagement_torque (E10)"
         checks += [
-            CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", kinds.safety, missing, True),
+            CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", kinds.safety, missing,
+                          True),
             CouplingCheck("T_Amax", "coupling", "T_A <= T_Amax", t_a, catalog["T_Amax"], "N*m", kinds.safety, missing),
             CouplingCheck("T_A", "coupling", "T_op <= T_A", _over_rows(t_op, n), t_a, "N*m", kinds.safety, missing,
                           not_made=case.no_torque),
         ]
     if kinds.line_shaft.any():
         a = Q_(np.full(n, np.nan), "mm") if case.A is None else _over_rows(case.A, n)
-        missing = "needs coupling.shaft_distance" if case.A is None else "the catalog gives no longest shaft distance A_max"
+        missing = ("needs coupling.shaft_distance" if case.A is None
+                   else "the catalog gives no longest shaft distance A_max")
         checks += [
             CouplingCheck("A_min", "coupling", "2 H <= A", 2 * catalog["H"], a, "mm", kinds.line_shaft,
                           "needs coupling.shaft_distance", True),
@@ -951,7 +971,8 @@ def _verdicts(catalog: Catalog, checks: list):
     )
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
     size = catalog["T_KN"].m_as("N*m")
-    size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)  # a safety coupling rated by its T_A range alone
+    # a safety coupling rated by its T_A range alone
+    size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)
     order = rank(passes, size, worst, catalog.parts, later=catalog.illustrative)
     return passes, worst, order
 
@@ -962,7 +983,8 @@ def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str)
     if value is not None and not rows_of_type.all():
         others = sorted(set(types[~rows_of_type]))
         raise CalcError(
-            f"{where}: {what} is for {type_name} couplings only, but the candidates include {', '.join(others)} couplings; "
+            f"{where}: {what} is for {type_name} couplings only, but the candidates include {', '.join(others)} "
+            "couplings; "
             f"set type = \"{type_name}\" or remove the key"
         )
     if value is None and rows_of_type.all():
@@ -1009,7 +1031,8 @@ def order_lines(part: str, coupling_type: str, bores, disengagement_torque=None,
     lines = [f"{ORDER_TITLES[coupling_type]} {part}"]
     lines += [f"D{k} = {bore.text}" for k, bore in enumerate(bores, start=1)]
     if disengagement_torque is not None:
-        lines.append(f"T_A (disengagement torque) = {fmt(as_kind(disengagement_torque, 'torque', f'{part}: T_A'), 'N*m')}")
+        lines.append("T_A (disengagement torque) = "
+                     f"{fmt(as_kind(disengagement_torque, 'torque', f'{part}: T_A'), 'N*m')}")
     if shaft_distance is not None:
         distance = as_kind(shaft_distance, "length", f"{part}: distance between shafts")
         lines.append(f"Distance between shafts = {sig(distance.magnitude)} {distance.units:~}")  # in the unit given
@@ -1050,4 +1073,5 @@ def check_types(catalog: Catalog) -> None:
         for column in columns:
             empty = np.flatnonzero((types == t) & np.isnan(catalog[column].magnitude))
             if len(empty):
-                raise CalcError(f"{where(empty[0])}, column {column}: a {t} coupling needs a value, found an empty cell")
+                raise CalcError(f"{where(empty[0])}, column {column}: a {t} coupling needs a value, found an empty "
+                                "cell")

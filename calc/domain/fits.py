@@ -83,7 +83,8 @@ _CLASS = re.compile(r"^(?P<letter>[A-Za-z]{1,2})(?P<grade>\d{1,2})$")
 def _band(size_mm: np.ndarray, where: str) -> np.ndarray:
     if np.any(~(size_mm > 0)) or np.any(size_mm > SIZE_BANDS_MM[-1]):
         bad = size_mm[(~(size_mm > 0)) | (size_mm > SIZE_BANDS_MM[-1])].flat[0]
-        raise CalcError(f"{where}: expected a nominal size over 0 up to 500 mm (the ISO 286 tables here), found {sig(bad)} mm")
+        raise CalcError(f"{where}: expected a nominal size over 0 up to 500 mm (the ISO 286 tables here), found "
+                        f"{sig(bad)} mm")
     return np.searchsorted(SIZE_BANDS_MM, size_mm, side="left")
 
 
@@ -281,7 +282,9 @@ def _number(text: str, where: str, found: str) -> float:
     try:
         return float(Fraction(text)) if "/" in text else float(text)
     except ZeroDivisionError:
-        raise CalcError(f"{where}: expected a fraction with a denominator above zero, found {text!r} in {found!r}") from None
+        raise CalcError(
+            f"{where}: expected a fraction with a denominator above zero, found {text!r} in {found!r}"
+        ) from None
 
 
 def _spaced(text: str) -> str:
@@ -325,7 +328,8 @@ def parse_bore(text, where: str = "bore") -> Bore:
     '14.001 / 14.012 mm'
     """
     if not isinstance(text, str):
-        raise CalcError(f"{where}: expected a shaft size with its tolerance as text, such as {_EXAMPLES}, found {text!r}")
+        raise CalcError(f"{where}: expected a shaft size with its tolerance as text, such as {_EXAMPLES}, found "
+                        f"{text!r}")
     m = _BORE.match(text)
     if not m:
         raise CalcError(f"{where}: expected a shaft size with its tolerance such as {_EXAMPLES}, found {text!r}")
@@ -343,15 +347,18 @@ def parse_bore(text, where: str = "bore") -> Bore:
     elif m.group("tol"):
         tolerance = _spaced(m.group("tol"))
         if m.group("sym"):
-            dev = Q_(_number(m.group("sym"), where, text), _length_unit(m.group("sym_unit") or m.group("unit"), where, text))
+            dev = Q_(_number(m.group("sym"), where, text),
+                     _length_unit(m.group("sym_unit") or m.group("unit"), where, text))
             devs = (-dev, dev)
         else:
             devs = tuple(
-                Q_(_number(m.group(key), where, text), _length_unit(m.group(f"{key}_unit") or m.group("unit"), where, text)) for key in ("dev1", "dev2")
+                Q_(_number(m.group(key), where, text),
+                   _length_unit(m.group(f"{key}_unit") or m.group("unit"), where, text)) for key in ("dev1", "dev2")
             )
         lower, upper = sorted((nominal + d).to(unit) for d in devs)
         if not upper > lower:
-            raise CalcError(f"{where}: the limits in {text!r} leave no tolerance; expected an upper limit above the lower one")
+            raise CalcError(f"{where}: the limits in {text!r} leave no tolerance; expected an upper limit above the "
+                            "lower one")
     keyway = None
     order_text = size_text + (f" {tolerance}" if tolerance else "")
     if m.group("keyway"):

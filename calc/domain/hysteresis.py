@@ -53,7 +53,8 @@ COLUMNS = (
 )
 
 stiffness_from_slope = Formula(
-    Symbol("C_t", "C_{t}", "stiffness", "N*m/arcmin", "torsional stiffness, slope of the loop from 50 % to 100 % of T_N"),
+    Symbol("C_t", "C_{t}", "stiffness", "N*m/arcmin",
+           "torsional stiffness, slope of the loop from 50 % to 100 % of T_N"),
     (
         Symbol("Delta_T", r"\Delta T", "torque", "N*m", "torque from 50 % to 100 % of T_N"),
         Symbol("Delta_phi", r"\Delta\varphi", "angle", "arcmin", "twist over that torque, from the fitted line"),
@@ -73,10 +74,12 @@ backlash_from_loop = Formula(
 )
 
 lost_motion_from_loop = Formula(
-    Symbol("phi_LM3", r"\varphi_{\mathrm{LM},3\%}", "angle", "arcmin", "lost motion, width of the loop over ±3 % of T_N"),
+    Symbol("phi_LM3", r"\varphi_{\mathrm{LM},3\%}", "angle", "arcmin",
+           "lost motion, width of the loop over ±3 % of T_N"),
     (
         Symbol("phi_max_3", r"\varphi_{\max,\pm 3\%}", "angle", "arcmin", "largest twist between -3 % and +3 % of T_N"),
-        Symbol("phi_min_3", r"\varphi_{\min,\pm 3\%}", "angle", "arcmin", "smallest twist between -3 % and +3 % of T_N"),
+        Symbol("phi_min_3", r"\varphi_{\min,\pm 3\%}", "angle", "arcmin",
+               "smallest twist between -3 % and +3 % of T_N"),
     ),
     lambda sp, hi, lo: hi - lo,
     "source, Lost Motion: maximum deflection - minimum deflection at ±3 % of nominal torque; errata E12",
@@ -141,7 +144,8 @@ def write_loop(path, loop: Loop, comments: tuple[str, ...]) -> None:
     -------
     None
     """
-    write_measurement(path, {"torque": loop.torque, "twist": loop.twist}, {"torque": "N*m", "twist": "arcmin"}, comments)
+    write_measurement(path, {"torque": loop.torque, "twist": loop.twist}, {"torque": "N*m", "twist": "arcmin"},
+                      comments)
 
 
 @dataclass(frozen=True)
@@ -202,20 +206,24 @@ class LoopModel:
             raise CalcError(f"loop model: nominal_torque: expected a torque above zero, found {self.nominal_torque:~P}")
         for name in ("soft_share", "friction"):
             if not 0 <= getattr(self, name) < 1:
-                raise CalcError(f"loop model: {name}: expected a share from 0 to below 1, found {getattr(self, name)!r}")
+                raise CalcError(f"loop model: {name}: expected a share from 0 to below 1, found "
+                                f"{getattr(self, name)!r}")
         for name in ("soft_width", "gap_width"):
             if not 0 < getattr(self, name) < 0.25:
-                raise CalcError(f"loop model: {name}: expected a share above 0 and below 0.25, found {getattr(self, name)!r}")
+                raise CalcError(f"loop model: {name}: expected a share above 0 and below 0.25, found "
+                                f"{getattr(self, name)!r}")
         t_f = self.friction * t_n
         if t_f == 0:
             if j > 0:
-                raise CalcError("loop model: friction: a loop with backlash needs friction above zero to hold the output at one side of the gap at 0 N·m")
+                raise CalcError("loop model: friction: a loop with backlash needs friction above zero to hold the "
+                                "output at one side of the gap at 0 N·m")
             return
         # Width at 0 N·m is 2 e(T_f); the gap makes up what stiffness and soft zone do not.
         without_gap = 2 * self._e(t_f, gap=0.0)
         if without_gap > j:
             raise CalcError(
-                f"loop model: friction {self.friction:g} × T_N alone opens the loop by {Q_(without_gap, 'rad').m_as('arcmin'):.3g} arcmin at 0 N·m, "
+                f"loop model: friction {self.friction:g} × T_N alone opens the loop by "
+                f"{Q_(without_gap, 'rad').m_as('arcmin'):.3g} arcmin at 0 N·m, "
                 f"more than the backlash {self.backlash:~P}; give less friction"
             )
         object.__setattr__(self, "_gap", (j - without_gap) / np.tanh(self.friction / self.gap_width))
@@ -287,7 +295,8 @@ class LoopModel:
                 state = internal[b]
         return Q_(self._e(internal), "rad").to("arcmin")
 
-    def loop(self, samples: int = 2000, noise_torque=None, noise_twist=None, seed: int = 0, uneven: bool = True) -> Loop:
+    def loop(self, samples: int = 2000, noise_torque=None, noise_twist=None, seed: int = 0,
+             uneven: bool = True) -> Loop:
         """A loop as a rig records it: from unloaded, 0 → +T_N → -T_N → +T_N.
 
         The source's procedure loads to ``+T_N`` and then the other way to ``-T_N``; the last
@@ -361,7 +370,8 @@ def model_for_part(part: str, catalog: str = "gearboxes", **shape) -> LoopModel:
     row = rows.index(part, "part")
     for column in ("C_t21", "backlash"):
         if np.isnan(rows[column][row].magnitude):
-            raise CalcError(f"{rows.path}, row {rows.lines[row]} ({part}), column {column}: expected a value for the loop model, found an empty cell")
+            raise CalcError(f"{rows.path}, row {rows.lines[row]} ({part}), column {column}: expected a value for the "
+                            "loop model, found an empty cell")
     return LoopModel(rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row], **shape)
 
 
@@ -519,7 +529,8 @@ def _checked_samples(loop: Loop, t_n: float):
     if torque.max() < edge or torque.min() > -edge:
         raise CalcError(
             f"{where}: the loop is loaded in one direction only (torque from {torque.min():.4g} to "
-            f"{torque.max():.4g} N·m); expected torque beyond both -3 % and +3 % of the nominal torque (±{edge:.4g} N·m)"
+            f"{torque.max():.4g} N·m); expected torque beyond both -3 % and +3 % of the nominal torque (±{edge:.4g} "
+            "N·m)"
         )
     return torque, twist
 

@@ -47,14 +47,17 @@ omega_2max = Formula(
     Symbol("omega_2max", r"\omega_{2,\max}", "speed", "rpm", "peak output speed of the move"),
     (phi_2, t_m, t_a, t_d),
     lambda sp, phi, t, ta, td: phi / (t - (ta + td) / 2),
-    "a reading (spec, Motion and mechanism): the distance is the area of the trapezoid of speed; an S-curve's symmetric ramps keep it",
+    "a reading (spec, Motion and mechanism): the distance is the area of the trapezoid of speed; an S-curve's "
+    "symmetric ramps keep it",
 )
 
 alpha_2max = Formula(
-    Symbol("alpha_2max", r"\alpha_{2,\max}", "angular_acceleration", "rad/s**2", "peak output acceleration of a speed ramp"),
+    Symbol("alpha_2max", r"\alpha_{2,\max}", "angular_acceleration", "rad/s**2",
+           "peak output acceleration of a speed ramp"),
     (omega_2max.result, t_r, t_j),
     lambda sp, w, tr, tj: w / (tr - tj),
-    "a reading (spec, Motion and mechanism): a ramp of t_r with jerk ramps of t_j at both ends gains ω at α·(t_r − t_j)",
+    "a reading (spec, Motion and mechanism): a ramp of t_r with jerk ramps of t_j at both ends gains ω at α·(t_r − "
+    "t_j)",
 )
 
 

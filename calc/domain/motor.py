@@ -42,7 +42,8 @@ _T_2 = Symbol("T_2", "T_{2}", "torque", "N*m", "output torque")
 
 alpha_1 = Formula(
     _alpha_1,
-    (Symbol("alpha_2", r"\alpha_{2}", "angular_acceleration", "rad/s**2", "angular acceleration at the gearbox output"), _i),
+    (Symbol("alpha_2", r"\alpha_{2}", "angular_acceleration", "rad/s**2", "angular acceleration at the gearbox output"),
+     _i),
     lambda sp, alpha_2, i: i * alpha_2,
     "case format, The motor's side (α_1 = i · α_2)",
 )
@@ -73,15 +74,19 @@ T_1rms = Formula(
 
 
 P_1 = Formula(
-    Symbol("P_1", "P_{1}", "power", "W", "mechanical power at the motor shaft (negative: the load drives back, the drive brakes)"),
-    (Symbol("T_1", "T_{1}", "torque", "N*m", "motor torque"), Symbol("omega_1", r"\omega_{1}", "speed", "rpm", "motor speed"), RADIAN),
+    Symbol("P_1", "P_{1}", "power", "W",
+           "mechanical power at the motor shaft (negative: the load drives back, the drive brakes)"),
+    (Symbol("T_1", "T_{1}", "torque", "N*m", "motor torque"),
+     Symbol("omega_1", r"\omega_{1}", "speed", "rpm", "motor speed"), RADIAN),
     lambda sp, T, w, rad: T * w / rad,
     "mechanics: power = torque · angular speed (E15)",
 )
 
 W_regen = Formula(
-    Symbol("W_regen", r"W_{\mathrm{regen}}", "energy", "J", "energy the load gives back to the drive per cycle (its braking resistor or DC link)"),
-    (Symbol("P_back_k", r"P_{\mathrm{back},k}", "power", "W", "braking power of sample k, |P_1| where P_1 < 0, else 0", per_segment=True),
+    Symbol("W_regen", r"W_{\mathrm{regen}}", "energy", "J",
+           "energy the load gives back to the drive per cycle (its braking resistor or DC link)"),
+    (Symbol("P_back_k", r"P_{\mathrm{back},k}", "power", "W", "braking power of sample k, |P_1| where P_1 < 0, else 0",
+            per_segment=True),
      Symbol("t_k", "t_{k}", "time", "s", "duration of sample k", per_segment=True)),
     lambda sp, P, t: segment_sum(P * t),
     "mechanics: the work of the braking samples, before the motor's and the drive's losses",
@@ -137,7 +142,8 @@ def energy(dt, speed_1, T_1) -> Energy:
     """
     power = P_1.si(T_1=np.asarray(T_1, float), omega_1=np.asarray(speed_1, float))
     back = np.where(power < 0, -power, 0.0)
-    return Energy(float(max(power.max(), 0.0)), float(back.max()), float(W_regen.si(P_back_k=back, t_k=np.asarray(dt, float))))
+    return Energy(float(max(power.max(), 0.0)), float(back.max()),
+                  float(W_regen.si(P_back_k=back, t_k=np.asarray(dt, float))))
 
 
 @dataclass(frozen=True)
@@ -192,7 +198,8 @@ def phases(segment, names, dt, speed_1, T_1) -> list[Phase]:
     for name, a, b in zip(names, bounds[:-1], bounds[1:]):  # a few segments: one pass each
         t, torque = dt[a:b], T[a:b]
         duration = float(t.sum())
-        out.append(Phase(str(name), duration, float(np.sum(v[a:b] * t) / duration), float(T_1rms.si(T_1k=torque, t_k=t)),
+        out.append(Phase(str(name), duration, float(np.sum(v[a:b] * t) / duration),
+                         float(T_1rms.si(T_1k=torque, t_k=t)),
                          float(np.abs(torque).max())))
     return out
 
@@ -237,7 +244,8 @@ class OutputLoad:
         OutputLoad
             The merged cycle.
         """
-        columns = [self.torque.m_as("N*m"), self.speed.m_as("rad/s")] + ([] if self.alpha_2 is None else [self.alpha_2.m_as("rad/s**2")])
+        columns = [self.torque.m_as("N*m"), self.speed.m_as("rad/s")]
+        columns += [] if self.alpha_2 is None else [self.alpha_2.m_as("rad/s**2")]
         _, first, inverse = np.unique(np.stack(columns), axis=1, return_index=True, return_inverse=True)
         order = np.argsort(first, kind="stable")
         dt = np.bincount(inverse.ravel(), weights=self.dt.m_as("s"))[order]
@@ -260,7 +268,8 @@ class OutputLoad:
             Its samples, with their accelerations.
         """
         speed = Q_(cycle.speed, "rad/s")
-        return cls(Q_(cycle.dt, "s"), Q_(cycle.torque, "N*m"), speed, Q_(cycle.acceleration, "rad/s**2"), abs(speed).max())
+        return cls(Q_(cycle.dt, "s"), Q_(cycle.torque, "N*m"), speed, Q_(cycle.acceleration, "rad/s**2"),
+                   abs(speed).max())
 
 
 @dataclass(frozen=True)
@@ -329,7 +338,8 @@ def motor_torque(torque, speed, i, eta, alpha_2=None, J_motor=None, J_1=None):
     60 N·m accelerating at 150 rpm through i = 10, η = 0.97: 60 / (10 · 0.97) = 6.186 N·m; braking
     with -45 N·m: -45 · 0.97 / 10 = -4.365 N·m:
 
-    >>> motor_torque(Q_([60.0, -45.0], "N*m"), Q_([150.0, 150.0], "rpm"), Q_(10, ""), Q_(0.97, "")).m_as("N*m").round(4).tolist()
+    >>> T_1 = motor_torque(Q_([60.0, -45.0], "N*m"), Q_([150.0, 150.0], "rpm"), Q_(10, ""), Q_(0.97, ""))
+    >>> T_1.m_as("N*m").round(4).tolist()
     [6.1856, -4.365]
     """
     if alpha_2 is None:
@@ -381,7 +391,8 @@ def motor_load(dt, torque, speed, i, eta, alpha_2=None, J_motor=None, J_1=None) 
     return MotorLoad(T_1, abs(T_1).max(axis=-1), rms, alpha_2 is not None)
 
 
-def motor_checks(speed, peak=None, rms=None, peak_torque=None, rated_torque=None, max_speed=None, not_made: str | None = None) -> list:
+def motor_checks(speed, peak=None, rms=None, peak_torque=None, rated_torque=None, max_speed=None,
+                 not_made: str | None = None) -> list:
     """The motor's checks for the ratings given (a rating left out: no check): peak ``|T_1| <=
     T_1B``, RMS ``T_1rms <= T_1N``, speed ``n_2max · i <= n_max`` (``speed``: the highest motor
     speed). ``not_made`` says what the torques need where they cannot be computed (an inertia
@@ -417,5 +428,6 @@ def motor_checks(speed, peak=None, rms=None, peak_torque=None, rated_torque=None
         ("n_max", "n_2max · i <= n_max", speed, max_speed, "rpm", None),
     ):
         if rated is not None:
-            out.append(CheckArray(name, None, text, None if missing else required, rated * np.ones(shape), unit, not_made=missing))
+            out.append(CheckArray(name, None, text, None if missing else required, rated * np.ones(shape), unit,
+                                  not_made=missing))
     return out

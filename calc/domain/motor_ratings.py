@@ -58,7 +58,8 @@ VOLTAGE_CLEARANCE = 0.9
 #: A cycle longer than this share of the thermal time constant gets a note (the RMS method assumes it short).
 THERMAL_SHARE = 0.1
 #: How :func:`select_motors` ranks the catalog's motors.
-RANKING = ("passing first; then the smallest adequate motor, the lowest rated torque M_N, ties to the lower rotor inertia; "
+RANKING = ("passing first; then the smallest adequate motor, the lowest rated torque M_N, ties to the lower rotor "
+           "inertia; "
            "then lowest worst utilization; partial rows are never ranked")
 #: The load-to-motor inertia ratio a case may leave out ([motor] max_inertia_ratio).
 INERTIA_RATIO_LIMIT = 10.0
@@ -105,7 +106,8 @@ _n_N = Symbol("n_N", r"n_{N}", "speed", "rpm", "rated speed of the motor")
 _n_max = Symbol("n_max", r"n_{\mathrm{max}}", "speed", "rpm", "maximum speed of the motor")
 
 T_peak_line = Formula(
-    Symbol("T_peak_line", r"T_{\mathrm{peak}}", "torque", "N*m", "peak torque of the motor above its rated speed, from its ratings"),
+    Symbol("T_peak_line", r"T_{\mathrm{peak}}", "torque", "N*m",
+           "peak torque of the motor above its rated speed, from its ratings"),
     (_M_max, _M_N, _n, _n_N, _n_max),
     lambda sp, M_max, M_N, n, n_N, n_max: M_max - (M_max - M_N) * (n - n_N) / (n_max - n_N),
     "a reading (motor ratings): M_max up to n_N, then straight down to M_N at n_max",
@@ -124,7 +126,8 @@ T_V = Formula(
         RADIAN,
     ),
     lambda sp, U_DC, k_E, k_T, R, L, poles, n, rad: k_T * (
-        sp.sqrt((U_DC**2 / 6) * (R**2 + (poles / 2 * n * L / rad) ** 2) - (poles / 2 * n * L / rad) ** 2 * (k_E * n / sp.sqrt(3)) ** 2)
+        sp.sqrt((U_DC**2 / 6) * (R**2 + (poles / 2 * n * L / rad) ** 2)
+                - (poles / 2 * n * L / rad) ** 2 * (k_E * n / sp.sqrt(3)) ** 2)
         - R * k_E * n / sp.sqrt(3)
     ) / (R**2 + (poles / 2 * n * L / rad) ** 2),
     "a reading (motor voltage limit): (R·I + E)² + (X·I)² = (U_DC/√6)², E = k_E·n/√3, X = p·ω·L, I = T/k_T",
@@ -133,7 +136,8 @@ T_V = Formula(
 
 #: The curves a curves file may give per part.
 CURVES = ("peak", "S1")
-CURVE_COLUMNS = (Column("speed", "speed", "motor speed", positive=False), Column("torque", "torque", "torque on the curve", positive=False))
+CURVE_COLUMNS = (Column("speed", "speed", "motor speed", positive=False),
+                 Column("torque", "torque", "torque on the curve", positive=False))
 
 
 @dataclass(frozen=True)
@@ -198,7 +202,8 @@ def read_curves(path: Path, parts) -> Curves:
         raise CalcError(f"{path}: cannot read the curves file ({type(exc).__name__})") from None
     rows = list(csv.reader(text.splitlines()))
     if not rows:
-        raise CalcError(f"{path}: expected a header and rows of part, curve, speed [unit], torque [unit], source, found an empty file")
+        raise CalcError(f"{path}: expected a header and rows of part, curve, speed [unit], torque [unit], source, "
+                        "found an empty file")
     header = {}
     for cell in rows[0]:
         m = _HEADER.match(cell)
@@ -207,7 +212,8 @@ def read_curves(path: Path, parts) -> Curves:
     for name in ("part", "curve", "source", "speed", "torque"):
         if name not in header:
             raise CalcError(f"{path}, header: expected a column {name!r}, found {', '.join(header) or 'none'}")
-    factor = {c.name: Q_(1.0, _header_unit(path, c, header[c.name][1])).m_as("rad/s" if c.name == "speed" else "N*m") for c in CURVE_COLUMNS}
+    factor = {c.name: Q_(1.0, _header_unit(path, c, header[c.name][1])).m_as("rad/s" if c.name == "speed" else "N*m")
+              for c in CURVE_COLUMNS}
     known = set(str(p) for p in parts)
     points: dict = {}
     for line, row in enumerate(rows[1:], start=2):
@@ -228,7 +234,8 @@ def read_curves(path: Path, parts) -> Curves:
             values.append(float(cell[name]) * factor[name])
         speeds, torques = points.setdefault((cell["part"], cell["curve"]), ([], []))
         if speeds and not values[0] > speeds[-1]:
-            raise CalcError(f"{where}, column speed: expected a speed above the curve's one before ({cell['speed']}), the points in ascending speed")
+            raise CalcError(f"{where}, column speed: expected a speed above the curve's one before ({cell['speed']}), "
+                            "the points in ascending speed")
         speeds.append(values[0])
         torques.append(values[1])
     note_file_read(path, "Motor curves")
@@ -298,7 +305,8 @@ def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None, curves: Curves | N
         if electrical.any():
             rows = np.flatnonzero(electrical)
             with np.errstate(invalid="ignore"):
-                volts = T_V.si(U_DC=float(dc_link.m_as("V")), k_E=cat["k_E"].m_as("V*s/rad")[rows, None], k_T=cat["k_T"].m_as("N*m/A")[rows, None],
+                volts = T_V.si(U_DC=float(dc_link.m_as("V")), k_E=cat["k_E"].m_as("V*s/rad")[rows, None],
+                               k_T=cat["k_T"].m_as("N*m/A")[rows, None],
                                R_ph=cat["R_ph"].m_as("ohm")[rows, None], L_ph=cat["L_ph"].m_as("H")[rows, None],
                                poles=cat["poles"].m_as("")[rows, None], n=n)
             volts = np.where(np.isnan(volts), 0.0, np.maximum(volts, 0.0))  # no current left: no torque
@@ -437,11 +445,13 @@ class MotorSelection(Selection):
 
     def row_fields(self, row: int) -> dict:
         lam = None if self.cycle.inertia_ratio is None else float(self.cycle.inertia_ratio[row])
-        return dict(rated_torque=Value.of(self.catalog["M_N"][row], "N*m"), rotor_inertia=Value.of(self.catalog["J"][row], "kg*cm**2"),
+        return dict(rated_torque=Value.of(self.catalog["M_N"][row], "N*m"),
+                    rotor_inertia=Value.of(self.catalog["J"][row], "kg*cm**2"),
                     form=self.forms[row], inertia_ratio=lam)
 
 
-def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | None = None, inertia_limit: float = INERTIA_RATIO_LIMIT,
+def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | None = None,
+                  inertia_limit: float = INERTIA_RATIO_LIMIT,
                   inertia_limit_from: str = "the default", t_cycle: float | None = None) -> MotorSelection:
     """Every row of ``cat`` (no partial row) against the cycle at the motor (:class:`Cycle`), its
     checks (module docstring) and the ranking (:data:`RANKING`); failing rows after the passing
@@ -484,21 +494,26 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | Non
     top = float(np.max(np.abs(cycle.speed)))
     ones = np.ones(rows)
     checks = [
-        CheckArray("peak", None, "|T_1| <= T_peak(n_1) at every sample", Q_(worst_torque, "N*m"), Q_(worst_limit, "N*m"), "N*m"),
-        CheckArray("RMS", None, "T_1rms <= M_N" if not on_curve.any() else "T_1rms <= T_S1(n_1mean), M_N without an S1 curve", Q_(cycle.rms, "N*m"),
+        CheckArray("peak", None, "|T_1| <= T_peak(n_1) at every sample", Q_(worst_torque, "N*m"),
+                   Q_(worst_limit, "N*m"), "N*m"),
+        CheckArray("RMS", None, "T_1rms <= M_N" if not on_curve.any()
+                   else "T_1rms <= T_S1(n_1mean), M_N without an S1 curve", Q_(cycle.rms, "N*m"),
                    Q_(np.where(on_curve, s1, cat["M_N"].m_as("N*m")), "N*m"), "N*m"),
         CheckArray("n_N", None, "n_1mean <= n_N", Q_(n_mean * ones, "rad/s"), cat["n_N"], "rpm"),
         CheckArray("n_max", None, "n_1max <= n_max", Q_(top * ones, "rad/s"), cat["n_max"], "rpm"),
     ]
     if cycle.inertia_ratio is not None or cycle.inertia_ratio_missing is not None:
-        checks.append(CheckArray("lambda", None, "λ <= λ_max", None if cycle.inertia_ratio is None else Q_(cycle.inertia_ratio, ""),
+        checks.append(CheckArray("lambda", None, "λ <= λ_max", None if cycle.inertia_ratio is None
+                                 else Q_(cycle.inertia_ratio, ""),
                                  Q_(inertia_limit * ones, ""), "", not_made=cycle.inertia_ratio_missing))
     passes = np.logical_and.reduce([c.passes | (on_curve if c.name == "n_N" else False) for c in checks if c.made])
     passes &= ~cat.partial
-    worst = np.max([np.where(on_curve & (c.name == "n_N"), 0.0, np.where(np.isnan(c.utilization), np.inf if c.made else 0.0, c.utilization))
+    worst = np.max([np.where(on_curve & (c.name == "n_N"), 0.0,
+                             np.where(np.isnan(c.utilization), np.inf if c.made else 0.0, c.utilization))
                     for c in checks], axis=0)
     worst = np.where(cat.partial, np.inf, worst)
-    keys = (worst, np.where(passes, cat["J"].m_as("kg*m**2"), 0.0), np.where(passes, cat["M_N"].m_as("N*m"), 0.0), ~passes)
+    keys = (worst, np.where(passes, cat["J"].m_as("kg*m**2"), 0.0), np.where(passes, cat["M_N"].m_as("N*m"), 0.0),
+            ~passes)
     order = np.lexsort(keys)
     order = order[~cat.partial[order]]
     notes = []
@@ -506,6 +521,8 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | Non
     if t_cycle is not None:
         long = [str(cat.parts[r]) for r in order[:3] if not np.isnan(th[r]) and t_cycle > THERMAL_SHARE * th[r]]
         if long:
-            notes.append(f"the cycle ({t_cycle:g} s) is not short against the thermal time constant of {', '.join(long)}: "
+            notes.append(f"the cycle ({t_cycle:g} s) is not short against the thermal time constant of "
+                         f"{', '.join(long)}: "
                          "the RMS torque understates the winding's peak temperature")
-    return MotorSelection(cat, cycle, limit, forms, dc_link, s1, curves, n_mean, inertia_limit, inertia_limit_from, checks, passes, worst, order, notes)
+    return MotorSelection(cat, cycle, limit, forms, dc_link, s1, curves, n_mean, inertia_limit, inertia_limit_from,
+                          checks, passes, worst, order, notes)

@@ -47,8 +47,10 @@ T_2m = Formula(
     lambda sp, n, t, T: sp.cbrt(
         segment_sum(sp.Mul(abs(n), t, abs(T) ** 3, evaluate=False)) / segment_sum(sp.Mul(abs(n), t, evaluate=False))
     ),
-    "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes; the exponent 3 is the rolling-bearing "
-    "life exponent of ISO 281 and the gearbox makers' convention for T_2m, not a gear fatigue exponent: gear S-N curves are "
+    "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes; the exponent 3 is the "
+    "rolling-bearing "
+    "life exponent of ISO 281 and the gearbox makers' convention for T_2m, not a gear fatigue exponent: gear S-N "
+    "curves are "
     "much steeper, ISO 6336)",
 )
 
@@ -121,11 +123,13 @@ class Profile:
                 raise CalcError(f"{at}.duration: expected a duration above zero, found {duration:~P}")
             if phase == "pause":
                 if speed is not None or torque is not None:
-                    raise CalcError(f"{at}: a pause takes only a duration, found a {'speed' if speed is not None else 'torque'}")
+                    raise CalcError(f"{at}: a pause takes only a duration, found a "
+                                    f"{'speed' if speed is not None else 'torque'}")
                 n, T = 0.0, 0.0
             else:
                 if speed is None or torque is None:
-                    raise CalcError(f"{at}: a {phase} segment needs a {'speed' if speed is None else 'torque'}, found none")
+                    raise CalcError(f"{at}: a {phase} segment needs a {'speed' if speed is None else 'torque'}, found "
+                                    "none")
                 n = as_kind(speed, "speed", f"{at}.speed").m_as("rpm")
                 T = as_kind(torque, "torque", f"{at}.torque").m_as("N*m")
             phases.append(phase)
@@ -136,7 +140,8 @@ class Profile:
             raise CalcError(f"{where}: expected at least one moving segment (accel, const or decel), found only pauses")
         if not any(n != 0 for n in speeds):
             # n_2m would be 0 and T_2m = 0 / 0: the S1 means weight each torque by its speed.
-            raise CalcError(f"{where}: expected a moving segment with a speed other than zero (n_2m weights each torque by its speed), found every speed zero")
+            raise CalcError(f"{where}: expected a moving segment with a speed other than zero (n_2m weights each "
+                            "torque by its speed), found every speed zero")
         return cls(
             tuple(phases),
             Q_(np.array(durations, float), "s"),
@@ -186,7 +191,8 @@ class Profile:
 
         Examples
         --------
-        >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+        >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")),
+        ...                            ("pause", Q_(1, "s"), None, None)])
         >>> f = p.to_frame()
         >>> list(f.columns)
         ['segment', 'phase', 'duration t [s]', 'mean output speed n_2 [rpm]', 'output torque T_2 [N·m]']
@@ -273,7 +279,8 @@ def duty(profile: Profile) -> Duty:
 
     Examples
     --------
-    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")),
+    ...                            ("pause", Q_(1, "s"), None, None)])
     >>> d = duty(p); (float(d.ED.m_as("percent")), d.mode)
     (50.0, 'S5')
     """
@@ -332,7 +339,8 @@ def segments(s, torque: np.ndarray) -> Segments:
     >>> from calc.domain.motion import Move, sample
     >>> s = sample([Move(1.0, 1.0, 0.5, 0.5)], samples=100)   # a triangle: peak 2 rad/s, ±4 rad/s²
     >>> g = segments(s, 2.0 * s.acceleration)                 # T = J·α with J = 2 kg·m²
-    >>> [PHASES[p] for p in g.phase], g.duration.round(12).tolist(), g.speed.round(12).tolist(), g.torque.round(12).tolist()
+    >>> ([PHASES[p] for p in g.phase], g.duration.round(12).tolist(), g.speed.round(12).tolist(),
+    ...  g.torque.round(12).tolist())
     (['accel', 'decel'], [0.5, 0.5], [1.0, 1.0], [8.0, -8.0])
     """
     dt, v, T = s.dt, s.speed, np.asarray(torque, dtype=float)

@@ -37,7 +37,8 @@ INERTIA_RATIO_LIMIT = 10.0
 
 RULE = (
     "among the feasible ratios (best gearbox and motor pass) whose inertia ratio λ = (J_1 + J_L / i²) / J_motor is at "
-    f"most {INERTIA_RATIO_LIMIT:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within the "
+    f"most {INERTIA_RATIO_LIMIT:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within "
+    "the "
     "limit, the feasible ratio of lowest λ"
 )
 
@@ -209,7 +210,8 @@ def search_ratios(
             missing = "the rotor term (J_motor + J_1) · α_1 needs the motor's inertia (motor.inertia)"
         lacking = [str(p) for p, j in zip(catalog.parts[rows], J_1.magnitude) if np.isnan(j)]
         if lacking and missing is None:
-            notes = [*notes, f"the catalog gives no J_1 for {', '.join(lacking)}: the motor torque through them is not known, so their ratios are not feasible"]
+            notes = [*notes, f"the catalog gives no J_1 for {', '.join(lacking)}: the motor torque through them is not "
+                             "known, so their ratios are not feasible"]
     torques = None
     if missing is None:
         torques = motor_load(load.dt, load.torque, load.speed, i[:, None], eta[:, None], load.alpha_2, motor_inertia,
@@ -222,11 +224,14 @@ def search_ratios(
     # rows without T_2Not and a catalog's missing figures leave NaN: fmax ranks on the others
     utilization = np.fmax.reduce([sel.worst[rows], *[c.utilization for c in motor]], axis=0)
     lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
-    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, [c.not_made for c in sel.not_made + motor if c.not_made])
-    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick, reason, notes)
+    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques,
+                              [c.not_made for c in sel.not_made + motor if c.not_made])
+    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick,
+                       reason, notes)
 
 
-def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str]) -> tuple[int | None, str]:
+def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None,
+               not_made: list[str]) -> tuple[int | None, str]:
     """The ratio to pick by :data:`RULE` and why, in one sentence.
 
     Parameters
@@ -255,7 +260,9 @@ def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None
     rms = np.zeros(len(ratios)) if torques is None else torques.rms.m_as("N*m")  # unknown: the ratio decides
 
     def lowest_rms(k):
-        return "the lowest ratio (the motor torque is not known)" if torques is None else f"the lowest RMS motor torque, {fmt(torques.rms[k], 'N*m')}"
+        if torques is None:
+            return "the lowest ratio (the motor torque is not known)"
+        return f"the lowest RMS motor torque, {fmt(torques.rms[k], 'N*m')}"
 
     known = ~np.isnan(inertia_ratio)
     within = feasible & known & within_rating(inertia_ratio / INERTIA_RATIO_LIMIT)
@@ -263,7 +270,8 @@ def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None
     head = f"{n} of {len(ratios)} ratios are feasible"
     if within.any():
         k = int(np.lexsort((ratios, np.where(within, rms, np.inf)))[0])
-        why = f"{head}, {int(within.sum())} of them with λ <= {INERTIA_RATIO_LIMIT:g}; of these it needs {lowest_rms(k)}"
+        why = (f"{head}, {int(within.sum())} of them with λ <= {INERTIA_RATIO_LIMIT:g}; "
+               f"of these it needs {lowest_rms(k)}")
         if within.sum() == 1:
             why = f"{head}, and only this one keeps λ <= {INERTIA_RATIO_LIMIT:g} (λ = {sig(inertia_ratio[k], 3)})"
     elif (feasible & known).any():

@@ -80,24 +80,28 @@ _T_2 = Symbol("T_2", "T_{2}", "torque", "N*m", "second limit torque of the stiff
 _K_1 = Symbol("K_1", "K_{1}", "stiffness", "N*m/rad", "stiffness from 0 to T_1")
 _K_2 = Symbol("K_2", "K_{2}", "stiffness", "N*m/rad", "stiffness from T_1 to T_2")
 _K_3 = Symbol("K_3", "K_{3}", "stiffness", "N*m/rad", "stiffness above T_2")
-_CURVE_REFERENCE = "Harmonic Drive engineering data (HFUC, CSF, CSG): torsional stiffness as three slopes K_1, K_2, K_3 with limit torques T_1, T_2"
+_CURVE_REFERENCE = ("Harmonic Drive engineering data (HFUC, CSF, CSG): torsional stiffness as three slopes K_1, K_2, "
+                    "K_3 with limit torques T_1, T_2")
 
 twist_low = Formula(
-    Symbol("phi_c1", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, first slope (up to the first limit torque)"),
+    Symbol("phi_c1", r"\varphi", "angle", "arcmin",
+           "twist by the stiffness curve, first slope (up to the first limit torque)"),
     (_T, _K_1),
     lambda sp, T, K_1: T / K_1,
     _CURVE_REFERENCE + " (T <= T_1)",
 )
 
 twist_middle = Formula(
-    Symbol("phi_c2", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, second slope (between the limit torques)"),
+    Symbol("phi_c2", r"\varphi", "angle", "arcmin",
+           "twist by the stiffness curve, second slope (between the limit torques)"),
     (_T, _T_1, _K_1, _K_2),
     lambda sp, T, T_1, K_1, K_2: sp.Add(T_1 / K_1, (T - T_1) / K_2, evaluate=False),
     _CURVE_REFERENCE + " (T_1 < T <= T_2)",
 )
 
 twist_high = Formula(
-    Symbol("phi_c3", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, third slope (above the second limit torque)"),
+    Symbol("phi_c3", r"\varphi", "angle", "arcmin",
+           "twist by the stiffness curve, third slope (above the second limit torque)"),
     (_T, _T_1, _T_2, _K_1, _K_2, _K_3),
     lambda sp, T, T_1, T_2, K_1, K_2, K_3: sp.Add(T_1 / K_1, (T_2 - T_1) / K_2, (T - T_2) / K_3, evaluate=False),
     _CURVE_REFERENCE + " (T > T_2)",
@@ -136,7 +140,8 @@ class StiffnessCurve:
     T_2 = 108 N·m, K_2 = 1.1·10⁵ N·m/rad; at 60 N·m, φ = 29/6.7e4 + 31/1.1e5 = 7.15·10⁻⁴ rad
     (``K_3`` does not enter below ``T_2``; 1.2·10⁵ N·m/rad here stands in for it):
 
-    >>> hfuc = StiffnessCurve(Q_(29, "N*m"), Q_(108, "N*m"), Q_(6.7e4, "N*m/rad"), Q_(1.1e5, "N*m/rad"), Q_(1.2e5, "N*m/rad"))
+    >>> hfuc = StiffnessCurve(Q_(29, "N*m"), Q_(108, "N*m"), Q_(6.7e4, "N*m/rad"), Q_(1.1e5, "N*m/rad"),
+    ...                       Q_(1.2e5, "N*m/rad"))
     >>> print(f"{hfuc.twist(Q_(60, 'N*m')).m_as('rad'):.2e}")
     7.15e-04
     """
@@ -149,15 +154,18 @@ class StiffnessCurve:
     where: str = "stiffness_curve"
 
     def __post_init__(self):
-        for key, k in (("T_1", "torque"), ("T_2", "torque"), ("K_1", "stiffness"), ("K_2", "stiffness"), ("K_3", "stiffness")):
+        for key, k in (("T_1", "torque"), ("T_2", "torque"), ("K_1", "stiffness"), ("K_2", "stiffness"),
+                       ("K_3", "stiffness")):
             name = key.replace("_", "")  # T_1 is T1 in a case file
             q = as_kind(getattr(self, key), k, f"{self.where}.{name}")
             if not np.all(q.magnitude > 0):
                 raise CalcError(
-                    f"{self.where}.{name}: expected {'a torque' if k == 'torque' else 'a slope'} above zero, found {fmt(q, 'N*m' if k == 'torque' else 'N*m/rad')}"
+                    f"{self.where}.{name}: expected {'a torque' if k == 'torque' else 'a slope'} above zero, found "
+                    f"{fmt(q, 'N*m' if k == 'torque' else 'N*m/rad')}"
                 )
         if not self.T_2.m_as("N*m") > self.T_1.m_as("N*m"):
-            raise CalcError(f"{self.where}.T2: expected a limit torque above T1 = {fmt(self.T_1, 'N*m')}, found {fmt(self.T_2, 'N*m')}")
+            raise CalcError(f"{self.where}.T2: expected a limit torque above T1 = {fmt(self.T_1, 'N*m')}, found "
+                            f"{fmt(self.T_2, 'N*m')}")
 
     def band(self, torque) -> np.ndarray:
         """The slope ``|T|`` falls on: 0 up to ``T_1``, 1 up to ``T_2``, 2 above (a limit torque
@@ -291,7 +299,8 @@ class Component:
             if not q.magnitude >= 0:
                 raise CalcError(f"{where}: {key}: expected an angle of zero or more, found {q:~P}")
         if self.backlash is None:
-            raise CalcError(f"{where}: backlash: expected an angle such as \"3 arcmin\" (0 arcmin for none), found none")
+            raise CalcError(f"{where}: backlash: expected an angle such as \"3 arcmin\" (0 arcmin for none), found "
+                            "none")
 
 
 @dataclass(frozen=True)
@@ -329,7 +338,8 @@ class Chain:
         elif any(c.side == "input" for c in self.components):
             first = next(c for c in self.components if c.side == "input")
             raise CalcError(
-                f"component {first.name!r}: sits on the input side, which is referred to the output through the gearbox ratio (E11), found no ratio"
+                f"component {first.name!r}: sits on the input side, which is referred to the output through the "
+                "gearbox ratio (E11), found no ratio"
             )
 
     def with_component(self, component: Component) -> "Chain":
@@ -407,7 +417,8 @@ class Chain:
         return Q_(np.array([i if c.side == "input" else 1.0 for c in self.components]), "")
 
     def _column(self, key: str, unit: str) -> object:
-        return Q_(np.array([np.nan if getattr(c, key) is None else getattr(c, key).m_as(unit) for c in self.components]), unit)
+        return Q_(np.array([np.nan if getattr(c, key) is None else getattr(c, key).m_as(unit)
+                            for c in self.components]), unit)
 
     @property
     def names(self) -> list[str]:

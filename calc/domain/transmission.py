@@ -41,17 +41,21 @@ transmission_error = Formula(
         Symbol("i", "i", "dimensionless", "", "ratio"),
     ),
     lambda sp, phi_2, phi_1, i: phi_2 - phi_1 / i,
-    "source, Angular Transmission Accuracy: actual output position relative to the theoretical output position according to the ratio",
+    "source, Angular Transmission Accuracy: actual output position relative to the theoretical output position "
+    "according to the ratio",
 )
 
 transmission_accuracy = Formula(
     Symbol("phi_TA", r"\varphi_{\mathrm{TA}}", "angle", "arcsec", "angular transmission accuracy"),
     (
-        Symbol("Delta_phi_max", r"\Delta\varphi_{2,\max}", "angle", "arcsec", "largest transmission error over one output revolution"),
-        Symbol("Delta_phi_min", r"\Delta\varphi_{2,\min}", "angle", "arcsec", "smallest transmission error over one output revolution"),
+        Symbol("Delta_phi_max", r"\Delta\varphi_{2,\max}", "angle", "arcsec",
+               "largest transmission error over one output revolution"),
+        Symbol("Delta_phi_min", r"\Delta\varphi_{2,\min}", "angle", "arcsec",
+               "smallest transmission error over one output revolution"),
     ),
     lambda sp, hi, lo: hi - lo,
-    "source, Angular Transmission Accuracy: maximum position variation - minimum position variation over a full output revolution",
+    "source, Angular Transmission Accuracy: maximum position variation - minimum position variation over a full output "
+    "revolution",
 )
 
 
@@ -113,7 +117,8 @@ def write_trace(path, trace: Trace, comments: tuple[str, ...]) -> None:
     -------
     None
     """
-    write_measurement(path, {"input": trace.input, "output": trace.output}, {"input": "deg", "output": "deg"}, comments, digits=10)
+    write_measurement(path, {"input": trace.input, "output": trace.output}, {"input": "deg", "output": "deg"}, comments,
+                      digits=10)
 
 
 def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int = 0, teeth: int = 31) -> Trace:
@@ -150,7 +155,8 @@ def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int 
     theta = np.linspace(0.0, 2 * np.pi, samples)
     theta = np.concatenate((theta, theta[::-1]))
     error = a * (
-        0.5 * np.sin(theta + phases[0]) + 0.25 * np.sin(2 * theta + phases[1]) + 0.125 * np.sin(teeth * i * theta + phases[2])
+        0.5 * np.sin(theta + phases[0]) + 0.25 * np.sin(2 * theta + phases[1])
+        + 0.125 * np.sin(teeth * i * theta + phases[2])
     )
     if noise is not None:
         error = error + rng.normal(0.0, as_kind(noise, "angle", "noise").m_as("rad"), len(theta))
@@ -252,7 +258,8 @@ def analyze_trace(trace: Trace, ratio) -> TransmissionAnalysis:
             ranges[name] = Q_(np.array([error[mask].min(), error[mask].max()]), "arcsec")
     if not ranges:
         found = ", ".join(f"{k} {v:.4g}°" for k, v in covered.items()) or "no direction with enough samples"
-        raise CalcError(f"{where}: expected a full revolution of the output (360°) in at least one direction, found {found}")
+        raise CalcError(f"{where}: expected a full revolution of the output (360°) in at least one direction, found "
+                        f"{found}")
     spans = {k: transmission_accuracy(Delta_phi_max=v[1], Delta_phi_min=v[0]) for k, v in ranges.items()}
     governing = max(spans, key=lambda k: spans[k].m_as("arcsec"))
     return TransmissionAnalysis(

@@ -66,7 +66,8 @@ def combinations_figure(utilization, feasible, ratios, motor_names, pick=None, r
     fig = Figure(figsize=(7.5, height), layout="constrained")
     ax = fig.subplots()
     ax.set_facecolor(INFEASIBLE)
-    image = ax.imshow(best, aspect="auto", cmap=FEASIBLE_MAP, vmin=0.0, vmax=1.0, interpolation="nearest", origin="lower")
+    image = ax.imshow(best, aspect="auto", cmap=FEASIBLE_MAP, vmin=0.0, vmax=1.0, interpolation="nearest",
+                      origin="lower")
     fig.colorbar(image, ax=ax, label="lowest utilization of a working gearbox (1 = at a rating)")
     ax.set_xticks(range(len(ratios)), [f"{r:g}" for r in ratios])
     step = max(1, len(motor_names) // 40)  # at most some 40 names on the axis
@@ -75,7 +76,8 @@ def combinations_figure(utilization, feasible, ratios, motor_names, pick=None, r
     ax.set_ylabel("motor (smallest first)")
     if pick is not None:
         row, motor = pick
-        ax.plot([column[row]], [motor], marker="*", markersize=14, color=PICK, markeredgecolor="white", linestyle="none",
+        ax.plot([column[row]], [motor], marker="*", markersize=14, color=PICK, markeredgecolor="white",
+                linestyle="none",
                 label="the pick")
         ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
     ax.set_title("Which motor works at which ratio (grey: none of that ratio's gearboxes)", fontsize=10, loc="left")

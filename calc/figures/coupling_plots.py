@@ -115,9 +115,11 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
         last = k + 1 == len(factors)
         ax.plot([edges[k], edges[k + 1]], [f, f], color=DRIVE_COLOR, linewidth=2.2)
         if math.isfinite(bounds[k]):
-            ax.plot([edges[k]], [f], "o", markerfacecolor=None if higher or k == 0 else "white", color=DRIVE_COLOR, markersize=5)
+            ax.plot([edges[k]], [f], "o", markerfacecolor=None if higher or k == 0 else "white", color=DRIVE_COLOR,
+                    markersize=5)
         if not last or math.isfinite(table.top):  # the table's top is in its last band; above it, no factor
-            ax.plot([edges[k + 1]], [f], "o", markerfacecolor=None if last or not higher else "white", color=DRIVE_COLOR, markersize=5)
+            ax.plot([edges[k + 1]], [f], "o", markerfacecolor=None if last or not higher else "white",
+                    color=DRIVE_COLOR, markersize=5)
     if temperature is not None:
         t = as_kind(temperature, "temperature", "temperature").m_as("degC")
         k_t = float(temperature_factor(temperature, table))
@@ -236,7 +238,8 @@ def bore_ranges_figure(selection: CouplingSelection, bores):
         lo = selection.catalog[f"d_{hub}min"][order].m_as("mm")
         hi = selection.catalog[f"d_{hub}max"][order].m_as("mm")
         known = ~(np.isnan(lo) | np.isnan(hi))
-        ax.barh(base[known] + offset, (hi - lo)[known], left=lo[known], height=0.3, color=color, alpha=0.55, label=f"hub {hub} bore range")
+        ax.barh(base[known] + offset, (hi - lo)[known], left=lo[known], height=0.3, color=color, alpha=0.55,
+                label=f"hub {hub} bore range")
         d = bore.nominal.m_as("mm")
         ax.axvline(d, color=color, linewidth=2, label=f"D{hub} = {bore.text}")
         for yy in (base + offset)[~known]:

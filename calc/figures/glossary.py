@@ -33,7 +33,8 @@ SOURCE_SYMBOLS = (
     ("fs", "-", "Shock Factor", "f_s", "–", "table against Z_h, the higher factor at a boundary (E4)"),
     ("i", "-", "Ratio", "i", "–", ""),
     ("J", "kg-cm ²", "Moment of Inertia", "J", "kg·cm²", "kg·cm² in catalogs (E14)"),
-    ("n", "RPM", "Speed", "n", "rpm", "a speed carries its angle: 300 rpm is 5 revolutions per second, not 31.4 Hz (E15)"),
+    ("n", "RPM", "Speed", "n", "rpm",
+     "a speed carries its angle: 300 rpm is 5 revolutions per second, not 31.4 Hz (E15)"),
     ("t", "s", "Time", "t", "s", ""),
     ("T", "Nm", "Torque", "T", "N·m", ""),
     ("Zh", "-", "Number of Cycles", "Z_h", "1/h", "cycles per hour, Z_h = 3600 s / t_cycle"),
@@ -124,6 +125,7 @@ def symbols_table(formulas=None):
             )
             if f.name not in row["formulas"]:
                 row["formulas"].append(f.name)
-    table = pd.DataFrame(list(rows.values()), columns=["symbol", "LaTeX", "description", "unit", "kind", "per segment", "formulas"])
+    table = pd.DataFrame(list(rows.values()),
+                         columns=["symbol", "LaTeX", "description", "unit", "kind", "per segment", "formulas"])
     table["formulas"] = table["formulas"].map(", ".join)
     return table
