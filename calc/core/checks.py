@@ -27,6 +27,18 @@ def within_rating(utilization):
     1 is 1 (300 rpm · 10 comes back from rad/s as 3000.0000000000005 rpm, which meets 3000 rpm).
     NaN compares false: no rating, no pass.
 
+    Parameters
+    ----------
+    utilization : float or numpy.ndarray [1]
+        Required over rated value.
+
+    Returns
+    -------
+    bool or numpy.ndarray of bool
+        Whether each passes.
+
+    Examples
+    --------
     >>> within_rating(np.array([0.5, 1.0 + 1e-12, 1.001, np.nan])).tolist()
     [True, True, False, False]
     """
@@ -40,6 +52,31 @@ class Check:
     ``passes`` is None when the check could not be made; ``not_made`` then says which input it
     needs. ``governs`` says whether the check decides the verdict (the other mode's checks are
     reported for information, E3).
+
+    Parameters
+    ----------
+    name : str
+        The rated value's symbol (``"T_2B"``).
+    criterion : str
+        The check as text (``"T_2max <= T_2B"``).
+    required : pint.Quantity [unit] or None
+        The required value, scalar; None when the check is not made.
+    rated : pint.Quantity [unit]
+        The rated value, scalar (NaN where the catalog gives none).
+    unit : str
+        The unit both are shown in.
+    utilization : float or None
+        Required over rated [1]; None where it cannot be computed.
+    passes : bool or None
+        The verdict; None when the check could not be made.
+    governs : bool
+        Whether it decides the verdict; default True.
+    mode : str or None
+        The operating mode it belongs to (``"S1"``, ``"S5"``), None for both.
+    not_made : str or None
+        What the check needs that the case does not give.
+    at_least : bool
+        The required value is a lower bound: a term of it is unknown.
     """
 
     name: str
@@ -65,7 +102,13 @@ class Check:
         return Value.of(self.rated, self.unit, self.name)
 
     def reason(self) -> str:
-        """Why the check does not pass: its excess, or what it needs."""
+        """Why the check does not pass: its excess, or what it needs.
+
+        Returns
+        -------
+        str
+            ``criterion: required … > rated …, N % over``, or ``criterion: not checked, …``.
+        """
         if self.not_made is not None:
             return f"{self.criterion}: not checked, {self.not_made}"
         if self.utilization is None:
@@ -79,7 +122,29 @@ class Check:
 @dataclass(frozen=True)
 class CheckArray:
     """One criterion over all candidates: required and rated values as quantity arrays, and the
-    unit both are shown in."""
+    unit both are shown in.
+
+    Parameters
+    ----------
+    name : str
+        The rated value's symbol (``"T_2B"``).
+    mode : str or None
+        The operating mode it belongs to (``"S1"``, ``"S5"``), None for both.
+    text : str
+        The check as text (``"T_2max <= T_2B"``).
+    required : pint.Quantity [unit] or None
+        Required values over the rows; None when the check cannot be made (see ``not_made``).
+    rated : pint.Quantity [unit]
+        Rated values over the rows (NaN where the catalog gives none).
+    unit : str
+        The unit both are shown in.
+    not_made : str, optional
+        What the check needs that the case does not give (keyword only).
+    unrated : str, optional
+        For a check whose rating a catalog may leave out (a bearing's force): what is missing; a row
+        without the rating is then not checked and does not fail. None: such a row fails (keyword
+        only).
+    """
 
     name: str
     mode: str
@@ -126,7 +191,20 @@ class CheckArray:
         return np.where(self.unrated_rows, 0.0, self.utilization)
 
     def at(self, row: int, governs: bool = True) -> Check:
-        """This check for one row."""
+        """This check for one row.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+        governs : bool
+            Whether it decides the row's verdict; default True.
+
+        Returns
+        -------
+        Check
+            The row's required and rated value, utilization and verdict.
+        """
         u = float(self.utilization[row])
         unrated = self.made and bool(self.unrated_rows[row])
         return Check(
@@ -144,7 +222,18 @@ class CheckArray:
 
     def reason(self, row: int) -> str:
         """Why the row does not pass this check: by how much the required value exceeds the
-        rated one, or what the check needs."""
+        rated one, or what the check needs.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        str
+            The reason as a line of text.
+        """
         return self.at(row).reason()
 
 
@@ -162,7 +251,26 @@ def rank(passes, size, worst_utilization, parts, later=None) -> np.ndarray:
     """Indices best first: passing first, and among them the rows not marked ``later`` (an
     illustrative row; a gearbox whose drive train is not shown to clear the excitation) before the
     others, then smallest size and larger margin; failing rows after, closest to passing first (the
-    rule of :mod:`calc.domain.gearbox`)."""
+    rule of :mod:`calc.domain.gearbox`).
+
+    Parameters
+    ----------
+    passes : numpy.ndarray of bool
+        Each row's verdict.
+    size : numpy.ndarray of float
+        Each row's size measure (a rated torque's magnitude, smaller first).
+    worst_utilization : numpy.ndarray of float [1]
+        Each row's highest utilization (NaN ranks last).
+    parts : numpy.ndarray of str
+        The part names, which break ties.
+    later : numpy.ndarray of bool, optional
+        Passing rows shown after the other passing ones.
+
+    Returns
+    -------
+    numpy.ndarray of int
+        Row indices, best first.
+    """
     passes = np.asarray(passes, bool)
     worst = np.where(np.isnan(worst_utilization), np.inf, _significant(worst_utilization))
     size_key = np.where(passes, _significant(size), 0.0)
@@ -181,7 +289,22 @@ def rank(passes, size, worst_utilization, parts, later=None) -> np.ndarray:
 
 
 def selected_part(parts, passes, order) -> str | None:
-    """The best-ranked part if it passes, else None."""
+    """The best-ranked part if it passes, else None.
+
+    Parameters
+    ----------
+    parts : numpy.ndarray of str
+        The part names.
+    passes : numpy.ndarray of bool
+        Each row's verdict.
+    order : numpy.ndarray of int
+        Row indices, best first (:func:`rank`).
+
+    Returns
+    -------
+    str or None
+        The chosen part.
+    """
     if len(order) and passes[order[0]]:
         return str(parts[order[0]])
     return None

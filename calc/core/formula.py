@@ -45,6 +45,23 @@ class Symbol:
     A symbol with a ``value`` (such as ``"1 rad"``) is a constant of the formula: callers do not
     pass it, the formula supplies it. It makes a unit convention explicit where strict angle
     bookkeeping needs one (errata E15), and is shown in the expression and its substitution.
+
+    Parameters
+    ----------
+    name : str
+        Its name in code, as the source document writes it (``"T_2max"``).
+    latex : str
+        Its LaTeX (``"T_{2max}"``).
+    kind : str
+        Its kind (:data:`calc.core.units.KINDS`: ``"torque"``).
+    unit : str
+        The unit it is shown in (``"N*m"``; empty for a bare number).
+    description : str
+        What it is, in words.
+    per_segment : bool
+        One value per segment of the profile (an array summed by :func:`segment_sum`); default False.
+    value : str, optional
+        The constant's value as text (``"1 rad"``); None for an input.
     """
 
     name: str
@@ -60,7 +77,8 @@ class Symbol:
 #: law of rotation reads J·α = T·rad: a torque of 1 N·m accelerates 1 kg·m² at 1 rad/s². So a
 #: spring rate in N·m/rad over an inertia gives 1/s² only after that factor; pint, which drops
 #: angles, computes the same number.
-RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad with angles as a dimension, E15)", value="1 rad")
+RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad with angles as a dimension, E15)",
+                value="1 rad")
 
 
 @functools.cache
@@ -97,7 +115,18 @@ def _sympy() -> SimpleNamespace:
 
 
 def segment_sum(x):
-    """Σ over the profile's segments k (for use inside a formula's builder)."""
+    """Σ over the profile's segments k (for use inside a formula's builder).
+
+    Parameters
+    ----------
+    x : sympy.Expr
+        The term of segment k.
+
+    Returns
+    -------
+    sympy.Expr
+        The sum, kept unevaluated so it prints as Σ and evaluates over the last axis.
+    """
     return _sympy().SegmentSum(x)
 
 
@@ -150,7 +179,13 @@ class Formula:
         return {sym: s.latex for sym, s in zip(self._symbols, self.inputs)}
 
     def latex(self) -> str:
-        """``lhs = rhs`` in LaTeX."""
+        """``lhs = rhs`` in LaTeX.
+
+        Returns
+        -------
+        str
+            The formula as LaTeX math.
+        """
         return f"{self.result.latex} = {self._latex(self.expr)}"
 
     def _latex(self, expr) -> str:
@@ -187,19 +222,37 @@ class Formula:
         return function if fingerprint == self.fingerprint else self.lambdified()
 
     def lambdified(self) -> Callable:
-        """The right-hand side turned into a numpy function by sympy's ``lambdify``."""
+        """The right-hand side turned into a numpy function by sympy's ``lambdify``.
+
+        Returns
+        -------
+        callable
+            A function of the inputs' SI magnitudes, in the order of :attr:`inputs`.
+        """
         s = _sympy()
         return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": _sum_last_axis}, "numpy"])
 
     def numeric_source(self, name: str) -> str:
-        """The source of :meth:`lambdified` as a function called ``name``."""
+        """The source of :meth:`lambdified` as a function called ``name``.
+
+        Parameters
+        ----------
+        name : str
+            The function's name.
+
+        Returns
+        -------
+        str
+            Python source text.
+        """
         source = inspect.getsource(self.lambdified())
         return source.replace("def _lambdifygenerated(", f"def {name}(", 1)
 
     @functools.cached_property
     def _arguments(self) -> tuple:
         """Per input: the symbol and, for a constant, its SI magnitude."""
-        return tuple((s, None if s.value is None else Q_(s.value).m_as(unit(kind(s.kind).si_unit))) for s in self.inputs)
+        return tuple((s, None if s.value is None else Q_(s.value).m_as(unit(kind(s.kind).si_unit)))
+                     for s in self.inputs)
 
     @functools.cached_property
     def _takes(self) -> tuple:
@@ -221,7 +274,8 @@ class Formula:
             lengths = {self.inputs[k].name: np.shape(args[k])[-1] for k in self._per_segment if np.ndim(args[k])}
             if len(set(lengths.values())) > 1:
                 found = ", ".join(f"{name} {n}" for name, n in lengths.items())
-                raise CalcError(f"{self.name}: expected one value per segment in each per-segment argument, found lengths {found}")
+                raise CalcError(f"{self.name}: expected one value per segment in each per-segment argument, found "
+                                f"lengths {found}")
         return args
 
     @functools.cached_property
@@ -235,46 +289,105 @@ class Formula:
 
     def si(self, **magnitudes):
         """Evaluate on SI magnitudes (floats or arrays) without unit checks, constants supplied:
-        for sampled cycles inside the package, whose inputs were checked once as quantities."""
+        for sampled cycles inside the package, whose inputs were checked once as quantities.
+
+        Parameters
+        ----------
+        **magnitudes : float or numpy.ndarray [SI]
+            Each input by its symbol's name, in its kind's SI unit.
+
+        Returns
+        -------
+        float or numpy.ndarray [SI]
+            The result in its kind's SI unit.
+        """
         return self.numeric(*[magnitudes[s.name] if c is None else c for s, c in self._arguments])
 
     def check_dimensions(self) -> None:
         """Evaluate the expression on quantities of the declared units and check the result's kind.
 
         The check is on dimension and on the power of angle (errata E15), so a formula that
-        loses or gains an angle fails. Raises :class:`CalcError` on a mismatch.
+        loses or gains an angle fails.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        CalcError
+            On a mismatch, naming the formula, the unit found and the kind expected.
         """
         args = []
         for k, s in enumerate(self.inputs):
             unit = kind(s.kind).si_unit
             # A distinct value per input, so a difference of two inputs is never zero.
             args.append(Q_(np.array([1.0, 2.0]) if s.per_segment else 1.5 + 0.1 * k, unit))
-        with np.errstate(invalid="ignore"):  # only the unit counts: a root of a negative test value is NaN of the right unit
+        # only the unit counts: a root of a negative test value is NaN of the right unit
+        with np.errstate(invalid="ignore"):
             out = self.numeric(*args)
         if not hasattr(out, "units"):
             out = Q_(out, "")
         if not kind(self.result.kind).accepts(out.units):
             raise CalcError(
-                f"{self.name}: the expression gives {out.units:~P}, expected {kind(self.result.kind).name} ({self.result.unit})"
+                f"{self.name}: the expression gives {out.units:~P}, expected {kind(self.result.kind).name} "
+                f"({self.result.unit})"
             )
 
     def documentation(self) -> str:
-        """A numpydoc text of the formula: what it gives, its equation, its symbols, its source."""
+        """A numpydoc text of the formula: what it gives, its equation, its symbols, its source.
+
+        Returns
+        -------
+        str
+            Summary, ``.. math::``, Parameters and References.
+        """
         r = self.result
-        lines = [f"{r.name}: {r.description} [{pretty_unit(r.unit) or '-'}]", "", f".. math:: {self.latex()}", "", "Parameters", "----------"]
+        lines = [f"{r.name}: {r.description} [{pretty_unit(r.unit) or '-'}]", "", f".. math:: {self.latex()}", "",
+                 "Parameters", "----------"]
         for s in self.inputs:
-            lines += [f"{s.name} : {s.kind} [{pretty_unit(s.unit) or '-'}]{', per segment' if s.per_segment else ''}", f"    {s.description}"]
+            lines += [f"{s.name} : {s.kind} [{pretty_unit(s.unit) or '-'}]{', per segment' if s.per_segment else ''}",
+                      f"    {s.description}"]
         lines += ["", "References", "----------", self.reference]
         return "\n".join(lines)
 
     def step(self, result=None, **values) -> "Step":
-        """Evaluate (unless ``result`` is given) and return the displayable step."""
+        """Evaluate (unless ``result`` is given) and return the displayable step.
+
+        Parameters
+        ----------
+        result : pint.Quantity [the result's unit], optional
+            The result when already computed.
+        **values : pint.Quantity [each symbol's unit]
+            Each input by its symbol's name.
+
+        Returns
+        -------
+        Step
+            The formula with its values and result.
+        """
         if result is None:
             result = self(**values)
         return Step(self, values, result)
 
     def substituted_latex(self, values: dict) -> str:
-        """The right-hand side with each symbol replaced by its value and unit."""
+        """The right-hand side with each symbol replaced by its value and unit.
+
+        Parameters
+        ----------
+        values : dict
+            Each input by its symbol's name, a quantity (an array for a per-segment input).
+
+        Returns
+        -------
+        str
+            The expression as LaTeX with the numbers in it.
+
+        Raises
+        ------
+        CalcError
+            When the per-segment arguments differ in length.
+        """
         s = _sympy()
         expr = self.expr
         values = {**{c.name: Q_(c.value) for c in self.inputs if c.value is not None}, **values}
@@ -288,7 +401,8 @@ class Formula:
             def expand(node):
                 terms = []
                 for k in range(count):
-                    repl = {sym: _value(s, values[spec.name][k], spec, f"{spec.name}_{k}") for sym, spec in segment_syms.items()}
+                    repl = {sym: _value(s, values[spec.name][k], spec, f"{spec.name}_{k}")
+                            for sym, spec in segment_syms.items()}
                     terms.append(node.args[0].xreplace(repl))
                 return s.sp.Add(*terms, evaluate=False)
 
@@ -320,7 +434,8 @@ def _builder_parts(build: Callable) -> list:
     values of the plain constants it reads from its module."""
     names = sorted(global_names(build.__code__))
     namespace = build.__globals__
-    return [_body_text(build), [repr(namespace[n]) for n in names if isinstance(namespace.get(n), (bool, int, float, str, tuple, dict))]]
+    return [_body_text(build),
+            [repr(namespace[n]) for n in names if isinstance(namespace.get(n), (bool, int, float, str, tuple, dict))]]
 
 
 def _body_text(build: Callable) -> str:
@@ -344,7 +459,18 @@ def _body_text(build: Callable) -> str:
 
 
 def global_names(code: CodeType) -> set[str]:
-    """The global names a function's code reads, nested code included."""
+    """The global names a function's code reads, nested code included.
+
+    Parameters
+    ----------
+    code : types.CodeType
+        A function's code object.
+
+    Returns
+    -------
+    set of str
+        The names.
+    """
     names = set(code.co_names)
     for const in code.co_consts:
         if isinstance(const, CodeType):
@@ -364,7 +490,17 @@ def _value(s, q, spec: Symbol, key: str):
 
 @dataclass(repr=False)
 class Step:
-    """One evaluated formula: what a notebook or report shows as a line of the calculation."""
+    """One evaluated formula: what a notebook or report shows as a line of the calculation.
+
+    Parameters
+    ----------
+    formula : Formula
+        The formula.
+    values : dict
+        Its inputs by symbol name, as quantities.
+    result : pint.Quantity [the result's unit]
+        Its result.
+    """
 
     formula: Formula
     values: dict
@@ -375,13 +511,27 @@ class Step:
         return fmt(self.result, self.formula.result.unit)
 
     def parts(self) -> tuple[str, str, str, str]:
-        """The step's four sides in LaTeX: symbol, expression, substituted values, result."""
+        """The step's four sides in LaTeX: symbol, expression, substituted values, result.
+
+        Returns
+        -------
+        tuple of str
+            ``(symbol, expression, substituted, result)``.
+        """
         f = self.formula
         number = sig(self.result.m_as(f.result.unit))
         unit = latex_unit(f.result.unit)
-        return f.result.latex, f._latex(f.expr), f.substituted_latex(self.values), number + (rf"\,{unit}" if unit else "")
+        result = number + (rf"\,{unit}" if unit else "")
+        return f.result.latex, f._latex(f.expr), f.substituted_latex(self.values), result
 
     def latex(self) -> str:
+        """The step as one LaTeX equation, its four sides joined by ``=``.
+
+        Returns
+        -------
+        str
+            ``symbol = expression = substituted = result``.
+        """
         return " = ".join(self.parts())
 
     def _repr_latex_(self):

@@ -361,7 +361,7 @@ FUNCTIONS = {
     "calc.domain.motor.P_1": ("be4c0de4e25e2bae", motor__P_1),
     "calc.domain.motor.W_regen": ("39af690bbe817330", motor__W_regen),
     "calc.domain.motor_ratings.T_peak_line": ("f011ced4e1a656a4", motor_ratings__T_peak_line),
-    "calc.domain.motor_ratings.T_V": ("c3e5f4ec424088bb", motor_ratings__T_V),
+    "calc.domain.motor_ratings.T_V": ("69c1cad934633bf9", motor_ratings__T_V),
     "calc.domain.profile.ED": ("2103e372a6f8efab", profile__ED),
     "calc.domain.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
     "calc.domain.profile.T_2m": ("7f4431ae67c9b21f", profile__T_2m),

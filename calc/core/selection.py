@@ -19,7 +19,31 @@ from .checks import selected_part
 
 @dataclass(kw_only=True)
 class Candidate:
-    """One catalog row with its checks (:class:`calc.core.checks.Check`), as every output lists it."""
+    """One catalog row with its checks (:class:`calc.core.checks.Check`), as every output lists it.
+
+    Parameters
+    ----------
+    part : str
+        The row's part name.
+    passes : bool or None
+        Its verdict; None where every governing check made passes but one could not be made.
+    checks : list of Check
+        Its checks.
+    reasons : list of str
+        Why the row does not pass: each failing check, each check not made.
+    illustrative : bool
+        An illustrative row (not from a maker's published table).
+    catalog : str
+        The file of the row.
+    family : str
+        The row's family (series).
+    size : str
+        The row's size.
+    source : str
+        Where its figures come from.
+    unclear : str
+        The row's doubtful figures, as its catalog says.
+    """
 
     part: str
     passes: bool | None  # None: every governing check made passes, but one could not be made
@@ -52,11 +76,35 @@ class Selection:
     candidate_type = Candidate
 
     def governs(self, check) -> bool:
-        """Whether a check decides the verdict; all do, unless the selection type says otherwise."""
+        """Whether a check decides the verdict; all do, unless the selection type says otherwise.
+
+        Parameters
+        ----------
+        check : CheckArray
+            One of the selection's checks.
+
+        Returns
+        -------
+        bool
+            True for a governing check.
+        """
         return True
 
     def applies(self, check, row: int) -> bool:
-        """Whether a check applies to a row; all do, unless the selection type says otherwise."""
+        """Whether a check applies to a row; all do, unless the selection type says otherwise.
+
+        Parameters
+        ----------
+        check : CheckArray
+            One of the selection's checks.
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        bool
+            True where the check is made for the row.
+        """
         return True
 
     @property
@@ -74,17 +122,50 @@ class Selection:
         return None if self.not_made else selected_part(self.catalog.parts, self.passes, self.order)
 
     def decided(self, row: int) -> bool | None:
-        """Whether a row passes: None where every check made passes but one could not be made."""
+        """Whether a row passes: None where every check made passes but one could not be made.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        bool or None
+            The row's verdict.
+        """
         passes = bool(self.passes[row])
         return None if passes and self.not_made else passes
 
     def reasons(self, row: int) -> list[str]:
         """Why a row does not pass: each governing check it fails, with the excess, and each that
-        could not be made."""
+        could not be made.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        list of str
+            One line per check (empty for a pass).
+        """
         return [c.reason(row) for c in self.governing if self.applies(c, row) and (not c.made or not c.passes[row])]
 
     def row_fields(self, row: int) -> dict:
-        """What the selection type's record of a row holds besides :class:`Candidate`'s fields."""
+        """What the selection type's record of a row holds besides :class:`Candidate`'s fields.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        dict
+            Field name to value (none here).
+        """
         return {}
 
     def _texts(self) -> tuple:
@@ -92,7 +173,20 @@ class Selection:
         return cat.family, cat.text_or_blank("size"), cat.text_or_blank("source"), cat.text_or_blank("unclear")
 
     def candidate(self, row: int, texts: tuple | None = None) -> Candidate:
-        """One row as its record (``texts``: the family, size, source and doubt columns, when at hand)."""
+        """One row as its record.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+        texts : tuple, optional
+            The family, size, source and doubt columns, when at hand (read from the catalog otherwise).
+
+        Returns
+        -------
+        Candidate
+            Of the selection type's :attr:`candidate_type`.
+        """
         family, size, source, unclear = texts or self._texts()
         return self.candidate_type(
             part=str(self.catalog.parts[row]),
@@ -109,7 +203,18 @@ class Selection:
         )
 
     def candidates(self, limit: int | None = None) -> list[Candidate]:
-        """The rows as records, best first; the first ``limit`` (all for None)."""
+        """The rows as records, best first.
+
+        Parameters
+        ----------
+        limit : int, optional
+            How many to give; all for None.
+
+        Returns
+        -------
+        list of Candidate
+            The first ``limit`` rows in ranking order.
+        """
         texts = self._texts()
         return [self.candidate(row, texts) for row in (self.order if limit is None else self.order[:limit])]
 

@@ -41,7 +41,18 @@ Q_ = ureg.Quantity
 
 @functools.cache
 def unit(text: str) -> pint.Unit:
-    """The registry's unit for one of the package's unit strings (``"N*m"``), parsed once."""
+    """The registry's unit for one of the package's unit strings (``"N*m"``), parsed once.
+
+    Parameters
+    ----------
+    text : str
+        A unit as the package writes it (``"kg*cm**2"``).
+
+    Returns
+    -------
+    pint.Unit
+        The unit of the package's one registry.
+    """
     return ureg.Unit(text)
 
 #: A number and the unit text after it, as case files and catalogs write a quantity.
@@ -51,7 +62,21 @@ NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*
 @dataclass(frozen=True)
 class Kind:
     """What an input must be: a dimensionality, the power of angle its unit carries, a unit to
-    compute in (coherent SI, angles in radians) and an example for error messages."""
+    compute in (coherent SI, angles in radians) and an example for error messages.
+
+    Parameters
+    ----------
+    name : str
+        The kind's name (``"torque"``), as the checks name it.
+    dimensionality : str
+        Its pint dimensionality (``"[mass] * [length] ** 2 / [time] ** 2"``).
+    angle : int
+        The power of angle its unit carries (1 for a speed in rpm, -1 for a stiffness per arcmin).
+    si_unit : str
+        The unit to compute in: coherent SI, angles in radians (empty for a bare number).
+    example : str
+        A value of the kind for error messages (``"12 N*m"``).
+    """
 
     name: str
     dimensionality: str
@@ -60,6 +85,18 @@ class Kind:
     example: str
 
     def accepts(self, units) -> bool:
+        """Whether a unit measures this kind: the same dimensionality and power of angle.
+
+        Parameters
+        ----------
+        units : pint.Unit or str
+            The unit to check.
+
+        Returns
+        -------
+        bool
+            True when a quantity in ``units`` is of this kind.
+        """
         return _signature(_container(units)) == _signature(_container(self.si_unit))
 
 
@@ -82,6 +119,16 @@ def angle_power(units) -> float:
 
     Not rounded: the square root of a stiffness over an inertia carries rad^-1/2, which is no
     frequency (E15).
+
+    Parameters
+    ----------
+    units : pint.Unit or str
+        The unit.
+
+    Returns
+    -------
+    float
+        The exponent of the radian in the unit's root units [1].
     """
     _, root = ureg.get_root_units(units)
     return float(root._units.get("radian", 0))
@@ -123,11 +170,34 @@ KINDS: dict[str, Kind] = {
 
 
 def kind(name: str | Kind) -> Kind:
+    """The kind of a name (``"torque"``), or the kind itself.
+
+    Parameters
+    ----------
+    name : str or Kind
+        A kind's name, or a kind.
+
+    Returns
+    -------
+    Kind
+        The package's kind of that name.
+    """
     return name if isinstance(name, Kind) else KINDS[name]
 
 
 def describe_units(units) -> str:
-    """Name what a unit measures, for error messages ("a torque", "a bare number", ...)."""
+    """Name what a unit measures, for error messages ("a torque", "a bare number", ...).
+
+    Parameters
+    ----------
+    units : pint.Unit or str
+        The unit.
+
+    Returns
+    -------
+    str
+        The kind it measures with its article, or its dimensionality where no kind has it.
+    """
     if units == ureg.dimensionless or str(units) == "":
         return "a bare number"
     for k in KINDS.values():
@@ -141,7 +211,18 @@ def _article(word: str) -> str:
 
 
 def kind_phrase(expected: str | Kind) -> str:
-    """A kind as a phrase of an error message: ``"a torque"``, ``"an inertia"``."""
+    """A kind as a phrase of an error message: ``"a torque"``, ``"an inertia"``.
+
+    Parameters
+    ----------
+    expected : str or Kind
+        The kind, or its name.
+
+    Returns
+    -------
+    str
+        Its name with the article.
+    """
     name = kind(expected).name
     return f"{_article(name)} {name}"
 
@@ -162,7 +243,8 @@ def _in_scale(quantity: pint.Quantity, where: str, found) -> pint.Quantity:
         raise CalcError(f"{where}: expected a finite number, found {found!r}")
     if si != 0 and not low <= si <= high:
         raise CalcError(
-            f"{where}: expected a magnitude between {low:g} and {high:g} in SI units ({quantity.to_base_units().units:~P}), "
+            f"{where}: expected a magnitude between {low:g} and {high:g} in SI units "
+            f"({quantity.to_base_units().units:~P}), "
             f"found {found!r}, which is {si:.3g}"
         )
     return quantity
@@ -174,6 +256,26 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
     The number and the unit are split by a regular expression and the unit is parsed by the
     registry's own unit parser; nothing is evaluated as code. Offset units (``"60 degC"``) are
     built as a quantity of that temperature, not multiplied.
+
+    Parameters
+    ----------
+    text : str or number
+        The value as written (a bare number only for a dimensionless kind).
+    expected : str or Kind
+        The kind it must be.
+    where : str
+        The file and key, for error messages.
+
+    Returns
+    -------
+    pint.Quantity [the unit written]
+        The value in the unit it was written in.
+
+    Raises
+    ------
+    CalcError
+        For text that is no number with a unit, an unknown unit or a unit of another kind, naming
+        ``where``.
     """
     k = kind(expected)
     if isinstance(text, bool):
@@ -182,7 +284,8 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
         if k.name == "dimensionless":
             return _in_scale(ureg.Quantity(float(text), ""), where, text)
         raise CalcError(
-            f"{where}: expected {_article(k.name)} {k.name} with its unit such as {k.example}, found the bare number {text!r}"
+            f"{where}: expected {_article(k.name)} {k.name} with its unit such as {k.example}, found the bare number "
+            f"{text!r}"
         )
     if not isinstance(text, str):
         raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {text!r}")
@@ -193,7 +296,8 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
     try:
         units = ureg.parse_units(unit_text) if unit_text else ureg.dimensionless
     except Exception as exc:  # pint's parser raises many types for malformed text, AssertionError among them
-        raise CalcError(f"{where}: the unit {unit_text!r} in {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
+        raise CalcError(f"{where}: the unit {unit_text!r} in {text!r} is not one the unit registry knows "
+                        f"({type(exc).__name__})") from None
     quantity = ureg.Quantity(float(number), units)
     return _in_scale(as_kind(quantity, k, where, found=text), where, text)
 
@@ -203,13 +307,31 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
 
     A bare number is accepted only for dimensionless kinds; anything else raises
     :class:`CalcError` naming ``where``.
+
+    Parameters
+    ----------
+    value : pint.Quantity [any unit] or number
+        The value to check.
+    expected : str or Kind
+        The kind it must be.
+    where : str
+        The argument or key, for error messages.
+    found : str, optional
+        What the message says was found, in place of the value itself.
+
+    Returns
+    -------
+    pint.Quantity [the unit given]
+        ``value`` (a bare number as a dimensionless quantity).
     """
     k = kind(expected)
     if not isinstance(value, pint.Quantity):
-        if k.name == "dimensionless" and isinstance(value, (int, float, np.ndarray, np.number)) and not isinstance(value, bool):
+        bare = isinstance(value, (int, float, np.ndarray, np.number)) and not isinstance(value, bool)
+        if k.name == "dimensionless" and bare:
             return ureg.Quantity(np.asarray(value, dtype=float) if isinstance(value, np.ndarray) else float(value), "")
         raise CalcError(
-            f"{where}: expected {_article(k.name)} {k.name} as a quantity with a unit such as {k.example}, found {type(value).__name__} {value!r}"
+            f"{where}: expected {_article(k.name)} {k.name} as a quantity with a unit such as {k.example}, found "
+            f"{type(value).__name__} {value!r}"
         )
     if value._REGISTRY is not ureg:
         raise CalcError(f"{where}: the quantity {value} was made with another unit registry; use calc.ureg or calc.Q_")
@@ -217,9 +339,11 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
         shown = found if found is not None else f"{value:~P}"
         what = describe_units(value.units)
         hint = ""
-        if k.angle and angle_power(value.units) != k.angle and value.dimensionality == ureg.Quantity(1, k.si_unit).dimensionality:
+        same_dimension = value.dimensionality == ureg.Quantity(1, k.si_unit).dimensionality
+        if k.angle and angle_power(value.units) != k.angle and same_dimension:
             hint = " (its unit must carry the angle, errata E15)"
-        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {shown!r}, which is {what}{hint}")
+        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {shown!r}, which is "
+                        f"{what}{hint}")
     return value
 
 
@@ -229,6 +353,22 @@ def to_si(value, expected: str | Kind, where: str):
     The check of :func:`as_kind` and pint's conversion (the magnitude times pint's factor), with
     the factor looked up once per unit.
 
+    Parameters
+    ----------
+    value : pint.Quantity [any unit]
+        The quantity, scalar or array.
+    expected : str or Kind
+        The kind it must be.
+    where : str
+        The argument or key, for error messages.
+
+    Returns
+    -------
+    float or numpy.ndarray [the kind's SI unit]
+        Its magnitude in the kind's SI unit (radians for angles).
+
+    Examples
+    --------
     >>> to_si(Q_(300, "rpm"), "speed", "n"), to_si(Q_(2, "kg*m**2"), "inertia", "J")
     (31.41592653589793, 2)
     """
@@ -241,6 +381,20 @@ def to_si(value, expected: str | Kind, where: str):
 def magnitude_in(q: pint.Quantity, unit_text: str):
     """``q.m_as(unit_text)`` with pint's conversion factor looked up once per pair of units.
 
+    Parameters
+    ----------
+    q : pint.Quantity [any unit]
+        The quantity, scalar or array.
+    unit_text : str
+        The unit wanted (``"rev/s"``).
+
+    Returns
+    -------
+    float or numpy.ndarray [unit_text]
+        Its magnitude in ``unit_text``.
+
+    Examples
+    --------
     >>> magnitude_in(Q_(3000, "rpm"), "rev/s")
     50.0
     """
@@ -253,6 +407,22 @@ def magnitude_in(q: pint.Quantity, unit_text: str):
 def from_si(magnitude, expected: str | Kind, unit_text: str) -> pint.Quantity:
     """A magnitude in the kind's SI unit as a quantity in ``unit_text``, converted as pint does.
 
+    Parameters
+    ----------
+    magnitude : float or numpy.ndarray [the kind's SI unit]
+        The value in the kind's SI unit.
+    expected : str or Kind
+        Its kind.
+    unit_text : str
+        The unit wanted.
+
+    Returns
+    -------
+    pint.Quantity [unit_text]
+        The value in ``unit_text``.
+
+    Examples
+    --------
     >>> from_si(31.41592653589793, "speed", "rpm")
     <Quantity(300.0, 'revolutions_per_minute')>
     """
@@ -280,6 +450,18 @@ def revolutions_per_second(speed) -> pint.Quantity:
     pint would turn 300 rpm into 31.4 Hz (it treats Hz as rad/s); a shaft at 300 rpm turns
     five times a second.
 
+    Parameters
+    ----------
+    speed : pint.Quantity [rpm]
+        The shaft's speed.
+
+    Returns
+    -------
+    pint.Quantity [Hz]
+        Revolutions per second.
+
+    Examples
+    --------
     >>> revolutions_per_second(Q_(300, "rpm"))
     <Quantity(5.0, 'hertz')>
     """
@@ -288,13 +470,42 @@ def revolutions_per_second(speed) -> pint.Quantity:
 
 
 def fmt(q, unit: str, digits: int = 4) -> str:
-    """Format a scalar quantity in ``unit`` with ``digits`` significant figures (``21.33 N·m``)."""
+    """Format a scalar quantity in ``unit`` with ``digits`` significant figures (``21.33 N·m``).
+
+    Parameters
+    ----------
+    q : pint.Quantity [any unit]
+        A scalar quantity.
+    unit : str
+        The unit to show it in (``"N*m"``).
+    digits : int
+        Significant figures; default 4.
+
+    Returns
+    -------
+    str
+        The number (:func:`sig`) and the unit as a reader writes it (:func:`pretty_unit`).
+    """
     return f"{sig(q.m_as(unit), digits)} {pretty_unit(unit)}".rstrip()
 
 
 def sig(x: float, digits: int = 4) -> str:
     """A number to ``digits`` significant figures, trailing zeros dropped (``0.2``, ``35.41``).
 
+    Parameters
+    ----------
+    x : float
+        The number.
+    digits : int
+        Significant figures; default 4.
+
+    Returns
+    -------
+    str
+        The number as text (in exponent form where it is very small or large).
+
+    Examples
+    --------
     >>> sig(35.40764), sig(0.2), sig(2400.0), sig(1.5e-7)
     ('35.41', '0.2', '2400', '1.500e-07')
     """
@@ -312,7 +523,18 @@ _PRETTY = {"**2": "²", "**3": "³", "**-1": "⁻¹", "*": "·", "percent": "%",
 
 
 def pretty_unit(unit: str) -> str:
-    """Our own unit strings as a reader writes them: ``kg*cm**2`` → ``kg·cm²``."""
+    """Our own unit strings as a reader writes them: ``kg*cm**2`` → ``kg·cm²``.
+
+    Parameters
+    ----------
+    unit : str
+        A unit as the package writes it.
+
+    Returns
+    -------
+    str
+        The unit with middle dots and superscripts.
+    """
     out = unit
     for a, b in _PRETTY.items():
         out = out.replace(a, b)
@@ -320,7 +542,18 @@ def pretty_unit(unit: str) -> str:
 
 
 def latex_unit(unit: str) -> str:
-    """Our own unit strings in LaTeX: ``N*m/arcmin`` → ``\\mathrm{N\\,m/arcmin}``."""
+    r"""Our own unit strings in LaTeX: ``N*m/arcmin`` → ``\mathrm{N\,m/arcmin}``.
+
+    Parameters
+    ----------
+    unit : str
+        A unit as the package writes it.
+
+    Returns
+    -------
+    str
+        The unit as LaTeX math.
+    """
     if not unit:
         return ""
     body = unit.replace("percent", r"\%").replace("degC", r"^{\circ}C")
@@ -330,29 +563,73 @@ def latex_unit(unit: str) -> str:
 
 def number(x, key: str = "result") -> float | None:
     """A result as a plain float; NaN (no value) becomes None, infinity is an error naming the
-    result (no output holds one)."""
+    result (no output holds one).
+
+    Parameters
+    ----------
+    x : float
+        The result's magnitude.
+    key : str
+        The result's name, for the error message; default ``"result"``.
+
+    Returns
+    -------
+    float or None
+        ``x``, or None for NaN.
+    """
     x = float(x)
     if math.isnan(x):
         return None
     if math.isinf(x):
-        raise CalcError(f"{key}: the calculation overflows (found {x}); check the inputs it comes from for values out of scale")
+        raise CalcError(f"{key}: the calculation overflows (found {x}); check the inputs it comes from for values out "
+                        "of scale")
     return x
 
 
 @dataclass(frozen=True)
 class Value:
     """A scalar result as every output prints it: its magnitude in the unit it is shown in, None
-    where there is no value. The results hold these; the JSON writes ``{"value", "unit"}``."""
+    where there is no value. The results hold these; the JSON writes ``{"value", "unit"}``.
+
+    Parameters
+    ----------
+    value : float or None
+        The magnitude in ``unit``; None where there is no value.
+    unit : str
+        The unit it is shown in, as the package writes it (``"N*m"``).
+    """
 
     value: float | None
     unit: str
 
     @classmethod
     def of(cls, q, unit_text: str, key: str = "result") -> "Value":
-        """A scalar quantity in ``unit_text`` (NaN: no value; infinity: an error naming ``key``)."""
+        """A scalar quantity in ``unit_text`` (NaN: no value; infinity: an error naming ``key``).
+
+        Parameters
+        ----------
+        q : pint.Quantity [any unit]
+            A scalar quantity.
+        unit_text : str
+            The unit to show it in.
+        key : str
+            The result's name, for the error message; default ``"result"``.
+
+        Returns
+        -------
+        Value
+            Its magnitude in ``unit_text``.
+        """
         return cls(number(magnitude_in(q, unit_text), key), unit_text)
 
     def to_json(self) -> dict:
+        """The value as the JSON output writes it.
+
+        Returns
+        -------
+        dict
+            ``{"value": float or None, "unit": str}``.
+        """
         return {"value": self.value, "unit": self.unit}
 
     @property

@@ -84,12 +84,15 @@ class BandTable:
 
     def __post_init__(self):
         if self.at_boundary not in AT_BOUNDARY:
-            raise CalcError(f"{self.source}: expected at_boundary to be one of {', '.join(AT_BOUNDARY)}, found {self.at_boundary!r}")
+            raise CalcError(f"{self.source}: expected at_boundary to be one of {', '.join(AT_BOUNDARY)}, found "
+                            f"{self.at_boundary!r}")
         lower = np.asarray(self.lower, dtype=float)
         if lower.ndim != 1 or len(lower) == 0 or len(self.values) != len(lower):
-            raise CalcError(f"{self.source}: expected one factor per band, found {len(self.values)} factors for {len(lower)} bands")
+            raise CalcError(f"{self.source}: expected one factor per band, found {len(self.values)} factors for "
+                            f"{len(lower)} bands")
         if not (np.all(np.diff(lower) > 0) and self.top > lower[-1]):
-            raise CalcError(f"{self.source}: expected band bounds that rise, found {', '.join(map(sig, lower))} up to {sig(self.top)}")
+            raise CalcError(f"{self.source}: expected band bounds that rise, found {', '.join(map(sig, lower))} up to "
+                            f"{sig(self.top)}")
 
     def __len__(self) -> int:
         """The number of bands."""
@@ -106,34 +109,75 @@ class BandTable:
         return np.asarray(self.values, dtype=float)
 
     def band(self, value, where: str = "value"):
-        """Index of the band of each value (a quantity of :attr:`kind`, scalar or array).
+        """Index of the band of each value.
 
-        Raises :class:`CalcError` naming ``where`` for a value of another kind or outside the
-        table, ``lower[0]`` to ``top``.
+        Parameters
+        ----------
+        value : pint.Quantity [a unit of kind]
+            Scalar or array, of the table's :attr:`kind`.
+        where : str
+            The argument or key, for error messages; default ``"value"``.
+
+        Returns
+        -------
+        int or numpy.ndarray of int
+            The band of each value.
+
+        Raises
+        ------
+        CalcError
+            Naming ``where``, for a value of another kind or outside the table, ``lower[0]`` to ``top``.
         """
         x = as_kind(value, self.kind, where).m_as(self.unit)
         up, down = x + np.abs(x) * BOUNDARY_RTOL, x - np.abs(x) * BOUNDARY_RTOL
         outside = (up < self.bounds[0]) | (down > self.top)
         if np.any(outside):
             bad = np.asarray(x)[outside] if np.ndim(x) else x
-            raise CalcError(f"{where}: expected {self.range_text()} ({self.source}), found {sig(np.ravel(bad)[0])} {pretty_unit(self.unit)}")
+            raise CalcError(f"{where}: expected {self.range_text()} ({self.source}), found {sig(np.ravel(bad)[0])} "
+                            f"{pretty_unit(self.unit)}")
         if self.at_boundary == "higher":
             return np.searchsorted(self.bounds, up, side="right") - 1  # just below a boundary is on it
         return np.searchsorted(self.bounds[1:], down, side="left")  # just above a boundary is on it
 
     def lookup(self, value, where: str = "value"):
-        """The factor of each value (scalar or array), the higher one at a boundary."""
+        """The factor of each value (scalar or array), the higher one at a boundary.
+
+        Parameters
+        ----------
+        value : pint.Quantity [a unit of kind]
+            Scalar or array, of the table's :attr:`kind`.
+        where : str
+            The argument or key, for error messages; default ``"value"``.
+
+        Returns
+        -------
+        float or numpy.ndarray [1]
+            The factor of each value's band.
+        """
         return self.factors[self.band(value, where)]
 
     def text(self, k: int, latex: bool = False) -> str:
-        """Band ``k`` as a reader writes it, ``1500 <= Z_h < 2000 1/h``; with ``latex``, for math
-        mode (``\\le``, ``\\ge``, the unit as text)."""
+        r"""Band ``k`` as a reader writes it, ``1500 <= Z_h < 2000 1/h``.
+
+        Parameters
+        ----------
+        k : int
+            The band.
+        latex : bool
+            For math mode (``\le``, ``\ge``, the unit as text); default False.
+
+        Returns
+        -------
+        str
+            The band's range.
+        """
         le, ge = (r"\le", r"\ge") if latex else ("<=", ">=")
         low, last = self.bounds[k], k + 1 == len(self)
         high = self.top if last else self.bounds[k + 1]
         if self.at_boundary == "lower":  # each band holds its highest value
             if k == 0:
-                band = f"{self.symbol} {le} {sig(high)}" if math.isinf(low) else f"{sig(low)} {le} {self.symbol} {le} {sig(high)}"
+                band = (f"{self.symbol} {le} {sig(high)}" if math.isinf(low)
+                        else f"{sig(low)} {le} {self.symbol} {le} {sig(high)}")
             elif math.isinf(high):
                 band = f"{self.symbol} > {sig(low)}"
             else:
@@ -148,7 +192,13 @@ class BandTable:
         return rf"{band}\ \text{{{unit}}}" if latex else f"{band} {unit}"
 
     def range_text(self) -> str:
-        """The values the table covers, ``Z_h >= 0 1/h`` or ``T <= 120 °C``."""
+        """The values the table covers, ``Z_h >= 0 1/h`` or ``T <= 120 °C``.
+
+        Returns
+        -------
+        str
+            The covered range as a reader writes it.
+        """
         low, high = self.bounds[0], self.top
         unit = pretty_unit(self.unit)
         if math.isinf(low):
@@ -165,7 +215,19 @@ FACTOR_DIR = CATALOG_DIR / "factors"
 @dataclass(frozen=True)
 class FactorRole:
     """What a factor table is looked up by: the symbol of the value, its kind, and the table used
-    when a case names none (None: the check that needs it is not made without one)."""
+    when a case names none (None: the check that needs it is not made without one).
+
+    Parameters
+    ----------
+    symbol : str
+        The looked-up value's symbol (``"Z_h"``).
+    kind : str
+        Its kind (``"per_hour"``).
+    default : str or None
+        The table used when a case names none.
+    what : str
+        What the factor is, in words.
+    """
 
     symbol: str
     kind: str
@@ -184,29 +246,61 @@ ROLES = {
 def table_names(role: str) -> list[str]:
     """The names of the tables of ``role`` shipped in :data:`FACTOR_DIR`.
 
+    Parameters
+    ----------
+    role : str
+        A key of :data:`ROLES` (``"temperature"``).
+
+    Returns
+    -------
+    list of str
+        The names, sorted.
+
+    Examples
+    --------
     >>> table_names("temperature")
     ['comintec', 'roba-es', 'source']
     """
     return sorted(p.name[len(role) + 1 : -4] for p in FACTOR_DIR.glob(f"{role}-*.csv"))
 
 
-def factor_table(role: str, name_or_path: str | None = None, base: Path | None = None, where: str = "factor table") -> BandTable:
-    """The factor table of ``role`` (a key of :data:`ROLES`) by name (``"roba-es"`` is
-    ``catalogs/factors/<role>-roba-es.csv``) or by path to a CSV file (relative to ``base``, the
-    case file's folder); the role's default for None.
+def factor_table(role: str, name_or_path: str | None = None, base: Path | None = None,
+                 where: str = "factor table") -> BandTable:
+    """The factor table of ``role`` by name or by path; the role's default for None.
 
+    Parameters
+    ----------
+    role : str
+        A key of :data:`ROLES`.
+    name_or_path : str, optional
+        A table's name (``"roba-es"`` is ``catalogs/factors/<role>-roba-es.csv``) or a path to a CSV
+        file; None for the role's default.
+    base : pathlib.Path, optional
+        The case file's folder, which a relative path is read from.
+    where : str
+        The key, for error messages; default ``"factor table"``.
+
+    Returns
+    -------
+    BandTable
+        The table, read and checked once per run.
+
+    Examples
+    --------
     >>> float(factor_table("temperature", "roba-es").lookup(Q_(60, "degC")))
     1.5
     """
     r = ROLES[role]
     name = r.default if name_or_path is None else name_or_path
     if not isinstance(name, str) or not name.strip():
-        raise CalcError(f"{where}: expected a table name ({', '.join(table_names(role))}) or a path to a CSV file, found {name!r}")
+        raise CalcError(f"{where}: expected a table name ({', '.join(table_names(role))}) or a path to a CSV file, "
+                        f"found {name!r}")
     path = given_path(name, base)
     if path is None:
         path = FACTOR_DIR / f"{role}-{name}.csv"
         if not path.is_file():
-            raise CalcError(f"{where}: unknown {role}-factor table {name!r}; expected one of {', '.join(table_names(role))} or a path to a CSV file")
+            raise CalcError(f"{where}: unknown {role}-factor table {name!r}; expected one of "
+                            f"{', '.join(table_names(role))} or a path to a CSV file")
     elif not path.is_file():
         raise CalcError(f"{where}: the factor table {name!r} does not exist (looked for {path})")
     return load_factor_table(path, r.symbol, r.kind)
@@ -216,15 +310,34 @@ _COLUMNS = ("from", "to", "factor", "at_boundary", "source")
 
 
 def load_factor_table(path, symbol: str, kind: str) -> BandTable:
-    """Read and check a factor table: a CSV file with the columns ``from [unit]``, ``to [unit]``
-    (the band's ends, in a unit of ``kind``), ``factor [1]``, ``at_boundary`` (``higher`` or
-    ``lower``, the same in every row, :data:`AT_BOUNDARY`) and ``source``; one row per band, in
-    rising order. The first row's ``from`` and the last row's ``to`` may be empty (an open end).
+    """Read and check a factor table.
 
-    Raises :class:`CalcError` naming the file, row and column for a missing column, a unit of the
-    wrong kind, a cell that is not a number, a factor at or below zero, bands that do not rise, a
-    gap or overlap between bands (a row's ``from`` differs from the row before's ``to``), and
-    factors that fall as the value rises.
+    The file is a CSV file with the columns ``from [unit]``, ``to [unit]`` (the band's ends, in a
+    unit of ``kind``), ``factor [1]``, ``at_boundary`` (``higher`` or ``lower``, the same in every
+    row, :data:`AT_BOUNDARY`) and ``source``; one row per band, in rising order. The first row's
+    ``from`` and the last row's ``to`` may be empty (an open end).
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The CSV file.
+    symbol : str
+        The looked-up value's symbol, for the band texts.
+    kind : str
+        The kind of the band's ends.
+
+    Returns
+    -------
+    BandTable
+        The table.
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column for a missing column, a unit of the wrong kind, a cell that
+        is not a number, a factor at or below zero, bands that do not rise, a gap or overlap between
+        bands (a row's ``from`` differs from the row before's ``to``), and factors that fall as the
+        value rises.
     """
     path = Path(path)
     try:
@@ -244,9 +357,11 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
     missing = [c for c in _COLUMNS if c not in header]
     if missing:
         raise CalcError(f"{path}: expected the columns {', '.join(_COLUMNS)}, found no column {missing[0]!r}")
-    units = {c: _header_unit(path, Column(c, k, c), header[c][1]) for c, k in (("from", kind), ("to", kind), ("factor", "dimensionless"))}
+    units = {c: _header_unit(path, Column(c, k, c), header[c][1])
+             for c, k in (("from", kind), ("to", kind), ("factor", "dimensionless"))}
     if units["from"] != units["to"]:
-        raise CalcError(f"{path}, header: expected the columns from and to in one unit, found {header['from'][1]!r} and {header['to'][1]!r}")
+        raise CalcError(f"{path}, header: expected the columns from and to in one unit, found {header['from'][1]!r} "
+                        f"and {header['to'][1]!r}")
     body = rows[1:]
     if not body:
         raise CalcError(f"{path}: expected one row per band, found none")
@@ -264,7 +379,8 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
         if not text and empty is not None:
             return empty
         if not _FLOAT.match(text):
-            raise CalcError(f"{where(k, column)}: expected a number, found {text!r}" if text else f"{where(k, column)}: expected a number, found an empty cell")
+            raise CalcError(f"{where(k, column)}: expected a number, found {text!r}" if text
+                            else f"{where(k, column)}: expected a number, found an empty cell")
         return float(text)
 
     n = len(body)
@@ -275,22 +391,28 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
         if not factor[k] > 0:
             raise CalcError(f"{where(k, 'factor')}: expected a factor above zero, found {cell(k, 'factor')!r}")
         if not high[k] > low[k]:
-            raise CalcError(f"{where(k, 'to')}: expected a band that rises, to above from, found from {cell(k, 'from') or 'open'} and to {cell(k, 'to') or 'open'}")
+            raise CalcError(f"{where(k, 'to')}: expected a band that rises, to above from, found from "
+                            f"{cell(k, 'from') or 'open'} and to {cell(k, 'to') or 'open'}")
         if k and low[k] != high[k - 1]:
             what = "a gap" if low[k] > high[k - 1] else "an overlap"
-            raise CalcError(f"{where(k, 'from')}: expected the band to start where the row before ends ({cell(k - 1, 'to')}), found {cell(k, 'from')!r}, {what}")
+            raise CalcError(f"{where(k, 'from')}: expected the band to start where the row before ends "
+                            f"({cell(k - 1, 'to')}), found {cell(k, 'from')!r}, {what}")
         if k and factor[k] < factor[k - 1]:
             raise CalcError(
-                f"{where(k, 'factor')}: expected factors that never fall as {symbol} rises, found {cell(k, 'factor')} after {cell(k - 1, 'factor')}"
+                f"{where(k, 'factor')}: expected factors that never fall as {symbol} rises, found {cell(k, 'factor')} "
+                f"after {cell(k - 1, 'factor')}"
             )
     rule = cell(0, "at_boundary")
-    bad = next((k for k in range(n) if cell(k, "at_boundary") not in AT_BOUNDARY or cell(k, "at_boundary") != rule), None)
+    bad = next((k for k in range(n) if cell(k, "at_boundary") not in AT_BOUNDARY or cell(k, "at_boundary") != rule),
+               None)
     if bad is not None:
         found = cell(bad, "at_boundary")
-        expected = f"one of {', '.join(AT_BOUNDARY)}" if found not in AT_BOUNDARY else f"the same rule in every row ({rule!r} in the first)"
+        expected = (f"one of {', '.join(AT_BOUNDARY)}" if found not in AT_BOUNDARY
+                    else f"the same rule in every row ({rule!r} in the first)")
         raise CalcError(f"{where(bad, 'at_boundary')}: expected {expected}, found {found!r}")
     sources = list(dict.fromkeys(cell(k, "source") for k in range(n) if cell(k, "source")))
     if not sources:
         raise CalcError(f"{where(0, 'source')}: expected where the factors come from, found an empty cell")
-    shown = "; ".join(sources) if path.parent.resolve() == FACTOR_DIR.resolve() else f"{display_path(path)}: {'; '.join(sources)}"
+    shipped = path.parent.resolve() == FACTOR_DIR.resolve()
+    shown = "; ".join(sources) if shipped else f"{display_path(path)}: {'; '.join(sources)}"
     return BandTable(symbol, tuple(low), tuple(factor), header["from"][1].strip(), kind, shown, high[-1], rule)

@@ -44,6 +44,16 @@ def package_folder(name: str) -> Path:
     ``<name>/`` as ``calc/<name>/`` (``package-dir`` in pyproject.toml). A calc imported from a
     checkout, installed editable or not, reads that checkout's own ``<name>/``: the tree that runs
     is the tree being edited, even when another tree's editable install is on the path.
+
+    Parameters
+    ----------
+    name : str
+        The data's folder name.
+
+    Returns
+    -------
+    pathlib.Path
+        The folder.
     """
     if PROJECT_DIR is not None:
         return PROJECT_DIR / name
@@ -58,7 +68,24 @@ _FLOAT = re.compile(r"^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
 
 @dataclass(frozen=True)
 class Column:
-    """A numeric column: its name, kind, whether every row needs a value, and its lower bound."""
+    """A numeric column: its name, kind, whether every row needs a value, and its lower bound.
+
+    Parameters
+    ----------
+    name : str
+        The column's name in the header (``"T_2N"``).
+    kind : str
+        The kind of its header unit.
+    description : str
+        What it holds, for error messages.
+    required : bool
+        Every row needs a value; default True.
+    positive : bool
+        Values must be above zero; default True.
+    may_be_absent : bool
+        A file without the column loads, every cell empty (a maker's table that lacks it); default
+        False.
+    """
 
     name: str
     kind: str
@@ -70,7 +97,17 @@ class Column:
 
 @dataclass(frozen=True)
 class Rule:
-    """A relation between columns that every row must satisfy, e.g. ``T_2B >= T_2N``."""
+    """A relation between columns that every row must satisfy, e.g. ``T_2B >= T_2N``.
+
+    Parameters
+    ----------
+    text : str
+        The relation as the error message states it.
+    holds : callable
+        ``(values: dict of quantity arrays) -> bool array``; NaN cells hold vacuously.
+    column : str
+        The column named in the error.
+    """
 
     text: str
     holds: Callable  # (values: dict[str, Quantity array]) -> bool array; NaN cells hold vacuously
@@ -79,7 +116,24 @@ class Rule:
 
 @dataclass(frozen=True)
 class Schema:
-    """What a catalog of one kind of part must hold."""
+    """What a catalog of one kind of part must hold.
+
+    Parameters
+    ----------
+    kind : str
+        The kind of part (``"gearbox"``).
+    columns : tuple of Column
+        The numeric columns.
+    text_columns : tuple of str
+        The text columns every file has; default ``("part", "source")``.
+    optional_text : tuple of str
+        Text columns a file may have.
+    rules : tuple of Rule
+        Relations every row must satisfy.
+    partial : str, optional
+        The text column whose non-empty cell marks a row as partial, giving the reason: a partial
+        row may leave required cells empty, and is kept for reference but never checked or chosen.
+    """
 
     kind: str
     columns: tuple[Column, ...]
@@ -93,7 +147,34 @@ class Schema:
 
 @dataclass
 class Catalog:
-    """A validated catalog: parts, numeric columns as quantity arrays (NaN where a cell is empty)."""
+    """A validated catalog: parts, numeric columns as quantity arrays (NaN where a cell is empty).
+
+    Parameters
+    ----------
+    name : str
+        The file's stem (``"gearboxes"``).
+    path : pathlib.Path
+        The file.
+    sha256 : str
+        The file's SHA-256.
+    schema : Schema
+        What it was checked against.
+    parts : numpy.ndarray of str
+        The part of each row.
+    values : dict
+        Each numeric column by name, a quantity array in the file's unit.
+    text : dict
+        Each text column by name, an object array.
+    lines : numpy.ndarray of int
+        The line number of each row in the file.
+    header_units : dict
+        Each numeric column's unit as the file writes it.
+    members : tuple
+        The files the rows come from, as ``(path, sha256)``: one file, or several ranked together
+        (:func:`combine`).
+    member : numpy.ndarray of int
+        Each row's index into ``members``.
+    """
 
     name: str
     path: Path
@@ -124,11 +205,33 @@ class Catalog:
         return " + ".join(display_path(path) for path, _ in self.members)
 
     def catalog_of(self, row: int) -> str:
-        """The file of one row, as results name it."""
+        """The file of one row, as results name it.
+
+        Parameters
+        ----------
+        row : int
+            The row.
+
+        Returns
+        -------
+        str
+            Its file as :func:`display_path` shows it.
+        """
         return display_path(self.members[self.member[row]][0])
 
     def text_or_blank(self, column: str) -> np.ndarray:
-        """A text column's cells, blank where the file has no such column."""
+        """A text column's cells, blank where the file has no such column.
+
+        Parameters
+        ----------
+        column : str
+            The column's name.
+
+        Returns
+        -------
+        numpy.ndarray of str
+            One cell per row.
+        """
         return self.text[column] if column in self.text else self._blank
 
     # Each of these is worked out once over the whole catalog and carried to the catalogs of its
@@ -147,7 +250,8 @@ class Catalog:
     @functools.cached_property
     def partial(self) -> np.ndarray:
         """True for a partial row (:attr:`Schema.partial`): kept, never checked or chosen."""
-        return _read_only(self.text_or_blank(self.schema.partial) != "" if self.schema.partial else np.zeros(len(self), bool))
+        return _read_only(self.text_or_blank(self.schema.partial) != "" if self.schema.partial
+                          else np.zeros(len(self), bool))
 
     @functools.cached_property
     def illustrative(self) -> np.ndarray:
@@ -166,7 +270,18 @@ class Catalog:
         return self.values[column]
 
     def rows(self, mask) -> "Catalog":
-        """A catalog of the rows where ``mask`` is true (or at the given indices)."""
+        """A catalog of some of the rows.
+
+        Parameters
+        ----------
+        mask : numpy.ndarray of bool or of int
+            The rows to keep: true where kept, or their indices.
+
+        Returns
+        -------
+        Catalog
+            The rows, with every per-row array cut alike.
+        """
         out = Catalog(
             self.name, self.path, self.sha256, self.schema, self.parts[mask],
             {k: v[mask] for k, v in self.values.items()}, {k: v[mask] for k, v in self.text.items()},
@@ -177,24 +292,63 @@ class Catalog:
         return out
 
     def index(self, part: str, where: str) -> int:
+        """The row of a part.
+
+        Parameters
+        ----------
+        part : str
+            The part's name.
+        where : str
+            The key that names it, for the error message.
+
+        Returns
+        -------
+        int
+            Its first row.
+
+        Raises
+        ------
+        CalcError
+            For a part the catalog does not hold, naming a few that it does.
+        """
         hits = np.flatnonzero(self.parts == part)
         if not len(hits):
             raise CalcError(f"{where}: no part {part!r} in catalog {self.shown_name}; it has {some_parts(self.parts)}")
         return int(hits[0])
 
     def usable_index(self, part: str, where: str) -> int:
-        """:meth:`index` of a part that may be checked: a partial row is an input error."""
+        """:meth:`index` of a part that may be checked: a partial row is an input error.
+
+        Parameters
+        ----------
+        part : str
+            The part's name.
+        where : str
+            The key that names it, for the error message.
+
+        Returns
+        -------
+        int
+            Its row.
+        """
         row = self.index(part, where)
         if self.partial[row]:
             reason = self.text[self.schema.partial][row]
             raise CalcError(
-                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), kept for reference "
+                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), kept for "
+                "reference "
                 f"but never checked: {reason}"
             )
         return row
 
     def to_frame(self):
-        """The catalog as a pandas DataFrame, units in the column names (for display)."""
+        """The catalog as a pandas DataFrame, units in the column names (for display).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per part.
+        """
         import pandas as pd
 
         data = {"part": self.parts}
@@ -211,6 +365,18 @@ def _read_only(a: np.ndarray) -> np.ndarray:
 
 
 def some_parts(parts) -> str:
+    """Up to six part names for a message, and how many more there are.
+
+    Parameters
+    ----------
+    parts : numpy.ndarray of str
+        The names.
+
+    Returns
+    -------
+    str
+        ``"A, B, C and 4 more"``.
+    """
     shown = ", ".join(map(str, parts[:6]))
     return shown + (f" and {len(parts) - 6} more" if len(parts) > 6 else "")
 
@@ -220,6 +386,18 @@ def display_path(path: Path) -> str:
     ``catalogs/NAME.csv`` (installed or not), any other file relative to the project checkout when
     inside it, else absolute.
 
+    Parameters
+    ----------
+    path : pathlib.Path
+        The file.
+
+    Returns
+    -------
+    str
+        The path as results show it.
+
+    Examples
+    --------
     >>> display_path(CATALOG_DIR / "gearboxes.csv")
     'catalogs/gearboxes.csv'
     """
@@ -231,8 +409,20 @@ def display_path(path: Path) -> str:
 
 
 def given_path(name_or_path: str, base: Path | None) -> Path | None:
-    """The file a case names by path (with a ``/`` or ending in ``.csv``; relative to ``base``,
-    the case file's folder), or None where it names a file the package ships."""
+    """The file a case names by path, or None where it names a file the package ships.
+
+    Parameters
+    ----------
+    name_or_path : str
+        A name, or a path (with a ``/`` or ending in ``.csv``).
+    base : pathlib.Path or None
+        The case file's folder, which a relative path is read from.
+
+    Returns
+    -------
+    pathlib.Path or None
+        The path.
+    """
     if "/" not in name_or_path and not name_or_path.endswith(".csv"):
         return None
     path = Path(name_or_path)
@@ -240,8 +430,22 @@ def given_path(name_or_path: str, base: Path | None) -> Path | None:
 
 
 def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
-    """A catalog by name (``"gearboxes"`` → ``catalogs/gearboxes.csv``) or by path (relative to
-    ``base``, the case file's folder)."""
+    """A catalog by name (``"gearboxes"`` → ``catalogs/gearboxes.csv``) or by path.
+
+    Parameters
+    ----------
+    name_or_path : str
+        The name or path.
+    base : pathlib.Path or None
+        The case file's folder, which a relative path is read from.
+    where : str
+        The key, for error messages.
+
+    Returns
+    -------
+    pathlib.Path
+        The file, which exists.
+    """
     if not isinstance(name_or_path, str) or not name_or_path.strip():
         raise CalcError(f"{where}: expected a catalog name or a path to a CSV file, found {name_or_path!r}")
     path = given_path(name_or_path, base) or CATALOG_DIR / f"{name_or_path}.csv"
@@ -263,7 +467,13 @@ _FILES_READ: contextvars.ContextVar = contextvars.ContextVar("files_read", defau
 @contextlib.contextmanager
 def recording_files_read():
     """Within it, every data file the package reads (catalogs, factor tables, measurements) is
-    recorded, once, as ``path -> (what it is, SHA-256)``: the provenance a report lists."""
+    recorded, once, as ``path -> (what it is, SHA-256)``: the provenance a report lists.
+
+    Yields
+    ------
+    dict
+        The record, filled as files are read.
+    """
     files = {}
     token = _FILES_READ.set(files)
     try:
@@ -273,8 +483,21 @@ def recording_files_read():
 
 
 def note_file_read(path: Path, what: str, digest: str | None = None) -> None:
-    """Record ``path`` as read (:func:`recording_files_read`); ``digest``: its SHA-256 where the
-    reader has it, else it is computed, only while something records."""
+    """Record ``path`` as read (:func:`recording_files_read`).
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The file.
+    what : str
+        What it is (``"catalog"``).
+    digest : str, optional
+        Its SHA-256 where the reader has it, else it is computed, only while something records.
+
+    Returns
+    -------
+    None
+    """
     files = _FILES_READ.get()
     if files is not None and path.resolve() not in files:
         files[path.resolve()] = (what, digest or hashlib.sha256(path.read_bytes()).hexdigest())
@@ -283,10 +506,24 @@ def note_file_read(path: Path, what: str, digest: str | None = None) -> None:
 def load_catalog(path: Path, schema: Schema) -> Catalog:
     """Read and validate a catalog file against ``schema``, once per run.
 
-    Raises :class:`CalcError` naming the file, row and column for: a missing column, a header
-    unit of the wrong kind, an empty required cell, a non-numeric or non-finite cell, a value at
-    or below zero where it must be positive, a duplicate part, or a row that breaks one of the
-    schema's rules.
+    Parameters
+    ----------
+    path : pathlib.Path
+        The CSV file.
+    schema : Schema
+        What it must hold.
+
+    Returns
+    -------
+    Catalog
+        The catalog, its arrays read-only.
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column for: a missing column, a header unit of the wrong kind, an
+        empty required cell, a non-numeric or non-finite cell, a value at or below zero where it
+        must be positive, a duplicate part, or a row that breaks one of the schema's rules.
 
     Notes
     -----
@@ -303,12 +540,31 @@ def load_catalog(path: Path, schema: Schema) -> Catalog:
     catalog = known[1]
     note_file_read(path, "Catalog", catalog.sha256)
     # The same file asked for by another spelling of its path is named as asked.
-    return catalog if catalog.path == path else dataclasses.replace(catalog, name=path.stem, path=path, members=((path, catalog.sha256),))
+    if catalog.path == path:
+        return catalog
+    return dataclasses.replace(catalog, name=path.stem, path=path, members=((path, catalog.sha256),))
 
 
 def load_catalogs(names, base: Path | None, where: str, schema: Schema) -> Catalog:
     """The catalog of a case's ``catalog`` key: one name or path (:func:`resolve`), or a list of
-    them whose rows are ranked together (:func:`combine`), each row keeping the file it comes from."""
+    them whose rows are ranked together (:func:`combine`), each row keeping the file it comes from.
+
+    Parameters
+    ----------
+    names : str or list of str
+        The key's value.
+    base : pathlib.Path or None
+        The case file's folder, which a relative path is read from.
+    where : str
+        The key, for error messages.
+    schema : Schema
+        What each file must hold.
+
+    Returns
+    -------
+    Catalog
+        One catalog of all the rows.
+    """
     if isinstance(names, str):
         return load_catalog(resolve(names, base, where), schema)
     if not isinstance(names, list) or not names:
@@ -321,7 +577,20 @@ def combine(catalogs: list, where: str) -> Catalog:
     """The rows of several catalogs of one schema as one catalog, in the units of the first.
 
     Each row keeps the file it comes from (:attr:`Catalog.member`). The same part in two files is
-    an error naming both rows: a candidate's name must say which row it is."""
+    an error naming both rows: a candidate's name must say which row it is.
+
+    Parameters
+    ----------
+    catalogs : list of Catalog
+        The catalogs, of one schema.
+    where : str
+        The key, for error messages.
+
+    Returns
+    -------
+    Catalog
+        Their rows in order.
+    """
     if len(catalogs) == 1:
         return catalogs[0]
     first = catalogs[0]
@@ -331,7 +600,8 @@ def combine(catalogs: list, where: str) -> Catalog:
             if part in seen and seen[part][0] != k:
                 other, other_line = seen[part]
                 raise CalcError(
-                    f"{where}: the part {part!r} stands in {display_path(catalogs[other].path)} (row {other_line}) and in "
+                    f"{where}: the part {part!r} stands in {display_path(catalogs[other].path)} (row {other_line}) and "
+                    "in "
                     f"{display_path(cat.path)} (row {line}); rename one, as candidates are named by part"
                 )
             seen.setdefault(part, (k, line))
@@ -360,6 +630,51 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     """Read and validate a catalog file, column by column over all rows at once; see
     :func:`load_catalog`."""
     raw = path.read_bytes()
+    reader, width, columns, units = _header(path, raw, schema)
+    cells, lines, misfit = _rows(path, reader, width)
+
+    def column(name):
+        return cells[columns[name][0]::width]
+
+    texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text)
+             if name in columns}
+    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
+    problem = _first_problem(path, schema, lines, texts, numbers, {name: _si(u) for name, u in units.items()})
+    if problem:
+        raise CalcError(problem)
+    if misfit is not None:
+        raise CalcError(f"{path}, row {misfit[0]}: expected {width} cells as in the header, found {misfit[1]}")
+
+    parts = np.array(texts["part"], dtype=object)
+    _no_repeated_part(path, parts, lines)
+    values = {c.name: Q_(numbers[c.name].values, units[c.name]) for c in schema.columns}
+    for rule in schema.rules:
+        with np.errstate(invalid="ignore"):
+            ok = np.asarray(rule.holds(values), dtype=bool)
+        if not ok.all():
+            j = int(np.flatnonzero(~ok)[0])
+            raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected "
+                            f"{rule.text}")
+    text_arrays = {k: np.array(v, dtype=object) for k, v in texts.items()}
+    for a in (parts, lines, *text_arrays.values(), *(q.magnitude for q in values.values())):
+        a.flags.writeable = False  # shared by every caller of the run (load_catalog)
+    return Catalog(
+        name=path.stem,
+        path=path,
+        sha256=hashlib.sha256(raw).hexdigest(),
+        schema=schema,
+        parts=parts,
+        values=values,
+        text=text_arrays,
+        lines=lines,
+        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name])
+                      for c in schema.columns},
+    )
+
+
+def _header(path: Path, raw: bytes, schema: Schema):
+    """The CSV reader past the header of a catalog file's bytes, the header's width, its columns
+    (name -> (index, unit text)) and the unit of each column of ``schema``, all checked."""
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
@@ -386,15 +701,23 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
             units[c.name] = ureg.parse_units(kind(c.kind).si_unit or "dimensionless")
             continue
         if c.name not in columns:
-            raise CalcError(f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}")
+            raise CalcError(
+                f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}"
+            )
         unit_text = columns[c.name][1]
         units[c.name] = _header_unit(path, c, unit_text)
+    return reader, len(header), columns, units
 
-    # The cells of all rows in one flat list (a column is a slice of it), up to the first row whose
-    # length differs from the header's; that row is reported after any problem in the rows before
-    # it, as a reader going row by row would. Each row's list is dropped at once: 10^5 row lists
-    # kept alive would make the garbage collector walk them again and again.
-    width, cells, lines, misfit = len(header), [], [], None
+
+def _rows(path: Path, reader, width: int):
+    """The cells of all data rows in one flat list, their line numbers, and the first row whose
+    length differs from the header's (``(line, length)``, or None).
+
+    The list stops at that row; it is reported after any problem in the rows before it, as a
+    reader going row by row would. Each row's list is dropped at once: 10^5 row lists kept alive
+    would make the garbage collector walk them again and again.
+    """
+    cells, lines, misfit = [], [], None
     for line, row in enumerate(reader, start=2):
         if not "".join(row).strip():
             continue  # a blank row
@@ -405,48 +728,19 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
         lines.append(line)
     if not lines and misfit is None:
         raise CalcError(f"{path}: expected at least one row of data, found none")
-    lines = np.array(lines, dtype=int)
+    return cells, np.array(lines, dtype=int), misfit
 
-    def column(name):
-        return cells[columns[name][0]::width]
 
-    texts = {name: list(map(str.strip, column(name))) for name in (*schema.text_columns, *schema.optional_text) if name in columns}
-    numbers = {c.name: _numbers(column(c.name) if c.name in columns else [""] * len(lines)) for c in schema.columns}
-    problem = _first_problem(path, schema, lines, texts, numbers, {name: _si(u) for name, u in units.items()})
-    if problem:
-        raise CalcError(problem)
-    if misfit is not None:
-        raise CalcError(f"{path}, row {misfit[0]}: expected {width} cells as in the header, found {misfit[1]}")
-
-    parts = np.array(texts["part"], dtype=object)
-    # Duplicates: np.unique gives each part's first row; a row whose part first stands earlier repeats it.
-    _, first, inverse = np.unique(np.array(texts["part"], dtype=str), return_index=True, return_inverse=True)
+def _no_repeated_part(path: Path, parts: np.ndarray, lines: np.ndarray) -> None:
+    """Raises for the first row whose part already stands in an earlier row."""
+    # np.unique gives each part's first row; a row whose part first stands earlier repeats it.
+    _, first, inverse = np.unique(parts.astype(str), return_index=True, return_inverse=True)
     first = first[inverse.ravel()]
     repeats = np.flatnonzero(first != np.arange(len(parts)))
     if len(repeats):
         j = repeats[0]
-        raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row {lines[first[j]]}")
-    values = {c.name: Q_(numbers[c.name].values, units[c.name]) for c in schema.columns}
-    for rule in schema.rules:
-        with np.errstate(invalid="ignore"):
-            ok = np.asarray(rule.holds(values), dtype=bool)
-        if not ok.all():
-            j = int(np.flatnonzero(~ok)[0])
-            raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected {rule.text}")
-    text_arrays = {k: np.array(v, dtype=object) for k, v in texts.items()}
-    for a in (parts, lines, *text_arrays.values(), *(q.magnitude for q in values.values())):
-        a.flags.writeable = False  # shared by every caller of the run (load_catalog)
-    return Catalog(
-        name=path.stem,
-        path=path,
-        sha256=hashlib.sha256(raw).hexdigest(),
-        schema=schema,
-        parts=parts,
-        values=values,
-        text=text_arrays,
-        lines=lines,
-        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name]) for c in schema.columns},
-    )
+        raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row "
+                        f"{lines[first[j]]}")
 
 
 @dataclass(frozen=True)
@@ -547,14 +841,28 @@ def _header_unit(path: Path, c: Column, unit_text):
     try:
         units = ureg.parse_units(text) if text not in ("", "1", "-") else ureg.dimensionless
     except Exception as exc:  # pint raises several types for unknown or malformed units
-        raise CalcError(f"{where}: the unit {text!r} is not one the unit registry knows ({type(exc).__name__})") from None
+        raise CalcError(
+            f"{where}: the unit {text!r} is not one the unit registry knows ({type(exc).__name__})"
+        ) from None
     if not k.accepts(units):
-        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {text!r}, which is {describe_units(units)}")
+        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {text!r}, which is "
+                        f"{describe_units(units)}")
     return units
 
 
 def no_less(a: str, b: str) -> Callable:
-    """Rule helper: column ``a`` is at least column ``b`` where both are given."""
+    """Rule helper: column ``a`` is at least column ``b`` where both are given.
+
+    Parameters
+    ----------
+    a, b : str
+        The columns' names.
+
+    Returns
+    -------
+    callable
+        The test of a :class:`Rule`.
+    """
 
     def holds(v):
         x, y = v[a].magnitude, v[b].m_as(v[a].units)

@@ -40,7 +40,17 @@ TIME = Column("time", "time", "time of the sample")
 
 @dataclass(frozen=True)
 class Measurement:
-    """The columns of a measurement file as quantity arrays, with its comment lines."""
+    """The columns of a measurement file as quantity arrays, with its comment lines.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The file.
+    columns : dict
+        Each column by name, a quantity array in the file's unit.
+    comments : tuple of str
+        The file's comment lines, without their ``#``.
+    """
 
     path: Path
     columns: dict
@@ -51,7 +61,22 @@ class Measurement:
 
 
 def measurement_path(text, base: Path | None, where: str) -> Path:
-    """The file a case names (relative to the case file's folder); an error if it is missing."""
+    """The file a case names (relative to the case file's folder); an error if it is missing.
+
+    Parameters
+    ----------
+    text : str
+        The path as the case writes it.
+    base : pathlib.Path or None
+        The case file's folder.
+    where : str
+        The key, for error messages.
+
+    Returns
+    -------
+    pathlib.Path
+        The file.
+    """
     if not isinstance(text, str) or not text.strip():
         raise CalcError(f"{where}: expected the path of a CSV file in quotes, found {text!r}")
     path = Path(text)
@@ -63,12 +88,30 @@ def measurement_path(text, base: Path | None, where: str) -> Path:
 
 
 def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, ...] = ()) -> Measurement:
-    """Read a measurement file and check it against ``columns`` (name, kind, description) and
-    those of ``optional`` that its header has.
+    """Read a measurement file and check it against ``columns`` and those of ``optional`` that its
+    header has.
 
-    Raises :class:`CalcError` naming the file, row and column for: a missing column, a header
-    unit of the wrong kind, an empty or non-numeric cell, a value that is not finite, or a row
-    with too few cells. Cells may hold any sign (a twist, an error).
+    Cells may hold any sign (a twist, an error).
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The CSV file.
+    columns : tuple of Column
+        The columns it must have (name, kind, description).
+    optional : tuple of Column
+        Columns it may have.
+
+    Returns
+    -------
+    Measurement
+        Its columns and comment lines.
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column for: a missing column, a header unit of the wrong kind, an
+        empty or non-numeric cell, a value that is not finite, or a row with too few cells.
     """
     path = Path(path)
     try:
@@ -93,7 +136,8 @@ def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, 
     for i, cell in enumerate(header.strip().split(",")):
         m = _HEADER.match(cell)
         if not m:
-            raise CalcError(f"{path}, row {header_line}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
+            raise CalcError(f"{path}, row {header_line}: header column {i + 1} {cell!r} is not of the form 'name "
+                            "[unit]'")
         names[m.group(1)] = (i, m.group(2))
     columns = (*columns, *(c for c in optional if c.name in names))
     if TIME.name in names and all(c.name != TIME.name for c in columns):
@@ -102,7 +146,8 @@ def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, 
     for c in columns:
         if c.name not in names:
             raise CalcError(
-                f"{path}, row {header_line}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(names)}"
+                f"{path}, row {header_line}: expected a column '{c.name} [unit]' ({c.description}), found columns "
+                f"{', '.join(names)}"
             )
         units[c.name] = _header_unit(path, c, names[c.name][1])
 
@@ -124,7 +169,8 @@ def _check_time_order(time: np.ndarray, unit: str, path: Path, first_row: int) -
     if back.size:
         j = int(back[0]) + 1
         raise CalcError(
-            f"{path}, row {first_row + j}, column {TIME.name}: expected times that increase (the rows in the order measured), "
+            f"{path}, row {first_row + j}, column {TIME.name}: expected times that increase (the rows in the order "
+            "measured), "
             f"found {time[j]:g} {unit} after {time[j - 1]:g} {unit}"
         )
 
@@ -162,7 +208,8 @@ def _table_cell_by_cell(body: str, names: dict, columns, path: Path, first_row: 
     rows = [line.split(",") for line in body.split("\n")]
     for j, cells in enumerate(rows):
         if len(cells) > len(names):
-            raise CalcError(f"{path}: rows must have the header's {len(names)} cells (row {first_row + j} has {len(cells)})")
+            raise CalcError(f"{path}: rows must have the header's {len(names)} cells (row {first_row + j} has "
+                            f"{len(cells)})")
     table = np.full((len(rows), len(names)), np.nan)
     for c in columns:
         i = names[c.name][0]
@@ -182,12 +229,29 @@ def _table_cell_by_cell(body: str, names: dict, columns, path: Path, first_row: 
 def write_measurement(path, columns: dict, units: dict, comments: tuple[str, ...], digits: int = 6) -> None:
     """Write quantity arrays as a measurement file: comment lines, a header with units, rows.
 
-    ``columns`` maps a name to a quantity array, ``units`` the name to the unit it is written in.
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file to write.
+    columns : dict
+        Each column by name, a quantity array.
+    units : dict
+        Each column by name, the unit it is written in.
+    comments : tuple of str
+        The comment lines.
+    digits : int
+        Significant figures of each cell; default 6.
+
+    Returns
+    -------
+    None
     """
     path = Path(path)
     arrays = [np.asarray(q.m_as(units[name]), dtype=float) for name, q in columns.items()]
-    header = "\n".join([*(f"# {c}".rstrip() for c in comments), ",".join(f"{name} [{units[name]}]" for name in columns)])
-    np.savetxt(path, np.column_stack(arrays), fmt=f"%.{digits}g", delimiter=",", header=header, comments="", encoding="utf-8")
+    header = "\n".join([*(f"# {c}".rstrip() for c in comments),
+                        ",".join(f"{name} [{units[name]}]" for name in columns)])
+    np.savetxt(path, np.column_stack(arrays), fmt=f"%.{digits}g", delimiter=",", header=header, comments="",
+               encoding="utf-8")
 
 
 def travel_direction(values: np.ndarray) -> np.ndarray:
@@ -196,6 +260,16 @@ def travel_direction(values: np.ndarray) -> np.ndarray:
     The sign of the mean of the next ``k`` samples minus the mean of the previous ``k``
     (``k = max(2, n // 500)``): noise shrinks as ``1/√k`` while the trend grows as ``k``. A run of
     fewer than ``k`` samples between two runs of the other sign is noise, and takes their sign.
+
+    Parameters
+    ----------
+    values : numpy.ndarray
+        The samples in the order recorded (magnitudes, any unit).
+
+    Returns
+    -------
+    numpy.ndarray of int
+        The direction of each sample.
     """
     n = len(values)
     k = max(2, n // 500)
@@ -217,12 +291,29 @@ def travel_direction(values: np.ndarray) -> np.ndarray:
 
 
 def check_pair(source: str, first: tuple, second: tuple) -> None:
-    """Check two recorded columns, each ``(name, quantity array, kind)``: their kinds, and that
-    they are two 1-D arrays of one length. Raises :class:`CalcError` naming ``source``."""
+    """Check two recorded columns: their kinds, and that they are two 1-D arrays of one length.
+
+    Parameters
+    ----------
+    source : str
+        Where they come from, for error messages.
+    first, second : tuple
+        Each ``(name, quantity array, kind)``.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    CalcError
+        Naming ``source``.
+    """
     (name_a, a, kind_a), (name_b, b, kind_b) = first, second
     a = as_kind(a, kind_a, f"{source}: {name_a}").magnitude
     b = as_kind(b, kind_b, f"{source}: {name_b}").magnitude
     if np.ndim(a) != 1 or np.shape(a) != np.shape(b):
         raise CalcError(
-            f"{source}: expected {name_a} and {name_b} as two arrays of one length, found shapes {np.shape(a)} and {np.shape(b)}"
+            f"{source}: expected {name_a} and {name_b} as two arrays of one length, found shapes {np.shape(a)} and "
+            f"{np.shape(b)}"
         )

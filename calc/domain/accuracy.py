@@ -53,17 +53,21 @@ lost_motion = Formula(
 )
 
 positioning_accuracy_low = Formula(
-    Symbol("Delta_phi_P_low", r"\Delta\varphi_{P}", "angle", "arcmin", "positioning accuracy, torque up to 3 % of nominal"),
+    Symbol("Delta_phi_P_low", r"\Delta\varphi_{P}", "angle", "arcmin",
+           "positioning accuracy, torque up to 3 % of nominal"),
     (_TA, _j),
     lambda sp, ta, j: ta + j,
-    "source, Positioning Accuracy, torque <= 3 % of nominal torque: angular transmission accuracy + backlash; errata E13",
+    "source, Positioning Accuracy, torque <= 3 % of nominal torque: angular transmission accuracy + backlash; errata "
+    "E13",
 )
 
 positioning_accuracy_high = Formula(
-    Symbol("Delta_phi_P_high", r"\Delta\varphi_{P}", "angle", "arcmin", "positioning accuracy, torque above 3 % of nominal"),
+    Symbol("Delta_phi_P_high", r"\Delta\varphi_{P}", "angle", "arcmin",
+           "positioning accuracy, torque above 3 % of nominal"),
     (_TA, _T, _C),
     lambda sp, ta, T, C: ta + sp.Abs(T) / C,
-    "source, Positioning Accuracy, torque > 3 % of nominal torque: angular transmission accuracy + applied torque / stiffness; errata E13",
+    "source, Positioning Accuracy, torque > 3 % of nominal torque: angular transmission accuracy + applied torque / "
+    "stiffness; errata E13",
 )
 
 positioning_error = Formula(
@@ -78,7 +82,8 @@ positioning_error = Formula(
 
 
 _r = Symbol("r", "r", "length", "mm", "radius at which the angle is read (a pinion's pitch radius, a table's edge)")
-_RAD = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (an arc is r · φ with φ in radians, E15)", value="1 rad")
+_RAD = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (an arc is r · φ with φ in radians, E15)",
+              value="1 rad")
 
 arc_length = Formula(
     Symbol("s", "s", "length", "mm", "arc length at the radius"),
@@ -99,6 +104,18 @@ def low_torque_limit(nominal_torque):
     """The torque up to which the backlash form of positioning accuracy applies (E13): 3 % of
     ``T_N``.
 
+    Parameters
+    ----------
+    nominal_torque : pint.Quantity [N·m]
+        ``T_N``.
+
+    Returns
+    -------
+    pint.Quantity [N·m]
+        3 % of it.
+
+    Examples
+    --------
     >>> print(fmt(low_torque_limit(Q_(110, "N*m")), "N*m"))
     3.3 N·m
     """
@@ -112,9 +129,15 @@ def low_torque_limit(nominal_torque):
 class PositioningRule:
     """Which form of positioning accuracy applies at an applied torque (E13), and why.
 
-    ``low_torque`` (a bool, or a bool array over an array of torques) is ``|T| <= 3 %`` of the
-    nominal torque: the backlash is not taken up, ``φ_TA + j_t``; else the twist counts,
-    ``φ_TA + |T| / C``. ``limit`` is 3 % of ``T_N`` (None at zero torque without a nominal torque).
+    Parameters
+    ----------
+    applied_torque : pint.Quantity [N·m]
+        The torque, scalar or array.
+    limit : pint.Quantity [N·m] or None
+        3 % of ``T_N`` (None at zero torque without a nominal torque).
+    low_torque : bool or numpy.ndarray of bool
+        ``|T| <= 3 %`` of the nominal torque: the backlash is not taken up, ``φ_TA + j_t``; else
+        the twist counts, ``φ_TA + |T| / C``.
     """
 
     applied_torque: object
@@ -135,13 +158,44 @@ class PositioningRule:
         return f"|T| = {t} {'<=' if self.low_torque else '>'} 3 % of T_N = {fmt(self.limit, 'N*m')}"
 
     def accuracy(self, transmission_accuracy, backlash, stiffness):
-        """Positioning accuracy by this rule, in arcmin (over every torque of the rule)."""
+        """Positioning accuracy by this rule (over every torque of the rule).
+
+        Parameters
+        ----------
+        transmission_accuracy : pint.Quantity [arcmin]
+            ``φ_TA``.
+        backlash : pint.Quantity [arcmin]
+            ``j_t``.
+        stiffness : pint.Quantity [N·m/arcmin]
+            ``C``.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            The positioning accuracy at each torque.
+        """
         low = positioning_accuracy_low(phi_TA=transmission_accuracy, j_t=backlash).m_as("arcmin")
-        high = positioning_accuracy_high(phi_TA=transmission_accuracy, T=self.applied_torque, C=stiffness).m_as("arcmin")
+        high = positioning_accuracy_high(phi_TA=transmission_accuracy, T=self.applied_torque,
+                                         C=stiffness).m_as("arcmin")
         return Q_(np.where(self.low_torque, low, high)[()], "arcmin")
 
     def step(self, transmission_accuracy, backlash, stiffness):
-        """The formula that applies, with the numbers (one torque)."""
+        """The formula that applies, with the numbers (one torque).
+
+        Parameters
+        ----------
+        transmission_accuracy : pint.Quantity [arcmin]
+            ``φ_TA``.
+        backlash : pint.Quantity [arcmin]
+            ``j_t``.
+        stiffness : pint.Quantity [N·m/arcmin]
+            ``C``.
+
+        Returns
+        -------
+        Step
+            The evaluated formula.
+        """
         if self.low_torque:
             return positioning_accuracy_low.step(phi_TA=transmission_accuracy, j_t=backlash)
         return positioning_accuracy_high.step(phi_TA=transmission_accuracy, T=self.applied_torque, C=stiffness)
@@ -155,6 +209,20 @@ def positioning_rule(applied_torque, nominal_torque=None) -> PositioningRule:
     boundaries of E3 and E4. The nominal torque may be left out only at zero torque, where the
     backlash form holds whatever it is.
 
+    Parameters
+    ----------
+    applied_torque : pint.Quantity [N·m]
+        ``T``, scalar or array.
+    nominal_torque : pint.Quantity [N·m], optional
+        ``T_N``; may be left out only at zero torque.
+
+    Returns
+    -------
+    PositioningRule
+        The form that applies at each torque.
+
+    Examples
+    --------
     >>> r = positioning_rule(Q_(8, "N*m"), Q_(110, "N*m"))
     >>> r.text, r.why
     ('|T| > 3 % of T_N: phi_TA + |T| / C', '|T| = 8 N·m > 3 % of T_N = 3.3 N·m')
@@ -164,7 +232,8 @@ def positioning_rule(applied_torque, nominal_torque=None) -> PositioningRule:
     t = as_kind(applied_torque, "torque", "applied_torque")
     if nominal_torque is None:
         if np.any(np.asarray(t.m_as("N*m")) != 0):
-            raise CalcError("nominal_torque: the 3 % rule of positioning accuracy (E13) needs the nominal torque, found none")
+            raise CalcError("nominal_torque: the 3 % rule of positioning accuracy (E13) needs the nominal torque, "
+                            "found none")
         return PositioningRule(t, None, np.full(np.shape(t.magnitude), True)[()])
     limit = low_torque_limit(nominal_torque)
     return PositioningRule(t, limit, (np.abs(t.m_as("N*m")) <= limit.m_as("N*m") * (1 + BOUNDARY_RTOL))[()])
@@ -179,13 +248,13 @@ def positioning_accuracy(applied_torque, nominal_torque, transmission_accuracy, 
 
     Parameters
     ----------
-    applied_torque, nominal_torque : Quantity [torque]
-    transmission_accuracy, backlash : Quantity [angle]
-    stiffness : Quantity [torque / angle]
+    applied_torque, nominal_torque : pint.Quantity [N·m]
+    transmission_accuracy, backlash : pint.Quantity [arcmin]
+    stiffness : pint.Quantity [N·m/arcmin]
 
     Returns
     -------
-    Quantity [arcmin]
+    pint.Quantity [arcmin]
 
     Notes
     -----
@@ -214,11 +283,22 @@ def repeatability(applied_torque, backlash, stiffness):
     approach under the same torque, so it shifts the position without spreading it. An axis
     positioned to within ±a cannot repeat worse than 2a, whatever this bound says.
 
+    Parameters
+    ----------
+    applied_torque : pint.Quantity [N·m]
+        ``T``, scalar or array.
+    backlash : pint.Quantity [arcmin]
+        ``j_t``.
+    stiffness : pint.Quantity [N·m/arcmin]
+        ``C``.
+
     Returns
     -------
-    (Quantity [arcmin], bool array)
+    tuple of (pint.Quantity [arcmin], numpy.ndarray of bool)
         The value and whether it is an upper bound (``T ≠ 0``) rather than the value itself.
 
+    Examples
+    --------
     >>> value, bound = repeatability(Q_(0, "N*m"), Q_(3, "arcmin"), Q_(23, "N*m/arcmin"))
     >>> print(fmt(value, "arcmin"), bool(bound))
     3 arcmin False
@@ -229,7 +309,27 @@ def repeatability(applied_torque, backlash, stiffness):
 
 @dataclass(frozen=True)
 class ChainAccuracy:
-    """Lost motion, positioning accuracy and repeatability of a chain at an applied torque."""
+    """Lost motion, positioning accuracy and repeatability of a chain at an applied torque.
+
+    Parameters
+    ----------
+    chain : Chain
+        The members, as evaluated at the torque.
+    applied_torque : pint.Quantity [N·m]
+        ``T`` at the output.
+    nominal_torque : pint.Quantity [N·m] or None
+        ``T_N`` for the 3 % rule; None only at zero torque.
+    rule : PositioningRule
+        The form of positioning accuracy that applies.
+    lost_motion : pint.Quantity [arcmin]
+        The chain's lost motion at the torque.
+    positioning_accuracy : pint.Quantity [arcmin]
+        By the rule.
+    repeatability : pint.Quantity [arcmin]
+        The value, or its upper bound under torque.
+    repeatability_is_bound : bool
+        ``repeatability`` is an upper bound (``T ≠ 0``).
+    """
 
     chain: Chain
     applied_torque: object
@@ -246,7 +346,13 @@ class ChainAccuracy:
         return bool(self.rule.low_torque)
 
     def steps(self) -> list:
-        """Each formula with the chain's numbers, in the order a reviewer reads them."""
+        """Each formula with the chain's numbers, in the order a reviewer reads them.
+
+        Returns
+        -------
+        list of Step
+            The evaluated formulas.
+        """
         c = self.chain
         out = []
         # A member of unknown stiffness stands in rigid (its 1/C is zero): its steps are left out.
@@ -275,6 +381,22 @@ def chain_accuracy(chain: Chain, applied_torque, nominal_torque=None) -> ChainAc
     (:meth:`calc.domain.stiffness.Chain.at_torque`), so the chain's stiffness is its secant at
     ``applied_torque`` and the twist in the lost motion and positioning accuracy is the curve's.
 
+    Parameters
+    ----------
+    chain : Chain
+        The members of the chain.
+    applied_torque : pint.Quantity [N·m]
+        ``T`` at the output.
+    nominal_torque : pint.Quantity [N·m], optional
+        ``T_N`` for the 3 % rule.
+
+    Returns
+    -------
+    ChainAccuracy
+        Lost motion, positioning accuracy and repeatability.
+
+    Examples
+    --------
     >>> from calc.domain.stiffness import Component
     >>> gearbox = Component("EPL-W-064 10:1", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"),
     ...                     Q_(60, "arcsec"), Q_(40, "N*m"))
@@ -316,7 +438,23 @@ POSITION_COLUMNS = (
 
 @dataclass(frozen=True)
 class PositioningScatter:
-    """A measured positioning record: errors per approach, measured accuracy and repeatability."""
+    """A measured positioning record: errors per approach, measured accuracy and repeatability.
+
+    Parameters
+    ----------
+    target : pint.Quantity [deg]
+        The target of each approach.
+    error : pint.Quantity [arcmin]
+        The error of each approach (actual minus target).
+    accuracy : pint.Quantity [arcmin]
+        The largest ``|error|``.
+    repeatability : pint.Quantity [arcmin]
+        The largest spread (max - min error) at one target.
+    targets : int
+        How many targets.
+    source : str
+        Where the record came from.
+    """
 
     target: object  # quantity array [deg], per approach
     error: object  # quantity array [arcmin], per approach
@@ -333,6 +471,22 @@ def analyze_positions(target, actual, source: str = "positions") -> PositioningS
     Accuracy); repeatability the largest spread of the actual position over the approaches to one
     target (source, Positioning Repeatability). Every target must be approached at least twice.
 
+    Parameters
+    ----------
+    target : pint.Quantity [deg]
+        The target of each approach.
+    actual : pint.Quantity [deg]
+        The position reached.
+    source : str
+        Where the record came from, for error messages; default ``"positions"``.
+
+    Returns
+    -------
+    PositioningScatter
+        The errors, accuracy and repeatability.
+
+    Examples
+    --------
     >>> r = analyze_positions(Q_([0, 0, 90, 90], "deg"), Q_([0.01, 0.02, 90.01, 90.03], "deg"))
     >>> print(fmt(r.accuracy, "arcmin"), fmt(r.repeatability, "arcmin"))
     1.8 arcmin 1.2 arcmin
@@ -343,7 +497,8 @@ def analyze_positions(target, actual, source: str = "positions") -> PositioningS
     tgt = target.m_as("deg")
     keys, g, count = np.unique(tgt, return_inverse=True, return_counts=True)
     if (count < 2).any():
-        raise CalcError(f"{source}: expected each target approached at least twice, found target {keys[count < 2][0]:g}° once")
+        raise CalcError(f"{source}: expected each target approached at least twice, found target "
+                        f"{keys[count < 2][0]:g}° once")
     spread = np.full(len(keys), -np.inf)
     low = np.full(len(keys), np.inf)
     np.maximum.at(spread, g, err)
@@ -359,6 +514,17 @@ def analyze_positions(target, actual, source: str = "positions") -> PositioningS
 
 
 def read_positions(path) -> PositioningScatter:
-    """Read and analyse a positioning record: a CSV file with ``target [unit]`` and ``actual [unit]``."""
+    """Read and analyse a positioning record: a CSV file with ``target [unit]`` and ``actual [unit]``.
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file.
+
+    Returns
+    -------
+    PositioningScatter
+        Its analysis (:func:`analyze_positions`).
+    """
     m = read_measurement(path, POSITION_COLUMNS)
     return analyze_positions(m["target"], m["actual"], source=str(path))

@@ -39,7 +39,13 @@ the function only while the fingerprint is the formula's own.
 
 
 def package_formulas() -> list[Formula]:
-    """Every formula defined in the package's modules, by module name, then in the order defined."""
+    """Every formula defined in the package's modules, by module name, then in the order defined.
+
+    Returns
+    -------
+    list of Formula
+        The formulas.
+    """
     # The domain layer, this package, defines the formulas.
     for info in pkgutil.iter_modules([str(Path(__file__).parent)]):
         importlib.import_module(f"{__package__}.{info.name}")
@@ -52,7 +58,18 @@ def package_formulas() -> list[Formula]:
 
 
 def function_name(formula: Formula) -> str:
-    """``calc.domain.gearbox.T_2max`` → ``gearbox__T_2max``."""
+    """``calc.domain.gearbox.T_2max`` → ``gearbox__T_2max``.
+
+    Parameters
+    ----------
+    formula : Formula
+        A formula of the package.
+
+    Returns
+    -------
+    str
+        Its function's name in the generated module.
+    """
     return re.sub(r"\W", "_", formula.key.removeprefix("calc.domain.").replace(".", "__"))
 
 
@@ -71,7 +88,18 @@ def _import_line(name: str, value) -> str | None:
 
 
 def module_text(formulas: list[Formula] | None = None) -> str:
-    """The text of ``calc/core/formula_numeric.py`` for ``formulas`` (default: the package's)."""
+    """The text of ``calc/core/formula_numeric.py``.
+
+    Parameters
+    ----------
+    formulas : list of Formula, optional
+        The formulas; default: the package's.
+
+    Returns
+    -------
+    str
+        Python source.
+    """
     formulas = package_formulas() if formulas is None else formulas
     imports, bodies, entries = set(), [], []
     for f in formulas:
@@ -88,6 +116,13 @@ def module_text(formulas: list[Formula] | None = None) -> str:
 
 
 def main() -> int:
+    """Write ``calc/core/formula_numeric.py`` from the package's formulas.
+
+    Returns
+    -------
+    int
+        The exit status, 0.
+    """
     text = module_text()
     TARGET.write_text(text)
     print(f"wrote {TARGET.relative_to(TARGET.parent.parent)}: {text.count('def ')} formulas")

@@ -4,7 +4,8 @@ few moments of the cycle, exactly, without a pass over the samples per pair.
 Through a gearbox of ratio ``i`` and efficiency ``η``, with ``J = J_motor + J_1`` on the motor
 shaft, the motor torque of sample ``k`` is (:data:`calc.domain.motor.T_1_drive`, :data:`calc.domain.motor.T_1_back`)
 
-* driving (``T_2 · ω_2 >= 0``): ``T_1k = J · i · α_2k + T_2k / (i · η) = (T_2k + x_D · α_2k) / (i · η)``, ``x_D = J · i² · η``;
+* driving (``T_2 · ω_2 >= 0``): ``T_1k = J · i · α_2k + T_2k / (i · η) = (T_2k + x_D · α_2k) / (i · η)``,
+  ``x_D = J · i² · η``;
 * driven back: ``T_1k = J · i · α_2k + T_2k · η / i = (T_2k + x_B · α_2k) · η / i``, ``x_B = J · i² / η``.
 
 Which samples drive depends on the load alone, not on the pair. So
@@ -34,14 +35,26 @@ import numpy as np
 from ..core.checks import within_rating
 
 #: How :func:`search` picks a pair among the feasible ones.
-RULE = ("the smallest adequate motor (lowest rated torque, a tie to the lower rotor inertia), then the smallest adequate "
-        "gearbox for it (lowest rated torque of the gearbox), then the lowest RMS utilization of the motor, then the lower ratio")
+RULE = ("the smallest adequate motor (lowest rated torque, a tie to the lower rotor inertia), then the smallest "
+        "adequate "
+        "gearbox for it (lowest rated torque of the gearbox), then the lowest RMS utilization of the motor, then the "
+        "lower ratio")
 
 
 @dataclass(frozen=True)
 class Envelope:
     """``E(x) = max_k |T_k + x · α_k|`` for ``x >= 0`` over a set of samples: the lines of the
-    upper envelope, by increasing slope, and the ``x`` where each next one takes over."""
+    upper envelope, by increasing slope, and the ``x`` where each next one takes over.
+
+    Parameters
+    ----------
+    intercepts : numpy.ndarray [N·m]
+        ``T_k`` of each line of the envelope.
+    slopes : numpy.ndarray [rad/s²]
+        ``α_k`` of each line, increasing.
+    breaks : numpy.ndarray
+        The ``x`` where each next line takes over (one fewer than the lines), increasing.
+    """
 
     intercepts: np.ndarray
     slopes: np.ndarray
@@ -49,7 +62,20 @@ class Envelope:
 
     @classmethod
     def of(cls, T, alpha) -> "Envelope":
-        """The envelope of the lines ``±(T_k + x · α_k)`` (an empty set gives E = 0)."""
+        """The envelope of the lines ``±(T_k + x · α_k)`` (an empty set gives E = 0).
+
+        Parameters
+        ----------
+        T : numpy.ndarray [N·m]
+            The samples' output torques.
+        alpha : numpy.ndarray [rad/s²]
+            The samples' output accelerations.
+
+        Returns
+        -------
+        Envelope
+            Its lines and breaks.
+        """
         b = np.concatenate((T, -T, [0.0]))  # the zero line: no sample, no torque
         a = np.concatenate((alpha, -alpha, [0.0]))
         # Of lines of one slope only the highest counts; a trapezoidal cycle has few slopes.
@@ -88,7 +114,21 @@ class Envelope:
 @dataclass(frozen=True)
 class CycleMoments:
     """What the motor torque through any gearbox with any motor needs of a sampled cycle at the
-    gearbox output: its duration, the five sums and the two envelopes of the module's docstring."""
+    gearbox output: its duration, the five sums and the two envelopes of the module's docstring.
+
+    Parameters
+    ----------
+    duration : float [s]
+        ``Σ t_k``.
+    A : float [rad²/s³]
+        ``Σ t_k α_2k²``.
+    S_D, S_B : float [N·m·rad/s]
+        ``Σ t_k α_2k T_2k`` over the driving and the driven-back samples.
+    Q_D, Q_B : float [N²·m²·s]
+        ``Σ t_k T_2k²`` over the driving and the driven-back samples.
+    drive, back : Envelope
+        The envelopes of the driving and the driven-back samples.
+    """
 
     duration: float
     A: float
@@ -101,8 +141,24 @@ class CycleMoments:
 
     @classmethod
     def of(cls, dt, torque, speed, alpha) -> "CycleMoments":
-        """From each sample's duration [s], output torque [N·m], output speed [rad/s] and output
-        acceleration [rad/s²] (floats, samples on the one axis)."""
+        """The moments of a sampled cycle (floats, samples on the one axis).
+
+        Parameters
+        ----------
+        dt : numpy.ndarray [s]
+            Each sample's duration.
+        torque : numpy.ndarray [N·m]
+            Its output torque.
+        speed : numpy.ndarray [rad/s]
+            Its output speed.
+        alpha : numpy.ndarray [rad/s²]
+            Its output acceleration.
+
+        Returns
+        -------
+        CycleMoments
+            The sums and envelopes.
+        """
         dt, T, w, a = (np.asarray(x, float) for x in (dt, torque, speed, alpha))
         back = T * w < 0  # calc.domain.motor.driven_back: a hold at rest drives
         d = ~back
@@ -122,12 +178,32 @@ def motor_torques(m: CycleMoments, i, eta, J) -> tuple[np.ndarray, np.ndarray]:
     The example's cycle without the rotor term (i = 10, η = 0.97; :func:`calc.domain.motor.motor_load`):
     peak 60 / 9.7 = 6.186 N·m, RMS 2.647 N·m.
 
-    >>> m = CycleMoments.of([0.2, 0.6, 0.2, 1.0], [60.0, 20.0, -45.0, 0.0], [15.7, 31.4, 15.7, 0.0], [0.0, 0.0, 0.0, 0.0])
+    Parameters
+    ----------
+    m : CycleMoments
+        The cycle's moments.
+    i : numpy.ndarray [1]
+        The gearboxes' ratios.
+    eta : numpy.ndarray [1]
+        Their efficiencies.
+    J : numpy.ndarray [kg·m²]
+        ``J_motor + J_1``.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The peak and the RMS motor torque [N·m], broadcast.
+
+    Examples
+    --------
+    >>> m = CycleMoments.of([0.2, 0.6, 0.2, 1.0], [60.0, 20.0, -45.0, 0.0], [15.7, 31.4, 15.7, 0.0],
+    ...                     [0.0, 0.0, 0.0, 0.0])
     >>> [round(float(x), 4) for x in motor_torques(m, 10.0, 0.97, 0.0)]
     [6.1856, 2.647]
     """
     i, eta, J = np.broadcast_arrays(*(np.asarray(x, float) for x in (i, eta, J)))
-    square = ((J * i) ** 2 * m.A + 2 * J * (m.S_D / eta + m.S_B * eta) + m.Q_D / (i * eta) ** 2 + m.Q_B * (eta / i) ** 2) / m.duration
+    square = ((J * i) ** 2 * m.A + 2 * J * (m.S_D / eta + m.S_B * eta)
+              + m.Q_D / (i * eta) ** 2 + m.Q_B * (eta / i) ** 2) / m.duration
     rms = np.sqrt(np.maximum(square, 0.0))  # rounding may leave a zero RMS a hair below zero
     x = J * i * i
     peak = np.maximum(m.drive(x * eta) / (i * eta), m.back(x / eta) * eta / i)
@@ -136,7 +212,21 @@ def motor_torques(m: CycleMoments, i, eta, J) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass
 class Combinations:
-    """Every (gearbox row, motor) pair of :func:`search`: arrays of shape (gearbox rows, motors)."""
+    """Every (gearbox row, motor) pair of :func:`search`: arrays of shape (gearbox rows, motors).
+
+    Parameters
+    ----------
+    peak : numpy.ndarray [N·m]
+        ``max |T_1|``.
+    rms : numpy.ndarray [N·m]
+        ``T_1rms``.
+    utilization : numpy.ndarray [1]
+        The highest of the pair's utilizations (gearbox and motor).
+    feasible : numpy.ndarray of bool
+        The pair passes.
+    pick : tuple of int or None
+        ``(gearbox row, motor)`` by :data:`RULE`; None where no pair is feasible.
+    """
 
     peak: np.ndarray  # max |T_1| [N·m]
     rms: np.ndarray  # T_1rms [N·m]
@@ -145,7 +235,8 @@ class Combinations:
     pick: tuple[int, int] | None  # (gearbox row, motor) by RULE; None where no pair is feasible
 
 
-def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict, inertia_ratio_limit: float = 10.0) -> Combinations:
+def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict,
+           inertia_ratio_limit: float = 10.0) -> Combinations:
     """Check every pair of a gearbox row and a motor against the cycle, and pick one (:data:`RULE`).
 
     ``top_speed``: the highest output speed [rad/s]. ``gearboxes``: arrays over the rows (each at
@@ -158,6 +249,24 @@ def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dic
     A pair is feasible where the gearbox passes, its T_2B takes the motor's peak torque, the motor's
     peak and RMS torque and its top speed ``n_2max · i`` are within the motor's ratings, and
     ``λ = (J_1 + J_L / i²) / J_motor`` is at most ``inertia_ratio_limit`` (E6).
+
+    Parameters
+    ----------
+    moments : CycleMoments
+        The cycle at the gearbox output.
+    top_speed : float [rad/s]
+        The highest output speed.
+    gearboxes : dict
+        Arrays over the gearbox rows, as above.
+    motors : dict
+        Arrays over the motors, as above.
+    inertia_ratio_limit : float [1]
+        The highest ``λ`` allowed; default 10.
+
+    Returns
+    -------
+    Combinations
+        Every pair and the pick.
     """
     g = {k: np.asarray(v, float)[:, None] for k, v in gearboxes.items() if k != "J_L"}
     mo = {k: np.asarray(v, float)[None, :] for k, v in motors.items()}
@@ -170,7 +279,8 @@ def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dic
     rows, cols = np.nonzero(feasible)
     pick = None
     if len(rows):
-        keys = (g["i"][rows, 0], rms[rows, cols] / mo["rated_torque"][0, cols], g["size"][rows, 0], mo["J"][0, cols], mo["rated_torque"][0, cols])
+        keys = (g["i"][rows, 0], rms[rows, cols] / mo["rated_torque"][0, cols], g["size"][rows, 0], mo["J"][0, cols],
+                mo["rated_torque"][0, cols])
         best = np.lexsort(keys)[0]
         pick = (int(rows[best]), int(cols[best]))
     return Combinations(peak, rms, utilization, feasible, pick)

@@ -7,17 +7,19 @@ elastomer coupling's torque is further multiplied by a temperature factor (E9). 
 the spring of a two-mass system whose natural frequency ``f_e`` must be at least twice the
 excitation frequency of the drive (E7). That system leaves out every other spring of the drive
 train: given the members around the coupling (:class:`DriveTrain`), the first mode ``f_1`` of the
-whole chain (:mod:`calc.domain.torsion`) is checked against the same ``2 f_er``. A line shaft's stiffness comes from its two bellows and
-its tube at the case's shaft distance; a safety coupling's disengagement torque ``T_A`` must lie
-in the size's adjustable range and above the peak torque of normal operation (E10).
+whole chain (:mod:`calc.domain.torsion`) is checked against the same ``2 f_er``. A line shaft's
+stiffness comes from its two bellows and its tube at the case's shaft distance; a safety
+coupling's disengagement torque ``T_A`` must lie in the size's adjustable range and above the peak
+torque of normal operation (E10).
 
 Every row of a catalog (or of the requested type) is checked at once, as numpy arrays over the
 rows. The case's inertias are those of the machine without the coupling: each candidate's own
 inertia is added, half to each side (E7).
 
 Ranking rule: passing candidates first, published rows before illustrative ones (as for
-gearboxes); among them the smallest adequate size, measured by the rated torque ``T_KN``, then the larger margin (lower worst utilization); failing candidates
-after, closest to passing first. Ties go by part name (:func:`calc.core.checks.rank`).
+gearboxes); among them the smallest adequate size, measured by the rated torque ``T_KN``, then the
+larger margin (lower worst utilization); failing candidates after, closest to passing first. Ties
+go by part name (:func:`calc.core.checks.rank`).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -107,7 +110,8 @@ SCHEMA = Schema(
 #: disengagement torque T_A (Mayr's EAS-compact tables give no separate rated torque): the torque
 #: it passes is then bounded by T_A, which E10 checks.
 _TYPE_NEEDS = {
-    "bellows": ("T_KN",), "elastomer": ("T_KN",), "safety": ("T_Amin", "T_Amax"), "line-shaft": ("T_KN", "C_T", "C_tube", "H"),
+    "bellows": ("T_KN",), "elastomer": ("T_KN",), "safety": ("T_Amin", "T_Amax"),
+    "line-shaft": ("T_KN", "C_T", "C_tube", "H"),
 }
 
 # Symbols of the source's sizing section.
@@ -161,14 +165,18 @@ M_Nt = Formula(
 M_Smax = Formula(
     Symbol("M_Smax", r"M_{S\,\mathrm{max}}", "torque", "N*m", "peak torque with the start and temperature factors"),
     (
-        Symbol("T_S", "T_{S}", "torque", "N*m", "peak torque at the coupling (the source's M_N: a drive-side shock with S_A)"),
+        Symbol("T_S", "T_{S}", "torque", "N*m",
+               "peak torque at the coupling (the source's M_N: a drive-side shock with S_A)"),
         Symbol("S_z", "S_{z}", "dimensionless", "", "start factor (starts per hour)"),
         _K_T,
     ),
     lambda sp, T_S, S_z, K_T: sp.Mul(T_S, S_z, K_T, evaluate=False),
-    "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing of "
-    "elastomer couplings EK (T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature factor S_υ); "
-    "Mayr ROBA-ES B.9.6.EN p. 26 (S_z, S_δ); T_S read as the source's M_N (a drive-side shock: M_a · J_load / (J_load + J_drive) · S_A)",
+    "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing "
+    "of "
+    "elastomer couplings EK (T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature "
+    "factor S_υ); "
+    "Mayr ROBA-ES B.9.6.EN p. 26 (S_z, S_δ); T_S read as the source's M_N (a drive-side shock: M_a · J_load / (J_load "
+    "+ J_drive) · S_A)",
 )
 
 
@@ -224,6 +232,20 @@ def start_factor(starts_per_hour, table, where: str = "starts_per_hour"):
     """Start factor ``S_z`` of an elastomer coupling for a number of starts per hour, from a
     maker's table (:func:`calc.data.bands.factor_table` ``("starts", name)``), scalar or array.
 
+    Parameters
+    ----------
+    starts_per_hour : pint.Quantity [1/h]
+        Starts per hour, scalar or array.
+    table : BandTable
+        ``S_z`` against starts per hour.
+    where : str
+        The key, for error messages; default ``"starts_per_hour"``.
+
+    Returns
+    -------
+    float or numpy.ndarray [1]
+        ``S_z``.
+
     Examples
     --------
     Mayr ROBA-ES (B.9.6.EN p. 26): 0-100 starts per hour 1, 101-200 1.2, 201-400 1.4, 401-800
@@ -242,15 +264,17 @@ def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "tem
 
     Parameters
     ----------
-    temperature : Quantity [temperature]
+    temperature : pint.Quantity [°C]
         Operating temperature (``Q_(60, "degC")``; a temperature difference is refused).
     table : calc.data.bands.BandTable
         The factor by temperature band, the higher factor at a boundary. Default: the source's
         table, :data:`TEMPERATURE_FACTORS`.
+    where : str
+        The key, for error messages; default ``"temperature"``.
 
     Returns
     -------
-    float or ndarray
+    float or numpy.ndarray [1]
         The factor ``K_ϑ`` that multiplies ``M_N``.
 
     Notes
@@ -267,17 +291,34 @@ def temperature_factor(temperature, table=TEMPERATURE_FACTORS, where: str = "tem
     """
     t = as_kind(temperature, "temperature", where)
     if any(name.startswith("delta_") for name in t.units._units):
-        raise CalcError(f"{where}: expected a temperature such as \"60 degC\", found {t:~P}, which is a temperature difference")
+        raise CalcError(f"{where}: expected a temperature such as \"60 degC\", found {t:~P}, which is a temperature "
+                        "difference")
     kelvin = np.asarray(t.m_as("K"))
     if np.any(kelvin < 0):
-        raise CalcError(f"{where}: expected a temperature above absolute zero (-273.15 °C), found {sig(kelvin[kelvin < 0][0] - 273.15)} °C")
+        raise CalcError(f"{where}: expected a temperature above absolute zero (-273.15 °C), found "
+                        f"{sig(kelvin[kelvin < 0][0] - 273.15)} °C")
     return table.lookup(t, where)
 
 
 @dataclass(frozen=True)
 class CouplingCheck(CheckArray):
     """A :class:`calc.core.checks.CheckArray` that may apply to some rows only (a safety coupling's
-    T_A range), and says why it cannot be made where a value is missing."""
+    T_A range), and says why it cannot be made where a value is missing.
+
+    Parameters
+    ----------
+    applies : numpy.ndarray of bool, optional
+        The rows it applies to; None: every row.
+    missing : str or numpy.ndarray of str
+        Why a row without a rated value is not checked; one text, or one per row.
+    lower_bound : bool
+        ``least <= value``: the rated side is the value checked; default False.
+    optional : bool
+        A row without a rating is reported as not checked, and passes; default False.
+    informs : bool
+        Reported for information: it decides nothing (a drive train the case gives in part);
+        default False.
+    """
 
     applies: object = None  # bool array over the rows; None: every row
     missing: object = "the catalog gives no rated value"  # text, or one text per row
@@ -295,11 +336,36 @@ class CouplingCheck(CheckArray):
         return ok if self.applies is None else ok | ~self.applies
 
     def applies_to(self, row: int) -> bool:
+        """Whether the check applies to a row.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        bool
+            True where it is made for the row.
+        """
         return True if self.applies is None else bool(self.applies[row])
 
     def at(self, row: int, governs: bool = True):
         """This check for one row; a row an optional check cannot be made for says why, and
-        decides nothing."""
+        decides nothing.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+        governs : bool
+            Whether it decides the row's verdict; default True.
+
+        Returns
+        -------
+        Check
+            The row's check.
+        """
         check = super().at(row, governs and not self.informs)
         if self.informs:
             # The verdict it would give, shown though it decides nothing; none where it cannot be made.
@@ -313,7 +379,18 @@ class CouplingCheck(CheckArray):
         return check
 
     def reason(self, row: int) -> str:
-        """Why the row fails this check: the excess, the shortfall, or what is missing."""
+        """Why the row fails this check: the excess, the shortfall, or what is missing.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        str
+            The reason as a line of text.
+        """
         if not self.made:
             return f"{self.text}: not checked, {self.not_made}"
         u = self.utilization[row]
@@ -322,7 +399,8 @@ class CouplingCheck(CheckArray):
             return f"{self.text}: not checked, {missing}"
         if self.lower_bound:
             return (
-                f"{self.text}: {fmt(self.rated[row], self.unit)} is below the least {fmt(self.required[row], self.unit)}, "
+                f"{self.text}: {fmt(self.rated[row], self.unit)} is below the least "
+                f"{fmt(self.required[row], self.unit)}, "
                 f"{sig(100 * (1 - 1 / u), 3)} % short"
             )
         return super().reason(row)
@@ -331,10 +409,20 @@ class CouplingCheck(CheckArray):
 @dataclass(frozen=True)
 class DriveTrain:
     """The drive train around the coupling (:mod:`calc.domain.torsion`), every member referred to the
-    coupling's shaft: ``drive`` the members before it, ``load`` those after it, drive to load.
-    ``missing`` names the members the case does not give; the chain is then incomplete, and the
-    check of its first mode is reported for information only. ``shaft`` says which shaft the
-    members are referred to."""
+    coupling's shaft.
+
+    Parameters
+    ----------
+    drive : tuple of Member
+        The members before the coupling, drive to load.
+    load : tuple of Member
+        The members after it, drive to load.
+    missing : tuple of str
+        The members the case does not give; the chain is then incomplete, and the check of its
+        first mode is reported for information only.
+    shaft : str
+        Which shaft the members are referred to; default ``"the coupling's shaft"``.
+    """
 
     drive: tuple
     load: tuple
@@ -348,7 +436,26 @@ class DriveTrain:
 
 @dataclass(kw_only=True)
 class CouplingCandidate(selection.Candidate):
-    """One coupling with its checks and key figures, as every output lists it."""
+    """One coupling with its checks and key figures, as every output lists it (the fields of
+    :class:`calc.core.selection.Candidate`, and these).
+
+    Parameters
+    ----------
+    type : str
+        One of :data:`TYPES`.
+    f_e : Value [Hz]
+        The two-mass natural frequency (no value where the catalog lacks C_T or J).
+    f_1 : Value [Hz] or None
+        The drive train's first mode; None without the drive train.
+    C_T : Value [N·m/rad]
+        Its torsional stiffness.
+    temperature_factor : float
+        ``K_ϑ`` [1].
+    required_torque : Value [N·m]
+        ``M_N · K_ϑ``.
+    peak_torque_required : Value [N·m] or None
+        ``M_Smax``; None without the start factor.
+    """
 
     type: str
     f_e: Value  # the two-mass natural frequency (no value where the catalog lacks C_T or J)
@@ -361,7 +468,49 @@ class CouplingCandidate(selection.Candidate):
 
 @dataclass
 class CouplingSelection(Selection):
-    """The candidate couplings, checked and ranked. Arrays run over the rows of ``catalog``."""
+    """The candidate couplings, checked and ranked. Arrays run over the rows of ``catalog``.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        The rows checked.
+    M_N : pint.Quantity [N·m]
+        Scalar, before the temperature factor.
+    T_op : pint.Quantity [N·m]
+        Peak torque of normal operation, ``M_N`` with ``S_A = 1``.
+    temperature_factor : numpy.ndarray [1]
+        ``K_ϑ`` per row (1 for all but elastomer couplings).
+    M_Nt : pint.Quantity [N·m]
+        Required torque per row.
+    start_factor : float or None
+        ``S_z`` at the case's starts per hour; None without a start-factor table.
+    M_Smax : pint.Quantity [N·m] or None
+        Peak torque with ``S_z`` and ``K_ϑ`` per row (elastomer couplings); None without ``S_z``.
+    C_T : pint.Quantity [N·m/rad]
+        Torsional stiffness per row (a line shaft's at the case's shaft distance).
+    J_A : pint.Quantity [kg·cm²]
+        Drive-side inertia per row, with half the coupling (E7).
+    J_L : pint.Quantity [kg·cm²]
+        Load-side inertia per row, with half the coupling (E7).
+    f_e : pint.Quantity [Hz]
+        Two-mass natural frequency per row.
+    checks : list of CouplingCheck
+        Every check.
+    passes : numpy.ndarray of bool
+        Every check made passes.
+    worst : numpy.ndarray [1]
+        Highest utilization of the checks that apply (inf where one cannot be made).
+    order : numpy.ndarray of int
+        The rows, best first.
+    notes : list of str
+        What is not checked, and why.
+    drive_train : DriveTrain, optional
+        The members around the coupling, as the case gives them.
+    chain : Chain, optional
+        The drive train lumped, its arrays over the rows (None without ``drive_train``).
+    modes : pint.Quantity [Hz], optional
+        Its natural frequencies per row, lowest first (rows × modes).
+    """
 
     catalog: Catalog
     M_N: object  # scalar quantity, before the temperature factor
@@ -400,6 +549,18 @@ class CouplingSelection(Selection):
         )
 
     def row_type(self, row: int) -> str:
+        """The type of a row.
+
+        Parameters
+        ----------
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        str
+            One of :data:`TYPES`.
+        """
         return str(self.catalog.text["type"][row])
 
 
@@ -409,6 +570,16 @@ def candidates_frame(selection: CouplingSelection):
     Columns: ``rank``, ``part``, ``type``, ``verdict`` (PASS/FAIL), ``M_N·K_ϑ [N·m]``,
     ``T_KN [N·m]``, ``f_e [Hz]`` (NaN where the catalog lacks C_T or J), ``worst utilization``
     and ``reasons`` (each failed check; empty for a pass). Values are not rounded.
+
+    Parameters
+    ----------
+    selection : CouplingSelection
+        The checked rows.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per candidate.
     """
     import pandas as pd
 
@@ -481,9 +652,9 @@ def select_coupling(
     ----------
     catalog : Catalog
         Rows of :data:`SCHEMA`.
-    accel_torque : Quantity [torque] or None
+    accel_torque : pint.Quantity [N·m] or None
         ``M_a``, acceleration torque of the motor.
-    drive_inertia, load_inertia : Quantity [inertia] or None
+    drive_inertia, load_inertia : pint.Quantity [kg·cm²] or None
         ``J_drive`` and ``J_load`` without the coupling (with a coupling between motor and
         gearbox, ``J_load`` is ``J_L / i² + J_1``, E8).
 
@@ -491,25 +662,25 @@ def select_coupling(
         (the torque checks ``T_KN``, ``T_Kmax``, ``T_op <= T_A`` need all three, the resonance
         check the two inertias) are not made, naming the missing value as ``sources`` gives it
         (by key; default ``<where>.<key>``), and no coupling is chosen; the others are made.
-    excitation_frequency : Quantity [frequency]
+    excitation_frequency : pint.Quantity [Hz]
         ``f_er`` of the drive (E7).
     shaft_1, shaft_2 : Bore or str
         The shafts as ordered (``"19 mm k6"``, see :func:`calc.domain.fits.parse_bore`).
-    service_factor : float or Quantity [dimensionless]
+    service_factor : float or pint.Quantity [1]
         ``S_A`` (E8), 1 or more; default 2.5.
-    temperature : Quantity [temperature], optional
+    temperature : pint.Quantity [°C], optional
         Operating temperature; needed when elastomer couplings are among the candidates.
-    speed : Quantity [speed], optional
+    speed : pint.Quantity [rpm], optional
         Highest speed of the coupling.
-    disengagement_torque : Quantity [torque], optional
+    disengagement_torque : pint.Quantity [N·m], optional
         ``T_A``; only, and always, for safety couplings.
-    shaft_distance : Quantity [length], optional
+    shaft_distance : pint.Quantity [mm], optional
         ``A``; only, and always, for line shafts.
     temperature_factors : calc.data.bands.BandTable
         ``K_ϑ`` against temperature; default the source's table (E9).
     start_factors : calc.data.bands.BandTable, optional
         ``S_z`` against starts per hour (a maker's table); with it the ``T_Kmax`` check is made.
-    starts_per_hour : Quantity [1/time], optional
+    starts_per_hour : pint.Quantity [1/h], optional
         Starts per hour; needed with ``start_factors``.
     drive_train : DriveTrain, optional
         The members around the coupling. With it, each candidate is put in the chain (half its
@@ -518,10 +689,14 @@ def select_coupling(
         information where the case leaves a member out.
     where : str
         Prefix of error messages (the case file and section).
+    sources : dict, optional
+        The key that gives each of the acceleration torque and the two inertias, by argument name,
+        for the message of a check not made.
 
     Returns
     -------
     CouplingSelection
+        The candidates checked and ranked.
 
     Examples
     --------
@@ -539,16 +714,68 @@ def select_coupling(
         raise CalcError(f"{where}: no coupling to check, the catalog has no rows")
     check_types(catalog)
     types = catalog.text["type"]
-    is_el, is_safety, is_line = (types == "elastomer"), (types == "safety"), (types == "line-shaft")
-    n = len(catalog)
-    given = {"accel_torque": accel_torque, "drive_inertia": drive_inertia, "load_inertia": load_inertia}
-    absent = [(sources or {}).get(key, f"{where}.{key}") for key, value in given.items() if value is None]
-    absent_inertia = [(sources or {}).get(key, f"{where}.{key}") for key in ("drive_inertia", "load_inertia") if given[key] is None]
+    kinds = _Kinds(types == "elastomer", types == "safety", types == "line-shaft")
+    case = _checked_case(catalog, kinds, dict(accel_torque=accel_torque, drive_inertia=drive_inertia,
+                                              load_inertia=load_inertia), excitation_frequency, shaft_1, shaft_2,
+                         service_factor, speed, disengagement_torque, shaft_distance, where, sources or {})
+    K_T, S_z = _load_factors(kinds.elastomer, temperature, temperature_factors, start_factors, starts_per_hour, where)
+
+    m_n = M_N(M_a=case.M_a, J_load=case.J_load, J_drive=case.J_drive, S_A=case.S_A)
+    t_op = M_N(M_a=case.M_a, J_load=case.J_load, J_drive=case.J_drive, S_A=Q_(1.0, ""))
+    m_nt = M_Nt(M_N=m_n, K_T=Q_(K_T, ""))
+    j_a, j_l, c_t, fe, chain, modes = _two_masses_and_chain(catalog, case, kinds.line_shaft, drive_train, where)
+    notes = []
+    checks, m_smax = _operating_checks(catalog, case, kinds, c_t, fe, modes, drive_train, (m_n, m_nt, K_T, S_z), notes)
+    checks += _fit_checks(catalog, case, kinds, t_op)
+    passes, worst, order = _verdicts(catalog, checks)
+    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst,
+                             order, notes,
+                             drive_train, chain, modes)
+
+
+class _Kinds(NamedTuple):
+    """Which rows are of the types with checks of their own (bool arrays over the rows)."""
+
+    elastomer: np.ndarray
+    safety: np.ndarray
+    line_shaft: np.ndarray
+
+
+@dataclass(frozen=True)
+class _Case:
+    """The case's values for the coupling, checked and in their kinds; a torque or inertia the case
+    leaves out is NaN, and ``no_torque``/``no_inertia`` say which checks that stops (None: none)."""
+
+    M_a: object
+    J_drive: object
+    J_load: object
+    f_er: object
+    S_A: object
+    bore_1: Bore
+    bore_2: Bore
+    speed: object
+    T_A: object
+    A: object
+    no_torque: str | None
+    no_inertia: str | None
+
+
+def _checked_case(catalog, kinds, given, excitation_frequency, shaft_1, shaft_2, service_factor, speed,
+                  disengagement_torque, shaft_distance, where, sources) -> _Case:
+    """The arguments of :func:`select_coupling` checked, in the order it names them (``given``: the
+    acceleration torque and the two inertias, each possibly None)."""
+    types = catalog.text["type"]
+    accel_torque, drive_inertia, load_inertia = given["accel_torque"], given["drive_inertia"], given["load_inertia"]
+    absent = [sources.get(key, f"{where}.{key}") for key, value in given.items() if value is None]
+    absent_inertia = [sources.get(key, f"{where}.{key}") for key in ("drive_inertia", "load_inertia")
+                      if given[key] is None]
     no_torque = "needs " + " and ".join(absent) if absent else None
     no_inertia = "needs " + " and ".join(absent_inertia) if absent_inertia else None
     M_a = Q_(math.nan, "N*m") if accel_torque is None else as_kind(accel_torque, "torque", f"{where}.accel_torque")
-    J_drive = Q_(math.nan, "kg*m**2") if drive_inertia is None else as_kind(drive_inertia, "inertia", f"{where}.drive_inertia")
-    J_load = Q_(math.nan, "kg*m**2") if load_inertia is None else as_kind(load_inertia, "inertia", f"{where}.load_inertia")
+    J_drive = (Q_(math.nan, "kg*m**2") if drive_inertia is None
+               else as_kind(drive_inertia, "inertia", f"{where}.drive_inertia"))
+    J_load = (Q_(math.nan, "kg*m**2") if load_inertia is None
+              else as_kind(load_inertia, "inertia", f"{where}.load_inertia"))
     f_er = as_kind(excitation_frequency, "frequency", f"{where}.excitation_frequency")
     S_A = as_kind(service_factor, "dimensionless", f"{where}.service_factor")
     _positive(None if accel_torque is None else M_a, f"{where}.accel_torque", "a torque", "N*m")
@@ -556,145 +783,198 @@ def select_coupling(
     _positive(None if load_inertia is None else J_load, f"{where}.load_inertia", "an inertia", "kg*cm**2")
     _positive(f_er, f"{where}.excitation_frequency", "a frequency", "Hz")
     if not S_A.m_as("") >= 1:
-        raise CalcError(f"{where}.service_factor: expected a load factor S_A of 1 or more (E8), found {sig(S_A.m_as(''))}")
+        raise CalcError(
+            f"{where}.service_factor: expected a load factor S_A of 1 or more (E8), found {sig(S_A.m_as(''))}"
+        )
     bore_1, bore_2 = _as_bore(shaft_1, f"{where}.shaft_1"), _as_bore(shaft_2, f"{where}.shaft_2")
     if speed is not None:
         speed = as_kind(speed, "speed", f"{where}.speed")
         _positive(speed, f"{where}.speed", "a speed", "rpm")
-    T_A = None if disengagement_torque is None else as_kind(disengagement_torque, "torque", f"{where}.disengagement_torque")
+    T_A = (None if disengagement_torque is None
+           else as_kind(disengagement_torque, "torque", f"{where}.disengagement_torque"))
     A = None if shaft_distance is None else as_kind(shaft_distance, "length", f"{where}.shaft_distance")
     _positive(T_A, f"{where}.disengagement_torque", "a torque", "N*m")
     _positive(A, f"{where}.shaft_distance", "a distance", "mm")
-    _only_for(T_A, is_safety, types, "safety", f"{where}.disengagement_torque", "a disengagement torque T_A (E10)")
-    _only_for(A, is_line, types, "line-shaft", f"{where}.shaft_distance", "a distance between shafts")
+    _only_for(T_A, kinds.safety, types, "safety", f"{where}.disengagement_torque", "a disengagement torque T_A (E10)")
+    _only_for(A, kinds.line_shaft, types, "line-shaft", f"{where}.shaft_distance", "a distance between shafts")
     if A is not None:
-        two_hubs = 2 * catalog["H"][is_line]
+        two_hubs = 2 * catalog["H"][kinds.line_shaft]
         if not np.any(A >= two_hubs):
             raise CalcError(
                 f"{where}.shaft_distance: {fmt(A, 'mm')} is shorter than the two hubs of every line shaft "
                 f"(2 H = {', '.join(fmt(h, 'mm') for h in two_hubs)}); expected A >= 2 H"
             )
+    return _Case(M_a, J_drive, J_load, f_er, S_A, bore_1, bore_2, speed, T_A, A, no_torque, no_inertia)
 
-    notes = []
-    K_T = np.ones(n)
+
+def _load_factors(is_el, temperature, temperature_factors, start_factors, starts_per_hour, where: str):
+    """``K_ϑ`` per row (1 for all but elastomer couplings, E9) and ``S_z`` at the case's starts per
+    hour (None without a start-factor table)."""
+    K_T = np.ones(len(is_el))
     if is_el.any():
         if temperature is None:
             raise CalcError(
-                f"{where}.temperature: elastomer couplings need the operating temperature for their factor (E9), found none; "
-                "give it, or a type that is not elastomer"
+                f"{where}.temperature: elastomer couplings need the operating temperature for their factor (E9), "
+                "found none; give it, or a type that is not elastomer"
             )
         K_T = np.where(is_el, temperature_factor(temperature, temperature_factors, where=f"{where}.temperature"), 1.0)
     elif temperature is not None:
-        temperature_factor(temperature, temperature_factors, where=f"{where}.temperature")  # checked, though no candidate uses it
+        # Checked, though no candidate uses it.
+        temperature_factor(temperature, temperature_factors, where=f"{where}.temperature")
     S_z = None
     if start_factors is not None:
         if starts_per_hour is None:
-            raise CalcError(f"{where}.starts_per_hour: the start-factor table needs the number of starts per hour, found none")
+            raise CalcError(
+                f"{where}.starts_per_hour: the start-factor table needs the number of starts per hour, found none"
+            )
         S_z = float(start_factor(starts_per_hour, start_factors, f"{where}.starts_per_hour"))
     elif starts_per_hour is not None:
-        raise CalcError(f"{where}.starts_per_hour: starts per hour are read against a start-factor table; give coupling.start_factors as well")
+        raise CalcError(
+            f"{where}.starts_per_hour: starts per hour are read against a start-factor table; "
+            "give coupling.start_factors as well"
+        )
+    return K_T, S_z
 
-    m_n = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=S_A)
-    t_op = M_N(M_a=M_a, J_load=J_load, J_drive=J_drive, S_A=Q_(1.0, ""))
-    m_nt = M_Nt(M_N=m_n, K_T=Q_(K_T, ""))
+
+def _two_masses_and_chain(catalog: Catalog, case: _Case, is_line, drive_train, where: str):
+    """Per row: ``J_A``, ``J_L``, the stiffness ``C_T`` (a line shaft's at the case's distance), the
+    two-mass ``f_e``, and with ``drive_train`` its chain and natural frequencies (else None)."""
     with np.errstate(invalid="ignore", divide="ignore"):
-        j_a = J_A(J_drive=J_drive, J_K=catalog["J"])
-        j_l = J_L(J_load=J_load, J_K=catalog["J"])
+        j_a = J_A(J_drive=case.J_drive, J_K=catalog["J"])
+        j_l = J_L(J_load=case.J_load, J_K=catalog["J"])
         # A line shaft's catalog C_T is its bellows alone; its own stiffness needs the tube's length.
-        c_line = np.full(n, np.nan)
-        if A is not None:
-            fits_in = A >= 2 * catalog["H"]
-            c_line = np.where(fits_in, C_T_line(C_B=catalog["C_T"], Z=Z(A=A, H=catalog["H"]), C_tube=catalog["C_tube"]).m_as("N*m/rad"), np.nan)
+        c_line = np.full(len(catalog), np.nan)
+        if case.A is not None:
+            fits_in = case.A >= 2 * catalog["H"]
+            line = C_T_line(C_B=catalog["C_T"], Z=Z(A=case.A, H=catalog["H"]), C_tube=catalog["C_tube"])
+            c_line = np.where(fits_in, line.m_as("N*m/rad"), np.nan)
         c_t = Q_(np.where(is_line, c_line, catalog["C_T"].m_as("N*m/rad")), "N*m/rad")
         fe = f_e(C_T=c_t, J_A=j_a, J_L=j_l)
         chain = modes = None
         if drive_train is not None:
             # Half the coupling on each end of its spring, as J_A and J_L take it (E7).
             half = catalog["J"] / 2
-            chain = lumped((*drive_train.drive, Member("coupling", half, c_t, half), *drive_train.load), f"{where}: drive train")
+            members = (*drive_train.drive, Member("coupling", half, c_t, half), *drive_train.load)
+            chain = lumped(members, f"{where}: drive train")
             modes = chain.natural_frequencies()
+    return j_a, j_l, c_t, fe, chain, modes
 
-    def full(q):
-        return q * np.ones(n)
 
-    def bore_checks(k: int, bore: Bore) -> list:
-        missing = f"the catalog gives no bore range for hub {k}"
-        return [
-            CouplingCheck(f"d_{k}min", "coupling", f"d_{k}min <= D_{k}", catalog[f"d_{k}min"], full(bore.nominal), "mm", None, missing, True),
-            CouplingCheck(f"d_{k}max", "coupling", f"D_{k} <= d_{k}max", full(bore.nominal), catalog[f"d_{k}max"], "mm", None, missing),
-        ]
+def _over_rows(q, n: int):
+    """A scalar quantity repeated over ``n`` rows."""
+    return q * np.ones(n)
 
+
+def _operating_checks(catalog, case: _Case, kinds: _Kinds, c_t, fe, modes, drive_train, torques, notes: list):
+    """The checks of the coupling in operation: rated torque, resonance (two-mass and, with the
+    drive train, its first mode), peak torque with a start-factor table, speed. ``torques`` is
+    ``(M_N, M_N·K_ϑ, K_ϑ, S_z)``; what is not checked is added to ``notes``. Returns the checks and
+    the peak torque ``M_Smax`` per row (None without ``S_z``)."""
+    n = len(catalog)
+    m_n, m_nt, K_T, S_z = torques
     no_c, no_j = np.isnan(c_t.magnitude), np.isnan(catalog["J"].magnitude)
-    empty = np.where(no_c & no_j, "torsional stiffness C_T and inertia J", np.where(no_c, "torsional stiffness C_T", "inertia J"))
+    empty = np.where(no_c & no_j, "torsional stiffness C_T and inertia J",
+                     np.where(no_c, "torsional stiffness C_T", "inertia J"))
+
     def needs(what: str):
         return np.where(
-            is_line & (A is None),
+            kinds.line_shaft & (case.A is None),
             "a line shaft's stiffness needs coupling.shaft_distance",
-            np.char.add(np.char.add(f"{what} needs the coupling's ", empty.astype(str)), ", which the catalog leaves empty"),
+            np.char.add(np.char.add(f"{what} needs the coupling's ", empty.astype(str)),
+                        ", which the catalog leaves empty"),
         )
 
-    no_f_e = needs("f_e")
+    f_min = _over_rows(f_e_min(f_er=case.f_er), n)
+    rated = ~(kinds.safety & np.isnan(catalog["T_KN"].magnitude))
     checks = [
-        CouplingCheck(
-            "T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", ~(is_safety & np.isnan(catalog["T_KN"].magnitude)),
-            not_made=no_torque,
-        ),
-        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", full(f_e_min(f_er=f_er)), fe, "Hz", None, no_f_e, not_made=no_inertia),
+        CouplingCheck("T_KN", "coupling", "M_N · K_ϑ <= T_KN", m_nt, catalog["T_KN"], "N*m", rated,
+                      not_made=case.no_torque),
+        CouplingCheck("f_e", "coupling", "2 f_er <= f_e", f_min, fe, "Hz", None, needs("f_e"),
+                      not_made=case.no_inertia),
     ]
     if modes is not None:
         checks.append(
-            CouplingCheck("f_1", "coupling", "2 f_er <= f_1", full(f_e_min(f_er=f_er)), modes[:, 0], "Hz", None,
-                          needs("the first mode of the drive train"), informs=not drive_train.complete, not_made=no_inertia)
+            CouplingCheck("f_1", "coupling", "2 f_er <= f_1", f_min, modes[:, 0], "Hz", None,
+                          needs("the first mode of the drive train"), informs=not drive_train.complete,
+                          not_made=case.no_inertia)
         )
         if not drive_train.complete:
             notes.append(
-                f"the drive train's first mode f_1 is reported for information: the case does not give {', '.join(drive_train.missing)}"
+                "the drive train's first mode f_1 is reported for information: the case does not give "
+                + ", ".join(drive_train.missing)
             )
     m_smax = None
     if S_z is not None:
         m_smax = M_Smax(T_S=m_n, S_z=Q_(S_z, ""), K_T=Q_(K_T, ""))
         checks.append(
             CouplingCheck(
-                "T_Kmax", "coupling", "T_S · S_z · K_ϑ <= T_Kmax", m_smax, catalog["T_Kmax"], "N*m", is_el,
-                "the catalog gives no maximum torque T_Kmax", optional=True, not_made=no_torque,
+                "T_Kmax", "coupling", "T_S · S_z · K_ϑ <= T_Kmax", m_smax, catalog["T_Kmax"], "N*m", kinds.elastomer,
+                "the catalog gives no maximum torque T_Kmax", optional=True, not_made=case.no_torque,
             )
         )
-    elif is_el.any():
-        notes.append("coupling.start_factors not given: the peak-torque check T_S · S_z · K_ϑ <= T_Kmax of elastomer couplings is not made")
-    if speed is not None:
-        checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", full(speed), catalog["n_max"], "rpm", None, "the catalog gives no maximum speed"))
+    elif kinds.elastomer.any():
+        notes.append("coupling.start_factors not given: the peak-torque check T_S · S_z · K_ϑ <= T_Kmax "
+                     "of elastomer couplings is not made")
+    if case.speed is not None:
+        checks.append(CouplingCheck("n_max", "coupling", "n <= n_max", _over_rows(case.speed, n), catalog["n_max"],
+                                    "rpm",
+                                    None, "the catalog gives no maximum speed"))
     else:
         notes.append("coupling.speed not given: the speed check n <= n_max is not made")
-    checks += bore_checks(1, bore_1) + bore_checks(2, bore_2)
-    if is_safety.any():
-        nan_torque = Q_(np.full(n, np.nan), "N*m")
-        t_a = nan_torque if T_A is None else full(T_A)
+    return checks, m_smax
+
+
+def _fit_checks(catalog, case: _Case, kinds: _Kinds, t_op) -> list:
+    """The checks of how the coupling fits the machine: each hub's bore range, a safety coupling's
+    ``T_A`` range and ``T_op <= T_A`` (E10), a line shaft's distance."""
+    n = len(catalog)
+    checks = []
+    for k, bore in ((1, case.bore_1), (2, case.bore_2)):
+        missing = f"the catalog gives no bore range for hub {k}"
+        D = _over_rows(bore.nominal, n)
+        checks += [
+            CouplingCheck(f"d_{k}min", "coupling", f"d_{k}min <= D_{k}", catalog[f"d_{k}min"], D, "mm", None, missing,
+                          True),
+            CouplingCheck(f"d_{k}max", "coupling", f"D_{k} <= d_{k}max", D, catalog[f"d_{k}max"], "mm", None, missing),
+        ]
+    if kinds.safety.any():
+        t_a = Q_(np.full(n, np.nan), "N*m") if case.T_A is None else _over_rows(case.T_A, n)
         missing = "needs coupling.disengagement_torque (E10)"
         checks += [
-            CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", is_safety, missing, True),
-            CouplingCheck("T_Amax", "coupling", "T_A <= T_Amax", t_a, catalog["T_Amax"], "N*m", is_safety, missing),
-            CouplingCheck("T_A", "coupling", "T_op <= T_A", full(t_op), t_a, "N*m", is_safety, missing, not_made=no_torque),
+            CouplingCheck("T_Amin", "coupling", "T_Amin <= T_A", catalog["T_Amin"], t_a, "N*m", kinds.safety, missing,
+                          True),
+            CouplingCheck("T_Amax", "coupling", "T_A <= T_Amax", t_a, catalog["T_Amax"], "N*m", kinds.safety, missing),
+            CouplingCheck("T_A", "coupling", "T_op <= T_A", _over_rows(t_op, n), t_a, "N*m", kinds.safety, missing,
+                          not_made=case.no_torque),
         ]
-    if is_line.any():
-        a = Q_(np.full(n, np.nan), "mm") if A is None else full(A)
-        missing = "needs coupling.shaft_distance" if A is None else "the catalog gives no longest shaft distance A_max"
+    if kinds.line_shaft.any():
+        a = Q_(np.full(n, np.nan), "mm") if case.A is None else _over_rows(case.A, n)
+        missing = ("needs coupling.shaft_distance" if case.A is None
+                   else "the catalog gives no longest shaft distance A_max")
         checks += [
-            CouplingCheck("A_min", "coupling", "2 H <= A", 2 * catalog["H"], a, "mm", is_line, "needs coupling.shaft_distance", True),
-            CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", is_line, missing),
+            CouplingCheck("A_min", "coupling", "2 H <= A", 2 * catalog["H"], a, "mm", kinds.line_shaft,
+                          "needs coupling.shaft_distance", True),
+            CouplingCheck("A_max", "coupling", "A <= A_max", a, catalog["A_max"], "mm", kinds.line_shaft, missing),
         ]
+    return checks
+
+
+def _verdicts(catalog: Catalog, checks: list):
+    """Per row: whether it passes every check made, its worst utilization, and the ranking."""
     made = [c for c in checks if c.made]  # a check the case cannot feed decides no row (CouplingSelection.not_made)
     passes = np.logical_and.reduce([c.passes for c in made])
     # A row an optional check cannot be made for counts as unburdened by it (it decides nothing there).
     utilizations = np.array(
-        [np.where(c.applies if c.applies is not None else True, np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0)
+        [np.where(c.applies if c.applies is not None else True,
+                  np.nan_to_num(c.utilization, nan=0.0) if c.optional else c.utilization, 0.0)
          for c in made if not c.informs]
     )
     worst = np.max(np.where(np.isnan(utilizations), np.inf, utilizations), axis=0)
     size = catalog["T_KN"].m_as("N*m")
-    size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)  # a safety coupling rated by its T_A range alone
+    # a safety coupling rated by its T_A range alone
+    size = np.where(np.isnan(size), catalog["T_Amax"].m_as("N*m"), size)
     order = rank(passes, size, worst, catalog.parts, later=catalog.illustrative)
-    return CouplingSelection(catalog, m_n, t_op, K_T, m_nt, S_z, m_smax, c_t, j_a, j_l, fe, checks, passes, worst, order, notes,
-                             drive_train, chain, modes)
+    return passes, worst, order
 
 
 def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str) -> None:
@@ -703,7 +983,8 @@ def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str)
     if value is not None and not rows_of_type.all():
         others = sorted(set(types[~rows_of_type]))
         raise CalcError(
-            f"{where}: {what} is for {type_name} couplings only, but the candidates include {', '.join(others)} couplings; "
+            f"{where}: {what} is for {type_name} couplings only, but the candidates include {', '.join(others)} "
+            "couplings; "
             f"set type = \"{type_name}\" or remove the key"
         )
     if value is None and rows_of_type.all():
@@ -716,6 +997,24 @@ def order_lines(part: str, coupling_type: str, bores, disengagement_torque=None,
     Series and size, each shaft with its fit or limits and keyway (``D1 = 14 mm k6``), the
     disengagement torque ``T_A`` for a safety coupling (E10), the distance between shafts for a
     line shaft.
+
+    Parameters
+    ----------
+    part : str
+        The coupling's part (series and size).
+    coupling_type : str
+        One of :data:`TYPES`.
+    bores : list of Bore
+        The shafts, hub 1 first.
+    disengagement_torque : pint.Quantity [N·m], optional
+        ``T_A``, for a safety coupling only.
+    shaft_distance : pint.Quantity [mm], optional
+        The distance between shafts, for a line shaft only (written in the unit given).
+
+    Returns
+    -------
+    list of str
+        The order's lines.
 
     Examples
     --------
@@ -732,7 +1031,8 @@ def order_lines(part: str, coupling_type: str, bores, disengagement_torque=None,
     lines = [f"{ORDER_TITLES[coupling_type]} {part}"]
     lines += [f"D{k} = {bore.text}" for k, bore in enumerate(bores, start=1)]
     if disengagement_torque is not None:
-        lines.append(f"T_A (disengagement torque) = {fmt(as_kind(disengagement_torque, 'torque', f'{part}: T_A'), 'N*m')}")
+        lines.append("T_A (disengagement torque) = "
+                     f"{fmt(as_kind(disengagement_torque, 'torque', f'{part}: T_A'), 'N*m')}")
     if shaft_distance is not None:
         distance = as_kind(shaft_distance, "length", f"{part}: distance between shafts")
         lines.append(f"Distance between shafts = {sig(distance.magnitude)} {distance.units:~}")  # in the unit given
@@ -744,8 +1044,22 @@ SIDES = ("input", "output")
 
 
 def check_types(catalog: Catalog) -> None:
-    """Each row's type is known and the row fills the columns its type needs; raises
-    :class:`CalcError` naming the file, row and column."""
+    """Each row's type is known and the row fills the columns its type needs.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column.
+    """
     types = catalog.text["type"]
 
     def where(j):
@@ -759,4 +1073,5 @@ def check_types(catalog: Catalog) -> None:
         for column in columns:
             empty = np.flatnonzero((types == t) & np.isnan(catalog[column].magnitude))
             if len(empty):
-                raise CalcError(f"{where(empty[0])}, column {column}: a {t} coupling needs a value, found an empty cell")
+                raise CalcError(f"{where(empty[0])}, column {column}: a {t} coupling needs a value, found an empty "
+                                "cell")

@@ -20,10 +20,18 @@ ACCEL, CONST, DECEL, PAUSE = range(4)
 class SampledCycle:
     """One cycle of the load at the gearbox output, one entry per sample (read-only arrays).
 
-    ``dt`` is the time each sample stands for [s] (they sum to the cycle time); ``speed`` [rad/s]
-    and ``acceleration`` [rad/s²] are signed, forwards positive; ``torque`` [N·m] is the torque the
-    gearbox output gives the mechanism, signed like the speed, and during a dwell the torque that
-    holds the load at rest (zero where nothing pulls on it or a brake holds it).
+    Parameters
+    ----------
+    dt : numpy.ndarray [s]
+        The time each sample stands for (they sum to the cycle time).
+    speed : numpy.ndarray [rad/s]
+        Signed, forwards positive.
+    acceleration : numpy.ndarray [rad/s²]
+        Signed, forwards positive.
+    torque : numpy.ndarray [N·m]
+        The torque the gearbox output gives the mechanism, signed like the speed, and during a
+        dwell the torque that holds the load at rest (zero where nothing pulls on it or a brake
+        holds it).
     """
 
     dt: np.ndarray

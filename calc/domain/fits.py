@@ -83,7 +83,8 @@ _CLASS = re.compile(r"^(?P<letter>[A-Za-z]{1,2})(?P<grade>\d{1,2})$")
 def _band(size_mm: np.ndarray, where: str) -> np.ndarray:
     if np.any(~(size_mm > 0)) or np.any(size_mm > SIZE_BANDS_MM[-1]):
         bad = size_mm[(~(size_mm > 0)) | (size_mm > SIZE_BANDS_MM[-1])].flat[0]
-        raise CalcError(f"{where}: expected a nominal size over 0 up to 500 mm (the ISO 286 tables here), found {sig(bad)} mm")
+        raise CalcError(f"{where}: expected a nominal size over 0 up to 500 mm (the ISO 286 tables here), found "
+                        f"{sig(bad)} mm")
     return np.searchsorted(SIZE_BANDS_MM, size_mm, side="left")
 
 
@@ -101,6 +102,20 @@ def _half_it(grade: int, band: np.ndarray) -> np.ndarray:
 def split_class(tolerance_class: str, where: str = "tolerance class") -> tuple[str, int]:
     """``"k6"`` → ``("k", 6)``, checked against the classes this module covers.
 
+    Parameters
+    ----------
+    tolerance_class : str
+        Such as ``"k6"`` or ``"H7"``.
+    where : str
+        The key, for error messages; default ``"tolerance class"``.
+
+    Returns
+    -------
+    tuple of (str, int)
+        The letter(s) and the grade.
+
+    Examples
+    --------
     >>> split_class("k6"), split_class("H7")
     (('k', 6), ('H', 7))
     """
@@ -132,10 +147,12 @@ def limit_deviations(nominal, tolerance_class: str, where: str = "tolerance clas
 
     Parameters
     ----------
-    nominal : Quantity [length]
+    nominal : pint.Quantity [mm]
         Nominal size, scalar or array, over 0 up to 500 mm.
     tolerance_class : str
         Such as ``"k6"`` (shaft) or ``"H7"`` (hole).
+    where : str
+        The key, for error messages; default ``"tolerance class"``.
 
     Returns
     -------
@@ -184,10 +201,22 @@ def limit_deviations(nominal, tolerance_class: str, where: str = "tolerance clas
 class Bore:
     """A shaft (or bore) as ordered: nominal size, tolerance, limits and keyway.
 
-    ``tolerance`` is the ISO class (``"k6"``) or the limits as written (``'+0/-.0005"'``), or
-    None when the text gives none; ``lower`` and ``upper`` are the limits of size (None without
-    a tolerance). ``member`` is ``"shaft"`` for a lower-case ISO class, ``"hole"`` for an upper-case
-    one, None for written limits. ``text`` is the order text (``14 mm k6``).
+    Parameters
+    ----------
+    text : str
+        The order text (``14 mm k6``).
+    nominal : pint.Quantity [mm or in]
+        The nominal size, in the text's unit.
+    tolerance : str or None
+        The ISO class (``"k6"``) or the limits as written (``'+0/-.0005"'``); None when the text
+        gives none.
+    member : str or None
+        ``"shaft"`` for a lower-case ISO class, ``"hole"`` for an upper-case one, None for written
+        limits.
+    lower, upper : pint.Quantity [mm or in] or None
+        The limits of size; None without a tolerance.
+    keyway : pint.Quantity [mm or in] or None
+        The keyway's width; None without one.
     """
 
     text: str
@@ -204,7 +233,13 @@ class Bore:
         return "in" if self.nominal.units == ureg.inch else f"{self.nominal.units:~}"
 
     def limits_text(self) -> str:
-        """``19.002 / 19.015 mm``: the smallest and largest size, in the text's unit."""
+        """``19.002 / 19.015 mm``: the smallest and largest size, in the text's unit.
+
+        Returns
+        -------
+        str
+            The limits as text.
+        """
         if self.lower is None:
             return "no tolerance given"
         digits = 4 if self.unit == "in" else 3
@@ -247,7 +282,9 @@ def _number(text: str, where: str, found: str) -> float:
     try:
         return float(Fraction(text)) if "/" in text else float(text)
     except ZeroDivisionError:
-        raise CalcError(f"{where}: expected a fraction with a denominator above zero, found {text!r} in {found!r}") from None
+        raise CalcError(
+            f"{where}: expected a fraction with a denominator above zero, found {text!r} in {found!r}"
+        ) from None
 
 
 def _spaced(text: str) -> str:
@@ -270,6 +307,18 @@ def parse_bore(text, where: str = "bore") -> Bore:
     Raises :class:`CalcError` naming ``where`` for a malformed text, an unknown unit or ISO class,
     a size outside the ISO tables, or limits that leave no tolerance.
 
+    Parameters
+    ----------
+    text : str
+        The order text.
+    where : str
+        The key, for error messages; default ``"bore"``.
+
+    Returns
+    -------
+    Bore
+        The shaft.
+
     Examples
     --------
     >>> b = parse_bore('1.00" +0/-.0005", x 1/8" keyway')
@@ -279,7 +328,8 @@ def parse_bore(text, where: str = "bore") -> Bore:
     '14.001 / 14.012 mm'
     """
     if not isinstance(text, str):
-        raise CalcError(f"{where}: expected a shaft size with its tolerance as text, such as {_EXAMPLES}, found {text!r}")
+        raise CalcError(f"{where}: expected a shaft size with its tolerance as text, such as {_EXAMPLES}, found "
+                        f"{text!r}")
     m = _BORE.match(text)
     if not m:
         raise CalcError(f"{where}: expected a shaft size with its tolerance such as {_EXAMPLES}, found {text!r}")
@@ -297,15 +347,18 @@ def parse_bore(text, where: str = "bore") -> Bore:
     elif m.group("tol"):
         tolerance = _spaced(m.group("tol"))
         if m.group("sym"):
-            dev = Q_(_number(m.group("sym"), where, text), _length_unit(m.group("sym_unit") or m.group("unit"), where, text))
+            dev = Q_(_number(m.group("sym"), where, text),
+                     _length_unit(m.group("sym_unit") or m.group("unit"), where, text))
             devs = (-dev, dev)
         else:
             devs = tuple(
-                Q_(_number(m.group(key), where, text), _length_unit(m.group(f"{key}_unit") or m.group("unit"), where, text)) for key in ("dev1", "dev2")
+                Q_(_number(m.group(key), where, text),
+                   _length_unit(m.group(f"{key}_unit") or m.group("unit"), where, text)) for key in ("dev1", "dev2")
             )
         lower, upper = sorted((nominal + d).to(unit) for d in devs)
         if not upper > lower:
-            raise CalcError(f"{where}: the limits in {text!r} leave no tolerance; expected an upper limit above the lower one")
+            raise CalcError(f"{where}: the limits in {text!r} leave no tolerance; expected an upper limit above the "
+                            "lower one")
     keyway = None
     order_text = size_text + (f" {tolerance}" if tolerance else "")
     if m.group("keyway"):

@@ -87,7 +87,8 @@ SCHEMA = Schema(
         Rule("efficiency eta in (0, 1]", lambda v: (v["eta"].m_as("") <= 1.0), "eta"),
         Rule(
             "a stiffness curve in all of T_L1, T_L2, K_1, K_2, K_3 or in none",
-            lambda v: np.isin(sum(np.isnan(v[name].magnitude).astype(int) for name in CURVE_COLUMNS), (0, len(CURVE_COLUMNS))),
+            lambda v: np.isin(sum(np.isnan(v[name].magnitude).astype(int) for name in CURVE_COLUMNS),
+                              (0, len(CURVE_COLUMNS))),
             "K_3",
         ),
         Rule("T_L2 > T_L1", lambda v: ~(v["T_L2"] <= v["T_L1"]), "T_L2"),
@@ -162,7 +163,8 @@ M_2k = Formula(
         Symbol("y_2", "y_{2}", "length", "mm", "distance of the axial force's line of action from the axis"),
         _F_2r,
         Symbol("x_2", "x_{2}", "length", "mm", "distance of the radial force from the output flange (lever arm)"),
-        Symbol("z_2", "z_{2}", "length", "mm", "distance from the output flange to the bearing's centre (catalog; 0 where not given)"),
+        Symbol("z_2", "z_{2}", "length", "mm",
+               "distance from the output flange to the bearing's centre (catalog; 0 where not given)"),
     ),
     lambda sp, F_2a, y_2, F_2r, x_2, z_2: sp.Add(F_2a * y_2, F_2r * sp.Add(x_2, z_2, evaluate=False), evaluate=False),
     "WITTENSTEIN alpha catalogues, output bearing: M_2k = F_2a · y_2 + F_2r · (x_2 + z_2), read as documented in "
@@ -172,7 +174,19 @@ M_2k = Formula(
 
 @dataclass(frozen=True)
 class OutputLoad:
-    """External forces on the gearbox output (``[load]``): each None where the case gives none."""
+    """External forces on the gearbox output (``[load]``): each None where the case gives none.
+
+    Parameters
+    ----------
+    axial_force : pint.Quantity [N], optional
+        ``F_2a``.
+    radial_force : pint.Quantity [N], optional
+        ``F_2r``.
+    lever_arm : pint.Quantity [mm], optional
+        ``x_2``, from the output flange to the radial force.
+    axial_radius : pint.Quantity [mm], optional
+        ``y_2``, from the axis to the axial force's line of action.
+    """
 
     axial_force: object = None  # F_2a
     radial_force: object = None  # F_2r
@@ -190,6 +204,18 @@ def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
     ``F_2a <= F_2A`` (axial), ``F_2r <= F_2R`` (radial) and ``M_2k <= M_2K`` (tilting moment,
     :data:`M_2k`), each made when the case gives its force; a row whose catalog gives no rating
     is not checked ("the catalog gives no F_2R") and does not fail. They govern in both modes.
+
+    Parameters
+    ----------
+    load : OutputLoad
+        The forces the case gives.
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+
+    Returns
+    -------
+    list of CheckArray
+        One check per force given, over the rows.
 
     Notes
     -----
@@ -212,9 +238,11 @@ def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
     checks = []
     zero = Q_(0.0, "mm")
     if load.axial_force is not None:
-        checks.append(CheckArray("F_2A", None, "F_2a <= F_2A", load.axial_force * np.ones(n), catalog["F_2A"], "N", unrated="the catalog gives no F_2A"))
+        checks.append(CheckArray("F_2A", None, "F_2a <= F_2A", load.axial_force * np.ones(n), catalog["F_2A"], "N",
+                                 unrated="the catalog gives no F_2A"))
     if load.radial_force is not None:
-        checks.append(CheckArray("F_2R", None, "F_2r <= F_2R", load.radial_force * np.ones(n), catalog["F_2R"], "N", unrated="the catalog gives no F_2R"))
+        checks.append(CheckArray("F_2R", None, "F_2r <= F_2R", load.radial_force * np.ones(n), catalog["F_2R"], "N",
+                                 unrated="the catalog gives no F_2R"))
     if load.given:
         z_2 = catalog["z_2"]
         moment = M_2k(
@@ -224,7 +252,8 @@ def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
             x_2=load.lever_arm if load.lever_arm is not None else zero,
             z_2=Q_(np.nan_to_num(z_2.m_as("mm")), "mm"),
         ) * np.ones(n)
-        checks.append(CheckArray("M_2K", None, "M_2k <= M_2K", moment, catalog["M_2K"], "N*m", unrated="the catalog gives no M_2K"))
+        checks.append(CheckArray("M_2K", None, "M_2k <= M_2K", moment, catalog["M_2K"], "N*m",
+                                 unrated="the catalog gives no M_2K"))
     return checks
 
 
@@ -236,8 +265,22 @@ def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
     takes the shaft (``d_hub >= d``) gives J_1; a row with hubs listed but none that fits has no
     J_1 (the hub check fails); a row with no hubs listed keeps the catalog's J_1.
 
-    Returns (J_1 [kg·cm²], d_hub [mm], d_hub_max [mm]) as float arrays over the rows.
+    Parameters
+    ----------
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+    hubs : Catalog or None
+        Rows of :data:`HUB_SCHEMA`, the clamping hubs of each gearbox.
+    motor_shaft : pint.Quantity [mm], optional
+        The motor's shaft diameter ``d``.
 
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ``(J_1 [kg·cm²], d_hub [mm], d_hub_max [mm])``, float arrays over the rows.
+
+    Examples
+    --------
     >>> from calc.data.catalog import load_catalog, resolve
     >>> cat = load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA)
     >>> hubs = load_catalog(resolve("gearbox-hubs", None, "catalog"), HUB_SCHEMA)
@@ -254,7 +297,8 @@ def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
     row_of = dict(zip(catalog.parts.tolist(), range(len(catalog))))  # a part's last row, as a comprehension would keep
     best = np.full(len(catalog), np.inf)
     best_J = np.full(len(catalog), np.nan)
-    for gearbox, d, j in zip(hubs.text["gearbox"].tolist(), hubs["d_hub"].m_as("mm").tolist(), hubs["J_1"].m_as("kg*cm**2").tolist()):
+    for gearbox, d, j in zip(hubs.text["gearbox"].tolist(), hubs["d_hub"].m_as("mm").tolist(),
+                             hubs["J_1"].m_as("kg*cm**2").tolist()):
         k = row_of.get(gearbox)
         if k is None:
             continue
@@ -270,11 +314,25 @@ def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
 def shock_factor(cycles_per_hour, table=SHOCK_FACTORS):
     """Shock factor ``f_s`` for ``Z_h`` cycles per hour (errata E4), scalar or array.
 
-    The table is :data:`SHOCK_FACTORS` unless another is given; a value within :data:`calc.core.checks.BOUNDARY_RTOL` below a
-    boundary counts as on it (:class:`calc.data.bands.BandTable`): a cycle of 0.1 + 0.1 + 0.1 + 2.1 s =
+    A value within :data:`calc.core.checks.BOUNDARY_RTOL` below a boundary counts as on it
+    (:class:`calc.data.bands.BandTable`): a cycle of 0.1 + 0.1 + 0.1 + 2.1 s =
     2.4000000000000004 s gives 1499.9999999999998 cycles per hour, which is 1500. A negative
     ``Z_h`` is refused.
 
+    Parameters
+    ----------
+    cycles_per_hour : pint.Quantity [1/h]
+        ``Z_h``, scalar or array.
+    table : BandTable
+        ``f_s`` against ``Z_h``; default :data:`SHOCK_FACTORS`.
+
+    Returns
+    -------
+    float or numpy.ndarray [1]
+        ``f_s``.
+
+    Examples
+    --------
     >>> [float(shock_factor(Q_(z, "1/hour"))) for z in (999, 1000, 1499, 1500, 2000, 3000)]
     [1.0, 1.1, 1.1, 1.3, 1.6, 2.0]
     >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
@@ -285,7 +343,24 @@ def shock_factor(cycles_per_hour, table=SHOCK_FACTORS):
 
 @dataclass(kw_only=True)
 class Candidate(selection.Candidate):
-    """One gearbox with its checks, as every output lists it."""
+    """One gearbox with its checks, as every output lists it (the fields of
+    :class:`calc.core.selection.Candidate`, and these).
+
+    Parameters
+    ----------
+    ratio : float
+        Its ratio ``i`` [1].
+    T_2max : Value [N·m], optional
+        The peak output torque; None without the motor's peak torque.
+    inertia_ratio : float, optional
+        ``λ`` (E6) [1]; None without the inertias.
+    J_1 : Value [kg·cm²], optional
+        Its input inertia for the clamping hub of ``J_1_hub`` (no value where unknown).
+    J_1_hub : Value [mm], optional
+        The hub bore ``J_1`` is for.
+    best_of_family : bool
+        The best-ranked passing candidate of its family.
+    """
 
     ratio: float
     T_2max: Value | None = None  # None without the motor's peak torque
@@ -300,6 +375,31 @@ class GearboxSelection(Selection):
     """The catalog rows at the desired ratio, checked and ranked.
 
     Arrays are over the rows of ``catalog`` in catalog order; ``order`` ranks them best first.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        The rows checked.
+    mode : str
+        The profile's operating mode, ``"S1"`` or ``"S5"`` (E3).
+    checks : list of CheckArray
+        Every check, governing or not.
+    T_2max : pint.Quantity [N·m] or None
+        The peak output torque per row; None without the motor's peak torque.
+    inertia_ratio : numpy.ndarray or None
+        ``λ`` per row [1]; None without the inertias.
+    passes : numpy.ndarray of bool
+        Every governing check that could be made passes.
+    worst : numpy.ndarray [1]
+        Highest utilization of the governing checks (NaN where one has no rating).
+    order : numpy.ndarray of int
+        The rows, best first.
+    J_1 : pint.Quantity [kg·cm²], optional
+        Each row's J_1 for its clamping hub (:func:`clamping_hubs`).
+    J_1_hub : pint.Quantity [mm], optional
+        The hub bore J_1 is for (NaN where unknown).
+    notes : list of str, optional
+        What the outputs say besides the checks.
     """
 
     catalog: Catalog
@@ -317,7 +417,18 @@ class GearboxSelection(Selection):
     candidate_type = Candidate
 
     def governs(self, check: CheckArray) -> bool:
-        """Whether a check decides the verdict (:func:`governs`)."""
+        """Whether a check decides the verdict (:func:`governs`).
+
+        Parameters
+        ----------
+        check : CheckArray
+            One of the selection's checks.
+
+        Returns
+        -------
+        bool
+            True for a governing check in the selection's mode.
+        """
         return governs(check, self.mode)
 
     @functools.cached_property
@@ -352,12 +463,45 @@ TRAIN = "drive train"
 def governs(check: CheckArray, mode: str) -> bool:
     """Whether a gearbox check decides the verdict in operating mode ``mode`` (E3): a check of that
     mode does; a check of no mode (the emergency stop, the output bearing, the clamping hub) does
-    in both, once it can be made."""
+    in both, once it can be made.
+
+    Parameters
+    ----------
+    check : CheckArray
+        The check.
+    mode : str
+        ``"S1"`` or ``"S5"``.
+
+    Returns
+    -------
+    bool
+        True for a governing check.
+    """
     return check.mode == mode if check.mode is not None else check.made
 
 
 def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
-    """The rows of ``catalog`` whose ratio equals ``ratio`` (to 1 part in 10⁶)."""
+    """The rows of ``catalog`` whose ratio equals ``ratio`` (to 1 part in 10⁶).
+
+    Parameters
+    ----------
+    catalog : Catalog
+        Rows of :data:`SCHEMA`.
+    ratio : float or pint.Quantity [1]
+        The ratio ``i``.
+    where : str
+        The key, for error messages; default ``"ratio"``.
+
+    Returns
+    -------
+    Catalog
+        The rows at that ratio, partial rows left out.
+
+    Raises
+    ------
+    CalcError
+        Where no usable row has the ratio, naming the catalog's ratios.
+    """
     i = as_kind(ratio, "dimensionless", where).m_as("")
     if not i > 0:
         raise CalcError(f"{where}: expected a ratio above zero, found {i:g}")
@@ -366,8 +510,10 @@ def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
     if not mask.any():
         usable = catalog["ratio"].m_as("")[~catalog.partial]
         ratios = ", ".join(f"{r:g}" for r in sorted(set(usable.tolist())))
-        partial = f" (only partial rows, never checked: {some_parts(catalog.parts[at_ratio])})" if at_ratio.any() else ""
-        raise CalcError(f"{where}: no gearbox in catalog {catalog.shown_name} has ratio {i:g}{partial}; its ratios are {ratios}")
+        partial = (f" (only partial rows, never checked: {some_parts(catalog.parts[at_ratio])})" if at_ratio.any()
+                   else "")
+        raise CalcError(f"{where}: no gearbox in catalog {catalog.shown_name} has ratio {i:g}{partial}; its ratios are "
+                        f"{ratios}")
     return catalog.rows(mask)
 
 
@@ -408,39 +554,48 @@ def select_gearbox(
     the excitation before the others (a row it fails, or cannot check for want of ``C_t21``), as it
     puts published rows before illustrative ones; the resonance itself is decided by the coupling
     that is chosen (:func:`calc.domain.coupling.select_coupling`), not here.
+
+    Parameters
+    ----------
+    profile : Profile
+        The load cycle at the gearbox output.
+    catalog : Catalog
+        Rows of :data:`SCHEMA`, at the desired ratio or one part.
+    motor_peak_torque : pint.Quantity [N·m], optional
+        ``T_1B``; without it ``T_2max`` is not checked.
+    motor_inertia : pint.Quantity [kg·cm²], optional
+        The motor's inertia, for the inertia ratio.
+    load_inertia : pint.Quantity [kg·cm²], optional
+        The load's inertia at the output, for the inertia ratio.
+    emergency_stop_torque : pint.Quantity [N·m], optional
+        ``T_2stop``; default ``T_1B · i``.
+    output_load : OutputLoad, optional
+        The forces on the output bearing.
+    hubs : Catalog, optional
+        Rows of :data:`HUB_SCHEMA`.
+    motor_shaft : pint.Quantity [mm], optional
+        The motor's shaft diameter.
+    shock_factors : BandTable
+        ``f_s`` against ``Z_h``; default :data:`SHOCK_FACTORS`.
+    coupling_span : CouplingSpan, optional
+        The couplings a case may fit between motor and gearbox.
+
+    Returns
+    -------
+    GearboxSelection
+        The rows checked and ranked.
     """
     d = duty(profile)
     i = catalog["ratio"]
-    seg = profile.moving_values()
-    checks = [
-        CheckArray("n_1N", "S1", "n_2m · i <= n_1N", n_1(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i), catalog["n_1N"], "rpm"),
-        CheckArray("T_2N", "S1", "T_2m <= T_2N", T_2m(**seg) * np.ones(len(catalog)), catalog["T_2N"], "N*m"),
-    ]
-    checks.append(CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"], "rpm"))
-    t2max = None
-    if motor_peak_torque is not None:
-        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle), shock_factors)
-        t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
-        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"))
-    else:
-        needs = "T_2max = T_1B · i · f_s · η needs the motor's peak torque T_1B (motor.peak_torque)"
-        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", None, catalog["T_2B"], "N*m", not_made=needs))
-    stop = "T_2stop <= T_2Not"
-    unrated = "the catalog gives no T_2Not"
-    if emergency_stop_torque is not None:
-        required = as_kind(emergency_stop_torque, "torque", "emergency_stop_torque") * np.ones(len(catalog))
-        checks.append(CheckArray("T_2Not", None, stop, required, catalog["T_2Not"], "N*m", unrated=unrated))
-    elif motor_peak_torque is not None:
-        checks.append(CheckArray("T_2Not", None, stop, T_2stop(T_1B=motor_peak_torque, i=i), catalog["T_2Not"], "N*m", unrated=unrated))
-    else:
-        needs = "the emergency-stop torque needs gearbox.emergency_stop_torque or the motor's peak torque (motor.peak_torque)"
-        checks.append(CheckArray("T_2Not", None, stop, None, catalog["T_2Not"], "N*m", not_made=needs, unrated=unrated))
+    checks, t2max = _duty_checks(profile, catalog, motor_peak_torque, shock_factors)
+    checks.append(_emergency_stop_check(catalog, emergency_stop_torque, motor_peak_torque))
     notes = []
     if output_load is not None and output_load.given:
         checks += bearing_checks(output_load, catalog)
         if output_load.radial_force is not None and np.isnan(catalog["z_2"].magnitude).any():
             notes.append(
-                "M_2k = F_2a · y_2 + F_2r · (x_2 + z_2) is taken at the output flange (z_2 = 0) where the catalog gives no "
+                "M_2k = F_2a · y_2 + F_2r · (x_2 + z_2) is taken at the output flange (z_2 = 0) where the catalog "
+                "gives no "
                 "z_2, which understates it by F_2r · z_2"
             )
     J_1, d_hub, d_max = clamping_hubs(catalog, hubs, motor_shaft)
@@ -451,8 +606,10 @@ def select_gearbox(
                            unrated="the catalog gives no C_t21, or no J_1 for the motor's shaft")
         checks.append(train)
         later = later | ~(train.passes & ~train.unrated_rows)
-        notes.append(f"f_1,max is the drive train's first mode with the one of {coupling_span.couplings} that gives it the highest; "
-                     "passing gearboxes whose f_1,max clears 2 f_er rank first; the coupling section checks the coupling it chooses")
+        notes.append(f"f_1,max is the drive train's first mode with the one of {coupling_span.couplings} that gives it "
+                     "the highest; "
+                     "passing gearboxes whose f_1,max clears 2 f_er rank first; the coupling section checks the "
+                     "coupling it chooses")
     if motor_shaft is not None:
         shaft = as_kind(motor_shaft, "length", "motor.shaft")
         checks.append(
@@ -473,6 +630,45 @@ def select_gearbox(
     )
 
 
+def _duty_checks(profile: Profile, catalog: Catalog, motor_peak_torque, shock_factors):
+    """The S1 checks (E1, E2) and the S5 checks (E5, E4) of every row, and ``T_2max`` per row (None
+    without the motor's peak torque, when the check of ``T_2B`` is not made)."""
+    i = catalog["ratio"]
+    seg = profile.moving_values()
+    checks = [
+        CheckArray("n_1N", "S1", "n_2m · i <= n_1N", n_1(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i),
+                   catalog["n_1N"], "rpm"),
+        CheckArray("T_2N", "S1", "T_2m <= T_2N", T_2m(**seg) * np.ones(len(catalog)), catalog["T_2N"], "N*m"),
+    ]
+    checks.append(CheckArray("n_1max", "S5", "n_2max · i <= n_1max", n_1(n_2=profile.n_2max, i=i), catalog["n_1max"],
+                             "rpm"))
+    t2max = None
+    if motor_peak_torque is not None:
+        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle), shock_factors)
+        t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
+        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"))
+    else:
+        needs = "T_2max = T_1B · i · f_s · η needs the motor's peak torque T_1B (motor.peak_torque)"
+        checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", None, catalog["T_2B"], "N*m", not_made=needs))
+    return checks, t2max
+
+
+def _emergency_stop_check(catalog: Catalog, emergency_stop_torque, motor_peak_torque) -> CheckArray:
+    """``T_2stop <= T_2Not`` for every row: the case's emergency-stop torque, else ``T_1B · i``; not
+    made without either."""
+    stop = "T_2stop <= T_2Not"
+    unrated = "the catalog gives no T_2Not"
+    if emergency_stop_torque is not None:
+        required = as_kind(emergency_stop_torque, "torque", "emergency_stop_torque") * np.ones(len(catalog))
+        return CheckArray("T_2Not", None, stop, required, catalog["T_2Not"], "N*m", unrated=unrated)
+    if motor_peak_torque is not None:
+        required = T_2stop(T_1B=motor_peak_torque, i=catalog["ratio"])
+        return CheckArray("T_2Not", None, stop, required, catalog["T_2Not"], "N*m", unrated=unrated)
+    needs = ("the emergency-stop torque needs gearbox.emergency_stop_torque or the motor's peak torque "
+             "(motor.peak_torque)")
+    return CheckArray("T_2Not", None, stop, None, catalog["T_2Not"], "N*m", not_made=needs, unrated=unrated)
+
+
 def candidates_table(selection: GearboxSelection):
     """Every check of every candidate as a pandas DataFrame, best candidate first.
 
@@ -482,13 +678,29 @@ def candidates_table(selection: GearboxSelection):
     (``pass``, ``FAIL``, or ``not checked`` where a check is not made or the row has no rating it
     may lack, such as ``T_2Not``). Values are not rounded; round them for display.
 
+    Parameters
+    ----------
+    selection : GearboxSelection
+        The checked rows.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per check of each candidate.
+
+    Examples
+    --------
     >>> from calc.data.catalog import load_catalog, resolve
     >>> from calc.domain.profile import Profile
-    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(240, "rpm"), Q_(40, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(240, "rpm"), Q_(40, "N*m")),
+    ...                            ("pause", Q_(1, "s"), None, None)])
     >>> rows = rows_at_ratio(load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA), 10)
     >>> t = candidates_table(select_gearbox(p, rows, motor_peak_torque=Q_(12, "N*m")))
-    >>> t.loc[t.part == "NPT035-10", ["check", "verdict"]].values.tolist()  # n_1N 3000 rpm at i = 10
-    [['n_2m · i <= n_1N', 'pass'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass'], ['T_2max <= T_2B', 'pass'], ['T_2stop <= T_2Not', 'pass']]
+    >>> verdicts = t.loc[t.part == "NPT035-10", ["check", "verdict"]].values.tolist()  # n_1N 3000 rpm at i = 10
+    >>> verdicts[:3]
+    [['n_2m · i <= n_1N', 'pass'], ['T_2m <= T_2N', 'pass'], ['n_2max · i <= n_1max', 'pass']]
+    >>> verdicts[3:]
+    [['T_2max <= T_2B', 'pass'], ['T_2stop <= T_2Not', 'pass']]
 
     ``T_2max`` = 12 N·m · 10 · 1.3 (Z_h = 1800 1/h) · 0.97 = 151.32 N·m against ``T_2B`` = 220 N·m;
     the emergency stop ``T_2stop`` = 12 N·m · 10 = 120 N·m against ``T_2Not`` = 480 N·m:
@@ -534,6 +746,16 @@ def candidates_summary(selection: GearboxSelection):
     its excess; empty for a pass), then ``catalog`` (the file of the row), ``family``, ``size``,
     ``best of family`` (the smallest adequate size of its family), ``J_1 [kg·cm²]`` and ``hub [mm]``
     (the clamping hub J_1 is for), ``doubtful`` (the row's doubtful figures) and ``source``.
+
+    Parameters
+    ----------
+    selection : GearboxSelection
+        The checked rows.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per candidate.
     """
     import pandas as pd
 

@@ -53,7 +53,8 @@ COLUMNS = (
 )
 
 stiffness_from_slope = Formula(
-    Symbol("C_t", "C_{t}", "stiffness", "N*m/arcmin", "torsional stiffness, slope of the loop from 50 % to 100 % of T_N"),
+    Symbol("C_t", "C_{t}", "stiffness", "N*m/arcmin",
+           "torsional stiffness, slope of the loop from 50 % to 100 % of T_N"),
     (
         Symbol("Delta_T", r"\Delta T", "torque", "N*m", "torque from 50 % to 100 % of T_N"),
         Symbol("Delta_phi", r"\Delta\varphi", "angle", "arcmin", "twist over that torque, from the fitted line"),
@@ -73,10 +74,12 @@ backlash_from_loop = Formula(
 )
 
 lost_motion_from_loop = Formula(
-    Symbol("phi_LM3", r"\varphi_{\mathrm{LM},3\%}", "angle", "arcmin", "lost motion, width of the loop over ±3 % of T_N"),
+    Symbol("phi_LM3", r"\varphi_{\mathrm{LM},3\%}", "angle", "arcmin",
+           "lost motion, width of the loop over ±3 % of T_N"),
     (
         Symbol("phi_max_3", r"\varphi_{\max,\pm 3\%}", "angle", "arcmin", "largest twist between -3 % and +3 % of T_N"),
-        Symbol("phi_min_3", r"\varphi_{\min,\pm 3\%}", "angle", "arcmin", "smallest twist between -3 % and +3 % of T_N"),
+        Symbol("phi_min_3", r"\varphi_{\min,\pm 3\%}", "angle", "arcmin",
+               "smallest twist between -3 % and +3 % of T_N"),
     ),
     lambda sp, hi, lo: hi - lo,
     "source, Lost Motion: maximum deflection - minimum deflection at ±3 % of nominal torque; errata E12",
@@ -85,7 +88,19 @@ lost_motion_from_loop = Formula(
 
 @dataclass(frozen=True)
 class Loop:
-    """A torque/twist loop: two quantity arrays in the order recorded, and where it came from."""
+    """A torque/twist loop: two quantity arrays in the order recorded, and where it came from.
+
+    Parameters
+    ----------
+    torque : pint.Quantity [N·m]
+        Torque at the output, per sample.
+    twist : pint.Quantity [arcmin]
+        Twist at the output, per sample.
+    source : str
+        Where it came from (a file), for error messages; default ``"loop"``.
+    comments : tuple of str
+        The file's comment lines.
+    """
 
     torque: object
     twist: object
@@ -97,14 +112,40 @@ class Loop:
 
 
 def read_loop(path) -> Loop:
-    """Read a measured loop: a CSV file with columns ``torque [unit]`` and ``twist [unit]``."""
+    """Read a measured loop: a CSV file with columns ``torque [unit]`` and ``twist [unit]``.
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file.
+
+    Returns
+    -------
+    Loop
+        Its samples in the order recorded.
+    """
     m = read_measurement(path, COLUMNS)
     return Loop(m["torque"], m["twist"], source=str(path), comments=m.comments)
 
 
 def write_loop(path, loop: Loop, comments: tuple[str, ...]) -> None:
-    """Write a loop as a measurement file (torque in N·m, twist in arcmin)."""
-    write_measurement(path, {"torque": loop.torque, "twist": loop.twist}, {"torque": "N*m", "twist": "arcmin"}, comments)
+    """Write a loop as a measurement file (torque in N·m, twist in arcmin).
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file to write.
+    loop : Loop
+        The loop.
+    comments : tuple of str
+        The file's comment lines.
+
+    Returns
+    -------
+    None
+    """
+    write_measurement(path, {"torque": loop.torque, "twist": loop.twist}, {"torque": "N*m", "twist": "arcmin"},
+                      comments)
 
 
 @dataclass(frozen=True)
@@ -122,11 +163,11 @@ class LoopModel:
 
     Parameters
     ----------
-    stiffness : Quantity [torque / angle]
+    stiffness : pint.Quantity [N·m/arcmin]
         ``C``, the slope of the loop between 50 % and 100 % of the nominal torque (``C_t21``).
-    backlash : Quantity [angle]
+    backlash : pint.Quantity [arcmin]
         Width of the loop at 0 N·m.
-    nominal_torque : Quantity [torque]
+    nominal_torque : pint.Quantity [N·m]
         ``T_N`` (``T_2N``), the torque the loop is drawn to.
     soft_share : float
         The soft zone's extra twist ``φ_s`` as a share of the elastic twist at ``T_N`` (0.15).
@@ -165,20 +206,24 @@ class LoopModel:
             raise CalcError(f"loop model: nominal_torque: expected a torque above zero, found {self.nominal_torque:~P}")
         for name in ("soft_share", "friction"):
             if not 0 <= getattr(self, name) < 1:
-                raise CalcError(f"loop model: {name}: expected a share from 0 to below 1, found {getattr(self, name)!r}")
+                raise CalcError(f"loop model: {name}: expected a share from 0 to below 1, found "
+                                f"{getattr(self, name)!r}")
         for name in ("soft_width", "gap_width"):
             if not 0 < getattr(self, name) < 0.25:
-                raise CalcError(f"loop model: {name}: expected a share above 0 and below 0.25, found {getattr(self, name)!r}")
+                raise CalcError(f"loop model: {name}: expected a share above 0 and below 0.25, found "
+                                f"{getattr(self, name)!r}")
         t_f = self.friction * t_n
         if t_f == 0:
             if j > 0:
-                raise CalcError("loop model: friction: a loop with backlash needs friction above zero to hold the output at one side of the gap at 0 N·m")
+                raise CalcError("loop model: friction: a loop with backlash needs friction above zero to hold the "
+                                "output at one side of the gap at 0 N·m")
             return
         # Width at 0 N·m is 2 e(T_f); the gap makes up what stiffness and soft zone do not.
         without_gap = 2 * self._e(t_f, gap=0.0)
         if without_gap > j:
             raise CalcError(
-                f"loop model: friction {self.friction:g} × T_N alone opens the loop by {Q_(without_gap, 'rad').m_as('arcmin'):.3g} arcmin at 0 N·m, "
+                f"loop model: friction {self.friction:g} × T_N alone opens the loop by "
+                f"{Q_(without_gap, 'rad').m_as('arcmin'):.3g} arcmin at 0 N·m, "
                 f"more than the backlash {self.backlash:~P}; give less friction"
             )
         object.__setattr__(self, "_gap", (j - without_gap) / np.tanh(self.friction / self.gap_width))
@@ -196,7 +241,18 @@ class LoopModel:
         return torque / c + phi_s * np.tanh(torque / t_s) + 0.5 * g * np.tanh(torque / t_g)
 
     def middle_curve(self, torque):
-        """``e(T)``, the twist through the middle of the loop, for a torque quantity (array)."""
+        """``e(T)``, the twist through the middle of the loop.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            Scalar or array.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            The twist at each torque.
+        """
         t = as_kind(torque, "torque", "torque").m_as("N*m")
         return Q_(self._e(t), "rad").to("arcmin")
 
@@ -212,6 +268,16 @@ class LoopModel:
         The path is cut into monotone ramps at its turning points; on a rising ramp the
         internal torque is ``max(T - T_f, state)``, on a falling one ``min(T + T_f, state)``,
         ``state`` being where the previous ramp left it (a play operator, one step per ramp).
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            The torque path, an array.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            The twist at each point of the path.
         """
         t = as_kind(torque, "torque", "torque").m_as("N*m")
         t_f = self._si[5]
@@ -229,17 +295,23 @@ class LoopModel:
                 state = internal[b]
         return Q_(self._e(internal), "rad").to("arcmin")
 
-    def loop(self, samples: int = 2000, noise_torque=None, noise_twist=None, seed: int = 0, uneven: bool = True) -> Loop:
+    def loop(self, samples: int = 2000, noise_torque=None, noise_twist=None, seed: int = 0,
+             uneven: bool = True) -> Loop:
         """A loop as a rig records it: from unloaded, 0 → +T_N → -T_N → +T_N.
 
         The source's procedure loads to ``+T_N`` and then the other way to ``-T_N``; the last
         ramp back to ``+T_N`` closes the loop, so each branch passes 0 N·m and ±3 % whole.
 
+        Returns
+        -------
+        Loop
+            The sampled loop.
+
         Parameters
         ----------
         samples : int
             Number of samples over the whole path.
-        noise_torque, noise_twist : Quantity, optional
+        noise_torque, noise_twist : pint.Quantity [N·m], [arcmin], optional
             Standard deviation of normal noise added to each torque and twist sample.
         seed : int
             Seed of the random generator (sampling positions and noise).
@@ -272,6 +344,22 @@ class LoopModel:
 def model_for_part(part: str, catalog: str = "gearboxes", **shape) -> LoopModel:
     """The loop model of a catalog gearbox: ``C_t21``, backlash and ``T_2N`` from its row.
 
+    Parameters
+    ----------
+    part : str
+        The gearbox's part.
+    catalog : str
+        The catalog's name or path; default ``"gearboxes"``.
+    **shape : float
+        The shape factors of :class:`LoopModel` (``soft_share``, ...), by name.
+
+    Returns
+    -------
+    LoopModel
+        The gearbox's loop.
+
+    Examples
+    --------
     >>> m = model_for_part("TP010-10")
     >>> print(fmt(m.stiffness, "N*m/arcmin"), fmt(m.backlash, "arcmin"), fmt(m.nominal_torque, "N*m"))
     23 N·m/arcmin 3 arcmin 81 N·m
@@ -282,13 +370,24 @@ def model_for_part(part: str, catalog: str = "gearboxes", **shape) -> LoopModel:
     row = rows.index(part, "part")
     for column in ("C_t21", "backlash"):
         if np.isnan(rows[column][row].magnitude):
-            raise CalcError(f"{rows.path}, row {rows.lines[row]} ({part}), column {column}: expected a value for the loop model, found an empty cell")
+            raise CalcError(f"{rows.path}, row {rows.lines[row]} ({part}), column {column}: expected a value for the "
+                            "loop model, found an empty cell")
     return LoopModel(rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row], **shape)
 
 
 @dataclass(frozen=True)
 class LineFit:
-    """A fitted straight line of the loop, from torque ``T_a`` to ``T_b`` (for plots and steps)."""
+    """A fitted straight line of the loop, from torque ``T_a`` to ``T_b`` (for plots and steps).
+
+    Parameters
+    ----------
+    torque : pint.Quantity [N·m]
+        ``[T_a, T_b]``.
+    twist : pint.Quantity [arcmin]
+        The fitted twist at ``T_a`` and ``T_b``.
+    samples : int
+        The samples the line is fitted through.
+    """
 
     torque: object  # quantity array [T_a, T_b]
     twist: object  # quantity array, the fitted twist at T_a and T_b
@@ -297,7 +396,27 @@ class LineFit:
 
 @dataclass(frozen=True)
 class LoopAnalysis:
-    """Stiffness, backlash and lost motion of a loop (E12), with what a plot or report shows."""
+    """Stiffness, backlash and lost motion of a loop (E12), with what a plot or report shows.
+
+    Parameters
+    ----------
+    nominal_torque : pint.Quantity [N·m]
+        ``T_N``.
+    stiffness_positive, stiffness_negative : pint.Quantity [N·m/arcmin]
+        The stiffness loading each way.
+    fit_positive, fit_negative : LineFit
+        The lines they come from.
+    backlash : pint.Quantity [arcmin]
+        The loop's width at 0 N·m.
+    backlash_range : pint.Quantity [arcmin]
+        ``[min, max]`` of the twist at 0 N·m.
+    lost_motion : pint.Quantity [arcmin]
+        The loop's width over ±3 % of ``T_N``.
+    lost_motion_range : pint.Quantity [arcmin]
+        ``[min, max]`` of the twist over ±3 % of ``T_N``.
+    source : str
+        Where the loop came from.
+    """
 
     nominal_torque: object
     stiffness_positive: object
@@ -316,7 +435,13 @@ class LoopAnalysis:
         return min(self.stiffness_positive, self.stiffness_negative)
 
     def steps(self) -> list:
-        """The formulas with this loop's numbers, for a notebook or report."""
+        """The formulas with this loop's numbers, for a notebook or report.
+
+        Returns
+        -------
+        list of Step
+            The stiffness each way, the backlash and the lost motion.
+        """
         out = []
         for fit in (self.fit_positive, self.fit_negative):
             d_t, d_phi = fit.torque[1] - fit.torque[0], fit.twist[1] - fit.twist[0]
@@ -333,7 +458,7 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
     ----------
     loop : Loop
         Torque and twist at the output, in the order recorded, loaded both ways.
-    nominal_torque : Quantity [torque]
+    nominal_torque : pint.Quantity [N·m]
         ``T_N``, which sets the 50 % to 100 % band and the ±3 % band.
 
     Returns
@@ -366,56 +491,15 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
     t_n = as_kind(nominal_torque, "torque", f"{where}: nominal torque").m_as("N*m")
     if not t_n > 0:
         raise CalcError(f"{where}: nominal torque: expected a torque above zero, found {nominal_torque:~P}")
-    torque = loop.torque.m_as("N*m")
-    twist = loop.twist.m_as("rad")
-    n = len(torque)
-    if n < MIN_SAMPLES:
-        raise CalcError(f"{where}: expected a loop of at least {MIN_SAMPLES} samples, found {n}")
-    if not (np.isfinite(torque).all() and np.isfinite(twist).all()):
-        raise CalcError(f"{where}: expected finite torque and twist samples, found NaN or infinity")
-    edge = LOST_MOTION_BAND * t_n
-    if torque.max() < edge or torque.min() > -edge:
-        raise CalcError(
-            f"{where}: the loop is loaded in one direction only (torque from {torque.min():.4g} to {torque.max():.4g} N·m); "
-            f"expected torque beyond both -3 % and +3 % of the nominal torque (±{edge:.4g} N·m)"
-        )
+    torque, twist = _checked_samples(loop, t_n)
     direction = travel_direction(torque)
-    passes = np.concatenate(([0], np.cumsum(direction[1:] != direction[:-1])))
-
-    fits = {}
-    for sign, name in ((1, "positive"), (-1, "negative")):
-        lo, hi = (x * t_n for x in STIFFNESS_BAND)
-        band = (sign * torque >= lo) & (sign * torque <= hi) & (direction == sign)
-        count = int(band.sum())
-        if count < MIN_BAND_SAMPLES:
-            raise CalcError(
-                f"{where}: expected at least {MIN_BAND_SAMPLES} samples loading in the {name} direction between 50 % and 100 % "
-                f"of the nominal torque ({sign * lo:.4g} to {sign * hi:.4g} N·m), found {count}"
-            )
-        slope, t_mean, phi_mean = _line(torque[band], twist[band])
-        if not slope > 0:
-            raise CalcError(f"{where}: the twist does not rise with the torque between 50 % and 100 % of the nominal torque in the {name} direction")
-        ends = np.array([lo, hi]) if sign > 0 else np.array([-hi, -lo])
-        fits[name] = LineFit(Q_(ends, "N*m"), Q_(phi_mean + slope * (ends - t_mean), "rad").to("arcmin"), count)
-
-    # Level readings use about ±0.5 % of T_N of path either side of a crossing (a record that
-    # mostly dwells has no typical step; then the two samples either side of it).
-    step = _torque_step(torque)
-    half_window = min(int(round(0.005 * t_n / step)), n // 10) if step > 0 else 0
-    # A record that starts unloaded is not on the loop until the torque first leaves the ±3 % band.
-    on_loop = np.ones(n, bool)
-    on_loop[: int(np.argmax(np.abs(torque) > edge))] = False
-    passes = np.where(on_loop, passes, -1)
-    at_zero = _level_twists(torque, twist, passes, 0.0, half_window)
-    if len(at_zero) < 2:
-        raise CalcError(f"{where}: expected the loop to pass 0 N·m in both directions, found {len(at_zero)} pass{'' if len(at_zero) == 1 else 'es'}")
-    band_twists = np.concatenate([at_zero, _level_twists(torque, twist, passes, -edge, half_window), _level_twists(torque, twist, passes, edge, half_window)])
+    fits = {name: _loading_fit(torque, twist, direction, sign, name, t_n, where)
+            for sign, name in ((1, "positive"), (-1, "negative"))}
+    zero_range, band_range = _level_ranges(torque, twist, direction, t_n, where)
 
     def stiffness(fit):
         return stiffness_from_slope(Delta_T=fit.torque[1] - fit.torque[0], Delta_phi=fit.twist[1] - fit.twist[0])
 
-    zero_range = Q_(np.array([at_zero.min(), at_zero.max()]), "rad").to("arcmin")
-    band_range = Q_(np.array([band_twists.min(), band_twists.max()]), "rad").to("arcmin")
     return LoopAnalysis(
         nominal_torque=Q_(t_n, "N*m"),
         stiffness_positive=stiffness(fits["positive"]),
@@ -428,6 +512,75 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
         lost_motion_range=band_range,
         source=where,
     )
+
+
+def _checked_samples(loop: Loop, t_n: float):
+    """The loop's torque [N·m] and twist [rad] as SI floats, once they are enough, finite and loaded
+    both ways beyond the ±3 % band of ``t_n`` [N·m]."""
+    where = loop.source
+    torque = loop.torque.m_as("N*m")
+    twist = loop.twist.m_as("rad")
+    n = len(torque)
+    if n < MIN_SAMPLES:
+        raise CalcError(f"{where}: expected a loop of at least {MIN_SAMPLES} samples, found {n}")
+    if not (np.isfinite(torque).all() and np.isfinite(twist).all()):
+        raise CalcError(f"{where}: expected finite torque and twist samples, found NaN or infinity")
+    edge = LOST_MOTION_BAND * t_n
+    if torque.max() < edge or torque.min() > -edge:
+        raise CalcError(
+            f"{where}: the loop is loaded in one direction only (torque from {torque.min():.4g} to "
+            f"{torque.max():.4g} N·m); expected torque beyond both -3 % and +3 % of the nominal torque (±{edge:.4g} "
+            "N·m)"
+        )
+    return torque, twist
+
+
+def _loading_fit(torque, twist, direction, sign: int, name: str, t_n: float, where: str) -> LineFit:
+    """The line through the samples loading in one direction (``sign``, called ``name``) between 50 %
+    and 100 % of ``t_n`` [N·m]; SI floats in."""
+    lo, hi = (x * t_n for x in STIFFNESS_BAND)
+    band = (sign * torque >= lo) & (sign * torque <= hi) & (direction == sign)
+    count = int(band.sum())
+    if count < MIN_BAND_SAMPLES:
+        raise CalcError(
+            f"{where}: expected at least {MIN_BAND_SAMPLES} samples loading in the {name} direction between 50 % "
+            f"and 100 % of the nominal torque ({sign * lo:.4g} to {sign * hi:.4g} N·m), found {count}"
+        )
+    slope, t_mean, phi_mean = _line(torque[band], twist[band])
+    if not slope > 0:
+        raise CalcError(
+            f"{where}: the twist does not rise with the torque between 50 % and 100 % of the nominal torque "
+            f"in the {name} direction"
+        )
+    ends = np.array([lo, hi]) if sign > 0 else np.array([-hi, -lo])
+    return LineFit(Q_(ends, "N*m"), Q_(phi_mean + slope * (ends - t_mean), "rad").to("arcmin"), count)
+
+
+def _level_ranges(torque, twist, direction, t_n: float, where: str):
+    """The least and greatest twist [arcmin] over the loop's passes at 0 N·m, and at -3 %, 0 and
+    +3 % of ``t_n`` [N·m]; SI floats in."""
+    n = len(torque)
+    edge = LOST_MOTION_BAND * t_n
+    passes = np.concatenate(([0], np.cumsum(direction[1:] != direction[:-1])))
+    # Level readings use about ±0.5 % of T_N of path either side of a crossing (a record that
+    # mostly dwells has no typical step; then the two samples either side of it).
+    step = _torque_step(torque)
+    half_window = min(int(round(0.005 * t_n / step)), n // 10) if step > 0 else 0
+    # A record that starts unloaded is not on the loop until the torque first leaves the ±3 % band.
+    on_loop = np.ones(n, bool)
+    on_loop[: int(np.argmax(np.abs(torque) > edge))] = False
+    passes = np.where(on_loop, passes, -1)
+    at_zero = _level_twists(torque, twist, passes, 0.0, half_window)
+    if len(at_zero) < 2:
+        raise CalcError(
+            f"{where}: expected the loop to pass 0 N·m in both directions, "
+            f"found {len(at_zero)} pass{'' if len(at_zero) == 1 else 'es'}"
+        )
+    band_twists = np.concatenate([at_zero, _level_twists(torque, twist, passes, -edge, half_window),
+                                  _level_twists(torque, twist, passes, edge, half_window)])
+    zero_range = Q_(np.array([at_zero.min(), at_zero.max()]), "rad").to("arcmin")
+    band_range = Q_(np.array([band_twists.min(), band_twists.max()]), "rad").to("arcmin")
+    return zero_range, band_range
 
 
 def _torque_step(torque: np.ndarray) -> float:

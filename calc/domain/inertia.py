@@ -40,14 +40,18 @@ m_hollow = Formula(Symbol("m_hollow", "m", "mass", "kg", "mass of a hollow cylin
                    lambda sp, rho, D, d, L: rho * sp.pi * (D**2 - d**2) * L / 4, REFERENCE)
 m_plate = Formula(Symbol("m_plate", "m", "mass", "kg", "mass of a rectangular plate"), (_rho, _a, _b, _L),
                   lambda sp, rho, a, b, L: rho * a * b * L, REFERENCE)
-J_cylinder = Formula(Symbol("J_cylinder", r"J_{\mathrm{own}}", "inertia", "kg*cm**2", "inertia of a solid cylinder about its axis"),
+J_cylinder = Formula(Symbol("J_cylinder", r"J_{\mathrm{own}}", "inertia", "kg*cm**2",
+                            "inertia of a solid cylinder about its axis"),
                      (_m, _D), lambda sp, m, D: m * D**2 / 8, REFERENCE)
-J_hollow = Formula(Symbol("J_hollow", r"J_{\mathrm{own}}", "inertia", "kg*cm**2", "inertia of a hollow cylinder about its axis"),
+J_hollow = Formula(Symbol("J_hollow", r"J_{\mathrm{own}}", "inertia", "kg*cm**2",
+                          "inertia of a hollow cylinder about its axis"),
                    (_m, _D, _d), lambda sp, m, D, d: m * (D**2 + d**2) / 8, REFERENCE)
-J_plate = Formula(Symbol("J_plate", r"J_{\mathrm{own}}", "inertia", "kg*cm**2", "inertia of a plate about the axis through its centre, across it"),
+J_plate = Formula(Symbol("J_plate", r"J_{\mathrm{own}}", "inertia", "kg*cm**2",
+                         "inertia of a plate about the axis through its centre, across it"),
                   (_m, _a, _b), lambda sp, m, a, b: m * (a**2 + b**2) / 12, REFERENCE)
 J_steiner = Formula(Symbol("J_body", "J", "inertia", "kg*cm**2", "inertia of the body about the axis of rotation"),
-                    (_J_own, _m, _e), lambda sp, J_own, m, e: J_own + m * e**2, f"{REFERENCE}: the parallel-axis theorem")
+                    (_J_own, _m, _e), lambda sp, J_own, m, e: J_own + m * e**2,
+                    f"{REFERENCE}: the parallel-axis theorem")
 
 #: Per shape: its mass formula and its inertia formula, and the dimensions each takes.
 FORMULAS = {
@@ -59,9 +63,22 @@ FORMULAS = {
 
 @dataclass(frozen=True)
 class Body:
-    """A body of one of :data:`SHAPES`, its dimensions (quantities by the names of the formulas:
-    ``D``, ``d``, ``L``, ``a``, ``b``), its mass or its density (one of them), and the distance
-    ``e`` of its axis from the axis of rotation."""
+    """A body of one of :data:`SHAPES` turning about an axis.
+
+    Parameters
+    ----------
+    shape : str
+        One of :data:`SHAPES`.
+    dimensions : dict
+        Its dimensions, quantities [mm] by the names of the formulas: ``D``, ``d``, ``L``, ``a``,
+        ``b``.
+    mass : pint.Quantity [kg], optional
+        Its mass; give it or ``density``.
+    density : pint.Quantity [kg/m³], optional
+        Its density; give it or ``mass``.
+    offset : pint.Quantity [mm], optional
+        The distance ``e`` of its axis from the axis of rotation.
+    """
 
     shape: str
     dimensions: dict
@@ -71,7 +88,13 @@ class Body:
 
     def steps(self) -> list:
         """The steps giving its inertia about the axis of rotation: its mass (from the density),
-        its own inertia, and the parallel-axis term where it is off the axis."""
+        its own inertia, and the parallel-axis term where it is off the axis.
+
+        Returns
+        -------
+        list of Step
+            The last one's result is the inertia.
+        """
         m_formula, J_formula, names = FORMULAS[self.shape]
         out = []
         mass = self.mass

@@ -43,7 +43,8 @@ TYPES = ("rotary", "ball-screw", "rack-pinion", "belt")
 
 READING = "a reading (spec, Motion and mechanism)"
 
-RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad, and one radian of output moves the load by r; E15)", value="1 rad")
+RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad",
+                "one radian (J·α = T·rad, and one radian of output moves the load by r; E15)", value="1 rad")
 g = Symbol("g", "g", "linear_acceleration", "m/s**2", "standard gravity", value="9.80665 m/s**2")
 
 p = Symbol("p", "p", "length", "mm", "lead of the screw: travel per revolution")
@@ -53,12 +54,14 @@ s = Symbol("s", "s", "length", "mm", "distance of the load")
 a = Symbol("a", "a", "linear_acceleration", "m/s**2", "acceleration of the load")
 m = Symbol("m", "m", "mass", "kg", "moved mass")
 m_c = Symbol("m_c", r"m_{c}", "mass", "kg", "counterweight, moving the other way")
-T_d = Symbol("T_d", r"T_{d}", "torque", "N*m", "drag torque at the screw, pinion or pulley shaft, against the motion while it moves")
+T_d = Symbol("T_d", r"T_{d}", "torque", "N*m",
+             "drag torque at the screw, pinion or pulley shaft, against the motion while it moves")
 mu = Symbol("mu", r"\mu", "dimensionless", "", "friction coefficient of the guide")
 theta = Symbol("theta", r"\theta", "angle", "deg", "incline of the axis (90°: vertical, up is forwards)")
 F_p = Symbol("F_p", r"F_{p}", "force", "N", "process force, against the motion while it moves")
 s_v = Symbol("s_v", r"s_{v}", "dimensionless", "", "direction of motion: +1 forwards, −1 back, 0 at rest")
-d_P = Symbol("d_P", r"d_{P}", "dimensionless", "", "direction of power: +1 while the drive drives, −1 while the load drives back or is held")
+d_P = Symbol("d_P", r"d_{P}", "dimensionless", "",
+             "direction of power: +1 while the drive drives, −1 while the load drives back or is held")
 eta = Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the mechanism")
 J_M = Symbol("J_M", r"J_{M}", "inertia", "kg*cm**2", "own inertia of the screw, pinion or pulley")
 J_L_sym = Symbol("J_L", r"J_{L}", "inertia", "kg*cm**2", "inertia of the load at the gearbox output")
@@ -67,8 +70,10 @@ T_f = Symbol("T_f", r"T_{f}", "torque", "N*m", "friction torque of the table, ag
 T_p = Symbol("T_p", r"T_{p}", "torque", "N*m", "process torque, against the motion while it moves")
 F_sym = Symbol("F", "F", "force", "N", "force on the load along its travel")
 
-r_lead = Formula(Symbol("r_lead", "r", "length", "mm", r.description), (p,), lambda sp, p: p / (2 * sp.pi), f"{READING}: a lead p per revolution of 2π rad")
-r_diameter = Formula(Symbol("r_diameter", "r", "length", "mm", r.description), (d,), lambda sp, d: d / 2, f"{READING}: the pitch circle's radius")
+r_lead = Formula(Symbol("r_lead", "r", "length", "mm", r.description), (p,), lambda sp, p: p / (2 * sp.pi),
+                 f"{READING}: a lead p per revolution of 2π rad")
+r_diameter = Formula(Symbol("r_diameter", "r", "length", "mm", r.description), (d,), lambda sp, d: d / 2,
+                     f"{READING}: the pitch circle's radius")
 
 phi_2 = Formula(
     Symbol("phi_2", r"\varphi_{2}", "angle", "deg", "distance at the gearbox output"), (s, RADIAN, r),
@@ -80,7 +85,9 @@ a_load = Formula(
 )
 F = Formula(
     F_sym, (m, m_c, a, g, theta, s_v, mu, F_p),
-    lambda sp, m, m_c, a, g, theta, s_v, mu, F_p: (m + m_c) * a + (m * sp.sin(theta) - m_c) * g + s_v * (mu * m * g * sp.cos(theta) + F_p),
+    lambda sp, m, m_c, a, g, theta, s_v, mu, F_p: (
+        (m + m_c) * a + (m * sp.sin(theta) - m_c) * g + s_v * (mu * m * g * sp.cos(theta) + F_p)
+    ),
     f"{READING}: inertia, gravity on the incline, a counterweight, friction of the guide and the process force",
 )
 T_2_linear = Formula(
@@ -109,8 +116,44 @@ class Mechanism:
     ``type`` is one of :data:`TYPES`. A rotary table has ``inertia``, ``friction_torque`` and
     ``process_torque``; a linear one ``mass``, ``friction_coefficient``, ``incline``, ``force``,
     ``eta``, its ``lead`` (ball screw) or ``diameter`` (pinion, pulley), the own inertia
-    ``own_inertia``, a ``counterweight`` and a ``drag_torque`` (None: none). ``holding_brake``: a
-    brake holds the load in a dwell (no torque there).
+    ``own_inertia``, a ``counterweight`` and a ``drag_torque`` (None: none).
+
+    Parameters
+    ----------
+    type : str
+        One of :data:`TYPES`.
+    inertia : pint.Quantity [kg·cm²], optional
+        A table's inertia at the output.
+    friction_torque : pint.Quantity [N·m], optional
+        A table's friction torque.
+    process_torque : pint.Quantity [N·m], optional
+        A table's process torque.
+    mass : pint.Quantity [kg], optional
+        The moved mass of a linear axis.
+    friction_coefficient : pint.Quantity [1], optional
+        ``μ`` of its guide.
+    incline : pint.Quantity [deg], optional
+        ``θ``, the axis's angle to the horizontal.
+    force : pint.Quantity [N], optional
+        ``F_p``, the process force.
+    eta : pint.Quantity [1], optional
+        The mechanism's efficiency.
+    lead : pint.Quantity [mm], optional
+        ``p``, a ball screw's lead.
+    diameter : pint.Quantity [mm], optional
+        ``d``, a pinion's or pulley's diameter.
+    own_inertia : pint.Quantity [kg·cm²], optional
+        ``J_M``, the screw's, pinion's or pulleys' own inertia.
+    counterweight : pint.Quantity [kg], optional
+        ``m_c``.
+    drag_torque : pint.Quantity [N·m], optional
+        ``T_d``, a drag at the shaft.
+    holding_brake : bool
+        A brake holds the load in a dwell (no torque there); default False.
+    bodies : tuple of Body
+        A rotary table's bodies, whose inertias are in ``inertia``.
+    given_inertia : pint.Quantity [kg·cm²], optional
+        The inertia the case gives besides the bodies.
     """
 
     type: str
@@ -149,7 +192,13 @@ class Mechanism:
         return "length" if self.linear else "angle"
 
     def radius_step(self):
-        """The step giving r (linear types): ``p / (2π)`` of a screw, ``d / 2`` else."""
+        """The step giving r (linear types): ``p / (2π)`` of a screw, ``d / 2`` else.
+
+        Returns
+        -------
+        Step
+            Its result in mm.
+        """
         if self.type == "ball-screw":
             return r_lead.step(p=self.lead)
         return r_diameter.step(d=self.diameter)
@@ -159,7 +208,13 @@ class Mechanism:
         return self.radius_step().result
 
     def load_inertia_step(self):
-        """The step giving J_L, the load's inertia at the output (linear types)."""
+        """The step giving J_L, the load's inertia at the output (linear types).
+
+        Returns
+        -------
+        Step
+            Its result in kg·cm².
+        """
         return J_L_linear.step(m=self.mass, m_c=self._counterweight, r=self.radius, J_M=self.own_inertia)
 
     @property
@@ -168,27 +223,59 @@ class Mechanism:
         return self.load_inertia_step().result if self.linear else self.inertia.to("kg*cm**2")
 
     def to_output(self, distance):
-        """A move's distance (an angle or a length) as the output's angle."""
+        """A move's distance as the output's angle.
+
+        Parameters
+        ----------
+        distance : pint.Quantity [deg or mm]
+            An angle (a table) or a length (a linear axis).
+
+        Returns
+        -------
+        pint.Quantity [rad]
+            The output's angle.
+        """
         if not self.linear:
             return distance.to("deg")
         return phi_2(s=distance, r=self.radius)
 
     def to_load(self):
-        """The factor from the output's angle [rad] to the load's travel [m or rad] (SI floats)."""
+        """The factor from the output's angle to the load's travel (SI floats).
+
+        Returns
+        -------
+        float [m/rad or 1]
+            The load's travel per radian of the output: ``r`` of a linear axis, 1 for a table.
+        """
         return float(self.radius.m_as("m")) if self.linear else 1.0
 
     def torque(self, speed: np.ndarray, acceleration: np.ndarray) -> np.ndarray:
-        """T_2 [N·m] at output speeds [rad/s] and accelerations [rad/s²] (SI float arrays): the
-        formulas of this module with the direction of motion from the speed's sign (0 at rest)
-        and, on a linear axis, the direction of power from the force's. Zero at rest where a
-        holding brake holds the load."""
+        """``T_2`` at output speeds and accelerations: the formulas of this module with the direction of
+        motion from the speed's sign (0 at rest) and, on a linear axis, the direction of power from the
+        force's. Zero at rest where a holding brake holds the load.
+
+        Parameters
+        ----------
+        speed : numpy.ndarray [rad/s]
+            Output speeds (SI floats).
+        acceleration : numpy.ndarray [rad/s²]
+            Output accelerations (SI floats).
+
+        Returns
+        -------
+        numpy.ndarray [N·m]
+            ``T_2`` per sample.
+        """
         s_v = np.sign(speed)
         if self.linear:
             r = self.to_load()
-            force = F.si(m=self._si(self.mass, "kg"), m_c=self._si(self._counterweight, "kg"), a=a_load.si(alpha_2=acceleration, r=r),
-                         theta=self._si(self.incline, "rad"), s_v=s_v, mu=self._si(self.friction_coefficient, ""), F_p=self._si(self.force, "N"))
+            force = F.si(m=self._si(self.mass, "kg"), m_c=self._si(self._counterweight, "kg"),
+                         a=a_load.si(alpha_2=acceleration, r=r),
+                         theta=self._si(self.incline, "rad"), s_v=s_v, mu=self._si(self.friction_coefficient, ""),
+                         F_p=self._si(self.force, "N"))
             d_power = np.where(force * speed > 0, 1.0, -1.0)
-            out = T_2_linear.si(F=force, r=r, eta=self._si(self.eta, ""), d_P=d_power, J_M=self._si(self.own_inertia, "kg*m**2"), alpha_2=acceleration,
+            out = T_2_linear.si(F=force, r=r, eta=self._si(self.eta, ""), d_P=d_power,
+                                J_M=self._si(self.own_inertia, "kg*m**2"), alpha_2=acceleration,
                                 s_v=s_v, T_d=self._si(self._drag, "N*m"))
         else:
             out = T_2_rotary.si(J_L=self._si(self.inertia, "kg*m**2"), alpha_2=acceleration, s_v=s_v,
@@ -203,25 +290,42 @@ class Mechanism:
         return float(Q_(q).m_as(unit))
 
     def steps(self, speed, acceleration) -> list:
-        """The steps of the output torque at one output speed and acceleration (quantities): the
-        force and the torque of a linear axis, the torque of a table. For the report and the
-        notebook; the direction of motion and of power as :meth:`torque` takes them."""
+        """The steps of the output torque at one output speed and acceleration: the force and the torque
+        of a linear axis, the torque of a table. For the report and the notebook; the direction of
+        motion and of power as :meth:`torque` takes them.
+
+        Parameters
+        ----------
+        speed : pint.Quantity [rpm]
+            The output speed.
+        acceleration : pint.Quantity [rad/s²]
+            The output acceleration.
+
+        Returns
+        -------
+        list of Step
+            The evaluated formulas.
+        """
         w = speed.m_as("rad/s")
         s_v = Q_(float(np.sign(w)), "")
         if not self.linear:
-            return [T_2_rotary.step(J_L=self.inertia, alpha_2=acceleration, s_v=s_v, T_f=self.friction_torque, T_p=self.process_torque)]
+            return [T_2_rotary.step(J_L=self.inertia, alpha_2=acceleration, s_v=s_v, T_f=self.friction_torque,
+                                    T_p=self.process_torque)]
         r_q = self.radius
         acc = a_load.step(alpha_2=acceleration, r=r_q)
-        f = F.step(m=self.mass, m_c=self._counterweight, a=acc.result, theta=self.incline, s_v=s_v, mu=self.friction_coefficient, F_p=self.force)
+        f = F.step(m=self.mass, m_c=self._counterweight, a=acc.result, theta=self.incline, s_v=s_v,
+                   mu=self.friction_coefficient, F_p=self.force)
         d_power = Q_(1.0 if f.result.m_as("N") * w > 0 else -1.0, "")
-        t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration, s_v=s_v, T_d=self._drag)
+        t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration,
+                            s_v=s_v, T_d=self._drag)
         return [acc, f, t]
 
 
 # -- another type for the same drive: the starting values of a mechanism changed in a review ----------
 
 m_equivalent = Formula(
-    Symbol("m_equivalent", "m", "mass", "kg", "moved mass of a linear axis with the table's inertia at the output"), (J_L_sym, r),
+    Symbol("m_equivalent", "m", "mass", "kg", "moved mass of a linear axis with the table's inertia at the output"),
+    (J_L_sym, r),
     lambda sp, J_L, r: J_L / r**2, "the inverse of J_L = m·r² (no counterweight, no own inertia)",
 )
 T_d_equivalent = Formula(
@@ -229,12 +333,15 @@ T_d_equivalent = Formula(
     lambda sp, T_f, T_p: T_f + T_p, "the table's torques against the motion, at the same shaft",
 )
 J_L_equivalent = Formula(
-    Symbol("J_L_equivalent", r"J_{L}", "inertia", "kg*cm**2", "inertia of a table that needs the axis' torque to accelerate"), (m, m_c, r, eta, J_M),
-    lambda sp, m, m_c, r, eta, J_M: (m + m_c) * r**2 / eta + J_M, "T_2 while the drive accelerates the load: (m + m_c)·a·r / η + J_M·α_2",
+    Symbol("J_L_equivalent", r"J_{L}", "inertia", "kg*cm**2",
+           "inertia of a table that needs the axis' torque to accelerate"), (m, m_c, r, eta, J_M),
+    lambda sp, m, m_c, r, eta, J_M: (m + m_c) * r**2 / eta + J_M,
+    "T_2 while the drive accelerates the load: (m + m_c)·a·r / η + J_M·α_2",
 )
 T_f_equivalent = Formula(
     Symbol("T_f_equivalent", r"T_{f}", "torque", "N*m", T_f.description), (mu, m, g, theta, r, eta, T_d),
-    lambda sp, mu, m, g, theta, r, eta, T_d: mu * m * g * sp.cos(theta) * r / eta + T_d, "the guide's friction and the drag while the drive drives",
+    lambda sp, mu, m, g, theta, r, eta, T_d: mu * m * g * sp.cos(theta) * r / eta + T_d,
+    "the guide's friction and the drag while the drive drives",
 )
 T_p_equivalent = Formula(
     Symbol("T_p_equivalent", r"T_{p}", "torque", "N*m", T_p.description), (F_p, r, eta),
@@ -243,7 +350,20 @@ T_p_equivalent = Formula(
 
 
 def radius_of(type_: str, size):
-    """The transmission radius of a linear type from its lead (a screw) or diameter."""
+    """The transmission radius of a linear type from its lead (a screw) or diameter.
+
+    Parameters
+    ----------
+    type_ : str
+        A linear type of :data:`TYPES`.
+    size : pint.Quantity [mm]
+        The lead or the diameter.
+
+    Returns
+    -------
+    pint.Quantity [mm]
+        ``r``.
+    """
     return r_lead(p=size) if type_ == "ball-screw" else r_diameter(d=size)
 
 
@@ -262,9 +382,27 @@ def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[s
 
     A move's distance follows :func:`converted_distance`.
 
-    >>> table = Mechanism("rotary", inertia=Q_(1500, "kg*cm**2"), friction_torque=Q_(3, "N*m"), process_torque=Q_(0, "N*m"))
+    Parameters
+    ----------
+    mech : Mechanism
+        The mechanism replaced.
+    type_ : str
+        The new type, one of :data:`TYPES`.
+    size : pint.Quantity [mm], optional
+        The new lead or diameter (a linear type).
+
+    Returns
+    -------
+    tuple of (Mechanism, list of str)
+        The new mechanism and what it leaves out.
+
+    Examples
+    --------
+    >>> table = Mechanism("rotary", inertia=Q_(1500, "kg*cm**2"), friction_torque=Q_(3, "N*m"),
+    ...                   process_torque=Q_(0, "N*m"))
     >>> screw, left = converted(table, "ball-screw", Q_(20, "mm"))
-    >>> round(screw.mass.m_as("kg"), 2), screw.drag_torque, float(screw.load_inertia.m_as("kg*cm**2")), left  # 0.15 / (0.02 / 2π)²
+    >>> # the mass: 0.15 / (0.02 / 2π)²
+    >>> round(screw.mass.m_as("kg"), 2), screw.drag_torque, float(screw.load_inertia.m_as("kg*cm**2")), left
     (14804.41, <Quantity(3, 'newton * meter')>, 1500.0, [])
     """
     zero = {"incline": Q_(0.0, "deg"), "force": Q_(0.0, "N"), "counterweight": Q_(0.0, "kg")}
@@ -273,21 +411,28 @@ def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[s
         return mech, []
     if not mech.linear:
         r_new = radius_of(type_, size)
-        return Mechanism(type_, holding_brake=mech.holding_brake, mass=m_equivalent(J_L=mech.load_inertia, r=r_new).to("kg"),
+        return Mechanism(type_, holding_brake=mech.holding_brake,
+                         mass=m_equivalent(J_L=mech.load_inertia, r=r_new).to("kg"),
                          friction_coefficient=Q_(0.0, ""), eta=Q_(1.0, ""), own_inertia=Q_(0.0, "kg*cm**2"),
-                         drag_torque=T_d_equivalent(T_f=mech.friction_torque, T_p=mech.process_torque), **zero, **size_key), []
+                         drag_torque=T_d_equivalent(T_f=mech.friction_torque, T_p=mech.process_torque), **zero,
+                         **size_key), []
     r_old, eta_old, incline = mech.radius, mech.eta, Q_(0.0, "deg") if mech.incline is None else mech.incline
     if type_ != "rotary":
-        return Mechanism(type_, **{k: getattr(mech, k) for k in ("mass", "friction_coefficient", "incline", "force", "eta", "own_inertia",
-                                                                  "counterweight", "drag_torque", "holding_brake")}, **size_key), []
+        carriage = ("mass", "friction_coefficient", "incline", "force", "eta", "own_inertia", "counterweight",
+                    "drag_torque", "holding_brake")
+        return Mechanism(type_, **{k: getattr(mech, k) for k in carriage}, **size_key), []
     mu_ = Q_(0.0, "") if mech.friction_coefficient is None else mech.friction_coefficient
     own = Q_(0.0, "kg*cm**2") if mech.own_inertia is None else mech.own_inertia
     table = Mechanism("rotary", holding_brake=mech.holding_brake,
-                      inertia=J_L_equivalent(m=mech.mass, m_c=mech._counterweight, r=r_old, eta=eta_old, J_M=own).to("kg*cm**2"),
-                      friction_torque=T_f_equivalent(mu=mu_, m=mech.mass, theta=incline, r=r_old, eta=eta_old, T_d=mech._drag).to("N*m"),
-                      process_torque=T_p_equivalent(F_p=Q_(0.0, "N") if mech.force is None else mech.force, r=r_old, eta=eta_old).to("N*m"))
+                      inertia=J_L_equivalent(m=mech.mass, m_c=mech._counterweight, r=r_old, eta=eta_old,
+                                             J_M=own).to("kg*cm**2"),
+                      friction_torque=T_f_equivalent(mu=mu_, m=mech.mass, theta=incline, r=r_old, eta=eta_old,
+                                                     T_d=mech._drag).to("N*m"),
+                      process_torque=T_p_equivalent(F_p=Q_(0.0, "N") if mech.force is None else mech.force, r=r_old,
+                                                    eta=eta_old).to("N*m"))
     pulling = (mech.mass * np.sin(incline.m_as("rad")) - mech._counterweight).m_as("kg")
-    left = [] if pulling == 0 else [f"gravity pulling one way ((m·sin θ − m_c)·g = {pulling * 9.80665:.4g} N on the load): a table's torques oppose the motion"]
+    left = [] if pulling == 0 else [f"gravity pulling one way ((m·sin θ − m_c)·g = {pulling * 9.80665:.4g} N on the "
+                                    "load): a table's torques oppose the motion"]
     if mech.force is not None and mech.force.m_as("N") < 0:
         left.append("a process force that drives the load (negative) is taken as one against it")
     return table, left
@@ -296,7 +441,22 @@ def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[s
 def converted_distance(old: Mechanism, new: Mechanism, distance):
     """A move's distance for the mechanism ``new`` that replaced ``old`` (:func:`converted`): the
     same travel of the carriage from one linear axis to another, else the same angle of the
-    gearbox output."""
+    gearbox output.
+
+    Parameters
+    ----------
+    old : Mechanism
+        The mechanism replaced.
+    new : Mechanism
+        Its replacement.
+    distance : pint.Quantity [deg or mm]
+        The move's distance on ``old``.
+
+    Returns
+    -------
+    pint.Quantity [deg or mm]
+        The distance on ``new``.
+    """
     if old.linear and new.linear:
         return distance
     angle = old.to_output(distance)

@@ -47,22 +47,38 @@ omega_2max = Formula(
     Symbol("omega_2max", r"\omega_{2,\max}", "speed", "rpm", "peak output speed of the move"),
     (phi_2, t_m, t_a, t_d),
     lambda sp, phi, t, ta, td: phi / (t - (ta + td) / 2),
-    "a reading (spec, Motion and mechanism): the distance is the area of the trapezoid of speed; an S-curve's symmetric ramps keep it",
+    "a reading (spec, Motion and mechanism): the distance is the area of the trapezoid of speed; an S-curve's "
+    "symmetric ramps keep it",
 )
 
 alpha_2max = Formula(
-    Symbol("alpha_2max", r"\alpha_{2,\max}", "angular_acceleration", "rad/s**2", "peak output acceleration of a speed ramp"),
+    Symbol("alpha_2max", r"\alpha_{2,\max}", "angular_acceleration", "rad/s**2",
+           "peak output acceleration of a speed ramp"),
     (omega_2max.result, t_r, t_j),
     lambda sp, w, tr, tj: w / (tr - tj),
-    "a reading (spec, Motion and mechanism): a ramp of t_r with jerk ramps of t_j at both ends gains ω at α·(t_r − t_j)",
+    "a reading (spec, Motion and mechanism): a ramp of t_r with jerk ramps of t_j at both ends gains ω at α·(t_r − "
+    "t_j)",
 )
 
 
 @dataclass(frozen=True)
 class Move:
-    """One move of the cycle at the gearbox output, in SI floats: ``distance`` [rad, signed],
-    ``time``, ``accel_time``, ``decel_time``, ``jerk_time`` [s]; a dwell has ``distance`` 0 and
-    only its ``time``. The case layer checks the times before it builds one."""
+    """One move of the cycle at the gearbox output, in SI floats; a dwell has ``distance`` 0 and only
+    its ``time``. The case layer checks the times before it builds one.
+
+    Parameters
+    ----------
+    distance : float [rad]
+        Signed.
+    time : float [s]
+        The move's duration.
+    accel_time : float [s]
+        Its acceleration ramp; default 0.
+    decel_time : float [s]
+        Its deceleration ramp; default 0.
+    jerk_time : float [s]
+        Each corner's time of constant jerk; default 0.
+    """
 
     distance: float
     time: float
@@ -86,8 +102,14 @@ class Move:
         return float(omega_2max.si(phi_2=self.distance, t_m=self.time, t_a=self.accel_time, t_d=self.decel_time))
 
     def peak_accelerations(self) -> tuple[float, float]:
-        """α_2max of the acceleration and of the deceleration ramp [rad/s²], signed: the
-        deceleration's is against the speed (:data:`alpha_2max`)."""
+        """α_2max of the acceleration and of the deceleration ramp, signed: the deceleration's is against
+        the speed (:data:`alpha_2max`).
+
+        Returns
+        -------
+        tuple of float [rad/s²]
+            The two peaks.
+        """
         if self.dwell:
             return 0.0, 0.0
         w = self.peak_speed
@@ -97,8 +119,13 @@ class Move:
         )
 
     def pieces(self):
-        """(duration, acceleration at its start, jerk, phase) of each piece of constant jerk, in
-        order; zero-length pieces left out."""
+        """Each piece of constant jerk, in order; zero-length pieces left out.
+
+        Returns
+        -------
+        list of tuple
+            ``(duration [s], acceleration at its start [rad/s²], jerk [rad/s³], phase)``.
+        """
         if self.dwell:
             return [(self.time, 0.0, 0.0, PAUSE)]
         a_up, a_down = self.peak_accelerations()
@@ -116,10 +143,29 @@ class Move:
 
 @dataclass(frozen=True)
 class Samples:
-    """One cycle sampled at the midpoints of equal steps of each piece: time ``t`` and the time
-    ``dt`` each sample stands for [s], position [rad], speed [rad/s], acceleration [rad/s²], jerk
-    [rad/s³] (SI floats), the ``phase`` code of each sample (:data:`PHASES`) and its ``segment``
-    (the index of the phase of a move it belongs to, in time order)."""
+    """One cycle sampled at the midpoints of equal steps of each piece (SI floats).
+
+    Parameters
+    ----------
+    t : numpy.ndarray [s]
+        The time of each sample.
+    dt : numpy.ndarray [s]
+        The time each sample stands for.
+    position : numpy.ndarray [rad]
+        Output position.
+    speed : numpy.ndarray [rad/s]
+        Output speed.
+    acceleration : numpy.ndarray [rad/s²]
+        Output acceleration.
+    jerk : numpy.ndarray [rad/s³]
+        Output jerk.
+    phase : numpy.ndarray
+        The phase code of each sample (:data:`PHASES`).
+    segment : numpy.ndarray of int
+        The index of the phase of a move each sample belongs to, in time order.
+    durations : numpy.ndarray [s]
+        Of each segment: the sum of its pieces' durations, not of the ``dt``.
+    """
 
     t: np.ndarray
     dt: np.ndarray
@@ -145,6 +191,20 @@ def sample(moves: list[Move], samples: int = SAMPLES) -> Samples:
     Speed and position at a piece's start are carried from the end of the one before (the
     acceleration steps at a trapezoid's corners); inside a piece, ``x(τ) = x_0 + v_0 τ + a_0 τ²/2 + j τ³/6``.
 
+    Parameters
+    ----------
+    moves : list of Move
+        The cycle's moves and dwells, in order.
+    samples : int
+        About how many samples in all; default :data:`SAMPLES`.
+
+    Returns
+    -------
+    Samples
+        The sampled cycle.
+
+    Examples
+    --------
     >>> s = sample([Move(np.pi / 2, 1.0, 0.25, 0.25), Move(0.0, 1.0)], samples=1000)
     >>> round(float(s.position.max()), 6), round(float((s.speed * s.dt).sum()), 12) == round(np.pi / 2, 12)
     (1.570796, True)
@@ -202,6 +262,20 @@ def record_samples(time: np.ndarray, speed: np.ndarray) -> Samples:
     :data:`RAMP_SHARE`, an acceleration where the speed's magnitude grows; a segment per run of
     one phase (:data:`MIN_RUN_SHARE`).
 
+    Parameters
+    ----------
+    time : numpy.ndarray [s]
+        The recorded times, increasing.
+    speed : numpy.ndarray [rad/s]
+        The speeds at the gearbox output.
+
+    Returns
+    -------
+    Samples
+        One sample per interval.
+
+    Examples
+    --------
     >>> s = record_samples(np.array([0.0, 1.0, 2.0, 3.0, 4.0]), np.array([0.0, 2.0, 2.0, 0.0, 0.0]))
     >>> [PHASES[p] for p in s.phase], s.segment.tolist(), s.speed.tolist(), s.acceleration.tolist()
     (['accel', 'const', 'decel', 'pause'], [0, 1, 2, 3], [1.0, 2.0, 1.0, 0.0], [2.0, 0.0, -2.0, 0.0])

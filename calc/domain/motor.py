@@ -42,7 +42,8 @@ _T_2 = Symbol("T_2", "T_{2}", "torque", "N*m", "output torque")
 
 alpha_1 = Formula(
     _alpha_1,
-    (Symbol("alpha_2", r"\alpha_{2}", "angular_acceleration", "rad/s**2", "angular acceleration at the gearbox output"), _i),
+    (Symbol("alpha_2", r"\alpha_{2}", "angular_acceleration", "rad/s**2", "angular acceleration at the gearbox output"),
+     _i),
     lambda sp, alpha_2, i: i * alpha_2,
     "case format, The motor's side (α_1 = i · α_2)",
 )
@@ -73,15 +74,19 @@ T_1rms = Formula(
 
 
 P_1 = Formula(
-    Symbol("P_1", "P_{1}", "power", "W", "mechanical power at the motor shaft (negative: the load drives back, the drive brakes)"),
-    (Symbol("T_1", "T_{1}", "torque", "N*m", "motor torque"), Symbol("omega_1", r"\omega_{1}", "speed", "rpm", "motor speed"), RADIAN),
+    Symbol("P_1", "P_{1}", "power", "W",
+           "mechanical power at the motor shaft (negative: the load drives back, the drive brakes)"),
+    (Symbol("T_1", "T_{1}", "torque", "N*m", "motor torque"),
+     Symbol("omega_1", r"\omega_{1}", "speed", "rpm", "motor speed"), RADIAN),
     lambda sp, T, w, rad: T * w / rad,
     "mechanics: power = torque · angular speed (E15)",
 )
 
 W_regen = Formula(
-    Symbol("W_regen", r"W_{\mathrm{regen}}", "energy", "J", "energy the load gives back to the drive per cycle (its braking resistor or DC link)"),
-    (Symbol("P_back_k", r"P_{\mathrm{back},k}", "power", "W", "braking power of sample k, |P_1| where P_1 < 0, else 0", per_segment=True),
+    Symbol("W_regen", r"W_{\mathrm{regen}}", "energy", "J",
+           "energy the load gives back to the drive per cycle (its braking resistor or DC link)"),
+    (Symbol("P_back_k", r"P_{\mathrm{back},k}", "power", "W", "braking power of sample k, |P_1| where P_1 < 0, else 0",
+            per_segment=True),
      Symbol("t_k", "t_{k}", "time", "s", "duration of sample k", per_segment=True)),
     lambda sp, P, t: segment_sum(P * t),
     "mechanics: the work of the braking samples, before the motor's and the drive's losses",
@@ -90,8 +95,18 @@ W_regen = Formula(
 
 @dataclass(frozen=True)
 class Energy:
-    """The motor's power over a cycle: its peak driving and braking power [W] and the energy given
-    back per cycle [J] (at the shaft: the motor's copper losses and the drive's would lower it)."""
+    """The motor's power over a cycle (at the shaft: the motor's copper losses and the drive's would
+    lower what is given back).
+
+    Parameters
+    ----------
+    peak_power : float [W]
+        Its peak driving power.
+    peak_braking_power : float [W]
+        Its peak braking power.
+    regenerated_per_cycle : float [J]
+        The energy given back per cycle.
+    """
 
     peak_power: float
     peak_braking_power: float
@@ -102,6 +117,22 @@ def energy(dt, speed_1, T_1) -> Energy:
     """:class:`Energy` of the samples of a cycle at the motor: durations [s], speeds [rad/s] and
     torques [N·m] (SI float arrays).
 
+    Parameters
+    ----------
+    dt : numpy.ndarray [s]
+        The duration of each sample.
+    speed_1 : numpy.ndarray [rad/s]
+        The motor speed of each sample.
+    T_1 : numpy.ndarray [N·m]
+        The motor torque of each sample.
+
+    Returns
+    -------
+    Energy
+        Peak powers and the energy given back.
+
+    Examples
+    --------
     Braking 2 N·m at 300 rad/s for 0.1 s gives back 2 · 300 · 0.1 = 60 J; driving 3 N·m at 300
     rad/s is 900 W:
 
@@ -111,13 +142,27 @@ def energy(dt, speed_1, T_1) -> Energy:
     """
     power = P_1.si(T_1=np.asarray(T_1, float), omega_1=np.asarray(speed_1, float))
     back = np.where(power < 0, -power, 0.0)
-    return Energy(float(max(power.max(), 0.0)), float(back.max()), float(W_regen.si(P_back_k=back, t_k=np.asarray(dt, float))))
+    return Energy(float(max(power.max(), 0.0)), float(back.max()),
+                  float(W_regen.si(P_back_k=back, t_k=np.asarray(dt, float))))
 
 
 @dataclass(frozen=True)
 class Phase:
-    """One segment of the cycle at the motor: its phase name, duration [s], mean speed [rad/s],
-    RMS and peak torque [N·m]."""
+    """One segment of the cycle at the motor.
+
+    Parameters
+    ----------
+    phase : str
+        Its phase name.
+    duration : float [s]
+        Its duration.
+    speed : float [rad/s]
+        Its mean speed.
+    rms_torque : float [N·m]
+        Its RMS torque.
+    peak_torque : float [N·m]
+        Its peak torque magnitude.
+    """
 
     phase: str
     duration: float
@@ -127,16 +172,34 @@ class Phase:
 
 
 def phases(segment, names, dt, speed_1, T_1) -> list[Phase]:
-    """The cycle at the motor, segment by segment: ``segment`` gives each sample's segment number
-    (contiguous, from 0), ``names`` each segment's phase; durations, speeds and torques per sample
-    (SI float arrays)."""
+    """The cycle at the motor, segment by segment.
+
+    Parameters
+    ----------
+    segment : numpy.ndarray of int
+        Each sample's segment number (contiguous, from 0).
+    names : sequence of str
+        Each segment's phase.
+    dt : numpy.ndarray [s]
+        The duration of each sample.
+    speed_1 : numpy.ndarray [rad/s]
+        The motor speed of each sample.
+    T_1 : numpy.ndarray [N·m]
+        The motor torque of each sample.
+
+    Returns
+    -------
+    list of Phase
+        One per segment.
+    """
     segment, dt, v, T = (np.asarray(x, float) for x in (segment, dt, speed_1, T_1))
     bounds = [*np.searchsorted(segment, np.arange(len(names))), len(segment)]
     out = []
     for name, a, b in zip(names, bounds[:-1], bounds[1:]):  # a few segments: one pass each
         t, torque = dt[a:b], T[a:b]
         duration = float(t.sum())
-        out.append(Phase(str(name), duration, float(np.sum(v[a:b] * t) / duration), float(T_1rms.si(T_1k=torque, t_k=t)),
+        out.append(Phase(str(name), duration, float(np.sum(v[a:b] * t) / duration),
+                         float(T_1rms.si(T_1k=torque, t_k=t)),
                          float(np.abs(torque).max())))
     return out
 
@@ -144,8 +207,22 @@ def phases(segment, names, dt, speed_1, T_1) -> list[Phase]:
 @dataclass(frozen=True)
 class OutputLoad:
     """The load cycle at the gearbox output as the motor's side reads it: an entry per sample (or
-    typed segment) with its duration ``dt``, torque and speed, and its acceleration where known
-    (None for typed segments: the rotor term is then left out); ``n_2max`` the highest speed."""
+    typed segment).
+
+    Parameters
+    ----------
+    dt : pint.Quantity [s]
+        The duration of each entry.
+    torque : pint.Quantity [N·m]
+        The output torque of each entry.
+    speed : pint.Quantity [rad/s]
+        The output speed of each entry.
+    alpha_2 : pint.Quantity [rad/s²] or None
+        The acceleration of each entry where known (None for typed segments: the rotor term is then
+        left out).
+    n_2max : pint.Quantity [rpm]
+        The highest speed.
+    """
 
     dt: object
     torque: object
@@ -160,8 +237,15 @@ class OutputLoad:
     def distinct(self) -> "OutputLoad":
         """The same cycle with its equal samples merged, their durations summed, in the order each
         first appears: every peak, duration-weighted mean and RMS over it is the one over the cycle,
-        at a fraction of the cost where the cycle dwells or runs at constant speed."""
-        columns = [self.torque.m_as("N*m"), self.speed.m_as("rad/s")] + ([] if self.alpha_2 is None else [self.alpha_2.m_as("rad/s**2")])
+        at a fraction of the cost where the cycle dwells or runs at constant speed.
+
+        Returns
+        -------
+        OutputLoad
+            The merged cycle.
+        """
+        columns = [self.torque.m_as("N*m"), self.speed.m_as("rad/s")]
+        columns += [] if self.alpha_2 is None else [self.alpha_2.m_as("rad/s**2")]
         _, first, inverse = np.unique(np.stack(columns), axis=1, return_index=True, return_inverse=True)
         order = np.argsort(first, kind="stable")
         dt = np.bincount(inverse.ravel(), weights=self.dt.m_as("s"))[order]
@@ -171,17 +255,38 @@ class OutputLoad:
 
     @classmethod
     def from_cycle(cls, cycle: SampledCycle) -> "OutputLoad":
+        """The load of a sampled cycle.
+
+        Parameters
+        ----------
+        cycle : SampledCycle
+            The cycle at the gearbox output.
+
+        Returns
+        -------
+        OutputLoad
+            Its samples, with their accelerations.
+        """
         speed = Q_(cycle.speed, "rad/s")
-        return cls(Q_(cycle.dt, "s"), Q_(cycle.torque, "N*m"), speed, Q_(cycle.acceleration, "rad/s**2"), abs(speed).max())
+        return cls(Q_(cycle.dt, "s"), Q_(cycle.torque, "N*m"), speed, Q_(cycle.acceleration, "rad/s**2"),
+                   abs(speed).max())
 
 
 @dataclass(frozen=True)
 class MotorLoad:
     """The motor torque over a cycle and what the checks need of it.
 
-    ``T_1`` has the samples on its last axis (rows of gearboxes before it, where given);
-    ``peak`` and ``rms`` drop that axis. ``rotor_term`` says whether the rotor and gearbox inertia
-    were counted (a sampled cycle) or left out (typed segments).
+    Parameters
+    ----------
+    T_1 : pint.Quantity [N·m]
+        The samples on its last axis (rows of gearboxes before it, where given).
+    peak : pint.Quantity [N·m]
+        The highest ``|T_1|``, without the samples' axis.
+    rms : pint.Quantity [N·m]
+        ``T_1rms``, without the samples' axis.
+    rotor_term : bool
+        Whether the rotor and gearbox inertia were counted (a sampled cycle) or left out (typed
+        segments).
     """
 
     T_1: object  # quantity array [N·m]
@@ -191,7 +296,20 @@ class MotorLoad:
 
 
 def driven_back(torque, speed) -> np.ndarray:
-    """Where power flows from the load to the motor: ``T_2 · ω_2 < 0`` (a hold at rest drives)."""
+    """Where power flows from the load to the motor: ``T_2 · ω_2 < 0`` (a hold at rest drives).
+
+    Parameters
+    ----------
+    torque : pint.Quantity [N·m]
+        ``T_2`` per sample.
+    speed : pint.Quantity [rad/s]
+        ``ω_2`` per sample, signed alike.
+
+    Returns
+    -------
+    numpy.ndarray of bool
+        True where driven back.
+    """
     return as_kind(torque, "torque", "torque").m_as("N*m") * as_kind(speed, "speed", "speed").m_as("rad/s") < 0
 
 
@@ -200,19 +318,19 @@ def motor_torque(torque, speed, i, eta, alpha_2=None, J_motor=None, J_1=None):
 
     Parameters
     ----------
-    torque, speed : Quantity [torque], [speed]
+    torque, speed : pint.Quantity [N·m], [rpm]
         ``T_2`` and ``ω_2`` at the gearbox output, per sample, signed alike (forwards positive).
-    i, eta : Quantity [dimensionless]
+    i, eta : pint.Quantity [1]
         Ratio and efficiency; arrays of shape ``(rows, 1)`` give one row of torques per gearbox.
-    alpha_2 : Quantity [angular acceleration], optional
+    alpha_2 : pint.Quantity [rad/s²], optional
         ``α_2`` per sample; None leaves the rotor term out (typed segments), and then the
         inertias are not needed.
-    J_motor, J_1 : Quantity [inertia]
+    J_motor, J_1 : pint.Quantity [kg·cm²]
         Needed with ``alpha_2``.
 
     Returns
     -------
-    Quantity [N·m]
+    pint.Quantity [N·m]
         ``T_1`` per sample, broadcast over the rows.
 
     Examples
@@ -220,7 +338,8 @@ def motor_torque(torque, speed, i, eta, alpha_2=None, J_motor=None, J_1=None):
     60 N·m accelerating at 150 rpm through i = 10, η = 0.97: 60 / (10 · 0.97) = 6.186 N·m; braking
     with -45 N·m: -45 · 0.97 / 10 = -4.365 N·m:
 
-    >>> motor_torque(Q_([60.0, -45.0], "N*m"), Q_([150.0, 150.0], "rpm"), Q_(10, ""), Q_(0.97, "")).m_as("N*m").round(4).tolist()
+    >>> T_1 = motor_torque(Q_([60.0, -45.0], "N*m"), Q_([150.0, 150.0], "rpm"), Q_(10, ""), Q_(0.97, ""))
+    >>> T_1.m_as("N*m").round(4).tolist()
     [6.1856, -4.365]
     """
     if alpha_2 is None:
@@ -240,6 +359,28 @@ def motor_load(dt, torque, speed, i, eta, alpha_2=None, J_motor=None, J_1=None) 
     -4.365, 0 N·m for 0.2, 0.6, 0.2, 1.0 s; RMS = √((6.186² · 0.2 + 2.062² · 0.6 + 4.365² · 0.2) / 2)
     = √(14.014 / 2) = 2.647 N·m.
 
+    Parameters
+    ----------
+    dt : pint.Quantity [s]
+        The duration of each sample.
+    torque : pint.Quantity [N·m]
+        ``T_2`` per sample.
+    speed : pint.Quantity [rad/s]
+        ``ω_2`` per sample, signed alike.
+    i, eta : pint.Quantity [1]
+        Ratio and efficiency, as :func:`motor_torque` takes them.
+    alpha_2 : pint.Quantity [rad/s²], optional
+        ``α_2`` per sample; None leaves the rotor term out.
+    J_motor, J_1 : pint.Quantity [kg·cm²], optional
+        Needed with ``alpha_2``.
+
+    Returns
+    -------
+    MotorLoad
+        The torques, their peak and RMS.
+
+    Examples
+    --------
     >>> m = motor_load(Q_([0.2, 0.6, 0.2, 1.0], "s"), Q_([60.0, 20.0, -45.0, 0.0], "N*m"),
     ...                Q_([150.0, 300.0, 150.0, 0.0], "rpm"), Q_(10, ""), Q_(0.97, ""))
     >>> round(float(m.peak.m_as("N*m")), 4), round(float(m.rms.m_as("N*m")), 4), m.rotor_term
@@ -250,11 +391,34 @@ def motor_load(dt, torque, speed, i, eta, alpha_2=None, J_motor=None, J_1=None) 
     return MotorLoad(T_1, abs(T_1).max(axis=-1), rms, alpha_2 is not None)
 
 
-def motor_checks(speed, peak=None, rms=None, peak_torque=None, rated_torque=None, max_speed=None, not_made: str | None = None) -> list:
+def motor_checks(speed, peak=None, rms=None, peak_torque=None, rated_torque=None, max_speed=None,
+                 not_made: str | None = None) -> list:
     """The motor's checks for the ratings given (a rating left out: no check): peak ``|T_1| <=
     T_1B``, RMS ``T_1rms <= T_1N``, speed ``n_2max · i <= n_max`` (``speed``: the highest motor
     speed). ``not_made`` says what the torques need where they cannot be computed (an inertia
     missing); ``peak`` and ``rms`` are then None. Arrays run over rows of gearboxes, as ``speed``.
+
+    Parameters
+    ----------
+    speed : pint.Quantity [rpm]
+        The highest motor speed ``n_2max · i``.
+    peak : pint.Quantity [N·m], optional
+        The peak ``|T_1|``.
+    rms : pint.Quantity [N·m], optional
+        ``T_1rms``.
+    peak_torque : pint.Quantity [N·m], optional
+        The motor's ``T_1B``.
+    rated_torque : pint.Quantity [N·m], optional
+        The motor's ``T_1N``.
+    max_speed : pint.Quantity [rpm], optional
+        The motor's ``n_max``.
+    not_made : str, optional
+        What the torques need where they cannot be computed.
+
+    Returns
+    -------
+    list of CheckArray
+        One per rating given.
     """
     shape = np.shape(speed.magnitude)
     out = []
@@ -264,5 +428,6 @@ def motor_checks(speed, peak=None, rms=None, peak_torque=None, rated_torque=None
         ("n_max", "n_2max · i <= n_max", speed, max_speed, "rpm", None),
     ):
         if rated is not None:
-            out.append(CheckArray(name, None, text, None if missing else required, rated * np.ones(shape), unit, not_made=missing))
+            out.append(CheckArray(name, None, text, None if missing else required, rated * np.ones(shape), unit,
+                                  not_made=missing))
     return out

@@ -58,7 +58,8 @@ VOLTAGE_CLEARANCE = 0.9
 #: A cycle longer than this share of the thermal time constant gets a note (the RMS method assumes it short).
 THERMAL_SHARE = 0.1
 #: How :func:`select_motors` ranks the catalog's motors.
-RANKING = ("passing first; then the smallest adequate motor, the lowest rated torque M_N, ties to the lower rotor inertia; "
+RANKING = ("passing first; then the smallest adequate motor, the lowest rated torque M_N, ties to the lower rotor "
+           "inertia; "
            "then lowest worst utilization; partial rows are never ranked")
 #: The load-to-motor inertia ratio a case may leave out ([motor] max_inertia_ratio).
 INERTIA_RATIO_LIMIT = 10.0
@@ -105,7 +106,8 @@ _n_N = Symbol("n_N", r"n_{N}", "speed", "rpm", "rated speed of the motor")
 _n_max = Symbol("n_max", r"n_{\mathrm{max}}", "speed", "rpm", "maximum speed of the motor")
 
 T_peak_line = Formula(
-    Symbol("T_peak_line", r"T_{\mathrm{peak}}", "torque", "N*m", "peak torque of the motor above its rated speed, from its ratings"),
+    Symbol("T_peak_line", r"T_{\mathrm{peak}}", "torque", "N*m",
+           "peak torque of the motor above its rated speed, from its ratings"),
     (_M_max, _M_N, _n, _n_N, _n_max),
     lambda sp, M_max, M_N, n, n_N, n_max: M_max - (M_max - M_N) * (n - n_N) / (n_max - n_N),
     "a reading (motor ratings): M_max up to n_N, then straight down to M_N at n_max",
@@ -124,7 +126,8 @@ T_V = Formula(
         RADIAN,
     ),
     lambda sp, U_DC, k_E, k_T, R, L, poles, n, rad: k_T * (
-        sp.sqrt((U_DC**2 / 6) * (R**2 + (poles / 2 * n * L / rad) ** 2) - (poles / 2 * n * L / rad) ** 2 * (k_E * n / sp.sqrt(3)) ** 2)
+        sp.sqrt((U_DC**2 / 6) * (R**2 + (poles / 2 * n * L / rad) ** 2)
+                - (poles / 2 * n * L / rad) ** 2 * (k_E * n / sp.sqrt(3)) ** 2)
         - R * k_E * n / sp.sqrt(3)
     ) / (R**2 + (poles / 2 * n * L / rad) ** 2),
     "a reading (motor voltage limit): (R·I + E)² + (X·I)² = (U_DC/√6)², E = k_E·n/√3, X = p·ω·L, I = T/k_T",
@@ -133,33 +136,74 @@ T_V = Formula(
 
 #: The curves a curves file may give per part.
 CURVES = ("peak", "S1")
-CURVE_COLUMNS = (Column("speed", "speed", "motor speed", positive=False), Column("torque", "torque", "torque on the curve", positive=False))
+CURVE_COLUMNS = (Column("speed", "speed", "motor speed", positive=False),
+                 Column("torque", "torque", "torque on the curve", positive=False))
 
 
 @dataclass(frozen=True)
 class Curves:
-    """Speed-torque curves digitised from the makers' charts: per (part, curve) the points as
-    speeds [rad/s] and torques [N·m], speed ascending, and the file they come from."""
+    """Speed-torque curves digitised from the makers' charts.
+
+    Parameters
+    ----------
+    points : dict
+        Per ``(part, curve)``, the points as ``(speeds [rad/s], torques [N·m])`` float arrays, speed
+        ascending.
+    path : pathlib.Path
+        The file they come from.
+    """
 
     points: dict
     path: Path
 
     def of(self, part: str, curve: str):
+        """One curve of one motor.
+
+        Parameters
+        ----------
+        part : str
+            The motor's part.
+        curve : str
+            ``"peak"`` or ``"S1"``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray or None
+            Its speeds [rad/s] and torques [N·m]; None where the file has no such curve.
+        """
         return self.points.get((part, curve))
 
 
 def read_curves(path: Path, parts) -> Curves:
     """A curves file: the columns ``part``, ``curve`` (``peak`` or ``S1``), ``speed`` and ``torque``
-    with their units in brackets, and ``source``; a curve's rows in ascending speed. An error names
-    the file, row and column: an unknown part (not in ``parts``, the catalog's), an unknown curve,
-    a speed not above the one before, a negative or malformed number, a missing source."""
+    with their units in brackets, and ``source``; a curve's rows in ascending speed.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The CSV file.
+    parts : numpy.ndarray of str
+        The catalog's parts, which the file's must be among.
+
+    Returns
+    -------
+    Curves
+        The curves by part and curve.
+
+    Raises
+    ------
+    CalcError
+        Naming the file, row and column: an unknown part, an unknown curve, a speed not above the
+        one before, a negative or malformed number, a missing source.
+    """
     try:
         text = path.read_text(encoding="utf-8-sig")
     except (OSError, UnicodeDecodeError) as exc:
         raise CalcError(f"{path}: cannot read the curves file ({type(exc).__name__})") from None
     rows = list(csv.reader(text.splitlines()))
     if not rows:
-        raise CalcError(f"{path}: expected a header and rows of part, curve, speed [unit], torque [unit], source, found an empty file")
+        raise CalcError(f"{path}: expected a header and rows of part, curve, speed [unit], torque [unit], source, "
+                        "found an empty file")
     header = {}
     for cell in rows[0]:
         m = _HEADER.match(cell)
@@ -168,7 +212,8 @@ def read_curves(path: Path, parts) -> Curves:
     for name in ("part", "curve", "source", "speed", "torque"):
         if name not in header:
             raise CalcError(f"{path}, header: expected a column {name!r}, found {', '.join(header) or 'none'}")
-    factor = {c.name: Q_(1.0, _header_unit(path, c, header[c.name][1])).m_as("rad/s" if c.name == "speed" else "N*m") for c in CURVE_COLUMNS}
+    factor = {c.name: Q_(1.0, _header_unit(path, c, header[c.name][1])).m_as("rad/s" if c.name == "speed" else "N*m")
+              for c in CURVE_COLUMNS}
     known = set(str(p) for p in parts)
     points: dict = {}
     for line, row in enumerate(rows[1:], start=2):
@@ -189,7 +234,8 @@ def read_curves(path: Path, parts) -> Curves:
             values.append(float(cell[name]) * factor[name])
         speeds, torques = points.setdefault((cell["part"], cell["curve"]), ([], []))
         if speeds and not values[0] > speeds[-1]:
-            raise CalcError(f"{where}, column speed: expected a speed above the curve's one before ({cell['speed']}), the points in ascending speed")
+            raise CalcError(f"{where}, column speed: expected a speed above the curve's one before ({cell['speed']}), "
+                            "the points in ascending speed")
         speeds.append(values[0])
         torques.append(values[1])
     note_file_read(path, "Motor curves")
@@ -198,9 +244,23 @@ def read_curves(path: Path, parts) -> Curves:
 
 @dataclass(frozen=True)
 class Cycle:
-    """A load cycle at the motor: per sample, the motor torque of each motor (rows × samples,
-    N·m), the motor speed (rad/s) and the duration (s); the RMS torque of each motor; the
-    load-to-motor inertia ratio of each (None where it cannot be had) and what it misses."""
+    """A load cycle at the motor, per sample, with the RMS torque and inertia ratio of each motor.
+
+    Parameters
+    ----------
+    torque : numpy.ndarray [N·m]
+        The motor torque of each motor (rows × samples).
+    speed : numpy.ndarray [rad/s]
+        The motor speed of each sample.
+    dt : numpy.ndarray [s]
+        The duration of each sample.
+    rms : numpy.ndarray [N·m]
+        The RMS torque of each motor.
+    inertia_ratio : numpy.ndarray [1] or None
+        The load-to-motor inertia ratio of each; None where it cannot be had.
+    inertia_ratio_missing : str, optional
+        What the inertia ratio misses.
+    """
 
     torque: np.ndarray
     speed: np.ndarray
@@ -211,8 +271,26 @@ class Cycle:
 
 
 def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None, curves: Curves | None = None) -> tuple[np.ndarray, list]:
-    """The peak torque of each catalog row at each speed (rows × speeds, N·m; ``speed`` in rad/s,
-    magnitudes), and the form each row's came from (see the module)."""
+    """The peak torque of each catalog row at each speed, and the form each row's came from (see the
+    module).
+
+    Parameters
+    ----------
+    cat : Catalog
+        The motor rows.
+    speed : numpy.ndarray [rad/s]
+        The speeds (magnitudes).
+    dc_link : pint.Quantity [V], optional
+        The drive's DC-link voltage.
+    curves : Curves, optional
+        The digitised curves.
+
+    Returns
+    -------
+    tuple
+        ``(limit, forms)``: the peak torque [N·m], rows × speeds, and per row ``"ratings"``,
+        ``"voltage limit"`` or ``"curves"``.
+    """
     n = np.abs(np.asarray(speed, float))[None, :]
     M_max = cat["M_max"].m_as("N*m")[:, None]
     M_N = cat["M_N"].m_as("N*m")[:, None]
@@ -227,7 +305,8 @@ def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None, curves: Curves | N
         if electrical.any():
             rows = np.flatnonzero(electrical)
             with np.errstate(invalid="ignore"):
-                volts = T_V.si(U_DC=float(dc_link.m_as("V")), k_E=cat["k_E"].m_as("V*s/rad")[rows, None], k_T=cat["k_T"].m_as("N*m/A")[rows, None],
+                volts = T_V.si(U_DC=float(dc_link.m_as("V")), k_E=cat["k_E"].m_as("V*s/rad")[rows, None],
+                               k_T=cat["k_T"].m_as("N*m/A")[rows, None],
                                R_ph=cat["R_ph"].m_as("ohm")[rows, None], L_ph=cat["L_ph"].m_as("H")[rows, None],
                                poles=cat["poles"].m_as("")[rows, None], n=n)
             volts = np.where(np.isnan(volts), 0.0, np.maximum(volts, 0.0))  # no current left: no torque
@@ -244,7 +323,22 @@ def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None, curves: Curves | N
 
 
 def s1_limit(cat: Catalog, speed: float, curves: Curves | None) -> np.ndarray:
-    """Each row's continuous torque at ``speed`` [rad/s] on its S1 curve; NaN without one."""
+    """Each row's continuous torque at ``speed`` on its S1 curve; NaN without one.
+
+    Parameters
+    ----------
+    cat : Catalog
+        The motor rows.
+    speed : float [rad/s]
+        The speed.
+    curves : Curves or None
+        The digitised curves.
+
+    Returns
+    -------
+    numpy.ndarray [N·m]
+        One per row.
+    """
     out = np.full(len(cat), np.nan)
     for r, part in enumerate(cat.parts):
         points = None if curves is None else curves.of(str(part), "S1")
@@ -255,7 +349,20 @@ def s1_limit(cat: Catalog, speed: float, curves: Curves | None) -> np.ndarray:
 
 @dataclass(kw_only=True)
 class MotorCandidate(Candidate):
-    """A catalog motor with its checks, its ratings and the form of its characteristic."""
+    """A catalog motor with its checks, its ratings and the form of its characteristic (the fields of
+    :class:`calc.core.selection.Candidate`, and these).
+
+    Parameters
+    ----------
+    rated_torque : Value [N·m]
+        Its rated torque ``T_1N``.
+    rotor_inertia : Value [kg·cm²]
+        Its rotor's inertia.
+    form : str
+        Where its peak torque comes from: ``"ratings"``, ``"voltage limit"`` or ``"curves"``.
+    inertia_ratio : float or None
+        The load-to-motor inertia ratio [1]; None where it cannot be had.
+    """
 
     rated_torque: Value
     rotor_inertia: Value
@@ -265,7 +372,41 @@ class MotorCandidate(Candidate):
 
 @dataclass
 class MotorSelection(Selection):
-    """The catalog motors checked against a cycle and ranked. Arrays run over the rows of ``catalog``."""
+    """The catalog motors checked against a cycle and ranked. Arrays run over the rows of ``catalog``.
+
+    Parameters
+    ----------
+    catalog : Catalog
+        The rows checked.
+    cycle : Cycle
+        The cycle at the motor.
+    limit : numpy.ndarray [N·m]
+        Peak torque of each row at each sample's speed.
+    forms : list of str
+        Per row: ``"ratings"``, ``"voltage limit"`` or ``"curves"``.
+    dc_link : pint.Quantity [V] or None
+        The drive's DC-link voltage; None where the case gives none.
+    s1 : numpy.ndarray [N·m]
+        Each row's continuous torque on its S1 curve at the mean speed (NaN without one).
+    curves : Curves or None
+        The curves file the case names, None without one.
+    mean_speed : float [rad/s]
+        The cycle's mean speed.
+    inertia_limit : float [1]
+        The highest inertia ratio allowed.
+    inertia_limit_from : str
+        Where that limit comes from.
+    checks : list of CheckArray
+        Every check.
+    passes : numpy.ndarray of bool
+        Every check made passes.
+    worst : numpy.ndarray [1]
+        Highest utilization of each row.
+    order : numpy.ndarray of int
+        The rows, best first.
+    notes : list of str
+        What the outputs say besides the checks.
+    """
 
     catalog: Catalog
     cycle: Cycle
@@ -286,20 +427,58 @@ class MotorSelection(Selection):
     candidate_type = MotorCandidate
 
     def applies(self, check, row: int) -> bool:
-        """A row with an S1 curve is held to it at the mean speed, not to its rated speed."""
+        """A row with an S1 curve is held to it at the mean speed, not to its rated speed.
+
+        Parameters
+        ----------
+        check : CheckArray
+            One of the selection's checks.
+        row : int
+            The row of the catalog.
+
+        Returns
+        -------
+        bool
+            True where the check is made for the row.
+        """
         return check.name != "n_N" or np.isnan(self.s1[row])
 
     def row_fields(self, row: int) -> dict:
         lam = None if self.cycle.inertia_ratio is None else float(self.cycle.inertia_ratio[row])
-        return dict(rated_torque=Value.of(self.catalog["M_N"][row], "N*m"), rotor_inertia=Value.of(self.catalog["J"][row], "kg*cm**2"),
+        return dict(rated_torque=Value.of(self.catalog["M_N"][row], "N*m"),
+                    rotor_inertia=Value.of(self.catalog["J"][row], "kg*cm**2"),
                     form=self.forms[row], inertia_ratio=lam)
 
 
-def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | None = None, inertia_limit: float = INERTIA_RATIO_LIMIT,
+def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | None = None,
+                  inertia_limit: float = INERTIA_RATIO_LIMIT,
                   inertia_limit_from: str = "the default", t_cycle: float | None = None) -> MotorSelection:
     """Every row of ``cat`` (no partial row) against the cycle at the motor (:class:`Cycle`), its
     checks (module docstring) and the ranking (:data:`RANKING`); failing rows after the passing
-    ones, closest to passing first."""
+    ones, closest to passing first.
+
+    Parameters
+    ----------
+    cat : Catalog
+        The motor rows.
+    cycle : Cycle
+        The cycle at the motor.
+    dc_link : pint.Quantity [V], optional
+        The drive's DC-link voltage.
+    curves : Curves, optional
+        The digitised curves.
+    inertia_limit : float [1]
+        The highest inertia ratio allowed; default :data:`INERTIA_RATIO_LIMIT`.
+    inertia_limit_from : str
+        Where that limit comes from; default ``"the default"``.
+    t_cycle : float [s], optional
+        The cycle time, against the motors' thermal time constants.
+
+    Returns
+    -------
+    MotorSelection
+        The rows checked and ranked.
+    """
     rows = len(cat)
     limit, forms = peak_limit(cat, cycle.speed, dc_link, curves)
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -315,21 +494,26 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | Non
     top = float(np.max(np.abs(cycle.speed)))
     ones = np.ones(rows)
     checks = [
-        CheckArray("peak", None, "|T_1| <= T_peak(n_1) at every sample", Q_(worst_torque, "N*m"), Q_(worst_limit, "N*m"), "N*m"),
-        CheckArray("RMS", None, "T_1rms <= M_N" if not on_curve.any() else "T_1rms <= T_S1(n_1mean), M_N without an S1 curve", Q_(cycle.rms, "N*m"),
+        CheckArray("peak", None, "|T_1| <= T_peak(n_1) at every sample", Q_(worst_torque, "N*m"),
+                   Q_(worst_limit, "N*m"), "N*m"),
+        CheckArray("RMS", None, "T_1rms <= M_N" if not on_curve.any()
+                   else "T_1rms <= T_S1(n_1mean), M_N without an S1 curve", Q_(cycle.rms, "N*m"),
                    Q_(np.where(on_curve, s1, cat["M_N"].m_as("N*m")), "N*m"), "N*m"),
         CheckArray("n_N", None, "n_1mean <= n_N", Q_(n_mean * ones, "rad/s"), cat["n_N"], "rpm"),
         CheckArray("n_max", None, "n_1max <= n_max", Q_(top * ones, "rad/s"), cat["n_max"], "rpm"),
     ]
     if cycle.inertia_ratio is not None or cycle.inertia_ratio_missing is not None:
-        checks.append(CheckArray("lambda", None, "λ <= λ_max", None if cycle.inertia_ratio is None else Q_(cycle.inertia_ratio, ""),
+        checks.append(CheckArray("lambda", None, "λ <= λ_max", None if cycle.inertia_ratio is None
+                                 else Q_(cycle.inertia_ratio, ""),
                                  Q_(inertia_limit * ones, ""), "", not_made=cycle.inertia_ratio_missing))
     passes = np.logical_and.reduce([c.passes | (on_curve if c.name == "n_N" else False) for c in checks if c.made])
     passes &= ~cat.partial
-    worst = np.max([np.where(on_curve & (c.name == "n_N"), 0.0, np.where(np.isnan(c.utilization), np.inf if c.made else 0.0, c.utilization))
+    worst = np.max([np.where(on_curve & (c.name == "n_N"), 0.0,
+                             np.where(np.isnan(c.utilization), np.inf if c.made else 0.0, c.utilization))
                     for c in checks], axis=0)
     worst = np.where(cat.partial, np.inf, worst)
-    keys = (worst, np.where(passes, cat["J"].m_as("kg*m**2"), 0.0), np.where(passes, cat["M_N"].m_as("N*m"), 0.0), ~passes)
+    keys = (worst, np.where(passes, cat["J"].m_as("kg*m**2"), 0.0), np.where(passes, cat["M_N"].m_as("N*m"), 0.0),
+            ~passes)
     order = np.lexsort(keys)
     order = order[~cat.partial[order]]
     notes = []
@@ -337,6 +521,8 @@ def select_motors(cat: Catalog, cycle: Cycle, dc_link=None, curves: Curves | Non
     if t_cycle is not None:
         long = [str(cat.parts[r]) for r in order[:3] if not np.isnan(th[r]) and t_cycle > THERMAL_SHARE * th[r]]
         if long:
-            notes.append(f"the cycle ({t_cycle:g} s) is not short against the thermal time constant of {', '.join(long)}: "
+            notes.append(f"the cycle ({t_cycle:g} s) is not short against the thermal time constant of "
+                         f"{', '.join(long)}: "
                          "the RMS torque understates the winding's peak temperature")
-    return MotorSelection(cat, cycle, limit, forms, dc_link, s1, curves, n_mean, inertia_limit, inertia_limit_from, checks, passes, worst, order, notes)
+    return MotorSelection(cat, cycle, limit, forms, dc_link, s1, curves, n_mean, inertia_limit, inertia_limit_from,
+                          checks, passes, worst, order, notes)

@@ -47,8 +47,10 @@ T_2m = Formula(
     lambda sp, n, t, T: sp.cbrt(
         segment_sum(sp.Mul(abs(n), t, abs(T) ** 3, evaluate=False)) / segment_sum(sp.Mul(abs(n), t, evaluate=False))
     ),
-    "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes; the exponent 3 is the rolling-bearing "
-    "life exponent of ISO 281 and the gearbox makers' convention for T_2m, not a gear fatigue exponent: gear S-N curves are "
+    "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes; the exponent 3 is the "
+    "rolling-bearing "
+    "life exponent of ISO 281 and the gearbox makers' convention for T_2m, not a gear fatigue exponent: gear S-N "
+    "curves are "
     "much steeper, ISO 6336)",
 )
 
@@ -64,7 +66,18 @@ Z_h = Formula(
 class Profile:
     """The output-side load cycle: one entry per segment, arrays in time order.
 
-    ``speeds`` and ``torques`` are zero in pauses. Build one with :meth:`from_segments`.
+    Build one with :meth:`from_segments`.
+
+    Parameters
+    ----------
+    phases : tuple of str
+        The phase of each segment (:data:`PHASES`).
+    durations : pint.Quantity [s]
+        The duration of each segment.
+    speeds : pint.Quantity [rpm]
+        The mean output speed of each segment; zero in pauses.
+    torques : pint.Quantity [N·m]
+        The output torque of each segment; zero in pauses.
     """
 
     phases: tuple[str, ...]
@@ -76,9 +89,25 @@ class Profile:
     def from_segments(cls, segments, where: str = "profile") -> "Profile":
         """Build a profile from ``(phase, duration, speed, torque)`` tuples of quantities.
 
-        A pause takes ``None`` for speed and torque. Raises :class:`CalcError` naming the segment
-        for an unknown phase, a duration that is not positive, a pause with a speed or a torque,
-        or a moving segment without them.
+        A pause takes ``None`` for speed and torque.
+
+        Parameters
+        ----------
+        segments : sequence of tuple
+            ``(phase, duration [s], speed [rpm], torque [N·m])`` of each segment.
+        where : str
+            The key, for error messages; default ``"profile"``.
+
+        Returns
+        -------
+        Profile
+            The load cycle.
+
+        Raises
+        ------
+        CalcError
+            Naming the segment, for an unknown phase, a duration that is not positive, a pause with a
+            speed or a torque, or a moving segment without them.
         """
         segments = list(segments)
         if not segments:
@@ -94,11 +123,13 @@ class Profile:
                 raise CalcError(f"{at}.duration: expected a duration above zero, found {duration:~P}")
             if phase == "pause":
                 if speed is not None or torque is not None:
-                    raise CalcError(f"{at}: a pause takes only a duration, found a {'speed' if speed is not None else 'torque'}")
+                    raise CalcError(f"{at}: a pause takes only a duration, found a "
+                                    f"{'speed' if speed is not None else 'torque'}")
                 n, T = 0.0, 0.0
             else:
                 if speed is None or torque is None:
-                    raise CalcError(f"{at}: a {phase} segment needs a {'speed' if speed is None else 'torque'}, found none")
+                    raise CalcError(f"{at}: a {phase} segment needs a {'speed' if speed is None else 'torque'}, found "
+                                    "none")
                 n = as_kind(speed, "speed", f"{at}.speed").m_as("rpm")
                 T = as_kind(torque, "torque", f"{at}.torque").m_as("N*m")
             phases.append(phase)
@@ -109,7 +140,8 @@ class Profile:
             raise CalcError(f"{where}: expected at least one moving segment (accel, const or decel), found only pauses")
         if not any(n != 0 for n in speeds):
             # n_2m would be 0 and T_2m = 0 / 0: the S1 means weight each torque by its speed.
-            raise CalcError(f"{where}: expected a moving segment with a speed other than zero (n_2m weights each torque by its speed), found every speed zero")
+            raise CalcError(f"{where}: expected a moving segment with a speed other than zero (n_2m weights each "
+                            "torque by its speed), found every speed zero")
         return cls(
             tuple(phases),
             Q_(np.array(durations, float), "s"),
@@ -139,14 +171,28 @@ class Profile:
         return abs(self.speeds).max()
 
     def moving_values(self) -> dict:
-        """The per-segment inputs of the S1 formulas, moving segments only."""
+        """The per-segment inputs of the S1 formulas, moving segments only.
+
+        Returns
+        -------
+        dict
+            ``n_2k`` [rpm], ``T_2k`` [N·m] and ``t_k`` [s] as quantity arrays.
+        """
         m = self.moving
         return {"n_2k": self.speeds[m], "t_k": self.durations[m], "T_2k": self.torques[m]}
 
     def to_frame(self):
         """The segments as a pandas DataFrame, units in the column names (for display).
 
-        >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+        Returns
+        -------
+        pandas.DataFrame
+            One row per segment.
+
+        Examples
+        --------
+        >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")),
+        ...                            ("pause", Q_(1, "s"), None, None)])
         >>> f = p.to_frame()
         >>> list(f.columns)
         ['segment', 'phase', 'duration t [s]', 'mean output speed n_2 [rpm]', 'output torque T_2 [N·m]']
@@ -171,6 +217,20 @@ def operating_mode(duty_cycle, on_time) -> str:
 
     A value within :data:`BOUNDARY_RTOL` below a boundary counts as on it (rounding of sums).
 
+    Parameters
+    ----------
+    duty_cycle : pint.Quantity [%]
+        ``ED``.
+    on_time : pint.Quantity [min]
+        ``t_on``.
+
+    Returns
+    -------
+    str
+        ``"S1"`` or ``"S5"``.
+
+    Examples
+    --------
     >>> operating_mode(Q_(50, "percent"), Q_(1, "s")), operating_mode(Q_(60, "percent"), Q_(1, "s"))
     ('S5', 'S1')
     >>> operating_mode(Q_((0.6 + 0.7 + 0.2) / 2.5, ""), Q_(1.5, "s"))  # 1.5 s of 2.5 s is 60 %
@@ -184,7 +244,19 @@ def operating_mode(duty_cycle, on_time) -> str:
 
 @dataclass(frozen=True)
 class Duty:
-    """Duty cycle of a profile: on-time, cycle time, ED and the operating mode (E3)."""
+    """Duty cycle of a profile: on-time, cycle time, ED and the operating mode (E3).
+
+    Parameters
+    ----------
+    t_on : pint.Quantity [s]
+        The time moving.
+    t_cycle : pint.Quantity [s]
+        The cycle time.
+    ED : pint.Quantity [%]
+        The duty cycle.
+    mode : str
+        ``"S1"`` or ``"S5"``.
+    """
 
     t_on: object
     t_cycle: object
@@ -195,7 +267,20 @@ class Duty:
 def duty(profile: Profile) -> Duty:
     """Duty cycle and operating mode of a profile.
 
-    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    Parameters
+    ----------
+    profile : Profile
+        The load cycle.
+
+    Returns
+    -------
+    Duty
+        Its on-time, cycle time, ED and mode.
+
+    Examples
+    --------
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")),
+    ...                            ("pause", Q_(1, "s"), None, None)])
     >>> d = duty(p); (float(d.ED.m_as("percent")), d.mode)
     (50.0, 'S5')
     """
@@ -205,9 +290,19 @@ def duty(profile: Profile) -> Duty:
 
 @dataclass(frozen=True)
 class Segments:
-    """The seed's segments of a sampled cycle (SI floats): phase code (:data:`PHASES`), duration
-    [s], mean speed [rad/s] and the torque [N·m] that gives the segment's cubic mean
-    (:func:`segments`)."""
+    """The seed's segments of a sampled cycle (SI floats, :func:`segments`).
+
+    Parameters
+    ----------
+    phase : numpy.ndarray
+        Phase code of each segment (:data:`PHASES`).
+    duration : numpy.ndarray [s]
+        Its duration.
+    speed : numpy.ndarray [rad/s]
+        Its mean speed.
+    torque : numpy.ndarray [N·m]
+        The torque that gives the segment's cubic mean.
+    """
 
     phase: np.ndarray
     duration: np.ndarray
@@ -227,10 +322,25 @@ def segments(s, torque: np.ndarray) -> Segments:
     exactly its value) or varies (an S-curve). A pause's torque is its mean (the torque that holds
     the load).
 
+    Parameters
+    ----------
+    s : Samples
+        The sampled cycle.
+    torque : numpy.ndarray [N·m]
+        Its torque per sample.
+
+    Returns
+    -------
+    Segments
+        One entry per segment.
+
+    Examples
+    --------
     >>> from calc.domain.motion import Move, sample
     >>> s = sample([Move(1.0, 1.0, 0.5, 0.5)], samples=100)   # a triangle: peak 2 rad/s, ±4 rad/s²
     >>> g = segments(s, 2.0 * s.acceleration)                 # T = J·α with J = 2 kg·m²
-    >>> [PHASES[p] for p in g.phase], g.duration.round(12).tolist(), g.speed.round(12).tolist(), g.torque.round(12).tolist()
+    >>> ([PHASES[p] for p in g.phase], g.duration.round(12).tolist(), g.speed.round(12).tolist(),
+    ...  g.torque.round(12).tolist())
     (['accel', 'decel'], [0.5, 0.5], [1.0, 1.0], [8.0, -8.0])
     """
     dt, v, T = s.dt, s.speed, np.asarray(torque, dtype=float)

@@ -37,7 +37,8 @@ INERTIA_RATIO_LIMIT = 10.0
 
 RULE = (
     "among the feasible ratios (best gearbox and motor pass) whose inertia ratio λ = (J_1 + J_L / i²) / J_motor is at "
-    f"most {INERTIA_RATIO_LIMIT:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within the "
+    f"most {INERTIA_RATIO_LIMIT:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within "
+    "the "
     "limit, the feasible ratio of lowest λ"
 )
 
@@ -47,6 +48,35 @@ class RatioSearch:
     """The best gearbox of each ratio of a catalog, the motor through it, and the ratio to pick.
 
     Arrays run over :attr:`ratios` (ascending) unless said otherwise.
+
+    Parameters
+    ----------
+    selection : GearboxSelection
+        Every row of the catalog, each at its own ratio.
+    ratios : numpy.ndarray [1]
+        The distinct ratios.
+    rows : numpy.ndarray of int
+        The best row of each ratio, an index into the catalog.
+    load : MotorLoad or None
+        ``T_1`` of shape (ratios, samples); None where the torques cannot be computed.
+    speed : pint.Quantity [rpm]
+        Highest motor speed ``n_2max · i``.
+    motor : list of CheckArray
+        Over the ratios, one per motor rating given.
+    inertia_ratio : numpy.ndarray [1]
+        ``λ`` of each ratio's best row (NaN where not known).
+    gearbox_passes : numpy.ndarray of bool
+        The best row passes.
+    feasible : numpy.ndarray of bool
+        The best row and the motor pass.
+    utilization : numpy.ndarray [1]
+        Highest governing utilization of gearbox and motor.
+    pick : int or None
+        The ratio picked, an index into ``ratios``.
+    reason : str
+        Why, in one sentence.
+    notes : list of str
+        What the motor torques count or lack.
     """
 
     selection: GearboxSelection  # every row of the catalog, each at its own ratio
@@ -68,16 +98,50 @@ class RatioSearch:
         return self.selection.catalog.parts[self.rows]
 
     def gearbox_reasons(self, k: int) -> list[str]:
-        """Why the best gearbox of ratio ``k`` fails (empty when it passes)."""
+        """Why the best gearbox of ratio ``k`` fails (empty when it passes).
+
+        Parameters
+        ----------
+        k : int
+            An index into :attr:`ratios`.
+
+        Returns
+        -------
+        list of str
+            One line per check.
+        """
         return self.selection.reasons(int(self.rows[k]))
 
     def motor_reasons(self, k: int) -> list[str]:
+        """Why the motor fails at ratio ``k`` (empty when it passes).
+
+        Parameters
+        ----------
+        k : int
+            An index into :attr:`ratios`.
+
+        Returns
+        -------
+        list of str
+            One line per motor check.
+        """
         return [c.reason(k) for c in self.motor if not c.passes[k]]
 
 
 def best_rows(selection: GearboxSelection) -> tuple[np.ndarray, np.ndarray]:
     """The distinct ratios of the selection's catalog (ascending) and, for each, the row ranked
-    first among the rows of that ratio."""
+    first among the rows of that ratio.
+
+    Parameters
+    ----------
+    selection : GearboxSelection
+        Every row of the catalog, checked.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The ratios [1] and the rows (indices into the catalog).
+    """
     ratio = selection.catalog["ratio"].m_as("")
     ratios, group = np.unique(ratio, return_inverse=True)
     ranked_groups = group[selection.order]
@@ -106,6 +170,30 @@ def search_ratios(
     ``rated_torque`` and ``max_speed`` those of :func:`calc.domain.motor.motor_checks`. A ratio whose
     best gearbox gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible
     (a note says so).
+
+    Parameters
+    ----------
+    catalog : Catalog
+        The gearbox rows, of every ratio.
+    profile : Profile
+        The load cycle at the output.
+    load : OutputLoad
+        The cycle at the output for the motor's side.
+    rated_torque : pint.Quantity [N·m], optional
+        The motor's ``T_1N``.
+    max_speed : pint.Quantity [rpm], optional
+        The motor's ``n_max``.
+    rotor_inertia : callable, optional
+        ``rotor_inertia(J_1)`` as above.
+    hubs : Catalog, optional
+        The clamping hubs.
+    **selection
+        Further arguments of :func:`calc.domain.gearbox.select_gearbox`.
+
+    Returns
+    -------
+    RatioSearch
+        Every ratio and the pick.
     """
     motor_peak_torque, motor_inertia = selection.get("motor_peak_torque"), selection.get("motor_inertia")
     if catalog.partial.any():  # partial rows are never ranked (no copy of a catalog without them)
@@ -122,7 +210,8 @@ def search_ratios(
             missing = "the rotor term (J_motor + J_1) · α_1 needs the motor's inertia (motor.inertia)"
         lacking = [str(p) for p, j in zip(catalog.parts[rows], J_1.magnitude) if np.isnan(j)]
         if lacking and missing is None:
-            notes = [*notes, f"the catalog gives no J_1 for {', '.join(lacking)}: the motor torque through them is not known, so their ratios are not feasible"]
+            notes = [*notes, f"the catalog gives no J_1 for {', '.join(lacking)}: the motor torque through them is not "
+                             "known, so their ratios are not feasible"]
     torques = None
     if missing is None:
         torques = motor_load(load.dt, load.torque, load.speed, i[:, None], eta[:, None], load.alpha_2, motor_inertia,
@@ -135,19 +224,45 @@ def search_ratios(
     # rows without T_2Not and a catalog's missing figures leave NaN: fmax ranks on the others
     utilization = np.fmax.reduce([sel.worst[rows], *[c.utilization for c in motor]], axis=0)
     lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
-    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, [c.not_made for c in sel.not_made + motor if c.not_made])
-    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick, reason, notes)
+    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques,
+                              [c.not_made for c in sel.not_made + motor if c.not_made])
+    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick,
+                       reason, notes)
 
 
-def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str]) -> tuple[int | None, str]:
-    """The ratio to pick by :data:`RULE` (an index into ``ratios``) and why, in one sentence."""
+def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None,
+               not_made: list[str]) -> tuple[int | None, str]:
+    """The ratio to pick by :data:`RULE` and why, in one sentence.
+
+    Parameters
+    ----------
+    ratios : numpy.ndarray [1]
+        The distinct ratios.
+    parts : numpy.ndarray of str
+        The best part of each.
+    feasible : numpy.ndarray of bool
+        The best row and the motor pass.
+    inertia_ratio : numpy.ndarray [1]
+        ``λ`` of each (NaN where not known).
+    torques : MotorLoad or None
+        The motor torques of each; None where they cannot be computed.
+    not_made : list of str
+        What is missing, where no ratio is feasible for want of it.
+
+    Returns
+    -------
+    tuple of (int or None, str)
+        An index into ``ratios`` (None where none can be picked) and the reason.
+    """
     if not feasible.any():
         why = "; ".join(dict.fromkeys(not_made)) if not_made else "at no ratio do the best gearbox and the motor pass"
         return None, f"No ratio can be picked: {why}."
     rms = np.zeros(len(ratios)) if torques is None else torques.rms.m_as("N*m")  # unknown: the ratio decides
 
     def lowest_rms(k):
-        return "the lowest ratio (the motor torque is not known)" if torques is None else f"the lowest RMS motor torque, {fmt(torques.rms[k], 'N*m')}"
+        if torques is None:
+            return "the lowest ratio (the motor torque is not known)"
+        return f"the lowest RMS motor torque, {fmt(torques.rms[k], 'N*m')}"
 
     known = ~np.isnan(inertia_ratio)
     within = feasible & known & within_rating(inertia_ratio / INERTIA_RATIO_LIMIT)
@@ -155,7 +270,8 @@ def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None
     head = f"{n} of {len(ratios)} ratios are feasible"
     if within.any():
         k = int(np.lexsort((ratios, np.where(within, rms, np.inf)))[0])
-        why = f"{head}, {int(within.sum())} of them with λ <= {INERTIA_RATIO_LIMIT:g}; of these it needs {lowest_rms(k)}"
+        why = (f"{head}, {int(within.sum())} of them with λ <= {INERTIA_RATIO_LIMIT:g}; "
+               f"of these it needs {lowest_rms(k)}")
         if within.sum() == 1:
             why = f"{head}, and only this one keeps λ <= {INERTIA_RATIO_LIMIT:g} (λ = {sig(inertia_ratio[k], 3)})"
     elif (feasible & known).any():

@@ -80,24 +80,28 @@ _T_2 = Symbol("T_2", "T_{2}", "torque", "N*m", "second limit torque of the stiff
 _K_1 = Symbol("K_1", "K_{1}", "stiffness", "N*m/rad", "stiffness from 0 to T_1")
 _K_2 = Symbol("K_2", "K_{2}", "stiffness", "N*m/rad", "stiffness from T_1 to T_2")
 _K_3 = Symbol("K_3", "K_{3}", "stiffness", "N*m/rad", "stiffness above T_2")
-_CURVE_REFERENCE = "Harmonic Drive engineering data (HFUC, CSF, CSG): torsional stiffness as three slopes K_1, K_2, K_3 with limit torques T_1, T_2"
+_CURVE_REFERENCE = ("Harmonic Drive engineering data (HFUC, CSF, CSG): torsional stiffness as three slopes K_1, K_2, "
+                    "K_3 with limit torques T_1, T_2")
 
 twist_low = Formula(
-    Symbol("phi_c1", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, first slope (up to the first limit torque)"),
+    Symbol("phi_c1", r"\varphi", "angle", "arcmin",
+           "twist by the stiffness curve, first slope (up to the first limit torque)"),
     (_T, _K_1),
     lambda sp, T, K_1: T / K_1,
     _CURVE_REFERENCE + " (T <= T_1)",
 )
 
 twist_middle = Formula(
-    Symbol("phi_c2", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, second slope (between the limit torques)"),
+    Symbol("phi_c2", r"\varphi", "angle", "arcmin",
+           "twist by the stiffness curve, second slope (between the limit torques)"),
     (_T, _T_1, _K_1, _K_2),
     lambda sp, T, T_1, K_1, K_2: sp.Add(T_1 / K_1, (T - T_1) / K_2, evaluate=False),
     _CURVE_REFERENCE + " (T_1 < T <= T_2)",
 )
 
 twist_high = Formula(
-    Symbol("phi_c3", r"\varphi", "angle", "arcmin", "twist by the stiffness curve, third slope (above the second limit torque)"),
+    Symbol("phi_c3", r"\varphi", "angle", "arcmin",
+           "twist by the stiffness curve, third slope (above the second limit torque)"),
     (_T, _T_1, _T_2, _K_1, _K_2, _K_3),
     lambda sp, T, T_1, T_2, K_1, K_2, K_3: sp.Add(T_1 / K_1, (T_2 - T_1) / K_2, (T - T_2) / K_3, evaluate=False),
     _CURVE_REFERENCE + " (T > T_2)",
@@ -119,13 +123,25 @@ class StiffnessCurve:
     The twist under a torque of either sign is the curve's at ``|T|`` (a gear's curve is
     published for one direction; the other is taken as its mirror).
 
+    Parameters
+    ----------
+    T_1 : pint.Quantity [N·m]
+        The first limit torque.
+    T_2 : pint.Quantity [N·m]
+        The second limit torque, above ``T_1``.
+    K_1, K_2, K_3 : pint.Quantity [N·m/rad]
+        The slopes below ``T_1``, from ``T_1`` to ``T_2``, above ``T_2``.
+    where : str
+        The key, for error messages; default ``"stiffness_curve"``.
+
     Examples
     --------
     Harmonic Drive's engineering data for HFUC-32-100: T_1 = 29 N·m, K_1 = 6.7·10⁴ N·m/rad,
     T_2 = 108 N·m, K_2 = 1.1·10⁵ N·m/rad; at 60 N·m, φ = 29/6.7e4 + 31/1.1e5 = 7.15·10⁻⁴ rad
     (``K_3`` does not enter below ``T_2``; 1.2·10⁵ N·m/rad here stands in for it):
 
-    >>> hfuc = StiffnessCurve(Q_(29, "N*m"), Q_(108, "N*m"), Q_(6.7e4, "N*m/rad"), Q_(1.1e5, "N*m/rad"), Q_(1.2e5, "N*m/rad"))
+    >>> hfuc = StiffnessCurve(Q_(29, "N*m"), Q_(108, "N*m"), Q_(6.7e4, "N*m/rad"), Q_(1.1e5, "N*m/rad"),
+    ...                       Q_(1.2e5, "N*m/rad"))
     >>> print(f"{hfuc.twist(Q_(60, 'N*m')).m_as('rad'):.2e}")
     7.15e-04
     """
@@ -138,19 +154,33 @@ class StiffnessCurve:
     where: str = "stiffness_curve"
 
     def __post_init__(self):
-        for key, k in (("T_1", "torque"), ("T_2", "torque"), ("K_1", "stiffness"), ("K_2", "stiffness"), ("K_3", "stiffness")):
+        for key, k in (("T_1", "torque"), ("T_2", "torque"), ("K_1", "stiffness"), ("K_2", "stiffness"),
+                       ("K_3", "stiffness")):
             name = key.replace("_", "")  # T_1 is T1 in a case file
             q = as_kind(getattr(self, key), k, f"{self.where}.{name}")
             if not np.all(q.magnitude > 0):
                 raise CalcError(
-                    f"{self.where}.{name}: expected {'a torque' if k == 'torque' else 'a slope'} above zero, found {fmt(q, 'N*m' if k == 'torque' else 'N*m/rad')}"
+                    f"{self.where}.{name}: expected {'a torque' if k == 'torque' else 'a slope'} above zero, found "
+                    f"{fmt(q, 'N*m' if k == 'torque' else 'N*m/rad')}"
                 )
         if not self.T_2.m_as("N*m") > self.T_1.m_as("N*m"):
-            raise CalcError(f"{self.where}.T2: expected a limit torque above T1 = {fmt(self.T_1, 'N*m')}, found {fmt(self.T_2, 'N*m')}")
+            raise CalcError(f"{self.where}.T2: expected a limit torque above T1 = {fmt(self.T_1, 'N*m')}, found "
+                            f"{fmt(self.T_2, 'N*m')}")
 
     def band(self, torque) -> np.ndarray:
         """The slope ``|T|`` falls on: 0 up to ``T_1``, 1 up to ``T_2``, 2 above (a limit torque
-        belongs to the band below it)."""
+        belongs to the band below it).
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            Scalar or array, either sign.
+
+        Returns
+        -------
+        numpy.ndarray of int
+            The band of each torque.
+        """
         x = abs(as_kind(torque, "torque", "torque")).m_as("N*m")
         return np.searchsorted([self.T_1.m_as("N*m"), self.T_2.m_as("N*m")], x, side="left")
 
@@ -161,23 +191,55 @@ class StiffnessCurve:
         return (twist_low, low), (twist_middle, middle), (twist_high, dict(middle, T_2=self.T_2, K_3=self.K_3))
 
     def twist(self, torque):
-        """The twist under ``torque`` (scalar or array), in arcmin: by the slope of the band
-        ``|T|`` falls in (the three formulas :data:`twist_low`, :data:`twist_middle`,
-        :data:`twist_high`)."""
+        """The twist under ``torque``: by the slope of the band ``|T|`` falls in (the three formulas
+        :data:`twist_low`, :data:`twist_middle`, :data:`twist_high`).
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            Scalar or array, either sign.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            The twist at each torque.
+        """
         t = abs(as_kind(torque, "torque", "torque"))
         by_band = [f(T=t, **figures).m_as("arcmin") for f, figures in self._band_formulas()]
         return Q_(np.choose(self.band(t), np.broadcast_arrays(*by_band))[()], "arcmin")
 
     def steps(self, torque) -> list:
-        """The twist at ``torque`` by the formula of its band, and the secant stiffness from it."""
+        """The twist at ``torque`` by the formula of its band, and the secant stiffness from it.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            One torque.
+
+        Returns
+        -------
+        list of Step
+            The twist, and the secant stiffness where the torque is not zero.
+        """
         t = abs(as_kind(torque, "torque", "torque"))
         formula, figures = self._band_formulas()[int(self.band(t))]
         twist = formula.step(T=t, **figures)
         return [twist] if t.m_as("N*m") == 0 else [twist, secant_stiffness.step(T=t, phi=twist.result)]
 
     def secant(self, torque):
-        """The secant stiffness ``|T| / φ(T)`` (scalar or array); up to ``T_1``, zero torque
-        included, that is ``K_1`` itself."""
+        """The secant stiffness ``|T| / φ(T)``; up to ``T_1``, zero torque included, that is ``K_1``
+        itself.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            Scalar or array, either sign.
+
+        Returns
+        -------
+        pint.Quantity [N·m/arcmin]
+            The secant stiffness at each torque.
+        """
         t = abs(as_kind(torque, "torque", "torque"))
         first = t.m_as("N*m") <= self.T_1.m_as("N*m")
         with np.errstate(invalid="ignore", divide="ignore"):
@@ -196,13 +258,13 @@ class Component:
     side : {"input", "output"}
         Which side of the gearbox it sits on; the gearbox itself gives its figures at its output
         (``C_t21``), so it is an ``"output"`` component.
-    stiffness : Quantity [torque / angle]
+    stiffness : pint.Quantity [N·m/arcmin]
         Torsional stiffness, above zero.
-    backlash : Quantity [angle]
+    backlash : pint.Quantity [arcmin]
         Torsional backlash, zero or more.
-    transmission_accuracy : Quantity [angle], optional
+    transmission_accuracy : pint.Quantity [arcmin], optional
         Angular transmission accuracy (range of the transmission error over one revolution).
-    nominal_torque : Quantity [torque], optional
+    nominal_torque : pint.Quantity [N·m], optional
         Nominal torque (the 3 % rule of positioning accuracy, E13).
     source : str
         Where the figures come from (the case, a catalog row, a measured loop).
@@ -237,16 +299,23 @@ class Component:
             if not q.magnitude >= 0:
                 raise CalcError(f"{where}: {key}: expected an angle of zero or more, found {q:~P}")
         if self.backlash is None:
-            raise CalcError(f"{where}: backlash: expected an angle such as \"3 arcmin\" (0 arcmin for none), found none")
+            raise CalcError(f"{where}: backlash: expected an angle such as \"3 arcmin\" (0 arcmin for none), found "
+                            "none")
 
 
 @dataclass(frozen=True)
 class Chain:
     """Components from drive to load, every figure referred to the output shaft (E11).
 
-    ``ratio`` is the gearbox's ratio ``i``; it is needed as soon as one component sits on the
-    input side.
+    Parameters
+    ----------
+    components : tuple of Component
+        The members, drive to load.
+    ratio : pint.Quantity [1], optional
+        The gearbox's ratio ``i``; needed as soon as one component sits on the input side.
 
+    Examples
+    --------
     >>> coupling = Component("EKM-15", "output", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin"))
     >>> gearbox = Component("EPL-W-064 10:1", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"))
     >>> round(float(Chain((coupling, gearbox)).stiffness.m_as("N*m/arcmin")), 2)
@@ -269,11 +338,23 @@ class Chain:
         elif any(c.side == "input" for c in self.components):
             first = next(c for c in self.components if c.side == "input")
             raise CalcError(
-                f"component {first.name!r}: sits on the input side, which is referred to the output through the gearbox ratio (E11), found no ratio"
+                f"component {first.name!r}: sits on the input side, which is referred to the output through the "
+                "gearbox ratio (E11), found no ratio"
             )
 
     def with_component(self, component: Component) -> "Chain":
-        """The chain with one more component at its load end."""
+        """The chain with one more component at its load end.
+
+        Parameters
+        ----------
+        component : Component
+            The member added.
+
+        Returns
+        -------
+        Chain
+            A new chain.
+        """
         return Chain((*self.components, component), self.ratio)
 
     @property
@@ -285,7 +366,18 @@ class Chain:
         """The chain at an output torque: each member with a stiffness curve stands in with its
         secant stiffness at the torque it carries (``|T| / i`` on the input side), so that
         ``|T| / C_k`` is the curve's own twist and ``C_total`` the chain's secant. A chain without
-        curves is returned as it is."""
+        curves is returned as it is.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            The torque at the output.
+
+        Returns
+        -------
+        Chain
+            The chain with secant stiffnesses.
+        """
         if not self.has_curves:
             return self
         t = abs(as_kind(torque, "torque", "torque"))
@@ -299,7 +391,18 @@ class Chain:
     def stiffness_at(self, torque):
         """The chain's stiffness at the output at each torque (scalar or array): ``C_total`` for a
         chain without curves; with curves the secant ``|T| / Σ φ_k(T)`` (at zero torque, the
-        series of the first slopes)."""
+        series of the first slopes).
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            The torque at the output, scalar or array.
+
+        Returns
+        -------
+        pint.Quantity [N·m/arcmin]
+            The chain's stiffness at each torque.
+        """
         if not self.has_curves:
             return self.stiffness
         t = abs(as_kind(torque, "torque", "torque"))
@@ -314,7 +417,8 @@ class Chain:
         return Q_(np.array([i if c.side == "input" else 1.0 for c in self.components]), "")
 
     def _column(self, key: str, unit: str) -> object:
-        return Q_(np.array([np.nan if getattr(c, key) is None else getattr(c, key).m_as(unit) for c in self.components]), unit)
+        return Q_(np.array([np.nan if getattr(c, key) is None else getattr(c, key).m_as(unit)
+                            for c in self.components]), unit)
 
     @property
     def names(self) -> list[str]:
@@ -353,7 +457,18 @@ class Chain:
 
     def twist(self, torque):
         """Each component's twist under ``torque`` at the output, ``|T| / C_k`` (the sum is
-        ``|T| / C_total``); a member with a stiffness curve twists by its curve."""
+        ``|T| / C_total``); a member with a stiffness curve twists by its curve.
+
+        Parameters
+        ----------
+        torque : pint.Quantity [N·m]
+            The torque at the output.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+            Each component's twist, drive to load (an array).
+        """
         t = as_kind(torque, "torque", "torque")
         return (abs(t) / self.at_torque(t).stiffness_at_output).to("arcmin")
 

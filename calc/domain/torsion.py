@@ -34,7 +34,7 @@ import numpy as np
 
 from ..core.errors import CalcError
 from ..core.formula import RADIAN, Formula, Symbol
-from ..core.units import as_kind, fmt, from_si, to_si
+from ..core.units import as_kind, fmt, from_si, to_si  # noqa: F401 (fmt: the doctests print with it)
 
 _i = Symbol("i", "i", "dimensionless", "", "ratio")
 
@@ -47,14 +47,16 @@ load_at_input = Formula(
 
 gearbox_at_input = Formula(
     Symbol("C_t1", r"C_{t,1}", "stiffness", "N*m/rad", "torsional stiffness of the gearbox referred to its input"),
-    (Symbol("C_t21", "C_{t21}", "stiffness", "N*m/arcmin", "torsional stiffness of the gearbox at its output (catalog)"), _i),
+    (Symbol("C_t21", "C_{t21}", "stiffness", "N*m/arcmin",
+            "torsional stiffness of the gearbox at its output (catalog)"), _i),
     lambda sp, C_t21, i: C_t21 / i**2,
     "errata E11 turned round: an output-side stiffness appears at the input as C / i²",
 )
 
 inertia_at_output = Formula(
     Symbol("J_out", r"J_{\mathrm{out}}", "inertia", "kg*cm**2", "inertia referred to the gearbox output"),
-    (Symbol("J_in", r"J_{\mathrm{in}}", "inertia", "kg*cm**2", "inertia on the gearbox input (the motor's, the gearbox's J_1)"), _i),
+    (Symbol("J_in", r"J_{\mathrm{in}}", "inertia", "kg*cm**2",
+            "inertia on the gearbox input (the motor's, the gearbox's J_1)"), _i),
     lambda sp, J_in, i: J_in * i**2,
     "errata E8 and E11: an input-side inertia appears at the output as J · i²",
 )
@@ -64,9 +66,18 @@ inertia_at_output = Formula(
 class Member:
     """One member of a drive train, drive to load, referred to the chain's shaft.
 
-    ``inertia`` sits on the member's drive end; ``stiffness`` (None for a rigid mass) joins it to
-    ``load_inertia`` on its load end (half a coupling). Each value is a quantity, scalar or an
-    array over candidates.
+    Each value is a quantity, scalar or an array over candidates.
+
+    Parameters
+    ----------
+    name : str
+        What it is (``"gearbox"``).
+    inertia : pint.Quantity [kg·cm²]
+        The inertia on the member's drive end.
+    stiffness : pint.Quantity [N·m/rad], optional
+        The spring joining it to ``load_inertia``; None for a rigid mass.
+    load_inertia : pint.Quantity [kg·cm²], optional
+        The inertia on its load end (half a coupling).
     """
 
     name: str
@@ -79,8 +90,16 @@ class Member:
 class Chain:
     """Masses and springs in series, drive to load, as lumped from :class:`Member` s.
 
-    ``inertias`` has the masses on its last axis, ``stiffnesses`` the springs between them (one
-    fewer); leading axes run over candidates. ``masses`` and ``springs`` name what each holds.
+    Parameters
+    ----------
+    masses : tuple of str
+        What each mass holds (``"motor + coupling"``).
+    springs : tuple of str
+        What each spring is.
+    inertias : pint.Quantity [kg·cm²]
+        The masses on the last axis; leading axes run over candidates.
+    stiffnesses : pint.Quantity [N·m/rad]
+        The springs between them (one fewer) on the last axis.
     """
 
     masses: tuple
@@ -90,13 +109,31 @@ class Chain:
 
     def natural_frequencies(self):
         """The chain's natural frequencies, lowest first, the rigid-body mode left out
-        (:func:`natural_frequencies`)."""
+        (:func:`natural_frequencies`).
+
+        Returns
+        -------
+        pint.Quantity [Hz]
+            Shape ``(..., n - 1)``.
+        """
         return natural_frequencies(self.inertias, self.stiffnesses)
 
 
 def lumped(members, where: str = "drive train") -> Chain:
     """The chain of masses and springs of ``members`` (drive to load): inertias with no spring
     between them add into one mass.
+
+    Parameters
+    ----------
+    members : sequence of Member
+        The drive train, drive to load.
+    where : str
+        The train's name, for error messages; default ``"drive train"``.
+
+    Returns
+    -------
+    Chain
+        Its masses and springs.
 
     Examples
     --------
@@ -127,14 +164,17 @@ def lumped(members, where: str = "drive train") -> Chain:
         masses.append(sum(mass))
         springs.append(to_si(m.stiffness, "stiffness", f"{where}: {m.name}, stiffness"))
         spring_names.append(m.name)
-        parts, mass = ([m.name], [to_si(m.load_inertia, "inertia", f"{where}: {m.name}, load-end inertia")]) if m.load_inertia is not None else ([], [])
+        parts, mass = ([m.name],
+                       [to_si(m.load_inertia, "inertia",
+                              f"{where}: {m.name}, load-end inertia")]) if m.load_inertia is not None else ([], [])
     if not mass:
         raise CalcError(f"{where}: the chain ends in a spring ({spring_names[-1]}); expected a mass after it")
     names.append(" + ".join(dict.fromkeys(parts)))
     masses.append(sum(mass))
     inertias = np.stack(np.broadcast_arrays(*masses), axis=-1)
     stiffnesses = np.stack(np.broadcast_arrays(*springs), axis=-1) if springs else np.zeros(inertias.shape[:-1] + (0,))
-    return Chain(tuple(names), tuple(spring_names), from_si(inertias, "inertia", "kg*cm**2"), from_si(stiffnesses, "stiffness", "N*m/rad"))
+    return Chain(tuple(names), tuple(spring_names), from_si(inertias, "inertia", "kg*cm**2"),
+                 from_si(stiffnesses, "stiffness", "N*m/rad"))
 
 
 def natural_frequencies(inertias, stiffnesses, where: str = "drive train"):
@@ -148,14 +188,16 @@ def natural_frequencies(inertias, stiffnesses, where: str = "drive train"):
 
     Parameters
     ----------
-    inertias : Quantity [inertia], shape (..., n)
+    inertias : pint.Quantity [kg·cm²], shape (..., n)
         The masses, drive to load; leading axes run over candidates.
-    stiffnesses : Quantity [stiffness], shape (..., n - 1)
+    stiffnesses : pint.Quantity [N·m/rad], shape (..., n - 1)
         The springs between neighbouring masses (with their angle unit, E15).
+    where : str
+        The train's name, for error messages; default ``"drive train"``.
 
     Returns
     -------
-    Quantity [Hz], shape (..., n - 1)
+    pint.Quantity [Hz], shape (..., n - 1)
         NaN in a candidate whose inertias or stiffnesses hold a NaN (a value the catalog leaves
         empty).
 
@@ -171,13 +213,15 @@ def natural_frequencies(inertias, stiffnesses, where: str = "drive train"):
     J = np.asarray(to_si(as_kind(inertias, "inertia", f"{where}: inertias"), "inertia", where), dtype=float)
     C = np.asarray(to_si(as_kind(stiffnesses, "stiffness", f"{where}: stiffnesses"), "stiffness", where), dtype=float)
     if J.ndim == 0 or C.shape[:-1] != J.shape[:-1] or C.shape[-1] != J.shape[-1] - 1:
-        raise CalcError(f"{where}: expected one spring fewer than masses, found inertias of shape {np.shape(J)} and stiffnesses of shape {np.shape(C)}")
+        raise CalcError(f"{where}: expected one spring fewer than masses, found inertias of shape {np.shape(J)} and "
+                        f"stiffnesses of shape {np.shape(C)}")
     n = J.shape[-1]
     if n < 2:
         raise CalcError(f"{where}: a chain needs two masses and a spring to have a mode, found {n} mass")
     valid = ~(np.isnan(J).any(axis=-1) | np.isnan(C).any(axis=-1))
     if np.any(J[valid] <= 0) or np.any(C[valid] <= 0):
-        raise CalcError(f"{where}: expected inertias and stiffnesses above zero, found {J[valid].min():g} kg·m² and {C[valid].min():g} N·m/rad at least")
+        raise CalcError(f"{where}: expected inertias and stiffnesses above zero, found {J[valid].min():g} kg·m² and "
+                        f"{C[valid].min():g} N·m/rad at least")
     J_ok, C_ok = J[valid], C[valid]
     K = np.zeros(J_ok.shape + (n,))
     k = np.arange(n - 1)
@@ -199,10 +243,21 @@ class CouplingSpan:
     """The couplings a case may fit between motor and gearbox, and what the drive train around
     them holds fixed: enough to bound, for any gearbox, the first mode its train can reach.
 
-    ``drive_inertia`` is the motor's rotor, ``load_inertia`` the load at the gearbox output;
-    ``stiffness`` and ``inertia`` are arrays over the couplings (each its ``C_T`` and its whole
-    ``J``, half on each end of its spring); ``f_min`` is the lowest first mode allowed (``2 f_er``,
-    E7); ``couplings`` says which couplings they are."""
+    Parameters
+    ----------
+    drive_inertia : pint.Quantity [kg·cm²]
+        The motor's rotor.
+    load_inertia : pint.Quantity [kg·cm²]
+        The load at the gearbox output.
+    stiffness : pint.Quantity [N·m/rad]
+        Each coupling's ``C_T``, an array over the couplings.
+    inertia : pint.Quantity [kg·cm²]
+        Each coupling's whole ``J`` (half on each end of its spring), an array over the couplings.
+    f_min : pint.Quantity [Hz]
+        The lowest first mode allowed (``2 f_er``, E7).
+    couplings : str
+        Which couplings they are.
+    """
 
     drive_inertia: object
     load_inertia: object
@@ -215,8 +270,10 @@ class CouplingSpan:
 # Named a, b, c drive to load (J_1 is the gearbox's inertia everywhere else).
 _J = [Symbol(f"J_{k}", f"J_{{{k}}}", "inertia", "kg*cm**2", f"{what} of a chain of three masses, referred to one shaft")
       for k, what in (("a", "the first mass (the drive)"), ("b", "the middle mass"), ("c", "the last mass (the load)"))]
-_C = [Symbol(f"C_{k}", f"C_{{{k}}}", "stiffness", "N*m/rad", f"{what} of a chain of three masses, referred to the same shaft")
-      for k, what in (("ab", "the spring between the first and the middle mass"), ("bc", "the spring between the middle and the last mass"))]
+_C = [Symbol(f"C_{k}", f"C_{{{k}}}", "stiffness", "N*m/rad",
+             f"{what} of a chain of three masses, referred to the same shaft")
+      for k, what in (("ab", "the spring between the first and the middle mass"),
+                      ("bc", "the spring between the middle and the last mass"))]
 
 
 def _first_mode_of_three(sp, J_a, J_b, J_c, C_ab, C_bc, rad):
@@ -228,7 +285,8 @@ def _first_mode_of_three(sp, J_a, J_b, J_c, C_ab, C_bc, rad):
 
 
 first_mode_of_three = Formula(
-    Symbol("f_1", "f_{1}", "frequency", "Hz", "first natural frequency of the drive train (of a chain of three masses)"),
+    Symbol("f_1", "f_{1}", "frequency", "Hz",
+           "first natural frequency of the drive train (of a chain of three masses)"),
     (*_J, *_C, RADIAN),
     _first_mode_of_three,
     "the eigenproblem of three masses and two springs, free at both ends, solved in closed form (calc.domain.torsion)",
@@ -236,25 +294,43 @@ first_mode_of_three = Formula(
 
 
 def highest_first_mode(span: CouplingSpan, J_1, C_t21, i):
-    """For each gearbox (arrays ``J_1``, ``C_t21`` and ``i`` over gearboxes), the highest first
-    natural frequency of the train motor, coupling, gearbox, load that any coupling of ``span``
-    gives it: the train lumped as :func:`lumped` does, seen from the gearbox input (the load as
-    ``J_L / i²``, the gearbox's spring as ``C_t21 / i²``). NaN for a gearbox whose ``J_1`` or
-    ``C_t21`` is unknown.
+    """For each gearbox, the highest first natural frequency of the train motor, coupling, gearbox,
+    load that any coupling of ``span`` gives it: the train lumped as :func:`lumped` does, seen from
+    the gearbox input (the load as ``J_L / i²``, the gearbox's spring as ``C_t21 / i²``).
 
     A gearbox is the train's soft spring: where even the best coupling leaves the first mode below
     ``2 f_er``, no coupling can rescue it.
 
+    Parameters
+    ----------
+    span : CouplingSpan
+        The couplings and the fixed members.
+    J_1 : pint.Quantity [kg·cm²]
+        Each gearbox's input inertia, an array over gearboxes.
+    C_t21 : pint.Quantity [N·m/arcmin]
+        Each gearbox's torsional stiffness at its output.
+    i : pint.Quantity [1]
+        Each gearbox's ratio.
+
+    Returns
+    -------
+    pint.Quantity [Hz]
+        Over gearboxes; NaN for a gearbox whose ``J_1`` or ``C_t21`` is unknown.
+
+    Examples
+    --------
     >>> from calc.core.units import Q_
     >>> span = CouplingSpan(Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2"), Q_([25_000, 6_000], "N*m/rad"),
     ...                     Q_([1.0, 0.6], "kg*cm**2"), Q_(200, "Hz"), "two bellows")
-    >>> highest_first_mode(span, Q_([0.93], "kg*cm**2"), Q_([22], "N*m/arcmin"), Q_([10], "")).m_as("Hz").round(1).tolist()
+    >>> f_1 = highest_first_mode(span, Q_([0.93], "kg*cm**2"), Q_([22], "N*m/arcmin"), Q_([10], ""))
+    >>> f_1.m_as("Hz").round(1).tolist()
     [208.0]
     """
     C, J = span.stiffness.m_as("N*m/rad"), span.inertia.m_as("kg*m**2")
     # A stiffer spring raises every mode and more inertia lowers every one: a coupling that another
     # beats on both (stiffer, no heavier; or lighter, no softer) cannot give the highest.
-    beaten = ((C[None, :] >= C[:, None]) & (J[None, :] <= J[:, None]) & ((C[None, :] > C[:, None]) | (J[None, :] < J[:, None]))).any(axis=1)
+    beaten = ((C[None, :] >= C[:, None]) & (J[None, :] <= J[:, None])
+              & ((C[None, :] > C[:, None]) | (J[None, :] < J[:, None]))).any(axis=1)
     C, J = C[~beaten], J[~beaten]
     # Gearboxes down, couplings across: SI magnitudes, checked as quantities by the formulas above.
     half = J[None, :] / 2

@@ -41,23 +41,39 @@ transmission_error = Formula(
         Symbol("i", "i", "dimensionless", "", "ratio"),
     ),
     lambda sp, phi_2, phi_1, i: phi_2 - phi_1 / i,
-    "source, Angular Transmission Accuracy: actual output position relative to the theoretical output position according to the ratio",
+    "source, Angular Transmission Accuracy: actual output position relative to the theoretical output position "
+    "according to the ratio",
 )
 
 transmission_accuracy = Formula(
     Symbol("phi_TA", r"\varphi_{\mathrm{TA}}", "angle", "arcsec", "angular transmission accuracy"),
     (
-        Symbol("Delta_phi_max", r"\Delta\varphi_{2,\max}", "angle", "arcsec", "largest transmission error over one output revolution"),
-        Symbol("Delta_phi_min", r"\Delta\varphi_{2,\min}", "angle", "arcsec", "smallest transmission error over one output revolution"),
+        Symbol("Delta_phi_max", r"\Delta\varphi_{2,\max}", "angle", "arcsec",
+               "largest transmission error over one output revolution"),
+        Symbol("Delta_phi_min", r"\Delta\varphi_{2,\min}", "angle", "arcsec",
+               "smallest transmission error over one output revolution"),
     ),
     lambda sp, hi, lo: hi - lo,
-    "source, Angular Transmission Accuracy: maximum position variation - minimum position variation over a full output revolution",
+    "source, Angular Transmission Accuracy: maximum position variation - minimum position variation over a full output "
+    "revolution",
 )
 
 
 @dataclass(frozen=True)
 class Trace:
-    """Input and output positions in the order recorded (quantity arrays), and their source."""
+    """Input and output positions in the order recorded (quantity arrays), and their source.
+
+    Parameters
+    ----------
+    input : pint.Quantity [deg]
+        Input positions.
+    output : pint.Quantity [deg]
+        Output positions.
+    source : str
+        Where it came from; default ``"trace"``.
+    comments : tuple of str
+        The file's comment lines.
+    """
 
     input: object
     output: object
@@ -69,14 +85,40 @@ class Trace:
 
 
 def read_trace(path) -> Trace:
-    """Read a recorded trace: a CSV file with columns ``input [unit]`` and ``output [unit]``."""
+    """Read a recorded trace: a CSV file with columns ``input [unit]`` and ``output [unit]``.
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file.
+
+    Returns
+    -------
+    Trace
+        Its positions in the order recorded.
+    """
     m = read_measurement(path, COLUMNS)
     return Trace(m["input"], m["output"], source=str(path), comments=m.comments)
 
 
 def write_trace(path, trace: Trace, comments: tuple[str, ...]) -> None:
-    """Write a trace as a measurement file (positions in degrees, to 10 significant figures)."""
-    write_measurement(path, {"input": trace.input, "output": trace.output}, {"input": "deg", "output": "deg"}, comments, digits=10)
+    """Write a trace as a measurement file (positions in degrees, to 10 significant figures).
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file to write.
+    trace : Trace
+        The trace.
+    comments : tuple of str
+        The file's comment lines.
+
+    Returns
+    -------
+    None
+    """
+    write_measurement(path, {"input": trace.input, "output": trace.output}, {"input": "deg", "output": "deg"}, comments,
+                      digits=10)
 
 
 def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int = 0, teeth: int = 31) -> Trace:
@@ -86,15 +128,20 @@ def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int 
     term (out-of-roundness) and a tooth-mesh ripple ``teeth · i`` times per revolution, with
     random phases; its peak amplitudes are 1/2, 1/4 and 1/8 of ``amplitude``.
 
+    Returns
+    -------
+    Trace
+        The input and output positions.
+
     Parameters
     ----------
-    ratio : Quantity [dimensionless]
+    ratio : pint.Quantity [1]
         ``i``, input turns per output turn.
-    amplitude : Quantity [angle]
+    amplitude : pint.Quantity [arcmin]
         Scale of the error (the range comes out somewhat below ``2 × amplitude``).
     samples : int
         Samples per direction.
-    noise : Quantity [angle], optional
+    noise : pint.Quantity [arcmin], optional
         Standard deviation of normal noise on the output position.
     seed : int
         Seed of the random phases and noise.
@@ -108,7 +155,8 @@ def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int 
     theta = np.linspace(0.0, 2 * np.pi, samples)
     theta = np.concatenate((theta, theta[::-1]))
     error = a * (
-        0.5 * np.sin(theta + phases[0]) + 0.25 * np.sin(2 * theta + phases[1]) + 0.125 * np.sin(teeth * i * theta + phases[2])
+        0.5 * np.sin(theta + phases[0]) + 0.25 * np.sin(2 * theta + phases[1])
+        + 0.125 * np.sin(teeth * i * theta + phases[2])
     )
     if noise is not None:
         error = error + rng.normal(0.0, as_kind(noise, "angle", "noise").m_as("rad"), len(theta))
@@ -117,7 +165,25 @@ def generate_trace(ratio, amplitude, samples: int = 1000, noise=None, seed: int 
 
 @dataclass(frozen=True)
 class TransmissionAnalysis:
-    """The transmission error of a trace and its range per direction of travel."""
+    """The transmission error of a trace and its range per direction of travel.
+
+    Parameters
+    ----------
+    output : pint.Quantity [deg]
+        Output position per sample.
+    error : pint.Quantity [arcsec]
+        Transmission error per sample, its mean over the record taken out.
+    direction : numpy.ndarray of int
+        +1 forward, -1 backward, per sample.
+    ranges : dict
+        Direction name to ``(min, max)`` quantity array [arcsec].
+    accuracy : pint.Quantity [arcsec]
+        The larger range.
+    governing : str
+        The direction of the larger range.
+    source : str
+        Where the trace came from.
+    """
 
     output: object  # quantity array, output position [deg]
     error: object  # quantity array, transmission error [arcsec], its mean over the record taken out
@@ -128,7 +194,13 @@ class TransmissionAnalysis:
     source: str
 
     def step(self):
-        """The accuracy formula with this trace's numbers."""
+        """The accuracy formula with this trace's numbers.
+
+        Returns
+        -------
+        Step
+            The evaluated formula.
+        """
         lo, hi = self.ranges[self.governing]
         return transmission_accuracy.step(Delta_phi_max=hi, Delta_phi_min=lo)
 
@@ -140,7 +212,7 @@ def analyze_trace(trace: Trace, ratio) -> TransmissionAnalysis:
     ----------
     trace : Trace
         Input and output positions, one or more output revolutions in one or both directions.
-    ratio : Quantity [dimensionless]
+    ratio : pint.Quantity [1]
         ``i`` of the gearbox.
 
     Returns
@@ -186,7 +258,8 @@ def analyze_trace(trace: Trace, ratio) -> TransmissionAnalysis:
             ranges[name] = Q_(np.array([error[mask].min(), error[mask].max()]), "arcsec")
     if not ranges:
         found = ", ".join(f"{k} {v:.4g}°" for k, v in covered.items()) or "no direction with enough samples"
-        raise CalcError(f"{where}: expected a full revolution of the output (360°) in at least one direction, found {found}")
+        raise CalcError(f"{where}: expected a full revolution of the output (360°) in at least one direction, found "
+                        f"{found}")
     spans = {k: transmission_accuracy(Delta_phi_max=v[1], Delta_phi_min=v[0]) for k, v in ranges.items()}
     governing = max(spans, key=lambda k: spans[k].m_as("arcsec"))
     return TransmissionAnalysis(

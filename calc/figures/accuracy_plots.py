@@ -49,6 +49,18 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
     Right: the detail of ±3 % of the nominal torque (the source's second figure), with the
     backlash (width at 0 N·m) and the lost motion (width over the ±3 % band) marked.
 
+    Parameters
+    ----------
+    loop : Loop
+        The measured or modelled loop.
+    analysis : LoopAnalysis
+        What :func:`calc.domain.hysteresis.analyze_loop` reads from it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two axes: the whole loop and the detail around zero.
+
     Examples
     --------
     >>> from calc import Q_
@@ -79,11 +91,13 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
     for a, b in ((lo, hi), (-hi, -lo)):
         ax.axvspan(a, b, color=BAND_COLOR, linewidth=0, zorder=0)
     ax.plot(t, phi, color=LOOP_COLOR, linewidth=0.9, zorder=2)
-    for fit, sign, stiff in ((analysis.fit_positive, 1, analysis.stiffness_positive), (analysis.fit_negative, -1, analysis.stiffness_negative)):
+    for fit, sign, stiff in ((analysis.fit_positive, 1, analysis.stiffness_positive),
+                             (analysis.fit_negative, -1, analysis.stiffness_negative)):
         ft, fp = fit.torque.m_as("N*m"), fit.twist.m_as("arcmin")
         ax.plot(ft, fp, color=FIT_COLOR, linewidth=2.4, zorder=3)
         ax.annotate(
-            f"$C_t$ = {fmt(stiff, 'N*m/arcmin', 4)}\n({fit.samples} loading samples)", (ft.mean(), fp.mean()), xytext=(0, -22 * sign),
+            f"$C_t$ = {fmt(stiff, 'N*m/arcmin', 4)}\n({fit.samples} loading samples)", (ft.mean(), fp.mean()),
+            xytext=(0, -22 * sign),
             textcoords="offset points", ha="center", va="top" if sign > 0 else "bottom", fontsize=8, color=FIT_COLOR,
         )
     ax.set_ylabel("twist at the output $\\varphi$ [arcmin]")
@@ -100,11 +114,14 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
         detail.hlines(y, -edge, edge, color=MARK_COLOR, linewidth=0.9, linestyles="--", zorder=3)
     for y in zero:
         detail.plot([0], [y], "o", color=FIT_COLOR, markersize=5, zorder=4)
-    _double_arrow(detail, 0.0, zero[0], zero[1], f"backlash $j_t$\n= {fmt(analysis.backlash, 'arcmin', 3)}", FIT_COLOR, side="left")
-    _double_arrow(detail, edge, band[0], band[1], f"lost motion\n(±3 % $T_N$)\n= {fmt(analysis.lost_motion, 'arcmin', 3)}", MARK_COLOR)
+    _double_arrow(detail, 0.0, zero[0], zero[1], f"backlash $j_t$\n= {fmt(analysis.backlash, 'arcmin', 3)}", FIT_COLOR,
+                  side="left")
+    _double_arrow(detail, edge, band[0], band[1],
+                  f"lost motion\n(±3 % $T_N$)\n= {fmt(analysis.lost_motion, 'arcmin', 3)}", MARK_COLOR)
     detail.set_title("Detail of ±3 % of nominal torque", fontsize=9)
 
-    fig.suptitle(f"Torsional stiffness, backlash and lost motion from a hysteresis loop (E12) - {analysis.source}", fontsize=10)
+    fig.suptitle(f"Torsional stiffness, backlash and lost motion from a hysteresis loop (E12) - {analysis.source}",
+                 fontsize=10)
     fig.legend(
         handles=[
             Patch(color=BAND_COLOR, label="50 % to 100 % of $T_N$: stiffness is the slope here"),
@@ -121,6 +138,18 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     Every component carries the same torque, so its share of the twist is its share of the
     compliance ``1/C``; each bar is labelled with its twist under ``applied_torque`` and its
     stiffness referred to the output.
+
+    Parameters
+    ----------
+    chain : Chain
+        The members, drive to load.
+    applied_torque : pint.Quantity [N·m]
+        The torque at the output.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes of horizontal bars.
 
     Examples
     --------
@@ -147,7 +176,8 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     ax.barh(y, shares, color=colors, height=0.6, zorder=2)
     for k in range(len(names)):
         ax.annotate(
-            f"{sig(shares[k], 3)} %: {sig(twist[k], 3)} arcmin, C = {fmt(c_out[k], 'N*m/arcmin', 4)}" if np.isfinite(c_out[k].magnitude)
+            f"{sig(shares[k], 3)} %: {sig(twist[k], 3)} arcmin, C = {fmt(c_out[k], 'N*m/arcmin', 4)}"
+            if np.isfinite(c_out[k].magnitude)
             else "C unknown: reckoned rigid, so the twist is more",
             (shares[k], y[k]), xytext=(4, 0), textcoords="offset points", va="center", fontsize=8,
         )
@@ -158,17 +188,29 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     ax.grid(True, axis="x", color="#dddddd", linewidth=0.6, zorder=0)
     ratio = "" if chain.ratio is None else f", input side × i² with i = {sig(chain.ratio.m_as(''))}"
     ax.set_title(
-        f"Stiffness chain at {fmt(torque, 'N*m')}: $C_{{total}}$ {'≤' if np.isinf(c_out.magnitude).any() else '='} {fmt(chain.stiffness, 'N*m/arcmin', 4)}, "
+        f"Stiffness chain at {fmt(torque, 'N*m')}: $C_{{total}}$ {'≤' if np.isinf(c_out.magnitude).any() else '='} "
+        f"{fmt(chain.stiffness, 'N*m/arcmin', 4)}, "
         f"twist {sig(twist.sum(), 3)} arcmin (E11{ratio})",
         fontsize=9,
     )
-    fig.legend(handles=[Patch(color=v, label=f"{k} side of the gearbox") for k, v in SIDE_COLORS.items()], loc="outside lower center", ncols=2, fontsize=8, frameon=False)
+    fig.legend(handles=[Patch(color=v, label=f"{k} side of the gearbox") for k, v in SIDE_COLORS.items()],
+               loc="outside lower center", ncols=2, fontsize=8, frameon=False)
     return fig
 
 
 def transmission_error_figure(analysis: TransmissionAnalysis):
-    """Transmission error against the output position over one revolution, each direction, with
+    r"""Transmission error against the output position over one revolution, each direction, with
     the range that is the angular transmission accuracy.
+
+    Parameters
+    ----------
+    analysis : TransmissionAnalysis
+        The trace's error and ranges.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
 
     Examples
     --------
@@ -176,7 +218,7 @@ def transmission_error_figure(analysis: TransmissionAnalysis):
     >>> from calc.domain.transmission import analyze_trace, generate_trace
     >>> a = analyze_trace(generate_trace(Q_(10, ""), Q_(40, "arcsec")), Q_(10, ""))
     >>> transmission_error_figure(a).axes[0].get_ylabel()
-    'transmission error $\\\\Delta\\\\varphi_2$ [arcsec]'
+    'transmission error $\\Delta\\varphi_2$ [arcsec]'
     """
     from matplotlib.figure import Figure
 
@@ -190,7 +232,8 @@ def transmission_error_figure(analysis: TransmissionAnalysis):
         if name not in analysis.ranges:
             continue
         lo, hi = analysis.ranges[name].m_as("arcsec")
-        ax.plot(out[mask] - start, err[mask], color=DIRECTION_COLORS[name], linewidth=0.9, label=f"{name}: range {sig(hi - lo, 3)} arcsec")
+        ax.plot(out[mask] - start, err[mask], color=DIRECTION_COLORS[name], linewidth=0.9,
+                label=f"{name}: range {sig(hi - lo, 3)} arcsec")
     lo, hi = analysis.ranges[analysis.governing].m_as("arcsec")
     ax.axhspan(lo, hi, color=BAND_COLOR, zorder=0, linewidth=0)
     for v in (lo, hi):
@@ -211,7 +254,24 @@ def transmission_error_figure(analysis: TransmissionAnalysis):
 
 
 def target_points(offset, spread: float, count: int = 12, seed: int = 0) -> np.ndarray:
-    """Seeded hits around a target: ``count`` points, mean ``offset``, normal ``spread`` (x, y)."""
+    """Seeded hits around a target.
+
+    Parameters
+    ----------
+    offset : sequence of float
+        The mean ``(x, y)`` of the hits.
+    spread : float
+        The standard deviation of each coordinate.
+    count : int
+        How many points; default 12.
+    seed : int
+        Seed of the random generator; default 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``count`` rows of ``(x, y)``.
+    """
     rng = np.random.default_rng(seed)
     return np.asarray(offset, float) + rng.normal(0.0, spread, (count, 2))
 
@@ -223,6 +283,18 @@ def accuracy_targets_figure(seed: int = 0):
     is how close they come to each other. Poor/poor: scattered and off; poor/good: tight but
     off; good/good: tight and on.
 
+    Parameters
+    ----------
+    seed : int
+        Seed of the hits; default 0.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Three axes, one per target.
+
+    Examples
+    --------
     >>> [a.get_title().splitlines()[0] for a in accuracy_targets_figure().axes]
     ['Poor positioning accuracy,', 'Poor positioning accuracy,', 'Good positioning accuracy,']
     """
@@ -236,7 +308,8 @@ def accuracy_targets_figure(seed: int = 0):
             ax.add_patch(_circle(r, shade))
         pts = target_points(offset, spread, seed=seed + k)
         ax.plot([0], [0], "o", color="black", markersize=6, markeredgecolor="white", zorder=5)
-        ax.plot(pts[:, 0], pts[:, 1], "*", color=MARK_COLOR, markersize=9, markeredgecolor="white", markeredgewidth=0.4, zorder=4)
+        ax.plot(pts[:, 0], pts[:, 1], "*", color=MARK_COLOR, markersize=9, markeredgecolor="white", markeredgewidth=0.4,
+                zorder=4)
         ax.set_xlim(-4.3, 4.3)
         ax.set_ylim(-4.3, 4.3)
         ax.set_aspect("equal")
@@ -261,14 +334,26 @@ def _circle(radius, color):
 
 
 def positioning_scatter_figure(scatter: PositioningScatter):
-    """A measured positioning record: each approach's error at its target, with the measured
+    r"""A measured positioning record: each approach's error at its target, with the measured
     accuracy (largest error) and repeatability (largest spread at one target) marked.
 
+    Parameters
+    ----------
+    scatter : PositioningScatter
+        The measured record.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
+
+    Examples
+    --------
     >>> from calc import Q_
     >>> from calc.domain.accuracy import analyze_positions
     >>> s = analyze_positions(Q_([0, 0, 90, 90], "deg"), Q_([0.01, 0.02, 90.01, 90.03], "deg"))
     >>> positioning_scatter_figure(s).axes[0].get_ylabel()
-    'positioning error $\\\\Delta\\\\varphi$ [arcmin]'
+    'positioning error $\\Delta\\varphi$ [arcmin]'
     """
     from matplotlib.figure import Figure
 
@@ -278,7 +363,8 @@ def positioning_scatter_figure(scatter: PositioningScatter):
     fig = Figure(figsize=(8.0, 4.2), layout="constrained")
     ax = fig.subplots()
     a = scatter.accuracy.m_as("arcmin")
-    ax.axhspan(-a, a, color=BAND_COLOR, linewidth=0, zorder=0, label=f"accuracy: largest |error| {fmt(scatter.accuracy, 'arcmin', 3)}")
+    ax.axhspan(-a, a, color=BAND_COLOR, linewidth=0, zorder=0,
+               label=f"accuracy: largest |error| {fmt(scatter.accuracy, 'arcmin', 3)}")
     ax.axhline(0, color="black", linewidth=0.8)
     ax.plot(g, err, "*", color=MARK_COLOR, markersize=8, zorder=3, label="actual - target, each approach")
     low = np.full(len(keys), np.inf)
@@ -297,7 +383,8 @@ def positioning_scatter_figure(scatter: PositioningScatter):
     ax.grid(True, axis="y", color="#dddddd", linewidth=0.6)
     ax.set_ylim(min(-1.2 * a, 1.2 * err.min()), max(1.2 * a, 1.2 * err.max()))
     fig.legend(loc="outside lower center", ncols=2, fontsize=8, frameon=False)
-    ax.set_title(f"Measured positioning: {len(err)} approaches to {scatter.targets} targets - {scatter.source}", fontsize=9)
+    ax.set_title(f"Measured positioning: {len(err)} approaches to {scatter.targets} targets - {scatter.source}",
+                 fontsize=9)
     return fig
 
 
@@ -308,11 +395,26 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     (``φ_TA + |T| / C``), as the source writes it (E13), so the curve jumps at 3 %. Repeatability is
     the backlash at rest and at most the lost motion ``j_t + |T| / C`` under torque.
 
+    Parameters
+    ----------
+    chain : Chain
+        The members, drive to load.
+    nominal_torque : pint.Quantity [N·m], optional
+        ``T_N``; default the chain's.
+    applied_torque : pint.Quantity [N·m], optional
+        The case's torque, marked on the curves.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
+
     Examples
     --------
     >>> from calc import Q_
     >>> from calc.domain.stiffness import Component
-    >>> c = Chain((Component("gearbox", "output", Q_(22, "N*m/arcmin"), Q_(8, "arcmin"), Q_(63, "arcsec"), Q_(110, "N*m")),))
+    >>> c = Chain((Component("gearbox", "output", Q_(22, "N*m/arcmin"), Q_(8, "arcmin"), Q_(63, "arcsec"),
+    ...                      Q_(110, "N*m")),))
     >>> positioning_rule_figure(c, applied_torque=Q_(8, "N*m")).axes[0].get_xlabel()
     'applied torque at the output $|T|$ [N·m]'
     """
@@ -328,12 +430,15 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     bound = lost_motion(j_t=chain.backlash, T=Q_(torque, "N*m"), C=stiffness).m_as("arcmin")
     fig = Figure(figsize=(8.0, 4.4), layout="constrained")
     ax = fig.subplots()
-    ax.axvspan(0, edge, color=LOW_BAND_COLOR, linewidth=0, zorder=0, label=f"|T| <= 3 % of $T_N$ ({sig(edge, 3)} N·m): $\\varphi_{{TA}} + j_t$")
+    ax.axvspan(0, edge, color=LOW_BAND_COLOR, linewidth=0, zorder=0,
+               label=f"|T| <= 3 % of $T_N$ ({sig(edge, 3)} N·m): $\\varphi_{{TA}} + j_t$")
     ax.plot(torque, acc, color=FIT_COLOR, linewidth=2.0, label="positioning accuracy (E13)")
-    ax.plot(torque, bound, color=LOOP_COLOR, linewidth=1.4, linestyle="--", label="repeatability at most: lost motion $j_t + |T|/C$")
+    ax.plot(torque, bound, color=LOOP_COLOR, linewidth=1.4, linestyle="--",
+            label="repeatability at most: lost motion $j_t + |T|/C$")
     if applied_torque is not None:
         t = abs(as_kind(applied_torque, "torque", "applied_torque").m_as("N*m"))
-        a = positioning_accuracy(Q_(t, "N*m"), t_n, **{**args, "stiffness": chain.stiffness_at(Q_(t, "N*m"))}).m_as("arcmin")
+        a = positioning_accuracy(Q_(t, "N*m"), t_n,
+                                 **{**args, "stiffness": chain.stiffness_at(Q_(t, "N*m"))}).m_as("arcmin")
         ax.plot([t], [a], "o", color=MARK_COLOR, zorder=4, label=f"the case: {sig(t, 3)} N·m -> {sig(a, 3)} arcmin")
     ax.set_xlim(0, t_n.m_as("N*m"))
     ax.set_ylim(0, None)
@@ -342,9 +447,11 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     ax.grid(True, color="#dddddd", linewidth=0.6)
     fig.legend(loc="outside lower center", ncols=2, fontsize=8, frameon=False)
     ax.set_title(
-        f"Positioning accuracy and repeatability against torque (E13)\n$\\varphi_{{TA}}$ = {fmt(chain.transmission_accuracy, 'arcmin', 3)}, "
+        f"Positioning accuracy and repeatability against torque (E13)\n$\\varphi_{{TA}}$ = "
+        f"{fmt(chain.transmission_accuracy, 'arcmin', 3)}, "
         f"$j_t$ = {fmt(chain.backlash, 'arcmin', 3)}, "
-        + ("C: the secant of the stiffness curves at each torque" if chain.has_curves else f"C = {fmt(chain.stiffness, 'N*m/arcmin', 4)}")
+        + ("C: the secant of the stiffness curves at each torque" if chain.has_curves
+           else f"C = {fmt(chain.stiffness, 'N*m/arcmin', 4)}")
         + f", $T_N$ = {fmt(t_n, 'N*m')}",
         fontsize=9,
     )

@@ -21,6 +21,28 @@ def combinations_figure(utilization, feasible, ratios, motor_names, pick=None, r
     ``ratio_of_rows`` the ratio of each gearbox row, ``ratios`` the columns (ascending),
     ``motor_names`` the rows, ``pick`` the (gearbox row, motor) picked.
 
+    Parameters
+    ----------
+    utilization : numpy.ndarray [1]
+        Gearbox rows × motors.
+    feasible : numpy.ndarray of bool
+        Gearbox rows × motors.
+    ratios : numpy.ndarray [1]
+        The columns, ascending.
+    motor_names : sequence of str
+        The rows.
+    pick : tuple of int, optional
+        The ``(gearbox row, motor)`` picked.
+    ratio_of_rows : numpy.ndarray [1], optional
+        The ratio of each gearbox row.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
+
+    Examples
+    --------
     >>> import numpy as np
     >>> u = np.array([[0.5, 0.9], [1.2, 0.4]])
     >>> fig = combinations_figure(u, u <= 1, [5.0, 10.0], ["A", "B"], (0, 0), ratio_of_rows=np.array([5.0, 10.0]))
@@ -44,7 +66,8 @@ def combinations_figure(utilization, feasible, ratios, motor_names, pick=None, r
     fig = Figure(figsize=(7.5, height), layout="constrained")
     ax = fig.subplots()
     ax.set_facecolor(INFEASIBLE)
-    image = ax.imshow(best, aspect="auto", cmap=FEASIBLE_MAP, vmin=0.0, vmax=1.0, interpolation="nearest", origin="lower")
+    image = ax.imshow(best, aspect="auto", cmap=FEASIBLE_MAP, vmin=0.0, vmax=1.0, interpolation="nearest",
+                      origin="lower")
     fig.colorbar(image, ax=ax, label="lowest utilization of a working gearbox (1 = at a rating)")
     ax.set_xticks(range(len(ratios)), [f"{r:g}" for r in ratios])
     step = max(1, len(motor_names) // 40)  # at most some 40 names on the axis
@@ -53,7 +76,8 @@ def combinations_figure(utilization, feasible, ratios, motor_names, pick=None, r
     ax.set_ylabel("motor (smallest first)")
     if pick is not None:
         row, motor = pick
-        ax.plot([column[row]], [motor], marker="*", markersize=14, color=PICK, markeredgecolor="white", linestyle="none",
+        ax.plot([column[row]], [motor], marker="*", markersize=14, color=PICK, markeredgecolor="white",
+                linestyle="none",
                 label="the pick")
         ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
     ax.set_title("Which motor works at which ratio (grey: none of that ratio's gearboxes)", fontsize=10, loc="left")

@@ -28,6 +28,17 @@ def inertia_split_figure(accel_torque, drive_inertia, load_inertia, M_N):
     The coupling passes on the share ``J_load / (J_load + J_drive)`` of the motor's acceleration
     torque ``M_a`` (source, Sizing 1); ``M_N`` multiplies that by ``S_A`` (E8).
 
+    Parameters
+    ----------
+    accel_torque : pint.Quantity [N·m]
+        ``M_a``, the motor's acceleration torque.
+    drive_inertia : pint.Quantity [kg·cm²]
+        ``J_drive``, without the coupling.
+    load_inertia : pint.Quantity [kg·cm²]
+        ``J_load``, without the coupling.
+    M_N : pint.Quantity [N·m]
+        The coupling's nominal torque.
+
     Returns
     -------
     matplotlib.figure.Figure
@@ -70,6 +81,13 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
     band, the higher factor) to the next band's (open marker); the last band ends at the table's
     top (filled), above which no elastomer coupling is sized.
 
+    Parameters
+    ----------
+    temperature : pint.Quantity [°C], optional
+        The case's temperature.
+    table : BandTable
+        ``K_ϑ`` against temperature; default the source's.
+
     Returns
     -------
     matplotlib.figure.Figure
@@ -97,9 +115,11 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
         last = k + 1 == len(factors)
         ax.plot([edges[k], edges[k + 1]], [f, f], color=DRIVE_COLOR, linewidth=2.2)
         if math.isfinite(bounds[k]):
-            ax.plot([edges[k]], [f], "o", markerfacecolor=None if higher or k == 0 else "white", color=DRIVE_COLOR, markersize=5)
+            ax.plot([edges[k]], [f], "o", markerfacecolor=None if higher or k == 0 else "white", color=DRIVE_COLOR,
+                    markersize=5)
         if not last or math.isfinite(table.top):  # the table's top is in its last band; above it, no factor
-            ax.plot([edges[k + 1]], [f], "o", markerfacecolor=None if last or not higher else "white", color=DRIVE_COLOR, markersize=5)
+            ax.plot([edges[k + 1]], [f], "o", markerfacecolor=None if last or not higher else "white",
+                    color=DRIVE_COLOR, markersize=5)
     if temperature is not None:
         t = as_kind(temperature, "temperature", "temperature").m_as("degC")
         k_t = float(temperature_factor(temperature, table))
@@ -120,6 +140,18 @@ def natural_frequency_figure(selection: CouplingSelection, f_e_min):
     Candidates in ranked order; a bar is green where ``f_e >= 2 f_er``, red where not, and a grey
     stub marked "n/a" where the catalog leaves ``C_T`` or ``J`` empty. Where the selection has the
     drive train (:mod:`calc.domain.torsion`), a black diamond marks each candidate's first mode ``f_1``.
+
+    Parameters
+    ----------
+    selection : CouplingSelection
+        The checked candidates.
+    f_e_min : pint.Quantity [Hz]
+        ``2 f_er``.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes of bars.
 
     Examples
     --------
@@ -169,6 +201,18 @@ def bore_ranges_figure(selection: CouplingSelection, bores):
     Hub 1 above hub 2 for each candidate, in ranked order; a missing range is left out and
     labelled "n/a".
 
+    Parameters
+    ----------
+    selection : CouplingSelection
+        The checked candidates.
+    bores : sequence of Bore
+        The two shafts.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
+
     Examples
     --------
     >>> from calc import Q_
@@ -194,7 +238,8 @@ def bore_ranges_figure(selection: CouplingSelection, bores):
         lo = selection.catalog[f"d_{hub}min"][order].m_as("mm")
         hi = selection.catalog[f"d_{hub}max"][order].m_as("mm")
         known = ~(np.isnan(lo) | np.isnan(hi))
-        ax.barh(base[known] + offset, (hi - lo)[known], left=lo[known], height=0.3, color=color, alpha=0.55, label=f"hub {hub} bore range")
+        ax.barh(base[known] + offset, (hi - lo)[known], left=lo[known], height=0.3, color=color, alpha=0.55,
+                label=f"hub {hub} bore range")
         d = bore.nominal.m_as("mm")
         ax.axvline(d, color=color, linewidth=2, label=f"D{hub} = {bore.text}")
         for yy in (base + offset)[~known]:

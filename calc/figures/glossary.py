@@ -33,7 +33,8 @@ SOURCE_SYMBOLS = (
     ("fs", "-", "Shock Factor", "f_s", "–", "table against Z_h, the higher factor at a boundary (E4)"),
     ("i", "-", "Ratio", "i", "–", ""),
     ("J", "kg-cm ²", "Moment of Inertia", "J", "kg·cm²", "kg·cm² in catalogs (E14)"),
-    ("n", "RPM", "Speed", "n", "rpm", "a speed carries its angle: 300 rpm is 5 revolutions per second, not 31.4 Hz (E15)"),
+    ("n", "RPM", "Speed", "n", "rpm",
+     "a speed carries its angle: 300 rpm is 5 revolutions per second, not 31.4 Hz (E15)"),
     ("t", "s", "Time", "t", "s", ""),
     ("T", "Nm", "Torque", "T", "N·m", ""),
     ("Zh", "-", "Number of Cycles", "Z_h", "1/h", "cycles per hour, Z_h = 3600 s / t_cycle"),
@@ -42,8 +43,15 @@ SOURCE_SYMBOLS = (
 
 
 def source_index_table():
-    """The source's index table as a pandas DataFrame (columns ``index``, ``meaning``, ``used in``).
+    """The source's index table.
 
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``index``, ``meaning``, ``used in``.
+
+    Examples
+    --------
     >>> source_index_table().iloc[3, :2].tolist()
     ['B', 'maximum acceleration']
     """
@@ -55,6 +63,13 @@ def source_index_table():
 def source_symbols_table():
     """The source's symbol table beside the workbook's notation, as a pandas DataFrame.
 
+    Returns
+    -------
+    pandas.DataFrame
+        One row per symbol.
+
+    Examples
+    --------
     >>> source_symbols_table().iloc[4, :5].tolist()
     ['n', 'RPM', 'Speed', 'n', 'rpm']
     """
@@ -74,6 +89,18 @@ def symbols_table(formulas=None):
     for), ``per segment`` (one value per profile segment) and ``formulas`` (the formulas it
     appears in, by the name of their result).
 
+    Parameters
+    ----------
+    formulas : list of Formula, optional
+        The formulas; default all defined so far.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per symbol and meaning.
+
+    Examples
+    --------
     >>> from calc.domain import profile
     >>> t = symbols_table([profile.T_2m])
     >>> t[["symbol", "unit", "kind", "formulas"]].values.tolist()[:2]
@@ -98,6 +125,7 @@ def symbols_table(formulas=None):
             )
             if f.name not in row["formulas"]:
                 row["formulas"].append(f.name)
-    table = pd.DataFrame(list(rows.values()), columns=["symbol", "LaTeX", "description", "unit", "kind", "per segment", "formulas"])
+    table = pd.DataFrame(list(rows.values()),
+                         columns=["symbol", "LaTeX", "description", "unit", "kind", "per segment", "formulas"])
     table["formulas"] = table["formulas"].map(", ".join)
     return table

@@ -17,11 +17,13 @@ POSITION_COLOR = "#444444"
 ACCELERATION_COLOR = "#5a9e3a"
 
 #: How the load's travel is shown: per linear or rotary load, its unit and the factor from SI.
-LOAD_UNITS = {True: ("mm", 1e3, "mm/s", 1e3, "m/s²", 1.0), False: ("deg", 180 / np.pi, "rpm", 30 / np.pi, "rad/s²", 1.0)}
+LOAD_UNITS = {True: ("mm", 1e3, "mm/s", 1e3, "m/s²", 1.0),
+              False: ("deg", 180 / np.pi, "rpm", 30 / np.pi, "rad/s²", 1.0)}
 
 
 def motion_figure(samples: Samples, torque: np.ndarray, segments: Segments | None = None, to_load: float = 1.0,
-                  linear: bool = False, title: str = "", rows: tuple[str, ...] = ("position", "speed", "acceleration", "torque")):
+                  linear: bool = False, title: str = "",
+                  rows: tuple[str, ...] = ("position", "speed", "acceleration", "torque")):
     """The sampled cycle against time: each of ``rows`` on its own axes, the gearbox output on the
     left scale and, for ``position``, ``speed`` and ``acceleration``, the load on the right
     (``to_load``: the load's travel per radian of the output, m or rad, SI); moving phases
@@ -32,18 +34,23 @@ def motion_figure(samples: Samples, torque: np.ndarray, segments: Segments | Non
     ----------
     samples : calc.domain.motion.Samples
         One cycle at the gearbox output (SI).
-    torque : ndarray
-        The output torque of each sample [N·m].
+    torque : numpy.ndarray [N·m]
+        The output torque of each sample.
     segments : calc.domain.motion.Segments, optional
         The seed's segments of the cycle.
-    to_load : float
-        The load's travel per radian of the output (r of the mechanism [m], 1 for a table).
+    to_load : float [m/rad or 1]
+        The load's travel per radian of the output (r of the mechanism, 1 for a table).
     linear : bool
         Whether the load moves along a line (its scale in mm, mm/s, m/s²).
+    title : str
+        The figure's title; none by default.
+    rows : tuple of str
+        The axes, top to bottom: ``position``, ``speed``, ``acceleration``, ``torque``.
 
     Returns
     -------
     matplotlib.figure.Figure
+        One axes per row, sharing the time axis.
 
     Examples
     --------
@@ -51,8 +58,10 @@ def motion_figure(samples: Samples, torque: np.ndarray, segments: Segments | Non
     >>> from calc.domain.profile import segments
     >>> s = sample([Move(1.0, 1.0, 0.25, 0.25), Move(0.0, 0.5)], samples=200)
     >>> fig = motion_figure(s, 2 * s.acceleration, segments(s, 2 * s.acceleration))
-    >>> [ax.get_ylabel() for ax in fig.axes[:4]]
-    ['output angle $\\\\varphi_2$ [deg]', 'output speed $n_2$ [rpm]', 'output acceleration $\\\\alpha_2$ [rad/s²]', 'output torque $T_2$ [N·m]']
+    >>> [ax.get_ylabel() for ax in fig.axes[:2]]
+    ['output angle $\\\\varphi_2$ [deg]', 'output speed $n_2$ [rpm]']
+    >>> [ax.get_ylabel() for ax in fig.axes[2:4]]
+    ['output acceleration $\\\\alpha_2$ [rad/s²]', 'output torque $T_2$ [N·m]']
     """
     from matplotlib.figure import Figure
 
@@ -60,7 +69,8 @@ def motion_figure(samples: Samples, torque: np.ndarray, segments: Segments | Non
     edges = np.concatenate([[0.0], np.cumsum(samples.durations)])
     phases = samples.segment_phases
     load_unit = LOAD_UNITS[linear]
-    names = ("travel $s$", "speed $v$", "acceleration $a$") if linear else (r"angle $\varphi_L$", "speed $n_L$", r"acceleration $\alpha_L$")
+    names = (("travel $s$", "speed $v$", "acceleration $a$") if linear
+             else (r"angle $\varphi_L$", "speed $n_L$", r"acceleration $\alpha_L$"))
     spec = {
         "position": (samples.position * 180 / np.pi, POSITION_COLOR, r"output angle $\varphi_2$ [deg]",
                      (np.pi / 180 * to_load * load_unit[1], f"load {names[0]} [{load_unit[0]}]")),
@@ -75,7 +85,8 @@ def motion_figure(samples: Samples, torque: np.ndarray, segments: Segments | Non
     for ax, row in zip(axes, rows):
         values, color, label, load = spec[row]
         for k in range(len(phases)):
-            ax.axvspan(edges[k], edges[k + 1], color=PAUSE_COLOR if phases[k] == PAUSE else ON_COLOR, linewidth=0, zorder=0)
+            ax.axvspan(edges[k], edges[k + 1], color=PAUSE_COLOR if phases[k] == PAUSE else ON_COLOR, linewidth=0,
+                       zorder=0)
         ax.axhline(0.0, color="black", linewidth=0.8, zorder=1)
         ax.plot(t, values, color=color, linewidth=1.8, zorder=3)
         ax.set_ylabel(label)

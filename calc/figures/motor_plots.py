@@ -9,7 +9,8 @@ from ..domain.motor_ratings import MotorSelection, peak_limit
 from ..domain.ratios import INERTIA_RATIO_LIMIT, RatioSearch
 
 
-def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak_torque=None, rated_torque=None, part: str = ""):
+def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak_torque=None, rated_torque=None,
+                        part: str = ""):
     """The motor torque ``T_1`` over one cycle (each sample or segment held for its duration), its
     RMS, and the motor's peak and rated torque where given.
 
@@ -18,14 +19,18 @@ def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak
     load : OutputLoad
         The cycle at the gearbox output (its durations place the samples in time).
     torques : MotorLoad
-        The motor torques of :func:`calc.domain.motor.motor_load`; ``row`` picks the gearbox where it
-        holds several.
-    peak_torque, rated_torque : Quantity [torque], optional
+        The motor torques of :func:`calc.domain.motor.motor_load`.
+    row : int
+        The gearbox whose torques are drawn, where ``torques`` holds several; default 0.
+    peak_torque, rated_torque : pint.Quantity [N·m], optional
         ``T_1B`` and ``T_1N``, drawn as limits (both signs for the peak).
+    part : str
+        The gearbox the torque passes through, for the title; none by default.
 
     Returns
     -------
     matplotlib.figure.Figure
+        One axes.
     """
     from matplotlib.figure import Figure
 
@@ -39,7 +44,8 @@ def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak
     rms = float(np.atleast_1d(torques.rms.m_as("N*m"))[row])
     ax.axhline(rms, color="tab:green", linestyle="-.", linewidth=1.2, label=f"RMS {rms:.3g} N·m")
     if rated_torque is not None:
-        ax.axhline(rated_torque.m_as("N*m"), color="tab:orange", linestyle="--", linewidth=1.2, label="rated torque $T_{1N}$")
+        ax.axhline(rated_torque.m_as("N*m"), color="tab:orange", linestyle="--", linewidth=1.2,
+                   label="rated torque $T_{1N}$")
     if peak_torque is not None:
         peak = peak_torque.m_as("N*m")
         ax.axhline(peak, color="tab:red", linestyle="--", linewidth=1.2, label="peak torque $T_{1B}$ (±)")
@@ -66,6 +72,11 @@ def torque_speed_figure(selection: MotorSelection, row: int):
         The catalog motors checked against the cycle.
     row : int
         The motor's row in ``selection.catalog``.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
     """
     from matplotlib.figure import Figure
 
@@ -79,7 +90,8 @@ def torque_speed_figure(selection: MotorSelection, row: int):
     ax.plot(grid * to_rpm, limit[0], color="tab:red", linewidth=1.6, label=f"peak torque ({forms[0]})")
     ax.plot(np.abs(cycle.speed) * to_rpm, np.abs(cycle.torque[row]), ".", color="tab:blue", markersize=3, alpha=0.5,
             label="operating points $|n_1|, |T_1|$")
-    ax.plot([cat["n_N"][row].m_as("rpm")], [cat["M_N"][row].m_as("N*m")], "s", color="tab:orange", label="rated point $(n_N, M_N)$")
+    ax.plot([cat["n_N"][row].m_as("rpm")], [cat["M_N"][row].m_as("N*m")], "s", color="tab:orange",
+            label="rated point $(n_N, M_N)$")
     ax.plot([selection.mean_speed * to_rpm], [cycle.rms[row]], "D", color="tab:green",
             label=f"RMS {cycle.rms[row]:.3g} N·m at the mean speed")
     ax.set_xlim(0, n_max * to_rpm * 1.05)
@@ -97,6 +109,15 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     gearbox (top), the governing utilization and the inertia ratio (bottom); feasible ratios
     shaded, the picked one marked.
 
+    Parameters
+    ----------
+    search : RatioSearch
+        The case at every ratio.
+    peak_torque : pint.Quantity [N·m], optional
+        The motor's ``T_1B``, drawn as a limit.
+    rated_torque : pint.Quantity [N·m], optional
+        The motor's ``T_1N``, drawn as a limit.
+
     Returns
     -------
     matplotlib.figure.Figure
@@ -109,7 +130,8 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     top, bottom = fig.subplots(2, 1, sharex=True)
     for ax in (top, bottom):
         for k in np.flatnonzero(search.feasible):
-            ax.axvspan(x[k] - 0.4, x[k] + 0.4, color="#d9f0d3", zorder=0, label="feasible" if k == np.flatnonzero(search.feasible)[0] else None)
+            ax.axvspan(x[k] - 0.4, x[k] + 0.4, color="#d9f0d3", zorder=0, label="feasible"
+                       if k == np.flatnonzero(search.feasible)[0] else None)
         if search.pick is not None:
             ax.axvline(x[search.pick], color="tab:green", linewidth=2, zorder=1, label=f"pick: i = {x[search.pick]:g}")
     if search.load is not None:
@@ -128,7 +150,8 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     if not np.all(np.isnan(search.inertia_ratio)):
         lam = bottom.twinx()
         lam.plot(x, search.inertia_ratio, "^:", color="tab:purple", label="inertia ratio λ")
-        lam.axhline(INERTIA_RATIO_LIMIT, color="tab:purple", linestyle="--", linewidth=1, label=f"λ limit {INERTIA_RATIO_LIMIT:g}")
+        lam.axhline(INERTIA_RATIO_LIMIT, color="tab:purple", linestyle="--", linewidth=1,
+                    label=f"λ limit {INERTIA_RATIO_LIMIT:g}")
         lam.set_ylabel("inertia ratio λ [–]", color="tab:purple")
         more = lam.get_legend_handles_labels()
         handles, labels = handles + more[0], labels + more[1]

@@ -56,7 +56,8 @@ def load_cycle_figure(profile: Profile, duty: Duty | None = None):
     Examples
     --------
     >>> from calc import Q_
-    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")),
+    ...                            ("pause", Q_(1, "s"), None, None)])
     >>> [ax.get_ylabel() for ax in load_cycle_figure(p).axes]
     ['mean output speed $n_2$ [rpm]', 'output torque $T_2$ [N·m]']
     """
@@ -96,18 +97,21 @@ def load_cycle_figure(profile: Profile, duty: Duty | None = None):
             )
     top = blended_transform_factory(ax_n.transData, ax_n.transAxes)
     for k in np.flatnonzero(np.diff(edges) >= _LABEL_MIN_SHARE * cycle):
-        ax_n.text((edges[k] + edges[k + 1]) / 2, 1.02, profile.phases[k], transform=top, ha="center", va="bottom", fontsize=8)
+        ax_n.text((edges[k] + edges[k + 1]) / 2, 1.02, profile.phases[k], transform=top, ha="center", va="bottom",
+                  fontsize=8)
     ax_T.set_xlabel("time $t$ [s]")
     ax_T.set_xlim(0.0, cycle)
 
     ed, t_on, t_cycle = d.ED.m_as("percent"), d.t_on, d.t_cycle
     fig.suptitle(
         f"Load cycle: ED = {sig(ed, 3)} % (on-time {fmt(t_on, 's')} of a {fmt(t_cycle, 's')} cycle), mode {d.mode}\n"
-        f"E3: S5 if and only if ED < {sig(S5_MAX_ED.m_as('percent'))} % and on-time < {sig(S5_MAX_ON_TIME.m_as('min'))} min, "
+        f"E3: S5 if and only if ED < {sig(S5_MAX_ED.m_as('percent'))} % and on-time < "
+        f"{sig(S5_MAX_ON_TIME.m_as('min'))} min, "
         "otherwise S1",
         fontsize=10,
     )
-    ax_n.set_title("speed: each segment at its mean, as the profile gives it (accel and decel are not drawn as ramps)", fontsize=8, pad=16)
+    ax_n.set_title("speed: each segment at its mean, as the profile gives it (accel and decel are not drawn as ramps)",
+                   fontsize=8, pad=16)
     handles = [
         *steps,
         Patch(color=ON_COLOR, label=f"on-time (moving), {fmt(t_on, 's')}"),
@@ -128,7 +132,7 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
 
     Parameters
     ----------
-    cycles_per_hour : Quantity [1/time], optional
+    cycles_per_hour : pint.Quantity [1/h], optional
         The case's ``Z_h``; marked with its factor from :func:`calc.domain.gearbox.shock_factor`.
     table : calc.data.bands.BandTable
         The table the case's ``f_s`` is read from.
@@ -156,7 +160,8 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
             raise CalcError(f"cycles_per_hour: expected one number of cycles per hour, found {np.size(z)} of them")
         z_case = float(z)
         f_case = float(shock_factor(cycles_per_hour, table))
-    span = bounds[-1] - bounds[-2] if len(bounds) > 1 else max(bounds[-1], 1000.0)  # a table of one band: 0 to 1000 /h shown
+    # a table of one band: 0 to 1000 /h shown
+    span = bounds[-1] - bounds[-2] if len(bounds) > 1 else max(bounds[-1], 1000.0)
     x_end = bounds[-1] + span
     if z_case is not None and z_case > 0.9 * x_end:
         x_end = 1.15 * z_case
@@ -242,26 +247,31 @@ def utilization_figure(selection: GearboxSelection, limit: int = 12):
         value = u[worst] if worst is not None else 0.0
         ax.barh(row, min(value, UTILIZATION_AXIS_END), 0.62, color=PASS_COLOR if c.passes else FAIL_COLOR, zorder=2)
         others = np.array([v for j, v in enumerate(u) if j != worst and rated[j]])
-        ax.plot(np.minimum(others, UTILIZATION_AXIS_END), np.full(len(others), row), "o", color="#333333", markersize=3.5, zorder=3)
+        ax.plot(np.minimum(others, UTILIZATION_AXIS_END), np.full(len(others), row), "o", color="#333333",
+                markersize=3.5, zorder=3)
         label = "" if worst is None else f"{value:.2f}  {governing[worst].criterion}"
         unrated = [k.criterion for k, r in zip(governing, rated) if not r]
         label += ("; " if label else "") + ("no rating: " + ", ".join(unrated) if unrated else "")
         ax.text(min(value, UTILIZATION_AXIS_END) + 0.03, row, label, va="center", fontsize=8, zorder=4)
     ax.axvline(1.0, color="black", linestyle="--", linewidth=1.2, zorder=3)
     marks = [" (selected)" if c.part == selection.selected else "" for c in candidates]
-    ax.set_yticks(range(len(candidates)), [f"{c.part}  {'PASS' if c.passes else 'FAIL'}{m}" + ("  illustrative" if c.illustrative else "")
+    ax.set_yticks(range(len(candidates)),
+                  [f"{c.part}  {'PASS' if c.passes else 'FAIL'}{m}" + ("  illustrative" if c.illustrative else "")
                                             for c, m in zip(candidates, marks)], fontsize=8)
     ax.set_ylim(len(candidates) - 0.5, -0.5)  # the best at the top
     # Room on the right for the labels; the ticks stop at the axis end.
     ax.set_xlim(0.0, UTILIZATION_AXIS_END + 2.0)
     ax.set_xticks(np.arange(0.0, UTILIZATION_AXIS_END + 0.01, 0.25))
     ax.set_xlabel("utilization = required / rated [–]")
-    shown = f"best {len(candidates)} of {total}" if total > len(candidates) else f"{total} candidate{'s' if total != 1 else ''}"
+    shown = (f"best {len(candidates)} of {total}" if total > len(candidates)
+             else f"{total} candidate{'s' if total != 1 else ''}")
     ax.set_title(f"Utilization of the governing {selection.mode} checks, {shown}\n"
-                 f"bar: the highest, with the check that decides it (cut at {UTILIZATION_AXIS_END:g}); dots: the others", fontsize=10)
+                 f"bar: the highest, with the check that decides it (cut at {UTILIZATION_AXIS_END:g}); dots: the "
+                 "others", fontsize=10)
     ax.grid(True, axis="x", color="#dddddd", linewidth=0.6, zorder=0)
     handles = [Patch(color=PASS_COLOR, label="passes"), Patch(color=FAIL_COLOR, label="fails"),
-               Line2D([], [], marker="o", linestyle="none", color="#333333", markersize=3.5, label="other governing checks"),
+               Line2D([], [], marker="o", linestyle="none", color="#333333", markersize=3.5,
+                      label="other governing checks"),
                Line2D([], [], color="black", linestyle="--", label="limit: utilization 1")]
     fig.legend(handles=handles, loc="outside lower center", ncols=4, fontsize=8, frameon=False)
     return fig
@@ -297,7 +307,8 @@ def comparison_figure(selection: GearboxSelection, limit: int = 24):
     >>> from calc.data.catalog import load_catalog, resolve
     >>> from calc.domain.gearbox import SCHEMA, rows_at_ratio, select_gearbox
     >>> from calc.domain.profile import Profile
-    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(240, "rpm"), Q_(40, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(240, "rpm"), Q_(40, "N*m")),
+    ...                            ("pause", Q_(1, "s"), None, None)])
     >>> rows = rows_at_ratio(load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA), 10)
     >>> fig = comparison_figure(select_gearbox(p, rows, motor_peak_torque=Q_(12, "N*m")))
     >>> sorted(t.get_text() for t in fig.legends[0].get_texts())[:3]
@@ -321,7 +332,8 @@ def comparison_figure(selection: GearboxSelection, limit: int = 24):
         if not passes:
             bar.set_hatch("///")
             bar.set_edgecolor("black")
-    ax.bar_label(bars, labels=["no rating" if np.isnan(v) else f"{v:.2f}" + (" ★" if b else "") for v, b in zip(worst, best)],
+    ax.bar_label(bars, labels=["no rating" if np.isnan(v) else f"{v:.2f}" + (" ★" if b else "")
+                               for v, b in zip(worst, best)],
                  fontsize=7, padding=2, rotation=90)
     ax.axhline(1.0, color="black", linestyle="--", linewidth=1.2, zorder=3)
     ax.set_xticks(x, [str(cat.parts[r]) for r in order], fontsize=7, rotation=90)
@@ -334,5 +346,6 @@ def comparison_figure(selection: GearboxSelection, limit: int = 24):
     ax.set_title(f"Makers compared: highest governing utilization of each candidate, {shown}\n"
                  "(★ smallest adequate size of its family; hatched: over the limit)", fontsize=10)
     ax.grid(True, axis="y", color="#dddddd", linewidth=0.6, zorder=0)
-    fig.legend(handles=[Patch(color=c, label=g) for g, c in colors.items()], loc="outside right upper", fontsize=8, frameon=False)
+    fig.legend(handles=[Patch(color=c, label=g) for g, c in colors.items()], loc="outside right upper", fontsize=8,
+               frameon=False)
     return fig

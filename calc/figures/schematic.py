@@ -68,7 +68,8 @@ def drive_train_figure(focus: tuple[str, ...] = ()):
     # The gearbox splits the train: its input turns with the motor (index 1), its output with the load (index 2).
     split = 2 * (width + gap) + width / 2
     end = 3 * (width + gap) + width
-    for left, right, label in ((0.0, split, "input side: index 1 ($n_1$, $T_1$)"), (split, end, "output side: index 2 ($n_2$, $T_2$)")):
+    for left, right, label in ((0.0, split, "input side: index 1 ($n_1$, $T_1$)"),
+                               (split, end, "output side: index 2 ($n_2$, $T_2$)")):
         ax.annotate("", (left, -0.25), (right, -0.25), arrowprops={"arrowstyle": "<->", "linewidth": 1})
         ax.text((left + right) / 2, -0.45, label, ha="center", va="top", fontsize=8)
     ax.set_xlim(-0.1, end + 0.1)
@@ -90,7 +91,8 @@ def _gear(center, radius: float, teeth: int, depth: float, internal: bool = Fals
 def _label(ax, labels) -> None:
     """Each ``(point, place, text)``: the text at ``place``, a thin line to the ``point`` it names."""
     for point, place, text in labels:
-        ax.annotate(text, point, place, fontsize=8.5, va="center", arrowprops={"arrowstyle": "-", "linewidth": 0.8, "color": "0.3"})
+        ax.annotate(text, point, place, fontsize=8.5, va="center",
+                    arrowprops={"arrowstyle": "-", "linewidth": 0.8, "color": "0.3"})
 
 
 def planetary_gearbox_figure():
@@ -99,6 +101,13 @@ def planetary_gearbox_figure():
     (index 2), and the ring gear fixed in the housing. Drawn to a ratio of 10: the ring's pitch
     circle nine times the sun's (a 10:1 stage has a small sun and large planets).
 
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes without scales.
+
+    Examples
+    --------
     >>> fig = planetary_gearbox_figure()
     >>> sorted(t.get_text().split(":")[0] for t in fig.axes[0].texts if ":" in t.get_text())
     ['carrier (dashed)', 'planets', 'ring gear', 'sun']
@@ -111,12 +120,14 @@ def planetary_gearbox_figure():
     sun, planet = 0.1, 0.4  # pitch radii: ring 0.9 = sun + 2 planets, ring / sun = 9, i = 10
     ring = sun + 2 * planet
     ax.add_patch(Circle((0, 0), ring + 0.12, facecolor=OTHER_COLOR, edgecolor="black", linewidth=1.2))
-    ax.add_patch(Polygon(_gear((0, 0), ring, 72, 0.04, internal=True), facecolor="white", edgecolor="black", linewidth=0.8))
+    ax.add_patch(Polygon(_gear((0, 0), ring, 72, 0.04, internal=True), facecolor="white", edgecolor="black",
+                         linewidth=0.8))
     centers = [(sun + planet) * np.array([np.cos(a), np.sin(a)]) for a in np.radians([90, 210, 330])]
     for c in centers:
         ax.add_patch(Polygon(_gear(c, planet, 32, 0.04), facecolor="#cfe3f5", edgecolor="black", linewidth=0.8))
     # The carrier, a plate behind the planets, drawn over them: its arms join the planets' pins.
-    ax.add_patch(Polygon(np.array(centers), closed=True, facecolor="none", edgecolor="#9a6b00", linewidth=2, linestyle="--"))
+    ax.add_patch(Polygon(np.array(centers), closed=True, facecolor="none", edgecolor="#9a6b00", linewidth=2,
+                         linestyle="--"))
     for c in centers:
         ax.add_patch(Circle(c, 0.035, facecolor="#9a6b00", edgecolor="black"))
     ax.add_patch(Polygon(_gear((0, 0), sun, 8, 0.04), facecolor=FOCUS_COLOR, edgecolor="black", linewidth=0.8))
@@ -126,7 +137,8 @@ def planetary_gearbox_figure():
         (centers[1], (1.35, -0.05), "planets: roll between sun and ring"),
         ((0.5 * (centers[0][0] + centers[2][0]), 0.5 * (centers[0][1] + centers[2][1])), (1.35, -0.45),
          "carrier (dashed): holds the planets, turns the output\n(index 2: $n_2 = n_1 / i$, $T_2$)"),
-        ((ring * np.cos(np.radians(40)), ring * np.sin(np.radians(40))), (1.35, 0.95), "ring gear: fixed in the housing"),
+        ((ring * np.cos(np.radians(40)), ring * np.sin(np.radians(40))), (1.35, 0.95),
+         "ring gear: fixed in the housing"),
     )
     _label(ax, labels)
     ax.text(0, -1.2, "the sun turns $i$ times while the carrier turns once (here $i$ = 10)", ha="center", fontsize=8.5)
@@ -142,6 +154,13 @@ def bellows_coupling_figure():
     gearbox input's ``D_2``) joined by a thin metal bellows, stiff in torsion (``C_T``) and soft
     against misalignment between the shafts.
 
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes without scales.
+
+    Examples
+    --------
     >>> fig = bellows_coupling_figure()
     >>> sorted(t.get_text().split(":")[0] for t in fig.axes[0].texts if ":" in t.get_text())
     ['hub 1', 'hub 2', 'metal bellows']
@@ -158,7 +177,8 @@ def bellows_coupling_figure():
         ax.add_patch(Rectangle((x0 + 0.3, 0.6), 0.18, 0.12, facecolor="0.4", edgecolor="black"))  # the clamping screw
     # The shafts end inside the hubs; the motor's enters from the left, the gearbox's from the right.
     ax.add_patch(Rectangle((-0.9, -shaft), 0.9 + 0.7, 2 * shaft, facecolor=FOCUS_COLOR, edgecolor="black"))
-    ax.add_patch(Rectangle((right + hub - 0.7, -shaft * 0.85), 0.7 + 0.9, 1.7 * shaft, facecolor="#cfe3f5", edgecolor="black"))
+    ax.add_patch(Rectangle((right + hub - 0.7, -shaft * 0.85), 0.7 + 0.9, 1.7 * shaft, facecolor="#cfe3f5",
+                           edgecolor="black"))
     x = np.linspace(left, right, 4 * folds + 1)
     wave = 0.48 + 0.1 * np.where(np.arange(len(x)) % 2 == 0, 0.0, 1.0)
     for sign in (1, -1):
@@ -167,7 +187,8 @@ def bellows_coupling_figure():
         ((0.45, 0.62), (-0.9, 1.2), "hub 1: clamps the motor shaft $D_1$"),
         ((right + 0.45, 0.62), (right - 0.2, 1.2), "hub 2: clamps the gearbox shaft $D_2$"),
         (((left + right) / 2, -0.55), ((left + right) / 2 - 1.2, -1.15),
-         "metal bellows: stiff in torsion ($C_T$), soft against misalignment;\nno backlash, no temperature factor (E9)"),
+         "metal bellows: stiff in torsion ($C_T$), soft against misalignment;\nno backlash, no temperature factor "
+         "(E9)"),
     )
     _label(ax, labels)
     ax.text(-0.9, 0.0, "motor ", ha="right", va="center", fontsize=8.5)

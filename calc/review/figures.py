@@ -170,7 +170,7 @@ def comparison_svg(names: list[str], worst: dict) -> str:
     scale = plot / ticks[-1]
     step = (WIDTH - LEFT - RIGHT) / max(len(names), 1)
     bar = step * 0.8 / len(parts)
-    body = [f'<text x="0" y="14" font-weight="600">Worst governing utilization of each variant\'s parts [%]</text>']
+    body = ['<text x="0" y="14" font-weight="600">Worst governing utilization of each variant\'s parts [%]</text>']
     body += _grid(ticks, lambda t: height - bottom - scale * t, lambda t: "#b2222a" if t == 100 else "#e2e2e2")
     for k, name in enumerate(names):
         x0 = LEFT + step * k + step * 0.1

@@ -58,7 +58,8 @@ def test_step_shows_symbol_expression_numbers_result():
 
 
 def test_step_expands_segment_sums_with_every_segment():
-    values = {"n_2k": Q_(np.array([100.0, 200.0]), "rpm"), "t_k": Q_(np.array([1.0, 2.0]), "s"), "T_2k": Q_(np.array([10.0, -5.0]), "N*m")}
+    values = {"n_2k": Q_(np.array([100.0, 200.0]), "rpm"), "t_k": Q_(np.array([1.0, 2.0]), "s"),
+              "T_2k": Q_(np.array([10.0, -5.0]), "N*m")}
     tex = T_2m.step(**values).latex()
     for number in ("100", "200", r"\left(-5\,\mathrm{N\,m}\right)", "10"):
         assert number in tex
@@ -105,7 +106,8 @@ def test_evaluating_the_example_does_not_load_sympy_pandas_or_matplotlib():
     from tests.conftest import EXAMPLE
 
     code = (
-        "import sys, calc.sections, calc.sections.case; calc.sections.evaluate(calc.sections.case.read_case(sys.argv[1])).to_json(); "
+        "import sys, calc.sections, calc.sections.case; "
+        "calc.sections.evaluate(calc.sections.case.read_case(sys.argv[1])).to_json(); "
         "print(sorted(m for m in ('sympy', 'pandas', 'matplotlib') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code, str(EXAMPLE)], capture_output=True, text=True, check=True).stdout
@@ -202,7 +204,9 @@ def test_codegen_refuses_two_formulas_of_one_name_in_one_module():
     try:
         with pytest.raises(CalcError) as err:
             codegen.package_formulas()
-        assert str(err.value) == "calc.domain.gearbox.T_2max: two formulas of one module have this name; give each its own result symbol"
+        assert str(err.value) == (
+            "calc.domain.gearbox.T_2max: two formulas of one module have this name; give each its own result symbol"
+        )
     finally:
         REGISTRY.remove(twin)
 
@@ -211,8 +215,11 @@ def test_codegen_refuses_a_function_it_cannot_import():
     # sympy's lambdify takes erf from the math module (numpy has none): the stored module could not import it.
     from calc.domain import codegen
 
-    f = Formula(Symbol("y", "y", "dimensionless", "", "result"), (Symbol("x", "x", "dimensionless", "", "argument"),), lambda sp, x: sp.erf(x), "test")
+    f = Formula(Symbol("y", "y", "dimensionless", "", "result"), (Symbol("x", "x", "dimensionless", "", "argument"),),
+                lambda sp, x: sp.erf(x), "test")
     REGISTRY.remove(f)
     with pytest.raises(CalcError) as err:
         codegen.module_text([f])
-    assert str(err.value) == "the generated numeric form uses 'erf' = <built-in function erf>, which calc.domain.codegen cannot import"
+    assert str(err.value) == (
+        "the generated numeric form uses 'erf' = <built-in function erf>, which calc.domain.codegen cannot import"
+    )

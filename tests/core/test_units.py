@@ -8,7 +8,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from calc import CalcError, Q_, ureg
-from calc.core.units import KINDS, angle_power, as_kind, latex_unit, parse_quantity, pretty_unit, revolutions_per_second, sig
+from calc.core.units import (KINDS, angle_power, as_kind, latex_unit, parse_quantity, pretty_unit,
+                             revolutions_per_second, sig)
 
 
 def test_one_application_registry():
@@ -62,7 +63,8 @@ def test_wrong_kind_is_one_clear_error(text, kind, fragment):
     assert "\n" not in message
 
 
-@pytest.mark.parametrize("text", ["12 N*mm*", "12 furlongs_per_blip", "N*m", "12 N*m; import os", "__import__('os')", ""])
+@pytest.mark.parametrize("text",
+                         ["12 N*mm*", "12 furlongs_per_blip", "N*m", "12 N*m; import os", "__import__('os')", ""])
 def test_unparseable_values_are_errors_not_tracebacks(text):
     with pytest.raises(CalcError):
         parse_quantity(text, "torque", "k")

@@ -52,7 +52,8 @@ def test_lookup_is_vectorized_and_band_gives_the_index():
 def test_band_text():
     # The E4 and E9 readings, band by band, as the report and the plots print them.
     assert [SHOCK_FACTORS.text(k) for k in range(5)] == [
-        "0 <= Z_h < 1000 1/h", "1000 <= Z_h < 1500 1/h", "1500 <= Z_h < 2000 1/h", "2000 <= Z_h < 3000 1/h", "Z_h >= 3000 1/h",
+        "0 <= Z_h < 1000 1/h", "1000 <= Z_h < 1500 1/h", "1500 <= Z_h < 2000 1/h", "2000 <= Z_h < 3000 1/h",
+        "Z_h >= 3000 1/h",
     ]
     assert [TEMPERATURE_FACTORS.text(k) for k in range(5)] == [
         "T < 50 °C", "50 <= T < 70 °C", "70 <= T < 90 °C", "90 <= T < 110 °C", "110 <= T <= 120 °C",

@@ -23,7 +23,10 @@ from calc.domain.hysteresis import model_for_part
 
 from ..conftest import EXAMPLE, GEARBOXES, ROOT
 
-HEADER = "part,series,ratio [1],T_2N [N*m],T_2B [N*m],T_2Not [N*m],n_1N [rpm],n_1max [rpm],eta [percent],backlash [arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],illustrative,source"
+HEADER = (
+    "part,series,ratio [1],T_2N [N*m],T_2B [N*m],T_2Not [N*m],n_1N [rpm],n_1max [rpm],eta [percent],backlash "
+    "[arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],illustrative,source"
+)
 ROW = "G-10,G,10,81,126,250,3100,7500,97,3,23,0.57,no,test"
 
 
@@ -58,7 +61,8 @@ def test_shipped_catalog_loads_with_published_figures():
 def test_a_catalog_in_other_units_loads_the_same(tmp_path):
     inch = HEADER.replace("T_2N [N*m]", "T_2N [lbf*in]").replace("J_1 [kg*cm**2]", "J_1 [lb*in**2]")
     # 81 N·m = 716.9 lbf·in; 0.57 kg·cm² = 0.19478 lb·in².
-    row = ROW.replace(",81,", f",{81 / 0.1129848290276167!r},").replace(",0.57,", f",{0.57 / (0.45359237 * 2.54**2)!r},")
+    row = ROW.replace(",81,", f",{81 / 0.1129848290276167!r},").replace(",0.57,",
+                                                                        f",{0.57 / (0.45359237 * 2.54**2)!r},")
     cat = load_catalog(write(tmp_path, f"{inch}\n{row}\n"), SCHEMA)
     assert cat["T_2N"][0].m_as("N*m") == pytest.approx(81)
     assert cat["J_1"][0].m_as("kg*cm**2") == pytest.approx(0.57)
@@ -96,11 +100,16 @@ def test_a_catalog_in_other_units_loads_the_same(tmp_path):
         # infinite. Held to calc.core.units.SI_SCALE as a case file's values are: 1e-320 N·m/arcmin is
         # 1e-320 / (π / 10800) = 3.44e-317 N·m/rad.
         (HEADER, ROW.replace(",23,", ",1e-320,"),
-         "row 2 (G-10), column C_t21: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²/rad), found 1e-320, which is 3.44e-317"),
-        (HEADER, ROW.replace(",81,126,", ",1e-308,1e-308,"), "column T_2N: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²), found 1e-308"),
-        (HEADER, ROW.replace(",3100,", ",2e13,"), "column n_1N: expected a magnitude between 1e-12 and 1e+12 in SI units (rad/s), found 2e13, which is 2.09e+12"),
+         "row 2 (G-10), column C_t21: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²/rad), found "
+         "1e-320, which is 3.44e-317"),
+        (HEADER, ROW.replace(",81,126,", ",1e-308,1e-308,"),
+         "column T_2N: expected a magnitude between 1e-12 and 1e+12 in SI units (kg·m²/s²), found 1e-308"),
+        (HEADER, ROW.replace(",3100,", ",2e13,"),
+         "column n_1N: expected a magnitude between 1e-12 and 1e+12 in SI units (rad/s), found 2e13, which is "
+         "2.09e+12"),
         # A header unit never carries a number (pint refuses a scaling factor), so none can be infinite.
-        (HEADER.replace("T_2N [N*m]", "T_2N [1e999*N*m]"), ROW, "column T_2N: the unit '1e999*N*m' is not one the unit registry knows"),
+        (HEADER.replace("T_2N [N*m]", "T_2N [1e999*N*m]"), ROW,
+         "column T_2N: the unit '1e999*N*m' is not one the unit registry knows"),
     ],
 )
 def test_bad_catalogs_name_file_row_and_column(tmp_path, header, row, fragment):
@@ -129,16 +138,20 @@ def test_the_first_repeated_part_is_named_with_its_first_row(tmp_path):
     "rows, fragment",
     [
         # A bad cell in a late column of row 2 comes before a bad cell in an early column of row 3.
-        ((ROW.replace(",0.57,", ",x,"), ROW.replace("G-10,G,10,81,", "G-11,G,10,y,")), "row 2 (G-10), column J_1: expected a number, found 'x'"),
+        ((ROW.replace(",0.57,", ",x,"), ROW.replace("G-10,G,10,81,", "G-11,G,10,y,")),
+         "row 2 (G-10), column J_1: expected a number, found 'x'"),
         # In one row, the columns in the schema's order: T_2N before J_1.
-        ((ROW.replace(",81,", ",1e999,").replace(",0.57,", ",x,"),), "row 2 (G-10), column T_2N: expected a finite number"),
+        ((ROW.replace(",81,", ",1e999,").replace(",0.57,", ",x,"),),
+         "row 2 (G-10), column T_2N: expected a finite number"),
         # The text columns of a row come before its numbers.
-        ((ROW.replace("G-10,", ",").replace(",81,", ",x,"),), "row 2, column part: expected a value, found an empty cell"),
+        ((ROW.replace("G-10,", ",").replace(",81,", ",x,"),),
+         "row 2, column part: expected a value, found an empty cell"),
         # A row of the wrong length after a bad cell: the bad cell; before it: the row.
         ((ROW.replace(",81,", ",x,"), ROW + ",extra"), "row 2 (G-10), column T_2N: expected a number, found 'x'"),
         ((ROW + ",extra", ROW.replace(",81,", ",x,")), "row 2: expected 14 cells as in the header, found 15"),
         # A blank row is skipped, yet counted in the line numbers.
-        (("", ",,,,,,,,,,,,,", ROW.replace(",81,", ",-81,")), "row 4 (G-10), column T_2N: expected a value above zero, found -81"),
+        (("", ",,,,,,,,,,,,,", ROW.replace(",81,", ",-81,")),
+         "row 4 (G-10), column T_2N: expected a value above zero, found -81"),
     ],
 )
 def test_the_first_problem_in_reading_order_is_named(tmp_path, rows, fragment):
@@ -153,7 +166,8 @@ def test_the_first_problem_in_reading_order_is_named(tmp_path, rows, fragment):
 NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 BACKLASH_CELLS = st.one_of(
     st.text(alphabet="0123456789+-.eE_xXinfaINFA \t", max_size=7),
-    st.sampled_from(["", " ", "3", " 3.5 ", "0", "-0", "1e999", "-1e999", "1e-999", "nan", "inf", "1_0", "0x1", "+.5", "5.", ".5e-3", "١٢"]),
+    st.sampled_from(["", " ", "3", " 3.5 ", "0", "-0", "1e999", "-1e999", "1e-999", "nan", "inf", "1_0", "0x1", "+.5",
+                     "5.", ".5e-3", "١٢"]),
 )
 FILES = itertools.count()
 
@@ -182,7 +196,8 @@ def test_a_cell_loads_exactly_when_it_is_a_finite_number_in_range(tmp_path_facto
             expected.append(where + f"expected a value of zero or more, found {cell}")
         elif float(cell) != 0 and not 1e-12 <= float(cell) * ARCMIN <= 1e12:
             # Held to the SI scale of a case file's values (calc.core.units.SI_SCALE): 1 arcmin = π / 10800 rad.
-            expected.append(where + f"expected a magnitude between 1e-12 and 1e+12 in SI units (rad), found {cell}, which is {float(cell) * ARCMIN:.3g}")
+            expected.append(where + f"expected a magnitude between 1e-12 and 1e+12 in SI units (rad), found {cell}, "
+                                    f"which is {float(cell) * ARCMIN:.3g}")
         else:
             expected.append(float(cell))
     first_error = next((e for e in expected if isinstance(e, str)), None)

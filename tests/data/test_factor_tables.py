@@ -19,13 +19,15 @@ from ..conftest import HEAD_TOML, PROFILE_TOML, run
 
 # The tables as the code held them before they became data (calc/domain/gearbox.py, calc/domain/coupling.py).
 OLD_SHOCK = BandTable("Z_h", (0, 1000, 1500, 2000, 3000), (1.0, 1.1, 1.3, 1.6, 2.0), "1/h", "per_hour", "old")
-OLD_TEMPERATURE = BandTable("T", (-math.inf, 50.0, 70.0, 90.0, 110.0), (1.0, 1.3, 1.6, 1.8, 2.0), "degC", "temperature", "old", top=120.0)
+OLD_TEMPERATURE = BandTable("T", (-math.inf, 50.0, 70.0, 90.0, 110.0), (1.0, 1.3, 1.6, 1.8, 2.0), "degC", "temperature",
+                            "old", top=120.0)
 
 
 # --- published figures -----------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("celsius, factor", [(20, 1.0), (30, 1.0), (45, 1.5), (60, 1.5), (75, 2.0), (90, 2.0), (100, 2.5), (110, 2.5)])
+@pytest.mark.parametrize("celsius, factor",
+                         [(20, 1.0), (30, 1.0), (45, 1.5), (60, 1.5), (75, 2.0), (90, 2.0), (100, 2.5), (110, 2.5)])
 def test_roba_es_temperature_factors(celsius, factor):
     # Mayr ROBA-ES, B.9.6.EN (11/03/2022) p. 26, safety factor for temperature S_δ: -30/+30 °C 1,
     # +60 °C 1.5, +90 °C 2, +110 °C 2.5; between two columns the higher one applies.
@@ -44,7 +46,9 @@ def test_comintec_table_ends_at_its_last_published_figure():
         temperature_factor(Q_(85, "degC"), factor_table("temperature", "comintec"))
 
 
-@pytest.mark.parametrize("starts, factor", [(0, 1.0), (100, 1.0), (101, 1.2), (200, 1.2), (201, 1.4), (400, 1.4), (800, 1.6), (801, 1.8), (1000, 1.8)])
+@pytest.mark.parametrize("starts, factor",
+                         [(0, 1.0), (100, 1.0), (101, 1.2), (200, 1.2), (201, 1.4), (400, 1.4), (800, 1.6), (801, 1.8),
+                          (1000, 1.8)])
 def test_roba_es_start_factors(starts, factor):
     # Mayr ROBA-ES, B.9.6.EN p. 26, start-up factor S_z: 0-100 starts/h 1, 101-200 1.2, 201-400 1.4,
     # 401-800 1.6, 801-1000 1.8.
@@ -110,8 +114,10 @@ def write(tmp_path, text, name="t.csv"):
 @pytest.mark.parametrize(
     "body, message",
     [
-        (",50,1.0,higher,a\n50,70,0.9,higher,a\n", r"row 3, column factor: expected factors that never fall as T rises, found 0.9 after 1.0"),
-        (",50,1.0,higher,a\n60,70,1.3,higher,a\n", r"row 3, column from: expected the band to start where the row before ends \(50\), found '60', a gap"),
+        (",50,1.0,higher,a\n50,70,0.9,higher,a\n",
+         r"row 3, column factor: expected factors that never fall as T rises, found 0.9 after 1.0"),
+        (",50,1.0,higher,a\n60,70,1.3,higher,a\n",
+         r"row 3, column from: expected the band to start where the row before ends \(50\), found '60', a gap"),
         (",50,1.0,higher,a\n40,70,1.3,higher,a\n", r"row 3, column from: .* found '40', an overlap"),
         (",50,-1.0,higher,a\n", r"row 2, column factor: expected a factor above zero, found '-1.0'"),
         (",50,1.0,higher,a\n70,50,1.3,higher,a\n", r"row 3, column to: expected a band that rises"),
@@ -135,9 +141,12 @@ def test_a_bad_table_is_named_by_row_and_column(tmp_path, body, message):
     "text, message",
     [
         ("", r": expected a header row, found an empty file"),
-        ("from [degC],to [degC],factor [1],source\n", r": expected the columns from, to, factor, at_boundary, source, found no column 'at_boundary'"),
-        ("from [N*m],to [N*m],factor [1],at_boundary,source\n,1,1,higher,a\n", r"header, column from: expected a unit of temperature"),
-        ("from [degC],to [K],factor [1],at_boundary,source\n,1,1,higher,a\n", r"header: expected the columns from and to in one unit"),
+        ("from [degC],to [degC],factor [1],source\n",
+         r": expected the columns from, to, factor, at_boundary, source, found no column 'at_boundary'"),
+        ("from [N*m],to [N*m],factor [1],at_boundary,source\n,1,1,higher,a\n",
+         r"header, column from: expected a unit of temperature"),
+        ("from [degC],to [K],factor [1],at_boundary,source\n,1,1,higher,a\n",
+         r"header: expected the columns from and to in one unit"),
         ("from [degC],to (degC),factor,at_boundary,source\n", r"header column 2 'to \(degC\)' is not of the form"),
     ],
 )
@@ -155,7 +164,9 @@ def test_a_table_that_is_not_utf8(tmp_path):
 
 
 def test_an_unknown_name_or_missing_file(tmp_path):
-    with pytest.raises(CalcError, match=r"^coupling.start_factors: unknown starts-factor table 'ktr'; expected one of roba-es or a path"):
+    with pytest.raises(CalcError,
+                       match=r"^coupling.start_factors: unknown starts-factor table 'ktr'; expected one of roba-es or "
+                             r"a path"):
         factor_table("starts", "ktr", where="coupling.start_factors")
     with pytest.raises(CalcError, match=r"the factor table 'mine.csv' does not exist"):
         factor_table("starts", "mine.csv", tmp_path)
@@ -194,7 +205,9 @@ def test_case_names_a_makers_temperature_table(capsys, write_case):
 
 def test_case_names_its_own_table_by_path(capsys, write_case, tmp_path):
     write(tmp_path, HEADER + ",65,1.25,higher,our own test bench\n65,120,1.7,higher,our own test bench\n", "ours.csv")
-    code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'temperature_factors = "ours.csv"\n'), "--json")
+    code, out, err = run(capsys,
+                         write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'temperature_factors = "ours.csv"\n'),
+                         "--json")
     assert code == 0, err
     c = json.loads(out)["coupling"]
     assert c["temperature_factor"] == 1.25 and "ours.csv: our own test bench" in c["temperature_factors"]
@@ -204,7 +217,8 @@ def test_case_with_an_unknown_table_name(capsys, write_case):
     path = write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'temperature_factors = "ktr"\n')
     code, out, err = run(capsys, path)
     assert code == 2 and out == ""
-    assert err.strip().endswith("coupling.temperature_factors: unknown temperature-factor table 'ktr'; expected one of comintec, roba-es, source or a path to a CSV file")
+    assert err.strip().endswith("coupling.temperature_factors: unknown temperature-factor table 'ktr'; expected one of "
+                                "comintec, roba-es, source or a path to a CSV file")
     assert err.count("\n") == 1
 
 
@@ -232,10 +246,12 @@ def test_the_factor_folder_is_package_data():
 
 # --- the peak-torque check of elastomer couplings ------------------------------------------------
 
-JAWS = """part,series,size,type,T_KN [N*m],T_Kmax [N*m],C_T [N*m/rad],C_tube [N*m**2/rad],J [kg*cm**2],n_max [rpm],d_1min [mm],d_1max [mm],d_2min [mm],d_2max [mm],T_Amin [N*m],T_Amax [N*m],H [mm],A_max [mm],source
-J-10,J,10,elastomer,10,15,3000,,0.2,,6,20,6,20,,,,,a test row
-J-11,J,11,elastomer,11,,3000,,0.2,,6,20,6,20,,,,,a test row without T_Kmax
-"""
+JAWS = (
+    "part,series,size,type,T_KN [N*m],T_Kmax [N*m],C_T [N*m/rad],C_tube [N*m**2/rad],J [kg*cm**2],n_max [rpm],"
+    "d_1min [mm],d_1max [mm],d_2min [mm],d_2max [mm],T_Amin [N*m],T_Amax [N*m],H [mm],A_max [mm],source\n"
+    "J-10,J,10,elastomer,10,15,3000,,0.2,,6,20,6,20,,,,,a test row\n"
+    "J-11,J,11,elastomer,11,,3000,,0.2,,6,20,6,20,,,,,a test row without T_Kmax\n"
+)
 
 
 def jaw_selection(tmp_path, **kw):
@@ -278,9 +294,11 @@ def test_without_a_start_table_the_check_is_not_made(tmp_path):
 
 
 def test_starts_and_start_table_go_together(tmp_path):
-    with pytest.raises(CalcError, match=r"^coupling.starts_per_hour: the start-factor table needs the number of starts per hour"):
+    with pytest.raises(CalcError,
+                       match=r"^coupling.starts_per_hour: the start-factor table needs the number of starts per hour"):
         jaw_selection(tmp_path, start_factors=factor_table("starts", "roba-es"))
-    with pytest.raises(CalcError, match=r"^coupling.starts_per_hour: starts per hour are read against a start-factor table"):
+    with pytest.raises(CalcError,
+                       match=r"^coupling.starts_per_hour: starts per hour are read against a start-factor table"):
         jaw_selection(tmp_path, starts_per_hour=Q_(10, "1/hour"))
 
 
@@ -289,7 +307,8 @@ def test_case_start_factors_default_to_one_start_per_cycle(capsys, write_case):
     path = write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'start_factors = "roba-es"\n')
     code, out, err = run(capsys, path)
     assert code == 2 and "coupling.starts_per_hour: expected 0 <= Z_h <= 1000 1/h" in err
-    path = write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'start_factors = "roba-es"\nstarts_per_hour = "150 1/hour"\n', "b.toml")
+    path = write_case(HEAD_TOML + PROFILE_TOML + ELASTOMER + 'start_factors = "roba-es"\nstarts_per_hour = "150 '
+                                                             '1/hour"\n', "b.toml")
     code, out, err = run(capsys, path, "--json")
     assert code == 0, err
     c = json.loads(out)["coupling"]

@@ -47,7 +47,8 @@ def test_partial_rows_load_but_are_never_ranked(catalog):
     # the row keeps what is (n_1max 7500 rpm, F_2A 3350 N, F_2R 4200 N, M_2K 236 N·m, as catalog-data.md).
     k = catalog.index("SP075-10", "part")
     assert catalog.partial[k] and np.isnan(catalog["T_2B"][k].magnitude)
-    assert (catalog["F_2A"][k].m_as("N"), catalog["F_2R"][k].m_as("N"), catalog["M_2K"][k].m_as("N*m")) == (3350, 4200, 236)
+    assert (catalog["F_2A"][k].m_as("N"), catalog["F_2R"][k].m_as("N"),
+            catalog["M_2K"][k].m_as("N*m")) == (3350, 4200, 236)
     rows = rows_at_ratio(catalog, Q_(10, ""))
     assert not rows.partial.any() and "SP075-10" not in rows.parts
 
@@ -100,7 +101,8 @@ def test_a_maker_table_without_the_new_columns_loads(tmp_path):
     # The optional columns (F_2A, z_2, J_1_hub, ...) may be absent from a file: every cell empty.
     header = GEARBOXES.read_text().splitlines()[0].split(",")
     keep = [k for k, name in enumerate(header) if name.split(" [")[0] in
-            ("part", "series", "ratio", "T_2N", "T_2B", "T_2Not", "n_1N", "n_1max", "eta", "backlash", "C_t21", "J_1", "source")]
+            ("part", "series", "ratio", "T_2N", "T_2B", "T_2Not", "n_1N", "n_1max", "eta", "backlash", "C_t21", "J_1",
+             "source")]
     import csv
     import io
 
@@ -141,7 +143,8 @@ def test_motor_shaft_in_a_case_sets_j1_and_the_hub_check(capsys, write_case):
     assert c["inertia_ratio"] == pytest.approx(15.57 / 4.2)
     hub = next(k for k in c["checks"] if k["name"] == "d_hub")
     assert hub["utilization"] == pytest.approx(16 / 24) and hub["passes"] is True and hub["governs"] is True
-    r = results(capsys, write_case(head.replace("16 mm k6", "30 mm").replace("ratio = 10", 'ratio = 10\npart = "TP010-10"') + PROFILE_TOML))
+    wide = head.replace("16 mm k6", "30 mm").replace("ratio = 10", 'ratio = 10\npart = "TP010-10"')
+    r = results(capsys, write_case(wide + PROFILE_TOML))
     (c,) = r["gearbox"]["candidates"]
     assert "d_motor <= d_hub,max: required 30 mm > rated 24 mm, 25 % over" in c["reasons"]
 
@@ -149,14 +152,17 @@ def test_motor_shaft_in_a_case_sets_j1_and_the_hub_check(capsys, write_case):
 # --- Several catalogs ranked together ---------------------------------------------------------------
 
 
-MAKER_CSV = """part,series,ratio [1],T_2N [lbf*in],T_2B [lbf*in],T_2Not [lbf*in],n_1N [rpm],n_1max [rpm],eta [1],backlash [arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],family,size,source
-MK160-10,MK160,10,1000,1600,3000,3000,6000,0.96,6,20,1.0,MK,160,made-up maker row for a test
-"""
+MAKER_CSV = (
+    "part,series,ratio [1],T_2N [lbf*in],T_2B [lbf*in],T_2Not [lbf*in],n_1N [rpm],n_1max [rpm],eta [1],"
+    "backlash [arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],family,size,source\n"
+    "MK160-10,MK160,10,1000,1600,3000,3000,6000,0.96,6,20,1.0,MK,160,made-up maker row for a test\n"
+)
 
 
 def test_two_catalogs_rank_together_each_candidate_naming_its_own(capsys, write_case, tmp_path):
     (tmp_path / "my-maker.csv").write_text(MAKER_CSV)
-    case = write_case(HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = ["gearboxes", "my-maker.csv"]') + PROFILE_TOML)
+    case = write_case(HEAD_TOML.replace("ratio = 10",
+                                        'ratio = 10\ncatalog = ["gearboxes", "my-maker.csv"]') + PROFILE_TOML)
     g = results(capsys, case)["gearbox"]
     # MK160-10: T_2B = 1600 lbf·in = 180.78 N·m; T_2max = 12 · 10 · 1.3 · 0.96 = 149.76 N·m → 0.828;
     # n_1max 6000 → 0.5. Its T_2B is below NPT035-10's 220 N·m: the smallest adequate, first.
@@ -164,7 +170,8 @@ def test_two_catalogs_rank_together_each_candidate_naming_its_own(capsys, write_
     first = g["candidates"][0]
     assert first["catalog"] == str(tmp_path / "my-maker.csv") and first["family"] == "MK"
     t2b = next(k for k in first["checks"] if k["name"] == "T_2B")
-    assert t2b["rated"]["value"] == pytest.approx(1600 * 0.1129848290276167) and t2b["utilization"] == pytest.approx(149.76 / 180.7757, rel=1e-5)
+    assert t2b["rated"]["value"] == pytest.approx(1600 * 0.1129848290276167)
+    assert t2b["utilization"] == pytest.approx(149.76 / 180.7757, rel=1e-5)
     assert g["candidates"][1]["catalog"] == "catalogs/gearboxes.csv"
     assert g["catalog"] == f"catalogs/gearboxes.csv + {tmp_path / 'my-maker.csv'}"
     assert [m["catalog"] for m in g["catalogs"]] == ["catalogs/gearboxes.csv", str(tmp_path / "my-maker.csv")]
@@ -182,7 +189,8 @@ def test_the_same_part_in_two_catalogs_is_an_error(capsys, write_case, tmp_path)
     (tmp_path / "copy.csv").write_text(MAKER_CSV.replace("MK160-10,", "TP010-10,"))
     case = write_case(HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = ["gearboxes", "copy.csv"]') + PROFILE_TOML)
     err = error(capsys, case)
-    assert "gearbox.catalog: the part 'TP010-10' stands in catalogs/gearboxes.csv (row 11) and in" in err and "(row 2)" in err
+    assert "gearbox.catalog: the part 'TP010-10' stands in catalogs/gearboxes.csv (row 11) and in" in err
+    assert "(row 2)" in err
 
 
 @pytest.mark.parametrize("value", ["[]", "[1, 2]", "3"])
@@ -199,7 +207,8 @@ def test_load_catalogs_refuses_an_empty_list():
 def test_coupling_catalogs_rank_together(capsys, write_case, tmp_path):
     header = (ROOT / "catalogs" / "couplings.csv").read_text().splitlines()[0]
     pad = "," * 12
-    (tmp_path / "bellows.csv").write_text(f"{header}\nXB-30,XB,30,bellows,30,,40000,,1.0,10000,10,30,10,30,,,,,{pad}no,made-up row\n")
+    row = f"XB-30,XB,30,bellows,30,,40000,,1.0,10000,10,30,10,30,,,,,{pad}no,made-up row"
+    (tmp_path / "bellows.csv").write_text(f"{header}\n{row}\n")
     coupling = ('[coupling]\ncatalog = ["couplings", "bellows.csv"]\ntype = "bellows"\naccel_torque = "12 N*m"\n'
                 'drive_inertia = "4.2 kg*cm**2"\nload_inertia = "15.93 kg*cm**2"\nexcitation_frequency = "150 Hz"\n'
                 'shaft_1 = "19 mm k6"\nshaft_2 = "16 mm h7"\n')
@@ -237,7 +246,8 @@ def test_bearing_checks_in_the_ranking(catalog):
     assert sel.selected == "NPT035-10" and any("z_2" in n for n in sel.notes)
     # F_2r = 3000 N at 50 mm: M_2k = 150 N·m > 134 N·m of NPT035-10, 11.9 % over; NPS045-10 gives no
     # M_2K (cut off in its source): not checked there, so it is the smallest adequate gearbox.
-    sel = select_gearbox(example_profile(), rows, Q_(12, "N*m"), output_load=OutputLoad(radial_force=Q_(3000, "N"), lever_arm=Q_(50, "mm")))
+    sel = select_gearbox(example_profile(), rows, Q_(12, "N*m"),
+                         output_load=OutputLoad(radial_force=Q_(3000, "N"), lever_arm=Q_(50, "mm")))
     npt = next(x for x in sel.candidates() if x.part == "NPT035-10")
     assert npt.reasons == ["M_2k <= M_2K: required 150 N·m > rated 134 N·m, 11.9 % over"]
     assert sel.selected == "NPS045-10"
@@ -259,10 +269,16 @@ def test_bearing_checks_from_the_case(capsys, write_case):
 @pytest.mark.parametrize(
     "keys, fragment",
     [
-        ('lever_arm = "50 mm"', "load.lever_arm: a lever arm is the distance of load.radial_force from the output flange, but no radial_force is given"),
-        ('radial_force = "500 N"', "load.radial_force: the tilting moment needs the force's lever arm from the output flange, load.lever_arm, found none"),
-        ('axial_force_radius = "5 mm"', "load.axial_force_radius: the distance of load.axial_force from the axis, but no axial_force is given"),
-        ('radial_force = "500 N"\nlever_arm = "-5 mm"', "load.lever_arm: expected a distance of zero or more, found '-5 mm'"),
+        ('lever_arm = "50 mm"',
+         "load.lever_arm: a lever arm is the distance of load.radial_force from the output flange, but no radial_force "
+         "is given"),
+        ('radial_force = "500 N"',
+         "load.radial_force: the tilting moment needs the force's lever arm from the output flange, load.lever_arm, "
+         "found none"),
+        ('axial_force_radius = "5 mm"',
+         "load.axial_force_radius: the distance of load.axial_force from the axis, but no axial_force is given"),
+        ('radial_force = "500 N"\nlever_arm = "-5 mm"',
+         "load.lever_arm: expected a distance of zero or more, found '-5 mm'"),
         ('axial_force = "0 N"', "load.axial_force: expected an axial force above zero, found '0 N'"),
         ('radial_force = "5 N*m"\nlever_arm = "5 mm"', "load.radial_force: expected a force"),
     ],
@@ -316,7 +332,8 @@ def test_an_accuracy_part_from_a_list_of_catalogs_names_its_file_and_doubt(capsy
     first, second = a["components"]
     assert first["source"] == f"{tmp_path / 'my-maker.csv'} row 2"
     # NPS045-10's eta, L_PA and backlash are read per stage group (SOURCES.md): the doubt goes with the row.
-    assert second["source"].startswith("catalogs/gearboxes.csv row ") and "doubtful figures: eta/L_PA/backlash" in second["source"]
+    assert second["source"].startswith("catalogs/gearboxes.csv row ")
+    assert "doubtful figures: eta/L_PA/backlash" in second["source"]
 
 _force = st.floats(0, 1e5, allow_subnormal=False)
 _arm = st.floats(0, 1e3, allow_subnormal=False)

@@ -50,7 +50,9 @@ def test_a_measurement_path_must_be_text(text):
     # TOML `hysteresis = 3` or `hysteresis = ""` names no file.
     with pytest.raises(CalcError) as err:
         measurement.measurement_path(text, None, "accuracy.component[1].hysteresis")
-    assert str(err.value) == f"accuracy.component[1].hysteresis: expected the path of a CSV file in quotes, found {text!r}"
+    assert str(err.value) == (
+        f"accuracy.component[1].hysteresis: expected the path of a CSV file in quotes, found {text!r}"
+    )
 
 
 @pytest.mark.parametrize(
@@ -58,7 +60,8 @@ def test_a_measurement_path_must_be_text(text):
     [
         (b"torque [N*m],twist [arcmin]\n0,\xff\n", ": expected a UTF-8 CSV file, found bytes that are not UTF-8"),
         (b"# only a comment\n\n", ": expected a header row such as 'torque [N*m],twist [arcmin]', found none"),
-        (b"# a loop\ntorque (N*m),twist [arcmin]\n0,0\n", ", row 2: header column 1 'torque (N*m)' is not of the form 'name [unit]'"),
+        (b"# a loop\ntorque (N*m),twist [arcmin]\n0,0\n",
+         ", row 2: header column 1 'torque (N*m)' is not of the form 'name [unit]'"),
     ],
 )
 def test_unreadable_files_and_headers_name_the_file(tmp_path, content, message):

@@ -25,10 +25,13 @@ COUPLING = Component("EKM-15", "output", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin")
 
 
 def test_total_lost_motion_is_the_texts_formula():
-    # Source, Lost Motion: Backlash + Applied Torque / Torsional Stiffness. 3 arcmin + 13 N·m / 1.3 N·m/arcmin = 13 arcmin.
-    assert lost_motion(j_t=Q_(3, "arcmin"), T=Q_(13, "N*m"), C=Q_(1.3, "N*m/arcmin")).m_as("arcmin") == pytest.approx(13.0)
+    # Source, Lost Motion: Backlash + Applied Torque / Torsional Stiffness. 3 arcmin + 13 N·m / 1.3 N·m/arcmin = 13
+    # arcmin.
+    assert lost_motion(j_t=Q_(3, "arcmin"), T=Q_(13, "N*m"),
+                       C=Q_(1.3, "N*m/arcmin")).m_as("arcmin") == pytest.approx(13.0)
     # The twist under a torque of either sign counts as its magnitude.
-    assert lost_motion(j_t=Q_(3, "arcmin"), T=Q_(-13, "N*m"), C=Q_(1.3, "N*m/arcmin")).m_as("arcmin") == pytest.approx(13.0)
+    assert lost_motion(j_t=Q_(3, "arcmin"), T=Q_(-13, "N*m"),
+                       C=Q_(1.3, "N*m/arcmin")).m_as("arcmin") == pytest.approx(13.0)
     assert lost_motion.latex() == r"\varphi_{\mathrm{LM}} = j_{t} + \frac{\left|{T}\right|}{C}"
 
 
@@ -44,14 +47,18 @@ def test_summed_over_components_it_is_the_chains():
 
 def test_three_percent_rule_as_written():
     # E13, with T_N = 40 N·m: 3 % is 1.2 N·m. ATA 1 arcmin, backlash 3 arcmin, C 1.3 N·m/arcmin.
-    args = dict(nominal_torque=Q_(40, "N*m"), transmission_accuracy=Q_(60, "arcsec"), backlash=Q_(3, "arcmin"), stiffness=Q_(1.3, "N*m/arcmin"))
+    args = dict(nominal_torque=Q_(40, "N*m"), transmission_accuracy=Q_(60, "arcsec"), backlash=Q_(3, "arcmin"),
+                stiffness=Q_(1.3, "N*m/arcmin"))
     assert positioning_accuracy(Q_(1.2, "N*m"), **args).m_as("arcmin") == pytest.approx(1 + 3)  # at 3 %: ATA + backlash
-    assert positioning_accuracy(Q_(1.3, "N*m"), **args).m_as("arcmin") == pytest.approx(1 + 1.3 / 1.3)  # above: ATA + T/C
+    # above: ATA + T/C
+    assert positioning_accuracy(Q_(1.3, "N*m"), **args).m_as("arcmin") == pytest.approx(1 + 1.3 / 1.3)
     assert positioning_accuracy(Q_(-26, "N*m"), **args).m_as("arcmin") == pytest.approx(1 + 20)
     batch = positioning_accuracy(Q_(np.array([0, 1.2, 2.6]), "N*m"), **args).m_as("arcmin")
     assert batch == pytest.approx([4, 4, 3])
     assert positioning_accuracy_low.latex() == r"\Delta\varphi_{P} = j_{t} + \varphi_{\mathrm{TA}}"
-    assert positioning_accuracy_high.latex() == r"\Delta\varphi_{P} = \varphi_{\mathrm{TA}} + \frac{\left|{T}\right|}{C}"
+    assert positioning_accuracy_high.latex() == (
+        r"\Delta\varphi_{P} = \varphi_{\mathrm{TA}} + \frac{\left|{T}\right|}{C}"
+    )
 
 
 @given(st.floats(min_value=0, max_value=0.03), st.floats(min_value=1, max_value=1e4))
@@ -65,7 +72,8 @@ def test_the_rule_says_which_form_and_why():
     # 0.03 * 110 = 3.3000000000000003 in floats, and 3.3 N·m in mN·m back in N·m is within BOUNDARY_RTOL of it.
     t_n = Q_(110, "N*m")
     at = positioning_rule(Q_(3.3, "N*m"), t_n)
-    assert at.low_torque and at.text == "|T| <= 3 % of T_N: phi_TA + j_t" and at.why == "|T| = 3.3 N·m <= 3 % of T_N = 3.3 N·m"
+    assert at.low_torque and at.text == "|T| <= 3 % of T_N: phi_TA + j_t"
+    assert at.why == "|T| = 3.3 N·m <= 3 % of T_N = 3.3 N·m"
     assert positioning_rule(Q_(3300, "mN*m"), t_n).low_torque
     above = positioning_rule(Q_(-3.4, "N*m"), t_n)
     assert not above.low_torque and above.text == "|T| > 3 % of T_N: phi_TA + |T| / C"
@@ -73,7 +81,8 @@ def test_the_rule_says_which_form_and_why():
     # The step is the formula of the form that applies: 1 + 3 arcmin at 3.3 N·m, 1 + 3.4 / 1.7 = 3 arcmin at 3.4 N·m.
     args = (Q_(1, "arcmin"), Q_(3, "arcmin"), Q_(1.7, "N*m/arcmin"))
     assert at.step(*args).formula is positioning_accuracy_low and at.accuracy(*args).m_as("arcmin") == pytest.approx(4)
-    assert above.step(*args).formula is positioning_accuracy_high and above.accuracy(*args).m_as("arcmin") == pytest.approx(3)
+    assert above.step(*args).formula is positioning_accuracy_high
+    assert above.accuracy(*args).m_as("arcmin") == pytest.approx(3)
     with pytest.raises(CalcError, match="nominal_torque: expected a torque above zero"):
         positioning_rule(Q_(1, "N*m"), Q_(0, "N*m"))
 
@@ -85,7 +94,8 @@ def test_repeatability_is_the_backlash_at_rest_and_bounded_by_lost_motion_under_
     assert v.m_as("arcmin") == pytest.approx(13) and bound
 
 
-@given(st.floats(min_value=0, max_value=500), st.floats(min_value=0, max_value=10, allow_subnormal=False), st.floats(min_value=0.1, max_value=100))
+@given(st.floats(min_value=0, max_value=500), st.floats(min_value=0, max_value=10, allow_subnormal=False),
+       st.floats(min_value=0.1, max_value=100))
 def test_lost_motion_grows_with_torque_and_never_falls_below_the_backlash(t, j, c):
     a = lost_motion(j_t=Q_(j, "arcmin"), T=Q_(t, "N*m"), C=Q_(c, "N*m/arcmin")).m_as("arcmin")
     b = lost_motion(j_t=Q_(j, "arcmin"), T=Q_(t + 1, "N*m"), C=Q_(c, "N*m/arcmin")).m_as("arcmin")
@@ -102,13 +112,15 @@ def test_chain_accuracy_of_the_contract_example():
     assert a.repeatability.m_as("arcmin") == pytest.approx(101.717, abs=1e-3) and a.repeatability_is_bound
     assert [s.formula.name for s in a.steps()] == ["C_total", "phi_LM", "Delta_phi_P_high"]
     at_rest = chain_accuracy(Chain((COUPLING, GEARBOX)), Q_(0, "N*m"))
-    assert at_rest.positioning_accuracy.m_as("arcmin") == pytest.approx(4) and at_rest.repeatability.m_as("arcmin") == pytest.approx(3)
+    assert at_rest.positioning_accuracy.m_as("arcmin") == pytest.approx(4)
+    assert at_rest.repeatability.m_as("arcmin") == pytest.approx(3)
 
 
 def test_chain_without_a_nominal_torque():
     chain = Chain((COUPLING,))
     assert chain_accuracy(chain, Q_(0, "N*m")).low_torque
-    with pytest.raises(CalcError, match=r"nominal_torque: the 3 % rule of positioning accuracy \(E13\) needs the nominal torque"):
+    with pytest.raises(CalcError,
+                       match=r"nominal_torque: the 3 % rule of positioning accuracy \(E13\) needs the nominal torque"):
         chain_accuracy(chain, Q_(5, "N*m"))
     assert not chain_accuracy(chain, Q_(5, "N*m"), nominal_torque=Q_(100, "N*m")).low_torque
     with pytest.raises(CalcError, match=r"^nominal_torque: expected a torque above zero, found 0 "):
@@ -128,12 +140,15 @@ def test_measured_positions_by_hand():
     # Three targets and two actual positions: checked before the error formula broadcasts them.
     with pytest.raises(CalcError) as err:
         analyze_positions(Q_([0, 0, 90], "deg"), Q_([0, 0], "deg"), source="positions.csv")
-    assert str(err.value) == "positions.csv: expected target and actual as two arrays of one length, found shapes (3,) and (2,)"
+    assert str(err.value) == (
+        "positions.csv: expected target and actual as two arrays of one length, found shapes (3,) and (2,)"
+    )
 
 
 def test_positions_file(tmp_path):
     path = tmp_path / "positions.csv"
-    path.write_text("# indexing table, 3 approaches to each station\ntarget [deg],actual [deg]\n0,0.01\n0,0.02\n0,0.015\n90,90.01\n90,89.99\n90,90\n")
+    path.write_text("# indexing table, 3 approaches to each station\ntarget [deg],actual "
+                    "[deg]\n0,0.01\n0,0.02\n0,0.015\n90,90.01\n90,89.99\n90,90\n")
     r = read_positions(path)
     assert r.accuracy.m_as("arcmin") == pytest.approx(1.2) and r.repeatability.m_as("arcmin") == pytest.approx(1.2)
     path.write_text("target [deg],actual [1]\n0,0\n")

@@ -62,7 +62,8 @@ def test_service_factor_defaults_to_two_and_a_half():
     # E8: S_A is a parameter with default 2.5.
     s = select_coupling(of_type("bellows"), **EXAMPLE)
     assert s.M_N.m_as("N*m") == pytest.approx(23.7407, abs=1e-4)
-    assert select_coupling(of_type("bellows"), service_factor=1, **EXAMPLE).M_N.m_as("N*m") == pytest.approx(23.7407 / 2.5, abs=1e-4)
+    assert select_coupling(of_type("bellows"), service_factor=1,
+                           **EXAMPLE).M_N.m_as("N*m") == pytest.approx(23.7407 / 2.5, abs=1e-4)
 
 
 @given(
@@ -78,7 +79,8 @@ def test_nominal_torque_lies_between_zero_and_the_shock_loaded_motor_torque(m_a,
 
 @pytest.mark.parametrize(
     "celsius, factor",
-    [(-20, 1.0), (49.99, 1.0), (50, 1.3), (69.99, 1.3), (70, 1.6), (89.99, 1.6), (90, 1.8), (109.99, 1.8), (110, 2.0), (120, 2.0)],
+    [(-20, 1.0), (49.99, 1.0), (50, 1.3), (69.99, 1.3), (70, 1.6), (89.99, 1.6), (90, 1.8), (109.99, 1.8), (110, 2.0),
+     (120, 2.0)],
 )
 def test_temperature_factor_takes_the_higher_factor_at_a_boundary(celsius, factor):
     # E9: T < 50 °C → 1.0; 50 <= T < 70 → 1.3; 70 <= T < 90 → 1.6; 90 <= T < 110 → 1.8; T >= 110 → 2.0,
@@ -94,7 +96,8 @@ def test_temperature_in_other_units():
 
 def test_another_makers_table_is_data():
     # E9: one elastomer maker publishes 1.0 up to 30 °C, 1.5 at 60, 2.0 at 90, 2.5 at 110 °C.
-    table = BandTable("T", (-math.inf, 30.0, 60.0, 90.0), (1.0, 1.5, 2.0, 2.5), "degC", "temperature", "another maker", top=110.0)
+    table = BandTable("T", (-math.inf, 30.0, 60.0, 90.0), (1.0, 1.5, 2.0, 2.5), "degC", "temperature", "another maker",
+                      top=110.0)
     assert [float(temperature_factor(Q_(t, "degC"), table)) for t in (20, 30, 60, 95)] == [1.0, 1.5, 2.0, 2.5]
 
 
@@ -105,7 +108,8 @@ def test_temperature_below_absolute_zero_is_an_input_error(temperature):
         temperature_factor(temperature, where="coupling.temperature")
 
 
-@pytest.mark.parametrize("temperature", [Q_(121, "degC"), Q_(1000, "degC"), Q_(400, "K"), Q_(Q_(120.5, "degC").m_as("degF"), "degF")])
+@pytest.mark.parametrize("temperature",
+                         [Q_(121, "degC"), Q_(1000, "degC"), Q_(400, "K"), Q_(Q_(120.5, "degC").m_as("degF"), "degF")])
 def test_temperature_above_the_tables_range_is_an_input_error(temperature):
     # The source's last band, "> 110 °C", ends at 120 °C, the highest rating of servo elastomer inserts
     # (thermoplastic polyurethane): 121 °C, 1000 °C, 400 K = 126.85 °C and 120.5 °C in °F lie above it.
@@ -196,24 +200,28 @@ def test_natural_frequency_falls_as_either_inertia_grows(c, j_a, j_l, more):
 def test_a_very_heavy_load_leaves_the_single_mass_frequency(c, j):
     # J_L → ∞: f_e → √(C_T / J_A) / 2π, the drive side on a spring to a fixed wall.
     single = math.sqrt(c / (j * 1e-4)) / (2 * math.pi)
-    assert f_e(C_T=Q_(c, "N*m/rad"), J_A=Q_(j, "kg*cm**2"), J_L=Q_(j * 1e9, "kg*cm**2")).m_as("Hz") == pytest.approx(single, rel=1e-6)
+    assert f_e(C_T=Q_(c, "N*m/rad"), J_A=Q_(j, "kg*cm**2"),
+               J_L=Q_(j * 1e9, "kg*cm**2")).m_as("Hz") == pytest.approx(single, rel=1e-6)
 
 
 @given(
-    m_a=st.floats(0.5, 200), j_drive=st.floats(0.1, 100), j_load=st.floats(0.1, 1000), f_er=st.floats(1, 500), d=st.floats(10.5, 25)
+    m_a=st.floats(0.5, 200), j_drive=st.floats(0.1, 100), j_load=st.floats(0.1, 1000), f_er=st.floats(1, 500),
+    d=st.floats(10.5, 25)
 )
 def test_metric_and_inch_inputs_give_the_same_answer(m_a, j_drive, j_load, f_er, d):
     lbf_in, lb_in2 = 0.1129848290276167, 0.45359237 * 2.54**2  # N·m per lbf·in, kg·cm² per lb·in²
     bellows = of_type("bellows")
     metric = select_coupling(
-        bellows, Q_(m_a, "N*m"), Q_(j_drive, "kg*cm**2"), Q_(j_load, "kg*cm**2"), Q_(f_er, "Hz"), f"{d!r} mm k6", f"{d!r} mm h7"
+        bellows, Q_(m_a, "N*m"), Q_(j_drive, "kg*cm**2"), Q_(j_load, "kg*cm**2"), Q_(f_er, "Hz"), f"{d!r} mm k6",
+        f"{d!r} mm h7"
     )
     inch = select_coupling(
         bellows, Q_(m_a / lbf_in, "lbf*in"), Q_(j_drive / lb_in2, "lb*in**2"), Q_(j_load / lb_in2, "lb*in**2"),
         Q_(f_er * 60, "1/min"), f'{d / 25.4!r}" k6', f"{d / 25.4!r} in h7",
     )
     assert inch.M_N.m_as("N*m") == pytest.approx(metric.M_N.m_as("N*m"), rel=1e-9)
-    assert inch.f_e.m_as("Hz") == pytest.approx(metric.f_e.m_as("Hz"), rel=1e-9, nan_ok=True)  # DKN-45-L41: no J, no f_e
+    # DKN-45-L41: no J, no f_e
+    assert inch.f_e.m_as("Hz") == pytest.approx(metric.f_e.m_as("Hz"), rel=1e-9, nan_ok=True)
     assert inch.order.tolist() == metric.order.tolist() and inch.passes.tolist() == metric.passes.tolist()
 
 
@@ -257,7 +265,9 @@ def test_line_shaft_selection_uses_the_stiffness_at_the_shaft_distance(tmp_path)
 
 
 def test_shaft_distance_shorter_than_the_hubs_is_an_error():
-    with pytest.raises(CalcError, match=r"shaft_distance: 100 mm is shorter than the two hubs of every line shaft \(2 H = 156 mm\)"):
+    with pytest.raises(CalcError,
+                       match=r"shaft_distance: 100 mm is shorter than the two hubs of every line shaft \(2 H = 156 "
+                             r"mm\)"):
         select_coupling(of_type("line-shaft"), shaft_distance=Q_(100, "mm"), **EXAMPLE)
 
 
@@ -284,7 +294,8 @@ def test_disengagement_torque_below_normal_operation_slips():
 
 
 def test_disengagement_torque_is_for_safety_couplings_only():
-    with pytest.raises(CalcError, match="disengagement_torque: a disengagement torque T_A .* is for safety couplings only"):
+    with pytest.raises(CalcError,
+                       match="disengagement_torque: a disengagement torque T_A .* is for safety couplings only"):
         select_coupling(of_type("bellows"), disengagement_torque=Q_(25, "N*m"), **EXAMPLE)
     with pytest.raises(CalcError, match="disengagement_torque: safety couplings need a disengagement torque"):
         select_coupling(of_type("safety"), **EXAMPLE)
@@ -331,7 +342,8 @@ def test_resonance_fails_when_the_drive_excites_too_high():
     # AKN paper): J_A = 4.2 + 0.55 = 4.75, J_L = 15.93 + 0.55 = 16.48 kg·cm²; f_e = √(35 000 · (4.75 +
     # 16.48) / (4.75 · 16.48) · 10⁴) / 2π = √(9.4925·10⁷) / 2π = 1550.6 Hz >= 1400 Hz: it passes.
     s = select_coupling(of_type("bellows"), **{**EXAMPLE, "excitation_frequency": Q_(700, "Hz")})
-    assert "2 f_er <= f_e: required 1400 Hz > rated 1316 Hz, 6.35 % over" in s.reasons(s.catalog.index("AKD-30", "part"))
+    reasons = s.reasons(s.catalog.index("AKD-30", "part"))
+    assert "2 f_er <= f_e: required 1400 Hz > rated 1316 Hz, 6.35 % over" in reasons
     assert s.f_e[s.catalog.index("AKN-30", "part")].m_as("Hz") == pytest.approx(1550.6, abs=0.1)
     assert s.selected == "AKN-30"
 
@@ -340,7 +352,9 @@ def test_missing_catalog_figures_fail_with_the_reason():
     s = select_coupling(of_type("elastomer"), temperature=Q_(20, "degC"), **{**EXAMPLE, "accel_torque": Q_(1, "N*m")})
     assert s.selected is None
     reasons = s.reasons(0)
-    assert "2 f_er <= f_e: not checked, f_e needs the coupling's torsional stiffness C_T, which the catalog leaves empty" in reasons
+    assert (
+        "2 f_er <= f_e: not checked, f_e needs the coupling's torsional stiffness C_T, which the catalog leaves empty"
+    ) in reasons
     assert "d_1min <= D_1: not checked, the catalog gives no bore range for hub 1" in reasons
 
 
@@ -361,7 +375,8 @@ def test_selection_is_vectorized_over_the_catalog():
     for row in range(n):
         if not np.isnan(s.f_e[row].magnitude):
             j = s.catalog["J"][row]
-            scalar = f_e(C_T=s.catalog["C_T"][row], J_A=J_A(J_drive=EXAMPLE["drive_inertia"], J_K=j), J_L=J_L(J_load=EXAMPLE["load_inertia"], J_K=j))
+            scalar = f_e(C_T=s.catalog["C_T"][row], J_A=J_A(J_drive=EXAMPLE["drive_inertia"], J_K=j),
+                         J_L=J_L(J_load=EXAMPLE["load_inertia"], J_K=j))
             assert s.f_e[row].m_as("Hz") == pytest.approx(scalar.m_as("Hz"))
 
 
@@ -427,9 +442,12 @@ def test_catalog_rows_say_their_source_and_safety_rows_are_illustrative():
 @pytest.mark.parametrize(
     "edit, fragment",
     [
-        (lambda s: s.replace("AKD-18,AKD,18,bellows", "AKD-18,AKD,18,rubber"), "row 2 (AKD-18), column type: expected one of bellows"),
-        (lambda s: s.replace("safety,22.5,,6000,,0.9,6000,8,22,8,22,6,15", "safety,22.5,,6000,,0.9,6000,8,22,8,22,,15"), "row 11 (SKB-15), column T_Amin: a safety coupling needs a value"),
-        (lambda s: s.replace("8,22,8,22,6,15,", "8,22,8,22,16,15,"), "row 11 (SKB-15), column T_Amax: impossible value, expected T_Amax >= T_Amin"),
+        (lambda s: s.replace("AKD-18,AKD,18,bellows", "AKD-18,AKD,18,rubber"),
+         "row 2 (AKD-18), column type: expected one of bellows"),
+        (lambda s: s.replace("safety,22.5,,6000,,0.9,6000,8,22,8,22,6,15", "safety,22.5,,6000,,0.9,6000,8,22,8,22,,15"),
+         "row 11 (SKB-15), column T_Amin: a safety coupling needs a value"),
+        (lambda s: s.replace("8,22,8,22,6,15,", "8,22,8,22,16,15,"),
+         "row 11 (SKB-15), column T_Amax: impossible value, expected T_Amax >= T_Amin"),
         (lambda s: s.replace("C_T [N*m/rad]", "C_T [N*m]"), "column C_T: expected a unit of stiffness"),
     ],
 )
@@ -460,7 +478,8 @@ def test_load_inertia_seen_through_the_gearbox():
     # E8, hand calculation for the example: 1500 kg·cm² / 10² + 0.93 kg·cm² = 15.93 kg·cm².
     from calc.domain.coupling import J_load_at_input
 
-    assert J_load_at_input(J_L=Q_(1500, "kg*cm**2"), i=10, J_1=Q_(0.93, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(15.93)
+    assert J_load_at_input(J_L=Q_(1500, "kg*cm**2"), i=10,
+                           J_1=Q_(0.93, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(15.93)
 
 
 def test_candidates_frame_lists_the_ranked_candidates():

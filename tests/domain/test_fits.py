@@ -132,7 +132,8 @@ def test_basic_shaft_and_hole_touch_the_nominal_size(size, grade):
 def test_bores_as_the_source_writes_them(text, limits, keyway_mm):
     bore = parse_bore(text)
     assert bore.limits_text() == limits
-    assert (None if bore.keyway is None else bore.keyway.m_as("mm")) == (None if keyway_mm is None else pytest.approx(keyway_mm))
+    assert (None if bore.keyway is None else bore.keyway.m_as("mm")) == (None if keyway_mm is None
+                                                                         else pytest.approx(keyway_mm))
 
 
 def test_order_text_keeps_the_sources_notation():
@@ -166,7 +167,8 @@ def test_metric_and_inch_bores_are_the_same_size(size):
         ('1.00" +.001/+.001"', "leave no tolerance"),
         ("__import__('os')", "expected a shaft size with its tolerance such as"),
         (14, "expected a shaft size with its tolerance as text"),
-        ('1.00" +0/-.0005", x 0" keyway', "expected a keyway width above zero, found '1.00\" +0/-.0005\", x 0\" keyway'"),
+        ('1.00" +0/-.0005", x 0" keyway',
+         "expected a keyway width above zero, found '1.00\" +0/-.0005\", x 0\" keyway'"),
     ],
 )
 def test_bad_bores_name_the_key(text, fragment):
@@ -180,11 +182,16 @@ def test_a_malformed_tolerance_class_is_named(cls):
     # A class is a letter or two and a grade (k6, H7, js9); the grade first is no class.
     with pytest.raises(CalcError) as err:
         limit_deviations(Q_(14, "mm"), cls, "coupling.shaft_1")
-    assert str(err.value) == f"coupling.shaft_1: expected an ISO 286 tolerance class such as 'k6' or 'H7', found {cls!r}"
+    assert str(err.value) == (
+        f"coupling.shaft_1: expected an ISO 286 tolerance class such as 'k6' or 'H7', found {cls!r}"
+    )
 
 
 def test_a_fraction_over_zero_is_an_input_error():
     # An inch keyway of 1/0" was a ZeroDivisionError; it is a one-line error naming the key.
     with pytest.raises(CalcError) as err:
         parse_bore('1.000" +0/-.0005", x 1/0" keyway', "coupling.shaft_1")
-    assert str(err.value) == "coupling.shaft_1: expected a fraction with a denominator above zero, found '1/0' in '1.000\" +0/-.0005\", x 1/0\" keyway'"
+    assert str(err.value) == (
+        "coupling.shaft_1: expected a fraction with a denominator above zero, found '1/0' in '1.000\" +0/-.0005\", x "
+        "1/0\" keyway'"
+    )

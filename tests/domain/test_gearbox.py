@@ -23,7 +23,8 @@ def catalog():
 
 @pytest.mark.parametrize(
     "zh, fs",
-    [(0, 1.0), (999.9, 1.0), (1000, 1.1), (1499, 1.1), (1500, 1.3), (1999, 1.3), (2000, 1.6), (2999, 1.6), (3000, 2.0), (10000, 2.0)],
+    [(0, 1.0), (999.9, 1.0), (1000, 1.1), (1499, 1.1), (1500, 1.3), (1999, 1.3), (2000, 1.6), (2999, 1.6), (3000, 2.0),
+     (10000, 2.0)],
 )
 def test_shock_factor_table_with_e4_boundaries(zh, fs):
     # E4: the higher factor applies at each boundary 1000, 1500, 2000, 3000.
@@ -70,7 +71,8 @@ def test_example_s5_selection_by_hand(catalog):
     # A row without J_1 has no ratio rather than a wrong one.
     no_j1 = rows.rows([rows.index("NPT035-10", "part")])
     no_j1.values = dict(no_j1.values, J_1=Q_([np.nan], "kg*cm**2"))
-    assert select_gearbox(example_profile(), no_j1, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"), Q_(1500, "kg*cm**2")).candidates()[0].inertia_ratio is None
+    assert select_gearbox(example_profile(), no_j1, Q_(12, "N*m"), Q_(4.2, "kg*cm**2"),
+                          Q_(1500, "kg*cm**2")).candidates()[0].inertia_ratio is None
 
 
 def s1_profile():
@@ -135,7 +137,8 @@ def test_formulas_by_hand():
 @settings(max_examples=60, deadline=None)
 @given(st.floats(0.5, 50), st.floats(1.5, 100))
 def test_inertia_ratio_reflects_with_i_squared(J_L, i):
-    a = inertia_ratio(J_1=Q_(0, "kg*cm**2") + Q_(1e-12, "kg*cm**2"), J_L=Q_(J_L, "kg*cm**2"), i=Q_(i, ""), J_motor=Q_(1, "kg*cm**2"))
+    a = inertia_ratio(J_1=Q_(0, "kg*cm**2") + Q_(1e-12, "kg*cm**2"), J_L=Q_(J_L, "kg*cm**2"), i=Q_(i, ""),
+                      J_motor=Q_(1, "kg*cm**2"))
     b = inertia_ratio(J_1=Q_(1e-12, "kg*cm**2"), J_L=Q_(J_L, "kg*cm**2"), i=Q_(2 * i, ""), J_motor=Q_(1, "kg*cm**2"))
     assert a.m_as("") == pytest.approx(4 * b.m_as(""), rel=1e-6)
 
@@ -147,7 +150,8 @@ def test_vectorized_selection_equals_part_by_part(catalog):
     for k in range(len(rows)):
         alone = select_gearbox(example_profile(), rows.rows([k]), Q_(12, "N*m")).candidates()[0]
         assert alone.passes == together[alone.part].passes
-        assert [c.utilization for c in alone.checks] == pytest.approx([c.utilization for c in together[alone.part].checks])
+        assert [c.utilization
+                for c in alone.checks] == pytest.approx([c.utilization for c in together[alone.part].checks])
 
 
 def test_rank_puts_published_rows_before_illustrative_ones():
@@ -171,7 +175,8 @@ def test_rank_rule():
 @settings(max_examples=200, deadline=None)
 @given(
     rows=st.lists(
-        st.tuples(st.booleans(), st.sampled_from([10.0, 20.0]), st.sampled_from([0.5, 0.9, 1.2, np.nan]), st.booleans()),
+        st.tuples(st.booleans(), st.sampled_from([10.0, 20.0]), st.sampled_from([0.5, 0.9, 1.2, np.nan]),
+                  st.booleans()),
         min_size=1,
         max_size=30,
     ),
@@ -183,7 +188,8 @@ def test_rank_breaks_ties_by_part_name_as_a_full_sort_does(rows, seed):
     passes, size, worst, illustrative = (np.array(c) for c in zip(*rows))
     parts = np.array([f"P{k:03d}" for k in np.random.default_rng(seed).permutation(len(rows))], dtype=object)
     passes, illustrative = passes.astype(bool), illustrative.astype(bool)
-    full = np.lexsort((parts.astype(str), np.where(np.isnan(worst), np.inf, worst), np.where(passes, size, 0.0), passes & illustrative, ~passes))
+    full = np.lexsort((parts.astype(str), np.where(np.isnan(worst), np.inf, worst), np.where(passes, size, 0.0),
+                       passes & illustrative, ~passes))
     assert list(rank(passes, size, worst, parts, later=illustrative)) == list(full)
 
 
@@ -203,4 +209,7 @@ def test_negative_cycles_per_hour_are_an_error(zh, shown):
     # A cycle count per hour is zero or more; below zero the table of E4 has no row.
     with pytest.raises(CalcError) as err:
         shock_factor(Q_(zh, "1/hour"))
-    assert str(err.value) == f"cycles_per_hour: expected Z_h >= 0 1/h (the source's shock-factor table, S5 calculation 1, read with errata E4), found {shown}"
+    assert str(err.value) == (
+        "cycles_per_hour: expected Z_h >= 0 1/h (the source's shock-factor table, S5 calculation 1, read with errata "
+        f"E4), found {shown}"
+    )

@@ -27,10 +27,13 @@ TP010 = LoopModel(Q_(23, "N*m/arcmin"), Q_(3, "arcmin"), Q_(81, "N*m"))
 
 def test_source_definitions_by_hand():
     # Source, "Torsional Stiffness": applied torque / deflection: 40.5 N·m over 1.761 arcmin is 23 N·m/arcmin.
-    assert stiffness_from_slope(Delta_T=Q_(40.5, "N*m"), Delta_phi=Q_(1.76087, "arcmin")).m_as("N*m/arcmin") == pytest.approx(23.0, rel=1e-5)
+    assert stiffness_from_slope(Delta_T=Q_(40.5, "N*m"),
+                                Delta_phi=Q_(1.76087, "arcmin")).m_as("N*m/arcmin") == pytest.approx(23.0, rel=1e-5)
     # Source, "Backlash" and "Lost Motion": maximum minus minimum deflection.
-    assert backlash_from_loop(phi_max_0=Q_(1.5, "arcmin"), phi_min_0=Q_(-1.5, "arcmin")).m_as("arcmin") == pytest.approx(3.0)
-    assert lost_motion_from_loop(phi_max_3=Q_(1.77, "arcmin"), phi_min_3=Q_(-1.77, "arcmin")).m_as("arcmin") == pytest.approx(3.54)
+    assert backlash_from_loop(phi_max_0=Q_(1.5, "arcmin"),
+                              phi_min_0=Q_(-1.5, "arcmin")).m_as("arcmin") == pytest.approx(3.0)
+    assert lost_motion_from_loop(phi_max_3=Q_(1.77, "arcmin"),
+                                 phi_min_3=Q_(-1.77, "arcmin")).m_as("arcmin") == pytest.approx(3.54)
 
 
 def test_model_is_built_on_the_catalog_figures():
@@ -69,7 +72,8 @@ def test_noisy_uneven_loop_is_analysed_back_to_its_parameters(twist_at_nominal, 
     backlash = backlash_over_twist * twist_at_nominal
     model = LoopModel(Q_(stiffness, "N*m/arcmin"), Q_(backlash, "arcmin"), Q_(nominal, "N*m"))
     # A rig's noise: 0.1 % of T_N on the torque, 0.5 % of the wind-up at T_N on the twist.
-    loop = model.loop(3000, noise_torque=Q_(0.001 * nominal, "N*m"), noise_twist=Q_(0.005 * twist_at_nominal, "arcmin"), seed=seed)
+    loop = model.loop(3000, noise_torque=Q_(0.001 * nominal, "N*m"), noise_twist=Q_(0.005 * twist_at_nominal, "arcmin"),
+                      seed=seed)
     a = analyze_loop(loop, Q_(nominal, "N*m"))
     for c in (a.stiffness_positive, a.stiffness_negative):
         assert c.m_as("N*m/arcmin") == pytest.approx(stiffness, rel=0.03)
@@ -132,13 +136,17 @@ def test_loop_file_in_other_units(tmp_path):
 def test_bad_loops_are_one_clear_error(tmp_path):
     t = np.linspace(0, 81, 100)
     one_way = read_loop(write(tmp_path, rows(t, t / 23)))
-    with pytest.raises(CalcError, match=r"loop.csv: the loop is loaded in one direction only \(torque from 0 to 81 N·m\)"):
+    with pytest.raises(CalcError,
+                       match=r"loop.csv: the loop is loaded in one direction only \(torque from 0 to 81 N·m\)"):
         analyze_loop(one_way, Q_(81, "N*m"))
     with pytest.raises(CalcError, match="expected a loop of at least 20 samples, found 5"):
-        analyze_loop(Loop(Q_(np.array([0, 80, -80, 80, 0.0]), "N*m"), Q_(np.zeros(5), "arcmin"), source="short"), Q_(81, "N*m"))
+        analyze_loop(Loop(Q_(np.array([0, 80, -80, 80, 0.0]), "N*m"), Q_(np.zeros(5), "arcmin"), source="short"),
+                     Q_(81, "N*m"))
     # Loaded only to 40 % of the nominal torque: no points in the 50 % to 100 % band.
     low = TP010.loop(1000)
-    with pytest.raises(CalcError, match=r"expected at least 3 samples loading in the positive direction between 50 % and 100 % of the nominal torque \(100 to 200 N·m\), found 0"):
+    with pytest.raises(CalcError,
+                       match=r"expected at least 3 samples loading in the positive direction between 50 % and 100 % of "
+                             r"the nominal torque \(100 to 200 N·m\), found 0"):
         analyze_loop(low, Q_(200, "N*m"))
     with pytest.raises(CalcError, match="nominal torque: expected a torque"):
         analyze_loop(low, Q_(81, "N*m/arcmin"))
@@ -156,7 +164,8 @@ def test_bad_loops_are_one_clear_error(tmp_path):
         ("0,0\n,1\n", None, "loop.csv, row 4, column torque: expected a number, found an empty cell"),
         ("0,0\n\n1,1\n", None, "loop.csv, row 4, column torque: expected a number, found an empty cell"),
         ("0,0\n1,1,2\n", None, "rows must have the header's 2 cells (row 4 has 3)"),
-        ("0,0\n", "torque [N*m],twist [1]", "column twist: expected a unit of angle such as \"3 arcmin\", found '1', which is a bare number"),
+        ("0,0\n", "torque [N*m],twist [1]",
+         "column twist: expected a unit of angle such as \"3 arcmin\", found '1', which is a bare number"),
         ("0,0\n", "torque [N*m/arcmin],twist [arcmin]", "column torque: expected a unit of torque"),
         ("0,0\n", "torque [N*m],angle [arcmin]", "row 2: expected a column 'twist [unit]'"),
         ("", None, "expected rows of data after the header (row 2), found none"),
@@ -221,7 +230,8 @@ def test_bad_recordings_and_nominal_torques_are_one_clear_error():
     with pytest.raises(CalcError) as err:
         analyze_loop(Loop(loop.torque, -loop.twist, source="rig.csv"), Q_(81, "N*m"))
     assert str(err.value) == (
-        "rig.csv: the twist does not rise with the torque between 50 % and 100 % of the nominal torque in the positive direction"
+        "rig.csv: the twist does not rise with the torque between 50 % and 100 % of the nominal torque in the positive "
+        "direction"
     )
 
 
@@ -232,4 +242,6 @@ def test_a_part_without_catalog_figures_has_no_loop_model(tmp_path, column, edit
     path.write_text((ROOT / "catalogs" / "gearboxes.csv").read_text().replace("7500,97,3,23,0.4,", edit))
     with pytest.raises(CalcError) as err:
         model_for_part("TP010-10", catalog=str(path))
-    assert str(err.value) == f"{path}, row 11 (TP010-10), column {column}: expected a value for the loop model, found an empty cell"
+    assert str(err.value) == (
+        f"{path}, row 11 (TP010-10), column {column}: expected a value for the loop model, found an empty cell"
+    )

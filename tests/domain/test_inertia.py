@@ -37,7 +37,8 @@ def test_a_table_of_a_disc_and_a_fixture_by_hand():
     assert disc.inertia.m_as("kg*cm**2") == pytest.approx(1017.876, rel=1e-6)
     # A 2.5 kg fixture of 100 × 60 mm at 150 mm: 2.5 · (0.1² + 0.06²) / 12 + 2.5 · 0.15² = 0.0028333 + 0.05625
     # = 0.0590833 kg·m² = 590.833 kg·cm².
-    fixture = Body("plate", {"a": Q_(100, "mm"), "b": Q_(60, "mm"), "L": Q_(40, "mm")}, mass=Q_(2.5, "kg"), offset=Q_(150, "mm"))
+    fixture = Body("plate", {"a": Q_(100, "mm"), "b": Q_(60, "mm"), "L": Q_(40, "mm")}, mass=Q_(2.5, "kg"),
+                   offset=Q_(150, "mm"))
     assert fixture.inertia.m_as("kg*cm**2") == pytest.approx(590.8333, rel=1e-6)
 
 
@@ -70,14 +71,18 @@ def test_the_shapes_laws(m, D, ratio, e):
 
 
 @pytest.mark.parametrize("body, message", [
-    ('shape = "sphere"\ndiameter = "10 mm"\nmass = "1 kg"', "mechanism.body[1].shape: expected one of cylinder, hollow-cylinder, plate, found 'sphere'"),
-    ('shape = "cylinder"\ndiameter = "100 mm"\nlength = "10 mm"', "mechanism.body[1].mass: give the body's mass or its material's density, one of them, found neither"),
+    ('shape = "sphere"\ndiameter = "10 mm"\nmass = "1 kg"',
+     "mechanism.body[1].shape: expected one of cylinder, hollow-cylinder, plate, found 'sphere'"),
+    ('shape = "cylinder"\ndiameter = "100 mm"\nlength = "10 mm"',
+     "mechanism.body[1].mass: give the body's mass or its material's density, one of them, found neither"),
     ('shape = "cylinder"\ndiameter = "100 mm"\nlength = "10 mm"\nmass = "1 kg"\ndensity = "7850 kg/m**3"',
      "mechanism.body[1].mass: give the body's mass or its material's density, one of them, found both"),
-    ('shape = "cylinder"\ndiameter = "100 mm"\nlength = "10 mm"\nwidth = "5 mm"\nmass = "1 kg"', "mechanism.body[1].width: a cylinder takes diameter, length, not width"),
+    ('shape = "cylinder"\ndiameter = "100 mm"\nlength = "10 mm"\nwidth = "5 mm"\nmass = "1 kg"',
+     "mechanism.body[1].width: a cylinder takes diameter, length, not width"),
     ('shape = "hollow-cylinder"\ndiameter = "100 mm"\ninner_diameter = "120 mm"\nlength = "10 mm"\nmass = "1 kg"',
      "mechanism.body[1].inner_diameter: expected an inner diameter below the outer '100 mm', found '120 mm'"),
-    ('shape = "plate"\nwidth = "100 mm"\ndepth = "50 mm"\nlength = "10 mm"\ndensity = "7850 kg"', "mechanism.body[1].density: expected a density"),
+    ('shape = "plate"\nwidth = "100 mm"\ndepth = "50 mm"\nlength = "10 mm"\ndensity = "7850 kg"',
+     "mechanism.body[1].density: expected a density"),
 ])
 def test_bad_bodies_get_one_sentence(write_case, capsys, body, message):
     from calc.__main__ import main

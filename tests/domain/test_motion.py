@@ -27,7 +27,8 @@ def test_peak_speed_and_acceleration_of_a_trapezoid_by_hand():
 
 def test_an_s_curve_reaches_its_speed_and_distance_by_hand():
     # 1 rad in 1 s, ramps 0.4 s with 0.1 s of jerk: ω = 1 / (1 − 0.4) = 5/3 rad/s, α = (5/3) / 0.3 = 50/9 rad/s²,
-    # jerk = α / 0.1 = 500/9 rad/s³. The speed after the ramp: two jerk ramps of α·0.1/2 and α·0.2 between = α·0.3 = 5/3.
+    # jerk = α / 0.1 = 500/9 rad/s³. The speed after the ramp: two jerk ramps of α·0.1/2 and α·0.2 between = α·0.3 =
+    # 5/3.
     move = Move(1.0, 1.0, 0.4, 0.4, 0.1)
     s = sample([move])
     assert s.acceleration.max() == pytest.approx(50 / 9, rel=1e-12)
@@ -49,9 +50,11 @@ def test_transmission_radius_and_reflected_inertia_by_hand():
     # r = 20 mm / 2π = 3.183099 mm; J_L = 50 kg · (3.183099e-3 m)² + 1 kg·cm² = 5.066059 + 1 = 6.066059 kg·cm².
     r = r_lead(p=Q_(20, "mm"))
     assert r.m_as("mm") == pytest.approx(3.183099, rel=1e-6)
-    assert J_L_linear(m=Q_(50, "kg"), m_c=Q_(0, "kg"), r=r, J_M=Q_(1, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(6.066059, rel=1e-6)
+    assert J_L_linear(m=Q_(50, "kg"), m_c=Q_(0, "kg"), r=r,
+                      J_M=Q_(1, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(6.066059, rel=1e-6)
     # A 30 kg counterweight travels as far: J_L = 80 kg · r² + 1 kg·cm² = 8.105695 + 1 = 9.105695 kg·cm².
-    assert J_L_linear(m=Q_(50, "kg"), m_c=Q_(30, "kg"), r=r, J_M=Q_(1, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(9.105695, rel=1e-6)
+    assert J_L_linear(m=Q_(50, "kg"), m_c=Q_(30, "kg"), r=r,
+                      J_M=Q_(1, "kg*cm**2")).m_as("kg*cm**2") == pytest.approx(9.105695, rel=1e-6)
     assert r_diameter(d=Q_(50, "mm")).m_as("mm") == 25.0
     # 100 mm of travel is 100 / 3.183099 = 31.4159 rad = 1800° of the screw.
     assert phi_2(s=Q_(100, "mm"), r=r).m_as("deg") == pytest.approx(1800.0, rel=1e-12)
@@ -61,13 +64,16 @@ def test_the_torque_formulas_by_hand():
     # Table: 0.15 kg·m² · 40 rad/s² − (2 + 3) N·m moving back = 6 − 5 = 1 N·m.
     t = T_2_rotary(J_L=Q_(1500, "kg*cm**2"), alpha_2=Q_(40, "rad/s**2"), s_v=-1, T_f=Q_(2, "N*m"), T_p=Q_(3, "N*m"))
     assert t.m_as("N*m") == pytest.approx(1.0, rel=1e-12)
-    # Screw: 100 N · 5 mm / 0.8 = 0.625 N·m driving, 100 N · 5 mm · 0.8 = 0.4 N·m driven back; + 1e-4 kg·m² · 1000 rad/s² = 0.1.
-    common = dict(F=Q_(100, "N"), r=Q_(5, "mm"), eta=0.8, J_M=Q_(1, "kg*cm**2"), alpha_2=Q_(1000, "rad/s**2"), s_v=1, T_d=Q_(0, "N*m"))
+    # Screw: 100 N · 5 mm / 0.8 = 0.625 N·m driving, 100 N · 5 mm · 0.8 = 0.4 N·m driven back; + 1e-4 kg·m² · 1000
+    # rad/s² = 0.1.
+    common = dict(F=Q_(100, "N"), r=Q_(5, "mm"), eta=0.8, J_M=Q_(1, "kg*cm**2"), alpha_2=Q_(1000, "rad/s**2"), s_v=1,
+                  T_d=Q_(0, "N*m"))
     assert T_2_linear(d_P=1, **common).m_as("N*m") == pytest.approx(0.725, rel=1e-12)
     assert T_2_linear(d_P=-1, **common).m_as("N*m") == pytest.approx(0.5, rel=1e-12)
     # A drag torque of 0.2 N·m against the motion, outside the efficiency: + 0.2 moving forwards, − 0.2 back.
     assert T_2_linear(d_P=1, **{**common, "T_d": Q_(0.2, "N*m")}).m_as("N*m") == pytest.approx(0.925, rel=1e-12)
-    assert T_2_linear(d_P=-1, **{**common, "s_v": -1, "T_d": Q_(0.2, "N*m")}).m_as("N*m") == pytest.approx(0.3, rel=1e-12)
+    assert T_2_linear(d_P=-1,
+                      **{**common, "s_v": -1, "T_d": Q_(0.2, "N*m")}).m_as("N*m") == pytest.approx(0.3, rel=1e-12)
 
 
 def test_a_drag_torque_and_a_counterweight_on_a_vertical_screw_by_hand():
@@ -77,8 +83,10 @@ def test_a_drag_torque_and_a_counterweight_on_a_vertical_screw_by_hand():
     # pulls back through the screw, 49.033 · 1.591549e-3 · 0.9 = 0.070235 N·m, and no drag.
     # Accelerating up at 100 rad/s² of the screw (a = 0.159155 m/s²): F = 35 kg · 0.159155 + 49.033
     # = 54.603 N; T_2 = 54.603 · 1.591549e-3 / 0.9 + 2e-4 · 100 + 0.3 = 0.096560 + 0.02 + 0.3 = 0.416560 N·m.
-    screw = Mechanism("ball-screw", mass=Q_(20, "kg"), friction_coefficient=Q_(0, ""), incline=Q_(90, "deg"), force=Q_(0, "N"),
-                      eta=Q_(0.9, ""), lead=Q_(10, "mm"), own_inertia=Q_(2, "kg*cm**2"), counterweight=Q_(15, "kg"), drag_torque=Q_(0.3, "N*m"))
+    screw = Mechanism("ball-screw", mass=Q_(20, "kg"), friction_coefficient=Q_(0, ""), incline=Q_(90, "deg"),
+                      force=Q_(0, "N"),
+                      eta=Q_(0.9, ""), lead=Q_(10, "mm"), own_inertia=Q_(2, "kg*cm**2"), counterweight=Q_(15, "kg"),
+                      drag_torque=Q_(0.3, "N*m"))
     T = screw.torque(np.array([10.0, 0.0, 10.0]), np.array([0.0, 0.0, 100.0]))
     assert T == pytest.approx([0.386709, 0.070235, 0.416561], rel=1e-5)
     # J_L = 35 kg · r² + 2 kg·cm² = 35 · 2.533030e-6 m² = 0.886560 + 2 = 2.886560 kg·cm².
@@ -98,30 +106,38 @@ def test_a_vertical_ball_screw_up_down_and_held_by_hand():
     down = Move(-up.distance, 0.5, 0.1, 0.1)
     s = sample([up, down, Move(0.0, 0.5)])
     g = segments(s, m.torque(s.speed, s.acceleration))
-    # v = 0.1 m / (0.5 − 0.1) s = 0.25 m/s, a = 2.5 m/s², α_2 = 2.5 / r = 1570.796 rad/s²; J_M·α_2 = 2e-4 · 1570.796 = 0.314159 N·m.
+    # v = 0.1 m / (0.5 − 0.1) s = 0.25 m/s, a = 2.5 m/s², α_2 = 2.5 / r = 1570.796 rad/s²; J_M·α_2 = 2e-4 · 1570.796 =
+    # 0.314159 N·m.
     # Gravity 20 · 9.80665 = 196.133 N (cos 90° = 0: no guide friction on a vertical axis).
     Ja = 2e-4 * 2.5 / r
-    up_accel = (20 * 2.5 + 196.133) * r / 0.9 + Ja      # driving: 246.133 N · r / 0.9 + 0.314159 = 0.435259 + 0.314159 = 0.749418 N·m
+    # driving: 246.133 N · r / 0.9 + 0.314159 = 0.435259 + 0.314159 = 0.749418 N·m
+    up_accel = (20 * 2.5 + 196.133) * r / 0.9 + Ja
     up_const = 196.133 * r / 0.9                          # 0.346839 N·m
-    up_decel = (196.133 - 50) * r / 0.9 - Ja             # still driving (F = 146.133 N up): 0.258420 − 0.314159 = −0.055739 N·m
+    # still driving (F = 146.133 N up): 0.258420 − 0.314159 = −0.055739 N·m
+    up_decel = (196.133 - 50) * r / 0.9 - Ja
     down_accel = (196.133 - 50) * r * 0.9 - Ja           # the load drives back: 0.209320 − 0.314159 = −0.104839 N·m
     down_const = 196.133 * r * 0.9                        # 0.280940 N·m
-    down_decel = (196.133 + 50) * r * 0.9 + Ja           # braking a falling load, still driven back: 0.352560 + 0.314159 = 0.666719
+    # braking a falling load, still driven back: 0.352560 + 0.314159 = 0.666719
+    down_decel = (196.133 + 50) * r * 0.9 + Ja
     held = 196.133 * r * 0.9                              # at rest the load pulls back through the screw: 0.280940 N·m
-    assert g.torque.tolist() == pytest.approx([up_accel, up_const, up_decel, down_accel, down_const, down_decel, held], rel=1e-5)
+    assert g.torque.tolist() == pytest.approx([up_accel, up_const, up_decel, down_accel, down_const, down_decel, held],
+                                              rel=1e-5)
     assert up_accel == pytest.approx(0.749418, rel=1e-6) and down_decel == pytest.approx(0.666719, rel=1e-6)
     braked = Mechanism(**{**VERTICAL_SCREW.__dict__, "holding_brake": True})
     assert segments(s, braked.torque(s.speed, s.acceleration)).torque[-1] == 0.0
 
 
 def test_a_belt_axis_with_friction_and_process_force_by_hand():
-    belt = Mechanism("belt", mass=Q_(10, "kg"), friction_coefficient=Q_(0.1, ""), incline=Q_(0, "deg"), force=Q_(20, "N"),
+    belt = Mechanism("belt", mass=Q_(10, "kg"), friction_coefficient=Q_(0.1, ""), incline=Q_(0, "deg"),
+                     force=Q_(20, "N"),
                      eta=Q_(0.95, ""), diameter=Q_(50, "mm"), own_inertia=Q_(5, "kg*cm**2"))
     s = sample([Move(belt.to_output(Q_(500, "mm")).m_as("rad"), 1.0, 0.25, 0.25)])
     g = segments(s, belt.torque(s.speed, s.acceleration))
     # v = 0.5 / 0.75 = 0.666667 m/s, a = 2.666667 m/s², r = 25 mm, α_2 = 106.6667 rad/s².
-    # Accel: F = 10 · 2.666667 + 0.1 · 10 · 9.80665 + 20 = 56.473317 N; T = 56.473317 · 0.025 / 0.95 + 5e-4 · 106.6667 = 1.539474 N·m.
-    # Const: F = 29.80665 N, T = 0.784386 N·m. Decel: F = 3.139983 N (still driving), T = 0.082631 − 0.053333 = 0.029297 N·m.
+    # Accel: F = 10 · 2.666667 + 0.1 · 10 · 9.80665 + 20 = 56.473317 N; T = 56.473317 · 0.025 / 0.95 + 5e-4 · 106.6667 =
+    # 1.539474 N·m.
+    # Const: F = 29.80665 N, T = 0.784386 N·m. Decel: F = 3.139983 N (still driving), T = 0.082631 − 0.053333 = 0.029297
+    # N·m.
     assert g.torque.tolist() == pytest.approx([1.539474, 0.784386, 0.029297], abs=2e-6)
     assert belt.load_inertia.m_as("kg*cm**2") == pytest.approx(10 * 2.5**2 + 5)  # 62.5 + 5 = 67.5 kg·cm²
 
@@ -143,7 +159,8 @@ shares = st.floats(0.05, 0.5)
 
 
 def _table_torques(moves, friction=2.0):
-    table = Mechanism("rotary", inertia=Q_(1500, "kg*cm**2"), friction_torque=Q_(friction, "N*m"), process_torque=Q_(0, "N*m"))
+    table = Mechanism("rotary", inertia=Q_(1500, "kg*cm**2"), friction_torque=Q_(friction, "N*m"),
+                      process_torque=Q_(0, "N*m"))
     s = sample(moves, samples=2000)
     return s, table.torque(s.speed, s.acceleration)
 
@@ -154,7 +171,8 @@ def test_a_trapezoids_sampled_and_segment_forms_agree(distance, time, accel, dec
     s, T = _table_torques([Move(distance, time, accel * time, decel * time), Move(0.0, dwell)])
     g = segments(s, T)
     moving = g.phase != PAUSE
-    by_segments = T_2m(n_2k=Q_(g.speed[moving], "rad/s"), t_k=Q_(g.duration[moving], "s"), T_2k=Q_(g.torque[moving], "N*m")).m_as("N*m")
+    by_segments = T_2m(n_2k=Q_(g.speed[moving], "rad/s"), t_k=Q_(g.duration[moving], "s"),
+                       T_2k=Q_(g.torque[moving], "N*m")).m_as("N*m")
     on = s.phase != PAUSE
     w = np.abs(s.speed[on]) * s.dt[on]
     integral = np.cbrt(np.sum(w * np.abs(T[on]) ** 3) / np.sum(w))
@@ -216,14 +234,18 @@ LB, INCH, LBF = 0.45359237, 0.0254, 4.4482216152605
 
 
 @settings(max_examples=25, deadline=None)
-@given(mass=st.floats(1, 500), lead=st.floats(2, 50), eta=st.floats(0.5, 1.0), mu=st.one_of(st.just(0.0), st.floats(0.01, 0.3)),
-       incline=st.integers(-90, 90), force=st.one_of(st.just(0.0), st.floats(1, 2000)), distance=st.floats(5, 1000), time=st.floats(0.2, 3), accel=shares)
-def test_the_same_axis_in_si_and_inch_pound_units_gives_the_same_torques(tmp_path_factory, mass, lead, eta, mu, incline, force, distance, time, accel):
+@given(mass=st.floats(1, 500), lead=st.floats(2, 50), eta=st.floats(0.5, 1.0),
+       mu=st.one_of(st.just(0.0), st.floats(0.01, 0.3)),
+       incline=st.integers(-90, 90), force=st.one_of(st.just(0.0), st.floats(1, 2000)), distance=st.floats(5, 1000),
+       time=st.floats(0.2, 3), accel=shares)
+def test_the_same_axis_in_si_and_inch_pound_units_gives_the_same_torques(tmp_path_factory, mass, lead, eta, mu, incline,
+                                                                         force, distance, time, accel):
     folder = tmp_path_factory.mktemp("axis")
     common = dict(eta=repr(eta), mu=repr(mu), incline=repr(incline), time=repr(time), accel=repr(accel * time))
     si = AXIS.format(mass=f"{mass!r} kg", lead=f"{lead!r} mm", screw_inertia="1.5 kg*cm**2", force=f"{force!r} N",
                      distance=f"{distance!r} mm", **common)
-    inch = AXIS.format(mass=f"{mass / LB!r} lb", lead=f"{lead / 25.4!r} in", screw_inertia=f"{1.5e-4 / (LB * INCH**2)!r} lb*in**2",
+    inch = AXIS.format(mass=f"{mass / LB!r} lb", lead=f"{lead / 25.4!r} in",
+                       screw_inertia=f"{1.5e-4 / (LB * INCH**2)!r} lb*in**2",
                        force=f"{force / LBF!r} lbf", distance=f"{distance / 25.4!r} in", **common)
     out = []
     for name, text in (("si.toml", si), ("inch.toml", inch)):
@@ -254,11 +276,13 @@ def test_the_steps_of_a_move_decelerating_slower_than_it_accelerates(tmp_path):
     # J_L·α: 18.48 N·m while accelerating, −9.24 N·m while decelerating.
     case = tmp_path / "table.toml"
     case.write_text('title = "table"\n[mechanism]\ntype = "rotary"\ninertia = "1 kg*m**2"\n'
-                    '[[move]]\ndistance = "90 deg"\ntime = "1 s"\naccel_time = "0.1 s"\ndecel_time = "0.2 s"\n[[move]]\ndwell = "1 s"\n')
+                    '[[move]]\ndistance = "90 deg"\ntime = "1 s"\naccel_time = "0.1 s"\ndecel_time = "0.2 '
+                    's"\n[[move]]\ndwell = "1 s"\n')
     steps = dict(evaluate(read_case(case)).sections["motion"].steps)
     omega = (np.pi / 2) / 0.85
     assert steps["Move 1: peak output speed"].result.m_as("rad/s") == pytest.approx(omega, rel=1e-12)
     assert steps["Move 1: peak output deceleration"].result.m_as("rad/s**2") == pytest.approx(omega / 0.2, rel=1e-12)
-    torque = {phase: step.result.m_as("N*m") for title, step in steps.items() for phase in ("acceleration", "deceleration")
+    torque = {phase: step.result.m_as("N*m") for title, step in steps.items()
+              for phase in ("acceleration", "deceleration")
               if title.startswith(f"Move 1, {phase}: output torque")}
     assert torque == pytest.approx({"acceleration": omega / 0.1, "deceleration": -omega / 0.2}, rel=1e-12)

@@ -82,7 +82,8 @@ def test_the_voltage_limit_by_hand():
     R, X, E, U = 0.61, 3 * rpm(6000) * 4.2e-3, 57 * 6 / math.sqrt(3), 600 / math.sqrt(6)
     by_hand = 0.88 * (math.sqrt(U**2 * (R**2 + X**2) - X**2 * E**2) - R * E) / (R**2 + X**2)
     assert by_hand == pytest.approx(14.47, abs=0.01)
-    T = T_V(U_DC=Q_(600, "V"), k_E=Q_(57, "V/krpm"), k_T=Q_(0.88, "N*m/A"), R_ph=Q_(0.61, "ohm"), L_ph=Q_(4.2, "mH"), poles=Q_(6, ""), n=Q_(6000, "rpm"))
+    T = T_V(U_DC=Q_(600, "V"), k_E=Q_(57, "V/krpm"), k_T=Q_(0.88, "N*m/A"), R_ph=Q_(0.61, "ohm"), L_ph=Q_(4.2, "mH"),
+            poles=Q_(6, ""), n=Q_(6000, "rpm"))
     assert T.m_as("N*m") == pytest.approx(by_hand, rel=1e-12)
     limit, forms = peak_limit(one("1FT7044-AK7"), np.array([rpm(6000), rpm(0)]), Q_(600, "V"))
     # At standstill the voltage allows more than M_max 23 N·m: M_max holds.
@@ -90,7 +91,8 @@ def test_the_voltage_limit_by_hand():
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.lists(st.floats(0, 10000), min_size=2, max_size=30), st.sampled_from(["SGM7J-02A", "HC52", "1FT7044-AK7", "SGMUH-10DA"]),
+@given(st.lists(st.floats(0, 10000), min_size=2, max_size=30),
+       st.sampled_from(["SGM7J-02A", "HC52", "1FT7044-AK7", "SGMUH-10DA"]),
        st.sampled_from([None, 400.0, 600.0]))
 def test_the_peak_characteristic_never_rises_with_speed(speeds, part, volts):
     n = np.sort(np.array([rpm(s) for s in speeds]))
@@ -122,7 +124,8 @@ def test_the_smallest_adequate_motor_is_the_lowest_rated_torque_then_the_lower_i
     ]
     lines = [header]
     for part, M_N, M_max, J in rows:
-        cell = {"part": part, "maker": "test", "M_N [N*m]": M_N, "M_max [N*m]": M_max, "n_N [rpm]": 3000, "n_max [rpm]": 6000,
+        cell = {"part": part, "maker": "test", "M_N [N*m]": M_N, "M_max [N*m]": M_max, "n_N [rpm]": 3000,
+                "n_max [rpm]": 6000,
                 "J [kg*cm**2]": J, "illustrative": "yes", "source": "a test row"}
         lines.append(",".join(str(cell.get(c, "")) for c in cols))
     path = tmp_path / "toy.csv"
@@ -131,7 +134,8 @@ def test_the_smallest_adequate_motor_is_the_lowest_rated_torque_then_the_lower_i
     # 2.5 N·m for 1 s, then 1 s at rest: RMS 2.5 / √2 = 1.77 N·m, within B's and C's M_N of 2 N·m.
     sel = select_motors(cat, toy_cycle(4, torque=2.5))
     assert [c.part for c in sel.candidates()] == ["C", "B", "D", "A"] and sel.selected == "C"
-    assert sel.candidates()[-1].reasons == ["|T_1| <= T_peak(n_1) at every sample: required 2.5 N·m > rated 2 N·m, 25 % over",
+    assert sel.candidates()[-1].reasons == ["|T_1| <= T_peak(n_1) at every sample: required 2.5 N·m > rated 2 N·m, 25 "
+                                            "% over",
                                             "T_1rms <= M_N: required 1.768 N·m > rated 1 N·m, 76.8 % over"]
 
 
@@ -176,10 +180,14 @@ def test_the_chosen_motor_is_what_the_gearbox_checks_with(write_case, capsys):
 
 
 @pytest.mark.parametrize("motor, message", [
-    ('peak_torque = "12 N*m"', "motor.peak_torque: a catalog motor's ratings come from its catalog row; give either motor.catalog / motor.part or the typed ratings, found both"),
+    ('peak_torque = "12 N*m"',
+     "motor.peak_torque: a catalog motor's ratings come from its catalog row; give either motor.catalog / motor.part "
+     "or the typed ratings, found both"),
     ('part = "SGM7J-99Z"', "motor.part: no part 'SGM7J-99Z' in catalog catalogs/motors.csv; it has SGM7J-A5A"),
     ('part = "AM8031-wCyz (230 V AC)"', "motor.part: AM8031-wCyz (230 V AC) is a partial row of catalogs/motors.csv"),
-    ('part = "SGM7J-02A"\ndc_link_voltage = "300 V"', "motor.dc_link_voltage: the voltage limit needs the electrical data of SGM7J-02A, but catalogs/motors.csv (row 5) gives no k_E, R_ph, L_ph, poles"),
+    ('part = "SGM7J-02A"\ndc_link_voltage = "300 V"',
+     "motor.dc_link_voltage: the voltage limit needs the electrical data of SGM7J-02A, but catalogs/motors.csv (row 5) "
+     "gives no k_E, R_ph, L_ph, poles"),
     ('max_inertia_ratio = 0', "motor.max_inertia_ratio: expected an inertia ratio above zero, found 0"),
 ])
 def test_bad_motor_input_gets_one_sentence(write_case, capsys, motor, message):
@@ -194,10 +202,12 @@ def test_bad_motor_input_gets_one_sentence(write_case, capsys, motor, message):
 def test_a_catalog_key_without_a_catalog_is_refused(write_case, capsys):
     from calc.__main__ import main
 
-    path = write_case('title = "t"\n[motor]\npeak_torque = "12 N*m"\nmax_inertia_ratio = 5\n[[profile]]\nphase = "const"\nduration = "1 s"\n'
+    path = write_case('title = "t"\n[motor]\npeak_torque = "12 N*m"\nmax_inertia_ratio = 5\n[[profile]]\nphase = '
+                      '"const"\nduration = "1 s"\n'
                       'speed = "100 rpm"\ntorque = "10 N*m"\n', "t.toml")
     assert main(["evaluate", str(path)]) == 2
-    assert "motor.max_inertia_ratio: a key of a catalog motor; give motor.catalog (or motor.part with it) as well" in capsys.readouterr().err
+    assert ("motor.max_inertia_ratio: a key of a catalog motor; give motor.catalog (or motor.part with it) as well"
+            in capsys.readouterr().err)
 
 
 def test_a_motor_row_with_peak_below_rated_is_refused(tmp_path):
@@ -217,7 +227,8 @@ def test_the_json_names_the_fixed_keys(write_case, capsys):
     path = write_case(DIRECT_DRIVE.format(motor="max_inertia_ratio = 5"), "dd.toml")
     main(["evaluate", str(path), "--json"])
     m = json.loads(capsys.readouterr().out)["motor"]
-    assert {"selected", "candidates", "mean_speed", "peak_torque_required", "rms_torque_required", "max_speed_required", "checks"} <= set(m)
+    assert {"selected", "candidates", "mean_speed", "peak_torque_required", "rms_torque_required", "max_speed_required",
+            "checks"} <= set(m)
     assert m["max_inertia_ratio"] == {"value": 5.0, "from": "motor.max_inertia_ratio"}
     # A limit of 5: SGM7J-02A's λ of 8.4 fails it; the smallest motor with a rotor of J_L / 5 or more passes.
     assert m["selected"] != "SGM7J-02A" and all(c["inertia_ratio"] <= 5 for c in m["candidates"] if c["passes"])
@@ -232,7 +243,10 @@ def test_a_motor_and_gearbox_that_do_not_settle_are_an_error(write_case, capsys,
     monkeypatch.setattr(motor, "ROUNDS", 1)
     path = write_case(DIRECT_DRIVE.format(motor=""), "dd.toml")
     assert main(["evaluate", str(path)]) == 2
-    assert "motor.catalog: the motor and the gearbox chosen in turn do not settle (SGM7J-02A); name the motor with motor.part" in capsys.readouterr().err
+    assert (
+        "motor.catalog: the motor and the gearbox chosen in turn do not settle (SGM7J-02A); name the motor with "
+        "motor.part"
+    ) in capsys.readouterr().err
 
 
 def test_the_shipped_direct_drive_chooses_its_motor_with_every_check_made():
@@ -242,7 +256,9 @@ def test_the_shipped_direct_drive_chooses_its_motor_with_every_check_made():
     results = evaluate(read_case(DERIVED_EXAMPLE.parent / "ball-screw-direct.toml"))
     m = results["motor"]
     assert m.part is None and m.selection.selected == "SGM7J-02A" and results.verdict.passes is True
-    assert all(k.passes is True for k in m.row_checks) and {k.name for k in m.row_checks} == {"peak", "RMS", "n_N", "n_max", "lambda"}
+    assert all(k.passes is True for k in m.row_checks) and {k.name
+                                                            for k in m.row_checks} == {"peak", "RMS", "n_N", "n_max",
+                                                                                       "lambda"}
 
 
 CURVES = """part,curve,speed [rpm],torque [N*m],source
@@ -274,7 +290,8 @@ def test_a_motor_with_its_curves_is_checked_on_them_by_hand(write_case, capsys):
 
 @pytest.mark.parametrize("rows, message", [
     ("SGM7J-99Z,peak,0,2,a chart", "row 2, column part: 'SGM7J-99Z' is no part of the motor catalog"),
-    ("SGM7J-02A,peak,3000,2,a chart\nSGM7J-02A,peak,1000,2,a chart", "row 3, column speed: expected a speed above the curve's one before (1000)"),
+    ("SGM7J-02A,peak,3000,2,a chart\nSGM7J-02A,peak,1000,2,a chart",
+     "row 3, column speed: expected a speed above the curve's one before (1000)"),
     ("SGM7J-02A,peak,0,-1,a chart", "row 2, column torque: expected a number of zero or more, found '-1'"),
     ("SGM7J-02A,intermittent,0,2,a chart", "row 2, column curve: expected one of peak, S1, found 'intermittent'"),
 ])
@@ -291,8 +308,10 @@ def test_a_bad_curves_file_gets_one_sentence(write_case, capsys, rows, message):
 @pytest.mark.parametrize("content, message", [
     (b"", "expected a header and rows of part, curve, speed [unit], torque [unit], source, found an empty file"),
     (b"part,curve,speed [rpm],source\n", "header: expected a column 'torque', found part, curve, speed, source"),
-    (b"part,curve,speed [rpm],torque [N*m],source\nSGM7J-02A,peak,0,2,\n", "row 2, column source: expected the chart the points are read from"),
-    (b"part,curve,speed [rpm],torque [N*m],source\nSGM7J-02A,peak,0,2,\xff\n", "cannot read the curves file (UnicodeDecodeError)"),
+    (b"part,curve,speed [rpm],torque [N*m],source\nSGM7J-02A,peak,0,2,\n",
+     "row 2, column source: expected the chart the points are read from"),
+    (b"part,curve,speed [rpm],torque [N*m],source\nSGM7J-02A,peak,0,2,\xff\n",
+     "cannot read the curves file (UnicodeDecodeError)"),
 ])
 def test_a_curves_file_that_cannot_be_read_is_named(write_case, tmp_path, capsys, content, message):
     from calc.__main__ import main

@@ -69,7 +69,8 @@ def test_operating_mode_boundaries_e3(ed, t_on, mode):
         ([("walk", Q_(1, "s"), Q_(1, "rpm"), Q_(1, "N*m"))], "phase: expected one of accel"),
         ([("const", Q_(0, "s"), Q_(1, "rpm"), Q_(1, "N*m"))], "duration: expected a duration above zero"),
         ([("const", Q_(-1, "s"), Q_(1, "rpm"), Q_(1, "N*m"))], "above zero"),
-        ([("const", Q_(1, "s"), Q_(1, "rpm"), Q_(1, "N*m")), ("pause", Q_(1, "s"), Q_(1, "rpm"), None)], "a pause takes only a duration"),
+        ([("const", Q_(1, "s"), Q_(1, "rpm"), Q_(1, "N*m")), ("pause", Q_(1, "s"), Q_(1, "rpm"), None)],
+         "a pause takes only a duration"),
         ([("const", Q_(1, "s"), None, Q_(1, "N*m"))], "needs a speed"),
         ([("pause", Q_(1, "s"), None, None)], "only pauses"),
         ([("const", Q_(1, "s"), Q_(1, "Hz"), Q_(1, "N*m"))], "expected a speed"),
@@ -155,5 +156,7 @@ def test_ed_formula():
 
 def test_per_segment_arguments_of_unequal_length_are_named():
     # Two speeds, one duration, three torques: which segment belongs to which cannot be told.
-    with pytest.raises(CalcError, match=r"^T_2m: expected one value per segment in each per-segment argument, found lengths n_2k 2, t_k 1, T_2k 3$"):
+    with pytest.raises(CalcError,
+                       match=r"^T_2m: expected one value per segment in each per-segment argument, found lengths n_2k "
+                             r"2, t_k 1, T_2k 3$"):
         T_2m(n_2k=Q_([100, 200], "rpm"), t_k=Q_([1.0], "s"), T_2k=Q_([1, 2, 3], "N*m"))

@@ -126,7 +126,8 @@ def test_a_sampled_cycle_without_the_motors_inertia_picks_nothing_and_says_why()
 @given(peak=st.floats(2.0, 30.0), rated=st.floats(0.5, 1.0))
 def test_the_pick_is_feasible_and_needs_the_least_rms_within_the_inertia_limit(peak, rated):
     # The rule of calc.domain.ratios: no feasible ratio with λ within the limit needs less RMS torque.
-    case = dataclasses.replace(read_case(EXAMPLE), motor_peak_torque=Q_(peak, "N*m"), motor_rated_torque=Q_(rated * peak, "N*m"))
+    case = dataclasses.replace(read_case(EXAMPLE), motor_peak_torque=Q_(peak, "N*m"),
+                               motor_rated_torque=Q_(rated * peak, "N*m"))
     s = search(case).search
     if s.pick is None:
         assert not s.feasible.any()

@@ -51,7 +51,8 @@ def test_reflection_through_the_ratio_by_hand():
     assert angle_at_output(phi_1=Q_(2, "arcmin"), i=Q_(8, "")).m_as("arcmin") == pytest.approx(0.25)
     assert stiffness_at_output(C_1=Q_(500, "N*m/rad"), i=Q_(8, "")).m_as("N*m/rad") == pytest.approx(32000)
     assert torque_at_output(T_1=Q_(36, "N*m"), i=Q_(10, "")).m_as("N*m") == pytest.approx(360)
-    chain = Chain((part("coupling", 0.5, side="input", backlash=2.0), part("gearbox", 20, backlash=3.0)), ratio=Q_(8, ""))
+    chain = Chain((part("coupling", 0.5, side="input", backlash=2.0), part("gearbox", 20, backlash=3.0)),
+                  ratio=Q_(8, ""))
     assert chain.backlash_at_output.m_as("arcmin") == pytest.approx([0.25, 3.0])
     assert chain.backlash.m_as("arcmin") == pytest.approx(3.25)
 
@@ -105,7 +106,8 @@ def test_reflection_scales_with_the_square_of_the_ratio(c, i, k):
 @given(st.lists(stiff, min_size=1, max_size=5))
 def test_same_answer_in_inch_pound_units(cs):
     metric = Chain(tuple(part(f"c{k}", c) for k, c in enumerate(cs))).stiffness
-    inch = Chain(tuple(Component(f"c{k}", "output", Q_(c, NM_ARCMIN).to("lbf*in/deg"), Q_(0, "deg")) for k, c in enumerate(cs))).stiffness
+    inch = Chain(tuple(Component(f"c{k}", "output", Q_(c, NM_ARCMIN).to("lbf*in/deg"), Q_(0, "deg"))
+                       for k, c in enumerate(cs))).stiffness
     assert inch.m_as(NM_ARCMIN) == pytest.approx(metric.m_as(NM_ARCMIN))
 
 
@@ -117,17 +119,23 @@ def test_series_evaluates_a_batch_of_chains_at_once():
 @pytest.mark.parametrize(
     "make, fragment",
     [
-        (lambda: Component("c", "output", Q_(0, NM_ARCMIN), Q_(0, "arcmin")), "expected a stiffness above zero, found 0"),
+        (lambda: Component("c", "output", Q_(0, NM_ARCMIN), Q_(0, "arcmin")),
+         "expected a stiffness above zero, found 0"),
         (lambda: Component("c", "output", Q_(-1, NM_ARCMIN), Q_(0, "arcmin")), "above zero, found -1"),
         # E15: a torque is no stiffness, though pint would convert it (off by 3437.75).
-        (lambda: Component("c", "output", Q_(0.24, "N*m"), Q_(0, "arcmin")), "which is a torque (its unit must carry the angle, errata E15)"),
+        (lambda: Component("c", "output", Q_(0.24, "N*m"), Q_(0, "arcmin")),
+         "which is a torque (its unit must carry the angle, errata E15)"),
         # E15: a bare number is no angle, though pint would read it as radians.
-        (lambda: Component("c", "output", Q_(1, NM_ARCMIN), Q_(3, "")), "which is a bare number (its unit must carry the angle, errata E15)"),
+        (lambda: Component("c", "output", Q_(1, NM_ARCMIN), Q_(3, "")),
+         "which is a bare number (its unit must carry the angle, errata E15)"),
         (lambda: Component("c", "output", Q_(1, NM_ARCMIN), 3), "expected an angle as a quantity"),
-        (lambda: Component("c", "output", Q_(1, NM_ARCMIN), Q_(-1, "arcmin")), "backlash: expected an angle of zero or more"),
-        (lambda: Component("c", "motor", Q_(1, NM_ARCMIN), Q_(0, "arcmin")), "side: expected input or output, found 'motor'"),
+        (lambda: Component("c", "output", Q_(1, NM_ARCMIN), Q_(-1, "arcmin")),
+         "backlash: expected an angle of zero or more"),
+        (lambda: Component("c", "motor", Q_(1, NM_ARCMIN), Q_(0, "arcmin")),
+         "side: expected input or output, found 'motor'"),
         (lambda: Component("c", "output", Q_(1, NM_ARCMIN), None), "backlash: expected an angle"),
-        (lambda: Component("c", "output", Q_(1, NM_ARCMIN), Q_(0, "arcmin"), nominal_torque=Q_(0, "N*m")), "component 'c': nominal_torque: expected a torque above zero, found 0 "),
+        (lambda: Component("c", "output", Q_(1, NM_ARCMIN), Q_(0, "arcmin"), nominal_torque=Q_(0, "N*m")),
+         "component 'c': nominal_torque: expected a torque above zero, found 0 "),
         (lambda: Chain(()), "expected at least one component"),
         (lambda: Chain((part("c", 1, side="input"),)), "sits on the input side"),
         (lambda: Chain((part("c", 1),), ratio=Q_(0, "")), "expected a ratio above zero"),

@@ -43,7 +43,8 @@ def test_each_band_by_hand():
 
 curves = st.tuples(
     st.floats(1, 100), st.floats(1.01, 10), st.floats(1e3, 1e6), st.floats(1e3, 1e6), st.floats(1e3, 1e6)
-).map(lambda v: StiffnessCurve(Q_(v[0], "N*m"), Q_(v[0] * v[1], "N*m"), Q_(v[2], "N*m/rad"), Q_(v[3], "N*m/rad"), Q_(v[4], "N*m/rad")))
+).map(lambda v: StiffnessCurve(Q_(v[0], "N*m"), Q_(v[0] * v[1], "N*m"), Q_(v[2], "N*m/rad"), Q_(v[3], "N*m/rad"),
+                               Q_(v[4], "N*m/rad")))
 
 
 @settings(max_examples=200, deadline=None)
@@ -69,7 +70,8 @@ def test_equal_slopes_are_one_slope(t_1, ratio, k, torque):
     assert curve.twist(Q_(torque, "N*m")).m_as("rad") == pytest.approx(torque / k, rel=1e-9, abs=1e-15)
     one = Component("one slope", "output", Q_(k, "N*m/rad"), Q_(0, "arcmin"))
     piece = Component("curve", "output", Q_(k, "N*m/rad"), Q_(0, "arcmin"), stiffness_curve=curve)
-    a, b = (chain_accuracy(Chain((m,)), Q_(torque, "N*m"), Q_(1e9, "N*m")).lost_motion.m_as("arcmin") for m in (one, piece))
+    a, b = (chain_accuracy(Chain((m,)), Q_(torque, "N*m"), Q_(1e9, "N*m")).lost_motion.m_as("arcmin")
+            for m in (one, piece))
     assert b == pytest.approx(a, rel=1e-9, abs=1e-12)
 
 
@@ -114,17 +116,23 @@ def test_steps_show_the_band_formula_and_the_secant():
 def test_a_bad_curve(args, message):
     t1, t2, k1, k2, k3 = args
     with pytest.raises(CalcError, match=message):
-        StiffnessCurve(Q_(t1, "N*m"), Q_(t2, "N*m"), Q_(k1, "N*m/rad"), Q_(k2, "N*m/rad"), Q_(k3, "N*m/rad"), where="curve")
+        StiffnessCurve(Q_(t1, "N*m"), Q_(t2, "N*m"), Q_(k1, "N*m/rad"), Q_(k2, "N*m/rad"), Q_(k3, "N*m/rad"),
+                       where="curve")
 
 
 # --- the case key ------------------------------------------------------------------------------
 
-CURVE = 'stiffness_curve = {{T1 = "29 N*m", T2 = "{T2}", K1 = "6.7e4 N*m/rad", K2 = "1.1e5 N*m/rad", K3 = "1.2e5 N*m/rad"}}'
+CURVE = (
+    'stiffness_curve = {{T1 = "29 N*m", T2 = "{T2}", K1 = "6.7e4 N*m/rad", K2 = "1.1e5 N*m/rad", K3 = "1.2e5 N*m/rad"}}'
+)
 
 
 def gear(applied="60 N*m", curve=None, extra=""):
     curve = curve or CURVE.format(T2="108 N*m")
-    return f'[accuracy]\napplied_torque = "{applied}"\nnominal_torque = "178 N*m"\n[[accuracy.component]]\nname = "HFUC-32-100"\nside = "output"\nbacklash = "0 arcmin"\n{curve}\n{extra}'
+    return (
+        f'[accuracy]\napplied_torque = "{applied}"\nnominal_torque = "178 N*m"\n[[accuracy.component]]\nname = '
+        f'"HFUC-32-100"\nside = "output"\nbacklash = "0 arcmin"\n{curve}\n{extra}'
+    )
 
 
 def test_case_with_a_stiffness_curve(capsys, write_case):
@@ -133,7 +141,8 @@ def test_case_with_a_stiffness_curve(capsys, write_case):
     a = json.loads(out)["accuracy"]
     member = a["components"][0]
     assert member["twist_at_applied_torque"]["value"] == pytest.approx(Q_(7.1466e-4, "rad").m_as("arcmin"), rel=1e-4)
-    assert member["stiffness_curve"]["K2"] == {"value": 1.1e5, "unit": "N*m/rad"} and member["stiffness_is_secant"] is True
+    assert member["stiffness_curve"]["K2"] == {"value": 1.1e5,
+                                               "unit": "N*m/rad"} and member["stiffness_is_secant"] is True
     assert a["C_total_is_secant"] is True
     assert a["C_total"]["value"] == pytest.approx(Q_(60 / 7.1466e-4, "N*m/rad").m_as("N*m/arcmin"), rel=1e-4)
     assert a["lost_motion"]["value"] == pytest.approx(Q_(7.1466e-4, "rad").m_as("arcmin"), rel=1e-4)
@@ -144,12 +153,19 @@ def test_case_with_a_stiffness_curve(capsys, write_case):
 @pytest.mark.parametrize(
     "section, message",
     [
-        (gear(curve=CURVE.format(T2="20 N*m")), "accuracy.component[1].stiffness_curve.T2: expected a limit torque above T1 = 29 N·m, found 20 N·m"),
-        (gear(curve='stiffness_curve = {T1 = "29 N*m", T2 = "108 N*m", K1 = "6.7e4 N*m/rad", K2 = "1.1e5 N*m/rad"}'), "accuracy.component[1].stiffness_curve.K3: expected a value, found none"),
-        (gear(curve='stiffness_curve = {T1 = "29 N*m", T2 = "108 N*m", K1 = "6.7e4 N*m", K2 = "1.1e5 N*m/rad", K3 = "1 N*m/rad"}'), "accuracy.component[1].stiffness_curve.K1: expected a stiffness"),
-        (gear(curve='stiffness_curve = {T1 = "29 N*m", T2 = "108 N*m", K1 = "6.7e4 N*m/rad", K2 = "0 N*m/rad", K3 = "1 N*m/rad"}'), "accuracy.component[1].stiffness_curve.K2: expected a slope above zero"),
-        (gear(curve='stiffness_curve = {T1 = "29 N*m", T3 = "1 N*m"}'), "accuracy.component[1].stiffness_curve.T3: unknown key"),
-        (gear(extra='stiffness = "1 N*m/arcmin"'), "accuracy.component[1].stiffness_curve: the curve gives the member's stiffness; give either stiffness_curve or stiffness"),
+        (gear(curve=CURVE.format(T2="20 N*m")),
+         "accuracy.component[1].stiffness_curve.T2: expected a limit torque above T1 = 29 N·m, found 20 N·m"),
+        (gear(curve='stiffness_curve = {T1 = "29 N*m", T2 = "108 N*m", K1 = "6.7e4 N*m/rad", K2 = "1.1e5 N*m/rad"}'),
+         "accuracy.component[1].stiffness_curve.K3: expected a value, found none"),
+        (gear(curve='stiffness_curve = {T1 = "29 N*m", T2 = "108 N*m", K1 = "6.7e4 N*m", K2 = "1.1e5 N*m/rad", K3 = "1 '
+                    'N*m/rad"}'), "accuracy.component[1].stiffness_curve.K1: expected a stiffness"),
+        (gear(curve='stiffness_curve = {T1 = "29 N*m", T2 = "108 N*m", K1 = "6.7e4 N*m/rad", K2 = "0 N*m/rad", K3 = "1 '
+                    'N*m/rad"}'), "accuracy.component[1].stiffness_curve.K2: expected a slope above zero"),
+        (gear(curve='stiffness_curve = {T1 = "29 N*m", T3 = "1 N*m"}'),
+         "accuracy.component[1].stiffness_curve.T3: unknown key"),
+        (gear(extra='stiffness = "1 N*m/arcmin"'),
+         "accuracy.component[1].stiffness_curve: the curve gives the member's stiffness; give either stiffness_curve "
+         "or stiffness"),
     ],
 )
 def test_case_errors_name_the_key(capsys, write_case, section, message):
@@ -162,7 +178,8 @@ def test_figures_follow_the_curve():
     from calc.figures.accuracy_plots import positioning_rule_figure, stiffness_chain_figure
 
     curve = hfuc_32_100()
-    chain = Chain((Component("HFUC-32-100", "output", curve.K_1, Q_(0, "arcmin"), Q_(1, "arcmin"), Q_(178, "N*m"), stiffness_curve=curve),))
+    chain = Chain((Component("HFUC-32-100", "output", curve.K_1, Q_(0, "arcmin"), Q_(1, "arcmin"), Q_(178, "N*m"),
+                             stiffness_curve=curve),))
     # The chain's stiffness at each torque is the secant: at 60 N·m, 60 / 7.1466e-4 N·m/rad; at 0, K1.
     c = chain.stiffness_at(Q_([0, 60], "N*m")).m_as("N*m/rad")
     assert c[0] == pytest.approx(6.7e4) and c[1] == pytest.approx(60 / 7.1466e-4, rel=1e-4)
@@ -174,9 +191,12 @@ def test_figures_follow_the_curve():
 
 # --- a gearbox catalog with stiffness-curve columns ----------------------------------------------
 
-GEARS = """part,series,ratio [1],T_2N [N*m],T_2B [N*m],T_2Not [N*m],n_1N [rpm],n_1max [rpm],eta [percent],backlash [arcmin],C_t21 [N*m/arcmin],J_1 [kg*cm**2],T_L1 [N*m],T_L2 [N*m],K_1 [N*m/rad],K_2 [N*m/rad],K_3 [N*m/rad],source
-SW-32-100,SW,100,100,200,400,2000,4000,80,0.3,,0.2,{curve},"a test row: the curve is HFUC-32-100's, the other figures are made up"
-"""
+GEARS = (
+    "part,series,ratio [1],T_2N [N*m],T_2B [N*m],T_2Not [N*m],n_1N [rpm],n_1max [rpm],eta [percent],backlash [arcmin],"
+    "C_t21 [N*m/arcmin],J_1 [kg*cm**2],T_L1 [N*m],T_L2 [N*m],K_1 [N*m/rad],K_2 [N*m/rad],K_3 [N*m/rad],source\n"
+    "SW-32-100,SW,100,100,200,400,2000,4000,80,0.3,,0.2,{curve},"
+    '"a test row: the curve is HFUC-32-100\'s, the other figures are made up"\n'
+)
 HFUC = "29,108,6.7e4,1.1e5,1.2e5"
 
 
@@ -194,7 +214,8 @@ def test_a_catalog_part_with_a_stiffness_curve(capsys, write_case, tmp_path):
     assert code == 0, err
     member = json.loads(out)["accuracy"]["components"][0]
     assert member["stiffness_curve"]["T2"] == {"value": 108.0, "unit": "N*m"}
-    assert member["twist_at_applied_torque"]["value"] == pytest.approx(Q_(29 / 6.7e4 + 31 / 1.1e5, "rad").m_as("arcmin"), rel=1e-9)
+    assert member["twist_at_applied_torque"]["value"] == pytest.approx(Q_(29 / 6.7e4 + 31 / 1.1e5,
+                                                                          "rad").m_as("arcmin"), rel=1e-9)
 
 
 def test_the_shipped_catalog_loads_without_the_curve_columns():
@@ -208,7 +229,9 @@ def test_the_shipped_catalog_loads_without_the_curve_columns():
 @pytest.mark.parametrize(
     "curve, message",
     [
-        ("29,108,6.7e4,1.1e5,", r"row 2 \(SW-32-100\), column K_3: impossible value, expected a stiffness curve in all of T_L1, T_L2, K_1, K_2, K_3 or in none"),
+        ("29,108,6.7e4,1.1e5,",
+         r"row 2 \(SW-32-100\), column K_3: impossible value, expected a stiffness curve in all of T_L1, T_L2, K_1, "
+         r"K_2, K_3 or in none"),
         ("108,29,6.7e4,1.1e5,1.2e5", r"row 2 \(SW-32-100\), column T_L2: impossible value, expected T_L2 > T_L1"),
         ("29,108,-6.7e4,1.1e5,1.2e5", r"row 2 \(SW-32-100\), column K_1: expected a value above zero, found -6.7e4"),
     ],

@@ -69,11 +69,13 @@ def test_lumping_adds_the_masses_between_springs():
         Member("gearbox", Q_(0.93, KG_CM2), Q_(756.304, "N*m/rad")),
         Member("load", Q_(15, KG_CM2)),
     ])
-    assert chain.masses == ("motor + coupling", "coupling + gearbox", "load") and chain.springs == ("coupling", "gearbox")
+    assert chain.masses == ("motor + coupling", "coupling + gearbox",
+                            "load") and chain.springs == ("coupling", "gearbox")
     assert chain.inertias.m_as(KG_CM2) == pytest.approx([4.7, 1.43, 15])
     assert chain.natural_frequencies().m_as("Hz") == pytest.approx([207.96, 2424.71], abs=0.01)
     # A direct drive has no gearbox spring: its J_1 and the load are one mass.
-    rigid = lumped([Member("motor", Q_(4.2, KG_CM2)), Member("coupling", Q_(0.5, KG_CM2), Q_(25_000, "N*m/rad"), Q_(0.5, KG_CM2)),
+    rigid = lumped([Member("motor", Q_(4.2, KG_CM2)),
+                    Member("coupling", Q_(0.5, KG_CM2), Q_(25_000, "N*m/rad"), Q_(0.5, KG_CM2)),
                     Member("load", Q_(15.93, KG_CM2))])
     assert rigid.masses == ("motor + coupling", "coupling + load")
     assert rigid.natural_frequencies().m_as("Hz") == pytest.approx([1316.35], abs=0.01)
@@ -140,9 +142,11 @@ def test_reflection_through_a_ratio_keeps_the_modes(inertias, data, i):
     # Only the output side referred to the input (J_L / i², C_t21 / i²) against the input side
     # referred to the output (J · i²): the same train, the same modes.
     J_in, J_out, C_out = Q_(inertias[0], KG_CM2), Q_(inertias[1:], KG_CM2), C
-    at_input = natural_frequencies(np.concatenate([[J_in.m_as(KG_CM2)], load_at_input(J_L=J_out, i=i).m_as(KG_CM2)]) * Q_(1, KG_CM2),
+    at_input = natural_frequencies(np.concatenate([[J_in.m_as(KG_CM2)],
+                                                   load_at_input(J_L=J_out, i=i).m_as(KG_CM2)]) * Q_(1, KG_CM2),
                                    gearbox_at_input(C_t21=C_out, i=i))
-    at_output = natural_frequencies(np.concatenate([[inertia_at_output(J_in=J_in, i=i).m_as(KG_CM2)], J_out.m_as(KG_CM2)]) * Q_(1, KG_CM2), C_out)
+    at_output = natural_frequencies(np.concatenate([[inertia_at_output(J_in=J_in, i=i).m_as(KG_CM2)],
+                                                    J_out.m_as(KG_CM2)]) * Q_(1, KG_CM2), C_out)
     assert at_input.m_as("Hz") == pytest.approx(at_output.m_as("Hz"), rel=1e-9, abs=1e-9 * at_output.m_as("Hz").max())
 
 
@@ -153,7 +157,8 @@ BELLOWS = CATALOG.rows(CATALOG.text["type"] == "bellows")
 ARGS = dict(accel_torque=Q_(12, "N*m"), drive_inertia=Q_(4.2, KG_CM2), load_inertia=Q_(15.93, KG_CM2),
             shaft_1="19 mm k6", shaft_2="16 mm h7", speed=Q_(3000, "rpm"))
 TRAIN = DriveTrain((Member("motor", Q_(4.2, KG_CM2)),),
-                   (Member("gearbox", Q_(0.93, KG_CM2), gearbox_at_input(C_t21=Q_(22, "N*m/arcmin"), i=10)), Member("load", Q_(15, KG_CM2))),
+                   (Member("gearbox", Q_(0.93, KG_CM2), gearbox_at_input(C_t21=Q_(22, "N*m/arcmin"), i=10)),
+                    Member("load", Q_(15, KG_CM2))),
                    shaft="the gearbox input")
 
 
@@ -173,12 +178,14 @@ def test_the_gearbox_spring_governs_where_the_chain_is_complete():
 
 
 def test_an_incomplete_chain_informs_and_names_what_is_missing():
-    train = DriveTrain(TRAIN.drive, (Member("load", Q_(15.93, KG_CM2)),), missing=("the gearbox's torsional stiffness C_t21",))
+    train = DriveTrain(TRAIN.drive, (Member("load", Q_(15.93, KG_CM2)),),
+                       missing=("the gearbox's torsional stiffness C_t21",))
     s = select_coupling(BELLOWS, excitation_frequency=Q_(700, "Hz"), drive_train=train, **ARGS)
     row = BELLOWS.index("AKD-30", "part")
     check = next(c for c in s.checks if c.name == "f_1").at(row)
     # The two-mass chain: f_1 = f_e = 1316 Hz < 1400 Hz; reported, not governing (f_e itself still fails).
-    assert check.governs is False and check.passes is False and check.rated.m_as("Hz") == pytest.approx(1316.35, abs=0.01)
+    assert check.governs is False and check.passes is False
+    assert check.rated.m_as("Hz") == pytest.approx(1316.35, abs=0.01)
     assert not any("f_1" in r for r in s.reasons(row))
     assert any("the case does not give the gearbox's torsional stiffness C_t21" in n for n in s.notes)
 
@@ -243,7 +250,8 @@ def test_a_coupling_on_the_output_is_referred_there(capsys, write_case):
     # / i²) the train has the same modes.
     from ..conftest import HEAD_TOML, PROFILE_TOML
 
-    coupling = DIRECT[DIRECT.index("[coupling]"):].replace('part = "AKD-30"', 'part = "AKD-300"\nside = "output"').replace(
+    coupling = DIRECT[DIRECT.index("[coupling]"):].replace('part = "AKD-30"',
+                                                           'part = "AKD-300"\nside = "output"').replace(
         '"15.93 kg*cm**2"', '"1500 kg*cm**2"')
     r = _torsion(capsys, write_case(HEAD_TOML + PROFILE_TOML + coupling))
     t = r["coupling"]["torsion"]
@@ -266,7 +274,9 @@ def test_a_gearbox_that_is_not_selected_only_informs(capsys, write_case):
     # chain's first mode is reported for information.
     from ..conftest import HEAD_TOML, PROFILE_TOML
 
-    coupling = DIRECT[DIRECT.index("[coupling]"):].replace('part = "AKD-30"', 'side = "input"').replace('load_inertia = "15.93 kg*cm**2"\n', "")
+    coupling = DIRECT[DIRECT.index("[coupling]"):].replace('part = "AKD-30"',
+                                                           'side = "input"').replace('load_inertia = "15.93 '
+                                                                                     'kg*cm**2"\n', "")
     r = _torsion(capsys, write_case(HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML + coupling))
     t = r["coupling"]["torsion"]
     best = r["gearbox"]["candidates"][0]["part"]
@@ -284,7 +294,9 @@ def test_an_informing_check_without_a_value_says_why():
     s = select_coupling(rows, excitation_frequency=Q_(100, "Hz"), drive_train=train, **ARGS)
     check = next(c for c in s.checks if c.name == "f_1").at(0)
     assert check.passes is None and check.governs is False
-    assert check.not_made == "the first mode of the drive train needs the coupling's inertia J, which the catalog leaves empty"
+    assert check.not_made == (
+        "the first mode of the drive train needs the coupling's inertia J, which the catalog leaves empty"
+    )
 
 
 def test_the_highest_first_mode_a_coupling_can_give_by_hand():
@@ -326,7 +338,8 @@ def test_the_gearbox_ranks_first_the_rows_whose_drive_train_clears_the_excitatio
     train = {c["part"]: next(k for k in c["checks"] if k["name"] == "f_1") for c in g["candidates"]}
     assert [c["part"] for c in g["candidates"]][:2] == ["NPT035-10", "NPT025-10"] and g["selected"] == "NPT035-10"
     assert g["candidates"][1]["passes"] is True
-    assert train["NPT025-10"]["rated"]["value"] == pytest.approx(183.19, abs=0.01) and train["NPT025-10"]["passes"] is False
+    assert train["NPT025-10"]["rated"]["value"] == pytest.approx(183.19,
+                                                                 abs=0.01) and train["NPT025-10"]["passes"] is False
     assert train["NPT025-10"]["governs"] is False and train["NPT025-10"]["mode"] == "drive train"
     assert train["NPT035-10"]["rated"]["value"] == pytest.approx(265.5, abs=0.1)
     assert train["NPT045-10"]["passes"] is None and "C_t21" in train["NPT045-10"]["not_made"]  # no C_t21: ranked after
@@ -341,11 +354,14 @@ def test_the_train_check_needs_a_coupling_between_motor_and_gearbox(write_case):
     text = DERIVED_EXAMPLE.read_text(encoding="utf-8")
     assert coupling_span(read_case(write_case(text.replace('side = "input"', 'side = "output"')))) is None
     without = read_case(EXAMPLE_CASE)
-    assert coupling_span(dataclasses.replace(without, sections={k: v for k, v in without.sections.items() if k != "coupling"})) is None
+    assert coupling_span(dataclasses.replace(without,
+                                             sections={k: v for k, v in without.sections.items()
+                                                       if k != "coupling"})) is None
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.lists(st.tuples(positive, positive), min_size=1, max_size=8), positive, positive, positive, positive, st.floats(1.5, 100))
+@given(st.lists(st.tuples(positive, positive), min_size=1, max_size=8), positive, positive, positive, positive,
+       st.floats(1.5, 100))
 def test_the_highest_first_mode_is_the_best_of_the_chains_one_by_one(couplings, J_motor, J_1, C_t21, J_L, i):
     # Whatever couplings are offered (those another beats on stiffness and inertia left out), the
     # bound is the highest first mode of the chains built with each alone.
@@ -356,7 +372,8 @@ def test_the_highest_first_mode_is_the_best_of_the_chains_one_by_one(couplings, 
     span = CouplingSpan(Q_(J_motor, KG_CM2), Q_(J_L, KG_CM2), C, J, Q_(200, "Hz"), "drawn")
     best = highest_first_mode(span, Q_([J_1], KG_CM2), Q_([C_t21], "N*m/arcmin"), Q_([i], "")).m_as("Hz")[0]
     modes = np.array([natural_frequencies(Q_([J_motor + j / 2, j / 2 + J_1, J_L / i**2], KG_CM2),
-                                          Q_([c, gearbox_at_input(C_t21=Q_(C_t21, "N*m/arcmin"), i=Q_(i, "")).m_as("N*m/rad")], "N*m/rad")).m_as("Hz")
+                                          Q_([c, gearbox_at_input(C_t21=Q_(C_t21, "N*m/arcmin"),
+                                                                  i=Q_(i, "")).m_as("N*m/rad")], "N*m/rad")).m_as("Hz")
                       for c, j in zip(C.m_as("N*m/rad"), J.m_as(KG_CM2))])
     # to the eigensolver's precision, relative to the highest mode (test_reflection_through_a_ratio_keeps_the_modes)
     assert best == pytest.approx(modes[:, 0].max(), rel=1e-9, abs=1e-9 * modes.max())

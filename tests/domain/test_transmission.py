@@ -6,7 +6,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from calc import CalcError, Q_
-from calc.domain.transmission import Trace, analyze_trace, generate_trace, read_trace, transmission_accuracy, transmission_error
+from calc.domain.transmission import (Trace, analyze_trace, generate_trace, read_trace, transmission_accuracy,
+                                      transmission_error)
 
 from ..conftest import ROOT
 
@@ -17,7 +18,8 @@ def test_transmission_error_by_hand():
     # Input at 3600°, ratio 10: the theoretical output is 360°; an actual 360.01° is 0.01° = 36 arcsec ahead.
     e = transmission_error(phi_2=Q_(360.01, "deg"), phi_1=Q_(3600, "deg"), i=Q_(10, ""))
     assert e.m_as("arcsec") == pytest.approx(36.0)
-    assert transmission_accuracy(Delta_phi_max=Q_(30, "arcsec"), Delta_phi_min=Q_(-25, "arcsec")).m_as("arcsec") == pytest.approx(55)
+    assert transmission_accuracy(Delta_phi_max=Q_(30, "arcsec"),
+                                 Delta_phi_min=Q_(-25, "arcsec")).m_as("arcsec") == pytest.approx(55)
 
 
 def test_a_pure_once_per_revolution_error_has_twice_its_amplitude_as_range():
@@ -40,7 +42,8 @@ def test_each_direction_is_judged_on_its_own():
     inp = np.concatenate([theta, back]) * 5
     out = np.concatenate([theta + a * np.sin(theta), back + a * np.sin(back) - lag])
     r = analyze_trace(Trace(Q_(inp, "rad"), Q_(out, "rad")), Q_(5, ""))
-    assert r.ranges["forward"].m_as("arcsec") == pytest.approx([-10 + 60, 10 + 60], abs=0.05)  # mean of the record taken out
+    # mean of the record taken out
+    assert r.ranges["forward"].m_as("arcsec") == pytest.approx([-10 + 60, 10 + 60], abs=0.05)
     assert r.accuracy.m_as("arcsec") == pytest.approx(20, abs=0.05)
 
 
@@ -48,7 +51,8 @@ def test_each_direction_is_judged_on_its_own():
 @given(st.floats(min_value=1, max_value=100), st.floats(min_value=1, max_value=300), st.integers(0, 2**31))
 def test_range_grows_with_the_error_and_the_ratio_does_not_matter(i, amplitude, seed):
     r1 = analyze_trace(generate_trace(Q_(i, ""), Q_(amplitude, "arcsec"), seed=seed), Q_(i, "")).accuracy.m_as("arcsec")
-    r2 = analyze_trace(generate_trace(Q_(i, ""), Q_(2 * amplitude, "arcsec"), seed=seed), Q_(i, "")).accuracy.m_as("arcsec")
+    r2 = analyze_trace(generate_trace(Q_(i, ""), Q_(2 * amplitude, "arcsec"), seed=seed),
+                       Q_(i, "")).accuracy.m_as("arcsec")
     assert r2 == pytest.approx(2 * r1, rel=1e-6)
     assert 0 < r1 <= 1.75 * amplitude * (1 + 1e-9)  # peaks 1/2 + 1/4 + 1/8 of the amplitude, each way
 
@@ -56,7 +60,9 @@ def test_range_grows_with_the_error_and_the_ratio_does_not_matter(i, amplitude, 
 def test_the_shipped_sample_is_what_its_header_says():
     trace = read_trace(SAMPLE)
     assert trace.comments[0].startswith("GENERATED sample, not a measurement")
-    assert trace.comments[1] == 'Call: generate_trace(Q_(10, ""), Q_(40, "arcsec"), samples=1000, noise=Q_(1, "arcsec"), seed=7)'
+    assert trace.comments[1] == (
+        'Call: generate_trace(Q_(10, ""), Q_(40, "arcsec"), samples=1000, noise=Q_(1, "arcsec"), seed=7)'
+    )
     again = generate_trace(Q_(10, ""), Q_(40, "arcsec"), samples=1000, noise=Q_(1, "arcsec"), seed=7)
     assert trace.input.m_as("deg") == pytest.approx(again.input.m_as("deg"), abs=1e-6)
     assert trace.output.m_as("deg") == pytest.approx(again.output.m_as("deg"), abs=1e-6)
@@ -65,7 +71,9 @@ def test_the_shipped_sample_is_what_its_header_says():
 
 def test_less_than_a_revolution_is_an_error():
     theta = np.linspace(0, np.pi, 100)
-    with pytest.raises(CalcError, match=r"half: expected a full revolution of the output \(360°\) in at least one direction, found forward 180°"):
+    with pytest.raises(CalcError,
+                       match=r"half: expected a full revolution of the output \(360°\) in at least one direction, "
+                             r"found forward 180°"):
         analyze_trace(Trace(Q_(theta * 10, "rad"), Q_(theta, "rad"), source="half"), Q_(10, ""))
     with pytest.raises(CalcError, match="expected a trace of at least 20 samples, found 3"):
         analyze_trace(Trace(Q_([0, 1, 2], "deg"), Q_([0, 1, 2], "deg"), source="short"), Q_(10, ""))

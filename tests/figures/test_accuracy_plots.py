@@ -85,7 +85,8 @@ def test_positioning_scatter_figure():
 
 def test_importing_the_accuracy_modules_stays_light():
     code = (
-        "import sys, calc.domain.accuracy, calc.figures.accuracy_plots, calc.domain.hysteresis, calc.domain.transmission, calc.domain.stiffness; "
+        "import sys, calc.domain.accuracy, calc.figures.accuracy_plots, calc.domain.hysteresis, "
+        "calc.domain.transmission, calc.domain.stiffness; "
         "print(sorted(m for m in ('matplotlib', 'pandas', 'sympy') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
@@ -95,7 +96,8 @@ def test_importing_the_accuracy_modules_stays_light():
 def test_positioning_rule_figure_jumps_at_three_percent():
     from calc.figures.accuracy_plots import positioning_rule_figure
 
-    chain = Chain((Component("gearbox", "output", Q_(22, "N*m/arcmin"), Q_(8, "arcmin"), Q_(60, "arcsec"), Q_(110, "N*m")),))
+    chain = Chain((Component("gearbox", "output", Q_(22, "N*m/arcmin"), Q_(8, "arcmin"), Q_(60, "arcsec"),
+                             Q_(110, "N*m")),))
     fig = positioning_rule_figure(chain, applied_torque=Q_(8, "N*m"))
     accuracy_line = fig.axes[0].lines[0]
     t, a = accuracy_line.get_xdata(), accuracy_line.get_ydata()

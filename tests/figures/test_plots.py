@@ -8,7 +8,8 @@ from matplotlib.patches import StepPatch
 from calc import CalcError, Q_
 from calc.data.bands import load_factor_table
 from calc.data.catalog import load_catalog
-from calc.domain.gearbox import SCHEMA, SHOCK_FACTORS, candidates_summary, candidates_table, rows_at_ratio, select_gearbox
+from calc.domain.gearbox import (SCHEMA, SHOCK_FACTORS, candidates_summary, candidates_table, rows_at_ratio,
+                                 select_gearbox)
 from calc.figures.plots import FAIL_COLOR, PASS_COLOR, load_cycle_figure, shock_factor_figure, utilization_figure
 from calc.domain.profile import Profile, Z_h, duty
 
@@ -195,7 +196,8 @@ def test_utilization_figure_marks_a_missing_rating():
 
 def test_candidates_table_rows_and_values(selection):
     t = candidates_table(selection)
-    assert list(t.columns) == ["rank", "part", "check", "governs", "required", "rated", "unit", "utilization", "verdict"]
+    assert list(t.columns) == ["rank", "part", "check", "governs", "required", "rated", "unit", "utilization",
+                               "verdict"]
     assert len(t) == 12 * 5  # twelve complete rows at ratio 10, five checks each (the emergency stop the fifth)
     assert t.part.tolist()[::5][:3] == ["NPT035-10", "NPS045-10", "NPT045-10"]
     assert t["rank"].tolist()[::5] == list(range(1, 13))
@@ -224,5 +226,6 @@ def test_candidates_summary_gives_verdict_and_reasons(selection):
     assert not s.illustrative.any()
     assert s.reasons.iloc[0] == ""
     assert s.reasons.iloc[6] == "T_2max <= T_2B: required 151.3 N·m > rated 126 N·m, 20.1 % over"
-    assert s.family.tolist()[:4] == ["NPT", "NPS", "NPT", "TP+"] and s["best of family"].tolist()[:4] == [True, True, False, True]
+    assert s.family.tolist()[:4] == ["NPT", "NPS", "NPT",
+                                     "TP+"] and s["best of family"].tolist()[:4] == [True, True, False, True]
     assert s.doubtful.iloc[2].startswith("n_1max/eta") and s.catalog.iloc[0] == "catalogs/gearboxes.csv"
