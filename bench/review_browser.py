@@ -122,7 +122,8 @@ def new_values(case: Path, count: int) -> list[tuple[str, str]]:
     from calc.review.inputs import catalog_ratios, forced_part_spec
 
     c = read_case(case)
-    specs = input_specs(c, catalog_ratios(c) if c.ratio is not None else []) + ([forced_part_spec(c)] if c.ratio is not None else [])
+    specs = input_specs(c, catalog_ratios(c) if c.ratio is not None else [])
+    specs += [forced_part_spec(c)] if c.ratio is not None else []
     out = []
     for k in range(count):
         spec, turn = specs[k % len(specs)], k // len(specs) + 1

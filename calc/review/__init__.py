@@ -21,4 +21,5 @@ from .panel import DesignReview
 from .state import ReviewState
 from .view import evaluated, results_html
 
-__all__ = ["DesignReview", "InputSpec", "ReviewState", "evaluated", "input_specs", "results_html", "with_changes", "with_inputs"]
+__all__ = ["DesignReview", "InputSpec", "ReviewState", "evaluated", "input_specs", "results_html", "with_changes",
+           "with_inputs"]

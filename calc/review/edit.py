@@ -51,7 +51,8 @@ def edited_text(text: str, edits, source: str) -> str:
     tables, comments and layout are kept. ``source`` names the file in an error.
 
     >>> text = '[motor]\\npeak_torque = "12 N*m"  # T_1B\\n[[move]]\\ndwell = "1 s"\\n'
-    >>> print(edited_text(text, [Edit("motor.peak_torque", "16 N*m"), Edit("move[2]", {"dwell": "0.5 s"}, insert=True)], "a.toml"))
+    >>> edits = [Edit("motor.peak_torque", "16 N*m"), Edit("move[2]", {"dwell": "0.5 s"}, insert=True)]
+    >>> print(edited_text(text, edits, "a.toml"))
     [motor]
     peak_torque = "16 N*m"  # T_1B
     [[move]]

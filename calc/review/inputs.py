@@ -278,9 +278,9 @@ def forced_part_spec(case: Case) -> InputSpec:
     the catalog's rows at the case's ratio (not the partial ones), or the selection's."""
     catalog = gearbox_catalogs(case)[0]
     ratio = float(case.ratio.m_as(""))
-    parts = [str(p) for p, r, partial in zip(catalog.parts, catalog["ratio"].m_as(""), catalog.partial) if r == ratio and not partial]
-    value = case.gearbox_part or SELECTION
-    return InputSpec("gearbox.part", "gearbox part forced", "", 0, 0, 0, value, tuple(dict.fromkeys([SELECTION, *parts, value])))
+    parts = [str(p) for p, r, partial in zip(catalog.parts, catalog["ratio"].m_as(""), catalog.partial)
+             if r == ratio and not partial]
+    return _choice("gearbox.part", "gearbox part forced", parts, case.gearbox_part)
 
 
 def forced_motor_spec(case: Case) -> InputSpec:
@@ -288,8 +288,13 @@ def forced_motor_spec(case: Case) -> InputSpec:
     catalog's rows (not the partial ones), or the catalog's choice."""
     catalog = drive.motor_catalog(case)
     parts = [str(p) for p, partial in zip(catalog.parts, catalog.partial) if not partial]
-    value = case.motor_part or SELECTION
-    return InputSpec("motor.part", "motor part forced", "", 0, 0, 0, value, tuple(dict.fromkeys([SELECTION, *parts, value])))
+    return _choice("motor.part", "motor part forced", parts, case.motor_part)
+
+
+def _choice(key: str, label: str, parts: list, given: str | None) -> InputSpec:
+    """A part to force: the selection's, or one of ``parts`` (the case's ``given`` one among them)."""
+    value = given or SELECTION
+    return InputSpec(key, label, "", 0, 0, 0, value, tuple(dict.fromkeys([SELECTION, *parts, value])))
 
 
 def review_specs(case: Case) -> list[InputSpec]:
@@ -320,10 +325,12 @@ def read_typed(text: str, spec: InputSpec) -> float:
     t = text.strip()
     unit = f" {pretty_unit(spec.unit)}" if spec.unit else ""
     if not TYPED.match(t):
-        raise CalcError(f"{t!r} is not a number: expected a number such as {spec.value:g} (in{unit or ' no unit'}), a decimal point or comma; not applied")
+        raise CalcError(f"{t!r} is not a number: expected a number such as {spec.value:g} (in{unit or ' no unit'}), "
+                        "a decimal point or comma; not applied")
     v = float(t.replace(",", "."))
     if not math.isfinite(v) or not spec.low <= v <= spec.high:
-        raise CalcError(f"{t}{unit} is outside the range of {spec.label}, {spec.low:g}{unit} to {spec.high:g}{unit}: not applied")
+        raise CalcError(f"{t}{unit} is outside the range of {spec.label}, {spec.low:g}{unit} to {spec.high:g}{unit}: "
+                        "not applied")
     return v
 
 
@@ -336,7 +343,8 @@ def input_edits(case: Case, changes: dict) -> list[Edit]:
     >>> from pathlib import Path
     >>> from calc.sections.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
-    >>> for edit in input_edits(case, {"move[1].time": (0.6, "s"), "gearbox.ratio": (8.0, ""), "gearbox.part": "NPT025-8"}):
+    >>> changes = {"move[1].time": (0.6, "s"), "gearbox.ratio": (8.0, ""), "gearbox.part": "NPT025-8"}
+    >>> for edit in input_edits(case, changes):
     ...     print(edit)
     Edit(key='move[1].time', value='0.6 s', insert=False)
     Edit(key='gearbox.ratio', value=8.0, insert=False)
@@ -402,9 +410,10 @@ def with_inputs(case: Case, values: dict) -> Case:
         if segment:
             k, what = int(segment.group(1)) - 1, segment.group(2)
             was = (p.durations if what == "duration" else p.torques)[k]
-            if (what == "torque" and p.phases[k] == "pause") or np.isclose(q.m_as(was.units), was.magnitude, rtol=1e-9, atol=0):
-                continue
-        changes[key] = q if q is None or isinstance(q, str) else (float(q.magnitude), "" if q.unitless else f"{q.units:D}")
+            if (what == "torque" and p.phases[k] == "pause") or np.isclose(q.m_as(was.units), was.magnitude, rtol=1e-9):
+                continue  # a pause has no torque; a value as the case has it changes nothing
+        unit = "" if q is None or isinstance(q, str) or q.unitless else f"{q.units:D}"
+        changes[key] = q if q is None or isinstance(q, str) else (float(q.magnitude), unit)
     return edited_case(case.path, case.raw.decode("utf-8-sig"), input_edits(case, changes))
 
 
@@ -424,7 +433,8 @@ def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_pea
               "load.inertia": load_inertia, "coupling.temperature": temperature, "accuracy.applied_torque": applied_torque}
     # A further section's input is ignored where the case's file has no such section.
     tables = file_tables(case)
-    values = {k: v for k, v in values.items() if v is not None and (k.split(".")[0] in tables or k.split(".")[0] not in FURTHER)}
+    values = {k: v for k, v in values.items() if v is not None
+              and (k.split(".")[0] in tables or k.split(".")[0] not in FURTHER)}
     for what, arrays in (("duration", durations), ("torque", torques)):
         if arrays is not None:
             values.update({f"profile[{k}].{what}": q for k, q in enumerate(arrays, start=1)})

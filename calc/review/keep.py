@@ -19,10 +19,12 @@ def save_path(original: Path, name: str) -> Path:
     """The new case file ``name`` beside ``original``: a plain file name (no folder), ending in
     ``.toml``, of a file that does not exist yet."""
     if not _NAME.match(name) or name in (".", ".."):
-        raise CalcError(f"save as {name!r}: expected a file name such as {original.stem}-variant.toml (letters, digits, - _ .), no folder")
+        raise CalcError(f"save as {name!r}: expected a file name such as {original.stem}-variant.toml "
+                        "(letters, digits, - _ .), no folder")
     path = original.parent / name
     if path.exists():
-        raise CalcError(f"save as {name}: the file exists in {original.parent.name}/; choose another name (a case file is never overwritten here)")
+        raise CalcError(f"save as {name}: the file exists in {original.parent.name}/; choose another name "
+                        "(a case file is never overwritten here)")
     return path
 
 

@@ -27,12 +27,13 @@ def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
     """An input's label with its unit (the whole of it, and what became of the file's value, as
     its tooltip; its key path as ``data-key``), marked where changed or ``added`` by an edit of
     the moves."""
-    unit = " [" + pretty_unit(spec.unit) + "]" if spec.unit else ""
+    unit = pretty_unit(spec.unit) if spec.unit else ""
     file_value = spec.field_text(spec.value) if not spec.options else option_text(spec.value)
-    was = (f" ({added})" if added
-           else f" (changed; the file: {file_value}{' ' + pretty_unit(spec.unit) if spec.unit else ''})" if changed else "")
-    return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{" class=dr-changed" if changed or added else ""}>'
-            f"{typeset(spec.label)}{unit}</span>")
+    file_value += f" {unit}" if unit else ""
+    was = f" ({added})" if added else f" (changed; the file: {file_value})" if changed else ""
+    marked = " class=dr-changed" if changed or added else ""
+    return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{marked}>'
+            f"{typeset(spec.label)}{f' [{unit}]' if unit else ''}</span>")
 
 
 def message_html(refused: str | None, idle: str | None = None) -> str:
@@ -77,8 +78,8 @@ def results_text(state: ReviewState, screen: Screen, link: str | None, generatio
     else:
         refused = [f"{state.spec(k).label}: {why}" for k, (_, why) in state.refused.items()]
         text = results_html(screen.report, screen.left_out, link, typed_by_hand=screen.typed_by_hand,
-                            shown=None if state.all_candidates else SHOWN_CANDIDATES, refused=refused, system=state.units,
-                            ratios=screen.ratios)
+                            shown=None if state.all_candidates else SHOWN_CANDIDATES, refused=refused,
+                            system=state.units, ratios=screen.ratios)
     attributes = (f'data-generation="{generation}" data-case="{escape(state.path.name)}" '
                   f'data-inputs="{escape(json.dumps(screen.texts))}" data-edits="{escape(json.dumps(screen.moves))}" '
                   f'data-units="{escape(state.units)}" data-file-units="{escape(state.file_units)}" '

@@ -34,7 +34,8 @@ from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import InputSpec, option_text
 from .keep import CaseFiles, free_name
-from .page import SHOWN_CANDIDATES, error_html, failed_html, label_html, link_html, message_html, results_text, with_variants
+from .page import (SHOWN_CANDIDATES, error_html, failed_html, label_html, link_html, message_html, results_text,
+                   with_variants)
 from .state import ReviewState, without_folder
 from .variants import Variants
 from .view import typeset
@@ -210,7 +211,8 @@ class DesignReview:
                 self.kept.value = error_html(f"no calc report of {escape(path.name)}", without_folder(why, path))
                 return
             self.files.reports[path] = pdf
-            self.kept.value = f"calc report of {escape(path.name)}, the screen's design: {link_html(self.files.link(pdf), pdf)}"
+            link = link_html(self.files.link(pdf), pdf)
+            self.kept.value = f"calc report of {escape(path.name)}, the screen's design: {link}"
 
         worker = threading.Thread(target=build, daemon=True)
         worker.start()
@@ -255,7 +257,7 @@ class DesignReview:
             self.moves.show(self.state)
         self.rows.show(self.state)
         self.units.value = self.state.units  # the state's already: not a change
-        self.undo_button.disabled, self.redo_button.disabled = not self.state.history.can_undo, not self.state.history.can_redo
+        self._show_history()
 
     def refresh(self) -> None:
         """Draw the results of the state (:meth:`calc.review.state.ReviewState.evaluate`): each
@@ -277,7 +279,7 @@ class DesignReview:
         else:  # the figures of the last good inputs no longer apply
             self.load_cycle.layout.display = self.chain.layout.display = "none"
         self.rows.show_labels(state, screen.changes)
-        self.undo_button.disabled, self.redo_button.disabled = not state.history.can_undo, not state.history.can_redo
+        self._show_history()
         self._offer_download(screen.text)
         compared = self.variants.comparison(state.units)
         if self.variants.kept and self.variants_html.value != compared:
@@ -286,17 +288,23 @@ class DesignReview:
         link = self.files.report_address(state.path) if not state.modified() else None
         self.results.value = results_text(state, screen, link, self.generation, self.variants)
 
+    def _show_history(self) -> None:
+        history = self.state.history
+        self.undo_button.disabled, self.redo_button.disabled = not history.can_undo, not history.can_redo
+
     def _offer_download(self, text: str | None) -> None:
         """The case file as changed (``text``, as *Save as case file* writes it), as a link to download."""
         self.download.value = "" if text is None or self.state.refused else (
-            f'<a download="{escape(self.save_name.value)}" href="data:application/toml;charset=utf-8,{quote(text)}">Download the case file</a>')
+            f'<a download="{escape(self.save_name.value)}" href="data:application/toml;charset=utf-8,{quote(text)}">'
+            "Download the case file</a>")
 
     def _chooser_verdict(self, word: str, changed: bool) -> None:
         """The chooser's entry of the case shown gives the screen's verdict, not the file's, once
         an input is changed."""
         path = self.state.path
         if path in self.files.labels:
-            options = [(self.files.label(path, word, changed) if p == path else self.files.labels[p], p) for _, p in self.case_file.options]
+            options = [(self.files.label(path, word, changed) if p == path else self.files.labels[p], p)
+                       for _, p in self.case_file.options]
             if options != list(self.case_file.options):
                 self._relabel(options)
 
@@ -409,17 +417,19 @@ class InputRows:
         import ipywidgets as w
 
         value = state.values[spec.key]
-        label = w.HTML(label_html(spec, False, state.from_edits(spec.key)), layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
+        label = w.HTML(label_html(spec, False, state.from_edits(spec.key)),
+                       layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
         label.add_class("dr-label")
         self.labels[spec.key], self.messages[spec.key] = label, w.HTML()
         if spec.options:
             control = w.Dropdown(options=[(option_text(r), r) for r in spec.options], value=value, tooltip=spec.text,
-                                 layout=w.Layout(width="auto", flex="1 1 auto"))  # the row's width: no choice cut short
+                                 layout=_grows(w))  # the row's width: no choice cut short
             line = w.HBox([label, control])
         else:
             control = w.FloatSlider(value=value, min=spec.low, max=spec.high, step=spec.step, readout=False,
-                                    continuous_update=False, tooltip=spec.text, layout=w.Layout(flex="1 1 auto", width="auto"))
-            field = w.Text(value=state.texts[spec.key], continuous_update=False, tooltip=f"{spec.text}: {spec.low:g} to {spec.high:g}",
+                                    continuous_update=False, tooltip=spec.text, layout=_grows(w))
+            tooltip = f"{spec.text}: {spec.low:g} to {spec.high:g}"
+            field = w.Text(value=state.texts[spec.key], continuous_update=False, tooltip=tooltip,
                            layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
             # The field is read by the state, not by the browser's number input, which clamps to
             # the range and drops a decimal comma without a word.
@@ -473,24 +483,28 @@ class MovesEditor:
     carries."""
 
     def __init__(self, w, p: DesignReview):
-        self.entry = w.Dropdown(description="moves", tooltip="an entry of the moves: remove it, or add a move or a dwell after it",
-                                style={"description_width": "3.5em"}, layout=w.Layout(width="auto", flex="1 1 auto"))
-        self.remove_button = _button(w, "remove", "take the chosen entry out of the moves", "5.5em", lambda: p.remove_entry(self.entry.value))
+        self.entry = w.Dropdown(description="moves", style={"description_width": "3.5em"}, layout=_grows(w),
+                                tooltip="an entry of the moves: remove it, or add a move or a dwell after it")
+        self.remove_button = _button(w, "remove", "take the chosen entry out of the moves", "5.5em",
+                                     lambda: p.remove_entry(self.entry.value))
         add_move = _button(w, "+ move", "a move after the chosen entry (a copy of the move at or before it)", "5.5em",
                            lambda: p.add_entry(self.entry.value, "move"))
-        add_dwell = _button(w, "+ dwell", "a dwell after the chosen entry (as long as the last dwell, else 1 s)", "5.5em",
-                            lambda: p.add_entry(self.entry.value, "dwell"))
+        add_dwell = _button(w, "+ dwell", "a dwell after the chosen entry (as long as the last dwell, else 1 s)",
+                            "5.5em", lambda: p.add_entry(self.entry.value, "dwell"))
         edits_field = w.Text(continuous_update=False, layout=w.Layout(display="none"))
         edits_field.add_class("dr-edits")
         edits_field.observe(lambda change: p._edits_asked(change["new"]), names="value")
-        self.mechanism_type = w.Dropdown(options=list(MECHANISM_TYPES), description="type", tooltip="the mechanism's type",
-                                         style={"description_width": "3.5em"}, layout=w.Layout(width="auto", flex="1 1 auto"))
-        self.mechanism_size = w.Text(placeholder="lead / diameter", tooltip="a screw's lead, a pinion's or pulley's diameter (a linear type)",
-                                     layout=w.Layout(width="9em", flex="0 0 9em"))
-        change = _button(w, "change type", "the mechanism of the chosen type, starting from values equivalent at the gearbox output", "8em",
+        self.mechanism_type = w.Dropdown(options=list(MECHANISM_TYPES), description="type",
+                                         tooltip="the mechanism's type", style={"description_width": "3.5em"},
+                                         layout=_grows(w))
+        self.mechanism_size = w.Text(placeholder="lead / diameter", layout=w.Layout(width="9em", flex="0 0 9em"),
+                                     tooltip="a screw's lead, a pinion's or pulley's diameter (a linear type)")
+        why = "the mechanism of the chosen type, starting from values equivalent at the gearbox output"
+        change = _button(w, "change type", why, "8em",
                          lambda: p.change_mechanism(self.mechanism_type.value, self.mechanism_size.value))
-        self.box = w.VBox([w.HBox([self.entry, self.remove_button, add_move, add_dwell], layout=w.Layout(width="100%")),
-                           w.HBox([self.mechanism_type, self.mechanism_size, change], layout=w.Layout(width="100%")), edits_field],
+        row = w.Layout(width="100%")
+        self.box = w.VBox([w.HBox([self.entry, self.remove_button, add_move, add_dwell], layout=row),
+                           w.HBox([self.mechanism_type, self.mechanism_size, change], layout=row), edits_field],
                           layout=w.Layout(width="100%"))
         self.box.add_class("dr-moves")
 
@@ -510,9 +524,15 @@ class MovesEditor:
             self.mechanism_size.placeholder = f"lead / diameter [{unit}]"
 
 
-def _button(w, description: str, tooltip: str, width: str, action, **kwargs):
-    """A button of ``width`` that calls ``action()`` when clicked."""
-    button = w.Button(description=description, tooltip=tooltip, layout=w.Layout(width=width, **kwargs.pop("layout", {})), **kwargs)
+def _grows(w):
+    """The layout of a widget that takes the room its row leaves."""
+    return w.Layout(flex="1 1 auto", width="auto")
+
+
+def _button(w, description: str, tooltip: str, width: str, action, fixed: bool = False, **kwargs):
+    """A button ``width`` wide (``fixed``: never narrower) that calls ``action()`` when clicked."""
+    layout = w.Layout(width=width, flex=f"0 0 {width}") if fixed else w.Layout(width=width)
+    button = w.Button(description=description, tooltip=tooltip, layout=layout, **kwargs)
     button.on_click(lambda _: action())
     return button
 
@@ -521,13 +541,13 @@ def _build_widgets(p: DesignReview, w, path: Path) -> None:
     """Every widget of the panel ``p``, each wired to what it does, laid out."""
     p.message = w.HTML()
     p.moves = MovesEditor(w, p)
-    p.case_file = w.Dropdown(options=p.files.options(), value=path, description="case", style={"description_width": "3em"},
-                             layout=w.Layout(flex="1 1 auto", width="auto"))
+    p.case_file = w.Dropdown(options=p.files.options(), value=path, description="case", layout=_grows(w),
+                             style={"description_width": "3em"})
     p.case_file.add_class("dr-case")
     p.case_file.observe(lambda _: p._relabelling or p.load(), names="value")
-    p.reset = _button(w, "reset", "back to the values of the case file", "4.5em", p.load, layout={"flex": "0 0 4.5em"})
-    p.undo_button = _button(w, "undo", "the values before the last change", "4.2em", p.undo, layout={"flex": "0 0 4.2em"}, disabled=True)
-    p.redo_button = _button(w, "redo", "the change undone last", "4.2em", p.redo, layout={"flex": "0 0 4.2em"}, disabled=True)
+    p.reset = _button(w, "reset", "back to the values of the case file", "4.5em", p.load, fixed=True)
+    p.undo_button = _button(w, "undo", "the values before the last change", "4.2em", p.undo, fixed=True, disabled=True)
+    p.redo_button = _button(w, "redo", "the change undone last", "4.2em", p.redo, fixed=True, disabled=True)
     top = w.HBox([p.case_file, p.reset, p.undo_button, p.redo_button], layout=w.Layout(width="100%"))
     p.status = w.HTML(state_html())
     p.results = w.HTML(layout=w.Layout(width="100%"))
@@ -536,9 +556,10 @@ def _build_widgets(p: DesignReview, w, path: Path) -> None:
     p.load_cycle.add_class("dr-figures")
     p.chain.add_class("dr-figures")
     p.variants_html = w.HTML(layout=w.Layout(width="100%"))
-    left = w.VBox([w.HTML(PAGE_STYLE), top, p.message, p.rows.box, p.moves.box, _options(p, w), _keep(p, w), p.load_cycle],
-                  layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
-    right = w.VBox([p.status, p.results, p.chain, p.variants_html], layout=w.Layout(flex="1 1 560px", min_width="560px"))
+    left = w.VBox([w.HTML(PAGE_STYLE), top, p.message, p.rows.box, p.moves.box, _options(p, w), _keep(p, w),
+                   p.load_cycle], layout=w.Layout(flex="0 0 520px", width="520px", padding="0 16px 0 0"))
+    right = w.VBox([p.status, p.results, p.chain, p.variants_html],
+                   layout=w.Layout(flex="1 1 560px", min_width="560px"))
     # Side by side on a screen; on a narrow one (a notebook beside a file browser) the results go under.
     p.panel = w.HBox([left, right], layout=w.Layout(width="100%", align_items="flex-start", flex_flow="row wrap"))
     p.panel.add_class("design-review")
@@ -546,9 +567,9 @@ def _build_widgets(p: DesignReview, w, path: Path) -> None:
 
 def _options(p: DesignReview, w):
     """The options of the results: every candidate in the tables, the ratio search, the unit system."""
-    p.all_candidates = w.Checkbox(description="all candidates", indent=False, layout=w.Layout(width="auto", flex="1 1 auto"),
+    p.all_candidates = w.Checkbox(description="all candidates", indent=False, layout=_grows(w),
                                   tooltip=f"list every candidate in the tables, not the best {SHOWN_CANDIDATES}")
-    p.ratio_search = w.Checkbox(description="ratio search", indent=False, layout=w.Layout(width="auto", flex="1 1 auto"),
+    p.ratio_search = w.Checkbox(description="ratio search", indent=False, layout=_grows(w),
                                 tooltip="the case at every ratio of the gearbox catalog, and the ratio to pick")
     p.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the results",
                               style={"button_width": "7.5em"}, layout=w.Layout(width="auto", flex="0 0 auto"))
@@ -561,12 +582,15 @@ def _keep(p: DesignReview, w):
     """What is kept: save as a case file beside the original, the same file to download, the
     variants compared, the calc report of the screen."""
     p.save_name = w.Text(placeholder="new-case.toml", tooltip="the new case file's name, in the folder of the case",
-                         layout=w.Layout(flex="1 1 auto", width="auto"))
-    save = _button(w, "Save as case file", "write the changed values into a new case file beside this one", "11em", p.save)
+                         layout=_grows(w))
+    save = _button(w, "Save as case file", "write the changed values into a new case file beside this one", "11em",
+                   p.save)
     variant = _button(w, "Keep as variant", "pin the design on the screen beside the others", "11em", p.keep_variant)
-    report = _button(w, "Calc report of this screen", "save the changed values as a case file (Save as case file) and build its calc "
-                     "report (PDF)", "15em", p.report_of_screen)
-    p.variants_pdf_button = _button(w, "Variants as PDF", "the variants kept, side by side with their figure, as a PDF (A4)", "11em",
+    report = _button(w, "Calc report of this screen",
+                     "save the changed values as a case file (Save as case file) and build its calc report (PDF)",
+                     "15em", p.report_of_screen)
+    p.variants_pdf_button = _button(w, "Variants as PDF",
+                                    "the variants kept, side by side with their figure, as a PDF (A4)", "11em",
                                     p.variants_pdf, disabled=True)
     p.download, p.kept = w.HTML(), w.HTML()
     # The page's script hands the variants a link carries to the kernel through this field (hidden).
@@ -585,7 +609,8 @@ def _build_report(case: Path, pdf: Path):
     import subprocess
     import sys
 
-    return subprocess.run([sys.executable, "-m", "calc", "report", str(case), "-o", str(pdf)], capture_output=True, text=True)
+    command = [sys.executable, "-m", "calc", "report", str(case), "-o", str(pdf)]
+    return subprocess.run(command, capture_output=True, text=True)
 
 
 def _close(widget) -> None:

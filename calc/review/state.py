@@ -24,14 +24,14 @@ from ..sections import motion as motion_section
 from ..sections.case import Case, read_case
 from ..sections.ratios import search as search_ratios
 from .edit import changed_text, edited_case, moves_edits, value_text
-from .inputs import (MECHANISM, MOVE_TIMES, SELECTION, TYPED, InputSpec, input_edits, is_inch_pound, option_text, read_typed,
-                     review_specs)
+from .inputs import (MECHANISM, MOVE_TIMES, SELECTION, TYPED, InputSpec, input_edits, is_inch_pound, option_text,
+                     read_typed, review_specs)
 from .keep import save_path
 from .view import evaluated
 
 #: The attribute of :class:`calc.domain.mechanism.Mechanism` of each of its keys that is named otherwise.
-MECHANISM_ATTRIBUTES = {"pitch_diameter": "diameter", "pulley_diameter": "diameter",
-                        "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia"}
+MECHANISM_ATTRIBUTES = {"pitch_diameter": "diameter", "pulley_diameter": "diameter", "screw_inertia": "own_inertia",
+                        "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia"}
 
 
 class History:
@@ -110,13 +110,16 @@ class Screen:
         on a coupling type without a temperature factor)."""
         coupling = self._section("coupling")
         if coupling is not None and coupling.inputs.type == "bellows":
-            return {"coupling.temperature": "no effect on this design: a metal bellows coupling has no temperature factor (E9)"}
+            return {"coupling.temperature":
+                    "no effect on this design: a metal bellows coupling has no temperature factor (E9)"}
         return {}
 
 
 def without_folder(text: str, path: Path) -> str:
     """An error without the server's folders: the case file by its name."""
-    return text.replace(str(path.resolve()), path.name).replace(str(path), path.name).replace(str(path.parent) + "/", "")
+    for folder in (str(path.resolve()), str(path)):
+        text = text.replace(folder, path.name)
+    return text.replace(str(path.parent) + "/", "")
 
 
 class ReviewState:
@@ -217,7 +220,10 @@ class ReviewState:
             spec = next((s for s in self.specs if s.key == key), None)
             if spec is None:
                 raise CalcError(f"{self.path.name} has no input {key}")
-            value = next((o for o in spec.options if option_text(o) == text), None) if spec.options else read_typed(text, spec)
+            if spec.options:
+                value = next((o for o in spec.options if option_text(o) == text), None)
+            else:
+                value = read_typed(text, spec)
             if value is None:
                 raise CalcError(f"{spec.label}: {text!r} is not one of its choices")
             self.set_value(key, value)
@@ -232,7 +238,8 @@ class ReviewState:
 
     def _value_edits(self) -> list:
         """The changed values as edits of the case file (a part left to the selection: its key taken out)."""
-        changes = {key: (None if v == SELECTION else v) if isinstance(v, str) else (v, unit) for key, (v, unit) in self.changes().items()}
+        changes = {key: (None if v == SELECTION else v) if isinstance(v, str) else (v, unit)
+                   for key, (v, unit) in self.changes().items()}
         return input_edits(self.case, changes)
 
     def changed_case(self) -> Case:
@@ -305,14 +312,9 @@ class ReviewState:
     def entries(self) -> list[str]:
         """The entries of the moves, each ``"move"`` or ``"dwell"`` (none where the case has no moves)."""
         motion = self.case.motion if self.case is not None else None
-        return ["dwell" if "dwell" in m else "move" for m in motion.tables["move"]] if motion is not None and motion.moves else []
-
-    def added_entries(self) -> set:
-        """The entries of the moves (counted from 1) that the edits added."""
-        added: list = []  # the added entries' places, kept up to date edit by edit
-        for edit in self.moves:
-            added = [p for k in added if (p := _place(k, edit)) is not None] + ([edit[1] + 1] if edit[0] == "add" else [])
-        return set(added)
+        if motion is None or not motion.moves:
+            return []
+        return ["dwell" if "dwell" in m else "move" for m in motion.tables["move"]]
 
     def _entry_texts(self, k: int) -> dict:
         """Entry ``k`` of the moves as a case file writes it, at the inputs' values (a ramp the
@@ -349,7 +351,8 @@ class ReviewState:
             if type_ != "rotary":
                 t = size_text.strip().replace(",", ".")
                 if not TYPED.match(t) or not float(t) > 0:
-                    raise CalcError(f"a {type_} needs its {'lead' if type_ == 'ball-screw' else 'diameter'}: expected a number above zero "
+                    what = "lead" if type_ == "ball-screw" else "diameter"
+                    raise CalcError(f"a {type_} needs its {what}: expected a number above zero "
                                     f"(in {self.length_unit()}), found {size_text.strip()!r}")
                 size = Q_(float(t), self.length_unit())
             edit = mechanism_edit(self.changed_case(), type_, size, self.length_unit() == "in")
@@ -381,9 +384,10 @@ class ReviewState:
         """What the edits of the moves made of the input ``key``, or None: an entry added here,
         or a value set by a change of the mechanism's type."""
         m = _ENTRY.match(key)
-        if m is not None and int(m.group(1)) in self.added_entries():
+        if m is not None and int(m.group(1)) in added_entries(self.moves):
             return "an entry added here: not in the file"
-        if any(e[0] == "mechanism" for e in self.moves) and (key.startswith("mechanism.") or (m is not None and key.endswith(".distance"))):
+        set_by_type = key.startswith("mechanism.") or (m is not None and key.endswith(".distance"))
+        if set_by_type and any(e[0] == "mechanism" for e in self.moves):
             return "set by the change of the mechanism's type: not in the file"
         return None
 
@@ -406,7 +410,8 @@ class ReviewState:
             except CalcError as exc:
                 ratios = self.in_words(str(exc))
         typed = self.case.motion is not None and case.motion is None
-        self.shown = Screen(case, report, [self.in_words(x) for x in left_out], None, ratios, typed, moves, texts, changes, text)
+        left_out = [self.in_words(x) for x in left_out]
+        self.shown = Screen(case, report, left_out, None, ratios, typed, moves, texts, changes, text)
         return self.shown
 
 
@@ -424,13 +429,15 @@ def mechanism_edit(case: Case, type_: str, size, inch: bool) -> list:
         elif q is not None and key.name in MECHANISM:
             unit = MECHANISM[key.name][1] if inch else key.unit
             v = float(q.m_as(unit or ""))
-            v = 0.0 if abs(v) < 1e-9 else v  # cos 90° is 6e-17 in floating point: a vertical axis' guide carries nothing
+            # cos 90° is 6e-17 in floating point: a vertical axis' guide carries nothing
+            v = 0.0 if abs(v) < 1e-9 else v
             keys[key.name] = v if not unit else value_text(v, unit)
     distances, unit = {}, "deg" if not new.linear else ("in" if inch else "mm")
     for k, given in enumerate(case.motion.distances, start=1):  # None: a dwell
         if given is not None:
             distances[str(k)] = value_text(float(converted_distance(old, new, given).m_as(unit)), unit)
-    said = f"mechanism {old.type} -> {type_}" + (f" of {value_text(size.magnitude, f'{size.units:~}')}" if size is not None else "")
+    said = f"mechanism {old.type} -> {type_}"
+    said += "" if size is None else f" of {value_text(size.magnitude, f'{size.units:~}')}"
     said += " (equivalent at the gearbox output" + (f"; left out: {'; '.join(left)})" if left else ")")
     return ["mechanism", keys, distances, said]
 
@@ -442,6 +449,19 @@ def _field_text(spec: InputSpec, value) -> str:
 
 #: An input of an entry of the moves: ``move[2].time``.
 _ENTRY = re.compile(r"^move\[(\d+)\]\.")
+
+
+def added_entries(moves) -> set:
+    """The entries of the moves (counted from 1) that the edits ``moves`` added.
+
+    >>> sorted(added_entries([["add", 2, {"dwell": "1 s"}], ["add", 0, {"dwell": "2 s"}], ["remove", 2]]))
+    [1, 3]
+    """
+    added: list = []  # the added entries' places, kept up to date edit by edit
+    for edit in moves:
+        added = [p for k in added if (p := _place(k, edit)) is not None]
+        added += [edit[1] + 1] if edit[0] == "add" else []
+    return set(added)
 
 
 def _place(k: int, edit) -> int | None:
@@ -462,7 +482,8 @@ def _moved(values: dict, edit) -> dict:
     {'move[1].dwell': 1.0}
     """
     if edit[0] == "mechanism":  # it writes the mechanism's values and the distances itself
-        return {key: v for key, v in values.items() if not key.startswith("mechanism.") and not (_ENTRY.match(key) and key.endswith(".distance"))}
+        return {key: v for key, v in values.items()
+                if not key.startswith("mechanism.") and not (_ENTRY.match(key) and key.endswith(".distance"))}
     out = {}
     for key, v in values.items():
         m = _ENTRY.match(key)

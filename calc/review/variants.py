@@ -22,7 +22,8 @@ def variant_name(number: int, file: str, specs, changes: dict, moves) -> str:
     """A variant's name: its number, the case file, and what was changed in it."""
     labels = {spec.key: spec.label for spec in specs}
     said = "; ".join([edit_text(e) for e in moves]
-                     + [f"{labels[k]} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}" for k, (v, u) in changes.items()])
+                     + [f"{labels[k]} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}"
+                        for k, (v, u) in changes.items()])
     return f"{number}: {file}" + (f" with {said}" if said else " as written")
 
 
@@ -40,7 +41,8 @@ class Variants:
         shown = state.shown
         if shown is None or shown.report is None:
             raise CalcError("the inputs give no design (an input error)")
-        self.kept.append((variant_name(len(self.kept) + 1, state.path.name, state.specs, shown.changes, shown.moves), shown.report))
+        name = variant_name(len(self.kept) + 1, state.path.name, state.specs, shown.changes, shown.moves)
+        self.kept.append((name, shown.report))
         self.states.append({"case": state.path.name, "edits": shown.moves, "values": shown.changed_texts})
 
     def follow(self, text: str, files: CaseFiles) -> list[str] | None:
@@ -49,7 +51,8 @@ class Variants:
         each. None where the text gives no states, or those kept."""
         try:
             states = json.loads(text) if text else []
-            states = [{"case": str(st["case"]), "edits": [list(e) for e in st["edits"]], "values": dict(st["values"])} for st in states]
+            states = [{"case": str(st["case"]), "edits": [list(e) for e in st["edits"]], "values": dict(st["values"])}
+                      for st in states]
         except (ValueError, TypeError, KeyError, AttributeError):
             return None
         self.asked = states

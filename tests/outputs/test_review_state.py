@@ -15,7 +15,7 @@ from calc.core.errors import CalcError
 from calc.review.edit import Edit, edited_text
 from calc.review.inputs import SELECTION
 from calc.review.keep import CaseFiles
-from calc.review.state import History, ReviewState
+from calc.review.state import History, ReviewState, added_entries
 from calc.review.variants import Variants
 from calc.sections import evaluate
 from calc.sections.case import read_case
@@ -46,16 +46,18 @@ def test_a_dwell_added_is_undone_and_redone(example):
     assert results(example)["duty"]["ED"]["value"] == pytest.approx(100 / 3)
     assert not example.history.can_undo and example.entries() == ["move", "dwell"]
     example.add_entry(2, "dwell")
-    assert example.entries() == ["move", "dwell", "dwell"] and example.added_entries() == {3}
+    assert example.entries() == ["move", "dwell", "dwell"] and added_entries(example.moves) == {3}
     assert results(example)["duty"]["ED"]["value"] == pytest.approx(20.0)
-    assert example.from_edits("move[3].dwell") == "an entry added here: not in the file" and example.from_edits("move[2].dwell") is None
+    assert example.from_edits("move[3].dwell") == "an entry added here: not in the file"
+    assert example.from_edits("move[2].dwell") is None
     assert example.modified() and example.changes() == {}  # an edit of the moves, no value changed
     example.undo()
     assert example.entries() == ["move", "dwell"] and not example.modified()
     assert results(example)["duty"]["ED"]["value"] == pytest.approx(100 / 3)
     assert example.history.can_redo and not example.history.can_undo
     example.redo()
-    assert example.entries() == ["move", "dwell", "dwell"] and results(example)["duty"]["ED"]["value"] == pytest.approx(20.0)
+    assert example.entries() == ["move", "dwell", "dwell"]
+    assert results(example)["duty"]["ED"]["value"] == pytest.approx(20.0)
     # The edit is the file's text: the saved case has the three entries and reads as the screen.
     text = example.case_text()
     assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3\n")
@@ -77,7 +79,8 @@ def test_a_value_changed_is_written_into_the_file_and_read_again(example):
     assert after["cyclic"]["T2max"]["value"] == pytest.approx(81.965, abs=0.01)
     assert example.changed_case().motion.tables["move"][0]["time"] == "1 s"  # read from the text, as saved
     text = example.case_text()
-    assert text.startswith("# Changed in the design review from axis.toml: move[1].time 0.5 s -> 1 s\n") and 'time = "1 s"' in text
+    assert text.startswith("# Changed in the design review from axis.toml: move[1].time 0.5 s -> 1 s\n")
+    assert 'time = "1 s"' in text
     assert example.shown.text == text  # the screen's case is read from the text saved
     # The same value again changes nothing; back to the file's value, the case is the file's.
     assert not example.type_text("move[1].time", "1")
@@ -94,8 +97,10 @@ def test_a_refused_text_changes_no_value_and_a_decimal_comma_is_a_point(example)
     example.set_value("mechanism.inertia", 1600.0)  # a slider moved: the refused text stays in its field
     assert example.texts["mechanism.inertia"] == "abc"
     assert example.type_text("mechanism.inertia", "1550,5")
-    assert example.values["mechanism.inertia"] == 1550.5 and example.texts["mechanism.inertia"] == "1550.5" and not example.refused
-    assert example.type_text("move[2].dwell", "1e9") and example.values["move[2].dwell"] == 1.0  # out of range: kept, never clamped
+    assert example.values["mechanism.inertia"] == 1550.5
+    assert example.texts["mechanism.inertia"] == "1550.5" and not example.refused
+    assert example.type_text("move[2].dwell", "1e9")
+    assert example.values["move[2].dwell"] == 1.0  # out of range: kept, never clamped
     assert "outside the range of 2 dwell: time t" in example.refused["move[2].dwell"][1]
 
 
@@ -104,7 +109,8 @@ def test_a_forced_gearbox_part_is_a_key_of_the_file(example):
     example.set_value("gearbox.part", "NPT025-10")
     r = results(example)
     assert r["verdict"]["passes"] is False and r["gearbox"]["selected"] is None
-    assert 'part = "NPT025-10"' in example.case_text() and "gearbox.part (not given) -> NPT025-10" in example.case_text()
+    assert 'part = "NPT025-10"' in example.case_text()
+    assert "gearbox.part (not given) -> NPT025-10" in example.case_text()
     example.set_value("gearbox.part", SELECTION)
     assert example.changes() == {} and results(example)["gearbox"]["selected"] == "NPT035-10"
 
@@ -124,7 +130,8 @@ def test_variants_are_kept_compared_and_carried_by_a_link(example):
     # A link's states give the same variants, each evaluated again from its case file.
     again = Variants()
     assert again.follow(json.dumps(variants.states), CaseFiles(example.path)) == []
-    assert [name for name, _ in again.kept] == [name for name, _ in variants.kept] and again.comparison("SI") == compared
+    assert [name for name, _ in again.kept] == [name for name, _ in variants.kept]
+    assert again.comparison("SI") == compared
     missed = again.follow(json.dumps([{"case": "gone.toml", "edits": [], "values": {}}]), CaseFiles(example.path))
     assert missed == ["variant 1: no case file 'gone.toml' among the cases"] and again.kept == []
 
@@ -134,8 +141,8 @@ def test_the_address_of_a_state_gives_the_same_screen(example):
     example.type_text("move[2].distance", "-90")  # back to where the table started
     example.evaluate()
     address = {"edits": example.shown.moves, "values": example.shown.changed_texts}
-    assert address == {"edits": [["add", 1, {"distance": "90 deg", "time": "0.5 s", "accel_time": "0.15 s", "jerk_time": "0.03 s"}]],
-                       "values": {"move[2].distance": "-90"}}
+    copy = {"distance": "90 deg", "time": "0.5 s", "accel_time": "0.15 s", "jerk_time": "0.03 s"}
+    assert address == {"edits": [["add", 1, copy]], "values": {"move[2].distance": "-90"}}
     other = ReviewState(example.path)
     other.load()
     assert other.follow_moves(address["edits"]) and not other.follow_moves(address["edits"])
@@ -149,10 +156,10 @@ def test_the_address_of_a_state_gives_the_same_screen(example):
 
 def test_an_edit_that_cannot_be_made_leaves_the_state_as_it_was(example):
     example.remove_entry(2)  # the dwell: one move is left
-    with pytest.raises(CalcError, match=r"^axis.toml: move\[1\] is the only \[\[move\]\] table: it cannot be taken out$"):
+    with pytest.raises(CalcError, match=r"^axis.toml: move\[1\] is the only \[\[move\]\] table: it cannot be "):
         example.remove_entry(1)
     assert example.entries() == ["move"] and len(example.moves) == 1
-    with pytest.raises(CalcError, match=r"^a belt needs its diameter: expected a number above zero \(in mm\), found '0'$"):
+    with pytest.raises(CalcError, match=r"^a belt needs its diameter: expected a number above zero \(in mm\), found"):
         example.change_mechanism("belt", "0")
     assert example.case.motion.mechanism.type == "rotary"
 
@@ -161,7 +168,8 @@ def test_the_mechanisms_type_changes_and_is_undone(example):
     # A ball screw of 20 mm lead: the moved mass 0.15 kg·m² / (0.02 m / 2π)² = 14 804.4 kg.
     said = example.change_mechanism("ball-screw", "20")
     assert said.startswith("mechanism rotary -> ball-screw of 20 mm (equivalent at the gearbox output")
-    assert example.texts["mechanism.mass"] == "14804.4066" and example.from_edits("mechanism.mass").startswith("set by the change")
+    assert example.texts["mechanism.mass"] == "14804.4066"
+    assert example.from_edits("mechanism.mass").startswith("set by the change")
     assert example.case.motion.tables["move"][0]["distance"] == "5 mm"  # a quarter turn of 20 mm
     example.undo()
     assert example.case.motion.mechanism.type == "rotary" and example.moves == []
@@ -174,7 +182,8 @@ def test_a_segment_of_a_recorded_cycle_types_the_cycle(tmp_path):
     J_L in [load]; the saved file reads as the screen."""
     (tmp_path / "rec.csv").write_text("time [s],speed [rad/s]\n0,0\n1,2\n2,2\n3,0\n")
     path = tmp_path / "rec.toml"
-    path.write_text('[gearbox]\nratio = 10\n[mechanism]\ntype = "rotary"\ninertia = "1500 kg*cm**2"\n[drive_record]\nfile = "rec.csv"\n')
+    path.write_text('[gearbox]\nratio = 10\n[mechanism]\ntype = "rotary"\ninertia = "1500 kg*cm**2"\n'
+                    '[drive_record]\nfile = "rec.csv"\n')
     state = ReviewState(path)
     state.load()
     assert [(s.key, s.value) for s in state.specs if s.key.endswith("torque")] == [
@@ -182,8 +191,9 @@ def test_a_segment_of_a_recorded_cycle_types_the_cycle(tmp_path):
     state.set_value("profile[1].torque", 9.0)
     assert state.evaluate().typed_by_hand and state.changed_case().motion is None
     text = state.case_text()
-    assert text.startswith("# Changed in the design review from rec.toml: [drive_record] taken out; [mechanism] taken out; "
-                           "profile written as 3 tables; load.inertia (not given) -> 1500 kg*cm**2; profile[1].torque 0.3 N*m -> 9 N*m\n")
+    assert text.startswith("# Changed in the design review from rec.toml: [drive_record] taken out; "
+                           "[mechanism] taken out; profile written as 3 tables; "
+                           "load.inertia (not given) -> 1500 kg*cm**2; profile[1].torque 0.3 N*m -> 9 N*m\n")
     saved = read_case(state.save("typed.toml"))
     assert saved.motion is None and saved.load_inertia.m_as("kg*cm**2") == 1500.0
     assert evaluate(saved).to_json()["continuous"] == results(state)["continuous"]
@@ -213,7 +223,8 @@ def test_the_history_keeps_each_change_once():
     history.push(("[]", {"a": 3}))
     assert history.undo() == ("[]", {"a": 2}) and history.can_redo
     history.push(("[]", {"a": 4}))  # a change after an undo drops what was undone
-    assert not history.can_redo and history.undo() == ("[]", {"a": 2}) and history.undo() == ("[]", {"a": 1}) and history.undo() is None
+    assert not history.can_redo and history.undo() == ("[]", {"a": 2})
+    assert history.undo() == ("[]", {"a": 1}) and history.undo() is None
 
 
 def test_every_edit_keeps_the_files_comments():
