@@ -40,6 +40,20 @@ class Edit:
 def value_text(number: float, unit: str) -> str:
     """A number in ``unit`` as the case file writes it: ``"1.5 s"``; a bare number without a unit.
 
+    Parameters
+    ----------
+    number : float
+        The value [``unit``].
+    unit : str
+        Its unit as a case file writes it (``"N*m"``), or ``""``.
+
+    Returns
+    -------
+    str
+        The text, twelve significant digits.
+
+    Examples
+    --------
     >>> value_text(1.5, "s"), value_text(0.9, "")
     ('1.5 s', '0.9')
     """
@@ -47,9 +61,26 @@ def value_text(number: float, unit: str) -> str:
 
 
 def edited_text(text: str, edits, source: str) -> str:
-    """The TOML text ``text`` with each of ``edits`` (:class:`Edit`) applied in order; the other
-    tables, comments and layout are kept. ``source`` names the file in an error.
+    """The TOML text ``text`` with each of ``edits`` applied in order; the other tables, comments
+    and layout are kept.
 
+    Parameters
+    ----------
+    text : str
+        A case file's text.
+    edits : iterable of Edit
+        The edits, in order.
+    source : str
+        The file's name, for an error.
+
+    Returns
+    -------
+    str
+        The edited text. An edit that cannot be made raises :class:`calc.core.errors.CalcError`
+        naming the file and the key path.
+
+    Examples
+    --------
     >>> text = '[motor]\\npeak_torque = "12 N*m"  # T_1B\\n[[move]]\\ndwell = "1 s"\\n'
     >>> edits = [Edit("motor.peak_torque", "16 N*m"), Edit("move[2]", {"dwell": "0.5 s"}, insert=True)]
     >>> print(edited_text(text, edits, "a.toml"))
@@ -70,9 +101,23 @@ def edited_text(text: str, edits, source: str) -> str:
 
 
 def edited_case(path: Path, text: str | None, edits) -> Case:
-    """The case file ``path`` of the text ``text`` (None: as the file reads) with ``edits``, read
-    by the case reader; a case whose text cannot be read, or whose edits do not read, says why
-    (:class:`calc.core.errors.CalcError`)."""
+    """The case file read again by the case reader with ``edits`` written into its text.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The case file (its folder finds the files it names).
+    text : str or None
+        Its text; None: as the file reads (then with no edit).
+    edits : iterable of Edit
+        The edits (:func:`edited_text`).
+
+    Returns
+    -------
+    calc.sections.case.Case
+        The case; a text that cannot be read, or edits that do not read, raise
+        :class:`calc.core.errors.CalcError` saying why.
+    """
     return read_case(path, edited_text(text, edits, path.name) if edits and text is not None else text)
 
 
@@ -196,6 +241,17 @@ def _edit_entry(table, name: str, k: int, edit: Edit, source: str):
 def moves_edits(edit) -> list[Edit]:
     """An edit of the moves (see the module's docstring) as key-path edits.
 
+    Parameters
+    ----------
+    edit : sequence
+        ``("add", k, keys)``, ``("remove", k)`` or ``("mechanism", keys, distances, said)``.
+
+    Returns
+    -------
+    list of Edit
+
+    Examples
+    --------
     >>> moves_edits(("add", 2, {"dwell": "1 s"})), moves_edits(("remove", 1))
     ([Edit(key='move[3]', value={'dwell': '1 s'}, insert=True)], [Edit(key='move[1]', value=None, insert=False)])
     """
@@ -209,6 +265,17 @@ def moves_edits(edit) -> list[Edit]:
 def edit_text(edit) -> str:
     """An edit of the moves in words.
 
+    Parameters
+    ----------
+    edit : sequence
+        An edit of the moves (:func:`moves_edits`).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
     >>> edit_text(("add", 2, {"dwell": "0.5 s"})), edit_text(("remove", 1))
     ('dwell 0.5 s added as entry 3', 'entry 1 of the moves removed')
     """
@@ -223,9 +290,27 @@ def edit_text(edit) -> str:
 
 def changed_text(original: str, moves, edits, source: str) -> str:
     """The TOML text ``original`` with the edits of the ``moves`` and then ``edits`` applied, and a
-    first comment naming them and the file ``source`` they were made to: each edit of the moves in
-    words (:func:`edit_text`), each value as it was and as it is.
+    first comment naming them and the file they were made to: each edit of the moves in words
+    (:func:`edit_text`), each value as it was and as it is.
 
+    Parameters
+    ----------
+    original : str
+        The case file's text.
+    moves : list
+        The edits of the moves (:func:`moves_edits`), in order.
+    edits : list of Edit
+        The edits of values after them.
+    source : str
+        The case file's name.
+
+    Returns
+    -------
+    str
+        The text a changed case is read from and saved as.
+
+    Examples
+    --------
     >>> text = '# axis\\n[motor]\\npeak_torque = "12 N*m"  # T_1B\\n'
     >>> print(changed_text(text, [], [Edit("motor.peak_torque", "16 N*m")], "a.toml"))
     # Changed in the design review from a.toml: motor.peak_torque 12 N*m -> 16 N*m

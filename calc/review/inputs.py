@@ -66,7 +66,17 @@ class InputSpec:
 
 
 def option_text(value) -> str:
-    """A choice's value as the page shows it: a ratio as ``8``, a part by its name."""
+    """A choice's value as the page shows it: a ratio as ``8``, a part by its name.
+
+    Parameters
+    ----------
+    value : float or str
+        A ratio [-] or a part's name.
+
+    Returns
+    -------
+    str
+    """
     return value if isinstance(value, str) else f"{value:g}"
 
 
@@ -226,7 +236,17 @@ def is_inch_pound(unit: str) -> bool:
 
 def file_tables(case: Case) -> dict:
     """The tables of the case's file as its text writes them (a value the reader derives, takes
-    from a catalog or defaults is not there)."""
+    from a catalog or defaults is not there).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+
+    Returns
+    -------
+    dict
+        The parsed TOML (tomllib).
+    """
     return tomllib.loads(case.raw.decode("utf-8-sig"))
 
 
@@ -269,13 +289,33 @@ SELECTION = "the selection's"
 
 
 def catalog_ratios(case: Case) -> list[float]:
-    """The ratios of the case's gearbox catalog (the choices of the ratio control)."""
+    """The ratios of the case's gearbox catalog (the choices of the ratio control).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+
+    Returns
+    -------
+    list of float
+        The distinct ratios [-], ascending.
+    """
     return sorted(set(gearbox_catalogs(case)[0]["ratio"].m_as("").tolist()))
 
 
 def forced_part_spec(case: Case) -> InputSpec:
     """The gearbox part the reviewer forces (``[gearbox] part``, checked alone): a choice among
-    the catalog's rows at the case's ratio (not the partial ones), or the selection's."""
+    the catalog's rows at the case's ratio (not the partial ones), or the selection's.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+
+    Returns
+    -------
+    InputSpec
+        A choice; its value the case's part, else :data:`SELECTION`.
+    """
     catalog = gearbox_catalogs(case)[0]
     ratio = float(case.ratio.m_as(""))
     parts = [str(p) for p, r, partial in zip(catalog.parts, catalog["ratio"].m_as(""), catalog.partial)
@@ -285,7 +325,17 @@ def forced_part_spec(case: Case) -> InputSpec:
 
 def forced_motor_spec(case: Case) -> InputSpec:
     """The motor the reviewer forces (``[motor] part``, checked alone): a choice among the motor
-    catalog's rows (not the partial ones), or the catalog's choice."""
+    catalog's rows (not the partial ones), or the catalog's choice.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+
+    Returns
+    -------
+    InputSpec
+        A choice; its value the case's part, else :data:`SELECTION`.
+    """
     catalog = drive.motor_catalog(case)
     parts = [str(p) for p, partial in zip(catalog.parts, catalog.partial) if not partial]
     return _choice("motor.part", "motor part forced", parts, case.motor_part)
@@ -299,7 +349,16 @@ def _choice(key: str, label: str, parts: list, given: str | None) -> InputSpec:
 
 def review_specs(case: Case) -> list[InputSpec]:
     """The panel's inputs of ``case``: :func:`input_specs` (the ratio among the catalog's), then
-    the parts to force."""
+    the parts to force (:func:`forced_part_spec`, :func:`forced_motor_spec`).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+
+    Returns
+    -------
+    list of InputSpec
+    """
     ratios = catalog_ratios(case) if case.ratio is not None else []
     return (input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
             + ([forced_motor_spec(case)] if case.motor_catalog is not None else []))
@@ -314,6 +373,20 @@ def read_typed(text: str, spec: InputSpec) -> float:
     not a number, or outside the input's range, is refused with a sentence saying why (never
     clamped).
 
+    Parameters
+    ----------
+    text : str
+        The field's text.
+    spec : InputSpec
+        The input.
+
+    Returns
+    -------
+    float
+        The value [``spec.unit``]; a text refused raises :class:`calc.core.errors.CalcError`.
+
+    Examples
+    --------
     >>> spec = InputSpec("move[1].time", "1 move: time t", "s", 0.05, 1.5, 0.01, 0.5)
     >>> read_typed(" 0,6 ", spec)
     0.6
@@ -340,6 +413,19 @@ def input_edits(case: Case, changes: dict) -> list[Edit]:
     changed where the case derives its load cycle (from moves or a drive record) makes it a typed
     one first (:func:`typed_cycle`).
 
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read (its file's text is what is edited).
+    changes : dict
+        Key path -> (number [unit], unit), a part's name, or None.
+
+    Returns
+    -------
+    list of calc.review.edit.Edit
+
+    Examples
+    --------
     >>> from pathlib import Path
     >>> from calc.sections.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
@@ -363,7 +449,18 @@ def input_edits(case: Case, changes: dict) -> list[Edit]:
 def typed_cycle(case: Case) -> list[Edit]:
     """The edits that type the load cycle ``case`` derives: every segment written as a
     ``[[profile]]`` table, the moves, the drive record and the mechanism taken out, and the load's
-    inertia the mechanism gave written into ``[load]``."""
+    inertia the mechanism gave written into ``[load]``.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        A case whose motion derives its load cycle.
+
+    Returns
+    -------
+    list of calc.review.edit.Edit
+        Durations [s], speeds [rpm] and torques [N*m] as written.
+    """
     p, rows = case.profile, []
     for phase, t, n, T in zip(p.phases, p.durations.m_as("s"), p.speeds.m_as("rpm"), p.torques.m_as("N*m")):
         rows.append({"phase": phase, "duration": value_text(t, "s")}
@@ -384,6 +481,20 @@ def with_inputs(case: Case, values: dict) -> Case:
     checked as if it stood in the file. What ``case`` holds beside its file's text (a value set in
     code, the motor an evaluation chose) is not in the copy: name it in the text (``motor.part``).
 
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    values : dict
+        Key path -> a quantity of the key's kind, a part's name (str), or None.
+
+    Returns
+    -------
+    calc.sections.case.Case
+        The changed case; a value the file cannot take raises :class:`calc.core.errors.CalcError`.
+
+    Examples
+    --------
     >>> from pathlib import Path
     >>> from calc.sections.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
@@ -420,8 +531,29 @@ def with_inputs(case: Case, values: dict) -> Case:
 def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_peak_torque=None, motor_inertia=None,
                  load_inertia=None, temperature=None, applied_torque=None) -> Case:
     """A copy of ``case`` with the given inputs replaced (quantities; ``None`` keeps the case's):
-    :func:`with_inputs` by name. ``durations`` and ``torques`` are quantity arrays over all segments.
+    :func:`with_inputs` by name. An input of a further section (coupling, accuracy) the case's
+    file does not have is left out.
 
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+    ratio : Quantity, optional
+        The gearbox ratio i [-].
+    durations, torques : Quantity arrays, optional
+        Every segment's duration [s] and output torque [N*m], in order (a pause's torque is left out).
+    motor_peak_torque, motor_inertia, load_inertia : Quantity, optional
+        T_1B [N*m], J_motor and J_L [kg*cm**2].
+    temperature : Quantity, optional
+        The coupling's temperature [degC].
+    applied_torque : Quantity, optional
+        The accuracy chain's applied torque [N*m].
+
+    Returns
+    -------
+    calc.sections.case.Case
+
+    Examples
+    --------
     >>> from pathlib import Path
     >>> from calc.sections.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")

@@ -25,8 +25,22 @@ SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are
 
 def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
     """An input's label with its unit (the whole of it, and what became of the file's value, as
-    its tooltip; its key path as ``data-key``), marked where changed or ``added`` by an edit of
-    the moves."""
+    its tooltip; its key path as ``data-key``), marked where changed or made by an edit of the moves.
+
+    Parameters
+    ----------
+    spec : InputSpec
+        The input.
+    changed : bool
+        Whether its value differs from the file's.
+    added : str, optional
+        What an edit of the moves made of it, in words.
+
+    Returns
+    -------
+    str
+        HTML.
+    """
     unit = pretty_unit(spec.unit) if spec.unit else ""
     file_value = spec.field_text(spec.value) if not spec.options else option_text(spec.value)
     file_value += f" {unit}" if unit else ""
@@ -37,44 +51,136 @@ def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
 
 
 def message_html(refused: str | None, idle: str | None = None) -> str:
-    """The message under an input's row: why its text was refused, else that it has no effect."""
+    """The message under an input's row: why its text was refused, else that it has no effect.
+
+    Parameters
+    ----------
+    refused : str or None
+        Why the text typed was refused.
+    idle : str, optional
+        Why the input has no effect on the design.
+
+    Returns
+    -------
+    str
+        HTML (empty where there is nothing to say).
+    """
     if refused:
         return f'<div class="dr-message">{typeset(refused)}</div>'
     return f'<div class="dr-idle">{typeset(idle)}</div>' if idle else ""
 
 
 def error_html(word: str, why: str) -> str:
-    """What could not be done (``word``: "not saved") and why, as the page says it under its buttons."""
+    """What could not be done and why, as the page says it under its buttons.
+
+    Parameters
+    ----------
+    word : str
+        What was not done (``"not saved"``).
+    why : str
+        The sentence saying why.
+
+    Returns
+    -------
+    str
+        HTML.
+    """
     return f'<span style="color:{FAIL_COLOR}">{word}: {typeset(why)}</span>'
 
 
 def failed_html(word: str, why: str) -> str:
-    """What could not be done (``word``: "not added") and why, as the page says it under the case."""
+    """What could not be done and why, as the page says it under the case and in the results.
+
+    Parameters
+    ----------
+    word : str
+        What was not done (``"not added"``, ``"input error"``).
+    why : str
+        The sentence saying why.
+
+    Returns
+    -------
+    str
+        HTML.
+    """
     return f'<b style="color:{FAIL_COLOR}">{word}</b>: {typeset(why)}'
 
 
 def link_html(address: str | None, pdf) -> str:
-    """A PDF built by the panel: linked at ``address``, else named by its path."""
+    """A PDF built by the panel: linked at ``address``, else named by its path.
+
+    Parameters
+    ----------
+    address : str or None
+        Where the page serves it.
+    pdf : pathlib.Path
+        The PDF.
+
+    Returns
+    -------
+    str
+        HTML.
+    """
     return f'<a href="{escape(address)}" target="_blank">{escape(pdf.name)}</a>' if address else escape(str(pdf))
 
 
 def variants_attribute(variants: Variants) -> str:
-    """The variants' states, and those a link asked for (which the page's script waits for)."""
+    """The variants' states, and those a link asked for (which the page's script waits for).
+
+    Parameters
+    ----------
+    variants : calc.review.variants.Variants
+
+    Returns
+    -------
+    str
+        The two attributes of the results (HTML).
+    """
     return (f'data-variants="{escape(json.dumps(variants.states))}" '
             f'data-variants-asked="{escape(json.dumps(variants.asked))}"')
 
 
 def with_variants(results: str, variants: Variants) -> str:
-    """The results ``results`` carrying the variants' states as they now are."""
+    """The results carrying the variants' states as they now are.
+
+    Parameters
+    ----------
+    results : str
+        The results' HTML (:func:`results_text`).
+    variants : calc.review.variants.Variants
+
+    Returns
+    -------
+    str
+    """
     return re.sub(r'data-variants="[^"]*" data-variants-asked="[^"]*"', variants_attribute(variants), results, count=1)
 
 
 def results_text(state: ReviewState, screen: Screen, link: str | None, generation: int, variants: Variants) -> str:
     """The results of ``screen`` (:func:`calc.review.view.results_html`: verdict and chosen parts
     first, then the governing checks), or its input error, with the state they were computed for
-    (see the module's docstring); ``link``: the address of the case's report, beside the verdict."""
+    (see the module's docstring).
+
+    Parameters
+    ----------
+    state : calc.review.state.ReviewState
+        The state evaluated (its options, refusals and unit system).
+    screen : calc.review.state.Screen
+        Its results.
+    link : str or None
+        The address of the case's report, beside the verdict.
+    generation : int
+        The results drawn so far, these included.
+    variants : calc.review.variants.Variants
+        The variants kept (their states go with the results).
+
+    Returns
+    -------
+    str
+        HTML.
+    """
     if screen.report is None:
-        text = f'<div class="dr"><b style="color:{FAIL_COLOR}">input error</b>: {typeset(screen.error)}</div>'
+        text = f'<div class="dr">{failed_html("input error", screen.error)}</div>'
     else:
         refused = [f"{state.spec(k).label}: {why}" for k, (_, why) in state.refused.items()]
         text = results_html(screen.report, screen.left_out, link, typed_by_hand=screen.typed_by_hand,

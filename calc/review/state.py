@@ -116,7 +116,24 @@ class Screen:
 
 
 def without_folder(text: str, path: Path) -> str:
-    """An error without the server's folders: the case file by its name."""
+    """An error without the server's folders: the case file by its name.
+
+    Parameters
+    ----------
+    text : str
+        The error.
+    path : pathlib.Path
+        The case file.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> without_folder("/srv/cases/a.toml: motor.inertia: expected ...", Path("/srv/cases/a.toml"))
+    'a.toml: motor.inertia: expected ...'
+    """
     for folder in (str(path.resolve()), str(path)):
         text = text.replace(folder, path.name)
     return text.replace(str(path.parent) + "/", "")
@@ -418,7 +435,24 @@ class ReviewState:
 def mechanism_edit(case: Case, type_: str, size, inch: bool) -> list:
     """The edit of the moves (:mod:`calc.review.edit`) that puts a mechanism of ``type_`` (of
     lead or diameter ``size``) in place of the case's, its values equivalent at the gearbox output
-    and written in inch-pound units where ``inch``, the moves' distances converted."""
+    and written in inch-pound units where ``inch``, the moves' distances converted.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        A case whose load cycle is derived from moves.
+    type_ : str
+        One of :data:`calc.domain.mechanism.TYPES`.
+    size : Quantity or None
+        A linear type's lead or diameter [mm or in].
+    inch : bool
+        Whether the case writes inch-pound units.
+
+    Returns
+    -------
+    list
+        ``["mechanism", keys, distances, said]``.
+    """
     old = case.motion.mechanism
     new, left = converted(old, type_, size)
     keys = {}
@@ -454,6 +488,17 @@ _ENTRY = re.compile(r"^move\[(\d+)\]\.")
 def added_entries(moves) -> set:
     """The entries of the moves (counted from 1) that the edits ``moves`` added.
 
+    Parameters
+    ----------
+    moves : list
+        The edits of the moves, in order (:mod:`calc.review.edit`).
+
+    Returns
+    -------
+    set of int
+
+    Examples
+    --------
     >>> sorted(added_entries([["add", 2, {"dwell": "1 s"}], ["add", 0, {"dwell": "2 s"}], ["remove", 2]]))
     [1, 3]
     """

@@ -19,7 +19,25 @@ from .view import comparison_html, comparison_pdf, comparison_rows, worst_utiliz
 
 
 def variant_name(number: int, file: str, specs, changes: dict, moves) -> str:
-    """A variant's name: its number, the case file, and what was changed in it."""
+    """A variant's name: its number, the case file, and what was changed in it.
+
+    Parameters
+    ----------
+    number : int
+        The variant's number, from 1.
+    file : str
+        The case file's name.
+    specs : iterable of calc.review.inputs.InputSpec
+        The inputs (their labels name the changes).
+    changes : dict
+        Key path -> (number [unit] or part, unit).
+    moves : list
+        The edits of the moves.
+
+    Returns
+    -------
+    str
+    """
     labels = {spec.key: spec.label for spec in specs}
     said = "; ".join([edit_text(e) for e in moves]
                      + [f"{labels[k]} {v if isinstance(v, str) else value_text(v, pretty_unit(u))}"
