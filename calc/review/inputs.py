@@ -303,53 +303,37 @@ def catalog_ratios(case: Case) -> list[float]:
     return sorted(set(gearbox_catalogs(case)[0]["ratio"].m_as("").tolist()))
 
 
-def forced_part_spec(case: Case) -> InputSpec:
-    """The gearbox part the reviewer forces (``[gearbox] part``, checked alone): a choice among
-    the catalog's rows at the case's ratio (not the partial ones), or the selection's.
+def forced_spec(case: Case, key: str) -> InputSpec:
+    """The part the reviewer forces at ``key``, checked alone: the gearbox (``gearbox.part``)
+    among the catalog's rows at the case's ratio, or the motor (``motor.part``) among the motor
+    catalog's rows; the partial rows are never offered; or the selection's.
 
     Parameters
     ----------
     case : calc.sections.case.Case
+    key : str
+        ``"gearbox.part"`` or ``"motor.part"``.
 
     Returns
     -------
     InputSpec
-        A choice; its value the case's part, else :data:`SELECTION`.
+        A choice; its value the part the case names, else :data:`SELECTION`.
     """
-    catalog = gearbox_catalogs(case)[0]
-    ratio = float(case.ratio.m_as(""))
-    parts = [str(p) for p, r, partial in zip(catalog.parts, catalog["ratio"].m_as(""), catalog.partial)
-             if r == ratio and not partial]
-    return _choice("gearbox.part", "gearbox part forced", parts, case.gearbox_part)
-
-
-def forced_motor_spec(case: Case) -> InputSpec:
-    """The motor the reviewer forces (``[motor] part``, checked alone): a choice among the motor
-    catalog's rows (not the partial ones), or the catalog's choice.
-
-    Parameters
-    ----------
-    case : calc.sections.case.Case
-
-    Returns
-    -------
-    InputSpec
-        A choice; its value the case's part, else :data:`SELECTION`.
-    """
-    catalog = drive.motor_catalog(case)
-    parts = [str(p) for p, partial in zip(catalog.parts, catalog.partial) if not partial]
-    return _choice("motor.part", "motor part forced", parts, case.motor_part)
-
-
-def _choice(key: str, label: str, parts: list, given: str | None) -> InputSpec:
-    """A part to force: the selection's, or one of ``parts`` (the case's ``given`` one among them)."""
+    if key == "gearbox.part":
+        catalog, given = gearbox_catalogs(case)[0], case.gearbox_part
+        offered = (catalog["ratio"].m_as("") == float(case.ratio.m_as(""))) & ~catalog.partial
+    else:
+        catalog, given = drive.motor_catalog(case), case.motor_part
+        offered = ~catalog.partial
     value = given or SELECTION
-    return InputSpec(key, label, "", 0, 0, 0, value, tuple(dict.fromkeys([SELECTION, *parts, value])))
+    parts = [str(p) for p, shown in zip(catalog.parts, offered) if shown]
+    options = tuple(dict.fromkeys([SELECTION, *parts, value]))
+    return InputSpec(key, f"{key.split('.')[0]} part forced", "", 0, 0, 0, value, options)
 
 
 def review_specs(case: Case) -> list[InputSpec]:
     """The panel's inputs of ``case``: :func:`input_specs` (the ratio among the catalog's), then
-    the parts to force (:func:`forced_part_spec`, :func:`forced_motor_spec`).
+    the parts to force (:func:`forced_spec`).
 
     Parameters
     ----------
@@ -360,8 +344,8 @@ def review_specs(case: Case) -> list[InputSpec]:
     list of InputSpec
     """
     ratios = catalog_ratios(case) if case.ratio is not None else []
-    return (input_specs(case, ratios) + ([forced_part_spec(case)] if case.ratio is not None else [])
-            + ([forced_motor_spec(case)] if case.motor_catalog is not None else []))
+    return (input_specs(case, ratios) + ([forced_spec(case, "gearbox.part")] if case.ratio is not None else [])
+            + ([forced_spec(case, "motor.part")] if case.motor_catalog is not None else []))
 
 
 #: A number as a reviewer types it: digits with a point or a decimal comma (``0,6``), a sign, an exponent.

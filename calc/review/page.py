@@ -70,39 +70,26 @@ def message_html(refused: str | None, idle: str | None = None) -> str:
     return f'<div class="dr-idle">{typeset(idle)}</div>' if idle else ""
 
 
-def error_html(word: str, why: str) -> str:
-    """What could not be done and why, as the page says it under its buttons.
+def failed_html(word: str, why: str, whole: bool = False) -> str:
+    """What could not be done and why, as the page says it: under the case and in the results the
+    word stands out; under the buttons (``whole``) all of it.
 
     Parameters
     ----------
     word : str
-        What was not done (``"not saved"``).
+        What was not done (``"not added"``, ``"input error"``, ``"not saved"``).
     why : str
         The sentence saying why.
+    whole : bool
+        Whether the whole of it is marked, not the word alone.
 
     Returns
     -------
     str
         HTML.
     """
-    return f'<span style="color:{FAIL_COLOR}">{word}: {typeset(why)}</span>'
-
-
-def failed_html(word: str, why: str) -> str:
-    """What could not be done and why, as the page says it under the case and in the results.
-
-    Parameters
-    ----------
-    word : str
-        What was not done (``"not added"``, ``"input error"``).
-    why : str
-        The sentence saying why.
-
-    Returns
-    -------
-    str
-        HTML.
-    """
+    if whole:
+        return f'<span style="color:{FAIL_COLOR}">{word}: {typeset(why)}</span>'
     return f'<b style="color:{FAIL_COLOR}">{word}</b>: {typeset(why)}'
 
 

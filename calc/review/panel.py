@@ -34,7 +34,7 @@ from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import InputSpec, option_text
 from .keep import CaseFiles, free_name
-from .page import (SHOWN_CANDIDATES, error_html, failed_html, label_html, link_html, message_html, results_text,
+from .page import (SHOWN_CANDIDATES, failed_html, label_html, link_html, message_html, results_text,
                    with_variants)
 from .state import ReviewState, without_folder
 from .variants import Variants
@@ -106,7 +106,7 @@ class DesignReview:
 
     def _note(self) -> str:
         """What the page says of the reports while any case is shown."""
-        return error_html("no verdicts or reports", self.files.note) if self.files.note else ""
+        return failed_html("no verdicts or reports", self.files.note, whole=True) if self.files.note else ""
 
     def _slid(self, key: str, value) -> None:
         """A slider moved or a choice made."""
@@ -184,7 +184,7 @@ class DesignReview:
         try:
             path = self.state.save(name or self.save_name.value)
         except CalcError as exc:
-            self.kept.value = error_html("not saved", str(exc))
+            self.kept.value = failed_html("not saved", str(exc), whole=True)
             return None
         self.files.add(path)
         self._relabel(sorted([*self.case_file.options, (path.name, path)], key=lambda o: o[1]))
@@ -208,7 +208,8 @@ class DesignReview:
             done = _build_report(path, pdf)
             if done.returncode != 0 or not pdf.is_file():
                 why = (done.stderr.strip().splitlines() or [f"exit {done.returncode}"])[-1]
-                self.kept.value = error_html(f"no calc report of {escape(path.name)}", without_folder(why, path))
+                said = without_folder(why, path)
+                self.kept.value = failed_html(f"no calc report of {escape(path.name)}", said, whole=True)
                 return
             self.files.reports[path] = pdf
             link = link_html(self.files.link(pdf), pdf)
@@ -226,7 +227,7 @@ class DesignReview:
         try:
             self.variants.keep(self.state)
         except CalcError as exc:
-            self.kept.value = error_html("not kept", str(exc))
+            self.kept.value = failed_html("not kept", str(exc), whole=True)
             return
         self._show_variants()
         self.kept.value = f"kept variant {len(self.variants.kept)}"
@@ -245,7 +246,7 @@ class DesignReview:
         evaluated again from its case file; one that no longer reads is left out and said."""
         missed = self.variants.follow(text, self.files)
         if missed is not None:
-            self.kept.value = error_html("not kept from the link", "; ".join(missed)) if missed else ""
+            self.kept.value = failed_html("not kept from the link", "; ".join(missed), whole=True) if missed else ""
         self._show_variants()
 
     # -- drawing the state -------------------------------------------------------------------------
