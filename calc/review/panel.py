@@ -125,7 +125,8 @@ class DesignReview:
         """An option of the results (all candidates, the ratio search, the unit system) set."""
         if getattr(self.state, name) != value:
             setattr(self.state, name, value)
-            self.drawing.changed()
+            if self.state.case is not None:  # else no case file was read: nothing to draw
+                self.drawing.changed()
 
     def undo(self) -> None:
         """Back to the values before the last change."""

@@ -173,7 +173,7 @@ class ReviewState:
         before = self.path, self.file_text
         self.path = Path(path or self.path)
         try:
-            self.file_text = self.path.read_text(encoding="utf-8")
+            self.file_text = self.path.read_text(encoding="utf-8-sig")  # an editor's byte-order mark is not TOML
         except (OSError, UnicodeDecodeError):
             self.file_text = None  # the reader says why
         try:
