@@ -119,10 +119,11 @@ def new_values(case: Path, count: int) -> list[tuple[str, str]]:
     from the file's value, inside the input's range (the ratio: the next of the catalog's)."""
     from calc.sections.case import read_case
     from calc.review import input_specs
-    from calc.review.panel import _ratios, forced_part_spec
+    from calc.review.inputs import catalog_ratios, forced_spec
 
     c = read_case(case)
-    specs = input_specs(c, _ratios(c) if c.ratio is not None else []) + ([forced_part_spec(c)] if c.ratio is not None else [])
+    specs = input_specs(c, catalog_ratios(c) if c.ratio is not None else [])
+    specs += [forced_spec(c, "gearbox.part")] if c.ratio is not None else []
     out = []
     for k in range(count):
         spec, turn = specs[k % len(specs)], k // len(specs) + 1

@@ -1,43 +1,37 @@
 """The inputs a reviewer changes: one :class:`InputSpec` per input, and a case with inputs replaced.
 
 An input is named by its key path in the case file (``motor.peak_torque``, ``profile[2].torque``
-for the second segment, ``coupling.temperature``, ``mechanism.mass``, ``move[1].time``);
-:func:`with_inputs` writes values at key paths into a copy of a case (a mechanism's or a move's
-into the tables the motion was derived from, which derive it again). The panel's controls are
-built from :func:`input_specs`, so a further input is one more line in :data:`SCALARS` or
-:data:`MECHANISM` (or one more rule for a list of tables like ``profile`` or ``move``): its name
-in the panel and the range of its slider; its kind, unit and symbol come from the key's
-declaration in its section.
+for the second segment, ``coupling.temperature``, ``mechanism.mass``, ``move[1].time``).
+:func:`input_edits` writes values at key paths as edits of the case file's text
+(:mod:`calc.review.edit`), which the case reader reads again, so a mechanism's or a move's value
+derives the motion again as reading the file does; :func:`with_inputs` and :func:`with_changes`
+give the case so changed. The panel's controls are built from :func:`input_specs`, so a further
+input is one more line in :data:`SCALARS` or :data:`MECHANISM` (or one more rule for a list of
+tables like ``profile`` or ``move``): its name in the panel and the range of its slider; its kind,
+unit and symbol come from the key's declaration in its section. The values offered are those the
+file writes: a value the reader derives or takes from a catalog is not an input.
 """
 
 from __future__ import annotations
 
-import copy
-import dataclasses
 import math
 import re
+import tomllib
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..sections.case import Case, Key, Table
-from ..domain.profile import Profile
-from ..report.symbols import symbol_text
-from ..sections import declared
-from ..sections import motion as motion_section
+from ..core.errors import CalcError
 from ..core.units import NUMBER, Q_, parse_quantity, pretty_unit
+from ..report.symbols import symbol_text
+from ..sections import FURTHER, declared, drive
+from ..sections import motion as motion_section
+from ..sections.case import Case, Key
+from ..sections.gearbox import catalogs as gearbox_catalogs
+from .edit import Edit, edited_case, value_text
 
-#: Key paths of the inputs that the case keeps as its own fields (the other sections keep their
-#: tables raw until evaluated, so their key paths are written into those tables).
-CASE_FIELDS = {
-    "gearbox.ratio": "ratio",
-    "motor.peak_torque": "motor_peak_torque",
-    "motor.inertia": "motor_inertia",
-    "load.inertia": "load_inertia",
-}
+#: A segment's input: ``profile[2].torque``.
 _SEGMENT = re.compile(r"profile\[(\d+)\]\.(duration|torque)$")
-#: Key paths of the tables a motion is derived from: ``mechanism.mass``, ``move[2].time``.
-_MOTION = re.compile(r"(mechanism)\.(\w+)$|(move)\[(\d+)\]\.(\w+)$")
 
 
 @dataclass(frozen=True)
@@ -69,6 +63,21 @@ class InputSpec:
     def text(self) -> str:
         """The label with its unit, as the panel shows it: ``motor peak torque T_1B [N·m]``."""
         return f"{self.label} [{pretty_unit(self.unit)}]" if self.unit else self.label
+
+
+def option_text(value) -> str:
+    """A choice's value as the page shows it: a ratio as ``8``, a part by its name.
+
+    Parameters
+    ----------
+    value : float or str
+        A ratio [-] or a part's name.
+
+    Returns
+    -------
+    str
+    """
+    return value if isinstance(value, str) else f"{value:g}"
 
 
 def nice_step(span: float, pixels: int = 200) -> float:
@@ -216,19 +225,6 @@ def motion_specs(case: Case) -> list[InputSpec]:
 DEFAULTS = {"coupling.temperature": "20 degC"}
 
 
-def value_at(case: Case, key: str, unit: str, kind: str):
-    """The case's value at ``key`` in ``unit`` (a float; a quantity of ``kind``), or None where the
-    case does not give it."""
-    if key in CASE_FIELDS:
-        q = getattr(case, CASE_FIELDS[key])
-        return None if q is None else float(q.m_as(unit))
-    section, name = key.split(".", 1)
-    table = case.sections.get(section)
-    if table is None or (name not in table and key not in DEFAULTS):
-        return None
-    return float(parse_quantity(table.get(name, DEFAULTS.get(key)), kind, f"{case.path}: {key}").m_as(unit))
-
-
 def is_inch_pound(unit: str) -> bool:
     """Whether ``unit`` is an inch-pound one (``lbf*in``, ``lb*in**2``, ``in``).
 
@@ -238,16 +234,20 @@ def is_inch_pound(unit: str) -> bool:
     return bool(unit) and _INCH_POUND.search(unit) is not None
 
 
-def written_unit(case: Case, key: str) -> str | None:
-    """The inch-pound unit the case file writes the value at ``key`` in (``"60 lbf*in"`` → ``lbf*in``),
-    or None: the panel then offers it in its SI unit."""
-    if key in CASE_FIELDS:
-        q = getattr(case, CASE_FIELDS[key])
-        unit = None if q is None else f"{q.units:~C}"
-    else:
-        section, name = key.split(".", 1)
-        unit = _unit_of((case.sections.get(section) or {}).get(name))
-    return unit if is_inch_pound(unit) else None
+def file_tables(case: Case) -> dict:
+    """The tables of the case's file as its text writes them (a value the reader derives, takes
+    from a catalog or defaults is not there).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+
+    Returns
+    -------
+    dict
+        The parsed TOML (tomllib).
+    """
+    return tomllib.loads(case.raw.decode("utf-8-sig"))
 
 
 def segment_specs(case: Case) -> list[InputSpec]:
@@ -264,27 +264,221 @@ def input_specs(case: Case, ratios=()) -> list[InputSpec]:
     """The inputs of ``case`` the panel offers, in the order it shows them: the ratio (a choice
     among ``ratios``, the catalog's); the mechanism's and the moves' where the case derives its
     load cycle from moves (:func:`motion_specs`), else each segment's duration and torque; then
-    :data:`SCALARS` (but the load's inertia where the mechanism gives it)."""
+    those of :data:`SCALARS` the file gives, each in its SI unit or in the inch-pound unit the
+    file writes it in."""
     specs = []
     if case.ratio is not None:
         r = float(case.ratio.m_as(""))
         specs.append(_spec("gearbox.ratio", "gearbox ratio i", "", r, 0, 1, options=tuple(sorted({*ratios, r}))))
     moves = case.motion is not None and bool(case.motion.moves)
     specs += motion_specs(case) if moves else segment_specs(case)
+    tables = file_tables(case)
     for path, name, reach in SCALARS:
         key = declared(path)
-        unit = written_unit(case, path) or key.unit
-        v = value_at(case, path, unit, key.kind)
-        if v is not None and not (moves and path == "load.inertia"):  # the mechanism gives J_L
+        section, entry = path.split(".")
+        text = tables[section].get(entry, DEFAULTS.get(path)) if isinstance(tables.get(section), dict) else None
+        if text is not None:
+            unit = _unit_of(text) if is_inch_pound(_unit_of(text)) else key.unit
+            v = float(parse_quantity(text, key.kind, f"{case.path}: {path}").m_as(unit))
             specs.append(_spec(path, input_label(key, name), unit, v, *reach(v)))
     return specs
 
 
-def with_inputs(case: Case, values: dict) -> Case:
-    """A copy of ``case`` with the quantity ``values[key]`` at each key path (a pause's torque is
-    ignored); the raw tables of further sections get the value written as text, so their readers
-    check it as if it stood in the file.
+#: The gearbox or motor choice that leaves the part to the selection (``part`` not given).
+SELECTION = "the selection's"
 
+
+def catalog_ratios(case: Case) -> list[float]:
+    """The ratios of the case's gearbox catalog (the choices of the ratio control).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+
+    Returns
+    -------
+    list of float
+        The distinct ratios [-], ascending.
+    """
+    return sorted(set(gearbox_catalogs(case)[0]["ratio"].m_as("").tolist()))
+
+
+def forced_spec(case: Case, key: str) -> InputSpec:
+    """The part the reviewer forces at ``key``, checked alone: the gearbox (``gearbox.part``)
+    among the catalog's rows at the case's ratio, or the motor (``motor.part``) among the motor
+    catalog's rows; the partial rows are never offered; or the selection's.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+    key : str
+        ``"gearbox.part"`` or ``"motor.part"``.
+
+    Returns
+    -------
+    InputSpec
+        A choice; its value the part the case names, else :data:`SELECTION`.
+    """
+    if key == "gearbox.part":
+        catalog, given = gearbox_catalogs(case)[0], case.gearbox_part
+        offered = (catalog["ratio"].m_as("") == float(case.ratio.m_as(""))) & ~catalog.partial
+    else:
+        catalog, given = drive.motor_catalog(case), case.motor_part
+        offered = ~catalog.partial
+    value = given or SELECTION
+    parts = [str(p) for p, shown in zip(catalog.parts, offered) if shown]
+    options = tuple(dict.fromkeys([SELECTION, *parts, value]))
+    return InputSpec(key, f"{key.split('.')[0]} part forced", "", 0, 0, 0, value, options)
+
+
+def review_specs(case: Case) -> list[InputSpec]:
+    """The panel's inputs of ``case``: :func:`input_specs` (the ratio among the catalog's), then
+    the parts to force (:func:`forced_spec`).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+
+    Returns
+    -------
+    list of InputSpec
+    """
+    ratios = catalog_ratios(case) if case.ratio is not None else []
+    return (input_specs(case, ratios) + ([forced_spec(case, "gearbox.part")] if case.ratio is not None else [])
+            + ([forced_spec(case, "motor.part")] if case.motor_catalog is not None else []))
+
+
+#: A number as a reviewer types it: digits with a point or a decimal comma (``0,6``), a sign, an exponent.
+TYPED = re.compile(r"^[-+]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][-+]?\d+)?$")
+
+
+def read_typed(text: str, spec: InputSpec) -> float:
+    """The number a reviewer typed into the field of ``spec``: a decimal comma is read as a point;
+    not a number, or outside the input's range, is refused with a sentence saying why (never
+    clamped).
+
+    Parameters
+    ----------
+    text : str
+        The field's text.
+    spec : InputSpec
+        The input.
+
+    Returns
+    -------
+    float
+        The value [``spec.unit``]; a text refused raises :class:`calc.core.errors.CalcError`.
+
+    Examples
+    --------
+    >>> spec = InputSpec("move[1].time", "1 move: time t", "s", 0.05, 1.5, 0.01, 0.5)
+    >>> read_typed(" 0,6 ", spec)
+    0.6
+    >>> read_typed("2", spec)
+    Traceback (most recent call last):
+    ...
+    calc.core.errors.CalcError: 2 s is outside the range of 1 move: time t, 0.05 s to 1.5 s: not applied
+    """
+    t = text.strip()
+    unit = f" {pretty_unit(spec.unit)}" if spec.unit else ""
+    if not TYPED.match(t):
+        raise CalcError(f"{t!r} is not a number: expected a number such as {spec.value:g} (in{unit or ' no unit'}), "
+                        "a decimal point or comma; not applied")
+    v = float(t.replace(",", "."))
+    if not math.isfinite(v) or not spec.low <= v <= spec.high:
+        raise CalcError(f"{t}{unit} is outside the range of {spec.label}, {spec.low:g}{unit} to {spec.high:g}{unit}: "
+                        "not applied")
+    return v
+
+
+def input_edits(case: Case, changes: dict) -> list[Edit]:
+    """The edits of the case file of ``case`` that write ``changes``: key path -> (number, unit)
+    (a bare number where the unit is ""), a part's name, or None (the key taken out). A segment
+    changed where the case derives its load cycle (from moves or a drive record) makes it a typed
+    one first (:func:`typed_cycle`).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read (its file's text is what is edited).
+    changes : dict
+        Key path -> (number [unit], unit), a part's name, or None.
+
+    Returns
+    -------
+    list of calc.review.edit.Edit
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> from calc.sections.case import read_case
+    >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
+    >>> changes = {"move[1].time": (0.6, "s"), "gearbox.ratio": (8.0, ""), "gearbox.part": "NPT025-8"}
+    >>> for edit in input_edits(case, changes):
+    ...     print(edit)
+    Edit(key='move[1].time', value='0.6 s', insert=False)
+    Edit(key='gearbox.ratio', value=8.0, insert=False)
+    Edit(key='gearbox.part', value='NPT025-8', insert=False)
+    """
+    typed = case.motion is not None and any(_SEGMENT.match(key) for key in changes)
+    edits = typed_cycle(case) if typed else []
+    for key, change in changes.items():
+        if change is not None and not isinstance(change, str):
+            number, unit = change
+            change = value_text(number, unit) if unit else float(number)
+        edits.append(Edit(key, change))
+    return edits
+
+
+def typed_cycle(case: Case) -> list[Edit]:
+    """The edits that type the load cycle ``case`` derives: every segment written as a
+    ``[[profile]]`` table, the moves, the drive record and the mechanism taken out, and the load's
+    inertia the mechanism gave written into ``[load]``.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        A case whose motion derives its load cycle.
+
+    Returns
+    -------
+    list of calc.review.edit.Edit
+        Durations [s], speeds [rpm] and torques [N*m] as written.
+    """
+    p, rows = case.profile, []
+    for phase, t, n, T in zip(p.phases, p.durations.m_as("s"), p.speeds.m_as("rpm"), p.torques.m_as("N*m")):
+        rows.append({"phase": phase, "duration": value_text(t, "s")}
+                    | ({} if phase == "pause" else {"speed": value_text(n, "rpm"), "torque": value_text(T, "N*m")}))
+    tables = file_tables(case)
+    edits = [Edit(name, None) for name in (*motion_section.FORMS, "mechanism") if name in tables]
+    edits.append(Edit("profile", rows))
+    if case.motion.J_L is not None:
+        load = [] if "load" in tables else [Edit("load", {})]
+        edits += load + [Edit("load.inertia", value_text(case.motion.J_L.m_as("kg*cm**2"), "kg*cm**2"))]
+    return edits
+
+
+def with_inputs(case: Case, values: dict) -> Case:
+    """``case`` read again from its text with the quantity ``values[key]`` written at each key
+    path (a part's name as its text, None taking the key or table out; a pause's torque, and a
+    segment's value as the case has it, are left out): :func:`input_edits`, so each value is
+    checked as if it stood in the file. What ``case`` holds beside its file's text (a value set in
+    code, the motor an evaluation chose) is not in the copy: name it in the text (``motor.part``).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    values : dict
+        Key path -> a quantity of the key's kind, a part's name (str), or None.
+
+    Returns
+    -------
+    calc.sections.case.Case
+        The changed case; a value the file cannot take raises :class:`calc.core.errors.CalcError`.
+
+    Examples
+    --------
     >>> from pathlib import Path
     >>> from calc.sections.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
@@ -292,72 +486,71 @@ def with_inputs(case: Case, values: dict) -> Case:
     >>> changed.profile.durations, changed.sections["coupling"]["temperature"], case.sections["coupling"]["temperature"]
     (<Quantity([0.15 0.2  0.15 3.  ], 'second')>, '60 degree_Celsius', '40 degC')
 
-    The example derives its cycle from its motion; a changed segment makes the cycle a typed one:
+    The example derives its cycle from its motion; a changed segment makes the cycle a typed one,
+    with the load's inertia its mechanism gave:
 
-    >>> with_inputs(case, {"motor.peak_torque": Q_(13, "N*m")}).motion is case.motion, changed.motion
-    (True, None)
+    >>> changed.motion, changed.load_inertia, case.load_inertia
+    (None, <Quantity(1500.0, 'kilogram * centimeter ** 2')>, <Quantity(1500.0, 'kilogram * centimeter ** 2')>)
 
-    A mechanism's or a move's input goes into the tables the motion was derived from, which derive
+    A mechanism's or a move's input goes into the tables the motion is derived from, which derive
     it again as reading the file does (:func:`calc.sections.motion.derive`; eta and μ as bare numbers):
 
     >>> slower = with_inputs(case, {"move[1].time": Q_(1, "s")})
     >>> slower.motion.tables["move"][0]["time"], round(slower.motion.peak_speed.m_as("rpm"), 2), case.motion.tables["move"][0]["time"]
     ('1 second', 17.65, '0.5 s')
     """
-    p = case.profile
-    durations, torques = p.durations.m_as("s").copy(), p.torques.m_as("N*m").copy()
-    fields, sections = {}, copy.deepcopy(case.sections)
-    tables = copy.deepcopy(case.motion.tables) if case.motion is not None else {}
-    moved = False
+    p, changes = case.profile, {}
     for key, q in values.items():
-        segment, motion = _SEGMENT.match(key), _MOTION.match(key)
-        if motion:
-            name = motion.group(2) or motion.group(5)
-            table = tables["mechanism"] if motion.group(1) else tables["move"][int(motion.group(4)) - 1]
-            table[name] = float(q.magnitude) if q.unitless else _text(q)  # eta and μ as the file writes them: bare numbers
-            moved = True
-        elif segment:
+        segment = _SEGMENT.match(key)
+        if segment:
             k, what = int(segment.group(1)) - 1, segment.group(2)
-            (durations if what == "duration" else torques)[k] = q.m_as("s" if what == "duration" else "N*m")
-        elif key in CASE_FIELDS:
-            fields[CASE_FIELDS[key]] = q
-        else:
-            section, name = key.split(".", 1)
-            sections[section][name] = _text(q)
-    segments = [
-        (phase, Q_(durations[k], "s"), None if phase == "pause" else p.speeds[k], None if phase == "pause" else Q_(torques[k], "N*m"))
-        for k, phase in enumerate(p.phases)
-    ]
-    profile = Profile.from_segments(segments, where=f"{case.path}: profile")
-    same = np.allclose(durations, p.durations.m_as("s"), rtol=1e-9) and np.allclose(torques, p.torques.m_as("N*m"), rtol=1e-9)
-    # Segments changed by hand are typed: the motion they were derived from no longer holds.
-    changed = dataclasses.replace(case, profile=profile, motion=case.motion if same else None, sections=sections, **fields)
-    if moved:  # the cycle derived again from the changed tables, as reading the file derives it
-        motion_section.apply(changed, motion_section.derive(Table(case.path, "", tables, motion_section.TABLES)))
-    return changed
-
-
-def _text(q) -> str:
-    """A quantity as a case file's text, in pint's own unit names, which it reads back."""
-    return f"{q.magnitude:.12g} {q.units:D}"
+            was = (p.durations if what == "duration" else p.torques)[k]
+            if (what == "torque" and p.phases[k] == "pause") or np.isclose(q.m_as(was.units), was.magnitude, rtol=1e-9):
+                continue  # a pause has no torque; a value as the case has it changes nothing
+        unit = "" if q is None or isinstance(q, str) or q.unitless else f"{q.units:D}"
+        changes[key] = q if q is None or isinstance(q, str) else (float(q.magnitude), unit)
+    return edited_case(case.path, case.raw.decode("utf-8-sig"), input_edits(case, changes))
 
 
 def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_peak_torque=None, motor_inertia=None,
                  load_inertia=None, temperature=None, applied_torque=None) -> Case:
     """A copy of ``case`` with the given inputs replaced (quantities; ``None`` keeps the case's):
-    :func:`with_inputs` by name. ``durations`` and ``torques`` are quantity arrays over all segments.
+    :func:`with_inputs` by name. An input of a further section (coupling, accuracy) the case's
+    file does not have is left out.
 
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+    ratio : Quantity, optional
+        The gearbox ratio i [-].
+    durations, torques : Quantity arrays, optional
+        Every segment's duration [s] and output torque [N*m], in order (a pause's torque is left out).
+    motor_peak_torque, motor_inertia, load_inertia : Quantity, optional
+        T_1B [N*m], J_motor and J_L [kg*cm**2].
+    temperature : Quantity, optional
+        The coupling's temperature [degC].
+    applied_torque : Quantity, optional
+        The accuracy chain's applied torque [N*m].
+
+    Returns
+    -------
+    calc.sections.case.Case
+
+    Examples
+    --------
     >>> from pathlib import Path
     >>> from calc.sections.case import read_case
     >>> case = read_case(Path(__file__).parents[2] / "cases" / "indexing-table.toml")
     >>> changed = with_changes(case, ratio=Q_(7, ""))
     >>> changed.ratio, case.ratio
-    (<Quantity(7, 'dimensionless')>, <Quantity(10.0, 'dimensionless')>)
+    (<Quantity(7.0, 'dimensionless')>, <Quantity(10.0, 'dimensionless')>)
     """
     values = {"gearbox.ratio": ratio, "motor.peak_torque": motor_peak_torque, "motor.inertia": motor_inertia,
               "load.inertia": load_inertia, "coupling.temperature": temperature, "accuracy.applied_torque": applied_torque}
-    # A further section's input is ignored where the case has no such section.
-    values = {k: v for k, v in values.items() if v is not None and (k in CASE_FIELDS or k.split(".")[0] in case.sections)}
+    # A further section's input is ignored where the case's file has no such section.
+    tables = file_tables(case)
+    values = {k: v for k, v in values.items() if v is not None
+              and (k.split(".")[0] in tables or k.split(".")[0] not in FURTHER)}
     for what, arrays in (("duration", durations), ("torque", torques)):
         if arrays is not None:
             values.update({f"profile[{k}].{what}": q for k, q in enumerate(arrays, start=1)})

@@ -203,7 +203,7 @@ def test_the_panel_offers_the_case_files_of_its_folder_only(tmp_path):
     review = DesignReview(tmp_path / "a.toml")
     assert [label for label, _ in review.case_file.options] == ["a.toml", "b.toml"]
     review.case_file.value = tmp_path / "b.toml"
-    assert review.case.path == tmp_path / "b.toml"
+    assert review.state.case.path == tmp_path / "b.toml"
 
 
 def test_the_accuracy_chain_follows_a_change_of_ratio(case):
@@ -251,7 +251,7 @@ def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
 
 def test_slider_labels_read_as_written():
     panel = DesignReview(EXAMPLE)
-    described = [s.text for s in panel.specs]
+    described = [s.text for s in panel.state.specs]
     assert "load inertia J_L [kg·cm²]" in described
     assert not any("··" in d or "**" in d or "*" in d for d in described)
     assert all(c.tooltip for c in panel.controls.values())  # no empty ("null") tooltip
@@ -281,7 +281,7 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
 
 def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     panel = DesignReview(DERIVED_EXAMPLE)
-    specs = {s.key: s for s in panel.specs}
+    specs = {s.key: s for s in panel.state.specs}
     assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque", "mechanism.process_torque",
                            "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].decel_time", "move[1].jerk_time",
                            "move[2].dwell", "coupling.temperature", "accuracy.applied_torque", "gearbox.part", "motor.part"]
@@ -296,7 +296,7 @@ def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     assert specs["move[1].accel_time"].high == 0.5 and specs["move[1].jerk_time"].high == 0.5
     assert all(s.low > 0 for k, s in specs.items() if k.startswith("move[") and not k.endswith("distance"))
     assert "Motion: rotary from its moves · peak speed 42.86 rpm" in panel.results.value
-    assert panel.changed_case().motion is panel.case.motion  # no control moved: the case as read
+    assert panel.state.changed_case().motion is panel.state.case.motion  # no control moved: the case as read
 
 
 def test_the_inch_pound_example_offers_its_inputs_in_its_units():
@@ -393,7 +393,8 @@ def test_a_recorded_cycle_keeps_its_segments_and_becomes_typed_when_one_is_moved
     assert "profile[1].torque" in panel.controls and not any(k.startswith("move[") for k in panel.controls)
     panel.controls["profile[1].torque"].value = 9.0
     panel.settled()
-    assert panel.changed_case().motion is None and "Load cycle: the segments as changed here" in panel.results.value
+    assert panel.state.changed_case().motion is None
+    assert "Load cycle: the segments as changed here" in panel.results.value
 
 
 def test_the_tables_list_the_best_candidates_unless_all_are_asked_for():
@@ -459,16 +460,18 @@ def test_a_typed_value_is_read_with_a_decimal_comma_and_refused_outside_its_rang
     panel.fields["move[2].dwell"].value = "0,6"  # a decimal comma: 0.6 s, not 6 s
     panel.settled()
     assert panel.controls["move[2].dwell"].value == 0.6 and panel.fields["move[2].dwell"].value == "0.6"
-    assert panel.generation > first and not panel.refused
+    assert panel.generation > first and not panel.state.refused
     for typed, why in (("1e9", "outside the range"), ("-40", "outside the range"), ("abc", "is not a number"), ("0", "outside the range")):
         panel.fields["mechanism.inertia"].value = typed
         panel.settled()
         assert panel.controls["mechanism.inertia"].value == 1500.0  # kept, not clamped
-        assert why in panel._messages["mechanism.inertia"].value and "dr-refused" in panel.fields["mechanism.inertia"]._dom_classes
+        assert why in panel.rows.messages["mechanism.inertia"].value
+        assert "dr-refused" in panel.fields["mechanism.inertia"]._dom_classes
         assert "Not applied" in panel.results.value and "load inertia" in panel.results.value
     panel.fields["mechanism.inertia"].value = "1600"
     panel.settled()
-    assert not panel.refused and panel._messages["mechanism.inertia"].value == "" and "Not applied" not in panel.results.value
+    assert not panel.state.refused and panel.rows.messages["mechanism.inertia"].value == ""
+    assert "Not applied" not in panel.results.value
     # The results carry the field texts they were computed for, and the changed ones.
     assert '&quot;mechanism.inertia&quot;: &quot;1600&quot;' in panel.results.value
 
@@ -500,8 +503,8 @@ def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_pa
     assert written.count("\n") == text.count("\n") + 1 and "# T_f, against the motion while the table turns" in written
     assert 'inertia = "1600 kg*cm**2"      # J_L at the gearbox output' in written
     # The file re-evaluates to the screen's results.
-    assert evaluate(read_case(saved))["verdict"] == evaluate(panel.shown[0])["verdict"]
-    assert evaluate(read_case(saved))["cyclic"] == evaluate(panel.shown[0])["cyclic"]
+    assert evaluate(read_case(saved))["verdict"] == evaluate(panel.state.shown.case)["verdict"]
+    assert evaluate(read_case(saved))["cyclic"] == evaluate(panel.state.shown.case)["cyclic"]
     assert saved in [p for _, p in panel.case_file.options]
     assert 'download="indexing-table-variant-1.toml"' in panel.download.value
 
@@ -520,10 +523,11 @@ def test_undo_and_redo_step_through_the_changes():
     panel.undo()
     assert panel.controls["gearbox.ratio"].value == 10.0 and panel.controls["motor.peak_torque"].value == 30.0
     panel.undo()
-    assert panel.changes() == {} and shown() == first and panel.undo_button.disabled
+    assert panel.state.changes() == {} and shown() == first and panel.undo_button.disabled
     panel.redo()
-    assert panel.changes() == {"motor.peak_torque": (30.0, "N*m")} and "NPS045-10" in panel.results.value
-    assert "dr-changed" in panel._labels["motor.peak_torque"].value and "dr-changed" not in panel._labels["gearbox.ratio"].value
+    assert panel.state.changes() == {"motor.peak_torque": (30.0, "N*m")} and "NPS045-10" in panel.results.value
+    assert "dr-changed" in panel.rows.labels["motor.peak_torque"].value
+    assert "dr-changed" not in panel.rows.labels["gearbox.ratio"].value
 
 
 def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
@@ -550,8 +554,9 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
     again = DesignReview(EXAMPLE)
     again.units.value = "inch-pound"
     again.settled()
-    again.variants_field.value = json.dumps(panel.variant_states)
-    assert again.variants_html.value == panel.variants_html.value and [n for n, _ in again.variants] == [n for n, _ in panel.variants]
+    again.variants_field.value = json.dumps(panel.variants.states)
+    assert again.variants_html.value == panel.variants_html.value
+    assert [n for n, _ in again.variants.kept] == [n for n, _ in panel.variants.kept]
     import subprocess
     import sys
 
@@ -577,7 +582,8 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
 
 def test_a_temperature_on_a_bellows_coupling_says_it_has_no_effect():
     panel = DesignReview(EXAMPLE)
-    assert "no effect on this design: a metal bellows coupling has no temperature factor" in panel._messages["coupling.temperature"].value
+    said = panel.rows.messages["coupling.temperature"].value
+    assert "no effect on this design: a metal bellows coupling has no temperature factor" in said
 
 
 def test_the_chooser_gives_the_screens_verdict_once_changed():
@@ -589,16 +595,16 @@ def test_the_chooser_gives_the_screens_verdict_once_changed():
 
 def test_what_cannot_be_saved_says_why():
     from calc.core.errors import CalcError
-    from calc.review.keep import changed_text
+    from calc.review.edit import Edit, changed_text
 
     text = '[motor]\npeak_torque = "12 N*m"\n[[move]]\ndwell = "1 s"\n'
     with pytest.raises(CalcError, match=r"^motor: not a key path of a case file$"):
-        changed_text(text, {"motor": (1.0, "s")}, "a.toml")
+        changed_text(text, [], [Edit("motor", "1 s")], "a.toml")
     with pytest.raises(CalcError, match=r"^a.toml: move\[2\].dwell: the file has 1 \[\[move\]\] tables$"):
-        changed_text(text, {"move[2].dwell": (1.0, "s")}, "a.toml")
-    # A segment changed by hand where the file derives its cycle: the file has no segments to write it in.
+        changed_text(text, [], [Edit("move[2].dwell", "1 s")], "a.toml")
+    # A segment written where the file has none (a derived cycle is typed first: calc.review.inputs.typed_cycle).
     with pytest.raises(CalcError, match=r"^a.toml: profile\[1\].torque: the file has no \[profile\] table to write it in$"):
-        changed_text(text, {"profile[1].torque": (9.0, "N*m")}, "a.toml")
+        changed_text(text, [], [Edit("profile[1].torque", "9 N*m")], "a.toml")
     panel = DesignReview(EXAMPLE)
     panel.fields["motor.peak_torque"].value = "abc"
     panel.settled()
@@ -639,7 +645,7 @@ def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si
 
     panel = DesignReview(ROOT / "cases" / "linear-axis-inch.toml")
     # The inputs as the file writes them (60 lb, not 27.2 kg rounded from 27.216 kg).
-    assert panel.fields["mechanism.mass"].value == "60" and panel._spec("mechanism.mass").unit == "lb"
+    assert panel.fields["mechanism.mass"].value == "60" and panel.state.spec("mechanism.mass").unit == "lb"
     assert panel.units.value == "inch-pound"
     inch = panel.results.value
     assert "lbf·in" in inch and "N·m</td>" not in inch
@@ -656,7 +662,7 @@ def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si
     # A changed inch value is saved as the file writes it.
     panel.fields["mechanism.mass"].value = "70"
     panel.settled()
-    assert 'mass = "70 lb"' in panel.case_text()
+    assert 'mass = "70 lb"' in panel.state.case_text()
 
 
 def test_the_load_cycle_figure_draws_the_segments_steps():
@@ -674,17 +680,19 @@ def test_the_load_cycle_figure_draws_the_segments_steps():
 
 def test_a_forced_gearbox_part_is_checked_alone_and_saved_by_name():
     panel = DesignReview(EXAMPLE)
-    assert panel.controls["gearbox.part"].value == "the selection's" and "TP010-10" in panel._spec("gearbox.part").options
-    assert "NPS035-10" not in panel._spec("gearbox.part").options  # a partial row is never checked
+    assert panel.controls["gearbox.part"].value == "the selection's"
+    assert "TP010-10" in panel.state.spec("gearbox.part").options
+    assert "NPS035-10" not in panel.state.spec("gearbox.part").options  # a partial row is never checked
     panel.controls["gearbox.part"].value = "TP010-10"
     panel.settled()
     # TP010-10 alone: T_2B = 126 N·m (catalogs/gearboxes.csv) against T_2max = 151.3 N·m: it fails, by 20.1 %.
     assert '<span class="word fail">FAIL</span>' in panel.results.value and "gearbox TP010-10" in panel.results.value
     assert "required 151.3 N·m &gt; rated 126 N·m, 20.1 % over" in panel.results.value
-    assert 'part = "TP010-10"' in panel.case_text() and "gearbox.part (not given) -> TP010-10" in panel.case_text()
+    assert 'part = "TP010-10"' in panel.state.case_text()
+    assert "gearbox.part (not given) -> TP010-10" in panel.state.case_text()
     panel.controls["gearbox.part"].value = "the selection's"
     panel.settled()
-    assert "PASS" in panel.results.value and panel.changes() == {}
+    assert "PASS" in panel.results.value and panel.state.changes() == {}
 
 
 def test_each_candidate_row_can_force_its_part():
@@ -698,16 +706,17 @@ def test_each_candidate_row_can_force_its_part():
 
 def test_a_move_is_reversed_and_a_ramp_the_file_leaves_out_is_set():
     panel = DesignReview(DERIVED_EXAMPLE)
-    first = evaluate(panel.changed_case())
+    first = evaluate(panel.state.changed_case())
     panel.fields["move[1].distance"].value = "-90"  # the index the other way
     panel.settled()
-    back = evaluate(panel.shown[0])
+    back = evaluate(panel.state.shown.case)
     # The same index backwards: the same peak speed, the torques mirrored (so the S5 values hold).
     assert back["motion"]["peak_speed"] == first["motion"]["peak_speed"] and back["cyclic"]["T2max"] == first["cyclic"]["T2max"]
     assert back["motion"]["segments"][0]["torque"]["value"] < 0 < first["motion"]["segments"][0]["torque"]["value"]
     panel.fields["move[1].decel_time"].value = "0.2"  # not in the file: written into the move
     panel.settled()
-    assert panel.shown[0].motion.tables["move"][0]["decel_time"] == "0.2 second" and 'decel_time = "0.2 s"' in panel.case_text()
+    assert panel.state.shown.case.motion.tables["move"][0]["decel_time"] == "0.2 s"
+    assert 'decel_time = "0.2 s"' in panel.state.case_text()
 
 
 def test_compare_of_a_case_that_cannot_be_evaluated_names_it(tmp_path):
@@ -726,7 +735,7 @@ def test_a_forced_catalog_motor_is_checked_alone_and_saved_by_name():
     from ..conftest import ROOT
 
     panel = DesignReview(ROOT / "cases" / "ball-screw-direct.toml")
-    spec = panel._spec("motor.part")
+    spec = panel.state.spec("motor.part")
     assert panel.controls["motor.part"].value == "the selection's" and "SGM7J-04A" in spec.options
     assert "AM8031-wCyz (230 V AC)" not in spec.options  # a partial row is never checked
     assert "Motor <b>SGM7J-02A</b>" in panel.results.value
@@ -734,10 +743,11 @@ def test_a_forced_catalog_motor_is_checked_alone_and_saved_by_name():
     panel.settled()
     # SGM7J-04A alone: the catalog's next size up (M_N 1.27 N·m, J 0.486 kg·cm²): λ = 2.213 / 0.486 = 4.55.
     assert "Motor <b>SGM7J-04A</b>" in panel.results.value and "PASS" in panel.results.value and ">4.55<" in panel.results.value
-    assert 'part = "SGM7J-04A"' in panel.case_text() and "motor.part (not given) -> SGM7J-04A" in panel.case_text()
+    assert 'part = "SGM7J-04A"' in panel.state.case_text()
+    assert "motor.part (not given) -> SGM7J-04A" in panel.state.case_text()
     panel.controls["motor.part"].value = "the selection's"
     panel.settled()
-    assert "Motor <b>SGM7J-02A</b>" in panel.results.value and panel.changes() == {}
+    assert "Motor <b>SGM7J-02A</b>" in panel.results.value and panel.state.changes() == {}
 
 
 def test_moves_added_and_removed_follow_and_are_kept(tmp_path):
@@ -749,23 +759,26 @@ def test_moves_added_and_removed_follow_and_are_kept(tmp_path):
     case = tmp_path / "axis.toml"
     case.write_text(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{DERIVED_EXAMPLE.parents[1]}/data/'))
     panel = DesignReview(case).settled()
-    ed = lambda: panel.shown[1].evaluated.sections["profile"].shown.ED.value  # noqa: E731
-    assert ed() == pytest.approx(100 / 3) and [label for label, _ in panel.entry.options] == ["1 move", "2 dwell"]
+    ed = lambda: panel.state.shown.report.evaluated.sections["profile"].shown.ED.value  # noqa: E731
+    assert ed() == pytest.approx(100 / 3) and [label for label, _ in panel.moves.entry.options] == ["1 move", "2 dwell"]
     panel.add_entry(2, "dwell")
     panel.settled()
-    assert ed() == pytest.approx(20.0) and [label for label, _ in panel.entry.options] == ["1 move", "2 dwell", "3 dwell"]
-    assert "dr-changed" in panel._labels["move[3].dwell"].value and "dr-changed" not in panel._labels["move[2].dwell"].value
+    assert ed() == pytest.approx(20.0)
+    assert [label for label, _ in panel.moves.entry.options] == ["1 move", "2 dwell", "3 dwell"]
+    assert "dr-changed" in panel.rows.labels["move[3].dwell"].value
+    assert "dr-changed" not in panel.rows.labels["move[2].dwell"].value
     panel.add_entry(1, "move")
     panel.settled()
     panel.controls["move[2].distance"].value = -90.0
     panel.settled()
-    assert [label for label, _ in panel.entry.options] == ["1 move", "2 move", "3 dwell", "4 dwell"]
+    assert [label for label, _ in panel.moves.entry.options] == ["1 move", "2 move", "3 dwell", "4 dwell"]
     assert ed() == pytest.approx(100 / 3)
-    assert panel.shown[0].motion.tables["move"][1] == {"distance": "-90 degree", "time": "0.5 s", "accel_time": "0.15 s", "jerk_time": "0.03 s"}
+    back = {"distance": "-90 deg", "time": "0.5 s", "accel_time": "0.15 s", "jerk_time": "0.03 s"}
+    assert panel.state.shown.case.motion.tables["move"][1] == back
     panel.remove_entry(4)
     panel.settled()
     assert ed() == pytest.approx(1.0 / 2.0 * 100)
-    shown = panel.shown[1].evaluated.to_json()
+    shown = panel.state.shown.report.evaluated.to_json()
     saved = panel.save("axis-back-and-forth.toml")
     text = saved.read_text()
     assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3; move 90 deg in 0.5 s added as "
@@ -776,16 +789,16 @@ def test_moves_added_and_removed_follow_and_are_kept(tmp_path):
     assert again["duty"] == shown["duty"]
     # Undo steps back through the edits too: the move turned forwards again, then the move taken out.
     panel.undo()
-    assert [label for label, _ in panel.entry.options] == ["1 move", "2 move", "3 dwell", "4 dwell"]
+    assert [label for label, _ in panel.moves.entry.options] == ["1 move", "2 move", "3 dwell", "4 dwell"]
     panel.undo()
     assert panel.controls["move[2].distance"].value == 90.0
     panel.undo()
-    assert [label for label, _ in panel.entry.options] == ["1 move", "2 dwell", "3 dwell"]
+    assert [label for label, _ in panel.moves.entry.options] == ["1 move", "2 dwell", "3 dwell"]
     # The only move cannot be removed: the panel says why and keeps the moves.
     panel.load()
     panel.remove_entry(1)
     assert panel.message.value.endswith("not removed</b>: axis.toml: move: expected at least one move with a distance, found only dwells")
-    assert [label for label, _ in panel.entry.options] == ["1 move", "2 dwell"]
+    assert [label for label, _ in panel.moves.entry.options] == ["1 move", "2 dwell"]
 
 
 def test_the_results_are_marked_out_of_date_while_a_change_is_computed():
@@ -794,7 +807,7 @@ def test_the_results_are_marked_out_of_date_while_a_change_is_computed():
     import threading
 
     panel = DesignReview(EXAMPLE)
-    assert "dr-busy" not in panel.panel._dom_classes and 'data-state="current"' in panel.state.value
+    assert "dr-busy" not in panel.panel._dom_classes and 'data-state="current"' in panel.status.value
     drawing, go_on = threading.Event(), threading.Event()
     refresh = panel.refresh
 
@@ -806,11 +819,11 @@ def test_the_results_are_marked_out_of_date_while_a_change_is_computed():
     panel.refresh = held
     panel.controls["motor.peak_torque"].value = 16.0
     assert drawing.wait(10)
-    assert "dr-busy" in panel.panel._dom_classes and 'data-state="stale"' in panel.state.value
-    assert "Out of date: computing" in panel.state.value
+    assert "dr-busy" in panel.panel._dom_classes and 'data-state="stale"' in panel.status.value
+    assert "Out of date: computing" in panel.status.value
     go_on.set()
     panel.settled()
-    assert "dr-busy" not in panel.panel._dom_classes and 'data-state="current"' in panel.state.value
+    assert "dr-busy" not in panel.panel._dom_classes and 'data-state="current"' in panel.status.value
     assert "201.8 N·m" in panel.results.value  # 16 · 10 · 1.3 · 0.97
 
 
@@ -823,26 +836,27 @@ def test_the_mechanism_changes_type_from_equivalent_values(tmp_path):
     case = tmp_path / "axis.toml"
     case.write_text(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{DERIVED_EXAMPLE.parents[1]}/data/'))
     panel = DesignReview(case).settled()
-    before = panel.shown[0].profile
+    before = panel.state.shown.case.profile
     panel.change_mechanism("ball-screw", "20")
     panel.settled()
-    screw = panel.shown[0]
+    screw = panel.state.shown.case
     mechanism = screw.motion.tables["mechanism"]
     assert mechanism["type"] == "ball-screw" and mechanism["lead"] == "20 mm" and mechanism["drag_torque"] == "3 N*m"
     assert float(mechanism["mass"].split()[0]) == pytest.approx(0.15 / (0.02 / (2 * np.pi)) ** 2, rel=1e-9)
     assert screw.motion.tables["move"][0]["distance"] == "5 mm"
     np.testing.assert_allclose(screw.profile.torques.m_as("N*m"), before.torques.m_as("N*m"), rtol=1e-9)
     np.testing.assert_allclose(screw.profile.durations.m_as("s"), before.durations.m_as("s"), rtol=1e-12)
-    assert "set by the change of the mechanism" in panel._labels["mechanism.mass"].value
+    assert "set by the change of the mechanism" in panel.rows.labels["mechanism.mass"].value
     # The field shows the mass used, not the slider's step (500 kg over its range): 14804.4066, not 15000.
     assert panel.fields["mechanism.mass"].value == "14804.4066" and panel.controls["mechanism.mass"].value == 15000
-    assert "mechanism.mass" not in panel.changes()
+    assert "mechanism.mass" not in panel.state.changes()
     saved = panel.save("axis-screw.toml")
     assert saved.read_text().startswith("# Changed in the design review from axis.toml: mechanism rotary -> ball-screw of 20 mm")
-    assert evaluate_case(read_case(saved)).to_json()["verdict"] == panel.shown[1].evaluated.to_json()["verdict"]
+    assert evaluate_case(read_case(saved)).to_json()["verdict"] == (
+        panel.state.shown.report.evaluated.to_json()["verdict"])
     panel.change_mechanism("rotary")
     panel.settled()
-    table = panel.shown[0].motion.tables["mechanism"]
+    table = panel.state.shown.case.motion.tables["mechanism"]
     assert table == {"type": "rotary", "inertia": "1500 kg*cm**2", "friction_torque": "3 N*m", "process_torque": "0 N*m"}
     panel.change_mechanism("belt", "0")
     assert "type not changed</b>: a belt needs its diameter: expected a number above zero (in mm), found &#x27;0&#x27;" in panel.message.value
@@ -855,29 +869,34 @@ def test_a_linear_axis_becomes_a_table_with_the_torques_the_drive_gives():
     from pathlib import Path
 
     panel = DesignReview(Path(DERIVED_EXAMPLE).parent / "ball-screw-direct.toml").settled()
-    before = panel.shown[0].motion
+    before = panel.state.shown.case.motion
     panel.change_mechanism("rotary")
     panel.settled()
-    table = panel.shown[0].motion.tables["mechanism"]
+    table = panel.state.shown.case.motion.tables["mechanism"]
     assert float(table["inertia"].split()[0]) == pytest.approx(2.32579, abs=5e-6)
     assert float(table["friction_torque"].split()[0]) == pytest.approx(0.084684, abs=5e-7)
     r = 10 / (2 * np.pi)
     s = float(before.tables["move"][0]["distance"].split()[0])
-    assert float(panel.shown[0].motion.tables["move"][0]["distance"].split()[0]) == pytest.approx(np.degrees(s / r), rel=1e-9)
+    turned = float(panel.state.shown.case.motion.tables["move"][0]["distance"].split()[0])
+    assert turned == pytest.approx(np.degrees(s / r), rel=1e-9)
+
+
+ONE_MOVE = '[[move]]\ndistance = "90 deg"\ntime = "1 s"\n'
 
 
 @pytest.mark.parametrize("text, edits, message", [
-    ('[motor]\npeak_torque = "1 N*m"\n', [("remove", 1)], "a.toml: the case gives no [[move]] tables to add to or remove from"),
-    ('[[move]]\ndistance = "90 deg"\ntime = "1 s"\n', [("add", 3, {"dwell": "1 s"})], "a.toml: move entry 3: the case has 1 [[move]] tables"),
-    ('[[move]]\ndistance = "90 deg"\ntime = "1 s"\n', [("remove", 0)], "a.toml: move entry 0: the case has 1 [[move]] tables"),
-    ('[[move]]\ndistance = "90 deg"\ntime = "1 s"\n', [("remove", 1)], "a.toml: move entry 1 is the only one: a motion needs at least one move"),
+    ('[motor]\npeak_torque = "1 N*m"\n', [("remove", 1)],
+     "a.toml: move[1]: the file has no [[move]] tables to add to or remove from"),
+    (ONE_MOVE, [("add", 3, {"dwell": "1 s"})], "a.toml: move[4]: the file has 1 [[move]] tables"),
+    (ONE_MOVE, [("remove", 0)], "a.toml: move[0]: the file has 1 [[move]] tables"),
+    (ONE_MOVE, [("remove", 1)], "a.toml: move[1] is the only [[move]] table: it cannot be taken out"),
 ])
 def test_an_edit_of_the_moves_that_cannot_be_made_says_why(text, edits, message):
     from calc.core.errors import CalcError
-    from calc.review.keep import with_moves_edited
+    from calc.review.edit import edited_text, moves_edits
 
     with pytest.raises(CalcError) as err:
-        with_moves_edited(text, edits, "a.toml")
+        edited_text(text, [e for edit in edits for e in moves_edits(edit)], "a.toml")
     assert str(err.value) == message
 
 
@@ -895,7 +914,7 @@ def test_a_link_variant_that_no_longer_reads_is_left_out_saying_why():
     assert "variant 1: no case file &#x27;gone.toml&#x27; among the cases" in said
     assert f"variant 2: {DERIVED_EXAMPLE.name} has no input move[9].time" in said
     assert "variant 3: gearbox ratio i: &#x27;11&#x27; is not one of its choices" in said
-    assert [name for name, _ in panel.variants] == ["1: indexing-table.toml with 1 move: time t 0.6 s"]
+    assert [name for name, _ in panel.variants.kept] == ["1: indexing-table.toml with 1 move: time t 0.6 s"]
 
 
 def test_the_variants_as_a_pdf(tmp_path):

@@ -1,0 +1,181 @@
+"""The HTML texts the design-review panel shows of its state (:mod:`calc.review.state`): each
+input's label, the message under its row, and the results with the state they were computed for.
+
+The results carry that state as attributes, which the page's script (:mod:`calc.review.client`)
+compares with the fields and writes into the page's address: ``data-inputs`` (each field's text),
+``data-changed`` (those of the changed inputs), ``data-edits`` (the moves' edits), ``data-case``,
+``data-units`` and ``data-file-units``, ``data-variants`` and ``data-variants-asked``
+(:func:`variants_attribute`), and ``data-generation`` (counting the results drawn).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from html import escape
+
+from ..core.units import pretty_unit
+from .inputs import InputSpec, option_text
+from .state import ReviewState, Screen
+from .variants import Variants
+from .view import FAIL_COLOR, results_html, typeset
+
+SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
+
+
+def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
+    """An input's label with its unit (the whole of it, and what became of the file's value, as
+    its tooltip; its key path as ``data-key``), marked where changed or made by an edit of the moves.
+
+    Parameters
+    ----------
+    spec : InputSpec
+        The input.
+    changed : bool
+        Whether its value differs from the file's.
+    added : str, optional
+        What an edit of the moves made of it, in words.
+
+    Returns
+    -------
+    str
+        HTML.
+    """
+    unit = pretty_unit(spec.unit) if spec.unit else ""
+    file_value = spec.field_text(spec.value) if not spec.options else option_text(spec.value)
+    file_value += f" {unit}" if unit else ""
+    was = f" ({added})" if added else f" (changed; the file: {file_value})" if changed else ""
+    marked = " class=dr-changed" if changed or added else ""
+    return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{marked}>'
+            f"{typeset(spec.label)}{f' [{unit}]' if unit else ''}</span>")
+
+
+def message_html(refused: str | None, idle: str | None = None) -> str:
+    """The message under an input's row: why its text was refused, else that it has no effect.
+
+    Parameters
+    ----------
+    refused : str or None
+        Why the text typed was refused.
+    idle : str, optional
+        Why the input has no effect on the design.
+
+    Returns
+    -------
+    str
+        HTML (empty where there is nothing to say).
+    """
+    if refused:
+        return f'<div class="dr-message">{typeset(refused)}</div>'
+    return f'<div class="dr-idle">{typeset(idle)}</div>' if idle else ""
+
+
+def failed_html(word: str, why: str, whole: bool = False) -> str:
+    """What could not be done and why, as the page says it: under the case and in the results the
+    word stands out; under the buttons (``whole``) all of it.
+
+    Parameters
+    ----------
+    word : str
+        What was not done (``"not added"``, ``"input error"``, ``"not saved"``).
+    why : str
+        The sentence saying why.
+    whole : bool
+        Whether the whole of it is marked, not the word alone.
+
+    Returns
+    -------
+    str
+        HTML.
+    """
+    if whole:
+        return f'<span style="color:{FAIL_COLOR}">{word}: {typeset(why)}</span>'
+    return f'<b style="color:{FAIL_COLOR}">{word}</b>: {typeset(why)}'
+
+
+def link_html(address: str | None, pdf) -> str:
+    """A PDF built by the panel: linked at ``address``, else named by its path.
+
+    Parameters
+    ----------
+    address : str or None
+        Where the page serves it.
+    pdf : pathlib.Path
+        The PDF.
+
+    Returns
+    -------
+    str
+        HTML.
+    """
+    return f'<a href="{escape(address)}" target="_blank">{escape(pdf.name)}</a>' if address else escape(str(pdf))
+
+
+def variants_attribute(variants: Variants) -> str:
+    """The variants' states, and those a link asked for (which the page's script waits for).
+
+    Parameters
+    ----------
+    variants : calc.review.variants.Variants
+
+    Returns
+    -------
+    str
+        The two attributes of the results (HTML).
+    """
+    return (f'data-variants="{escape(json.dumps(variants.states))}" '
+            f'data-variants-asked="{escape(json.dumps(variants.asked))}"')
+
+
+def with_variants(results: str, variants: Variants) -> str:
+    """The results carrying the variants' states as they now are.
+
+    Parameters
+    ----------
+    results : str
+        The results' HTML (:func:`results_text`).
+    variants : calc.review.variants.Variants
+
+    Returns
+    -------
+    str
+    """
+    return re.sub(r'data-variants="[^"]*" data-variants-asked="[^"]*"', variants_attribute(variants), results, count=1)
+
+
+def results_text(state: ReviewState, screen: Screen, link: str | None, generation: int, variants: Variants) -> str:
+    """The results of ``screen`` (:func:`calc.review.view.results_html`: verdict and chosen parts
+    first, then the governing checks), or its input error, with the state they were computed for
+    (see the module's docstring).
+
+    Parameters
+    ----------
+    state : calc.review.state.ReviewState
+        The state evaluated (its options, refusals and unit system).
+    screen : calc.review.state.Screen
+        Its results.
+    link : str or None
+        The address of the case's report, beside the verdict.
+    generation : int
+        The results drawn so far, these included.
+    variants : calc.review.variants.Variants
+        The variants kept (their states go with the results).
+
+    Returns
+    -------
+    str
+        HTML.
+    """
+    if screen.report is None:
+        text = f'<div class="dr">{failed_html("input error", screen.error)}</div>'
+    else:
+        refused = [f"{state.spec(k).label}: {why}" for k, (_, why) in state.refused.items()]
+        text = results_html(screen.report, screen.left_out, link, typed_by_hand=screen.typed_by_hand,
+                            shown=None if state.all_candidates else SHOWN_CANDIDATES, refused=refused,
+                            system=state.units, ratios=screen.ratios)
+    attributes = (f'data-generation="{generation}" data-case="{escape(state.path.name)}" '
+                  f'data-inputs="{escape(json.dumps(screen.texts))}" data-edits="{escape(json.dumps(screen.moves))}" '
+                  f'data-units="{escape(state.units)}" data-file-units="{escape(state.file_units)}" '
+                  f'{variants_attribute(variants)} '
+                  f'data-changed="{escape(json.dumps(screen.changed_texts))}"')
+    return text.replace('<div class="dr">', f'<div class="dr" {attributes}>', 1)

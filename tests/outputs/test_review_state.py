@@ -1,0 +1,233 @@
+"""The design review's state without its widgets (calc.review.state, calc.review.variants): every
+edit a key path written into the case file's text and read again by the case reader, undo and
+redo, values typed and refused, variants kept and compared, the address a link carries.
+
+Expected numbers are worked by hand from the example (cases/indexing-table.toml): one index of
+90 deg in 0.5 s (ramps 0.15 s, jerk 0.03 s), then a dwell of 1 s, so ED = 0.5 / 1.5 = 33.3 %;
+the catalog's motor SGMUH-10DA (T_1B 6.5 N·m) through NPT035-10 (i = 10, η = 0.97).
+"""
+
+import json
+
+import pytest
+
+from calc.core.errors import CalcError
+from calc.review.edit import Edit, edited_text
+from calc.review.inputs import SELECTION
+from calc.review.keep import CaseFiles
+from calc.review.state import History, ReviewState, added_entries
+from calc.review.variants import Variants
+from calc.sections import evaluate
+from calc.sections.case import read_case
+
+from ..conftest import DERIVED_EXAMPLE, ROOT
+
+
+@pytest.fixture
+def example(tmp_path):
+    """The example in a folder of its own (so a saved file lands there), read."""
+    path = tmp_path / "axis.toml"
+    path.write_text(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{ROOT}/data/'))
+    state = ReviewState(path)
+    state.load()
+    return state
+
+
+def results(state: ReviewState) -> dict:
+    """The results of the state as it stands, as the JSON contract writes them."""
+    screen = state.evaluate()
+    assert screen.error is None, screen.error
+    return screen.report.evaluated.to_json()
+
+
+def test_a_dwell_added_is_undone_and_redone(example):
+    # A dwell after the last entry, as long as the last dwell (1 s): the cycle 0.5 + 1 + 1 = 2.5 s,
+    # ED = 0.5 / 2.5 = 20 %; undone, ED = 0.5 / 1.5 = 33.3 % again.
+    assert results(example)["duty"]["ED"]["value"] == pytest.approx(100 / 3)
+    assert not example.history.can_undo and example.entries() == ["move", "dwell"]
+    example.add_entry(2, "dwell")
+    assert example.entries() == ["move", "dwell", "dwell"] and added_entries(example.moves) == {3}
+    assert results(example)["duty"]["ED"]["value"] == pytest.approx(20.0)
+    assert example.from_edits("move[3].dwell") == "an entry added here: not in the file"
+    assert example.from_edits("move[2].dwell") is None
+    assert example.modified() and example.changes() == {}  # an edit of the moves, no value changed
+    example.undo()
+    assert example.entries() == ["move", "dwell"] and not example.modified()
+    assert results(example)["duty"]["ED"]["value"] == pytest.approx(100 / 3)
+    assert example.history.can_redo and not example.history.can_undo
+    example.redo()
+    assert example.entries() == ["move", "dwell", "dwell"]
+    assert results(example)["duty"]["ED"]["value"] == pytest.approx(20.0)
+    # The edit is the file's text: the saved case has the three entries and reads as the screen.
+    text = example.case_text()
+    assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3\n")
+    assert text.count("\n[[move]]\n") == 3 and "# One index: 90 deg in 0.5 s" in text
+    saved = example.save("axis-dwell.toml")
+    assert evaluate(read_case(saved)).to_json()["duty"] == results(example)["duty"]
+
+
+def test_a_value_changed_is_written_into_the_file_and_read_again(example):
+    # The index in 1.0 s: peak speed φ / (t − t_a) = (π/2) / (1.0 − 0.15) = 1.8480 rad/s = 17.65 rpm
+    # (the S-curve's ramps keep the trapezoid's mean); cycle 2 s, Z_h = 1800 /h, f_s = 1.3 (E4), so
+    # T_2max = 6.5 · 10 · 1.3 · 0.97 = 81.97 N·m (it was 100.9 N·m with f_s = 1.6 at 2400 /h).
+    before = results(example)
+    assert before["cyclic"]["T2max"]["value"] == pytest.approx(100.88, abs=0.01)
+    assert example.type_text("move[1].time", "1")
+    assert example.changes() == {"move[1].time": (1.0, "s")} and example.texts["move[1].time"] == "1"
+    after = results(example)
+    assert after["motion"]["peak_speed"]["value"] == pytest.approx(17.647, abs=0.001)
+    assert after["cyclic"]["T2max"]["value"] == pytest.approx(81.965, abs=0.01)
+    assert example.changed_case().motion.tables["move"][0]["time"] == "1 s"  # read from the text, as saved
+    text = example.case_text()
+    assert text.startswith("# Changed in the design review from axis.toml: move[1].time 0.5 s -> 1 s\n")
+    assert 'time = "1 s"' in text
+    assert example.shown.text == text  # the screen's case is read from the text saved
+    # The same value again changes nothing; back to the file's value, the case is the file's.
+    assert not example.type_text("move[1].time", "1")
+    example.type_text("move[1].time", "0.5")
+    assert example.changes() == {} and example.changed_case() is example.case
+
+
+def test_a_refused_text_changes_no_value_and_a_decimal_comma_is_a_point(example):
+    assert example.type_text("mechanism.inertia", "abc")  # the results say it was refused
+    assert example.values["mechanism.inertia"] == 1500.0 and example.texts["mechanism.inertia"] == "abc"
+    assert "is not a number" in example.refused["mechanism.inertia"][1]
+    with pytest.raises(CalcError, match="a refused value is in a field"):
+        example.save("never.toml")
+    example.set_value("mechanism.inertia", 1600.0)  # a slider moved: the refused text stays in its field
+    assert example.texts["mechanism.inertia"] == "abc"
+    assert example.type_text("mechanism.inertia", "1550,5")
+    assert example.values["mechanism.inertia"] == 1550.5
+    assert example.texts["mechanism.inertia"] == "1550.5" and not example.refused
+    assert example.type_text("move[2].dwell", "1e9")
+    assert example.values["move[2].dwell"] == 1.0  # out of range: kept, never clamped
+    assert "outside the range of 2 dwell: time t" in example.refused["move[2].dwell"][1]
+
+
+def test_a_forced_gearbox_part_is_a_key_of_the_file(example):
+    # NPT025-10 alone: T_2max = 6.5 · 10 · 1.6 · 0.97 = 100.9 N·m against its T_2B of 90 N·m: FAIL.
+    example.set_value("gearbox.part", "NPT025-10")
+    r = results(example)
+    assert r["verdict"]["passes"] is False and r["gearbox"]["selected"] is None
+    assert 'part = "NPT025-10"' in example.case_text()
+    assert "gearbox.part (not given) -> NPT025-10" in example.case_text()
+    example.set_value("gearbox.part", SELECTION)
+    assert example.changes() == {} and results(example)["gearbox"]["selected"] == "NPT035-10"
+
+
+def test_variants_are_kept_compared_and_carried_by_a_link(example):
+    variants = Variants()
+    example.evaluate()
+    variants.keep(example)
+    example.type_text("move[1].time", "1")
+    example.evaluate()
+    variants.keep(example)
+    assert [name for name, _ in variants.kept] == ["1: axis.toml as written", "2: axis.toml with 1 move: time t 1 s"]
+    # ED = 1.0 / 2.0 = 50 % and T_2max 81.97 N·m differ from the first.
+    compared = variants.comparison("SI")
+    assert '<td class="differs">50 %</td>' in compared and '<td class="differs">81.97 N·m</td>' in compared
+    assert variants.states[1] == {"case": "axis.toml", "edits": [], "values": {"move[1].time": "1"}}
+    # A link's states give the same variants, each evaluated again from its case file.
+    again = Variants()
+    assert again.follow(json.dumps(variants.states), CaseFiles(example.path)) == []
+    assert [name for name, _ in again.kept] == [name for name, _ in variants.kept]
+    assert again.comparison("SI") == compared
+    missed = again.follow(json.dumps([{"case": "gone.toml", "edits": [], "values": {}}]), CaseFiles(example.path))
+    assert missed == ["variant 1: no case file 'gone.toml' among the cases"] and again.kept == []
+
+
+def test_the_address_of_a_state_gives_the_same_screen(example):
+    example.add_entry(1, "move")  # a copy of the first move after it
+    example.type_text("move[2].distance", "-90")  # back to where the table started
+    example.evaluate()
+    address = {"edits": example.shown.moves, "values": example.shown.changed_texts}
+    copy = {"distance": "90 deg", "time": "0.5 s", "accel_time": "0.15 s", "jerk_time": "0.03 s"}
+    assert address == {"edits": [["add", 1, copy]], "values": {"move[2].distance": "-90"}}
+    other = ReviewState(example.path)
+    other.load()
+    assert other.follow_moves(address["edits"]) and not other.follow_moves(address["edits"])
+    other.follow_values(address["values"])
+    assert results(other) == results(example)
+    # Two moves of 0.5 s and a dwell of 1 s: ED = 1.0 / 2.0 = 50 %.
+    assert results(other)["duty"]["ED"]["value"] == pytest.approx(50.0)
+    with pytest.raises(CalcError, match=r"^axis.toml has no input move\[9\].time$"):
+        other.follow_values({"move[9].time": "1"})
+
+
+def test_an_edit_that_cannot_be_made_leaves_the_state_as_it_was(example):
+    example.remove_entry(2)  # the dwell: one move is left
+    with pytest.raises(CalcError, match=r"^axis.toml: move\[1\] is the only \[\[move\]\] table: it cannot be "):
+        example.remove_entry(1)
+    assert example.entries() == ["move"] and len(example.moves) == 1
+    with pytest.raises(CalcError, match=r"^a belt needs its diameter: expected a number above zero \(in mm\), found"):
+        example.change_mechanism("belt", "0")
+    assert example.case.motion.mechanism.type == "rotary"
+
+
+def test_the_mechanisms_type_changes_and_is_undone(example):
+    # A ball screw of 20 mm lead: the moved mass 0.15 kg·m² / (0.02 m / 2π)² = 14 804.4 kg.
+    said = example.change_mechanism("ball-screw", "20")
+    assert said.startswith("mechanism rotary -> ball-screw of 20 mm (equivalent at the gearbox output")
+    assert example.texts["mechanism.mass"] == "14804.4066"
+    assert example.from_edits("mechanism.mass").startswith("set by the change")
+    assert example.case.motion.tables["move"][0]["distance"] == "5 mm"  # a quarter turn of 20 mm
+    example.undo()
+    assert example.case.motion.mechanism.type == "rotary" and example.moves == []
+
+
+def test_a_segment_of_a_recorded_cycle_types_the_cycle(tmp_path):
+    """A drive record of 2 rad/s reached in 1 s, held 1 s, left in 1 s, through a table of
+    1500 kg·cm²: segments of 1 s with T = J·α = 0.15 · 2 = 0.3 N·m, 0, −0.3 N·m. A segment's torque
+    changed types the cycle: every segment as [[profile]], the record and the mechanism taken out,
+    J_L in [load]; the saved file reads as the screen."""
+    (tmp_path / "rec.csv").write_text("time [s],speed [rad/s]\n0,0\n1,2\n2,2\n3,0\n")
+    path = tmp_path / "rec.toml"
+    path.write_text('[gearbox]\nratio = 10\n[mechanism]\ntype = "rotary"\ninertia = "1500 kg*cm**2"\n'
+                    '[drive_record]\nfile = "rec.csv"\n')
+    state = ReviewState(path)
+    state.load()
+    assert [(s.key, s.value) for s in state.specs if s.key.endswith("torque")] == [
+        ("profile[1].torque", 0.3), ("profile[2].torque", 0.0), ("profile[3].torque", -0.3)]
+    state.set_value("profile[1].torque", 9.0)
+    assert state.evaluate().typed_by_hand and state.changed_case().motion is None
+    text = state.case_text()
+    assert text.startswith("# Changed in the design review from rec.toml: [drive_record] taken out; "
+                           "[mechanism] taken out; profile written as 3 tables; "
+                           "load.inertia (not given) -> 1500 kg*cm**2; profile[1].torque 0.3 N*m -> 9 N*m\n")
+    saved = read_case(state.save("typed.toml"))
+    assert saved.motion is None and saved.load_inertia.m_as("kg*cm**2") == 1500.0
+    assert evaluate(saved).to_json()["continuous"] == results(state)["continuous"]
+
+
+def test_the_unit_system_follows_the_file():
+    inch = ReviewState(ROOT / "cases" / "linear-axis-inch.toml")
+    inch.load()
+    assert (inch.file_units, inch.units, inch.length_unit()) == ("inch-pound", "inch-pound", "in")
+    assert (inch.spec("mechanism.mass").unit, inch.texts["mechanism.mass"]) == ("lb", "60")
+    si = ReviewState(DERIVED_EXAMPLE)
+    si.load()
+    assert (si.file_units, si.units, si.length_unit()) == ("SI", "SI", "mm")
+
+
+def test_a_case_file_that_cannot_be_read_says_why_and_changes_nothing(example, tmp_path):
+    with pytest.raises(CalcError, match=r"^missing.toml: the case file does not exist$"):
+        example.load(tmp_path / "missing.toml")
+    assert example.path.name == "axis.toml" and example.case is not None
+
+
+def test_the_history_keeps_each_change_once():
+    history = History(("[]", {"a": 1}))
+    history.push(("[]", {"a": 1}))  # the same state: no change
+    assert not history.can_undo
+    history.push(("[]", {"a": 2}))
+    history.push(("[]", {"a": 3}))
+    assert history.undo() == ("[]", {"a": 2}) and history.can_redo
+    history.push(("[]", {"a": 4}))  # a change after an undo drops what was undone
+    assert not history.can_redo and history.undo() == ("[]", {"a": 2})
+    assert history.undo() == ("[]", {"a": 1}) and history.undo() is None
+
+
+def test_every_edit_keeps_the_files_comments():
+    text = '[motor]\npeak_torque = "12 N*m"  # T_1B\n[gearbox]\nratio = 10  # i\n'
+    edited = edited_text(text, [Edit("motor.peak_torque", "16 N*m"), Edit("gearbox.ratio", 8.0)], "a.toml")
+    assert edited == '[motor]\npeak_torque = "16 N*m"  # T_1B\n[gearbox]\nratio = 8  # i\n'  # an integer stays one
