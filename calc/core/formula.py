@@ -33,6 +33,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
+from .segment_sum import sum_last_axis
 from .units import Q_, as_kind, fmt, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit
 
 REGISTRY: list["Formula"] = []
@@ -99,10 +100,6 @@ def _sympy() -> SimpleNamespace:
 def segment_sum(x):
     """Σ over the profile's segments k (for use inside a formula's builder)."""
     return _sympy().SegmentSum(x)
-
-
-def _sum_last_axis(x):
-    return np.sum(x, axis=-1)
 
 
 class Formula:
@@ -189,7 +186,7 @@ class Formula:
     def lambdified(self) -> Callable:
         """The right-hand side turned into a numpy function by sympy's ``lambdify``."""
         s = _sympy()
-        return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": _sum_last_axis}, "numpy"])
+        return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": sum_last_axis}, "numpy"])
 
     def numeric_source(self, name: str) -> str:
         """The source of :meth:`lambdified` as a function called ``name``."""
