@@ -1,25 +1,28 @@
-"""What the section blocks of the calc report share.
+"""What the sections' renderers share.
 
-Every block module (one per section module of :mod:`calc.sections`, of the same name) has the
-same shape: ``NAME`` (its key in the results), and functions of the
-:class:`calc.report.Report` that each give that section's part of one block of the report, empty
-where the section has none: ``sources`` and ``readings`` (method), ``input_rows`` (rows of the
-inputs table) and ``inputs`` (tables after it), ``steps`` (calculations), ``results``, ``checks``,
-``candidates``, ``figures`` ((figure, caption) pairs), ``chosen`` ((what, part, detail) rows) and
-``order_lines``. The further sections (coupling, accuracy) write their checks, candidates, chosen
-part and order line the same way (:func:`further_checks` ...). An input row is written from its
-key's declaration (:func:`input_row`).
+Every section has one renderer, a :class:`Renderer` in the module of this package named as the
+section's module of :mod:`calc.sections` (``RENDERER``): what the calc report, the design review's
+page, the summary of several cases and ``calc compare`` show of the section. The report's
+blocks are its methods of the :class:`calc.report.Report` (``sources`` and ``readings``
+(method), ``input_rows`` (rows of the inputs table) and ``inputs`` (tables after it), ``steps``
+(calculations), ``results``, ``checks``, ``candidates``, ``figures`` ((figure, caption) pairs),
+``chosen`` ((what, part, detail) rows) and ``order_lines``), the page's its :meth:`Renderer.page`,
+and the summary's and the comparison's what it declares. Each has a default that shows nothing.
+The sections that read a table of their own (coupling, accuracy) write their method, checks and
+inputs the same way (:func:`further_checks` ...). An input row is written from its key's
+declaration (:func:`input_row`). The JSON and the text summary are the section's result
+record's (:class:`calc.sections.protocol.Result`).
 """
 
 from __future__ import annotations
 
 import tomllib
 from pathlib import Path
+from typing import ClassVar
 
 from ..core.formula import REGISTRY
 from ..domain.gearbox import inertia_ratio
 from ..sections import declared
-from ..core.selection import Selection
 from ..core.units import pretty_unit, sig
 from . import symbols
 from .latex import breakable, itemize, latex_escape, listed, prose, q, table, util, value_unit, verdict_mark
@@ -30,11 +33,6 @@ SOURCE_SECTIONS: dict = _METHOD["sources"]
 #: The errata readings by key (E1, ...), each with its ``text`` and the ``section`` it applies to
 #: (none: every case), in the order of ``errata.md``.
 ERRATA: dict = _METHOD["errata"]
-
-
-def nothing(report) -> list:
-    """A section's part of a block where it has none."""
-    return []
 
 
 def sources(name: str) -> list[str]:
@@ -87,14 +85,85 @@ def input_row(path: str, value, derived: bool = False) -> list[str]:
     return [f"${latex}$" if latex else "–", shown, unit, prose(key.description), where]
 
 
-def ranks(result) -> bool:
-    """Whether a section's result ranks a catalog (:class:`calc.core.selection.Selection`)."""
-    return isinstance(getattr(result, "selection", None), Selection)
-
-
 def result_of(name: str, report):
     """A section's result (:mod:`calc.sections`); None where the case has none or cannot be evaluated."""
     return report.evaluated.sections.get(name) if report.evaluated is not None else None
+
+
+class Renderer:
+    """The output side of one section, ``NAME`` (its key in the results): each method gives the
+    section's part of one output, empty where it has none.
+
+    ``SUMMARY_COLUMN``: the heading and the width of the summary's column naming the section's
+    chosen part (:mod:`calc.report.summary`), None for no column. ``COMPARED_PART``: ``calc
+    compare`` and the review's variants name its chosen part and its worst governing utilization
+    (of :meth:`calc.sections.protocol.Result.ranked`)."""
+
+    NAME: ClassVar[str]
+    SUMMARY_COLUMN: ClassVar[tuple[str, str] | None] = None
+    COMPARED_PART: ClassVar[bool] = False
+
+    def result(self, report):
+        """The section's result in ``report``; None where the case has none or cannot be evaluated."""
+        return result_of(self.NAME, report)
+
+    # -- the calc report's blocks (:class:`calc.report.Report`) ---------------------------------
+
+    def sources(self, report) -> list[str]:
+        """The source's sections the section is computed from (method)."""
+        return []
+
+    def readings(self, report) -> set[str]:
+        """The keys of the errata readings that apply (method)."""
+        return set()
+
+    def input_rows(self, report) -> list[list[str]]:
+        """Rows of the inputs table (:func:`input_row`)."""
+        return []
+
+    def inputs(self, report) -> list[str]:
+        """Tables of inputs after the inputs table."""
+        return []
+
+    def steps(self, report) -> list[str]:
+        """The calculations, ``symbol = formula = values = result``."""
+        return []
+
+    def results(self, report) -> list[str]:
+        """What the section gives besides its checks."""
+        return []
+
+    def checks(self, report) -> list[str]:
+        """The checks of the part chosen (or the closest), or of the section's own values."""
+        return []
+
+    def candidates(self, report) -> list[str]:
+        """The candidates ranked."""
+        return []
+
+    def figures(self, report) -> list:
+        """(figure, caption) pairs; the caption is LaTeX."""
+        return []
+
+    def chosen(self, report) -> list[tuple]:
+        """(what, part, detail) of the part chosen; part None where none passes."""
+        return []
+
+    def order_lines(self, report) -> list[str]:
+        """What to order."""
+        return []
+
+    # -- the design review's page and the comparison of designs ----------------------------------
+
+    def page(self, result, view) -> str:
+        """The section's part of the review's page, HTML (:mod:`calc.report.page`): of its
+        ``result`` (None where the case has none), as ``view`` (:class:`calc.report.page.View`) asks."""
+        return ""
+
+    def compared(self) -> tuple:
+        """Rows of the comparison of designs (``calc compare``) beside the chosen parts: (name,
+        the row's text of the section's result, None where a design has none)."""
+        return ()
 
 
 def checks_table(checks: list, caption: str) -> str:
@@ -226,8 +295,8 @@ def further_readings(name: str, report) -> set[str]:
 def further_checks(name: str, report) -> list[str]:
     """The checks of the best-ranked candidate, or the checks against the case's requirements."""
     r = result_of(name, report)
-    if ranks(r):
-        best = r.selection.best
+    if r is not None and r.ranked() is not None:
+        best = r.ranked().best
         return [checks_table(best.checks, f"Checks of {name} {best.part}")] if best.checks else []
     g = None if r is None else r.governing()
     return [] if g is None else [requirement_table(g.checks, f"{name.capitalize()} against the requirements of the case")]
