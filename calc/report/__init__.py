@@ -298,5 +298,6 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     # The case as evaluated: with a motor from a catalog, its ratings and inertia are the chosen motor's.
     report.case, report.evaluated, report.ratios = evaluated.case, evaluated, ratios
     for name, r in report._ranked():
-        report.files += [(f"{name.capitalize()} catalog", report_path(path, case.folder), sha) for path, sha in r.ranked().catalog.members]
+        report.files += [(f"{name.capitalize()} catalog", report_path(path, case.folder), sha)
+                         for path, sha in r.ranked().catalog.members]
     return report

@@ -11,7 +11,9 @@ import numpy as np
 
 from ..sections import gearbox
 from ..sections.accuracy import NAME
-from .common import Renderer, described, further_checks, further_readings, further_sources, raw_section_tables, result_of
+from .common import (
+    Renderer, described, further_checks, further_readings, further_sources, raw_section_tables, result_of,
+)
 from .latex import latex_escape, listed, plain, prose, q, step_block, table
 from .page import in_system, table as html_table, value
 from .provenance import PROJECT_DIR
@@ -63,7 +65,8 @@ class AccuracyRenderer(Renderer):
             out.append(rf"From \texttt{{{latex_escape(path)}}}.")
             out.append(step_block(analysis.step().formula.result.description.capitalize(), analysis.step()))
         out.append(r"\subsection{Accuracy of the drive train at the output}")
-        out.append(prose(f"Applied torque: {a.rule.why}, so the positioning rule of E13 for that range applies, {a.rule.text}."))
+        out.append(prose(f"Applied torque: {a.rule.why}, so the positioning rule of E13 for that range applies, "
+                         f"{a.rule.text}."))
         out += [step_block(s.formula.result.description.capitalize(), s) for s in a.steps()]
         out += [step_block(title, step) for title, step in r.arc_steps]
         return out
@@ -76,6 +79,8 @@ class AccuracyRenderer(Renderer):
             return []
         a = r.shown
         rep = "repeatability, an upper bound under torque (E13)" if a.repeatability_is_bound else "repeatability (E13)"
+        lower = f"; a lower bound: unknown {'; '.join(a.unknown)}" if a.unknown else ""
+        not_known = f"; not known: unknown {'; '.join(a.unknown_chain)}" if a.unknown_chain else ""
         rows = [
             [r"$C_{\mathrm{total}}$", (r"$\leq$ " if a.unknown_chain else "") + q(a.C_total),
              prose("total torsional stiffness at the output (E11)" + ("; an upper bound" if a.unknown_chain else ""))],
@@ -85,15 +90,17 @@ class AccuracyRenderer(Renderer):
             [r"$\varphi_{\mathrm{LM}}$", (r"$\geq$ " if a.unknown_chain else "") + q(a.lost_motion),
              prose("total lost motion at the applied torque (E12)" + ("; a lower bound" if a.unknown_chain else ""))],
             [r"$\Delta\varphi_{P}$", (r"$\geq$ " if a.unknown else "") + q(a.positioning_accuracy),
-             prose(f"positioning accuracy, {a.positioning_rule} (E13)" + (f"; a lower bound: unknown {'; '.join(a.unknown)}" if a.unknown else ""))],
-            ["–", q(a.repeatability), prose(rep + (f"; not known: unknown {'; '.join(a.unknown_chain)}" if a.unknown_chain else ""))],
+             prose(f"positioning accuracy, {a.positioning_rule} (E13)" + lower)],
+            ["–", q(a.repeatability), prose(rep + not_known)],
         ]
-        rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(arc), prose(f"as an arc at r = {plain(a.radius)}")] for key, arc in a.arcs.items()]
+        rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(arc), prose(f"as an arc at r = {plain(a.radius)}")]
+                 for key, arc in a.arcs.items()]
         comp = [[latex_escape(m.name), latex_escape(m.side), q(m.stiffness_at_output), q(m.backlash_at_output),
-                 q(m.transmission_accuracy_at_output), f"{100 * m.share_of_compliance:.1f}", q(m.twist_at_applied_torque)]
-                for m in a.members]
+                 q(m.transmission_accuracy_at_output), f"{100 * m.share_of_compliance:.1f}",
+                 q(m.twist_at_applied_torque)] for m in a.members]
         return [
-            r"\subsection{Accuracy: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows),
+            r"\subsection{Accuracy: results}",
+            table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows),
             table(r"@{}l l r r r r r@{}", ["Member", "Side", "$C$", "$j_t$", r"$\varphi_{\mathrm{TA}}$",
                                            r"$1/C$ [\%]", r"Twist at $T$"], comp, small=True,
                   caption=prose(f"Members of the chain referred to the output, at T = {plain(a.applied_torque)}")),
@@ -105,7 +112,9 @@ class AccuracyRenderer(Renderer):
         r, g = self.result(report), result_of(gearbox.NAME, report)
         if r is None and g is None:
             return []
-        from ..figures.accuracy_plots import hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure
+        from ..figures.accuracy_plots import (
+            hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure,
+        )
         from ..domain.hysteresis import analyze_loop, model_for_part, read_loop
 
         out = []
@@ -116,7 +125,8 @@ class AccuracyRenderer(Renderer):
             for name, (path, analysis) in spec.loops.items():
                 # a relative display path lies in the checkout (an installed calc shows measurements absolute)
                 loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
-                out.append((hysteresis_figure(loop, analysis), latex_escape(f"Measured hysteresis loop of {name} (E12).")))
+                out.append((hysteresis_figure(loop, analysis),
+                            latex_escape(f"Measured hysteresis loop of {name} (E12).")))
         if (spec is None or not spec.loops) and g is not None:
             sel, row = g.selection, int(g.selection.order[0])
             if not (np.isnan(sel.catalog["C_t21"][row].magnitude) or np.isnan(sel.catalog["backlash"][row].magnitude)):
@@ -124,13 +134,15 @@ class AccuracyRenderer(Renderer):
                 model = model_for_part(part, str(sel.catalog.path))
                 loop = model.loop(800)
                 out.append((hysteresis_figure(loop, analyze_loop(loop, model.nominal_torque)),
-                            prose(f"Hysteresis loop of {part} modelled from its catalog figures (C_t21, backlash, T_2N), "
-                                  "not a measurement (E12).")))
+                            prose(f"Hysteresis loop of {part} modelled from its catalog figures "
+                                  "(C_t21, backlash, T_2N), not a measurement (E12).")))
         if spec is not None:
             for name, (path, analysis) in spec.traces.items():
-                out.append((transmission_error_figure(analysis), latex_escape(f"Transmission error of {name}, from {path}.")))
+                out.append((transmission_error_figure(analysis),
+                            latex_escape(f"Transmission error of {name}, from {path}.")))
             if spec.positions is not None:
-                out.append((positioning_scatter_figure(spec.positions), "Measured positions: accuracy and repeatability."))
+                out.append((positioning_scatter_figure(spec.positions),
+                            "Measured positions: accuracy and repeatability."))
         return out
 
     def page(self, r, view) -> str:
@@ -138,11 +150,15 @@ class AccuracyRenderer(Renderer):
         if r is None:
             return ""
         a = r.shown
+        chain = a.unknown_chain  # a member's twist or backlash unknown: bounds
         rows = [
-            [typeset("C_total"), "total torsional stiffness at the output" + (" (<b>an upper bound</b>)" if a.unknown_chain else ""),
-             ("≤ " if a.unknown_chain else "") + value(a.C_total)],
-            [typeset("phi_LM"), f"lost motion at the applied torque {value(a.applied_torque)}" + (" (<b>a lower bound</b>)" if a.unknown_chain else ""),
-             ("≥ " if a.unknown_chain else "") + value(a.lost_motion)],
+            [typeset("C_total"),
+             "total torsional stiffness at the output" + (" (<b>an upper bound</b>)" if chain else ""),
+             ("≤ " if chain else "") + value(a.C_total)],
+            [typeset("phi_LM"),
+             f"lost motion at the applied torque {value(a.applied_torque)}"
+             + (" (<b>a lower bound</b>)" if chain else ""),
+             ("≥ " if chain else "") + value(a.lost_motion)],
             ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.positioning_rule)})"
              + (f"; <b>a lower bound</b>: unknown {typeset('; '.join(a.unknown))}" if a.unknown else ""),
              ("≥ " if a.unknown else "") + value(a.positioning_accuracy)],

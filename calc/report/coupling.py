@@ -10,7 +10,8 @@ from html import escape
 from ..core.units import sig
 from ..sections.coupling import NAME
 from .common import (
-    Renderer, candidates_table, described, further_checks, further_readings, further_sources, raw_section_tables, rejected, result_of,
+    Renderer, candidates_table, described, further_checks, further_readings, further_sources, raw_section_tables,
+    rejected, result_of,
 )
 from .latex import breakable, itemize, latex_escape, plain, prose, q, sources_list, step_block, table
 from .page import candidates_shown, notes, table as html_table, utilization, value, verdict_cell
@@ -52,15 +53,18 @@ def _torsion(r) -> list[str]:
 
 
 def _torsion_table(t) -> str:
-    """The drive train as masses and springs with its natural frequencies (:class:`calc.sections.coupling.Torsion`), HTML."""
+    """The drive train as masses and springs with its natural frequencies
+    (:class:`calc.sections.coupling.Torsion`), HTML."""
     if t is None:
         return ""
     rows = [[escape(members), value(J), escape(spring[0]) if spring else "", value(spring[1]) if spring else ""]
             for (members, J), spring in zip(t.masses, [*t.springs, None])]
     frequencies = ", ".join(value(f) for f in t.natural_frequencies)
-    check = "".join(f"<div class=note>{typeset(c.criterion)}: {value(c.rated_value)}, utilization {utilization(c.utilization)}"
-                    f"{'' if c.governs else ' (for information)'}</div>" for c in t.checks)
-    missing = "" if t.complete else f"<div class=note>incomplete: the case does not give {escape('; '.join(t.missing))}</div>"
+    check = "".join(f"<div class=note>{typeset(c.criterion)}: {value(c.rated_value)}, "
+                    f"utilization {utilization(c.utilization)}{'' if c.governs else ' (for information)'}</div>"
+                    for c in t.checks)
+    missing = ("" if t.complete
+               else f"<div class=note>incomplete: the case does not give {escape('; '.join(t.missing))}</div>")
     return (f"<h3>Drive train with {escape(t.part)}, at {escape(t.shaft)}</h3>"
             + html_table(["masses", "inertia", "spring to the next", "stiffness"], rows, numeric={1, 3})
             + f"<div class=note>natural frequencies {frequencies} (rigid-body mode left out)</div>" + check + missing)
@@ -119,13 +123,17 @@ class CouplingRenderer(Renderer):
             [r"$M_{N}$", q(r.M_N), prose(f"nominal torque of the coupling, S_A = {r.service_factor:g} included (E8)")],
             [r"$T_{\mathrm{op}}$", q(r.T_op), prose("peak torque of normal operation (M_N with S_A = 1)")],
             [r"$K_{\vartheta}$", f"{r.temperature_factor:g}",
-             prose("temperature factor (elastomer couplings, E9)" + (f" at {plain(r.temperature)}" if r.temperature else ""))],
+             prose("temperature factor (elastomer couplings, E9)"
+                   + (f" at {plain(r.temperature)}" if r.temperature else ""))],
             [r"$f_{e,\mathrm{min}}$", q(r.f_e_min), prose("lowest natural frequency allowed, 2 f_er (E7)")],
         ]
         if r.selection.start_factor is not None:
-            rows.append([r"$S_{z}$", f"{r.selection.start_factor:g}", prose(f"start factor at {plain(r.starts_per_hour)} ({r.start_factors})")])
-        out = [r"\subsection{Coupling: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows)]
-        bores = [[rf"\texttt{{\footnotesize coupling.{latex_escape(b.key)}}}", latex_escape(b.text), latex_escape(b.limits or "–")] for b in r.bores]
+            rows.append([r"$S_{z}$", f"{r.selection.start_factor:g}",
+                         prose(f"start factor at {plain(r.starts_per_hour)} ({r.start_factors})")])
+        out = [r"\subsection{Coupling: results}",
+               table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows)]
+        bores = [[rf"\texttt{{\footnotesize coupling.{latex_escape(b.key)}}}", latex_escape(b.text),
+                  latex_escape(b.limits or "–")] for b in r.bores]
         if bores:
             out.append(table(r"@{}l l l@{}", ["Case key", "Shaft as written", "Limits of the shaft (ISO 286)"], bores,
                              caption="Shafts of the coupling"))
@@ -142,15 +150,17 @@ class CouplingRenderer(Renderer):
         listed = r.selection.candidates()
         doubts = [f"{c.part}: {c.unclear}" for c in listed if c.unclear]
         _, source_list = sources_list(c.source for c in listed if c.source)
-        notes = ([r"\noindent Doubtful figures of the rows listed: " + breakable("; ".join(doubts)) + r"\par"] if doubts else []) + (
-            [r"\paragraph{Sources of the rows listed.}" + source_list] if source_list else [])
-        return [rf"\subsection*{{{NAME.capitalize()}}}",
-                candidates_table(listed, r.selection.selected, latex_escape(f"Utilization of each check of the {NAME} candidates, best first")),
+        notes = ([r"\noindent Doubtful figures of the rows listed: " + breakable("; ".join(doubts)) + r"\par"]
+                 if doubts else [])
+        notes += [r"\paragraph{Sources of the rows listed.}" + source_list] if source_list else []
+        caption = latex_escape(f"Utilization of each check of the {NAME} candidates, best first")
+        return [rf"\subsection*{{{NAME.capitalize()}}}", candidates_table(listed, r.selection.selected, caption),
                 *notes, *rejected(listed)]
 
     def chosen(self, report) -> list[tuple]:
         r = self.result(report)
-        return [] if r is None else [(NAME.capitalize(), r.selection.selected, f"catalog {r.inputs.catalog.shown_name}")]
+        return [] if r is None else [(NAME.capitalize(), r.selection.selected,
+                                      f"catalog {r.inputs.catalog.shown_name}")]
 
     def order_lines(self, report) -> list[str]:
         r = self.result(report)
@@ -166,8 +176,9 @@ class CouplingRenderer(Renderer):
         out = [(natural_frequency_figure(sel, r.f_e_min.quantity),
                 prose("Natural frequency of each coupling candidate against the lowest allowed, 2 f_er (E7)."))]
         if (sel.catalog.text["type"] == "elastomer").any():
-            out.append((temperature_factor_figure(cc.inputs["temperature"], cc.inputs["temperature_factors"]),
-                        prose(f"Temperature factor of elastomer couplings ({cc.inputs['temperature_factors'].source}).")))
+            factors = cc.inputs["temperature_factors"]
+            out.append((temperature_factor_figure(cc.inputs["temperature"], factors),
+                        prose(f"Temperature factor of elastomer couplings ({factors.source}).")))
         return out
 
     def page(self, s, view) -> str:
@@ -186,11 +197,11 @@ class CouplingRenderer(Renderer):
              value(c.f_e), value(c.f_1), utilization(c.worst), "<br>".join(typeset(x) for x in c.reasons)]
             for k, c in enumerate(shown, start=1)
         ]
-        header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"), typeset("f_1"),
-                  "worst utilization", "reasons"]
+        header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"),
+                  typeset("f_1"), "worst utilization", "reasons"]
         return (f"<h3>Coupling candidates</h3><div class=note>{typeset(s.ranking)}</div>"
-                + html_table(header, rows, numeric={0, 4, 5, 6, 7, 8}, marked=0 if sel.selected else None) + more + notes(s.notes)
-                + _torsion_table(s.torsion))
+                + html_table(header, rows, numeric={0, 4, 5, 6, 7, 8}, marked=0 if sel.selected else None) + more
+                + notes(s.notes) + _torsion_table(s.torsion))
 
 
 RENDERER = CouplingRenderer()

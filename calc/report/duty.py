@@ -45,7 +45,8 @@ class DutyRenderer(Renderer):
         rows = []
         for k, (phase, t, n, T) in enumerate(zip(p.phases, p.durations, p.speeds, p.torques), start=1):
             moving = phase != "pause"
-            rows.append([str(k), phase, num(t, "s"), num(n, "rpm") if moving else "–", num(T, "N*m") if moving else "–"])
+            rows.append([str(k), phase, num(t, "s"), num(n, "rpm") if moving else "–",
+                         num(T, "N*m") if moving else "–"])
         return [table(
             r"@{}r l r r r@{}",
             ["k", "Phase", f"${t_k_symbol.latex}$ [s]", rf"${s['n_2k'].latex}$ [rpm]", rf"${s['T_2k'].latex}$ [N·m]"],
@@ -75,10 +76,12 @@ class DutyRenderer(Renderer):
         if report.evaluated is None:
             return []
         d = self.result(report)
-        shown = dataclasses.replace(d.shock_factors, source=report.relative(d.fs_table, str))  # the case's table, its path as the case names it
+        # The case's table, its path as the case names it.
+        shown = dataclasses.replace(d.shock_factors, source=report.relative(d.fs_table, str))
         return [
             (load_cycle_figure(d.profile), "Load cycle at the gearbox output, with ED and the operating mode (E3)."),
-            (shock_factor_figure(d.Zh, shown), latex_escape(f"Shock factor against cycles per hour ({shown.source}); the case's point marked (E4).")),
+            (shock_factor_figure(d.Zh, shown),
+             latex_escape(f"Shock factor against cycles per hour ({shown.source}); the case's point marked (E4).")),
         ]
 
     def page(self, d, view) -> str:
@@ -86,7 +89,8 @@ class DutyRenderer(Renderer):
         the S5 and S1 values."""
         v = d.shown
         parts = [f"<b>{escape(v.mode)}</b>", f"ED {value(v.ED)}", f"cycle {value(v.t_cycle)}",
-                 f"{typeset('Z_h')} {value(v.Z_h)}", f"{typeset('f_s')} {sig(v.f_s)}", f"{typeset('n_2max')} {value(v.n_2max)}",
+                 f"{typeset('Z_h')} {value(v.Z_h)}", f"{typeset('f_s')} {sig(v.f_s)}",
+                 f"{typeset('n_2max')} {value(v.n_2max)}",
                  f"{typeset('T_2max')} {value(v.T_2max)}" if v.T_2max is not None else "",
                  f"{typeset('n_2m')} {value(v.n_2m)}", f"{typeset('T_2m')} {value(v.T_2m)}"]
         return '<div class="values">Duty: ' + " · ".join(p for p in parts if p) + "</div>"

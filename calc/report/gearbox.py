@@ -50,8 +50,8 @@ class GearboxRenderer(Renderer):
             rows.append(input_row("motor.shaft", c.motor_shaft.text))
         load = c.output_load
         if load is not None:
-            given = (("axial_force", load.axial_force), ("radial_force", load.radial_force), ("lever_arm", load.lever_arm),
-                     ("axial_force_radius", load.axial_radius))
+            given = (("axial_force", load.axial_force), ("radial_force", load.radial_force),
+                     ("lever_arm", load.lever_arm), ("axial_force_radius", load.axial_radius))
             rows += [input_row(f"load.{key}", q) for key, q in given if q is not None]
         return rows
 
@@ -70,7 +70,8 @@ class GearboxRenderer(Renderer):
         if r is None:
             return []
         best = r.selection.best
-        return [checks_table(best.checks, f"Checks of gearbox {best.part}" + (" (chosen)" if r.selection.selected else " (the closest candidate; none passes)"))]
+        which = " (chosen)" if r.selection.selected else " (the closest candidate; none passes)"
+        return [checks_table(best.checks, f"Checks of gearbox {best.part}{which}")]
 
     def candidates(self, report) -> list[str]:
         """Every candidate at the ratio: its catalog ratings, and the utilization of each check."""
@@ -96,7 +97,8 @@ class GearboxRenderer(Renderer):
             j1, hub = sel.J_1[r], sel.J_1_hub[r]
             rows.append([
                 latex_escape(str(cat.parts[r])) + mark + (r" $\star$" if best[r] else ""),
-                latex_escape(f"{family[r]} {size[r]}".strip()) + (rf" {{\scriptsize {latex_escape(cat.catalog_of(r))}}}" if several else ""),
+                latex_escape(f"{family[r]} {size[r]}".strip())
+                + (rf" {{\scriptsize {latex_escape(cat.catalog_of(r))}}}" if several else ""),
                 num(cat["T_2N"][r], "N*m"), num(cat["T_2B"][r], "N*m"),
                 num(cat["n_1N"][r], "rpm"), num(cat["n_1max"][r], "rpm"),
                 num(cat["eta"][r], "percent"),
@@ -104,18 +106,21 @@ class GearboxRenderer(Renderer):
                 "–" if np.isnan(hub.magnitude) else sig(hub.m_as("mm")),
                 f"[{numbers[str(cat.text['source'][r])]}]",
             ])
-        note = r"$\star$ smallest adequate size of its family. $J_1$ for the clamping hub of bore $d_{\mathrm{hub}}$. Sources by number below."
+        note = (r"$\star$ smallest adequate size of its family. $J_1$ for the clamping hub of bore $d_{\mathrm{hub}}$. "
+                "Sources by number below.")
         if doubts:
-            note = "".join(rf"$^{{\dagger{k}}}$ doubtful figures of {breakable(d)}. " for k, d in enumerate(doubts, start=1)) + note
+            note = "".join(rf"$^{{\dagger{k}}}$ doubtful figures of {breakable(d)}. "
+                           for k, d in enumerate(doubts, start=1)) + note
         if illustrative:
             note = r"$^{*}$ illustrative row: not a maker's own figures. " + note
         return [
             table(
                 r"@{}l l r r r r r r r r@{}",
                 ["Part", "Family, size", *(stacked(symbol, f"[{unit}]") for symbol, unit in (
-                    ("$T_{2N}$", "N·m"), ("$T_{2B}$", "N·m"), ("$n_{1N}$", "rpm"), (r"$n_{1\mathrm{max}}$", "rpm"), (r"$\eta$", r"\%"),
-                    ("$J_1$", "kg·cm²"), (r"$d_{\mathrm{hub}}$", "mm"))), "Src."],
-                rows, caption=latex_escape(f"Catalog ratings of the candidates ({cat.shown_name}), best first"), note=note, small=True, narrow=True,
+                    ("$T_{2N}$", "N·m"), ("$T_{2B}$", "N·m"), ("$n_{1N}$", "rpm"), (r"$n_{1\mathrm{max}}$", "rpm"),
+                    (r"$\eta$", r"\%"), ("$J_1$", "kg·cm²"), (r"$d_{\mathrm{hub}}$", "mm"))), "Src."],
+                rows, caption=latex_escape(f"Catalog ratings of the candidates ({cat.shown_name}), best first"),
+                note=note, small=True, narrow=True,
             ),
             r"\paragraph{Sources of the rows.}" + source_list,
             candidates_table(listed, sel.selected, f"Utilization of each check (required / rated), {sel.mode} governs; "
@@ -131,8 +136,9 @@ class GearboxRenderer(Renderer):
 
         return [
             (utilization_figure(r.selection), "Utilization of the governing checks of each candidate, best first."),
-            (comparison_figure(r.selection), "The makers compared: the highest governing utilization of each candidate, "
-                                                  "coloured by family (and catalog, where several are ranked together)."),
+            (comparison_figure(r.selection), "The makers compared: the highest governing utilization of each "
+                                             "candidate, coloured by family (and catalog, where several are ranked "
+                                             "together)."),
         ]
 
     def chosen(self, report) -> list[tuple]:
@@ -140,7 +146,8 @@ class GearboxRenderer(Renderer):
         if r is None:
             return []
         sel = r.selection
-        return [("Gearbox", sel.selected, f"ratio {sel.best.ratio:g}, {sel.mode} checks, catalog {sel.catalog.shown_name}")]
+        return [("Gearbox", sel.selected,
+                 f"ratio {sel.best.ratio:g}, {sel.mode} checks, catalog {sel.catalog.shown_name}")]
 
     def order_lines(self, report) -> list[str]:
         r = self.result(report)
@@ -165,7 +172,8 @@ class GearboxRenderer(Renderer):
              "<br>".join(typeset(x) for x in c.reasons)]
             for k, c in enumerate(shown, start=1)
         ]
-        header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data", "reasons"]
+        header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data",
+                  "reasons"]
         return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}; {FORCING}</div>"
                 + html_table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None,
                              force=("gearbox.part", [c.part for c in shown]))

@@ -44,22 +44,24 @@ class MotionRenderer(Renderer):
         if m is None:
             return []
         if m.record is not None:
-            return [rf"The load cycle is the drive record \texttt{{{latex_escape(m.record)}}} (case key \texttt{{[drive\_record]}}), "
-                    rf"{len(m.cycle.dt)} intervals between its rows."]
+            return [rf"The load cycle is the drive record \texttt{{{latex_escape(m.record)}}} "
+                    rf"(case key \texttt{{[drive\_record]}}), {len(m.cycle.dt)} intervals between its rows."]
         rows = []
         for k, (move, given) in enumerate(zip(m.moves, m.distances), start=1):
             if move.dwell:
                 rows.append([str(k), "dwell", "–", sig(move.time), "–", "–", "–"])
             else:
-                rows.append([str(k), "move", latex_escape(f"{given:~P}"), sig(move.time), sig(move.accel_time), sig(move.decel_time),
-                             sig(move.jerk_time) if move.jerk_time else "–"])
-        kind = "rotary table" if not m.mechanism.linear else m.mechanism.type.replace("-", " and ").replace("ball and screw", "ball screw")
+                rows.append([str(k), "move", latex_escape(f"{given:~P}"), sig(move.time), sig(move.accel_time),
+                             sig(move.decel_time), sig(move.jerk_time) if move.jerk_time else "–"])
+        kind = ("rotary table" if not m.mechanism.linear
+                else m.mechanism.type.replace("-", " and ").replace("ball and screw", "ball screw"))
         return [table(
             r"@{}r l r r r r r@{}",
             ["k", "", "Distance", "$t_m$ [s]", "$t_a$ [s]", "$t_d$ [s]", "$t_j$ [s]"],
             rows,
             caption=rf"Moves of the load, repeated (case key \texttt{{[[move]]}}; mechanism: {latex_escape(kind)})",
-            note="A trapezoid has no jerk time; with one, each speed ramp starts and ends with a ramp of constant jerk (an S-curve).",
+            note="A trapezoid has no jerk time; with one, each speed ramp starts and ends with a ramp of constant jerk "
+                 "(an S-curve).",
         )]
 
     def steps(self, report) -> list[str]:
@@ -67,13 +69,14 @@ class MotionRenderer(Renderer):
             return []
         r = report.evaluated[NAME]
         out = [r"\subsection{Motion and mechanism}"] + [step_block(title, step) for title, step in r.steps]
-        rows = [[str(j), g.phase, *(signed(sig(v.value)) for v in (g.duration, g.speed, g.torque))] for j, g in enumerate(r.segments, start=1)]
+        rows = [[str(j), g.phase, *(signed(sig(v.value)) for v in (g.duration, g.speed, g.torque))]
+                for j, g in enumerate(r.segments, start=1)]
         out.append(table(
             r"@{}r l r r r@{}", ["k", "Phase", "$t_k$ [s]", "$n_{2,k}$ [rpm]", "$T_{2,k}$ [N·m]"], rows,
             caption="Segments derived from the sampled cycle, used as the load cycle",
-            note=(f"{r.samples} samples per cycle. Mean speed of each segment; its torque gives the segment's cubic mean "
-                  "(the integral over the samples; in a trapezoid's phase the torque is constant and this is its value). "
-                  "A pause holds the torque that keeps the load at rest."),
+            note=(f"{r.samples} samples per cycle. Mean speed of each segment; its torque gives the segment's cubic "
+                  "mean (the integral over the samples; in a trapezoid's phase the torque is constant and this is its "
+                  "value). A pause holds the torque that keeps the load at rest."),
         ))
         return out
 
@@ -93,11 +96,13 @@ class MotionRenderer(Renderer):
         :class:`calc.sections.motion.MotionResult`, None without one), or that its segments were
         changed by hand (then the moves and mechanism no longer derive it)."""
         if view.typed_by_hand:
-            return '<div class="values">Load cycle: the segments as changed here (the case derives them from its motion; reset to derive them again)</div>'
+            return ('<div class="values">Load cycle: the segments as changed here (the case derives them from its '
+                    'motion; reset to derive them again)</div>')
         if m is None:
             return ""
-        parts = [f"{escape(m.mechanism or '')} from its {escape(m.source)}s".strip(), f"peak speed {value(m.peak_speed)}",
-                 f"peak acceleration {value(m.peak_acceleration)}", f"{typeset('J_L')} {value(m.J_L)}" if m.J_L is not None else ""]
+        parts = [f"{escape(m.mechanism or '')} from its {escape(m.source)}s".strip(),
+                 f"peak speed {value(m.peak_speed)}", f"peak acceleration {value(m.peak_acceleration)}",
+                 f"{typeset('J_L')} {value(m.J_L)}" if m.J_L is not None else ""]
         return '<div class="values">Motion: ' + " · ".join(p for p in parts if p) + "</div>"
 
 

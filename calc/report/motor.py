@@ -50,12 +50,14 @@ class MotorRenderer(Renderer):
             heading += f": {m.selection.best.part}" + ("" if m.selection.selected else " (the closest; none passes)")
         blocks = [rf"\subsection{{{latex_escape(heading)}}}"]
         if not m.load.rotor_term:
-            blocks.append(prose("The load cycle is typed: its accelerations are not known, so the rotor term (J_motor + J_1) · α_1 is left out."))
+            blocks.append(prose("The load cycle is typed: its accelerations are not known, so the rotor term "
+                                "(J_motor + J_1) · α_1 is left out."))
         for title, step, note in m.steps:
             samples = len(m.output.dt)
             if step.formula is T_1rms and samples > SHOWN_TERMS:  # the formula and its result, not every term
-                blocks.append(rf"\paragraph{{{title}.}} ${T_1rms.latex()} = {sig(step.result.m_as('N*m'))}\,{latex_unit('N*m')}$"
-                              + latex_escape(f" over the {samples} samples of the cycle. ") + prose(T_1rms.reference))
+                rms = rf"${T_1rms.latex()} = {sig(step.result.m_as('N*m'))}\,{latex_unit('N*m')}$"
+                over = latex_escape(f" over the {samples} samples of the cycle. ")
+                blocks.append(rf"\paragraph{{{title}.}} {rms}" + over + prose(T_1rms.reference))
             else:
                 blocks.append(step_block(title, step, note or ""))
         return blocks
@@ -76,14 +78,18 @@ class MotorRenderer(Renderer):
             return []
         sel = m.selection
         listed = sel.candidates()
-        rows = [[latex_escape(c.part), q(c.rated_torque), q(c.rotor_inertia), "–" if c.inertia_ratio is None else f"{c.inertia_ratio:.2f}",
-                 latex_escape(c.form)] for c in listed[:SHOWN_ROWS]]
-        more = f"; {len(listed) - SHOWN_ROWS} more in the candidates' utilization below" if len(listed) > SHOWN_ROWS else ""
+        rows = [[latex_escape(c.part), q(c.rated_torque), q(c.rotor_inertia),
+                 "–" if c.inertia_ratio is None else f"{c.inertia_ratio:.2f}", latex_escape(c.form)]
+                for c in listed[:SHOWN_ROWS]]
+        left = len(listed) - SHOWN_ROWS
+        more = f"; {left} more in the candidates' utilization below" if left > 0 else ""
+        caption = (f"The motors of {sel.catalog.shown_name}, best first ({sel.inertia_limit:g} is the limit of λ, "
+                   f"from {sel.inertia_limit_from}){more}")
+        header = ["Part", "$M_N$", r"$J_{\mathrm{motor}}$", r"$\lambda$", "Peak characteristic"]
         return [r"\subsection*{Motor}",
-                table(r"@{}l r r r l@{}", ["Part", "$M_N$", r"$J_{\mathrm{motor}}$", r"$\lambda$", "Peak characteristic"], rows,
-                      caption=latex_escape(f"The motors of {sel.catalog.shown_name}, best first ({sel.inertia_limit:g} is the limit of λ, "
-                                           f"from {sel.inertia_limit_from}){more}"), small=True),
-                candidates_table(listed, sel.selected, latex_escape("Utilization of each check of the motor candidates, best first")),
+                table(r"@{}l r r r l@{}", header, rows, caption=latex_escape(caption), small=True),
+                candidates_table(listed, sel.selected,
+                                 latex_escape("Utilization of each check of the motor candidates, best first")),
                 *rejected(listed)]
 
     def chosen(self, report) -> list[tuple]:
@@ -106,8 +112,9 @@ class MotorRenderer(Renderer):
 
             best = int(m.selection.order[0])
             out.append((torque_speed_figure(m.selection, best),
-                        latex_escape(f"The cycle's operating points under the peak characteristic of {m.selection.catalog.parts[best]}, "
-                                     "its rated point and the RMS torque at the mean speed.")))
+                        latex_escape(f"The cycle's operating points under the peak characteristic of "
+                                     f"{m.selection.catalog.parts[best]}, its rated point and the RMS torque "
+                                     "at the mean speed.")))
         return out
 
     def order_lines(self, report) -> list[str]:
@@ -117,7 +124,8 @@ class MotorRenderer(Renderer):
         sel = m.selection
         row = int(sel.order[0])
         family = str(sel.catalog.family[row])
-        return [rf"Motor \textbf{{{latex_escape(sel.selected)}}}" + latex_escape(f" ({sel.catalog.text['maker'][row]}" + (f", {family}" if family else "") + ")")]
+        maker = f" ({sel.catalog.text['maker'][row]}" + (f", {family}" if family else "") + ")"
+        return [rf"Motor \textbf{{{latex_escape(sel.selected)}}}" + latex_escape(maker)]
 
     def page(self, m, view) -> str:
         """The catalog motors (of ``m``, a :class:`calc.sections.motor.MotorResult`), best first;
@@ -127,13 +135,15 @@ class MotorRenderer(Renderer):
         sel = m.selection
         shown, more = candidates_shown(sel, view.shown)
         rows = [
-            [str(k), escape(c.part), verdict_cell(c.passes), utilization(c.worst), value(c.rated_torque), value(c.rotor_inertia),
-             "" if c.inertia_ratio is None else sig(c.inertia_ratio, 3), escape(c.form), "<br>".join(typeset(x) for x in c.reasons)]
+            [str(k), escape(c.part), verdict_cell(c.passes), utilization(c.worst), value(c.rated_torque),
+             value(c.rotor_inertia), "" if c.inertia_ratio is None else sig(c.inertia_ratio, 3), escape(c.form),
+             "<br>".join(typeset(x) for x in c.reasons)]
             for k, c in enumerate(shown, start=1)
         ]
         header = ["rank", "part", "verdict", "worst utilization", typeset("M_N"), typeset("J_motor"), "inertia ratio λ",
                   "peak characteristic", "reasons"]
-        return (f"<h3>Motor candidates, through {escape(m.through)}</h3><div class=note>{typeset(m.ranking)}; {FORCING}</div>"
+        return (f"<h3>Motor candidates, through {escape(m.through)}</h3>"
+                f"<div class=note>{typeset(m.ranking)}; {FORCING}</div>"
                 + html_table(header, rows, numeric={0, 3, 4, 5, 6}, marked=0 if sel.selected else None,
                              force=("motor.part", [c.part for c in shown]))
                 + more)

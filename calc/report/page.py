@@ -22,8 +22,9 @@ PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 #: The unit system the results are shown in: "SI" as the results write them, or "inch-pound".
 SYSTEM = contextvars.ContextVar("system", default="SI")
 #: A result's SI unit and its inch-pound counterpart (the units a US maker's sheet writes).
-INCH_POUND = {"N*m": "lbf*in", "N": "lbf", "mm": "in", "m": "in", "kg*cm**2": "lb*in**2", "kg*m**2": "lb*in**2", "kg": "lb",
-              "N*m/arcmin": "lbf*in/arcmin", "N*m/rad": "lbf*in/rad", "m/s": "in/s", "mm/s": "in/s", "m/s**2": "in/s**2"}
+INCH_POUND = {"N*m": "lbf*in", "N": "lbf", "mm": "in", "m": "in", "kg*cm**2": "lb*in**2", "kg*m**2": "lb*in**2",
+              "kg": "lb", "N*m/arcmin": "lbf*in/arcmin", "N*m/rad": "lbf*in/rad", "m/s": "in/s", "mm/s": "in/s",
+              "m/s**2": "in/s**2"}
 #: Under a table whose rows force their part (:func:`table`'s ``force``).
 FORCING = "on the served page, a click on a row forces that part"
 
@@ -97,9 +98,12 @@ def table(header: list[str], rows: list[list[str]], numeric: set[int] = frozense
         key, parts = force
         return f' data-force="{escape(key)}" data-part="{escape(parts[k])}" title="click to force {escape(parts[k])}"'
 
+    def cell_class(j: int, h: str) -> str:
+        return "n" if j in numeric else ("why" if h in ("reasons", "verdict") else "")
+
     body = "".join(
         f'<tr{" class=chosen" if k == marked else ""}{forcing(k)}>'
-        + "".join(f'<td class="{"n" if j in numeric else ("why" if h in ("reasons", "verdict") else "")}">{c}</td>' for j, (h, c) in enumerate(zip(header, row)))
+        + "".join(f'<td class="{cell_class(j, h)}">{c}</td>' for j, (h, c) in enumerate(zip(header, row)))
         + "</tr>"
         for k, row in enumerate(rows)
     )
@@ -112,7 +116,8 @@ def candidates_shown(sel, shown: int | None) -> tuple[list, str]:
     out, total = sel.candidates(shown), len(sel.order)
     if len(out) == total:
         return out, ""
-    return out, f"<div class=note>{len(out)} of {total} candidates shown; tick <i>all candidates</i> for the rest.</div>"
+    return out, (f"<div class=note>{len(out)} of {total} candidates shown; tick <i>all candidates</i> "
+                 "for the rest.</div>")
 
 
 def notes(texts) -> str:

@@ -26,16 +26,19 @@ class RatiosRenderer(Renderer):
         r = report.ratios
         if r is None:
             return []
-        rows = [[f"{x.ratio:g}", latex_escape(x.part), util(x.utilization), "–" if x.inertia_ratio is None else f"{x.inertia_ratio:.2f}",
+        rows = [[f"{x.ratio:g}", latex_escape(x.part), util(x.utilization),
+                 "–" if x.inertia_ratio is None else f"{x.inertia_ratio:.2f}",
                  "–" if x.peak_torque_required is None else q(x.peak_torque_required),
                  "–" if x.rms_torque_required is None else q(x.rms_torque_required), q(x.max_speed_required),
                  verdict_mark(x.passes) + (r"{} \footnotesize(pick)" if x.pick else "")] for x in r.rows]
         return [
             r"\subsection*{The ratio}",
             prose(r.search.reason),
-            table(r"@{}r l r r r r r l@{}", ["$i$", "Best gearbox", "Utilization", r"$\lambda$", r"$T_{1,\mathrm{peak}}$",
-                                              r"$T_{1,\mathrm{rms}}$", r"$n_{2\mathrm{max}} \cdot i$", "Verdict"], rows,
-                  caption=latex_escape(f"The case at every ratio of {display_path(r.search.selection.catalog.path)}, each with its best gearbox"),
+            table(r"@{}r l r r r r r l@{}", ["$i$", "Best gearbox", "Utilization", r"$\lambda$",
+                                              r"$T_{1,\mathrm{peak}}$", r"$T_{1,\mathrm{rms}}$",
+                                              r"$n_{2\mathrm{max}} \cdot i$", "Verdict"], rows,
+                  caption=latex_escape(f"The case at every ratio of {display_path(r.search.selection.catalog.path)}, "
+                                       "each with its best gearbox"),
                   note=prose(f"Rule: {RULE}.")),
         ]
 
@@ -47,7 +50,8 @@ class RatiosRenderer(Renderer):
 
         c = report.case
         return [(ratio_figure(r.search, c.motor_peak_torque, c.motor_rated_torque),
-                 "The case against the ratio: motor torques, governing utilization and inertia ratio; feasible ratios shaded.")]
+                 "The case against the ratio: motor torques, governing utilization and inertia ratio; "
+                 "feasible ratios shaded.")]
 
     def page_block(self, found) -> str:
         """The ratio search (its JSON, :func:`calc.sections.ratios.search`), or why it cannot be made
@@ -68,11 +72,13 @@ class RatiosRenderer(Renderer):
              given(r["rms_torque_required"]), given(r["max_speed_required"]), "pick" if r["ratio"] == pick else ""]
             for r in found["ratios"]
         ]
-        header = ["ratio i", "best gearbox", "feasible", "utilization", "inertia ratio λ", typeset("T_1peak"), typeset("T_1rms"),
-                  typeset("n_1max"), ""]
+        header = ["ratio i", "best gearbox", "feasible", "utilization", "inertia ratio λ", typeset("T_1peak"),
+                  typeset("T_1rms"), typeset("n_1max"), ""]
         marked = next((k for k, r in enumerate(found["ratios"]) if r["ratio"] == pick), None)
-        return (f"<h3>Ratio search</h3><div class=note>{typeset(found['rule'])}</div><div><b>{typeset(found['reason'])}</b></div>"
-                + html_table(header, rows, numeric={0, 3, 4, 5, 6, 7}, marked=marked) + notes(found["notes"]) + ratio_search_svg(found))
+        return (f"<h3>Ratio search</h3><div class=note>{typeset(found['rule'])}</div>"
+                f"<div><b>{typeset(found['reason'])}</b></div>"
+                + html_table(header, rows, numeric={0, 3, 4, 5, 6, 7}, marked=marked) + notes(found["notes"])
+                + ratio_search_svg(found))
 
 
 RENDERER = RatiosRenderer()

@@ -25,8 +25,8 @@ from .provenance import PACKAGE
 #: in the order of the columns.
 PART_COLUMNS = tuple(r for r in RENDERERS if r.SUMMARY_COLUMN is not None)
 #: The columns of the CSV, units in brackets (a utilization is a fraction: 1 is the rating).
-CSV_COLUMNS = ("case file", "title", "verdict", *(r.NAME for r in PART_COLUMNS), "worst utilization [1]", "worst check", "worst check in",
-               "report", "reason")
+CSV_COLUMNS = ("case file", "title", "verdict", *(r.NAME for r in PART_COLUMNS), "worst utilization [1]", "worst check",
+               "worst check in", "report", "reason")
 #: What a row says where no part of a section passes.
 NONE_PASSES = "none passes"
 #: File names a relative link in the PDF carries as written (others are shown without a link).
@@ -68,7 +68,8 @@ def summary_row(report, pdf: Path | None) -> dict:
         "title": report.title,
         "verdict": verdict.word,
         "passes": verdict.passes,
-        "chosen": {r.NAME: ranked.selected for r in PART_COLUMNS if r.NAME in sections and (ranked := sections[r.NAME].ranked()) is not None},
+        "chosen": {r.NAME: ranked.selected for r in PART_COLUMNS
+                   if r.NAME in sections and (ranked := sections[r.NAME].ranked()) is not None},
         "worst": None if report.evaluated is None else worst_check(report.evaluated),
         "report": None if pdf is None else pdf.name,
         "report_path": None if pdf is None else str(pdf),
@@ -103,7 +104,8 @@ def write_csv(rows: list[dict], path: Path) -> None:
         out.writerow(CSV_COLUMNS)
         for r in rows:
             w = r["worst"] or {}
-            out.writerow([r["case"], r["title"], r["verdict"], *(_chosen_text(r, p.NAME) for p in PART_COLUMNS), w.get("utilization", ""),
+            out.writerow([r["case"], r["title"], r["verdict"], *(_chosen_text(r, p.NAME) for p in PART_COLUMNS),
+                          w.get("utilization", ""),
                           w.get("check", ""), " ".join(x for x in (w.get("section"), w.get("part")) if x),
                           r["report"] or "", r["reason"] or ""])
 
@@ -161,12 +163,15 @@ def summary_latex(rows: list[dict], files_read: list, built: str, commit: str, f
     title block (each case file and catalog read, with its SHA-256; build date, package, commit).
     ``files_read`` are the files each row's report rests on (:attr:`calc.report.Report.files`);
     ``folder`` is where the summary is written (paths outside the project are shown from there)."""
-    body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r, folder), _verdict_cell(r), *(_part_cell(r, p.NAME) for p in PART_COLUMNS),
-             _worst_cell(r), _report_link(r["report"])] for k, r in enumerate(rows)]  # rows of several lines set apart
+    # Rows of several lines set apart.
+    body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r, folder), _verdict_cell(r),
+             *(_part_cell(r, p.NAME) for p in PART_COLUMNS), _worst_cell(r), _report_link(r["report"])]
+            for k, r in enumerate(rows)]
     parts = "".join(f"p{{{p.SUMMARY_COLUMN[1]}}} " for p in PART_COLUMNS)
     cases = table(
         rf"@{{}} p{{0.29\linewidth}} p{{0.1\linewidth}} {parts}p{{0.16\linewidth}} p{{0.12\linewidth}}@{{}}",
-        ["Case", "Verdict", *(p.SUMMARY_COLUMN[0] for p in PART_COLUMNS), "Worst utilization", "Report"], body, small=True,
+        ["Case", "Verdict", *(p.SUMMARY_COLUMN[0] for p in PART_COLUMNS), "Worst utilization", "Report"], body,
+        small=True,
         note="Worst utilization: the highest required / rated of every governing check of the chosen parts (of the "
              "closest candidate where none passes) and of the requirements of the case; above 1.00 the check fails. "
              "Each report's file name links to it, in the folder of this summary.",

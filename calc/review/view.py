@@ -67,11 +67,13 @@ def _governing(results) -> str:
     rows = []
     for g in results.governing():
         who = g.section + (f" {escape(g.part)}" if g.part else "") + ("" if g.chosen else " (closest)")
-        rows += [[who, typeset(k.criterion or k.name), ("≥ " if k.at_least else "") + value(k.required_value), value(k.rated_value),
-                  utilization(k.utilization), verdict_cell(k.passes, k.not_made)] for k in g.checks]
+        rows += [[who, typeset(k.criterion or k.name), ("≥ " if k.at_least else "") + value(k.required_value),
+                  value(k.rated_value), utilization(k.utilization), verdict_cell(k.passes, k.not_made)]
+                 for k in g.checks]
     if not rows:
         return ""
-    return "<h3>Governing checks</h3>" + table(["part", "check", "required", "rated", "utilization", "verdict"], rows, numeric={2, 3, 4})
+    header = ["part", "check", "required", "rated", "utilization", "verdict"]
+    return "<h3>Governing checks</h3>" + table(header, rows, numeric={2, 3, 4})
 
 
 def _not_made_html(results) -> str:
@@ -159,7 +161,8 @@ def comparison_rows(variants: list[tuple[str, Report]], system: str = "SI") -> l
 
     rows = [("verdict", lambda r: r.verdict.word)]
     for p in COMPARED:
-        rows += [(p.NAME, lambda r, n=p.NAME: chosen(r, n)), (f"{p.NAME} worst utilization", lambda r, n=p.NAME: worst(r, n))]
+        rows += [(p.NAME, lambda r, n=p.NAME: chosen(r, n)),
+                 (f"{p.NAME} worst utilization", lambda r, n=p.NAME: worst(r, n))]
     rows.append(("checks not made", lambda r: str(len(r.evaluated.not_made()) if r.evaluated is not None else 0)))
     rows += [(name, of(p.NAME, text)) for p in RENDERERS for name, text in p.compared()]
     token = SYSTEM.set(system)
@@ -229,7 +232,8 @@ def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: d
     x = np.arange(len(names))
     width = 0.8 / len(worst)
     for k, (what, u) in enumerate(worst.items()):
-        bars.bar(x + (k - (len(worst) - 1) / 2) * width, [0.0 if v is None else v for v in u], width=width * 0.95, label=what)
+        bars.bar(x + (k - (len(worst) - 1) / 2) * width, [0.0 if v is None else v for v in u], width=width * 0.95,
+                 label=what)
     bars.axhline(100, color="#b2222a", linewidth=1)
     bars.set_xticks(x, names, fontsize=8)
     bars.set_ylabel("worst governing utilization [%]", fontsize=8)

@@ -77,7 +77,7 @@ class ComponentInputs:
     backlash: object
     accuracy: object  # transmission accuracy
     nominal: object
-    hysteresis: str | None = None  # a measured loop's file as the case names it (found when evaluated, as it is read then)
+    hysteresis: str | None = None  # a measured loop's file as the case names it (found when evaluated, and read then)
     trace: str | None = None  # a transmission trace's file, the same
 
 
@@ -133,7 +133,8 @@ def read_inputs(case: Case) -> AccuracyInputs:
     if not tables:
         raise CalcError(f"{sec.where('component')}: expected one [[accuracy.component]] table per member of the chain, drive to load, found none")
     components = [read_component(t) for t in tables]
-    out = AccuracyInputs(sec.data, applied, nominal, components, sec.data.get("positions"), sec.positive("radius", what="a radius"), {}, {})
+    out = AccuracyInputs(sec.data, applied, nominal, components, sec.data.get("positions"),
+                         sec.positive("radius", what="a radius"), {}, {})
     for key in ("required_positioning_accuracy", "required_repeatability"):
         q = _requirement(sec, key, out)
         if q is not None:
@@ -145,8 +146,8 @@ def accuracy_case(case: Case, given: AccuracyInputs, gearbox, coupling) -> Accur
     """The chain of the case's components, each taking its figures from the case, a catalog part,
     the ``gearbox`` or ``coupling`` result's choice (None: the case has none) or its measurements."""
     ratio = _case_ratio(case)
-    out = AccuracyCase(chain=None, applied_torque=given.applied_torque, nominal_torque=given.nominal_torque, radius=given.radius,
-                       required=given.required, required_arcs=given.required_arcs)
+    out = AccuracyCase(chain=None, applied_torque=given.applied_torque, nominal_torque=given.nominal_torque,
+                       radius=given.radius, required=given.required, required_arcs=given.required_arcs)
     components = [_component(case, c, ratio, out, gearbox, coupling) for c in given.components]
     tables = [c.table for c in given.components]
     names = [c.name for c in components]
@@ -264,7 +265,8 @@ def _coupling_part(case: Case, t: Table, part: str, coupling):
         row, chosen, stand_in = _chosen_row(coupling.selection, "coupling")
         rows, side = coupling.selection.catalog, coupling.inputs.side or "output"
     else:
-        rows = load_catalog(resolve(t.text("catalog", default="couplings"), case.folder, t.where("catalog")), COUPLING_SCHEMA)
+        path = resolve(t.text("catalog", default="couplings"), case.folder, t.where("catalog"))
+        rows = load_catalog(path, COUPLING_SCHEMA)
         row = rows.index(part, t.where("part"))
         chosen, side, stand_in = str(rows.parts[row]), None, None
     name, kind_of = str(rows.parts[row]), str(rows.text["type"][row])
@@ -330,14 +332,16 @@ def read_component(t: Table) -> ComponentInputs:
         if kind == "gearbox" and side != "output":
             raise CalcError(f"{t.where('side')}: a gearbox's catalog figures are referred to its output, so the part {part!r} sits on the output side, found {side!r}")
         if part == SELECTED and t.has("catalog"):
-            raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the {kind} selection's catalog; give no catalog")
+            raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the {kind} selection's catalog; "
+                            "give no catalog")
     elif t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: a catalog is read only for a part; give part as well")
     _check_measured_part(t, part)
     for key in ("stiffness", "backlash") if t.has("hysteresis") else ():
         if t.has(key):
             raise CalcError(f"{t.where(key)}: the measured loop gives the {key}; give either hysteresis or {key}")
-    return ComponentInputs(t, part, kind, name, side, stiffness, curve, backlash, accuracy, nominal, *(t.data.get(key) for key in MEASUREMENTS))
+    return ComponentInputs(t, part, kind, name, side, stiffness, curve, backlash, accuracy, nominal,
+                           *(t.data.get(key) for key in MEASUREMENTS))
 
 
 @dataclass
@@ -359,18 +363,25 @@ class Figures:
 def _component(case: Case, c: ComponentInputs, ratio, out: AccuracyCase, gearbox, coupling) -> Component:
     """One member of the chain: from its keys, a catalog part (or the ``gearbox`` or ``coupling``
     result's choice), or measurements; what is unknown of it is told to ``out``."""
-    f = Figures(c.name if c.name is not None else c.part, c.side, c.stiffness, c.curve, c.backlash, c.accuracy, c.nominal, ratio, c.part, [])
+    f = Figures(c.name if c.name is not None else c.part, c.side, c.stiffness, c.curve, c.backlash, c.accuracy,
+                c.nominal, ratio, c.part, [])
     if c.part is not None:
-        stand_in = _coupling_figures(case, c, f, coupling) if c.kind == "coupling" else _gearbox_figures(case, c, f, ratio, out, gearbox)
+        if c.kind == "coupling":
+            stand_in = _coupling_figures(case, c, f, coupling)
+        else:
+            stand_in = _gearbox_figures(case, c, f, ratio, out, gearbox)
         if stand_in is not None:
             out.unchosen.append(stand_in)
     _measured_figures(case, c, f, out)
     t = c.table
     if f.stiffness is None:
-        raise CalcError(f"{t.where('stiffness')}: expected a stiffness such as \"1.3 N*m/arcmin\" (or a part, or a measured hysteresis loop), found none")
+        raise CalcError(f"{t.where('stiffness')}: expected a stiffness such as \"1.3 N*m/arcmin\" (or a part, or a "
+                        "measured hysteresis loop), found none")
     if f.backlash is None:
-        raise CalcError(f"{t.where('backlash')}: expected an angle such as \"3 arcmin\" (\"0 arcmin\" for none), found none")
-    return Component(f.name, f.side, f.stiffness, f.backlash, f.accuracy, f.nominal, source="; ".join(f.sources) or "case", stiffness_curve=f.curve)
+        raise CalcError(f"{t.where('backlash')}: expected an angle such as \"3 arcmin\" (\"0 arcmin\" for none), "
+                        "found none")
+    return Component(f.name, f.side, f.stiffness, f.backlash, f.accuracy, f.nominal,
+                     source="; ".join(f.sources) or "case", stiffness_curve=f.curve)
 
 
 def _coupling_figures(case: Case, c: ComponentInputs, f: Figures, coupling) -> str | None:
@@ -379,7 +390,8 @@ def _coupling_figures(case: Case, c: ComponentInputs, f: Figures, coupling) -> s
     t = c.table
     chosen, f.stiffness, coupling_side, source, stand_in = _coupling_part(case, t, c.part, coupling)
     if coupling_side is not None and t.has("side") and f.side != coupling_side:
-        raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side (coupling.side), found {f.side!r}")
+        raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side "
+                        f"(coupling.side), found {f.side!r}")
     f.side = coupling_side or f.side
     f.backlash = Q_(0.0, "arcmin")
     f.chosen = chosen
@@ -399,18 +411,21 @@ def _gearbox_figures(case: Case, c: ComponentInputs, f: Figures, ratio, out: Acc
         f.name = f.chosen
     f.ratio = rows["ratio"][row]
     if ratio is not None and not np.isclose(f.ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
-        raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {f.ratio.m_as(''):g}, but the case's gearbox ratio is {ratio.m_as(''):g}")
+        raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {f.ratio.m_as(''):g}, but the case's gearbox "
+                        f"ratio is {ratio.m_as(''):g}")
     f.stiffness, f.backlash, f.nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]
     if not np.isnan(rows["K_1"][row].magnitude):  # the catalog gives the gear's stiffness curve
         f.curve = StiffnessCurve(*(rows[name][row] for name in ("T_L1", "T_L2", "K_1", "K_2", "K_3")))
         f.stiffness = f.curve.K_1
     empty = [column for column, q in (("C_t21", f.stiffness), ("backlash", f.backlash)) if np.isnan(q.magnitude)]
     if empty and c.part != SELECTED:  # a part named here: its figures are asked for
-        raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), column {empty[0]}: expected a value, found an empty cell")
+        raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), "
+                        f"column {empty[0]}: expected a value, found an empty cell")
     if empty:  # the selection's part: the chain is reckoned without the figure, and says so
         figures = " and ".join({"C_t21": "torsional stiffness C_t21", "backlash": "backlash"}[e] for e in empty)
         reckoned = " and ".join({"C_t21": "rigid", "backlash": "free of backlash"}[e] for e in empty)
-        unknown = f"{f.chosen}: its {figures} (empty in {rows.catalog_of(row)} row {rows.lines[row]}; reckoned {reckoned})"
+        unknown = (f"{f.chosen}: its {figures} (empty in {rows.catalog_of(row)} row {rows.lines[row]}; "
+                   f"reckoned {reckoned})")
         out.unknown.append(unknown)
         out.unknown_chain.append(unknown)
         f.stiffness = Q_(np.inf, "N*m/arcmin") if "C_t21" in empty else f.stiffness
@@ -428,8 +443,8 @@ def _measured_figures(case: Case, c: ComponentInputs, f: Figures, out: AccuracyC
     if not applies and c.trace is not None and f.accuracy is None:
         # The trace was the transmission accuracy; the part chosen instead has none given, which is
         # not the same as none at all.
-        out.unknown.append(f"{f.chosen}: its transmission accuracy (the trace of {t.text('measured_part')} does not apply to it, "
-                           f"and the case gives no transmission_accuracy)")
+        out.unknown.append(f"{f.chosen}: its transmission accuracy (the trace of {t.text('measured_part')} does not "
+                           "apply to it, and the case gives no transmission_accuracy)")
     if applies and c.hysteresis is not None:
         from ..domain.hysteresis import analyze_loop, read_loop
 

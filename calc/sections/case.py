@@ -202,7 +202,7 @@ class Case:
     motor_curves: object = None  # Path of the motors' curves file
     output_load: object = None  # calc.domain.gearbox.OutputLoad: forces on the gearbox output
     sections: dict = field(default_factory=dict)  # the tables of the sections that read their own, as written, by name
-    inputs: dict = field(default_factory=dict)  # those sections' typed inputs, by name (calc.sections.protocol.Section.inputs)
+    inputs: dict = field(default_factory=dict)  # those sections' typed inputs, by name (Section.inputs)
     motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record
     raw: bytes = b""
 

@@ -72,8 +72,8 @@ class CouplingInputs:
 
 #: The quantities of ``[coupling]``; with ``side = "input"`` those of :data:`FROM_THE_CASE` the
 #: table leaves out come from the rest of the case when evaluated.
-QUANTITIES = ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "service_factor", "temperature", "speed",
-              "disengagement_torque", "shaft_distance", "starts_per_hour")
+QUANTITIES = ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "service_factor", "temperature",
+              "speed", "disengagement_torque", "shaft_distance", "starts_per_hour")
 FROM_THE_CASE = ("accel_torque", "drive_inertia", "load_inertia", "speed", "starts_per_hour")
 
 
@@ -109,8 +109,11 @@ def read_inputs(case: Case) -> CouplingInputs:
             raise CalcError(f"{s.where(key)}: expected a value{hint}, found none")
     bores = tuple(parse_bore(s.data[key], s.where(key)) for key in ("shaft_1", "shaft_2"))
     given = {key: s.quantity(key) for key in QUANTITIES}
-    temperature = factor_table("temperature", s.text("temperature_factors"), case.folder, s.where("temperature_factors"))
-    starts = factor_table("starts", s.text("start_factors"), case.folder, s.where("start_factors")) if s.has("start_factors") else None
+    temperature = factor_table("temperature", s.text("temperature_factors"), case.folder,
+                               s.where("temperature_factors"))
+    starts = None
+    if s.has("start_factors"):
+        starts = factor_table("starts", s.text("start_factors"), case.folder, s.where("start_factors"))
     return CouplingInputs(s.data, catalog, wanted, side, bores, given, temperature, starts)
 
 
@@ -122,7 +125,8 @@ def coupling_case(case: Case, given: CouplingInputs, gearbox) -> CouplingCase:
     if given.start_factors is not None and not given.has("starts_per_hour"):
         # One start from rest per cycle of the load cycle.
         z = Z_h(t_cycle=case.profile.t_cycle)
-        derived["starts_per_hour"] = (z, f"starts_per_hour = Z_h of the load cycle (one start per cycle) = {fmt(z, '1/hour')}")
+        derived["starts_per_hour"] = (z, "starts_per_hour = Z_h of the load cycle (one start per cycle) = "
+                                         f"{fmt(z, '1/hour')}")
     inputs = {key: given.given[key] if given.has(key) or key not in FROM_THE_CASE else derived.get(key, (None, ""))[0]
               for key in QUANTITIES}
     inputs["temperature_factors"] = given.temperature_factors
@@ -173,8 +177,10 @@ def coupling_span(case: Case) -> CouplingSpan | None:
     if not known.any():
         return None
     rows = catalog.rows(known)
-    which = str(rows.parts[0]) if given.has("part") else f"the {wanted + ' ' if wanted else ''}couplings of {rows.shown_name}"
-    return CouplingSpan(drive, case.load_inertia, rows["C_T"], rows["J"], f_e_min(f_er=given.given["excitation_frequency"]), which)
+    which = (str(rows.parts[0]) if given.has("part")
+             else f"the {wanted + ' ' if wanted else ''}couplings of {rows.shown_name}")
+    two_f_er = f_e_min(f_er=given.given["excitation_frequency"])
+    return CouplingSpan(drive, case.load_inertia, rows["C_T"], rows["J"], two_f_er, which)
 
 
 def _drive_train(case: Case, side: str | None, inputs: dict, gearbox) -> tuple[DriveTrain | None, tuple]:

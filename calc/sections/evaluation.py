@@ -59,12 +59,14 @@ def requirement_order(found: tuple) -> tuple:
     for s in found:
         unknown = [r for r in s.REQUIRES if r not in names]
         if unknown:
-            raise CalcError(f"section {s.NAME} requires {unknown[0]!r}, which is no section; the sections are {', '.join(sorted(names))}")
+            raise CalcError(f"section {s.NAME} requires {unknown[0]!r}, which is no section; "
+                            f"the sections are {', '.join(sorted(names))}")
     done, out = set(), []
     while len(out) < len(found):
         ready = next((s for s in found if s.NAME not in done and set(s.REQUIRES) <= done), None)
         if ready is None:
-            raise CalcError(f"the sections require each other in a cycle: {' -> '.join(_cycle([s for s in found if s.NAME not in done]))}")
+            cycle = _cycle([s for s in found if s.NAME not in done])
+            raise CalcError(f"the sections require each other in a cycle: {' -> '.join(cycle)}")
         done.add(ready.NAME)
         out.append(ready)
     return tuple(out)
@@ -127,7 +129,8 @@ def _wanted(case, names: tuple) -> set:
     return out
 
 
-NOTHING_CHECKED = "Nothing is checked: the case names no gearbox ratio or part, no coupling and no accuracy requirement."
+NOTHING_CHECKED = ("Nothing is checked: the case names no gearbox ratio or part, no coupling and no accuracy "
+                   "requirement.")
 
 
 @dataclass
@@ -138,7 +141,7 @@ class Results:
 
     case: object
     sections: dict  # section name -> its result (:class:`calc.sections.protocol.Result`), in the order of the results
-    every: dict = field(default_factory=dict, repr=False)  # every section's result evaluated, shown or not (:func:`results_of`)
+    every: dict = field(default_factory=dict, repr=False)  # every section's result evaluated, shown or not
 
     @property
     def verdict(self) -> Verdict:
@@ -151,7 +154,8 @@ class Results:
     def not_made(self) -> list[str]:
         """Every governing check not made, each with why; and the checks left out for want of an
         input (the motor's without a rating)."""
-        return [x for g in self.governing() for x in g.not_made] + [x for r in self.sections.values() for x in r.unchecked()]
+        return ([x for g in self.governing() for x in g.not_made]
+                + [x for r in self.sections.values() for x in r.unchecked()])
 
     def __getitem__(self, name: str):
         return self.sections[name]

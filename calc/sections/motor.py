@@ -266,7 +266,8 @@ class MotorSection(Section):
 
     def applies(self, case: Case) -> bool:
         """With a catalog motor, or any of the motor's figures; through the gearbox, or directly."""
-        given = (case.motor_peak_torque, case.motor_inertia, case.motor_rated_torque, case.motor_max_speed, case.motor_catalog)
+        given = (case.motor_peak_torque, case.motor_inertia, case.motor_rated_torque, case.motor_max_speed,
+                 case.motor_catalog)
         return any(q is not None for q in given)
 
     def evaluate(self, case: Case, earlier) -> MotorResult:
@@ -283,7 +284,8 @@ def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
     J_1 = J_c = None
     missing = None
     if out.sampled:
-        J_1, J_c, missing, more = rotor_inertia(case, t.J_1, coupling, catalog_rotors=case.motor_catalog is not None)  # for the motor shaft's clamping hub
+        # J_1 for the motor shaft's clamping hub
+        J_1, J_c, missing, more = rotor_inertia(case, t.J_1, coupling, catalog_rotors=case.motor_catalog is not None)
         notes += more
         if missing is None and np.isnan(J_1[0].magnitude):
             missing = f"the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for {t.part}"

@@ -133,8 +133,10 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
         notes.append(f"gearbox.part = {case.gearbox_part!r} is not kept to: every row of the catalog is tried")
     if not load.sampled:
         notes.append(TYPED)
+    coupling = evaluated.get("coupling")
     s = search_ratios(
-        catalog, case.profile, load, case.motor_rated_torque, case.motor_max_speed, lambda J_1: rotor_inertia(case, J_1, evaluated.get("coupling")),
+        catalog, case.profile, load, case.motor_rated_torque, case.motor_max_speed,
+        lambda J_1: rotor_inertia(case, J_1, coupling),
         hubs=hubs, **selection_inputs(case),
     )
     notes += s.notes

@@ -207,8 +207,9 @@ def with_cycle(case, cycle):
     trapezoid), as a drive record without a mechanism gives it, its typed segments kept as its
     load cycle: the motor's side reads the samples."""
     k = np.repeat(np.arange(len(PHASES)), len(cycle.dt) // len(PHASES))
-    samples = Samples(np.cumsum(cycle.dt) - cycle.dt / 2, cycle.dt, np.cumsum(cycle.speed * cycle.dt), cycle.speed, cycle.acceleration,
-                      np.zeros_like(cycle.dt), np.array([ACCEL, CONST, DECEL, PAUSE])[k], k, np.array([p[0] for p in PHASES]))
+    samples = Samples(np.cumsum(cycle.dt) - cycle.dt / 2, cycle.dt, np.cumsum(cycle.speed * cycle.dt), cycle.speed,
+                      cycle.acceleration, np.zeros_like(cycle.dt), np.array([ACCEL, CONST, DECEL, PAUSE])[k], k,
+                      np.array([p[0] for p in PHASES]))
     motion = Motion(None, [], [], samples, cycle, segments(samples, cycle.torque), case.profile, record="trapezoid.csv")
     return dataclasses.replace(case, motion=motion)
 

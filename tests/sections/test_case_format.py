@@ -85,7 +85,8 @@ def in_order(names, known):
 
 
 def test_the_lists_of_sections_follow_from_the_modules():
-    assert in_order([s.NAME for s in SECTIONS], SHARED := ["motion", "profile", "gearbox", "coupling", "motor", "accuracy"]) == SHARED
+    shared = ["motion", "profile", "gearbox", "coupling", "motor", "accuracy"]
+    assert in_order([s.NAME for s in SECTIONS], shared) == shared
     # The sections that read a table of their own keep it typed once the case is read.
     example = read_case(ROOT / "cases" / "indexing-table.toml")
     assert list(example.inputs) == list(example.sections) == ["coupling", "accuracy"]
@@ -94,7 +95,8 @@ def test_the_lists_of_sections_follow_from_the_modules():
     top = ["motor", "load", "mechanism", "move", "drive_record", "profile", "gearbox", "coupling", "accuracy"]
     assert in_order(TOP_KEYS, top) == top
     # The renderers are the sections' modules' namesakes', in their order.
-    assert [type(r).__module__.rpartition(".")[2] for r in RENDERERS] == [m.__name__.rpartition(".")[2] for m in places()]
+    renderers = [type(r).__module__.rpartition(".")[2] for r in RENDERERS]
+    assert renderers == [m.__name__.rpartition(".")[2] for m in places()]
     assert declared("accuracy.component[2].stiffness_curve.K1").kind == "stiffness"
     assert declared("profile").array
 

@@ -64,7 +64,8 @@ def test_the_motor_chosen_from_the_catalog_is_the_drives_result():
     results = evaluate(case)
     drive = results.every["drive"]
     assert drive.chosen == results["motor"].selection.selected and results.case is drive.case
-    assert results.case.motor_peak_torque == results["motor"].selection.catalog["M_max"][results["motor"].selection.order[0]]
+    motors = results["motor"].selection
+    assert results.case.motor_peak_torque == motors.catalog["M_max"][motors.order[0]]
 
 
 def test_a_bad_key_of_a_sections_own_table_is_an_error_when_the_case_is_read(write_case):

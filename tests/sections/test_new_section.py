@@ -32,7 +32,8 @@ from calc.sections import read_case
 
 report = report_of(read_case(sys.argv[1]))
 latex = "\\n".join(str(block) for block, _ in report.blocks(figures=lambda: []))
-print(json.dumps({"latex": latex, "html": results_html(report, []), "row": summary_row(report, None), "columns": CSV_COLUMNS}))
+print(json.dumps({"latex": latex, "html": results_html(report, []), "row": summary_row(report, None),
+                  "columns": CSV_COLUMNS}))
 """
 
 
@@ -40,7 +41,8 @@ def example_files() -> dict:
     """The two files of the example, as the document gives them (the code block under each
     file's heading)."""
     text = DOC.read_text(encoding="utf-8")
-    return {name: re.search(rf"^### {re.escape(name)}\n\n```python\n(.*?)^```", text, re.S | re.M).group(1) for name in FILES}
+    blocks = {name: re.search(rf"^### {re.escape(name)}\n\n```python\n(.*?)^```", text, re.S | re.M) for name in FILES}
+    return {name: block.group(1) for name, block in blocks.items()}
 
 
 @pytest.fixture(scope="module")
@@ -60,8 +62,8 @@ def package(tmp_path_factory):
 
 
 def run(package, *args) -> str:
-    proc = subprocess.run([sys.executable, *args], capture_output=True, text=True, cwd=package, env={"PYTHONPATH": str(package)},
-                          check=False)
+    proc = subprocess.run([sys.executable, *args], capture_output=True, text=True, cwd=package,
+                          env={"PYTHONPATH": str(package)}, check=False)
     assert proc.returncode == 0, proc.stderr
     return proc.stdout
 
@@ -92,7 +94,8 @@ def test_the_brake_is_in_the_report_the_page_and_the_summary(package):
     assert "brake.holding" in inputs and "80" in inputs
     assert "<h3>Brake BR-10</h3>" in html and "holding torque 80 N·m against 60 N·m: 75 %" in html
     assert "brake BR-10" in html  # among the governing checks
-    assert row["worst"] == {"utilization": pytest.approx(0.75), "check": "|T_2k| <= T_br", "section": "brake", "part": "BR-10"}
+    worst = {"utilization": pytest.approx(0.75), "check": "|T_2k| <= T_br", "section": "brake", "part": "BR-10"}
+    assert row["worst"] == worst
     assert "brake" not in out["columns"]  # it asks for no column of its own
 
 
