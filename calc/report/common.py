@@ -104,65 +104,203 @@ class Renderer:
     COMPARED_PART: ClassVar[bool] = False
 
     def result(self, report):
-        """The section's result in ``report``; None where the case has none or cannot be evaluated."""
+        """The section's result in a report.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        calc.sections.protocol.Result or None
+            None where the case has none or cannot be evaluated.
+        """
         return result_of(self.NAME, report)
 
     # -- the calc report's blocks (:class:`calc.report.Report`) ---------------------------------
 
     def sources(self, report) -> list[str]:
-        """The source's sections the section is computed from (method)."""
+        """The source's sections the section is computed from (method).
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of str
+        """
         return []
 
     def readings(self, report) -> set[str]:
-        """The keys of the errata readings that apply (method)."""
+        """The keys of the errata readings that apply (method).
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        set of str
+        """
         return set()
 
     def input_rows(self, report) -> list[list[str]]:
-        """Rows of the inputs table (:func:`input_row`)."""
+        """Rows of the inputs table (:func:`input_row`).
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of list of str
+        """
         return []
 
     def inputs(self, report) -> list[str]:
-        """Tables of inputs after the inputs table."""
+        """Tables of inputs after the inputs table.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of str
+        """
         return []
 
     def steps(self, report) -> list[str]:
-        """The calculations, ``symbol = formula = values = result``."""
+        """The calculations, ``symbol = formula = values = result``.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of str
+        """
         return []
 
     def results(self, report) -> list[str]:
-        """What the section gives besides its checks."""
+        """What the section gives besides its checks.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of str
+        """
         return []
 
     def checks(self, report) -> list[str]:
-        """The checks of the part chosen (or the closest), or of the section's own values."""
+        """The checks of the part chosen (or the closest), or of the section's own values.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of str
+        """
         return []
 
     def candidates(self, report) -> list[str]:
-        """The candidates ranked."""
+        """The candidates ranked.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of str
+        """
         return []
 
     def figures(self, report) -> list:
-        """(figure, caption) pairs; the caption is LaTeX."""
+        """(figure, caption) pairs; the caption is LaTeX.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list
+        """
         return []
 
     def chosen(self, report) -> list[tuple]:
-        """(what, part, detail) of the part chosen; part None where none passes."""
+        """(what, part, detail) of the part chosen; part None where none passes.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of tuple
+        """
         return []
 
     def order_lines(self, report) -> list[str]:
-        """What to order."""
+        """What to order.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built (its case, and its results where the case could be evaluated).
+
+        Returns
+        -------
+        list of str
+        """
         return []
 
     # -- the design review's page and the comparison of designs ----------------------------------
 
     def page(self, result, view) -> str:
-        """The section's part of the review's page, HTML (:mod:`calc.report.page`): of its
-        ``result`` (None where the case has none), as ``view`` (:class:`calc.report.page.View`) asks."""
+        """The section's part of the review's page, HTML (:mod:`calc.report.page`).
+
+        Parameters
+        ----------
+        result : calc.sections.protocol.Result or None
+            The section's result; None where the case has none.
+        view : calc.report.page.View
+            What the page asks: the candidates to list, the ratio search, a cycle typed by hand.
+
+        Returns
+        -------
+        str
+        """
         return ""
 
     def compared(self) -> tuple:
-        """Rows of the comparison of designs (``calc compare``) beside the chosen parts: (name,
-        the row's text of the section's result, None where a design has none)."""
+        """Rows of the comparison of designs (``calc compare``) beside the chosen parts.
+
+        Returns
+        -------
+        tuple
+            ``(name, text)`` pairs: the row's name, and a function giving its text of the
+            section's result (None where a design has none), in the unit system shown.
+        """
         return ()
 
 

@@ -66,19 +66,53 @@ def in_system(v: Value | None) -> Value | None:
 
 
 def value(v: Value | None) -> str:
-    """A result value as text, in the unit system shown; blank where not given."""
+    """A result value as HTML text, in the unit system shown.
+
+    Parameters
+    ----------
+    v : calc.core.units.Value or None
+        A result value [its unit].
+
+    Returns
+    -------
+    str
+        ``151.3 N·m``; blank where not given.
+    """
     return "" if v is None or v.value is None else escape(str(in_system(v)).replace(" 1/hour", " /h"))
 
 
 def verdict_cell(passes, not_made: str | None = None) -> str:
-    """PASS or FAIL; a check that could not be made (``passes`` None) says why, in grey."""
+    """PASS or FAIL, coloured; a check that could not be made says why, in grey.
+
+    Parameters
+    ----------
+    passes : bool or None
+        Whether the check passes; None where it could not be made.
+    not_made : str, optional
+        Why it could not be made.
+
+    Returns
+    -------
+    str
+    """
     if passes is None:
         return f'<span class="open">not checked{": " + typeset(not_made) if not_made else ""}</span>'
     return '<span class="pass">PASS</span>' if passes else '<span class="fail">FAIL</span>'
 
 
 def utilization(u) -> str:
-    """A utilization in per cent with a bar (red over 100 %); blank where there is none."""
+    """A utilization in per cent with a bar (red over 100 %).
+
+    Parameters
+    ----------
+    u : float or None
+        Required over rated [1]; None where there is none.
+
+    Returns
+    -------
+    str
+        Blank where there is none.
+    """
     if u is None:
         return ""
     width = max(0.0, min(u, 1.0)) * 100
@@ -88,8 +122,26 @@ def utilization(u) -> str:
 
 def table(header: list[str], rows: list[list[str]], numeric: set[int] = frozenset(), marked: int | None = None,
           force: tuple[str, list[str]] | None = None) -> str:
-    """An HTML table; with ``force`` (a control's key and each row's part) a click on a row forces
-    that part (the page's script sets the control, :mod:`calc.review.client`)."""
+    """An HTML table; a click on a row may force its part (the page's script sets the control,
+    :mod:`calc.review.client`).
+
+    Parameters
+    ----------
+    header : list of str
+        The columns' headings (HTML).
+    rows : list of list of str
+        The cells (HTML).
+    numeric : set of int
+        The columns set right-aligned as numbers.
+    marked : int, optional
+        The row shaded as chosen.
+    force : tuple, optional
+        A control's key and each row's part: a click on a row forces that part.
+
+    Returns
+    -------
+    str
+    """
     head = "".join(f"<th>{h}</th>" for h in header)
 
     def forcing(k: int) -> str:
@@ -111,8 +163,20 @@ def table(header: list[str], rows: list[list[str]], numeric: set[int] = frozense
 
 
 def candidates_shown(sel, shown: int | None) -> tuple[list, str]:
-    """The first ``shown`` candidates of a selection, best first (all for None; only those are
-    made into records), and a note of how many are left out."""
+    """The first candidates of a selection, best first, and a note of how many are left out.
+
+    Parameters
+    ----------
+    sel : calc.core.selection.Selection
+        A catalog ranked.
+    shown : int or None
+        How many (all for None; only those are made into records).
+
+    Returns
+    -------
+    tuple
+        The candidates (:class:`calc.core.selection.Candidate`) and the note (HTML, empty where none is left out).
+    """
     out, total = sel.candidates(shown), len(sel.order)
     if len(out) == total:
         return out, ""
@@ -121,5 +185,15 @@ def candidates_shown(sel, shown: int | None) -> tuple[list, str]:
 
 
 def notes(texts) -> str:
-    """Notes under a table, one line each."""
+    """Notes under a table, one line each.
+
+    Parameters
+    ----------
+    texts : iterable of str
+        The notes, symbols as the results write them.
+
+    Returns
+    -------
+    str
+    """
     return "".join(f"<div class=note>{typeset(n)}</div>" for n in texts)

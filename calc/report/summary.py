@@ -59,7 +59,16 @@ def summary_row(report, pdf: Path | None) -> dict:
     None when it was not built), ``error`` (why the case cannot be evaluated, or None) and
     ``reason`` (the first reason of a verdict that is not PASS).
 
-    ``report`` is a :class:`calc.report.Report`.
+    Parameters
+    ----------
+    report : calc.report.Report
+        The case's report.
+    pdf : pathlib.Path or None
+        Its PDF file; None where it was not built.
+
+    Returns
+    -------
+    dict
     """
     sections = report.evaluated.sections if report.evaluated is not None else {}
     verdict = report.verdict

@@ -144,10 +144,23 @@ COMPARED = tuple(r for r in RENDERERS if r.COMPARED_PART)
 
 
 def comparison_rows(variants: list[tuple[str, Report]], system: str = "SI") -> list[tuple[str, list[str]]]:
-    """The side-by-side comparison of designs, ``(name, report)``: one row per quantity (verdict,
-    the part each section of :data:`COMPARED` chose and its worst governing utilization, the
-    checks not made, then the rows each section's renderer declares: the duty and accuracy
-    values), one column per design, as plain text in the unit system ``system``."""
+    """The side-by-side comparison of designs: one row per quantity (verdict, the part each
+    section of :data:`COMPARED` chose and its worst governing utilization, the checks not made,
+    then the rows each section's renderer declares: the duty and accuracy values), one column per
+    design, as plain text.
+
+    Parameters
+    ----------
+    variants : list of tuple
+        ``(name, calc.report.Report)`` of each design.
+    system : str
+        The unit system of the values, "SI" or "inch-pound" (:data:`calc.report.page.INCH_POUND`).
+
+    Returns
+    -------
+    list of tuple
+        ``(row name, [text of each design])``.
+    """
     def chosen(r, name):
         sel = _ranked(r, name)
         return "" if sel is None else sel.selected or "none passes"
@@ -191,8 +204,19 @@ def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> s
 
 def worst_utilizations(designs: list[tuple[str, Report]]) -> dict:
     """The worst governing utilization of the part each section of :data:`COMPARED` chose, per
-    design, ``(name, report)``, in percent (the comparison's rows print them to the percent); None
-    where a design has none."""
+    design.
+
+    Parameters
+    ----------
+    designs : list of tuple
+        ``(name, calc.report.Report)`` of each design.
+
+    Returns
+    -------
+    dict
+        Section name -> each design's utilization [%] (the comparison's rows print them to the
+        percent); None where a design has none.
+    """
     return {p.NAME: [_worst(r, p.NAME) for _, r in designs] for p in COMPARED}
 
 

@@ -125,7 +125,17 @@ class AccuracyCase:
 
 
 def read_inputs(case: Case) -> AccuracyInputs:
-    """Read the case's ``[accuracy]`` table; every error names the file and the key."""
+    """Read the case's ``[accuracy]`` table; every error names the file and the key.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case being read.
+
+    Returns
+    -------
+    AccuracyInputs
+    """
     sec = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
     applied = sec.quantity("applied_torque", required=True)
     nominal = _positive(sec, "nominal_torque", "torque")
@@ -144,7 +154,23 @@ def read_inputs(case: Case) -> AccuracyInputs:
 
 def accuracy_case(case: Case, given: AccuracyInputs, gearbox, coupling) -> AccuracyCase:
     """The chain of the case's components, each taking its figures from the case, a catalog part,
-    the ``gearbox`` or ``coupling`` result's choice (None: the case has none) or its measurements."""
+    the gearbox or coupling section's choice or its measurements.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    given : AccuracyInputs
+        The ``[accuracy]`` table as read.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+
+    Returns
+    -------
+    AccuracyCase
+    """
     ratio = _case_ratio(case)
     out = AccuracyCase(chain=None, applied_torque=given.applied_torque, nominal_torque=given.nominal_torque,
                        radius=given.radius, required=given.required, required_arcs=given.required_arcs)
@@ -304,7 +330,17 @@ def _measured_part_chosen(t: Table, chosen_part: str | None, sources: list) -> b
 
 
 def read_component(t: Table) -> ComponentInputs:
-    """One ``[[accuracy.component]]`` as the case gives it: its keys checked, each against the others."""
+    """One ``[[accuracy.component]]`` as the case gives it: its keys checked, each against the others.
+
+    Parameters
+    ----------
+    t : calc.sections.case.Table
+        The component's table.
+
+    Returns
+    -------
+    ComponentInputs
+    """
     part = t.text("part")
     kind = t.text("kind")
     if kind not in PART_KINDS:
@@ -470,8 +506,24 @@ def _measured_figures(case: Case, c: ComponentInputs, f: Figures, out: AccuracyC
 
 
 def accuracy_of(case: Case, given: AccuracyInputs, gearbox, coupling) -> tuple:
-    """The ``[accuracy]`` section as evaluated (:func:`accuracy_case`) and its chain's accuracy,
-    ``(spec, ChainAccuracy)``."""
+    """The ``[accuracy]`` section as evaluated (:func:`accuracy_case`) and its chain's accuracy.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    given : AccuracyInputs
+        The ``[accuracy]`` table as read.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+
+    Returns
+    -------
+    tuple
+        ``(AccuracyCase, calc.domain.accuracy.ChainAccuracy)``.
+    """
     spec = accuracy_case(case, given, gearbox, coupling)
     try:
         return spec, spec.evaluate()

@@ -212,12 +212,23 @@ class Case:
 
 
 def declared_tables() -> tuple:
-    """Every table a case file may have, as its section declares it, in the order of the sections."""
+    """Every table a case file may have, as its section declares it, in the order of the sections.
+
+    Returns
+    -------
+    tuple of Declared
+    """
     return tuple(t for s in sections() for t in s.TABLES)
 
 
 def top_keys() -> tuple:
-    """The keys a case file may have at its top level."""
+    """The keys a case file may have at its top level.
+
+    Returns
+    -------
+    tuple of str
+        ``title`` and the name of every declared table.
+    """
     return ("title", *key_names(declared_tables()))
 
 
@@ -228,7 +239,19 @@ def read_case(path, text: str | None = None) -> Case:
 
     Each section reads its tables in turn, in the order of the sections (:mod:`calc.sections`):
     the motor and load, the load cycle (derived from the moves and the mechanism or from a drive
-    record, else typed), the gearbox, then the sections that read a table of their own."""
+    record, else typed), the gearbox, then the sections that read a table of their own.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The case file.
+    text : str, optional
+        The file's text, where it is read from memory.
+
+    Returns
+    -------
+    Case
+    """
     path = Path(path)
     if text is not None:
         raw = text.encode("utf-8")

@@ -96,7 +96,17 @@ class CouplingCase:
 
 
 def read_inputs(case: Case) -> CouplingInputs:
-    """Read ``[coupling]`` key by key; errors name the file and the key."""
+    """Read ``[coupling]`` key by key; errors name the file and the key.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case being read, its load cycle, motor and gearbox read.
+
+    Returns
+    -------
+    CouplingInputs
+    """
     s = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
     catalog, wanted = _candidates(case, s)
     side = s.text("side")
@@ -119,8 +129,21 @@ def read_inputs(case: Case) -> CouplingInputs:
 
 def coupling_case(case: Case, given: CouplingInputs, gearbox) -> CouplingCase:
     """The coupling's inputs as given, with what a coupling between motor and gearbox takes from
-    the rest of the case (``case`` as checked, and the ``gearbox`` result: None without one), and
-    the drive train around it."""
+    the rest of the case, and the drive train around it.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    given : CouplingInputs
+        The ``[coupling]`` table as read.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+
+    Returns
+    -------
+    CouplingCase
+    """
     derived, derived_steps = _from_the_case(case, gearbox) if given.side == "input" else ({}, {})
     if given.start_factors is not None and not given.has("starts_per_hour"):
         # One start from rest per cycle of the load cycle.
@@ -165,7 +188,17 @@ def coupling_span(case: Case) -> CouplingSpan | None:
     inertia and ``2 f_er``: what the gearbox selection bounds each row's drive train with
     (:func:`calc.domain.gearbox.select_gearbox`). None where the case has no coupling there, or gives no
     motor inertia, load inertia or excitation frequency, or no candidate has a stiffness and an
-    inertia (a line shaft's stiffness needs its length: line shafts are left out)."""
+    inertia (a line shaft's stiffness needs its length: line shafts are left out).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+
+    Returns
+    -------
+    calc.domain.torsion.CouplingSpan or None
+    """
     given = SECTION.inputs(case)
     if given is None:
         return None
@@ -279,7 +312,22 @@ def _from_the_case(case: Case, gearbox) -> tuple[dict, dict]:
 
 def coupling_selection(case: Case, given: CouplingInputs, gearbox) -> tuple[CouplingCase, "CouplingSelection"]:
     """The ``[coupling]`` section as evaluated (:func:`coupling_case`) and its candidates checked
-    and ranked."""
+    and ranked.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    given : CouplingInputs
+        The ``[coupling]`` table as read.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+
+    Returns
+    -------
+    tuple
+        The :class:`CouplingCase` and its :class:`calc.domain.coupling.CouplingSelection`.
+    """
     cc = coupling_case(case, given, gearbox)
     return cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train,
                                where=f"{case.path}: coupling", sources=cc.missing, **cc.inputs)

@@ -133,7 +133,18 @@ def with_motor_part(case: Case, part: str | None, where: str) -> Case:
 
 
 def motor_catalog(case: Case):
-    """The case's motor catalog (:data:`calc.domain.motor_ratings.SCHEMA`)."""
+    """The case's motor catalog.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+
+    Returns
+    -------
+    calc.data.catalog.Catalog
+        Of :data:`calc.domain.motor_ratings.SCHEMA` (read once per run, :func:`calc.data.catalog.load_catalog`).
+    """
     return load_catalogs(case.motor_catalog, case.folder, f"{case.path}: motor.catalog", SCHEMA)
 
 
@@ -163,7 +174,23 @@ def chosen_motor(case: Case) -> DriveResult:
     checks with that motor: the motor is ranked through the gearbox (the motor section of a
     variant of the case, :func:`calc.sections.evaluation.results_of`), the gearbox chosen with
     the motor's peak torque, and again, until the motor stays the same; the case itself where it
-    names its motor or types it."""
+    names its motor or types it.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+
+    Returns
+    -------
+    DriveResult
+        The case with the chosen motor's ratings and inertia, and that motor.
+
+    Raises
+    ------
+    CalcError
+        Where the motor and the gearbox chosen in turn do not settle within :data:`ROUNDS`.
+    """
     if case.motor_catalog is None or case.motor_part is not None:
         return DriveResult(case)
     chosen, seen, trial = None, [], case

@@ -150,7 +150,19 @@ SECTION = DutySection()
 
 def duty_result(case: Case, gearbox) -> DutyResult:
     """The duty of the case's load cycle, with the sampled cycle where the motion form gives it
-    and the T_2max of the best-ranked row of the ``gearbox`` result (None: no gearbox)."""
+    and the T_2max of the gearbox's best-ranked row.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+
+    Returns
+    -------
+    DutyResult
+    """
     p = case.profile
     seg = p.moving_values()
     steps = [("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle)), ("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),

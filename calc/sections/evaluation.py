@@ -27,8 +27,14 @@ from .protocol import Section
 
 @functools.cache
 def places() -> tuple:
-    """Every module of :mod:`calc.sections` with a place in the outputs (an ``ORDER``: the
-    sections, and the ratio search, which the report shows), in their order."""
+    """Every module of :mod:`calc.sections` with a place in the outputs, in their order.
+
+    Returns
+    -------
+    tuple of module
+        The modules with an ``ORDER`` (the sections, and the ratio search, which the report
+        shows), sorted by it.
+    """
     package = importlib.import_module(__package__)
     found = [importlib.import_module(f"{__package__}.{m.name}") for m in pkgutil.iter_modules(package.__path__)]
     return tuple(sorted((m for m in found if hasattr(m, "ORDER")), key=lambda m: m.ORDER))
@@ -36,25 +42,62 @@ def places() -> tuple:
 
 @functools.cache
 def sections() -> tuple:
-    """Every section (:class:`calc.sections.protocol.Section`), in the order of the results."""
+    """Every section, in the order of the results.
+
+    Returns
+    -------
+    tuple of calc.sections.protocol.Section
+        The ``SECTION`` of each module of :func:`places` that has one.
+    """
     return tuple(m.SECTION for m in places() if isinstance(getattr(m, "SECTION", None), Section))
 
 
 def section(name: str):
-    """The section of that name."""
+    """The section of that name.
+
+    Parameters
+    ----------
+    name : str
+        Its key in the results (``"gearbox"``).
+
+    Returns
+    -------
+    calc.sections.protocol.Section
+    """
     return next(s for s in sections() if s.NAME == name)
 
 
 @functools.cache
 def evaluation_order() -> tuple:
-    """Every section after those it requires (:func:`requirement_order`)."""
+    """Every section after those it requires.
+
+    Returns
+    -------
+    tuple of calc.sections.protocol.Section
+        :func:`requirement_order` of :func:`sections`.
+    """
     return requirement_order(sections())
 
 
 def requirement_order(found: tuple) -> tuple:
-    """The sections ``found`` in an order where each comes after those it requires, otherwise in
-    their given order (Kahn's algorithm, the earliest ready first). A requirement that names no
-    section, and sections that require each other in a cycle, are errors naming them."""
+    """The sections in an order where each comes after those it requires, otherwise in their given
+    order (Kahn's algorithm, the earliest ready first).
+
+    Parameters
+    ----------
+    found : tuple
+        Sections (each with ``NAME`` and ``REQUIRES``), in the order of the results.
+
+    Returns
+    -------
+    tuple
+        The same sections in the order of evaluation.
+
+    Raises
+    ------
+    CalcError
+        Where a requirement names no section, or sections require each other in a cycle (named).
+    """
     names = {s.NAME for s in found}
     for s in found:
         unknown = [r for r in s.REQUIRES if r not in names]
@@ -85,7 +128,15 @@ def _cycle(left: list) -> list[str]:
 class Earlier:
     """The results a section's evaluation reads: those of the sections it requires, by name
     (``earlier["gearbox"]``; :meth:`get` gives None where that section does not apply to the
-    case). Asking for a section not required is an error: a section declares what it reads."""
+    case). Asking for a section not required is an error: a section declares what it reads.
+
+    Parameters
+    ----------
+    section : calc.sections.protocol.Section
+        The section evaluated.
+    results : dict
+        The results evaluated so far, by section name.
+    """
 
     def __init__(self, section, results: dict):
         self._section, self._results = section, results
@@ -104,11 +155,26 @@ class Earlier:
 
 
 def results_of(case, names: tuple = (), given: dict | None = None) -> dict:
-    """The results of the sections ``names`` (all for none) and of those they require, where
-    each applies to ``case``, by name; ``given``: results taken as they are instead of
-    evaluated (a variant of the case with its motor fixed). numpy's floating-point warnings are
-    not printed (what overflows gives inf or NaN, which the results report:
-    :func:`calc.sections.common.number`)."""
+    """The results of some sections of a case and of those they require, where each applies.
+
+    numpy's floating-point warnings are not printed (what overflows gives inf or NaN, which the
+    results report: :func:`calc.sections.common.number`).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    names : tuple of str
+        The sections wanted (every section for none).
+    given : dict, optional
+        Results taken as they are instead of evaluated, by section name (a variant of the case
+        with its motor fixed).
+
+    Returns
+    -------
+    dict
+        Each result evaluated or given, by section name, in the order of evaluation.
+    """
     wanted = _wanted(case, names or tuple(s.NAME for s in sections()))
     results = dict(given or {})
     with np.errstate(all="ignore"):
@@ -119,7 +185,7 @@ def results_of(case, names: tuple = (), given: dict | None = None) -> dict:
 
 
 def _wanted(case, names: tuple) -> set:
-    """The sections ``names`` that apply to the case, and those their evaluation requires."""
+    """The sections ``names`` that apply to ``case``, and those their evaluation requires."""
     out, todo = set(), list(names)
     while todo:
         s = section(todo.pop())
@@ -148,12 +214,23 @@ class Results:
         return Verdict.combine([r.verdict() for r in self.sections.values()], NOTHING_CHECKED)
 
     def governing(self) -> list:
-        """The governing checks of each section that has checks (:class:`calc.sections.common.Governing`)."""
+        """The governing checks of each section that has checks.
+
+        Returns
+        -------
+        list of calc.sections.common.Governing
+        """
         return [g for r in self.sections.values() if (g := r.governing()) is not None]
 
     def not_made(self) -> list[str]:
-        """Every governing check not made, each with why; and the checks left out for want of an
-        input (the motor's without a rating)."""
+        """Every governing check not made, and every check left out for want of an input (the
+        motor's without a rating).
+
+        Returns
+        -------
+        list of str
+            Each with why, ``gearbox NPS045-10: F_2R: the catalog gives no F_2R``.
+        """
         return ([x for g in self.governing() for x in g.not_made]
                 + [x for r in self.sections.values() for x in r.unchecked()])
 
@@ -161,8 +238,19 @@ class Results:
         return self.sections[name]
 
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
-        """The results as the JSON contract writes them; ``candidates`` bounds each candidate list
-        (all for None)."""
+        """The results as the JSON contract writes them.
+
+        Parameters
+        ----------
+        candidates : int or None
+            The most candidates each list holds, best first (all for None).
+
+        Returns
+        -------
+        dict
+            Title, case file, verdict, then each section's results under its name (or at the top,
+            where its record says so).
+        """
         out = {"title": self.case.title, "case": display_path(self.case.path), "verdict": self.verdict.to_json()}
         for name, result in self.sections.items():
             written = result.to_json(candidates)
@@ -170,7 +258,17 @@ class Results:
         return out
 
     def summary(self, candidates: int | None = SHOWN_CANDIDATES) -> str:
-        """The results as a short report for a terminal: the verdict first, then each section."""
+        """The results as a short report for a terminal: the verdict first, then each section.
+
+        Parameters
+        ----------
+        candidates : int or None
+            The most candidates each list shows, best first (all for None).
+
+        Returns
+        -------
+        str
+        """
         title = self.case.title
         v = self.verdict
         lines = [title, "=" * len(title), f"Verdict: {v.word}", *[f"  {r}" for r in v.reasons]]
@@ -180,8 +278,22 @@ class Results:
 
 
 def evaluate(case, *names: str) -> Results:
-    """Evaluate the sections ``names`` of ``case`` (every section for none) with what they
-    require, where each applies; the results hold the shown ones, in their order."""
+    """Evaluate some sections of a case (every section for none) with what they require, where
+    each applies.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    *names : str
+        The sections wanted (``"gearbox"``).
+
+    Returns
+    -------
+    Results
+        The shown sections' results in their order, the case as checked (with the motor it is
+        checked with) and every result evaluated.
+    """
     results = results_of(case, names)
     for s in evaluation_order():
         if s.NAME in results:

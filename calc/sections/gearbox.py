@@ -54,8 +54,19 @@ def read(top: Table, case: Case) -> None:
 
 
 def catalogs(case: Case) -> tuple:
-    """The case's gearbox catalog (its rows together, when it names several; only those of its
-    families where it names some) and hub table."""
+    """The case's gearbox catalog and hub table.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+
+    Returns
+    -------
+    tuple of calc.data.catalog.Catalog
+        The catalog (its rows together, when it names several; only those of its families where
+        it names some) and the table of clamping hubs read with the case.
+    """
     where = f"{case.path}: gearbox"
     catalog = load_catalogs(case.gearbox_catalog, case.folder, f"{where}.catalog", SCHEMA)
     if case.gearbox_family:
@@ -83,8 +94,17 @@ def selection_inputs(case: Case) -> dict:
 
 
 def gearbox_selection(case: Case) -> GearboxSelection:
-    """The gearbox catalog of the case, narrowed to its ratio (or named part), checked and ranked
-    with the motor of ``case`` (the case as checked: :class:`calc.sections.drive.DriveResult`)."""
+    """The gearbox catalog of the case, narrowed to its ratio (or named part), checked and ranked.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with (:class:`calc.sections.drive.DriveResult`).
+
+    Returns
+    -------
+    calc.domain.gearbox.GearboxSelection
+    """
     where = f"{case.path}: gearbox"
     catalog, hubs = catalogs(case)
     if case.gearbox_part is not None:

@@ -413,7 +413,17 @@ SECTION = MotionSection()
 
 
 def motion_result(m: Motion) -> MotionResult:
-    """The derived segments and peaks of the motion ``m`` as the outputs print them."""
+    """The derived segments and peaks of a motion as the outputs print them.
+
+    Parameters
+    ----------
+    m : Motion
+        The case's motion form.
+
+    Returns
+    -------
+    MotionResult
+    """
     g = m.segments
     segments = [Segment(PHASES[p], Value.of(Q_(t, "s"), "s", "motion.segments.duration"), Value.of(Q_(n, "rad/s"), "rpm", "motion.segments.speed"),
                         Value.of(Q_(T, "N*m"), "N*m", "motion.segments.torque"))

@@ -34,8 +34,19 @@ TYPED = (
 
 
 def output_load(case: Case) -> OutputLoad:
-    """The sampled cycle of the motion form where the case derives its load cycle, else the typed
-    segments (a pause with zero torque and speed)."""
+    """The load cycle at the gearbox output as the motor's side reads it.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+
+    Returns
+    -------
+    calc.domain.motor.OutputLoad
+        The sampled cycle of the motion form where the case derives its load cycle, else the
+        typed segments (a pause with zero torque and speed).
+    """
     if case.motion is None:
         p = case.profile
         return OutputLoad(p.durations, p.torques, p.speeds, None, p.n_2max)
@@ -45,7 +56,18 @@ def output_load(case: Case) -> OutputLoad:
 def motor_side_coupling(coupling) -> tuple:
     """A motor-side coupling's whole inertia (it turns with the motor; NaN where its catalog gives
     none) and its part, or ``(None, None)`` without one: the coupling the ``coupling`` result
-    (None: the case has none) chose, or its best-ranked."""
+    (None: the case has none) chose, or its best-ranked.
+
+    Parameters
+    ----------
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+
+    Returns
+    -------
+    tuple
+        The coupling's inertia J [kg·m², a pint.Quantity] and its part, or ``(None, None)``.
+    """
     if coupling is None:
         return None, None
     cc, sel = coupling.inputs, coupling.selection
@@ -62,7 +84,25 @@ def rotor_inertia(case: Case, J_1, coupling, catalog_rotors: bool = False) -> tu
     result (None: none): ``(J_1 with a motor-side coupling's whole inertia, that coupling's
     inertia or None, what the term lacks or None, notes)``. The term lacks the motor's inertia
     where the case gives none (and ``catalog_rotors`` is not set: each catalog motor brings its
-    own), and the coupling's where its catalog gives none."""
+    own), and the coupling's where its catalog gives none.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    J_1 : pint.Quantity [kg*m**2]
+        Input inertia of each gearbox row (NaN where the catalog gives none).
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+    catalog_rotors : bool
+        Each catalog motor brings its own rotor (the case's motor inertia is not needed).
+
+    Returns
+    -------
+    tuple
+        ``(J_1 with the coupling [kg·m²], the coupling's J [kg·m²] or None, what the term lacks
+        or None, notes)``.
+    """
     J_c, coupling_part = motor_side_coupling(coupling)
     notes, missing = [], None
     if J_c is not None:
@@ -246,7 +286,18 @@ class Transmission:
 
 
 def transmission(gearbox) -> Transmission:
-    """The best-ranked row of the ``gearbox`` result, or a direct drive (None: no gearbox)."""
+    """What the motor drives through.
+
+    Parameters
+    ----------
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox (a direct drive).
+
+    Returns
+    -------
+    Transmission
+        The best-ranked row of the gearbox, or a direct drive (ratio and efficiency 1, no J_1).
+    """
     if gearbox is None:
         return Transmission(None, True, Q_(1.0, ""), Q_(1.0, ""), Q_(np.zeros(1), "kg*m**2"), [])
     sel = gearbox.selection
@@ -278,7 +329,21 @@ SECTION = MotorSection()
 
 
 def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
-    """The motor's checks through ``t`` for ``case`` as checked, with the ``coupling`` result (None: none)."""
+    """The motor's torques through a transmission and its checks.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    t : Transmission
+        What the motor drives through.
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+
+    Returns
+    -------
+    MotorResult
+    """
     out = output_load(case)
     notes = list(t.notes)
     J_1 = J_c = None

@@ -27,28 +27,71 @@ class Result(ABC):
 
     @abstractmethod
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
-        """The record as the JSON contract writes it; ``candidates`` bounds each candidate list (all for None)."""
+        """The record as the JSON contract writes it.
+
+        Parameters
+        ----------
+        candidates : int or None
+            The most candidates each list holds, best first (all for None).
+
+        Returns
+        -------
+        dict
+        """
 
     @abstractmethod
     def summary_lines(self, candidates: int | None = SHOWN_CANDIDATES) -> list[str]:
-        """The record as lines of the text summary."""
+        """The record as lines of the text summary.
+
+        Parameters
+        ----------
+        candidates : int or None
+            The most candidates each list holds, best first (all for None).
+
+        Returns
+        -------
+        list of str
+        """
 
     @abstractmethod
     def verdict(self) -> Verdict | None:
-        """Whether the section passes; None where it checks nothing."""
+        """Whether the section passes.
+
+        Returns
+        -------
+        calc.sections.common.Verdict or None
+            None where the section checks nothing.
+        """
 
     def governing(self) -> Governing | None:
-        """The checks that decide the verdict; None where the section has none."""
+        """The checks that decide the verdict.
+
+        Returns
+        -------
+        calc.sections.common.Governing or None
+            None where the section has none.
+        """
         return None
 
     def unchecked(self) -> list[str]:
-        """Checks left out for want of an input, each with why (beside the governing checks not made)."""
+        """Checks left out for want of an input (beside the governing checks not made).
+
+        Returns
+        -------
+        list of str
+            Each with why.
+        """
         return []
 
     def ranked(self):
-        """The catalog ranked and the part chosen (:class:`calc.core.selection.Selection`); None
-        where the section ranks none. The outputs name its chosen part and worst utilization, and
-        a record that ranks says how in its ``ranking`` (a sentence)."""
+        """The catalog ranked and the part chosen. The outputs name its chosen part and worst
+        utilization, and a record that ranks says how in its ``ranking`` (a sentence).
+
+        Returns
+        -------
+        calc.core.selection.Selection or None
+            None where the section ranks none.
+        """
         return None
 
 
@@ -64,25 +107,54 @@ class Section(ABC):
     SHOWN: ClassVar[bool] = True
 
     def read(self, top, case) -> None:
-        """Read the section's own table (the one of its ``TABLES`` named as it is) from the case
-        file's top-level table ``top`` (:class:`calc.sections.case.Table`) into ``case`` as it
-        is read: its typed inputs (:meth:`read_inputs`) in ``case.inputs`` and the table as
+        """Read the section's own table (the one of its ``TABLES`` named as it is) into the case
+        as it is read: its typed inputs (:meth:`read_inputs`) in ``case.inputs`` and the table as
         written in ``case.sections``. A section whose inputs the other sections share writes them
-        into the case's fields instead (it overrides this)."""
+        into the case's fields instead (it overrides this).
+
+        Parameters
+        ----------
+        top : calc.sections.case.Table
+            The case file's top-level table.
+        case : calc.sections.case.Case
+            The case being read, the sections before this one read into it.
+        """
         if any(t.name == self.NAME for t in self.TABLES) and top.has(self.NAME):
             case.sections[self.NAME] = top.data[self.NAME]
             case.inputs[self.NAME] = self.read_inputs(case)
 
     def read_inputs(self, case):
-        """The typed inputs of the section's own table as ``case.sections`` holds it, an object
-        that keeps that table (``table``); every error names the file and the key. Sections that
-        read no table of their own have none."""
+        """The typed inputs of the section's own table as ``case.sections`` holds it; every error
+        names the file and the key.
+
+        Parameters
+        ----------
+        case : calc.sections.case.Case
+            The case as read.
+
+        Returns
+        -------
+        object or None
+            An object that keeps the table it was read from (``table``); None for a section that
+            reads no table of its own.
+        """
         return None
 
     def inputs(self, case):
         """The typed inputs of the section's own table as the case holds it: those read with the
         case, or read again from a copy of the case whose table was changed (the design review's
-        inputs, a variant in a notebook)."""
+        inputs, a variant in a notebook).
+
+        Parameters
+        ----------
+        case : calc.sections.case.Case
+            The case, or a changed copy of it.
+
+        Returns
+        -------
+        object or None
+            As :meth:`read_inputs`; None where the case has no such table.
+        """
         table = case.sections.get(self.NAME)
         read = case.inputs.get(self.NAME)
         if read is not None and read.table is table:
@@ -90,16 +162,49 @@ class Section(ABC):
         return None if table is None else self.read_inputs(case)
 
     def applies(self, case) -> bool:
-        """Whether the case gives what the section evaluates: by default, its own table."""
+        """Whether the case gives what the section evaluates: by default, its own table.
+
+        Parameters
+        ----------
+        case : calc.sections.case.Case
+            The case as read.
+
+        Returns
+        -------
+        bool
+        """
         return self.NAME in case.sections
 
     def checked(self, case, result):
-        """The case as the outputs show it checked, once the section gave ``result``: by default
-        the case itself (the drive section gives it the ratings of the motor chosen)."""
+        """The case as the outputs show it checked, once the section gave its result: by default
+        the case itself (the drive section gives it the ratings of the motor chosen).
+
+        Parameters
+        ----------
+        case : calc.sections.case.Case
+            The case as checked so far.
+        result : object
+            The section's result.
+
+        Returns
+        -------
+        calc.sections.case.Case
+        """
         return case
 
     @abstractmethod
     def evaluate(self, case, earlier) -> Result:
-        """The section's result for ``case`` (:class:`calc.sections.case.Case`), reading the results
-        of the sections it requires from ``earlier`` (:class:`calc.sections.evaluation.Earlier`):
-        a :class:`Result` where the section is shown."""
+        """The section's result for a case, reading the results of the sections it requires.
+
+        Parameters
+        ----------
+        case : calc.sections.case.Case
+            The case as read (the drive section's result holds it with the motor it is checked with).
+        earlier : calc.sections.evaluation.Earlier
+            The results of the sections it requires.
+
+        Returns
+        -------
+        Result or object
+            A :class:`Result` where the section is shown.
+        """

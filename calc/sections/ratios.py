@@ -116,8 +116,20 @@ class RatioResult:
 
 def search(case: Case, evaluated: dict | None = None) -> RatioResult:
     """Every ratio of the case's gearbox catalog, with the motor the case is checked with and its
-    motor-side coupling: the results of its drive and coupling sections, ``evaluated`` where the
-    case was (:attr:`calc.sections.Results.every`), else evaluated here."""
+    motor-side coupling.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    evaluated : dict, optional
+        The results of the case's drive and coupling sections where the case was evaluated
+        (:attr:`calc.sections.Results.every`); else they are evaluated here.
+
+    Returns
+    -------
+    RatioResult
+    """
     if case.gearbox_catalog is None:
         raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the ratios to try), found none")
     notes = []
