@@ -11,9 +11,7 @@ import numpy as np
 
 from ..sections import gearbox
 from ..sections.accuracy import NAME
-from .common import (
-    Renderer, described, further_checks, further_readings, further_sources, raw_section_tables, result_of,
-)
+from .common import TableRenderer, result_of
 from .latex import latex_escape, listed, plain, prose, q, step_block, table
 from .page import in_system, table as html_table, value
 from .provenance import PROJECT_DIR
@@ -30,25 +28,11 @@ def _shown(a, field: str, bound: str = "") -> str:
     return ("≥ " if bound and getattr(v, bound) else "") + str(in_system(getattr(v, field)))
 
 
-class AccuracyRenderer(Renderer):
+class AccuracyRenderer(TableRenderer):
     """The chain's accuracy: its inputs, steps, results, checks and figures in the report, its
     values on the page and in the comparison."""
 
     NAME = NAME
-
-    def sources(self, report) -> list[str]:
-        return further_sources(NAME, report)
-
-    def readings(self, report) -> set[str]:
-        return further_readings(NAME, report)
-
-    def checks(self, report) -> list[str]:
-        return further_checks(NAME, report)
-
-    def inputs(self, report) -> list[str]:
-        if not described(NAME, report):
-            return []
-        return [raw_section_tables(NAME, report.case.sections[NAME], {})]
 
     def steps(self, report) -> list[str]:
         r = self.result(report)

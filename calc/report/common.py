@@ -9,7 +9,7 @@ blocks are its methods of the :class:`calc.report.Report` (``sources`` and ``rea
 ``chosen`` ((what, part, detail) rows) and ``order_lines``), the page's its :meth:`Renderer.page`,
 and the summary's and the comparison's what it declares. Each has a default that shows nothing.
 The sections that read a table of their own (coupling, accuracy) write their method, checks and
-inputs the same way (:func:`further_checks` ...). An input row is written from its key's
+inputs the same way (:class:`TableRenderer`). An input row is written from its key's
 declaration (:func:`input_row`). The JSON and the text summary are the section's result
 record's (:class:`calc.sections.protocol.Result`).
 """
@@ -90,6 +90,31 @@ def result_of(name: str, report):
     return report.evaluated.sections.get(name) if report.evaluated is not None else None
 
 
+def _block(summary: str, returns: str):
+    """The numpydoc docstring of a block method of :class:`Renderer`: its summary, the report it
+    takes and what it returns (every block takes the same report).
+
+    Parameters
+    ----------
+    summary : str
+        What the section gives to the block.
+    returns : str
+        The type of the block's part.
+
+    Returns
+    -------
+    callable
+        A decorator that sets the method's docstring.
+    """
+    def document(method):
+        method.__doc__ = (f"{summary}\n\nParameters\n----------\nreport : calc.report.Report\n"
+                          "    The report being built (its case, and its results where the case could be\n"
+                          f"    evaluated).\n\nReturns\n-------\n{returns}\n")
+        return method
+
+    return document
+
+
 class Renderer:
     """The output side of one section, ``NAME`` (its key in the results): each method gives the
     section's part of one output, empty where it has none.
@@ -120,158 +145,48 @@ class Renderer:
 
     # -- the calc report's blocks (:class:`calc.report.Report`) ---------------------------------
 
+    @_block("The source's sections the section is computed from (method).", "list of str")
     def sources(self, report) -> list[str]:
-        """The source's sections the section is computed from (method).
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of str
-        """
         return []
 
+    @_block("The keys of the errata readings that apply (method).", "set of str")
     def readings(self, report) -> set[str]:
-        """The keys of the errata readings that apply (method).
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        set of str
-        """
         return set()
 
+    @_block("Rows of the inputs table (:func:`input_row`).", "list of list of str")
     def input_rows(self, report) -> list[list[str]]:
-        """Rows of the inputs table (:func:`input_row`).
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of list of str
-        """
         return []
 
+    @_block("Tables of inputs after the inputs table.", "list of str")
     def inputs(self, report) -> list[str]:
-        """Tables of inputs after the inputs table.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of str
-        """
         return []
 
+    @_block("The calculations, ``symbol = formula = values = result``.", "list of str")
     def steps(self, report) -> list[str]:
-        """The calculations, ``symbol = formula = values = result``.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of str
-        """
         return []
 
+    @_block("What the section gives besides its checks.", "list of str")
     def results(self, report) -> list[str]:
-        """What the section gives besides its checks.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of str
-        """
         return []
 
+    @_block("The checks of the part chosen (or the closest), or of the section's own values.", "list of str")
     def checks(self, report) -> list[str]:
-        """The checks of the part chosen (or the closest), or of the section's own values.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of str
-        """
         return []
 
+    @_block("The candidates ranked.", "list of str")
     def candidates(self, report) -> list[str]:
-        """The candidates ranked.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of str
-        """
         return []
 
+    @_block("(figure, caption) pairs; the caption is LaTeX.", "list")
     def figures(self, report) -> list:
-        """(figure, caption) pairs; the caption is LaTeX.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list
-        """
         return []
 
+    @_block("(what, part, detail) of the part chosen; part None where none passes.", "list of tuple")
     def chosen(self, report) -> list[tuple]:
-        """(what, part, detail) of the part chosen; part None where none passes.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of tuple
-        """
         return []
 
+    @_block("What to order.", "list of str")
     def order_lines(self, report) -> list[str]:
-        """What to order.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built (its case, and its results where the case could be evaluated).
-
-        Returns
-        -------
-        list of str
-        """
         return []
 
     # -- the design review's page and the comparison of designs ----------------------------------
@@ -412,29 +327,61 @@ def raw_section_tables(name: str, raw: dict, derived: dict) -> str:
     return "\n".join(out)
 
 
-# -- the further sections' checks, candidates, chosen part and order line ------------------------
+class TableRenderer(Renderer):
+    """The renderer of a section that reads a table of its own (the coupling, the accuracy): its
+    method and its inputs as written where the case gives the table, and its checks, of the part
+    it chose or against the case's requirements."""
 
+    def described(self, report) -> bool:
+        """Whether the case gives the section's own table.
 
-def described(name: str, report) -> bool:
-    """Whether the case gives the further section ``name`` (its own table)."""
-    return report.case.sections.get(name) is not None
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
 
+        Returns
+        -------
+        bool
+        """
+        return report.case.sections.get(self.NAME) is not None
 
-def further_sources(name: str, report) -> list[str]:
-    """The source's sections of a further section, where the case describes it."""
-    return sources(name) if described(name, report) else []
+    def derived_inputs(self, report, raw: dict) -> dict:
+        """The inputs the table leaves out and the package takes from the rest of the case, as
+        the case would write them (by default none).
 
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+        raw : dict
+            The table as written.
 
-def further_readings(name: str, report) -> set[str]:
-    """The errata readings of a further section, where the case describes it."""
-    return readings(name) if described(name, report) else set()
+        Returns
+        -------
+        dict
+            Key -> text.
+        """
+        return {}
 
+    def sources(self, report) -> list[str]:
+        return sources(self.NAME) if self.described(report) else []
 
-def further_checks(name: str, report) -> list[str]:
-    """The checks of the best-ranked candidate, or the checks against the case's requirements."""
-    r = result_of(name, report)
-    if r is not None and r.ranked() is not None:
-        best = r.ranked().best
-        return [checks_table(best.checks, f"Checks of {name} {best.part}")] if best.checks else []
-    g = None if r is None else r.governing()
-    return [] if g is None else [requirement_table(g.checks, f"{name.capitalize()} against the requirements of the case")]
+    def readings(self, report) -> set[str]:
+        return readings(self.NAME) if self.described(report) else set()
+
+    def inputs(self, report) -> list[str]:
+        if not self.described(report):
+            return []
+        raw = report.case.sections[self.NAME]
+        return [raw_section_tables(self.NAME, raw, self.derived_inputs(report, raw))]
+
+    def checks(self, report) -> list[str]:
+        """The checks of the best-ranked candidate, or the checks against the case's requirements."""
+        r = self.result(report)
+        if r is not None and r.ranked() is not None:
+            best = r.ranked().best
+            return [checks_table(best.checks, f"Checks of {self.NAME} {best.part}")] if best.checks else []
+        g = None if r is None else r.governing()
+        caption = f"{self.NAME.capitalize()} against the requirements of the case"
+        return [] if g is None else [requirement_table(g.checks, caption)]

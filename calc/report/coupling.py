@@ -9,24 +9,10 @@ from html import escape
 
 from ..core.units import sig
 from ..sections.coupling import NAME
-from .common import (
-    Renderer, candidates_table, described, further_checks, further_readings, further_sources, raw_section_tables,
-    rejected, result_of,
-)
+from .common import TableRenderer, candidates_table, rejected
 from .latex import breakable, itemize, latex_escape, plain, prose, q, sources_list, step_block, table
 from .page import candidates_shown, notes, table as html_table, utilization, value, verdict_cell
 from .symbols import html as typeset
-
-
-def _derived_inputs(report, raw: dict) -> dict:
-    """The inputs that the case left out and the package took from the rest of it (a motor-side
-    coupling's M_a, J_drive, J_load, speed), as the case would write them."""
-    r = result_of(NAME, report)
-    if r is None:
-        return {}
-    units = {"accel_torque": "N*m", "drive_inertia": "kg*cm**2", "load_inertia": "kg*cm**2", "speed": "rpm"}
-    x = r.inputs.inputs
-    return {k: f"{sig(x[k].m_as(u))} {u}" for k, u in units.items() if k not in raw and x.get(k) is not None}
 
 
 def _torsion(r) -> list[str]:
@@ -70,7 +56,7 @@ def _torsion_table(t) -> str:
             + f"<div class=note>natural frequencies {frequencies} (rigid-body mode left out)</div>" + check + missing)
 
 
-class CouplingRenderer(Renderer):
+class CouplingRenderer(TableRenderer):
     """The coupling: its inputs, steps, results, checks, candidates, figures, chosen part and
     order line in the report, its candidates and drive train on the page, its chosen part in the
     summary and the comparison."""
@@ -79,20 +65,14 @@ class CouplingRenderer(Renderer):
     SUMMARY_COLUMN = ("Coupling", r"0.08\linewidth")
     COMPARED_PART = True
 
-    def sources(self, report) -> list[str]:
-        return further_sources(NAME, report)
-
-    def readings(self, report) -> set[str]:
-        return further_readings(NAME, report)
-
-    def checks(self, report) -> list[str]:
-        return further_checks(NAME, report)
-
-    def inputs(self, report) -> list[str]:
-        if not described(NAME, report):
-            return []
-        raw = report.case.sections[NAME]
-        return [raw_section_tables(NAME, raw, _derived_inputs(report, raw))]
+    def derived_inputs(self, report, raw: dict) -> dict:
+        """A motor-side coupling's M_a, J_drive, J_load and speed, where the table leaves them out."""
+        r = self.result(report)
+        if r is None:
+            return {}
+        units = {"accel_torque": "N*m", "drive_inertia": "kg*cm**2", "load_inertia": "kg*cm**2", "speed": "rpm"}
+        x = r.inputs.inputs
+        return {k: f"{sig(x[k].m_as(u))} {u}" for k, u in units.items() if k not in raw and x.get(k) is not None}
 
     def steps(self, report) -> list[str]:
         """The coupling's calculations as the section computed them: the inputs taken from the rest

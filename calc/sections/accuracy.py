@@ -505,28 +505,10 @@ def _measured_figures(case: Case, c: ComponentInputs, f: Figures, out: AccuracyC
         f.sources.append(f"trace {display_path(path)}")
 
 
-def accuracy_of(case: Case, given: AccuracyInputs, gearbox, coupling) -> tuple:
-    """The ``[accuracy]`` section as evaluated (:func:`accuracy_case`) and its chain's accuracy.
-
-    Parameters
-    ----------
-    case : calc.sections.case.Case
-        The case as read.
-    given : AccuracyInputs
-        The ``[accuracy]`` table as read.
-    gearbox : calc.sections.gearbox.GearboxResult or None
-        The gearbox section's result; None where the case has no gearbox.
-    coupling : calc.sections.coupling.CouplingResult or None
-        The coupling section's result; None where the case has no coupling.
-
-    Returns
-    -------
-    tuple
-        ``(AccuracyCase, calc.domain.accuracy.ChainAccuracy)``.
-    """
-    spec = accuracy_case(case, given, gearbox, coupling)
+def _chain_accuracy(case: Case, spec: AccuracyCase) -> ChainAccuracy:
+    """The accuracy of the evaluated chain ``spec``; an error of the chain names the case's table."""
     try:
-        return spec, spec.evaluate()
+        return spec.evaluate()
     except CalcError as exc:
         raise CalcError(f"{case.path}: accuracy.{exc}") from None
 
@@ -892,7 +874,8 @@ class AccuracySection(Section):
         return read_inputs(case)
 
     def evaluate(self, case: Case, earlier) -> AccuracyResult:
-        return AccuracyResult(*accuracy_of(case, self.inputs(case), earlier.get("gearbox"), earlier.get("coupling")))
+        spec = accuracy_case(case, self.inputs(case), earlier.get("gearbox"), earlier.get("coupling"))
+        return AccuracyResult(spec, _chain_accuracy(case, spec))
 
 
 SECTION = AccuracySection()

@@ -310,27 +310,22 @@ def _from_the_case(case: Case, gearbox) -> tuple[dict, dict]:
     return out, steps
 
 
-def coupling_selection(case: Case, given: CouplingInputs, gearbox) -> tuple[CouplingCase, "CouplingSelection"]:
-    """The ``[coupling]`` section as evaluated (:func:`coupling_case`) and its candidates checked
-    and ranked.
+def coupling_selection(cc: CouplingCase, where: str) -> CouplingSelection:
+    """The candidates of the coupling as evaluated (:func:`coupling_case`), checked and ranked.
 
     Parameters
     ----------
-    case : calc.sections.case.Case
-        The case as checked, with the motor it is checked with.
-    given : CouplingInputs
-        The ``[coupling]`` table as read.
-    gearbox : calc.sections.gearbox.GearboxResult or None
-        The gearbox section's result; None where the case has no gearbox.
+    cc : CouplingCase
+        The ``[coupling]`` section as evaluated.
+    where : str
+        The file and table errors name (``case.toml: coupling``).
 
     Returns
     -------
-    tuple
-        The :class:`CouplingCase` and its :class:`calc.domain.coupling.CouplingSelection`.
+    calc.domain.coupling.CouplingSelection
     """
-    cc = coupling_case(case, given, gearbox)
-    return cc, select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train,
-                               where=f"{case.path}: coupling", sources=cc.missing, **cc.inputs)
+    return select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train,
+                           where=where, sources=cc.missing, **cc.inputs)
 
 
 @dataclass(frozen=True)
@@ -635,7 +630,8 @@ class CouplingSection(Section):
 
     def evaluate(self, case: Case, earlier) -> CouplingResult:
         case = earlier["drive"].case
-        return CouplingResult(*coupling_selection(case, self.inputs(case), earlier.get("gearbox")))
+        cc = coupling_case(case, self.inputs(case), earlier.get("gearbox"))
+        return CouplingResult(cc, coupling_selection(cc, f"{case.path}: coupling"))
 
 
 SECTION = CouplingSection()
