@@ -6,7 +6,7 @@ its own; the sections after it read the case with that motor (:class:`DriveResul
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -163,10 +163,12 @@ ROUNDS = 4
 @dataclass(frozen=True)
 class DriveResult:
     """The case with the ratings and inertia of the motor it is checked with, and that motor where
-    the catalog chose it (None where the case names or types its motor)."""
+    the catalog chose it (None where the case names or types its motor); ``evaluated``, the results
+    of the sections the choice evaluated with that motor, by name."""
 
     case: Case
     chosen: str | None = None
+    evaluated: dict = field(default_factory=dict, repr=False, compare=False)
 
 
 def chosen_motor(case: Case) -> DriveResult:
@@ -195,10 +197,12 @@ def chosen_motor(case: Case) -> DriveResult:
         return DriveResult(case)
     chosen, seen, trial = None, [], case
     for _ in range(ROUNDS):
-        sel = results_of(trial, ("motor",), given={SECTION.NAME: DriveResult(trial)})["motor"].selection
+        given = {SECTION.NAME: DriveResult(trial)}
+        evaluated = results_of(trial, ("motor",), given)
+        sel = evaluated["motor"].selection
         pick = str(sel.catalog.parts[sel.order[0]])
         if pick == chosen:
-            return DriveResult(trial, pick)
+            return DriveResult(trial, pick, {k: v for k, v in evaluated.items() if k not in given})
         chosen = pick
         seen.append(pick)
         trial = dataclasses.replace(case, **motor_ratings(sel.catalog, int(sel.order[0])))
@@ -225,6 +229,9 @@ class DriveSection(Section):
 
     def checked(self, case: Case, result: DriveResult) -> Case:
         return result.case
+
+    def evaluated_with(self, result: DriveResult) -> dict:
+        return result.evaluated
 
 
 SECTION = DriveSection()

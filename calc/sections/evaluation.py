@@ -181,6 +181,9 @@ def results_of(case, names: tuple = (), given: dict | None = None) -> dict:
         for s in evaluation_order():
             if s.NAME in wanted and s.NAME not in results:
                 results[s.NAME] = s.evaluate(case, Earlier(s, results))
+                for name, made in s.evaluated_with(results[s.NAME]).items():
+                    if name in wanted:
+                        results.setdefault(name, made)
     return results
 
 

@@ -192,6 +192,24 @@ class Section(ABC):
         """
         return case
 
+    def evaluated_with(self, result) -> dict:
+        """Results of sections after this one that its evaluation already made for the case as
+        checked: the evaluation takes them instead of evaluating those sections again (the drive's
+        choice of a motor from a catalog evaluates the gearbox, the coupling and the motor with it).
+        By default none.
+
+        Parameters
+        ----------
+        result : object
+            The section's result.
+
+        Returns
+        -------
+        dict
+            Results by section name.
+        """
+        return {}
+
     @abstractmethod
     def evaluate(self, case, earlier) -> Result:
         """The section's result for a case, reading the results of the sections it requires.
