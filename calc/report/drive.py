@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+from ..sections.drive import SECTION
 from .common import Renderer, input_row
 
 
 class DriveRenderer(Renderer):
     """The motor's peak torque and inertia, and the load's inertia where no mechanism gives it."""
 
-    NAME = "drive"
+    NAME = SECTION.NAME
 
     def input_rows(self, report) -> list[list[str]]:
         c = report.case

@@ -7,14 +7,12 @@ from __future__ import annotations
 
 from html import escape
 
-from ..sections.motion import keys_of
+from ..sections.motion import NAME, keys_of
 from ..core.units import Q_, sig
 from .common import Renderer, input_row
 from .latex import latex_escape, signed, step_block, table
 from .page import value
 from .symbols import html as typeset
-
-NAME = "motion"
 
 #: The field of :class:`calc.domain.mechanism.Mechanism` of each of its quantities' keys, where it differs.
 FIELDS = {"inertia": "given_inertia", "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia",
