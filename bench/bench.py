@@ -357,12 +357,12 @@ def loop_keys(catalog, case, rows: int) -> list:
 
 
 def measure_rank(size: Size, workdir: Path) -> list[str]:
+    from calc.sections import evaluate
     from calc.sections.case import read_case
-    from calc.sections.motor import with_chosen_motor
     from calc.data.catalog import load_catalog
     from calc.domain.gearbox import SCHEMA
 
-    case = with_chosen_motor(read_case(EXAMPLE))  # the motor the evaluation chooses from the motor catalog
+    case = evaluate(read_case(EXAMPLE), "drive").case  # the motor the evaluation chooses from the motor catalog
     path = workdir / "synthetic-gearboxes.csv"
     write_synthetic_catalog(path, size.rows, case.ratio.m_as(""))
     load_time, catalog = timed(lambda: load_catalog(path, SCHEMA))

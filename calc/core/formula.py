@@ -33,6 +33,7 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
+from .segment_sum import sum_last_axis
 from .units import Q_, as_kind, fmt, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit
 
 REGISTRY: list["Formula"] = []
@@ -128,10 +129,6 @@ def segment_sum(x):
         The sum, kept unevaluated so it prints as Σ and evaluates over the last axis.
     """
     return _sympy().SegmentSum(x)
-
-
-def _sum_last_axis(x):
-    return np.sum(x, axis=-1)
 
 
 class Formula:
@@ -230,7 +227,7 @@ class Formula:
             A function of the inputs' SI magnitudes, in the order of :attr:`inputs`.
         """
         s = _sympy()
-        return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": _sum_last_axis}, "numpy"])
+        return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": sum_last_axis}, "numpy"])
 
     def numeric_source(self, name: str) -> str:
         """The source of :meth:`lambdified` as a function called ``name``.

@@ -22,9 +22,9 @@ from types import ModuleType
 
 import numpy as np
 
-from ..core import formula as formula_module
 from ..core.errors import CalcError
 from ..core.formula import REGISTRY, Formula, global_names
+from ..core.segment_sum import sum_last_axis
 
 TARGET = Path(__file__).resolve().parents[1] / "core" / "formula_numeric.py"
 
@@ -77,8 +77,8 @@ def _import_line(name: str, value) -> str | None:
     """How the stored module gets the object ``name`` means in the generated function's namespace."""
     if getattr(builtins, name, None) is value:
         return None
-    if value is formula_module._sum_last_axis:
-        return f"from .formula import _sum_last_axis as {name}"
+    if value is sum_last_axis:
+        return f"from .segment_sum import sum_last_axis as {name}"
     if isinstance(value, ModuleType):
         return f"import {value.__name__} as {name}" if value.__name__ != name else f"import {name}"
     for candidate in (getattr(value, "__name__", None), name):

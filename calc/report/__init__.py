@@ -10,9 +10,10 @@ figures; the order lines. Each part is a :class:`Latex` block: the report notebo
 (``reports/calc-report.ipynb``) displays it and nbconvert passes it unchanged into the PDF
 (:mod:`calc.report.publish`).
 
-Each section of a case has its block module, of the same name as the section's module
-(:data:`BLOCKS`, in the sections' order; the shape in :mod:`.common`); a block of the report is
-its frame with each section's part in turn. The LaTeX helpers are in
+Each section of a case has its renderer, in the module of the same name as the section's module
+(:data:`RENDERERS`, in the sections' order; the shape in :class:`.common.Renderer`): what the
+report, the design review's page, the summary of several cases and ``calc compare`` show of it. A
+block of the report is its frame with each section's part in turn. The LaTeX helpers are in
 :mod:`.latex`, the skeletons of the blocks in ``templates/``.
 
 Text from a case file or a catalog goes through :func:`latex_escape`, so it prints as written. A
@@ -31,17 +32,26 @@ from pathlib import Path
 from ..sections.case import Case, read_case
 from ..data.catalog import display_path, recording_files_read
 from ..core.errors import CalcError
-from ..sections import MODULES, Results, Verdict, evaluate
+from ..sections import Results, Verdict, evaluate, places
 from ..sections.ratios import search as ratio_search
-from . import gearbox
-from .common import ERRATA, INPUT_COLUMNS, ranks, rejected_in_full
+from ..sections.gearbox import NAME as GEARBOX
+from .common import ERRATA, INPUT_COLUMNS, rejected_in_full
 from .latex import Latex, breakable, latex_escape, prose, q, render, table, util, verdict_mark
 from .provenance import PACKAGE, build_date, git_commit, sha256
 
-__all__ = ["BLOCKS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
+__all__ = ["RENDERERS", "Latex", "Report", "build_report", "latex_escape", "prose", "report_of"]
 
-#: The block module of each section (:data:`calc.sections.MODULES`), in their order.
-BLOCKS = tuple(importlib.import_module(f"{__name__}.{m.__name__.rpartition('.')[2]}") for m in MODULES)
+
+def _renderers() -> tuple:
+    """The renderer of each module of :mod:`calc.sections` with a place in the outputs
+    (:func:`calc.sections.places`), in their order: ``RENDERER`` of this package's module of the
+    same name."""
+    names = [m.__name__.rpartition(".")[2] for m in places()]
+    return tuple(importlib.import_module(f"{__name__}.{name}").RENDERER for name in names)
+
+
+#: The renderer of each section (and of the ratio search), in the order of the outputs.
+RENDERERS = _renderers()
 
 #: What every report assumes.
 ASSUMPTIONS = (
@@ -55,8 +65,9 @@ ASSUMPTIONS = (
 
 
 def _parts(block: str, report) -> list:
-    """Every section's part of a block, in the order of :data:`BLOCKS`."""
-    return [x for m in BLOCKS for x in getattr(m, block)(report)]
+    """Every section's part of a block (its renderer's method of that name), in the order of
+    :data:`RENDERERS`."""
+    return [x for r in RENDERERS for x in getattr(r, block)(report)]
 
 
 @dataclass
@@ -223,13 +234,13 @@ class Report:
 
     def appendix(self) -> Latex:
         """Every rejected candidate with its reasons, where the candidates' pages show only the closest."""
-        out = [x for name, r in self._ranked() for x in rejected_in_full(name, r.selection.candidates())]
+        out = [x for name, r in self._ranked() for x in rejected_in_full(name, r.ranked().candidates())]
         return Latex("\n".join([r"\clearpage\appendix\section{Rejected candidates}", *out]) if out else "")
 
     def _ranked(self) -> list:
-        """(name, result) of each section that ranks a catalog (:class:`calc.core.selection.Selection`)."""
+        """(name, result) of each section that ranks a catalog (:meth:`calc.sections.protocol.Result.ranked`)."""
         sections = self.evaluated.sections if self.evaluated is not None else {}
-        return [(name, r) for name, r in sections.items() if ranks(r)]
+        return [(name, r) for name, r in sections.items() if r.ranked() is not None]
 
     def blocks(self, figures=None) -> list[tuple[object, dict]]:
         """The whole report in a reviewer's order, as (what is shown, its display metadata) pairs:
@@ -280,12 +291,13 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     report.case, report.title = case, case.title
     try:
         evaluated = evaluate(case)
-        ratios = ratio_search(evaluated.case) if gearbox.NAME in evaluated.sections else None
+        ratios = ratio_search(evaluated.case, evaluated.every) if GEARBOX in evaluated.sections else None
     except CalcError as exc:
         report.error = str(exc)
         return report
     # The case as evaluated: with a motor from a catalog, its ratings and inertia are the chosen motor's.
     report.case, report.evaluated, report.ratios = evaluated.case, evaluated, ratios
     for name, r in report._ranked():
-        report.files += [(f"{name.capitalize()} catalog", report_path(path, case.folder), sha) for path, sha in r.selection.catalog.members]
+        report.files += [(f"{name.capitalize()} catalog", report_path(path, case.folder), sha)
+                         for path, sha in r.ranked().catalog.members]
     return report

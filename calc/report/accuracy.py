@@ -1,128 +1,159 @@
-"""Accuracy in the calc report: its inputs, the measured loops and traces and the chain's
-accuracy as calculations, its results, checks against the case's requirements, and the figures
-(the stiffness chain, hysteresis loops, transmission error, measured positions)."""
+"""Accuracy in the outputs: in the calc report its inputs, the measured loops and traces and the
+chain's accuracy as calculations, its results, checks against the case's requirements, and the
+figures (the stiffness chain, hysteresis loops, transmission error, measured positions); on the
+review's page and in the comparison of designs the chain's accuracy."""
 
 from __future__ import annotations
 
-import functools
 from pathlib import Path
 
 import numpy as np
 
 from ..sections import gearbox
-from . import common
-from .common import (
-    described, further_checks, further_readings, further_sources,
-    raw_section_tables, result_of,
-)
+from ..sections.accuracy import NAME
+from .common import TableRenderer, result_of
 from .latex import latex_escape, listed, plain, prose, q, step_block, table
+from .page import in_system, table as html_table, value
 from .provenance import PROJECT_DIR
-
-NAME = "accuracy"
-
-def _result(report):
-    """The accuracy section's result (:class:`calc.sections.accuracy.AccuracyResult`), None without one."""
-    return result_of(NAME, report)
+from .symbols import html as typeset
 
 
-def inputs(report) -> list[str]:
-    if not described(NAME, report):
-        return []
-    return [raw_section_tables(NAME, report.case.sections[NAME], {})]
+def _shown(a, field: str, bound: str = "") -> str:
+    """A value of the chain's accuracy (of ``a``, an :class:`calc.sections.accuracy.AccuracyResult`;
+    None: none) as the comparison writes it, in the unit system shown; ``≥`` before it where the
+    value is a lower bound (``bound``: the field that lists the unknown terms)."""
+    if a is None:
+        return ""
+    v = a.shown
+    return ("≥ " if bound and getattr(v, bound) else "") + str(in_system(getattr(v, field)))
 
 
-def steps(report) -> list[str]:
-    r = _result(report)
-    if r is None:
-        return []
-    spec, a = r.inputs, r.accuracy
-    out = []
-    for name, (path, analysis) in spec.loops.items():
-        out.append(rf"\subsection{{Measured hysteresis loop of {latex_escape(name)}}}")
-        out.append(rf"From \texttt{{{latex_escape(path)}}} (E12).")
-        out += [step_block(s.formula.result.description.capitalize(), s) for s in analysis.steps()]
-    for name, (path, analysis) in spec.traces.items():
-        out.append(rf"\subsection{{Measured transmission error of {latex_escape(name)}}}")
-        out.append(rf"From \texttt{{{latex_escape(path)}}}.")
-        out.append(step_block(analysis.step().formula.result.description.capitalize(), analysis.step()))
-    out.append(r"\subsection{Accuracy of the drive train at the output}")
-    out.append(prose(f"Applied torque: {a.rule.why}, so the positioning rule of E13 for that range applies, {a.rule.text}."))
-    out += [step_block(s.formula.result.description.capitalize(), s) for s in a.steps()]
-    out += [step_block(title, step) for title, step in r.arc_steps]
-    return out
+class AccuracyRenderer(TableRenderer):
+    """The chain's accuracy: its inputs, steps, results, checks and figures in the report, its
+    values on the page and in the comparison."""
 
+    NAME = NAME
 
-def results(report) -> list[str]:
-    """The chain's stiffness, backlash, transmission accuracy, lost motion, positioning accuracy
-    and repeatability, and each member referred to the output."""
-    r = _result(report)
-    if r is None:
-        return []
-    a = r.shown
-    rep = "repeatability, an upper bound under torque (E13)" if a.repeatability_is_bound else "repeatability (E13)"
-    rows = [
-        [r"$C_{\mathrm{total}}$", (r"$\leq$ " if a.unknown_chain else "") + q(a.C_total),
-         prose("total torsional stiffness at the output (E11)" + ("; an upper bound" if a.unknown_chain else ""))],
-        [r"$j_{t}$", q(a.backlash), prose("torsional backlash at the output")],
-        [r"$\varphi_{\mathrm{TA}}$", q(a.transmission_accuracy),
-         prose("angular transmission accuracy, from " + listed(a.transmission_accuracy_from))],
-        [r"$\varphi_{\mathrm{LM}}$", (r"$\geq$ " if a.unknown_chain else "") + q(a.lost_motion),
-         prose("total lost motion at the applied torque (E12)" + ("; a lower bound" if a.unknown_chain else ""))],
-        [r"$\Delta\varphi_{P}$", (r"$\geq$ " if a.unknown else "") + q(a.positioning_accuracy),
-         prose(f"positioning accuracy, {a.positioning_rule} (E13)" + (f"; a lower bound: unknown {'; '.join(a.unknown)}" if a.unknown else ""))],
-        ["–", q(a.repeatability), prose(rep + (f"; not known: unknown {'; '.join(a.unknown_chain)}" if a.unknown_chain else ""))],
-    ]
-    rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(arc), prose(f"as an arc at r = {plain(a.radius)}")] for key, arc in a.arcs.items()]
-    comp = [[latex_escape(m.name), latex_escape(m.side), q(m.stiffness_at_output), q(m.backlash_at_output),
-             q(m.transmission_accuracy_at_output), f"{100 * m.share_of_compliance:.1f}", q(m.twist_at_applied_torque)]
-            for m in a.members]
-    return [
-        r"\subsection{Accuracy: results}", table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows),
-        table(r"@{}l l r r r r r@{}", ["Member", "Side", "$C$", "$j_t$", r"$\varphi_{\mathrm{TA}}$",
-                                       r"$1/C$ [\%]", r"Twist at $T$"], comp, small=True,
-              caption=prose(f"Members of the chain referred to the output, at T = {plain(a.applied_torque)}")),
-    ]
-
-
-def figures(report) -> list:
-    """The chain's figures; without measured loops, the chosen gearbox's loop modelled from its
-    catalog figures (also for a case without ``[accuracy]``)."""
-    r, g = _result(report), result_of(gearbox.NAME, report)
-    if r is None and g is None:
-        return []
-    from ..figures.accuracy_plots import hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure
-    from ..domain.hysteresis import analyze_loop, model_for_part, read_loop
-
-    out = []
-    spec = None if r is None else r.inputs
-    if spec is not None:
-        out.append((stiffness_chain_figure(spec.chain, spec.applied_torque),
-                    "Stiffness chain referred to the output (E11): each member's share of the twist."))
+    def steps(self, report) -> list[str]:
+        r = self.result(report)
+        if r is None:
+            return []
+        spec, a = r.inputs, r.accuracy
+        out = []
         for name, (path, analysis) in spec.loops.items():
-            # a relative display path lies in the checkout (an installed calc shows measurements absolute)
-            loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
-            out.append((hysteresis_figure(loop, analysis), latex_escape(f"Measured hysteresis loop of {name} (E12).")))
-    if (spec is None or not spec.loops) and g is not None:
-        sel, row = g.selection, int(g.selection.order[0])
-        if not (np.isnan(sel.catalog["C_t21"][row].magnitude) or np.isnan(sel.catalog["backlash"][row].magnitude)):
-            part = str(sel.catalog.parts[row])
-            model = model_for_part(part, str(sel.catalog.path))
-            loop = model.loop(800)
-            out.append((hysteresis_figure(loop, analyze_loop(loop, model.nominal_torque)),
-                        prose(f"Hysteresis loop of {part} modelled from its catalog figures (C_t21, backlash, T_2N), "
-                              "not a measurement (E12).")))
-    if spec is not None:
+            out.append(rf"\subsection{{Measured hysteresis loop of {latex_escape(name)}}}")
+            out.append(rf"From \texttt{{{latex_escape(path)}}} (E12).")
+            out += [step_block(s.formula.result.description.capitalize(), s) for s in analysis.steps()]
         for name, (path, analysis) in spec.traces.items():
-            out.append((transmission_error_figure(analysis), latex_escape(f"Transmission error of {name}, from {path}.")))
-        if spec.positions is not None:
-            out.append((positioning_scatter_figure(spec.positions), "Measured positions: accuracy and repeatability."))
-    return out
+            out.append(rf"\subsection{{Measured transmission error of {latex_escape(name)}}}")
+            out.append(rf"From \texttt{{{latex_escape(path)}}}.")
+            out.append(step_block(analysis.step().formula.result.description.capitalize(), analysis.step()))
+        out.append(r"\subsection{Accuracy of the drive train at the output}")
+        out.append(prose(f"Applied torque: {a.rule.why}, so the positioning rule of E13 for that range applies, "
+                         f"{a.rule.text}."))
+        out += [step_block(s.formula.result.description.capitalize(), s) for s in a.steps()]
+        out += [step_block(title, step) for title, step in r.arc_steps]
+        return out
+
+    def results(self, report) -> list[str]:
+        """The chain's stiffness, backlash, transmission accuracy, lost motion, positioning accuracy
+        and repeatability, and each member referred to the output."""
+        r = self.result(report)
+        if r is None:
+            return []
+        a = r.shown
+        rep = "repeatability, an upper bound under torque (E13)" if a.repeatability_is_bound else "repeatability (E13)"
+        lower = f"; a lower bound: unknown {'; '.join(a.unknown)}" if a.unknown else ""
+        not_known = f"; not known: unknown {'; '.join(a.unknown_chain)}" if a.unknown_chain else ""
+        rows = [
+            [r"$C_{\mathrm{total}}$", (r"$\leq$ " if a.unknown_chain else "") + q(a.C_total),
+             prose("total torsional stiffness at the output (E11)" + ("; an upper bound" if a.unknown_chain else ""))],
+            [r"$j_{t}$", q(a.backlash), prose("torsional backlash at the output")],
+            [r"$\varphi_{\mathrm{TA}}$", q(a.transmission_accuracy),
+             prose("angular transmission accuracy, from " + listed(a.transmission_accuracy_from))],
+            [r"$\varphi_{\mathrm{LM}}$", (r"$\geq$ " if a.unknown_chain else "") + q(a.lost_motion),
+             prose("total lost motion at the applied torque (E12)" + ("; a lower bound" if a.unknown_chain else ""))],
+            [r"$\Delta\varphi_{P}$", (r"$\geq$ " if a.unknown else "") + q(a.positioning_accuracy),
+             prose(f"positioning accuracy, {a.positioning_rule} (E13)" + lower)],
+            ["–", q(a.repeatability), prose(rep + not_known)],
+        ]
+        rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(arc), prose(f"as an arc at r = {plain(a.radius)}")]
+                 for key, arc in a.arcs.items()]
+        comp = [[latex_escape(m.name), latex_escape(m.side), q(m.stiffness_at_output), q(m.backlash_at_output),
+                 q(m.transmission_accuracy_at_output), f"{100 * m.share_of_compliance:.1f}",
+                 q(m.twist_at_applied_torque)] for m in a.members]
+        return [
+            r"\subsection{Accuracy: results}",
+            table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows),
+            table(r"@{}l l r r r r r@{}", ["Member", "Side", "$C$", "$j_t$", r"$\varphi_{\mathrm{TA}}$",
+                                           r"$1/C$ [\%]", r"Twist at $T$"], comp, small=True,
+                  caption=prose(f"Members of the chain referred to the output, at T = {plain(a.applied_torque)}")),
+        ]
+
+    def figures(self, report) -> list:
+        """The chain's figures; without measured loops, the chosen gearbox's loop modelled from its
+        catalog figures (also for a case without ``[accuracy]``)."""
+        r, g = self.result(report), result_of(gearbox.NAME, report)
+        if r is None and g is None:
+            return []
+        from ..figures.accuracy_plots import (
+            hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure,
+        )
+        from ..domain.hysteresis import analyze_loop, model_for_part, read_loop
+
+        out = []
+        spec = None if r is None else r.inputs
+        if spec is not None:
+            out.append((stiffness_chain_figure(spec.chain, spec.applied_torque),
+                        "Stiffness chain referred to the output (E11): each member's share of the twist."))
+            for name, (path, analysis) in spec.loops.items():
+                # a relative display path lies in the checkout (an installed calc shows measurements absolute)
+                loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
+                out.append((hysteresis_figure(loop, analysis),
+                            latex_escape(f"Measured hysteresis loop of {name} (E12).")))
+        if (spec is None or not spec.loops) and g is not None:
+            sel, row = g.selection, int(g.selection.order[0])
+            if not (np.isnan(sel.catalog["C_t21"][row].magnitude) or np.isnan(sel.catalog["backlash"][row].magnitude)):
+                part = str(sel.catalog.parts[row])
+                model = model_for_part(part, str(sel.catalog.path))
+                loop = model.loop(800)
+                out.append((hysteresis_figure(loop, analyze_loop(loop, model.nominal_torque)),
+                            prose(f"Hysteresis loop of {part} modelled from its catalog figures "
+                                  "(C_t21, backlash, T_2N), not a measurement (E12).")))
+        if spec is not None:
+            for name, (path, analysis) in spec.traces.items():
+                out.append((transmission_error_figure(analysis),
+                            latex_escape(f"Transmission error of {name}, from {path}.")))
+            if spec.positions is not None:
+                out.append((positioning_scatter_figure(spec.positions),
+                            "Measured positions: accuracy and repeatability."))
+        return out
+
+    def page(self, r, view) -> str:
+        """The chain's accuracy (of ``r``, an :class:`calc.sections.accuracy.AccuracyResult`; None: none)."""
+        if r is None:
+            return ""
+        a = r.shown
+        chain = a.unknown_chain  # a member's twist or backlash unknown: bounds
+        rows = [
+            [typeset("C_total"),
+             "total torsional stiffness at the output" + (" (<b>an upper bound</b>)" if chain else ""),
+             ("≤ " if chain else "") + value(a.C_total)],
+            [typeset("phi_LM"),
+             f"lost motion at the applied torque {value(a.applied_torque)}"
+             + (" (<b>a lower bound</b>)" if chain else ""),
+             ("≥ " if chain else "") + value(a.lost_motion)],
+            ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.positioning_rule)})"
+             + (f"; <b>a lower bound</b>: unknown {typeset('; '.join(a.unknown))}" if a.unknown else ""),
+             ("≥ " if a.unknown else "") + value(a.positioning_accuracy)],
+            ["", "repeatability" + (" (<b>not known</b>: a member's twist or backlash unknown)" if a.unknown_chain
+                                    else " (upper bound)" if a.repeatability_is_bound else ""), value(a.repeatability)],
+        ]
+        return "<h3>Accuracy of the chain</h3>" + html_table(["symbol", "quantity", "value"], rows, numeric={2})
+
+    def compared(self) -> tuple:
+        return (("positioning accuracy", lambda a: _shown(a, "positioning_accuracy", "unknown")),
+                ("lost motion", lambda a: _shown(a, "lost_motion", "unknown_chain")))
 
 
-# The blocks a further section shares with the others, for this section.
-sources = functools.partial(further_sources, NAME)
-readings = functools.partial(further_readings, NAME)
-checks = functools.partial(further_checks, NAME)
-
-
-input_rows = candidates = chosen = order_lines = common.nothing
+RENDERER = AccuracyRenderer()

@@ -1,25 +1,28 @@
-"""What the section blocks of the calc report share.
+"""What the sections' renderers share.
 
-Every block module (one per section module of :mod:`calc.sections`, of the same name) has the
-same shape: ``NAME`` (its key in the results), and functions of the
-:class:`calc.report.Report` that each give that section's part of one block of the report, empty
-where the section has none: ``sources`` and ``readings`` (method), ``input_rows`` (rows of the
-inputs table) and ``inputs`` (tables after it), ``steps`` (calculations), ``results``, ``checks``,
-``candidates``, ``figures`` ((figure, caption) pairs), ``chosen`` ((what, part, detail) rows) and
-``order_lines``. The further sections (coupling, accuracy) write their checks, candidates, chosen
-part and order line the same way (:func:`further_checks` ...). An input row is written from its
-key's declaration (:func:`input_row`).
+Every section has one renderer, a :class:`Renderer` in the module of this package named as the
+section's module of :mod:`calc.sections` (``RENDERER``): what the calc report, the design review's
+page, the summary of several cases and ``calc compare`` show of the section. The report's
+blocks are its methods of the :class:`calc.report.Report` (``sources`` and ``readings``
+(method), ``input_rows`` (rows of the inputs table) and ``inputs`` (tables after it), ``steps``
+(calculations), ``results``, ``checks``, ``candidates``, ``figures`` ((figure, caption) pairs),
+``chosen`` ((what, part, detail) rows) and ``order_lines``), the page's its :meth:`Renderer.page`,
+and the summary's and the comparison's what it declares. Each has a default that shows nothing.
+The sections that read a table of their own (coupling, accuracy) write their method, checks and
+inputs the same way (:class:`TableRenderer`). An input row is written from its key's
+declaration (:func:`input_row`). The JSON and the text summary are the section's result
+record's (:class:`calc.sections.protocol.Result`).
 """
 
 from __future__ import annotations
 
 import tomllib
 from pathlib import Path
+from typing import ClassVar
 
 from ..core.formula import REGISTRY
 from ..domain.gearbox import inertia_ratio
 from ..sections import declared
-from ..core.selection import Selection
 from ..core.units import pretty_unit, sig
 from . import symbols
 from .latex import breakable, itemize, latex_escape, listed, prose, q, table, util, value_unit, verdict_mark
@@ -30,11 +33,6 @@ SOURCE_SECTIONS: dict = _METHOD["sources"]
 #: The errata readings by key (E1, ...), each with its ``text`` and the ``section`` it applies to
 #: (none: every case), in the order of ``errata.md``.
 ERRATA: dict = _METHOD["errata"]
-
-
-def nothing(report) -> list:
-    """A section's part of a block where it has none."""
-    return []
 
 
 def sources(name: str) -> list[str]:
@@ -87,14 +85,138 @@ def input_row(path: str, value, derived: bool = False) -> list[str]:
     return [f"${latex}$" if latex else "–", shown, unit, prose(key.description), where]
 
 
-def ranks(result) -> bool:
-    """Whether a section's result ranks a catalog (:class:`calc.core.selection.Selection`)."""
-    return isinstance(getattr(result, "selection", None), Selection)
-
-
 def result_of(name: str, report):
     """A section's result (:mod:`calc.sections`); None where the case has none or cannot be evaluated."""
     return report.evaluated.sections.get(name) if report.evaluated is not None else None
+
+
+def _block(summary: str, returns: str):
+    """The numpydoc docstring of a block method of :class:`Renderer`: its summary, the report it
+    takes and what it returns (every block takes the same report).
+
+    Parameters
+    ----------
+    summary : str
+        What the section gives to the block.
+    returns : str
+        The type of the block's part.
+
+    Returns
+    -------
+    callable
+        A decorator that sets the method's docstring.
+    """
+    def document(method):
+        method.__doc__ = (f"{summary}\n\nParameters\n----------\nreport : calc.report.Report\n"
+                          "    The report being built (its case, and its results where the case could be\n"
+                          f"    evaluated).\n\nReturns\n-------\n{returns}\n")
+        return method
+
+    return document
+
+
+class Renderer:
+    """The output side of one section, ``NAME`` (its key in the results): each method gives the
+    section's part of one output, empty where it has none.
+
+    ``SUMMARY_COLUMN``: the heading and the width of the summary's column naming the section's
+    chosen part (:mod:`calc.report.summary`), None for no column. ``COMPARED_PART``: ``calc
+    compare`` and the review's variants name its chosen part and its worst governing utilization
+    (of :meth:`calc.sections.protocol.Result.ranked`)."""
+
+    NAME: ClassVar[str]
+    SUMMARY_COLUMN: ClassVar[tuple[str, str] | None] = None
+    COMPARED_PART: ClassVar[bool] = False
+
+    def result(self, report):
+        """The section's result in a report.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        calc.sections.protocol.Result or None
+            None where the case has none or cannot be evaluated.
+        """
+        return result_of(self.NAME, report)
+
+    # -- the calc report's blocks (:class:`calc.report.Report`) ---------------------------------
+
+    @_block("The source's sections the section is computed from (method).", "list of str")
+    def sources(self, report) -> list[str]:
+        return []
+
+    @_block("The keys of the errata readings that apply (method).", "set of str")
+    def readings(self, report) -> set[str]:
+        return set()
+
+    @_block("Rows of the inputs table (:func:`input_row`).", "list of list of str")
+    def input_rows(self, report) -> list[list[str]]:
+        return []
+
+    @_block("Tables of inputs after the inputs table.", "list of str")
+    def inputs(self, report) -> list[str]:
+        return []
+
+    @_block("The calculations, ``symbol = formula = values = result``.", "list of str")
+    def steps(self, report) -> list[str]:
+        return []
+
+    @_block("What the section gives besides its checks.", "list of str")
+    def results(self, report) -> list[str]:
+        return []
+
+    @_block("The checks of the part chosen (or the closest), or of the section's own values.", "list of str")
+    def checks(self, report) -> list[str]:
+        return []
+
+    @_block("The candidates ranked.", "list of str")
+    def candidates(self, report) -> list[str]:
+        return []
+
+    @_block("(figure, caption) pairs; the caption is LaTeX.", "list")
+    def figures(self, report) -> list:
+        return []
+
+    @_block("(what, part, detail) of the part chosen; part None where none passes.", "list of tuple")
+    def chosen(self, report) -> list[tuple]:
+        return []
+
+    @_block("What to order.", "list of str")
+    def order_lines(self, report) -> list[str]:
+        return []
+
+    # -- the design review's page and the comparison of designs ----------------------------------
+
+    def page(self, result, view) -> str:
+        """The section's part of the review's page, HTML (:mod:`calc.report.page`).
+
+        Parameters
+        ----------
+        result : calc.sections.protocol.Result or None
+            The section's result; None where the case has none.
+        view : calc.report.page.View
+            What the page asks: the candidates to list, the ratio search, a cycle typed by hand.
+
+        Returns
+        -------
+        str
+        """
+        return ""
+
+    def compared(self) -> tuple:
+        """Rows of the comparison of designs (``calc compare``) beside the chosen parts.
+
+        Returns
+        -------
+        tuple
+            ``(name, text)`` pairs: the row's name, and a function giving its text of the
+            section's result (None where a design has none), in the unit system shown.
+        """
+        return ()
 
 
 def checks_table(checks: list, caption: str) -> str:
@@ -205,29 +327,61 @@ def raw_section_tables(name: str, raw: dict, derived: dict) -> str:
     return "\n".join(out)
 
 
-# -- the further sections' checks, candidates, chosen part and order line ------------------------
+class TableRenderer(Renderer):
+    """The renderer of a section that reads a table of its own (the coupling, the accuracy): its
+    method and its inputs as written where the case gives the table, and its checks, of the part
+    it chose or against the case's requirements."""
 
+    def described(self, report) -> bool:
+        """Whether the case gives the section's own table.
 
-def described(name: str, report) -> bool:
-    """Whether the case gives the further section ``name`` (its own table)."""
-    return report.case.sections.get(name) is not None
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
 
+        Returns
+        -------
+        bool
+        """
+        return report.case.sections.get(self.NAME) is not None
 
-def further_sources(name: str, report) -> list[str]:
-    """The source's sections of a further section, where the case describes it."""
-    return sources(name) if described(name, report) else []
+    def derived_inputs(self, report, raw: dict) -> dict:
+        """The inputs the table leaves out and the package takes from the rest of the case, as
+        the case would write them (by default none).
 
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+        raw : dict
+            The table as written.
 
-def further_readings(name: str, report) -> set[str]:
-    """The errata readings of a further section, where the case describes it."""
-    return readings(name) if described(name, report) else set()
+        Returns
+        -------
+        dict
+            Key -> text.
+        """
+        return {}
 
+    def sources(self, report) -> list[str]:
+        return sources(self.NAME) if self.described(report) else []
 
-def further_checks(name: str, report) -> list[str]:
-    """The checks of the best-ranked candidate, or the checks against the case's requirements."""
-    r = result_of(name, report)
-    if ranks(r):
-        best = r.selection.best
-        return [checks_table(best.checks, f"Checks of {name} {best.part}")] if best.checks else []
-    g = None if r is None else r.governing()
-    return [] if g is None else [requirement_table(g.checks, f"{name.capitalize()} against the requirements of the case")]
+    def readings(self, report) -> set[str]:
+        return readings(self.NAME) if self.described(report) else set()
+
+    def inputs(self, report) -> list[str]:
+        if not self.described(report):
+            return []
+        raw = report.case.sections[self.NAME]
+        return [raw_section_tables(self.NAME, raw, self.derived_inputs(report, raw))]
+
+    def checks(self, report) -> list[str]:
+        """The checks of the best-ranked candidate, or the checks against the case's requirements."""
+        r = self.result(report)
+        if r is not None and r.ranked() is not None:
+            best = r.ranked().best
+            return [checks_table(best.checks, f"Checks of {self.NAME} {best.part}")] if best.checks else []
+        g = None if r is None else r.governing()
+        caption = f"{self.NAME.capitalize()} against the requirements of the case"
+        return [] if g is None else [requirement_table(g.checks, caption)]

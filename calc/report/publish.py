@@ -203,17 +203,17 @@ _MAKING = None
 
 
 def _block_figures(k: int) -> list[tuple[str, str]]:
-    """The figures of block ``k`` (:data:`calc.report.BLOCKS`) of :data:`_MAKING`, as (PDF, caption)."""
-    from . import BLOCKS
+    """The figures of the ``k``-th renderer (:data:`calc.report.RENDERERS`) of :data:`_MAKING`, as (PDF, caption)."""
+    from . import RENDERERS
 
-    return [(figure_pdf(figure), caption) for figure, caption in BLOCKS[k].figures(_MAKING)]
+    return [(figure_pdf(figure), caption) for figure, caption in RENDERERS[k].figures(_MAKING)]
 
 
 @contextlib.contextmanager
 def figures_made(report, jobs: int = 1):
     """A function giving the report's figures (:meth:`calc.report.Report.figures`) as (vector
     PDF, caption), in their order. With ``jobs`` > 1 they are made from the moment the context
-    opens, ``jobs`` blocks at a time in processes forked from this one, while this one goes on
+    opens, ``jobs`` renderers at a time in processes forked from this one, while this one goes on
     (making and writing the figures is most of a report's time)."""
     if jobs <= 1 or report.case is None:
         yield lambda: [(figure_pdf(figure), caption) for figure, caption in report.figures()]
@@ -223,15 +223,15 @@ def figures_made(report, jobs: int = 1):
 
     import matplotlib.figure  # noqa: F401 (imported once here, not in every worker)
 
-    from . import BLOCKS
+    from . import RENDERERS
 
     global _MAKING
     _MAKING = report
     try:
         with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork")) as pool:
-            # The last blocks (the accuracy's loops and traces) have the most figures: they start first.
-            futures = {k: pool.submit(_block_figures, k) for k in reversed(range(len(BLOCKS)))}
-            yield lambda: [x for k in range(len(BLOCKS)) for x in futures[k].result()]
+            # The last renderers (the accuracy's loops and traces) have the most figures: they start first.
+            futures = {k: pool.submit(_block_figures, k) for k in reversed(range(len(RENDERERS)))}
+            yield lambda: [x for k in range(len(RENDERERS)) for x in futures[k].result()]
     finally:
         _MAKING = None
 

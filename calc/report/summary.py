@@ -1,6 +1,7 @@
 """The summary of several design cases (a machine's axes): one row per case with its verdict, the
-chosen gearbox and coupling, the worst utilization of every governing check and where it is, and
-the file of the case's own calc report; written as CSV and as a LaTeX page for the PDF.
+part chosen by each section whose renderer asks for a column (``SUMMARY_COLUMN``: the gearbox and
+the coupling), the worst utilization of every governing check and where it is, and the file of
+the case's own calc report; written as CSV and as a LaTeX page for the PDF.
 
 A row is plain data (:func:`summary_row`), so the design review can list the same rows; the PDF
 (:func:`summary_latex`) has a title block like a single report's, the table (it breaks across
@@ -16,13 +17,16 @@ from pathlib import Path
 
 from ..data.catalog import display_path
 from ..sections import Verdict
+from . import RENDERERS
 from .latex import Latex, breakable, latex_escape, prose, render, table, util
 from .provenance import PACKAGE
 
-#: The sections whose chosen part a row names, in the order of the columns.
-CHOSEN = ("gearbox", "coupling")
+#: The renderers of the sections whose chosen part a row names (:attr:`calc.report.common.Renderer.SUMMARY_COLUMN`),
+#: in the order of the columns.
+PART_COLUMNS = tuple(r for r in RENDERERS if r.SUMMARY_COLUMN is not None)
 #: The columns of the CSV, units in brackets (a utilization is a fraction: 1 is the rating).
-CSV_COLUMNS = ("case file", "title", "verdict", *CHOSEN, "worst utilization [1]", "worst check", "worst check in", "report", "reason")
+CSV_COLUMNS = ("case file", "title", "verdict", *(r.NAME for r in PART_COLUMNS), "worst utilization [1]", "worst check",
+               "worst check in", "report", "reason")
 #: What a row says where no part of a section passes.
 NONE_PASSES = "none passes"
 #: File names a relative link in the PDF carries as written (others are shown without a link).
@@ -50,12 +54,21 @@ def worst_check(results) -> dict | None:
 def summary_row(report, pdf: Path | None) -> dict:
     """One case as plain data: ``case`` (the file as results show it), ``title``, ``verdict``
     (PASS, FAIL or NOT DECIDED) and ``passes`` (True, False or None), ``chosen`` (the part of each
-    section of :data:`CHOSEN` the case evaluates; None where none passes), ``worst`` (of
+    section of :data:`PART_COLUMNS` the case evaluates; None where none passes), ``worst`` (of
     :func:`worst_check`), ``report`` and ``report_path`` (the calc report's file name and path;
     None when it was not built), ``error`` (why the case cannot be evaluated, or None) and
     ``reason`` (the first reason of a verdict that is not PASS).
 
-    ``report`` is a :class:`calc.report.Report`.
+    Parameters
+    ----------
+    report : calc.report.Report
+        The case's report.
+    pdf : pathlib.Path or None
+        Its PDF file; None where it was not built.
+
+    Returns
+    -------
+    dict
     """
     sections = report.evaluated.sections if report.evaluated is not None else {}
     verdict = report.verdict
@@ -64,7 +77,8 @@ def summary_row(report, pdf: Path | None) -> dict:
         "title": report.title,
         "verdict": verdict.word,
         "passes": verdict.passes,
-        "chosen": {name: sections[name].selection.selected for name in CHOSEN if name in sections},
+        "chosen": {r.NAME: ranked.selected for r in PART_COLUMNS
+                   if r.NAME in sections and (ranked := sections[r.NAME].ranked()) is not None},
         "worst": None if report.evaluated is None else worst_check(report.evaluated),
         "report": None if pdf is None else pdf.name,
         "report_path": None if pdf is None else str(pdf),
@@ -99,7 +113,8 @@ def write_csv(rows: list[dict], path: Path) -> None:
         out.writerow(CSV_COLUMNS)
         for r in rows:
             w = r["worst"] or {}
-            out.writerow([r["case"], r["title"], r["verdict"], *(_chosen_text(r, n) for n in CHOSEN), w.get("utilization", ""),
+            out.writerow([r["case"], r["title"], r["verdict"], *(_chosen_text(r, p.NAME) for p in PART_COLUMNS),
+                          w.get("utilization", ""),
                           w.get("check", ""), " ".join(x for x in (w.get("section"), w.get("part")) if x),
                           r["report"] or "", r["reason"] or ""])
 
@@ -157,11 +172,15 @@ def summary_latex(rows: list[dict], files_read: list, built: str, commit: str, f
     title block (each case file and catalog read, with its SHA-256; build date, package, commit).
     ``files_read`` are the files each row's report rests on (:attr:`calc.report.Report.files`);
     ``folder`` is where the summary is written (paths outside the project are shown from there)."""
-    body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r, folder), _verdict_cell(r), *(_part_cell(r, n) for n in CHOSEN),
-             _worst_cell(r), _report_link(r["report"])] for k, r in enumerate(rows)]  # rows of several lines set apart
+    # Rows of several lines set apart.
+    body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r, folder), _verdict_cell(r),
+             *(_part_cell(r, p.NAME) for p in PART_COLUMNS), _worst_cell(r), _report_link(r["report"])]
+            for k, r in enumerate(rows)]
+    parts = "".join(f"p{{{p.SUMMARY_COLUMN[1]}}} " for p in PART_COLUMNS)
     cases = table(
-        r"@{} p{0.29\linewidth} p{0.1\linewidth} p{0.11\linewidth} p{0.08\linewidth} p{0.16\linewidth} p{0.12\linewidth}@{}",
-        ["Case", "Verdict", "Gearbox", "Coupling", "Worst utilization", "Report"], body, small=True,
+        rf"@{{}} p{{0.29\linewidth}} p{{0.1\linewidth}} {parts}p{{0.16\linewidth}} p{{0.12\linewidth}}@{{}}",
+        ["Case", "Verdict", *(p.SUMMARY_COLUMN[0] for p in PART_COLUMNS), "Worst utilization", "Report"], body,
+        small=True,
         note="Worst utilization: the highest required / rated of every governing check of the chosen parts (of the "
              "closest candidate where none passes) and of the requirements of the case; above 1.00 the check fails. "
              "Each report's file name links to it, in the folder of this summary.",

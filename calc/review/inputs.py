@@ -24,7 +24,7 @@ import numpy as np
 from ..core.errors import CalcError
 from ..core.units import NUMBER, Q_, parse_quantity, pretty_unit
 from ..report.symbols import symbol_text
-from ..sections import FURTHER, declared, drive
+from ..sections import OWN_TABLES, declared, drive
 from ..sections import motion as motion_section
 from ..sections.case import Case, Key
 from ..sections.gearbox import catalogs as gearbox_catalogs
@@ -515,8 +515,8 @@ def with_inputs(case: Case, values: dict) -> Case:
 def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_peak_torque=None, motor_inertia=None,
                  load_inertia=None, temperature=None, applied_torque=None) -> Case:
     """A copy of ``case`` with the given inputs replaced (quantities; ``None`` keeps the case's):
-    :func:`with_inputs` by name. An input of a further section (coupling, accuracy) the case's
-    file does not have is left out.
+    :func:`with_inputs` by name. An input of a section with a table of its own (coupling, accuracy:
+    :data:`calc.sections.OWN_TABLES`) the case's file does not have is left out.
 
     Parameters
     ----------
@@ -547,10 +547,10 @@ def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_pea
     """
     values = {"gearbox.ratio": ratio, "motor.peak_torque": motor_peak_torque, "motor.inertia": motor_inertia,
               "load.inertia": load_inertia, "coupling.temperature": temperature, "accuracy.applied_torque": applied_torque}
-    # A further section's input is ignored where the case's file has no such section.
+    # The input of a section with a table of its own is ignored where the case's file has no such table.
     tables = file_tables(case)
     values = {k: v for k, v in values.items() if v is not None
-              and (k.split(".")[0] in tables or k.split(".")[0] not in FURTHER)}
+              and (k.split(".")[0] in tables or k.split(".")[0] not in OWN_TABLES)}
     for what, arrays in (("duration", durations), ("torque", torques)):
         if arrays is not None:
             values.update({f"profile[{k}].{what}": q for k, q in enumerate(arrays, start=1)})

@@ -15,10 +15,12 @@ import re
 from html import escape
 
 from ..core.units import pretty_unit
+from ..report.page import FAIL_COLOR
+from ..report.symbols import html as typeset
 from .inputs import InputSpec, option_text
 from .state import ReviewState, Screen
 from .variants import Variants
-from .view import FAIL_COLOR, results_html, typeset
+from .view import results_html
 
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
 

@@ -30,6 +30,7 @@ from urllib.parse import quote
 
 from ..core.errors import CalcError
 from ..domain.mechanism import TYPES as MECHANISM_TYPES
+from ..report.symbols import html as typeset
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import InputSpec, option_text
@@ -38,7 +39,6 @@ from .page import (SHOWN_CANDIDATES, failed_html, label_html, link_html, message
                    with_variants)
 from .state import ReviewState, without_folder
 from .variants import Variants
-from .view import typeset
 
 LABEL_WIDTH = "15.5em"
 

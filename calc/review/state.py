@@ -21,7 +21,10 @@ from ..core.errors import CalcError
 from ..core.units import Q_
 from ..domain.mechanism import converted, converted_distance
 from ..sections import motion as motion_section
+from ..sections.accuracy import NAME as ACCURACY
 from ..sections.case import Case, read_case
+from ..sections.coupling import NAME as COUPLING
+from ..sections.duty import NAME as PROFILE
 from ..sections.ratios import search as search_ratios
 from .edit import changed_text, edited_case, moves_edits, value_text
 from .inputs import (MECHANISM, MOVE_TIMES, SELECTION, TYPED, InputSpec, input_edits, is_inch_pound, option_text,
@@ -92,23 +95,25 @@ class Screen:
         return {key: self.texts[key] for key in self.changes}
 
     def _section(self, name: str):
+        """The result of the section ``name`` (:class:`calc.sections.protocol.Result`), None
+        where the case has none or cannot be evaluated."""
         evaluated = None if self.report is None else self.report.evaluated
         return None if evaluated is None else evaluated.sections.get(name)
 
     def duty(self):
         """The duty values of the load cycle (the load-cycle figure's), None where the case cannot be evaluated."""
-        profile = self._section("profile")
+        profile = self._section(PROFILE)
         return None if profile is None else profile.shown
 
     def chain(self):
         """The accuracy chain's values (the stiffness-chain figure's), None where the case has none."""
-        accuracy = self._section("accuracy")
+        accuracy = self._section(ACCURACY)
         return None if accuracy is None else accuracy.shown
 
     def idle(self) -> dict:
         """The inputs that have no effect on the design as it stands, each with why (a temperature
         on a coupling type without a temperature factor)."""
-        coupling = self._section("coupling")
+        coupling = self._section(COUPLING)
         if coupling is not None and coupling.inputs.type == "bellows":
             return {"coupling.temperature":
                     "no effect on this design: a metal bellows coupling has no temperature factor (E9)"}

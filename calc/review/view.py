@@ -1,15 +1,15 @@
 """What the review shows of an evaluated case, as one HTML text: the verdict with the chosen parts,
-the governing checks, the duty values, the candidate tables and the accuracy of the chain.
+the governing checks, then each section's part as its renderer writes it
+(:meth:`calc.report.common.Renderer.page`: the duty values, the candidate tables, the accuracy
+of the chain); and designs side by side, each section's rows as its renderer declares them.
 
 Everything is written from the results as the JSON contract has them (every candidate), so the
-panel shows what ``python -m calc evaluate --json`` and the report say. Symbols are typeset as in
-the figures (``T_2B`` as T₂B with a subscript, ``<=`` as ≤), units as a reader writes them
-(``N·m``), blanks where a value is not given; a table has no index column.
+panel shows what ``python -m calc evaluate --json`` and the report say. Values, tables and
+symbols are written as :mod:`calc.report.page` writes them.
 """
 
 from __future__ import annotations
 
-import contextvars
 import dataclasses
 from html import escape
 
@@ -17,13 +17,9 @@ import numpy as np
 
 from ..sections.case import Case
 from ..data.catalog import display_path
-from ..report import Report, report_of
+from ..report import RENDERERS, Report, report_of
+from ..report.page import FAIL_COLOR, PASS_COLOR, SYSTEM, View, table, utilization, value, verdict_cell
 from ..report.symbols import html as typeset
-from ..core.checks import within_rating
-from ..core.units import Q_, Value, sig
-from .figures import ratio_search_svg
-
-PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 STYLE = f"""<style>
 .dr {{ font-size: 13px; line-height: 1.35; color: #1a1a1a; }}
 .dr h3 {{ font-size: 14px; margin: 12px 0 4px; }}
@@ -65,222 +61,19 @@ def evaluated(case: Case) -> tuple[Report, list[str]]:
     return r, []
 
 
-#: The unit system the results are shown in: "SI" as the results write them, or "inch-pound".
-SYSTEM = contextvars.ContextVar("system", default="SI")
-#: A result's SI unit and its inch-pound counterpart (the units a US maker's sheet writes).
-INCH_POUND = {"N*m": "lbf*in", "N": "lbf", "mm": "in", "m": "in", "kg*cm**2": "lb*in**2", "kg*m**2": "lb*in**2", "kg": "lb",
-              "N*m/arcmin": "lbf*in/arcmin", "N*m/rad": "lbf*in/rad", "m/s": "in/s", "mm/s": "in/s", "m/s**2": "in/s**2"}
-
-
-def in_system(v: Value | None) -> Value | None:
-    """A result value in the unit system shown (:data:`SYSTEM`).
-
-    >>> token = SYSTEM.set("inch-pound")
-    >>> shown = in_system(Value(6.779, "N*m"))
-    >>> shown.unit, round(shown.value, 2)
-    ('lbf*in', 60.0)
-    >>> SYSTEM.reset(token)
-    """
-    if v is None or v.value is None or SYSTEM.get() == "SI" or v.unit not in INCH_POUND:
-        return v
-    unit = INCH_POUND[v.unit]
-    return Value(float(Q_(v.value, v.unit).m_as(unit)), unit)
-
-
-def _q(v: Value | None) -> str:
-    """A result value as text, in the unit system shown; blank where not given."""
-    return "" if v is None or v.value is None else escape(str(in_system(v)).replace(" 1/hour", " /h"))
-
-
-def _verdict_cell(passes, not_made: str | None = None) -> str:
-    """PASS or FAIL; a check that could not be made (``passes`` None) says why, in grey."""
-    if passes is None:
-        return f'<span class="open">not checked{": " + typeset(not_made) if not_made else ""}</span>'
-    return '<span class="pass">PASS</span>' if passes else '<span class="fail">FAIL</span>'
-
-
-def _utilization(u) -> str:
-    """A utilization in per cent with a bar (red over 100 %); blank where there is none."""
-    if u is None:
-        return ""
-    width = max(0.0, min(u, 1.0)) * 100
-    color = PASS_COLOR if within_rating(u) else FAIL_COLOR
-    return f'{100 * u:.0f} %<span class="bar"><span style="width:{width:.0f}%;background:{color}"></span></span>'
-
-
-#: Under a table whose rows force their part (:func:`_table`'s ``force``).
-FORCING = "on the served page, a click on a row forces that part"
-
-
-def _table(header: list[str], rows: list[list[str]], numeric: set[int] = frozenset(), marked: int | None = None,
-           force: tuple[str, list[str]] | None = None) -> str:
-    """An HTML table; with ``force`` (a control's key and each row's part) a click on a row forces
-    that part (the page's script sets the control, :mod:`calc.review.client`)."""
-    head = "".join(f"<th>{h}</th>" for h in header)
-
-    def forcing(k: int) -> str:
-        if force is None:
-            return ""
-        key, parts = force
-        return f' data-force="{escape(key)}" data-part="{escape(parts[k])}" title="click to force {escape(parts[k])}"'
-
-    body = "".join(
-        f'<tr{" class=chosen" if k == marked else ""}{forcing(k)}>'
-        + "".join(f'<td class="{"n" if j in numeric else ("why" if h in ("reasons", "verdict") else "")}">{c}</td>' for j, (h, c) in enumerate(zip(header, row)))
-        + "</tr>"
-        for k, row in enumerate(rows)
-    )
-    return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
-
-
 def _governing(results) -> str:
     """The governing checks of each chosen part (the closest candidate where none passes), the
     motor's and the accuracy requirements, one row each."""
     rows = []
     for g in results.governing():
         who = g.section + (f" {escape(g.part)}" if g.part else "") + ("" if g.chosen else " (closest)")
-        rows += [[who, typeset(k.criterion or k.name), ("≥ " if k.at_least else "") + _q(k.required_value), _q(k.rated_value),
-                  _utilization(k.utilization), _verdict_cell(k.passes, k.not_made)] for k in g.checks]
+        rows += [[who, typeset(k.criterion or k.name), ("≥ " if k.at_least else "") + value(k.required_value),
+                  value(k.rated_value), utilization(k.utilization), verdict_cell(k.passes, k.not_made)]
+                 for k in g.checks]
     if not rows:
         return ""
-    return "<h3>Governing checks</h3>" + _table(["part", "check", "required", "rated", "utilization", "verdict"], rows, numeric={2, 3, 4})
-
-
-def _duty(d) -> str:
-    """The duty values (:class:`calc.sections.duty.DutyValues`) in one line: mode, ED, the S5 and S1 values."""
-    parts = [f"<b>{escape(d.mode)}</b>", f"ED {_q(d.ED)}", f"cycle {_q(d.t_cycle)}",
-             f"{typeset('Z_h')} {_q(d.Z_h)}", f"{typeset('f_s')} {sig(d.f_s)}", f"{typeset('n_2max')} {_q(d.n_2max)}",
-             f"{typeset('T_2max')} {_q(d.T_2max)}" if d.T_2max is not None else "",
-             f"{typeset('n_2m')} {_q(d.n_2m)}", f"{typeset('T_2m')} {_q(d.T_2m)}"]
-    return '<div class="values">Duty: ' + " · ".join(p for p in parts if p) + "</div>"
-
-
-def _motion(m, typed_by_hand: bool) -> str:
-    """Where the load cycle comes from: the motion's peak values (a
-    :class:`calc.sections.motion.MotionResult`, None without one), or that its segments were
-    changed by hand (then the moves and mechanism no longer derive it)."""
-    if typed_by_hand:
-        return '<div class="values">Load cycle: the segments as changed here (the case derives them from its motion; reset to derive them again)</div>'
-    if m is None:
-        return ""
-    parts = [f"{escape(m.mechanism or '')} from its {escape(m.source)}s".strip(), f"peak speed {_q(m.peak_speed)}",
-             f"peak acceleration {_q(m.peak_acceleration)}", f"{typeset('J_L')} {_q(m.J_L)}" if m.J_L is not None else ""]
-    return '<div class="values">Motion: ' + " · ".join(p for p in parts if p) + "</div>"
-
-
-def _shown(sel, shown: int | None) -> tuple[list, str]:
-    """The first ``shown`` candidates of a selection, best first (all for None; only those are
-    made into records), and a note of how many are left out."""
-    listed, total = sel.candidates(shown), len(sel.order)
-    if len(listed) == total:
-        return listed, ""
-    return listed, f"<div class=note>{len(listed)} of {total} candidates shown; tick <i>all candidates</i> for the rest.</div>"
-
-
-def _gearbox_table(g, shown: int | None) -> str:
-    """The gearbox candidates (a :class:`calc.sections.gearbox.GearboxResult`), best first."""
-    sel = g.selection
-    listed, more = _shown(sel, shown)
-    rows = [
-        [str(k), escape(c.part), _verdict_cell(c.passes), _utilization(c.worst), _q(c.T_2max),
-         "" if c.inertia_ratio is None else sig(c.inertia_ratio, 3), "illustrative" if c.illustrative else "",
-         "<br>".join(typeset(x) for x in c.reasons)]
-        for k, c in enumerate(listed, start=1)
-    ]
-    header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data", "reasons"]
-    return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}; {FORCING}</div>"
-            + _table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None, force=("gearbox.part", [c.part for c in listed]))
-            + more)
-
-
-def _coupling_table(s, shown: int | None) -> str:
-    """The coupling candidates (a :class:`calc.sections.coupling.CouplingResult`), best first, and
-    the drive train's modes."""
-    def rated(c, name):
-        return next((_q(k.rated_value) for k in c.checks if k.name == name), "")
-
-    sel = s.selection
-    listed, more = _shown(sel, shown)
-    rows = [
-        [str(k), escape(c.part), escape(c.type), _verdict_cell(c.passes), _q(c.required_torque), rated(c, "T_KN"),
-         _q(c.f_e), _q(c.f_1), _utilization(c.worst), "<br>".join(typeset(x) for x in c.reasons)]
-        for k, c in enumerate(listed, start=1)
-    ]
-    header = ["rank", "part", "type", "verdict", typeset("M_N·K_ϑ"), typeset("T_KN"), typeset("f_e"), typeset("f_1"), "worst utilization", "reasons"]
-    notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in s.notes)
-    return (f"<h3>Coupling candidates</h3><div class=note>{typeset(s.ranking)}</div>"
-            + _table(header, rows, numeric={0, 4, 5, 6, 7, 8}, marked=0 if sel.selected else None) + more + notes
-            + _torsion_table(s.torsion))
-
-
-def _motor_table(m, shown: int | None) -> str:
-    """The catalog motors (a :class:`calc.sections.motor.MotorResult` with its selection), best first."""
-    sel = m.selection
-    listed, more = _shown(sel, shown)
-    rows = [
-        [str(k), escape(c.part), _verdict_cell(c.passes), _utilization(c.worst), _q(c.rated_torque), _q(c.rotor_inertia),
-         "" if c.inertia_ratio is None else sig(c.inertia_ratio, 3), escape(c.form), "<br>".join(typeset(x) for x in c.reasons)]
-        for k, c in enumerate(listed, start=1)
-    ]
-    header = ["rank", "part", "verdict", "worst utilization", typeset("M_N"), typeset("J_motor"), "inertia ratio λ", "peak characteristic", "reasons"]
-    return (f"<h3>Motor candidates, through {escape(m.through)}</h3><div class=note>{typeset(m.ranking)}; {FORCING}</div>"
-            + _table(header, rows, numeric={0, 3, 4, 5, 6}, marked=0 if sel.selected else None, force=("motor.part", [c.part for c in listed]))
-            + more)
-
-
-def _torsion_table(t) -> str:
-    """The drive train as masses and springs with its natural frequencies (:class:`calc.sections.coupling.Torsion`)."""
-    if t is None:
-        return ""
-    rows = [[escape(members), _q(J), escape(spring[0]) if spring else "", _q(spring[1]) if spring else ""]
-            for (members, J), spring in zip(t.masses, [*t.springs, None])]
-    frequencies = ", ".join(_q(f) for f in t.natural_frequencies)
-    check = "".join(f"<div class=note>{typeset(c.criterion)}: {_q(c.rated_value)}, utilization {_utilization(c.utilization)}"
-                    f"{'' if c.governs else ' (for information)'}</div>" for c in t.checks)
-    missing = "" if t.complete else f"<div class=note>incomplete: the case does not give {escape('; '.join(t.missing))}</div>"
-    return (f"<h3>Drive train with {escape(t.part)}, at {escape(t.shaft)}</h3>"
-            + _table(["masses", "inertia", "spring to the next", "stiffness"], rows, numeric={1, 3})
-            + f"<div class=note>natural frequencies {frequencies} (rigid-body mode left out)</div>" + check + missing)
-
-
-def _accuracy_table(a) -> str:
-    """The chain's accuracy (:class:`calc.sections.accuracy.AccuracyValues`)."""
-    rows = [
-        [typeset("C_total"), "total torsional stiffness at the output" + (" (<b>an upper bound</b>)" if a.unknown_chain else ""),
-         ("≤ " if a.unknown_chain else "") + _q(a.C_total)],
-        [typeset("phi_LM"), f"lost motion at the applied torque {_q(a.applied_torque)}" + (" (<b>a lower bound</b>)" if a.unknown_chain else ""),
-         ("≥ " if a.unknown_chain else "") + _q(a.lost_motion)],
-        ["Δ" + typeset("phi_P"), f"positioning accuracy ({typeset(a.positioning_rule)})"
-         + (f"; <b>a lower bound</b>: unknown {typeset('; '.join(a.unknown))}" if a.unknown else ""),
-         ("≥ " if a.unknown else "") + _q(a.positioning_accuracy)],
-        ["", "repeatability" + (" (<b>not known</b>: a member's twist or backlash unknown)" if a.unknown_chain
-                                else " (upper bound)" if a.repeatability_is_bound else ""), _q(a.repeatability)],
-    ]
-    return "<h3>Accuracy of the chain</h3>" + _table(["symbol", "quantity", "value"], rows, numeric={2})
-
-
-def _ratio_block(found) -> str:
-    """The ratio search (its JSON, :func:`calc.sections.ratios.search`), or why it cannot be made
-    (a sentence): each ratio's best gearbox, whether it is feasible, λ and the motor's torques, the
-    pick and why, and the bars of :func:`calc.review.figures.ratio_search_svg`."""
-    if isinstance(found, str):
-        return f"<h3>Ratio search</h3><div class=note>{typeset(found)}</div>"
-
-    def value(v):
-        return "" if v is None else _q(Value(v["value"], v["unit"]))
-
-    pick = None if found["pick"] is None else found["pick"]["ratio"]
-    rows = [
-        [sig(r["ratio"]), escape(r["part"]), _verdict_cell(r["passes"]), _utilization(r["utilization"]),
-         "" if r["inertia_ratio"] is None else sig(r["inertia_ratio"], 3), value(r["peak_torque_required"]),
-         value(r["rms_torque_required"]), value(r["max_speed_required"]), "pick" if r["ratio"] == pick else ""]
-        for r in found["ratios"]
-    ]
-    header = ["ratio i", "best gearbox", "feasible", "utilization", "inertia ratio λ", typeset("T_1peak"), typeset("T_1rms"), typeset("n_1max"), ""]
-    marked = next((k for k, r in enumerate(found["ratios"]) if r["ratio"] == pick), None)
-    notes = "".join(f"<div class=note>{typeset(n)}</div>" for n in found["notes"])
-    return (f"<h3>Ratio search</h3><div class=note>{typeset(found['rule'])}</div><div><b>{typeset(found['reason'])}</b></div>"
-            + _table(header, rows, numeric={0, 3, 4, 5, 6, 7}, marked=marked) + notes + ratio_search_svg(found))
+    header = ["part", "check", "required", "rated", "utilization", "verdict"]
+    return "<h3>Governing checks</h3>" + table(header, rows, numeric={2, 3, 4})
 
 
 def _not_made_html(results) -> str:
@@ -299,7 +92,7 @@ def results_html(report: Report, left_out: list[str], report_link: str | None = 
     ``typed_by_hand``: the case's derived load cycle was changed segment by segment; ``shown``:
     the candidates listed in each table, best first (all for None); ``refused``: the values typed
     and refused (the results are those of the values before them), each with why; ``system``:
-    the unit system of the values shown, "SI" or "inch-pound" (:data:`INCH_POUND`); ``ratios``: the
+    the unit system of the values shown, "SI" or "inch-pound" (:data:`calc.report.page.INCH_POUND`); ``ratios``: the
     ratio search's JSON, or why it cannot be made, shown after the gearbox (None: not asked for)."""
     token = SYSTEM.set(system)
     try:
@@ -324,70 +117,67 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused, 
         out.append('<ul class="reasons">' + "".join(f"<li>{typeset(x)}</li>" for x in reasons) + "</ul>")
     evaluated = report.evaluated
     if evaluated is not None:
-        out += [_governing(evaluated), _motion(evaluated.sections.get("motion"), typed_by_hand), _duty(evaluated["profile"].shown)]
-        if "gearbox" in evaluated.sections:
-            out.append(_gearbox_table(evaluated["gearbox"], shown))
-        if ratios is not None:
-            out.append(_ratio_block(ratios))
-        if "coupling" in evaluated.sections:
-            out.append(_coupling_table(evaluated["coupling"], shown))
-        if "motor" in evaluated.sections and evaluated["motor"].selection is not None:
-            out.append(_motor_table(evaluated["motor"], shown))
-        if "accuracy" in evaluated.sections:
-            out.append(_accuracy_table(evaluated["accuracy"].shown))
+        view = View(shown, ratios, typed_by_hand)
+        out += [_governing(evaluated), *(r.page(evaluated.sections.get(r.NAME), view) for r in RENDERERS)]
     out.append("</div>")
     return "".join(out)
 
 
-def _section(r: Report, name: str):
-    return r.evaluated.sections.get(name) if r.evaluated is not None else None
+def _ranked(r: Report, name: str):
+    """The catalog a design's section ``name`` ranks (:meth:`calc.sections.protocol.Result.ranked`);
+    None where the design has no such section, or the section ranks none (a motor the case types)."""
+    s = r.evaluated.sections.get(name) if r.evaluated is not None else None
+    return None if s is None else s.ranked()
 
 
-def _worst(r: Report, part: str) -> float | None:
-    """The worst governing utilization of a design's ``part`` in percent; None where it has none
-    (a motor the case types has no selection: its checks stand alone)."""
-    s = _section(r, part)
-    u = None if s is None or s.selection is None else s.selection.best.worst
+def _worst(r: Report, name: str) -> float | None:
+    """The worst governing utilization of the part a design's section ``name`` chose, in percent;
+    None where it has none."""
+    sel = _ranked(r, name)
+    u = None if sel is None else sel.best.worst
     return None if u is None else 100 * u
 
 
+#: The renderers of the sections whose chosen part and worst utilization the comparison of
+#: designs names (:attr:`calc.report.common.Renderer.COMPARED_PART`), in their order.
+COMPARED = tuple(r for r in RENDERERS if r.COMPARED_PART)
+
+
 def comparison_rows(variants: list[tuple[str, Report]], system: str = "SI") -> list[tuple[str, list[str]]]:
-    """The side-by-side comparison of designs, ``(name, report)``: one row per quantity (verdict,
-    chosen parts, the worst governing utilization of each, the checks not made, the duty and
-    accuracy values), one column per design, as plain text in the unit system ``system``."""
+    """The side-by-side comparison of designs: one row per quantity (verdict, the part each
+    section of :data:`COMPARED` chose and its worst governing utilization, the checks not made,
+    then the rows each section's renderer declares: the duty and accuracy values), one column per
+    design, as plain text.
+
+    Parameters
+    ----------
+    variants : list of tuple
+        ``(name, calc.report.Report)`` of each design.
+    system : str
+        The unit system of the values, "SI" or "inch-pound" (:data:`calc.report.page.INCH_POUND`).
+
+    Returns
+    -------
+    list of tuple
+        ``(row name, [text of each design])``.
+    """
     def chosen(r, name):
-        s = _section(r, name)
-        return "" if s is None or s.selection is None else s.selection.selected or "none passes"
+        sel = _ranked(r, name)
+        return "" if sel is None else sel.selected or "none passes"
 
     def worst(r, name):
         u = _worst(r, name)
         return "" if u is None else f"{u:.0f} %"
 
-    def shown(r, name, field):
-        s = _section(r, name)
-        v = None if s is None else getattr(s.shown, field)
-        return "" if v is None else str(in_system(v))
+    def of(name, text):
+        return lambda r: text(r.evaluated.sections.get(name) if r.evaluated is not None else None)
 
-    def bound(r, field="unknown"):
-        s = _section(r, "accuracy")
-        return "≥ " if s is not None and getattr(s.shown, field) else ""
-
-    rows = [
-        ("verdict", lambda r: r.verdict.word),
-        ("gearbox", lambda r: chosen(r, "gearbox")),
-        ("gearbox worst utilization", lambda r: worst(r, "gearbox")),
-        ("coupling", lambda r: chosen(r, "coupling")),
-        ("coupling worst utilization", lambda r: worst(r, "coupling")),
-        ("motor", lambda r: chosen(r, "motor")),
-        ("motor worst utilization", lambda r: worst(r, "motor")),
-        ("checks not made", lambda r: str(len(r.evaluated.not_made()) if r.evaluated is not None else 0)),
-        ("mode", lambda r: "" if _section(r, "profile") is None else _section(r, "profile").shown.mode),
-        ("ED", lambda r: shown(r, "profile", "ED")),
-        ("T_2max", lambda r: shown(r, "profile", "T_2max")),
-        ("T_2m", lambda r: shown(r, "profile", "T_2m")),
-        ("positioning accuracy", lambda r: bound(r) + shown(r, "accuracy", "positioning_accuracy")),
-        ("lost motion", lambda r: bound(r, "unknown_chain") + shown(r, "accuracy", "lost_motion")),
-    ]
+    rows = [("verdict", lambda r: r.verdict.word)]
+    for p in COMPARED:
+        rows += [(p.NAME, lambda r, n=p.NAME: chosen(r, n)),
+                 (f"{p.NAME} worst utilization", lambda r, n=p.NAME: worst(r, n))]
+    rows.append(("checks not made", lambda r: str(len(r.evaluated.not_made()) if r.evaluated is not None else 0)))
+    rows += [(name, of(p.NAME, text)) for p in RENDERERS for name, text in p.compared()]
     token = SYSTEM.set(system)
     try:
         return [(name, [f(r) for _, r in variants]) for name, f in rows]
@@ -412,14 +202,22 @@ def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> s
             f"<tbody>{body}</tbody></table><div class=note>A value that differs from the first variant's is marked.</div>{figure}</div>")
 
 
-#: The parts whose worst governing utilization the comparison figures draw.
-COMPARED_PARTS = ("gearbox", "coupling", "motor")
-
-
 def worst_utilizations(designs: list[tuple[str, Report]]) -> dict:
-    """Each part's worst governing utilization per design, ``(name, report)``, in percent (the
-    comparison's rows print them to the percent); None where a design has none."""
-    return {part: [_worst(r, part) for _, r in designs] for part in COMPARED_PARTS}
+    """The worst governing utilization of the part each section of :data:`COMPARED` chose, per
+    design.
+
+    Parameters
+    ----------
+    designs : list of tuple
+        ``(name, calc.report.Report)`` of each design.
+
+    Returns
+    -------
+    dict
+        Section name -> each design's utilization [%] (the comparison's rows print them to the
+        percent); None where a design has none.
+    """
+    return {p.NAME: [_worst(r, p.NAME) for _, r in designs] for p in COMPARED}
 
 
 def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
@@ -456,9 +254,10 @@ def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: d
             if v != values[0]:
                 shown[r, k].set_facecolor("#fff0c0")
     x = np.arange(len(names))
-    width = 0.8 / len(COMPARED_PARTS)
+    width = 0.8 / len(worst)
     for k, (what, u) in enumerate(worst.items()):
-        bars.bar(x + (k - (len(COMPARED_PARTS) - 1) / 2) * width, [0.0 if v is None else v for v in u], width=width * 0.95, label=what)
+        bars.bar(x + (k - (len(worst) - 1) / 2) * width, [0.0 if v is None else v for v in u], width=width * 0.95,
+                 label=what)
     bars.axhline(100, color="#b2222a", linewidth=1)
     bars.set_xticks(x, names, fontsize=8)
     bars.set_ylabel("worst governing utilization [%]", fontsize=8)

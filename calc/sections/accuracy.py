@@ -12,20 +12,20 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..domain.accuracy import ChainAccuracy, PositioningScatter, angle_of_arc, arc_length, chain_accuracy, read_positions
-from .case import Case, Declared, Key, Table, once
+from .case import Case, Declared, Key, Table
 from ..data.catalog import display_path, load_catalog, load_catalogs, resolve
 from ..core.checks import CheckArray
 from ..core.errors import CalcError
 from ..core.units import Q_, Value, fmt, parse_quantity, sig
 from ..data.measurement import measurement_path
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
-from . import coupling, gearbox
+from ..domain.coupling import SCHEMA as COUPLING_SCHEMA
+from ..domain.gearbox import SCHEMA as GEARBOX_SCHEMA
 from .common import Governing, Verdict, json_of, number, quantity
+from .protocol import Result, Section
 
 NAME = "accuracy"
 ORDER = 80
-#: The case keeps the table raw and this section reads it when evaluated.
-FURTHER = True
 #: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.domain.stiffness.StiffnessCurve`).
 CURVE_KEYS = (
     Key("T1", "torque", "the torque up to which K1 holds", "T_1", unit="N*m"),
@@ -63,8 +63,42 @@ MEASUREMENTS = ("hysteresis", "transmission_trace")
 
 
 @dataclass
+class ComponentInputs:
+    """One ``[[accuracy.component]]`` as read with the case: its own figures, checked key by key;
+    a catalog part, the selection it follows and its measurements are taken when evaluated."""
+
+    table: Table  # the component's keys, for what is checked against the rest of the case
+    part: str | None
+    kind: str
+    name: str | None  # None: the part's name
+    side: str
+    stiffness: object
+    curve: StiffnessCurve | None
+    backlash: object
+    accuracy: object  # transmission accuracy
+    nominal: object
+    hysteresis: str | None = None  # a measured loop's file as the case names it (found when evaluated, and read then)
+    trace: str | None = None  # a transmission trace's file, the same
+
+
+@dataclass
+class AccuracyInputs:
+    """The ``[accuracy]`` table as read with the case."""
+
+    table: dict  # as written
+    applied_torque: object
+    nominal_torque: object
+    components: list  # ComponentInputs
+    positions: str | None  # the measured positions' file as the case names it, or None
+    radius: object
+    required: dict  # "positioning_accuracy" | "repeatability" -> angle
+    required_arcs: dict  # a requirement given as a length, by name
+
+
+@dataclass
 class AccuracyCase:
-    """The ``[accuracy]`` table of a case, read and checked, with what its measurements gave."""
+    """The ``[accuracy]`` section as evaluated: its chain of the parts the case is checked with,
+    with what its measurements gave."""
 
     chain: Chain
     applied_torque: object
@@ -90,17 +124,58 @@ class AccuracyCase:
         return chain_accuracy(self.chain, self.applied_torque, self.nominal_torque)
 
 
-def read_accuracy(case: Case) -> AccuracyCase:
-    """Read the case's ``[accuracy]`` table; every error names the file and the key."""
+def read_inputs(case: Case) -> AccuracyInputs:
+    """Read the case's ``[accuracy]`` table; every error names the file and the key.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case being read.
+
+    Returns
+    -------
+    AccuracyInputs
+    """
     sec = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
     applied = sec.quantity("applied_torque", required=True)
     nominal = _positive(sec, "nominal_torque", "torque")
     tables = sec.tables("component", COMPONENT_KEYS)
     if not tables:
         raise CalcError(f"{sec.where('component')}: expected one [[accuracy.component]] table per member of the chain, drive to load, found none")
+    components = [read_component(t) for t in tables]
+    out = AccuracyInputs(sec.data, applied, nominal, components, sec.data.get("positions"),
+                         sec.positive("radius", what="a radius"), {}, {})
+    for key in ("required_positioning_accuracy", "required_repeatability"):
+        q = _requirement(sec, key, out)
+        if q is not None:
+            out.required[key.removeprefix("required_")] = q
+    return out
+
+
+def accuracy_case(case: Case, given: AccuracyInputs, gearbox, coupling) -> AccuracyCase:
+    """The chain of the case's components, each taking its figures from the case, a catalog part,
+    the gearbox or coupling section's choice or its measurements.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    given : AccuracyInputs
+        The ``[accuracy]`` table as read.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+
+    Returns
+    -------
+    AccuracyCase
+    """
     ratio = _case_ratio(case)
-    out = AccuracyCase(chain=None, applied_torque=applied, nominal_torque=nominal)
-    components = [_component(case, t, ratio, out) for t in tables]
+    out = AccuracyCase(chain=None, applied_torque=given.applied_torque, nominal_torque=given.nominal_torque,
+                       radius=given.radius, required=given.required, required_arcs=given.required_arcs)
+    components = [_component(case, c, ratio, out, gearbox, coupling) for c in given.components]
+    tables = [c.table for c in given.components]
     names = [c.name for c in components]
     for k, name in enumerate(names):
         if name in names[:k]:
@@ -112,17 +187,13 @@ def read_accuracy(case: Case) -> AccuracyCase:
             "but the case gives no gearbox.ratio"
         )
     out.chain = Chain(tuple(components), ratio)
-    if sec.has("positions"):
-        out.positions = read_positions(measurement_path(sec.data["positions"], case.folder, sec.where("positions")))
-    out.radius = sec.positive("radius", what="a radius")
-    for key in ("required_positioning_accuracy", "required_repeatability"):
-        q = _requirement(sec, key, out)
-        if q is not None:
-            out.required[key.removeprefix("required_")] = q
+    if given.positions is not None:
+        sec = Table(case.path, NAME, given.table, TABLES[0].keys)
+        out.positions = read_positions(measurement_path(given.positions, case.folder, sec.where("positions")))
     return out
 
 
-def _requirement(sec: Table, key: str, out: AccuracyCase):
+def _requirement(sec: Table, key: str, out: AccuracyInputs):
     """A required value: an angle, or with ``accuracy.radius`` a length at that radius (the arc a
     machine builder states a tolerance as), turned into the angle ``s / r``."""
     if not sec.has(key) or _is_angle(sec.data[key]):
@@ -150,6 +221,13 @@ def _positive(sec: Table, key: str, kind: str):
     return q
 
 
+def _nonnegative_angle(t: Table, key: str):
+    q = t.quantity(key, "angle")
+    if q is not None and not q.magnitude >= 0:
+        raise CalcError(f"{t.where(key)}: expected an angle of zero or more, found {t.data[key]!r}")
+    return q
+
+
 def _case_ratio(case: Case):
     """The gearbox ratio the chain is referred through: ``gearbox.ratio``, else the named part's."""
     if case.ratio is not None:
@@ -169,9 +247,7 @@ SELECTED = "selected"
 def _catalog_row(case: Case, catalog, part: str, where: str):
     """The gearbox catalog (one file or several, as ``gearbox.catalog``) and the row of ``part``;
     a partial row is an input error."""
-    from ..domain.gearbox import SCHEMA
-
-    rows = load_catalogs(catalog, case.folder, f"{where}.catalog", SCHEMA)
+    rows = load_catalogs(catalog, case.folder, f"{where}.catalog", GEARBOX_SCHEMA)
     return rows, rows.usable_index(part, f"{where}.part")
 
 
@@ -192,37 +268,31 @@ def _doubt(rows, row: int) -> str:
     return f" (doubtful figures: {doubt})" if doubt else ""
 
 
-def _gearbox_part(case: Case, t: Table, part: str):
-    """The catalog, row and source text of a gearbox component's ``part``; a row's doubtful
-    figures go with it."""
+def _gearbox_part(case: Case, t: Table, part: str, gearbox):
+    """The catalog, row and source text of a gearbox component's ``part`` (``gearbox``: the gearbox
+    result a ``part = "selected"`` follows, None without one); a row's doubtful figures go with it."""
     if part != SELECTED:
         rows, row = _catalog_row(case, t.text("catalog", default=case.gearbox_catalog or "gearboxes"), part, t.where("").rstrip("."))
         return rows, row, f"{rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}", None
-    if t.has("catalog"):
-        raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the gearbox selection's catalog; give no catalog")
-    if not gearbox.applies(case):
+    if gearbox is None:
         raise CalcError(f"{t.where('part')}: part = \"selected\" follows the gearbox selection, but the case names no gearbox ratio or part")
-    selection = gearbox.gearbox_selection(case)
-    row, chosen, stand_in = _chosen_row(selection, "gearbox")
-    rows = selection.catalog
+    row, chosen, stand_in = _chosen_row(gearbox.selection, "gearbox")
+    rows = gearbox.selection.catalog
     return rows, row, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}{_doubt(rows, row)}", stand_in
 
 
-def _coupling_part(case: Case, t: Table, part: str):
-    """Part name, stiffness, side and source text of a coupling component's ``part``: a bellows or
-    safety coupling of the catalog (torsionally stiff and free of backlash by design)."""
+def _coupling_part(case: Case, t: Table, part: str, coupling):
+    """Part name, stiffness, side and source text of a coupling component's ``part`` (``coupling``:
+    the coupling result a ``part = "selected"`` follows, None without one): a bellows or safety
+    coupling of the catalog (torsionally stiff and free of backlash by design)."""
     if part == SELECTED:
-        if t.has("catalog"):
-            raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the coupling selection's catalog; give no catalog")
-        if not coupling.applies(case):
+        if coupling is None:
             raise CalcError(f"{t.where('part')}: part = \"selected\" with kind = \"coupling\" follows the coupling selection, but the case has no [coupling]")
-        cc, selection = coupling.coupling_selection(case)
-        row, chosen, stand_in = _chosen_row(selection, "coupling")
-        rows, side = selection.catalog, cc.side or "output"
+        row, chosen, stand_in = _chosen_row(coupling.selection, "coupling")
+        rows, side = coupling.selection.catalog, coupling.inputs.side or "output"
     else:
-        from ..domain.coupling import SCHEMA
-
-        rows = load_catalog(resolve(t.text("catalog", default="couplings"), case.folder, t.where("catalog")), SCHEMA)
+        path = resolve(t.text("catalog", default="couplings"), case.folder, t.where("catalog"))
+        rows = load_catalog(path, COUPLING_SCHEMA)
         row = rows.index(part, t.where("part"))
         chosen, side, stand_in = str(rows.parts[row]), None, None
     name, kind_of = str(rows.parts[row]), str(rows.text["type"][row])
@@ -235,10 +305,9 @@ def _coupling_part(case: Case, t: Table, part: str):
     return name, stiffness, side, f"{chosen}, {rows.catalog_of(row)} row {rows.lines[row]}", stand_in
 
 
-def _measured_part_chosen(t: Table, part: str | None, chosen_part: str | None, sources: list) -> bool:
-    """Whether the component's measurements apply: a measurement belongs to the part it was made on,
-    so with ``part = "selected"`` it needs ``measured_part`` and is used only while the selection
-    chooses that part (``sources`` is told when it is not)."""
+def _check_measured_part(t: Table, part: str | None) -> None:
+    """A measurement belongs to the part it was made on: with ``part = "selected"`` it needs
+    ``measured_part``, which is given only then and only with a measurement."""
     measured = [key for key in MEASUREMENTS if t.has(key)]
     measured_on = t.text("measured_part")
     if measured_on is not None and part != SELECTED:
@@ -247,27 +316,42 @@ def _measured_part_chosen(t: Table, part: str | None, chosen_part: str | None, s
         raise CalcError(f"{t.where('measured_part')}: measured_part names the part a measurement was made on; give hysteresis or transmission_trace as well")
     if part == SELECTED and measured and measured_on is None:
         raise CalcError(f"{t.where(measured[0])}: a measurement belongs to the part it was made on, but part = \"selected\" follows the selection; name that part with measured_part")
+
+
+def _measured_part_chosen(t: Table, chosen_part: str | None, sources: list) -> bool:
+    """Whether the component's measurements apply: while the selection chooses the part they were
+    made on (``sources`` is told when it does not)."""
+    measured_on = t.text("measured_part")
     if measured_on is None or measured_on == chosen_part:
         return True
+    measured = [key for key in MEASUREMENTS if t.has(key)]
     sources.append(f"the {' and '.join(measured)} of {measured_on} not used: the selection chose {chosen_part}")
     return False
 
 
-def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
-    """One ``[[accuracy.component]]``: from its keys, a catalog part (or the selection's choice),
-    or measurements."""
+def read_component(t: Table) -> ComponentInputs:
+    """One ``[[accuracy.component]]`` as the case gives it: its keys checked, each against the others.
+
+    Parameters
+    ----------
+    t : calc.sections.case.Table
+        The component's table.
+
+    Returns
+    -------
+    ComponentInputs
+    """
     part = t.text("part")
     kind = t.text("kind")
     if kind not in PART_KINDS:
         raise CalcError(f"{t.where('kind')}: expected one of {', '.join(PART_KINDS)}, found {kind!r}")
     if t.has("kind") and part is None:
         raise CalcError(f"{t.where('kind')}: kind says which catalog a part comes from; give part as well")
-    name = t.text("name", required=part is None, default=part)
+    name = t.text("name", required=part is None)
     side = t.text("side", required=part is None)
     if side not in SIDES:
         raise CalcError(f"{t.where('side')}: expected input or output, found {side!r}")
-    stiffness = _positive(t, "stiffness", "stiffness")
-    curve = None
+    stiffness, curve = _positive(t, "stiffness", "stiffness"), None
     if t.has("stiffness_curve"):
         for key in ("stiffness", "part", "hysteresis"):
             if t.has(key):
@@ -275,107 +359,158 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         c = t.table("stiffness_curve", CURVE_KEYS)
         curve = StiffnessCurve(*(c.quantity(key.name, required=True) for key in CURVE_KEYS), where=f"{c.path}: {c.name}")
         stiffness = curve.K_1
-    backlash = t.quantity("backlash", "angle")
-    if backlash is not None and not backlash.magnitude >= 0:
-        raise CalcError(f"{t.where('backlash')}: expected an angle of zero or more, found {t.data['backlash']!r}")
-    accuracy = t.quantity("transmission_accuracy", "angle")
-    if accuracy is not None and not accuracy.magnitude >= 0:
-        raise CalcError(f"{t.where('transmission_accuracy')}: expected an angle of zero or more, found {t.data['transmission_accuracy']!r}")
+    backlash, accuracy = _nonnegative_angle(t, "backlash"), _nonnegative_angle(t, "transmission_accuracy")
     nominal = _positive(t, "nominal_torque", "torque")
-    sources = []
-    own_ratio = ratio
-    chosen_part = part  # the catalog part the component is, once a selection is followed
     if part is not None:
         for key in ("stiffness", "backlash", "nominal_torque"):
             if t.has(key):
                 raise CalcError(f"{t.where(key)}: the part {part!r} gives its {key} from the catalog; give either part or {key}")
-    if part is not None and kind == "coupling":
-        chosen, stiffness, coupling_side, source, stand_in = _coupling_part(case, t, part)
-        if coupling_side is not None and t.has("side") and side != coupling_side:
-            raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side (coupling.side), found {side!r}")
-        side = coupling_side or side
-        backlash = Q_(0.0, "arcmin")
-        chosen_part = chosen
-        name = chosen if name == SELECTED else name
-        sources.append(source)
-    elif part is not None:
-        if side != "output":
+        if kind == "gearbox" and side != "output":
             raise CalcError(f"{t.where('side')}: a gearbox's catalog figures are referred to its output, so the part {part!r} sits on the output side, found {side!r}")
-        rows, row, source, stand_in = _gearbox_part(case, t, part)
-        chosen_part = str(rows.parts[row])
-        if name == SELECTED:
-            name = chosen_part
-        own_ratio = rows["ratio"][row]
-        if ratio is not None and not np.isclose(own_ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
-            raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {own_ratio.m_as(''):g}, but the case's gearbox ratio is {ratio.m_as(''):g}")
-        stiffness, backlash, nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]
-        if not np.isnan(rows["K_1"][row].magnitude):  # the catalog gives the gear's stiffness curve
-            curve = StiffnessCurve(*(rows[name][row] for name in ("T_L1", "T_L2", "K_1", "K_2", "K_3")))
-            stiffness = curve.K_1
-        empty = [column for column, q in (("C_t21", stiffness), ("backlash", backlash)) if np.isnan(q.magnitude)]
-        if empty and part != SELECTED:  # a part named here: its figures are asked for
-            raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), column {empty[0]}: expected a value, found an empty cell")
-        if empty:  # the selection's part: the chain is reckoned without the figure, and says so
-            figures = " and ".join({"C_t21": "torsional stiffness C_t21", "backlash": "backlash"}[c] for c in empty)
-            unknown = f"{chosen_part}: its {figures} (empty in {rows.catalog_of(row)} row {rows.lines[row]}; reckoned {' and '.join({'C_t21': 'rigid', 'backlash': 'free of backlash'}[c] for c in empty)})"
-            out.unknown.append(unknown)
-            out.unknown_chain.append(unknown)
-            stiffness = Q_(np.inf, "N*m/arcmin") if "C_t21" in empty else stiffness
-            backlash = Q_(0.0, "arcmin") if "backlash" in empty else backlash
-        sources.append(source)
+        if part == SELECTED and t.has("catalog"):
+            raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the {kind} selection's catalog; "
+                            "give no catalog")
     elif t.has("catalog"):
         raise CalcError(f"{t.where('catalog')}: a catalog is read only for a part; give part as well")
-    if part is not None and stand_in is not None:
-        out.unchosen.append(stand_in)
-    measured_applies = _measured_part_chosen(t, part, chosen_part, sources)
-    if not measured_applies and t.has("transmission_trace") and accuracy is None:
+    _check_measured_part(t, part)
+    for key in ("stiffness", "backlash") if t.has("hysteresis") else ():
+        if t.has(key):
+            raise CalcError(f"{t.where(key)}: the measured loop gives the {key}; give either hysteresis or {key}")
+    return ComponentInputs(t, part, kind, name, side, stiffness, curve, backlash, accuracy, nominal,
+                           *(t.data.get(key) for key in MEASUREMENTS))
+
+
+@dataclass
+class Figures:
+    """A member's figures as they are taken in turn: given, from a catalog part, measured."""
+
+    name: str
+    side: str
+    stiffness: object
+    curve: StiffnessCurve | None
+    backlash: object
+    accuracy: object
+    nominal: object
+    ratio: object  # the ratio its measured trace is reckoned through: its gearbox part's, else the case's
+    chosen: str | None  # the catalog part it is, once a selection is followed
+    sources: list
+
+
+def _component(case: Case, c: ComponentInputs, ratio, out: AccuracyCase, gearbox, coupling) -> Component:
+    """One member of the chain: from its keys, a catalog part (or the ``gearbox`` or ``coupling``
+    result's choice), or measurements; what is unknown of it is told to ``out``."""
+    f = Figures(c.name if c.name is not None else c.part, c.side, c.stiffness, c.curve, c.backlash, c.accuracy,
+                c.nominal, ratio, c.part, [])
+    if c.part is not None:
+        if c.kind == "coupling":
+            stand_in = _coupling_figures(case, c, f, coupling)
+        else:
+            stand_in = _gearbox_figures(case, c, f, ratio, out, gearbox)
+        if stand_in is not None:
+            out.unchosen.append(stand_in)
+    _measured_figures(case, c, f, out)
+    t = c.table
+    if f.stiffness is None:
+        raise CalcError(f"{t.where('stiffness')}: expected a stiffness such as \"1.3 N*m/arcmin\" (or a part, or a "
+                        "measured hysteresis loop), found none")
+    if f.backlash is None:
+        raise CalcError(f"{t.where('backlash')}: expected an angle such as \"3 arcmin\" (\"0 arcmin\" for none), "
+                        "found none")
+    return Component(f.name, f.side, f.stiffness, f.backlash, f.accuracy, f.nominal,
+                     source="; ".join(f.sources) or "case", stiffness_curve=f.curve)
+
+
+def _coupling_figures(case: Case, c: ComponentInputs, f: Figures, coupling) -> str | None:
+    """A coupling part's stiffness and side (its backlash none); returns why the part only stands
+    in for one not chosen, or None."""
+    t = c.table
+    chosen, f.stiffness, coupling_side, source, stand_in = _coupling_part(case, t, c.part, coupling)
+    if coupling_side is not None and t.has("side") and f.side != coupling_side:
+        raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side "
+                        f"(coupling.side), found {f.side!r}")
+    f.side = coupling_side or f.side
+    f.backlash = Q_(0.0, "arcmin")
+    f.chosen = chosen
+    f.name = chosen if f.name == SELECTED else f.name
+    f.sources.append(source)
+    return stand_in
+
+
+def _gearbox_figures(case: Case, c: ComponentInputs, f: Figures, ratio, out: AccuracyCase, gearbox) -> str | None:
+    """A gearbox part's stiffness (or its curve), backlash and nominal torque from its catalog row;
+    a figure the row of a followed selection leaves empty is reckoned without and told to ``out``.
+    Returns why the part only stands in for one not chosen, or None."""
+    t = c.table
+    rows, row, source, stand_in = _gearbox_part(case, t, c.part, gearbox)
+    f.chosen = str(rows.parts[row])
+    if f.name == SELECTED:
+        f.name = f.chosen
+    f.ratio = rows["ratio"][row]
+    if ratio is not None and not np.isclose(f.ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
+        raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {f.ratio.m_as(''):g}, but the case's gearbox "
+                        f"ratio is {ratio.m_as(''):g}")
+    f.stiffness, f.backlash, f.nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]
+    if not np.isnan(rows["K_1"][row].magnitude):  # the catalog gives the gear's stiffness curve
+        f.curve = StiffnessCurve(*(rows[name][row] for name in ("T_L1", "T_L2", "K_1", "K_2", "K_3")))
+        f.stiffness = f.curve.K_1
+    empty = [column for column, q in (("C_t21", f.stiffness), ("backlash", f.backlash)) if np.isnan(q.magnitude)]
+    if empty and c.part != SELECTED:  # a part named here: its figures are asked for
+        raise CalcError(f"{t.where('part')}: {rows.path}, row {rows.lines[row]} ({rows.parts[row]}), "
+                        f"column {empty[0]}: expected a value, found an empty cell")
+    if empty:  # the selection's part: the chain is reckoned without the figure, and says so
+        figures = " and ".join({"C_t21": "torsional stiffness C_t21", "backlash": "backlash"}[e] for e in empty)
+        reckoned = " and ".join({"C_t21": "rigid", "backlash": "free of backlash"}[e] for e in empty)
+        unknown = (f"{f.chosen}: its {figures} (empty in {rows.catalog_of(row)} row {rows.lines[row]}; "
+                   f"reckoned {reckoned})")
+        out.unknown.append(unknown)
+        out.unknown_chain.append(unknown)
+        f.stiffness = Q_(np.inf, "N*m/arcmin") if "C_t21" in empty else f.stiffness
+        f.backlash = Q_(0.0, "arcmin") if "backlash" in empty else f.backlash
+    f.sources.append(source)
+    return stand_in
+
+
+def _measured_figures(case: Case, c: ComponentInputs, f: Figures, out: AccuracyCase) -> None:
+    """The stiffness and backlash of a measured loop (E12) and the transmission accuracy of a
+    trace, where the measurements apply to the part chosen (else the accuracy they gave is
+    unknown, where the case gives none)."""
+    t = c.table
+    applies = _measured_part_chosen(t, f.chosen, f.sources)
+    if not applies and c.trace is not None and f.accuracy is None:
         # The trace was the transmission accuracy; the part chosen instead has none given, which is
         # not the same as none at all.
-        out.unknown.append(f"{chosen_part}: its transmission accuracy (the trace of {t.text('measured_part')} does not apply to it, "
-                           f"and the case gives no transmission_accuracy)")
-    if measured_applies and t.has("hysteresis"):
+        out.unknown.append(f"{f.chosen}: its transmission accuracy (the trace of {t.text('measured_part')} does not "
+                           "apply to it, and the case gives no transmission_accuracy)")
+    if applies and c.hysteresis is not None:
         from ..domain.hysteresis import analyze_loop, read_loop
 
-        for key in ("stiffness", "backlash"):
-            if t.has(key):
-                raise CalcError(f"{t.where(key)}: the measured loop gives the {key}; give either hysteresis or {key}")
-        if nominal is None:
+        if f.nominal is None:
             raise CalcError(f"{t.where('nominal_torque')}: a measured loop is analysed at 50 % to 100 % and ±3 % of the nominal torque (E12), found none")
-        path = measurement_path(t.data["hysteresis"], case.folder, t.where("hysteresis"))
-        analysis = analyze_loop(read_loop(path), nominal)
-        stiffness, backlash = analysis.stiffness, analysis.backlash
-        out.loops[name] = (display_path(path), analysis)
-        sources.append(f"measured loop {display_path(path)}")
-    if measured_applies and t.has("transmission_trace"):
+        path = measurement_path(c.hysteresis, case.folder, t.where("hysteresis"))
+        analysis = analyze_loop(read_loop(path), f.nominal)
+        f.stiffness, f.backlash = analysis.stiffness, analysis.backlash
+        out.loops[f.name] = (display_path(path), analysis)
+        f.sources.append(f"measured loop {display_path(path)}")
+    if applies and c.trace is not None:
         from ..domain.transmission import analyze_trace, read_trace
 
-        if accuracy is not None:
+        if f.accuracy is not None:
             raise CalcError(f"{t.where('transmission_accuracy')}: the trace gives the transmission accuracy; give either transmission_trace or transmission_accuracy")
-        if own_ratio is None:
+        if f.ratio is None:
             raise CalcError(f"{t.where('transmission_trace')}: the transmission error is reckoned through the gearbox ratio, but the case gives no gearbox.ratio")
-        path = measurement_path(t.data["transmission_trace"], case.folder, t.where("transmission_trace"))
-        analysis = analyze_trace(read_trace(path), own_ratio)
-        accuracy = analysis.accuracy
-        out.traces[name] = (display_path(path), analysis)
-        sources.append(f"trace {display_path(path)}")
-    if stiffness is None:
-        raise CalcError(f"{t.where('stiffness')}: expected a stiffness such as \"1.3 N*m/arcmin\" (or a part, or a measured hysteresis loop), found none")
-    if backlash is None:
-        raise CalcError(f"{t.where('backlash')}: expected an angle such as \"3 arcmin\" (\"0 arcmin\" for none), found none")
-    return Component(name, side, stiffness, backlash, accuracy, nominal, source="; ".join(sources) or "case", stiffness_curve=curve)
+        path = measurement_path(c.trace, case.folder, t.where("transmission_trace"))
+        analysis = analyze_trace(read_trace(path), f.ratio)
+        f.accuracy = analysis.accuracy
+        out.traces[f.name] = (display_path(path), analysis)
+        f.sources.append(f"trace {display_path(path)}")
 
 
-def accuracy_of(case: Case) -> tuple:
-    """The ``[accuracy]`` section as read and evaluated, ``(spec, ChainAccuracy)``; computed once per case."""
-
-    def compute():
-        spec = read_accuracy(case)
-        try:
-            return spec, spec.evaluate()
-        except CalcError as exc:
-            raise CalcError(f"{case.path}: accuracy.{exc}") from None
-
-    return once(case, "accuracy", compute)
+def _chain_accuracy(case: Case, spec: AccuracyCase) -> ChainAccuracy:
+    """The accuracy of the evaluated chain ``spec``; an error of the chain names the case's table."""
+    try:
+        return spec.evaluate()
+    except CalcError as exc:
+        raise CalcError(f"{case.path}: accuracy.{exc}") from None
 
 
 def _unknown_terms(spec: AccuracyCase, name: str) -> list:
@@ -558,7 +693,7 @@ def _member_json(m: Member) -> dict:
 
 
 @dataclass
-class AccuracyResult:
+class AccuracyResult(Result):
     """The chain as read, its accuracy at the output, and the required values checked."""
 
     inputs: AccuracyCase
@@ -585,10 +720,9 @@ class AccuracyResult:
         ``components`` with their ``stiffness_at_output`` and ``backlash_at_output``, each quantity as
         ``{"value", "unit"}``; measured loops, traces and positioning records where the case names them.
 
-        >>> from calc.sections.case import read_case
+        >>> from calc.sections import evaluate, read_case
         >>> from calc.data.catalog import CATALOG_DIR
-        >>> from calc.sections.motor import with_chosen_motor  # the example's motor, from its catalog
-        >>> r = evaluate(with_chosen_motor(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml"))).to_json()
+        >>> r = evaluate(read_case(CATALOG_DIR.parent / "cases" / "indexing-table.toml"))["accuracy"].to_json()
         >>> round(r["C_total"]["value"], 2), r["C_total"]["unit"], [c["side"] for c in r["components"]]
         (20.1, 'N*m/arcmin', ['input', 'output'])
         """
@@ -728,9 +862,20 @@ class AccuracyResult:
         return Verdict(False if failing else (None if open_ else True), reasons)
 
 
-def applies(case: Case) -> bool:
-    return NAME in case.sections
+class AccuracySection(Section):
+    """The accuracy of the drive chain: its table read with the case, its members taken from the
+    parts the gearbox and coupling sections choose where it follows them."""
+
+    NAME = NAME
+    TABLES = TABLES
+    REQUIRES = ("gearbox", "coupling")
+
+    def read_inputs(self, case: Case) -> AccuracyInputs:
+        return read_inputs(case)
+
+    def evaluate(self, case: Case, earlier) -> AccuracyResult:
+        spec = accuracy_case(case, self.inputs(case), earlier.get("gearbox"), earlier.get("coupling"))
+        return AccuracyResult(spec, _chain_accuracy(case, spec))
 
 
-def evaluate(case: Case) -> AccuracyResult:
-    return AccuracyResult(*accuracy_of(case))
+SECTION = AccuracySection()

@@ -7,6 +7,8 @@ error names the file and the key (``profile[2].duration``).
 Each section declares the tables and keys it reads once (:class:`Key`, :class:`Declared`); the
 reader (:class:`Table`) takes a key's kind and default from there, and the report's inputs, the
 design review's inputs and the format document (checked by the tests) follow the same declaration.
+Each section reads its tables when the case is read (:meth:`calc.sections.protocol.Section.read`),
+so a bad key is an error here, before anything is evaluated.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ from pathlib import Path
 from ..core.errors import CalcError
 from ..domain.profile import Profile
 from ..core.units import kind_phrase, parse_quantity
+from .evaluation import sections
 
 
 @dataclass(frozen=True)
@@ -172,8 +175,9 @@ class Table:
 
 @dataclass
 class Case:
-    """A design case as read from its file: the inputs the sections share, checked, and the raw
-    tables of the sections that read their own (``coupling``, ``accuracy``) when evaluated."""
+    """A design case as read from its file: the inputs the sections share, checked, and for each
+    section that reads a table of its own (``coupling``, ``accuracy``) its typed inputs
+    (``inputs``) and its table as written (``sections``)."""
 
     path: Path
     title: str
@@ -189,7 +193,7 @@ class Case:
     gearbox_family: tuple = ()  # [gearbox] family: only rows of these families are checked (all where empty)
     shock_factors: object = None  # the table of f_s (calc.data.bands.BandTable) of [gearbox]; None: the source's
     emergency_stop_torque: object = None
-    gearbox_hubs: str | list | None = None
+    gearbox_hubs: object = None  # the table of clamping hubs of [gearbox] (calc.data.catalog.Catalog)
     motor_shaft: object = None  # Bore of the motor's shaft: picks the gearbox's clamping hub
     motor_catalog: str | list | None = None  # [motor] catalog: the motor chosen from it (or its part)
     motor_part: str | None = None
@@ -197,23 +201,35 @@ class Case:
     motor_dc_link: object = None
     motor_curves: object = None  # Path of the motors' curves file
     output_load: object = None  # calc.domain.gearbox.OutputLoad: forces on the gearbox output
-    sections: dict = field(default_factory=dict)  # raw tables of further sections, by name
+    sections: dict = field(default_factory=dict)  # the tables of the sections that read their own, as written, by name
+    inputs: dict = field(default_factory=dict)  # those sections' typed inputs, by name (Section.inputs)
     motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record
     raw: bytes = b""
-    # What has been computed from the case, by name (see :func:`once`); a changed copy starts empty.
-    computed: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @property
     def folder(self) -> Path:
         return self.path.parent
 
 
-def once(case: Case, name: str, compute):
-    """``compute()`` the first time ``name`` is asked of this case, the same object after: the
-    evaluation, the report and a section that builds on the gearbox share one selection."""
-    if name not in case.computed:
-        case.computed[name] = compute()
-    return case.computed[name]
+def declared_tables() -> tuple:
+    """Every table a case file may have, as its section declares it, in the order of the sections.
+
+    Returns
+    -------
+    tuple of Declared
+    """
+    return tuple(t for s in sections() for t in s.TABLES)
+
+
+def top_keys() -> tuple:
+    """The keys a case file may have at its top level.
+
+    Returns
+    -------
+    tuple of str
+        ``title`` and the name of every declared table.
+    """
+    return ("title", *key_names(declared_tables()))
 
 
 def read_case(path, text: str | None = None) -> Case:
@@ -221,11 +237,21 @@ def read_case(path, text: str | None = None) -> Case:
     ``text``, where given, is read as the file's text (a case edited in memory, its files found
     beside ``path`` as the file's would be).
 
-    The shared inputs are read here by their sections (:mod:`calc.sections`): the load cycle
-    (typed, or derived from the moves and the mechanism or from a drive record), the motor and
-    load, the gearbox; the further sections keep their tables for evaluation."""
-    from . import FURTHER, TOP_KEYS, drive, duty, gearbox, motion
+    Each section reads its tables in turn, in the order of the sections (:mod:`calc.sections`):
+    the motor and load, the load cycle (derived from the moves and the mechanism or from a drive
+    record, else typed), the gearbox, then the sections that read a table of their own.
 
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The case file.
+    text : str, optional
+        The file's text, where it is read from memory.
+
+    Returns
+    -------
+    Case
+    """
     path = Path(path)
     if text is not None:
         raw = text.encode("utf-8")
@@ -241,7 +267,7 @@ def read_case(path, text: str | None = None) -> Case:
         raise CalcError(f"{path}: expected a UTF-8 TOML file, found bytes that are not UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
         raise CalcError(f"{path}: TOML syntax error: {exc}") from None
-    top = Table(path, "", data, TOP_KEYS)
+    top = Table(path, "", data, top_keys())
     title = top.text("title", default=path.stem)
     control = next((ch for ch in title if unicodedata.category(ch) == "Cc"), None)
     if control is not None:
@@ -249,12 +275,6 @@ def read_case(path, text: str | None = None) -> Case:
         # a control character (an escape sequence, a line break) means nothing in any of them.
         raise CalcError(f"{top.where('title')}: expected one line of printable text, found the control character U+{ord(control):04X}")
     case = Case(path=path, title=title, profile=None, raw=raw)
-    derived = motion.derive(top)
-    if derived is None:
-        case.profile = duty.read(top)
-    drive.read(top, case)
-    if derived is not None:
-        motion.apply(case, derived)  # after [load], whose inertia the mechanism gives instead
-    gearbox.read(top, case)
-    case.sections = {name: data[name] for name in FURTHER if name in data}
+    for s in sections():
+        s.read(top, case)
     return case

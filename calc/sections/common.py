@@ -1,12 +1,8 @@
 """What every section of the case layer shares: quantities as the JSON contract writes them, the
 verdict of a section, and how many candidates a listing shows.
 
-A section module (:mod:`calc.sections`) has the same shape for every section: ``ORDER`` (its
-place), ``TABLES`` (the tables of the case file it reads, every key declared once,
-:class:`calc.sections.case.Declared`), ``FURTHER = True`` where the case keeps its table raw until it is
-evaluated, ``NAME`` (its key in the results), ``applies(case)``, ``evaluate(case)`` returning its
-result type, and that type's ``to_json(candidates)``, ``summary_lines(candidates)`` and
-``verdict()``.
+What a section is, its tables, what it requires, its reading and evaluation and its result
+record, is :mod:`calc.sections.protocol`.
 """
 
 from __future__ import annotations

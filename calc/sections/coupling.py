@@ -11,7 +11,7 @@ import numpy as np
 
 from ..domain import coupling as cp
 from ..data.bands import factor_table
-from .case import Case, Declared, Key, Table, once
+from .case import Case, Declared, Key, Table
 from ..data.catalog import Catalog, display_path, load_catalogs
 from ..domain.coupling import (
     DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input, check_types, f_e_min,
@@ -23,13 +23,11 @@ from ..domain.gearbox import n_1
 from ..domain.profile import Z_h
 from ..domain.torsion import CouplingSpan, Member, gearbox_at_input, inertia_at_output, load_at_input
 from ..core.units import Q_, Value, fmt, sig
-from . import gearbox
 from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
+from .protocol import Result, Section
 
 NAME = "coupling"
 ORDER = 50
-#: The case keeps the table raw and this section reads it when evaluated.
-FURTHER = True
 _FROM_CASE = " (with side = \"input\": from the rest of the case)"
 TABLES = (Declared(NAME, (
     Key("catalog", "catalog", "the coupling catalog(s): a name in catalogs/ or a path to a CSV file", default="couplings"),
@@ -54,9 +52,35 @@ TABLES = (Declared(NAME, (
 
 
 @dataclass
+class CouplingInputs:
+    """The ``[coupling]`` table as read with the case: the candidates (the catalog narrowed to
+    the part or type asked for), where the coupling sits, its shafts, each quantity the table
+    gives (or its declared default; None where neither) and the factor tables."""
+
+    table: dict  # as written
+    catalog: Catalog
+    type: str | None
+    side: str | None  # input: between motor and gearbox; output: between gearbox and load
+    bores: tuple
+    given: dict  # key -> quantity
+    temperature_factors: object  # calc.data.bands.BandTable
+    start_factors: object = None  # BandTable, where the table names one
+
+    def has(self, key: str) -> bool:
+        return key in self.table
+
+
+#: The quantities of ``[coupling]``; with ``side = "input"`` those of :data:`FROM_THE_CASE` the
+#: table leaves out come from the rest of the case when evaluated.
+QUANTITIES = ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "service_factor", "temperature",
+              "speed", "disengagement_torque", "shaft_distance", "starts_per_hour")
+FROM_THE_CASE = ("accel_torque", "drive_inertia", "load_inertia", "speed", "starts_per_hour")
+
+
+@dataclass
 class CouplingCase:
-    """The ``[coupling]`` section as read: the candidates and the arguments of
-    :func:`select_coupling`."""
+    """The ``[coupling]`` section as evaluated: the candidates and the arguments of
+    :func:`select_coupling`, with what it takes from the rest of the case."""
 
     catalog: Catalog
     type: str | None
@@ -71,46 +95,71 @@ class CouplingCase:
     steps: list = field(default_factory=list)
 
 
-def read(case: Case) -> CouplingCase:
-    """Read ``[coupling]`` key by key; errors name the file and the key."""
+def read_inputs(case: Case) -> CouplingInputs:
+    """Read ``[coupling]`` key by key; errors name the file and the key.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case being read, its load cycle, motor and gearbox read.
+
+    Returns
+    -------
+    CouplingInputs
+    """
     s = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
     catalog, wanted = _candidates(case, s)
     side = s.text("side")
     if side is not None and side not in SIDES:
         raise CalcError(f"{s.where('side')}: expected one of {', '.join(SIDES)}, found {side!r}")
-    derived, derived_steps = _from_the_case(case, s) if side == "input" else ({}, {})
+    derivable = FROM_THE_CASE[:3] if side == "input" else ()  # speed only with a gearbox: not among the keys needed
     for key in ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "shaft_1", "shaft_2"):
-        if not s.has(key) and key not in derived:
+        if not s.has(key) and key not in derivable:
             hint = " (with side = \"input\" it comes from [motor], [load] and the gearbox when they give it)" if side == "input" else ""
             raise CalcError(f"{s.where(key)}: expected a value{hint}, found none")
     bores = tuple(parse_bore(s.data[key], s.where(key)) for key in ("shaft_1", "shaft_2"))
-
-    def given_or_derived(key):
-        return s.quantity(key) if s.has(key) else derived.get(key, (None, ""))[0]
-
-    inputs = dict(
-        accel_torque=given_or_derived("accel_torque"),
-        drive_inertia=given_or_derived("drive_inertia"),
-        load_inertia=given_or_derived("load_inertia"),
-        excitation_frequency=s.quantity("excitation_frequency"),
-        service_factor=s.quantity("service_factor"),
-        temperature=s.quantity("temperature"),
-        speed=given_or_derived("speed"),
-        disengagement_torque=s.quantity("disengagement_torque"),
-        shaft_distance=s.quantity("shaft_distance"),
-    )
-    inputs["temperature_factors"] = factor_table("temperature", s.text("temperature_factors"), case.folder, s.where("temperature_factors"))
+    given = {key: s.quantity(key) for key in QUANTITIES}
+    temperature = factor_table("temperature", s.text("temperature_factors"), case.folder,
+                               s.where("temperature_factors"))
+    starts = None
     if s.has("start_factors"):
-        inputs["start_factors"] = factor_table("starts", s.text("start_factors"), case.folder, s.where("start_factors"))
-        if not s.has("starts_per_hour"):
-            # One start from rest per cycle of the load cycle.
-            z = Z_h(t_cycle=case.profile.t_cycle)
-            derived["starts_per_hour"] = (z, f"starts_per_hour = Z_h of the load cycle (one start per cycle) = {fmt(z, '1/hour')}")
-    inputs["starts_per_hour"] = given_or_derived("starts_per_hour")
-    notes = [text for key, (q, text) in derived.items() if not s.has(key) and q is not None]
-    missing = {key: text for key, (q, text) in derived.items() if not s.has(key) and q is None}
-    steps = [step for key, step in derived_steps.items() if not s.has(key)]
-    return CouplingCase(catalog, wanted, side, inputs, bores, notes, missing, *_drive_train(case, side, inputs), steps=steps)
+        starts = factor_table("starts", s.text("start_factors"), case.folder, s.where("start_factors"))
+    return CouplingInputs(s.data, catalog, wanted, side, bores, given, temperature, starts)
+
+
+def coupling_case(case: Case, given: CouplingInputs, gearbox) -> CouplingCase:
+    """The coupling's inputs as given, with what a coupling between motor and gearbox takes from
+    the rest of the case, and the drive train around it.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    given : CouplingInputs
+        The ``[coupling]`` table as read.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+
+    Returns
+    -------
+    CouplingCase
+    """
+    derived, derived_steps = _from_the_case(case, gearbox) if given.side == "input" else ({}, {})
+    if given.start_factors is not None and not given.has("starts_per_hour"):
+        # One start from rest per cycle of the load cycle.
+        z = Z_h(t_cycle=case.profile.t_cycle)
+        derived["starts_per_hour"] = (z, "starts_per_hour = Z_h of the load cycle (one start per cycle) = "
+                                         f"{fmt(z, '1/hour')}")
+    inputs = {key: given.given[key] if given.has(key) or key not in FROM_THE_CASE else derived.get(key, (None, ""))[0]
+              for key in QUANTITIES}
+    inputs["temperature_factors"] = given.temperature_factors
+    if given.start_factors is not None:
+        inputs["start_factors"] = given.start_factors
+    notes = [text for key, (q, text) in derived.items() if not given.has(key) and q is not None]
+    missing = {key: text for key, (q, text) in derived.items() if not given.has(key) and q is None}
+    steps = [step for key, step in derived_steps.items() if not given.has(key)]
+    return CouplingCase(given.catalog, given.type, given.side, inputs, given.bores, notes, missing,
+                        *_drive_train(case, given.side, inputs, gearbox), steps=steps)
 
 
 def _candidates(case: Case, s: Table) -> tuple[Catalog, str | None]:
@@ -139,23 +188,35 @@ def coupling_span(case: Case) -> CouplingSpan | None:
     inertia and ``2 f_er``: what the gearbox selection bounds each row's drive train with
     (:func:`calc.domain.gearbox.select_gearbox`). None where the case has no coupling there, or gives no
     motor inertia, load inertia or excitation frequency, or no candidate has a stiffness and an
-    inertia (a line shaft's stiffness needs its length: line shafts are left out)."""
-    if NAME not in case.sections:
+    inertia (a line shaft's stiffness needs its length: line shafts are left out).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+
+    Returns
+    -------
+    calc.domain.torsion.CouplingSpan or None
+    """
+    given = SECTION.inputs(case)
+    if given is None:
         return None
-    s = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
-    drive = s.quantity("drive_inertia") if s.has("drive_inertia") else case.motor_inertia
-    if s.text("side") != "input" or not s.has("excitation_frequency") or drive is None or case.load_inertia is None:
+    drive = given.given["drive_inertia"] if given.has("drive_inertia") else case.motor_inertia
+    if given.side != "input" or not given.has("excitation_frequency") or drive is None or case.load_inertia is None:
         return None
-    catalog, wanted = _candidates(case, s)
+    catalog, wanted = given.catalog, given.type
     known = ~np.isnan(catalog["C_T"].magnitude) & ~np.isnan(catalog["J"].magnitude) & (catalog.text["type"] != "line-shaft")
     if not known.any():
         return None
     rows = catalog.rows(known)
-    which = str(rows.parts[0]) if s.has("part") else f"the {wanted + ' ' if wanted else ''}couplings of {rows.shown_name}"
-    return CouplingSpan(drive, case.load_inertia, rows["C_T"], rows["J"], f_e_min(f_er=s.quantity("excitation_frequency")), which)
+    which = (str(rows.parts[0]) if given.has("part")
+             else f"the {wanted + ' ' if wanted else ''}couplings of {rows.shown_name}")
+    two_f_er = f_e_min(f_er=given.given["excitation_frequency"])
+    return CouplingSpan(drive, case.load_inertia, rows["C_T"], rows["J"], two_f_er, which)
 
 
-def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain | None, tuple]:
+def _drive_train(case: Case, side: str | None, inputs: dict, gearbox) -> tuple[DriveTrain | None, tuple]:
     """The drive train around the coupling, every member referred to the coupling's shaft
     (:mod:`calc.domain.torsion`), and the steps that referred them there.
 
@@ -170,11 +231,11 @@ def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain
     if inputs["drive_inertia"] is None or inputs["load_inertia"] is None:
         return None, ()
     two_mass = (Member("motor", inputs["drive_inertia"]),), (Member("load", inputs["load_inertia"]),)
-    if not gearbox.applies(case):
+    if gearbox is None:
         return DriveTrain(*two_mass), ()
     if side is None:
         return DriveTrain(*two_mass, missing=("coupling.side (where the coupling sits: input or output of the gearbox)",)), ()
-    selection = gearbox.gearbox_selection(case)
+    selection = gearbox.selection
     row = selection.order[0]
     part = str(selection.catalog.parts[row])
     i, C_t21, J_1 = selection.catalog["ratio"][row], selection.catalog["C_t21"][row], selection.J_1[row]
@@ -203,8 +264,9 @@ def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain
     return DriveTrain((Member("motor", j_m.result), Member("gearbox", j_g.result, C_t21)), two_mass[1], stand_in, shaft), steps
 
 
-def _from_the_case(case: Case, s: Table) -> tuple[dict, dict]:
-    """What a coupling between motor and gearbox can take from the rest of the case, by key:
+def _from_the_case(case: Case, gearbox) -> tuple[dict, dict]:
+    """What a coupling between motor and gearbox can take from the rest of the case (and its
+    ``gearbox`` result, None without one), by key:
     ``(quantity, sentence)``, and the calculations among them, by key: ``(title, Step)``. ``load_inertia`` is the load reflected to the input plus the gearbox's
     J_1 (E8), ``speed`` the highest input speed ``n_2max · i``, ``accel_torque`` the motor's peak
     torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given.
@@ -221,9 +283,9 @@ def _from_the_case(case: Case, s: Table) -> tuple[dict, dict]:
         out["accel_torque"] = (case.motor_peak_torque, f"accel_torque M_a = motor.peak_torque = {fmt(case.motor_peak_torque, 'N*m')}")
     if case.motor_inertia is not None:
         out["drive_inertia"] = (case.motor_inertia, f"drive_inertia J_drive = motor.inertia = {fmt(case.motor_inertia, 'kg*cm**2')}")
-    if not gearbox.applies(case):
+    if gearbox is None:
         return out, steps
-    selection = gearbox.gearbox_selection(case)
+    selection = gearbox.selection
     row = selection.order[0]
     part = str(selection.catalog.parts[row])
     i = selection.catalog["ratio"][row]
@@ -248,18 +310,22 @@ def _from_the_case(case: Case, s: Table) -> tuple[dict, dict]:
     return out, steps
 
 
-def coupling_selection(case: Case) -> tuple[CouplingCase, "CouplingSelection"]:
-    """The ``[coupling]`` section as read and its candidates checked and ranked; computed once per case."""
+def coupling_selection(cc: CouplingCase, where: str) -> CouplingSelection:
+    """The candidates of the coupling as evaluated (:func:`coupling_case`), checked and ranked.
 
-    def compute():
-        cc = read(case)
-        where = f"{case.path}: coupling"
-        return cc, select_coupling(
-            cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train, where=where,
-            sources=cc.missing, **cc.inputs,
-        )
+    Parameters
+    ----------
+    cc : CouplingCase
+        The ``[coupling]`` section as evaluated.
+    where : str
+        The file and table errors name (``case.toml: coupling``).
 
-    return once(case, "coupling", compute)
+    Returns
+    -------
+    calc.domain.coupling.CouplingSelection
+    """
+    return select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train,
+                           where=where, sources=cc.missing, **cc.inputs)
 
 
 @dataclass(frozen=True)
@@ -323,7 +389,7 @@ RANKING = "passing first; published rows before illustrative ones; then smallest
 
 
 @dataclass
-class CouplingResult:
+class CouplingResult(Result):
     """The coupling section as read, its candidates checked and ranked, and the part chosen; the
     figures every output prints are computed once here."""
 
@@ -544,13 +610,28 @@ class CouplingResult:
     def governing(self) -> Governing:
         return selection_governing(NAME, self.selection)
 
+    def ranked(self) -> CouplingSelection:
+        return self.selection
+
     def verdict(self) -> Verdict:
         return selection_verdict(self.selection, "coupling", "its checks")
 
 
-def applies(case: Case) -> bool:
-    return NAME in case.sections
+class CouplingSection(Section):
+    """The coupling: its table read with the case, its candidates checked with what it takes from
+    the motor and the gearbox, and ranked."""
+
+    NAME = NAME
+    TABLES = TABLES
+    REQUIRES = ("drive", "gearbox")
+
+    def read_inputs(self, case: Case) -> CouplingInputs:
+        return read_inputs(case)
+
+    def evaluate(self, case: Case, earlier) -> CouplingResult:
+        case = earlier["drive"].case
+        cc = coupling_case(case, self.inputs(case), earlier.get("gearbox"))
+        return CouplingResult(cc, coupling_selection(cc, f"{case.path}: coupling"))
 
 
-def evaluate(case: Case) -> CouplingResult:
-    return CouplingResult(*coupling_selection(case))
+SECTION = CouplingSection()

@@ -1,13 +1,18 @@
 """The motor and the load of a case (``[motor]``, ``[load]``): inputs that the gearbox, coupling
-and accuracy sections share. They have no results of their own."""
+and motor sections share, and the motor the case is checked with: its typed ratings, the part it
+names, or the motor its catalog chooses (:func:`chosen_motor`). The section writes no output of
+its own; the sections after it read the case with that motor (:class:`DriveResult`)."""
 
 from __future__ import annotations
 
 import dataclasses
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from .case import Case, Declared, Key, Table, once
+from .case import Case, Declared, Key, Table
+from .evaluation import results_of
+from .protocol import Section
 from ..data.catalog import load_catalogs
 from ..core.errors import CalcError
 from ..domain.fits import parse_bore
@@ -128,8 +133,19 @@ def with_motor_part(case: Case, part: str | None, where: str) -> Case:
 
 
 def motor_catalog(case: Case):
-    """The case's motor catalog (:data:`calc.domain.motor_ratings.SCHEMA`); one read per case."""
-    return once(case, "motor catalog", lambda: load_catalogs(case.motor_catalog, case.folder, f"{case.path}: motor.catalog", SCHEMA))
+    """The case's motor catalog.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+
+    Returns
+    -------
+    calc.data.catalog.Catalog
+        Of :data:`calc.domain.motor_ratings.SCHEMA` (read once per run, :func:`calc.data.catalog.load_catalog`).
+    """
+    return load_catalogs(case.motor_catalog, case.folder, f"{case.path}: motor.catalog", SCHEMA)
 
 
 def _distance(load: Table, key: str):
@@ -138,3 +154,84 @@ def _distance(load: Table, key: str):
     if q is not None and not q.magnitude >= 0:
         raise CalcError(f"{load.where(key)}: expected a distance of zero or more, found {load.data[key]!r}")
     return q
+
+
+#: Rounds of choosing the motor and the gearbox in turn before the choice must have settled.
+ROUNDS = 4
+
+
+@dataclass(frozen=True)
+class DriveResult:
+    """The case with the ratings and inertia of the motor it is checked with, and that motor where
+    the catalog chose it (None where the case names or types its motor); ``evaluated``, the results
+    of the sections the choice evaluated with that motor, by name."""
+
+    case: Case
+    chosen: str | None = None
+    evaluated: dict = field(default_factory=dict, repr=False, compare=False)
+
+
+def chosen_motor(case: Case) -> DriveResult:
+    """The motor a catalog gives (``[motor] catalog`` without a ``part``), so that every section
+    checks with that motor: the motor is ranked through the gearbox (the motor section of a
+    variant of the case, :func:`calc.sections.evaluation.results_of`), the gearbox chosen with
+    the motor's peak torque, and again, until the motor stays the same; the case itself where it
+    names its motor or types it.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+
+    Returns
+    -------
+    DriveResult
+        The case with the chosen motor's ratings and inertia, and that motor.
+
+    Raises
+    ------
+    CalcError
+        Where the motor and the gearbox chosen in turn do not settle within :data:`ROUNDS`.
+    """
+    if case.motor_catalog is None or case.motor_part is not None:
+        return DriveResult(case)
+    chosen, seen, trial = None, [], case
+    for _ in range(ROUNDS):
+        given = {SECTION.NAME: DriveResult(trial)}
+        evaluated = results_of(trial, ("motor",), given)
+        sel = evaluated["motor"].selection
+        pick = str(sel.catalog.parts[sel.order[0]])
+        if pick == chosen:
+            return DriveResult(trial, pick, {k: v for k, v in evaluated.items() if k not in given})
+        chosen = pick
+        seen.append(pick)
+        trial = dataclasses.replace(case, **motor_ratings(sel.catalog, int(sel.order[0])))
+    raise CalcError(f"{case.path}: motor.catalog: the motor and the gearbox chosen in turn do not settle "
+                    f"({' -> '.join(seen)}); name the motor with motor.part")
+
+
+class DriveSection(Section):
+    """The motor and the load: read into the case's fields; evaluated, the motor the case is
+    checked with."""
+
+    NAME = "drive"
+    TABLES = TABLES
+    SHOWN = False
+
+    def read(self, top: Table, case: Case) -> None:
+        read(top, case)
+
+    def applies(self, case: Case) -> bool:
+        return True
+
+    def evaluate(self, case: Case, earlier) -> DriveResult:
+        return chosen_motor(case)
+
+    def checked(self, case: Case, result: DriveResult) -> Case:
+        return result.case
+
+    def evaluated_with(self, result: DriveResult) -> dict:
+        return result.evaluated
+
+
+SECTION = DriveSection()

@@ -1,5 +1,6 @@
-"""The load cycle of a case (``[[profile]]``): its duty (E3), its S1 means (E1, E2) and its S5
-values (E4, E5), which every other section builds on."""
+"""The load cycle of a case (``[[profile]]``, or derived from its motion): its duty (E3), its S1
+means (E1, E2) and its S5 values (E4, E5, with the T_2max of the best-ranked gearbox), which
+every other section builds on."""
 
 from __future__ import annotations
 
@@ -7,17 +8,17 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from ..data.bands import BandTable
-from .case import Case, Declared, Key, Table, once
+from .case import Case, Declared, Key, Table
 from ..domain.cycle import SampledCycle
 from ..core.errors import CalcError
 from ..domain.gearbox import SHOCK_FACTORS, shock_factor
 from ..domain.profile import ED, Duty, Profile, T_2m, Z_h, duty, n_2m
-from . import gearbox
 from ..core.units import Value
 from .common import Verdict
+from .protocol import Result, Section
 
 NAME = "profile"
-ORDER = 30  # after the motion, which may derive the load cycle
+ORDER = 30
 TABLES = (Declared(NAME, (
     Key("phase", "choice", "accel | const | decel | pause"),
     Key("duration", "time", "duration of the segment", "t_k", unit="s"),
@@ -61,7 +62,7 @@ class DutyValues:
 
 
 @dataclass
-class DutyResult:
+class DutyResult(Result):
     """The duty, the S1 means and the S5 values of the load cycle."""
 
     #: The JSON contract writes its objects (duty, continuous, cyclic) at the top level.
@@ -124,17 +125,44 @@ class DutyResult:
         return None
 
 
-def applies(case: Case) -> bool:
-    return True
+class DutySection(Section):
+    """The load cycle's duty, S1 means and S5 values; the T_2max of the best-ranked gearbox where
+    the case has a gearbox."""
+
+    NAME = NAME
+    TABLES = TABLES
+    REQUIRES = ("gearbox",)
+
+    def read(self, top: Table, case: Case) -> None:
+        """The typed segments, where the motion does not derive the load cycle."""
+        if case.motion is None:
+            case.profile = read(top)
+
+    def applies(self, case: Case) -> bool:
+        return True
+
+    def evaluate(self, case: Case, earlier) -> DutyResult:
+        return duty_result(case, earlier.get("gearbox"))
 
 
-def evaluate(case: Case) -> DutyResult:
-    """The duty of the case's load cycle; computed once per case, so that a section after it (the
-    motor's side) reads the same result, with the sampled cycle where the motion form gives it."""
-    return once(case, NAME, lambda: _evaluate(case))
+SECTION = DutySection()
 
 
-def _evaluate(case: Case) -> DutyResult:
+def duty_result(case: Case, gearbox) -> DutyResult:
+    """The duty of the case's load cycle, with the sampled cycle where the motion form gives it
+    and the T_2max of the gearbox's best-ranked row.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+
+    Returns
+    -------
+    DutyResult
+    """
     p = case.profile
     seg = p.moving_values()
     steps = [("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle)), ("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),
@@ -143,8 +171,8 @@ def _evaluate(case: Case) -> DutyResult:
     table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors
     out = DutyResult(p, duty(p), n2m, t2m, zh, float(shock_factor(zh, table)),
                      cycle=None if case.motion is None else case.motion.cycle, shock_factors=table, steps=steps)
-    if gearbox.applies(case):
-        selection = gearbox.gearbox_selection(case)
+    if gearbox is not None:
+        selection = gearbox.selection
         if selection.T_2max is not None:
             row = selection.order[0]
             out.T2max, out.T2max_part = selection.T_2max[row], str(selection.catalog.parts[row])

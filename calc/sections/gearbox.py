@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..data.bands import factor_table
-from .case import Case, Declared, Key, Table, once
+from .case import Case, Declared, Key, Table
 from ..data.catalog import display_path, load_catalogs
 from ..core.errors import CalcError
 from ..domain.gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
@@ -16,6 +16,7 @@ from ..domain.profile import Z_h, n_2m
 from ..core.units import Q_, sig
 from . import coupling
 from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
+from .protocol import Result, Section
 
 NAME = "gearbox"
 ORDER = 40
@@ -38,7 +39,7 @@ RANKING = (
 
 def read(top: Table, case: Case) -> None:
     """Read ``[gearbox]`` into the case: the ratio (above zero; needed unless a part is named),
-    the catalog and the part."""
+    the catalog and the part; the tables of shock factors and of clamping hubs it names."""
     gearbox = top.table(NAME, TABLES[0].keys)
     if not gearbox:
         return
@@ -49,21 +50,23 @@ def read(top: Table, case: Case) -> None:
     case.gearbox_family = gearbox.texts("family")
     case.emergency_stop_torque = gearbox.positive("emergency_stop_torque")
     case.shock_factors = factor_table("shock", gearbox.text("shock_factors"), case.folder, gearbox.where("shock_factors"))
-
-
-def applies(case: Case) -> bool:
-    return case.ratio is not None or case.gearbox_part is not None
-
-
-def gearbox_selection(case: Case) -> GearboxSelection:
-    """The gearbox catalog of the case, narrowed to its ratio (or named part), checked and ranked;
-    computed once per case."""
-    return once(case, "gearbox", lambda: _select(case))
+    case.gearbox_hubs = load_catalogs(case.gearbox_hubs, case.folder, gearbox.where("hubs"), HUB_SCHEMA)
 
 
 def catalogs(case: Case) -> tuple:
-    """The case's gearbox catalog (its rows together, when it names several; only those of its
-    families where it names some) and hub table."""
+    """The case's gearbox catalog and hub table.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+
+    Returns
+    -------
+    tuple of calc.data.catalog.Catalog
+        The catalog (its rows together, when it names several; only those of its families where
+        it names some) and the table of clamping hubs read with the case.
+    """
     where = f"{case.path}: gearbox"
     catalog = load_catalogs(case.gearbox_catalog, case.folder, f"{where}.catalog", SCHEMA)
     if case.gearbox_family:
@@ -76,7 +79,7 @@ def catalogs(case: Case) -> tuple:
             if family not in case.gearbox_family:
                 raise CalcError(f"{where}.part: {case.gearbox_part} is of family {family!r}, but gearbox.family is {' or '.join(map(repr, case.gearbox_family))}")
         catalog = catalog.rows(np.isin(catalog.family, case.gearbox_family))
-    return catalog, load_catalogs(case.gearbox_hubs, case.folder, f"{where}.hubs", HUB_SCHEMA)
+    return catalog, case.gearbox_hubs
 
 
 def selection_inputs(case: Case) -> dict:
@@ -90,7 +93,18 @@ def selection_inputs(case: Case) -> dict:
     )
 
 
-def _select(case: Case) -> GearboxSelection:
+def gearbox_selection(case: Case) -> GearboxSelection:
+    """The gearbox catalog of the case, narrowed to its ratio (or named part), checked and ranked.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with (:class:`calc.sections.drive.DriveResult`).
+
+    Returns
+    -------
+    calc.domain.gearbox.GearboxSelection
+    """
     where = f"{case.path}: gearbox"
     catalog, hubs = catalogs(case)
     if case.gearbox_part is not None:
@@ -109,7 +123,7 @@ def _select(case: Case) -> GearboxSelection:
 
 
 @dataclass
-class GearboxResult:
+class GearboxResult(Result):
     """The ranked gearbox candidates of a case and the part chosen, with the calculations of the
     best-ranked row's checks as steps."""
 
@@ -173,6 +187,9 @@ class GearboxResult:
     def governing(self) -> Governing:
         return selection_governing(NAME, self.selection)
 
+    def ranked(self) -> GearboxSelection:
+        return self.selection
+
     def verdict(self) -> Verdict:
         s = self.selection
         ratios = ", ".join(sorted({f"{r:g}" for r in np.unique(s.catalog["ratio"].m_as(""))}))  # distinct first: 10^5 rows
@@ -212,6 +229,24 @@ def check_steps(case: Case, sel: GearboxSelection) -> list:
     return out
 
 
-def evaluate(case: Case) -> GearboxResult:
-    selection = gearbox_selection(case)
-    return GearboxResult(selection, check_steps(case, selection))
+class GearboxSection(Section):
+    """The gearbox: the catalog's rows at the ratio (or the named part), checked with the motor
+    the case is checked with, and ranked."""
+
+    NAME = NAME
+    TABLES = TABLES
+    REQUIRES = ("drive",)
+
+    def read(self, top: Table, case: Case) -> None:
+        read(top, case)
+
+    def applies(self, case: Case) -> bool:
+        return case.ratio is not None or case.gearbox_part is not None
+
+    def evaluate(self, case: Case, earlier) -> GearboxResult:
+        case = earlier["drive"].case
+        selection = gearbox_selection(case)
+        return GearboxResult(selection, check_steps(case, selection))
+
+
+SECTION = GearboxSection()

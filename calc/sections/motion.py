@@ -21,6 +21,7 @@ from ..domain.motion import Move, Samples, alpha_2max, omega_2max, record_sample
 from ..domain.profile import Profile, segments
 from ..core.units import Q_, Value, kind_phrase, parse_quantity
 from .common import json_of
+from .protocol import Result, Section
 
 NAME = "motion"
 ORDER = 20
@@ -313,7 +314,7 @@ class Segment:
 
 
 @dataclass(frozen=True)
-class MotionResult:
+class MotionResult(Result):
     """The derived segments, the peaks and the load's inertia at the output, and the steps that
     derived them (the transmission radius, the load's inertia, each move's distance, peak speed
     and acceleration, and the output torque of each of its phases)."""
@@ -388,12 +389,41 @@ def motion_steps(m: Motion) -> list:
     return out
 
 
-def applies(case: Case) -> bool:
-    return case.motion is not None
+class MotionSection(Section):
+    """The load cycle derived from the moves and the mechanism, or from a drive record."""
+
+    NAME = NAME
+    TABLES = TABLES
+
+    def read(self, top: Table, case: Case) -> None:
+        """Derive the load cycle where the case gives moves or a drive record (after ``[load]``,
+        whose inertia the mechanism gives instead)."""
+        derived = derive(top)
+        if derived is not None:
+            apply(case, derived)
+
+    def applies(self, case: Case) -> bool:
+        return case.motion is not None
+
+    def evaluate(self, case: Case, earlier) -> MotionResult:
+        return motion_result(case.motion)
 
 
-def evaluate(case: Case) -> MotionResult:
-    m = case.motion
+SECTION = MotionSection()
+
+
+def motion_result(m: Motion) -> MotionResult:
+    """The derived segments and peaks of a motion as the outputs print them.
+
+    Parameters
+    ----------
+    m : Motion
+        The case's motion form.
+
+    Returns
+    -------
+    MotionResult
+    """
     g = m.segments
     segments = [Segment(PHASES[p], Value.of(Q_(t, "s"), "s", "motion.segments.duration"), Value.of(Q_(n, "rad/s"), "rpm", "motion.segments.speed"),
                         Value.of(Q_(T, "N*m"), "N*m", "motion.segments.torque"))

@@ -6,15 +6,13 @@ motor's side")."""
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 from dataclasses import dataclass
 
 import numpy as np
 
-from .case import Case, once
+from .case import Case
 from ..data.catalog import display_path
-from ..core.errors import CalcError
 from ..domain.gearbox import inertia_ratio, n_1
 from ..domain.cycle import PHASES
 from ..domain.motor import (
@@ -22,8 +20,9 @@ from ..domain.motor import (
 )
 from ..domain.motor_ratings import RANKING, Cycle, MotorSelection, read_curves, select_motors
 from ..core.units import Q_, fmt
-from . import coupling, drive, duty, gearbox
+from . import drive
 from .common import Governing, Verdict, check_json, check_line, quantity, quantity_text, row_json, selection_governing, selection_verdict
+from .protocol import Result, Section
 
 NAME = "motor"
 ORDER = 60
@@ -35,22 +34,43 @@ TYPED = (
 
 
 def output_load(case: Case) -> OutputLoad:
-    """The sampled cycle of the motion form where the duty result has one, else the typed segments
-    (a pause with zero torque and speed)."""
-    cycle = duty.evaluate(case).cycle
-    if cycle is None:
+    """The load cycle at the gearbox output as the motor's side reads it.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+
+    Returns
+    -------
+    calc.domain.motor.OutputLoad
+        The sampled cycle of the motion form where the case derives its load cycle, else the
+        typed segments (a pause with zero torque and speed).
+    """
+    if case.motion is None:
         p = case.profile
         return OutputLoad(p.durations, p.torques, p.speeds, None, p.n_2max)
-    return OutputLoad.from_cycle(cycle)
+    return OutputLoad.from_cycle(case.motion.cycle)
 
 
-def motor_side_coupling(case: Case) -> tuple:
+def motor_side_coupling(coupling) -> tuple:
     """A motor-side coupling's whole inertia (it turns with the motor; NaN where its catalog gives
-    none) and its part, or ``(None, None)`` without one: the coupling the coupling section chose
-    (or its best-ranked)."""
-    if not coupling.applies(case):
+    none) and its part, or ``(None, None)`` without one: the coupling the ``coupling`` result
+    (None: the case has none) chose, or its best-ranked.
+
+    Parameters
+    ----------
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+
+    Returns
+    -------
+    tuple
+        The coupling's inertia J [kg·m², a pint.Quantity] and its part, or ``(None, None)``.
+    """
+    if coupling is None:
         return None, None
-    cc, sel = coupling.coupling_selection(case)
+    cc, sel = coupling.inputs, coupling.selection
     if cc.side != "input":
         return None, None
     row = int(sel.order[0])
@@ -58,13 +78,32 @@ def motor_side_coupling(case: Case) -> tuple:
     return cc.catalog["J"][row], part
 
 
-def rotor_inertia(case: Case, J_1, catalog_rotors: bool = False) -> tuple:
+def rotor_inertia(case: Case, J_1, coupling, catalog_rotors: bool = False) -> tuple:
     """What the rotor term of a sampled cycle adds to the motor's inertia, for gearbox rows of
-    input inertia ``J_1`` (an array, NaN where the catalog gives none): ``(J_1 with a motor-side
-    coupling's whole inertia, that coupling's inertia or None, what the term lacks or None,
-    notes)``. The term lacks the motor's inertia where the case gives none (and ``catalog_rotors``
-    is not set: each catalog motor brings its own), and the coupling's where its catalog gives none."""
-    J_c, coupling_part = motor_side_coupling(case)
+    input inertia ``J_1`` (an array, NaN where the catalog gives none), with the ``coupling``
+    result (None: none): ``(J_1 with a motor-side coupling's whole inertia, that coupling's
+    inertia or None, what the term lacks or None, notes)``. The term lacks the motor's inertia
+    where the case gives none (and ``catalog_rotors`` is not set: each catalog motor brings its
+    own), and the coupling's where its catalog gives none.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    J_1 : pint.Quantity [kg*m**2]
+        Input inertia of each gearbox row (NaN where the catalog gives none).
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+    catalog_rotors : bool
+        Each catalog motor brings its own rotor (the case's motor inertia is not needed).
+
+    Returns
+    -------
+    tuple
+        ``(J_1 with the coupling [kg·m²], the coupling's J [kg·m²] or None, what the term lacks
+        or None, notes)``.
+    """
+    J_c, coupling_part = motor_side_coupling(coupling)
     notes, missing = [], None
     if J_c is not None:
         notes.append(f"the motor-side coupling {coupling_part} turns with the motor: its whole inertia J = {fmt(J_c, 'kg*cm**2')} is added to J_1")
@@ -76,7 +115,7 @@ def rotor_inertia(case: Case, J_1, catalog_rotors: bool = False) -> tuple:
 
 
 @dataclass
-class MotorResult:
+class MotorResult(Result):
     """The motor torque through one gearbox and the motor's checks."""
 
     part: str | None  # the gearbox; None for a direct drive
@@ -214,6 +253,10 @@ class MotorResult:
         """The motor's checks not made for want of a rating, each with why."""
         return [f"{NAME}: {n}" for n in self.notes if " not checked" in n]
 
+    def ranked(self) -> MotorSelection | None:
+        """The catalog motors ranked; None for a motor the case types."""
+        return self.selection
+
     def verdict(self) -> Verdict | None:
         """False where a check fails, None where one cannot be made; no verdict without a rating."""
         if self.selection is not None:
@@ -226,12 +269,6 @@ class MotorResult:
             return Verdict(False, failing)
         open_ = [f"Motor through {self.through}: {c.reason()}" for c in made if c.passes is None]
         return Verdict(None, open_) if open_ else Verdict(True)
-
-
-def applies(case: Case) -> bool:
-    """With a catalog motor, or any of the motor's figures; through the gearbox, or directly."""
-    given = (case.motor_peak_torque, case.motor_inertia, case.motor_rated_torque, case.motor_max_speed, case.motor_catalog)
-    return any(q is not None for q in given)
 
 
 @dataclass(frozen=True)
@@ -248,29 +285,72 @@ class Transmission:
     notes: list
 
 
-def transmission(case: Case) -> Transmission:
-    if not gearbox.applies(case):
+def transmission(gearbox) -> Transmission:
+    """What the motor drives through.
+
+    Parameters
+    ----------
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox (a direct drive).
+
+    Returns
+    -------
+    Transmission
+        The best-ranked row of the gearbox, or a direct drive (ratio and efficiency 1, no J_1).
+    """
+    if gearbox is None:
         return Transmission(None, True, Q_(1.0, ""), Q_(1.0, ""), Q_(np.zeros(1), "kg*m**2"), [])
-    sel = gearbox.gearbox_selection(case)
+    sel = gearbox.selection
     row = int(sel.order[0])
     cat = sel.catalog
     notes = [] if sel.selected is not None else [f"no gearbox is selected: the motor is checked through {cat.parts[row]}, the best-ranked"]
     return Transmission(str(cat.parts[row]), sel.selected is not None, cat["ratio"][row], cat["eta"][row], sel.J_1[row:row + 1], notes)
 
 
-def evaluate(case: Case) -> MotorResult:
-    """The motor's checks through the case's gearbox (or directly); computed once per case."""
-    return once(case, "motor", lambda: _evaluate(case))
+class MotorSection(Section):
+    """The motor's side: the motor torque through the gearbox the case is checked with (or
+    directly), with a motor-side coupling's inertia, checked against the motor's ratings or
+    every motor of its catalog."""
+
+    NAME = NAME
+    REQUIRES = ("drive", "gearbox", "coupling")
+
+    def applies(self, case: Case) -> bool:
+        """With a catalog motor, or any of the motor's figures; through the gearbox, or directly."""
+        given = (case.motor_peak_torque, case.motor_inertia, case.motor_rated_torque, case.motor_max_speed,
+                 case.motor_catalog)
+        return any(q is not None for q in given)
+
+    def evaluate(self, case: Case, earlier) -> MotorResult:
+        return motor_result(earlier["drive"].case, transmission(earlier.get("gearbox")), earlier.get("coupling"))
 
 
-def _evaluate(case: Case) -> MotorResult:
-    t = transmission(case)
+SECTION = MotorSection()
+
+
+def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
+    """The motor's torques through a transmission and its checks.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    t : Transmission
+        What the motor drives through.
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result; None where the case has no coupling.
+
+    Returns
+    -------
+    MotorResult
+    """
     out = output_load(case)
     notes = list(t.notes)
     J_1 = J_c = None
     missing = None
     if out.sampled:
-        J_1, J_c, missing, more = rotor_inertia(case, t.J_1, catalog_rotors=case.motor_catalog is not None)  # for the motor shaft's clamping hub
+        # J_1 for the motor shaft's clamping hub
+        J_1, J_c, missing, more = rotor_inertia(case, t.J_1, coupling, catalog_rotors=case.motor_catalog is not None)
         notes += more
         if missing is None and np.isnan(J_1[0].magnitude):
             missing = f"the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for {t.part}"
@@ -292,30 +372,6 @@ def _evaluate(case: Case) -> MotorResult:
             notes.append(f"the motor's {what} is not checked: the case gives no motor.{key}")
     return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, checks, notes, output=out, J_motor=case.motor_inertia,
                        segments=segments_of(case))
-
-
-#: Rounds of choosing the motor and the gearbox in turn before the choice must have settled.
-ROUNDS = 4
-
-
-def with_chosen_motor(case: Case) -> Case:
-    """The case with the ratings and inertia of the motor its catalog gives (``[motor] catalog``
-    without a ``part``), so that every section checks with that motor: the motor is ranked through
-    the gearbox, the gearbox chosen with the motor's peak torque, and again, until the motor stays
-    the same (the case itself where it names its motor or types it)."""
-    if case.motor_catalog is None or case.motor_part is not None:
-        return case
-    chosen, seen = None, []
-    for _ in range(ROUNDS):
-        sel = evaluate(case).selection
-        pick = str(sel.catalog.parts[sel.order[0]])
-        if pick == chosen:
-            return case
-        chosen = pick
-        seen.append(pick)
-        case = dataclasses.replace(case, **drive.motor_ratings(sel.catalog, int(sel.order[0])))
-    raise CalcError(f"{case.path}: motor.catalog: the motor and the gearbox chosen in turn do not settle "
-                    f"({' -> '.join(seen)}); name the motor with motor.part")
 
 
 def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missing, speed, notes) -> MotorResult:

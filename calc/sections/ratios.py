@@ -7,15 +7,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property
 
-from .case import Case, once
+from .case import Case
 from ..data.catalog import display_path
 from ..core.errors import CalcError
 from ..domain.ratios import INERTIA_RATIO_LIMIT, RULE, RatioSearch, search_ratios
 from ..core.units import Value, pretty_unit, sig
 from .gearbox import catalogs, selection_inputs
 from .common import Verdict, check_json, json_of, number
-from .motor import TYPED, output_load, rotor_inertia, with_chosen_motor
-from .motor import evaluate as motor_section
+from .evaluation import results_of
+from .motor import TYPED, output_load, rotor_inertia
 
 
 #: Not evaluated with the case (its own command, :func:`search`); its place in the report.
@@ -114,29 +114,41 @@ class RatioResult:
         return "\n".join(lines + [f"Note: {n}" for n in self.notes])
 
 
-def search(case: Case) -> RatioResult:
-    """Every ratio of the case's gearbox catalog; computed once per case."""
-    return once(case, "ratios", lambda: _search(case))
+def search(case: Case, evaluated: dict | None = None) -> RatioResult:
+    """Every ratio of the case's gearbox catalog, with the motor the case is checked with and its
+    motor-side coupling.
 
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    evaluated : dict, optional
+        The results of the case's drive and coupling sections where the case was evaluated
+        (:attr:`calc.sections.Results.every`); else they are evaluated here.
 
-def _search(case: Case) -> RatioResult:
+    Returns
+    -------
+    RatioResult
+    """
     if case.gearbox_catalog is None:
         raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the ratios to try), found none")
     notes = []
-    chosen = with_chosen_motor(case)
-    if chosen is not case:  # a motor from the catalog: the one the case chooses at its ratio, kept at every ratio
-        sel = motor_section(chosen).selection
-        notes.append(f"the motor is {sel.catalog.parts[sel.order[0]]}, the motor catalog's choice at the case's ratio "
+    evaluated = results_of(case, ("drive", "coupling")) if evaluated is None else evaluated
+    drive = evaluated["drive"]
+    if drive.chosen is not None:  # a motor from the catalog: the one the case chooses at its ratio, kept at every ratio
+        notes.append(f"the motor is {drive.chosen}, the motor catalog's choice at the case's ratio "
                      f"{sig(case.ratio.m_as(''))}, kept at every ratio (python -m calc combinations chooses motor and gearbox together)")
-        case = chosen
+    case = drive.case
     catalog, hubs = catalogs(case)
     load = output_load(case)
     if case.gearbox_part is not None:
         notes.append(f"gearbox.part = {case.gearbox_part!r} is not kept to: every row of the catalog is tried")
     if not load.sampled:
         notes.append(TYPED)
+    coupling = evaluated.get("coupling")
     s = search_ratios(
-        catalog, case.profile, load, case.motor_rated_torque, case.motor_max_speed, lambda J_1: rotor_inertia(case, J_1),
+        catalog, case.profile, load, case.motor_rated_torque, case.motor_max_speed,
+        lambda J_1: rotor_inertia(case, J_1, coupling),
         hubs=hubs, **selection_inputs(case),
     )
     notes += s.notes

@@ -1,5 +1,5 @@
 """The key reference of the case format, written from the sections' declarations
-(:data:`calc.sections.DECLARED`): ``docs/case-format.md`` holds it between two markers, and a test
+(:func:`calc.sections.case.declared_tables`): ``docs/case-format.md`` holds it between two markers, and a test
 checks that it is what the declarations give, so the document cannot drift from the readers.
 
 After declaring a key, ``python -c "from calc.sections.reference import reference; print(reference())"``
@@ -8,7 +8,7 @@ prints the reference to paste there.
 
 from __future__ import annotations
 
-from .case import OTHER_KINDS, Declared, Key
+from .case import OTHER_KINDS, Declared, Key, declared_tables
 from ..core.units import KINDS, pretty_unit
 
 BEGIN = "<!-- key reference: written by calc.sections.reference.reference() -->"
@@ -53,9 +53,7 @@ def _table(heading: str, description: str, keys: tuple) -> list[str]:
 def reference(tables: tuple[Declared, ...] | None = None) -> str:
     """The key reference in Markdown: the kinds that are not quantities, then one table per
     declared table of a case file (default: every section's, in their order)."""
-    from . import DECLARED  # the package imports its modules (this one too) to find the sections
-
-    tables = DECLARED if tables is None else tables
+    tables = declared_tables() if tables is None else tables
     out = [BEGIN, "", "| kind | a case file writes |", "|---|---|"]
     out += [f"| {name} | {what} |" for name, what in OTHER_KINDS.items()]
     out.append("")

@@ -1,6 +1,7 @@
 """The motor's side (calc.domain.motor, calc.sections.motor) and the emergency stop: hand calculations,
 laws as hypothesis properties, the section on a typed and on a sampled cycle, and bad input."""
 
+import dataclasses
 import json
 
 import numpy as np
@@ -10,9 +11,12 @@ from hypothesis import strategies as st
 
 from calc import Q_
 from calc.sections.case import read_case
-from calc.domain.cycle import SampledCycle
+from calc.domain.cycle import ACCEL, CONST, DECEL, PAUSE, SampledCycle
 from calc.domain.motor import OutputLoad, T_1_back, T_1_drive, T_1rms, alpha_1, motor_load, motor_torque
-from calc.sections import duty, evaluate
+from calc.domain.motion import Samples
+from calc.domain.profile import segments
+from calc.sections import evaluate
+from calc.sections.motion import Motion
 
 from ..conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, run
 
@@ -205,9 +209,15 @@ def test_ratings_not_given_are_not_checked_and_say_so(write_case):
 
 
 def with_cycle(case, cycle):
-    """The case with its duty result carrying a sampled cycle, as the motion form gives it."""
-    duty.evaluate(case).cycle = cycle
-    return case
+    """The case with a sampled cycle at the gearbox output (one segment per phase of the
+    trapezoid), as a drive record without a mechanism gives it, its typed segments kept as its
+    load cycle: the motor's side reads the samples."""
+    k = np.repeat(np.arange(len(PHASES)), len(cycle.dt) // len(PHASES))
+    samples = Samples(np.cumsum(cycle.dt) - cycle.dt / 2, cycle.dt, np.cumsum(cycle.speed * cycle.dt), cycle.speed,
+                      cycle.acceleration, np.zeros_like(cycle.dt), np.array([ACCEL, CONST, DECEL, PAUSE])[k], k,
+                      np.array([p[0] for p in PHASES]))
+    motion = Motion(None, [], [], samples, cycle, segments(samples, cycle.torque), case.profile, record="trapezoid.csv")
+    return dataclasses.replace(case, motion=motion)
 
 
 def test_the_section_reads_a_sampled_cycle(write_case):

@@ -10,8 +10,8 @@ import sys
 import pytest
 
 from calc.sections.case import OTHER_KINDS, Key, read_case
-from calc.report import BLOCKS
-from calc.sections import DECLARED, FURTHER, MODULES, SECTIONS, TOP_KEYS, declared
+from calc.report import RENDERERS
+from calc.sections import DECLARED, SECTIONS, TOP_KEYS, declared, places
 from calc.sections.reference import BEGIN, END, reference
 from calc.core.units import KINDS
 
@@ -85,14 +85,18 @@ def in_order(names, known):
 
 
 def test_the_lists_of_sections_follow_from_the_modules():
-    assert in_order([m.NAME for m in SECTIONS], SHARED := ["motion", "profile", "gearbox", "coupling", "motor", "accuracy"]) == SHARED
-    assert in_order(FURTHER, ["coupling", "accuracy"]) == ["coupling", "accuracy"]
-    assert [t.name for m in MODULES if getattr(m, "FURTHER", False) for t in m.TABLES] == list(FURTHER)
+    shared = ["motion", "profile", "gearbox", "coupling", "motor", "accuracy"]
+    assert in_order([s.NAME for s in SECTIONS], shared) == shared
+    # The sections that read a table of their own keep it typed once the case is read.
+    example = read_case(ROOT / "cases" / "indexing-table.toml")
+    assert list(example.inputs) == list(example.sections) == ["coupling", "accuracy"]
+    assert all(example.inputs[name].table is example.sections[name] for name in example.inputs)
     assert TOP_KEYS == ("title", *(t.name for t in DECLARED))
     top = ["motor", "load", "mechanism", "move", "drive_record", "profile", "gearbox", "coupling", "accuracy"]
     assert in_order(TOP_KEYS, top) == top
-    # The report's blocks are the sections' modules' namesakes, in their order.
-    assert [b.__name__.rpartition(".")[2] for b in BLOCKS] == [m.__name__.rpartition(".")[2] for m in MODULES]
+    # The renderers are the sections' modules' namesakes', in their order.
+    renderers = [type(r).__module__.rpartition(".")[2] for r in RENDERERS]
+    assert renderers == [m.__name__.rpartition(".")[2] for m in places()]
     assert declared("accuracy.component[2].stiffness_curve.K1").kind == "stiffness"
     assert declared("profile").array
 
