@@ -231,3 +231,33 @@ def test_every_edit_keeps_the_files_comments():
     text = '[motor]\npeak_torque = "12 N*m"  # T_1B\n[gearbox]\nratio = 10  # i\n'
     edited = edited_text(text, [Edit("motor.peak_torque", "16 N*m"), Edit("gearbox.ratio", 8.0)], "a.toml")
     assert edited == '[motor]\npeak_torque = "16 N*m"  # T_1B\n[gearbox]\nratio = 8  # i\n'  # an integer stays one
+
+
+def test_an_input_error_is_kept_as_no_variant_and_a_links_variant_says_it(example):
+    # 0.3 s + 0.3 s of ramps do not fit in the move's 0.5 s: the screen is an input error.
+    variants = Variants()
+    with pytest.raises(CalcError, match=r"^the inputs give no design \(an input error\)$"):
+        variants.keep(example)  # nothing evaluated yet
+    example.type_text("move[1].accel_time", "0.3")
+    assert "expected acceleration and deceleration times that fit in the move" in example.evaluate().error
+    with pytest.raises(CalcError, match=r"^the inputs give no design \(an input error\)$"):
+        variants.keep(example)
+    missed = variants.follow(json.dumps([{"case": "axis.toml", "edits": [], "values": {"move[1].accel_time": "0.3"}}]),
+                             CaseFiles(example.path))
+    assert missed == ["variant 1: axis.toml: 1 move: accel time t_a: expected acceleration and deceleration times "
+                      "that fit in the move (accel_time + decel_time <= time), found 0.3 s + 0.3 s > 0.5 s"]
+    assert variants.kept == []
+
+
+def test_a_save_the_folder_refuses_says_why_without_the_folder(example):
+    folder = example.path.parent
+    for path in folder.iterdir():
+        path.unlink()
+    folder.rmdir()  # the cases' folder gone while the page was open
+    with pytest.raises(CalcError, match=r"^\[Errno 2\] No such file or directory: 'kept.toml'$"):
+        example.save("kept.toml")
+
+
+def test_an_entry_of_a_table_that_is_no_list_of_tables_says_so():
+    with pytest.raises(CalcError, match=r"^a.toml: load\[1\].inertia: the file has no \[\[load\]\] tables$"):
+        edited_text('[load]\ninertia = "1 kg*cm**2"\n', [Edit("load[1].inertia", "2 kg*cm**2")], "a.toml")
