@@ -151,6 +151,10 @@ inertia_ratio = Formula(
     "source, S5 criterion 3 (J_motor ≈ J_1 + J_L / i²); errata E6 (reported as a ratio, 1 is ideal)",
 )
 
+#: E6: servo practice keeps the load to motor inertia ratio λ below roughly 5 to 10; the upper end is
+#: the limit where a case gives none (``[motor] max_inertia_ratio``).
+INERTIA_RATIO_LIMIT = 10.0
+
 
 _F_2a = Symbol("F_2a", "F_{2a}", "force", "N", "axial force on the output shaft")
 _F_2r = Symbol("F_2r", "F_{2r}", "force", "N", "radial force on the output shaft")

@@ -48,6 +48,7 @@ from ..data.catalog import _FLOAT, _HEADER, Catalog, Column, Rule, Schema, _head
 from ..core.errors import CalcError
 from ..core.checks import CheckArray
 from ..core.formula import Formula, Symbol
+from .gearbox import INERTIA_RATIO_LIMIT
 from .mechanism import RADIAN
 from .profile import n_2m
 from ..core.selection import Candidate, Selection
@@ -60,8 +61,6 @@ THERMAL_SHARE = 0.1
 #: How :func:`select_motors` ranks the catalog's motors.
 RANKING = ("passing first; then the smallest adequate motor, the lowest rated torque M_N, ties to the lower rotor inertia; "
            "then lowest worst utilization; partial rows are never ranked")
-#: The load-to-motor inertia ratio a case may leave out ([motor] max_inertia_ratio).
-INERTIA_RATIO_LIMIT = 10.0
 
 SCHEMA = Schema(
     kind="motor",

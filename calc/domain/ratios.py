@@ -10,9 +10,10 @@ cycle is one array (ratios × samples, :func:`calc.domain.motor.motor_load`), an
 A ratio is **feasible** when its best gearbox passes its governing checks and the motor passes
 each of its checks that the case gives a rating for.
 
-Rule for the ratio to pick (:data:`RULE`): among the feasible ratios whose load to motor inertia
-ratio ``λ = (J_1 + J_L / i²) / J_motor`` (E6, the gearbox's own inertia counted, as the motor
-feels it) is at most :data:`INERTIA_RATIO_LIMIT`, the one of lowest RMS motor torque (the motor's
+Rule for the ratio to pick (:func:`rule`): among the feasible ratios whose load to motor inertia
+ratio ``λ = (J_1 + J_L / i²) / J_motor`` (:data:`calc.domain.gearbox.inertia_ratio`, E6, the gearbox's own
+inertia counted, as the motor feels it) is at most the case's limit (``[motor] max_inertia_ratio``,
+:data:`calc.domain.gearbox.INERTIA_RATIO_LIMIT` where it gives none), the one of lowest RMS motor torque (the motor's
 thermal load, which decides the size of a motor on a cyclic axis; at a given motor, the lowest RMS
 utilization); a tie goes to the lower ratio (lower speeds). If no feasible ratio keeps ``λ``
 within the limit, the feasible ratio of lowest ``λ``; where ``λ`` is not known (no inertias), the
@@ -32,14 +33,25 @@ from .motor import MotorLoad, OutputLoad, motor_checks, motor_load
 from .profile import Profile
 from ..core.units import fmt, sig
 
-#: E6: servo practice keeps the load to motor inertia ratio below roughly 5 to 10; the upper end.
-INERTIA_RATIO_LIMIT = 10.0
 
-RULE = (
-    "among the feasible ratios (best gearbox and motor pass) whose inertia ratio λ = (J_1 + J_L / i²) / J_motor is at "
-    f"most {INERTIA_RATIO_LIMIT:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within the "
-    "limit, the feasible ratio of lowest λ"
-)
+def rule(inertia_limit: float) -> str:
+    """The rule for the ratio to pick, in one sentence, with the limit of λ it keeps to.
+
+    Parameters
+    ----------
+    inertia_limit : float
+        The highest load to motor inertia ratio λ [-].
+
+    Returns
+    -------
+    str
+        The rule, as the outputs print it.
+    """
+    return (
+        "among the feasible ratios (best gearbox and motor pass) whose inertia ratio λ = (J_1 + J_L / i²) / J_motor is at "
+        f"most {inertia_limit:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within the "
+        "limit, the feasible ratio of lowest λ"
+    )
 
 
 @dataclass
@@ -56,12 +68,18 @@ class RatioSearch:
     speed: object  # highest motor speed n_2max · i
     motor: list  # CheckArray over the ratios, one per motor rating given
     inertia_ratio: np.ndarray  # λ of each ratio's best row (NaN where not known)
+    inertia_limit: float  # the highest λ the rule keeps to
     gearbox_passes: np.ndarray
     feasible: np.ndarray
     utilization: np.ndarray  # highest governing utilization of gearbox and motor
     pick: int | None  # index into ratios
     reason: str
     notes: list  # what the motor torques count or lack
+
+    @property
+    def rule(self) -> str:
+        """The rule the pick follows (:func:`rule`), with this search's limit of λ."""
+        return rule(self.inertia_limit)
 
     @property
     def parts(self) -> np.ndarray:
@@ -93,6 +111,8 @@ def search_ratios(
     max_speed=None,
     rotor_inertia=None,
     hubs: Catalog | None = None,
+    *,
+    inertia_limit: float,
     **selection,
 ) -> RatioSearch:
     """Evaluate the case at every ratio of ``catalog`` (its rankable rows, every ratio).
@@ -103,9 +123,9 @@ def search_ratios(
     gearboxes' ``J_1`` into what the rotor term counts beside the motor's own: ``(J_1, ...,
     what it lacks or None, notes)`` (a motor-side coupling's inertia added). ``hubs`` and the
     keyword arguments ``selection`` are those of :func:`calc.domain.gearbox.select_gearbox`;
-    ``rated_torque`` and ``max_speed`` those of :func:`calc.domain.motor.motor_checks`. A ratio whose
-    best gearbox gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible
-    (a note says so).
+    ``rated_torque`` and ``max_speed`` those of :func:`calc.domain.motor.motor_checks`;
+    ``inertia_limit`` the highest λ [-] the pick keeps to (:func:`rule`). A ratio whose best gearbox
+    gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible (a note says so).
     """
     motor_peak_torque, motor_inertia = selection.get("motor_peak_torque"), selection.get("motor_inertia")
     if catalog.partial.any():  # partial rows are never ranked (no copy of a catalog without them)
@@ -135,12 +155,32 @@ def search_ratios(
     # rows without T_2Not and a catalog's missing figures leave NaN: fmax ranks on the others
     utilization = np.fmax.reduce([sel.worst[rows], *[c.utilization for c in motor]], axis=0)
     lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
-    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, [c.not_made for c in sel.not_made + motor if c.not_made])
-    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick, reason, notes)
+    not_made = [c.not_made for c in sel.not_made + motor if c.not_made]
+    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, not_made, inertia_limit)
+    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, inertia_limit, gearbox_passes, feasible, utilization, pick, reason, notes)
 
 
-def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str]) -> tuple[int | None, str]:
-    """The ratio to pick by :data:`RULE` (an index into ``ratios``) and why, in one sentence."""
+def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str],
+               inertia_limit: float) -> tuple[int | None, str]:
+    """The ratio to pick by :func:`rule` (an index into ``ratios``) and why, in one sentence.
+
+    Parameters
+    ----------
+    ratios, parts, feasible, inertia_ratio : numpy.ndarray
+        Over the ratios (ascending): the ratio [-], its best gearbox, whether it is feasible, its λ [-]
+        (NaN where not known).
+    torques : MotorLoad or None
+        The motor torque through each ratio's best gearbox; None where not known.
+    not_made : list of str
+        Why checks could not be made, for the sentence where no ratio is feasible.
+    inertia_limit : float
+        The highest λ [-] the pick keeps to.
+
+    Returns
+    -------
+    tuple of (int or None, str)
+        The index of the ratio to pick (None: none is feasible) and why.
+    """
     if not feasible.any():
         why = "; ".join(dict.fromkeys(not_made)) if not_made else "at no ratio do the best gearbox and the motor pass"
         return None, f"No ratio can be picked: {why}."
@@ -150,17 +190,17 @@ def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None
         return "the lowest ratio (the motor torque is not known)" if torques is None else f"the lowest RMS motor torque, {fmt(torques.rms[k], 'N*m')}"
 
     known = ~np.isnan(inertia_ratio)
-    within = feasible & known & within_rating(inertia_ratio / INERTIA_RATIO_LIMIT)
+    within = feasible & known & within_rating(inertia_ratio / inertia_limit)
     n = int(feasible.sum())
     head = f"{n} of {len(ratios)} ratios are feasible"
     if within.any():
         k = int(np.lexsort((ratios, np.where(within, rms, np.inf)))[0])
-        why = f"{head}, {int(within.sum())} of them with λ <= {INERTIA_RATIO_LIMIT:g}; of these it needs {lowest_rms(k)}"
+        why = f"{head}, {int(within.sum())} of them with λ <= {inertia_limit:g}; of these it needs {lowest_rms(k)}"
         if within.sum() == 1:
-            why = f"{head}, and only this one keeps λ <= {INERTIA_RATIO_LIMIT:g} (λ = {sig(inertia_ratio[k], 3)})"
+            why = f"{head}, and only this one keeps λ <= {inertia_limit:g} (λ = {sig(inertia_ratio[k], 3)})"
     elif (feasible & known).any():
         k = int(np.lexsort((ratios, np.where(feasible & known, inertia_ratio, np.inf)))[0])
-        why = f"{head}, none with λ <= {INERTIA_RATIO_LIMIT:g}; it has the lowest, λ = {sig(inertia_ratio[k], 3)}"
+        why = f"{head}, none with λ <= {inertia_limit:g}; it has the lowest, λ = {sig(inertia_ratio[k], 3)}"
     else:
         k = int(np.lexsort((ratios, np.where(feasible, rms, np.inf)))[0])
         why = f"{head}; the inertia ratio is not known (motor.inertia and load.inertia), and it needs {lowest_rms(k)}"

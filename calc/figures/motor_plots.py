@@ -6,7 +6,7 @@ import numpy as np
 
 from ..domain.motor import MotorLoad, OutputLoad
 from ..domain.motor_ratings import MotorSelection, peak_limit
-from ..domain.ratios import INERTIA_RATIO_LIMIT, RatioSearch
+from ..domain.ratios import RatioSearch
 
 
 def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak_torque=None, rated_torque=None, part: str = ""):
@@ -128,7 +128,7 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     if not np.all(np.isnan(search.inertia_ratio)):
         lam = bottom.twinx()
         lam.plot(x, search.inertia_ratio, "^:", color="tab:purple", label="inertia ratio λ")
-        lam.axhline(INERTIA_RATIO_LIMIT, color="tab:purple", linestyle="--", linewidth=1, label=f"λ limit {INERTIA_RATIO_LIMIT:g}")
+        lam.axhline(search.inertia_limit, color="tab:purple", linestyle="--", linewidth=1, label=f"λ limit {search.inertia_limit:g}")
         lam.set_ylabel("inertia ratio λ [–]", color="tab:purple")
         more = lam.get_legend_handles_labels()
         handles, labels = handles + more[0], labels + more[1]
