@@ -33,11 +33,9 @@ from ..data.catalog import Column
 from ..core.errors import CalcError
 from ..core.formula import Formula, Symbol
 from ..data.measurement import check_pair, read_measurement
+from .hysteresis import LOW_TORQUE_SHARE
 from .stiffness import Chain, Component, angle_at_output, series_stiffness, stiffness_at_output  # noqa: F401 (Component: the doctests)
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
-
-#: E13: "torque <= 3 % nominal torque" selects the backlash form of positioning accuracy.
-LOW_TORQUE_SHARE = 0.03
 
 _T = Symbol("T", "T", "torque", "N*m", "applied torque at the output")
 _j = Symbol("j_t", "j_{t}", "angle", "arcmin", "torsional backlash at the output")

@@ -360,12 +360,35 @@ def governs(check: CheckArray, mode: str) -> bool:
     return check.mode == mode if check.mode is not None else check.made
 
 
+#: Two ratios are the same to this relative tolerance: a catalog's 10 is the case's 10.000001.
+RATIO_RTOL = 1e-6
+
+
+def same_ratio(a, b):
+    """Whether ratios are the same (to :data:`RATIO_RTOL`), element-wise over arrays.
+
+    Parameters
+    ----------
+    a, b : float or numpy.ndarray
+        Ratios [-].
+
+    Returns
+    -------
+    bool or numpy.ndarray
+        True where they are the same.
+
+    >>> bool(same_ratio(10.0, 10.000001)), bool(same_ratio(10.0, 10.1))
+    (True, False)
+    """
+    return np.isclose(a, b, rtol=RATIO_RTOL, atol=0)
+
+
 def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
-    """The rows of ``catalog`` whose ratio equals ``ratio`` (to 1 part in 10⁶)."""
+    """The rows of ``catalog`` whose ratio equals ``ratio`` (:func:`same_ratio`)."""
     i = as_kind(ratio, "dimensionless", where).m_as("")
     if not i > 0:
         raise CalcError(f"{where}: expected a ratio above zero, found {i:g}")
-    at_ratio = np.isclose(catalog["ratio"].m_as(""), i, rtol=1e-6, atol=0)
+    at_ratio = same_ratio(catalog["ratio"].m_as(""), i)
     mask = at_ratio & ~catalog.partial
     if not mask.any():
         usable = catalog["ratio"].m_as("")[~catalog.partial]

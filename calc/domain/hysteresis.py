@@ -41,8 +41,9 @@ from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print
 
 #: Stiffness band, as shares of the nominal torque (source; E12).
 STIFFNESS_BAND = (0.5, 1.0)
-#: Lost-motion band: ± this share of the nominal torque (source; E12).
-LOST_MOTION_BAND = 0.03
+#: The low-torque share of the nominal torque (source; E12, E13): lost motion is the loop's width
+#: over ± this share of T_N, and up to it the positioning rule counts the backlash (calc.domain.accuracy).
+LOW_TORQUE_SHARE = 0.03
 #: The fewest samples a loop may have, and the fewest loading samples in a stiffness band.
 MIN_SAMPLES = 20
 MIN_BAND_SAMPLES = 3
@@ -204,7 +205,7 @@ class LoopModel:
     def lost_motion(self):
         """Width of the model's loop over ±3 % of ``T_N``: ``2 e(0.03 T_N + T_f)`` (E12)."""
         _, t_n, *_, t_f = self._si
-        return Q_(2 * self._e(LOST_MOTION_BAND * t_n + t_f), "rad").to("arcmin")
+        return Q_(2 * self._e(LOW_TORQUE_SHARE * t_n + t_f), "rad").to("arcmin")
 
     def twist(self, torque):
         """Twist along a torque path, in the order given: the path starts unloaded at 0 N·m.
@@ -373,7 +374,7 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
         raise CalcError(f"{where}: expected a loop of at least {MIN_SAMPLES} samples, found {n}")
     if not (np.isfinite(torque).all() and np.isfinite(twist).all()):
         raise CalcError(f"{where}: expected finite torque and twist samples, found NaN or infinity")
-    edge = LOST_MOTION_BAND * t_n
+    edge = LOW_TORQUE_SHARE * t_n
     if torque.max() < edge or torque.min() > -edge:
         raise CalcError(
             f"{where}: the loop is loaded in one direction only (torque from {torque.min():.4g} to {torque.max():.4g} N·m); "

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..domain.accuracy import PositioningScatter, low_torque_limit, lost_motion, positioning_accuracy
 from ..core.checks import BOUNDARY_RTOL
-from ..domain.hysteresis import LOST_MOTION_BAND, STIFFNESS_BAND, Loop, LoopAnalysis
+from ..domain.hysteresis import LOW_TORQUE_SHARE, STIFFNESS_BAND, Loop, LoopAnalysis
 from ..domain.stiffness import Chain
 from ..domain.transmission import TransmissionAnalysis
 from ..core.units import Q_, as_kind, fmt, sig
@@ -63,7 +63,7 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
     t = loop.torque.m_as("N*m")
     phi = loop.twist.m_as("arcmin")
     t_n = analysis.nominal_torque.m_as("N*m")
-    edge = LOST_MOTION_BAND * t_n
+    edge = LOW_TORQUE_SHARE * t_n
     lo, hi = (x * t_n for x in STIFFNESS_BAND)
     zero = analysis.backlash_range.m_as("arcmin")
     band = analysis.lost_motion_range.m_as("arcmin")

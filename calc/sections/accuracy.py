@@ -18,6 +18,7 @@ from ..core.checks import CheckArray
 from ..core.errors import CalcError
 from ..core.units import Q_, Value, fmt, parse_quantity, sig
 from ..data.measurement import measurement_path
+from ..domain.gearbox import same_ratio
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
 from .common import Governing, Verdict, json_of, number, quantity
@@ -306,7 +307,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         if name == SELECTED:
             name = chosen_part
         own_ratio = rows["ratio"][row]
-        if ratio is not None and not np.isclose(own_ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
+        if ratio is not None and not same_ratio(own_ratio.m_as(""), ratio.m_as("")):
             raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {own_ratio.m_as(''):g}, but the case's gearbox ratio is {ratio.m_as(''):g}")
         stiffness, backlash, nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]
         if not np.isnan(rows["K_1"][row].magnitude):  # the catalog gives the gear's stiffness curve

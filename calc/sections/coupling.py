@@ -12,7 +12,7 @@ import numpy as np
 from ..domain import coupling as cp
 from ..data.bands import factor_table
 from .case import Case, Declared, Key, Table, once
-from ..data.catalog import Catalog, display_path, load_catalogs
+from ..data.catalog import Catalog, load_catalogs
 from ..domain.coupling import (
     DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input, check_types, f_e_min,
     order_lines, select_coupling,
@@ -478,9 +478,7 @@ class CouplingResult:
             for c in sel.candidates(candidates)
         ]
         return {
-            "catalog": cc.catalog.shown_name,
-            "catalog_sha256": cc.catalog.sha256,
-            "catalogs": [{"catalog": display_path(path), "sha256": sha} for path, sha in cc.catalog.members],
+            **cc.catalog.provenance(),
             "type": cc.type,
             "M_N": self.M_N.to_json(),
             "service_factor": self.service_factor,

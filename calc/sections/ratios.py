@@ -79,12 +79,10 @@ class RatioResult:
             "rms_torque_required": json_of(r.rms_torque_required), "max_speed_required": r.max_speed_required.to_json(),
             "checks": [check_json(c) for c in r.checks], "reasons": r.reasons,
         } for r in self.rows]
-        cat = s.selection.catalog
         return {
             "title": self.case.title,
             "case": display_path(self.case.path),
-            "catalog": display_path(cat.path),
-            "catalog_sha256": cat.sha256,
+            **s.selection.catalog.provenance(),
             "mode": s.selection.mode,
             "rule": s.rule,
             "inertia_ratio_limit": s.inertia_limit,

@@ -171,6 +171,12 @@ def test_two_catalogs_rank_together_each_candidate_naming_its_own(capsys, write_
     assert g["best_of_family"]["MK"] == "MK160-10" and g["selected"] == "MK160-10"
     code, out, _ = run(capsys, case)
     assert f"PASS  MK160-10 [{tmp_path / 'my-maker.csv'}], smallest adequate MK" in out
+    # The ratio search names its rows' files as the gearbox section does (one provenance block).
+    from calc.__main__ import main
+
+    assert main(["ratios", str(case), "--json"]) == 0
+    r = json.loads(capsys.readouterr().out)
+    assert {k: r[k] for k in ("catalog", "catalog_sha256", "catalogs")} == {k: g[k] for k in ("catalog", "catalog_sha256", "catalogs")}
 
 
 def test_a_list_with_a_missing_catalog_names_it(capsys, write_case):
