@@ -407,8 +407,9 @@ def ratios_api(catalog, case, load):
     from calc.domain.gearbox import INERTIA_RATIO_LIMIT
     from calc.domain.ratios import search_ratios
 
-    return search_ratios(catalog, case.profile, load, Q_(SEARCH_T_1N, "N*m"), Q_(SEARCH_N_MAX, "rpm"), inertia_limit=INERTIA_RATIO_LIMIT,
-                         motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
+    return search_ratios(catalog, case.profile, load, Q_(SEARCH_T_1N, "N*m"), Q_(SEARCH_N_MAX, "rpm"),
+                         inertia_limit=INERTIA_RATIO_LIMIT, motor_peak_torque=case.motor_peak_torque,
+                         motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
 
 
 def ratios_numpy(f: Floats):
@@ -856,8 +857,8 @@ def measure_combinations(size: Size) -> list[str]:
     c = COMBINATIONS if size.judged else dict(motors=20, gearboxes=5, ratios=(5, 10), samples=2_000)
     cycle, top, gear, motor = combination_inputs(c["motors"], c["gearboxes"], c["ratios"], c["samples"])
     pairs = len(gear["i"]) * len(motor["J"])
-    api_time, found = min((timed(lambda: search(CycleMoments.of(*cycle), top, gear, motor, INERTIA_RATIO_LIMIT)) for _ in range(max(1, size.repeats // 3))),
-                          key=lambda x: x[0])
+    api_time, found = min((timed(lambda: search(CycleMoments.of(*cycle), top, gear, motor, INERTIA_RATIO_LIMIT))
+                           for _ in range(max(1, size.repeats // 3))), key=lambda x: x[0])
     floor_time, (floor_pick, floor_peak, floor_rms) = timed(lambda: combinations_numpy(cycle, top, gear, motor))
     if found.pick != floor_pick or not (np.allclose(found.peak, floor_peak, rtol=1e-9) and np.allclose(found.rms, floor_rms, rtol=1e-9)):
         raise RuntimeError("combinations: the moments and the raw numpy floor give different torques or picks")

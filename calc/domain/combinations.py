@@ -146,7 +146,8 @@ class Combinations:
     pick: tuple[int, int] | None  # (gearbox row, motor) by RULE; None where no pair is feasible
 
 
-def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict, inertia_limit: float) -> Combinations:
+def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict,
+           inertia_limit: float) -> Combinations:
     """Check every pair of a gearbox row and a motor against the cycle, and pick one (:data:`RULE`).
 
     A pair is feasible where the gearbox passes, its T_2B takes the motor's peak torque, the motor's

@@ -30,7 +30,7 @@ import numpy as np
 from ..data.bands import factor_table
 from ..data.catalog import Catalog, Column, Rule, Schema, some_parts, no_less
 from ..core.errors import CalcError
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
 from ..core import selection
 from ..core.checks import CheckArray, rank
 from .profile import Profile, T_2m, Z_h, duty, n_2m
@@ -109,44 +109,31 @@ HUB_SCHEMA = Schema(
 #: (``[gearbox] shock_factors``).
 SHOCK_FACTORS = factor_table("shock")
 
-_n_2 = Symbol("n_2", "n_{2}", "speed", "rpm", "output speed")
-_i = Symbol("i", "i", "dimensionless", "", "ratio")
-
 n_1 = Formula(
-    Symbol("n_1", "n_{1}", "speed", "rpm", "input speed"),
-    (_n_2, _i),
+    "n_1",
+    ("n_2", "i"),
     lambda sp, n_2, i: n_2 * i,
     "source, S1 criterion 1 (errata E1: n_2m · i <= n_1N) and S5 criterion 1 (errata E5: n_2max · i <= n_1max)",
 )
 
 T_2max = Formula(
-    Symbol("T_2max", r"T_{2\,\mathrm{max}}", "torque", "N*m", "maximum output torque"),
-    (
-        Symbol("T_1B", "T_{1B}", "torque", "N*m", "maximum torque of the motor"),
-        _i,
-        Symbol("f_s", "f_{s}", "dimensionless", "", "shock factor"),
-        Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the gearbox"),
-    ),
+    "T_2max",
+    ("T_1B", "i", "f_s", "eta"),
     lambda sp, T_1B, i, f_s, eta: sp.Mul(T_1B, i, f_s, eta, evaluate=False),  # in the source's order
     "source, S5 calculation 2; read as written: η credited, as for a peak the motor drives through the gearbox "
     "(a braking peak, the load driving back, reaches the output as T_1B · i / η, higher by 1/η²)",
 )
 
 T_2stop = Formula(
-    Symbol("T_2stop", r"T_{2,\mathrm{stop}}", "torque", "N*m", "output torque of an emergency stop"),
-    (Symbol("T_1B", "T_{1B}", "torque", "N*m", "maximum torque of the motor"), _i),
+    "T_2stop",
+    ("T_1B", "i"),
     lambda sp, T_1B, i: T_1B * i,
     "case format, Emergency stop: the motor's peak through the gearbox, no credit for efficiency (η = 1)",
 )
 
 inertia_ratio = Formula(
-    Symbol("lambda", r"\lambda", "dimensionless", "", "load to motor inertia ratio"),
-    (
-        Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia at the input"),
-        Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load inertia at the output"),
-        _i,
-        Symbol("J_motor", r"J_{\mathrm{motor}}", "inertia", "kg*cm**2", "motor inertia"),
-    ),
+    "lambda",
+    ("J_1", "J_L", "i", "J_motor"),
     lambda sp, J_1, J_L, i, J_motor: (J_1 + J_L / i**2) / J_motor,
     "source, S5 criterion 3 (J_motor ≈ J_1 + J_L / i²); errata E6 (reported as a ratio, 1 is ideal)",
 )
@@ -156,18 +143,9 @@ inertia_ratio = Formula(
 INERTIA_RATIO_LIMIT = 10.0
 
 
-_F_2a = Symbol("F_2a", "F_{2a}", "force", "N", "axial force on the output shaft")
-_F_2r = Symbol("F_2r", "F_{2r}", "force", "N", "radial force on the output shaft")
-
 M_2k = Formula(
-    Symbol("M_2k", "M_{2k}", "torque", "N*m", "tilting moment on the output bearing"),
-    (
-        _F_2a,
-        Symbol("y_2", "y_{2}", "length", "mm", "distance of the axial force's line of action from the axis"),
-        _F_2r,
-        Symbol("x_2", "x_{2}", "length", "mm", "distance of the radial force from the output flange (lever arm)"),
-        Symbol("z_2", "z_{2}", "length", "mm", "distance from the output flange to the bearing's centre (catalog; 0 where not given)"),
-    ),
+    "M_2k",
+    ("F_2a", "y_2", "F_2r", "x_2", "z_2"),
     lambda sp, F_2a, y_2, F_2r, x_2, z_2: sp.Add(F_2a * y_2, F_2r * sp.Add(x_2, z_2, evaluate=False), evaluate=False),
     "WITTENSTEIN alpha catalogues, output bearing: M_2k = F_2a · y_2 + F_2r · (x_2 + z_2), read as documented in "
     "calc.domain.gearbox.bearing_checks (z_2 is not in the published data reached; 0 where the catalog gives none)",

@@ -35,7 +35,7 @@ import numpy as np
 
 from ..data.catalog import Column, load_catalog, resolve
 from ..core.errors import CalcError
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
 from ..data.measurement import check_pair, read_measurement, travel_direction, write_measurement
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
 
@@ -54,31 +54,22 @@ COLUMNS = (
 )
 
 stiffness_from_slope = Formula(
-    Symbol("C_t", "C_{t}", "stiffness", "N*m/arcmin", "torsional stiffness, slope of the loop from 50 % to 100 % of T_N"),
-    (
-        Symbol("Delta_T", r"\Delta T", "torque", "N*m", "torque from 50 % to 100 % of T_N"),
-        Symbol("Delta_phi", r"\Delta\varphi", "angle", "arcmin", "twist over that torque, from the fitted line"),
-    ),
+    "C_t",
+    ("Delta_T", "Delta_phi_twist"),
     lambda sp, dT, dphi: dT / dphi,
     "source, Torsional Stiffness: applied torque / deflection at 50 % to 100 % of nominal torque; errata E12",
 )
 
 backlash_from_loop = Formula(
-    Symbol("j_t", "j_{t}", "angle", "arcmin", "torsional backlash, width of the loop at 0 N·m"),
-    (
-        Symbol("phi_max_0", r"\varphi_{\max,0}", "angle", "arcmin", "largest twist at 0 N·m"),
-        Symbol("phi_min_0", r"\varphi_{\min,0}", "angle", "arcmin", "smallest twist at 0 N·m"),
-    ),
+    "j_t",
+    ("phi_max_0", "phi_min_0"),
     lambda sp, hi, lo: hi - lo,
     "source, Backlash: maximum deflection - minimum deflection at 0 Nm of torque; errata E12",
 )
 
 lost_motion_from_loop = Formula(
-    Symbol("phi_LM3", r"\varphi_{\mathrm{LM},3\%}", "angle", "arcmin", "lost motion, width of the loop over ±3 % of T_N"),
-    (
-        Symbol("phi_max_3", r"\varphi_{\max,\pm 3\%}", "angle", "arcmin", "largest twist between -3 % and +3 % of T_N"),
-        Symbol("phi_min_3", r"\varphi_{\min,\pm 3\%}", "angle", "arcmin", "smallest twist between -3 % and +3 % of T_N"),
-    ),
+    "phi_LM3",
+    ("phi_max_3", "phi_min_3"),
     lambda sp, hi, lo: hi - lo,
     "source, Lost Motion: maximum deflection - minimum deflection at ±3 % of nominal torque; errata E12",
 )
@@ -321,7 +312,7 @@ class LoopAnalysis:
         out = []
         for fit in (self.fit_positive, self.fit_negative):
             d_t, d_phi = fit.torque[1] - fit.torque[0], fit.twist[1] - fit.twist[0]
-            out.append(stiffness_from_slope.step(Delta_T=d_t, Delta_phi=d_phi))
+            out.append(stiffness_from_slope.step(Delta_T=d_t, Delta_phi_twist=d_phi))
         out.append(backlash_from_loop.step(phi_max_0=self.backlash_range[1], phi_min_0=self.backlash_range[0]))
         out.append(lost_motion_from_loop.step(phi_max_3=self.lost_motion_range[1], phi_min_3=self.lost_motion_range[0]))
         return out
@@ -413,7 +404,7 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
     band_twists = np.concatenate([at_zero, _level_twists(torque, twist, passes, -edge, half_window), _level_twists(torque, twist, passes, edge, half_window)])
 
     def stiffness(fit):
-        return stiffness_from_slope(Delta_T=fit.torque[1] - fit.torque[0], Delta_phi=fit.twist[1] - fit.twist[0])
+        return stiffness_from_slope(Delta_T=fit.torque[1] - fit.torque[0], Delta_phi_twist=fit.twist[1] - fit.twist[0])
 
     zero_range = Q_(np.array([at_zero.min(), at_zero.max()]), "rad").to("arcmin")
     band_range = Q_(np.array([band_twists.min(), band_twists.max()]), "rad").to("arcmin")

@@ -48,9 +48,9 @@ def rule(inertia_limit: float) -> str:
         The rule, as the outputs print it.
     """
     return (
-        "among the feasible ratios (best gearbox and motor pass) whose inertia ratio λ = (J_1 + J_L / i²) / J_motor is at "
-        f"most {inertia_limit:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within the "
-        "limit, the feasible ratio of lowest λ"
+        "among the feasible ratios (best gearbox and motor pass) whose inertia ratio λ = (J_1 + J_L / i²) / J_motor "
+        f"is at most {inertia_limit:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ "
+        "within the limit, the feasible ratio of lowest λ"
     )
 
 
@@ -157,7 +157,8 @@ def search_ratios(
     lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
     not_made = [c.not_made for c in sel.not_made + motor if c.not_made]
     pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, not_made, inertia_limit)
-    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, inertia_limit, gearbox_passes, feasible, utilization, pick, reason, notes)
+    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, inertia_limit, gearbox_passes, feasible,
+                       utilization, pick, reason, notes)
 
 
 def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str],

@@ -33,28 +33,26 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import CalcError
-from ..core.formula import RADIAN, Formula, Symbol
+from ..core.formula import Formula
 from ..core.units import as_kind, fmt, from_si, to_si
 
-_i = Symbol("i", "i", "dimensionless", "", "ratio")
-
 load_at_input = Formula(
-    Symbol("J_L1", r"J_{L,1}", "inertia", "kg*cm**2", "load inertia referred to the gearbox input"),
-    (Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load inertia at the gearbox output"), _i),
+    "J_L1",
+    ("J_L", "i"),
     lambda sp, J_L, i: J_L / i**2,
     "errata E8 (the load reflected to the input, J_L / i²)",
 )
 
 gearbox_at_input = Formula(
-    Symbol("C_t1", r"C_{t,1}", "stiffness", "N*m/rad", "torsional stiffness of the gearbox referred to its input"),
-    (Symbol("C_t21", "C_{t21}", "stiffness", "N*m/arcmin", "torsional stiffness of the gearbox at its output (catalog)"), _i),
+    "C_t1",
+    ("C_t21", "i"),
     lambda sp, C_t21, i: C_t21 / i**2,
     "errata E11 turned round: an output-side stiffness appears at the input as C / i²",
 )
 
 inertia_at_output = Formula(
-    Symbol("J_out", r"J_{\mathrm{out}}", "inertia", "kg*cm**2", "inertia referred to the gearbox output"),
-    (Symbol("J_in", r"J_{\mathrm{in}}", "inertia", "kg*cm**2", "inertia on the gearbox input (the motor's, the gearbox's J_1)"), _i),
+    "J_out",
+    ("J_in", "i"),
     lambda sp, J_in, i: J_in * i**2,
     "errata E8 and E11: an input-side inertia appears at the output as J · i²",
 )
@@ -212,13 +210,6 @@ class CouplingSpan:
     couplings: str
 
 
-# Named a, b, c drive to load (J_1 is the gearbox's inertia everywhere else).
-_J = [Symbol(f"J_{k}", f"J_{{{k}}}", "inertia", "kg*cm**2", f"{what} of a chain of three masses, referred to one shaft")
-      for k, what in (("a", "the first mass (the drive)"), ("b", "the middle mass"), ("c", "the last mass (the load)"))]
-_C = [Symbol(f"C_{k}", f"C_{{{k}}}", "stiffness", "N*m/rad", f"{what} of a chain of three masses, referred to the same shaft")
-      for k, what in (("ab", "the spring between the first and the middle mass"), ("bc", "the spring between the middle and the last mass"))]
-
-
 def _first_mode_of_three(sp, J_a, J_b, J_c, C_ab, C_bc, rad):
     # det(K - ω² J) = ω² (ω⁴ - p ω² + q) for three masses free at both ends; the lower root of the
     # quadratic, written 2q / (p + √(p² - 4q)) so that it keeps its digits where p² ≫ 4q.
@@ -228,8 +219,8 @@ def _first_mode_of_three(sp, J_a, J_b, J_c, C_ab, C_bc, rad):
 
 
 first_mode_of_three = Formula(
-    Symbol("f_1", "f_{1}", "frequency", "Hz", "first natural frequency of the drive train (of a chain of three masses)"),
-    (*_J, *_C, RADIAN),
+    "f_1",
+    ("J_a", "J_b", "J_c", "C_ab", "C_bc", "rad"),  # masses a, b, c drive to load (J_1 is the gearbox's inertia)
     _first_mode_of_three,
     "the eigenproblem of three masses and two springs, free at both ends, solved in closed form (calc.domain.torsion)",
 )

@@ -128,7 +128,8 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     if not np.all(np.isnan(search.inertia_ratio)):
         lam = bottom.twinx()
         lam.plot(x, search.inertia_ratio, "^:", color="tab:purple", label="inertia ratio λ")
-        lam.axhline(search.inertia_limit, color="tab:purple", linestyle="--", linewidth=1, label=f"λ limit {search.inertia_limit:g}")
+        limit = search.inertia_limit
+        lam.axhline(limit, color="tab:purple", linestyle="--", linewidth=1, label=f"λ limit {limit:g}")
         lam.set_ylabel("inertia ratio λ [–]", color="tab:purple")
         more = lam.get_legend_handles_labels()
         handles, labels = handles + more[0], labels + more[1]

@@ -29,8 +29,8 @@ ORDER = 80
 FURTHER = True
 #: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.domain.stiffness.StiffnessCurve`).
 CURVE_KEYS = (
-    Key("T1", "torque", "the torque up to which K1 holds", "T_1", unit="N*m"),
-    Key("T2", "torque", "the torque up to which K2 holds", "T_2", unit="N*m"),
+    Key("T1", "torque", "the torque up to which K1 holds", "T_L1", unit="N*m"),
+    Key("T2", "torque", "the torque up to which K2 holds", "T_L2", unit="N*m"),
     Key("K1", "stiffness", "slope up to T1", "K_1", unit="N*m/rad"),
     Key("K2", "stiffness", "slope from T1 to T2", "K_2", unit="N*m/rad"),
     Key("K3", "stiffness", "slope above T2", "K_3", unit="N*m/rad"),

@@ -455,7 +455,8 @@ class CouplingResult:
             z = cp.Z.step(A=x["shaft_distance"], H=cat["H"][row])
             out += [("Tube length", z, ""),
                     ("Stiffness of the line shaft", cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row]), "")]
-        return out + [("Natural frequency", cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L=sel.J_L[row]), "compared with 2 f_er")]
+        natural = cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L_coupling=sel.J_L[row])
+        return out + [("Natural frequency", natural, "compared with 2 f_er")]
 
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         """The ``coupling`` results of the JSON contract."""

@@ -24,7 +24,8 @@ MOTOR = Declared("motor", (
     Key("shaft", "bore", "the motor's shaft as ordered (\"19 mm k6\"): picks the gearbox's clamping hub and so its J_1"),
     Key("catalog", "catalog", "a motor catalog (\"motors\" is catalogs/motors.csv): every motor in it is checked against the cycle and ranked"),
     Key("part", "text", "check this motor of the catalog (its ratings and inertia then hold for every section) instead of typed ratings"),
-    Key("max_inertia_ratio", "dimensionless", "highest load-to-motor inertia ratio λ a catalog motor may have", "lambda_max", INERTIA_RATIO_LIMIT),
+    Key("max_inertia_ratio", "dimensionless", "highest load-to-motor inertia ratio λ a catalog motor may have",
+        "lambda_max", INERTIA_RATIO_LIMIT),
     Key("dc_link_voltage", "voltage", "DC-link voltage of the drive: with a catalog's electrical data, the voltage limit", "U_DC", unit="V"),
     Key("curves", "file", "the catalog motors' peak and S1 curves read from the makers' charts: part, curve, speed [unit], torque [unit], source"),
 ), "the motor driving the gearbox")

@@ -12,8 +12,8 @@ from .case import Case, Declared, Key, Table, once
 from ..data.catalog import load_catalogs
 from ..core.errors import CalcError
 from ..domain.gearbox import (
-    HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, same_ratio, select_gearbox,
-    shock_factor,
+    HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, same_ratio,
+    select_gearbox, shock_factor,
 )
 from ..domain.profile import Z_h, n_2m
 from ..core.units import Q_, sig

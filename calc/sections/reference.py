@@ -29,7 +29,8 @@ def _default(key: Key) -> str:
         return ""
     if isinstance(key.default, bool):
         return f"`{str(key.default).lower()}`"
-    return f"`{key.default:g}`" if isinstance(key.default, float) else f"`{key.default}`"  # a float as a case writes it: 10, not 10.0
+    # A float as a case writes it: 10, not 10.0.
+    return f"`{key.default:g}`" if isinstance(key.default, float) else f"`{key.default}`"
 
 
 def _cell(text: str) -> str:

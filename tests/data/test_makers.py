@@ -176,7 +176,8 @@ def test_two_catalogs_rank_together_each_candidate_naming_its_own(capsys, write_
 
     assert main(["ratios", str(case), "--json"]) == 0
     r = json.loads(capsys.readouterr().out)
-    assert {k: r[k] for k in ("catalog", "catalog_sha256", "catalogs")} == {k: g[k] for k in ("catalog", "catalog_sha256", "catalogs")}
+    keys = ("catalog", "catalog_sha256", "catalogs")
+    assert {k: r[k] for k in keys} == {k: g[k] for k in keys}
 
 
 def test_a_list_with_a_missing_catalog_names_it(capsys, write_case):

@@ -28,7 +28,7 @@ def test_two_masses_give_the_source_formula():
     # J_A = 4.7 kg·cm² and J_L = 16.43 kg·cm² gives f_e = 1316.35 Hz (tests/domain/test_coupling.py).
     J_A, J_L, C = Q_(4.7, KG_CM2), Q_(16.43, KG_CM2), Q_(25_000, "N*m/rad")
     modes = natural_frequencies(Q_([4.7, 16.43], KG_CM2), Q_([25_000], "N*m/rad"))
-    assert modes.m_as("Hz") == pytest.approx([f_e(C_T=C, J_A=J_A, J_L=J_L).m_as("Hz")], rel=1e-12)
+    assert modes.m_as("Hz") == pytest.approx([f_e(C_T=C, J_A=J_A, J_L_coupling=J_L).m_as("Hz")], rel=1e-12)
     assert modes.m_as("Hz") == pytest.approx([1316.35], abs=0.01)
 
 

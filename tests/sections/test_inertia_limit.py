@@ -36,7 +36,8 @@ def with_limit(tmp_path, limit, motor: str = ""):
     assert text.count('catalog = "motors"\n') == 1
     part = f'part = "{motor}"\n' if motor else ""
     path = tmp_path / "cases" / f"limit-{limit}{motor}.toml"
-    path.write_text(text.replace('catalog = "motors"\n', f'catalog = "motors"\n{part}max_inertia_ratio = {limit}\n'), encoding="utf-8")
+    motor = f'catalog = "motors"\n{part}max_inertia_ratio = {limit}\n'
+    path.write_text(text.replace('catalog = "motors"\n', motor), encoding="utf-8")
     return path
 
 
@@ -48,11 +49,14 @@ def command(capsys, *args):
     return code, out, err
 
 
+LEAST_RMS = "of these it needs the lowest RMS motor torque, 0.3199 N·m"
+
+
 @pytest.mark.parametrize("limit, within, reason", [
     # 17.92, 13.77 and 9.16 are at most 20: ratios 7, 8 and 10; of these 10 needs the least RMS torque.
-    (20, [7, 8, 10], "6 of 6 ratios are feasible, 3 of them with λ <= 20; of these it needs the lowest RMS motor torque, 0.3199 N·m"),
+    (20, [7, 8, 10], f"6 of 6 ratios are feasible, 3 of them with λ <= 20; {LEAST_RMS}"),
     # 34.87 is at most 40 as well: 5, 7, 8, 10.
-    (40, [5, 7, 8, 10], "6 of 6 ratios are feasible, 4 of them with λ <= 40; of these it needs the lowest RMS motor torque, 0.3199 N·m"),
+    (40, [5, 7, 8, 10], f"6 of 6 ratios are feasible, 4 of them with λ <= 40; {LEAST_RMS}"),
     # The default: 9.16 alone.
     (10, [10], "6 of 6 ratios are feasible, and only this one keeps λ <= 10 (λ = 9.16)"),
     # None is at most 9: the feasible ratio of lowest λ, 10 (9.16).
@@ -82,7 +86,8 @@ def test_the_ratio_search_and_the_motor_section_read_one_limit(tmp_path, capsys)
     j = json.loads(out)
     assert j["inertia_ratio_limit"] == 3 and "is at most 3 (E6)" in j["rule"]
     within = [r["ratio"] for r in j["ratios"] if r["inertia_ratio"] <= 3]
-    assert within == [10] and j["reason"].endswith(f"and only this one keeps λ <= 3 (λ = {j['ratios'][-1]['inertia_ratio']:.3g}).")
+    lam = j["ratios"][-1]["inertia_ratio"]
+    assert within == [10] and j["reason"].endswith(f"and only this one keeps λ <= 3 (λ = {lam:.3g}).")
 
 
 def test_the_pick_moves_with_the_limit():
@@ -91,7 +96,8 @@ def test_the_pick_moves_with_the_limit():
     # and 10 needs less; a limit of 7 keeps neither: the lower λ, 5.
     ratios, parts, feasible, lam = np.array([5.0, 10.0]), np.array(["a", "b"]), np.ones(2, bool), np.array([8.0, 12.0])
     torques = MotorLoad(None, None, Q_([2.0, 1.0], "N*m"), True)
-    assert pick_ratio(ratios, parts, feasible, lam, torques, [], 10.0) == (0, "Ratio 5 (a): 2 of 2 ratios are feasible, and only this one keeps λ <= 10 (λ = 8).")
+    alone = "Ratio 5 (a): 2 of 2 ratios are feasible, and only this one keeps λ <= 10 (λ = 8)."
+    assert pick_ratio(ratios, parts, feasible, lam, torques, [], 10.0) == (0, alone)
     assert pick_ratio(ratios, parts, feasible, lam, torques, [], 20.0)[0] == 1
     k, why = pick_ratio(ratios, parts, feasible, lam, torques, [], 7.0)
     assert k == 0 and "none with λ <= 7; it has the lowest, λ = 8" in why
