@@ -36,7 +36,7 @@ from ..core.formula import Formula
 from ..core.glossary import symbol
 from ..core import selection
 from ..core.checks import CheckArray, rank, within_rating
-from .torsion import Chain, Member, lumped
+from .torsion import MassSpringChain, TrainMember, lumped
 from ..core.selection import Selection
 from ..core.units import Q_, Value, as_kind, fmt, sig
 
@@ -353,7 +353,7 @@ class CouplingSelection(Selection):
     order: np.ndarray
     notes: list
     drive_train: "DriveTrain | None" = None  # the members around the coupling, as the case gives them
-    chain: Chain | None = None  # the drive train lumped, its arrays over the rows (None without drive_train)
+    chain: MassSpringChain | None = None  # the drive train lumped, its arrays over the rows (None without drive_train)
     modes: object = None  # its natural frequencies per row, lowest first (quantity, rows × modes)
 
     candidate_type = CouplingCandidate
@@ -584,7 +584,8 @@ def select_coupling(
         if drive_train is not None:
             # Half the coupling on each end of its spring, as J_A and J_L take it (E7).
             half = catalog["J"] / 2
-            chain = lumped((*drive_train.drive, Member("coupling", half, c_t, half), *drive_train.load), f"{where}: drive train")
+            coupling = TrainMember("coupling", half, c_t, half)
+            chain = lumped((*drive_train.drive, coupling, *drive_train.load), f"{where}: drive train")
             modes = chain.natural_frequencies()
 
     def full(q):

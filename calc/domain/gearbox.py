@@ -153,7 +153,7 @@ M_2k = Formula(
 
 
 @dataclass(frozen=True)
-class OutputLoad:
+class OutputForces:
     """External forces on the gearbox output (``[load]``): each None where the case gives none."""
 
     axial_force: object = None  # F_2a
@@ -166,7 +166,7 @@ class OutputLoad:
         return self.axial_force is not None or self.radial_force is not None
 
 
-def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
+def bearing_checks(load: OutputForces, catalog: Catalog) -> list:
     """The output bearing's checks against the catalog's ratings, every row at once.
 
     ``F_2a <= F_2A`` (axial), ``F_2r <= F_2R`` (radial) and ``M_2k <= M_2K`` (tilting moment,
@@ -187,7 +187,7 @@ def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
     >>> from calc.data.catalog import load_catalog, resolve
     >>> rows = load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA)
     >>> rows = rows.rows([rows.index("NPT035-10", "part")])
-    >>> [c.at(0).criterion for c in bearing_checks(OutputLoad(Q_(1000, "N"), Q_(500, "N"), Q_(50, "mm")), rows)]
+    >>> [c.at(0).criterion for c in bearing_checks(OutputForces(Q_(1000, "N"), Q_(500, "N"), Q_(50, "mm")), rows)]
     ['F_2a <= F_2A', 'F_2r <= F_2R', 'M_2k <= M_2K']
     """
     n = len(catalog)
@@ -383,7 +383,7 @@ def select_gearbox(
     motor_inertia=None,
     load_inertia=None,
     emergency_stop_torque=None,
-    output_load: OutputLoad | None = None,
+    output_load: OutputForces | None = None,
     hubs: Catalog | None = None,
     motor_shaft=None,
     shock_factors=SHOCK_FACTORS,

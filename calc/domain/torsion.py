@@ -59,7 +59,7 @@ inertia_at_output = Formula(
 
 
 @dataclass(frozen=True)
-class Member:
+class TrainMember:
     """One member of a drive train, drive to load, referred to the chain's shaft.
 
     ``inertia`` sits on the member's drive end; ``stiffness`` (None for a rigid mass) joins it to
@@ -74,8 +74,8 @@ class Member:
 
 
 @dataclass(frozen=True)
-class Chain:
-    """Masses and springs in series, drive to load, as lumped from :class:`Member` s.
+class MassSpringChain:
+    """Masses and springs in series, drive to load, as lumped from :class:`TrainMember` s.
 
     ``inertias`` has the masses on its last axis, ``stiffnesses`` the springs between them (one
     fewer); leading axes run over candidates. ``masses`` and ``springs`` name what each holds.
@@ -92,7 +92,7 @@ class Chain:
         return natural_frequencies(self.inertias, self.stiffnesses)
 
 
-def lumped(members, where: str = "drive train") -> Chain:
+def lumped(members, where: str = "drive train") -> MassSpringChain:
     """The chain of masses and springs of ``members`` (drive to load): inertias with no spring
     between them add into one mass.
 
@@ -104,10 +104,10 @@ def lumped(members, where: str = "drive train") -> Chain:
 
     >>> from calc.core.units import Q_
     >>> chain = lumped([
-    ...     Member("motor", Q_(4.2, "kg*cm**2")),
-    ...     Member("coupling", Q_(0.5, "kg*cm**2"), Q_(25_000, "N*m/rad"), Q_(0.5, "kg*cm**2")),
-    ...     Member("gearbox", Q_(0.93, "kg*cm**2"), Q_(756.3, "N*m/rad")),
-    ...     Member("load", Q_(15, "kg*cm**2")),
+    ...     TrainMember("motor", Q_(4.2, "kg*cm**2")),
+    ...     TrainMember("coupling", Q_(0.5, "kg*cm**2"), Q_(25_000, "N*m/rad"), Q_(0.5, "kg*cm**2")),
+    ...     TrainMember("gearbox", Q_(0.93, "kg*cm**2"), Q_(756.3, "N*m/rad")),
+    ...     TrainMember("load", Q_(15, "kg*cm**2")),
     ... ])
     >>> chain.masses, chain.springs
     (('motor + coupling', 'coupling + gearbox', 'load'), ('coupling', 'gearbox'))
@@ -132,7 +132,8 @@ def lumped(members, where: str = "drive train") -> Chain:
     masses.append(sum(mass))
     inertias = np.stack(np.broadcast_arrays(*masses), axis=-1)
     stiffnesses = np.stack(np.broadcast_arrays(*springs), axis=-1) if springs else np.zeros(inertias.shape[:-1] + (0,))
-    return Chain(tuple(names), tuple(spring_names), from_si(inertias, "inertia", "kg*cm**2"), from_si(stiffnesses, "stiffness", "N*m/rad"))
+    return MassSpringChain(tuple(names), tuple(spring_names), from_si(inertias, "inertia", "kg*cm**2"),
+                           from_si(stiffnesses, "stiffness", "N*m/rad"))
 
 
 def natural_frequencies(inertias, stiffnesses, where: str = "drive train"):

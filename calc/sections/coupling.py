@@ -21,7 +21,7 @@ from ..core.errors import CalcError
 from ..domain.fits import parse_bore
 from ..domain.gearbox import n_1
 from ..domain.profile import Z_h
-from ..domain.torsion import CouplingSpan, Member, gearbox_at_input, inertia_at_output, load_at_input
+from ..domain.torsion import CouplingSpan, TrainMember, gearbox_at_input, inertia_at_output, load_at_input
 from ..core.units import Q_, Value, fmt, sig
 from . import gearbox
 from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
@@ -169,7 +169,7 @@ def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain
     case) there is no chain: the resonance checks are then not made (:func:`select_coupling`)."""
     if inputs["drive_inertia"] is None or inputs["load_inertia"] is None:
         return None, ()
-    two_mass = (Member("motor", inputs["drive_inertia"]),), (Member("load", inputs["load_inertia"]),)
+    two_mass = (TrainMember("motor", inputs["drive_inertia"]),), (TrainMember("load", inputs["load_inertia"]),)
     if not gearbox.applies(case):
         return DriveTrain(*two_mass), ()
     if side is None:
@@ -195,12 +195,14 @@ def _drive_train(case: Case, side: str | None, inputs: dict) -> tuple[DriveTrain
         j_l = load_at_input.step(J_L=given, i=i)
         c_g = gearbox_at_input.step(C_t21=C_t21, i=i)
         steps = (("Load reflected to the gearbox input", j_l), (f"Stiffness of {part} at its input", c_g))
-        train = DriveTrain(two_mass[0], (Member("gearbox", J_1, c_g.result), Member("load", j_l.result)), stand_in, shaft)
+        load = (TrainMember("gearbox", J_1, c_g.result), TrainMember("load", j_l.result))
+        train = DriveTrain(two_mass[0], load, stand_in, shaft)
         return train, steps
     j_m = inertia_at_output.step(J_in=given, i=i)
     j_g = inertia_at_output.step(J_in=J_1, i=i)
     steps = (("Motor referred to the gearbox output", j_m), (f"J_1 of {part} referred to its output", j_g))
-    return DriveTrain((Member("motor", j_m.result), Member("gearbox", j_g.result, C_t21)), two_mass[1], stand_in, shaft), steps
+    drive = (TrainMember("motor", j_m.result), TrainMember("gearbox", j_g.result, C_t21))
+    return DriveTrain(drive, two_mass[1], stand_in, shaft), steps
 
 
 def _from_the_case(case: Case, s: Table) -> tuple[dict, dict]:

@@ -12,7 +12,7 @@ from ..data.catalog import load_catalogs
 from ..core.errors import CalcError
 from ..domain.fits import parse_bore
 from ..data.measurement import measurement_path
-from ..domain.gearbox import INERTIA_RATIO_LIMIT, OutputLoad
+from ..domain.gearbox import INERTIA_RATIO_LIMIT, OutputForces
 from ..domain.motor_ratings import ELECTRICAL, SCHEMA
 
 ORDER = 10
@@ -70,7 +70,7 @@ def read(top: Table, case: Case) -> None:
     load = top.table(LOAD.name, LOAD.keys)
     if load:
         case.load_inertia = load.positive("inertia")
-        forces = OutputLoad(
+        forces = OutputForces(
             axial_force=load.positive("axial_force", what="an axial force"),
             radial_force=load.positive("radial_force", what="a radial force"),
             lever_arm=_distance(load, "lever_arm"),
