@@ -375,6 +375,22 @@ def symbol(name: str) -> Symbol:
         raise ValueError(f"calc.core.glossary: no symbol {name!r} is declared") from None
 
 
+def math(name: str) -> str:
+    r"""A symbol by its name as inline math, for a label or a table's cell: ``$T_{\mathrm{2N}}$``.
+
+    Parameters
+    ----------
+    name : str
+        A symbol as code or prose writes it.
+
+    Returns
+    -------
+    str
+        Its LaTeX (:func:`latex`) between dollars.
+    """
+    return f"${latex(name)}$"
+
+
 def latex(name: str) -> str:
     r"""A symbol's LaTeX by its name: the declared symbol's, else its name typeset by :func:`typeset`.
 

@@ -133,22 +133,6 @@ def symbol_latex(name: str) -> str:
     return glossary_latex(name)
 
 
-def symbol_math(name: str) -> str:
-    r"""A symbol by its name as inline math for a table's header or cell: ``$T_{\mathrm{2N}}$``.
-
-    Parameters
-    ----------
-    name : str
-        The symbol as code writes it.
-
-    Returns
-    -------
-    str
-        The symbol's LaTeX between dollars.
-    """
-    return f"${glossary_latex(name)}$"
-
-
 def symbol_text(name: str) -> str:
     """A symbol by its name in code as plain text, its Greek letter written as the letter
     (``vartheta`` as ϑ, ``T_1B`` as is).
