@@ -21,6 +21,8 @@ import dataclasses
 import re
 from dataclasses import dataclass
 
+from .units import declared_once
+
 
 @dataclass(frozen=True)
 class Symbol:
@@ -129,18 +131,8 @@ def _symbol(name: str, kind: str, unit: str, description: str, written: str | No
     return Symbol(name, latex or typeset(written or name), kind, unit, description, per_segment, value)
 
 
-def _by_name(symbols: tuple) -> dict[str, Symbol]:
-    """The symbols by name; a name given twice raises (each name is one quantity)."""
-    out: dict[str, Symbol] = {}
-    for s in symbols:
-        if s.name in out:
-            raise ValueError(f"calc.core.glossary: the symbol {s.name!r} is declared twice")
-        out[s.name] = s
-    return out
-
-
 #: Every symbol of the formulas, by name.
-SYMBOLS: dict[str, Symbol] = _by_name((
+SYMBOLS: dict[str, Symbol] = declared_once((
     # Constants of formulas (errata E15: angles as a dimension).
     _symbol("rad", "angle", "rad", "one radian (E15: J·α = T·rad, an arc is r · φ with φ in radians)", value="1 rad"),
     _symbol("g", "linear_acceleration", "m/s**2", "standard gravity", value="9.80665 m/s**2"),
@@ -353,7 +345,7 @@ SYMBOLS: dict[str, Symbol] = _by_name((
     _symbol("t_d", "time", "s", "deceleration time"),
     _symbol("t_r", "time", "s", "time of a speed ramp (acceleration or deceleration time)"),
     _symbol("t_j", "time", "s", "jerk time: the ramp of constant jerk at each end of a speed ramp"),
-))
+), "symbol")
 
 
 def symbol(name: str) -> Symbol:

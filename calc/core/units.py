@@ -87,18 +87,31 @@ def angle_power(units) -> float:
     return float(root._units.get("radian", 0))
 
 
-def _by_name(kinds: tuple) -> dict[str, Kind]:
-    """The kinds by name; a name given twice raises (the later would silently replace the earlier)."""
-    out: dict[str, Kind] = {}
-    for k in kinds:
-        if k.name in out:
-            raise ValueError(f"calc.core.units: the kind {k.name!r} is declared twice")
-        out[k.name] = k
+def declared_once(items: tuple, what: str) -> dict:
+    """Declarations by their ``name``; a name given twice raises (a dict would keep the last silently).
+
+    Parameters
+    ----------
+    items : tuple
+        Objects with a ``name``.
+    what : str
+        What they are, for the message (``"kind"``).
+
+    Returns
+    -------
+    dict
+        Each item by its name, in the order given.
+    """
+    out = {}
+    for item in items:
+        if item.name in out:
+            raise ValueError(f"calc.core: the {what} {item.name!r} is declared twice")
+        out[item.name] = item
     return out
 
 
-#: Every kind by its name; a name declared twice is an error at import (a dict would keep the last silently).
-KINDS: dict[str, Kind] = _by_name((
+#: Every kind by its name, each declared once.
+KINDS: dict[str, Kind] = declared_once((
     Kind("time", "[time]", 0, "s", '"0.2 s"'),
     Kind("speed", "1/[time]", 1, "rad/s", '"300 rpm"'),
     Kind("angular_acceleration", "1/[time]**2", 1, "rad/s**2", '"60 rad/s**2"'),
@@ -126,7 +139,7 @@ KINDS: dict[str, Kind] = _by_name((
     Kind("inductance", "[mass]*[length]**2/[time]**2/[current]**2", 0, "H", '"4.2 mH"'),
     Kind("torque_constant", "[mass]*[length]**2/[time]**2/[current]", 0, "N*m/A", '"0.88 N*m/A"'),
     Kind("voltage_constant", "[mass]*[length]**2/[time]**2/[current]", -1, "V*s/rad", '"57 V/krpm"'),
-))
+), "kind")
 
 
 def kind(name: str | Kind) -> Kind:

@@ -11,8 +11,8 @@ import pytest
 import calc.domain
 from calc import Q_
 from calc.core.formula import REGISTRY
-from calc.core.glossary import SYMBOLS, Symbol, _by_name, latex, symbol, typeset
-from calc.core.units import KINDS, as_kind
+from calc.core.glossary import SYMBOLS, Symbol, latex, symbol, typeset
+from calc.core.units import KINDS, as_kind, declared_once
 
 CALC = Path(calc.domain.__file__).resolve().parent.parent
 
@@ -46,7 +46,7 @@ def test_no_module_but_the_glossary_declares_a_symbol():
 def test_a_name_is_declared_once():
     twice = (Symbol("i", "i", "dimensionless", "", "ratio"), Symbol("i", "i", "dimensionless", "", "another ratio"))
     with pytest.raises(ValueError, match="the symbol 'i' is declared twice"):
-        _by_name(twice)
+        declared_once(twice, "symbol")
     with pytest.raises(ValueError, match="no symbol 'T_9' is declared"):
         symbol("T_9")
 

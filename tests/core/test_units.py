@@ -207,8 +207,8 @@ def test_the_unit_cache_belongs_to_this_environment():
 
 def test_a_kind_declared_twice_is_refused():
     # A dict built from the declarations kept the last of two "angular_acceleration" kinds silently.
-    from calc.core.units import Kind, _by_name
+    from calc.core.units import Kind, declared_once
 
     twice = (Kind("speed", "1/[time]", 1, "rad/s", '"300 rpm"'), Kind("speed", "1/[time]", 1, "rad/s", '"3 rpm"'))
     with pytest.raises(ValueError, match="the kind 'speed' is declared twice"):
-        _by_name(twice)
+        declared_once(twice, "kind")
