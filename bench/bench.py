@@ -404,10 +404,12 @@ SEARCH_T_1N, SEARCH_N_MAX = 4.0, 6000.0  # N·m, rpm
 def ratios_api(catalog, case, load):
     """The public API: quantities in, a :class:`calc.domain.ratios.RatioSearch` out."""
     from calc import Q_
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
     from calc.domain.ratios import search_ratios
 
     return search_ratios(catalog, case.profile, load, Q_(SEARCH_T_1N, "N*m"), Q_(SEARCH_N_MAX, "rpm"),
-                         motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
+                         inertia_limit=INERTIA_RATIO_LIMIT, motor_peak_torque=case.motor_peak_torque,
+                         motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
 
 
 def ratios_numpy(f: Floats):
@@ -417,7 +419,7 @@ def ratios_numpy(f: Floats):
     ratio and the pick (lowest RMS among feasible ratios with λ <= 10). Returns the best row of
     each ratio and the pick."""
     from calc.core.checks import BOUNDARY_RTOL
-    from calc.domain.ratios import INERTIA_RATIO_LIMIT
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
 
     order, passes, _, _ = select_numpy(f, slice(None))
     ratios, group = np.unique(f.ratio, return_inverse=True)
@@ -447,7 +449,7 @@ def ratios_loop(catalog, case, rows: int):
 
     from calc import Q_
     from calc.core.checks import BOUNDARY_RTOL
-    from calc.domain.ratios import INERTIA_RATIO_LIMIT
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
 
     best, fails = {}, {}
     for key in loop_keys(catalog, dataclasses.replace(case, ratio=None), rows):
@@ -813,6 +815,8 @@ def combination_inputs(motors: int, gearboxes: int, ratios, samples: int, seed: 
 def combinations_numpy(cycle, top_speed, gear, motor):
     """The same search in raw numpy: each gearbox row's motor torque over every sample for every
     motor at once (motors × samples), its peak and RMS, and the same checks and rule."""
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
+
     dt, T, w, a = cycle
     back = T * w < 0
     peak = np.empty((len(gear["i"]), len(motor["J"])))
@@ -824,7 +828,7 @@ def combinations_numpy(cycle, top_speed, gear, motor):
     i = gear["i"][:, None]
     lam = (gear["J_1"][:, None] + gear["J_L"] / i**2) / motor["J"]
     u = (peak / motor["peak_torque"], rms / motor["rated_torque"], top_speed * i / motor["max_speed"],
-         motor["peak_torque"] / gear["peak_limit"][:, None], lam / 10.0)
+         motor["peak_torque"] / gear["peak_limit"][:, None], lam / INERTIA_RATIO_LIMIT)
     feasible = gear["passes"][:, None] & np.logical_and.reduce([x <= 1 + 1e-9 for x in u])
     rows, cols = np.nonzero(feasible)
     keys = (gear["i"][rows], rms[rows, cols] / motor["rated_torque"][cols], gear["size"][rows], motor["J"][cols], motor["rated_torque"][cols])
@@ -848,12 +852,13 @@ def combinations_loop(cycle, gear, motor, pairs):
 
 def measure_combinations(size: Size) -> list[str]:
     from calc.domain.combinations import CycleMoments, search
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
 
     c = COMBINATIONS if size.judged else dict(motors=20, gearboxes=5, ratios=(5, 10), samples=2_000)
     cycle, top, gear, motor = combination_inputs(c["motors"], c["gearboxes"], c["ratios"], c["samples"])
     pairs = len(gear["i"]) * len(motor["J"])
-    api_time, found = min((timed(lambda: search(CycleMoments.of(*cycle), top, gear, motor)) for _ in range(max(1, size.repeats // 3))),
-                          key=lambda x: x[0])
+    api_time, found = min((timed(lambda: search(CycleMoments.of(*cycle), top, gear, motor, INERTIA_RATIO_LIMIT))
+                           for _ in range(max(1, size.repeats // 3))), key=lambda x: x[0])
     floor_time, (floor_pick, floor_peak, floor_rms) = timed(lambda: combinations_numpy(cycle, top, gear, motor))
     if found.pick != floor_pick or not (np.allclose(found.peak, floor_peak, rtol=1e-9) and np.allclose(found.rms, floor_rms, rtol=1e-9)):
         raise RuntimeError("combinations: the moments and the raw numpy floor give different torques or picks")

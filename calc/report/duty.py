@@ -6,11 +6,10 @@ from __future__ import annotations
 import dataclasses
 
 from ..domain.gearbox import SHOCK_FACTORS
-from ..domain.profile import t_k as t_k_symbol
 from ..sections import duty as sections_duty
 from ..core.units import sig
-from .common import gearbox_symbols, nothing
-from .latex import latex_escape, num, render, step_block, table
+from .common import nothing
+from .latex import latex_escape, num, render, step_block, symbol_latex, symbol_math, table
 
 NAME = "duty"
 
@@ -22,18 +21,19 @@ def shock_factor_block(zh, table=SHOCK_FACTORS) -> str:
     return render(
         "shock-factor.tex.j2", fs=f"{table.factors[k]:g}", band=table.text(k, latex=True),
         zh=sig(zh.m_as(table.unit)), source=latex_escape(table.source),
+        f_s=symbol_latex("f_s"), Z_h=symbol_latex("Z_h"),
     )
 
 
 def inputs(report) -> list[str]:
-    p, s = report.case.profile, gearbox_symbols()
+    p = report.case.profile
     rows = []
     for k, (phase, t, n, T) in enumerate(zip(p.phases, p.durations, p.speeds, p.torques), start=1):
         moving = phase != "pause"
         rows.append([str(k), phase, num(t, "s"), num(n, "rpm") if moving else "–", num(T, "N*m") if moving else "–"])
     return [table(
         r"@{}r l r r r@{}",
-        ["k", "Phase", f"${t_k_symbol.latex}$ [s]", rf"${s['n_2k'].latex}$ [rpm]", rf"${s['T_2k'].latex}$ [N·m]"],
+        ["k", "Phase", f"{symbol_math('t_k')} [s]", f"{symbol_math('n_2k')} [rpm]", f"{symbol_math('T_2k')} [N·m]"],
         rows,
         caption="Load cycle at the gearbox output (case key \\texttt{[[profile]]})" if report.case.motion is None
         else "Load cycle at the gearbox output, derived from the motion (below)",

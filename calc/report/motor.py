@@ -7,7 +7,7 @@ from __future__ import annotations
 from ..domain.motor import T_1rms
 from ..core.units import latex_unit, sig
 from .common import candidates_table, checks_table, input_row, nothing, rejected, result_of
-from .latex import itemize, latex_escape, prose, q, step_block, table
+from .latex import itemize, latex_escape, prose, q, step_block, symbol_math, table
 
 NAME = "motor"
 
@@ -72,7 +72,8 @@ def candidates(report) -> list[str]:
              latex_escape(c.form)] for c in listed[:SHOWN_ROWS]]
     more = f"; {len(listed) - SHOWN_ROWS} more in the candidates' utilization below" if len(listed) > SHOWN_ROWS else ""
     return [r"\subsection*{Motor}",
-            table(r"@{}l r r r l@{}", ["Part", "$M_N$", r"$J_{\mathrm{motor}}$", r"$\lambda$", "Peak characteristic"], rows,
+            table(r"@{}l r r r l@{}",
+                  ["Part", *map(symbol_math, ("M_N_motor", "J_motor", "lambda")), "Peak characteristic"], rows,
                   caption=latex_escape(f"The motors of {sel.catalog.shown_name}, best first ({sel.inertia_limit:g} is the limit of λ, "
                                        f"from {sel.inertia_limit_from}){more}"), small=True),
             candidates_table(listed, sel.selected, latex_escape("Utilization of each check of the motor candidates, best first")),

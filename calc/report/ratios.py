@@ -4,8 +4,7 @@ the ratio a reviewer should pick and why (the rule of :mod:`calc.domain.ratios`)
 from __future__ import annotations
 
 from ..data.catalog import display_path
-from ..domain.ratios import RULE
-from .latex import latex_escape, prose, q, table, util, verdict_mark
+from .latex import latex_escape, prose, q, symbol_latex, symbol_math, table, util, verdict_mark
 from .common import nothing
 
 NAME = "ratios"
@@ -22,10 +21,11 @@ def results(report) -> list[str]:
     return [
         r"\subsection*{The ratio}",
         prose(r.search.reason),
-        table(r"@{}r l r r r r r l@{}", ["$i$", "Best gearbox", "Utilization", r"$\lambda$", r"$T_{1,\mathrm{peak}}$",
-                                          r"$T_{1,\mathrm{rms}}$", r"$n_{2\mathrm{max}} \cdot i$", "Verdict"], rows,
+        table(r"@{}r l r r r r r l@{}",
+              [symbol_math("i"), "Best gearbox", "Utilization", *map(symbol_math, ("lambda", "T_1peak", "T_1rms")),
+               rf"${symbol_latex('n_2max')} \cdot i$", "Verdict"], rows,
               caption=latex_escape(f"The case at every ratio of {display_path(r.search.selection.catalog.path)}, each with its best gearbox"),
-              note=prose(f"Rule: {RULE}.")),
+              note=prose(f"Rule: {r.search.rule}.")),
     ]
 
 

@@ -18,6 +18,7 @@ from ..core.checks import CheckArray
 from ..core.errors import CalcError
 from ..core.units import Q_, Value, fmt, parse_quantity, sig
 from ..data.measurement import measurement_path
+from ..domain.gearbox import same_ratio
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
 from . import coupling, gearbox
 from .common import Governing, Verdict, json_of, number, quantity
@@ -28,8 +29,8 @@ ORDER = 80
 FURTHER = True
 #: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.domain.stiffness.StiffnessCurve`).
 CURVE_KEYS = (
-    Key("T1", "torque", "the torque up to which K1 holds", "T_1", unit="N*m"),
-    Key("T2", "torque", "the torque up to which K2 holds", "T_2", unit="N*m"),
+    Key("T1", "torque", "the torque up to which K1 holds", "T_L1", unit="N*m"),
+    Key("T2", "torque", "the torque up to which K2 holds", "T_L2", unit="N*m"),
     Key("K1", "stiffness", "slope up to T1", "K_1", unit="N*m/rad"),
     Key("K2", "stiffness", "slope from T1 to T2", "K_2", unit="N*m/rad"),
     Key("K3", "stiffness", "slope above T2", "K_3", unit="N*m/rad"),
@@ -306,7 +307,7 @@ def _component(case: Case, t: Table, ratio, out: AccuracyCase) -> Component:
         if name == SELECTED:
             name = chosen_part
         own_ratio = rows["ratio"][row]
-        if ratio is not None and not np.isclose(own_ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
+        if ratio is not None and not same_ratio(own_ratio.m_as(""), ratio.m_as("")):
             raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {own_ratio.m_as(''):g}, but the case's gearbox ratio is {ratio.m_as(''):g}")
         stiffness, backlash, nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]
         if not np.isnan(rows["K_1"][row].magnitude):  # the catalog gives the gear's stiffness curve
