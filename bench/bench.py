@@ -101,8 +101,10 @@ class Size:
     judged: bool  # whether the figures are held against the targets
 
 
-FULL = Size(rows=100_000, loop_rows=2_000, sweep=(40, 50, 50), sweep_large=(100, 100, 100), samples=1_000_000, repeats=15, runs=5, judged=True)
-QUICK = Size(rows=300, loop_rows=30, sweep=(4, 5, 5), sweep_large=(5, 5, 8), samples=2_000, repeats=1, runs=1, judged=False)
+FULL = Size(rows=100_000, loop_rows=2_000, sweep=(40, 50, 50), sweep_large=(100, 100, 100), samples=1_000_000,
+            repeats=15, runs=5, judged=True)
+QUICK = Size(rows=300, loop_rows=30, sweep=(4, 5, 5), sweep_large=(5, 5, 8), samples=2_000, repeats=1, runs=1,
+             judged=False)
 
 
 def timed(fn) -> tuple[float, object]:
@@ -150,7 +152,8 @@ print(time.perf_counter() - t0, resource.getrusage(resource.RUSAGE_CHILDREN).ru_
 
 def measured_run(command: list[str]) -> tuple[float, float]:
     """The wall time (s) and peak resident memory (MB) of one fresh process of ``command``."""
-    done = subprocess.run([sys.executable, "-c", _MEASURED_CHILD, *command], cwd=ROOT, check=True, capture_output=True, text=True)
+    done = subprocess.run([sys.executable, "-c", _MEASURED_CHILD, *command], cwd=ROOT, check=True, capture_output=True,
+                          text=True)
     seconds, max_rss_kib = done.stdout.split()  # Linux reports ru_maxrss in KiB
     return float(seconds), int(max_rss_kib) / 1024
 
@@ -198,7 +201,8 @@ def write_synthetic_catalog(path: Path, rows: int, ratio, seed: int = 1) -> None
         f.write(HEADER + "\n")
         for k in range(rows):
             f.write(
-                f"SYN{k:06d}-{ratios[k]:g},SYN,{ratios[k]:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},{eta[k]},"
+                f"SYN{k:06d}-{ratios[k]:g},SYN,{ratios[k]:g},{t_2n[k]},{t_2b[k]},{t_2not[k]},{n_1n[k]},{n_1max[k]},"
+                f"{eta[k]},"
                 f"{backlash[k]},{c_t21[k]},{j_1[k]},{illustrative[k]},synthetic\n"
             )
 
@@ -289,7 +293,8 @@ def select_numpy(f: Floats, rows):
     _ = (j_1 + f.J_L / i**2) / f.J_motor  # inertia ratio, as the API gives it
     u_stop = f.T_1B * i / t_2not  # the emergency stop, in both modes; not checked without T_2Not
     governing = u[2:] if s5 else u[:2]
-    passes = np.logical_and.reduce([g <= 1.0 + BOUNDARY_RTOL for g in governing]) & ((u_stop <= 1.0 + BOUNDARY_RTOL) | np.isnan(t_2not))
+    passes = (np.logical_and.reduce([g <= 1.0 + BOUNDARY_RTOL for g in governing])
+              & ((u_stop <= 1.0 + BOUNDARY_RTOL) | np.isnan(t_2not)))
     worst = np.fmax(np.max(governing, axis=0), u_stop)
     worst = np.where(np.isnan(worst), np.inf, worst)
     size = np.where(passes, t_2b if s5 else t_2n, 0.0)
@@ -348,7 +353,8 @@ def loop_keys(catalog, case, rows: int) -> list:
         _ = ((j_1[k] + J_L / i**2) / J_motor).m_as("")
         u_stop = (T_1B * i / t_2not[k]).m_as("")
         governing = u[2:] if s5 else u[:2]
-        passes = all(x <= 1.0 + BOUNDARY_RTOL for x in governing) and (np.isnan(u_stop) or u_stop <= 1.0 + BOUNDARY_RTOL)
+        passes = (all(x <= 1.0 + BOUNDARY_RTOL for x in governing)
+                  and (np.isnan(u_stop) or u_stop <= 1.0 + BOUNDARY_RTOL))
         size = (t_2b[k] if s5 else t_2n[k]).m_as("N*m") if passes else 0.0
         later = passes and str(catalog.text["illustrative"][k]).lower() == "yes"
         worst = max(governing) if np.isnan(u_stop) else max(*governing, u_stop)
@@ -387,9 +393,11 @@ def measure_rank(size: Size, workdir: Path) -> list[str]:
 
     return [
         line("catalog_load_100k", load_time, "s", note=f"{size.rows} rows read and validated; not part of rank"),
-        line("rank_100k", api_time, "s", note=f"{size.rows} rows, rows_at_ratio + select_gearbox, quantities in and out"),
+        line("rank_100k", api_time, "s",
+             note=f"{size.rows} rows, rows_at_ratio + select_gearbox, quantities in and out"),
         line("rank_numpy_100k", floor_time, "s", note="the same on float arrays"),
-        line("loop_100k", loop_scaled, "s", note=f"pint scalars row by row: {loop_rows} rows timed, scaled to {size.rows}"),
+        line("loop_100k", loop_scaled, "s",
+             note=f"pint scalars row by row: {loop_rows} rows timed, scaled to {size.rows}"),
         line("rank_vs_numpy", api_time / floor_time, "x", ("<=", 2)),
         line("loop_vs_rank", loop_scaled / api_time, "x", (">=", 100)),
     ]
@@ -404,10 +412,12 @@ SEARCH_T_1N, SEARCH_N_MAX = 4.0, 6000.0  # N·m, rpm
 def ratios_api(catalog, case, load):
     """The public API: quantities in, a :class:`calc.domain.ratios.RatioSearch` out."""
     from calc import Q_
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
     from calc.domain.ratios import search_ratios
 
     return search_ratios(catalog, case.profile, load, Q_(SEARCH_T_1N, "N*m"), Q_(SEARCH_N_MAX, "rpm"),
-                         motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
+                         inertia_limit=INERTIA_RATIO_LIMIT, motor_peak_torque=case.motor_peak_torque,
+                         motor_inertia=case.motor_inertia, load_inertia=case.load_inertia)
 
 
 def ratios_numpy(f: Floats):
@@ -417,7 +427,7 @@ def ratios_numpy(f: Floats):
     ratio and the pick (lowest RMS among feasible ratios with λ <= 10). Returns the best row of
     each ratio and the pick."""
     from calc.core.checks import BOUNDARY_RTOL
-    from calc.domain.ratios import INERTIA_RATIO_LIMIT
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
 
     order, passes, _, _ = select_numpy(f, slice(None))
     ratios, group = np.unique(f.ratio, return_inverse=True)
@@ -447,7 +457,7 @@ def ratios_loop(catalog, case, rows: int):
 
     from calc import Q_
     from calc.core.checks import BOUNDARY_RTOL
-    from calc.domain.ratios import INERTIA_RATIO_LIMIT
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
 
     best, fails = {}, {}
     for key in loop_keys(catalog, dataclasses.replace(case, ratio=None), rows):
@@ -466,7 +476,8 @@ def ratios_loop(catalog, case, rows: int):
         lam = ((catalog["J_1"][k] + case.load_inertia / i**2) / case.motor_inertia).m_as("")
         ok = not fails[k] and all(
             x <= 1.0 + BOUNDARY_RTOL
-            for x in ((peak / case.motor_peak_torque).m_as(""), (rms / Q_(SEARCH_T_1N, "N*m")).m_as(""), (speed / Q_(SEARCH_N_MAX, "rpm")).m_as(""))
+            for x in ((peak / case.motor_peak_torque).m_as(""), (rms / Q_(SEARCH_T_1N, "N*m")).m_as(""),
+                      (speed / Q_(SEARCH_N_MAX, "rpm")).m_as(""))
         )
         if ok and lam <= INERTIA_RATIO_LIMIT * (1 + BOUNDARY_RTOL):
             keyed.append((rms.m_as("N*m"), r))
@@ -487,7 +498,8 @@ def measure_ratios(size: Size, workdir: Path) -> list[str]:
     catalog = load_catalog(path, SCHEMA)
     load = output_load(case)
     f = floats(catalog, case)
-    api_time, search, floor_time, (rows, pick) = best_of_pair(lambda: ratios_api(catalog, case, load), lambda: ratios_numpy(f), size.repeats)
+    api_time, search, floor_time, (rows, pick) = best_of_pair(lambda: ratios_api(catalog, case, load),
+                                                              lambda: ratios_numpy(f), size.repeats)
     if not (np.array_equal(search.rows, rows) and search.pick == pick):
         raise RuntimeError("ratios: the public API and the raw numpy floor pick different rows")
     loop_rows = min(size.loop_rows, size.rows)
@@ -498,9 +510,11 @@ def measure_ratios(size: Size, workdir: Path) -> list[str]:
         raise RuntimeError("ratios: the per-row pint loop picks differently from the floor")
     loop_scaled = loop_time * size.rows / loop_rows
     return [
-        line("ratios_100k", api_time, "s", note=f"{size.rows} rows at {len(SEARCH_RATIOS)} ratios, search_ratios: best gearbox and motor per ratio, the pick"),
+        line("ratios_100k", api_time, "s", note=f"{size.rows} rows at {len(SEARCH_RATIOS)} ratios, "
+             "search_ratios: best gearbox and motor per ratio, the pick"),
         line("ratios_numpy_100k", floor_time, "s", note="the same on float arrays"),
-        line("ratios_loop_100k", loop_scaled, "s", note=f"pint scalars row by row: {loop_rows} rows timed, scaled to {size.rows}"),
+        line("ratios_loop_100k", loop_scaled, "s",
+             note=f"pint scalars row by row: {loop_rows} rows timed, scaled to {size.rows}"),
         line("ratios_vs_numpy", api_time / floor_time, "x", ("<=", 2)),
         line("loop_vs_ratios", loop_scaled / api_time, "x", (">=", 100)),
     ]
@@ -541,7 +555,8 @@ def write_large_case(workdir: Path, rows: int, optional: str) -> Path:
         raise RuntimeError("evaluate_100k: catalogs/gearboxes.csv no longer has the synthetic catalog's columns")
     # The shipped rows at the ratio; partial rows (never ranked) left out.
     partial = header.index("partial") if "partial" in header else None
-    shipped = [row for row in shipped if float(row[header.index("ratio [1]")]) == ratio and (partial is None or not row[partial])]
+    shipped = [row for row in shipped
+               if float(row[header.index("ratio [1]")]) == ratio and (partial is None or not row[partial])]
     synthetic = workdir / f"synthetic-{optional}.csv"
     write_synthetic_catalog(synthetic, rows - len(shipped), ratio)
     catalog = folder / "gearboxes-large.csv"
@@ -559,17 +574,19 @@ def write_large_case(workdir: Path, rows: int, optional: str) -> Path:
         writer.writerows(shipped)
     text = EXAMPLE.read_text(encoding="utf-8")
     if text.count('catalog = "gearboxes"\n') != 1 or text.count('family = "NPT"\n') != 1:
-        raise RuntimeError(f"evaluate_100k: {EXAMPLE} no longer names its gearbox catalog and family as this benchmark expects")
+        raise RuntimeError(f"evaluate_100k: {EXAMPLE} no longer names its gearbox catalog and family as this "
+                           "benchmark expects")
     case = folder / EXAMPLE.name
     # every row of the large catalog is checked: the family the example keeps to is dropped
-    case.write_text(text.replace('catalog = "gearboxes"\n', f'catalog = "{catalog.name}"\n').replace('family = "NPT"\n', ""),
-                    encoding="utf-8")
+    case.write_text(text.replace('catalog = "gearboxes"\n', f'catalog = "{catalog.name}"\n')
+                    .replace('family = "NPT"\n', ""), encoding="utf-8")
     return case
 
 
 def measure_evaluate_large(size: Size, workdir: Path) -> list[str]:
     py = sys.executable
-    shipped = [measured_run([py, "-m", "calc", "evaluate", str(EXAMPLE.relative_to(ROOT)), "--json"]) for _ in range(size.runs)]
+    shipped = [measured_run([py, "-m", "calc", "evaluate", str(EXAMPLE.relative_to(ROOT)), "--json"])
+               for _ in range(size.runs)]
     shipped_time = statistics.median(t for t, _ in shipped)
     out = []
     for optional in ("filled", "blank"):
@@ -578,10 +595,12 @@ def measure_evaluate_large(size: Size, workdir: Path) -> list[str]:
         large_time = statistics.median(t for t, _ in large)
         name = f"evaluate_100k_{optional}"
         out += [
-            line(name, large_time, "s", note=f"python -m calc evaluate --json, {size.rows} catalog rows at the example's ratio, "
+            line(name, large_time, "s",
+                 note=f"python -m calc evaluate --json, {size.rows} catalog rows at the example's ratio, "
                  f"optional columns {optional}, median of {size.runs}; shipped catalog {shipped_time:.3g} s"),
             line(f"{name}_vs_shipped", large_time / shipped_time, "x", ("<=", 3)),
-            line(f"{name}_memory", max(m for _, m in large), "MB", ("<=", 500), note="peak resident memory of the process"),
+            line(f"{name}_memory", max(m for _, m in large), "MB", ("<=", 500),
+                 note="peak resident memory of the process"),
         ]
     return out
 
@@ -698,7 +717,8 @@ def motion_api(samples: int):
     from calc.domain.profile import segments
 
     m = MOTION
-    table = Mechanism("rotary", inertia=Q_(m["J"], "kg*m**2"), friction_torque=Q_(m["T_f"], "N*m"), process_torque=Q_(0, "N*m"))
+    table = Mechanism("rotary", inertia=Q_(m["J"], "kg*m**2"), friction_torque=Q_(m["T_f"], "N*m"),
+                      process_torque=Q_(0, "N*m"))
     s = sample([Move(m["distance"], m["time"], m["ramp"], m["ramp"]), Move(0.0, m["dwell"])], samples)
     g = segments(s, table.torque(s.speed, s.acceleration))
     return g.duration, g.speed, g.torque
@@ -771,9 +791,11 @@ def measure_motion(size: Size) -> list[str]:
     loop_time, _ = timed(lambda: motion_loop(size.samples, rows))
     loop_scaled = loop_time * size.samples / rows
     return [
-        line("motion_1M", api_time, "s", ("<=", 0.5), note=f"{size.samples} samples: sample, the mechanism's torque, segments"),
+        line("motion_1M", api_time, "s", ("<=", 0.5),
+             note=f"{size.samples} samples: sample, the mechanism's torque, segments"),
         line("motion_numpy_1M", floor_time, "s", note="the same cycle on a uniform grid in raw numpy"),
-        line("motion_loop_1M", loop_scaled, "s", note=f"Python floats sample by sample: {rows} samples timed, scaled to {size.samples}"),
+        line("motion_loop_1M", loop_scaled, "s",
+             note=f"Python floats sample by sample: {rows} samples timed, scaled to {size.samples}"),
         line("motion_vs_numpy", api_time / floor_time, "x", ("<=", 3)),
         line("motion_loop_vs_motion", loop_scaled / api_time, "x", (">=", 3)),
     ]
@@ -782,7 +804,8 @@ def measure_motion(size: Size) -> list[str]:
 # --- every motor with every gearbox at every ratio ------------------------------------------------
 
 #: Motors, gearbox series and ratios of the combination search, and the samples of its cycle.
-COMBINATIONS = dict(motors=200, gearboxes=100, ratios=(3, 4, 5, 7, 8, 10, 12, 15, 16, 20, 25, 28, 35, 40, 50, 70), samples=20_000)
+COMBINATIONS = dict(motors=200, gearboxes=100, ratios=(3, 4, 5, 7, 8, 10, 12, 15, 16, 20, 25, 28, 35, 40, 50, 70),
+                    samples=20_000)
 
 
 def combination_inputs(motors: int, gearboxes: int, ratios, samples: int, seed: int = 3):
@@ -794,7 +817,8 @@ def combination_inputs(motors: int, gearboxes: int, ratios, samples: int, seed: 
     from calc.domain.motion import Move, sample
 
     m = MOTION
-    table = Mechanism("rotary", inertia=Q_(m["J"] / 10, "kg*m**2"), friction_torque=Q_(m["T_f"] / 10, "N*m"), process_torque=Q_(0, "N*m"))
+    table = Mechanism("rotary", inertia=Q_(m["J"] / 10, "kg*m**2"), friction_torque=Q_(m["T_f"] / 10, "N*m"),
+                      process_torque=Q_(0, "N*m"))
     s = sample([Move(m["distance"], m["time"], m["ramp"], m["ramp"]), Move(0.0, m["dwell"])], samples)
     torque = np.asarray(table.torque(s.speed, s.acceleration), float)  # N·m, SI floats
     cycle = (s.dt, torque, s.speed, s.acceleration)
@@ -803,7 +827,8 @@ def combination_inputs(motors: int, gearboxes: int, ratios, samples: int, seed: 
     series = np.repeat(rng.uniform(5.0, 500.0, gearboxes), len(ratios))  # the T_2B of each series
     eta = np.where(i > 10, 0.94, 0.97)
     gear = {"i": i, "eta": eta, "J_1": np.repeat(rng.uniform(1e-5, 5e-4, gearboxes), len(ratios)) / i ** 0.5,
-            "passes": rng.random(len(i)) > 0.1, "peak_limit": series / (i * 1.6 * eta), "size": series, "J_L": m["J"] / 10}
+            "passes": rng.random(len(i)) > 0.1, "peak_limit": series / (i * 1.6 * eta), "size": series,
+            "J_L": m["J"] / 10}
     rated = np.geomspace(0.1, 40.0, motors)
     motor = {"J": 1.5e-5 * rated ** 1.3, "rated_torque": rated, "peak_torque": 3.2 * rated,
              "max_speed": np.full(motors, 6000 * np.pi / 30) / (1 + rated / 40)}
@@ -813,6 +838,8 @@ def combination_inputs(motors: int, gearboxes: int, ratios, samples: int, seed: 
 def combinations_numpy(cycle, top_speed, gear, motor):
     """The same search in raw numpy: each gearbox row's motor torque over every sample for every
     motor at once (motors × samples), its peak and RMS, and the same checks and rule."""
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
+
     dt, T, w, a = cycle
     back = T * w < 0
     peak = np.empty((len(gear["i"]), len(motor["J"])))
@@ -824,10 +851,11 @@ def combinations_numpy(cycle, top_speed, gear, motor):
     i = gear["i"][:, None]
     lam = (gear["J_1"][:, None] + gear["J_L"] / i**2) / motor["J"]
     u = (peak / motor["peak_torque"], rms / motor["rated_torque"], top_speed * i / motor["max_speed"],
-         motor["peak_torque"] / gear["peak_limit"][:, None], lam / 10.0)
+         motor["peak_torque"] / gear["peak_limit"][:, None], lam / INERTIA_RATIO_LIMIT)
     feasible = gear["passes"][:, None] & np.logical_and.reduce([x <= 1 + 1e-9 for x in u])
     rows, cols = np.nonzero(feasible)
-    keys = (gear["i"][rows], rms[rows, cols] / motor["rated_torque"][cols], gear["size"][rows], motor["J"][cols], motor["rated_torque"][cols])
+    keys = (gear["i"][rows], rms[rows, cols] / motor["rated_torque"][cols], gear["size"][rows], motor["J"][cols],
+            motor["rated_torque"][cols])
     best = np.lexsort(keys)[0]
     return (int(rows[best]), int(cols[best])), peak, rms
 
@@ -841,34 +869,43 @@ def combinations_loop(cycle, gear, motor, pairs):
     dt, T, w, a = (Q_(cycle[0], "s"), Q_(cycle[1], "N*m"), Q_(cycle[2], "rad/s"), Q_(cycle[3], "rad/s**2"))
     out = []
     for g, m in pairs:
-        load = motor_load(dt, T, w, Q_(gear["i"][g], ""), Q_(gear["eta"][g], ""), a, Q_(motor["J"][m], "kg*m**2"), Q_(gear["J_1"][g], "kg*m**2"))
+        load = motor_load(dt, T, w, Q_(gear["i"][g], ""), Q_(gear["eta"][g], ""), a, Q_(motor["J"][m], "kg*m**2"),
+                          Q_(gear["J_1"][g], "kg*m**2"))
         out.append((float(load.peak.m_as("N*m")), float(load.rms.m_as("N*m"))))
     return out
 
 
 def measure_combinations(size: Size) -> list[str]:
     from calc.domain.combinations import CycleMoments, search
+    from calc.domain.gearbox import INERTIA_RATIO_LIMIT
 
     c = COMBINATIONS if size.judged else dict(motors=20, gearboxes=5, ratios=(5, 10), samples=2_000)
     cycle, top, gear, motor = combination_inputs(c["motors"], c["gearboxes"], c["ratios"], c["samples"])
     pairs = len(gear["i"]) * len(motor["J"])
-    api_time, found = min((timed(lambda: search(CycleMoments.of(*cycle), top, gear, motor)) for _ in range(max(1, size.repeats // 3))),
-                          key=lambda x: x[0])
+    api_time, found = min((timed(lambda: search(CycleMoments.of(*cycle), top, gear, motor, INERTIA_RATIO_LIMIT))
+                           for _ in range(max(1, size.repeats // 3))), key=lambda x: x[0])
     floor_time, (floor_pick, floor_peak, floor_rms) = timed(lambda: combinations_numpy(cycle, top, gear, motor))
-    if found.pick != floor_pick or not (np.allclose(found.peak, floor_peak, rtol=1e-9) and np.allclose(found.rms, floor_rms, rtol=1e-9)):
+    same = np.allclose(found.peak, floor_peak, rtol=1e-9) and np.allclose(found.rms, floor_rms, rtol=1e-9)
+    if found.pick != floor_pick or not same:
         raise RuntimeError("combinations: the moments and the raw numpy floor give different torques or picks")
     rng = np.random.default_rng(5)
-    sample = [found.pick, *zip(rng.integers(0, len(gear["i"]), 9).tolist(), rng.integers(0, len(motor["J"]), 9).tolist())]
+    sample = [found.pick,
+              *zip(rng.integers(0, len(gear["i"]), 9).tolist(), rng.integers(0, len(motor["J"]), 9).tolist())]
     loop_time, loop = timed(lambda: combinations_loop(cycle, gear, motor, sample))
     if not np.allclose(loop, [(found.peak[g, m], found.rms[g, m]) for g, m in sample], rtol=1e-9):
         raise RuntimeError("combinations: the per-combination loop gives other torques than the moments")
     loop_scaled = loop_time * pairs / len(sample)
-    what = f"{len(motor['J'])} motors x {c['gearboxes']} gearboxes x {len(c['ratios'])} ratios over {c['samples']} samples"
+    what = (f"{len(motor['J'])} motors x {c['gearboxes']} gearboxes x {len(c['ratios'])} ratios "
+            f"over {c['samples']} samples")
     return [
-        line("combinations", api_time, "s", ("<=", 1), note=f"{what}: the cycle's moments, every pair's peak, RMS and checks, the pick"),
-        line("combinations_numpy", floor_time, "s", note="raw numpy: each gearbox row's motor torque over every sample for every motor"),
-        line("combinations_loop", loop_scaled, "s", note=f"calc.domain.motor.motor_load per pair: {len(sample)} pairs timed, scaled to {pairs}"),
-        line("combinations_numpy_vs_ours", floor_time / api_time, "x", note="the three agree on the pick and on the torques"),
+        line("combinations", api_time, "s", ("<=", 1),
+             note=f"{what}: the cycle's moments, every pair's peak, RMS and checks, the pick"),
+        line("combinations_numpy", floor_time, "s",
+             note="raw numpy: each gearbox row's motor torque over every sample for every motor"),
+        line("combinations_loop", loop_scaled, "s",
+             note=f"calc.domain.motor.motor_load per pair: {len(sample)} pairs timed, scaled to {pairs}"),
+        line("combinations_numpy_vs_ours", floor_time / api_time, "x",
+             note="the three agree on the pick and on the torques"),
         line("combinations_loop_vs_ours", loop_scaled / api_time, "x"),
     ]
 
@@ -882,7 +919,8 @@ def measure_cold(size: Size) -> list[str]:
     return [
         line("import_numpy", numpy_time, "s", note=runs),
         line("import_calc", calc_time, "s", ("<=", 0.5), note=runs),
-        line("evaluate_cli", cli_time, "s", ("<=", 1.0), note=f"python -m calc evaluate {EXAMPLE.relative_to(ROOT)}, {runs}"),
+        line("evaluate_cli", cli_time, "s", ("<=", 1.0),
+             note=f"python -m calc evaluate {EXAMPLE.relative_to(ROOT)}, {runs}"),
     ]
 
 
@@ -896,7 +934,8 @@ def measure_notebooks(size: Size, quick: bool) -> list[str]:
     done = subprocess.run([sys.executable, "-m", "pytest", "notebooks", "-q"], cwd=ROOT, capture_output=True, text=True)
     elapsed = time.perf_counter() - t0
     verdict = "passed" if done.returncode == 0 else f"FAILED, pytest exit {done.returncode}"
-    return [line("notebooks", elapsed, "s", ("<=", 60), note=f"pytest notebooks, {len(notebooks)} notebooks, {verdict}")]
+    return [line("notebooks", elapsed, "s", ("<=", 60),
+                 note=f"pytest notebooks, {len(notebooks)} notebooks, {verdict}")]
 
 
 def measure_report(size: Size, quick: bool, workdir: Path) -> list[str]:
@@ -908,9 +947,11 @@ def measure_report(size: Size, quick: bool, workdir: Path) -> list[str]:
     done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
     elapsed = time.perf_counter() - t0
     if done.returncode != 0 or not pdf.is_file():
-        out = [line("report", None, "s", note=f"FAILED, exit {done.returncode}: {done.stderr.strip().splitlines()[-1:]}")]
+        out = [line("report", None, "s",
+                    note=f"FAILED, exit {done.returncode}: {done.stderr.strip().splitlines()[-1:]}")]
     else:
-        out = [line("report", elapsed, "s", ("<=", 5), note=f"python -m calc report {EXAMPLE.relative_to(ROOT)}, a {pdf.stat().st_size // 1024} KiB PDF")]
+        out = [line("report", elapsed, "s", ("<=", 5),
+                    note=f"python -m calc report {EXAMPLE.relative_to(ROOT)}, a {pdf.stat().st_size // 1024} KiB PDF")]
     # 20 cases, the project's two in turn, laid out as the project is (a case names ../data/...).
     (workdir / "cases20").mkdir()
     shutil.copytree(ROOT / "data", workdir / "data", dirs_exist_ok=True)
@@ -919,11 +960,12 @@ def measure_report(size: Size, quick: bool, workdir: Path) -> list[str]:
         shutil.copy(shipped[k % len(shipped)], workdir / "cases20" / f"axis-{k + 1:02d}.toml")
     cases = sorted(str(p) for p in (workdir / "cases20").glob("*.toml"))
     t0 = time.perf_counter()
-    done = subprocess.run([sys.executable, "-m", "calc", "report", *cases, "--summary", "-o", str(workdir / "reports20")],
-                          cwd=ROOT, capture_output=True, text=True)
+    done = subprocess.run([sys.executable, "-m", "calc", "report", *cases, "--summary", "-o",
+                           str(workdir / "reports20")], cwd=ROOT, capture_output=True, text=True)
     elapsed = time.perf_counter() - t0
     if done.returncode != 0:
-        return out + [line("report_20_cases", None, "s", note=f"FAILED, exit {done.returncode}: {done.stderr.strip().splitlines()[-1:]}")]
+        return out + [line("report_20_cases", None, "s",
+                           note=f"FAILED, exit {done.returncode}: {done.stderr.strip().splitlines()[-1:]}")]
     return out + [line("report_20_cases", elapsed, "s", ("<=", 60),
                        note=f"python -m calc report of 20 cases --summary, {os.cpu_count()} at a time")]
 
@@ -947,7 +989,8 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
              note=f"the server's first kernel waiting after {server.started:.2f} s, then the page"),
         line("review_page_ready", visit.ready, "s", ("<=", 3), note=f"server up in {server.started:.1f} s before"),
         line("review_change_median", visit.median, "s", ("<=", 0.15), note=note),
-        line("review_change_max", max(visit.times), "s", ("<=", 0.3), note=f"{max(visit.changes, key=lambda c: c[1])[0]}"),
+        line("review_change_max", max(visit.times), "s", ("<=", 0.3),
+             note=f"{max(visit.changes, key=lambda c: c[1])[0]}"),
     ]
 
 

@@ -71,8 +71,9 @@ def served(case: Path | None = None, timeout: float = 90.0, reports: Path | None
     chosen += [] if reports is None else ["--reports", str(reports)]
     env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
     start = time.perf_counter()
-    server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port), *chosen], cwd=ROOT, env=env,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port), *chosen], cwd=ROOT,
+                              env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                              start_new_session=True)
     log: list[str] = []
     filled = threading.Event()
 
@@ -136,7 +137,8 @@ def new_values(case: Path, count: int) -> list[tuple[str, str]]:
             continue
         # 2 % further per turn (on the input's step), so each value is new and the design stays possible.
         d = max(spec.step, round(0.02 * turn * abs(spec.value) / spec.step) * spec.step) * turn
-        v = round(spec.value + d if spec.value + d <= spec.high else max(spec.value - d, spec.low), 12)  # down from the top
+        # down from the top
+        v = round(spec.value + d if spec.value + d <= spec.high else max(spec.value - d, spec.low), 12)
         out.append((spec.key, f"{v:g}"))
     return out
 
@@ -220,7 +222,8 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
                     wait_for_results(page, generation)
                     visit.changes.append((f"{key} = {value}", time.perf_counter() - start))
                     visit.seen.append((f"{key} = {value}", page.inner_text(RESULTS)))
-                    if visit.seen[-1][1].startswith("FAIL") and not any(p.name == "review-fail.png" for p in visit.shots):
+                    failed = visit.seen[-1][1].startswith("FAIL")
+                    if failed and not any(p.name == "review-fail.png" for p in visit.shots):
                         visit.shots.append(shots / "review-fail.png")
                         page.screenshot(path=str(visit.shots[-1]))
             if burst:

@@ -3,7 +3,8 @@
 
 A size counts the lines from ``def``/``class`` to the last one, comments and blank lines included,
 docstrings left out: a docstring that documents every argument (tests/test_docstrings.py) is no
-reason to split the code it documents. A nested function counts in its parent too."""
+reason to split the code it documents. A nested function counts in its parent too. A layer not yet
+held whole has its finished modules held one by one (:data:`COVERED_MODULES`)."""
 
 import ast
 from pathlib import Path
@@ -14,6 +15,10 @@ CALC = Path(__file__).resolve().parent.parent / "calc"
 
 #: The layers held to the sizes (the subpackages of calc); the others join as they are split.
 COVERED = ("core", "data", "domain", "figures")
+#: The modules held to the sizes on their own, their layer not yet whole (paths under calc).
+COVERED_MODULES = ("review/__init__.py", "review/client.py", "review/edit.py", "review/figures.py", "review/inputs.py",
+                   "review/keep.py", "review/page.py", "review/panel.py", "review/serve.py", "review/state.py",
+                   "review/variants.py")
 #: Generated code, not written by hand.
 SKIPPED = {"core/formula_numeric.py"}
 MAX_FUNCTION_LINES = 80
@@ -69,8 +74,8 @@ def oversized(text: str) -> list:
 
 
 FILES = sorted(
-    path for layer in COVERED for path in (CALC / layer).rglob("*.py")
-    if str(path.relative_to(CALC)) not in SKIPPED
+    {path for layer in COVERED for path in (CALC / layer).rglob("*.py") if str(path.relative_to(CALC)) not in SKIPPED}
+    | {CALC / name for name in COVERED_MODULES}
 )
 
 

@@ -1,7 +1,7 @@
 """One definition per formula: a sympy expression, and everything derived from it.
 
 A :class:`Formula` holds the right-hand side of one formula of the source document as a sympy
-expression over named :class:`Symbol` s. From that one object come
+expression over symbols declared by name in :mod:`calc.core.glossary`. From that one object come
 
 * its LaTeX (:meth:`Formula.latex`), for docstrings, notebooks and reports;
 * its numeric evaluation (:meth:`Formula.__call__`): quantities in, each checked for its kind
@@ -33,53 +33,11 @@ from typing import Callable
 import numpy as np
 
 from .errors import CalcError
+from .glossary import Symbol, symbol
 from .segment_sum import sum_last_axis
 from .units import Q_, as_kind, fmt, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit
 
 REGISTRY: list["Formula"] = []
-
-
-@dataclass(frozen=True)
-class Symbol:
-    """A quantity in a formula: its name in code, its LaTeX, its kind and the unit it is shown in.
-
-    A symbol with a ``value`` (such as ``"1 rad"``) is a constant of the formula: callers do not
-    pass it, the formula supplies it. It makes a unit convention explicit where strict angle
-    bookkeeping needs one (errata E15), and is shown in the expression and its substitution.
-
-    Parameters
-    ----------
-    name : str
-        Its name in code, as the source document writes it (``"T_2max"``).
-    latex : str
-        Its LaTeX (``"T_{2max}"``).
-    kind : str
-        Its kind (:data:`calc.core.units.KINDS`: ``"torque"``).
-    unit : str
-        The unit it is shown in (``"N*m"``; empty for a bare number).
-    description : str
-        What it is, in words.
-    per_segment : bool
-        One value per segment of the profile (an array summed by :func:`segment_sum`); default False.
-    value : str, optional
-        The constant's value as text (``"1 rad"``); None for an input.
-    """
-
-    name: str
-    latex: str
-    kind: str
-    unit: str
-    description: str
-    per_segment: bool = False
-    value: str | None = None
-
-
-#: The radian as a constant of a formula. With angles counted as a dimension (errata E15), the
-#: law of rotation reads J·α = T·rad: a torque of 1 N·m accelerates 1 kg·m² at 1 rad/s². So a
-#: spring rate in N·m/rad over an inertia gives 1/s² only after that factor; pint, which drops
-#: angles, computes the same number.
-RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (J·α = T·rad with angles as a dimension, E15)",
-                value="1 rad")
 
 
 @functools.cache
@@ -136,10 +94,11 @@ class Formula:
 
     Parameters
     ----------
-    result : Symbol
-        The left-hand side.
-    inputs : tuple of Symbol
-        The symbols of the right-hand side, in the order of ``build``'s parameters.
+    result : str or Symbol
+        The left-hand side: a symbol's name in :mod:`calc.core.glossary`.
+    inputs : tuple of str or Symbol
+        The symbols of the right-hand side by name (or a declared symbol shown in another unit,
+        :meth:`calc.core.glossary.Symbol.shown_in`), in the order of ``build``'s parameters.
     build : callable
         ``build(sp, *symbols)`` returns the right-hand side as a sympy expression; ``sp`` is the
         sympy module.
@@ -147,9 +106,9 @@ class Formula:
         Where the formula comes from (source section, errata entry).
     """
 
-    def __init__(self, result: Symbol, inputs: tuple[Symbol, ...], build: Callable, reference: str):
-        self.result = result
-        self.inputs = tuple(inputs)
+    def __init__(self, result: str | Symbol, inputs: tuple[str | Symbol, ...], build: Callable, reference: str):
+        self.result = _declared(result)
+        self.inputs = tuple(_declared(s) for s in inputs)
         self._build = build
         self.reference = reference
         REGISTRY.append(self)
@@ -413,6 +372,12 @@ class Formula:
         with s.sp.evaluate(False):
             expr = expr.xreplace(repl)
         return self._latex(expr)
+
+
+def _declared(s: str | Symbol) -> Symbol:
+    """A symbol by its name in the glossary (a symbol given as such is taken as it is: a declared one
+    shown in another unit, or one of a formula made outside the package)."""
+    return symbol(s) if isinstance(s, str) else s
 
 
 class _Doc:

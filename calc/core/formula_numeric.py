@@ -58,12 +58,12 @@ def coupling__J_A(J_drive, J_K):
     return (1/2)*J_K + J_drive
 
 
-def coupling__J_L(J_load, J_K):
+def coupling__J_L_coupling(J_load, J_K):
     return (1/2)*J_K + J_load
 
 
-def coupling__f_e(C_T, rad, J_A, J_L):
-    return (1/2)*sqrt(C_T*rad*(J_A + J_L)/(J_A*J_L))/pi
+def coupling__f_e(C_T, rad, J_A, J_L_coupling):
+    return (1/2)*sqrt(C_T*rad*(J_A + J_L_coupling)/(J_A*J_L_coupling))/pi
 
 
 def coupling__f_e_min(f_er):
@@ -102,8 +102,8 @@ def gearbox__M_2k(F_2a, y_2, F_2r, x_2, z_2):
     return F_2a*y_2 + F_2r*(x_2 + z_2)
 
 
-def hysteresis__C_t(Delta_T, Delta_phi):
-    return Delta_T/Delta_phi
+def hysteresis__C_t(Delta_T, Delta_phi_twist):
+    return Delta_T/Delta_phi_twist
 
 
 def hysteresis__j_t(phi_max_0, phi_min_0):
@@ -118,8 +118,8 @@ def inertia__m_cylinder(rho, D, L):
     return (1/4)*pi*D**2*L*rho
 
 
-def inertia__m_hollow(rho, D, d, L):
-    return (1/4)*pi*L*rho*(D**2 - d**2)
+def inertia__m_hollow(rho, D, d_i, L):
+    return (1/4)*pi*L*rho*(D**2 - d_i**2)
 
 
 def inertia__m_plate(rho, a, b, L):
@@ -130,8 +130,8 @@ def inertia__J_cylinder(m, D):
     return (1/8)*D**2*m
 
 
-def inertia__J_hollow(m, D, d):
-    return (1/8)*m*(D**2 + d**2)
+def inertia__J_hollow(m, D, d_i):
+    return (1/8)*m*(D**2 + d_i**2)
 
 
 def inertia__J_plate(m, a, b):
@@ -158,8 +158,8 @@ def mechanism__a_load(alpha_2, r, rad):
     return alpha_2*r/rad
 
 
-def mechanism__F(m, m_c, a, g, theta, s_v, mu, F_p):
-    return a*(m + m_c) + g*(m*sin(theta) - m_c) + s_v*(F_p + g*m*mu*cos(theta))
+def mechanism__F(m, m_c, a_load, g, theta, s_v, mu, F_p):
+    return a_load*(m + m_c) + g*(m*sin(theta) - m_c) + s_v*(F_p + g*m*mu*cos(theta))
 
 
 def mechanism__T_2_linear(F, r, eta, d_P, J_M, alpha_2, rad, s_v, T_d):
@@ -226,8 +226,8 @@ def motor__W_regen(P_back_k, t_k):
     return SegmentSum(P_back_k*t_k)
 
 
-def motor_ratings__T_peak_line(M_max, M_N, n, n_N, n_max):
-    return M_max - (-M_N + M_max)*(n - n_N)/(-n_N + n_max)
+def motor_ratings__T_peak_line(M_max, M_N_motor, n, n_N, n_max):
+    return M_max - (-M_N_motor + M_max)*(n - n_N)/(-n_N + n_max)
 
 
 def motor_ratings__T_V(U_DC, k_E, k_T, R_ph, L_ph, poles, n, rad):
@@ -270,12 +270,12 @@ def stiffness__phi_c1(T, K_1):
     return T/K_1
 
 
-def stiffness__phi_c2(T, T_1, K_1, K_2):
-    return (T - T_1)/K_2 + T_1/K_1
+def stiffness__phi_c2(T, T_L1, K_1, K_2):
+    return (T - T_L1)/K_2 + T_L1/K_1
 
 
-def stiffness__phi_c3(T, T_1, T_2, K_1, K_2, K_3):
-    return (T - T_2)/K_3 + (-T_1 + T_2)/K_2 + T_1/K_1
+def stiffness__phi_c3(T, T_L1, T_L2, K_1, K_2, K_3):
+    return (T - T_L2)/K_3 + (-T_L1 + T_L2)/K_2 + T_L1/K_1
 
 
 def stiffness__C_sec(T, phi):
@@ -318,8 +318,8 @@ FUNCTIONS = {
     "calc.domain.coupling.M_Nt": ("20bfc40180ba5ec3", coupling__M_Nt),
     "calc.domain.coupling.M_Smax": ("79e2cfc7d66e69ca", coupling__M_Smax),
     "calc.domain.coupling.J_A": ("39e751e770984771", coupling__J_A),
-    "calc.domain.coupling.J_L": ("c0f93c789de1374b", coupling__J_L),
-    "calc.domain.coupling.f_e": ("3421c1ff162c1448", coupling__f_e),
+    "calc.domain.coupling.J_L_coupling": ("3a5c4eab366bde02", coupling__J_L_coupling),
+    "calc.domain.coupling.f_e": ("737e591199918a27", coupling__f_e),
     "calc.domain.coupling.f_e_min": ("a139a8f7c9dbbe52", coupling__f_e_min),
     "calc.domain.coupling.Z": ("86f9df9f99fa206b", coupling__Z),
     "calc.domain.coupling.C_T": ("7c965898ba154eb1", coupling__C_T),
@@ -329,21 +329,21 @@ FUNCTIONS = {
     "calc.domain.gearbox.T_2stop": ("233cb8f5f3a997b8", gearbox__T_2stop),
     "calc.domain.gearbox.lambda": ("f54c7a5badd2a8d9", gearbox__lambda),
     "calc.domain.gearbox.M_2k": ("5018dac622b0e3ca", gearbox__M_2k),
-    "calc.domain.hysteresis.C_t": ("41fae874a638b2da", hysteresis__C_t),
+    "calc.domain.hysteresis.C_t": ("c521639aa6774bc4", hysteresis__C_t),
     "calc.domain.hysteresis.j_t": ("a86089e6e3b95b15", hysteresis__j_t),
     "calc.domain.hysteresis.phi_LM3": ("5ec97fde2a6e3296", hysteresis__phi_LM3),
     "calc.domain.inertia.m_cylinder": ("15419d6fe8474db7", inertia__m_cylinder),
-    "calc.domain.inertia.m_hollow": ("302296a77e02444a", inertia__m_hollow),
+    "calc.domain.inertia.m_hollow": ("a1c4c0ff267f906d", inertia__m_hollow),
     "calc.domain.inertia.m_plate": ("85ffc659ac0426d4", inertia__m_plate),
     "calc.domain.inertia.J_cylinder": ("550071dc6497fbb3", inertia__J_cylinder),
-    "calc.domain.inertia.J_hollow": ("19f9c6b1c17f9cee", inertia__J_hollow),
+    "calc.domain.inertia.J_hollow": ("9c1a5a7fb99b585a", inertia__J_hollow),
     "calc.domain.inertia.J_plate": ("0ca8f1e0aa0d865d", inertia__J_plate),
     "calc.domain.inertia.J_body": ("47de21268ba8c289", inertia__J_body),
     "calc.domain.mechanism.r_lead": ("3fee99b76dbd0a6f", mechanism__r_lead),
     "calc.domain.mechanism.r_diameter": ("3c22fac8d4d45760", mechanism__r_diameter),
     "calc.domain.mechanism.phi_2": ("1da2b6341980cde8", mechanism__phi_2),
     "calc.domain.mechanism.a_load": ("283188e31b440e36", mechanism__a_load),
-    "calc.domain.mechanism.F": ("b2caab605235c779", mechanism__F),
+    "calc.domain.mechanism.F": ("59dab0ab12d3e5d0", mechanism__F),
     "calc.domain.mechanism.T_2_linear": ("4831b3baf9de2446", mechanism__T_2_linear),
     "calc.domain.mechanism.J_L_linear": ("540adb6b4ce9c2ee", mechanism__J_L_linear),
     "calc.domain.mechanism.T_2_rotary": ("aafb091340bd4c90", mechanism__T_2_rotary),
@@ -360,7 +360,7 @@ FUNCTIONS = {
     "calc.domain.motor.T_1rms": ("1d82e3cfb254f05f", motor__T_1rms),
     "calc.domain.motor.P_1": ("be4c0de4e25e2bae", motor__P_1),
     "calc.domain.motor.W_regen": ("39af690bbe817330", motor__W_regen),
-    "calc.domain.motor_ratings.T_peak_line": ("f011ced4e1a656a4", motor_ratings__T_peak_line),
+    "calc.domain.motor_ratings.T_peak_line": ("dfbfb95a00833cc1", motor_ratings__T_peak_line),
     "calc.domain.motor_ratings.T_V": ("69c1cad934633bf9", motor_ratings__T_V),
     "calc.domain.profile.ED": ("2103e372a6f8efab", profile__ED),
     "calc.domain.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
@@ -371,8 +371,8 @@ FUNCTIONS = {
     "calc.domain.stiffness.phi_2": ("678c7938c9b7d54c", stiffness__phi_2),
     "calc.domain.stiffness.T_2": ("5078122a10c6f7f8", stiffness__T_2),
     "calc.domain.stiffness.phi_c1": ("1ed61e636079b3d5", stiffness__phi_c1),
-    "calc.domain.stiffness.phi_c2": ("7066f7e6b7e257a7", stiffness__phi_c2),
-    "calc.domain.stiffness.phi_c3": ("38012b778d9a9e60", stiffness__phi_c3),
+    "calc.domain.stiffness.phi_c2": ("967124c719345b29", stiffness__phi_c2),
+    "calc.domain.stiffness.phi_c3": ("0f982b2423e153e2", stiffness__phi_c3),
     "calc.domain.stiffness.C_sec": ("21f78c548e68d498", stiffness__C_sec),
     "calc.domain.torsion.J_L1": ("d8caa04565d5e06c", torsion__J_L1),
     "calc.domain.torsion.C_t1": ("42909c5a4b2369c6", torsion__C_t1),

@@ -134,39 +134,59 @@ def angle_power(units) -> float:
     return float(root._units.get("radian", 0))
 
 
-KINDS: dict[str, Kind] = {
-    k.name: k
-    for k in (
-        Kind("time", "[time]", 0, "s", '"0.2 s"'),
-        Kind("speed", "1/[time]", 1, "rad/s", '"300 rpm"'),
-        Kind("angular_acceleration", "1/[time]**2", 1, "rad/s**2", '"100 rad/s**2"'),
-        Kind("frequency", "1/[time]", 0, "Hz", '"40 Hz"'),
-        Kind("torque", "[mass]*[length]**2/[time]**2", 0, "N*m", '"12 N*m"'),
-        Kind("inertia", "[mass]*[length]**2", 0, "kg*m**2", '"1.2 kg*cm**2"'),
-        Kind("stiffness", "[mass]*[length]**2/[time]**2", -1, "N*m/rad", '"1.3 N*m/arcmin"'),
-        Kind("angle", "", 1, "rad", '"3 arcmin"'),
-        Kind("length", "[length]", 0, "m", '"14 mm"'),
-        Kind("dimensionless", "", 0, "", "10"),
-        Kind("per_hour", "1/[time]", 0, "1/s", '"1800 1/hour"'),
-        Kind("temperature", "[temperature]", 0, "K", '"60 degC"'),
-        Kind("stiffness_length", "[mass]*[length]**3/[time]**2", -1, "N*m**2/rad", '"20230 N*m**2/rad"'),
-        Kind("angular_acceleration", "1/[time]**2", 1, "rad/s**2", '"60 rad/s**2"'),
-        Kind("mass", "[mass]", 0, "kg", '"50 kg"'),
-        Kind("force", "[mass]*[length]/[time]**2", 0, "N", '"100 N"'),
-        Kind("linear_speed", "[length]/[time]", 0, "m/s", '"0.5 m/s"'),
-        Kind("linear_acceleration", "[length]/[time]**2", 0, "m/s**2", '"9.80665 m/s**2"'),
-        Kind("linear_stiffness", "[mass]/[time]**2", 0, "N/m", '"200 N/mm"'),
-        Kind("density", "[mass]/[length]**3", 0, "kg/m**3", '"7850 kg/m**3"'),
-        Kind("power", "[mass]*[length]**2/[time]**3", 0, "W", '"400 W"'),
-        Kind("energy", "[mass]*[length]**2/[time]**2", 0, "J", '"60 J"'),
-        Kind("voltage", "[mass]*[length]**2/[time]**3/[current]", 0, "V", '"565 V"'),
-        Kind("current", "[current]", 0, "A", '"5.7 A"'),
-        Kind("resistance", "[mass]*[length]**2/[time]**3/[current]**2", 0, "ohm", '"0.61 ohm"'),
-        Kind("inductance", "[mass]*[length]**2/[time]**2/[current]**2", 0, "H", '"4.2 mH"'),
-        Kind("torque_constant", "[mass]*[length]**2/[time]**2/[current]", 0, "N*m/A", '"0.88 N*m/A"'),
-        Kind("voltage_constant", "[mass]*[length]**2/[time]**2/[current]", -1, "V*s/rad", '"57 V/krpm"'),
-    )
-}
+def declared_once(items: tuple, what: str) -> dict:
+    """Declarations by their ``name``; a name given twice raises (a dict would keep the last silently).
+
+    Parameters
+    ----------
+    items : tuple
+        Objects with a ``name``.
+    what : str
+        What they are, for the message (``"kind"``).
+
+    Returns
+    -------
+    dict
+        Each item by its name, in the order given.
+    """
+    out = {}
+    for item in items:
+        if item.name in out:
+            raise ValueError(f"calc.core: the {what} {item.name!r} is declared twice")
+        out[item.name] = item
+    return out
+
+
+#: Every kind by its name, each declared once.
+KINDS: dict[str, Kind] = declared_once((
+    Kind("time", "[time]", 0, "s", '"0.2 s"'),
+    Kind("speed", "1/[time]", 1, "rad/s", '"300 rpm"'),
+    Kind("angular_acceleration", "1/[time]**2", 1, "rad/s**2", '"60 rad/s**2"'),
+    Kind("frequency", "1/[time]", 0, "Hz", '"40 Hz"'),
+    Kind("torque", "[mass]*[length]**2/[time]**2", 0, "N*m", '"12 N*m"'),
+    Kind("inertia", "[mass]*[length]**2", 0, "kg*m**2", '"1.2 kg*cm**2"'),
+    Kind("stiffness", "[mass]*[length]**2/[time]**2", -1, "N*m/rad", '"1.3 N*m/arcmin"'),
+    Kind("angle", "", 1, "rad", '"3 arcmin"'),
+    Kind("length", "[length]", 0, "m", '"14 mm"'),
+    Kind("dimensionless", "", 0, "", "10"),
+    Kind("per_hour", "1/[time]", 0, "1/s", '"1800 1/hour"'),
+    Kind("temperature", "[temperature]", 0, "K", '"60 degC"'),
+    Kind("stiffness_length", "[mass]*[length]**3/[time]**2", -1, "N*m**2/rad", '"20230 N*m**2/rad"'),
+    Kind("mass", "[mass]", 0, "kg", '"50 kg"'),
+    Kind("force", "[mass]*[length]/[time]**2", 0, "N", '"100 N"'),
+    Kind("linear_speed", "[length]/[time]", 0, "m/s", '"0.5 m/s"'),
+    Kind("linear_acceleration", "[length]/[time]**2", 0, "m/s**2", '"9.80665 m/s**2"'),
+    Kind("linear_stiffness", "[mass]/[time]**2", 0, "N/m", '"200 N/mm"'),
+    Kind("density", "[mass]/[length]**3", 0, "kg/m**3", '"7850 kg/m**3"'),
+    Kind("power", "[mass]*[length]**2/[time]**3", 0, "W", '"400 W"'),
+    Kind("energy", "[mass]*[length]**2/[time]**2", 0, "J", '"60 J"'),
+    Kind("voltage", "[mass]*[length]**2/[time]**3/[current]", 0, "V", '"565 V"'),
+    Kind("current", "[current]", 0, "A", '"5.7 A"'),
+    Kind("resistance", "[mass]*[length]**2/[time]**3/[current]**2", 0, "ohm", '"0.61 ohm"'),
+    Kind("inductance", "[mass]*[length]**2/[time]**2/[current]**2", 0, "H", '"4.2 mH"'),
+    Kind("torque_constant", "[mass]*[length]**2/[time]**2/[current]", 0, "N*m/A", '"0.88 N*m/A"'),
+    Kind("voltage_constant", "[mass]*[length]**2/[time]**2/[current]", -1, "V*s/rad", '"57 V/krpm"'),
+), "kind")
 
 
 def kind(name: str | Kind) -> Kind:

@@ -26,6 +26,7 @@ import numpy as np
 from .catalog import _FLOAT, _HEADER, CATALOG_DIR, Column, _header_unit, display_path, given_path, note_file_read
 from ..core.checks import BOUNDARY_RTOL
 from ..core.errors import CalcError
+from ..core.glossary import latex as symbol_latex
 from ..core.units import Q_, as_kind, pretty_unit, sig  # noqa: F401 (Q_: the doctests)
 
 #: Which end of its bands a table includes: ``higher``, the higher factor at a boundary (each band
@@ -41,7 +42,8 @@ class BandTable:
     Parameters
     ----------
     symbol : str
-        The looked-up value's symbol, as in the band text (``Z_h``); also valid LaTeX.
+        The looked-up value's symbol, as in the band text (``Z_h``): its name in
+        :mod:`calc.core.glossary`, which typesets it for LaTeX.
     lower : tuple of float
         The lowest value of each band in ``unit``, ascending; the first may be ``-inf``.
     values : tuple of float
@@ -164,7 +166,8 @@ class BandTable:
         k : int
             The band.
         latex : bool
-            For math mode (``\le``, ``\ge``, the unit as text); default False.
+            For math mode (``\le``, ``\ge``, the symbol by :func:`calc.core.glossary.latex`, the unit as
+            text); default False.
 
         Returns
         -------
@@ -172,22 +175,22 @@ class BandTable:
             The band's range.
         """
         le, ge = (r"\le", r"\ge") if latex else ("<=", ">=")
+        shown = symbol_latex(self.symbol) if latex else self.symbol
         low, last = self.bounds[k], k + 1 == len(self)
         high = self.top if last else self.bounds[k + 1]
         if self.at_boundary == "lower":  # each band holds its highest value
             if k == 0:
-                band = (f"{self.symbol} {le} {sig(high)}" if math.isinf(low)
-                        else f"{sig(low)} {le} {self.symbol} {le} {sig(high)}")
+                band = f"{shown} {le} {sig(high)}" if math.isinf(low) else f"{sig(low)} {le} {shown} {le} {sig(high)}"
             elif math.isinf(high):
-                band = f"{self.symbol} > {sig(low)}"
+                band = f"{shown} > {sig(low)}"
             else:
-                band = f"{sig(low)} < {self.symbol} {le} {sig(high)}"
+                band = f"{sig(low)} < {shown} {le} {sig(high)}"
         elif not last:
-            band = f"{self.symbol} < {sig(high)}" if math.isinf(low) else f"{sig(low)} {le} {self.symbol} < {sig(high)}"
+            band = f"{shown} < {sig(high)}" if math.isinf(low) else f"{sig(low)} {le} {shown} < {sig(high)}"
         elif math.isinf(high):
-            band = f"{self.symbol} {ge} {sig(low)}"
+            band = f"{shown} {ge} {sig(low)}"
         else:
-            band = f"{sig(low)} {le} {self.symbol} {le} {sig(high)}"
+            band = f"{sig(low)} {le} {shown} {le} {sig(high)}"
         unit = pretty_unit(self.unit)
         return rf"{band}\ \text{{{unit}}}" if latex else f"{band} {unit}"
 

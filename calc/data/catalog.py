@@ -204,6 +204,21 @@ class Catalog:
         """The catalog as results name it: its file, or its files joined by " + "."""
         return " + ".join(display_path(path) for path, _ in self.members)
 
+    def provenance(self) -> dict:
+        """Where the rows come from, as every result's JSON names it: the catalog's shown name, its
+        SHA-256 (the first file's) and each file with its SHA-256.
+
+        Returns
+        -------
+        dict
+            ``catalog``, ``catalog_sha256`` and ``catalogs`` (a list of ``{catalog, sha256}``).
+        """
+        return {
+            "catalog": self.shown_name,
+            "catalog_sha256": self.sha256,
+            "catalogs": [{"catalog": display_path(path), "sha256": sha} for path, sha in self.members],
+        }
+
     def catalog_of(self, row: int) -> str:
         """The file of one row, as results name it.
 

@@ -31,70 +31,54 @@ import numpy as np
 from ..core.checks import BOUNDARY_RTOL
 from ..data.catalog import Column
 from ..core.errors import CalcError
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
 from ..data.measurement import check_pair, read_measurement
+from .hysteresis import LOW_TORQUE_SHARE
 from .stiffness import Chain, Component, angle_at_output, series_stiffness, stiffness_at_output  # noqa: F401 (Component: the doctests)
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
 
-#: E13: "torque <= 3 % nominal torque" selects the backlash form of positioning accuracy.
-LOW_TORQUE_SHARE = 0.03
-
-_T = Symbol("T", "T", "torque", "N*m", "applied torque at the output")
-_j = Symbol("j_t", "j_{t}", "angle", "arcmin", "torsional backlash at the output")
-_C = Symbol("C", "C", "stiffness", "N*m/arcmin", "torsional stiffness at the output")
-_TA = Symbol("phi_TA", r"\varphi_{\mathrm{TA}}", "angle", "arcmin", "angular transmission accuracy at the output")
-
 lost_motion = Formula(
-    Symbol("phi_LM", r"\varphi_{\mathrm{LM}}", "angle", "arcmin", "total lost motion at the applied torque"),
-    (_j, _T, _C),
+    "phi_LM",
+    ("j_t", "T", "C"),
     lambda sp, j, T, C: j + sp.Abs(T) / C,
     "source, Lost Motion: Total Lost Motion at applied torque = Backlash + Applied Torque / Torsional Stiffness; "
     "errata E12 (the text's formula: the twist under T added to the backlash)",
 )
 
 positioning_accuracy_low = Formula(
-    Symbol("Delta_phi_P_low", r"\Delta\varphi_{P}", "angle", "arcmin",
-           "positioning accuracy, torque up to 3 % of nominal"),
-    (_TA, _j),
+    "Delta_phi_P_low",
+    ("phi_TA", "j_t"),
     lambda sp, ta, j: ta + j,
     "source, Positioning Accuracy, torque <= 3 % of nominal torque: angular transmission accuracy + backlash; errata "
     "E13",
 )
 
 positioning_accuracy_high = Formula(
-    Symbol("Delta_phi_P_high", r"\Delta\varphi_{P}", "angle", "arcmin",
-           "positioning accuracy, torque above 3 % of nominal"),
-    (_TA, _T, _C),
+    "Delta_phi_P_high",
+    ("phi_TA", "T", "C"),
     lambda sp, ta, T, C: ta + sp.Abs(T) / C,
     "source, Positioning Accuracy, torque > 3 % of nominal torque: angular transmission accuracy + applied torque / "
     "stiffness; errata E13",
 )
 
 positioning_error = Formula(
-    Symbol("Delta_phi", r"\Delta\varphi", "angle", "arcmin", "positioning error"),
-    (
-        Symbol("phi_actual", r"\varphi_{\mathrm{actual}}", "angle", "deg", "actual position"),
-        Symbol("phi_target", r"\varphi_{\mathrm{target}}", "angle", "deg", "target position"),
-    ),
+    "Delta_phi",
+    ("phi_actual", "phi_target"),
     lambda sp, actual, target: actual - target,
     "source, Positioning Accuracy: the difference between the target position and the actual position",
 )
 
 
-_r = Symbol("r", "r", "length", "mm", "radius at which the angle is read (a pinion's pitch radius, a table's edge)")
-_RAD = Symbol("rad", r"\mathrm{rad}", "angle", "rad", "one radian (an arc is r · φ with φ in radians, E15)",
-              value="1 rad")
-
 arc_length = Formula(
-    Symbol("s", "s", "length", "mm", "arc length at the radius"),
-    (_r, Symbol("phi", r"\varphi", "angle", "arcmin", "angle at the output"), _RAD),
+    "s",
+    ("r", "phi", "rad"),
     lambda sp, r, phi, rad: r * phi / rad,
     "geometry of the circle: an angle φ at the output moves a point at radius r by the arc s = r · φ",
 )
 
 angle_of_arc = Formula(
-    Symbol("phi_s", r"\varphi", "angle", "arcmin", "angle at the output that moves a point at the radius by s"),
-    (Symbol("s", "s", "length", "mm", "arc length at the radius"), _r, _RAD),
+    "phi_s",
+    ("s", "r", "rad"),
     lambda sp, s, r, rad: s / r * rad,
     "geometry of the circle: an arc s at radius r is the angle φ = s / r",
 )

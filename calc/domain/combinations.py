@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.checks import within_rating
+from .gearbox import inertia_ratio
 
 #: How :func:`search` picks a pair among the feasible ones.
 RULE = ("the smallest adequate motor (lowest rated torque, a tie to the lower rotor inertia), then the smallest "
@@ -236,44 +237,43 @@ class Combinations:
 
 
 def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict,
-           inertia_ratio_limit: float = 10.0) -> Combinations:
+           inertia_limit: float) -> Combinations:
     """Check every pair of a gearbox row and a motor against the cycle, and pick one (:data:`RULE`).
-
-    ``top_speed``: the highest output speed [rad/s]. ``gearboxes``: arrays over the rows (each at
-    its own ratio): ``i``, ``eta``, ``J_1`` [kg·m²], ``passes`` (its governing checks that do not
-    depend on the motor), ``peak_limit`` (the highest motor peak torque its T_2B takes,
-    ``T_2B / (i · f_s · η)`` (E2), inf where that check does not govern), ``size`` (its rated
-    torque, for the rule) and ``J_L`` (the load's inertia at the output, scalar). ``motors``: arrays
-    over the motors: ``J`` [kg·m²], ``rated_torque``, ``peak_torque`` [N·m], ``max_speed`` [rad/s].
 
     A pair is feasible where the gearbox passes, its T_2B takes the motor's peak torque, the motor's
     peak and RMS torque and its top speed ``n_2max · i`` are within the motor's ratings, and
-    ``λ = (J_1 + J_L / i²) / J_motor`` is at most ``inertia_ratio_limit`` (E6).
+    ``λ = (J_1 + J_L / i²) / J_motor`` (:data:`calc.domain.gearbox.inertia_ratio`) is at most
+    ``inertia_limit`` (E6).
 
     Parameters
     ----------
     moments : CycleMoments
-        The cycle at the gearbox output.
+        The sampled cycle at the gearbox output.
     top_speed : float [rad/s]
         The highest output speed.
     gearboxes : dict
-        Arrays over the gearbox rows, as above.
+        Arrays over the gearbox rows (each at its own ratio): ``i`` [1], ``eta`` [1], ``J_1`` [kg·m²],
+        ``passes`` (its governing checks that do not depend on the motor), ``peak_limit`` (the highest
+        motor peak torque its T_2B takes, ``T_2B / (i · f_s · η)`` (E2), inf where that check does not
+        govern) [N·m], ``size`` (its rated torque, for the rule) [N·m]; and ``J_L``, the load's inertia
+        at the output [kg·m²], a scalar.
     motors : dict
-        Arrays over the motors, as above.
-    inertia_ratio_limit : float [1]
-        The highest ``λ`` allowed; default 10.
+        Arrays over the motors: ``J`` [kg·m²], ``rated_torque`` [N·m], ``peak_torque`` [N·m],
+        ``max_speed`` [rad/s].
+    inertia_limit : float [1]
+        The highest ``λ`` a pair may have: the case's ``[motor] max_inertia_ratio``.
 
     Returns
     -------
     Combinations
-        Every pair and the pick.
+        Every pair's motor torques, utilization and feasibility, and the pick.
     """
     g = {k: np.asarray(v, float)[:, None] for k, v in gearboxes.items() if k != "J_L"}
     mo = {k: np.asarray(v, float)[None, :] for k, v in motors.items()}
     peak, rms = motor_torques(moments, g["i"], g["eta"], g["J_1"] + mo["J"])
-    lam = (g["J_1"] + float(gearboxes["J_L"]) / g["i"] ** 2) / mo["J"]
+    lam = inertia_ratio.si(J_1=g["J_1"], J_L=float(gearboxes["J_L"]), i=g["i"], J_motor=mo["J"])
     utilizations = (peak / mo["peak_torque"], rms / mo["rated_torque"], top_speed * g["i"] / mo["max_speed"],
-                    mo["peak_torque"] / g["peak_limit"], lam / inertia_ratio_limit)
+                    mo["peak_torque"] / g["peak_limit"], lam / inertia_limit)
     utilization = np.maximum.reduce(utilizations)
     feasible = (g["passes"] > 0) & np.logical_and.reduce([within_rating(u) for u in utilizations])
     rows, cols = np.nonzero(feasible)

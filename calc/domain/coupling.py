@@ -35,10 +35,11 @@ from ..data.bands import factor_table
 from ..data.catalog import Catalog, Column, Rule, Schema, load_catalog, no_less, resolve  # noqa: F401 (load_catalog, resolve: the doctests)
 from ..core.errors import CalcError
 from .fits import Bore, parse_bore
-from ..core.formula import RADIAN, Formula, Symbol
+from ..core.formula import Formula
+from ..core.glossary import symbol
 from ..core import selection
 from ..core.checks import CheckArray, rank, within_rating
-from .torsion import Chain, Member, lumped
+from .torsion import MassSpringChain, TrainMember, lumped
 from ..core.selection import Selection
 from ..core.units import Q_, Value, as_kind, fmt, sig
 
@@ -114,29 +115,9 @@ _TYPE_NEEDS = {
     "line-shaft": ("T_KN", "C_T", "C_tube", "H"),
 }
 
-# Symbols of the source's sizing section.
-_M_a = Symbol("M_a", "M_{a}", "torque", "N*m", "acceleration torque of the motor")
-_J_load = Symbol("J_load", r"J_{\mathrm{load}}", "inertia", "kg*cm**2", "load-side inertia as the coupling sees it")
-_J_drive = Symbol("J_drive", r"J_{\mathrm{drive}}", "inertia", "kg*cm**2", "drive-side inertia")
-_S_A = Symbol("S_A", "S_{A}", "dimensionless", "", "load (shock) factor")
-_M_N = Symbol("M_N", "M_{N}", "torque", "N*m", "nominal torque of the coupling")
-_K_T = Symbol("K_T", r"K_{\vartheta}", "dimensionless", "", "temperature factor (elastomer couplings)")
-_J_K = Symbol("J_K", "J_{K}", "inertia", "kg*cm**2", "inertia of the coupling")
-_J_A = Symbol("J_A", "J_{A}", "inertia", "kg*cm**2", "drive side with half the coupling")
-_J_L = Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load side with half the coupling")
-_C_T = Symbol("C_T", "C_{T}", "stiffness", "N*m/rad", "torsional stiffness of the coupling")
-_f_er = Symbol("f_er", "f_{er}", "frequency", "Hz", "excitation frequency of the drive")
-_A = Symbol("A", "A", "length", "mm", "distance between the shafts")
-_H = Symbol("H", "H", "length", "mm", "hub length")
-_Z = Symbol("Z", "Z", "length", "mm", "tube length")
-_C_B = Symbol("C_B", "C_{B}", "stiffness", "N*m/rad", "stiffness of the two bellows together")
-_C_tube = Symbol("C_tube", r"C_{\mathrm{tube}}", "stiffness_length", "N*m**2/rad", "tube stiffness per unit length")
-_T = Symbol("T", "T", "torque", "N*m", "torque through the coupling")
-
-
 M_N = Formula(
-    _M_N,
-    (_M_a, _J_load, _J_drive, _S_A),
+    "M_N",
+    ("M_a", "J_load", "J_drive", "S_A"),
     lambda sp, M_a, J_load, J_drive, S_A: sp.Mul(  # in the source's order
         M_a, J_load / sp.Add(J_load, J_drive, evaluate=False), S_A, evaluate=False
     ),
@@ -144,32 +125,23 @@ M_N = Formula(
 )
 
 J_load_at_input = Formula(
-    _J_load,
-    (
-        Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load inertia at the gearbox output"),
-        Symbol("i", "i", "dimensionless", "", "ratio of the gearbox"),
-        Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia referred to its input"),
-    ),
+    "J_load",
+    ("J_L", "i", "J_1"),
     lambda sp, J_L, i, J_1: sp.Add(J_L / i**2, J_1, evaluate=False),  # in the order of E8
     "errata E8 (a coupling between motor and gearbox sees the load reflected to the input plus the gearbox's J_1)",
 )
 
 M_Nt = Formula(
-    Symbol("M_Nt", r"M_{N\vartheta}", "torque", "N*m", "nominal torque with the temperature factor"),
-    (_M_N, _K_T),
+    "M_Nt",
+    ("M_N", "K_T"),
     lambda sp, M_N, K_T: M_N * K_T,
     "source, Couplings, Sizing 3 (multiply M_N by the temperature factor); errata E9 (elastomer couplings only)",
 )
 
 
 M_Smax = Formula(
-    Symbol("M_Smax", r"M_{S\,\mathrm{max}}", "torque", "N*m", "peak torque with the start and temperature factors"),
-    (
-        Symbol("T_S", "T_{S}", "torque", "N*m",
-               "peak torque at the coupling (the source's M_N: a drive-side shock with S_A)"),
-        Symbol("S_z", "S_{z}", "dimensionless", "", "start factor (starts per hour)"),
-        _K_T,
-    ),
+    "M_Smax",
+    ("T_S", "S_z", "K_T"),
     lambda sp, T_S, S_z, K_T: sp.Mul(T_S, S_z, K_T, evaluate=False),
     "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing "
     "of "
@@ -180,49 +152,49 @@ M_Smax = Formula(
 )
 
 
-def _with_half_coupling(result: Symbol, side: Symbol) -> Formula:
+def _with_half_coupling(result: str, side: str) -> Formula:
     return Formula(
         result,
-        (side, _J_K),
+        (side, "J_K"),
         lambda sp, J, J_K: J + J_K / 2,
         "source, Couplings (J_mot, J_moch: inertia + 1/2 coupling inertia); errata E7",
     )
 
 
-J_A = _with_half_coupling(_J_A, _J_drive)
-J_L = _with_half_coupling(_J_L, _J_load)
+J_A = _with_half_coupling("J_A", "J_drive")
+J_L = _with_half_coupling("J_L_coupling", "J_load")
 
 f_e = Formula(
-    Symbol("f_e", "f_{e}", "frequency", "Hz", "natural frequency of the two-mass system"),
-    (_C_T, RADIAN, _J_A, _J_L),
+    "f_e",
+    ("C_T", "rad", "J_A", "J_L_coupling"),
     lambda sp, C_T, rad, J_A, J_L: sp.sqrt(C_T * rad * (J_A + J_L) / (J_A * J_L)) / (2 * sp.pi),
     "source, Couplings, Sizing 2 (garbled there); errata E7 (two-mass system, coupling as the spring)",
 )
 
 f_e_min = Formula(
-    Symbol("f_e_min", r"f_{e,\mathrm{min}}", "frequency", "Hz", "lowest natural frequency allowed"),
-    (_f_er,),
+    "f_e_min",
+    ("f_er",),
     lambda sp, f_er: 2 * f_er,
     "source, Couplings (f_coupling >= 2 f_drive); errata E7",
 )
 
 Z = Formula(
-    _Z,
-    (_A, _H),
+    "Z",
+    ("A", "H"),
     lambda sp, A, H: A - 2 * H,
     "R+W ZA line shaft catalog: tube length Z = A - 2 H",
 )
 
 C_T_line = Formula(
-    _C_T,
-    (_C_B, _Z, _C_tube),
+    "C_T",
+    ("C_B", "Z", "C_tube"),
     lambda sp, C_B, Z, C_tube: 1 / (1 / C_B + Z / C_tube),
     "R+W ZA line shaft catalog: the bellows and the tube of length Z in series",
 )
 
 phi = Formula(
-    Symbol("phi", r"\varphi", "angle", "deg", "angle of twist"),
-    (_T, _C_T),
+    symbol("phi").shown_in("deg"),
+    ("T", "C_T"),
     lambda sp, T, C_T: T / C_T,
     "R+W ZA line shaft catalog, worked example (angle of twist under torque)",
 )
@@ -413,9 +385,9 @@ class DriveTrain:
 
     Parameters
     ----------
-    drive : tuple of Member
+    drive : tuple of TrainMember
         The members before the coupling, drive to load.
-    load : tuple of Member
+    load : tuple of TrainMember
         The members after it, drive to load.
     missing : tuple of str
         The members the case does not give; the chain is then incomplete, and the check of its
@@ -506,7 +478,7 @@ class CouplingSelection(Selection):
         What is not checked, and why.
     drive_train : DriveTrain, optional
         The members around the coupling, as the case gives them.
-    chain : Chain, optional
+    chain : MassSpringChain, optional
         The drive train lumped, its arrays over the rows (None without ``drive_train``).
     modes : pint.Quantity [Hz], optional
         Its natural frequencies per row, lowest first (rows × modes).
@@ -529,7 +501,7 @@ class CouplingSelection(Selection):
     order: np.ndarray
     notes: list
     drive_train: "DriveTrain | None" = None  # the members around the coupling, as the case gives them
-    chain: Chain | None = None  # the drive train lumped, its arrays over the rows (None without drive_train)
+    chain: MassSpringChain | None = None  # the drive train lumped, its arrays over the rows (None without drive_train)
     modes: object = None  # its natural frequencies per row, lowest first (quantity, rows × modes)
 
     candidate_type = CouplingCandidate
@@ -849,13 +821,13 @@ def _two_masses_and_chain(catalog: Catalog, case: _Case, is_line, drive_train, w
             line = C_T_line(C_B=catalog["C_T"], Z=Z(A=case.A, H=catalog["H"]), C_tube=catalog["C_tube"])
             c_line = np.where(fits_in, line.m_as("N*m/rad"), np.nan)
         c_t = Q_(np.where(is_line, c_line, catalog["C_T"].m_as("N*m/rad")), "N*m/rad")
-        fe = f_e(C_T=c_t, J_A=j_a, J_L=j_l)
+        fe = f_e(C_T=c_t, J_A=j_a, J_L_coupling=j_l)
         chain = modes = None
         if drive_train is not None:
             # Half the coupling on each end of its spring, as J_A and J_L take it (E7).
             half = catalog["J"] / 2
-            members = (*drive_train.drive, Member("coupling", half, c_t, half), *drive_train.load)
-            chain = lumped(members, f"{where}: drive train")
+            coupling = TrainMember("coupling", half, c_t, half)
+            chain = lumped((*drive_train.drive, coupling, *drive_train.load), f"{where}: drive train")
             modes = chain.natural_frequencies()
     return j_a, j_l, c_t, fe, chain, modes
 

@@ -30,7 +30,7 @@ import numpy as np
 from ..data.bands import factor_table
 from ..data.catalog import Catalog, Column, Rule, Schema, some_parts, no_less
 from ..core.errors import CalcError
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
 from ..core import selection
 from ..core.checks import CheckArray, rank
 from .profile import Profile, T_2m, Z_h, duty, n_2m
@@ -110,62 +110,43 @@ HUB_SCHEMA = Schema(
 #: (``[gearbox] shock_factors``).
 SHOCK_FACTORS = factor_table("shock")
 
-_n_2 = Symbol("n_2", "n_{2}", "speed", "rpm", "output speed")
-_i = Symbol("i", "i", "dimensionless", "", "ratio")
-
 n_1 = Formula(
-    Symbol("n_1", "n_{1}", "speed", "rpm", "input speed"),
-    (_n_2, _i),
+    "n_1",
+    ("n_2", "i"),
     lambda sp, n_2, i: n_2 * i,
     "source, S1 criterion 1 (errata E1: n_2m · i <= n_1N) and S5 criterion 1 (errata E5: n_2max · i <= n_1max)",
 )
 
 T_2max = Formula(
-    Symbol("T_2max", r"T_{2\,\mathrm{max}}", "torque", "N*m", "maximum output torque"),
-    (
-        Symbol("T_1B", "T_{1B}", "torque", "N*m", "maximum torque of the motor"),
-        _i,
-        Symbol("f_s", "f_{s}", "dimensionless", "", "shock factor"),
-        Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the gearbox"),
-    ),
+    "T_2max",
+    ("T_1B", "i", "f_s", "eta"),
     lambda sp, T_1B, i, f_s, eta: sp.Mul(T_1B, i, f_s, eta, evaluate=False),  # in the source's order
     "source, S5 calculation 2; read as written: η credited, as for a peak the motor drives through the gearbox "
     "(a braking peak, the load driving back, reaches the output as T_1B · i / η, higher by 1/η²)",
 )
 
 T_2stop = Formula(
-    Symbol("T_2stop", r"T_{2,\mathrm{stop}}", "torque", "N*m", "output torque of an emergency stop"),
-    (Symbol("T_1B", "T_{1B}", "torque", "N*m", "maximum torque of the motor"), _i),
+    "T_2stop",
+    ("T_1B", "i"),
     lambda sp, T_1B, i: T_1B * i,
     "case format, Emergency stop: the motor's peak through the gearbox, no credit for efficiency (η = 1)",
 )
 
 inertia_ratio = Formula(
-    Symbol("lambda", r"\lambda", "dimensionless", "", "load to motor inertia ratio"),
-    (
-        Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia at the input"),
-        Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load inertia at the output"),
-        _i,
-        Symbol("J_motor", r"J_{\mathrm{motor}}", "inertia", "kg*cm**2", "motor inertia"),
-    ),
+    "lambda",
+    ("J_1", "J_L", "i", "J_motor"),
     lambda sp, J_1, J_L, i, J_motor: (J_1 + J_L / i**2) / J_motor,
     "source, S5 criterion 3 (J_motor ≈ J_1 + J_L / i²); errata E6 (reported as a ratio, 1 is ideal)",
 )
 
+#: E6: servo practice keeps the load to motor inertia ratio λ below roughly 5 to 10; the upper end is
+#: the limit where a case gives none (``[motor] max_inertia_ratio``).
+INERTIA_RATIO_LIMIT = 10.0
 
-_F_2a = Symbol("F_2a", "F_{2a}", "force", "N", "axial force on the output shaft")
-_F_2r = Symbol("F_2r", "F_{2r}", "force", "N", "radial force on the output shaft")
 
 M_2k = Formula(
-    Symbol("M_2k", "M_{2k}", "torque", "N*m", "tilting moment on the output bearing"),
-    (
-        _F_2a,
-        Symbol("y_2", "y_{2}", "length", "mm", "distance of the axial force's line of action from the axis"),
-        _F_2r,
-        Symbol("x_2", "x_{2}", "length", "mm", "distance of the radial force from the output flange (lever arm)"),
-        Symbol("z_2", "z_{2}", "length", "mm",
-               "distance from the output flange to the bearing's centre (catalog; 0 where not given)"),
-    ),
+    "M_2k",
+    ("F_2a", "y_2", "F_2r", "x_2", "z_2"),
     lambda sp, F_2a, y_2, F_2r, x_2, z_2: sp.Add(F_2a * y_2, F_2r * sp.Add(x_2, z_2, evaluate=False), evaluate=False),
     "WITTENSTEIN alpha catalogues, output bearing: M_2k = F_2a · y_2 + F_2r · (x_2 + z_2), read as documented in "
     "calc.domain.gearbox.bearing_checks (z_2 is not in the published data reached; 0 where the catalog gives none)",
@@ -173,7 +154,7 @@ M_2k = Formula(
 
 
 @dataclass(frozen=True)
-class OutputLoad:
+class OutputForces:
     """External forces on the gearbox output (``[load]``): each None where the case gives none.
 
     Parameters
@@ -198,7 +179,7 @@ class OutputLoad:
         return self.axial_force is not None or self.radial_force is not None
 
 
-def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
+def bearing_checks(load: OutputForces, catalog: Catalog) -> list:
     """The output bearing's checks against the catalog's ratings, every row at once.
 
     ``F_2a <= F_2A`` (axial), ``F_2r <= F_2R`` (radial) and ``M_2k <= M_2K`` (tilting moment,
@@ -207,7 +188,7 @@ def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
 
     Parameters
     ----------
-    load : OutputLoad
+    load : OutputForces
         The forces the case gives.
     catalog : Catalog
         Rows of :data:`SCHEMA`.
@@ -231,7 +212,7 @@ def bearing_checks(load: OutputLoad, catalog: Catalog) -> list:
     >>> from calc.data.catalog import load_catalog, resolve
     >>> rows = load_catalog(resolve("gearboxes", None, "catalog"), SCHEMA)
     >>> rows = rows.rows([rows.index("NPT035-10", "part")])
-    >>> [c.at(0).criterion for c in bearing_checks(OutputLoad(Q_(1000, "N"), Q_(500, "N"), Q_(50, "mm")), rows)]
+    >>> [c.at(0).criterion for c in bearing_checks(OutputForces(Q_(1000, "N"), Q_(500, "N"), Q_(50, "mm")), rows)]
     ['F_2a <= F_2A', 'F_2r <= F_2R', 'M_2k <= M_2K']
     """
     n = len(catalog)
@@ -480,8 +461,33 @@ def governs(check: CheckArray, mode: str) -> bool:
     return check.mode == mode if check.mode is not None else check.made
 
 
+#: Two ratios are the same to this relative tolerance: a catalog's 10 is the case's 10.000001.
+RATIO_RTOL = 1e-6
+
+
+def same_ratio(a, b):
+    """Whether ratios are the same (to :data:`RATIO_RTOL`), element-wise over arrays.
+
+    Parameters
+    ----------
+    a, b : float or numpy.ndarray [1]
+        The ratios.
+
+    Returns
+    -------
+    bool or numpy.ndarray of bool
+        True where they are the same.
+
+    Examples
+    --------
+    >>> bool(same_ratio(10.0, 10.000001)), bool(same_ratio(10.0, 10.1))
+    (True, False)
+    """
+    return np.isclose(a, b, rtol=RATIO_RTOL, atol=0)
+
+
 def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
-    """The rows of ``catalog`` whose ratio equals ``ratio`` (to 1 part in 10⁶).
+    """The rows of ``catalog`` whose ratio equals ``ratio`` (:func:`same_ratio`).
 
     Parameters
     ----------
@@ -505,7 +511,7 @@ def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
     i = as_kind(ratio, "dimensionless", where).m_as("")
     if not i > 0:
         raise CalcError(f"{where}: expected a ratio above zero, found {i:g}")
-    at_ratio = np.isclose(catalog["ratio"].m_as(""), i, rtol=1e-6, atol=0)
+    at_ratio = same_ratio(catalog["ratio"].m_as(""), i)
     mask = at_ratio & ~catalog.partial
     if not mask.any():
         usable = catalog["ratio"].m_as("")[~catalog.partial]
@@ -524,7 +530,7 @@ def select_gearbox(
     motor_inertia=None,
     load_inertia=None,
     emergency_stop_torque=None,
-    output_load: OutputLoad | None = None,
+    output_load: OutputForces | None = None,
     hubs: Catalog | None = None,
     motor_shaft=None,
     shock_factors=SHOCK_FACTORS,
@@ -569,7 +575,7 @@ def select_gearbox(
         The load's inertia at the output, for the inertia ratio.
     emergency_stop_torque : pint.Quantity [N·m], optional
         ``T_2stop``; default ``T_1B · i``.
-    output_load : OutputLoad, optional
+    output_load : OutputForces, optional
         The forces on the output bearing.
     hubs : Catalog, optional
         Rows of :data:`HUB_SCHEMA`.

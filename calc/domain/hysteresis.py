@@ -35,14 +35,16 @@ import numpy as np
 
 from ..data.catalog import Column, load_catalog, resolve
 from ..core.errors import CalcError
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
 from ..data.measurement import check_pair, read_measurement, travel_direction, write_measurement
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
 
 #: Stiffness band, as shares of the nominal torque (source; E12).
 STIFFNESS_BAND = (0.5, 1.0)
-#: Lost-motion band: ± this share of the nominal torque (source; E12).
-LOST_MOTION_BAND = 0.03
+#: The low-torque share of the nominal torque (source; E12, E13): lost motion is the loop's width
+#: over ± this share of T_N, and up to it the positioning rule counts the backlash
+#: (calc.domain.accuracy).
+LOW_TORQUE_SHARE = 0.03
 #: The fewest samples a loop may have, and the fewest loading samples in a stiffness band.
 MIN_SAMPLES = 20
 MIN_BAND_SAMPLES = 3
@@ -53,34 +55,22 @@ COLUMNS = (
 )
 
 stiffness_from_slope = Formula(
-    Symbol("C_t", "C_{t}", "stiffness", "N*m/arcmin",
-           "torsional stiffness, slope of the loop from 50 % to 100 % of T_N"),
-    (
-        Symbol("Delta_T", r"\Delta T", "torque", "N*m", "torque from 50 % to 100 % of T_N"),
-        Symbol("Delta_phi", r"\Delta\varphi", "angle", "arcmin", "twist over that torque, from the fitted line"),
-    ),
+    "C_t",
+    ("Delta_T", "Delta_phi_twist"),
     lambda sp, dT, dphi: dT / dphi,
     "source, Torsional Stiffness: applied torque / deflection at 50 % to 100 % of nominal torque; errata E12",
 )
 
 backlash_from_loop = Formula(
-    Symbol("j_t", "j_{t}", "angle", "arcmin", "torsional backlash, width of the loop at 0 N·m"),
-    (
-        Symbol("phi_max_0", r"\varphi_{\max,0}", "angle", "arcmin", "largest twist at 0 N·m"),
-        Symbol("phi_min_0", r"\varphi_{\min,0}", "angle", "arcmin", "smallest twist at 0 N·m"),
-    ),
+    "j_t",
+    ("phi_max_0", "phi_min_0"),
     lambda sp, hi, lo: hi - lo,
     "source, Backlash: maximum deflection - minimum deflection at 0 Nm of torque; errata E12",
 )
 
 lost_motion_from_loop = Formula(
-    Symbol("phi_LM3", r"\varphi_{\mathrm{LM},3\%}", "angle", "arcmin",
-           "lost motion, width of the loop over ±3 % of T_N"),
-    (
-        Symbol("phi_max_3", r"\varphi_{\max,\pm 3\%}", "angle", "arcmin", "largest twist between -3 % and +3 % of T_N"),
-        Symbol("phi_min_3", r"\varphi_{\min,\pm 3\%}", "angle", "arcmin",
-               "smallest twist between -3 % and +3 % of T_N"),
-    ),
+    "phi_LM3",
+    ("phi_max_3", "phi_min_3"),
     lambda sp, hi, lo: hi - lo,
     "source, Lost Motion: maximum deflection - minimum deflection at ±3 % of nominal torque; errata E12",
 )
@@ -260,7 +250,7 @@ class LoopModel:
     def lost_motion(self):
         """Width of the model's loop over ±3 % of ``T_N``: ``2 e(0.03 T_N + T_f)`` (E12)."""
         _, t_n, *_, t_f = self._si
-        return Q_(2 * self._e(LOST_MOTION_BAND * t_n + t_f), "rad").to("arcmin")
+        return Q_(2 * self._e(LOW_TORQUE_SHARE * t_n + t_f), "rad").to("arcmin")
 
     def twist(self, torque):
         """Twist along a torque path, in the order given: the path starts unloaded at 0 N·m.
@@ -445,7 +435,7 @@ class LoopAnalysis:
         out = []
         for fit in (self.fit_positive, self.fit_negative):
             d_t, d_phi = fit.torque[1] - fit.torque[0], fit.twist[1] - fit.twist[0]
-            out.append(stiffness_from_slope.step(Delta_T=d_t, Delta_phi=d_phi))
+            out.append(stiffness_from_slope.step(Delta_T=d_t, Delta_phi_twist=d_phi))
         out.append(backlash_from_loop.step(phi_max_0=self.backlash_range[1], phi_min_0=self.backlash_range[0]))
         out.append(lost_motion_from_loop.step(phi_max_3=self.lost_motion_range[1], phi_min_3=self.lost_motion_range[0]))
         return out
@@ -498,7 +488,8 @@ def analyze_loop(loop: Loop, nominal_torque) -> LoopAnalysis:
     zero_range, band_range = _level_ranges(torque, twist, direction, t_n, where)
 
     def stiffness(fit):
-        return stiffness_from_slope(Delta_T=fit.torque[1] - fit.torque[0], Delta_phi=fit.twist[1] - fit.twist[0])
+        return stiffness_from_slope(Delta_T=fit.torque[1] - fit.torque[0],
+                                    Delta_phi_twist=fit.twist[1] - fit.twist[0])
 
     return LoopAnalysis(
         nominal_torque=Q_(t_n, "N*m"),
@@ -525,7 +516,7 @@ def _checked_samples(loop: Loop, t_n: float):
         raise CalcError(f"{where}: expected a loop of at least {MIN_SAMPLES} samples, found {n}")
     if not (np.isfinite(torque).all() and np.isfinite(twist).all()):
         raise CalcError(f"{where}: expected finite torque and twist samples, found NaN or infinity")
-    edge = LOST_MOTION_BAND * t_n
+    edge = LOW_TORQUE_SHARE * t_n
     if torque.max() < edge or torque.min() > -edge:
         raise CalcError(
             f"{where}: the loop is loaded in one direction only (torque from {torque.min():.4g} to "
@@ -560,7 +551,7 @@ def _level_ranges(torque, twist, direction, t_n: float, where: str):
     """The least and greatest twist [arcmin] over the loop's passes at 0 N·m, and at -3 %, 0 and
     +3 % of ``t_n`` [N·m]; SI floats in."""
     n = len(torque)
-    edge = LOST_MOTION_BAND * t_n
+    edge = LOW_TORQUE_SHARE * t_n
     passes = np.concatenate(([0], np.cumsum(direction[1:] != direction[:-1])))
     # Level readings use about ±0.5 % of T_N of path either side of a crossing (a record that
     # mostly dwells has no typical step; then the two samples either side of it).

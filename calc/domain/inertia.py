@@ -17,46 +17,27 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
 
 #: The shapes a body may have.
 SHAPES = ("cylinder", "hollow-cylinder", "plate")
 
-_rho = Symbol("rho", r"\rho", "density", "kg/m**3", "density of the material")
-_m = Symbol("m", "m", "mass", "kg", "mass of the body")
-_D = Symbol("D", "D", "length", "mm", "outer diameter")
-_d = Symbol("d", "d", "length", "mm", "inner diameter (a hollow cylinder)")
-_L = Symbol("L", "L", "length", "mm", "length along the axis (a plate's thickness)")
-_a = Symbol("a", "a", "length", "mm", "side of the plate across the axis")
-_b = Symbol("b", "b", "length", "mm", "other side of the plate across the axis")
-_e = Symbol("e", "e", "length", "mm", "distance of the body's own axis from the axis of rotation")
-_J_own = Symbol("J_own", r"J_{\mathrm{own}}", "inertia", "kg*cm**2", "inertia of the body about its own axis")
-
 REFERENCE = "rigid-body mechanics (Dubbel, Massenträgheitsmomente)"
 
-m_cylinder = Formula(Symbol("m_cylinder", "m", "mass", "kg", "mass of a solid cylinder"), (_rho, _D, _L),
-                     lambda sp, rho, D, L: rho * sp.pi * D**2 * L / 4, REFERENCE)
-m_hollow = Formula(Symbol("m_hollow", "m", "mass", "kg", "mass of a hollow cylinder"), (_rho, _D, _d, _L),
-                   lambda sp, rho, D, d, L: rho * sp.pi * (D**2 - d**2) * L / 4, REFERENCE)
-m_plate = Formula(Symbol("m_plate", "m", "mass", "kg", "mass of a rectangular plate"), (_rho, _a, _b, _L),
-                  lambda sp, rho, a, b, L: rho * a * b * L, REFERENCE)
-J_cylinder = Formula(Symbol("J_cylinder", r"J_{\mathrm{own}}", "inertia", "kg*cm**2",
-                            "inertia of a solid cylinder about its axis"),
-                     (_m, _D), lambda sp, m, D: m * D**2 / 8, REFERENCE)
-J_hollow = Formula(Symbol("J_hollow", r"J_{\mathrm{own}}", "inertia", "kg*cm**2",
-                          "inertia of a hollow cylinder about its axis"),
-                   (_m, _D, _d), lambda sp, m, D, d: m * (D**2 + d**2) / 8, REFERENCE)
-J_plate = Formula(Symbol("J_plate", r"J_{\mathrm{own}}", "inertia", "kg*cm**2",
-                         "inertia of a plate about the axis through its centre, across it"),
-                  (_m, _a, _b), lambda sp, m, a, b: m * (a**2 + b**2) / 12, REFERENCE)
-J_steiner = Formula(Symbol("J_body", "J", "inertia", "kg*cm**2", "inertia of the body about the axis of rotation"),
-                    (_J_own, _m, _e), lambda sp, J_own, m, e: J_own + m * e**2,
+m_cylinder = Formula("m_cylinder", ("rho", "D", "L"), lambda sp, rho, D, L: rho * sp.pi * D**2 * L / 4, REFERENCE)
+m_hollow = Formula("m_hollow", ("rho", "D", "d_i", "L"),
+                   lambda sp, rho, D, d_i, L: rho * sp.pi * (D**2 - d_i**2) * L / 4, REFERENCE)
+m_plate = Formula("m_plate", ("rho", "a", "b", "L"), lambda sp, rho, a, b, L: rho * a * b * L, REFERENCE)
+J_cylinder = Formula("J_cylinder", ("m", "D"), lambda sp, m, D: m * D**2 / 8, REFERENCE)
+J_hollow = Formula("J_hollow", ("m", "D", "d_i"), lambda sp, m, D, d_i: m * (D**2 + d_i**2) / 8, REFERENCE)
+J_plate = Formula("J_plate", ("m", "a", "b"), lambda sp, m, a, b: m * (a**2 + b**2) / 12, REFERENCE)
+J_steiner = Formula("J_body", ("J_own", "m", "e"), lambda sp, J_own, m, e: J_own + m * e**2,
                     f"{REFERENCE}: the parallel-axis theorem")
 
 #: Per shape: its mass formula and its inertia formula, and the dimensions each takes.
 FORMULAS = {
     "cylinder": (m_cylinder, J_cylinder, ("D", "L")),
-    "hollow-cylinder": (m_hollow, J_hollow, ("D", "d", "L")),
+    "hollow-cylinder": (m_hollow, J_hollow, ("D", "d_i", "L")),
     "plate": (m_plate, J_plate, ("a", "b", "L")),
 }
 
@@ -70,7 +51,7 @@ class Body:
     shape : str
         One of :data:`SHAPES`.
     dimensions : dict
-        Its dimensions, quantities [mm] by the names of the formulas: ``D``, ``d``, ``L``, ``a``,
+        Its dimensions, quantities [mm] by the names of the formulas: ``D``, ``d_i``, ``L``, ``a``,
         ``b``.
     mass : pint.Quantity [kg], optional
         Its mass; give it or ``density``.
@@ -101,7 +82,7 @@ class Body:
         if mass is None:
             out.append(m_formula.step(rho=self.density, **{n: self.dimensions[n] for n in names}))
             mass = out[-1].result
-        own = J_formula.step(m=mass, **{n: self.dimensions[n] for n in names if n in ("D", "d", "a", "b")})
+        own = J_formula.step(m=mass, **{n: self.dimensions[n] for n in names if n in ("D", "d_i", "a", "b")})
         out.append(own)
         if self.offset is not None and self.offset.magnitude != 0:
             out.append(J_steiner.step(J_own=own.result, m=mass, e=self.offset))

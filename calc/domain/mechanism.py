@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
 from ..core.units import Q_
 
 #: The mechanism types a case may name.
@@ -43,67 +43,38 @@ TYPES = ("rotary", "ball-screw", "rack-pinion", "belt")
 
 READING = "a reading (spec, Motion and mechanism)"
 
-RADIAN = Symbol("rad", r"\mathrm{rad}", "angle", "rad",
-                "one radian (J·α = T·rad, and one radian of output moves the load by r; E15)", value="1 rad")
-g = Symbol("g", "g", "linear_acceleration", "m/s**2", "standard gravity", value="9.80665 m/s**2")
-
-p = Symbol("p", "p", "length", "mm", "lead of the screw: travel per revolution")
-d = Symbol("d", "d", "length", "mm", "pitch diameter of the pinion or diameter of the pulley")
-r = Symbol("r", "r", "length", "mm", "transmission radius: the load's travel per radian of the output")
-s = Symbol("s", "s", "length", "mm", "distance of the load")
-a = Symbol("a", "a", "linear_acceleration", "m/s**2", "acceleration of the load")
-m = Symbol("m", "m", "mass", "kg", "moved mass")
-m_c = Symbol("m_c", r"m_{c}", "mass", "kg", "counterweight, moving the other way")
-T_d = Symbol("T_d", r"T_{d}", "torque", "N*m",
-             "drag torque at the screw, pinion or pulley shaft, against the motion while it moves")
-mu = Symbol("mu", r"\mu", "dimensionless", "", "friction coefficient of the guide")
-theta = Symbol("theta", r"\theta", "angle", "deg", "incline of the axis (90°: vertical, up is forwards)")
-F_p = Symbol("F_p", r"F_{p}", "force", "N", "process force, against the motion while it moves")
-s_v = Symbol("s_v", r"s_{v}", "dimensionless", "", "direction of motion: +1 forwards, −1 back, 0 at rest")
-d_P = Symbol("d_P", r"d_{P}", "dimensionless", "",
-             "direction of power: +1 while the drive drives, −1 while the load drives back or is held")
-eta = Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the mechanism")
-J_M = Symbol("J_M", r"J_{M}", "inertia", "kg*cm**2", "own inertia of the screw, pinion or pulley")
-J_L_sym = Symbol("J_L", r"J_{L}", "inertia", "kg*cm**2", "inertia of the load at the gearbox output")
-alpha_2 = Symbol("alpha_2", r"\alpha_{2}", "angular_acceleration", "rad/s**2", "output acceleration")
-T_f = Symbol("T_f", r"T_{f}", "torque", "N*m", "friction torque of the table, against the motion while it moves")
-T_p = Symbol("T_p", r"T_{p}", "torque", "N*m", "process torque, against the motion while it moves")
-F_sym = Symbol("F", "F", "force", "N", "force on the load along its travel")
-
-r_lead = Formula(Symbol("r_lead", "r", "length", "mm", r.description), (p,), lambda sp, p: p / (2 * sp.pi),
-                 f"{READING}: a lead p per revolution of 2π rad")
-r_diameter = Formula(Symbol("r_diameter", "r", "length", "mm", r.description), (d,), lambda sp, d: d / 2,
-                     f"{READING}: the pitch circle's radius")
+r_lead = Formula("r_lead", ("p",), lambda sp, p: p / (2 * sp.pi), f"{READING}: a lead p per revolution of 2π rad")
+r_diameter = Formula("r_diameter", ("d",), lambda sp, d: d / 2, f"{READING}: the pitch circle's radius")
 
 phi_2 = Formula(
-    Symbol("phi_2", r"\varphi_{2}", "angle", "deg", "distance at the gearbox output"), (s, RADIAN, r),
+    "phi_2", ("s", "rad", "r"),
     lambda sp, s, rad, r: s * rad / r, f"{READING}; E15",
 )
 a_load = Formula(
-    Symbol("a_load", "a", "linear_acceleration", "m/s**2", a.description), (alpha_2, r, RADIAN),
+    "a_load", ("alpha_2", "r", "rad"),
     lambda sp, alpha, r, rad: alpha * r / rad, f"{READING}; E15",
 )
 F = Formula(
-    F_sym, (m, m_c, a, g, theta, s_v, mu, F_p),
+    "F", ("m", "m_c", "a_load", "g", "theta", "s_v", "mu", "F_p"),
     lambda sp, m, m_c, a, g, theta, s_v, mu, F_p: (
         (m + m_c) * a + (m * sp.sin(theta) - m_c) * g + s_v * (mu * m * g * sp.cos(theta) + F_p)
     ),
     f"{READING}: inertia, gravity on the incline, a counterweight, friction of the guide and the process force",
 )
 T_2_linear = Formula(
-    Symbol("T_2_linear", r"T_{2}", "torque", "N*m", "output torque of a linear mechanism"),
-    (F_sym, r, eta, d_P, J_M, alpha_2, RADIAN, s_v, T_d),
+    "T_2_linear",
+    ("F", "r", "eta", "d_P", "J_M", "alpha_2", "rad", "s_v", "T_d"),
     lambda sp, F, r, eta, d_P, J_M, alpha, rad, s_v, T_d: F * r * eta ** (-d_P) + J_M * alpha / rad + s_v * T_d,
     f"{READING}: the efficiency divides while driving, multiplies while driven back; the drag outside it; E15",
 )
 J_L_linear = Formula(
-    Symbol("J_L_linear", r"J_{L}", "inertia", "kg*cm**2", "inertia of the load at the gearbox output"),
-    (m, m_c, r, J_M), lambda sp, m, m_c, r, J_M: (m + m_c) * r**2 + J_M,
+    "J_L_linear",
+    ("m", "m_c", "r", "J_M"), lambda sp, m, m_c, r, J_M: (m + m_c) * r**2 + J_M,
     f"{READING}: the moved masses (load and counterweight) reflected through r, no efficiency",
 )
 T_2_rotary = Formula(
-    Symbol("T_2_rotary", r"T_{2}", "torque", "N*m", "output torque of a rotary table"),
-    (J_L_sym, alpha_2, RADIAN, s_v, T_f, T_p),
+    "T_2_rotary",
+    ("J_L", "alpha_2", "rad", "s_v", "T_f", "T_p"),
     lambda sp, J_L, alpha, rad, s_v, T_f, T_p: J_L * alpha / rad + s_v * (T_f + T_p),
     f"{READING}; E15 (J·α = T·rad)",
 )
@@ -270,9 +241,8 @@ class Mechanism:
         if self.linear:
             r = self.to_load()
             force = F.si(m=self._si(self.mass, "kg"), m_c=self._si(self._counterweight, "kg"),
-                         a=a_load.si(alpha_2=acceleration, r=r),
-                         theta=self._si(self.incline, "rad"), s_v=s_v, mu=self._si(self.friction_coefficient, ""),
-                         F_p=self._si(self.force, "N"))
+                         a_load=a_load.si(alpha_2=acceleration, r=r), theta=self._si(self.incline, "rad"), s_v=s_v,
+                         mu=self._si(self.friction_coefficient, ""), F_p=self._si(self.force, "N"))
             d_power = np.where(force * speed > 0, 1.0, -1.0)
             out = T_2_linear.si(F=force, r=r, eta=self._si(self.eta, ""), d_P=d_power,
                                 J_M=self._si(self.own_inertia, "kg*m**2"), alpha_2=acceleration,
@@ -313,7 +283,7 @@ class Mechanism:
                                     T_p=self.process_torque)]
         r_q = self.radius
         acc = a_load.step(alpha_2=acceleration, r=r_q)
-        f = F.step(m=self.mass, m_c=self._counterweight, a=acc.result, theta=self.incline, s_v=s_v,
+        f = F.step(m=self.mass, m_c=self._counterweight, a_load=acc.result, theta=self.incline, s_v=s_v,
                    mu=self.friction_coefficient, F_p=self.force)
         d_power = Q_(1.0 if f.result.m_as("N") * w > 0 else -1.0, "")
         t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration,
@@ -324,27 +294,25 @@ class Mechanism:
 # -- another type for the same drive: the starting values of a mechanism changed in a review ----------
 
 m_equivalent = Formula(
-    Symbol("m_equivalent", "m", "mass", "kg", "moved mass of a linear axis with the table's inertia at the output"),
-    (J_L_sym, r),
+    "m_equivalent", ("J_L", "r"),
     lambda sp, J_L, r: J_L / r**2, "the inverse of J_L = m·r² (no counterweight, no own inertia)",
 )
 T_d_equivalent = Formula(
-    Symbol("T_d_equivalent", r"T_{d}", "torque", "N*m", T_d.description), (T_f, T_p),
+    "T_d_equivalent", ("T_f", "T_p"),
     lambda sp, T_f, T_p: T_f + T_p, "the table's torques against the motion, at the same shaft",
 )
 J_L_equivalent = Formula(
-    Symbol("J_L_equivalent", r"J_{L}", "inertia", "kg*cm**2",
-           "inertia of a table that needs the axis' torque to accelerate"), (m, m_c, r, eta, J_M),
+    "J_L_equivalent", ("m", "m_c", "r", "eta", "J_M"),
     lambda sp, m, m_c, r, eta, J_M: (m + m_c) * r**2 / eta + J_M,
     "T_2 while the drive accelerates the load: (m + m_c)·a·r / η + J_M·α_2",
 )
 T_f_equivalent = Formula(
-    Symbol("T_f_equivalent", r"T_{f}", "torque", "N*m", T_f.description), (mu, m, g, theta, r, eta, T_d),
+    "T_f_equivalent", ("mu", "m", "g", "theta", "r", "eta", "T_d"),
     lambda sp, mu, m, g, theta, r, eta, T_d: mu * m * g * sp.cos(theta) * r / eta + T_d,
     "the guide's friction and the drag while the drive drives",
 )
 T_p_equivalent = Formula(
-    Symbol("T_p_equivalent", r"T_{p}", "torque", "N*m", T_p.description), (F_p, r, eta),
+    "T_p_equivalent", ("F_p", "r", "eta"),
     lambda sp, F_p, r, eta: F_p * r / eta, "the process force while the drive drives",
 )
 

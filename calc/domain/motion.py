@@ -29,32 +29,24 @@ from dataclasses import dataclass
 import numpy as np
 
 from .cycle import ACCEL, CONST, DECEL, PAUSE, PHASES  # noqa: F401 (PHASES: the doctests)
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
 
 #: Samples of one cycle by default; each piece of the law gets at least :data:`MIN_PER_PIECE`.
 SAMPLES = 20_000
 MIN_PER_PIECE = 200
 
 
-phi_2 = Symbol("phi_2", r"\varphi_{2}", "angle", "deg", "distance of the move at the gearbox output")
-t_m = Symbol("t_m", r"t_{m}", "time", "s", "time of the move")
-t_a = Symbol("t_a", r"t_{a}", "time", "s", "acceleration time")
-t_d = Symbol("t_d", r"t_{d}", "time", "s", "deceleration time")
-t_r = Symbol("t_r", r"t_{r}", "time", "s", "time of a speed ramp (acceleration or deceleration time)")
-t_j = Symbol("t_j", r"t_{j}", "time", "s", "jerk time: the ramp of constant jerk at each end of a speed ramp")
-
 omega_2max = Formula(
-    Symbol("omega_2max", r"\omega_{2,\max}", "speed", "rpm", "peak output speed of the move"),
-    (phi_2, t_m, t_a, t_d),
+    "omega_2max",
+    ("phi_2", "t_m", "t_a", "t_d"),
     lambda sp, phi, t, ta, td: phi / (t - (ta + td) / 2),
     "a reading (spec, Motion and mechanism): the distance is the area of the trapezoid of speed; an S-curve's "
     "symmetric ramps keep it",
 )
 
 alpha_2max = Formula(
-    Symbol("alpha_2max", r"\alpha_{2,\max}", "angular_acceleration", "rad/s**2",
-           "peak output acceleration of a speed ramp"),
-    (omega_2max.result, t_r, t_j),
+    "alpha_2max",
+    ("omega_2max", "t_r", "t_j"),
     lambda sp, w, tr, tj: w / (tr - tj),
     "a reading (spec, Motion and mechanism): a ramp of t_r with jerk ramps of t_j at both ends gains ω at α·(t_r − "
     "t_j)",

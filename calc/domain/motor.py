@@ -29,65 +29,48 @@ import numpy as np
 
 from ..core.checks import CheckArray
 from .cycle import SampledCycle
-from ..core.formula import Formula, Symbol, segment_sum
-from .mechanism import RADIAN
+from ..core.formula import Formula, segment_sum
 from ..core.units import Q_, as_kind
 
-_i = Symbol("i", "i", "dimensionless", "", "ratio")
-_eta = Symbol("eta", r"\eta", "dimensionless", "", "efficiency of the gearbox")
-_J_motor = Symbol("J_motor", r"J_{\mathrm{motor}}", "inertia", "kg*cm**2", "motor inertia")
-_J_1 = Symbol("J_1", "J_{1}", "inertia", "kg*cm**2", "gearbox inertia at the input, with a motor-side coupling's")
-_alpha_1 = Symbol("alpha_1", r"\alpha_{1}", "angular_acceleration", "rad/s**2", "angular acceleration of the motor")
-_T_2 = Symbol("T_2", "T_{2}", "torque", "N*m", "output torque")
-
 alpha_1 = Formula(
-    _alpha_1,
-    (Symbol("alpha_2", r"\alpha_{2}", "angular_acceleration", "rad/s**2", "angular acceleration at the gearbox output"),
-     _i),
+    "alpha_1",
+    ("alpha_2", "i"),
     lambda sp, alpha_2, i: i * alpha_2,
     "case format, The motor's side (α_1 = i · α_2)",
 )
 
 T_1_drive = Formula(
-    Symbol("T_1_drive", r"T_{1}", "torque", "N*m", "motor torque, driving"),
-    (_J_motor, _J_1, _alpha_1, _T_2, _i, _eta),
+    "T_1_drive",
+    ("J_motor", "J_1", "alpha_1", "T_2", "i", "eta"),
     lambda sp, J_motor, J_1, alpha_1, T_2, i, eta: (J_motor + J_1) * alpha_1 + T_2 / (i * eta),
     "case format, The motor's side: driving, the losses of the gearbox on the motor",
 )
 
 T_1_back = Formula(
-    Symbol("T_1_back", r"T_{1}", "torque", "N*m", "motor torque, driven back"),
-    (_J_motor, _J_1, _alpha_1, _T_2, _i, _eta),
+    "T_1_back",
+    ("J_motor", "J_1", "alpha_1", "T_2", "i", "eta"),
     lambda sp, J_motor, J_1, alpha_1, T_2, i, eta: (J_motor + J_1) * alpha_1 + T_2 * eta / i,
     "case format, The motor's side: driven back (T_2 · ω_2 < 0), the losses of the gearbox on the load",
 )
 
 T_1rms = Formula(
-    Symbol("T_1rms", r"T_{1,\mathrm{rms}}", "torque", "N*m", "RMS motor torque over the whole cycle"),
-    (
-        Symbol("T_1k", "T_{1,k}", "torque", "N*m", "motor torque of sample k", per_segment=True),
-        Symbol("t_k", "t_{k}", "time", "s", "duration of sample k, pauses included", per_segment=True),
-    ),
+    "T_1rms",
+    ("T_1k", "t_k"),
     lambda sp, T, t: sp.sqrt(segment_sum(T**2 * t) / segment_sum(t)),
     "case format, The motor's side (RMS over the whole cycle; a pause counts with its holding torque)",
 )
 
 
 P_1 = Formula(
-    Symbol("P_1", "P_{1}", "power", "W",
-           "mechanical power at the motor shaft (negative: the load drives back, the drive brakes)"),
-    (Symbol("T_1", "T_{1}", "torque", "N*m", "motor torque"),
-     Symbol("omega_1", r"\omega_{1}", "speed", "rpm", "motor speed"), RADIAN),
+    "P_1",
+    ("T_1", "omega_1", "rad"),
     lambda sp, T, w, rad: T * w / rad,
     "mechanics: power = torque · angular speed (E15)",
 )
 
 W_regen = Formula(
-    Symbol("W_regen", r"W_{\mathrm{regen}}", "energy", "J",
-           "energy the load gives back to the drive per cycle (its braking resistor or DC link)"),
-    (Symbol("P_back_k", r"P_{\mathrm{back},k}", "power", "W", "braking power of sample k, |P_1| where P_1 < 0, else 0",
-            per_segment=True),
-     Symbol("t_k", "t_{k}", "time", "s", "duration of sample k", per_segment=True)),
+    "W_regen",
+    ("P_back_k", "t_k"),
     lambda sp, P, t: segment_sum(P * t),
     "mechanics: the work of the braking samples, before the motor's and the drive's losses",
 )

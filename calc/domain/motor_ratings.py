@@ -47,8 +47,8 @@ import numpy as np
 from ..data.catalog import _FLOAT, _HEADER, Catalog, Column, Rule, Schema, _header_unit, no_less, note_file_read
 from ..core.errors import CalcError
 from ..core.checks import CheckArray
-from ..core.formula import Formula, Symbol
-from .mechanism import RADIAN
+from ..core.formula import Formula
+from .gearbox import INERTIA_RATIO_LIMIT
 from .profile import n_2m
 from ..core.selection import Candidate, Selection
 from ..core.units import Q_, Value
@@ -61,8 +61,6 @@ THERMAL_SHARE = 0.1
 RANKING = ("passing first; then the smallest adequate motor, the lowest rated torque M_N, ties to the lower rotor "
            "inertia; "
            "then lowest worst utilization; partial rows are never ranked")
-#: The load-to-motor inertia ratio a case may leave out ([motor] max_inertia_ratio).
-INERTIA_RATIO_LIMIT = 10.0
 
 SCHEMA = Schema(
     kind="motor",
@@ -99,32 +97,16 @@ SCHEMA = Schema(
 #: The columns the voltage limit needs besides the case's DC-link voltage.
 ELECTRICAL = ("k_T", "k_E", "R_ph", "L_ph", "poles")
 
-_n = Symbol("n", "n", "speed", "rpm", "motor speed")
-_M_max = Symbol("M_max", r"M_{\mathrm{max}}", "torque", "N*m", "maximum torque of the motor")
-_M_N = Symbol("M_N", r"M_{N}", "torque", "N*m", "rated torque of the motor")
-_n_N = Symbol("n_N", r"n_{N}", "speed", "rpm", "rated speed of the motor")
-_n_max = Symbol("n_max", r"n_{\mathrm{max}}", "speed", "rpm", "maximum speed of the motor")
-
 T_peak_line = Formula(
-    Symbol("T_peak_line", r"T_{\mathrm{peak}}", "torque", "N*m",
-           "peak torque of the motor above its rated speed, from its ratings"),
-    (_M_max, _M_N, _n, _n_N, _n_max),
+    "T_peak_line",
+    ("M_max", "M_N_motor", "n", "n_N", "n_max"),
     lambda sp, M_max, M_N, n, n_N, n_max: M_max - (M_max - M_N) * (n - n_N) / (n_max - n_N),
     "a reading (motor ratings): M_max up to n_N, then straight down to M_N at n_max",
 )
 
 T_V = Formula(
-    Symbol("T_V", "T_{V}", "torque", "N*m", "torque the DC-link voltage allows at the speed (no field weakening)"),
-    (
-        Symbol("U_DC", r"U_{\mathrm{DC}}", "voltage", "V", "DC-link voltage of the drive"),
-        Symbol("k_E", "k_{E}", "voltage_constant", "V/krpm", "voltage constant, line-to-line RMS"),
-        Symbol("k_T", "k_{T}", "torque_constant", "N*m/A", "torque constant, per A rms"),
-        Symbol("R_ph", r"R_{\mathrm{ph}}", "resistance", "ohm", "phase resistance"),
-        Symbol("L_ph", r"L_{\mathrm{ph}}", "inductance", "mH", "phase inductance"),
-        Symbol("poles", "N_{p}", "dimensionless", "", "number of poles"),
-        _n,
-        RADIAN,
-    ),
+    "T_V",
+    ("U_DC", "k_E", "k_T", "R_ph", "L_ph", "poles", "n", "rad"),
     lambda sp, U_DC, k_E, k_T, R, L, poles, n, rad: k_T * (
         sp.sqrt((U_DC**2 / 6) * (R**2 + (poles / 2 * n * L / rad) ** 2)
                 - (poles / 2 * n * L / rad) ** 2 * (k_E * n / sp.sqrt(3)) ** 2)
@@ -297,7 +279,7 @@ def peak_limit(cat: Catalog, speed: np.ndarray, dc_link=None, curves: Curves | N
     n_N = cat["n_N"].m_as("rad/s")[:, None]
     n_max = cat["n_max"].m_as("rad/s")[:, None]
     with np.errstate(invalid="ignore", divide="ignore"):
-        line = T_peak_line.si(M_max=M_max, M_N=M_N, n=n, n_N=n_N, n_max=n_max)
+        line = T_peak_line.si(M_max=M_max, M_N_motor=M_N, n=n, n_N=n_N, n_max=n_max)
     limit = np.where((n <= n_N) | (n_max <= n_N), M_max, line)
     forms = ["ratings"] * len(cat)
     if dc_link is not None:

@@ -14,36 +14,30 @@ import numpy as np
 from ..core.errors import CalcError
 from ..core.checks import BOUNDARY_RTOL
 from .cycle import PAUSE, PHASES
-from ..core.formula import Formula, Symbol, segment_sum
+from ..core.formula import Formula, segment_sum
 from ..core.units import Q_, as_kind
 
 #: E3: S5 needs ED below this and an on-time below :data:`S5_MAX_ON_TIME`.
 S5_MAX_ED = Q_(60, "percent")
 S5_MAX_ON_TIME = Q_(20, "min")
 
-t_on = Symbol("t_on", r"t_{\mathrm{on}}", "time", "s", "on-time, t_a + t_c + t_d (moving segments)")
-t_cycle = Symbol("t_cycle", r"t_{\mathrm{cycle}}", "time", "s", "cycle time, pauses included")
-t_k = Symbol("t_k", "t_{k}", "time", "s", "duration of moving segment k", per_segment=True)
-n_2k = Symbol("n_2k", "n_{2,k}", "speed", "rpm", "mean output speed of moving segment k", per_segment=True)
-T_2k = Symbol("T_2k", "T_{2,k}", "torque", "N*m", "output torque of moving segment k", per_segment=True)
-
 ED = Formula(
-    Symbol("ED", r"\mathrm{ED}", "dimensionless", "percent", "duty cycle"),
-    (t_on, t_cycle),
+    "ED",
+    ("t_on", "t_cycle"),
     lambda sp, t_on, t_cycle: t_on / t_cycle,
     "source, Determination of the Duty Cycle; errata E3",
 )
 
 n_2m = Formula(
-    Symbol("n_2m", "n_{2m}", "speed", "rpm", "mean output speed"),
-    (n_2k, t_k),
+    "n_2m",
+    ("n_2k", "t_k"),
     lambda sp, n, t: segment_sum(sp.Mul(abs(n), t, evaluate=False)) / segment_sum(t),  # the source's order
     "source, S1 calculation 1; errata E2 (any number of segments, moving time only)",
 )
 
 T_2m = Formula(
-    Symbol("T_2m", "T_{2m}", "torque", "N*m", "cubic mean output torque"),
-    (n_2k, t_k, T_2k),
+    "T_2m",
+    ("n_2k", "t_k", "T_2k"),
     lambda sp, n, t, T: sp.cbrt(
         segment_sum(sp.Mul(abs(n), t, abs(T) ** 3, evaluate=False)) / segment_sum(sp.Mul(abs(n), t, evaluate=False))
     ),
@@ -55,8 +49,8 @@ T_2m = Formula(
 )
 
 Z_h = Formula(
-    Symbol("Z_h", "Z_{h}", "per_hour", "1/hour", "number of cycles per hour"),
-    (t_cycle,),
+    "Z_h",
+    ("t_cycle",),
     lambda sp, t_cycle: 1 / t_cycle,
     "source, S5 calculation 1 (Z_h = 3600 / t_cycle with t_cycle in s)",
 )

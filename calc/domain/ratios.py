@@ -10,13 +10,14 @@ cycle is one array (ratios × samples, :func:`calc.domain.motor.motor_load`), an
 A ratio is **feasible** when its best gearbox passes its governing checks and the motor passes
 each of its checks that the case gives a rating for.
 
-Rule for the ratio to pick (:data:`RULE`): among the feasible ratios whose load to motor inertia
-ratio ``λ = (J_1 + J_L / i²) / J_motor`` (E6, the gearbox's own inertia counted, as the motor
-feels it) is at most :data:`INERTIA_RATIO_LIMIT`, the one of lowest RMS motor torque (the motor's
-thermal load, which decides the size of a motor on a cyclic axis; at a given motor, the lowest RMS
-utilization); a tie goes to the lower ratio (lower speeds). If no feasible ratio keeps ``λ``
-within the limit, the feasible ratio of lowest ``λ``; where ``λ`` is not known (no inertias), the
-RMS rule alone. No feasible ratio: no pick.
+Rule for the ratio to pick (:func:`rule`): among the feasible ratios whose load to motor inertia
+ratio ``λ = (J_1 + J_L / i²) / J_motor`` (:data:`calc.domain.gearbox.inertia_ratio`, E6, the
+gearbox's own inertia counted, as the motor feels it) is at most the case's limit
+(``[motor] max_inertia_ratio``, :data:`calc.domain.gearbox.INERTIA_RATIO_LIMIT` where it gives none),
+the one of lowest RMS motor torque (the motor's thermal load, which decides the size of a motor on a cyclic
+axis; at a given motor, the lowest RMS utilization); a tie goes to the lower ratio (lower speeds).
+If no feasible ratio keeps ``λ`` within the limit, the feasible ratio of lowest ``λ``; where ``λ``
+is not known (no inertias), the RMS rule alone. No feasible ratio: no pick.
 """
 
 from __future__ import annotations
@@ -32,15 +33,25 @@ from .motor import MotorLoad, OutputLoad, motor_checks, motor_load
 from .profile import Profile
 from ..core.units import fmt, sig
 
-#: E6: servo practice keeps the load to motor inertia ratio below roughly 5 to 10; the upper end.
-INERTIA_RATIO_LIMIT = 10.0
 
-RULE = (
-    "among the feasible ratios (best gearbox and motor pass) whose inertia ratio λ = (J_1 + J_L / i²) / J_motor is at "
-    f"most {INERTIA_RATIO_LIMIT:g} (E6), the lowest RMS motor torque; a tie to the lower ratio; if none keeps λ within "
-    "the "
-    "limit, the feasible ratio of lowest λ"
-)
+def rule(inertia_limit: float) -> str:
+    """The rule for the ratio to pick, in one sentence, with the limit of λ it keeps to.
+
+    Parameters
+    ----------
+    inertia_limit : float [1]
+        The highest load to motor inertia ratio ``λ``.
+
+    Returns
+    -------
+    str
+        The rule, as the outputs print it.
+    """
+    return (
+        "among the feasible ratios (best gearbox and motor pass) whose inertia ratio "
+        f"λ = (J_1 + J_L / i²) / J_motor is at most {inertia_limit:g} (E6), the lowest RMS motor torque; a tie to "
+        "the lower ratio; if none keeps λ within the limit, the feasible ratio of lowest λ"
+    )
 
 
 @dataclass
@@ -65,6 +76,8 @@ class RatioSearch:
         Over the ratios, one per motor rating given.
     inertia_ratio : numpy.ndarray [1]
         ``λ`` of each ratio's best row (NaN where not known).
+    inertia_limit : float [1]
+        The highest ``λ`` the rule keeps to.
     gearbox_passes : numpy.ndarray of bool
         The best row passes.
     feasible : numpy.ndarray of bool
@@ -86,12 +99,18 @@ class RatioSearch:
     speed: object  # highest motor speed n_2max · i
     motor: list  # CheckArray over the ratios, one per motor rating given
     inertia_ratio: np.ndarray  # λ of each ratio's best row (NaN where not known)
+    inertia_limit: float  # the highest λ the rule keeps to
     gearbox_passes: np.ndarray
     feasible: np.ndarray
     utilization: np.ndarray  # highest governing utilization of gearbox and motor
     pick: int | None  # index into ratios
     reason: str
     notes: list  # what the motor torques count or lack
+
+    @property
+    def rule(self) -> str:
+        """The rule the pick follows (:func:`rule`), with this search's limit of λ."""
+        return rule(self.inertia_limit)
 
     @property
     def parts(self) -> np.ndarray:
@@ -157,6 +176,8 @@ def search_ratios(
     max_speed=None,
     rotor_inertia=None,
     hubs: Catalog | None = None,
+    *,
+    inertia_limit: float,
     **selection,
 ) -> RatioSearch:
     """Evaluate the case at every ratio of ``catalog`` (its rankable rows, every ratio).
@@ -167,9 +188,9 @@ def search_ratios(
     gearboxes' ``J_1`` into what the rotor term counts beside the motor's own: ``(J_1, ...,
     what it lacks or None, notes)`` (a motor-side coupling's inertia added). ``hubs`` and the
     keyword arguments ``selection`` are those of :func:`calc.domain.gearbox.select_gearbox`;
-    ``rated_torque`` and ``max_speed`` those of :func:`calc.domain.motor.motor_checks`. A ratio whose
-    best gearbox gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible
-    (a note says so).
+    ``rated_torque`` and ``max_speed`` those of :func:`calc.domain.motor.motor_checks`;
+    ``inertia_limit`` the highest λ the pick keeps to (:func:`rule`). A ratio whose best gearbox
+    gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible (a note says so).
 
     Parameters
     ----------
@@ -187,6 +208,8 @@ def search_ratios(
         ``rotor_inertia(J_1)`` as above.
     hubs : Catalog, optional
         The clamping hubs.
+    inertia_limit : float [1]
+        The highest ``λ`` the pick keeps to: the case's ``[motor] max_inertia_ratio``.
     **selection
         Further arguments of :func:`calc.domain.gearbox.select_gearbox`.
 
@@ -224,20 +247,20 @@ def search_ratios(
     # rows without T_2Not and a catalog's missing figures leave NaN: fmax ranks on the others
     utilization = np.fmax.reduce([sel.worst[rows], *[c.utilization for c in motor]], axis=0)
     lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
-    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques,
-                              [c.not_made for c in sel.not_made + motor if c.not_made])
-    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, gearbox_passes, feasible, utilization, pick,
-                       reason, notes)
+    not_made = [c.not_made for c in sel.not_made + motor if c.not_made]
+    pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, not_made, inertia_limit)
+    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, inertia_limit, gearbox_passes, feasible,
+                       utilization, pick, reason, notes)
 
 
-def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None,
-               not_made: list[str]) -> tuple[int | None, str]:
-    """The ratio to pick by :data:`RULE` and why, in one sentence.
+def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str],
+               inertia_limit: float) -> tuple[int | None, str]:
+    """The ratio to pick by :func:`rule` and why, in one sentence.
 
     Parameters
     ----------
     ratios : numpy.ndarray [1]
-        The distinct ratios.
+        The distinct ratios, ascending.
     parts : numpy.ndarray of str
         The best part of each.
     feasible : numpy.ndarray of bool
@@ -248,6 +271,8 @@ def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None
         The motor torques of each; None where they cannot be computed.
     not_made : list of str
         What is missing, where no ratio is feasible for want of it.
+    inertia_limit : float [1]
+        The highest ``λ`` the pick keeps to.
 
     Returns
     -------
@@ -265,18 +290,18 @@ def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None
         return f"the lowest RMS motor torque, {fmt(torques.rms[k], 'N*m')}"
 
     known = ~np.isnan(inertia_ratio)
-    within = feasible & known & within_rating(inertia_ratio / INERTIA_RATIO_LIMIT)
+    within = feasible & known & within_rating(inertia_ratio / inertia_limit)
     n = int(feasible.sum())
     head = f"{n} of {len(ratios)} ratios are feasible"
     if within.any():
         k = int(np.lexsort((ratios, np.where(within, rms, np.inf)))[0])
-        why = (f"{head}, {int(within.sum())} of them with λ <= {INERTIA_RATIO_LIMIT:g}; "
+        why = (f"{head}, {int(within.sum())} of them with λ <= {inertia_limit:g}; "
                f"of these it needs {lowest_rms(k)}")
         if within.sum() == 1:
-            why = f"{head}, and only this one keeps λ <= {INERTIA_RATIO_LIMIT:g} (λ = {sig(inertia_ratio[k], 3)})"
+            why = f"{head}, and only this one keeps λ <= {inertia_limit:g} (λ = {sig(inertia_ratio[k], 3)})"
     elif (feasible & known).any():
         k = int(np.lexsort((ratios, np.where(feasible & known, inertia_ratio, np.inf)))[0])
-        why = f"{head}, none with λ <= {INERTIA_RATIO_LIMIT:g}; it has the lowest, λ = {sig(inertia_ratio[k], 3)}"
+        why = f"{head}, none with λ <= {inertia_limit:g}; it has the lowest, λ = {sig(inertia_ratio[k], 3)}"
     else:
         k = int(np.lexsort((ratios, np.where(feasible, rms, np.inf)))[0])
         why = f"{head}; the inertia ratio is not known (motor.inertia and load.inertia), and it needs {lowest_rms(k)}"

@@ -38,78 +38,69 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import CalcError
-from ..core.formula import Formula, Symbol, segment_sum
+from ..core.formula import Formula, segment_sum
+from ..core.glossary import symbol
 from ..core.units import Q_, as_kind, fmt
 
 SIDES = ("input", "output")
 
-_i = Symbol("i", "i", "dimensionless", "", "ratio")
-
 series_stiffness = Formula(
-    Symbol("C_total", r"C_{\mathrm{total}}", "stiffness", "N*m/arcmin", "total torsional stiffness, at the output"),
-    (Symbol("C_k", "C_{k}", "stiffness", "N*m/arcmin", "stiffness of component k, at the output", per_segment=True),),
+    "C_total",
+    ("C_k",),
     lambda sp, C: 1 / segment_sum(1 / C),
     "source, Torsional Stiffness: 1/C_total = 1/C_1 + ... + 1/C_n; errata E11 (every C_k at the output)",
 )
 
 stiffness_at_output = Formula(
-    Symbol("C_2", "C_{2}", "stiffness", "N*m/arcmin", "stiffness referred to the output"),
-    (Symbol("C_1", "C_{1}", "stiffness", "N*m/arcmin", "stiffness of an input-side component"), _i),
+    "C_2",
+    ("C_1", "i"),
     lambda sp, C_1, i: C_1 * i**2,
     "errata E11: an input-side component appears at the output with stiffness C · i²",
 )
 
 angle_at_output = Formula(
-    Symbol("phi_2", r"\varphi_{2}", "angle", "arcmin", "angle referred to the output"),
-    (Symbol("phi_1", r"\varphi_{1}", "angle", "arcmin", "angle at the input (a backlash, an error)"), _i),
+    symbol("phi_2").shown_in("arcmin"),
+    ("phi_1", "i"),
     lambda sp, phi_1, i: phi_1 / i,
     "errata E11: an input-side backlash appears at the output as backlash / i",
 )
 
 torque_at_output = Formula(
-    Symbol("T_2", "T_{2}", "torque", "N*m", "torque referred to the output"),
-    (Symbol("T_1", "T_{1}", "torque", "N*m", "torque at the input"), _i),
+    "T_2",
+    ("T_1", "i"),
     lambda sp, T_1, i: T_1 * i,
     "torque through an ideal gearbox (losses left out: a rating at the input limits the output to T_1 · i)",
 )
 
 
-_T = Symbol("T", "T", "torque", "N*m", "torque through the member, magnitude")
-_T_1 = Symbol("T_1", "T_{1}", "torque", "N*m", "first limit torque of the stiffness curve")
-_T_2 = Symbol("T_2", "T_{2}", "torque", "N*m", "second limit torque of the stiffness curve")
-_K_1 = Symbol("K_1", "K_{1}", "stiffness", "N*m/rad", "stiffness from 0 to T_1")
-_K_2 = Symbol("K_2", "K_{2}", "stiffness", "N*m/rad", "stiffness from T_1 to T_2")
-_K_3 = Symbol("K_3", "K_{3}", "stiffness", "N*m/rad", "stiffness above T_2")
 _CURVE_REFERENCE = ("Harmonic Drive engineering data (HFUC, CSF, CSG): torsional stiffness as three slopes K_1, K_2, "
                     "K_3 with limit torques T_1, T_2")
 
 twist_low = Formula(
-    Symbol("phi_c1", r"\varphi", "angle", "arcmin",
-           "twist by the stiffness curve, first slope (up to the first limit torque)"),
-    (_T, _K_1),
+    "phi_c1",
+    ("T", "K_1"),
     lambda sp, T, K_1: T / K_1,
     _CURVE_REFERENCE + " (T <= T_1)",
 )
 
 twist_middle = Formula(
-    Symbol("phi_c2", r"\varphi", "angle", "arcmin",
-           "twist by the stiffness curve, second slope (between the limit torques)"),
-    (_T, _T_1, _K_1, _K_2),
-    lambda sp, T, T_1, K_1, K_2: sp.Add(T_1 / K_1, (T - T_1) / K_2, evaluate=False),
+    "phi_c2",
+    ("T", "T_L1", "K_1", "K_2"),
+    lambda sp, T, T_L1, K_1, K_2: sp.Add(T_L1 / K_1, (T - T_L1) / K_2, evaluate=False),
     _CURVE_REFERENCE + " (T_1 < T <= T_2)",
 )
 
 twist_high = Formula(
-    Symbol("phi_c3", r"\varphi", "angle", "arcmin",
-           "twist by the stiffness curve, third slope (above the second limit torque)"),
-    (_T, _T_1, _T_2, _K_1, _K_2, _K_3),
-    lambda sp, T, T_1, T_2, K_1, K_2, K_3: sp.Add(T_1 / K_1, (T_2 - T_1) / K_2, (T - T_2) / K_3, evaluate=False),
+    "phi_c3",
+    ("T", "T_L1", "T_L2", "K_1", "K_2", "K_3"),
+    lambda sp, T, T_L1, T_L2, K_1, K_2, K_3: sp.Add(T_L1 / K_1, (T_L2 - T_L1) / K_2, (T - T_L2) / K_3,
+                                                    evaluate=False),
     _CURVE_REFERENCE + " (T > T_2)",
 )
 
 secant_stiffness = Formula(
-    Symbol("C_sec", r"C_{\mathrm{sec}}", "stiffness", "N*m/arcmin", "secant stiffness at a torque"),
-    (_T, Symbol("phi", r"\varphi", "angle", "arcmin", "twist at that torque")),
+    "C_sec",
+    ("T", "phi"),
     lambda sp, T, phi: T / phi,
     "the one slope that gives a curve's own twist at the torque: C = |T| / φ(T)",
 )
@@ -187,8 +178,8 @@ class StiffnessCurve:
     def _band_formulas(self) -> tuple:
         """The twist formula of each band, with the curve's figures it takes."""
         low = dict(K_1=self.K_1)
-        middle = dict(low, T_1=self.T_1, K_2=self.K_2)
-        return (twist_low, low), (twist_middle, middle), (twist_high, dict(middle, T_2=self.T_2, K_3=self.K_3))
+        middle = dict(low, T_L1=self.T_1, K_2=self.K_2)
+        return (twist_low, low), (twist_middle, middle), (twist_high, dict(middle, T_L2=self.T_2, K_3=self.K_3))
 
     def twist(self, torque):
         """The twist under ``torque``: by the slope of the band ``|T|`` falls in (the three formulas

@@ -33,37 +33,33 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import CalcError
-from ..core.formula import RADIAN, Formula, Symbol
+from ..core.formula import Formula
 from ..core.units import as_kind, fmt, from_si, to_si  # noqa: F401 (fmt: the doctests print with it)
 
-_i = Symbol("i", "i", "dimensionless", "", "ratio")
-
 load_at_input = Formula(
-    Symbol("J_L1", r"J_{L,1}", "inertia", "kg*cm**2", "load inertia referred to the gearbox input"),
-    (Symbol("J_L", "J_{L}", "inertia", "kg*cm**2", "load inertia at the gearbox output"), _i),
+    "J_L1",
+    ("J_L", "i"),
     lambda sp, J_L, i: J_L / i**2,
     "errata E8 (the load reflected to the input, J_L / i²)",
 )
 
 gearbox_at_input = Formula(
-    Symbol("C_t1", r"C_{t,1}", "stiffness", "N*m/rad", "torsional stiffness of the gearbox referred to its input"),
-    (Symbol("C_t21", "C_{t21}", "stiffness", "N*m/arcmin",
-            "torsional stiffness of the gearbox at its output (catalog)"), _i),
+    "C_t1",
+    ("C_t21", "i"),
     lambda sp, C_t21, i: C_t21 / i**2,
     "errata E11 turned round: an output-side stiffness appears at the input as C / i²",
 )
 
 inertia_at_output = Formula(
-    Symbol("J_out", r"J_{\mathrm{out}}", "inertia", "kg*cm**2", "inertia referred to the gearbox output"),
-    (Symbol("J_in", r"J_{\mathrm{in}}", "inertia", "kg*cm**2",
-            "inertia on the gearbox input (the motor's, the gearbox's J_1)"), _i),
+    "J_out",
+    ("J_in", "i"),
     lambda sp, J_in, i: J_in * i**2,
     "errata E8 and E11: an input-side inertia appears at the output as J · i²",
 )
 
 
 @dataclass(frozen=True)
-class Member:
+class TrainMember:
     """One member of a drive train, drive to load, referred to the chain's shaft.
 
     Each value is a quantity, scalar or an array over candidates.
@@ -87,8 +83,8 @@ class Member:
 
 
 @dataclass(frozen=True)
-class Chain:
-    """Masses and springs in series, drive to load, as lumped from :class:`Member` s.
+class MassSpringChain:
+    """Masses and springs in series, drive to load, as lumped from :class:`TrainMember` s.
 
     Parameters
     ----------
@@ -119,20 +115,20 @@ class Chain:
         return natural_frequencies(self.inertias, self.stiffnesses)
 
 
-def lumped(members, where: str = "drive train") -> Chain:
+def lumped(members, where: str = "drive train") -> MassSpringChain:
     """The chain of masses and springs of ``members`` (drive to load): inertias with no spring
     between them add into one mass.
 
     Parameters
     ----------
-    members : sequence of Member
+    members : sequence of TrainMember
         The drive train, drive to load.
     where : str
         The train's name, for error messages; default ``"drive train"``.
 
     Returns
     -------
-    Chain
+    MassSpringChain
         Its masses and springs.
 
     Examples
@@ -143,10 +139,10 @@ def lumped(members, where: str = "drive train") -> Chain:
 
     >>> from calc.core.units import Q_
     >>> chain = lumped([
-    ...     Member("motor", Q_(4.2, "kg*cm**2")),
-    ...     Member("coupling", Q_(0.5, "kg*cm**2"), Q_(25_000, "N*m/rad"), Q_(0.5, "kg*cm**2")),
-    ...     Member("gearbox", Q_(0.93, "kg*cm**2"), Q_(756.3, "N*m/rad")),
-    ...     Member("load", Q_(15, "kg*cm**2")),
+    ...     TrainMember("motor", Q_(4.2, "kg*cm**2")),
+    ...     TrainMember("coupling", Q_(0.5, "kg*cm**2"), Q_(25_000, "N*m/rad"), Q_(0.5, "kg*cm**2")),
+    ...     TrainMember("gearbox", Q_(0.93, "kg*cm**2"), Q_(756.3, "N*m/rad")),
+    ...     TrainMember("load", Q_(15, "kg*cm**2")),
     ... ])
     >>> chain.masses, chain.springs
     (('motor + coupling', 'coupling + gearbox', 'load'), ('coupling', 'gearbox'))
@@ -173,8 +169,8 @@ def lumped(members, where: str = "drive train") -> Chain:
     masses.append(sum(mass))
     inertias = np.stack(np.broadcast_arrays(*masses), axis=-1)
     stiffnesses = np.stack(np.broadcast_arrays(*springs), axis=-1) if springs else np.zeros(inertias.shape[:-1] + (0,))
-    return Chain(tuple(names), tuple(spring_names), from_si(inertias, "inertia", "kg*cm**2"),
-                 from_si(stiffnesses, "stiffness", "N*m/rad"))
+    return MassSpringChain(tuple(names), tuple(spring_names), from_si(inertias, "inertia", "kg*cm**2"),
+                           from_si(stiffnesses, "stiffness", "N*m/rad"))
 
 
 def natural_frequencies(inertias, stiffnesses, where: str = "drive train"):
@@ -267,15 +263,6 @@ class CouplingSpan:
     couplings: str
 
 
-# Named a, b, c drive to load (J_1 is the gearbox's inertia everywhere else).
-_J = [Symbol(f"J_{k}", f"J_{{{k}}}", "inertia", "kg*cm**2", f"{what} of a chain of three masses, referred to one shaft")
-      for k, what in (("a", "the first mass (the drive)"), ("b", "the middle mass"), ("c", "the last mass (the load)"))]
-_C = [Symbol(f"C_{k}", f"C_{{{k}}}", "stiffness", "N*m/rad",
-             f"{what} of a chain of three masses, referred to the same shaft")
-      for k, what in (("ab", "the spring between the first and the middle mass"),
-                      ("bc", "the spring between the middle and the last mass"))]
-
-
 def _first_mode_of_three(sp, J_a, J_b, J_c, C_ab, C_bc, rad):
     # det(K - ω² J) = ω² (ω⁴ - p ω² + q) for three masses free at both ends; the lower root of the
     # quadratic, written 2q / (p + √(p² - 4q)) so that it keeps its digits where p² ≫ 4q.
@@ -285,9 +272,8 @@ def _first_mode_of_three(sp, J_a, J_b, J_c, C_ab, C_bc, rad):
 
 
 first_mode_of_three = Formula(
-    Symbol("f_1", "f_{1}", "frequency", "Hz",
-           "first natural frequency of the drive train (of a chain of three masses)"),
-    (*_J, *_C, RADIAN),
+    "f_1",
+    ("J_a", "J_b", "J_c", "C_ab", "C_bc", "rad"),  # masses a, b, c drive to load (J_1 is the gearbox's inertia)
     _first_mode_of_three,
     "the eigenproblem of three masses and two springs, free at both ends, solved in closed form (calc.domain.torsion)",
 )

@@ -17,7 +17,8 @@ import numpy as np
 
 from ..data.catalog import Column
 from ..core.errors import CalcError
-from ..core.formula import Formula, Symbol
+from ..core.formula import Formula
+from ..core.glossary import symbol
 from ..data.measurement import check_pair, read_measurement, travel_direction, write_measurement
 from .stiffness import angle_at_output
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
@@ -34,25 +35,16 @@ MIN_SAMPLES = 20
 FULL_TURN = 0.99
 
 transmission_error = Formula(
-    Symbol("Delta_phi_2", r"\Delta\varphi_{2}", "angle", "arcsec", "transmission error at the output"),
-    (
-        Symbol("phi_2", r"\varphi_{2}", "angle", "deg", "actual output position"),
-        Symbol("phi_1", r"\varphi_{1}", "angle", "deg", "input position"),
-        Symbol("i", "i", "dimensionless", "", "ratio"),
-    ),
+    "Delta_phi_2",
+    ("phi_2", symbol("phi_1").shown_in("deg"), "i"),
     lambda sp, phi_2, phi_1, i: phi_2 - phi_1 / i,
     "source, Angular Transmission Accuracy: actual output position relative to the theoretical output position "
     "according to the ratio",
 )
 
 transmission_accuracy = Formula(
-    Symbol("phi_TA", r"\varphi_{\mathrm{TA}}", "angle", "arcsec", "angular transmission accuracy"),
-    (
-        Symbol("Delta_phi_max", r"\Delta\varphi_{2,\max}", "angle", "arcsec",
-               "largest transmission error over one output revolution"),
-        Symbol("Delta_phi_min", r"\Delta\varphi_{2,\min}", "angle", "arcsec",
-               "smallest transmission error over one output revolution"),
-    ),
+    symbol("phi_TA").shown_in("arcsec"),
+    ("Delta_phi_max", "Delta_phi_min"),
     lambda sp, hi, lo: hi - lo,
     "source, Angular Transmission Accuracy: maximum position variation - minimum position variation over a full output "
     "revolution",

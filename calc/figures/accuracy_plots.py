@@ -13,7 +13,9 @@ import numpy as np
 
 from ..domain.accuracy import PositioningScatter, low_torque_limit, lost_motion, positioning_accuracy
 from ..core.checks import BOUNDARY_RTOL
-from ..domain.hysteresis import LOST_MOTION_BAND, STIFFNESS_BAND, Loop, LoopAnalysis
+from ..core.glossary import latex as symbol_latex
+from ..core.glossary import math as symbol
+from ..domain.hysteresis import LOW_TORQUE_SHARE, STIFFNESS_BAND, Loop, LoopAnalysis
 from ..domain.stiffness import Chain
 from ..domain.transmission import TransmissionAnalysis
 from ..core.units import Q_, as_kind, fmt, sig
@@ -75,7 +77,7 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
     t = loop.torque.m_as("N*m")
     phi = loop.twist.m_as("arcmin")
     t_n = analysis.nominal_torque.m_as("N*m")
-    edge = LOST_MOTION_BAND * t_n
+    edge = LOW_TORQUE_SHARE * t_n
     lo, hi = (x * t_n for x in STIFFNESS_BAND)
     zero = analysis.backlash_range.m_as("arcmin")
     band = analysis.lost_motion_range.m_as("arcmin")
@@ -96,13 +98,14 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
         ft, fp = fit.torque.m_as("N*m"), fit.twist.m_as("arcmin")
         ax.plot(ft, fp, color=FIT_COLOR, linewidth=2.4, zorder=3)
         ax.annotate(
-            f"$C_t$ = {fmt(stiff, 'N*m/arcmin', 4)}\n({fit.samples} loading samples)", (ft.mean(), fp.mean()),
+            f"{symbol('C_t')} = {fmt(stiff, 'N*m/arcmin', 4)}\n({fit.samples} loading samples)", (ft.mean(), fp.mean()),
             xytext=(0, -22 * sign),
             textcoords="offset points", ha="center", va="top" if sign > 0 else "bottom", fontsize=8, color=FIT_COLOR,
         )
     ax.set_ylabel("twist at the output $\\varphi$ [arcmin]")
     ax.set_xlim(-1.08 * t_n, 1.08 * t_n)
-    ax.set_title(f"Hysteresis loop to ±{fmt(analysis.nominal_torque, 'N*m')} (nominal torque $T_N$)", fontsize=9)
+    ax.set_title(f"Hysteresis loop to ±{fmt(analysis.nominal_torque, 'N*m')} (nominal torque {symbol('T_N')})",
+                 fontsize=9)
 
     near = np.abs(t) <= 2.5 * edge
     detail.plot(t[near], phi[near], ".", color=LOOP_COLOR, markersize=2.5, zorder=2)
@@ -114,18 +117,18 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
         detail.hlines(y, -edge, edge, color=MARK_COLOR, linewidth=0.9, linestyles="--", zorder=3)
     for y in zero:
         detail.plot([0], [y], "o", color=FIT_COLOR, markersize=5, zorder=4)
-    _double_arrow(detail, 0.0, zero[0], zero[1], f"backlash $j_t$\n= {fmt(analysis.backlash, 'arcmin', 3)}", FIT_COLOR,
-                  side="left")
+    _double_arrow(detail, 0.0, zero[0], zero[1], f"backlash {symbol('j_t')}\n= {fmt(analysis.backlash, 'arcmin', 3)}",
+                  FIT_COLOR, side="left")
     _double_arrow(detail, edge, band[0], band[1],
-                  f"lost motion\n(±3 % $T_N$)\n= {fmt(analysis.lost_motion, 'arcmin', 3)}", MARK_COLOR)
+                  f"lost motion\n(±3 % {symbol('T_N')})\n= {fmt(analysis.lost_motion, 'arcmin', 3)}", MARK_COLOR)
     detail.set_title("Detail of ±3 % of nominal torque", fontsize=9)
 
     fig.suptitle(f"Torsional stiffness, backlash and lost motion from a hysteresis loop (E12) - {analysis.source}",
                  fontsize=10)
     fig.legend(
         handles=[
-            Patch(color=BAND_COLOR, label="50 % to 100 % of $T_N$: stiffness is the slope here"),
-            Patch(color=LOW_BAND_COLOR, label="±3 % of $T_N$: lost motion is the width here"),
+            Patch(color=BAND_COLOR, label=f"50 % to 100 % of {symbol('T_N')}: stiffness is the slope here"),
+            Patch(color=LOW_BAND_COLOR, label=f"±3 % of {symbol('T_N')}: lost motion is the width here"),
         ],
         loc="outside lower center", ncols=2, fontsize=8, frameon=False,
     )
@@ -188,8 +191,8 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     ax.grid(True, axis="x", color="#dddddd", linewidth=0.6, zorder=0)
     ratio = "" if chain.ratio is None else f", input side × i² with i = {sig(chain.ratio.m_as(''))}"
     ax.set_title(
-        f"Stiffness chain at {fmt(torque, 'N*m')}: $C_{{total}}$ {'≤' if np.isinf(c_out.magnitude).any() else '='} "
-        f"{fmt(chain.stiffness, 'N*m/arcmin', 4)}, "
+        f"Stiffness chain at {fmt(torque, 'N*m')}: {symbol('C_total')} "
+        f"{'≤' if np.isinf(c_out.magnitude).any() else '='} {fmt(chain.stiffness, 'N*m/arcmin', 4)}, "
         f"twist {sig(twist.sum(), 3)} arcmin (E11{ratio})",
         fontsize=9,
     )
@@ -238,7 +241,7 @@ def transmission_error_figure(analysis: TransmissionAnalysis):
     ax.axhspan(lo, hi, color=BAND_COLOR, zorder=0, linewidth=0)
     for v in (lo, hi):
         ax.axhline(v, color=FIT_COLOR, linewidth=0.9, linestyle="--")
-    _double_arrow(ax, 368.0, lo, hi, f"$\\varphi_{{TA}}$ = {fmt(analysis.accuracy, 'arcsec', 3)}", FIT_COLOR)
+    _double_arrow(ax, 368.0, lo, hi, f"{symbol('phi_TA')} = {fmt(analysis.accuracy, 'arcsec', 3)}", FIT_COLOR)
     ax.set_xlim(0, 450)
     ax.set_xticks(np.arange(0, 361, 45))
     ax.set_xlabel("output position from the start of the record [°]")
@@ -430,11 +433,11 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     bound = lost_motion(j_t=chain.backlash, T=Q_(torque, "N*m"), C=stiffness).m_as("arcmin")
     fig = Figure(figsize=(8.0, 4.4), layout="constrained")
     ax = fig.subplots()
-    ax.axvspan(0, edge, color=LOW_BAND_COLOR, linewidth=0, zorder=0,
-               label=f"|T| <= 3 % of $T_N$ ({sig(edge, 3)} N·m): $\\varphi_{{TA}} + j_t$")
+    low = f"|T| <= 3 % of {symbol('T_N')} ({sig(edge, 3)} N·m): ${symbol_latex('phi_TA')} + {symbol_latex('j_t')}$"
+    ax.axvspan(0, edge, color=LOW_BAND_COLOR, linewidth=0, zorder=0, label=low)
     ax.plot(torque, acc, color=FIT_COLOR, linewidth=2.0, label="positioning accuracy (E13)")
     ax.plot(torque, bound, color=LOOP_COLOR, linewidth=1.4, linestyle="--",
-            label="repeatability at most: lost motion $j_t + |T|/C$")
+            label=f"repeatability at most: lost motion ${symbol_latex('j_t')} + |T|/C$")
     if applied_torque is not None:
         t = abs(as_kind(applied_torque, "torque", "applied_torque").m_as("N*m"))
         a = positioning_accuracy(Q_(t, "N*m"), t_n,
@@ -447,12 +450,12 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
     ax.grid(True, color="#dddddd", linewidth=0.6)
     fig.legend(loc="outside lower center", ncols=2, fontsize=8, frameon=False)
     ax.set_title(
-        f"Positioning accuracy and repeatability against torque (E13)\n$\\varphi_{{TA}}$ = "
-        f"{fmt(chain.transmission_accuracy, 'arcmin', 3)}, "
-        f"$j_t$ = {fmt(chain.backlash, 'arcmin', 3)}, "
+        "Positioning accuracy and repeatability against torque (E13)\n"
+        f"{symbol('phi_TA')} = {fmt(chain.transmission_accuracy, 'arcmin', 3)}, "
+        f"{symbol('j_t')} = {fmt(chain.backlash, 'arcmin', 3)}, "
         + ("C: the secant of the stiffness curves at each torque" if chain.has_curves
            else f"C = {fmt(chain.stiffness, 'N*m/arcmin', 4)}")
-        + f", $T_N$ = {fmt(t_n, 'N*m')}",
+        + f", {symbol('T_N')} = {fmt(t_n, 'N*m')}",
         fontsize=9,
     )
     return fig

@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 from ..domain.coupling import TEMPERATURE_FACTORS, CouplingSelection, temperature_factor
+from ..core.glossary import math as symbol
 from ..core.units import as_kind, fmt, sig
 
 DRIVE_COLOR = "#1f5fa8"
@@ -58,8 +59,8 @@ def inertia_split_figure(accel_torque, drive_inertia, load_inertia, M_N):
     share = j_l / (j_l + j_d)
     fig = Figure(figsize=(8.0, 2.4), layout="constrained")
     ax = fig.subplots()
-    ax.barh([0], [j_d], color=DRIVE_COLOR, label=f"drive side $J_{{drive}}$ = {sig(j_d)} kg·cm²")
-    ax.barh([0], [j_l], left=[j_d], color=LOAD_COLOR, label=f"load side $J_{{load}}$ = {sig(j_l)} kg·cm²")
+    ax.barh([0], [j_d], color=DRIVE_COLOR, label=f"drive side {symbol('J_drive')} = {sig(j_d)} kg·cm²")
+    ax.barh([0], [j_l], left=[j_d], color=LOAD_COLOR, label=f"load side {symbol('J_load')} = {sig(j_l)} kg·cm²")
     ax.text(j_d / 2, 0, f"{sig(100 * (1 - share), 3)} %", ha="center", va="center", color="white", fontsize=9)
     ax.text(j_d + j_l / 2, 0, f"{sig(100 * share, 3)} %", ha="center", va="center", color="white", fontsize=9)
     ax.set_yticks([])
@@ -127,7 +128,7 @@ def temperature_factor_figure(temperature=None, table=TEMPERATURE_FACTORS):
         ax.legend(loc="upper left", fontsize=8)
     ax.set_xlim(low, high)
     ax.set_xlabel("operating temperature [°C]")
-    ax.set_ylabel(r"temperature factor $K_\vartheta$")
+    ax.set_ylabel(f"temperature factor {symbol('K_T')}")
     rule = "E9: the higher factor at a boundary" if higher else "the factor printed at a temperature holds up to it"
     ax.set_title(f"Elastomer couplings: M_N is multiplied by K_ϑ ({rule})", fontsize=10)
     ax.grid(True, alpha=0.3)
@@ -189,7 +190,7 @@ def natural_frequency_figure(selection: CouplingSelection, f_e_min):
         title += "\nand in the drive train (the gearbox's spring too): f_1 >= 2 f_er"
     ax.set_yticks(y, parts)
     ax.set_xlim(0, top)
-    ax.set_xlabel("natural frequency $f_e$ [Hz]")
+    ax.set_xlabel(f"natural frequency {symbol('f_e')} [Hz]")
     ax.set_title(title, fontsize=10)
     ax.legend(loc="lower right", fontsize=8)
     return fig

@@ -2,14 +2,15 @@
 
 The source prints two tables before its formulas: the index (what a subscript means) and the
 symbols with their units. :data:`SOURCE_INDEX` and :data:`SOURCE_SYMBOLS` hold them as printed,
-with the unit and notation the workbook uses beside them; :func:`symbols_table` lists every
-:class:`~calc.core.formula.Symbol` of the formulas defined so far (:data:`calc.core.formula.REGISTRY`),
-so the glossary grows with the formulas and is never typed twice.
+with the unit and notation the workbook uses beside them; :func:`symbols_table` lists every symbol
+of the formulas defined so far (:data:`calc.core.formula.REGISTRY`) as :mod:`calc.core.glossary`
+declares it, so the glossary grows with the formulas and is never typed twice.
 """
 
 from __future__ import annotations
 
 from ..core.formula import REGISTRY
+from ..core.glossary import SYMBOLS
 from ..core.units import pretty_unit
 
 #: The source's index table: subscript, meaning, and where the workbook uses it.
@@ -80,24 +81,23 @@ def source_symbols_table():
 
 
 def symbols_table(formulas=None):
-    """Every symbol of ``formulas`` (default: all formulas defined so far), in order of first use.
-
-    A name used with two meanings (another unit or description) gets a row for each.
+    """Every symbol of ``formulas`` (default: all formulas defined so far), in order of first use,
+    once each, as :data:`calc.core.glossary.SYMBOLS` declares it.
 
     Columns: ``symbol`` (its name in code), ``LaTeX`` (``$...$``), ``description``, ``unit`` (the
-    unit it is shown in; ``–`` for a pure number), ``kind`` (what :mod:`calc.core.units` checks it
-    for), ``per segment`` (one value per profile segment) and ``formulas`` (the formulas it
+    unit it is declared with; ``–`` for a pure number), ``kind`` (what :mod:`calc.core.units` checks
+    it for), ``per segment`` (one value per profile segment) and ``formulas`` (the formulas it
     appears in, by the name of their result).
 
     Parameters
     ----------
-    formulas : list of Formula, optional
-        The formulas; default all defined so far.
+    formulas : iterable of Formula, optional
+        The formulas whose symbols to list; default all defined so far.
 
     Returns
     -------
     pandas.DataFrame
-        One row per symbol and meaning.
+        One row per symbol.
 
     Examples
     --------
@@ -108,11 +108,12 @@ def symbols_table(formulas=None):
     """
     import pandas as pd
 
-    rows: dict[tuple, dict] = {}
+    rows: dict[str, dict] = {}
     for f in REGISTRY if formulas is None else formulas:
-        for s in (f.result, *f.inputs):
+        for shown in (f.result, *f.inputs):
+            s = SYMBOLS.get(shown.name, shown)  # a formula made outside the package may use its own
             row = rows.setdefault(
-                (s.name, s.unit, s.description),
+                s.name,
                 {
                     "symbol": s.name,
                     "LaTeX": f"${s.latex}$",

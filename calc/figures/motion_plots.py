@@ -11,6 +11,7 @@ import numpy as np
 from ..domain.cycle import PAUSE
 from ..domain.motion import Samples
 from ..domain.profile import Segments
+from ..core.glossary import math as symbol
 from .plots import ON_COLOR, PAUSE_COLOR, SPEED_COLOR, TORQUE_COLOR
 
 POSITION_COLOR = "#444444"
@@ -70,7 +71,7 @@ def motion_figure(samples: Samples, torque: np.ndarray, segments: Segments | Non
     phases = samples.segment_phases
     load_unit = LOAD_UNITS[linear]
     names = (("travel $s$", "speed $v$", "acceleration $a$") if linear
-             else (r"angle $\varphi_L$", "speed $n_L$", r"acceleration $\alpha_L$"))
+             else (f"angle {symbol('phi_L')}", f"speed {symbol('n_L')}", f"acceleration {symbol('alpha_L')}"))
     spec = {
         "position": (samples.position * 180 / np.pi, POSITION_COLOR, r"output angle $\varphi_2$ [deg]",
                      (np.pi / 180 * to_load * load_unit[1], f"load {names[0]} [{load_unit[0]}]")),

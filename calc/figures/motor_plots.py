@@ -6,7 +6,9 @@ import numpy as np
 
 from ..domain.motor import MotorLoad, OutputLoad
 from ..domain.motor_ratings import MotorSelection, peak_limit
-from ..domain.ratios import INERTIA_RATIO_LIMIT, RatioSearch
+from ..domain.ratios import RatioSearch
+from ..core.glossary import latex as symbol_latex
+from ..core.glossary import math as symbol
 
 
 def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak_torque=None, rated_torque=None,
@@ -45,10 +47,10 @@ def motor_torque_figure(load: OutputLoad, torques: MotorLoad, row: int = 0, peak
     ax.axhline(rms, color="tab:green", linestyle="-.", linewidth=1.2, label=f"RMS {rms:.3g} N·m")
     if rated_torque is not None:
         ax.axhline(rated_torque.m_as("N*m"), color="tab:orange", linestyle="--", linewidth=1.2,
-                   label="rated torque $T_{1N}$")
+                   label=f"rated torque {symbol('T_1N')}")
     if peak_torque is not None:
         peak = peak_torque.m_as("N*m")
-        ax.axhline(peak, color="tab:red", linestyle="--", linewidth=1.2, label="peak torque $T_{1B}$ (±)")
+        ax.axhline(peak, color="tab:red", linestyle="--", linewidth=1.2, label=f"peak torque {symbol('T_1B')} (±)")
         ax.axhline(-peak, color="tab:red", linestyle="--", linewidth=1.2)
     ax.axhline(0, color="black", linewidth=0.6)
     ax.set_xlabel("time in the cycle [s]")
@@ -91,7 +93,7 @@ def torque_speed_figure(selection: MotorSelection, row: int):
     ax.plot(np.abs(cycle.speed) * to_rpm, np.abs(cycle.torque[row]), ".", color="tab:blue", markersize=3, alpha=0.5,
             label="operating points $|n_1|, |T_1|$")
     ax.plot([cat["n_N"][row].m_as("rpm")], [cat["M_N"][row].m_as("N*m")], "s", color="tab:orange",
-            label="rated point $(n_N, M_N)$")
+            label=f"rated point $({symbol_latex('n_N')}, {symbol_latex('M_N_motor')})$")
     ax.plot([selection.mean_speed * to_rpm], [cycle.rms[row]], "D", color="tab:green",
             label=f"RMS {cycle.rms[row]:.3g} N·m at the mean speed")
     ax.set_xlim(0, n_max * to_rpm * 1.05)
@@ -138,9 +140,9 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
         top.plot(x, search.load.peak.m_as("N*m"), "o-", color="tab:red", label="peak $T_1$")
         top.plot(x, search.load.rms.m_as("N*m"), "s-", color="tab:blue", label="RMS $T_1$")
     if peak_torque is not None:
-        top.axhline(peak_torque.m_as("N*m"), color="tab:red", linestyle="--", linewidth=1, label="$T_{1B}$")
+        top.axhline(peak_torque.m_as("N*m"), color="tab:red", linestyle="--", linewidth=1, label=symbol("T_1B"))
     if rated_torque is not None:
-        top.axhline(rated_torque.m_as("N*m"), color="tab:blue", linestyle="--", linewidth=1, label="$T_{1N}$")
+        top.axhline(rated_torque.m_as("N*m"), color="tab:blue", linestyle="--", linewidth=1, label=symbol("T_1N"))
     top.set_ylabel("motor torque [N·m]")
     top.legend(fontsize=8, loc="best")
     top.grid(True, color="#dddddd", linewidth=0.6)
@@ -150,8 +152,8 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     if not np.all(np.isnan(search.inertia_ratio)):
         lam = bottom.twinx()
         lam.plot(x, search.inertia_ratio, "^:", color="tab:purple", label="inertia ratio λ")
-        lam.axhline(INERTIA_RATIO_LIMIT, color="tab:purple", linestyle="--", linewidth=1,
-                    label=f"λ limit {INERTIA_RATIO_LIMIT:g}")
+        limit = search.inertia_limit
+        lam.axhline(limit, color="tab:purple", linestyle="--", linewidth=1, label=f"λ limit {limit:g}")
         lam.set_ylabel("inertia ratio λ [–]", color="tab:purple")
         more = lam.get_legend_handles_labels()
         handles, labels = handles + more[0], labels + more[1]

@@ -14,6 +14,7 @@ import textwrap
 import numpy as np
 
 from ..core.errors import CalcError
+from ..core.glossary import math as symbol
 from ..domain.gearbox import SHOCK_FACTORS, GearboxSelection, shock_factor
 from ..domain.profile import S5_MAX_ED, S5_MAX_ON_TIME, Duty, Profile
 from ..domain.profile import duty as profile_duty
@@ -180,7 +181,7 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
     ax.annotate("", (x_end, factors[-1]), xytext=(x_end - 0.06 * x_end, factors[-1]),
                 arrowprops=dict(arrowstyle="->", color=SPEED_COLOR, linewidth=2.5))
     for lo, hi, f in zip(bounds, right, factors):
-        ax.text((lo + hi) / 2, f + 0.03, f"$f_s$ = {f:.1f}", ha="center", va="bottom", fontsize=9)
+        ax.text((lo + hi) / 2, f + 0.03, f"{symbol('f_s')} = {f:.1f}", ha="center", va="bottom", fontsize=9)
 
     handles = [
         Line2D([], [], marker="o", color=SPEED_COLOR, linestyle="none", label="boundary included in the band"),
@@ -191,7 +192,7 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
     if z_case is not None:
         ax.vlines(z_case, 0.0, f_case, color=CASE_COLOR, linewidth=1, linestyles="--", zorder=2)
         ax.hlines(f_case, 0.0, z_case, color=CASE_COLOR, linewidth=1, linestyles="--", zorder=2)
-        label = f"this case: $Z_h$ = {sig(z_case)} 1/h, $f_s$ = {f_case:g}"
+        label = f"this case: {symbol('Z_h')} = {sig(z_case)} 1/h, {symbol('f_s')} = {f_case:g}"
         ax.plot([z_case], [f_case], marker="*", markersize=16, color=CASE_COLOR, markeredgecolor="black",
                 linestyle="none", zorder=4, gid="case", label=label)
         handles.append(ax.lines[-1])
@@ -201,10 +202,11 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
     ax.set_xticks(bounds)
     ax.set_yticks(factors)
     ax.grid(True, color="#dddddd", linewidth=0.6, zorder=0)
-    ax.set_xlabel("cycles per hour $Z_h$ = 3600 s / $t_{cycle}$ [1/h]")
-    ax.set_ylabel("shock factor $f_s$ [–]")
+    ax.set_xlabel(f"cycles per hour {symbol('Z_h')} = 3600 s / {symbol('t_cycle')} [1/h]")
+    ax.set_ylabel(f"shock factor {symbol('f_s')} [–]")
     ax.set_title(textwrap.fill(f"Shock factor against cycles per hour: {table.source}", 90) + "\n"
-                 "makers rate $T_{2B}$ for up to 1000 cycles per hour; $f_s$ covers more", fontsize=10)
+                 f"makers rate {symbol('T_2B')} for up to 1000 cycles per hour; {symbol('f_s')} covers more",
+                 fontsize=10)
     fig.legend(handles=handles, loc="outside lower center", ncols=1, fontsize=8, frameon=False)
     return fig
 

@@ -10,13 +10,19 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.errors import CalcError
+from ..core.glossary import math as symbol
+
+
+def _symbols(*names: str) -> str:
+    return ", ".join(map(symbol, names))
+
 
 #: The members, drive to load: (key, name, its symbols). Subscripts follow the source's index table.
 MEMBERS = (
-    ("motor", "servo motor", ("$J_{motor}$", "$T_{1B}$, $T_{1N}$", "$n_{1max}$")),
-    ("coupling", "coupling", ("$C_T$, $J_K$", "$M_N$, $T_{KN}$", "$f_e$")),
-    ("gearbox", "gearbox", ("$i$, $\\eta$, $J_1$", "$T_{2N}$, $T_{2B}$", "$C_{t21}$, $j_t$")),
-    ("load", "load", ("$J_L$", "$T_2$, $n_2$", "$\\varphi_2$")),
+    ("motor", "servo motor", (_symbols("J_motor"), _symbols("T_1B", "T_1N"), _symbols("n_1max"))),
+    ("coupling", "coupling", (_symbols("C_T", "J_K"), _symbols("M_N", "T_KN"), _symbols("f_e"))),
+    ("gearbox", "gearbox", (_symbols("i", "eta", "J_1"), _symbols("T_2N", "T_2B"), _symbols("C_t21", "j_t"))),
+    ("load", "load", (_symbols("J_L"), _symbols("T_2", "n_2"), _symbols("phi_2"))),
 )
 FOCUS_COLOR = "#f6c344"
 OTHER_COLOR = "#e8e8e8"
@@ -40,7 +46,7 @@ def drive_train_figure(focus: tuple[str, ...] = ()):
     --------
     >>> fig = drive_train_figure(("gearbox",))
     >>> [t.get_text() for t in fig.axes[0].texts][:2]
-    ['servo motor', '$J_{motor}$']
+    ['servo motor', '$J_{\\\\mathrm{motor}}$']
     >>> drive_train_figure(("brake",))
     Traceback (most recent call last):
     ...
@@ -187,8 +193,8 @@ def bellows_coupling_figure():
         ((0.45, 0.62), (-0.9, 1.2), "hub 1: clamps the motor shaft $D_1$"),
         ((right + 0.45, 0.62), (right - 0.2, 1.2), "hub 2: clamps the gearbox shaft $D_2$"),
         (((left + right) / 2, -0.55), ((left + right) / 2 - 1.2, -1.15),
-         "metal bellows: stiff in torsion ($C_T$), soft against misalignment;\nno backlash, no temperature factor "
-         "(E9)"),
+         f"metal bellows: stiff in torsion ({symbol('C_T')}), soft against misalignment;\n"
+         "no backlash, no temperature factor (E9)"),
     )
     _label(ax, labels)
     ax.text(-0.9, 0.0, "motor ", ha="right", va="center", fontsize=8.5)

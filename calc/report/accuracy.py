@@ -12,7 +12,7 @@ import numpy as np
 from ..sections import gearbox
 from ..sections.accuracy import NAME
 from .common import TableRenderer, result_of
-from .latex import latex_escape, listed, plain, prose, q, step_block, table
+from .latex import latex_escape, listed, plain, prose, q, step_block, symbol_latex, symbol_math, table
 from .page import in_system, table as html_table, value
 from .provenance import PROJECT_DIR
 from .symbols import html as typeset
@@ -66,27 +66,28 @@ class AccuracyRenderer(TableRenderer):
         lower = f"; a lower bound: unknown {'; '.join(a.unknown)}" if a.unknown else ""
         not_known = f"; not known: unknown {'; '.join(a.unknown_chain)}" if a.unknown_chain else ""
         rows = [
-            [r"$C_{\mathrm{total}}$", (r"$\leq$ " if a.unknown_chain else "") + q(a.C_total),
+            [symbol_math("C_total"), (r"$\leq$ " if a.unknown_chain else "") + q(a.C_total),
              prose("total torsional stiffness at the output (E11)" + ("; an upper bound" if a.unknown_chain else ""))],
-            [r"$j_{t}$", q(a.backlash), prose("torsional backlash at the output")],
-            [r"$\varphi_{\mathrm{TA}}$", q(a.transmission_accuracy),
+            [symbol_math("j_t"), q(a.backlash), prose("torsional backlash at the output")],
+            [symbol_math("phi_TA"), q(a.transmission_accuracy),
              prose("angular transmission accuracy, from " + listed(a.transmission_accuracy_from))],
-            [r"$\varphi_{\mathrm{LM}}$", (r"$\geq$ " if a.unknown_chain else "") + q(a.lost_motion),
+            [symbol_math("phi_LM"), (r"$\geq$ " if a.unknown_chain else "") + q(a.lost_motion),
              prose("total lost motion at the applied torque (E12)" + ("; a lower bound" if a.unknown_chain else ""))],
-            [r"$\Delta\varphi_{P}$", (r"$\geq$ " if a.unknown else "") + q(a.positioning_accuracy),
+            [symbol_math("Delta_phi_P"), (r"$\geq$ " if a.unknown else "") + q(a.positioning_accuracy),
              prose(f"positioning accuracy, {a.positioning_rule} (E13)" + lower)],
             ["–", q(a.repeatability), prose(rep + not_known)],
         ]
-        rows += [[f"$s$ ({latex_escape(key.replace('_', ' '))})", q(arc), prose(f"as an arc at r = {plain(a.radius)}")]
-                 for key, arc in a.arcs.items()]
+        rows += [[f"{symbol_math('s')} ({latex_escape(key.replace('_', ' '))})", q(arc),
+                  prose(f"as an arc at r = {plain(a.radius)}")] for key, arc in a.arcs.items()]
         comp = [[latex_escape(m.name), latex_escape(m.side), q(m.stiffness_at_output), q(m.backlash_at_output),
                  q(m.transmission_accuracy_at_output), f"{100 * m.share_of_compliance:.1f}",
                  q(m.twist_at_applied_torque)] for m in a.members]
         return [
             r"\subsection{Accuracy: results}",
             table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows),
-            table(r"@{}l l r r r r r@{}", ["Member", "Side", "$C$", "$j_t$", r"$\varphi_{\mathrm{TA}}$",
-                                           r"$1/C$ [\%]", r"Twist at $T$"], comp, small=True,
+            table(r"@{}l l r r r r r@{}", ["Member", "Side", *map(symbol_math, ("C", "j_t", "phi_TA")),
+                                           rf"$1/{symbol_latex('C')}$ [\%]", f"Twist at {symbol_math('T')}"], comp,
+                  small=True,
                   caption=prose(f"Members of the chain referred to the output, at T = {plain(a.applied_torque)}")),
         ]
 

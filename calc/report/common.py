@@ -20,7 +20,6 @@ import tomllib
 from pathlib import Path
 from typing import ClassVar
 
-from ..core.formula import REGISTRY
 from ..domain.gearbox import inertia_ratio
 from ..sections import declared
 from ..core.units import pretty_unit, sig
@@ -45,14 +44,6 @@ def readings(name: str) -> set[str]:
     return {k for k, e in ERRATA.items() if e.get("section") == name}
 
 
-def gearbox_symbols() -> dict:
-    """The symbols of the load cycle's and the gearbox's formulas, by their name in code (the
-    case's [motor], [load], [gearbox] and [[profile]] inputs; the further sections have their own:
-    a coupling's J_L is another quantity than the gearbox's)."""
-    own = ("calc.domain.profile.", "calc.domain.gearbox.")
-    return {s.name: s for f in REGISTRY if f.key.startswith(own) for s in (f.result, *f.inputs)}
-
-
 #: The columns of an inputs table: symbol, value, unit, description, case key (which may break after a dot or underscore).
 INPUT_COLUMNS = r"@{}l r l p{0.36\linewidth} p{0.27\linewidth}@{}"
 
@@ -63,12 +54,8 @@ def case_key(key: str) -> str:
 
 
 def symbol_latex(name: str) -> str:
-    """A symbol's LaTeX by its name in code: the formulas' own where a formula has it, else the
-    name set as math (``T_1N`` as T with the subscript 1N, ``vartheta`` as ϑ); empty for none."""
-    own = next((s for f in REGISTRY for s in (f.result, *f.inputs) if s.name == name), None)
-    if not name or own is not None:
-        return own.latex if own is not None else ""
-    return symbols.symbol_latex(name)
+    """A symbol's LaTeX by its name in code (:func:`calc.core.glossary.latex`); empty for none."""
+    return symbols.symbol_latex(name) if name else ""
 
 
 def input_row(path: str, value, derived: bool = False) -> list[str]:

@@ -10,7 +10,7 @@ from html import escape
 from ..core.units import sig
 from ..sections.coupling import NAME
 from .common import TableRenderer, candidates_table, rejected
-from .latex import breakable, itemize, latex_escape, plain, prose, q, sources_list, step_block, table
+from .latex import breakable, itemize, latex_escape, plain, prose, q, sources_list, step_block, symbol_math, table
 from .page import candidates_shown, notes, table as html_table, utilization, value, verdict_cell
 from .symbols import html as typeset
 
@@ -100,15 +100,16 @@ class CouplingRenderer(TableRenderer):
         if r is None:
             return []
         rows = [
-            [r"$M_{N}$", q(r.M_N), prose(f"nominal torque of the coupling, S_A = {r.service_factor:g} included (E8)")],
-            [r"$T_{\mathrm{op}}$", q(r.T_op), prose("peak torque of normal operation (M_N with S_A = 1)")],
-            [r"$K_{\vartheta}$", f"{r.temperature_factor:g}",
+            [symbol_math("M_N"), q(r.M_N),
+             prose(f"nominal torque of the coupling, S_A = {r.service_factor:g} included (E8)")],
+            [symbol_math("T_op"), q(r.T_op), prose("peak torque of normal operation (M_N with S_A = 1)")],
+            [symbol_math("K_T"), f"{r.temperature_factor:g}",
              prose("temperature factor (elastomer couplings, E9)"
                    + (f" at {plain(r.temperature)}" if r.temperature else ""))],
-            [r"$f_{e,\mathrm{min}}$", q(r.f_e_min), prose("lowest natural frequency allowed, 2 f_er (E7)")],
+            [symbol_math("f_e_min"), q(r.f_e_min), prose("lowest natural frequency allowed, 2 f_er (E7)")],
         ]
         if r.selection.start_factor is not None:
-            rows.append([r"$S_{z}$", f"{r.selection.start_factor:g}",
+            rows.append([symbol_math("S_z"), f"{r.selection.start_factor:g}",
                          prose(f"start factor at {plain(r.starts_per_hour)} ({r.start_factors})")])
         out = [r"\subsection{Coupling: results}",
                table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows)]

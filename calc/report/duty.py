@@ -9,11 +9,10 @@ import dataclasses
 from html import escape
 
 from ..domain.gearbox import SHOCK_FACTORS
-from ..domain.profile import t_k as t_k_symbol
 from ..sections import duty as sections_duty
 from ..core.units import sig
-from .common import Renderer, gearbox_symbols
-from .latex import latex_escape, num, render, step_block, table
+from .common import Renderer
+from .latex import latex_escape, num, render, step_block, symbol_latex, symbol_math, table
 from .page import in_system, value
 from .symbols import html as typeset
 
@@ -25,6 +24,7 @@ def shock_factor_block(zh, table=SHOCK_FACTORS) -> str:
     return render(
         "shock-factor.tex.j2", fs=f"{table.factors[k]:g}", band=table.text(k, latex=True),
         zh=sig(zh.m_as(table.unit)), source=latex_escape(table.source),
+        f_s=symbol_latex("f_s"), Z_h=symbol_latex("Z_h"),
     )
 
 
@@ -41,7 +41,7 @@ class DutyRenderer(Renderer):
     NAME = sections_duty.NAME
 
     def inputs(self, report) -> list[str]:
-        p, s = report.case.profile, gearbox_symbols()
+        p = report.case.profile
         rows = []
         for k, (phase, t, n, T) in enumerate(zip(p.phases, p.durations, p.speeds, p.torques), start=1):
             moving = phase != "pause"
@@ -49,7 +49,8 @@ class DutyRenderer(Renderer):
                          num(T, "N*m") if moving else "–"])
         return [table(
             r"@{}r l r r r@{}",
-            ["k", "Phase", f"${t_k_symbol.latex}$ [s]", rf"${s['n_2k'].latex}$ [rpm]", rf"${s['T_2k'].latex}$ [N·m]"],
+            ["k", "Phase", *(f"{symbol_math(symbol)} [{unit}]" for symbol, unit in (("t_k", "s"), ("n_2k", "rpm"),
+                                                                                   ("T_2k", "N·m")))],
             rows,
             caption="Load cycle at the gearbox output (case key \\texttt{[[profile]]})" if report.case.motion is None
             else "Load cycle at the gearbox output, derived from the motion (below)",

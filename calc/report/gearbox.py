@@ -14,7 +14,7 @@ from ..core.units import sig
 from ..sections import gearbox as sections_gearbox
 from . import common
 from .common import Renderer, candidates_table, checks_table, input_row, rejected
-from .latex import breakable, latex_escape, num, sources_list, stacked, step_block, table
+from .latex import breakable, latex_escape, num, sources_list, stacked, step_block, symbol_math, table
 from .page import FORCING, candidates_shown, table as html_table, utilization, value, verdict_cell
 from .ratios import RENDERER as RATIOS
 from .symbols import html as typeset
@@ -106,8 +106,8 @@ class GearboxRenderer(Renderer):
                 "–" if np.isnan(hub.magnitude) else sig(hub.m_as("mm")),
                 f"[{numbers[str(cat.text['source'][r])]}]",
             ])
-        note = (r"$\star$ smallest adequate size of its family. $J_1$ for the clamping hub of bore $d_{\mathrm{hub}}$. "
-                "Sources by number below.")
+        note = (rf"$\star$ smallest adequate size of its family. {symbol_math('J_1')} for the clamping hub of bore "
+                f"{symbol_math('d_hub')}. Sources by number below.")
         if doubts:
             note = "".join(rf"$^{{\dagger{k}}}$ doubtful figures of {breakable(d)}. "
                            for k, d in enumerate(doubts, start=1)) + note
@@ -116,9 +116,9 @@ class GearboxRenderer(Renderer):
         return [
             table(
                 r"@{}l l r r r r r r r r@{}",
-                ["Part", "Family, size", *(stacked(symbol, f"[{unit}]") for symbol, unit in (
-                    ("$T_{2N}$", "N·m"), ("$T_{2B}$", "N·m"), ("$n_{1N}$", "rpm"), (r"$n_{1\mathrm{max}}$", "rpm"),
-                    (r"$\eta$", r"\%"), ("$J_1$", "kg·cm²"), (r"$d_{\mathrm{hub}}$", "mm"))), "Src."],
+                ["Part", "Family, size", *(stacked(symbol_math(symbol), f"[{unit}]") for symbol, unit in (
+                    ("T_2N", "N·m"), ("T_2B", "N·m"), ("n_1N", "rpm"), ("n_1max", "rpm"), ("eta", r"\%"),
+                    ("J_1", "kg·cm²"), ("d_hub", "mm"))), "Src."],
                 rows, caption=latex_escape(f"Catalog ratings of the candidates ({cat.shown_name}), best first"),
                 note=note, small=True, narrow=True,
             ),

@@ -14,7 +14,8 @@ from ..core.checks import within_rating
 from ..core.formula import Step
 from ..core.units import NUMBER, Value, pretty_unit, sig
 from .symbols import latex as prose
-from .symbols import latex_escape
+from ..core.glossary import math as symbol_math  # noqa: F401 (the report's sections take it from here)
+from .symbols import latex_escape, symbol_latex  # noqa: F401 (symbol_latex: the report's sections take it from here)
 
 
 class Latex(str):

@@ -10,7 +10,7 @@ from html import escape
 from ..sections.motion import NAME, keys_of
 from ..core.units import Q_, sig
 from .common import Renderer, input_row
-from .latex import latex_escape, signed, step_block, table
+from .latex import latex_escape, signed, step_block, symbol_math, table
 from .page import value
 from .symbols import html as typeset
 
@@ -55,7 +55,7 @@ class MotionRenderer(Renderer):
                 else m.mechanism.type.replace("-", " and ").replace("ball and screw", "ball screw"))
         return [table(
             r"@{}r l r r r r r@{}",
-            ["k", "", "Distance", "$t_m$ [s]", "$t_a$ [s]", "$t_d$ [s]", "$t_j$ [s]"],
+            ["k", "", "Distance", *(f"{symbol_math(t)} [s]" for t in ("t_m", "t_a", "t_d", "t_j"))],
             rows,
             caption=rf"Moves of the load, repeated (case key \texttt{{[[move]]}}; mechanism: {latex_escape(kind)})",
             note="A trapezoid has no jerk time; with one, each speed ramp starts and ends with a ramp of constant jerk "
@@ -70,7 +70,10 @@ class MotionRenderer(Renderer):
         rows = [[str(j), g.phase, *(signed(sig(v.value)) for v in (g.duration, g.speed, g.torque))]
                 for j, g in enumerate(r.segments, start=1)]
         out.append(table(
-            r"@{}r l r r r@{}", ["k", "Phase", "$t_k$ [s]", "$n_{2,k}$ [rpm]", "$T_{2,k}$ [N·m]"], rows,
+            r"@{}r l r r r@{}",
+            ["k", "Phase", *(f"{symbol_math(symbol)} [{unit}]" for symbol, unit in (("t_k", "s"), ("n_2k", "rpm"),
+                                                                                   ("T_2k", "N·m")))],
+            rows,
             caption="Segments derived from the sampled cycle, used as the load cycle",
             note=(f"{r.samples} samples per cycle. Mean speed of each segment; its torque gives the segment's cubic "
                   "mean (the integral over the samples; in a trapezoid's phase the torque is constant and this is its "

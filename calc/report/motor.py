@@ -11,7 +11,7 @@ from ..domain.motor import T_1rms
 from ..core.units import latex_unit, sig
 from ..sections.motor import NAME
 from .common import Renderer, candidates_table, checks_table, input_row, rejected
-from .latex import itemize, latex_escape, prose, q, step_block, table
+from .latex import itemize, latex_escape, prose, q, step_block, symbol_math, table
 from .page import FORCING, candidates_shown, table as html_table, utilization, value, verdict_cell
 from .symbols import html as typeset
 
@@ -85,7 +85,7 @@ class MotorRenderer(Renderer):
         more = f"; {left} more in the candidates' utilization below" if left > 0 else ""
         caption = (f"The motors of {sel.catalog.shown_name}, best first ({sel.inertia_limit:g} is the limit of λ, "
                    f"from {sel.inertia_limit_from}){more}")
-        header = ["Part", "$M_N$", r"$J_{\mathrm{motor}}$", r"$\lambda$", "Peak characteristic"]
+        header = ["Part", *map(symbol_math, ("M_N_motor", "J_motor", "lambda")), "Peak characteristic"]
         return [r"\subsection*{Motor}",
                 table(r"@{}l r r r l@{}", header, rows, caption=latex_escape(caption), small=True),
                 candidates_table(listed, sel.selected,

@@ -10,9 +10,8 @@ from html import escape
 
 from ..core.units import Value, sig
 from ..data.catalog import display_path
-from ..domain.ratios import RULE
 from .common import Renderer
-from .latex import latex_escape, prose, q, table, util, verdict_mark
+from .latex import latex_escape, prose, q, symbol_latex, symbol_math, table, util, verdict_mark
 from .page import notes, table as html_table, utilization, value, verdict_cell
 from .symbols import html as typeset
 
@@ -34,12 +33,12 @@ class RatiosRenderer(Renderer):
         return [
             r"\subsection*{The ratio}",
             prose(r.search.reason),
-            table(r"@{}r l r r r r r l@{}", ["$i$", "Best gearbox", "Utilization", r"$\lambda$",
-                                              r"$T_{1,\mathrm{peak}}$", r"$T_{1,\mathrm{rms}}$",
-                                              r"$n_{2\mathrm{max}} \cdot i$", "Verdict"], rows,
+            table(r"@{}r l r r r r r l@{}",
+                  [symbol_math("i"), "Best gearbox", "Utilization", *map(symbol_math, ("lambda", "T_1peak", "T_1rms")),
+                   rf"${symbol_latex('n_2max')} \cdot i$", "Verdict"], rows,
                   caption=latex_escape(f"The case at every ratio of {display_path(r.search.selection.catalog.path)}, "
                                        "each with its best gearbox"),
-                  note=prose(f"Rule: {RULE}.")),
+                  note=prose(f"Rule: {r.search.rule}.")),
         ]
 
     def figures(self, report) -> list:

@@ -1,10 +1,12 @@
-"""The one typesetter of the package's own text: symbols as written in code (``T_2B``,
-``d_hub,max``, ``K_ϑ``, ``phi_LM``) with their subscripts, ``<=`` and ``>=`` as ≤ and ≥, names
-written in code (``positioning_accuracy``) in words, and case keys (``motor.peak_torque``) as code.
+"""The package's own text in the outputs: symbols as written in code (``T_2B``, ``d_hub,max``,
+``K_ϑ``, ``phi_LM``) with their subscripts, ``<=`` and ``>=`` as ≤ and ≥, names written in code
+(``positioning_accuracy``) in words, and case keys (``motor.peak_torque``) as code.
 
 Every criterion, reason, note and reading the package emits goes through :func:`tokens` once;
 :func:`latex` (the calc report) and :func:`html` (the design review) only render its tokens, so the
-two outputs typeset the same symbols the same way.
+two outputs typeset the same symbols the same way. A symbol's LaTeX is the one typesetter's,
+:func:`calc.core.glossary.latex`, which the formulas print theirs by: a criterion and a calculation
+print a symbol alike.
 """
 
 from __future__ import annotations
@@ -12,6 +14,8 @@ from __future__ import annotations
 import re
 from html import escape
 
+from ..core.glossary import GREEK
+from ..core.glossary import latex as glossary_latex
 from ..sections import TOP_KEYS
 
 _SPECIAL = {
@@ -36,10 +40,7 @@ def latex_escape(text) -> str:
     return _LIGATURE.sub("{}", out)
 
 
-#: Greek letters written out in code, as LaTeX and as text.
-GREEK = {"phi": (r"\varphi", "φ"), "eta": (r"\eta", "η"), "lambda": (r"\lambda", "λ"), "vartheta": (r"\vartheta", "ϑ"),
-         "theta": (r"\theta", "θ"), "mu": (r"\mu", "μ")}
-_GREEK_NAMES = "|".join(GREEK)
+_GREEK_NAMES = "|".join(name for name in GREEK if name != "Delta")  # Δ alone is no symbol of the prose
 # A case key, ``motor.peak_torque`` or ``coupling.shaft_1``, or a name in the package (code, set as code).
 _TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])  # and the package's own names, calc.domain.gearbox.x
 _KEY = rf"(?P<key>(?<![\w.])(?:{_TABLES})(?:\[\d+\])?(?:\.[a-z][a-z0-9_]*(?:\[\d+\])?)+)"
@@ -87,18 +88,15 @@ def tokens(text: str) -> list[tuple[str, ...]]:
     return out
 
 
-def _latex_subscript(sub: str) -> str:
-    """Upright letters and digits (a subscript names, it does not multiply); a Greek letter as is."""
-    return sub if len(sub) == 1 and not sub.isascii() else rf"\mathrm{{{sub}}}"
-
-
 def latex(text: str) -> str:
     r"""The text as LaTeX: escaped, each symbol in math.
 
     >>> print(latex("M_N · K_ϑ <= T_KN"))
-    $M_{\mathrm{N}}$ · $K_{ϑ}$ ≤ $T_{\mathrm{KN}}$
+    $M_{\mathrm{N}}$ · $K_{\vartheta}$ ≤ $T_{\mathrm{KN}}$
     >>> print(latex("d_motor <= d_hub,max, 100%"))
     $d_{\mathrm{motor}}$ ≤ $d_{\mathrm{hub,max}}$, 100\%
+    >>> print(latex("T_1rms <= M_N"))
+    $T_{\mathrm{1rms}}$ ≤ $M_{\mathrm{N}}$
     """
     out = []
     for kind, *rest in tokens(text):
@@ -112,19 +110,27 @@ def latex(text: str) -> str:
 
 
 def _symbol_latex(base: str, sub: str) -> str:
-    letter = GREEK[base][0] if base in GREEK else base
-    return f"{letter}_{{{_latex_subscript(sub)}}}" if sub else letter
+    return glossary_latex(f"{base}_{sub}" if sub else base)
 
 
 def symbol_latex(name: str) -> str:
     r"""A symbol by its name in code (``T_1N``, ``d_hub,max``, ``vartheta``) as LaTeX math, without
-    the dollars.
+    the dollars: the glossary's (:func:`calc.core.glossary.latex`).
 
-    >>> print(symbol_latex("T_1N"), symbol_latex("vartheta"), symbol_latex("phi_B"))
-    T_{\mathrm{1N}} \vartheta \varphi_{\mathrm{B}}
+    Parameters
+    ----------
+    name : str
+        The symbol as code writes it.
+
+    Returns
+    -------
+    str
+        LaTeX math.
+
+    >>> print(symbol_latex("T_1N"), symbol_latex("vartheta"), symbol_latex("phi_B"), symbol_latex("t_k"))
+    T_{\mathrm{1N}} \vartheta \varphi_{\mathrm{B}} t_{k}
     """
-    base, _, sub = name.partition("_")
-    return _symbol_latex(base, sub)
+    return glossary_latex(name)
 
 
 def symbol_text(name: str) -> str:

@@ -8,8 +8,9 @@ arrived, are greyed and marked out of date; a lost connection to the kernel (the
 a tunnel dropped) greys them too and says how to get back. It keeps the changed values in the
 page's address (``#…``), so a reload or a shared link types them in again, and asks before a
 reload or a switch of case drops changes; a click on a candidate's row forces that part (its
-control set as a reviewer would set it). The moves' edits (entries added or removed) and the unit system, where it
-is not the file's, go into the address too; a link's are handed back to the kernel through a hidden field (``dr-edits``). Voilà runs it from the page's notebook
+control set as a reviewer would set it). The moves' edits (entries added or removed) and the unit
+system, where it is not the file's, go into the address too; a link's are handed back to the kernel
+through a hidden field (``dr-edits``). Voilà runs it from the page's notebook
 (``design-review.ipynb``); in JupyterLab the kernel is beside the notebook and it is not needed.
 """
 
@@ -18,11 +19,14 @@ from __future__ import annotations
 from html import escape
 
 STYLE = """<style>
-.design-review .dr-state { font-size: 13px; padding: 3px 8px; border-radius: 3px; margin: 0 0 4px; background: #eef6ee; color: #1b5e20; }
+.design-review .dr-state { font-size: 13px; padding: 3px 8px; border-radius: 3px; margin: 0 0 4px;
+  background: #eef6ee; color: #1b5e20; }
 .design-review.dr-stale .dr-state, .design-review.dr-busy .dr-state { background: #fff4d6; color: #6d4c00; }
 .design-review.dr-lost .dr-state { background: #b2222a; color: #fff; }
-.design-review.dr-stale .dr, .design-review.dr-lost .dr, .design-review.dr-busy .dr { opacity: 0.42; filter: grayscale(1); }
-.design-review.dr-stale .dr-figures, .design-review.dr-lost .dr-figures, .design-review.dr-busy .dr-figures { opacity: 0.42; }
+.design-review.dr-stale .dr, .design-review.dr-lost .dr, .design-review.dr-busy .dr {
+  opacity: 0.42; filter: grayscale(1); }
+.design-review.dr-stale .dr-figures, .design-review.dr-lost .dr-figures, .design-review.dr-busy .dr-figures {
+  opacity: 0.42; }
 .design-review .dr-refused input { border: 2px solid #b2222a !important; background: #fff0f0 !important; }
 .design-review .dr-message { color: #b2222a; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
 .design-review .dr-idle { color: #666; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
@@ -41,7 +45,8 @@ STYLE = """<style>
   @page { size: A4; margin: 12mm; }
   /* Voilà's page scrolls inside fixed-height boxes: printed, every box takes its content's height */
   html, body, body * { overflow: visible !important; }
-  html, body, .lm-Widget, .jp-OutputArea, .jp-Cell { height: auto !important; max-height: none !important; contain: none !important; }
+  html, body, .lm-Widget, .jp-OutputArea, .jp-Cell {
+    height: auto !important; max-height: none !important; contain: none !important; }
   .lm-Widget { position: relative !important; top: auto !important; left: auto !important; }
   .design-review { flex-flow: column !important; }
   .design-review > .widget-vbox { width: 100% !important; min-width: 0 !important; flex: 1 1 auto !important; }
@@ -69,7 +74,8 @@ SCRIPT = r"""<script>
       if (!row) continue;
       const field = row.querySelector('input[type=text]'), choice = row.querySelector('select');
       if (field) out[label.dataset.key] = field.value.trim();
-      else if (choice && choice.selectedIndex >= 0) out[label.dataset.key] = optionText(choice.options[choice.selectedIndex]);
+      else if (choice && choice.selectedIndex >= 0)
+        out[label.dataset.key] = optionText(choice.options[choice.selectedIndex]);
     }
     return out;
   }
@@ -89,15 +95,19 @@ SCRIPT = r"""<script>
     if (!p || !r) return;
     if (restoring !== false && restoring !== 'case') restore();
     const state = p.querySelector('.dr-state'), link = connection(), lost = link !== null && link !== 'connected';
-    const same = current(), waiting = askedAfter !== null && Number(r.dataset.generation) <= askedAfter && Date.now() - askedAt < 3000;
+    const same = current();
+    const waiting = askedAfter !== null && Number(r.dataset.generation) <= askedAfter && Date.now() - askedAt < 3000;
     const stale = !same || waiting || p.classList.contains('dr-busy');  // dr-busy: the kernel computing a change
     p.classList.toggle('dr-lost', lost);
     p.classList.toggle('dr-stale', stale && !lost);
     if (state) {
       const text = lost
-        ? 'Connection to the server lost: the results shown are not those of the fields. Start the server again (make review) and reload the page; the changed values are kept in its address.'
-        : stale ? 'Out of date: computing the results of the values changed (a value typed counts once Enter is pressed or the field is left).'
-        : 'Current: the results are those of the values shown' + (modified(r) ? ' (changed values marked)' : ' (the case file’s values)') + '.';
+        ? 'Connection to the server lost: the results shown are not those of the fields. '
+          + 'Start the server again (make review) and reload the page; the changed values are kept in its address.'
+        : stale ? 'Out of date: computing the results of the values changed '
+          + '(a value typed counts once Enter is pressed or the field is left).'
+        : 'Current: the results are those of the values shown'
+          + (modified(r) ? ' (changed values marked)' : ' (the case file’s values)') + '.';
       // Written only when it changes: the observer below sees every write.
       if (state.textContent !== text) state.textContent = text;
       const word = lost ? 'lost' : stale ? 'stale' : 'current';
@@ -111,7 +121,8 @@ SCRIPT = r"""<script>
   // The changed values (and the moves' edits) in the page's address, so that a reload or a link types them in again.
   function keepInAddress(r) {
     const changed = JSON.parse(r.dataset.changed || '{}'), name = r.dataset.case || '';
-    const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed} : {case: name, values: changed};
+    const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed}
+                            : {case: name, values: changed};
     const units = r.dataset.units !== r.dataset.fileUnits;  // the other unit system than the file's
     if (units) state.units = r.dataset.units;
     const variants = JSON.parse(r.dataset.variants || '[]');  // the variants kept, each as its edits and values
@@ -129,7 +140,11 @@ SCRIPT = r"""<script>
     const field = row.querySelector('input[type=text]'), choice = row.querySelector('select');
     const target = field || choice;
     if (field) field.value = text;
-    else if (choice) { const k = [...choice.options].findIndex(o => optionText(o) === text); if (k < 0) return; choice.selectedIndex = k; }
+    else if (choice) {
+      const k = [...choice.options].findIndex(o => optionText(o) === text);
+      if (k < 0) return;
+      choice.selectedIndex = k;
+    }
     if (target) { ask(); target.dispatchEvent(new Event('change', {bubbles: true})); }
   }
   function ask() { const r = results(); askedAfter = r ? Number(r.dataset.generation) : 0; askedAt = Date.now(); }
@@ -163,14 +178,16 @@ SCRIPT = r"""<script>
     }
     // The variants first (the kernel evaluates each from its case file), then the moves' edits
     // (made at once, from the file's moves), then the values.
-    if (!handOver('variants', '.dr-variants-asked input', wanted.variants || [], r.dataset.variants, r.dataset.variantsAsked)) return;
+    const variants = wanted.variants || [], asked = r.dataset.variantsAsked;
+    if (!handOver('variants', '.dr-variants-asked input', variants, r.dataset.variants, asked)) return;
     if (!handOver('edits', '.dr-edits input', wanted.edits || [], r.dataset.edits)) return;
     // The controls are drawn after the results at times: wait for every row asked for (not forever).
     if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < 20000) return;
     restoring = false;
     for (const [key, text] of Object.entries(wanted.values)) type(key, text);
     if (wanted.units && wanted.units !== r.dataset.units) {  // the unit system the link was shown in
-      const button = [...document.querySelectorAll('.design-review .widget-toggle-buttons button')].find(b => b.textContent.trim() === wanted.units);
+      const buttons = [...document.querySelectorAll('.design-review .widget-toggle-buttons button')];
+      const button = buttons.find(b => b.textContent.trim() === wanted.units);
       if (button) { ask(); button.click(); }
     }
   }
@@ -178,12 +195,15 @@ SCRIPT = r"""<script>
     if (!e.target.closest || !e.target.closest('.design-review .dr-row')) return;
     ask(); show();
   }, true);
-  document.addEventListener('input', e => { if (e.target.closest && e.target.closest('.design-review')) show(); }, true);
+  document.addEventListener('input', e => {
+    if (e.target.closest && e.target.closest('.design-review')) show();
+  }, true);
   // A click on a candidate's row forces that part: its control is set as a reviewer would set it.
   document.addEventListener('click', e => {
     const tr = e.target.closest && e.target.closest('.design-review tr[data-force]');
     if (tr) type(tr.dataset.force, tr.dataset.part);
-    if (e.target.closest && e.target.closest('.design-review .dr-moves button')) { ask(); show(); }  // an entry added or removed
+    // an entry added or removed
+    if (e.target.closest && e.target.closest('.design-review .dr-moves button')) { ask(); show(); }
   }, true);
   document.addEventListener('pointerup', e => {
     if (e.target.closest && e.target.closest('.design-review .dr-row .widget-slider')) { ask(); show(); }
@@ -203,14 +223,21 @@ SCRIPT = r"""<script>
     if (r && modified(r) && !location.hash) { e.preventDefault(); e.returnValue = ''; }
   });
   new MutationObserver(() => { if (restoring === 'case') restore(); show(); })
-    .observe(document.body, {subtree: true, childList: true, attributes: true, attributeFilter: ['data-generation', 'data-inputs']});
+    .observe(document.body, {subtree: true, childList: true, attributes: true,
+                             attributeFilter: ['data-generation', 'data-inputs']});
   setInterval(show, 500);
 })();
 </script>"""
 
 
 def page_html() -> str:
-    """The page's style and script, as one HTML output of the served notebook."""
+    """The page's style and script, as one HTML output of the served notebook.
+
+    Returns
+    -------
+    str
+        HTML: :data:`STYLE` then :data:`SCRIPT`.
+    """
     return STYLE + SCRIPT
 
 
@@ -219,9 +246,26 @@ BUSY = "Out of date: computing the results of the values changed."
 
 
 def state_html(busy: bool = False) -> str:
-    """The line saying whether the results are current. The kernel writes it as it starts and
-    ends computing a change (in JupyterLab, where no script of the page runs, that is what marks
-    the results out of date); in the served page the script keeps it up to date with what only
-    the browser knows (a value typed, the connection lost)."""
+    """The line saying whether the results are current.
+
+    The kernel writes it as it starts and ends computing a change (in JupyterLab, where no script
+    of the page runs, that is what marks the results out of date); in the served page the script
+    keeps it up to date with what only the browser knows (a value typed, the connection lost).
+
+    Parameters
+    ----------
+    busy : bool
+        Whether the kernel is computing a change (the results out of date, :data:`BUSY`).
+
+    Returns
+    -------
+    str
+        HTML: the line, its ``data-state`` ``"stale"`` or ``"current"``.
+
+    Examples
+    --------
+    >>> state_html(busy=True)
+    '<div class="dr-state" data-state="stale">Out of date: computing the results of the values changed.</div>'
+    """
     word, text = ("stale", BUSY) if busy else ("current", "Current: the results are those of the values shown.")
     return f'<div class="dr-state" data-state="{word}">{escape(text)}</div>'

@@ -29,8 +29,19 @@ _PART = re.compile(r"^(\w+)(?:\[(\d+)\])?$")
 @dataclass(frozen=True)
 class Edit:
     """One edit of a case file: ``value`` written at the key path ``key`` (see the module's
-    docstring); ``insert`` puts a new entry in at the place ``key`` names (``move[3]``: before
-    the third, or after the last where the array has two), the later ones moving up."""
+    docstring).
+
+    Parameters
+    ----------
+    key : str
+        The key path: a value's (``motor.peak_torque``), an entry's (``move[3]``) or a table's.
+    value : str, float, dict, list of dict or None
+        The value as the file writes it: a text (``"16 N*m"``), a bare number, the keys of a table
+        or entry, the entries of an array of tables; None takes the key, entry or table out.
+    insert : bool
+        Put a new entry in at the place ``key`` names (``move[3]``: before the third, or after the
+        last where the array has two), the later ones moving up.
+    """
 
     key: str
     value: object
@@ -249,6 +260,8 @@ def moves_edits(edit) -> list[Edit]:
     Returns
     -------
     list of Edit
+        The edits of the case file, in order: an entry put in or taken out, or the mechanism's
+        table and each move's distance.
 
     Examples
     --------
@@ -273,6 +286,7 @@ def edit_text(edit) -> str:
     Returns
     -------
     str
+        What it did, as the changed file's first comment and the variant's name say it.
 
     Examples
     --------

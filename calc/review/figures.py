@@ -28,6 +28,20 @@ PANEL = (HEIGHT - TOP - GAP - BOTTOM) / 2
 def nice_ticks(low: float, high: float, count: int = 4) -> list[float]:
     """Round tick values (1, 2 or 5 times a power of ten apart) covering ``low`` to ``high``.
 
+    Parameters
+    ----------
+    low, high : float
+        The range to cover [the axis' unit].
+    count : int
+        About how many steps the ticks take.
+
+    Returns
+    -------
+    list of float
+        The ticks, ascending, the first at or below ``low`` and the last at or above ``high``.
+
+    Examples
+    --------
     >>> nice_ticks(0, 300), nice_ticks(-45, 60)
     ([0.0, 100.0, 200.0, 300.0], [-50.0, 0.0, 50.0, 100.0])
     """
@@ -42,7 +56,8 @@ def nice_ticks(low: float, high: float, count: int = 4) -> list[float]:
 def _svg(cls: str, height: float, label: str, body: list[str]) -> str:
     """A figure of the page: ``body`` in an SVG of the page's width and font, named ``label``."""
     return (f'<svg class="{cls}" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {height}" width="100%" '
-            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(label)}">' + "".join(body) + "</svg>")
+            f'style="max-width:{WIDTH}px;font:11px sans-serif" role="img" aria-label="{escape(label)}">'
+            + "".join(body) + "</svg>")
 
 
 def _grid(ticks, y, stroke=lambda v: "#e2e2e2") -> list[str]:
@@ -69,18 +84,35 @@ def _panel(edges, values, top: float, label: str, moving) -> list[str]:
     out += _grid(ticks, y, lambda v: "#999" if v == 0 else "#e2e2e2")
     points = " ".join(f"{x(t):.1f},{y(v):.1f}" for a, b, v in zip(edges[:-1], edges[1:], values) for t in (a, b))
     out.append(f'<polyline points="{points}" fill="none" stroke="#1f5fbf" stroke-width="2"/>')
-    out.append(f'<text x="12" y="{top + PANEL / 2:.1f}" transform="rotate(-90 12 {top + PANEL / 2:.1f})" text-anchor="middle">{escape(label)}</text>')
+    out.append(f'<text x="12" y="{top + PANEL / 2:.1f}" transform="rotate(-90 12 {top + PANEL / 2:.1f})" '
+               f'text-anchor="middle">{escape(label)}</text>')
     return out
 
 
 def load_cycle_svg(profile, duty=None, torque_unit: str = "N*m") -> str:
     """The load cycle ``profile`` as an SVG text: mean output speed [rpm] above, output torque
-    below (in ``torque_unit``), against time; pauses shaded; ``duty`` (the load cycle's values,
-    :class:`calc.sections.duty.DutyValues`) gives the title's ED, cycle time and mode.
+    below (in ``torque_unit``), against time; pauses shaded.
 
+    Parameters
+    ----------
+    profile : calc.domain.profile.Profile
+        The load cycle.
+    duty : calc.sections.duty.DutyValues, optional
+        The load cycle's values: the title's ED, cycle time and mode.
+    torque_unit : str
+        The unit of the torque's axis (``"N*m"``, ``"lbf*in"``).
+
+    Returns
+    -------
+    str
+        The SVG (class ``dr-load-cycle``).
+
+    Examples
+    --------
     >>> from calc import Q_
     >>> from calc.domain.profile import Profile
-    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")), ("pause", Q_(1, "s"), None, None)])
+    >>> p = Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(10, "N*m")),
+    ...                            ("pause", Q_(1, "s"), None, None)])
     >>> svg = load_cycle_svg(p)
     >>> svg.count("<polyline"), 'points="58.0,' in svg
     (2, True)
@@ -91,7 +123,8 @@ def load_cycle_svg(profile, duty=None, torque_unit: str = "N*m") -> str:
     moving = profile.moving
     title = "Load cycle (each segment at its mean speed)"
     if duty is not None:
-        title = f"Load cycle: ED = {duty.ED.quantity.m_as('percent'):.3g} %, cycle {duty.t_cycle.quantity.m_as('s'):.3g} s, mode {duty.mode}"
+        title = (f"Load cycle: ED = {duty.ED.quantity.m_as('percent'):.3g} %, "
+                 f"cycle {duty.t_cycle.quantity.m_as('s'):.3g} s, mode {duty.mode}")
     body = [f'<text x="{LEFT}" y="16" font-weight="600">{escape(title)}</text>']
     body += _panel(edges, speeds, TOP, "n₂ [rpm]", moving)
     body += _panel(edges, torques, TOP + PANEL + GAP, f"T₂ [{pretty_unit(torque_unit)}]", moving)
@@ -107,10 +140,21 @@ def load_cycle_svg(profile, duty=None, torque_unit: str = "N*m") -> str:
 
 def stiffness_chain_svg(accuracy) -> str:
     """Each member's share of the chain's twist at the output, as horizontal bars labelled with its
-    twist and stiffness at the output, from the chain's accuracy
-    (:class:`calc.sections.accuracy.AccuracyValues`, E11): the data of
+    twist and stiffness at the output: the data of
     :func:`calc.figures.accuracy_plots.stiffness_chain_figure`, drawn by the browser.
 
+    Parameters
+    ----------
+    accuracy : calc.sections.accuracy.AccuracyValues
+        The chain's accuracy (E11): its members, applied torque and total stiffness.
+
+    Returns
+    -------
+    str
+        The SVG (class ``dr-chain``).
+
+    Examples
+    --------
     >>> from calc.sections.case import read_case
     >>> from calc.data.catalog import CATALOG_DIR
     >>> from calc.sections import evaluate
@@ -125,9 +169,10 @@ def stiffness_chain_svg(accuracy) -> str:
     row, left, top = 30, 130, 24
     height = top + row * len(members) + 34
     scale = (WIDTH - left - 10) / 110  # 0 to 110 %
-    twist = np.nansum([m.twist_at_applied_torque.quantity.m_as("arcmin") for m in members])  # a member of unknown C: none
-    title = (f"Stiffness chain at {accuracy.applied_torque}: C_total {'≤' if accuracy.unknown_chain else '='} {accuracy.C_total}, "
-             f"twist {twist:.3g} arcmin (E11)")
+    # a member of unknown C: none
+    twist = np.nansum([m.twist_at_applied_torque.quantity.m_as("arcmin") for m in members])
+    title = (f"Stiffness chain at {accuracy.applied_torque}: "
+             f"C_total {'≤' if accuracy.unknown_chain else '='} {accuracy.C_total}, twist {twist:.3g} arcmin (E11)")
     body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
     for share in range(0, 101, 20):
         x = left + scale * share
@@ -136,15 +181,18 @@ def stiffness_chain_svg(accuracy) -> str:
     for k, m in enumerate(members):
         y = top + row * k + 5
         share = 100 * m.share_of_compliance
-        label = (f"{share:.3g} %: {m.twist_at_applied_torque}, C = {m.stiffness_at_output}" if m.stiffness_at_output.value is not None
-                 else "C unknown: reckoned rigid, so the twist is more")
-        body += [f'<rect x="{left}" y="{y}" width="{scale * share:.1f}" height="{row - 10}" fill="{SIDE_COLORS.get(m.side, "#888")}"/>',
+        label = (f"{share:.3g} %: {m.twist_at_applied_torque}, C = {m.stiffness_at_output}"
+                 if m.stiffness_at_output.value is not None else "C unknown: reckoned rigid, so the twist is more")
+        body += [f'<rect x="{left}" y="{y}" width="{scale * share:.1f}" height="{row - 10}" '
+                 f'fill="{SIDE_COLORS.get(m.side, "#888")}"/>',
                  f'<text x="{left - 6}" y="{y + 9}" text-anchor="end">{escape(m.name)}</text>',
                  f'<text x="{left - 6}" y="{y + 20}" text-anchor="end" fill="#666">({escape(m.side)} side)</text>',
                  # beside a short bar, inside a long one (so it stays in the figure)
                  f'<text x="{left + scale * share + 4:.1f}" y="{y + 14}">{escape(label)}</text>' if share < 50 else
-                 f'<text x="{left + scale * share - 4:.1f}" y="{y + 14}" text-anchor="end" fill="#fff">{escape(label)}</text>']
-    body.append(f'<text x="{left}" y="{height - 4}">share of the twist at the output [%]; input side purple, output side blue</text>')
+                 f'<text x="{left + scale * share - 4:.1f}" y="{y + 14}" text-anchor="end" '
+                 f'fill="#fff">{escape(label)}</text>']
+    body.append(f'<text x="{left}" y="{height - 4}">'
+                "share of the twist at the output [%]; input side purple, output side blue</text>")
     return _svg("dr-chain", height, title, body)
 
 
@@ -153,12 +201,26 @@ PART_COLORS = {"gearbox": "#1f5fbf", "coupling": "#7b3fa0", "motor": "#2e7d32"}
 
 
 def comparison_svg(names: list[str], worst: dict) -> str:
-    """The variants' worst governing utilization of each part (``worst``: part -> percent per
-    variant, None where it has none, :func:`calc.review.view.worst_utilizations`) as grouped bars,
-    one group per variant named ``names``, with the limit of 100 % in red and a value over it
-    written in red.
+    """The variants' worst governing utilization of each part as grouped bars, one group per
+    variant, with the limit of 100 % in red and a value over it written in red.
 
-    >>> svg = comparison_svg(["1", "2"], {"gearbox": [32.0, 120.0], "coupling": [67.0, None], "motor": [94.0, 94.0]})
+    Parameters
+    ----------
+    names : list of str
+        The variants' names, one group of bars each.
+    worst : dict
+        Part -> its worst governing utilization [%] in each variant, None where it has none
+        (:func:`calc.review.view.worst_utilizations`).
+
+    Returns
+    -------
+    str
+        The SVG (class ``dr-compared``).
+
+    Examples
+    --------
+    >>> worst = {"gearbox": [32.0, 120.0], "coupling": [67.0, None], "motor": [94.0, 94.0]}
+    >>> svg = comparison_svg(["1", "2"], worst)
     >>> svg.count("<rect"), svg.count('fill="#b2222a">120 %')  # five bars (no coupling in 2) and three keys; one over
     (8, 1)
     """
@@ -180,21 +242,37 @@ def comparison_svg(names: list[str], worst: dict) -> str:
                 continue
             x, h = x0 + bar * j, scale * v
             over = ' fill="#b2222a"' if v > 100 else ""
-            body += [f'<rect x="{x:.1f}" y="{height - bottom - h:.1f}" width="{bar * 0.9:.1f}" height="{h:.1f}" fill="{PART_COLORS.get(part, "#888")}"/>',
-                     f'<text x="{x + bar * 0.45:.1f}" y="{height - bottom - h - 3:.1f}" text-anchor="middle" font-size="9"{over}>{v:.0f} %</text>']
-        body.append(f'<text x="{x0 + step * 0.4:.1f}" y="{height - bottom + 14}" text-anchor="middle">variant {escape(name)}</text>')
+            body += [f'<rect x="{x:.1f}" y="{height - bottom - h:.1f}" width="{bar * 0.9:.1f}" height="{h:.1f}" '
+                     f'fill="{PART_COLORS.get(part, "#888")}"/>',
+                     f'<text x="{x + bar * 0.45:.1f}" y="{height - bottom - h - 3:.1f}" text-anchor="middle" '
+                     f'font-size="9"{over}>{v:.0f} %</text>']
+        body.append(f'<text x="{x0 + step * 0.4:.1f}" y="{height - bottom + 14}" text-anchor="middle">'
+                    f'variant {escape(name)}</text>')
+    # the key
     body += [f'<rect x="{LEFT + 90 * j}" y="{height - 14}" width="10" height="10" fill="{PART_COLORS.get(p, "#888")}"/>'
-             f'<text x="{LEFT + 90 * j + 14}" y="{height - 5}">{escape(p)}</text>' for j, p in enumerate(parts)]  # the key
+             f'<text x="{LEFT + 90 * j + 14}" y="{height - 5}">{escape(p)}</text>' for j, p in enumerate(parts)]
     return _svg("dr-compared", height, "worst utilization of each variant", body)
 
 
 def ratio_search_svg(found: dict) -> str:
-    """The ratio search (the JSON of :func:`calc.sections.ratios.search`) as bars: each ratio's RMS
-    motor torque through its best gearbox, green where the ratio is feasible and keeps λ within its
-    limit, light green where it is feasible with λ over it, grey where it is not feasible; the pick
-    outlined; λ above each bar. The data of :func:`calc.figures.motor_plots.ratio_figure`, drawn by the
-    browser.
+    """The ratio search as bars: each ratio's RMS motor torque through its best gearbox, green
+    where the ratio is feasible and keeps λ within its limit, light green where it is feasible with
+    λ over it, grey where it is not feasible; the pick outlined; λ above each bar. The data of
+    :func:`calc.figures.motor_plots.ratio_figure`, drawn by the browser.
 
+    Parameters
+    ----------
+    found : dict
+        The ratio search's JSON (:func:`calc.sections.ratios.search`, ``to_json()``): its ratios,
+        the inertia ratio's limit and the pick.
+
+    Returns
+    -------
+    str
+        The SVG (class ``dr-ratios``).
+
+    Examples
+    --------
     >>> from calc.sections.case import read_case
     >>> from calc.data.catalog import CATALOG_DIR
     >>> from calc.sections.ratios import search
@@ -216,7 +294,8 @@ def ratio_search_svg(found: dict) -> str:
     title = f"RMS motor torque at each ratio, its best gearbox; λ above (limit {limit:g})"
     body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
     body += _grid(ticks, lambda t: height - bottom - scale * t)
-    body.append(f'<text x="12" y="{height - bottom - plot / 2:.0f}" transform="rotate(-90 12 {height - bottom - plot / 2:.0f})" '
+    middle = height - bottom - plot / 2
+    body.append(f'<text x="12" y="{middle:.0f}" transform="rotate(-90 12 {middle:.0f})" '
                 f'text-anchor="middle">{escape(pretty_unit(unit))}</text>')
     for k, (r, v) in enumerate(zip(rows, rms)):
         x = LEFT + step * k + step * 0.2
@@ -227,8 +306,12 @@ def ratio_search_svg(found: dict) -> str:
         outline = ' stroke="#000" stroke-width="2.5"' if r["ratio"] == pick else ""
         over = "" if within else ' fill="#b2222a"'  # λ over its limit, in red
         lam_text = "–" if lam is None else f"{lam:.3g}"
-        body += [f'<rect x="{x:.1f}" y="{height - bottom - h:.1f}" width="{step * 0.6:.1f}" height="{h:.1f}" fill="{fill}"{outline}/>',
-                 f'<text x="{x + step * 0.3:.1f}" y="{height - bottom + 14}" text-anchor="middle">{r["ratio"]:g}</text>',
-                 f'<text x="{x + step * 0.3:.1f}" y="{height - bottom + 27}" text-anchor="middle" fill="#666">{escape(r["part"])}</text>',
-                 f'<text x="{x + step * 0.3:.1f}" y="{height - bottom - h - 4:.1f}" text-anchor="middle"{over}>λ {lam_text}</text>']
+        mid = x + step * 0.3
+        body += [f'<rect x="{x:.1f}" y="{height - bottom - h:.1f}" width="{step * 0.6:.1f}" height="{h:.1f}" '
+                 f'fill="{fill}"{outline}/>',
+                 f'<text x="{mid:.1f}" y="{height - bottom + 14}" text-anchor="middle">{r["ratio"]:g}</text>',
+                 f'<text x="{mid:.1f}" y="{height - bottom + 27}" text-anchor="middle" fill="#666">'
+                 f'{escape(r["part"])}</text>',
+                 f'<text x="{mid:.1f}" y="{height - bottom - h - 4:.1f}" text-anchor="middle"{over}>'
+                 f'λ {lam_text}</text>']
     return _svg("dr-ratios", height, title, body)

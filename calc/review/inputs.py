@@ -37,8 +37,28 @@ _SEGMENT = re.compile(r"profile\[(\d+)\]\.(duration|torque)$")
 @dataclass(frozen=True)
 class InputSpec:
     """One input of the panel: its key path in the case file, what it is, its unit, the range
-    and step of its slider and its value in the case. ``options`` makes it a choice (the ratios
-    of the catalog) instead of a slider."""
+    and step of its slider and its value in the case.
+
+    Parameters
+    ----------
+    key : str
+        Its key path in the case file (``motor.peak_torque``, ``move[1].time``).
+    label : str
+        What the panel calls it, with its symbol (``motor peak torque T_1B``).
+    unit : str
+        Its unit as a case file writes it (``"N*m"``; ``""`` for a bare number or a choice).
+    low, high : float
+        The ends of its slider [``unit``].
+    step : float
+        The slider's step [``unit``].
+    value : float or str
+        Its value in the case [``unit``], on the slider's step; a choice's option.
+    options : tuple
+        The choices (the ratios of the catalog, the parts to force); a choice instead of a slider
+        where given.
+    exact : float, optional
+        The case's value where the slider's (``value``, on its step) rounds it [``unit``].
+    """
 
     key: str
     label: str
@@ -48,15 +68,43 @@ class InputSpec:
     step: float
     value: float
     options: tuple = ()
-    exact: float | None = None  # the case's value where the slider's (``value``, on its step) rounds it
+    exact: float | None = None
 
     def field_text(self, v: float) -> str:
         """A slider's value as its number field shows it: the case's own value where the slider
-        stands at its rounding of it (so a field never shows 15000 for the 14804.4 kg used)."""
+        stands at its rounding of it (so a field never shows 15000 for the 14804.4 kg used).
+
+        Parameters
+        ----------
+        v : float
+            The slider's value [``unit``].
+
+        Returns
+        -------
+        str
+            The field's text.
+
+        Examples
+        --------
+        >>> spec = InputSpec("mechanism.mass", "mechanism: moved mass m", "kg", 0, 20000, 100, 14800, exact=14804.4)
+        >>> spec.field_text(14800), spec.field_text(15000)
+        ('14804.4', '15000')
+        """
         return f"{self.exact:.10g}" if self.exact is not None and v == self.value else f"{v:g}"
 
     def is_case_value(self, v) -> bool:
-        """Whether ``v`` is the case's value: the slider's rounding of it, or the value itself."""
+        """Whether ``v`` is the case's value: the slider's rounding of it, or the value itself.
+
+        Parameters
+        ----------
+        v : float or str
+            A value of the input [``unit``], or a choice.
+
+        Returns
+        -------
+        bool
+            True for the case's value.
+        """
         return v == self.value or (self.exact is not None and v == self.exact)
 
     @property
@@ -76,14 +124,29 @@ def option_text(value) -> str:
     Returns
     -------
     str
+        The option's text.
     """
     return value if isinstance(value, str) else f"{value:g}"
 
 
 def nice_step(span: float, pixels: int = 200) -> float:
-    """A round step (1, 2 or 5 times a power of ten) of about one pixel of a slider ``pixels``
-    wide over ``span``, so that a slider's values read as typed.
+    """A round step (1, 2 or 5 times a power of ten) of about one pixel of a slider, so that a
+    slider's values read as typed.
 
+    Parameters
+    ----------
+    span : float
+        The slider's range, its high end less its low [the input's unit].
+    pixels : int
+        The slider's width [px].
+
+    Returns
+    -------
+    float
+        The step [the input's unit], at least ``span / pixels``.
+
+    Examples
+    --------
     >>> nice_step(300.0), nice_step(14.9), nice_step(1.0)
     (2.0, 0.1, 0.005)
     """
@@ -98,7 +161,8 @@ def _spec(key, label, unit, value, low, high, options=(), positive=False) -> Inp
     on_step = lambda x: round(round(x / step) * step, 12)  # noqa: E731 (no 0.30000000000000004 in a field)
     if options:
         return InputSpec(key, label, unit, on_step(low), on_step(high), step, value, options)
-    return InputSpec(key, label, unit, on_step(low), on_step(high), step, on_step(value), options, None if on_step(value) == value else value)
+    exact = None if on_step(value) == value else value
+    return InputSpec(key, label, unit, on_step(low), on_step(high), step, on_step(value), options, exact)
 
 
 def _torque_range(t: float) -> tuple[float, float]:
@@ -131,7 +195,20 @@ SCALARS = (
 
 
 def input_label(key: Key, name: str) -> str:
-    """What the panel calls an input: its name and the key's symbol (``motor peak torque T_1B``)."""
+    """What the panel calls an input: its name and the key's symbol.
+
+    Parameters
+    ----------
+    key : calc.sections.case.Key
+        The key's declaration in its section (its symbol).
+    name : str
+        What the panel calls it (``"motor peak torque"``).
+
+    Returns
+    -------
+    str
+        ``"motor peak torque T_1B"``; the name alone for a key without a symbol.
+    """
     return f"{name} {symbol_text(key.symbol)}" if key.symbol else name
 
 
@@ -169,7 +246,8 @@ MECHANISM = {
        for own, what in (("screw_inertia", "screw"), ("pinion_inertia", "pinion"), ("pulley_inertia", "pulley"))},
 }
 #: A move's inputs: its time, and its ramps within it (so a ramp can be made too long for the move).
-MOVE_TIMES = (("time", "time t"), ("accel_time", "accel time t_a"), ("decel_time", "decel time t_d"), ("jerk_time", "jerk time t_j"))
+MOVE_TIMES = (("time", "time t"), ("accel_time", "accel time t_a"), ("decel_time", "decel time t_d"),
+              ("jerk_time", "jerk time t_j"))
 _INCH_POUND = re.compile(r"\b(in|inch|ft|foot|lb|lbf|pound|pound_force|oz)\b")
 
 
@@ -188,7 +266,19 @@ def motion_specs(case: Case) -> list[InputSpec]:
     """The inputs of a case whose load cycle is derived from moves: its mechanism's, then each
     move's distance (either way), time and ramps (accel, decel and jerk time, those the file leaves
     out at the values reading it takes), and each dwell; in the units the file
-    writes them (an input it leaves out, in the units of the rest of the mechanism)."""
+    writes them (an input it leaves out, in the units of the rest of the mechanism).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        A case whose motion derives its load cycle from moves.
+
+    Returns
+    -------
+    list of InputSpec
+        The mechanism's inputs (key paths ``mechanism.<key>``), then each entry's of the moves
+        (``move[k].<key>``), in the file's order.
+    """
     tables = case.motion.tables
     mechanism = tables["mechanism"]
     where = f"{case.path}: mechanism"
@@ -199,13 +289,18 @@ def motion_specs(case: Case) -> list[InputSpec]:
             continue
         name, inch_unit, reach, positive = MECHANISM[key.name]
         text = mechanism.get(key.name)
-        unit, v = ((inch_unit if inch_pound else key.unit), 0.0) if text is None else _as_written(text, key.kind, f"{where}.{key.name}")
-        specs.append(_spec(f"mechanism.{key.name}", f"mechanism: {input_label(key, name)}", unit, v, *reach(v), positive=positive))
+        if text is None:
+            unit, v = (inch_unit if inch_pound else key.unit), 0.0
+        else:
+            unit, v = _as_written(text, key.kind, f"{where}.{key.name}")
+        label = f"mechanism: {input_label(key, name)}"
+        specs.append(_spec(f"mechanism.{key.name}", label, unit, v, *reach(v), positive=positive))
     for k, move in enumerate(tables["move"], start=1):
         where = f"{case.path}: move[{k}]"
         if "dwell" in move:
             unit, v = _as_written(move["dwell"], "time", f"{where}.dwell")
-            specs.append(_spec(f"move[{k}].dwell", f"{k} dwell: time t", unit, v, 0.0, max(3 * v, float(Q_(1, "s").m_as(unit))), positive=True))
+            high = max(3 * v, float(Q_(1, "s").m_as(unit)))
+            specs.append(_spec(f"move[{k}].dwell", f"{k} dwell: time t", unit, v, 0.0, high, positive=True))
             continue
         unit, v = _as_written(move["distance"], case.motion.mechanism.distance_kind, f"{where}.distance")
         specs.append(_spec(f"move[{k}].distance", f"{k} move: distance s", unit, v, *_distance(v)))
@@ -213,11 +308,15 @@ def motion_specs(case: Case) -> list[InputSpec]:
         for name, label in MOVE_TIMES:
             if name in move:
                 unit, v = _as_written(move[name], "time", f"{where}.{name}")
-            else:  # a ramp the file leaves out, at the value reading the file takes: decel as accel, no jerk
-                unit, v = _as_written(move["accel_time"], "time", f"{where}.accel_time") if name == "decel_time" else ("s", 0.0)
+            # A ramp the file leaves out, at the value reading the file takes: decel as accel, no jerk.
+            elif name == "decel_time":
+                unit, v = _as_written(move["accel_time"], "time", f"{where}.accel_time")
+            else:
+                unit, v = "s", 0.0
             # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
             high = 3 * v if name == "time" else float(time.m_as(unit))
-            specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=name != "jerk_time" or v > 0))
+            positive = name != "jerk_time" or v > 0
+            specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=positive))
     return specs
 
 
@@ -228,6 +327,18 @@ DEFAULTS = {"coupling.temperature": "20 degC"}
 def is_inch_pound(unit: str) -> bool:
     """Whether ``unit`` is an inch-pound one (``lbf*in``, ``lb*in**2``, ``in``).
 
+    Parameters
+    ----------
+    unit : str
+        A unit as a case file writes it, or ``""``.
+
+    Returns
+    -------
+    bool
+        True where it names an inch or pound unit.
+
+    Examples
+    --------
     >>> is_inch_pound("lbf*in"), is_inch_pound("N*m"), is_inch_pound("")
     (True, False, False)
     """
@@ -241,6 +352,7 @@ def file_tables(case: Case) -> dict:
     Parameters
     ----------
     case : calc.sections.case.Case
+        The case as read (its file's text).
 
     Returns
     -------
@@ -251,21 +363,46 @@ def file_tables(case: Case) -> dict:
 
 
 def segment_specs(case: Case) -> list[InputSpec]:
-    """Each segment's duration and torque (a pause has no torque)."""
+    """Each segment's duration and torque (a pause has no torque).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case (its load cycle, typed or derived).
+
+    Returns
+    -------
+    list of InputSpec
+        ``profile[k].duration`` [s] and, but for a pause, ``profile[k].torque`` [N*m] of each segment.
+    """
     specs, p = [], case.profile
     for k, (phase, t, T) in enumerate(zip(p.phases, p.durations.m_as("s"), p.torques.m_as("N*m")), start=1):
-        specs.append(_spec(f"profile[{k}].duration", f"{k} {phase}: duration t", "s", t, 0.0, max(3 * t, 1.0), positive=True))
+        label = f"{k} {phase}: duration t"
+        specs.append(_spec(f"profile[{k}].duration", label, "s", t, 0.0, max(3 * t, 1.0), positive=True))
         if phase != "pause":
             specs.append(_spec(f"profile[{k}].torque", f"{k} {phase}: torque T_2", "N*m", T, *_torque_range(T)))
     return specs
 
 
 def input_specs(case: Case, ratios=()) -> list[InputSpec]:
-    """The inputs of ``case`` the panel offers, in the order it shows them: the ratio (a choice
-    among ``ratios``, the catalog's); the mechanism's and the moves' where the case derives its
-    load cycle from moves (:func:`motion_specs`), else each segment's duration and torque; then
-    those of :data:`SCALARS` the file gives, each in its SI unit or in the inch-pound unit the
-    file writes it in."""
+    """The inputs of ``case`` the panel offers, in the order it shows them: the ratio; the
+    mechanism's and the moves' where the case derives its load cycle from moves
+    (:func:`motion_specs`), else each segment's duration and torque; then those of
+    :data:`SCALARS` the file gives, each in its SI unit or in the inch-pound unit the file writes
+    it in.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    ratios : sequence of float
+        The ratios offered [-] (the catalog's, :func:`catalog_ratios`), the case's among them.
+
+    Returns
+    -------
+    list of InputSpec
+        The inputs; the ratio a choice, the others sliders.
+    """
     specs = []
     if case.ratio is not None:
         r = float(case.ratio.m_as(""))
@@ -294,6 +431,7 @@ def catalog_ratios(case: Case) -> list[float]:
     Parameters
     ----------
     case : calc.sections.case.Case
+        A case with a gearbox.
 
     Returns
     -------
@@ -311,6 +449,7 @@ def forced_spec(case: Case, key: str) -> InputSpec:
     Parameters
     ----------
     case : calc.sections.case.Case
+        The case (its catalogs, its ratio and the parts it names).
     key : str
         ``"gearbox.part"`` or ``"motor.part"``.
 
@@ -338,10 +477,13 @@ def review_specs(case: Case) -> list[InputSpec]:
     Parameters
     ----------
     case : calc.sections.case.Case
+        The case as read.
 
     Returns
     -------
     list of InputSpec
+        The inputs, the gearbox's part (where the case has a gearbox) and the motor's (where it
+        has a motor catalog) last.
     """
     ratios = catalog_ratios(case) if case.ratio is not None else []
     return (input_specs(case, ratios) + ([forced_spec(case, "gearbox.part")] if case.ratio is not None else [])
@@ -407,6 +549,7 @@ def input_edits(case: Case, changes: dict) -> list[Edit]:
     Returns
     -------
     list of calc.review.edit.Edit
+        The edits, in the order of ``changes`` (those typing the cycle first).
 
     Examples
     --------
@@ -496,8 +639,10 @@ def with_inputs(case: Case, values: dict) -> Case:
     it again as reading the file does (:func:`calc.sections.motion.derive`; eta and μ as bare numbers):
 
     >>> slower = with_inputs(case, {"move[1].time": Q_(1, "s")})
-    >>> slower.motion.tables["move"][0]["time"], round(slower.motion.peak_speed.m_as("rpm"), 2), case.motion.tables["move"][0]["time"]
-    ('1 second', 17.65, '0.5 s')
+    >>> slower.motion.tables["move"][0]["time"], case.motion.tables["move"][0]["time"]
+    ('1 second', '0.5 s')
+    >>> round(slower.motion.peak_speed.m_as("rpm"), 2)
+    17.65
     """
     p, changes = case.profile, {}
     for key, q in values.items():
@@ -521,20 +666,28 @@ def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_pea
     Parameters
     ----------
     case : calc.sections.case.Case
-    ratio : Quantity, optional
-        The gearbox ratio i [-].
-    durations, torques : Quantity arrays, optional
-        Every segment's duration [s] and output torque [N*m], in order (a pause's torque is left out).
-    motor_peak_torque, motor_inertia, load_inertia : Quantity, optional
-        T_1B [N*m], J_motor and J_L [kg*cm**2].
-    temperature : Quantity, optional
-        The coupling's temperature [degC].
-    applied_torque : Quantity, optional
-        The accuracy chain's applied torque [N*m].
+        The case as read.
+    ratio : pint.Quantity [1], optional
+        The gearbox ratio i.
+    durations : pint.Quantity [s], optional
+        Every segment's duration, in order.
+    torques : pint.Quantity [N·m], optional
+        Every segment's output torque, in order (a pause's is left out).
+    motor_peak_torque : pint.Quantity [N·m], optional
+        The motor's peak torque T_1B.
+    motor_inertia : pint.Quantity [kg·cm²], optional
+        The motor's inertia J_motor.
+    load_inertia : pint.Quantity [kg·cm²], optional
+        The load's inertia J_L.
+    temperature : pint.Quantity [degC], optional
+        The coupling's temperature.
+    applied_torque : pint.Quantity [N·m], optional
+        The accuracy chain's applied torque.
 
     Returns
     -------
     calc.sections.case.Case
+        The changed case (:func:`with_inputs`).
 
     Examples
     --------
@@ -546,7 +699,8 @@ def with_changes(case: Case, ratio=None, durations=None, torques=None, motor_pea
     (<Quantity(7.0, 'dimensionless')>, <Quantity(10.0, 'dimensionless')>)
     """
     values = {"gearbox.ratio": ratio, "motor.peak_torque": motor_peak_torque, "motor.inertia": motor_inertia,
-              "load.inertia": load_inertia, "coupling.temperature": temperature, "accuracy.applied_torque": applied_torque}
+              "load.inertia": load_inertia, "coupling.temperature": temperature,
+              "accuracy.applied_torque": applied_torque}
     # The input of a section with a table of its own is ignored where the case's file has no such table.
     tables = file_tables(case)
     values = {k: v for k, v in values.items() if v is not None

@@ -119,6 +119,7 @@ def variants_attribute(variants: Variants) -> str:
     Parameters
     ----------
     variants : calc.review.variants.Variants
+        The variants kept.
 
     Returns
     -------
@@ -137,10 +138,12 @@ def with_variants(results: str, variants: Variants) -> str:
     results : str
         The results' HTML (:func:`results_text`).
     variants : calc.review.variants.Variants
+        The variants kept.
 
     Returns
     -------
     str
+        The results' HTML, its ``data-variants`` and ``data-variants-asked`` written again.
     """
     return re.sub(r'data-variants="[^"]*" data-variants-asked="[^"]*"', variants_attribute(variants), results, count=1)
 

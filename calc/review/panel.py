@@ -44,22 +44,32 @@ LABEL_WIDTH = "15.5em"
 
 
 class DesignReview:
-    """The design-review panel of the case file ``case_path``; any case file of the folder
-    ``cases`` (by default the one it is in) can be chosen in the panel.
+    """The design-review panel of a case file.
 
     ``controls`` holds each input's value widget by its key path (``motor.peak_torque``); setting
     one's ``value`` (by hand or in code) re-evaluates the case into ``results`` (the text) and the
     figures. ``fields`` holds the number field beside each slider: what is typed there is read by
     :meth:`calc.review.state.ReviewState.type_text` and refused, with its message under the row,
-    where it is not a number in the input's range. ``report_link(path)``, where given, returns the
-    address of a case's report, which the panel links beside the verdict; ``reports``, where given,
-    is the folder of the calc reports (:class:`calc.review.keep.CaseFiles`): the case chooser shows
-    each case's verdict as its file reads, and the screen's once an input is changed.
+    where it is not a number in the input's range.
 
     ``state`` is the review's state (:class:`calc.review.state.ReviewState`): the case, the
     changes, undo and redo. :meth:`save` writes the changes as a new case file beside the
     original, :meth:`undo` and :meth:`redo` step through them, and :meth:`keep_variant` pins the
     current design beside the others (the comparison table).
+
+    Parameters
+    ----------
+    case_path : str or pathlib.Path
+        The case file shown first.
+    report_link : callable, optional
+        ``report_link(path)`` returns the address of a case's report, which the panel links beside
+        the verdict.
+    cases : str or pathlib.Path, optional
+        The folder whose case files can be chosen in the panel; by default the one ``case_path``
+        is in.
+    reports : str or pathlib.Path, optional
+        The folder of the calc reports (:class:`calc.review.keep.CaseFiles`): the case chooser
+        shows each case's verdict as its file reads, and the screen's once an input is changed.
     """
 
     def __init__(self, case_path, report_link=None, cases=None, reports=None):
@@ -93,7 +103,13 @@ class DesignReview:
     # -- what a reviewer does ----------------------------------------------------------------------
 
     def load(self) -> None:
-        """Read the chosen case file and build one control row per input."""
+        """Read the chosen case file and build one control row per input; a file that cannot be
+        read is said under the case.
+
+        Returns
+        -------
+        None
+        """
         try:
             self.state.load(self.case_file.value)
         except CalcError as exc:
@@ -129,11 +145,21 @@ class DesignReview:
                 self.drawing.changed()
 
     def undo(self) -> None:
-        """Back to the values before the last change."""
+        """Back to the values before the last change.
+
+        Returns
+        -------
+        None
+        """
         self._step(self.state.undo)
 
     def redo(self) -> None:
-        """The change undone last, again."""
+        """The change undone last, again.
+
+        Returns
+        -------
+        None
+        """
         self._step(self.state.redo)
 
     def _step(self, step) -> None:
@@ -143,16 +169,52 @@ class DesignReview:
         self.refresh()
 
     def add_entry(self, after: int, kind: str) -> None:
-        """Put a move or a dwell in after entry ``after`` (:meth:`calc.review.state.ReviewState.add_entry`)."""
+        """Put a move or a dwell in after an entry of the moves
+        (:meth:`calc.review.state.ReviewState.add_entry`); why not, under the case.
+
+        Parameters
+        ----------
+        after : int
+            The entry it follows (counted from 1; 0: before the first).
+        kind : str
+            ``"move"`` or ``"dwell"``.
+
+        Returns
+        -------
+        None
+        """
         self._edit_moves(lambda: self.state.add_entry(after, kind), "not added")
 
     def remove_entry(self, k: int) -> None:
-        """Take entry ``k`` out of the moves."""
+        """Take an entry out of the moves; why not, under the case.
+
+        Parameters
+        ----------
+        k : int
+            The entry, counted from 1.
+
+        Returns
+        -------
+        None
+        """
         self._edit_moves(lambda: self.state.remove_entry(k), "not removed")
 
     def change_mechanism(self, type_: str, size_text: str = "") -> None:
-        """The mechanism of ``type_`` in place of the case's (:meth:`calc.review.state.ReviewState.change_mechanism`):
-        what it leaves out is said under the moves."""
+        """A mechanism of another type in place of the case's
+        (:meth:`calc.review.state.ReviewState.change_mechanism`): what it leaves out is said under
+        the moves.
+
+        Parameters
+        ----------
+        type_ : str
+            The type (:data:`calc.domain.mechanism.TYPES`).
+        size_text : str
+            A linear type's lead or diameter as typed [mm, or in where the case writes inch-pound].
+
+        Returns
+        -------
+        None
+        """
         self._edit_moves(lambda: self.state.change_mechanism(type_, size_text), "type not changed")
 
     def _edits_asked(self, text: str) -> None:
@@ -179,9 +241,19 @@ class DesignReview:
         self.drawing.changed()
 
     def save(self, name: str | None = None) -> Path | None:
-        """Write the changes as the new case file ``name`` (by default the save field's) beside
-        the case file; never over an existing file. The new file is offered in the chooser. Says
-        what it did, or why not, under the buttons; returns the new file's path."""
+        """Write the changes as a new case file beside the case file; never over an existing file.
+        The new file is offered in the chooser. Says what it did, or why not, under the buttons.
+
+        Parameters
+        ----------
+        name : str, optional
+            The new file's name; by default the save field's.
+
+        Returns
+        -------
+        pathlib.Path or None
+            The new file's path; None where it was not saved.
+        """
         try:
             path = self.state.save(name or self.save_name.value)
         except CalcError as exc:
@@ -198,7 +270,18 @@ class DesignReview:
         is changed, else the changes saved first (:meth:`save`), so the report rests on a file
         that reproduces it. The PDF goes to the reports' folder (the case's folder where none is
         given) and is linked under the buttons once built (``python -m calc report``, some 15 s,
-        in a process of its own so the page keeps answering). Returns the thread building it."""
+        in a process of its own so the page keeps answering).
+
+        Parameters
+        ----------
+        wait : bool
+            Whether to return only once the report is built.
+
+        Returns
+        -------
+        threading.Thread or None
+            The thread building it; None where the changes could not be saved.
+        """
         path = self.state.path if not self.state.modified() else self.save()
         if path is None:
             return None
@@ -224,7 +307,12 @@ class DesignReview:
 
     def keep_variant(self) -> None:
         """Pin the design on the screen (its name says what changed) beside the variants kept
-        before, in the comparison table under the results."""
+        before, in the comparison table under the results; why not, under the buttons.
+
+        Returns
+        -------
+        None
+        """
         try:
             self.variants.keep(self.state)
         except CalcError as exc:
@@ -235,7 +323,13 @@ class DesignReview:
 
     def variants_pdf(self) -> Path | None:
         """The variants kept, side by side with their figure, in the unit system shown, as a PDF
-        beside the reports (:meth:`calc.review.variants.Variants.pdf`); linked under the buttons."""
+        beside the reports (:meth:`calc.review.variants.Variants.pdf`); linked under the buttons.
+
+        Returns
+        -------
+        pathlib.Path or None
+            The PDF's path; None where no variant is kept.
+        """
         if not self.variants.kept:
             return None
         pdf = self.variants.pdf(self.files.pdf_folder(self.state.path), self.state.path.stem, self.state.units)
@@ -265,7 +359,12 @@ class DesignReview:
         """Draw the results of the state (:meth:`calc.review.state.ReviewState.evaluate`): each
         figure, the labels and messages, then the text (last, so that when the text changes on
         the page, everything has), which carries the state it was computed for
-        (:func:`calc.review.page.results_text`)."""
+        (:func:`calc.review.page.results_text`).
+
+        Returns
+        -------
+        None
+        """
         state = self.state
         screen = state.evaluate()
         if screen.report is not None:
@@ -331,15 +430,28 @@ class DesignReview:
         self.status.value = state_html(busy)
 
     def settled(self) -> "DesignReview":
-        """Wait until the changes made so far are drawn (for code that sets controls, then reads)."""
+        """Wait until the changes made so far are drawn (for code that sets controls, then reads).
+
+        Returns
+        -------
+        DesignReview
+            The panel itself.
+        """
         self.drawing.settled()
         return self
 
 
 class Drawing:
-    """Drawing in a worker thread: ``draw()`` called once a change arrives, and again while more
-    arrived meanwhile (taken together, once); ``busy(True)`` as the first arrives, ``busy(False)``
-    once all are drawn."""
+    """Drawing in a worker thread: called once a change arrives, and again while more arrived
+    meanwhile (taken together, once).
+
+    Parameters
+    ----------
+    draw : callable
+        ``draw()`` draws the state as it then stands.
+    busy : callable
+        ``busy(True)`` as the first change arrives, ``busy(False)`` once all are drawn.
+    """
 
     def __init__(self, draw, busy):
         self._draw, self._busy = draw, busy
@@ -348,7 +460,12 @@ class Drawing:
         self._lock = threading.Lock()
 
     def changed(self) -> None:
-        """A change: drawn in the worker thread, started where none runs."""
+        """A change: drawn in the worker thread, started where none runs.
+
+        Returns
+        -------
+        None
+        """
         with self._lock:
             self._dirty = True
             if self._worker is not None:
@@ -374,7 +491,12 @@ class Drawing:
                 raise
 
     def settled(self) -> None:
-        """Wait until the changes made so far are drawn."""
+        """Wait until the changes made so far are drawn.
+
+        Returns
+        -------
+        None
+        """
         while True:
             with self._lock:
                 worker = self._worker
@@ -386,9 +508,17 @@ class Drawing:
 class InputRows:
     """The panel's row of each input: its label with unit (the whole of it also as tooltip, its
     key path as ``data-key``), a slider and a number field, or a choice, and under it a message
-    (a refused value, or that the input has no effect on the design). A slider moved or a choice
-    made calls ``on_value(key, value)``, a text typed ``on_text(key, text)``; not where the rows
-    are set to the state (:meth:`show`)."""
+    (a refused value, or that the input has no effect on the design).
+
+    Parameters
+    ----------
+    on_value : callable
+        ``on_value(key, value)``, called when a slider is moved or a choice made; not where the
+        rows are set to the state (:meth:`show`).
+    on_text : callable
+        ``on_text(key, text)``, called when a text is typed into a field; not where the rows are
+        set to the state.
+    """
 
     def __init__(self, on_value, on_text):
         import ipywidgets as w
@@ -404,7 +534,18 @@ class InputRows:
         self._on_value, self._on_text = on_value, on_text
 
     def build(self, state: ReviewState) -> bool:
-        """The rows of the state's inputs, built again where they are others; whether they were."""
+        """The rows of the state's inputs, built again where they are others.
+
+        Parameters
+        ----------
+        state : calc.review.state.ReviewState
+            The review (its inputs and their values).
+
+        Returns
+        -------
+        bool
+            Whether they were built again.
+        """
         if state.specs is self._specs:
             return False
         old = self.box.children
@@ -445,8 +586,19 @@ class InputRows:
         return row
 
     def show(self, state: ReviewState, keys=None) -> None:
-        """The controls and fields of ``keys`` (all by default) at the state's values and texts,
-        refusals marked."""
+        """The controls and fields at the state's values and texts, refusals marked.
+
+        Parameters
+        ----------
+        state : calc.review.state.ReviewState
+            The review.
+        keys : iterable of str, optional
+            The key paths of the inputs to set; by default all.
+
+        Returns
+        -------
+        None
+        """
         self._quiet = True
         try:
             for key in self.controls if keys is None else keys:
@@ -468,8 +620,20 @@ class InputRows:
             self.messages[key].value = message
 
     def show_labels(self, state: ReviewState, changes: dict) -> None:
-        """Each label marked where its input is ``changes``' or made by an edit of the moves, and
-        each message."""
+        """Each label marked where its input is changed or made by an edit of the moves, and each
+        message.
+
+        Parameters
+        ----------
+        state : calc.review.state.ReviewState
+            The review.
+        changes : dict
+            The inputs changed, by key path (:meth:`calc.review.state.ReviewState.changes`).
+
+        Returns
+        -------
+        None
+        """
         for spec in state.specs:
             label = label_html(spec, spec.key in changes, state.from_edits(spec.key))
             if self.labels[spec.key].value != label:  # each value set is a message to the page
@@ -478,11 +642,18 @@ class InputRows:
 
 
 class MovesEditor:
-    """The moves as a reviewer edits them (the panel ``p``'s :meth:`DesignReview.add_entry`,
-    :meth:`DesignReview.remove_entry`, :meth:`DesignReview.change_mechanism`): an entry taken out,
-    a move or a dwell put in after it, the mechanism of another type (its starting values
-    equivalent); and the hidden field through which the page's script replays the edits a link
-    carries."""
+    """The moves as a reviewer edits them: an entry taken out, a move or a dwell put in after it,
+    the mechanism of another type (its starting values equivalent); and the hidden field through
+    which the page's script replays the edits a link carries.
+
+    Parameters
+    ----------
+    w : module
+        ipywidgets.
+    p : DesignReview
+        The panel, whose :meth:`DesignReview.add_entry`, :meth:`DesignReview.remove_entry` and
+        :meth:`DesignReview.change_mechanism` the buttons call.
+    """
 
     def __init__(self, w, p: DesignReview):
         self.entry = w.Dropdown(description="moves", style={"description_width": "3.5em"}, layout=_grows(w),
@@ -512,7 +683,17 @@ class MovesEditor:
 
     def show(self, state: ReviewState) -> None:
         """The state's moves: the last entry chosen, the mechanism's type and size (none shown
-        where the case has no moves)."""
+        where the case has no moves).
+
+        Parameters
+        ----------
+        state : calc.review.state.ReviewState
+            The review.
+
+        Returns
+        -------
+        None
+        """
         kinds = state.entries()
         self.box.layout.display = None if kinds else "none"
         self.entry.options = [(f"{k} {kind}", k) for k, kind in enumerate(kinds, start=1)]

@@ -35,7 +35,18 @@ IDLE_MINUTES = 10
 
 
 def served_root(reports: Path) -> Path:
-    """The folder Voilà serves: the nearest one that holds the page and the reports' folder."""
+    """The folder Voilà serves: the nearest one that holds the page and the reports' folder.
+
+    Parameters
+    ----------
+    reports : pathlib.Path
+        The reports' folder.
+
+    Returns
+    -------
+    pathlib.Path
+        The folder, resolved.
+    """
     return Path(os.path.commonpath([PAGE.parent.resolve(), reports.resolve()]))
 
 
@@ -45,13 +56,37 @@ def _under_root(path: Path, reports: Path) -> str:
 
 def allowed(reports: Path) -> list[str]:
     """The files Voilà may serve: the PDFs directly in ``reports`` (its own deny list keeps
-    refusing notebooks and Python files)."""
+    refusing notebooks and Python files).
+
+    Parameters
+    ----------
+    reports : pathlib.Path
+        The reports' folder.
+
+    Returns
+    -------
+    list of str
+        Voilà's ``file_allowlist``: one regular expression of paths under :func:`served_root`.
+    """
     folder = _under_root(reports, reports)
     return [("" if folder == "." else re.escape(folder) + "/") + r"[^/]+\.pdf"]
 
 
 def report_address(pdf: Path, reports: Path) -> str:
-    """The address of the report ``pdf`` (in ``reports``), relative to the page."""
+    """The address of the report ``pdf`` (in ``reports``), relative to the page.
+
+    Parameters
+    ----------
+    pdf : pathlib.Path
+        The report.
+    reports : pathlib.Path
+        The reports' folder.
+
+    Returns
+    -------
+    str
+        ``voila/files/<its path under the served folder>``, quoted.
+    """
     return "voila/files/" + quote(_under_root(pdf, reports))
 
 
@@ -62,9 +97,26 @@ def report_address(pdf: Path, reports: Path) -> str:
 LAUNCH = "import sys; sys.modules['rfc3987_syntax'] = None; from voila.app import main; main()"
 
 
-def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINUTES, reports: Path = Path("reports")) -> list[str]:
-    """The Voilà command line of the review page, linking the reports of the folder ``reports``; a
-    kernel whose page was closed is shut down after ``idle_seconds``."""
+def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINUTES,
+            reports: Path = Path("reports")) -> list[str]:
+    """The Voilà command line of the review page.
+
+    Parameters
+    ----------
+    port : int
+        The port served.
+    ip : str
+        The address served (by default this machine's only).
+    idle_seconds : int
+        A kernel whose page was closed is shut down after this long [s].
+    reports : pathlib.Path
+        The folder of the reports the page links.
+
+    Returns
+    -------
+    list of str
+        The command's arguments, this Python first.
+    """
     return [
         sys.executable, "-c", LAUNCH, str(PAGE), "--no-browser", f"--port={port}", f"--Voila.ip={ip}",
         f"--Voila.root_dir={served_root(reports)}", f"--VoilaConfiguration.file_allowlist={allowed(reports)!r}",
@@ -73,20 +125,49 @@ def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINU
         # successor starts when a page takes it.
         "--preheat_kernel=True", "--pool_size=1",
         # A kernel whose page was closed is culled; one with a page open stays, however idle.
-        f"--MappingKernelManager.cull_idle_timeout={idle_seconds}", f"--MappingKernelManager.cull_interval={min(60, idle_seconds)}",
+        f"--MappingKernelManager.cull_idle_timeout={idle_seconds}",
+        f"--MappingKernelManager.cull_interval={min(60, idle_seconds)}",
         "--MappingKernelManager.cull_connected=False",
     ]
 
 
 def environment(case: Path, reports: Path | None = None) -> dict:
-    """The environment of the server (and so of its kernels): the case to open, the reports' folder."""
-    return {**os.environ, CASE_VARIABLE: str(case.resolve()), **({REPORTS_VARIABLE: str(reports.resolve())} if reports else {})}
+    """The environment of the server (and so of its kernels): the case to open, the reports' folder.
+
+    Parameters
+    ----------
+    case : pathlib.Path
+        The case file the page opens (:data:`CASE_VARIABLE`).
+    reports : pathlib.Path, optional
+        The reports' folder (:data:`REPORTS_VARIABLE`).
+
+    Returns
+    -------
+    dict
+        This process's environment with the two variables, their paths resolved.
+    """
+    reports_variable = {REPORTS_VARIABLE: str(reports.resolve())} if reports else {}
+    return {**os.environ, CASE_VARIABLE: str(case.resolve()), **reports_variable}
 
 
 def main(argv=None) -> int:
+    """Serve the page (the command line of the module's docstring): Voilà takes this process's place.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments; by default the command line's.
+
+    Returns
+    -------
+    int
+        2 where the case file does not exist (said on stderr); else it does not return.
+    """
     parser = argparse.ArgumentParser(prog="python -m calc.review.serve", description=__doc__.splitlines()[0])
-    parser.add_argument("--cases", type=Path, default=Path("cases"), help="the folder of case files offered (default: cases)")
-    parser.add_argument("--case", default="indexing-table.toml", help="the case opened first (default: indexing-table.toml)")
+    parser.add_argument("--cases", type=Path, default=Path("cases"),
+                        help="the folder of case files offered (default: cases)")
+    parser.add_argument("--case", default="indexing-table.toml",
+                        help="the case opened first (default: indexing-table.toml)")
     parser.add_argument("--reports", type=Path, default=Path("reports"),
                         help="the folder of the calc reports the page links (default: reports)")
     parser.add_argument("--port", type=int, default=8866)
@@ -98,7 +179,8 @@ def main(argv=None) -> int:
     if not case.is_file():
         print(f"{case}: the case file does not exist", file=sys.stderr)
         return 2
-    print(f"Design review of {case} at http://{'localhost' if args.ip == '127.0.0.1' else args.ip}:{args.port}/ (Ctrl-C stops it)")
+    host = "localhost" if args.ip == "127.0.0.1" else args.ip
+    print(f"Design review of {case} at http://{host}:{args.port}/ (Ctrl-C stops it)")
     argv = command(args.port, args.ip, round(60 * args.idle_minutes), args.reports)
     os.execve(argv[0], argv, environment(case, args.reports))
 

@@ -38,26 +38,54 @@ MECHANISM_ATTRIBUTES = {"pitch_diameter": "diameter", "pulley_diameter": "diamet
 
 
 class History:
-    """What undo and redo step through: the state after each change (:meth:`ReviewState.snapshot`)."""
+    """What undo and redo step through: the state after each change (:meth:`ReviewState.snapshot`).
+
+    Parameters
+    ----------
+    first : object
+        The state before any change.
+    """
 
     def __init__(self, first):
         self._done, self._undone = [first], []
 
     def push(self, snapshot) -> None:
-        """A change: ``snapshot`` after it (none where it is the same as before); what was undone is dropped."""
+        """A change: what was undone is dropped.
+
+        Parameters
+        ----------
+        snapshot : object
+            The state after it; nothing is kept where it is the same as before.
+
+        Returns
+        -------
+        None
+        """
         if snapshot != self._done[-1]:
             self._done.append(snapshot)
             self._undone = []
 
     def undo(self):
-        """The state before the last change, or None where there is none."""
+        """Step back over the last change.
+
+        Returns
+        -------
+        object or None
+            The state before it, or None where there is none.
+        """
         if len(self._done) < 2:
             return None
         self._undone.append(self._done.pop())
         return self._done[-1]
 
     def redo(self):
-        """The state after the change undone last, or None where none was undone."""
+        """Make the change undone last again.
+
+        Returns
+        -------
+        object or None
+            The state after it, or None where none was undone.
+        """
         if not self._undone:
             return None
         self._done.append(self._undone.pop())
@@ -65,10 +93,12 @@ class History:
 
     @property
     def can_undo(self) -> bool:
+        """Whether there is a change to undo."""
         return len(self._done) > 1
 
     @property
     def can_redo(self) -> bool:
+        """Whether there is a change undone to make again."""
         return bool(self._undone)
 
 
@@ -76,18 +106,43 @@ class History:
 class Screen:
     """The results of a review's state as it stood when evaluated (:meth:`ReviewState.evaluate`):
     the changed case and its report, or the input error that keeps it from being made; and the
-    state's address then (the moves' edits, each field's text, the changed inputs)."""
+    state's address then (the moves' edits, each field's text, the changed inputs).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case or None
+        The changed case; None where the input error keeps it from being made.
+    report : calc.report.Report or None
+        Its report; None with the input error.
+    left_out : list of str
+        What had to be left out of the report (a further section the inputs make impossible to
+        evaluate, :func:`calc.review.view.evaluated`), one sentence each.
+    error : str or None
+        The input error, in words.
+    ratios : dict, str or None
+        The ratio search's JSON, or why it cannot be made; None: not asked for.
+    typed_by_hand : bool
+        Whether the derived load cycle was typed segment by segment.
+    moves : list
+        The edits of the moves.
+    texts : dict
+        Key path -> each field's text.
+    changes : dict
+        Key path -> (number or part, unit) of each input changed (:meth:`ReviewState.changes`).
+    text : str, optional
+        The case file as changed, as saved (:meth:`ReviewState.case_text`); None: unchanged.
+    """
 
     case: Case | None
-    report: object  # calc.report.Report
+    report: object
     left_out: list
-    error: str | None  # the input error, in words
-    ratios: object  # the ratio search's JSON, or why it cannot be made; None: not asked for
-    typed_by_hand: bool  # the derived load cycle typed segment by segment
+    error: str | None
+    ratios: object
+    typed_by_hand: bool
     moves: list
     texts: dict
     changes: dict
-    text: str | None = None  # the case file as changed, as saved (:meth:`ReviewState.case_text`); None: unchanged
+    text: str | None = None
 
     @property
     def changed_texts(self) -> dict:
@@ -101,18 +156,36 @@ class Screen:
         return None if evaluated is None else evaluated.sections.get(name)
 
     def duty(self):
-        """The duty values of the load cycle (the load-cycle figure's), None where the case cannot be evaluated."""
+        """The duty values of the load cycle (the load-cycle figure's).
+
+        Returns
+        -------
+        calc.sections.duty.DutyValues or None
+            None where the case cannot be evaluated.
+        """
         profile = self._section(PROFILE)
         return None if profile is None else profile.shown
 
     def chain(self):
-        """The accuracy chain's values (the stiffness-chain figure's), None where the case has none."""
+        """The accuracy chain's values (the stiffness-chain figure's).
+
+        Returns
+        -------
+        calc.sections.accuracy.AccuracyValues or None
+            None where the case has no accuracy chain, or cannot be evaluated.
+        """
         accuracy = self._section(ACCURACY)
         return None if accuracy is None else accuracy.shown
 
     def idle(self) -> dict:
-        """The inputs that have no effect on the design as it stands, each with why (a temperature
-        on a coupling type without a temperature factor)."""
+        """The inputs that have no effect on the design as it stands (a temperature on a coupling
+        type without a temperature factor).
+
+        Returns
+        -------
+        dict
+            Key path -> why, in words.
+        """
         coupling = self._section(COUPLING)
         if coupling is not None and coupling.inputs.type == "bellows":
             return {"coupling.temperature":
@@ -133,6 +206,7 @@ def without_folder(text: str, path: Path) -> str:
     Returns
     -------
     str
+        The error, each of the file's paths (as given and resolved) its name, its folder left out.
 
     Examples
     --------
@@ -147,18 +221,44 @@ def without_folder(text: str, path: Path) -> str:
 class ReviewState:
     """The review of the case file ``path``: the case, its inputs' values and their history.
 
-    ``values`` holds each input's value by its key path (a slider's number in the input's unit, or
-    a choice); ``texts`` the text its field shows; ``refused`` each text typed and refused, with
-    why. ``moves`` are the edits of the moves in order (:mod:`calc.review.edit`), ``case`` the case
-    file read with them (what the inputs start from). An operation that cannot be made raises
+    Nothing is read until :meth:`load`. An operation that cannot be made raises
     :class:`calc.core.errors.CalcError` saying why, the state left as it was.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The case file.
+
+    Attributes
+    ----------
+    values : dict
+        Each input's value by its key path: a slider's number in the input's unit, or a choice.
+    texts : dict
+        The text each input's field shows, by key path.
+    refused : dict
+        Key path -> (the text typed and refused, why).
+    moves : list
+        The edits of the moves, in order (:mod:`calc.review.edit`).
+    case : calc.sections.case.Case or None
+        The case file read with the moves' edits (what the inputs start from).
+    specs : list of calc.review.inputs.InputSpec
+        Its inputs.
+    units : str
+        The unit system of the results shown (``"SI"``, ``"inch-pound"``); ``file_units`` the one
+        the case file writes its inputs in.
+    all_candidates, ratio_search : bool
+        The options of the results: every candidate in the tables, the ratio search.
+    history : History
+        What undo and redo step through.
+    shown : Screen or None
+        The results last evaluated.
     """
 
     def __init__(self, path):
         self.path = Path(path)
         self.file_text: str | None = None
-        self.file_units = "SI"  # the unit system the case file writes its inputs in
-        self.units = "SI"  # the unit system of the results shown
+        self.file_units = "SI"
+        self.units = "SI"
         self.all_candidates = False
         self.ratio_search = False
         self.moves: list = []
@@ -166,15 +266,30 @@ class ReviewState:
         self.specs: list[InputSpec] = []
         self.values: dict = {}
         self.texts: dict = {}
-        self.refused: dict = {}  # key path -> (the text refused, why)
+        self.refused: dict = {}
         self.history = History(self.snapshot())
-        self.shown: Screen | None = None  # the results last evaluated
+        self.shown: Screen | None = None
 
     # -- the case file and its inputs --------------------------------------------------------
 
     def load(self, path=None) -> None:
-        """Read the case file ``path`` (by default the one reviewed) with its own values: no edit,
-        nothing to undo, the results in the unit system its inputs are written in."""
+        """Read a case file with its own values: no edit, nothing to undo, the results in the unit
+        system its inputs are written in.
+
+        Parameters
+        ----------
+        path : str or pathlib.Path, optional
+            The case file; by default the one reviewed.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        calc.core.errors.CalcError
+            For a file that cannot be read, the state left on the case file before.
+        """
         before = self.path, self.file_text
         self.path = Path(path or self.path)
         try:
@@ -204,10 +319,35 @@ class ReviewState:
         self.texts = {s.key: _field_text(s, self.values[s.key]) for s in specs}
 
     def spec(self, key: str) -> InputSpec:
+        """The input of a key path.
+
+        Parameters
+        ----------
+        key : str
+            Its key path (``motor.peak_torque``).
+
+        Returns
+        -------
+        calc.review.inputs.InputSpec
+            The input.
+        """
         return next(s for s in self.specs if s.key == key)
 
     def set_value(self, key: str, value) -> bool:
-        """The input ``key`` set to ``value`` (a slider moved, a choice made); whether it changed."""
+        """An input set (a slider moved, a choice made).
+
+        Parameters
+        ----------
+        key : str
+            The input's key path.
+        value : float or str
+            Its value [the input's unit], or a choice.
+
+        Returns
+        -------
+        bool
+            Whether it changed.
+        """
         if self.values[key] == value:
             return False
         self.values[key] = value
@@ -217,9 +357,21 @@ class ReviewState:
         return True
 
     def type_text(self, key: str, text: str) -> bool:
-        """A text typed into the field of ``key``: its value (:func:`calc.review.inputs.read_typed`),
-        or refused with why. Whether the results change: a value changed, or a refusal made or
-        taken back."""
+        """A text typed into an input's field: its value (:func:`calc.review.inputs.read_typed`),
+        or refused with why.
+
+        Parameters
+        ----------
+        key : str
+            The input's key path.
+        text : str
+            The field's text.
+
+        Returns
+        -------
+        bool
+            Whether the results change: a value changed, or a refusal made or taken back.
+        """
         spec = self.spec(key)
         try:
             v = read_typed(text, spec)
@@ -236,8 +388,22 @@ class ReviewState:
         return changed or was_refused
 
     def follow_values(self, texts: dict) -> None:
-        """The inputs at the ``texts`` a link gives them (key path -> the field's text, a choice's
-        option): an input the case does not have, or a text it does not take, says which."""
+        """The inputs at the texts a link gives them.
+
+        Parameters
+        ----------
+        texts : dict
+            Key path -> the field's text, or a choice's option.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        calc.core.errors.CalcError
+            For an input the case does not have, or a text it does not take, saying which.
+        """
         for key, text in texts.items():
             spec = next((s for s in self.specs if s.key == key), None)
             if spec is None:
@@ -251,11 +417,23 @@ class ReviewState:
             self.set_value(key, value)
 
     def changes(self) -> dict:
-        """The inputs changed from the case file (with the moves' edits): key path -> (number or part, unit)."""
+        """The inputs changed from the case file (with the moves' edits).
+
+        Returns
+        -------
+        dict
+            Key path -> (number [unit] or part, unit).
+        """
         return {s.key: (v, s.unit) for s in self.specs if not s.is_case_value(v := self.values[s.key])}
 
     def modified(self) -> bool:
-        """Whether the screen differs from the case file: a value changed, or the moves edited."""
+        """Whether the screen differs from the case file.
+
+        Returns
+        -------
+        bool
+            True where a value is changed or the moves are edited.
+        """
         return bool(self.moves or self.changes())
 
     def _value_edits(self) -> list:
@@ -265,9 +443,14 @@ class ReviewState:
         return input_edits(self.case, changes)
 
     def changed_case(self) -> Case:
-        """The case file read with the moves' edits and the changed values written in (a value
-        left where it started keeps the case's own, not the slider's rounding of it: a derived
-        cycle's 7.8269 N·m stays, and stays derived)."""
+        """The case file read with the moves' edits and the changed values written in.
+
+        Returns
+        -------
+        calc.sections.case.Case
+            The case; a value left where it started keeps the case's own, not the slider's
+            rounding of it (a derived cycle's 7.8269 N·m stays, and stays derived).
+        """
         return self._changed()[0]
 
     def _changed(self) -> tuple:
@@ -280,12 +463,33 @@ class ReviewState:
 
     def case_text(self) -> str:
         """The case file with the moves' edits and the changed values written in, and a first
-        comment naming them (:func:`calc.review.edit.changed_text`): what :meth:`save` writes."""
+        comment naming them (:func:`calc.review.edit.changed_text`).
+
+        Returns
+        -------
+        str
+            The TOML text :meth:`save` writes.
+        """
         return changed_text(self.file_text, self.moves, self._value_edits(), self.path.name)
 
     def save(self, name: str) -> Path:
-        """Write :meth:`case_text` as the new case file ``name`` beside the case file (never over
-        a file); its path."""
+        """Write :meth:`case_text` as a new case file beside the case file, never over a file.
+
+        Parameters
+        ----------
+        name : str
+            The new file's name (:func:`calc.review.keep.save_path`).
+
+        Returns
+        -------
+        pathlib.Path
+            Its path.
+
+        Raises
+        ------
+        calc.core.errors.CalcError
+            For a refused value in a field, a name not taken, or a file not written.
+        """
         if self.refused:
             raise CalcError("a refused value is in a field: correct it (or undo) before saving")
         path = save_path(self.path, name.strip())
@@ -296,8 +500,19 @@ class ReviewState:
         return path
 
     def in_words(self, text: str) -> str:
-        """An error as the page says it: the input's label where the text names its key path, and
-        no folder of the server."""
+        """An error as the page says it.
+
+        Parameters
+        ----------
+        text : str
+            The error.
+
+        Returns
+        -------
+        str
+            The text with the input's label where it names its key path, and no folder of the
+            server (:func:`without_folder`).
+        """
         text = without_folder(text, self.path)
         for spec in sorted(self.specs, key=lambda s: -len(s.key)):
             text = text.replace(f"{spec.key}:", f"{spec.label}:")
@@ -306,15 +521,31 @@ class ReviewState:
     # -- undo and redo ---------------------------------------------------------------------------
 
     def snapshot(self) -> tuple:
-        """What undo and redo step through: the moves' edits and the inputs' values."""
+        """What undo and redo step through.
+
+        Returns
+        -------
+        tuple
+            (the moves' edits as JSON, the inputs' values by key path).
+        """
         return json.dumps(self.moves), dict(self.values)
 
     def undo(self) -> None:
-        """Back to the state before the last change."""
+        """Back to the state before the last change (none: nothing happens).
+
+        Returns
+        -------
+        None
+        """
         self._step(self.history.undo())
 
     def redo(self) -> None:
-        """The change undone last, again."""
+        """The change undone last, again (none: nothing happens).
+
+        Returns
+        -------
+        None
+        """
         self._step(self.history.redo())
 
     def _step(self, snapshot) -> None:
@@ -332,7 +563,13 @@ class ReviewState:
     # -- the moves edited: entries added and removed, the mechanism's type changed -----------------
 
     def entries(self) -> list[str]:
-        """The entries of the moves, each ``"move"`` or ``"dwell"`` (none where the case has no moves)."""
+        """The entries of the moves.
+
+        Returns
+        -------
+        list of str
+            Each ``"move"`` or ``"dwell"``, in order; none where the case has no moves.
+        """
         motion = self.case.motion if self.case is not None else None
         if motion is None or not motion.moves:
             return []
@@ -348,8 +585,20 @@ class ReviewState:
                 if (key := f"move[{k}].{name}") in self.values and (name in table or key in changed)}
 
     def add_entry(self, after: int, kind: str) -> None:
-        """Put a move (a copy of the move at or before entry ``after``, else the first) or a dwell
-        (as long as the last dwell, else 1 s) in after entry ``after``."""
+        """Put a move or a dwell in after an entry of the moves.
+
+        Parameters
+        ----------
+        after : int
+            The entry it follows (counted from 1; 0: before the first).
+        kind : str
+            ``"move"``: a copy of the move at or before entry ``after``, else the first;
+            ``"dwell"``: as long as the last dwell, else 1 s.
+
+        Returns
+        -------
+        None
+        """
         kinds = self.entries()
         if kind == "move":
             before = list(range(after, 0, -1)) + list(range(after + 1, len(kinds) + 1))
@@ -360,14 +609,36 @@ class ReviewState:
         self._edit_moves(["add", after, keys])
 
     def remove_entry(self, k: int) -> None:
-        """Take entry ``k`` out of the moves."""
+        """Take an entry out of the moves.
+
+        Parameters
+        ----------
+        k : int
+            The entry, counted from 1.
+
+        Returns
+        -------
+        None
+        """
         self._edit_moves(["remove", k])
 
     def change_mechanism(self, type_: str, size_text: str = "") -> str:
-        """The mechanism of ``type_`` in place of the case's (of lead or diameter ``size_text`` in
-        :meth:`length_unit`, for a linear type), its values and the moves' distances starting
-        equivalent (:func:`calc.domain.mechanism.converted`); what it did, in words (with what it
-        leaves out)."""
+        """A mechanism of another type in place of the case's, its values and the moves'
+        distances starting equivalent (:func:`calc.domain.mechanism.converted`).
+
+        Parameters
+        ----------
+        type_ : str
+            The type (:data:`calc.domain.mechanism.TYPES`).
+        size_text : str
+            A linear type's lead or diameter as typed [:meth:`length_unit`]; a decimal comma is
+            read as a point.
+
+        Returns
+        -------
+        str
+            What it did, in words, with what it leaves out.
+        """
         try:
             size = None
             if type_ != "rotary":
@@ -384,12 +655,29 @@ class ReviewState:
         return edit[3]
 
     def length_unit(self) -> str:
-        """The unit of a mechanism's lead or diameter: inch where the case writes inch-pound."""
+        """The unit of a mechanism's lead or diameter.
+
+        Returns
+        -------
+        str
+            ``"in"`` where the case writes inch-pound, else ``"mm"``.
+        """
         return "in" if self.file_units == "inch-pound" else "mm"
 
     def follow_moves(self, moves: list) -> bool:
         """The edits of the moves a link carries: the case file's moves with those edits, at the
-        file's values (the link's values follow); whether they differ from those made."""
+        file's values (the link's values follow).
+
+        Parameters
+        ----------
+        moves : list
+            The edits of the moves, in order.
+
+        Returns
+        -------
+        bool
+            Whether they differ from those made (and so were made).
+        """
         if json.dumps(moves) == json.dumps(self.moves):
             return False
         self._build(moves, {})
@@ -403,8 +691,19 @@ class ReviewState:
         self.history.push(self.snapshot())
 
     def from_edits(self, key: str) -> str | None:
-        """What the edits of the moves made of the input ``key``, or None: an entry added here,
-        or a value set by a change of the mechanism's type."""
+        """What the edits of the moves made of an input.
+
+        Parameters
+        ----------
+        key : str
+            The input's key path.
+
+        Returns
+        -------
+        str or None
+            An entry added here, or a value set by a change of the mechanism's type, in words;
+            None where the value is the file's.
+        """
         m = _ENTRY.match(key)
         if m is not None and int(m.group(1)) in added_entries(self.moves):
             return "an entry added here: not in the file"
@@ -416,8 +715,14 @@ class ReviewState:
     # -- the results ---------------------------------------------------------------------------
 
     def evaluate(self) -> Screen:
-        """The results of the state as it stands (kept as :attr:`shown`): the changed case
-        evaluated whole (:func:`calc.review.view.evaluated`), and the ratio search where asked for."""
+        """The results of the state as it stands: the changed case evaluated whole
+        (:func:`calc.review.view.evaluated`), and the ratio search where asked for.
+
+        Returns
+        -------
+        Screen
+            The results, also kept as :attr:`shown`; an input error is its ``error``.
+        """
         texts, changes, moves = dict(self.texts), self.changes(), json.loads(json.dumps(self.moves))
         try:
             case, text = self._changed()
@@ -448,8 +753,8 @@ def mechanism_edit(case: Case, type_: str, size, inch: bool) -> list:
         A case whose load cycle is derived from moves.
     type_ : str
         One of :data:`calc.domain.mechanism.TYPES`.
-    size : Quantity or None
-        A linear type's lead or diameter [mm or in].
+    size : pint.Quantity [mm or in] or None
+        A linear type's lead or diameter; None for a rotary type.
     inch : bool
         Whether the case writes inch-pound units.
 
@@ -501,6 +806,7 @@ def added_entries(moves) -> set:
     Returns
     -------
     set of int
+        Their places after the last edit.
 
     Examples
     --------

@@ -37,6 +37,14 @@ def variant_name(number: int, file: str, specs, changes: dict, moves) -> str:
     Returns
     -------
     str
+        ``"<number>: <file> with <changes>"``, or ``"... as written"`` where nothing was changed.
+
+    Examples
+    --------
+    >>> from calc.review.inputs import InputSpec
+    >>> specs = [InputSpec("move[1].time", "1 move: time t", "s", 0.05, 1.5, 0.01, 0.5)]
+    >>> variant_name(2, "a.toml", specs, {"move[1].time": (0.6, "s")}, [("remove", 2)])
+    '2: a.toml with entry 2 of the moves removed; 1 move: time t 0.6 s'
     """
     labels = {spec.key: spec.label for spec in specs}
     said = "; ".join([edit_text(e) for e in moves]
@@ -46,8 +54,18 @@ def variant_name(number: int, file: str, specs, changes: dict, moves) -> str:
 
 
 class Variants:
-    """The variants kept: ``kept`` holds (name, report) of each, ``states`` its state as the
-    page's address writes it, ``asked`` the states a link asked for."""
+    """The variants kept, none at first.
+
+    Attributes
+    ----------
+    kept : list of tuple
+        (name, report) of each variant (:class:`calc.report.Report`).
+    states : list of dict
+        Each one's state as the page's address writes it: its case file, the moves' edits and the
+        changed values' field texts.
+    asked : list of dict
+        The states a link asked for.
+    """
 
     def __init__(self):
         self.kept: list = []
@@ -55,7 +73,22 @@ class Variants:
         self.asked: list = []
 
     def keep(self, state: ReviewState) -> None:
-        """Pin the design the state last evaluated (:attr:`ReviewState.shown`) after the others."""
+        """Pin the design the state last evaluated (:attr:`ReviewState.shown`) after the others.
+
+        Parameters
+        ----------
+        state : calc.review.state.ReviewState
+            The review, evaluated.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        calc.core.errors.CalcError
+            Where the state's inputs give no design (an input error).
+        """
         shown = state.shown
         if shown is None or shown.report is None:
             raise CalcError("the inputs give no design (an input error)")
@@ -64,9 +97,22 @@ class Variants:
         self.states.append({"case": state.path.name, "edits": shown.moves, "values": shown.changed_texts})
 
     def follow(self, text: str, files: CaseFiles) -> list[str] | None:
-        """The variants of the states a link carries (``text``, their JSON), each evaluated again
-        from its case file (one of ``files``); one that no longer reads is left out: why, for
-        each. None where the text gives no states, or those kept."""
+        """The variants of the states a link carries, each evaluated again from its case file;
+        one that no longer reads is left out.
+
+        Parameters
+        ----------
+        text : str
+            The states' JSON, as the page's address writes them (:attr:`states`).
+        files : calc.review.keep.CaseFiles
+            The case files offered (a state's case file is one of them).
+
+        Returns
+        -------
+        list of str or None
+            Why each variant left out was, one sentence each; None where the text gives no states,
+            or those kept.
+        """
         try:
             states = json.loads(text) if text else []
             states = [{"case": str(st["case"]), "edits": [list(e) for e in st["edits"]], "values": dict(st["values"])}
@@ -104,12 +150,38 @@ class Variants:
         return variant_name(number, path.name, state.specs, shown.changes, shown.moves), shown.report
 
     def comparison(self, units: str) -> str:
-        """The variants side by side in the unit system ``units`` (nothing where none is kept)."""
+        """The variants side by side (:func:`calc.review.view.comparison_html`).
+
+        Parameters
+        ----------
+        units : str
+            The unit system, ``"SI"`` or ``"inch-pound"``.
+
+        Returns
+        -------
+        str
+            HTML; empty where none is kept.
+        """
         return comparison_html(self.kept, units) if self.kept else ""
 
     def pdf(self, folder: Path, stem: str, units: str) -> Path:
-        """The variants side by side with their figure, in the unit system ``units``, as
-        ``<stem>-variants-N.pdf`` in ``folder``, never over a file; its path."""
+        """The variants side by side with their figure, as a PDF never written over a file
+        (:func:`calc.review.view.comparison_pdf`).
+
+        Parameters
+        ----------
+        folder : pathlib.Path
+            Where it goes.
+        stem : str
+            Its name's start: ``<stem>-variants-N.pdf``, N the first free from 1.
+        units : str
+            The unit system, ``"SI"`` or ``"inch-pound"``.
+
+        Returns
+        -------
+        pathlib.Path
+            The PDF's path.
+        """
         n = 1
         while (pdf := folder / f"{stem}-variants-{n}.pdf").exists():
             n += 1

@@ -20,7 +20,7 @@ from ..core.units import Q_, Value, fmt, parse_quantity, sig
 from ..data.measurement import measurement_path
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
 from ..domain.coupling import SCHEMA as COUPLING_SCHEMA
-from ..domain.gearbox import SCHEMA as GEARBOX_SCHEMA
+from ..domain.gearbox import SCHEMA as GEARBOX_SCHEMA, same_ratio
 from .common import Governing, Verdict, json_of, number, quantity
 from .protocol import Result, Section
 
@@ -28,8 +28,8 @@ NAME = "accuracy"
 ORDER = 80
 #: The keys of a component's ``stiffness_curve``: limit torques and slopes (:class:`calc.domain.stiffness.StiffnessCurve`).
 CURVE_KEYS = (
-    Key("T1", "torque", "the torque up to which K1 holds", "T_1", unit="N*m"),
-    Key("T2", "torque", "the torque up to which K2 holds", "T_2", unit="N*m"),
+    Key("T1", "torque", "the torque up to which K1 holds", "T_L1", unit="N*m"),
+    Key("T2", "torque", "the torque up to which K2 holds", "T_L2", unit="N*m"),
     Key("K1", "stiffness", "slope up to T1", "K_1", unit="N*m/rad"),
     Key("K2", "stiffness", "slope from T1 to T2", "K_2", unit="N*m/rad"),
     Key("K3", "stiffness", "slope above T2", "K_3", unit="N*m/rad"),
@@ -446,7 +446,7 @@ def _gearbox_figures(case: Case, c: ComponentInputs, f: Figures, ratio, out: Acc
     if f.name == SELECTED:
         f.name = f.chosen
     f.ratio = rows["ratio"][row]
-    if ratio is not None and not np.isclose(f.ratio.m_as(""), ratio.m_as(""), rtol=1e-6):
+    if ratio is not None and not same_ratio(f.ratio.m_as(""), ratio.m_as("")):
         raise CalcError(f"{t.where('part')}: {rows.parts[row]} has ratio {f.ratio.m_as(''):g}, but the case's gearbox "
                         f"ratio is {ratio.m_as(''):g}")
     f.stiffness, f.backlash, f.nominal = rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row]

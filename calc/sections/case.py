@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..core.errors import CalcError
+from ..domain.gearbox import INERTIA_RATIO_LIMIT
 from ..domain.profile import Profile
 from ..core.units import kind_phrase, parse_quantity
 from .evaluation import sections
@@ -197,10 +198,10 @@ class Case:
     motor_shaft: object = None  # Bore of the motor's shaft: picks the gearbox's clamping hub
     motor_catalog: str | list | None = None  # [motor] catalog: the motor chosen from it (or its part)
     motor_part: str | None = None
-    motor_max_inertia_ratio: tuple = (10.0, "the default")  # the limit of λ and where it comes from
+    motor_max_inertia_ratio: tuple = (INERTIA_RATIO_LIMIT, "the default")  # the limit of λ and where it comes from
     motor_dc_link: object = None
     motor_curves: object = None  # Path of the motors' curves file
-    output_load: object = None  # calc.domain.gearbox.OutputLoad: forces on the gearbox output
+    output_load: object = None  # calc.domain.gearbox.OutputForces: forces on the gearbox output
     sections: dict = field(default_factory=dict)  # the tables of the sections that read their own, as written, by name
     inputs: dict = field(default_factory=dict)  # those sections' typed inputs, by name (Section.inputs)
     motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record

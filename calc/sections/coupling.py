@@ -12,7 +12,7 @@ import numpy as np
 from ..domain import coupling as cp
 from ..data.bands import factor_table
 from .case import Case, Declared, Key, Table
-from ..data.catalog import Catalog, display_path, load_catalogs
+from ..data.catalog import Catalog, load_catalogs
 from ..domain.coupling import (
     DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input, check_types, f_e_min,
     order_lines, select_coupling,
@@ -21,7 +21,7 @@ from ..core.errors import CalcError
 from ..domain.fits import parse_bore
 from ..domain.gearbox import n_1
 from ..domain.profile import Z_h
-from ..domain.torsion import CouplingSpan, Member, gearbox_at_input, inertia_at_output, load_at_input
+from ..domain.torsion import CouplingSpan, TrainMember, gearbox_at_input, inertia_at_output, load_at_input
 from ..core.units import Q_, Value, fmt, sig
 from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
 from .protocol import Result, Section
@@ -230,7 +230,7 @@ def _drive_train(case: Case, side: str | None, inputs: dict, gearbox) -> tuple[D
     case) there is no chain: the resonance checks are then not made (:func:`select_coupling`)."""
     if inputs["drive_inertia"] is None or inputs["load_inertia"] is None:
         return None, ()
-    two_mass = (Member("motor", inputs["drive_inertia"]),), (Member("load", inputs["load_inertia"]),)
+    two_mass = (TrainMember("motor", inputs["drive_inertia"]),), (TrainMember("load", inputs["load_inertia"]),)
     if gearbox is None:
         return DriveTrain(*two_mass), ()
     if side is None:
@@ -256,12 +256,14 @@ def _drive_train(case: Case, side: str | None, inputs: dict, gearbox) -> tuple[D
         j_l = load_at_input.step(J_L=given, i=i)
         c_g = gearbox_at_input.step(C_t21=C_t21, i=i)
         steps = (("Load reflected to the gearbox input", j_l), (f"Stiffness of {part} at its input", c_g))
-        train = DriveTrain(two_mass[0], (Member("gearbox", J_1, c_g.result), Member("load", j_l.result)), stand_in, shaft)
+        load = (TrainMember("gearbox", J_1, c_g.result), TrainMember("load", j_l.result))
+        train = DriveTrain(two_mass[0], load, stand_in, shaft)
         return train, steps
     j_m = inertia_at_output.step(J_in=given, i=i)
     j_g = inertia_at_output.step(J_in=J_1, i=i)
     steps = (("Motor referred to the gearbox output", j_m), (f"J_1 of {part} referred to its output", j_g))
-    return DriveTrain((Member("motor", j_m.result), Member("gearbox", j_g.result, C_t21)), two_mass[1], stand_in, shaft), steps
+    drive = (TrainMember("motor", j_m.result), TrainMember("gearbox", j_g.result, C_t21))
+    return DriveTrain(drive, two_mass[1], stand_in, shaft), steps
 
 
 def _from_the_case(case: Case, gearbox) -> tuple[dict, dict]:
@@ -521,7 +523,8 @@ class CouplingResult(Result):
             z = cp.Z.step(A=x["shaft_distance"], H=cat["H"][row])
             out += [("Tube length", z, ""),
                     ("Stiffness of the line shaft", cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row]), "")]
-        return out + [("Natural frequency", cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L=sel.J_L[row]), "compared with 2 f_er")]
+        natural = cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L_coupling=sel.J_L[row])
+        return out + [("Natural frequency", natural, "compared with 2 f_er")]
 
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
         """The ``coupling`` results of the JSON contract."""
@@ -544,9 +547,7 @@ class CouplingResult(Result):
             for c in sel.candidates(candidates)
         ]
         return {
-            "catalog": cc.catalog.shown_name,
-            "catalog_sha256": cc.catalog.sha256,
-            "catalogs": [{"catalog": display_path(path), "sha256": sha} for path, sha in cc.catalog.members],
+            **cc.catalog.provenance(),
             "type": cc.type,
             "M_N": self.M_N.to_json(),
             "service_factor": self.service_factor,

@@ -17,7 +17,7 @@ from ..data.catalog import load_catalogs
 from ..core.errors import CalcError
 from ..domain.fits import parse_bore
 from ..data.measurement import measurement_path
-from ..domain.gearbox import OutputLoad
+from ..domain.gearbox import INERTIA_RATIO_LIMIT, OutputForces
 from ..domain.motor_ratings import ELECTRICAL, SCHEMA
 
 ORDER = 10
@@ -29,7 +29,8 @@ MOTOR = Declared("motor", (
     Key("shaft", "bore", "the motor's shaft as ordered (\"19 mm k6\"): picks the gearbox's clamping hub and so its J_1"),
     Key("catalog", "catalog", "a motor catalog (\"motors\" is catalogs/motors.csv): every motor in it is checked against the cycle and ranked"),
     Key("part", "text", "check this motor of the catalog (its ratings and inertia then hold for every section) instead of typed ratings"),
-    Key("max_inertia_ratio", "dimensionless", "highest load-to-motor inertia ratio λ a catalog motor may have", "lambda_max", 10),
+    Key("max_inertia_ratio", "dimensionless", "highest load-to-motor inertia ratio λ a catalog motor may have",
+        "lambda_max", INERTIA_RATIO_LIMIT),
     Key("dc_link_voltage", "voltage", "DC-link voltage of the drive: with a catalog's electrical data, the voltage limit", "U_DC", unit="V"),
     Key("curves", "file", "the catalog motors' peak and S1 curves read from the makers' charts: part, curve, speed [unit], torque [unit], source"),
 ), "the motor driving the gearbox")
@@ -74,7 +75,7 @@ def read(top: Table, case: Case) -> None:
     load = top.table(LOAD.name, LOAD.keys)
     if load:
         case.load_inertia = load.positive("inertia")
-        forces = OutputLoad(
+        forces = OutputForces(
             axial_force=load.positive("axial_force", what="an axial force"),
             radial_force=load.positive("radial_force", what="a radial force"),
             lever_arm=_distance(load, "lever_arm"),

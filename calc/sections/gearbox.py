@@ -9,9 +9,12 @@ import numpy as np
 
 from ..data.bands import factor_table
 from .case import Case, Declared, Key, Table
-from ..data.catalog import display_path, load_catalogs
+from ..data.catalog import load_catalogs
 from ..core.errors import CalcError
-from ..domain.gearbox import HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, select_gearbox, shock_factor
+from ..domain.gearbox import (
+    HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, same_ratio,
+    select_gearbox, shock_factor,
+)
 from ..domain.profile import Z_h, n_2m
 from ..core.units import Q_, sig
 from . import coupling
@@ -110,7 +113,7 @@ def gearbox_selection(case: Case) -> GearboxSelection:
     if case.gearbox_part is not None:
         rows = catalog.rows([catalog.usable_index(case.gearbox_part, f"{where}.part")])
         part_ratio = rows["ratio"][0].m_as("")
-        if case.ratio is not None and not np.isclose(part_ratio, case.ratio.m_as(""), rtol=1e-6):
+        if case.ratio is not None and not same_ratio(part_ratio, case.ratio.m_as("")):
             raise CalcError(
                 f"{where}.part: {case.gearbox_part} has ratio {part_ratio:g}, but gearbox.ratio is {case.ratio.m_as(''):g}"
             )
@@ -151,9 +154,7 @@ class GearboxResult(Result):
             for c in s.candidates(candidates)
         ]
         return {
-            "catalog": s.catalog.shown_name,
-            "catalog_sha256": s.catalog.sha256,
-            "catalogs": [{"catalog": display_path(path), "sha256": sha} for path, sha in s.catalog.members],
+            **s.catalog.provenance(),
             "mode": s.mode,
             "ranking": self.ranking,
             "candidate_count": len(s.order),

@@ -33,7 +33,7 @@ _LINEAR = tuple(OWN_KEYS)
 BODY_KEYS = (
     Key("shape", "choice", "cylinder | hollow-cylinder | plate"),
     Key("diameter", "length", "outer diameter (a cylinder)", "D", unit="mm"),
-    Key("inner_diameter", "length", "inner diameter (a hollow cylinder)", "d", unit="mm"),
+    Key("inner_diameter", "length", "inner diameter (a hollow cylinder)", "d_i", unit="mm"),
     Key("length", "length", "length along the axis of rotation (a plate's thickness)", "L", unit="mm"),
     Key("width", "length", "side of a plate across the axis", "a", unit="mm"),
     Key("depth", "length", "other side of a plate across the axis", "b", unit="mm"),
@@ -41,7 +41,7 @@ BODY_KEYS = (
     Key("density", "density", "density of its material (or its mass)", "rho", unit="kg/m**3"),
     Key("offset", "length", "distance of its own axis from the axis of rotation (the parallel-axis term)", "e", "0 mm", "mm"),
 )
-BODY_DIMENSIONS = {"diameter": "D", "inner_diameter": "d", "length": "L", "width": "a", "depth": "b"}
+BODY_DIMENSIONS = {"diameter": "D", "inner_diameter": "d_i", "length": "L", "width": "a", "depth": "b"}
 MECHANISM = Declared("mechanism", (
     Key("type", "choice", "rotary | ball-screw | rack-pinion | belt; the type says which keys below it takes"),
     Key("holding_brake", "flag", "a brake holds the load in the dwells (no torque there)", default=False),
@@ -185,7 +185,7 @@ def read_body(t: Table) -> Body:
             dimensions[name] = t.positive(key, required=True)
         elif t.has(key):
             raise CalcError(f"{t.where(key)}: a {shape} takes {', '.join(k for k, n in BODY_DIMENSIONS.items() if n in needed)}, not {key}")
-    if shape == "hollow-cylinder" and not dimensions["d"] < dimensions["D"]:
+    if shape == "hollow-cylinder" and not dimensions["d_i"] < dimensions["D"]:
         raise CalcError(f"{t.where('inner_diameter')}: expected an inner diameter below the outer {t.data['diameter']!r}, found {t.data['inner_diameter']!r}")
     if t.has("mass") == t.has("density"):
         raise CalcError(f"{t.where('mass')}: give the body's mass or its material's density, one of them, found {'both' if t.has('mass') else 'neither'}")

@@ -156,6 +156,6 @@ def search_pairs(case: Case) -> PairSearch:
          "size": gear["T_2B" if sel.mode == "S5" else "T_2N"].m_as("N*m"), "J_L": 0.0 if J_L is None else float(J_L.m_as("kg*m**2"))},
         {"J": motors["J"].m_as("kg*m**2"), "rated_torque": motors["M_N"].m_as("N*m"), "peak_torque": motors["M_max"].m_as("N*m"),
          "max_speed": motors["n_max"].m_as("rad/s")},
-        case.motor_max_inertia_ratio[0],
+        inertia_limit=case.motor_max_inertia_ratio[0],
     )
     return PairSearch(case, gear.parts, i, motors.parts, motors["M_N"].m_as("N*m"), result, notes + sel.notes)

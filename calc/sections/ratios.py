@@ -10,7 +10,7 @@ from functools import cached_property
 from .case import Case
 from ..data.catalog import display_path
 from ..core.errors import CalcError
-from ..domain.ratios import INERTIA_RATIO_LIMIT, RULE, RatioSearch, search_ratios
+from ..domain.ratios import RatioSearch, search_ratios
 from ..core.units import Value, pretty_unit, sig
 from .gearbox import catalogs, selection_inputs
 from .common import Verdict, check_json, json_of, number
@@ -79,15 +79,13 @@ class RatioResult:
             "rms_torque_required": json_of(r.rms_torque_required), "max_speed_required": r.max_speed_required.to_json(),
             "checks": [check_json(c) for c in r.checks], "reasons": r.reasons,
         } for r in self.rows]
-        cat = s.selection.catalog
         return {
             "title": self.case.title,
             "case": display_path(self.case.path),
-            "catalog": display_path(cat.path),
-            "catalog_sha256": cat.sha256,
+            **s.selection.catalog.provenance(),
             "mode": s.selection.mode,
-            "rule": RULE,
-            "inertia_ratio_limit": INERTIA_RATIO_LIMIT,
+            "rule": s.rule,
+            "inertia_ratio_limit": s.inertia_limit,
             "rotor_term": bool(s.load is not None and s.load.rotor_term),
             "ratios": rows,
             "pick": None if s.pick is None else {"ratio": float(s.ratios[s.pick]), "part": str(s.parts[s.pick]), "reason": s.reason},
@@ -98,7 +96,7 @@ class RatioResult:
 
     def summary(self) -> str:
         title = f"{self.case.title}: the ratio"
-        lines = [title, "=" * len(title), self.search.reason, f"Rule: {RULE}.", "",
+        lines = [title, "=" * len(title), self.search.reason, f"Rule: {self.search.rule}.", "",
                  f"{'ratio':>6}  {'gearbox':<14} {'verdict':<7} {'util.':>6} {'λ':>7} {'T_1peak':>10} {'T_1rms':>10} {'n_1':>9}"]
         for r in self.rows:
             def val(v):
@@ -149,7 +147,7 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
     s = search_ratios(
         catalog, case.profile, load, case.motor_rated_torque, case.motor_max_speed,
         lambda J_1: rotor_inertia(case, J_1, coupling),
-        hubs=hubs, **selection_inputs(case),
+        hubs=hubs, inertia_limit=case.motor_max_inertia_ratio[0], **selection_inputs(case),
     )
     notes += s.notes
     return RatioResult(case, s, notes)

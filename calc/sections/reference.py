@@ -27,7 +27,10 @@ def _kind(key: Key) -> str:
 def _default(key: Key) -> str:
     if key.default is None:
         return ""
-    return f"`{str(key.default).lower()}`" if isinstance(key.default, bool) else f"`{key.default}`"
+    if isinstance(key.default, bool):
+        return f"`{str(key.default).lower()}`"
+    # A float as a case writes it: 10, not 10.0.
+    return f"`{key.default:g}`" if isinstance(key.default, float) else f"`{key.default}`"
 
 
 def _cell(text: str) -> str:

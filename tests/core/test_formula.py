@@ -8,7 +8,8 @@ import pytest
 
 import calc
 from calc import CalcError, Q_
-from calc.core.formula import REGISTRY, Formula, Symbol, global_names
+from calc.core.formula import REGISTRY, Formula, global_names
+from calc.core.glossary import Symbol
 from calc.domain.gearbox import T_2max
 from calc.domain.profile import T_2m
 
@@ -42,7 +43,8 @@ def test_dimension_check_catches_a_lost_angle():
 
 
 def test_latex_comes_from_the_expression():
-    assert T_2max.latex() == r"T_{2\,\mathrm{max}} = T_{1B} \cdot i \cdot f_{s} \cdot \eta"
+    # ISO 80000-2: the subscripts that name (2max, 1B, s) upright.
+    assert T_2max.latex() == r"T_{\mathrm{2max}} = T_{\mathrm{1B}} \cdot i \cdot f_{\mathrm{s}} \cdot \eta"
     assert r"\sqrt[3]" in T_2m.latex() and r"\sum_{k}" in T_2m.latex()
 
 
@@ -51,7 +53,7 @@ def test_step_shows_symbol_expression_numbers_result():
     # Hand calculation: 12 N·m × 10 × 1.3 × 0.97 = 151.32 N·m.
     assert step.result.m_as("N*m") == pytest.approx(151.32)
     assert step.latex() == (
-        r"T_{2\,\mathrm{max}} = T_{1B} \cdot i \cdot f_{s} \cdot \eta = "
+        r"T_{\mathrm{2max}} = T_{\mathrm{1B}} \cdot i \cdot f_{\mathrm{s}} \cdot \eta = "
         r"12\,\mathrm{N\,m} \cdot 10 \cdot 1.3 \cdot 0.97 = 151.3\,\mathrm{N\,m}"
     )
     assert str(step) == "T_2max = 151.3 N·m"

@@ -205,3 +205,12 @@ def test_the_unit_cache_belongs_to_this_environment():
     folder = _cache_folder()
     assert folder is None or folder.is_relative_to(Path(sys.prefix))
     assert ureg._diskcache is None or Path(ureg._diskcache.cache_folder) == folder
+
+
+def test_a_kind_declared_twice_is_refused():
+    # A dict built from the declarations kept the last of two "angular_acceleration" kinds silently.
+    from calc.core.units import Kind, declared_once
+
+    twice = (Kind("speed", "1/[time]", 1, "rad/s", '"300 rpm"'), Kind("speed", "1/[time]", 1, "rad/s", '"3 rpm"'))
+    with pytest.raises(ValueError, match="the kind 'speed' is declared twice"):
+        declared_once(twice, "kind")

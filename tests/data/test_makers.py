@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from calc import CalcError, Q_
 from calc.data.catalog import combine, load_catalog, load_catalogs, resolve
-from calc.domain.gearbox import HUB_SCHEMA, SCHEMA, M_2k, OutputLoad, clamping_hubs, rows_at_ratio, select_gearbox
+from calc.domain.gearbox import HUB_SCHEMA, SCHEMA, M_2k, OutputForces, clamping_hubs, rows_at_ratio, select_gearbox
 
 from ..conftest import GEARBOXES, HEAD_TOML, PROFILE_TOML, ROOT, run
 from ..domain.test_profile import example_profile
@@ -178,6 +178,13 @@ def test_two_catalogs_rank_together_each_candidate_naming_its_own(capsys, write_
     assert g["best_of_family"]["MK"] == "MK160-10" and g["selected"] == "MK160-10"
     code, out, _ = run(capsys, case)
     assert f"PASS  MK160-10 [{tmp_path / 'my-maker.csv'}], smallest adequate MK" in out
+    # The ratio search names its rows' files as the gearbox section does (one provenance block).
+    from calc.__main__ import main
+
+    assert main(["ratios", str(case), "--json"]) == 0
+    r = json.loads(capsys.readouterr().out)
+    keys = ("catalog", "catalog_sha256", "catalogs")
+    assert {k: r[k] for k in keys} == {k: g[k] for k in keys}
 
 
 def test_a_list_with_a_missing_catalog_names_it(capsys, write_case):
@@ -237,7 +244,7 @@ def test_bearing_checks_in_the_ranking(catalog):
     # NPT035-10 (Beckhoff page 'NPT035 MF'): F_2A 3500 N, M_2K 134 N·m, no F_2R published.
     # F_2a = 1000 N on the axis at 20 mm, F_2r = 500 N at 50 mm from the flange, z_2 not given (0):
     # M_2k = 1000 · 0.02 + 500 · 0.05 = 45 N·m → 45 / 134 = 0.336; F_2a: 1000 / 3500 = 0.286.
-    load = OutputLoad(Q_(1000, "N"), Q_(500, "N"), Q_(50, "mm"), Q_(20, "mm"))
+    load = OutputForces(Q_(1000, "N"), Q_(500, "N"), Q_(50, "mm"), Q_(20, "mm"))
     sel = select_gearbox(example_profile(), rows, Q_(12, "N*m"), output_load=load)
     c = {k.name: k for k in next(x for x in sel.candidates() if x.part == "NPT035-10").checks}
     assert c["M_2K"].required.m_as("N*m") == pytest.approx(45) and c["M_2K"].utilization == pytest.approx(45 / 134)
@@ -246,8 +253,8 @@ def test_bearing_checks_in_the_ranking(catalog):
     assert sel.selected == "NPT035-10" and any("z_2" in n for n in sel.notes)
     # F_2r = 3000 N at 50 mm: M_2k = 150 N·m > 134 N·m of NPT035-10, 11.9 % over; NPS045-10 gives no
     # M_2K (cut off in its source): not checked there, so it is the smallest adequate gearbox.
-    sel = select_gearbox(example_profile(), rows, Q_(12, "N*m"),
-                         output_load=OutputLoad(radial_force=Q_(3000, "N"), lever_arm=Q_(50, "mm")))
+    forces = OutputForces(radial_force=Q_(3000, "N"), lever_arm=Q_(50, "mm"))
+    sel = select_gearbox(example_profile(), rows, Q_(12, "N*m"), output_load=forces)
     npt = next(x for x in sel.candidates() if x.part == "NPT035-10")
     assert npt.reasons == ["M_2k <= M_2K: required 150 N·m > rated 134 N·m, 11.9 % over"]
     assert sel.selected == "NPS045-10"

@@ -8,6 +8,7 @@ from hypothesis import strategies as st
 
 from calc import Q_
 from calc.domain.combinations import CycleMoments, Envelope, motor_torques, search
+from calc.domain.gearbox import INERTIA_RATIO_LIMIT
 from calc.domain.motor import motor_load
 
 finite = st.floats(-500, 500, allow_nan=False)
@@ -75,7 +76,7 @@ def test_the_pick_is_the_smallest_adequate_motor_then_the_smallest_gearbox():
     gearboxes = {"i": [10.0, 5.0, 10.0], "eta": [0.9, 0.9, 0.9], "J_1": [0.0, 0.0, 0.0], "passes": [True, True, False],
                  "peak_limit": [np.inf, np.inf, np.inf], "size": [100.0, 60.0, 50.0], "J_L": 1e-3}
     motors = {"J": [1e-4, 1e-4], "rated_torque": [3.0, 6.0], "peak_torque": [12.0, 20.0], "max_speed": [300.0, 300.0]}
-    found = search(m, 10.0, gearboxes, motors)
+    found = search(m, 10.0, gearboxes, motors, INERTIA_RATIO_LIMIT)
     # At i = 5: driving 1e-4 · 5 · 100 + 50 / 4.5 = 11.161 N·m, driven back -0.05 - 30 · 0.9 / 5 = -5.45,
     # hold 10 / 4.5 = 2.222; RMS = √((11.161² · 0.1 + 5.45² · 0.1 + 2.222² · 0.3) / 0.5) = 5.815 N·m:
     # over A's 3 N·m, within B's 6. At i = 10 both pass (peak 5.66, RMS 2.95 N·m).
@@ -84,13 +85,13 @@ def test_the_pick_is_the_smallest_adequate_motor_then_the_smallest_gearbox():
     assert found.pick == (0, 0)  # the smaller motor A, through the only gearbox it can use
     # Without A: B through the smaller gearbox (i = 5, size 60 N·m).
     only_b = {k: v[1:] for k, v in motors.items()}
-    assert search(m, 10.0, gearboxes, only_b).pick == (1, 0)
+    assert search(m, 10.0, gearboxes, only_b, INERTIA_RATIO_LIMIT).pick == (1, 0)
     # λ = (J_1 + J_L / i²) / J_motor = (0 + 1e-3 / 100) / 1e-4 = 0.1 at i = 10 (0.4 at i = 5): a limit
     # of 0.05 refuses every pair.
-    assert search(m, 10.0, gearboxes, motors, inertia_ratio_limit=0.05).pick is None
+    assert search(m, 10.0, gearboxes, motors, inertia_limit=0.05).pick is None
     # A gearbox whose T_2B takes a motor peak of at most 15 N·m (T_2B / (i · f_s · η)) refuses B there.
     limited = {**gearboxes, "peak_limit": [15.0, np.inf, np.inf]}
-    assert search(m, 10.0, limited, motors).feasible[0].tolist() == [True, False]
+    assert search(m, 10.0, limited, motors, INERTIA_RATIO_LIMIT).feasible[0].tolist() == [True, False]
 
 
 def test_the_figure_shows_the_lowest_working_utilization_of_each_motor_and_ratio():

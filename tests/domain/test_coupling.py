@@ -12,7 +12,6 @@ from calc import CalcError, Q_
 from calc.data.bands import BandTable
 from calc.data.catalog import load_catalog, resolve
 from calc.domain.coupling import (
-    RADIAN,
     SCHEMA,
     C_T_line,
     J_A,
@@ -26,7 +25,8 @@ from calc.domain.coupling import (
     temperature_factor,
 )
 from calc.domain.fits import parse_bore
-from calc.core.formula import REGISTRY, Formula, Symbol
+from calc.core.formula import REGISTRY, Formula
+from calc.core.glossary import Symbol, symbol
 
 CATALOG = load_catalog(resolve("couplings", None, "catalog"), SCHEMA)
 
@@ -149,24 +149,24 @@ def test_natural_frequency_by_hand():
     j_a = J_A(J_drive=Q_(4.2, "kg*cm**2"), J_K=Q_(1, "kg*cm**2"))
     j_l = J_L(J_load=Q_(15.93, "kg*cm**2"), J_K=Q_(1, "kg*cm**2"))
     assert j_a.m_as("kg*cm**2") == pytest.approx(4.7) and j_l.m_as("kg*cm**2") == pytest.approx(16.43)
-    assert f_e(C_T=Q_(25_000, "N*m/rad"), J_A=j_a, J_L=j_l).m_as("Hz") == pytest.approx(1316.35, abs=0.01)
+    assert f_e(C_T=Q_(25_000, "N*m/rad"), J_A=j_a, J_L_coupling=j_l).m_as("Hz") == pytest.approx(1316.35, abs=0.01)
 
 
 def test_natural_frequency_takes_a_stiffness_per_arcmin():
     # The source's EKM-15: 0.24 N·m/arcmin = 0.24 · 10800/π = 825.06 N·m/rad (E14). With
     # J_A = J_L = 1 kg·cm²: f_e = √(825.06 · 2 / 1e-4) / 2π = √(1.65012e7) / 2π = 646.5 Hz.
     j = Q_(1, "kg*cm**2")
-    assert f_e(C_T=Q_(0.24, "N*m/arcmin"), J_A=j, J_L=j).m_as("Hz") == pytest.approx(646.5, abs=0.1)
+    assert f_e(C_T=Q_(0.24, "N*m/arcmin"), J_A=j, J_L_coupling=j).m_as("Hz") == pytest.approx(646.5, abs=0.1)
     with pytest.raises(CalcError, match="argument 'C_T': expected a stiffness"):
-        f_e(C_T=Q_(0.24, "N*m"), J_A=j, J_L=j)  # a torque is no stiffness (E15)
+        f_e(C_T=Q_(0.24, "N*m"), J_A=j, J_L_coupling=j)  # a torque is no stiffness (E15)
 
 
 def test_radian_is_a_constant_of_the_formula():
-    assert RADIAN.value == "1 rad"
+    assert symbol("rad").value == "1 rad"
     with pytest.raises(CalcError, match="unknown argument 'rad'"):
-        f_e(C_T=Q_(1, "N*m/rad"), J_A=Q_(1, "kg*m**2"), J_L=Q_(1, "kg*m**2"), rad=Q_(1, "rad"))
+        f_e(C_T=Q_(1, "N*m/rad"), J_A=Q_(1, "kg*m**2"), J_L_coupling=Q_(1, "kg*m**2"), rad=Q_(1, "rad"))
     assert r"\mathrm{rad}" in f_e.latex()
-    step = f_e.step(C_T=Q_(25_000, "N*m/rad"), J_A=Q_(4.7, "kg*cm**2"), J_L=Q_(16.43, "kg*cm**2"))
+    step = f_e.step(C_T=Q_(25_000, "N*m/rad"), J_A=Q_(4.7, "kg*cm**2"), J_L_coupling=Q_(16.43, "kg*cm**2"))
     assert r"1\,\mathrm{rad}" in step.latex() and str(step) == "f_e = 1316 Hz"
 
 
@@ -190,7 +190,7 @@ def test_without_the_radian_the_angle_check_fails():
 @given(c=st.floats(1e2, 1e7), j_a=st.floats(0.01, 1e4), j_l=st.floats(0.01, 1e4), more=st.floats(1.001, 100))
 def test_natural_frequency_falls_as_either_inertia_grows(c, j_a, j_l, more):
     def fe(a, b):
-        return f_e(C_T=Q_(c, "N*m/rad"), J_A=Q_(a, "kg*cm**2"), J_L=Q_(b, "kg*cm**2")).m_as("Hz")
+        return f_e(C_T=Q_(c, "N*m/rad"), J_A=Q_(a, "kg*cm**2"), J_L_coupling=Q_(b, "kg*cm**2")).m_as("Hz")
 
     base = fe(j_a, j_l)
     assert fe(j_a * more, j_l) < base and fe(j_a, j_l * more) < base
@@ -200,8 +200,8 @@ def test_natural_frequency_falls_as_either_inertia_grows(c, j_a, j_l, more):
 def test_a_very_heavy_load_leaves_the_single_mass_frequency(c, j):
     # J_L → ∞: f_e → √(C_T / J_A) / 2π, the drive side on a spring to a fixed wall.
     single = math.sqrt(c / (j * 1e-4)) / (2 * math.pi)
-    assert f_e(C_T=Q_(c, "N*m/rad"), J_A=Q_(j, "kg*cm**2"),
-               J_L=Q_(j * 1e9, "kg*cm**2")).m_as("Hz") == pytest.approx(single, rel=1e-6)
+    far = f_e(C_T=Q_(c, "N*m/rad"), J_A=Q_(j, "kg*cm**2"), J_L_coupling=Q_(j * 1e9, "kg*cm**2"))
+    assert far.m_as("Hz") == pytest.approx(single, rel=1e-6)
 
 
 @given(
@@ -376,7 +376,7 @@ def test_selection_is_vectorized_over_the_catalog():
         if not np.isnan(s.f_e[row].magnitude):
             j = s.catalog["J"][row]
             scalar = f_e(C_T=s.catalog["C_T"][row], J_A=J_A(J_drive=EXAMPLE["drive_inertia"], J_K=j),
-                         J_L=J_L(J_load=EXAMPLE["load_inertia"], J_K=j))
+                         J_L_coupling=J_L(J_load=EXAMPLE["load_inertia"], J_K=j))
             assert s.f_e[row].m_as("Hz") == pytest.approx(scalar.m_as("Hz"))
 
 

@@ -27,8 +27,8 @@ TP010 = LoopModel(Q_(23, "N*m/arcmin"), Q_(3, "arcmin"), Q_(81, "N*m"))
 
 def test_source_definitions_by_hand():
     # Source, "Torsional Stiffness": applied torque / deflection: 40.5 N·m over 1.761 arcmin is 23 N·m/arcmin.
-    assert stiffness_from_slope(Delta_T=Q_(40.5, "N*m"),
-                                Delta_phi=Q_(1.76087, "arcmin")).m_as("N*m/arcmin") == pytest.approx(23.0, rel=1e-5)
+    slope = stiffness_from_slope(Delta_T=Q_(40.5, "N*m"), Delta_phi_twist=Q_(1.76087, "arcmin"))
+    assert slope.m_as("N*m/arcmin") == pytest.approx(23.0, rel=1e-5)
     # Source, "Backlash" and "Lost Motion": maximum minus minimum deflection.
     assert backlash_from_loop(phi_max_0=Q_(1.5, "arcmin"),
                               phi_min_0=Q_(-1.5, "arcmin")).m_as("arcmin") == pytest.approx(3.0)

@@ -63,7 +63,7 @@ def test_the_bodies_give_the_tables_inertia(write_case, tmp_path):
 def test_the_shapes_laws(m, D, ratio, e):
     mass, outer = Q_(m, "kg"), Q_(D, "mm")
     # A hollow cylinder of the same mass lies between the solid one and a thin ring (m·D²/4).
-    hollow = J_hollow(m=mass, D=outer, d=outer * ratio).m_as("kg*m**2")
+    hollow = J_hollow(m=mass, D=outer, d_i=outer * ratio).m_as("kg*m**2")
     solid = J_cylinder(m=mass, D=outer).m_as("kg*m**2")
     assert solid * (1 - 1e-12) <= hollow <= m * (D / 1000) ** 2 / 4 * (1 + 1e-12)
     # Off the axis, a body turns with more inertia, never less.

@@ -12,7 +12,8 @@ from hypothesis import strategies as st
 
 from calc import Q_
 from calc.sections.case import read_case
-from calc.domain.ratios import INERTIA_RATIO_LIMIT, pick_ratio
+from calc.domain.gearbox import INERTIA_RATIO_LIMIT
+from calc.domain.ratios import pick_ratio
 from calc.sections import evaluate
 from calc.sections.ratios import search
 
@@ -88,11 +89,11 @@ def test_pick_rule_falls_back_to_lowest_inertia_ratio():
     parts = np.array(["a", "b", "c"])
     feasible = np.array([True, True, False])
     lam = np.array([40.0, 12.0, 3.0])  # the only ratio within the limit is not feasible
-    k, why = pick_ratio(ratios, parts, feasible, lam, None, [])
+    k, why = pick_ratio(ratios, parts, feasible, lam, None, [], INERTIA_RATIO_LIMIT)
     assert k == 1 and f"none with λ <= {INERTIA_RATIO_LIMIT:g}" in why
-    k, why = pick_ratio(ratios, parts, np.zeros(3, bool), lam, None, ["it needs motor.inertia"])
+    k, why = pick_ratio(ratios, parts, np.zeros(3, bool), lam, None, ["it needs motor.inertia"], INERTIA_RATIO_LIMIT)
     assert k is None and "motor.inertia" in why
-    k, why = pick_ratio(ratios, parts, feasible, np.full(3, np.nan), None, [])
+    k, why = pick_ratio(ratios, parts, feasible, np.full(3, np.nan), None, [], INERTIA_RATIO_LIMIT)
     assert k == 0 and "not known" in why  # no inertias, no torques: the lower ratio
 
 
@@ -135,7 +136,7 @@ def test_the_pick_is_feasible_and_needs_the_least_rms_within_the_inertia_limit(p
         return
     assert s.feasible[s.pick]
     rms = s.load.rms.m_as("N*m")
-    within = s.feasible & (s.inertia_ratio <= INERTIA_RATIO_LIMIT)
+    within = s.feasible & (s.inertia_ratio <= s.inertia_limit)
     if within.any():
         assert within[s.pick] and rms[s.pick] == rms[within].min()
     else:

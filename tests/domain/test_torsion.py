@@ -16,7 +16,9 @@ from calc.domain.coupling import SCHEMA, DriveTrain, f_e, select_coupling
 from calc.domain.gearbox import SCHEMA as GEARBOX_SCHEMA
 from calc.sections import evaluate
 from calc.sections.case import read_case
-from calc.domain.torsion import Member, gearbox_at_input, inertia_at_output, load_at_input, lumped, natural_frequencies
+from calc.domain.torsion import (
+    TrainMember, gearbox_at_input, inertia_at_output, load_at_input, lumped, natural_frequencies,
+)
 
 from ..conftest import DERIVED_EXAMPLE, EXAMPLE as EXAMPLE_CASE
 
@@ -28,7 +30,7 @@ def test_two_masses_give_the_source_formula():
     # J_A = 4.7 kg·cm² and J_L = 16.43 kg·cm² gives f_e = 1316.35 Hz (tests/domain/test_coupling.py).
     J_A, J_L, C = Q_(4.7, KG_CM2), Q_(16.43, KG_CM2), Q_(25_000, "N*m/rad")
     modes = natural_frequencies(Q_([4.7, 16.43], KG_CM2), Q_([25_000], "N*m/rad"))
-    assert modes.m_as("Hz") == pytest.approx([f_e(C_T=C, J_A=J_A, J_L=J_L).m_as("Hz")], rel=1e-12)
+    assert modes.m_as("Hz") == pytest.approx([f_e(C_T=C, J_A=J_A, J_L_coupling=J_L).m_as("Hz")], rel=1e-12)
     assert modes.m_as("Hz") == pytest.approx([1316.35], abs=0.01)
 
 
@@ -64,19 +66,19 @@ def test_reflection_formulas_by_hand():
 
 def test_lumping_adds_the_masses_between_springs():
     chain = lumped([
-        Member("motor", Q_(4.2, KG_CM2)),
-        Member("coupling", Q_(0.5, KG_CM2), Q_(25_000, "N*m/rad"), Q_(0.5, KG_CM2)),
-        Member("gearbox", Q_(0.93, KG_CM2), Q_(756.304, "N*m/rad")),
-        Member("load", Q_(15, KG_CM2)),
+        TrainMember("motor", Q_(4.2, KG_CM2)),
+        TrainMember("coupling", Q_(0.5, KG_CM2), Q_(25_000, "N*m/rad"), Q_(0.5, KG_CM2)),
+        TrainMember("gearbox", Q_(0.93, KG_CM2), Q_(756.304, "N*m/rad")),
+        TrainMember("load", Q_(15, KG_CM2)),
     ])
     assert chain.masses == ("motor + coupling", "coupling + gearbox",
                             "load") and chain.springs == ("coupling", "gearbox")
     assert chain.inertias.m_as(KG_CM2) == pytest.approx([4.7, 1.43, 15])
     assert chain.natural_frequencies().m_as("Hz") == pytest.approx([207.96, 2424.71], abs=0.01)
     # A direct drive has no gearbox spring: its J_1 and the load are one mass.
-    rigid = lumped([Member("motor", Q_(4.2, KG_CM2)),
-                    Member("coupling", Q_(0.5, KG_CM2), Q_(25_000, "N*m/rad"), Q_(0.5, KG_CM2)),
-                    Member("load", Q_(15.93, KG_CM2))])
+    rigid = lumped([TrainMember("motor", Q_(4.2, KG_CM2)),
+                    TrainMember("coupling", Q_(0.5, KG_CM2), Q_(25_000, "N*m/rad"), Q_(0.5, KG_CM2)),
+                    TrainMember("load", Q_(15.93, KG_CM2))])
     assert rigid.masses == ("motor + coupling", "coupling + load")
     assert rigid.natural_frequencies().m_as("Hz") == pytest.approx([1316.35], abs=0.01)
 
@@ -105,7 +107,7 @@ def test_bad_chains_are_named(inertias, stiffnesses, message):
 
 def test_a_chain_that_ends_in_a_spring_is_refused():
     with pytest.raises(CalcError, match=r"drive train: the chain ends in a spring \(gearbox\)"):
-        lumped([Member("motor", Q_(4.2, KG_CM2)), Member("gearbox", Q_(0.93, KG_CM2), Q_(756, "N*m/rad"))])
+        lumped([TrainMember("motor", Q_(4.2, KG_CM2)), TrainMember("gearbox", Q_(0.93, KG_CM2), Q_(756, "N*m/rad"))])
 
 
 positive = st.floats(min_value=0.1, max_value=1e3, allow_nan=False)
@@ -156,9 +158,9 @@ CATALOG = load_catalog(resolve("couplings", None, "catalog"), SCHEMA)
 BELLOWS = CATALOG.rows(CATALOG.text["type"] == "bellows")
 ARGS = dict(accel_torque=Q_(12, "N*m"), drive_inertia=Q_(4.2, KG_CM2), load_inertia=Q_(15.93, KG_CM2),
             shaft_1="19 mm k6", shaft_2="16 mm h7", speed=Q_(3000, "rpm"))
-TRAIN = DriveTrain((Member("motor", Q_(4.2, KG_CM2)),),
-                   (Member("gearbox", Q_(0.93, KG_CM2), gearbox_at_input(C_t21=Q_(22, "N*m/arcmin"), i=10)),
-                    Member("load", Q_(15, KG_CM2))),
+TRAIN = DriveTrain((TrainMember("motor", Q_(4.2, KG_CM2)),),
+                   (TrainMember("gearbox", Q_(0.93, KG_CM2), gearbox_at_input(C_t21=Q_(22, "N*m/arcmin"), i=10)),
+                    TrainMember("load", Q_(15, KG_CM2))),
                    shaft="the gearbox input")
 
 
@@ -178,7 +180,7 @@ def test_the_gearbox_spring_governs_where_the_chain_is_complete():
 
 
 def test_an_incomplete_chain_informs_and_names_what_is_missing():
-    train = DriveTrain(TRAIN.drive, (Member("load", Q_(15.93, KG_CM2)),),
+    train = DriveTrain(TRAIN.drive, (TrainMember("load", Q_(15.93, KG_CM2)),),
                        missing=("the gearbox's torsional stiffness C_t21",))
     s = select_coupling(BELLOWS, excitation_frequency=Q_(700, "Hz"), drive_train=train, **ARGS)
     row = BELLOWS.index("AKD-30", "part")
@@ -290,7 +292,7 @@ def test_an_informing_check_without_a_value_says_why():
     # A catalog row without J: the chain's first mode cannot be computed; reported, not made, with the reason.
     rows = BELLOWS.rows([BELLOWS.index("AKD-30", "part")])
     rows["J"][0] = Q_(np.nan, KG_CM2)
-    train = DriveTrain(TRAIN.drive, (Member("load", Q_(15.93, KG_CM2)),), missing=("coupling.side",))
+    train = DriveTrain(TRAIN.drive, (TrainMember("load", Q_(15.93, KG_CM2)),), missing=("coupling.side",))
     s = select_coupling(rows, excitation_frequency=Q_(100, "Hz"), drive_train=train, **ARGS)
     check = next(c for c in s.checks if c.name == "f_1").at(0)
     assert check.passes is None and check.governs is False
@@ -317,9 +319,10 @@ def test_the_highest_first_mode_a_coupling_can_give_by_hand():
     best = highest_first_mode(span, J_1, C_t21, i).m_as("Hz")
     assert best[0] == pytest.approx(183.19, abs=0.01) and np.isnan(best[2])
     # The bound is the highest of the chains with each coupling alone (calc.domain.torsion.lumped).
-    each = [lumped([Member("motor", Q_(1.74, KG_CM2)), Member("coupling", J / 2, C, J / 2),
-                    Member("gearbox", Q_(0.93, KG_CM2), gearbox_at_input(C_t21=Q_(22, "N*m/arcmin"), i=Q_(10, ""))),
-                    Member("load", Q_(15, KG_CM2))]).natural_frequencies().m_as("Hz")[0]
+    each = [lumped([TrainMember("motor", Q_(1.74, KG_CM2)), TrainMember("coupling", J / 2, C, J / 2),
+                    TrainMember("gearbox", Q_(0.93, KG_CM2),
+                                gearbox_at_input(C_t21=Q_(22, "N*m/arcmin"), i=Q_(10, ""))),
+                    TrainMember("load", Q_(15, KG_CM2))]).natural_frequencies().m_as("Hz")[0]
             for C, J in zip(bellows["C_T"], bellows["J"])]
     assert best[1] == pytest.approx(max(each), rel=1e-12)
 

@@ -35,10 +35,10 @@ def test_hysteresis_figure_marks_slopes_backlash_lost_motion_and_bands():
     fig = hysteresis_figure(loop, a)
     whole, detail = fig.axes
     shown = texts(fig)
-    assert any(t.startswith("$C_t$ = 21.99 N·m/arcmin") for t in shown)
-    assert any(t.startswith("$C_t$ = 21.96 N·m/arcmin") for t in shown)
-    assert "backlash $j_t$\n= 7.99 arcmin" in shown
-    assert "lost motion\n(±3 % $T_N$)\n= 8.75 arcmin" in shown
+    assert any(t.startswith(r"$C_{\mathrm{t}}$ = 21.99 N·m/arcmin") for t in shown)
+    assert any(t.startswith(r"$C_{\mathrm{t}}$ = 21.96 N·m/arcmin") for t in shown)
+    assert "backlash $j_{\\mathrm{t}}$\n= 7.99 arcmin" in shown
+    assert "lost motion\n(±3 % $T_{\\mathrm{N}}$)\n= 8.75 arcmin" in shown
     # Shaded: the ±3 % band on both axes, the two 50 % to 100 % bands on the whole loop.
     spans = [p.get_x() for p in whole.patches]
     assert sorted(np.round(spans, 2)) == [-110.0, -3.3, 55.0]
@@ -59,7 +59,7 @@ def test_stiffness_chain_figure_shows_each_share():
 def test_transmission_error_figure_marks_the_range():
     a = analyze_trace(read_trace(ROOT / "data" / "transmission-NPT035-10-generated.csv"), Q_(10, ""))
     fig = transmission_error_figure(a)
-    assert "$\\varphi_{TA}$ = 62.9 arcsec" in texts(fig)
+    assert "$\\varphi_{\\mathrm{TA}}$ = 62.9 arcsec" in texts(fig)
     assert len(fig.axes[0].lines) == 2 + 2  # both directions, and the two range lines
 
 

@@ -95,8 +95,8 @@ def test_shock_factor_figure_draws_the_table_with_e4_boundaries():
     np.testing.assert_array_equal(lines["excluded"].get_xdata(), bounds[1:])
     np.testing.assert_array_equal(lines["excluded"].get_ydata(), factors[:-1])
     assert lines["excluded"].get_markerfacecolor() == "white"
-    assert "$Z_h$" in ax.get_xlabel() and "[1/h]" in ax.get_xlabel()
-    assert "$f_s$" in ax.get_ylabel()
+    assert r"$Z_{\mathrm{h}}$" in ax.get_xlabel() and "[1/h]" in ax.get_xlabel()
+    assert r"$f_{\mathrm{s}}$" in ax.get_ylabel()
     assert "E4" in ax.get_title()
 
 
@@ -127,7 +127,7 @@ def test_shock_factor_figure_marks_the_case(t_cycle, z, fs):
     assert case.get_xdata()[0] == pytest.approx(z)
     assert case.get_ydata()[0] == fs
     assert ax.get_xlim()[1] > z  # the point is inside the plot, also far to the right
-    assert f"this case: $Z_h$ = {z} 1/h, $f_s$ = {fs:g}" in _texts(fig)
+    assert rf"this case: $Z_{{\mathrm{{h}}}}$ = {z} 1/h, $f_{{\mathrm{{s}}}}$ = {fs:g}" in _texts(fig)
 
 
 def test_shock_factor_figure_takes_one_point():

@@ -48,5 +48,5 @@ def test_the_bellows_coupling_joins_the_two_shafts():
     (ax,) = bellows_coupling_figure().axes
     texts = [t.get_text() for t in ax.texts]
     assert "hub 1: clamps the motor shaft $D_1$" in texts and "hub 2: clamps the gearbox shaft $D_2$" in texts
-    assert any(t.startswith("metal bellows: stiff in torsion ($C_T$)") for t in texts)
+    assert any(t.startswith(r"metal bellows: stiff in torsion ($C_{\mathrm{T}}$)") for t in texts)
     assert len(ax.lines) == 2  # the bellows' two walls in the section

@@ -201,7 +201,7 @@ def test_shock_factor_band_is_the_one_the_factor_came_from():
     zh = Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))
     block = shock_factor_block(zh)
     assert float(shock_factor(zh)) == 1.3
-    assert r"1500 \le Z_h < 2000" in block and "f_{s} = 1.3" in block
+    assert r"1500 \le Z_{\mathrm{h}} < 2000" in block and r"f_{\mathrm{s}} = 1.3" in block
 
 
 def test_a_derived_load_cycle_shows_its_motion_and_mechanism():
@@ -213,7 +213,8 @@ def test_a_derived_load_cycle_shows_its_motion_and_mechanism():
     assert "Moves of the load, repeated" in inputs and "derived from the motion" in inputs
     # Each formula with its values: ω_2max = 90° / (0.5 − 0.15/2 − 0.15/2) s = 42.86 rpm; α = 4.488 / 0.12 = 37.4 rad/s²;
     # at the peak acceleration T_2 = 0.15 · 37.4 + 3 = 8.61 N·m.
-    assert r"\omega_{2,\max} &= \frac{\varphi_{2}}{t_{m} - \frac{t_{a}}{2} - \frac{t_{d}}{2}}" in steps
+    assert (r"\omega_{\mathrm{2max}} &= \frac{\varphi_{2}}{t_{\mathrm{m}} - \frac{t_{\mathrm{a}}}{2} - "
+            r"\frac{t_{\mathrm{d}}}{2}}") in steps
     assert r"&= 42.86\,\mathrm{rpm}" in steps and r"&= 37.4\,\mathrm{rad/s^{2}}" in steps and r"&= 8.61\,\mathrm{N\,m}" in steps
     assert "Segments derived from the sampled cycle" in steps
     assert steps.index("Motion and mechanism") < steps.index("Duty cycle and operating mode")
@@ -226,7 +227,8 @@ def test_a_linear_axis_shows_its_radius_inertia_and_force():
     # r = 1 in / 2π = 4.043 mm; J_L = 60 lb · r² + 2.7 lb·in² = 4.448 + 7.901 = 12.35 kg·cm².
     assert r"r &= \frac{p}{2 \cdot \pi}" in steps and r"&= 4.043\,\mathrm{mm}" in steps
     assert r"&= 12.35\,\mathrm{kg\,cm^{2}}" in steps
-    assert r"F &= a \cdot \left(m + m_{c}\right)" in steps and r"T_{2} &= T_{d} \cdot s_{v} + F \cdot r \cdot \eta^{- d_{P}}" in steps
+    assert r"F &= a \cdot \left(m + m_{\mathrm{c}}\right)" in steps
+    assert r"T_{2} &= T_{\mathrm{d}} \cdot s_{\mathrm{v}} + F \cdot r \cdot \eta^{- d_{\mathrm{P}}}" in steps
 
 
 def test_a_derived_load_inertia_is_not_listed_as_a_case_key():

@@ -39,12 +39,12 @@ def test_report_blocks_show_the_makers_checks(write_case, tmp_path):
     report = build_report(write_case(head + PROFILE_TOML + CASE))
     assert report.error is None, report.error
     steps = str(report.calculations())
-    assert "f_{s} = 1.5" in steps and "a test table" in steps
+    assert r"f_{\mathrm{s}} = 1.5" in steps and "a test table" in steps
     assert "Peak torque with the start and temperature factors" in steps and "Mayr" in steps
     assert "30 < $T$ ≤ 60 °C" in steps  # the ROBA-ES band of 60 °C
     assert "Positioning accuracy as an arc at the radius" in steps and "given as an arc" in steps
     assert "stiffness curve" in steps  # the band formula of the curve and its secant
     results = str(report.section_results())
-    assert "$S_{z}$" in results and "as an arc at $r$ = 200 mm" in results
+    assert r"$S_{\mathrm{z}}$" in results and "as an arc at $r$ = 200 mm" in results
     inputs = str(report.inputs())
     assert case_key("accuracy.radius") in inputs and case_key("coupling.start_factors") in inputs

@@ -67,8 +67,10 @@ def test_temperature_and_applied_torque_reach_their_sections(case):
 
 
 def test_key_paths_reach_the_case_as_the_named_arguments_do(case):
-    by_path = with_inputs(case, {"gearbox.ratio": Q_(8, ""), "profile[4].duration": Q_(3, "s"), "accuracy.applied_torque": Q_(16, "N*m")})
-    by_name = with_changes(case, ratio=Q_(8, ""), durations=Q_(np.array([0.2, 0.6, 0.2, 3.0]), "s"), applied_torque=Q_(16, "N*m"))
+    by_path = with_inputs(case, {"gearbox.ratio": Q_(8, ""), "profile[4].duration": Q_(3, "s"),
+                                 "accuracy.applied_torque": Q_(16, "N*m")})
+    by_name = with_changes(case, ratio=Q_(8, ""), durations=Q_(np.array([0.2, 0.6, 0.2, 3.0]), "s"),
+                           applied_torque=Q_(16, "N*m"))
     assert by_path.ratio == by_name.ratio == Q_(8, "")
     assert by_path.sections == by_name.sections
     torque = with_inputs(case, {"accuracy.applied_torque": Q_(16, "N*m")})  # written as text, read back by the section
@@ -78,9 +80,10 @@ def test_key_paths_reach_the_case_as_the_named_arguments_do(case):
 
 def test_input_specs_of_the_example(case):
     specs = {s.key: s for s in input_specs(case, ratios=(5.0, 10.0))}
-    assert list(specs) == ["gearbox.ratio", "profile[1].duration", "profile[1].torque", "profile[2].duration", "profile[2].torque",
-                           "profile[3].duration", "profile[3].torque", "profile[4].duration", "motor.peak_torque", "motor.inertia",
-                           "load.inertia", "coupling.temperature", "accuracy.applied_torque"]
+    assert list(specs) == ["gearbox.ratio", "profile[1].duration", "profile[1].torque", "profile[2].duration",
+                           "profile[2].torque", "profile[3].duration", "profile[3].torque", "profile[4].duration",
+                           "motor.peak_torque", "motor.inertia", "load.inertia", "coupling.temperature",
+                           "accuracy.applied_torque"]
     assert specs["gearbox.ratio"].options == (5.0, 10.0)
     assert specs["motor.peak_torque"].text == "motor peak torque T_1B [N·m]"
     assert specs["load.inertia"].text == "load inertia J_L [kg·cm²]"
@@ -107,14 +110,16 @@ def test_results_html_of_the_example(case):
     assert "Gearbox <b>NPT035-10</b> · Coupling <b>AKD-30</b>" in text
     # Governing checks typeset as in the figures, no code spelling left.
     assert "<i>T</i><sub>2max</sub> ≤ <i>T</i><sub>2B</sub>" in text and "<i>K</i><sub>ϑ</sub>" in text
-    assert "T_2B" not in text and "C_total" not in text and "N*m" not in text and "NaN" not in text and "nan" not in text
+    assert "T_2B" not in text and "C_total" not in text and "N*m" not in text
+    assert "NaN" not in text and "nan" not in text
     # Full reasons with the rated value and the excess (TP010-10: T_2max 151.3 N·m against T_2B 126 N·m).
     assert "rated 126 N·m, 20.1 % over" in text
     # No index column: the first column of each candidate table is the rank.
     assert text.count("<thead><tr><th>rank</th>") == 2
     assert "True" not in text and "False" not in text
     # A check the catalog cannot decide says so, not FAIL (NPT035-10's row gives no F_2R).
-    assert '<span class="open">not checked: the catalog gives no <i>F</i><sub>2R</sub></span>' in text and "<sub>hub,max</sub>" in text
+    assert '<span class="open">not checked: the catalog gives no <i>F</i><sub>2R</sub></span>' in text
+    assert "<sub>hub,max</sub>" in text
     # The motor's peak torque governs too: the typed cycle through NPT035-10 (i = 10, η = 0.97) needs
     # 60 N·m / (10 · 0.97) = 6.186 N·m at the motor (no rotor term), against T_1B = 12 N·m.
     assert '<td class="">motor</td>' in text and "6.186 N·m" in text
@@ -138,14 +143,15 @@ def test_a_case_that_checks_nothing_says_so(write_case):
     assert '<span class="word open">NOT DECIDED</span>' in text and "Nothing is checked" in text
     assert "Governing checks" not in text and "Gearbox candidates" not in text
     panel = DesignReview(write_case(PROFILE_TOML, "only-a-cycle.toml"))  # its controls: the cycle's alone
-    assert set(panel.controls) == {f"profile[{k}].{w}" for k in (1, 2, 3) for w in ("duration", "torque")} | {"profile[4].duration"}
+    cycle = {f"profile[{k}].{w}" for k in (1, 2, 3) for w in ("duration", "torque")} | {"profile[4].duration"}
+    assert set(panel.controls) == cycle
     assert "NOT DECIDED" in panel.results.value
 
 
 def test_panel_controls_re_evaluate_the_case():
     review = DesignReview(EXAMPLE)
-    assert {"gearbox.ratio", "profile[1].duration", "profile[1].torque", "motor.peak_torque", "motor.inertia", "load.inertia",
-            "coupling.temperature", "accuracy.applied_torque"} <= set(review.controls)
+    assert {"gearbox.ratio", "profile[1].duration", "profile[1].torque", "motor.peak_torque", "motor.inertia",
+            "load.inertia", "coupling.temperature", "accuracy.applied_torque"} <= set(review.controls)
     first = review.generation
     assert "PASS" in review.results.value and review.load_cycle.value.startswith('<svg class="dr-load-cycle"')
     cycle, chain = review.load_cycle.value, review.chain.value
@@ -155,7 +161,8 @@ def test_panel_controls_re_evaluate_the_case():
     review.controls["coupling.temperature"].value = 60.0
     review.settled()
     assert review.generation == first + 1  # one update per change
-    assert (review.load_cycle.value, review.chain.value) == (cycle, chain)  # a bellows coupling has no temperature factor
+    # a bellows coupling has no temperature factor
+    assert (review.load_cycle.value, review.chain.value) == (cycle, chain)
     review.controls["profile[2].torque"].value = 21.0
     review.settled()
     assert review.load_cycle.value != cycle and review.chain.value == chain  # the load cycle only
@@ -165,10 +172,12 @@ def test_panel_controls_re_evaluate_the_case():
     # is chosen; the coupling follows the motor's torque (AKN-60: of the two 75 N·m sizes, AKD-60 and
     # AKN-60, the drive train's first mode is higher with AKN-60, 228.4 Hz against 227.8 Hz, so its
     # worst utilization, 2 f_er / f_1 = 200 / 228.4, is the lower), and with both the accuracy chain.
-    assert "Gearbox <b>NPS045-10</b> · Coupling <b>AKN-60</b>" in review.results.value and "378.3 N·m" in review.results.value
+    assert "Gearbox <b>NPS045-10</b> · Coupling <b>AKN-60</b>" in review.results.value
+    assert "378.3 N·m" in review.results.value
     assert "NPS045-10" in review.chain.value and "NPT035-10" not in review.chain.value
     review.reset.click()  # back to the case file's values
-    assert review.controls["motor.peak_torque"].value == 12.0 and "PASS" in review.results.value and review.chain.value == chain
+    assert review.controls["motor.peak_torque"].value == 12.0
+    assert "PASS" in review.results.value and review.chain.value == chain
 
 
 def test_changes_that_arrive_while_drawing_are_drawn_once_together():
@@ -225,9 +234,11 @@ def test_the_accuracy_chain_follows_a_change_of_ratio(case):
     # TP010-8's transmission accuracy is not known (the catalog gives none): 0.365 arcmin is a lower
     # bound, so the required 5 arcmin is not decided, and the page says which part and figure.
     assert a["positioning_accuracy_is_lower_bound"] and a["unknown"] == [
-        "TP010-8: its transmission accuracy (the trace of NPT035-10 does not apply to it, and the case gives no transmission_accuracy)"]
+        "TP010-8: its transmission accuracy (the trace of NPT035-10 does not apply to it, and the case gives no "
+        "transmission_accuracy)"]
     assert a["checks"][0]["passes"] is None and r["verdict"]["passes"] is None
-    assert '<span class="word open">NOT DECIDED</span>' in text and "Gearbox <b>TP010-8</b>" in text and "≥ 0.365 arcmin" in text
+    assert '<span class="word open">NOT DECIDED</span>' in text
+    assert "Gearbox <b>TP010-8</b>" in text and "≥ 0.365 arcmin" in text
     # Beside the verdict, the checks not made: TP010-8's F_2R (no rating), the positioning accuracy,
     # the motor's RMS and speed (the case gives no ratings).
     assert "<b>a lower bound</b>: unknown TP010-8: its transmission accuracy" in text and "4 checks not made" in text
@@ -245,7 +256,8 @@ def test_a_section_that_no_longer_fits_is_left_out_not_everything(write_case):
     assert "NPT035-10" in shown
     # catalogs/gearboxes.csv, the complete rows at ratio 8 (the SP+ rows are partial, never ranked).
     assert {c.part for c in report.evaluated["gearbox"].selection.candidates()} == {f"{s}-8" for s in (
-        "TP004", "TP010", "TP050", "TP300", "TP500", "NPT005", "NPT015", "NPT025", "NPT035", "NPT045", "NPS015", "NPS045")}
+        "TP004", "TP010", "TP050", "TP300", "TP500", "NPT005", "NPT015", "NPT025", "NPT035", "NPT045", "NPS015",
+        "NPS045")}
     assert "Coupling candidates" in shown and "Accuracy of the chain" not in shown
 
 
@@ -270,7 +282,8 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     assert argv[argv.index("-c") + 1] == serve.LAUNCH and serve.LAUNCH.endswith("from voila.app import main; main()")
     assert str(serve.PAGE) in argv and serve.PAGE.is_file()
     assert "--Voila.ip=127.0.0.1" in argv and "--strip_sources=True" in argv and "--preheat_kernel=True" in argv
-    assert "--MappingKernelManager.cull_idle_timeout=600" in argv and "--MappingKernelManager.cull_connected=False" in argv
+    assert "--MappingKernelManager.cull_idle_timeout=600" in argv
+    assert "--MappingKernelManager.cull_connected=False" in argv
     # Checked by hand in a browser with idle_seconds=6: two pages opened and closed, their two
     # kernels culled some 8 s later, the waiting kernel kept.
     assert "--MappingKernelManager.cull_idle_timeout=6" in serve.command(8866, idle_seconds=6)
@@ -282,15 +295,17 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
 def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     panel = DesignReview(DERIVED_EXAMPLE)
     specs = {s.key: s for s in panel.state.specs}
-    assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque", "mechanism.process_torque",
-                           "move[1].distance", "move[1].time", "move[1].accel_time", "move[1].decel_time", "move[1].jerk_time",
-                           "move[2].dwell", "coupling.temperature", "accuracy.applied_torque", "gearbox.part", "motor.part"]
+    assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque",
+                           "mechanism.process_torque", "move[1].distance", "move[1].time", "move[1].accel_time",
+                           "move[1].decel_time", "move[1].jerk_time", "move[2].dwell", "coupling.temperature",
+                           "accuracy.applied_torque", "gearbox.part", "motor.part"]
     # The decel time the file leaves out is offered at the value reading the file takes: the accel time.
     assert (specs["move[1].decel_time"].unit, specs["move[1].decel_time"].value) == ("s", 0.15)
     # In the file's units: the index of 90 deg, the table's 1500 kg·cm²; the friction 3 N·m, the
     # process torque left out (0 N·m, its default).
     assert (specs["move[1].distance"].unit, specs["move[1].distance"].value) == ("deg", 90.0)
-    assert specs["mechanism.inertia"].text == "mechanism: load inertia J_L [kg·cm²]" and specs["mechanism.inertia"].value == 1500.0
+    assert specs["mechanism.inertia"].text == "mechanism: load inertia J_L [kg·cm²]"
+    assert specs["mechanism.inertia"].value == 1500.0
     assert (specs["mechanism.process_torque"].low, specs["mechanism.process_torque"].value) == (0.0, 0.0)
     # A ramp reaches up to the whole move (0.5 s), so a reviewer can make the move impossible.
     assert specs["move[1].accel_time"].high == 0.5 and specs["move[1].jerk_time"].high == 0.5
@@ -310,7 +325,8 @@ def test_the_inch_pound_example_offers_its_inputs_in_its_units():
     # The process force the file leaves out comes in the mechanism's units too.
     assert specs["mechanism.force"].text == "mechanism: process force F_p [lbf]"
     # Either way, so a move can be reversed.
-    assert (specs["move[1].distance"].low, specs["move[1].distance"].high, specs["move[1].distance"].value) == (-50.0, 50.0, -10.0)
+    distance = specs["move[1].distance"]
+    assert (distance.low, distance.high, distance.value) == (-50.0, 50.0, -10.0)
     assert "load.inertia" not in specs  # the mechanism gives J_L
     assert specs["mechanism.eta"].low == 0.5 and specs["mechanism.eta"].high == 1.0
 
@@ -326,7 +342,8 @@ def test_a_heavier_load_is_derived_again_as_reading_the_file_derives_it(write_ca
     assert case.load_inertia.m_as("lb*in**2") == pytest.approx(4.21982, rel=1e-5)
     assert changed.motion.tables["mechanism"]["eta"] == 0.8 and case.motion.tables["mechanism"]["mass"] == "60 lb"
     # The same as a file that says so.
-    text = (ROOT / "cases" / "linear-axis-inch.toml").read_text().replace('mass = "60 lb"', 'mass = "80 lb"').replace("eta = 0.90", "eta = 0.8")
+    text = ((ROOT / "cases" / "linear-axis-inch.toml").read_text().replace('mass = "60 lb"', 'mass = "80 lb"')
+            .replace("eta = 0.90", "eta = 0.8"))
     assert evaluate(changed) == evaluate(dataclasses.replace(read_case(write_case(text)), path=case.path))
 
 
@@ -359,7 +376,8 @@ def test_move_times_set_the_accelerating_torque(write_case):
     # Every result follows: ED = 1.0 s / 2.0 s = 50 % (it was 0.5 / 1.5 = 33.3 %), peak speed
     # ω = φ / (t − t_a) = 1.570796 / 0.7 = 2.24399 rad/s = 21.4286 rpm.
     r = evaluate(slower)
-    assert r["duty"]["ED"]["value"] == pytest.approx(50.0) and evaluate(case)["duty"]["ED"]["value"] == pytest.approx(100 / 3)
+    assert r["duty"]["ED"]["value"] == pytest.approx(50.0)
+    assert evaluate(case)["duty"]["ED"]["value"] == pytest.approx(100 / 3)
     assert r["motion"]["peak_speed"]["value"] == pytest.approx(21.4286, rel=1e-5)
     assert r["motion"]["segments"][0]["torque"]["value"] == pytest.approx(1.12200, rel=1e-5)
 
@@ -371,16 +389,20 @@ def test_an_impossible_move_shows_the_input_error_and_the_panel_recovers():
     panel.settled()
     assert "input error</b>: " in panel.results.value and "Governing checks" not in panel.results.value
     # The control by its label, the case file by its name (no folder of the server), no figure.
-    assert "1 move: accel time <i>t</i><sub>a</sub>: expected acceleration and deceleration times that fit in the move" in panel.results.value
-    assert "move[1]" not in panel.results.value.split("data-changed")[1].split(">", 1)[1] and str(DERIVED_EXAMPLE.parent) not in panel.results.value
+    assert ("1 move: accel time <i>t</i><sub>a</sub>: expected acceleration and deceleration times that fit in the "
+            "move") in panel.results.value
+    assert "move[1]" not in panel.results.value.split("data-changed")[1].split(">", 1)[1]
+    assert str(DERIVED_EXAMPLE.parent) not in panel.results.value
     assert panel.load_cycle.layout.display == "none" and panel.chain.layout.display == "none"
     assert "found 0.3 s + 0.3 s &gt; 0.5 s" in panel.results.value
     panel.controls["move[1].accel_time"].value = 0.15
     panel.settled()
-    assert panel.results.value.replace(f'data-generation="{panel.generation}"', "") == first.replace('data-generation="1"', "")
+    again = panel.results.value.replace(f'data-generation="{panel.generation}"', "")
+    assert again == first.replace('data-generation="1"', "")
     panel.controls["move[1].jerk_time"].value = 0.1  # over half of 0.15 s
     panel.settled()
-    assert "1 move: jerk time <i>t</i><sub>j</sub>: expected a jerk time of at most half the acceleration and the deceleration time (0.075 s)" in panel.results.value
+    assert ("1 move: jerk time <i>t</i><sub>j</sub>: expected a jerk time of at most half the acceleration and the "
+            "deceleration time (0.075 s)") in panel.results.value
     panel.controls["move[1].jerk_time"].value = 0.03
     panel.settled()
     assert "PASS" in panel.results.value and "peak speed 42.86 rpm" in panel.results.value
@@ -414,7 +436,8 @@ def test_the_chooser_gives_each_verdict_and_links_a_built_report(tmp_path):
     from calc.review import serve
 
     panel = DesignReview(DERIVED_EXAMPLE, reports=tmp_path, report_link=lambda pdf: serve.report_address(pdf, tmp_path))
-    assert [label for label, _ in panel.case_file.options] == ["ball-screw-direct.toml · PASS", "indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
+    assert [label for label, _ in panel.case_file.options] == [
+        "ball-screw-direct.toml · PASS", "indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
     assert "calc report" not in panel.results.value  # not built yet
     (tmp_path / "indexing-table.pdf").write_bytes(b"%PDF-1.4\n")
     panel.reset.click()
@@ -441,7 +464,8 @@ def test_the_server_serves_the_folder_of_page_and_reports_and_only_the_reports_p
     assert serve.served_root(reports) == ROOT
     patterns = serve.allowed(reports)
     allowed = lambda path: any(re.fullmatch(p, path, re.IGNORECASE) for p in patterns)  # noqa: E731 (as Voilà matches)
-    assert allowed("reports/indexing-table.pdf") and not allowed("reports/calc-report.ipynb") and not allowed("reports/x/y.pdf")
+    assert allowed("reports/indexing-table.pdf")
+    assert not allowed("reports/calc-report.ipynb") and not allowed("reports/x/y.pdf")
     assert not allowed("cases/indexing-table.toml") and not allowed("indexing-table.pdf")
     assert serve.report_address(reports / "axis 3.pdf", reports) == "voila/files/reports/axis%203.pdf"
     argv = serve.command(8866, reports=reports)
@@ -461,7 +485,8 @@ def test_a_typed_value_is_read_with_a_decimal_comma_and_refused_outside_its_rang
     panel.settled()
     assert panel.controls["move[2].dwell"].value == 0.6 and panel.fields["move[2].dwell"].value == "0.6"
     assert panel.generation > first and not panel.state.refused
-    for typed, why in (("1e9", "outside the range"), ("-40", "outside the range"), ("abc", "is not a number"), ("0", "outside the range")):
+    for typed, why in (("1e9", "outside the range"), ("-40", "outside the range"), ("abc", "is not a number"),
+                       ("0", "outside the range")):
         panel.fields["mechanism.inertia"].value = typed
         panel.settled()
         assert panel.controls["mechanism.inertia"].value == 1500.0  # kept, not clamped
@@ -497,7 +522,8 @@ def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_pa
     saved = panel.save("axis-3-slower.toml")
     assert saved == tmp_path / "axis-3-slower.toml" and original.read_text() == text
     written = saved.read_text()
-    assert written.startswith("# Changed in the design review from indexing-table.toml: mechanism.inertia 1500 kg*cm**2 -> 1600 kg*cm**2; "
+    assert written.startswith("# Changed in the design review from indexing-table.toml: "
+                              "mechanism.inertia 1500 kg*cm**2 -> 1600 kg*cm**2; "
                               "move[1].time 0.5 s -> 0.6 s; coupling.temperature 40 degC -> 60 degC\n")
     # Only the changed values rewritten: every comment and every other line as it was.
     assert written.count("\n") == text.count("\n") + 1 and "# T_f, against the motion while the table turns" in written
@@ -540,7 +566,8 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
     panel.keep_variant()
     table = panel.variants_html.value
     # 30 N·m · 10 · 1.3 · 0.97 = 378.3 N·m: NPS045-10 instead of NPT035-10, marked as a difference.
-    assert "Variants compared" in table and '<td class="differs">NPS045-10</td>' in table and '<td class="">NPT035-10</td>' in table
+    assert "Variants compared" in table
+    assert '<td class="differs">NPS045-10</td>' in table and '<td class="">NPT035-10</td>' in table
     assert '<td class="differs">378.3 N·m</td>' in table and "with motor peak torque" in table
     # The comparison figure: each variant's worst governing utilization per part; the first's
     # gearbox is NPT035-10's T_2max / T_2B = 151.3 / 220 = 69 %.
@@ -563,7 +590,8 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
     stronger = tmp_path / "stronger.toml"
     stronger.write_text(EXAMPLE.read_text().replace('peak_torque = "12 N*m"', 'peak_torque = "30 N*m"')
                         .replace('"../../data/', f'"{EXAMPLE.parent.parent.parent}/data/'))
-    done = subprocess.run([sys.executable, "-m", "calc", "compare", str(EXAMPLE), str(stronger), "--json"], capture_output=True, text=True)
+    done = subprocess.run([sys.executable, "-m", "calc", "compare", str(EXAMPLE), str(stronger), "--json"],
+                          capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     rows = {r["name"]: r for r in json.loads(done.stdout)["rows"]}
     assert rows["gearbox"]["values"] == ["NPT035-10", "NPS045-10"] and rows["gearbox"]["differs"] == [False, True]
@@ -603,7 +631,8 @@ def test_what_cannot_be_saved_says_why():
     with pytest.raises(CalcError, match=r"^a.toml: move\[2\].dwell: the file has 1 \[\[move\]\] tables$"):
         changed_text(text, [], [Edit("move[2].dwell", "1 s")], "a.toml")
     # A segment written where the file has none (a derived cycle is typed first: calc.review.inputs.typed_cycle).
-    with pytest.raises(CalcError, match=r"^a.toml: profile\[1\].torque: the file has no \[profile\] table to write it in$"):
+    with pytest.raises(CalcError,
+                       match=r"^a.toml: profile\[1\].torque: the file has no \[profile\] table to write it in$"):
         changed_text(text, [], [Edit("profile[1].torque", "9 N*m")], "a.toml")
     panel = DesignReview(EXAMPLE)
     panel.fields["motor.peak_torque"].value = "abc"
@@ -674,7 +703,8 @@ def test_the_load_cycle_figure_draws_the_segments_steps():
     speed = svg.split('<polyline points="')[1].split('"')[0].split()
     assert [float(p.split(",")[0]) for p in speed] == pytest.approx(
         [LEFT + scale * t for t in (0, 0.2, 0.2, 0.8, 0.8, 1.0, 1.0, 2.0)], abs=0.06)
-    assert "Load cycle: ED = 50 %, cycle 2 s, mode S5" in svg and svg.count('fill="#eeeeee"') == 2  # the pause, in both panels
+    assert "Load cycle: ED = 50 %, cycle 2 s, mode S5" in svg
+    assert svg.count('fill="#eeeeee"') == 2  # the pause, in both panels
     assert f'viewBox="0 0 {WIDTH} {HEIGHT}"' in svg and len(svg) < 8000
 
 
@@ -700,7 +730,8 @@ def test_each_candidate_row_can_force_its_part():
     # page's script sets it on a click; tests/outputs/test_review_browser.py clicks one).
     panel = DesignReview(DERIVED_EXAMPLE)
     html = panel.results.value
-    assert 'data-force="gearbox.part" data-part="NPT025-10"' in html and 'data-force="motor.part" data-part="SGMUH-10DA"' in html
+    assert 'data-force="gearbox.part" data-part="NPT025-10"' in html
+    assert 'data-force="motor.part" data-part="SGMUH-10DA"' in html
     assert 'data-force="coupling' not in html  # no control forces a coupling
 
 
@@ -711,7 +742,8 @@ def test_a_move_is_reversed_and_a_ramp_the_file_leaves_out_is_set():
     panel.settled()
     back = evaluate(panel.state.shown.case)
     # The same index backwards: the same peak speed, the torques mirrored (so the S5 values hold).
-    assert back["motion"]["peak_speed"] == first["motion"]["peak_speed"] and back["cyclic"]["T2max"] == first["cyclic"]["T2max"]
+    assert back["motion"]["peak_speed"] == first["motion"]["peak_speed"]
+    assert back["cyclic"]["T2max"] == first["cyclic"]["T2max"]
     assert back["motion"]["segments"][0]["torque"]["value"] < 0 < first["motion"]["segments"][0]["torque"]["value"]
     panel.fields["move[1].decel_time"].value = "0.2"  # not in the file: written into the move
     panel.settled()
@@ -742,7 +774,8 @@ def test_a_forced_catalog_motor_is_checked_alone_and_saved_by_name():
     panel.controls["motor.part"].value = "SGM7J-04A"
     panel.settled()
     # SGM7J-04A alone: the catalog's next size up (M_N 1.27 N·m, J 0.486 kg·cm²): λ = 2.213 / 0.486 = 4.55.
-    assert "Motor <b>SGM7J-04A</b>" in panel.results.value and "PASS" in panel.results.value and ">4.55<" in panel.results.value
+    assert "Motor <b>SGM7J-04A</b>" in panel.results.value
+    assert "PASS" in panel.results.value and ">4.55<" in panel.results.value
     assert 'part = "SGM7J-04A"' in panel.state.case_text()
     assert "motor.part (not given) -> SGM7J-04A" in panel.state.case_text()
     panel.controls["motor.part"].value = "the selection's"
@@ -781,8 +814,9 @@ def test_moves_added_and_removed_follow_and_are_kept(tmp_path):
     shown = panel.state.shown.report.evaluated.to_json()
     saved = panel.save("axis-back-and-forth.toml")
     text = saved.read_text()
-    assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3; move 90 deg in 0.5 s added as "
-                           "entry 2; entry 4 of the moves removed; move[2].distance 90 deg -> -90 deg\n")
+    assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3; "
+                           "move 90 deg in 0.5 s added as entry 2; entry 4 of the moves removed; "
+                           "move[2].distance 90 deg -> -90 deg\n")
     assert "# One index: 90 deg in 0.5 s" in text and text.count("\n[[move]]\n") == 3
     again = evaluate_case(read_case(saved)).to_json()
     assert again["verdict"] == shown["verdict"] and again["gearbox"]["selected"] == shown["gearbox"]["selected"]
@@ -797,7 +831,8 @@ def test_moves_added_and_removed_follow_and_are_kept(tmp_path):
     # The only move cannot be removed: the panel says why and keeps the moves.
     panel.load()
     panel.remove_entry(1)
-    assert panel.message.value.endswith("not removed</b>: axis.toml: move: expected at least one move with a distance, found only dwells")
+    assert panel.message.value.endswith(
+        "not removed</b>: axis.toml: move: expected at least one move with a distance, found only dwells")
     assert [label for label, _ in panel.moves.entry.options] == ["1 move", "2 dwell"]
 
 
@@ -851,15 +886,18 @@ def test_the_mechanism_changes_type_from_equivalent_values(tmp_path):
     assert panel.fields["mechanism.mass"].value == "14804.4066" and panel.controls["mechanism.mass"].value == 15000
     assert "mechanism.mass" not in panel.state.changes()
     saved = panel.save("axis-screw.toml")
-    assert saved.read_text().startswith("# Changed in the design review from axis.toml: mechanism rotary -> ball-screw of 20 mm")
+    assert saved.read_text().startswith(
+        "# Changed in the design review from axis.toml: mechanism rotary -> ball-screw of 20 mm")
     assert evaluate_case(read_case(saved)).to_json()["verdict"] == (
         panel.state.shown.report.evaluated.to_json()["verdict"])
     panel.change_mechanism("rotary")
     panel.settled()
     table = panel.state.shown.case.motion.tables["mechanism"]
-    assert table == {"type": "rotary", "inertia": "1500 kg*cm**2", "friction_torque": "3 N*m", "process_torque": "0 N*m"}
+    assert table == {"type": "rotary", "inertia": "1500 kg*cm**2", "friction_torque": "3 N*m",
+                     "process_torque": "0 N*m"}
     panel.change_mechanism("belt", "0")
-    assert "type not changed</b>: a belt needs its diameter: expected a number above zero (in mm), found &#x27;0&#x27;" in panel.message.value
+    assert ("type not changed</b>: a belt needs its diameter: expected a number above zero (in mm), "
+            "found &#x27;0&#x27;") in panel.message.value
 
 
 def test_a_linear_axis_becomes_a_table_with_the_torques_the_drive_gives():

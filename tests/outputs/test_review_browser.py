@@ -2,8 +2,9 @@
 
 Headless Chromium (Debian's package, installed by ``make browser``) opens the page at 1366 × 768,
 changes the ratio and a torque through the page's own controls, and the verdict and the values
-of the tables follow; values typed in a row end on the last one. The times are printed (page ready, each change until the results follow),
-not asserted: a shared machine makes a timed assertion flaky. The screenshots are kept in
+of the tables follow; values typed in a row end on the last one. The times are printed (page
+ready, each change until the results follow), not asserted: a shared machine makes a timed
+assertion flaky. The screenshots are kept in
 ``build/screenshots/``.
 
 On the derived example, a move's time and the mechanism's inertia are changed, an impossible ramp
@@ -62,10 +63,12 @@ def test_a_reviewer_changes_the_ratio_and_a_torque_and_the_results_follow():
     assert first.startswith("PASS") and "NPT035-10" in first and "Governing checks" in first
     at_8 = seen["gearbox.ratio = 8"]
     # TP010-8's transmission accuracy is unknown: 0.365 arcmin is a lower bound, its check not decided.
-    assert at_8.startswith("NOT DECIDED") and "Gearbox TP010-8" in at_8 and "≥ 0.365 arcmin" in at_8 and "0.365 arcmin" not in first
+    assert at_8.startswith("NOT DECIDED") and "Gearbox TP010-8" in at_8
+    assert "≥ 0.365 arcmin" in at_8 and "0.365 arcmin" not in first
     assert seen["gearbox.ratio = 10"] == first
     strong = seen["motor.peak_torque = 30"]
-    assert strong.startswith("NOT DECIDED") and "Gearbox NPS045-10" in strong and "378.3 N·m" in strong and "151.3 N·m" not in strong
+    assert strong.startswith("NOT DECIDED") and "Gearbox NPS045-10" in strong
+    assert "378.3 N·m" in strong and "151.3 N·m" not in strong
     assert seen["motor.peak_torque = 12"] == first
     loose = seen["accuracy.applied_torque = 2"]
     assert loose.startswith("FAIL") and "9.049 arcmin > required 5 arcmin" in loose
@@ -94,8 +97,8 @@ MOVE_CHANGES = [
 
 def tiny_pdf(path):
     """A one-page PDF (matplotlib's, in milliseconds) standing for a calc report: building a real
-    one runs the report notebook and xelatex (11 s on this machine, and only where TeX is installed), which the report tests
-    cover; here only its serving is tested."""
+    one runs the report notebook and xelatex (11 s on this machine, and only where TeX is
+    installed), which the report tests cover; here only its serving is tested."""
     from matplotlib.figure import Figure
 
     Figure(figsize=(1, 1)).savefig(path, format="pdf")
@@ -113,15 +116,18 @@ def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
     # Slower, the smaller NPT025-10 would carry the torques (T_2max 81.97 N·m), but its softer spring
     # keeps the drive train's first mode below 2 f_er with any coupling: NPT035-10 stays, and passes.
     slower = seen["move[1].time = 1"]
-    assert slower.startswith("PASS") and "Gearbox NPT035-10" in slower and "81.97 N·m" in slower and "17.65 rpm" in slower
+    assert slower.startswith("PASS") and "Gearbox NPT035-10" in slower
+    assert "81.97 N·m" in slower and "17.65 rpm" in slower
     assert "100.9 N·m" not in slower
     assert seen["move[1].time = 0.5"] == first
     assert "3000 kg·cm²" in seen["mechanism.inertia = 3000"] and seen["mechanism.inertia = 1500"] == first
     impossible = seen["move[1].accel_time = 0.3"]
-    assert impossible.startswith("input error") and "found 0.3 s + 0.3 s > 0.5 s" in impossible and "Governing checks" not in impossible
+    assert impossible.startswith("input error") and "found 0.3 s + 0.3 s > 0.5 s" in impossible
+    assert "Governing checks" not in impossible
     assert seen["move[1].accel_time = 0.15"] == first
     # The chooser gives each case's verdict; the built report is linked, and served as a PDF.
-    assert [c.replace("\xa0", " ") for c in visit.choices] == ["ball-screw-direct.toml · PASS", "indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
+    assert [c.replace("\xa0", " ") for c in visit.choices] == [
+        "ball-screw-direct.toml · PASS", "indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
     href, status, content_type, head = visit.report
     assert href == serve.report_address(tmp_path / "indexing-table.pdf", tmp_path)
     assert status == 200 and content_type == "application/pdf" and head == b"%PDF-"
@@ -160,8 +166,10 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         change(page, "motor.peak_torque", "1e9")
         wait_for_results(page, g)
         message = row(page, "motor.peak_torque").locator(".dr-message").inner_text()
-        assert "outside the range" in message and row(page, "motor.peak_torque").locator(".dr-refused input").count() == 1
-        assert "Not applied" in page.inner_text(RESULTS_SELECTOR) and "186.2 N·m" not in first  # typed example: 151.3 N·m
+        assert "outside the range" in message
+        assert row(page, "motor.peak_torque").locator(".dr-refused input").count() == 1
+        # typed example: 151.3 N·m
+        assert "Not applied" in page.inner_text(RESULTS_SELECTOR) and "186.2 N·m" not in first
         page.screenshot(path=str(shots / "refused.png"))
         g = generation()
         change(page, "motor.peak_torque", "16")
@@ -190,20 +198,22 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         assert "motor.peak_torque" in page.evaluate("decodeURIComponent(location.hash)")
         page.goto("about:blank")
         page.goto(address)
-        page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')?.dataset.changed?.includes('peak_torque')",
-                               timeout=60_000)
+        page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')"
+                               "?.dataset.changed?.includes('peak_torque')", timeout=60_000)
         assert row(page, "motor.peak_torque").locator("input[type=text]").input_value() == "16"
         # Printed on A4, nothing cut: the page's print style puts the results under the controls.
         page.emulate_media(media="print")
         page.pdf(path=str(shots / "printed.pdf"), format="A4", print_background=True)
         page.emulate_media(media="screen")
-        printed = subprocess.run(["pdftotext", "-layout", str(shots / "printed.pdf"), "-"], capture_output=True, text=True).stdout
+        printed = subprocess.run(["pdftotext", "-layout", str(shots / "printed.pdf"), "-"], capture_output=True,
+                                 text=True).stdout
         assert "Governing checks" in printed and "utilization" in printed and "Coupling candidates" in printed
         assert "motor peak torque" in printed
         page.wait_for_timeout(500)
         shown = page.inner_text(RESULTS_SELECTOR)
         page.locator(".design-review button", has_text="Save as case file").click()
-        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('saved as axis-variant-1.toml')")
+        page.wait_for_function("() => document.querySelector('.design-review').innerText"
+                               ".includes('saved as axis-variant-1.toml')")
         saved = tmp_path / "axis-variant-1.toml"
         assert "# Changed in the design review from axis.toml: motor.peak_torque 12 N*m -> 16 N*m" in saved.read_text()
         r = evaluate(read_case(saved)).to_json()
@@ -214,7 +224,8 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         g = generation()
         page.locator(".design-review button", has_text="inch-pound").click()
         wait_for_results(page, g)
-        assert "lbf·in" in page.inner_text(RESULTS_SELECTOR) and "N·m" not in page.inner_text(f"{RESULTS_SELECTOR} table")
+        assert "lbf·in" in page.inner_text(RESULTS_SELECTOR)
+        assert "N·m" not in page.inner_text(f"{RESULTS_SELECTOR} table")
         page.screenshot(path=str(shots / "inch-pound.png"))
         g = generation()
         page.locator(".design-review button", has_text="SI").click()
@@ -223,7 +234,8 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         server.stop()  # the server gone (a dropped tunnel): a change can no longer be computed
         row(page, "motor.peak_torque").locator("input[type=text]").fill("17")
         row(page, "motor.peak_torque").locator("input[type=text]").press("Enter")
-        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'lost'", timeout=30_000)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'lost'",
+                               timeout=30_000)
         assert "Connection to the server lost" in page.inner_text(".design-review .dr-state")
         assert "dr-lost" in page.get_attribute(".design-review", "class")
         page.screenshot(path=str(shots / "connection-lost.png"))
@@ -247,7 +259,8 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
         wait_for_results(page, g)
         page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
         shown = page.inner_text(RESULTS_SELECTOR)
-        assert shown.startswith("FAIL") and "NPT025-10: T2max ≤ T2B: required 100.9 N·m > rated 90 N·m" in shown.replace("\n", "")
+        assert shown.startswith("FAIL")
+        assert "NPT025-10: T2max ≤ T2B: required 100.9 N·m > rated 90 N·m" in shown.replace("\n", "")
         choice = row(page, "gearbox.part").locator("select")
         assert choice.evaluate("s => s.options[s.selectedIndex].text") == "NPT025-10"
         page.screenshot(path=str(shots / "forced.png"))
@@ -315,19 +328,23 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
         page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('kept variant 2')")
         variants = page.inner_text(".design-review .dr-variants")
         assert "2: axis.toml with dwell 1 s added as entry 3" in variants and "20 %" in variants
-        page.wait_for_function("() => decodeURIComponent(location.hash).includes('inch-pound') && decodeURIComponent(location.hash).includes('variants')")
+        page.wait_for_function("() => decodeURIComponent(location.hash).includes('inch-pound')"
+                               " && decodeURIComponent(location.hash).includes('variants')")
         address = page.url
         assert '"edits"' in page.evaluate("decodeURIComponent(location.hash)")
         page.goto("about:blank")
         page.goto(address)
-        page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')?.dataset.edits?.includes('dwell')"
-                               " && document.querySelector('.design-review .dr[data-generation]')?.dataset.units === 'inch-pound'",
-                               timeout=60_000)
+        page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')"
+                               "?.dataset.edits?.includes('dwell')"
+                               " && document.querySelector('.design-review .dr[data-generation]')"
+                               "?.dataset.units === 'inch-pound'", timeout=60_000)
         page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
         assert page.inner_text(RESULTS_SELECTOR) == shown
         page.wait_for_selector(".design-review .dr-variants", timeout=30_000)
         assert page.inner_text(".design-review .dr-variants") == variants  # the variants too, from the address
         page.locator(".design-review button", has_text="Save as case file").click()
-        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('saved as axis-variant-1.toml')")
+        page.wait_for_function("() => document.querySelector('.design-review').innerText"
+                               ".includes('saved as axis-variant-1.toml')")
         text = (tmp_path / "axis-variant-1.toml").read_text()
-        assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3\n") and text.count("\n[[move]]\n") == 3
+        assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3\n")
+        assert text.count("\n[[move]]\n") == 3
