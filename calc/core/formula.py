@@ -12,6 +12,9 @@ expression over symbols declared by name in :mod:`calc.core.glossary`. From that
 * its dimensional check (:meth:`Formula.check_dimensions`), run over every formula by the tests;
 * its display with substituted values (:meth:`Formula.step`), ``symbol = expression = numbers =
   result``, printed from the expression tree, never from source text.
+* its source (:attr:`Formula.source`, :mod:`calc.core.citation`): the documents cited, the places in
+  them, the readings taken and the validity, from which its reference sentence is rendered
+  (:attr:`Formula.reference`, what the docstring and the calc report print).
 
 Sums over the segments of a load profile are written with :func:`segment_sum` (Σ over k); the
 numeric form sums over the last axis, so a batch of profiles evaluates at once.
@@ -32,6 +35,7 @@ from typing import Callable
 
 import numpy as np
 
+from .citation import Source
 from .errors import CalcError
 from .glossary import Symbol, symbol
 from .segment_sum import sum_last_axis
@@ -102,15 +106,24 @@ class Formula:
     build : callable
         ``build(sp, *symbols)`` returns the right-hand side as a sympy expression; ``sp`` is the
         sympy module.
-    reference : str
-        Where the formula comes from (source section, errata entry).
+    source : Source
+        Where the formula comes from: the documents cited, the places, the readings taken and the
+        validity (:mod:`calc.core.citation`).
+
+    Raises
+    ------
+    CalcError
+        When ``source`` is not a :class:`calc.core.citation.Source`.
     """
 
-    def __init__(self, result: str | Symbol, inputs: tuple[str | Symbol, ...], build: Callable, reference: str):
+    def __init__(self, result: str | Symbol, inputs: tuple[str | Symbol, ...], build: Callable, source: Source):
         self.result = _declared(result)
+        if not isinstance(source, Source):
+            raise CalcError(f"{self.result.name}: expected the formula's source as a Source of citations, found "
+                            f"{type(source).__name__} {source!r}")
         self.inputs = tuple(_declared(s) for s in inputs)
         self._build = build
-        self.reference = reference
+        self.source = source
         REGISTRY.append(self)
 
     def __repr__(self):
@@ -119,6 +132,11 @@ class Formula:
     @property
     def name(self) -> str:
         return self.result.name
+
+    @property
+    def reference(self) -> str:
+        """Where the formula comes from, as one sentence (its source's text): what the outputs print."""
+        return self.source.text
 
     @functools.cached_property
     def _symbols(self):

@@ -241,6 +241,7 @@ SYMBOLS: dict[str, Symbol] = declared_once((
     _symbol("C_tube", "stiffness_length", "N*m**2/rad", "tube stiffness per unit length"),
     # Stiffness, backlash and lost motion, accuracy (source; errata E11 to E15).
     _symbol("T", "torque", "N*m", "torque applied at the output, or through a member or coupling (its magnitude)"),
+    _symbol("T_N", "torque", "N*m", "nominal torque of the gearbox, the measure of the loop's bands and the 3 % rule"),
     _symbol("C", "stiffness", "N*m/arcmin", "torsional stiffness at the output"),
     _symbol("C_t", "stiffness", "N*m/arcmin", "torsional stiffness, slope of the loop from 50 % to 100 % of T_N"),
     _symbol("C_k", "stiffness", "N*m/arcmin", "stiffness of component k, at the output", per_segment=True),

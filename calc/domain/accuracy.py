@@ -29,10 +29,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.checks import BOUNDARY_RTOL
+from ..core.citation import Band, Source, Validity
 from ..data.catalog import Column
 from ..core.errors import CalcError
 from ..core.formula import Formula
 from ..data.measurement import check_pair, read_measurement
+from .documents import ERRATA, MECHANICS, SOURCE
 from .hysteresis import LOW_TORQUE_SHARE
 from .stiffness import Chain, Component, angle_at_output, series_stiffness, stiffness_at_output  # noqa: F401 (Component: the doctests)
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
@@ -41,31 +43,37 @@ lost_motion = Formula(
     "phi_LM",
     ("j_t", "T", "C"),
     lambda sp, j, T, C: j + sp.Abs(T) / C,
-    "source, Lost Motion: Total Lost Motion at applied torque = Backlash + Applied Torque / Torsional Stiffness; "
-    "errata E12 (the text's formula: the twist under T added to the backlash)",
+    Source(SOURCE.at("Lost Motion", says="Total Lost Motion at applied torque = Backlash + Applied Torque / Torsional "
+                                         "Stiffness"),
+           ERRATA.at("E12", note="the text's formula: the twist under T added to the backlash")),
 )
 
 positioning_accuracy_low = Formula(
     "Delta_phi_P_low",
     ("phi_TA", "j_t"),
     lambda sp, ta, j: ta + j,
-    "source, Positioning Accuracy, torque <= 3 % of nominal torque: angular transmission accuracy + backlash; errata "
-    "E13",
+    Source(SOURCE.at("Positioning Accuracy", says="angular transmission accuracy + backlash",
+                     validity=Validity("torque <= 3 % of nominal torque", Band("T", upto=(LOW_TORQUE_SHARE, "T_N")),
+                                       stands="heading")),
+           ERRATA.at("E13")),
 )
 
 positioning_accuracy_high = Formula(
     "Delta_phi_P_high",
     ("phi_TA", "T", "C"),
     lambda sp, ta, T, C: ta + sp.Abs(T) / C,
-    "source, Positioning Accuracy, torque > 3 % of nominal torque: angular transmission accuracy + applied torque / "
-    "stiffness; errata E13",
+    Source(SOURCE.at("Positioning Accuracy", says="angular transmission accuracy + applied torque / stiffness",
+                     validity=Validity("torque > 3 % of nominal torque", Band("T", above=(LOW_TORQUE_SHARE, "T_N")),
+                                       stands="heading")),
+           ERRATA.at("E13")),
 )
 
 positioning_error = Formula(
     "Delta_phi",
     ("phi_actual", "phi_target"),
     lambda sp, actual, target: actual - target,
-    "source, Positioning Accuracy: the difference between the target position and the actual position",
+    Source(SOURCE.at("Positioning Accuracy",
+                     says="the difference between the target position and the actual position")),
 )
 
 
@@ -73,14 +81,15 @@ arc_length = Formula(
     "s",
     ("r", "phi", "rad"),
     lambda sp, r, phi, rad: r * phi / rad,
-    "geometry of the circle: an angle φ at the output moves a point at radius r by the arc s = r · φ",
+    Source(MECHANICS.at(label="geometry of the circle",
+                        says="an angle φ at the output moves a point at radius r by the arc s = r · φ")),
 )
 
 angle_of_arc = Formula(
     "phi_s",
     ("s", "r", "rad"),
     lambda sp, s, r, rad: s / r * rad,
-    "geometry of the circle: an arc s at radius r is the angle φ = s / r",
+    Source(MECHANICS.at(label="geometry of the circle", says="an arc s at radius r is the angle φ = s / r")),
 )
 
 

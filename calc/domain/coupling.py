@@ -39,6 +39,8 @@ from ..core.formula import Formula
 from ..core.glossary import symbol
 from ..core import selection
 from ..core.checks import CheckArray, rank, within_rating
+from ..core.citation import Source, Validity
+from .documents import ERRATA, KTR_ROTEX, MAYR_ROBA_ES, RW_EK, RW_ZA, SOURCE
 from .torsion import MassSpringChain, TrainMember, lumped
 from ..core.selection import Selection
 from ..core.units import Q_, Value, as_kind, fmt, sig
@@ -121,21 +123,24 @@ M_N = Formula(
     lambda sp, M_a, J_load, J_drive, S_A: sp.Mul(  # in the source's order
         M_a, J_load / sp.Add(J_load, J_drive, evaluate=False), S_A, evaluate=False
     ),
-    "source, Couplings, Sizing 1; errata E8 (the factor 2.5 is the load factor S_A, default 2.5)",
+    Source(SOURCE.at("Couplings, Sizing 1"),
+           ERRATA.at("E8", note="the factor 2.5 is the load factor S_A, default 2.5")),
 )
 
 J_load_at_input = Formula(
     "J_load",
     ("J_L", "i", "J_1"),
     lambda sp, J_L, i, J_1: sp.Add(J_L / i**2, J_1, evaluate=False),  # in the order of E8
-    "errata E8 (a coupling between motor and gearbox sees the load reflected to the input plus the gearbox's J_1)",
+    Source(ERRATA.at("E8", note="a coupling between motor and gearbox sees the load reflected to the input plus the "
+                                "gearbox's J_1")),
 )
 
 M_Nt = Formula(
     "M_Nt",
     ("M_N", "K_T"),
     lambda sp, M_N, K_T: M_N * K_T,
-    "source, Couplings, Sizing 3 (multiply M_N by the temperature factor); errata E9 (elastomer couplings only)",
+    Source(SOURCE.at("Couplings, Sizing 3", note="multiply M_N by the temperature factor"),
+           ERRATA.at("E9", validity=Validity("elastomer couplings only"))),
 )
 
 
@@ -143,12 +148,12 @@ M_Smax = Formula(
     "M_Smax",
     ("T_S", "S_z", "K_T"),
     lambda sp, T_S, S_z, K_T: sp.Mul(T_S, S_z, K_T, evaluate=False),
-    "KTR ROTEX coupling selection, T_Kmax >= T_S · S_t · S_z (the catalogue page itself was not reached); R+W sizing "
-    "of "
-    "elastomer couplings EK (T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature "
-    "factor S_υ); "
-    "Mayr ROBA-ES B.9.6.EN p. 26 (S_z, S_δ); T_S read as the source's M_N (a drive-side shock: M_a · J_load / (J_load "
-    "+ J_drive) · S_A)",
+    Source(KTR_ROTEX.at(says="T_Kmax >= T_S · S_t · S_z", note="the catalogue page itself was not reached"),
+           RW_EK.at(note="T_Kmax dictated by the peak torque T_S, with the start factor S_Z and the temperature factor "
+                         "S_υ"),
+           MAYR_ROBA_ES.at("p. 26", note="S_z, S_δ"),
+           SOURCE.at("Couplings, Sizing 1", label="T_S read as the source's M_N",
+                     note="a drive-side shock: M_a · J_load / (J_load + J_drive) · S_A")),
 )
 
 
@@ -157,7 +162,7 @@ def _with_half_coupling(result: str, side: str) -> Formula:
         result,
         (side, "J_K"),
         lambda sp, J, J_K: J + J_K / 2,
-        "source, Couplings (J_mot, J_moch: inertia + 1/2 coupling inertia); errata E7",
+        Source(SOURCE.at("Couplings", note="J_mot, J_moch: inertia + 1/2 coupling inertia"), ERRATA.at("E7")),
     )
 
 
@@ -168,35 +173,36 @@ f_e = Formula(
     "f_e",
     ("C_T", "rad", "J_A", "J_L_coupling"),
     lambda sp, C_T, rad, J_A, J_L: sp.sqrt(C_T * rad * (J_A + J_L) / (J_A * J_L)) / (2 * sp.pi),
-    "source, Couplings, Sizing 2 (garbled there); errata E7 (two-mass system, coupling as the spring)",
+    Source(SOURCE.at("Couplings, Sizing 2", note="garbled there"),
+           ERRATA.at("E7", validity=Validity("two-mass system, coupling as the spring"))),
 )
 
 f_e_min = Formula(
     "f_e_min",
     ("f_er",),
     lambda sp, f_er: 2 * f_er,
-    "source, Couplings (f_coupling >= 2 f_drive); errata E7",
+    Source(SOURCE.at("Couplings", note="f_coupling >= 2 f_drive"), ERRATA.at("E7")),
 )
 
 Z = Formula(
     "Z",
     ("A", "H"),
     lambda sp, A, H: A - 2 * H,
-    "R+W ZA line shaft catalog: tube length Z = A - 2 H",
+    Source(RW_ZA.at(says="tube length Z = A - 2 H")),
 )
 
 C_T_line = Formula(
     "C_T",
     ("C_B", "Z", "C_tube"),
     lambda sp, C_B, Z, C_tube: 1 / (1 / C_B + Z / C_tube),
-    "R+W ZA line shaft catalog: the bellows and the tube of length Z in series",
+    Source(RW_ZA.at(says="the bellows and the tube of length Z in series")),
 )
 
 phi = Formula(
     symbol("phi").shown_in("deg"),
     ("T", "C_T"),
     lambda sp, T, C_T: T / C_T,
-    "R+W ZA line shaft catalog, worked example (angle of twist under torque)",
+    Source(RW_ZA.at("worked example", note="angle of twist under torque")),
 )
 
 

@@ -33,6 +33,8 @@ from ..core.errors import CalcError
 from ..core.formula import Formula
 from ..core import selection
 from ..core.checks import CheckArray, rank
+from ..core.citation import Source
+from .documents import CASE_FORMAT, ERRATA, SOURCE, WITTENSTEIN
 from .profile import Profile, T_2m, Z_h, duty, n_2m
 from .torsion import CouplingSpan, highest_first_mode
 from ..core.selection import Selection
@@ -114,29 +116,35 @@ n_1 = Formula(
     "n_1",
     ("n_2", "i"),
     lambda sp, n_2, i: n_2 * i,
-    "source, S1 criterion 1 (errata E1: n_2m · i <= n_1N) and S5 criterion 1 (errata E5: n_2max · i <= n_1max)",
+    Source(SOURCE.at("S1 criterion 1", note=ERRATA.at("E1", says="n_2m · i <= n_1N")),
+           SOURCE.at("S5 criterion 1", label="S5 criterion 1", note=ERRATA.at("E5", says="n_2max · i <= n_1max")),
+           joined=" and "),
 )
 
 T_2max = Formula(
     "T_2max",
     ("T_1B", "i", "f_s", "eta"),
     lambda sp, T_1B, i, f_s, eta: sp.Mul(T_1B, i, f_s, eta, evaluate=False),  # in the source's order
-    "source, S5 calculation 2; read as written: η credited, as for a peak the motor drives through the gearbox "
-    "(a braking peak, the load driving back, reaches the output as T_1B · i / η, higher by 1/η²)",
+    Source(SOURCE.at("S5 calculation 2"),
+           SOURCE.at("S5 calculation 2", label="read as written",
+                     says="η credited, as for a peak the motor drives through the gearbox",
+                     note="a braking peak, the load driving back, reaches the output as T_1B · i / η, higher by 1/η²")),
 )
 
 T_2stop = Formula(
     "T_2stop",
     ("T_1B", "i"),
     lambda sp, T_1B, i: T_1B * i,
-    "case format, Emergency stop: the motor's peak through the gearbox, no credit for efficiency (η = 1)",
+    Source(CASE_FORMAT.at("Emergency stop", says="the motor's peak through the gearbox, no credit for efficiency",
+                          note="η = 1")),
 )
 
 inertia_ratio = Formula(
     "lambda",
     ("J_1", "J_L", "i", "J_motor"),
     lambda sp, J_1, J_L, i, J_motor: (J_1 + J_L / i**2) / J_motor,
-    "source, S5 criterion 3 (J_motor ≈ J_1 + J_L / i²); errata E6 (reported as a ratio, 1 is ideal)",
+    Source(SOURCE.at("S5 criterion 3", note="J_motor ≈ J_1 + J_L / i²"),
+           ERRATA.at("E6", note="reported as a ratio, 1 is ideal")),
 )
 
 #: E6: servo practice keeps the load to motor inertia ratio λ below roughly 5 to 10; the upper end is
@@ -148,8 +156,9 @@ M_2k = Formula(
     "M_2k",
     ("F_2a", "y_2", "F_2r", "x_2", "z_2"),
     lambda sp, F_2a, y_2, F_2r, x_2, z_2: sp.Add(F_2a * y_2, F_2r * sp.Add(x_2, z_2, evaluate=False), evaluate=False),
-    "WITTENSTEIN alpha catalogues, output bearing: M_2k = F_2a · y_2 + F_2r · (x_2 + z_2), read as documented in "
-    "calc.domain.gearbox.bearing_checks (z_2 is not in the published data reached; 0 where the catalog gives none)",
+    Source(WITTENSTEIN.at("output bearing", says="M_2k = F_2a · y_2 + F_2r · (x_2 + z_2), read as documented in "
+                                                 "calc.domain.gearbox.bearing_checks",
+                          note="z_2 is not in the published data reached; 0 where the catalog gives none")),
 )
 
 

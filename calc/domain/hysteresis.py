@@ -34,10 +34,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..data.catalog import Column, load_catalog, resolve
+from ..core.citation import Band, Source, Validity
 from ..core.errors import CalcError
 from ..core.formula import Formula
 from ..data.measurement import check_pair, read_measurement, travel_direction, write_measurement
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
+from .documents import ERRATA, SOURCE
 
 #: Stiffness band, as shares of the nominal torque (source; E12).
 STIFFNESS_BAND = (0.5, 1.0)
@@ -58,21 +60,30 @@ stiffness_from_slope = Formula(
     "C_t",
     ("Delta_T", "Delta_phi_twist"),
     lambda sp, dT, dphi: dT / dphi,
-    "source, Torsional Stiffness: applied torque / deflection at 50 % to 100 % of nominal torque; errata E12",
+    Source(SOURCE.at("Torsional Stiffness", says="applied torque / deflection",
+                     validity=Validity("at 50 % to 100 % of nominal torque", stands="tail",
+                                       band=Band("T", above=(STIFFNESS_BAND[0], "T_N"),
+                                                 upto=(STIFFNESS_BAND[1], "T_N")))),
+           ERRATA.at("E12")),
 )
 
 backlash_from_loop = Formula(
     "j_t",
     ("phi_max_0", "phi_min_0"),
     lambda sp, hi, lo: hi - lo,
-    "source, Backlash: maximum deflection - minimum deflection at 0 Nm of torque; errata E12",
+    Source(SOURCE.at("Backlash", says="maximum deflection - minimum deflection",
+                     validity=Validity("at 0 Nm of torque", stands="tail")),
+           ERRATA.at("E12")),
 )
 
 lost_motion_from_loop = Formula(
     "phi_LM3",
     ("phi_max_3", "phi_min_3"),
     lambda sp, hi, lo: hi - lo,
-    "source, Lost Motion: maximum deflection - minimum deflection at ±3 % of nominal torque; errata E12",
+    Source(SOURCE.at("Lost Motion", says="maximum deflection - minimum deflection",
+                     validity=Validity("at ±3 % of nominal torque", stands="tail",
+                                       band=Band("T", upto=(LOW_TORQUE_SHARE, "T_N")))),
+           ERRATA.at("E12")),
 )
 
 

@@ -17,12 +17,23 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..core.citation import Source
 from ..core.formula import Formula
+from .documents import DUBBEL
 
 #: The shapes a body may have.
 SHAPES = ("cylinder", "hollow-cylinder", "plate")
 
-REFERENCE = "rigid-body mechanics (Dubbel, Massenträgheitsmomente)"
+
+
+def _handbook(says: str = "") -> Source:
+    """The standard results as Dubbel gives them, with what a formula takes from them."""
+    return Source(DUBBEL.at("Massenträgheitsmomente", says=says,
+                            label="rigid-body mechanics (Dubbel, Massenträgheitsmomente)"))
+
+
+#: The source of the shapes' mass and inertia.
+REFERENCE = _handbook()
 
 m_cylinder = Formula("m_cylinder", ("rho", "D", "L"), lambda sp, rho, D, L: rho * sp.pi * D**2 * L / 4, REFERENCE)
 m_hollow = Formula("m_hollow", ("rho", "D", "d_i", "L"),
@@ -32,7 +43,7 @@ J_cylinder = Formula("J_cylinder", ("m", "D"), lambda sp, m, D: m * D**2 / 8, RE
 J_hollow = Formula("J_hollow", ("m", "D", "d_i"), lambda sp, m, D, d_i: m * (D**2 + d_i**2) / 8, REFERENCE)
 J_plate = Formula("J_plate", ("m", "a", "b"), lambda sp, m, a, b: m * (a**2 + b**2) / 12, REFERENCE)
 J_steiner = Formula("J_body", ("J_own", "m", "e"), lambda sp, J_own, m, e: J_own + m * e**2,
-                    f"{REFERENCE}: the parallel-axis theorem")
+                    _handbook("the parallel-axis theorem"))
 
 #: Per shape: its mass formula and its inertia formula, and the dimensions each takes.
 FORMULAS = {

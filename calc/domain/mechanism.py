@@ -35,48 +35,54 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.citation import Source, Validity
 from ..core.formula import Formula
 from ..core.units import Q_
+from .documents import ERRATA, MECHANICS, motion_reading
 
 #: The mechanism types a case may name.
 TYPES = ("rotary", "ball-screw", "rack-pinion", "belt")
 
-READING = "a reading (spec, Motion and mechanism)"
+#: The reading with the angle convention of E15.
+_ANGLES = Source(motion_reading(), ERRATA.at("E15", label="E15"))
 
-r_lead = Formula("r_lead", ("p",), lambda sp, p: p / (2 * sp.pi), f"{READING}: a lead p per revolution of 2π rad")
-r_diameter = Formula("r_diameter", ("d",), lambda sp, d: d / 2, f"{READING}: the pitch circle's radius")
+r_lead = Formula("r_lead", ("p",), lambda sp, p: p / (2 * sp.pi),
+                 Source(motion_reading("a lead p per revolution of 2π rad")))
+r_diameter = Formula("r_diameter", ("d",), lambda sp, d: d / 2, Source(motion_reading("the pitch circle's radius")))
 
 phi_2 = Formula(
     "phi_2", ("s", "rad", "r"),
-    lambda sp, s, rad, r: s * rad / r, f"{READING}; E15",
+    lambda sp, s, rad, r: s * rad / r, _ANGLES,
 )
 a_load = Formula(
     "a_load", ("alpha_2", "r", "rad"),
-    lambda sp, alpha, r, rad: alpha * r / rad, f"{READING}; E15",
+    lambda sp, alpha, r, rad: alpha * r / rad, _ANGLES,
 )
 F = Formula(
     "F", ("m", "m_c", "a_load", "g", "theta", "s_v", "mu", "F_p"),
     lambda sp, m, m_c, a, g, theta, s_v, mu, F_p: (
         (m + m_c) * a + (m * sp.sin(theta) - m_c) * g + s_v * (mu * m * g * sp.cos(theta) + F_p)
     ),
-    f"{READING}: inertia, gravity on the incline, a counterweight, friction of the guide and the process force",
+    Source(motion_reading("inertia, gravity on the incline, a counterweight, friction of the guide and the process "
+                          "force")),
 )
 T_2_linear = Formula(
     "T_2_linear",
     ("F", "r", "eta", "d_P", "J_M", "alpha_2", "rad", "s_v", "T_d"),
     lambda sp, F, r, eta, d_P, J_M, alpha, rad, s_v, T_d: F * r * eta ** (-d_P) + J_M * alpha / rad + s_v * T_d,
-    f"{READING}: the efficiency divides while driving, multiplies while driven back; the drag outside it; E15",
+    Source(motion_reading("the efficiency divides while driving, multiplies while driven back; the drag outside it"),
+           ERRATA.at("E15", label="E15")),
 )
 J_L_linear = Formula(
     "J_L_linear",
     ("m", "m_c", "r", "J_M"), lambda sp, m, m_c, r, J_M: (m + m_c) * r**2 + J_M,
-    f"{READING}: the moved masses (load and counterweight) reflected through r, no efficiency",
+    Source(motion_reading("the moved masses (load and counterweight) reflected through r, no efficiency")),
 )
 T_2_rotary = Formula(
     "T_2_rotary",
     ("J_L", "alpha_2", "rad", "s_v", "T_f", "T_p"),
     lambda sp, J_L, alpha, rad, s_v, T_f, T_p: J_L * alpha / rad + s_v * (T_f + T_p),
-    f"{READING}; E15 (J·α = T·rad)",
+    Source(motion_reading(), ERRATA.at("E15", label="E15", note="J·α = T·rad")),
 )
 
 
@@ -295,25 +301,29 @@ class Mechanism:
 
 m_equivalent = Formula(
     "m_equivalent", ("J_L", "r"),
-    lambda sp, J_L, r: J_L / r**2, "the inverse of J_L = m·r² (no counterweight, no own inertia)",
+    lambda sp, J_L, r: J_L / r**2,
+    Source(MECHANICS.at(label="", says="the inverse of J_L = m·r²",
+                        validity=Validity("no counterweight, no own inertia"))),
 )
 T_d_equivalent = Formula(
     "T_d_equivalent", ("T_f", "T_p"),
-    lambda sp, T_f, T_p: T_f + T_p, "the table's torques against the motion, at the same shaft",
+    lambda sp, T_f, T_p: T_f + T_p,
+    Source(MECHANICS.at(label="", says="the table's torques against the motion, at the same shaft")),
 )
 J_L_equivalent = Formula(
     "J_L_equivalent", ("m", "m_c", "r", "eta", "J_M"),
     lambda sp, m, m_c, r, eta, J_M: (m + m_c) * r**2 / eta + J_M,
-    "T_2 while the drive accelerates the load: (m + m_c)·a·r / η + J_M·α_2",
+    Source(MECHANICS.at(label="", says="T_2 while the drive accelerates the load: (m + m_c)·a·r / η + J_M·α_2")),
 )
 T_f_equivalent = Formula(
     "T_f_equivalent", ("mu", "m", "g", "theta", "r", "eta", "T_d"),
     lambda sp, mu, m, g, theta, r, eta, T_d: mu * m * g * sp.cos(theta) * r / eta + T_d,
-    "the guide's friction and the drag while the drive drives",
+    Source(MECHANICS.at(label="", says="the guide's friction and the drag while the drive drives")),
 )
 T_p_equivalent = Formula(
     "T_p_equivalent", ("F_p", "r", "eta"),
-    lambda sp, F_p, r, eta: F_p * r / eta, "the process force while the drive drives",
+    lambda sp, F_p, r, eta: F_p * r / eta,
+    Source(MECHANICS.at(label="", says="the process force while the drive drives")),
 )
 
 

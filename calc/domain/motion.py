@@ -29,7 +29,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .cycle import ACCEL, CONST, DECEL, PAUSE, PHASES  # noqa: F401 (PHASES: the doctests)
+from ..core.citation import Source
 from ..core.formula import Formula
+from .documents import motion_reading
 
 #: Samples of one cycle by default; each piece of the law gets at least :data:`MIN_PER_PIECE`.
 SAMPLES = 20_000
@@ -40,16 +42,14 @@ omega_2max = Formula(
     "omega_2max",
     ("phi_2", "t_m", "t_a", "t_d"),
     lambda sp, phi, t, ta, td: phi / (t - (ta + td) / 2),
-    "a reading (spec, Motion and mechanism): the distance is the area of the trapezoid of speed; an S-curve's "
-    "symmetric ramps keep it",
+    Source(motion_reading("the distance is the area of the trapezoid of speed; an S-curve's symmetric ramps keep it")),
 )
 
 alpha_2max = Formula(
     "alpha_2max",
     ("omega_2max", "t_r", "t_j"),
     lambda sp, w, tr, tj: w / (tr - tj),
-    "a reading (spec, Motion and mechanism): a ramp of t_r with jerk ramps of t_j at both ends gains ω at α·(t_r − "
-    "t_j)",
+    Source(motion_reading("a ramp of t_r with jerk ramps of t_j at both ends gains ω at α·(t_r − t_j)")),
 )
 
 

@@ -29,35 +29,38 @@ import numpy as np
 
 from ..core.checks import CheckArray
 from .cycle import SampledCycle
+from ..core.citation import Source
 from ..core.formula import Formula, segment_sum
 from ..core.units import Q_, as_kind
+from .documents import CASE_FORMAT, ERRATA, MECHANICS
 
 alpha_1 = Formula(
     "alpha_1",
     ("alpha_2", "i"),
     lambda sp, alpha_2, i: i * alpha_2,
-    "case format, The motor's side (α_1 = i · α_2)",
+    Source(CASE_FORMAT.at("The motor's side", note="α_1 = i · α_2")),
 )
 
 T_1_drive = Formula(
     "T_1_drive",
     ("J_motor", "J_1", "alpha_1", "T_2", "i", "eta"),
     lambda sp, J_motor, J_1, alpha_1, T_2, i, eta: (J_motor + J_1) * alpha_1 + T_2 / (i * eta),
-    "case format, The motor's side: driving, the losses of the gearbox on the motor",
+    Source(CASE_FORMAT.at("The motor's side", says="driving, the losses of the gearbox on the motor")),
 )
 
 T_1_back = Formula(
     "T_1_back",
     ("J_motor", "J_1", "alpha_1", "T_2", "i", "eta"),
     lambda sp, J_motor, J_1, alpha_1, T_2, i, eta: (J_motor + J_1) * alpha_1 + T_2 * eta / i,
-    "case format, The motor's side: driven back (T_2 · ω_2 < 0), the losses of the gearbox on the load",
+    Source(CASE_FORMAT.at("The motor's side",
+                          says="driven back (T_2 · ω_2 < 0), the losses of the gearbox on the load")),
 )
 
 T_1rms = Formula(
     "T_1rms",
     ("T_1k", "t_k"),
     lambda sp, T, t: sp.sqrt(segment_sum(T**2 * t) / segment_sum(t)),
-    "case format, The motor's side (RMS over the whole cycle; a pause counts with its holding torque)",
+    Source(CASE_FORMAT.at("The motor's side", note="RMS over the whole cycle; a pause counts with its holding torque")),
 )
 
 
@@ -65,14 +68,14 @@ P_1 = Formula(
     "P_1",
     ("T_1", "omega_1", "rad"),
     lambda sp, T, w, rad: T * w / rad,
-    "mechanics: power = torque · angular speed (E15)",
+    Source(MECHANICS.at(says="power = torque · angular speed", note=ERRATA.at("E15", label="E15"))),
 )
 
 W_regen = Formula(
     "W_regen",
     ("P_back_k", "t_k"),
     lambda sp, P, t: segment_sum(P * t),
-    "mechanics: the work of the braking samples, before the motor's and the drive's losses",
+    Source(MECHANICS.at(says="the work of the braking samples, before the motor's and the drive's losses")),
 )
 
 

@@ -47,7 +47,9 @@ import numpy as np
 from ..data.catalog import _FLOAT, _HEADER, Catalog, Column, Rule, Schema, _header_unit, no_less, note_file_read
 from ..core.errors import CalcError
 from ..core.checks import CheckArray
+from ..core.citation import Source
 from ..core.formula import Formula
+from .documents import CASE_FORMAT
 from .gearbox import INERTIA_RATIO_LIMIT
 from .profile import n_2m
 from ..core.selection import Candidate, Selection
@@ -97,11 +99,15 @@ SCHEMA = Schema(
 #: The columns the voltage limit needs besides the case's DC-link voltage.
 ELECTRICAL = ("k_T", "k_E", "R_ph", "L_ph", "poles")
 
+#: The case format's section that states the readings of a catalog motor's characteristic.
+RATINGS_SECTION = "The motor chosen from a catalog"
+
 T_peak_line = Formula(
     "T_peak_line",
     ("M_max", "M_N_motor", "n", "n_N", "n_max"),
     lambda sp, M_max, M_N, n, n_N, n_max: M_max - (M_max - M_N) * (n - n_N) / (n_max - n_N),
-    "a reading (motor ratings): M_max up to n_N, then straight down to M_N at n_max",
+    Source(CASE_FORMAT.at(RATINGS_SECTION, label="a reading (motor ratings)",
+                          says="M_max up to n_N, then straight down to M_N at n_max")),
 )
 
 T_V = Formula(
@@ -112,7 +118,8 @@ T_V = Formula(
                 - (poles / 2 * n * L / rad) ** 2 * (k_E * n / sp.sqrt(3)) ** 2)
         - R * k_E * n / sp.sqrt(3)
     ) / (R**2 + (poles / 2 * n * L / rad) ** 2),
-    "a reading (motor voltage limit): (R·I + E)² + (X·I)² = (U_DC/√6)², E = k_E·n/√3, X = p·ω·L, I = T/k_T",
+    Source(CASE_FORMAT.at(RATINGS_SECTION, label="a reading (motor voltage limit)",
+                          says="(R·I + E)² + (X·I)² = (U_DC/√6)², E = k_E·n/√3, X = p·ω·L, I = T/k_T")),
 )
 
 

@@ -14,8 +14,10 @@ import numpy as np
 from ..core.errors import CalcError
 from ..core.checks import BOUNDARY_RTOL
 from .cycle import PAUSE, PHASES
+from ..core.citation import Source
 from ..core.formula import Formula, segment_sum
 from ..core.units import Q_, as_kind
+from .documents import ERRATA, SOURCE
 
 #: E3: S5 needs ED below this and an on-time below :data:`S5_MAX_ON_TIME`.
 S5_MAX_ED = Q_(60, "percent")
@@ -25,14 +27,14 @@ ED = Formula(
     "ED",
     ("t_on", "t_cycle"),
     lambda sp, t_on, t_cycle: t_on / t_cycle,
-    "source, Determination of the Duty Cycle; errata E3",
+    Source(SOURCE.at("Determination of the Duty Cycle"), ERRATA.at("E3")),
 )
 
 n_2m = Formula(
     "n_2m",
     ("n_2k", "t_k"),
     lambda sp, n, t: segment_sum(sp.Mul(abs(n), t, evaluate=False)) / segment_sum(t),  # the source's order
-    "source, S1 calculation 1; errata E2 (any number of segments, moving time only)",
+    Source(SOURCE.at("S1 calculation 1"), ERRATA.at("E2", note="any number of segments, moving time only")),
 )
 
 T_2m = Formula(
@@ -41,18 +43,17 @@ T_2m = Formula(
     lambda sp, n, t, T: sp.cbrt(
         segment_sum(sp.Mul(abs(n), t, abs(T) ** 3, evaluate=False)) / segment_sum(sp.Mul(abs(n), t, evaluate=False))
     ),
-    "source, S1 calculation 2; errata E2 (speed-weighted cubic mean of magnitudes; the exponent 3 is the "
-    "rolling-bearing "
-    "life exponent of ISO 281 and the gearbox makers' convention for T_2m, not a gear fatigue exponent: gear S-N "
-    "curves are "
-    "much steeper, ISO 6336)",
+    Source(SOURCE.at("S1 calculation 2"),
+           ERRATA.at("E2", note="speed-weighted cubic mean of magnitudes; the exponent 3 is the rolling-bearing life "
+                                "exponent of ISO 281 and the gearbox makers' convention for T_2m, not a gear fatigue "
+                                "exponent: gear S-N curves are much steeper, ISO 6336")),
 )
 
 Z_h = Formula(
     "Z_h",
     ("t_cycle",),
     lambda sp, t_cycle: 1 / t_cycle,
-    "source, S5 calculation 1 (Z_h = 3600 / t_cycle with t_cycle in s)",
+    Source(SOURCE.at("S5 calculation 1", note="Z_h = 3600 / t_cycle with t_cycle in s")),
 )
 
 

@@ -37,10 +37,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.citation import Band, Source, Validity
 from ..core.errors import CalcError
 from ..core.formula import Formula, segment_sum
 from ..core.glossary import symbol
 from ..core.units import Q_, as_kind, fmt
+from .documents import ERRATA, HARMONIC_DRIVE, MECHANICS, SOURCE
 
 SIDES = ("input", "output")
 
@@ -48,46 +50,54 @@ series_stiffness = Formula(
     "C_total",
     ("C_k",),
     lambda sp, C: 1 / segment_sum(1 / C),
-    "source, Torsional Stiffness: 1/C_total = 1/C_1 + ... + 1/C_n; errata E11 (every C_k at the output)",
+    Source(SOURCE.at("Torsional Stiffness", says="1/C_total = 1/C_1 + ... + 1/C_n"),
+           ERRATA.at("E11", note="every C_k at the output")),
 )
 
 stiffness_at_output = Formula(
     "C_2",
     ("C_1", "i"),
     lambda sp, C_1, i: C_1 * i**2,
-    "errata E11: an input-side component appears at the output with stiffness C · i²",
+    Source(ERRATA.at("E11", says="an input-side component appears at the output with stiffness C · i²")),
 )
 
 angle_at_output = Formula(
     symbol("phi_2").shown_in("arcmin"),
     ("phi_1", "i"),
     lambda sp, phi_1, i: phi_1 / i,
-    "errata E11: an input-side backlash appears at the output as backlash / i",
+    Source(ERRATA.at("E11", says="an input-side backlash appears at the output as backlash / i")),
 )
 
 torque_at_output = Formula(
     "T_2",
     ("T_1", "i"),
     lambda sp, T_1, i: T_1 * i,
-    "torque through an ideal gearbox (losses left out: a rating at the input limits the output to T_1 · i)",
+    Source(MECHANICS.at(label="", says="torque through an ideal gearbox",
+                        note="losses left out: a rating at the input limits the output to T_1 · i")),
 )
 
 
-_CURVE_REFERENCE = ("Harmonic Drive engineering data (HFUC, CSF, CSG): torsional stiffness as three slopes K_1, K_2, "
-                    "K_3 with limit torques T_1, T_2")
+
+
+def _curve(validity: str, band: Band) -> Source:
+    """The makers' curve of three slopes, and the band of torque a slope holds over."""
+    return Source(HARMONIC_DRIVE.at(
+        says="torsional stiffness as three slopes K_1, K_2, K_3 with limit torques T_1, T_2",
+        validity=Validity(validity, band)))
+
 
 twist_low = Formula(
     "phi_c1",
     ("T", "K_1"),
     lambda sp, T, K_1: T / K_1,
-    _CURVE_REFERENCE + " (T <= T_1)",
+    _curve("T <= T_1", Band("T", upto=(1, "T_L1"))),
 )
 
 twist_middle = Formula(
     "phi_c2",
     ("T", "T_L1", "K_1", "K_2"),
     lambda sp, T, T_L1, K_1, K_2: sp.Add(T_L1 / K_1, (T - T_L1) / K_2, evaluate=False),
-    _CURVE_REFERENCE + " (T_1 < T <= T_2)",
+    _curve("T_1 < T <= T_2", Band("T", above=(1, "T_L1"), upto=(1, "T_L2"))),
 )
 
 twist_high = Formula(
@@ -95,14 +105,14 @@ twist_high = Formula(
     ("T", "T_L1", "T_L2", "K_1", "K_2", "K_3"),
     lambda sp, T, T_L1, T_L2, K_1, K_2, K_3: sp.Add(T_L1 / K_1, (T_L2 - T_L1) / K_2, (T - T_L2) / K_3,
                                                     evaluate=False),
-    _CURVE_REFERENCE + " (T > T_2)",
+    _curve("T > T_2", Band("T", above=(1, "T_L2"))),
 )
 
 secant_stiffness = Formula(
     "C_sec",
     ("T", "phi"),
     lambda sp, T, phi: T / phi,
-    "the one slope that gives a curve's own twist at the torque: C = |T| / φ(T)",
+    Source(MECHANICS.at(label="", says="the one slope that gives a curve's own twist at the torque: C = |T| / φ(T)")),
 )
 
 

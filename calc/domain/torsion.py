@@ -32,29 +32,32 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.citation import Source
 from ..core.errors import CalcError
 from ..core.formula import Formula
 from ..core.units import as_kind, fmt, from_si, to_si  # noqa: F401 (fmt: the doctests print with it)
+from .documents import ERRATA, MECHANICS
 
 load_at_input = Formula(
     "J_L1",
     ("J_L", "i"),
     lambda sp, J_L, i: J_L / i**2,
-    "errata E8 (the load reflected to the input, J_L / i²)",
+    Source(ERRATA.at("E8", note="the load reflected to the input, J_L / i²")),
 )
 
 gearbox_at_input = Formula(
     "C_t1",
     ("C_t21", "i"),
     lambda sp, C_t21, i: C_t21 / i**2,
-    "errata E11 turned round: an output-side stiffness appears at the input as C / i²",
+    Source(ERRATA.at("E11", label="errata E11 turned round",
+                     says="an output-side stiffness appears at the input as C / i²")),
 )
 
 inertia_at_output = Formula(
     "J_out",
     ("J_in", "i"),
     lambda sp, J_in, i: J_in * i**2,
-    "errata E8 and E11: an input-side inertia appears at the output as J · i²",
+    Source(ERRATA.at(("E8", "E11"), says="an input-side inertia appears at the output as J · i²")),
 )
 
 
@@ -275,7 +278,8 @@ first_mode_of_three = Formula(
     "f_1",
     ("J_a", "J_b", "J_c", "C_ab", "C_bc", "rad"),  # masses a, b, c drive to load (J_1 is the gearbox's inertia)
     _first_mode_of_three,
-    "the eigenproblem of three masses and two springs, free at both ends, solved in closed form (calc.domain.torsion)",
+    Source(MECHANICS.at(label="", says="the eigenproblem of three masses and two springs, free at both ends, solved in "
+                                       "closed form", note="calc.domain.torsion")),
 )
 
 

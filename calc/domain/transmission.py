@@ -16,12 +16,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data.catalog import Column
+from ..core.citation import Source, Validity
 from ..core.errors import CalcError
 from ..core.formula import Formula
 from ..core.glossary import symbol
 from ..data.measurement import check_pair, read_measurement, travel_direction, write_measurement
 from .stiffness import angle_at_output
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
+from .documents import SOURCE
 
 COLUMNS = (
     Column("input", "angle", "position of the input shaft"),
@@ -38,16 +40,16 @@ transmission_error = Formula(
     "Delta_phi_2",
     ("phi_2", symbol("phi_1").shown_in("deg"), "i"),
     lambda sp, phi_2, phi_1, i: phi_2 - phi_1 / i,
-    "source, Angular Transmission Accuracy: actual output position relative to the theoretical output position "
-    "according to the ratio",
+    Source(SOURCE.at("Angular Transmission Accuracy",
+                     says="actual output position relative to the theoretical output position according to the ratio")),
 )
 
 transmission_accuracy = Formula(
     symbol("phi_TA").shown_in("arcsec"),
     ("Delta_phi_max", "Delta_phi_min"),
     lambda sp, hi, lo: hi - lo,
-    "source, Angular Transmission Accuracy: maximum position variation - minimum position variation over a full output "
-    "revolution",
+    Source(SOURCE.at("Angular Transmission Accuracy", says="maximum position variation - minimum position variation",
+                     validity=Validity("over a full output revolution", stands="tail"))),
 )
 
 

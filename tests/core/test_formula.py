@@ -8,10 +8,14 @@ import pytest
 
 import calc
 from calc import CalcError, Q_
+from calc.core.citation import Document, Source
 from calc.core.formula import REGISTRY, Formula, global_names
 from calc.core.glossary import Symbol
 from calc.domain.gearbox import T_2max
 from calc.domain.profile import T_2m
+
+#: The source of the formulas the tests make up.
+TESTS = Source(Document("tests", "the package's tests", "drivetrain-calc").at())
 
 
 def _import_all_modules():
@@ -33,7 +37,7 @@ def test_dimension_check_catches_a_lost_angle():
         Symbol("C", "C", "stiffness", "N*m/arcmin", "stiffness"),
         (Symbol("T", "T", "torque", "N*m", "torque"),),
         lambda sp, T: T,  # a torque, not a torque per angle (the trap of E15)
-        "test",
+        TESTS,
     )
     try:
         with pytest.raises(CalcError, match="expected stiffness"):
@@ -145,7 +149,7 @@ def test_a_changed_formula_is_not_evaluated_by_stale_stored_code(monkeypatch):
         Symbol("y", "y", "torque", "N*m", "result"),
         (Symbol("x", "x", "torque", "N*m", "argument"),),
         lambda sp, x: 2 * x,
-        "test",
+        TESTS,
     )
     try:
         # An entry under this formula's key, stored from another builder (x + x + x).
@@ -157,7 +161,7 @@ def test_a_changed_formula_is_not_evaluated_by_stale_stored_code(monkeypatch):
 
 def test_fingerprint_follows_the_builder_and_the_constants_it_reads():
     def formula(build):
-        f = Formula(Symbol("y", "y", "torque", "N*m", "r"), (Symbol("x", "x", "torque", "N*m", "a"),), build, "test")
+        f = Formula(Symbol("y", "y", "torque", "N*m", "r"), (Symbol("x", "x", "torque", "N*m", "a"),), build, TESTS)
         REGISTRY.remove(f)
         return f
 
@@ -202,7 +206,7 @@ def test_codegen_refuses_two_formulas_of_one_name_in_one_module():
         return 2 * T_1B
 
     build.__module__ = "calc.domain.gearbox"
-    twin = Formula(T_2max.result, (T_2max.inputs[0],), build, "test")
+    twin = Formula(T_2max.result, (T_2max.inputs[0],), build, TESTS)
     try:
         with pytest.raises(CalcError) as err:
             codegen.package_formulas()
@@ -218,7 +222,7 @@ def test_codegen_refuses_a_function_it_cannot_import():
     from calc.domain import codegen
 
     f = Formula(Symbol("y", "y", "dimensionless", "", "result"), (Symbol("x", "x", "dimensionless", "", "argument"),),
-                lambda sp, x: sp.erf(x), "test")
+                lambda sp, x: sp.erf(x), TESTS)
     REGISTRY.remove(f)
     with pytest.raises(CalcError) as err:
         codegen.module_text([f])

@@ -59,8 +59,11 @@ def test_every_symbol_is_shown_in_a_unit_of_its_kind(name):
 
 
 def test_every_declared_symbol_is_used():
-    # By a formula of the package, or by the report (the positioning accuracy of either form).
+    # By a formula of the package, by the band of a formula's validity (the nominal torque T_N), or by the
+    # report (the positioning accuracy of either form).
     used = {s.name for f in package_formulas() for s in (f.result, *f.inputs)}
+    bands = [f.source.validity.band for f in package_formulas() if f.source.validity is not None]
+    used |= {name for band in bands if band is not None for name in (band.quantity, *(end[1] for end in band.ends))}
     assert set(SYMBOLS) - used == {"Delta_phi_P"}
 
 

@@ -25,6 +25,7 @@ from calc.domain.coupling import (
     temperature_factor,
 )
 from calc.domain.fits import parse_bore
+from calc.core.citation import Document, Source
 from calc.core.formula import REGISTRY, Formula
 from calc.core.glossary import Symbol, symbol
 
@@ -177,7 +178,7 @@ def test_without_the_radian_the_angle_check_fails():
         Symbol("f", "f", "frequency", "Hz", "frequency"),
         (Symbol("C", "C", "stiffness", "N*m/rad", "stiffness"), Symbol("J", "J", "inertia", "kg*m**2", "inertia")),
         lambda sp, C, J: sp.sqrt(C / J) / (2 * sp.pi),
-        "test",
+        Source(Document("tests", "the package's tests", "drivetrain-calc").at()),
     )
     try:
         with pytest.raises(CalcError, match="expected frequency"):
