@@ -119,6 +119,33 @@ class Check:
         )
 
 
+def worst_governing(checks) -> Check | None:
+    """The worst governing check: of the governing checks made, the one with the highest
+    utilization (the first of equals). The one definition of "worst utilization" that the
+    candidates' records, the summary of cases and the comparison of designs print.
+
+    Parameters
+    ----------
+    checks : iterable of Check
+        The checks of a candidate or of a section.
+
+    Returns
+    -------
+    Check or None
+        None where no governing check has a utilization.
+
+    Examples
+    --------
+    >>> from calc.core.units import Q_
+    >>> a = Check("T_2B", "T_2max <= T_2B", Q_(5, "N*m"), Q_(10, "N*m"), "N*m", 0.5, True)
+    >>> b = Check("T_2N", "T_2m <= T_2N", Q_(8, "N*m"), Q_(10, "N*m"), "N*m", 0.8, True, governs=False)
+    >>> worst_governing([a, b]).name
+    'T_2B'
+    """
+    made = [k for k in checks if k.governs and k.utilization is not None]
+    return max(made, key=lambda k: k.utilization) if made else None
+
+
 @dataclass(frozen=True)
 class CheckArray:
     """One criterion over all candidates: required and rated values as quantity arrays, and the

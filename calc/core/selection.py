@@ -14,7 +14,7 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 
-from .checks import selected_part
+from .checks import selected_part, worst_governing
 
 
 @dataclass(kw_only=True)
@@ -63,9 +63,9 @@ class Candidate:
 
     @property
     def worst(self) -> float | None:
-        """The highest utilization of the governing checks made; None where none has one."""
-        made = [k.utilization for k in self.governing if k.utilization is not None]
-        return max(made) if made else None
+        """The worst governing utilization (:func:`calc.core.checks.worst_governing`); None where none has one."""
+        worst = worst_governing(self.checks)
+        return None if worst is None else worst.utilization
 
 
 class Selection:

@@ -15,6 +15,7 @@ import os
 import re
 from pathlib import Path
 
+from ..core.checks import worst_governing
 from ..data.catalog import display_path
 from ..sections import Verdict
 from . import RENDERERS
@@ -34,21 +35,29 @@ _LINKABLE = re.compile(r"[A-Za-z0-9._+-]+\.pdf")
 
 
 def worst_check(results) -> dict | None:
-    """The governing check with the highest utilization of the whole case (a
-    :class:`calc.sections.Results`): of the first candidate of each section that ranks candidates
-    (the chosen part, or the closest when none passes), and of each section's own checks (the
-    motor's, the accuracy against its requirements). None when no governing check has a
-    utilization.
+    """The worst governing check of the whole case (:func:`calc.core.checks.worst_governing` over
+    the governing checks of each section of a :class:`calc.sections.Results`): of the first
+    candidate of each section that ranks candidates (the chosen part, or the closest when none
+    passes), and of each section's own checks (the motor's, the accuracy against its requirements).
 
-    Returns ``{"utilization", "check", "section", "part"}``; ``check`` is the criterion as the
-    results write it (``T_2max <= T_2B``), ``part`` None for a section's own checks.
+    Parameters
+    ----------
+    results : calc.sections.Results
+        The evaluated case.
+
+    Returns
+    -------
+    dict or None
+        ``{"utilization", "check", "section", "part", "passes"}``: the utilization [1], the criterion
+        as the results write it (``T_2max <= T_2B``), the section, the part (None for a section's own
+        checks) and the check's verdict; None when no governing check has a utilization.
     """
-    worst = None
-    for g in results.governing():
-        for k in g.checks:
-            if k.utilization is not None and (worst is None or k.utilization > worst["utilization"]):
-                worst = {"utilization": k.utilization, "check": k.criterion or k.name, "section": g.section, "part": g.part}
-    return worst
+    worst = [(g, k) for g in results.governing() if (k := worst_governing(g.checks)) is not None]
+    if not worst:
+        return None
+    g, k = max(worst, key=lambda w: w[1].utilization)
+    return {"utilization": k.utilization, "check": k.criterion or k.name, "section": g.section, "part": g.part,
+            "passes": k.passes}
 
 
 def summary_row(report, pdf: Path | None) -> dict:
@@ -141,7 +150,7 @@ def shown_path(path: str, folder: Path) -> str:
 def _case_cell(row: dict, folder: Path) -> str:
     out = rf"{latex_escape(row['title'])}\newline\texttt{{\footnotesize {breakable(shown_path(row['case'], folder))}}}"
     worst = row["worst"]
-    if row["reason"] and (row["error"] or worst is None or worst["utilization"] <= 1):  # else the worst check says why
+    if row["reason"] and (row["error"] or worst is None or worst["passes"] is not False):  # else the worst check says why
         colour = "failred" if row["passes"] is False else "infogrey"
         text = row["reason"]
         if os.path.isabs(row["case"]):

@@ -107,9 +107,11 @@ def test_worst_check_takes_governing_checks_with_a_utilization():
     motor = Governing("motor", None, True, [check("rms", "rms <= rated", None)])
     accuracy = Governing("accuracy", None, True, [check("positioning_accuracy", "positioning_accuracy <= required", 0.7)])
     assert worst_check(Evaluated(gearbox, motor, accuracy)) == {
-        "utilization": 0.7, "check": "positioning_accuracy <= required", "section": "accuracy", "part": None}
+        "utilization": 0.7, "check": "positioning_accuracy <= required", "section": "accuracy", "part": None,
+        "passes": True}
     lower = Governing("accuracy", None, True, [check("positioning_accuracy", "positioning_accuracy <= required", 0.3)])
-    assert worst_check(Evaluated(gearbox, motor, lower)) == {"utilization": 0.5, "check": "T_2max <= T_2B", "section": "gearbox", "part": "A"}
+    assert worst_check(Evaluated(gearbox, motor, lower)) == {"utilization": 0.5, "check": "T_2max <= T_2B", "section": "gearbox",
+                                                             "part": "A", "passes": True}
     assert worst_check(Evaluated()) is None
     assert worst_check(Evaluated(motor)) is None
 
