@@ -78,6 +78,8 @@ class RatioSearch:
         ``λ`` of each ratio's best row (NaN where not known).
     inertia_limit : float [1]
         The highest ``λ`` the rule keeps to.
+    inertia_within : numpy.ndarray of bool
+        ``λ`` is known and within :attr:`inertia_limit` (:func:`inertia_within_limit`).
     gearbox_passes : numpy.ndarray of bool
         The best row passes.
     feasible : numpy.ndarray of bool
@@ -100,6 +102,7 @@ class RatioSearch:
     motor: list  # CheckArray over the ratios, one per motor rating given
     inertia_ratio: np.ndarray  # λ of each ratio's best row (NaN where not known)
     inertia_limit: float  # the highest λ the rule keeps to
+    inertia_within: np.ndarray  # λ known and within the limit
     gearbox_passes: np.ndarray
     feasible: np.ndarray
     utilization: np.ndarray  # highest governing utilization of gearbox and motor
@@ -249,8 +252,34 @@ def search_ratios(
     lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
     not_made = [c.not_made for c in sel.not_made + motor if c.not_made]
     pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, not_made, inertia_limit)
-    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, inertia_limit, gearbox_passes, feasible,
-                       utilization, pick, reason, notes)
+    return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, inertia_limit,
+                       inertia_within_limit(lam, inertia_limit), gearbox_passes, feasible, utilization, pick, reason,
+                       notes)
+
+
+def inertia_within_limit(inertia_ratio, inertia_limit: float) -> np.ndarray:
+    """Whether each ``λ`` is known and within its limit, with the boundary tolerance of the
+    checks (:func:`calc.core.checks.within_rating`): the one test of λ against the limit.
+
+    Parameters
+    ----------
+    inertia_ratio : numpy.ndarray [1]
+        ``λ`` of each ratio (NaN where not known).
+    inertia_limit : float [1]
+        The highest ``λ``.
+
+    Returns
+    -------
+    numpy.ndarray of bool
+        False where ``λ`` is over the limit or not known.
+
+    Examples
+    --------
+    >>> inertia_within_limit(np.array([5.0, 10.0, 12.0, np.nan]), 10.0).tolist()
+    [True, True, False, False]
+    """
+    lam = np.asarray(inertia_ratio, dtype=float)
+    return ~np.isnan(lam) & within_rating(lam / inertia_limit)
 
 
 def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None, not_made: list[str],
@@ -290,7 +319,7 @@ def pick_ratio(ratios, parts, feasible, inertia_ratio, torques: MotorLoad | None
         return f"the lowest RMS motor torque, {fmt(torques.rms[k], 'N*m')}"
 
     known = ~np.isnan(inertia_ratio)
-    within = feasible & known & within_rating(inertia_ratio / inertia_limit)
+    within = feasible & inertia_within_limit(inertia_ratio, inertia_limit)
     n = int(feasible.sum())
     head = f"{n} of {len(ratios)} ratios are feasible"
     if within.any():

@@ -256,15 +256,16 @@ def comparison_svg(names: list[str], worst: dict) -> str:
 
 def ratio_search_svg(found: dict) -> str:
     """The ratio search as bars: each ratio's RMS motor torque through its best gearbox, green
-    where the ratio is feasible and keeps λ within its limit, light green where it is feasible with
-    λ over it, grey where it is not feasible; the pick outlined; λ above each bar. The data of
+    where the ratio is feasible and keeps λ within its limit (as the search records it), light
+    green where it is feasible with λ over it, grey where it is not feasible; the pick outlined; λ
+    above each bar. The data of
     :func:`calc.figures.motor_plots.ratio_figure`, drawn by the browser.
 
     Parameters
     ----------
     found : dict
-        The ratio search's JSON (:func:`calc.sections.ratios.search`, ``to_json()``): its ratios,
-        the inertia ratio's limit and the pick.
+        The ratio search's JSON (:func:`calc.sections.ratios.search`, ``to_json()``): its ratios
+        (each with λ and whether it is within the limit), the inertia ratio's limit and the pick.
 
     Returns
     -------
@@ -300,7 +301,7 @@ def ratio_search_svg(found: dict) -> str:
     for k, (r, v) in enumerate(zip(rows, rms)):
         x = LEFT + step * k + step * 0.2
         lam = r["inertia_ratio"]
-        within = lam is not None and lam <= limit
+        within = r["inertia_ratio_within_limit"] is True
         fill = "#2e7d32" if r["passes"] and within else ("#a5d6a7" if r["passes"] else "#bdbdbd")
         h = 0.0 if v is None else scale * v
         outline = ' stroke="#000" stroke-width="2.5"' if r["ratio"] == pick else ""

@@ -7,6 +7,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property
 
+import numpy as np
+
 from .case import Case
 from ..data.catalog import display_path
 from ..core.errors import CalcError
@@ -32,6 +34,7 @@ class RatioRow:
     gearbox_passes: bool
     utilization: float | None  # the best gearbox's highest governing utilization
     inertia_ratio: float | None
+    inertia_within: bool | None  # λ within its limit, as the search decides; None where λ is not known
     peak_torque_required: Value | None  # of the motor; None where the case has no motor side
     rms_torque_required: Value | None
     max_speed_required: Value
@@ -64,6 +67,7 @@ class RatioResult:
             out.append(RatioRow(
                 float(ratio), str(s.parts[k]), bool(s.feasible[k]), bool(s.gearbox_passes[k]),
                 number(s.utilization[k], f"{where}: utilization"), number(s.inertia_ratio[k], f"{where}: inertia_ratio"),
+                None if np.isnan(s.inertia_ratio[k]) else bool(s.inertia_within[k]),
                 None if load is None else Value.of(load.peak[k], "N*m", f"{where}: peak torque"),
                 None if load is None else Value.of(load.rms[k], "N*m", f"{where}: RMS torque"),
                 Value.of(s.speed[k], "rpm", f"{where}: speed"), [c.at(k) for c in s.motor],
@@ -75,7 +79,8 @@ class RatioResult:
         s = self.search
         rows = [{
             "ratio": r.ratio, "part": r.part, "passes": r.passes, "gearbox_passes": r.gearbox_passes, "utilization": r.utilization,
-            "inertia_ratio": r.inertia_ratio, "peak_torque_required": json_of(r.peak_torque_required),
+            "inertia_ratio": r.inertia_ratio, "inertia_ratio_within_limit": r.inertia_within,
+            "peak_torque_required": json_of(r.peak_torque_required),
             "rms_torque_required": json_of(r.rms_torque_required), "max_speed_required": r.max_speed_required.to_json(),
             "checks": [check_json(c) for c in r.checks], "reasons": r.reasons,
         } for r in self.rows]

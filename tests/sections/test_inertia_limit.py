@@ -21,8 +21,10 @@ from calc.sections.case import read_case
 from calc.sections.drive import motor_catalog
 from calc.sections.pairs import search_pairs
 
-from ..conftest import DERIVED_EXAMPLE, ROOT
+from ..conftest import DERIVED_EXAMPLE, RESULTS_SCHEMA, ROOT
 
+#: The ratio search's JSON as docs/results.schema.json describes it (``$defs/ratio_search``).
+RATIO_SEARCH_SCHEMA = type(RESULTS_SCHEMA)({"$defs": RESULTS_SCHEMA.schema["$defs"], "$ref": "#/$defs/ratio_search"})
 LAMBDA = {3: 96.14, 4: 54.34, 5: 34.87, 7: 17.92, 8: 13.77, 10: 9.16}
 
 
@@ -69,6 +71,8 @@ def test_the_ratio_search_keeps_to_the_cases_limit(tmp_path, capsys, limit, with
     lam = {r["ratio"]: r["inertia_ratio"] for r in j["ratios"]}
     assert lam == pytest.approx(LAMBDA, abs=0.005)  # the motor named: the column of the shipped case
     assert [i for i, x in lam.items() if x <= limit] == within
+    assert [r["ratio"] for r in j["ratios"] if r["inertia_ratio_within_limit"]] == within  # as the search records it
+    assert not list(RATIO_SEARCH_SCHEMA.iter_errors(j))
     assert j["inertia_ratio_limit"] == limit
     assert f"inertia ratio λ = (J_1 + J_L / i²) / J_motor is at most {limit} (E6)" in j["rule"]
     assert j["pick"]["ratio"] == 10 and j["reason"] == f"Ratio 10 (NPT035-10): {reason}."
