@@ -122,7 +122,7 @@ def load_cycle_figure(profile: Profile, duty: Duty | None = None):
     return fig
 
 
-def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
+def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS, f_s: float | None = None):
     """A shock-factor table (errata E4) as a step plot against ``Z_h``, the case's point marked.
 
     Each band of ``table`` (the source's, :data:`calc.domain.gearbox.SHOCK_FACTORS`, unless the case names
@@ -134,9 +134,13 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
     Parameters
     ----------
     cycles_per_hour : pint.Quantity [1/h], optional
-        The case's ``Z_h``; marked with its factor from :func:`calc.domain.gearbox.shock_factor`.
+        The case's ``Z_h``; marked with its factor.
     table : calc.data.bands.BandTable
         The table the case's ``f_s`` is read from.
+    f_s : float [1], optional
+        The case's ``f_s`` as its evaluation recorded it (:attr:`calc.sections.duty.DutyResult.fs`);
+        read from ``table`` at ``cycles_per_hour`` (:func:`calc.domain.gearbox.shock_factor`) where
+        not given.
 
     Returns
     -------
@@ -160,7 +164,7 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS):
         if np.ndim(z) != 0:
             raise CalcError(f"cycles_per_hour: expected one number of cycles per hour, found {np.size(z)} of them")
         z_case = float(z)
-        f_case = float(shock_factor(cycles_per_hour, table))
+        f_case = float(shock_factor(cycles_per_hour, table) if f_s is None else f_s)
     # a table of one band: 0 to 1000 /h shown
     span = bounds[-1] - bounds[-2] if len(bounds) > 1 else max(bounds[-1], 1000.0)
     x_end = bounds[-1] + span

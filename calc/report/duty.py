@@ -81,7 +81,7 @@ class DutyRenderer(Renderer):
         shown = dataclasses.replace(d.shock_factors, source=report.relative(d.fs_table, str))
         return [
             (load_cycle_figure(d.profile), "Load cycle at the gearbox output, with ED and the operating mode (E3)."),
-            (shock_factor_figure(d.Zh, shown),
+            (shock_factor_figure(d.Zh, shown, f_s=d.fs),
              latex_escape(f"Shock factor against cycles per hour ({shown.source}); the case's point marked (E4).")),
         ]
 

@@ -130,6 +130,13 @@ def test_shock_factor_figure_marks_the_case(t_cycle, z, fs):
     assert rf"this case: $Z_{{\mathrm{{h}}}}$ = {z} 1/h, $f_{{\mathrm{{s}}}}$ = {fs:g}" in _texts(fig)
 
 
+def test_shock_factor_figure_marks_the_recorded_factor():
+    # The caller's f_s (the duty result's) is the one marked; the table is not read again for it.
+    fig = shock_factor_figure(Q_(1800, "1/hour"), f_s=1.45)
+    (case,) = [line for line in fig.axes[0].lines if line.get_gid() == "case"]
+    assert (case.get_xdata()[0], case.get_ydata()[0]) == (1800.0, 1.45)
+
+
 def test_shock_factor_figure_takes_one_point():
     with pytest.raises(CalcError, match="cycles_per_hour: expected one number"):
         shock_factor_figure(Q_(np.array([1000.0, 2000.0]), "1/hour"))
