@@ -7,10 +7,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
-
 from ..sections import gearbox
-from ..sections.accuracy import NAME
+from ..sections.accuracy import NAME, modelled_loop
 from .common import TableRenderer, result_of
 from .latex import latex_escape, listed, plain, prose, q, step_block, symbol_latex, symbol_math, table
 from .page import in_system, table as html_table, value
@@ -93,14 +91,26 @@ class AccuracyRenderer(TableRenderer):
 
     def figures(self, report) -> list:
         """The chain's figures; without measured loops, the chosen gearbox's loop modelled from its
-        catalog figures (also for a case without ``[accuracy]``)."""
+        catalog figures as the accuracy result records it (:attr:`calc.sections.accuracy.AccuracyResult.modelled_loop`;
+        for a case without ``[accuracy]``, modelled from the gearbox result the same way).
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The case's report.
+
+        Returns
+        -------
+        list of tuple
+            ``(matplotlib.figure.Figure, caption)`` of each figure.
+        """
         r, g = self.result(report), result_of(gearbox.NAME, report)
         if r is None and g is None:
             return []
         from ..figures.accuracy_plots import (
             hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure,
         )
-        from ..domain.hysteresis import analyze_loop, model_for_part, read_loop
+        from ..domain.hysteresis import read_loop
 
         out = []
         spec = None if r is None else r.inputs
@@ -112,15 +122,12 @@ class AccuracyRenderer(TableRenderer):
                 loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
                 out.append((hysteresis_figure(loop, analysis),
                             latex_escape(f"Measured hysteresis loop of {name} (E12).")))
-        if (spec is None or not spec.loops) and g is not None:
-            sel, row = g.selection, int(g.selection.order[0])
-            if not (np.isnan(sel.catalog["C_t21"][row].magnitude) or np.isnan(sel.catalog["backlash"][row].magnitude)):
-                part = str(sel.catalog.parts[row])
-                model = model_for_part(part, str(sel.catalog.path))
-                loop = model.loop(800)
-                out.append((hysteresis_figure(loop, analyze_loop(loop, model.nominal_torque)),
-                            prose(f"Hysteresis loop of {part} modelled from its catalog figures "
-                                  "(C_t21, backlash, T_2N), not a measurement (E12).")))
+        # A case without [accuracy] has no chain's result to hold the gearbox's modelled loop.
+        model = modelled_loop(g) if r is None else r.modelled_loop
+        if model is not None:
+            out.append((hysteresis_figure(model.loop, model.analysis),
+                        prose(f"Hysteresis loop of {model.part} modelled from its catalog figures "
+                              "(C_t21, backlash, T_2N), not a measurement (E12).")))
         if spec is not None:
             for name, (path, analysis) in spec.traces.items():
                 out.append((transmission_error_figure(analysis),

@@ -21,6 +21,7 @@ from ..data.measurement import measurement_path
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
 from ..domain.coupling import SCHEMA as COUPLING_SCHEMA
 from ..domain.gearbox import SCHEMA as GEARBOX_SCHEMA, same_ratio
+from ..domain.hysteresis import LoopModel, analyze_loop
 from .common import Governing, Verdict, json_of, number, quantity
 from .protocol import Result, Section
 
@@ -557,6 +558,98 @@ class MeasuredLoop:
     lost_motion: Value
 
 
+#: Where a modelled loop's figures come from, as the outputs say it.
+MODEL_FROM = ("the chosen gearbox's catalog row (C_t21, backlash, T_2N) and the shape factors of the loop model "
+              "(calc.domain.hysteresis.LoopModel), not a measurement (E12)")
+#: Samples of a modelled loop, as drawn and analysed.
+MODEL_SAMPLES = 800
+
+
+@dataclass(frozen=True)
+class ModelledLoop:
+    """The hysteresis loop of the chosen gearbox (the best-ranked row) modelled from its catalog
+    figures, and the loop as analysed like a measurement (E12): what the outputs print and draw
+    where the chain names no measured loop.
+
+    Parameters
+    ----------
+    part : str
+        The gearbox's part.
+    catalog : str
+        The file of its row.
+    model : calc.domain.hysteresis.LoopModel
+        The model: ``C_t21`` [N·m/arcmin], backlash [arcmin], ``T_2N`` [N·m] and the shape factors.
+    loop : calc.domain.hysteresis.Loop
+        The modelled loop, torque [N·m] against twist [arcmin].
+    analysis : calc.domain.hysteresis.LoopAnalysis
+        The loop as analysed at ``T_2N``: stiffness each way [N·m/arcmin], backlash and lost motion [arcmin].
+    """
+
+    part: str
+    catalog: str
+    model: object
+    loop: object
+    analysis: object
+
+    def to_json(self) -> dict:
+        """The modelled loop as the results write it (``accuracy.modelled_loop``).
+
+        Returns
+        -------
+        dict
+            ``part``, ``catalog``, ``from``, the model's ``C_t21``, ``backlash_catalog``, ``T_2N`` and
+            ``shape`` factors, and the analysed ``stiffness_positive``, ``stiffness_negative``,
+            ``backlash`` and ``lost_motion``, each quantity as ``{"value", "unit"}``.
+        """
+        m, a, where = self.model, self.analysis, f"accuracy.modelled_loop ({self.part})"
+        shape = {k: getattr(m, k) for k in ("soft_share", "soft_width", "friction", "gap_width")}
+        return {
+            "part": self.part, "catalog": self.catalog, "from": MODEL_FROM,
+            "C_t21": quantity(m.stiffness, "N*m/arcmin", where), "backlash_catalog": quantity(m.backlash, "arcmin", where),
+            "T_2N": quantity(m.nominal_torque, "N*m", where), "shape": shape,
+            "stiffness_positive": quantity(a.stiffness_positive, "N*m/arcmin", where),
+            "stiffness_negative": quantity(a.stiffness_negative, "N*m/arcmin", where),
+            "backlash": quantity(a.backlash, "arcmin", where), "lost_motion": quantity(a.lost_motion, "arcmin", where),
+        }
+
+    def summary_line(self) -> str:
+        """The modelled loop in one line of the text summary.
+
+        Returns
+        -------
+        str
+            Its part, where its figures come from and its analysed stiffness, backlash and lost motion.
+        """
+        a = self.analysis
+        return (f"  Modelled loop of {self.part} (from its catalog row, not a measurement): "
+                f"C = {fmt(a.stiffness_positive, 'N*m/arcmin')} / {fmt(a.stiffness_negative, 'N*m/arcmin')} "
+                f"(+ / -), backlash {fmt(a.backlash, 'arcmin')}, lost motion ±3 % {fmt(a.lost_motion, 'arcmin')}")
+
+
+def modelled_loop(gearbox) -> ModelledLoop | None:
+    """The hysteresis loop of a gearbox section's best-ranked row, modelled from its catalog figures
+    and analysed at its ``T_2N`` (E12).
+
+    Parameters
+    ----------
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result.
+
+    Returns
+    -------
+    ModelledLoop or None
+        None without a gearbox, or where the row gives no ``C_t21`` or backlash.
+    """
+    if gearbox is None:
+        return None
+    cat, row = gearbox.selection.catalog, int(gearbox.selection.order[0])
+    if np.isnan(cat["C_t21"][row].magnitude) or np.isnan(cat["backlash"][row].magnitude):
+        return None
+    model = LoopModel(cat["C_t21"][row], cat["backlash"][row], cat["T_2N"][row])
+    loop = model.loop(MODEL_SAMPLES)
+    return ModelledLoop(str(cat.parts[row]), cat.catalog_of(row), model, loop, analyze_loop(loop, model.nominal_torque))
+
+
 @dataclass(frozen=True)
 class MeasuredTrace:
     """A member's measured transmission error over one output revolution."""
@@ -698,6 +791,8 @@ class AccuracyResult(Result):
 
     inputs: AccuracyCase
     accuracy: ChainAccuracy
+    #: the chosen gearbox's loop modelled from its catalog figures; None where the chain names a measured loop
+    modelled_loop: ModelledLoop | None = None
 
     @functools.cached_property
     def shown(self) -> AccuracyValues:
@@ -746,6 +841,8 @@ class AccuracyResult(Result):
             out.update({f"{key}_arc": arc.to_json() for key, arc in v.arcs.items()})
         if v.positioning is not None:
             out["measured_positioning"] = dataclasses.asdict(v.positioning)
+        if self.modelled_loop is not None:
+            out["modelled_loop"] = self.modelled_loop.to_json()
         g = self.governing()
         if g is not None:
             # An accuracy check lists the chain's value and the limit the case requires of it.
@@ -809,6 +906,8 @@ class AccuracyResult(Result):
             if m.measured_trace is not None:
                 t = m.measured_trace
                 lines.append(f"  Measured trace of {m.name} ({t.file}): transmission accuracy {t.transmission_accuracy} ({t.direction})")
+        if self.modelled_loop is not None:
+            lines.append(self.modelled_loop.summary_line())
         if v.positioning is not None:
             p = v.positioning
             lines.append(
@@ -874,8 +973,9 @@ class AccuracySection(Section):
         return read_inputs(case)
 
     def evaluate(self, case: Case, earlier) -> AccuracyResult:
-        spec = accuracy_case(case, self.inputs(case), earlier.get("gearbox"), earlier.get("coupling"))
-        return AccuracyResult(spec, _chain_accuracy(case, spec))
+        gearbox = earlier.get("gearbox")
+        spec = accuracy_case(case, self.inputs(case), gearbox, earlier.get("coupling"))
+        return AccuracyResult(spec, _chain_accuracy(case, spec), None if spec.loops else modelled_loop(gearbox))
 
 
 SECTION = AccuracySection()
