@@ -31,8 +31,13 @@ COVERED = ("core", "data", "domain", "figures")
 COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "calc.review.figures",
                    "calc.review.inputs", "calc.review.keep", "calc.review.page", "calc.review.panel",
                    "calc.review.serve", "calc.review.state", "calc.review.variants",
-                   "calc.sections", "calc.sections.case", "calc.sections.common", "calc.sections.evaluation",
-                   "calc.sections.protocol", "calc.sections.reference")
+                   "calc.sections",
+                   "calc.sections.case",
+                   "calc.sections.common",
+                   "calc.sections.drive",
+                   "calc.sections.evaluation",
+                   "calc.sections.protocol",
+                   "calc.sections.reference")
 #: Every layer, for the report of shares.
 LAYERS = ("core", "data", "domain", "figures", "sections", "report", "review")
 #: Generated code, not written by hand.
