@@ -35,6 +35,7 @@ COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "cal
                    "calc.sections.case",
                    "calc.sections.common",
                    "calc.sections.drive",
+                   "calc.sections.duty",
                    "calc.sections.evaluation",
                    "calc.sections.protocol",
                    "calc.sections.reference")

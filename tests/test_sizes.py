@@ -23,6 +23,7 @@ COVERED_MODULES = ("review/__init__.py", "review/client.py", "review/edit.py", "
                    "sections/case.py",
                    "sections/common.py",
                    "sections/drive.py",
+                   "sections/duty.py",
                    "sections/evaluation.py",
                    "sections/protocol.py",
                    "sections/reference.py")
