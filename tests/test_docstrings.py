@@ -38,6 +38,7 @@ COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "cal
                    "calc.sections.duty",
                    "calc.sections.evaluation",
                    "calc.sections.gearbox",
+                   "calc.sections.motion",
                    "calc.sections.pairs",
                    "calc.sections.protocol",
                    "calc.sections.reference")

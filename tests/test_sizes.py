@@ -26,6 +26,7 @@ COVERED_MODULES = ("review/__init__.py", "review/client.py", "review/edit.py", "
                    "sections/duty.py",
                    "sections/evaluation.py",
                    "sections/gearbox.py",
+                   "sections/motion.py",
                    "sections/pairs.py",
                    "sections/protocol.py",
                    "sections/reference.py")
