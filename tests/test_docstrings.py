@@ -39,6 +39,7 @@ COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "cal
                    "calc.sections.evaluation",
                    "calc.sections.gearbox",
                    "calc.sections.motion",
+                   "calc.sections.motor",
                    "calc.sections.pairs",
                    "calc.sections.protocol",
                    "calc.sections.reference")

@@ -27,6 +27,7 @@ COVERED_MODULES = ("review/__init__.py", "review/client.py", "review/edit.py", "
                    "sections/evaluation.py",
                    "sections/gearbox.py",
                    "sections/motion.py",
+                   "sections/motor.py",
                    "sections/pairs.py",
                    "sections/protocol.py",
                    "sections/reference.py")
