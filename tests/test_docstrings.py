@@ -30,7 +30,19 @@ COVERED = ("core", "data", "domain", "figures")
 #: the package's ``__init__``).
 COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "calc.review.figures",
                    "calc.review.inputs", "calc.review.keep", "calc.review.page", "calc.review.panel",
-                   "calc.review.serve", "calc.review.state", "calc.review.variants")
+                   "calc.review.serve", "calc.review.state", "calc.review.variants",
+                   "calc.sections",
+                   "calc.sections.case",
+                   "calc.sections.common",
+                   "calc.sections.drive",
+                   "calc.sections.duty",
+                   "calc.sections.evaluation",
+                   "calc.sections.gearbox",
+                   "calc.sections.motion",
+                   "calc.sections.motor",
+                   "calc.sections.pairs",
+                   "calc.sections.protocol",
+                   "calc.sections.reference")
 #: Every layer, for the report of shares.
 LAYERS = ("core", "data", "domain", "figures", "sections", "report", "review")
 #: Generated code, not written by hand.

@@ -28,9 +28,19 @@ OWN_TABLES = tuple(s.NAME for s in SECTIONS if s.keeps_table)
 
 
 def declared(path: str):
-    """The declaration (:class:`calc.sections.case.Key`) of a key path of a case file (``motor.inertia``,
-    ``profile[2].torque``, ``accuracy.component[1].stiffness_curve.K1``); a table's own path gives
-    its :class:`calc.sections.case.Declared`."""
+    """The declaration of a key path of a case file.
+
+    Parameters
+    ----------
+    path : str
+        The key path (``motor.inertia``, ``profile[2].torque``,
+        ``accuracy.component[1].stiffness_curve.K1``); an index in brackets is ignored.
+
+    Returns
+    -------
+    calc.sections.case.Key or calc.sections.case.Declared
+        The key's declaration; a table's own path gives its :class:`calc.sections.case.Declared`.
+    """
     names = [part.split("[")[0] for part in path.split(".")]
     out = next(t for t in DECLARED if t.name == names[0])
     for name in names[1:]:

@@ -29,13 +29,26 @@ from .evaluation import sections
 class Key:
     """One key of a case file's table, declared once by the section that reads it.
 
-    ``kind`` is a quantity kind of :mod:`calc.core.units` (``"torque"``) or one of :data:`OTHER_KINDS`;
-    ``symbol`` the source document's symbol in code form (``"T_1B"``) where the key has one;
-    ``default`` the value as a case file would write it, which the reader takes when the key is
-    left out (None: none, or one the description states because it comes from the rest of the
-    case); ``unit`` the unit the report and the design review show it in; ``only`` the types of
-    a typed table (a mechanism's) the key belongs to, empty for every type; ``keys`` the keys of
-    an inline table or of each table of an array."""
+    Parameters
+    ----------
+    name : str
+        The key as a case file writes it (``peak_torque``).
+    kind : str
+        A quantity kind of :mod:`calc.core.units` (``"torque"``) or one of :data:`OTHER_KINDS`.
+    description : str
+        What it is, for the report, the design review and the format document.
+    symbol : str, optional
+        The source document's symbol in code form (``"T_1B"``) where the key has one.
+    default : object, optional
+        The value as a case file would write it, which the reader takes when the key is left out
+        (None: none, or one the description states because it comes from the rest of the case).
+    unit : str, optional
+        The unit the report and the design review show it in.
+    only : tuple of str, optional
+        The types of a typed table (a mechanism's) the key belongs to; empty for every type.
+    keys : tuple of Key, optional
+        The keys of an inline table or of each table of an array.
+    """
 
     name: str
     kind: str
@@ -65,8 +78,19 @@ OTHER_KINDS = {
 
 @dataclass(frozen=True)
 class Declared:
-    """A top-level table of a case file as a section declares it: its name, its keys, whether it
-    is an array of tables (``[[profile]]``) and what it holds."""
+    """A top-level table of a case file as a section declares it.
+
+    Parameters
+    ----------
+    name : str
+        Its name (``motor``).
+    keys : tuple of Key
+        Its keys.
+    description : str
+        What it holds.
+    array : bool, optional
+        Whether it is an array of tables (``[[profile]]``).
+    """
 
     name: str
     keys: tuple
@@ -74,17 +98,52 @@ class Declared:
     array: bool = False
 
     def key(self, name: str) -> Key:
+        """One of its keys.
+
+        Parameters
+        ----------
+        name : str
+            The key's name.
+
+        Returns
+        -------
+        Key
+            Its declaration.
+        """
         return next(k for k in self.keys if k.name == name)
 
 
 def key_names(keys) -> tuple[str, ...]:
-    """The names of declared keys or tables (plain names pass through)."""
+    """The names of declared keys or tables.
+
+    Parameters
+    ----------
+    keys : iterable of Key, Declared or str
+        The declarations; plain names pass through.
+
+    Returns
+    -------
+    tuple of str
+        Their names, in order.
+    """
     return tuple(k if isinstance(k, str) else k.name for k in keys)
 
 
 class Table:
     """One table of the case file, read key by key as its section declares them (:class:`Key`:
-    the kind and default of each); unknown keys are an error."""
+    the kind and default of each); unknown keys are an error.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The case file, for the errors.
+    name : str
+        The table's key path (``profile[2]``); empty for the file's top level.
+    data : dict
+        The table as TOML reads it; anything else is an error.
+    allowed : tuple of Key, Declared or str
+        The keys it may have.
+    """
 
     def __init__(self, path: Path, name: str, data, allowed: tuple):
         self.path, self.name = path, name
@@ -98,16 +157,63 @@ class Table:
                 raise CalcError(f"{path}: {self.key(key)}: unknown key; {name} takes {', '.join(allowed)}")
 
     def key(self, key: str) -> str:
+        """A key's path from the file's top level.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+
+        Returns
+        -------
+        str
+            ``profile[2].duration``.
+        """
         return f"{self.name}.{key}" if self.name else key
 
     def where(self, key: str) -> str:
+        """Where a key is, as an error names it.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+
+        Returns
+        -------
+        str
+            The file and the key's path.
+        """
         return f"{self.path}: {self.key(key)}"
 
     def has(self, key: str) -> bool:
+        """Whether the table gives a key.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+
+        Returns
+        -------
+        bool
+            True where the case file writes it.
+        """
         return key in self.data
 
     def kind(self, key: str) -> str:
-        """The declared kind of ``key``."""
+        """The declared kind of a key.
+
+        Parameters
+        ----------
+        key : str
+            A declared key of the table.
+
+        Returns
+        -------
+        str
+            Its kind (:attr:`Key.kind`).
+        """
         return self.declared[key].kind
 
     def _absent(self, key: str, required: bool):
@@ -117,24 +223,71 @@ class Table:
         return self.declared[key].default if key in self.declared else None
 
     def quantity(self, key: str, kind: str | None = None, required: bool = False):
-        """The quantity at ``key`` of its declared kind (or ``kind``); its declared default, parsed,
-        where the table leaves it out (None without one)."""
+        """The quantity at a key.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+        kind : str, optional
+            Its kind; None: its declared kind.
+        required : bool, optional
+            Whether leaving it out is an error.
+
+        Returns
+        -------
+        pint.Quantity [the kind's unit] or None
+            The quantity; its declared default, parsed, where the table leaves it out (None
+            without one).
+        """
         kind = kind or self.kind(key)
         value = self.data[key] if key in self.data else self._absent(key, required)
         return None if value is None else parse_quantity(value, kind, self.where(key))
 
     def positive(self, key: str, kind: str | None = None, required: bool = False, what: str | None = None):
-        """:meth:`quantity`, which must be above zero; ``what`` names it in the error (default:
-        its kind)."""
+        """The quantity at a key (:meth:`quantity`), which must be above zero.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+        kind : str, optional
+            Its kind; None: its declared kind.
+        required : bool, optional
+            Whether leaving it out is an error.
+        what : str, optional
+            What it is, for the error; None: its kind.
+
+        Returns
+        -------
+        pint.Quantity [the kind's unit] or None
+            The quantity, or its declared default (None without one).
+        """
         kind = kind or self.kind(key)
         q = self.quantity(key, kind, required)
         if q is not None and not q.magnitude > 0:
-            raise CalcError(f"{self.where(key)}: expected {what or kind_phrase(kind)} above zero, found {self.data[key]!r}")
+            raise CalcError(f"{self.where(key)}: expected {what or kind_phrase(kind)} above zero, "
+                            f"found {self.data[key]!r}")
         return q
 
     def text(self, key: str, required: bool = False, default=None):
-        """The text at ``key``; where the table leaves it out, ``default`` (one that comes from the
-        rest of the case) or else its declared default."""
+        """The text at a key.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+        required : bool, optional
+            Whether leaving it out is an error.
+        default : str, optional
+            What it reads as where the table leaves it out (one that comes from the rest of the
+            case); None: its declared default.
+
+        Returns
+        -------
+        str or None
+            The text, or the default.
+        """
         if key not in self.data:
             declared = self._absent(key, required)
             return declared if default is None else default
@@ -150,27 +303,78 @@ class Table:
         raise CalcError(f"{self.where(key)}: expected {what} in quotes, or a list of them, found {value!r}")
 
     def texts(self, key: str) -> tuple:
-        """A text or a list of texts, as a tuple (empty where the table leaves it out)."""
+        """A text or a list of texts at a key.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+
+        Returns
+        -------
+        tuple of str
+            The texts; empty where the table leaves it out.
+        """
         if key not in self.data:
             return ()
         value = self._one_or_more(key, self.data[key], "a text")
         return (value,) if isinstance(value, str) else tuple(value)
 
     def catalogs(self, key: str):
-        """A catalog key: one name or path, or a list of them ranked together (its declared
-        default where the table leaves it out)."""
+        """A catalog key.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+
+        Returns
+        -------
+        str or list of str
+            One name or path, or a list of them ranked together; its declared default where the
+            table leaves it out.
+        """
         value = self.data[key] if key in self.data else self._absent(key, False)
         return self._one_or_more(key, value, "a catalog name or path")
 
     def table(self, key: str, allowed: tuple) -> "Table | None":
+        """An inline table at a key.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+        allowed : tuple of Key or str
+            The keys it may have.
+
+        Returns
+        -------
+        Table or None
+            The table; None where it is left out.
+        """
         if key not in self.data:
             return None
         return Table(self.path, self.key(key), self.data[key], allowed)
 
     def tables(self, key: str, allowed: tuple) -> list["Table"]:
+        """An array of tables at a key.
+
+        Parameters
+        ----------
+        key : str
+            A key of the table.
+        allowed : tuple of Key or str
+            The keys each may have.
+
+        Returns
+        -------
+        list of Table
+            The tables, named from 1 (``profile[1]``); empty where it is left out.
+        """
         items = self.data.get(key, [])
         if not isinstance(items, list):
-            raise CalcError(f"{self.where(key)}: expected an array of tables ([[{self.key(key)}]]), found {type(items).__name__}")
+            raise CalcError(f"{self.where(key)}: expected an array of tables ([[{self.key(key)}]]), "
+                            f"found {type(items).__name__}")
         return [Table(self.path, f"{self.key(key)}[{k}]", item, allowed) for k, item in enumerate(items, start=1)]
 
 
@@ -178,7 +382,63 @@ class Table:
 class Case:
     """A design case as read from its file: the inputs the sections share, checked, and for each
     section that reads a table of its own (``coupling``, ``accuracy``) its typed inputs
-    (``inputs``) and its table as written (``sections``)."""
+    (``inputs``) and its table as written (``sections``).
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The case file.
+    title : str
+        The case's title (default: the file's name without its suffix).
+    profile : calc.domain.profile.Profile
+        The load cycle at the gearbox output.
+    motor_peak_torque : pint.Quantity [N*m], optional
+        ``[motor] peak_torque``, T_1B (or the catalog motor's maximum torque).
+    motor_inertia : pint.Quantity [kg*m**2], optional
+        ``[motor] inertia``, the rotor's.
+    motor_rated_torque : pint.Quantity [N*m], optional
+        ``[motor] rated_torque``, the continuous torque.
+    motor_max_speed : pint.Quantity [rpm], optional
+        ``[motor] max_speed``.
+    load_inertia : pint.Quantity [kg*m**2], optional
+        ``[load] inertia``, J_L at the gearbox output.
+    ratio : pint.Quantity [1], optional
+        ``[gearbox] ratio``, i.
+    gearbox_catalog : str or list of str, optional
+        ``[gearbox] catalog``: one name or path, or several ranked together.
+    gearbox_part : str, optional
+        ``[gearbox] part``.
+    gearbox_family : tuple of str, optional
+        ``[gearbox] family``: only rows of these families are checked (all where empty).
+    shock_factors : calc.data.bands.BandTable, optional
+        The table of f_s of ``[gearbox]``; None: the source's.
+    emergency_stop_torque : pint.Quantity [N*m], optional
+        ``[gearbox] emergency_stop_torque``.
+    gearbox_hubs : calc.data.catalog.Catalog, optional
+        The table of clamping hubs of ``[gearbox]``.
+    motor_shaft : calc.domain.fits.Bore, optional
+        The motor's shaft: picks the gearbox's clamping hub.
+    motor_catalog : str or list of str, optional
+        ``[motor] catalog``: the motor chosen from it (or its part).
+    motor_part : str, optional
+        ``[motor] part``.
+    motor_max_inertia_ratio : tuple, optional
+        The limit of λ [1] and where it comes from (a key path, or "the default").
+    motor_dc_link : pint.Quantity [V], optional
+        ``[motor] dc_link_voltage``, U_DC.
+    motor_curves : pathlib.Path, optional
+        The motors' curves file.
+    output_load : calc.domain.gearbox.OutputForces, optional
+        The forces on the gearbox output.
+    sections : dict, optional
+        The tables of the sections that read their own, as written, by name.
+    inputs : dict, optional
+        Those sections' typed inputs, by name (:meth:`calc.sections.protocol.Section.inputs`).
+    motion : calc.sections.motion.Motion, optional
+        Where the case gives moves or a drive record.
+    raw : bytes, optional
+        The file's bytes as read.
+    """
 
     path: Path
     title: str
@@ -191,24 +451,25 @@ class Case:
     ratio: object = None
     gearbox_catalog: str | list | None = None
     gearbox_part: str | None = None
-    gearbox_family: tuple = ()  # [gearbox] family: only rows of these families are checked (all where empty)
-    shock_factors: object = None  # the table of f_s (calc.data.bands.BandTable) of [gearbox]; None: the source's
+    gearbox_family: tuple = ()
+    shock_factors: object = None
     emergency_stop_torque: object = None
-    gearbox_hubs: object = None  # the table of clamping hubs of [gearbox] (calc.data.catalog.Catalog)
-    motor_shaft: object = None  # Bore of the motor's shaft: picks the gearbox's clamping hub
-    motor_catalog: str | list | None = None  # [motor] catalog: the motor chosen from it (or its part)
+    gearbox_hubs: object = None
+    motor_shaft: object = None
+    motor_catalog: str | list | None = None
     motor_part: str | None = None
-    motor_max_inertia_ratio: tuple = (INERTIA_RATIO_LIMIT, "the default")  # the limit of λ and where it comes from
+    motor_max_inertia_ratio: tuple = (INERTIA_RATIO_LIMIT, "the default")
     motor_dc_link: object = None
-    motor_curves: object = None  # Path of the motors' curves file
-    output_load: object = None  # calc.domain.gearbox.OutputForces: forces on the gearbox output
-    sections: dict = field(default_factory=dict)  # the tables of the sections that read their own, as written, by name
-    inputs: dict = field(default_factory=dict)  # those sections' typed inputs, by name (Section.inputs)
-    motion: object = None  # calc.sections.motion.Motion where the case gives moves or a drive record
+    motor_curves: object = None
+    output_load: object = None
+    sections: dict = field(default_factory=dict)
+    inputs: dict = field(default_factory=dict)
+    motion: object = None
     raw: bytes = b""
 
     @property
     def folder(self) -> Path:
+        """The folder of the case file, where its own files are found."""
         return self.path.parent
 
 
@@ -218,6 +479,7 @@ def declared_tables() -> tuple:
     Returns
     -------
     tuple of Declared
+        Each section's :attr:`calc.sections.protocol.Section.TABLES`.
     """
     return tuple(t for s in sections() for t in s.TABLES)
 
@@ -234,9 +496,7 @@ def top_keys() -> tuple:
 
 
 def read_case(path, text: str | None = None) -> Case:
-    """Read and check a case file; raise :class:`CalcError` naming the file and key on bad input.
-    ``text``, where given, is read as the file's text (a case edited in memory, its files found
-    beside ``path`` as the file's would be).
+    """Read and check a case file.
 
     Each section reads its tables in turn, in the order of the sections (:mod:`calc.sections`):
     the motor and load, the load cycle (derived from the moves and the mechanism or from a drive
@@ -247,11 +507,18 @@ def read_case(path, text: str | None = None) -> Case:
     path : str or pathlib.Path
         The case file.
     text : str, optional
-        The file's text, where it is read from memory.
+        The file's text, where it is read from memory (a case edited in memory, its files found
+        beside ``path`` as the file's would be).
 
     Returns
     -------
     Case
+        The case, each section's tables read into it.
+
+    Raises
+    ------
+    CalcError
+        On bad input, naming the file and the key.
     """
     path = Path(path)
     if text is not None:
@@ -263,7 +530,8 @@ def read_case(path, text: str | None = None) -> Case:
     else:
         raw = path.read_bytes()
     try:
-        data = tomllib.loads(raw.decode("utf-8-sig"))  # an editor's byte-order mark is not TOML; catalogs accept one too
+        # An editor's byte-order mark is not TOML; catalogs accept one too.
+        data = tomllib.loads(raw.decode("utf-8-sig"))
     except UnicodeDecodeError:
         raise CalcError(f"{path}: expected a UTF-8 TOML file, found bytes that are not UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
@@ -274,7 +542,8 @@ def read_case(path, text: str | None = None) -> Case:
     if control is not None:
         # Refused, not escaped: the title goes to the terminal, the JSON and the LaTeX report, and
         # a control character (an escape sequence, a line break) means nothing in any of them.
-        raise CalcError(f"{top.where('title')}: expected one line of printable text, found the control character U+{ord(control):04X}")
+        raise CalcError(f"{top.where('title')}: expected one line of printable text, "
+                        f"found the control character U+{ord(control):04X}")
     case = Case(path=path, title=title, profile=None, raw=raw)
     for s in sections():
         s.read(top, case)

@@ -19,23 +19,76 @@ REASONED_CANDIDATES = 3
 
 
 def quantity(q, unit: str, key: str = "result") -> dict:
-    """A scalar quantity as the contract writes it: ``{"value": 21.3, "unit": "N*m"}``; NaN (no
-    value) becomes null. An infinite value is an error naming the result: JSON never holds one."""
+    """A scalar quantity as the contract writes it: ``{"value": 21.3, "unit": "N*m"}``.
+
+    Parameters
+    ----------
+    q : pint.Quantity [any]
+        The quantity; NaN (no value) becomes null.
+    unit : str
+        The unit it is written in (``"N*m"``).
+    key : str, optional
+        The result's name, for the error.
+
+    Returns
+    -------
+    dict
+        ``{"value", "unit"}``.
+
+    Raises
+    ------
+    CalcError
+        For an infinite value, naming the result: JSON never holds one.
+    """
     return Value.of(q, unit, key).to_json()
 
 
 def json_of(value: Value | None) -> dict | None:
-    """A result's :class:`calc.core.units.Value` as the contract writes it; None stays null."""
+    """A result's value as the contract writes it.
+
+    Parameters
+    ----------
+    value : calc.core.units.Value or None
+        The result's value.
+
+    Returns
+    -------
+    dict or None
+        ``{"value", "unit"}``; None stays null.
+    """
     return None if value is None else value.to_json()
 
 
 def quantity_text(d: dict | None) -> str:
-    """A result quantity ``{"value", "unit"}`` as a reader writes it (``151.3 N·m``); n/a for none."""
+    """A result quantity as a reader writes it.
+
+    Parameters
+    ----------
+    d : dict or None
+        The quantity as the contract writes it, ``{"value", "unit"}``.
+
+    Returns
+    -------
+    str
+        ``151.3 N·m``; n/a for none (or a null value).
+    """
     return "n/a" if d is None or d["value"] is None else f"{sig(d['value'])} {pretty_unit(d['unit'])}".rstrip()
 
 
 def check_json(check: Check) -> dict:
-    """A :class:`calc.core.checks.Check` as the contract writes it."""
+    """A check as the contract writes it.
+
+    Parameters
+    ----------
+    check : calc.core.checks.Check
+        The check.
+
+    Returns
+    -------
+    dict
+        Its name, mode (where it has one), whether it governs, criterion, required and rated values,
+        utilization, whether it passes and, for one not made, why.
+    """
     out = {
         "name": check.name,
         "mode": check.mode,
@@ -54,33 +107,86 @@ def check_json(check: Check) -> dict:
 
 
 def check_line(check: Check, width: int = 22) -> str:
-    """A check as one line of the text summary."""
+    """A check as one line of the text summary.
+
+    Parameters
+    ----------
+    check : calc.core.checks.Check
+        The check.
+    width : int, optional
+        The width its criterion is padded to [characters].
+
+    Returns
+    -------
+    str
+        Criterion, required and rated values, utilization and verdict; one that does not govern is
+        marked "for information".
+    """
     util = "n/a" if check.utilization is None else f"{check.utilization:.2f}"
-    verdict = f"not checked: {check.not_made or 'no rating'}" if check.passes is None else ("ok" if check.passes else "FAIL")
+    passes = "ok" if check.passes else "FAIL"
+    verdict = f"not checked: {check.not_made or 'no rating'}" if check.passes is None else passes
     mark = "" if check.governs else "  (for information)"
     required = "n/a" if check.required is None else str(check.required_value)
     rated = str(check.rated_value)
-    return f"{check.criterion:<{width}} required {required:>12}  rated {rated:>12}  utilization {util:>5}  {verdict}{mark}"
+    return (f"{check.criterion:<{width}} required {required:>12}  rated {rated:>12}  utilization {util:>5}  "
+            f"{verdict}{mark}")
 
 
 def no_candidate_passes(sentence: str, parts, order, reasons) -> list[str]:
-    """The reasons of a verdict where no candidate passes: ``sentence``, then why the best
-    :data:`REASONED_CANDIDATES` fail (``reasons(row)``: a list of texts)."""
+    """The reasons of a verdict where no candidate passes.
+
+    Parameters
+    ----------
+    sentence : str
+        The first reason (``No gearbox passes every check:``).
+    parts : sequence of str
+        The catalog's part names, by row.
+    order : sequence of int
+        The rows, best first.
+    reasons : callable
+        ``reasons(row)``: why a row fails, a list of texts.
+
+    Returns
+    -------
+    list of str
+        ``sentence``, then why the best :data:`REASONED_CANDIDATES` fail, one line each.
+    """
     return [sentence] + [f"{parts[row]}: {'; '.join(reasons(row))}" for row in order[:REASONED_CANDIDATES]]
 
 
 def row_json(c) -> dict:
-    """What a candidate (:class:`calc.core.selection.Candidate`) says of its catalog row, as the
-    contract writes it: why it does not pass, and the row's file, family, size, source and doubts."""
+    """What a candidate says of its catalog row, as the contract writes it.
+
+    Parameters
+    ----------
+    c : calc.core.selection.Candidate
+        The candidate.
+
+    Returns
+    -------
+    dict
+        Why it does not pass, and the row's file, family, size, source and doubts (null for none).
+    """
     return {"reasons": c.reasons, "catalog": c.catalog, "family": c.family, "size": c.size, "source": c.source,
             "unclear": c.unclear or None}
 
 
 @dataclass(frozen=True)
 class Governing:
-    """The checks that decide a section's verdict (:class:`calc.core.checks.Check`), and whose they
-    are: a candidate's (``part``; ``chosen`` False where none passes and it is only the closest),
-    or the section's own (``part`` None)."""
+    """The checks that decide a section's verdict, and whose they are: a candidate's or the
+    section's own.
+
+    Parameters
+    ----------
+    section : str
+        The section's name.
+    part : str or None
+        The candidate's part; None for the section's own checks.
+    chosen : bool
+        Whether the candidate is chosen; False where none passes and it is only the closest.
+    checks : list of calc.core.checks.Check
+        The governing checks.
+    """
 
     section: str
     part: str | None
@@ -95,15 +201,43 @@ class Governing:
 
 
 def selection_governing(name: str, sel) -> Governing:
-    """The governing checks of a selection's best-ranked candidate (:class:`calc.core.selection.Selection`)."""
+    """The governing checks of a selection's best-ranked candidate.
+
+    Parameters
+    ----------
+    name : str
+        The section's name.
+    sel : calc.core.selection.Selection
+        The selection.
+
+    Returns
+    -------
+    Governing
+        Its best candidate's governing checks, chosen where the selection chose a part.
+    """
     best = sel.best
     return Governing(name, best.part, sel.selected is not None, best.governing)
 
 
 def selection_verdict(sel, what: str, fails: str) -> Verdict:
-    """The verdict of a selection (:class:`calc.core.selection.Selection`): it passes where a part is
-    chosen; it is not decided where the best row passes every check made but a governing check
-    cannot be made (saying which); else no ``what`` passes ``fails``, and why the closest fail."""
+    """The verdict of a selection.
+
+    Parameters
+    ----------
+    sel : calc.core.selection.Selection
+        The selection.
+    what : str
+        What it selects, for the reasons (``gearbox``).
+    fails : str
+        What no candidate passes, for the reasons (``every check``).
+
+    Returns
+    -------
+    Verdict
+        Passes where a part is chosen; not decided where the best row passes every check made but a
+        governing check cannot be made (saying which); else no ``what`` passes ``fails``, and why
+        the closest fail.
+    """
     if sel.selected is not None:
         return Verdict(True)
     best = sel.order[0]
@@ -113,22 +247,55 @@ def selection_verdict(sel, what: str, fails: str) -> Verdict:
 
 
 def shown(order, candidates: int | None):
-    """The first ``candidates`` of a ranking (all for None)."""
+    """The first candidates of a ranking.
+
+    Parameters
+    ----------
+    order : sequence of int
+        The ranking, best first.
+    candidates : int or None
+        How many to show; None: all.
+
+    Returns
+    -------
+    sequence of int
+        The first ``candidates`` of ``order``.
+    """
     return order if candidates is None else order[:candidates]
 
 
 @dataclass
 class Verdict:
-    """Whether a section (or the whole case) passes: True, False, or None when a governing check
-    could not be made; ``reasons`` say which check fails and by how much, or what is missing."""
+    """Whether a section (or the whole case) passes.
+
+    Parameters
+    ----------
+    passes : bool or None, optional
+        True, False, or None when a governing check could not be made.
+    reasons : list of str, optional
+        Which check fails and by how much, or what is missing.
+    """
 
     passes: bool | None = True
     reasons: list = field(default_factory=list)
 
     @staticmethod
     def combine(verdicts: list["Verdict"], nothing: str) -> "Verdict":
-        """One verdict from several: false when one fails, else null when one could not be
-        decided, else true; ``nothing`` is the reason when no section decides anything."""
+        """One verdict from several.
+
+        Parameters
+        ----------
+        verdicts : list of Verdict or None
+            The verdicts; None for a section that decides nothing.
+        nothing : str
+            The reason when no section decides anything.
+
+        Returns
+        -------
+        Verdict
+            False when one fails, else None when one could not be decided, else True; the reasons
+            of all.
+        """
         deciding = [v for v in verdicts if v is not None]
         if not deciding:
             return Verdict(None, [nothing])
@@ -140,8 +307,16 @@ class Verdict:
         return Verdict(True, [])
 
     def to_json(self) -> dict:
+        """The verdict as the contract writes it.
+
+        Returns
+        -------
+        dict
+            ``{"passes", "reasons"}``.
+        """
         return {"passes": self.passes, "reasons": list(self.reasons)}
 
     @property
     def word(self) -> str:
+        """The verdict in one word: PASS, FAIL or NOT DECIDED."""
         return {True: "PASS", False: "FAIL", None: "NOT DECIDED"}[self.passes]

@@ -24,18 +24,25 @@ ORDER = 10
 MOTOR = Declared("motor", (
     Key("peak_torque", "torque", "maximum torque of the motor (S5)", "T_1B", unit="N*m"),
     Key("inertia", "inertia", "motor inertia (the inertia ratio, the rotor term)", "J_motor", unit="kg*cm**2"),
-    Key("rated_torque", "torque", "continuous torque of the motor, at most its peak: the RMS check", "T_1N", unit="N*m"),
+    Key("rated_torque", "torque", "continuous torque of the motor, at most its peak: the RMS check", "T_1N",
+        unit="N*m"),
     Key("max_speed", "speed", "highest speed of the motor", "n_max", unit="rpm"),
-    Key("shaft", "bore", "the motor's shaft as ordered (\"19 mm k6\"): picks the gearbox's clamping hub and so its J_1"),
-    Key("catalog", "catalog", "a motor catalog (\"motors\" is catalogs/motors.csv): every motor in it is checked against the cycle and ranked"),
-    Key("part", "text", "check this motor of the catalog (its ratings and inertia then hold for every section) instead of typed ratings"),
+    Key("shaft", "bore",
+        "the motor's shaft as ordered (\"19 mm k6\"): picks the gearbox's clamping hub and so its J_1"),
+    Key("catalog", "catalog", "a motor catalog (\"motors\" is catalogs/motors.csv): every motor in it is checked "
+        "against the cycle and ranked"),
+    Key("part", "text", "check this motor of the catalog (its ratings and inertia then hold for every section) "
+        "instead of typed ratings"),
     Key("max_inertia_ratio", "dimensionless", "highest load-to-motor inertia ratio λ a catalog motor may have",
         "lambda_max", INERTIA_RATIO_LIMIT),
-    Key("dc_link_voltage", "voltage", "DC-link voltage of the drive: with a catalog's electrical data, the voltage limit", "U_DC", unit="V"),
-    Key("curves", "file", "the catalog motors' peak and S1 curves read from the makers' charts: part, curve, speed [unit], torque [unit], source"),
+    Key("dc_link_voltage", "voltage", "DC-link voltage of the drive: with a catalog's electrical data, the voltage "
+        "limit", "U_DC", unit="V"),
+    Key("curves", "file", "the catalog motors' peak and S1 curves read from the makers' charts: part, curve, "
+        "speed [unit], torque [unit], source"),
 ), "the motor driving the gearbox")
 LOAD = Declared("load", (
-    Key("inertia", "inertia", "load inertia at the output of the gearbox (left out where a [mechanism] gives it)", "J_L", unit="kg*cm**2"),
+    Key("inertia", "inertia", "load inertia at the output of the gearbox (left out where a [mechanism] gives it)",
+        "J_L", unit="kg*cm**2"),
     Key("axial_force", "force", "axial force on the gearbox output", "F_2a", unit="N"),
     Key("radial_force", "force", "radial force on the gearbox output, with its lever_arm", "F_2r", unit="N"),
     Key("lever_arm", "length", "distance of the radial force from the output flange", "x_2", unit="mm"),
@@ -51,14 +58,27 @@ def read(top: Table, case: Case) -> None:
     (``"19 mm k6"``), which picks the gearbox's clamping hub; the forces on the gearbox output
     (``load.axial_force``, ``radial_force``, its ``lever_arm`` from the output flange, and
     ``axial_force_radius``, the axial force's distance from the axis) are checked against the
-    output bearing's ratings."""
+    output bearing's ratings.
+
+    Parameters
+    ----------
+    top : calc.sections.case.Table
+        The case file's top-level table.
+    case : calc.sections.case.Case
+        The case being read; its motor and load fields are written.
+
+    Returns
+    -------
+    None
+    """
     motor = top.table(MOTOR.name, MOTOR.keys)
     if motor and (motor.has("catalog") or motor.has("part")):
         read_catalog_motor(motor, case)
     elif motor:
         for key in ("max_inertia_ratio", "dc_link_voltage", "curves"):
             if motor.has(key):
-                raise CalcError(f"{motor.where(key)}: a key of a catalog motor; give motor.catalog (or motor.part with it) as well")
+                raise CalcError(f"{motor.where(key)}: a key of a catalog motor; "
+                                f"give motor.catalog (or motor.part with it) as well")
         case.motor_peak_torque = motor.positive("peak_torque")
         case.motor_inertia = motor.positive("inertia")
         case.motor_rated_torque = motor.positive("rated_torque")
@@ -82,18 +102,33 @@ def read(top: Table, case: Case) -> None:
             axial_radius=_distance(load, "axial_force_radius"),
         )
         if forces.lever_arm is not None and forces.radial_force is None:
-            raise CalcError(f"{load.where('lever_arm')}: a lever arm is the distance of load.radial_force from the output flange, but no radial_force is given")
+            raise CalcError(f"{load.where('lever_arm')}: a lever arm is the distance of load.radial_force "
+                            f"from the output flange, but no radial_force is given")
         if forces.radial_force is not None and forces.lever_arm is None:
-            raise CalcError(f"{load.where('radial_force')}: the tilting moment needs the force's lever arm from the output flange, load.lever_arm, found none")
+            raise CalcError(f"{load.where('radial_force')}: the tilting moment needs the force's lever arm "
+                            f"from the output flange, load.lever_arm, found none")
         if forces.axial_radius is not None and forces.axial_force is None:
-            raise CalcError(f"{load.where('axial_force_radius')}: the distance of load.axial_force from the axis, but no axial_force is given")
+            raise CalcError(f"{load.where('axial_force_radius')}: the distance of load.axial_force from the axis, "
+                            f"but no axial_force is given")
         case.output_load = forces if forces.given else None
 
 
 def read_catalog_motor(motor: Table, case: Case) -> None:
     """A motor from a catalog: ``part`` names one (its ratings and inertia become the case's, so
     every section checks with them), else every motor of ``catalog`` is ranked by the motor
-    section; typed ratings beside a catalog are an error (they would disagree with its rows)."""
+    section; typed ratings beside a catalog are an error (they would disagree with its rows).
+
+    Parameters
+    ----------
+    motor : calc.sections.case.Table
+        The case's ``[motor]``.
+    case : calc.sections.case.Case
+        The case being read; its motor fields are written.
+
+    Returns
+    -------
+    None
+    """
     typed = [k for k in ("peak_torque", "inertia", "rated_torque", "max_speed") if motor.has(k)]
     if typed:
         raise CalcError(f"{motor.where(typed[0])}: a catalog motor's ratings come from its catalog row; "
@@ -101,7 +136,8 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
     case.motor_catalog = motor.catalogs("catalog") if motor.has("catalog") else "motors"
     case.motor_part = motor.text("part")
     ratio = motor.positive("max_inertia_ratio", what="an inertia ratio")
-    case.motor_max_inertia_ratio = (float(ratio.m_as("")), "motor.max_inertia_ratio" if motor.has("max_inertia_ratio") else "the default")
+    where = "motor.max_inertia_ratio" if motor.has("max_inertia_ratio") else "the default"
+    case.motor_max_inertia_ratio = (float(ratio.m_as("")), where)
     case.motor_dc_link = motor.positive("dc_link_voltage")
     if motor.has("curves"):
         case.motor_curves = measurement_path(motor.data["curves"], case.folder, motor.where("curves"))
@@ -114,21 +150,51 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
             setattr(case, field, value)
         missing = [c for c in ELECTRICAL if np.isnan(cat[c][row].magnitude)]
         if case.motor_dc_link is not None and missing:
-            raise CalcError(f"{motor.where('dc_link_voltage')}: the voltage limit needs the electrical data of {case.motor_part}, "
-                            f"but {cat.catalog_of(row)} (row {cat.lines[row]}) gives no {', '.join(missing)}")
+            raise CalcError(f"{motor.where('dc_link_voltage')}: the voltage limit needs the electrical data of "
+                            f"{case.motor_part}, but {cat.catalog_of(row)} (row {cat.lines[row]}) "
+                            f"gives no {', '.join(missing)}")
 
 
 def motor_ratings(cat, row: int) -> dict:
-    """The case's fields a catalog motor gives (its row of :data:`calc.domain.motor_ratings.SCHEMA`): its
-    maximum torque as T_1B, its rated torque, top speed and rotor inertia."""
+    """The case's fields a catalog motor gives.
+
+    Parameters
+    ----------
+    cat : calc.data.catalog.Catalog
+        A motor catalog, of :data:`calc.domain.motor_ratings.SCHEMA`.
+    row : int
+        The motor's row.
+
+    Returns
+    -------
+    dict
+        Field of :class:`calc.sections.case.Case` -> value: its maximum torque as T_1B, its rated
+        torque, top speed and rotor inertia.
+    """
     return {"motor_peak_torque": cat["M_max"][row], "motor_rated_torque": cat["M_N"][row],
             "motor_max_speed": cat["n_max"][row], "motor_inertia": cat["J"][row]}
 
 
 def with_motor_part(case: Case, part: str | None, where: str) -> Case:
-    """A copy of ``case`` checking the motor ``part`` of its catalog (None: the catalog's choice)."""
+    """A copy of a case checking one motor of its catalog.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case, with a motor catalog.
+    part : str or None
+        The motor; None: the catalog's choice (the ratings left for it to give).
+    where : str
+        Where the part is named, for the error on one the catalog does not hold.
+
+    Returns
+    -------
+    calc.sections.case.Case
+        The copy, with the motor's ratings and inertia.
+    """
     if part is None:
-        return dataclasses.replace(case, motor_part=None, **dict.fromkeys(("motor_peak_torque", "motor_rated_torque", "motor_max_speed", "motor_inertia")))
+        ratings = ("motor_peak_torque", "motor_rated_torque", "motor_max_speed", "motor_inertia")
+        return dataclasses.replace(case, motor_part=None, **dict.fromkeys(ratings))
     cat = motor_catalog(case)
     return dataclasses.replace(case, motor_part=part, **motor_ratings(cat, cat.usable_index(part, where)))
 
@@ -144,7 +210,8 @@ def motor_catalog(case: Case):
     Returns
     -------
     calc.data.catalog.Catalog
-        Of :data:`calc.domain.motor_ratings.SCHEMA` (read once per run, :func:`calc.data.catalog.load_catalog`).
+        Of :data:`calc.domain.motor_ratings.SCHEMA` (read once per run,
+        :func:`calc.data.catalog.load_catalog`).
     """
     return load_catalogs(case.motor_catalog, case.folder, f"{case.path}: motor.catalog", SCHEMA)
 
@@ -164,8 +231,17 @@ ROUNDS = 4
 @dataclass(frozen=True)
 class DriveResult:
     """The case with the ratings and inertia of the motor it is checked with, and that motor where
-    the catalog chose it (None where the case names or types its motor); ``evaluated``, the results
-    of the sections the choice evaluated with that motor, by name."""
+    the catalog chose it.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case with that motor's ratings and inertia.
+    chosen : str, optional
+        The motor the catalog chose; None where the case names or types its motor.
+    evaluated : dict, optional
+        The results of the sections the choice evaluated with that motor, by name.
+    """
 
     case: Case
     chosen: str | None = None

@@ -23,12 +23,30 @@ TABLES = (Declared(NAME, (
     Key("phase", "choice", "accel | const | decel | pause"),
     Key("duration", "time", "duration of the segment", "t_k", unit="s"),
     Key("speed", "speed", "mean output speed during the segment (a pause needs none)", "n_2k", unit="rpm"),
-    Key("torque", "torque", "output torque during the segment; the sign may be negative (a pause needs none)", "T_2k", unit="N*m"),
-), "the load cycle at the gearbox output, one table per segment in time order (or [[move]] or [drive_record] instead)", array=True),)
+    Key("torque", "torque", "output torque during the segment; the sign may be negative (a pause needs none)", "T_2k",
+        unit="N*m"),
+), "the load cycle at the gearbox output, one table per segment in time order (or [[move]] or [drive_record] instead)",
+    array=True),)
 
 
 def read(top: Table) -> Profile:
-    """The ``[[profile]]`` segments of a case, checked; errors name the segment and key."""
+    """The ``[[profile]]`` segments of a case, checked.
+
+    Parameters
+    ----------
+    top : calc.sections.case.Table
+        The case file's top-level table.
+
+    Returns
+    -------
+    calc.domain.profile.Profile
+        The load cycle at the gearbox output.
+
+    Raises
+    ------
+    CalcError
+        Where there is no segment or one is wrong, naming the segment and key.
+    """
     if not top.has("profile"):
         raise CalcError(f"{top.path}: profile: expected one [[profile]] table per segment, found none")
     segments = [
@@ -45,7 +63,35 @@ def read(top: Table) -> Profile:
 
 @dataclass(frozen=True)
 class DutyValues:
-    """The load cycle's values as the outputs print them (:attr:`DutyResult.shown`)."""
+    """The load cycle's values as the outputs print them (:attr:`DutyResult.shown`).
+
+    Parameters
+    ----------
+    t_on : calc.core.units.Value
+        The time in motion [s].
+    t_cycle : calc.core.units.Value
+        The cycle time [s].
+    ED : calc.core.units.Value
+        The duty (E3) [percent].
+    mode : str
+        The operating mode the duty gives, ``S1`` or ``S5``.
+    n_2m : calc.core.units.Value
+        The mean output speed (E1) [rpm].
+    T_2m : calc.core.units.Value
+        The cubic mean output torque (E2) [N*m].
+    Z_h : calc.core.units.Value
+        The cycles per hour [1/hour].
+    f_s : float
+        The shock factor [1].
+    f_s_table : str
+        Where the table of f_s comes from.
+    n_2max : calc.core.units.Value
+        The highest output speed [rpm].
+    T_2max : calc.core.units.Value or None
+        T_2max of the best-ranked gearbox [N*m], where the case has one.
+    T_2max_part : str or None
+        That gearbox.
+    """
 
     t_on: Value
     t_cycle: Value
@@ -57,13 +103,39 @@ class DutyValues:
     f_s: float
     f_s_table: str
     n_2max: Value
-    T_2max: Value | None  # of the best-ranked gearbox, where the case has one
+    T_2max: Value | None
     T_2max_part: str | None
 
 
 @dataclass
 class DutyResult(Result):
-    """The duty, the S1 means and the S5 values of the load cycle."""
+    """The duty, the S1 means and the S5 values of the load cycle.
+
+    Parameters
+    ----------
+    profile : calc.domain.profile.Profile
+        The load cycle.
+    duty : calc.domain.profile.Duty
+        Its duty (E3).
+    n2m : pint.Quantity [rpm]
+        The mean output speed (E1).
+    T2m : pint.Quantity [N*m]
+        The cubic mean output torque (E2).
+    Zh : pint.Quantity [1/hour]
+        The cycles per hour.
+    fs : float
+        The shock factor f_s [1].
+    T2max : pint.Quantity [N*m], optional
+        T_2max of the best-ranked gearbox, when the case has one and the motor's peak torque.
+    T2max_part : str, optional
+        That gearbox.
+    cycle : calc.domain.cycle.SampledCycle, optional
+        The sampled cycle where the motion form derived it.
+    shock_factors : calc.data.bands.BandTable, optional
+        The table f_s is read from (``[gearbox] shock_factors``).
+    steps : list, optional
+        (title, :class:`calc.core.formula.Step`) of ED, n_2m, T_2m and Z_h, as computed here.
+    """
 
     #: The JSON contract writes its objects (duty, continuous, cyclic) at the top level.
     AT_TOP = True
@@ -74,11 +146,10 @@ class DutyResult(Result):
     T2m: object
     Zh: object
     fs: float
-    T2max: object = None  # of the best-ranked gearbox, when the case has one and the motor's peak torque
+    T2max: object = None
     T2max_part: str | None = None
-    cycle: SampledCycle | None = None  # the sampled cycle where the motion form derived it
-    shock_factors: BandTable = SHOCK_FACTORS  # the table f_s is read from ([gearbox] shock_factors)
-    #: (title, calc.core.formula.Step) of ED, n_2m, T_2m and Z_h, as computed here
+    cycle: SampledCycle | None = None
+    shock_factors: BandTable = SHOCK_FACTORS
     steps: list = field(default_factory=list)
 
     @property
@@ -96,7 +167,8 @@ class DutyResult(Result):
             n_2m=Value.of(self.n2m, "rpm", "continuous.n2m"), T_2m=Value.of(self.T2m, "N*m", "continuous.T2m"),
             Z_h=Value.of(self.Zh, "1/hour", "cyclic.Zh"), f_s=self.fs, f_s_table=self.fs_table,
             n_2max=Value.of(self.profile.n_2max, "rpm", "cyclic.n2max"),
-            T_2max=None if self.T2max is None else Value.of(self.T2max, "N*m", "cyclic.T2max"), T_2max_part=self.T2max_part,
+            T_2max=None if self.T2max is None else Value.of(self.T2max, "N*m", "cyclic.T2max"),
+            T_2max_part=self.T2max_part,
         )
 
     def to_json(self, candidates: int | None = None) -> dict:
@@ -104,7 +176,8 @@ class DutyResult(Result):
         out = {
             "duty": {"t_on": v.t_on.to_json(), "t_cycle": v.t_cycle.to_json(), "ED": v.ED.to_json(), "mode": v.mode},
             "continuous": {"n2m": v.n_2m.to_json(), "T2m": v.T_2m.to_json(), "governs": v.mode == "S1"},
-            "cyclic": {"Zh": v.Z_h.to_json(), "fs": v.f_s, "fs_table": v.f_s_table, "n2max": v.n_2max.to_json(), "governs": v.mode == "S5"},
+            "cyclic": {"Zh": v.Z_h.to_json(), "fs": v.f_s, "fs_table": v.f_s_table, "n2max": v.n_2max.to_json(),
+                       "governs": v.mode == "S5"},
         }
         if v.T_2max is not None:
             out["cyclic"]["T2max"] = v.T_2max.to_json()
@@ -121,7 +194,12 @@ class DutyResult(Result):
         ]
 
     def verdict(self) -> Verdict | None:
-        """The load cycle has no checks of its own."""
+        """The load cycle has no checks of its own.
+
+        Returns
+        -------
+        None
+        """
         return None
 
 
@@ -134,7 +212,19 @@ class DutySection(Section):
     REQUIRES = ("gearbox",)
 
     def read(self, top: Table, case: Case) -> None:
-        """The typed segments, where the motion does not derive the load cycle."""
+        """The typed segments, where the motion does not derive the load cycle.
+
+        Parameters
+        ----------
+        top : calc.sections.case.Table
+            The case file's top-level table.
+        case : calc.sections.case.Case
+            The case being read; its profile is written.
+
+        Returns
+        -------
+        None
+        """
         if case.motion is None:
             case.profile = read(top)
 
@@ -162,10 +252,12 @@ def duty_result(case: Case, gearbox) -> DutyResult:
     Returns
     -------
     DutyResult
+        Its duty, S1 means and S5 values, with the steps that compute them.
     """
     p = case.profile
     seg = p.moving_values()
-    steps = [("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle)), ("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),
+    steps = [("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle)),
+             ("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),
              ("Cubic mean output torque", T_2m.step(**seg)), ("Cycles per hour", Z_h.step(t_cycle=p.t_cycle))]
     _, n2m, t2m, zh = (step.result for _, step in steps)
     table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors

@@ -150,6 +150,18 @@ class Earlier:
         return self._results[name]
 
     def get(self, name: str):
+        """The result of a required section, or None where it does not apply to the case.
+
+        Parameters
+        ----------
+        name : str
+            The section's name; one it does not require is an error.
+
+        Returns
+        -------
+        calc.sections.protocol.Result or None
+            Its result.
+        """
         self._required(name)
         return self._results.get(name)
 
@@ -204,16 +216,27 @@ NOTHING_CHECKED = ("Nothing is checked: the case names no gearbox ratio or part,
 
 @dataclass
 class Results:
-    """Every result the case's inputs allow, by section, and the verdict of the case; ``case`` is
-    the case as checked (:meth:`calc.sections.protocol.Section.checked`: with the motor it is
-    checked with)."""
+    """Every result the case's inputs allow, by section, and the verdict of the case.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked (:meth:`calc.sections.protocol.Section.checked`: with the motor it is
+        checked with).
+    sections : dict
+        Section name -> its result (:class:`calc.sections.protocol.Result`), in the order of the
+        results.
+    every : dict, optional
+        Every section's result evaluated, shown or not, by name.
+    """
 
     case: object
-    sections: dict  # section name -> its result (:class:`calc.sections.protocol.Result`), in the order of the results
-    every: dict = field(default_factory=dict, repr=False)  # every section's result evaluated, shown or not
+    sections: dict
+    every: dict = field(default_factory=dict, repr=False)
 
     @property
     def verdict(self) -> Verdict:
+        """The one verdict of the case, from its sections' (:meth:`calc.sections.common.Verdict.combine`)."""
         return Verdict.combine([r.verdict() for r in self.sections.values()], NOTHING_CHECKED)
 
     def governing(self) -> list:
@@ -222,6 +245,7 @@ class Results:
         Returns
         -------
         list of calc.sections.common.Governing
+            In the order of the results.
         """
         return [g for r in self.sections.values() if (g := r.governing()) is not None]
 

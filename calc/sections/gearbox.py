@@ -18,31 +18,48 @@ from ..domain.gearbox import (
 from ..domain.profile import Z_h, n_2m
 from ..core.units import Q_, sig
 from . import coupling
-from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
+from .common import (SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json,
+                     selection_governing, selection_verdict)
 from .protocol import Result, Section
 
 NAME = "gearbox"
 ORDER = 40
 TABLES = (Declared(NAME, (
     Key("ratio", "dimensionless", "ratio of the gearbox, as desired (needed unless a part is named)", "i"),
-    Key("catalog", "catalog", "the gearbox catalog(s): a name in catalogs/ or a path to a CSV file", default="gearboxes"),
+    Key("catalog", "catalog", "the gearbox catalog(s): a name in catalogs/ or a path to a CSV file",
+        default="gearboxes"),
     Key("part", "text", "check this one part instead of ranking the catalog (never a partial row)"),
-    Key("family", "text", "check only gearboxes of this family (the catalog's family column: \"NPT\"), or of these (a list)"),
+    Key("family", "text",
+        "check only gearboxes of this family (the catalog's family column: \"NPT\"), or of these (a list)"),
     Key("hubs", "catalog", "the table of clamping hubs (J_1 per hub), picked by motor.shaft", default="gearbox-hubs"),
-    Key("emergency_stop_torque", "torque", "torque of an emergency stop against the catalog's T_2Not (default T_1B · i)", "T_2stop", unit="N*m"),
-    Key("shock_factors", "factor table", "the table of the shock factor f_s (E4): source, or a path to a CSV file", default="source"),
+    Key("emergency_stop_torque", "torque",
+        "torque of an emergency stop against the catalog's T_2Not (default T_1B · i)", "T_2stop", unit="N*m"),
+    Key("shock_factors", "factor table", "the table of the shock factor f_s (E4): source, or a path to a CSV file",
+        default="source"),
 ), "the gearbox: the rows at the desired ratio (or the named part) checked for the duty and ranked"),)
 RANKING = (
     "passing first; published rows before illustrative ones, and where the case fits a coupling between motor and "
-    "gearbox, rows whose drive train some coupling lifts above 2 f_er (f_1,max) before those it does not; then smallest governing torque rating "
-    "(T_2B in S5, T_2N in S1); then lowest worst utilization (the emergency stop's included where the row gives T_2Not); "
-    "partial rows are never ranked"
+    "gearbox, rows whose drive train some coupling lifts above 2 f_er (f_1,max) before those it does not; "
+    "then smallest governing torque rating (T_2B in S5, T_2N in S1); then lowest worst utilization "
+    "(the emergency stop's included where the row gives T_2Not); partial rows are never ranked"
 )
 
 
 def read(top: Table, case: Case) -> None:
     """Read ``[gearbox]`` into the case: the ratio (above zero; needed unless a part is named),
-    the catalog and the part; the tables of shock factors and of clamping hubs it names."""
+    the catalog and the part; the tables of shock factors and of clamping hubs it names.
+
+    Parameters
+    ----------
+    top : calc.sections.case.Table
+        The case file's top-level table.
+    case : calc.sections.case.Case
+        The case being read; its gearbox fields are written.
+
+    Returns
+    -------
+    None
+    """
     gearbox = top.table(NAME, TABLES[0].keys)
     if not gearbox:
         return
@@ -52,7 +69,8 @@ def read(top: Table, case: Case) -> None:
     case.gearbox_part = gearbox.text("part")
     case.gearbox_family = gearbox.texts("family")
     case.emergency_stop_torque = gearbox.positive("emergency_stop_torque")
-    case.shock_factors = factor_table("shock", gearbox.text("shock_factors"), case.folder, gearbox.where("shock_factors"))
+    case.shock_factors = factor_table("shock", gearbox.text("shock_factors"), case.folder,
+                                      gearbox.where("shock_factors"))
     case.gearbox_hubs = load_catalogs(case.gearbox_hubs, case.folder, gearbox.where("hubs"), HUB_SCHEMA)
 
 
@@ -76,17 +94,33 @@ def catalogs(case: Case) -> tuple:
         unknown = [f for f in case.gearbox_family if not (catalog.family == f).any()]
         if unknown:
             known = ", ".join(sorted(set(catalog.family.tolist())))
-            raise CalcError(f"{where}.family: the catalog {catalog.shown_name} has no gearbox of family {unknown[0]!r}; its families are {known}")
+            raise CalcError(f"{where}.family: the catalog {catalog.shown_name} has no gearbox of family "
+                            f"{unknown[0]!r}; its families are {known}")
         if case.gearbox_part is not None:
             family = catalog.family[catalog.index(case.gearbox_part, f"{where}.part")]
             if family not in case.gearbox_family:
-                raise CalcError(f"{where}.part: {case.gearbox_part} is of family {family!r}, but gearbox.family is {' or '.join(map(repr, case.gearbox_family))}")
+                families = " or ".join(map(repr, case.gearbox_family))
+                raise CalcError(f"{where}.part: {case.gearbox_part} is of family {family!r}, "
+                                f"but gearbox.family is {families}")
         catalog = catalog.rows(np.isin(catalog.family, case.gearbox_family))
     return catalog, case.gearbox_hubs
 
 
 def selection_inputs(case: Case) -> dict:
-    """What :func:`calc.domain.gearbox.select_gearbox` takes from the case beside the profile and rows."""
+    """What :func:`calc.domain.gearbox.select_gearbox` takes from the case beside the profile and rows.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+
+    Returns
+    -------
+    dict
+        Its keyword arguments: the motor's peak torque and inertia, the load's inertia, the
+        emergency stop's torque, the forces on the output, the motor shaft's nominal diameter,
+        the table of shock factors and the coupling's span.
+    """
     return dict(
         motor_peak_torque=case.motor_peak_torque, motor_inertia=case.motor_inertia, load_inertia=case.load_inertia,
         emergency_stop_torque=case.emergency_stop_torque, output_load=case.output_load,
@@ -102,11 +136,13 @@ def gearbox_selection(case: Case) -> GearboxSelection:
     Parameters
     ----------
     case : calc.sections.case.Case
-        The case as checked, with the motor it is checked with (:class:`calc.sections.drive.DriveResult`).
+        The case as checked, with the motor it is checked with
+        (:class:`calc.sections.drive.DriveResult`).
 
     Returns
     -------
     calc.domain.gearbox.GearboxSelection
+        The rows checked and ranked, with a note naming the families where the case keeps to some.
     """
     where = f"{case.path}: gearbox"
     catalog, hubs = catalogs(case)
@@ -115,23 +151,33 @@ def gearbox_selection(case: Case) -> GearboxSelection:
         part_ratio = rows["ratio"][0].m_as("")
         if case.ratio is not None and not same_ratio(part_ratio, case.ratio.m_as("")):
             raise CalcError(
-                f"{where}.part: {case.gearbox_part} has ratio {part_ratio:g}, but gearbox.ratio is {case.ratio.m_as(''):g}"
+                f"{where}.part: {case.gearbox_part} has ratio {part_ratio:g}, "
+                f"but gearbox.ratio is {case.ratio.m_as(''):g}"
             )
     else:
         rows = rows_at_ratio(catalog, case.ratio, f"{where}.ratio")
     selection = select_gearbox(case.profile, rows, hubs=hubs, **selection_inputs(case))
     if case.gearbox_family:
-        selection.notes.append(f"only gearboxes of family {' or '.join(case.gearbox_family)} are checked (gearbox.family)")
+        families = " or ".join(case.gearbox_family)
+        selection.notes.append(f"only gearboxes of family {families} are checked (gearbox.family)")
     return selection
 
 
 @dataclass
 class GearboxResult(Result):
     """The ranked gearbox candidates of a case and the part chosen, with the calculations of the
-    best-ranked row's checks as steps."""
+    best-ranked row's checks as steps.
+
+    Parameters
+    ----------
+    selection : calc.domain.gearbox.GearboxSelection
+        The rows checked and ranked.
+    steps : list, optional
+        (title, :class:`calc.core.formula.Step`, what it is compared with) of the best-ranked
+        row's checks (:func:`check_steps`).
+    """
 
     selection: GearboxSelection
-    #: (title, calc.core.formula.Step, what it is compared with) of the best-ranked row's checks
     steps: list = field(default_factory=list)
     ranking = RANKING
 
@@ -160,7 +206,8 @@ class GearboxResult(Result):
             "candidate_count": len(s.order),
             "candidates": listed,
             "selected": s.selected,
-            "best_of_family": {str(s.catalog.family[row]): str(s.catalog.parts[row]) for row in s.order[s.best_of_family[s.order]]},
+            "best_of_family": {str(s.catalog.family[row]): str(s.catalog.parts[row])
+                               for row in s.order[s.best_of_family[s.order]]},
             "notes": list(s.notes or []),
         }
 
@@ -171,7 +218,8 @@ class GearboxResult(Result):
         for c in s.candidates(candidates):
             verdict = {True: "PASS", False: "FAIL", None: "OPEN"}[c.passes]
             lam = "" if c.inertia_ratio is None else f", inertia ratio {c.inertia_ratio:.2f}"
-            hub = "" if c.J_1.value is None else f", J_1 {c.J_1}" + ("" if c.J_1_hub.value is None else f" ({c.J_1_hub} hub)")
+            hub_size = "" if c.J_1_hub.value is None else f" ({c.J_1_hub} hub)"
+            hub = "" if c.J_1.value is None else f", J_1 {c.J_1}" + hub_size
             best = f", smallest adequate {c.family}" if c.best_of_family else ""
             where = f" [{c.catalog}]" if several else ""
             lines.append(f"  {verdict}  {c.part}{where}{' (illustrative)' if c.illustrative else ''}{best}{lam}{hub}")
@@ -182,7 +230,8 @@ class GearboxResult(Result):
         if candidates is not None and len(s.order) > candidates:
             lines.append(f"  ... {len(s.order) - candidates} more candidates (--all-candidates lists them)")
         lines += [f"  note: {note}" for note in s.notes or []]
-        lines.append(f"Selected gearbox: {s.selected or ('none: ' + s.not_made[0].not_made if s.not_made else 'none passes')}")
+        none = "none: " + s.not_made[0].not_made if s.not_made else "none passes"
+        lines.append(f"Selected gearbox: {s.selected or none}")
         return lines
 
     def governing(self) -> Governing:
@@ -193,30 +242,47 @@ class GearboxResult(Result):
 
     def verdict(self) -> Verdict:
         s = self.selection
-        ratios = ", ".join(sorted({f"{r:g}" for r in np.unique(s.catalog["ratio"].m_as(""))}))  # distinct first: 10^5 rows
+        # Distinct first: a catalog may have 10^5 rows.
+        ratios = ", ".join(sorted({f"{r:g}" for r in np.unique(s.catalog["ratio"].m_as(""))}))
         return selection_verdict(s, f"gearbox of ratio {ratios} in {s.catalog.shown_name}", f"the {s.mode} checks")
 
 
 def check_steps(case: Case, sel: GearboxSelection) -> list:
-    """The calculations of the best-ranked row's checks, each as (title, Step, what it is compared
-    with): the input speeds, T_2max with the case's shock factor, the inertia ratio with the J_1 of
-    the row's clamping hub and the tilting moment of the output bearing."""
+    """The calculations of the best-ranked row's checks: the input speeds, T_2max with the case's
+    shock factor, the inertia ratio with the J_1 of the row's clamping hub and the tilting moment
+    of the output bearing.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    sel : calc.domain.gearbox.GearboxSelection
+        Its gearbox rows, ranked.
+
+    Returns
+    -------
+    list of tuple
+        (title, :class:`calc.core.formula.Step`, what it is compared with) of each.
+    """
     p = case.profile
     row = int(sel.order[0])
     cat = sel.catalog
     i = cat["ratio"][row]
     table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors
     seg = p.moving_values()
-    out = [("Input speed at the mean output speed (S1)", n_1.step(n_2=n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"]), i=i), "compared with n_1N"),
+    n_2 = n_2m(n_2k=seg["n_2k"], t_k=seg["t_k"])
+    out = [("Input speed at the mean output speed (S1)", n_1.step(n_2=n_2, i=i), "compared with n_1N"),
            ("Input speed at the highest output speed (S5)", n_1.step(n_2=p.n_2max, i=i), "compared with n_1max")]
     if case.motor_peak_torque is not None:
         f_s = Q_(float(shock_factor(Z_h(t_cycle=p.t_cycle), table)), "")
-        out.append(("Maximum output torque", T_2max.step(T_1B=case.motor_peak_torque, i=i, f_s=f_s, eta=cat["eta"][row]), "compared with T_2B"))
+        step = T_2max.step(T_1B=case.motor_peak_torque, i=i, f_s=f_s, eta=cat["eta"][row])
+        out.append(("Maximum output torque", step, "compared with T_2B"))
     if sel.inertia_ratio is not None and not np.isnan(sel.J_1[row].magnitude):
         hub = sel.J_1_hub[row]
-        which = "errata E6" + ("" if np.isnan(hub.magnitude) else f"; J_1 for the {sig(hub.m_as('mm'))} mm clamping hub")
-        out.append(("Load to motor inertia ratio",
-                    inertia_ratio.step(J_1=sel.J_1[row], J_L=case.load_inertia, i=i, J_motor=case.motor_inertia), which))
+        hub_size = "" if np.isnan(hub.magnitude) else f"; J_1 for the {sig(hub.m_as('mm'))} mm clamping hub"
+        which = "errata E6" + hub_size
+        step = inertia_ratio.step(J_1=sel.J_1[row], J_L=case.load_inertia, i=i, J_motor=case.motor_inertia)
+        out.append(("Load to motor inertia ratio", step, which))
     load = case.output_load
     if load is not None:
         zero, z_2 = Q_(0.0, "mm"), cat["z_2"][row]
@@ -226,7 +292,8 @@ def check_steps(case: Case, sel: GearboxSelection) -> list:
             F_2r=load.radial_force if load.radial_force is not None else Q_(0.0, "N"),
             x_2=load.lever_arm if load.lever_arm is not None else zero,
             z_2=zero if np.isnan(z_2.magnitude) else z_2,
-        ), "compared with M_2K; WITTENSTEIN's form" + ("; z_2 = 0, the catalog gives none" if np.isnan(z_2.magnitude) else "")))
+        ), "compared with M_2K; WITTENSTEIN's form" + ("; z_2 = 0, the catalog gives none" if np.isnan(z_2.magnitude)
+                                                        else "")))
     return out
 
 

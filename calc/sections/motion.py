@@ -1,7 +1,8 @@
 """The load cycle derived instead of typed (``docs/case-format.md``, "Motion and mechanism"):
 the moves of the load (``[[move]]``) through its mechanism (``[mechanism]``), or a time series a
-drive recorded (``[drive_record]``), sampled at the gearbox output (:class:`calc.domain.cycle.SampledCycle`)
-and cut into the seed's segments, which the duty section uses as if they were typed."""
+drive recorded (``[drive_record]``), sampled at the gearbox output
+(:class:`calc.domain.cycle.SampledCycle`) and cut into the seed's segments, which the duty section
+uses as if they were typed."""
 
 from __future__ import annotations
 
@@ -26,7 +27,8 @@ from .protocol import Result, Section
 NAME = "motion"
 ORDER = 20
 #: Per linear type: the key of its radius (a lead or a diameter) and of its own inertia.
-OWN_KEYS = {"ball-screw": ("lead", "screw_inertia"), "rack-pinion": ("pitch_diameter", "pinion_inertia"), "belt": ("pulley_diameter", "pulley_inertia")}
+OWN_KEYS = {"ball-screw": ("lead", "screw_inertia"), "rack-pinion": ("pitch_diameter", "pinion_inertia"),
+            "belt": ("pulley_diameter", "pulley_inertia")}
 _LINEAR = tuple(OWN_KEYS)
 #: The keys of a body of the load ([[mechanism.body]], :class:`calc.domain.inertia.Body`): the dimension
 #: each key gives, by its formula name.
@@ -39,26 +41,30 @@ BODY_KEYS = (
     Key("depth", "length", "other side of a plate across the axis", "b", unit="mm"),
     Key("mass", "mass", "mass of the body (or its density)", "m", unit="kg"),
     Key("density", "density", "density of its material (or its mass)", "rho", unit="kg/m**3"),
-    Key("offset", "length", "distance of its own axis from the axis of rotation (the parallel-axis term)", "e", "0 mm", "mm"),
+    Key("offset", "length", "distance of its own axis from the axis of rotation (the parallel-axis term)", "e",
+        "0 mm", "mm"),
 )
 BODY_DIMENSIONS = {"diameter": "D", "inner_diameter": "d_i", "length": "L", "width": "a", "depth": "b"}
 MECHANISM = Declared("mechanism", (
     Key("type", "choice", "rotary | ball-screw | rack-pinion | belt; the type says which keys below it takes"),
     Key("holding_brake", "flag", "a brake holds the load in the dwells (no torque there)", default=False),
-    Key("inertia", "inertia", "inertia of the load at the gearbox output (with bodies: besides them)", "J_L", unit="kg*cm**2", only=("rotary",)),
+    Key("inertia", "inertia", "inertia of the load at the gearbox output (with bodies: besides them)", "J_L",
+        unit="kg*cm**2", only=("rotary",)),
     Key("body", "tables", "bodies of the load whose inertia the geometry gives, added to inertia ([[mechanism.body]])",
         only=("rotary",), keys=BODY_KEYS),
-    Key("friction_torque", "torque", "friction torque of the table, against the motion while it moves", "T_f", "0 N*m", "N*m", ("rotary",)),
-    Key("process_torque", "torque", "process torque, against the motion while it moves", "T_p", "0 N*m", "N*m", ("rotary",)),
+    Key("friction_torque", "torque", "friction torque of the table, against the motion while it moves", "T_f",
+        "0 N*m", "N*m", ("rotary",)),
+    Key("process_torque", "torque", "process torque, against the motion while it moves", "T_p", "0 N*m", "N*m",
+        ("rotary",)),
     Key("mass", "mass", "moved mass", "m", unit="kg", only=_LINEAR),
     Key("friction_coefficient", "dimensionless", "friction coefficient of the guide", "mu", 0, only=_LINEAR),
     Key("incline", "angle", "incline of the axis (90°: vertical, up is forwards)", "theta", "0 deg", "deg", _LINEAR),
     Key("force", "force", "process force, against the motion while it moves", "F_p", "0 N", "N", _LINEAR),
     Key("eta", "dimensionless", "efficiency of the mechanism, above 0 and at most 1", "eta", only=_LINEAR),
-    Key("counterweight", "mass", "counterweight on a rope over the same lead or radius, travelling the other way: its mass "
-        "accelerates with the load, its weight pulls against the load's", "m_c", "0 kg", "kg", _LINEAR),
-    Key("drag_torque", "torque", "drag torque at the screw, pinion or pulley shaft (preload, seals), against the motion while "
-        "it moves, outside the efficiency", "T_d", "0 N*m", "N*m", _LINEAR),
+    Key("counterweight", "mass", "counterweight on a rope over the same lead or radius, travelling the other way: "
+        "its mass accelerates with the load, its weight pulls against the load's", "m_c", "0 kg", "kg", _LINEAR),
+    Key("drag_torque", "torque", "drag torque at the screw, pinion or pulley shaft (preload, seals), against the "
+        "motion while it moves, outside the efficiency", "T_d", "0 N*m", "N*m", _LINEAR),
     Key("lead", "length", "lead of the screw: travel per revolution", "p", unit="mm", only=("ball-screw",)),
     Key("screw_inertia", "inertia", "own inertia of the screw", "J_M", "0 kg*m**2", "kg*cm**2", ("ball-screw",)),
     Key("pitch_diameter", "length", "pitch diameter of the pinion", "d", unit="mm", only=("rack-pinion",)),
@@ -71,11 +77,13 @@ MOVE = Declared("move", (
     Key("time", "time", "time of the move", "t_m", unit="s"),
     Key("accel_time", "time", "acceleration time (a trapezoid; accel + decel = time is a triangle)", "t_a", unit="s"),
     Key("decel_time", "time", "deceleration time (default: accel_time)", "t_d", unit="s"),
-    Key("jerk_time", "time", "an S-curve: each ramp starts and ends with constant jerk this long, at most half a ramp", "t_j", unit="s"),
+    Key("jerk_time", "time", "an S-curve: each ramp starts and ends with constant jerk this long, at most half a ramp",
+        "t_j", unit="s"),
     Key("dwell", "time", "a pause of this time, instead of a move (takes no other key)", unit="s"),
 ), "the moves of the load in order, one table each; the cycle repeats after the last", array=True)
 RECORD = Declared("drive_record", (
-    Key("file", "file", "a drive's record: columns time [s], speed [rpm] and optionally torque [N*m] (else the mechanism's)"),
+    Key("file", "file",
+        "a drive's record: columns time [s], speed [rpm] and optionally torque [N*m] (else the mechanism's)"),
 ), "a time series a drive recorded, instead of the moves")
 #: The tables of a case that give its motion; each is also a key at the case file's top level.
 TABLES = (MECHANISM, MOVE, RECORD)
@@ -86,28 +94,61 @@ RECORD_TORQUE = Column("torque", "torque", "output torque")
 
 
 def keys_of(type_: str) -> tuple[Key, ...]:
-    """The keys a mechanism of one type takes."""
+    """The keys a mechanism of one type takes.
+
+    Parameters
+    ----------
+    type_ : str
+        The mechanism's type (:data:`calc.domain.mechanism.TYPES`).
+
+    Returns
+    -------
+    tuple of Key
+        Those of every type and those of this one, in declared order.
+    """
     return tuple(k for k in MECHANISM.keys if not k.only or type_ in k.only)
 
 
 @dataclass
 class Motion:
-    """The motion form of a case: its mechanism (None for a drive record with its torque), its
-    moves (empty for a drive record), the samples and the sampled cycle at the gearbox output,
-    and the seed's segments as the profile the other sections use."""
+    """The motion form of a case: the mechanism and its moves, or a drive record, sampled at the
+    gearbox output and cut into the seed's segments.
+
+    Parameters
+    ----------
+    mechanism : calc.domain.mechanism.Mechanism or None
+        The mechanism; None for a drive record with its torque.
+    moves : list of calc.domain.motion.Move
+        The moves at the gearbox output; empty for a drive record.
+    distances : list
+        Per move: the distance as the case gives it (None for a dwell).
+    samples : calc.domain.motion.Samples
+        The samples at the gearbox output.
+    cycle : calc.domain.cycle.SampledCycle
+        The sampled cycle at the gearbox output.
+    segments : calc.domain.motion.Segments
+        The seed's segments.
+    profile : calc.domain.profile.Profile
+        Those segments as the profile the other sections use.
+    record : str, optional
+        The drive record's file as the case names it.
+    tables : dict, optional
+        The raw tables it was derived from, by name (mechanism, move, drive_record).
+    """
 
     mechanism: Mechanism | None
     moves: list
-    distances: list  # per move: the distance as the case gives it (None for a dwell)
+    distances: list
     samples: Samples
     cycle: SampledCycle
-    segments: object  # calc.domain.motion.Segments
+    segments: object
     profile: Profile
-    record: str | None = None  # the drive record's file as the case names it
-    tables: dict = field(default_factory=dict)  # the raw tables it was derived from, by name (mechanism, move, drive_record)
+    record: str | None = None
+    tables: dict = field(default_factory=dict)
 
     @property
     def J_L(self):
+        """The load's inertia at the gearbox output the mechanism gives; None without a mechanism."""
         return None if self.mechanism is None else self.mechanism.load_inertia
 
     @property
@@ -126,19 +167,45 @@ class Motion:
 
 
 def nonnegative(table: Table, key: str):
-    """:meth:`Table.quantity` (one with a default), which must not be below zero."""
+    """A quantity (:meth:`calc.sections.case.Table.quantity`), which must not be below zero.
+
+    Parameters
+    ----------
+    table : calc.sections.case.Table
+        The table.
+    key : str
+        A key of it with a declared default.
+
+    Returns
+    -------
+    pint.Quantity [the key's kind]
+        The quantity, or its default.
+    """
     q = table.quantity(key)
     if q.magnitude < 0:
-        raise CalcError(f"{table.where(key)}: expected {kind_phrase(table.kind(key))} of zero or more, found {table.data[key]!r}")
+        raise CalcError(f"{table.where(key)}: expected {kind_phrase(table.kind(key))} of zero or more, "
+                        f"found {table.data[key]!r}")
     return q
 
 
 def read_mechanism(top: Table) -> Mechanism | None:
-    """``[mechanism]``, checked: its type, then only the keys of that type."""
+    """``[mechanism]``, checked: its type, then only the keys of that type.
+
+    Parameters
+    ----------
+    top : calc.sections.case.Table
+        The case file's top-level table.
+
+    Returns
+    -------
+    calc.domain.mechanism.Mechanism or None
+        The mechanism; None where the case gives none.
+    """
     raw = top.data.get("mechanism")
     if raw is None:
         return None
-    type_ = Table(top.path, MECHANISM.name, raw, tuple(raw) if isinstance(raw, dict) else ()).text("type", required=True)
+    any_keys = tuple(raw) if isinstance(raw, dict) else ()
+    type_ = Table(top.path, MECHANISM.name, raw, any_keys).text("type", required=True)
     if type_ not in TYPES:
         raise CalcError(f"{top.path}: mechanism.type: expected one of {', '.join(TYPES)}, found {type_!r}")
     allowed = keys_of(type_)
@@ -146,7 +213,8 @@ def read_mechanism(top: Table) -> Mechanism | None:
     for key in raw:
         owner = next((t for t in TYPES if key in key_names(keys_of(t))), None)
         if key not in names and owner is not None:
-            raise CalcError(f"{top.path}: mechanism.{key}: a key of a {owner} mechanism; a {type_} mechanism takes {', '.join(names)}")
+            raise CalcError(f"{top.path}: mechanism.{key}: a key of a {owner} mechanism; "
+                            f"a {type_} mechanism takes {', '.join(names)}")
     t = Table(top.path, MECHANISM.name, raw, allowed)
     brake = t.data.get("holding_brake", MECHANISM.key("holding_brake").default)
     if not isinstance(brake, bool):
@@ -165,7 +233,8 @@ def read_mechanism(top: Table) -> Mechanism | None:
     radius_key, own_key = OWN_KEYS[type_]
     size = t.positive(radius_key, required=True)
     return Mechanism(
-        type_, holding_brake=brake, mass=t.positive("mass", required=True), friction_coefficient=nonnegative(t, "friction_coefficient"),
+        type_, holding_brake=brake, mass=t.positive("mass", required=True),
+        friction_coefficient=nonnegative(t, "friction_coefficient"),
         incline=t.quantity("incline"), force=t.quantity("force"), eta=eta, own_inertia=nonnegative(t, own_key),
         counterweight=nonnegative(t, "counterweight"), drag_torque=nonnegative(t, "drag_torque"),
         **({"lead": size} if type_ == "ball-screw" else {"diameter": size}),
@@ -174,7 +243,18 @@ def read_mechanism(top: Table) -> Mechanism | None:
 
 def read_body(t: Table) -> Body:
     """One ``[[mechanism.body]]``: its shape, the dimensions the shape takes (others refused), its
-    mass or its density (one of them), and its offset."""
+    mass or its density (one of them), and its offset.
+
+    Parameters
+    ----------
+    t : calc.sections.case.Table
+        The body's table.
+
+    Returns
+    -------
+    calc.domain.inertia.Body
+        The body.
+    """
     shape = t.text("shape", required=True)
     if shape not in SHAPES:
         raise CalcError(f"{t.where('shape')}: expected one of {', '.join(SHAPES)}, found {shape!r}")
@@ -184,17 +264,34 @@ def read_body(t: Table) -> Body:
         if name in needed:
             dimensions[name] = t.positive(key, required=True)
         elif t.has(key):
-            raise CalcError(f"{t.where(key)}: a {shape} takes {', '.join(k for k, n in BODY_DIMENSIONS.items() if n in needed)}, not {key}")
+            takes = ", ".join(k for k, n in BODY_DIMENSIONS.items() if n in needed)
+            raise CalcError(f"{t.where(key)}: a {shape} takes {takes}, not {key}")
     if shape == "hollow-cylinder" and not dimensions["d_i"] < dimensions["D"]:
-        raise CalcError(f"{t.where('inner_diameter')}: expected an inner diameter below the outer {t.data['diameter']!r}, found {t.data['inner_diameter']!r}")
+        raise CalcError(f"{t.where('inner_diameter')}: expected an inner diameter below the outer "
+                        f"{t.data['diameter']!r}, found {t.data['inner_diameter']!r}")
     if t.has("mass") == t.has("density"):
-        raise CalcError(f"{t.where('mass')}: give the body's mass or its material's density, one of them, found {'both' if t.has('mass') else 'neither'}")
-    return Body(shape, dimensions, mass=t.positive("mass"), density=t.positive("density"), offset=nonnegative(t, "offset"))
+        raise CalcError(f"{t.where('mass')}: give the body's mass or its material's density, one of them, "
+                        f"found {'both' if t.has('mass') else 'neither'}")
+    return Body(shape, dimensions, mass=t.positive("mass"), density=t.positive("density"),
+                offset=nonnegative(t, "offset"))
 
 
 def read_move(t: Table, mechanism: Mechanism):
-    """One ``[[move]]``: a dwell, or a distance in a time with its ramps; returns the
-    :class:`calc.domain.motion.Move` at the gearbox output and the distance as given (None for a dwell)."""
+    """One ``[[move]]``: a dwell, or a distance in a time with its ramps.
+
+    Parameters
+    ----------
+    t : calc.sections.case.Table
+        The move's table.
+    mechanism : calc.domain.mechanism.Mechanism
+        The mechanism that carries the load: the distance's kind and its way to the output.
+
+    Returns
+    -------
+    tuple
+        The :class:`calc.domain.motion.Move` at the gearbox output and the distance as given
+        (None for a dwell).
+    """
     if t.has("dwell"):
         other = next((k for k in t.data if k != "dwell"), None)
         if other is not None:
@@ -206,9 +303,11 @@ def read_move(t: Table, mechanism: Mechanism):
     try:
         distance = parse_quantity(t.data["distance"], distance_kind, t.where("distance"))
     except CalcError as exc:
-        raise CalcError(f"{exc} (a {mechanism.type} mechanism moves its load by {kind_phrase(distance_kind)})") from None
+        how = f"a {mechanism.type} mechanism moves its load by {kind_phrase(distance_kind)}"
+        raise CalcError(f"{exc} ({how})") from None
     if distance.magnitude == 0:
-        raise CalcError(f"{t.where('distance')}: expected a distance other than zero (a pause is a dwell), found {t.data['distance']!r}")
+        raise CalcError(f"{t.where('distance')}: expected a distance other than zero (a pause is a dwell), "
+                        f"found {t.data['distance']!r}")
     time = t.positive("time", required=True).m_as("s")
     accel = t.positive("accel_time", required=True).m_as("s")
     decel = t.positive("decel_time")
@@ -222,45 +321,90 @@ def read_move(t: Table, mechanism: Mechanism):
     jerk = 0.0 if jerk is None else jerk.m_as("s")
     if jerk > min(accel, decel) / 2 * (1 + 1e-12):
         raise CalcError(
-            f"{t.where('jerk_time')}: expected a jerk time of at most half the acceleration and the deceleration time "
-            f"({min(accel, decel) / 2:g} s), found {jerk:g} s"
+            f"{t.where('jerk_time')}: expected a jerk time of at most half the acceleration and the deceleration "
+            f"time ({min(accel, decel) / 2:g} s), found {jerk:g} s"
         )
     phi = mechanism.to_output(distance).m_as("rad")
     return Move(phi, time, accel, decel, jerk), distance
 
 
 def derive(top: Table) -> Motion | None:
-    """The motion form of a case from its raw top-level tables (``top``, as the file reads): the
-    mechanism and its moves, or a drive record; None where the case types its load cycle. Errors
-    name the key. A case file is read through here, and so is a copy of a case whose mechanism or
-    moves were changed (the design review, :func:`calc.review.inputs.with_inputs`)."""
+    """The motion form of a case from its raw top-level tables: the mechanism and its moves, or a
+    drive record. A case file is read through here, and so is a copy of a case whose mechanism or
+    moves were changed (the design review, :func:`calc.review.inputs.with_inputs`).
+
+    Parameters
+    ----------
+    top : calc.sections.case.Table
+        The case file's top-level table, as the file reads.
+
+    Returns
+    -------
+    Motion or None
+        The motion; None where the case types its load cycle.
+
+    Raises
+    ------
+    CalcError
+        On bad input, naming the key.
+    """
     forms = [f for f in FORMS if top.has(f)]
     if len(forms) > 1:
-        raise CalcError(f"{top.path}: {forms[1]}: the load cycle is given as {forms[0]} already; give one of [[profile]], [[move]] or [drive_record]")
+        raise CalcError(f"{top.path}: {forms[1]}: the load cycle is given as {forms[0]} already; "
+                        f"give one of [[profile]], [[move]] or [drive_record]")
     mechanism = read_mechanism(top)
     if not forms or forms == ["profile"]:
         if mechanism is not None:
-            raise CalcError(f"{top.path}: mechanism: a mechanism needs the moves of its load ([[move]]) or a [drive_record], found {'[[profile]]' if forms else 'neither'}")
+            raise CalcError(f"{top.path}: mechanism: a mechanism needs the moves of its load ([[move]]) "
+                            f"or a [drive_record], found {'[[profile]]' if forms else 'neither'}")
         return None
     if mechanism is not None and isinstance(top.data.get("load"), dict) and "inertia" in top.data["load"]:
-        raise CalcError(f"{top.path}: load.inertia: the mechanism gives the load's inertia J_L; leave load.inertia out")
+        raise CalcError(f"{top.path}: load.inertia: the mechanism gives the load's inertia J_L; "
+                        f"leave load.inertia out")
     motion = read_moves(top, mechanism) if forms == ["move"] else read_record(top, mechanism)
     motion.tables = {name: top.data[name] for name in key_names(TABLES) if name in top.data}
     return motion
 
 
 def apply(case: Case, motion: Motion) -> None:
-    """Give ``case`` the derived ``motion``: its load cycle (the seed's segments) and, where the
-    mechanism gives it, the load's inertia J_L (which the file then leaves out of ``[load]``)."""
+    """Give a case its derived motion: its load cycle (the seed's segments) and, where the
+    mechanism gives it, the load's inertia J_L (which the file then leaves out of ``[load]``).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case being read; its motion, profile and load inertia are written.
+    motion : Motion
+        The derived motion (:func:`derive`).
+
+    Returns
+    -------
+    None
+    """
     case.motion, case.profile = motion, motion.profile
     if motion.J_L is not None:
         case.load_inertia = motion.J_L
 
 
 def read_moves(top: Table, mechanism: Mechanism | None) -> Motion:
+    """The motion of the ``[[move]]`` tables through the mechanism.
+
+    Parameters
+    ----------
+    top : calc.sections.case.Table
+        The case file's top-level table.
+    mechanism : calc.domain.mechanism.Mechanism or None
+        The mechanism; None is an error (moves need one).
+
+    Returns
+    -------
+    Motion
+        The moves sampled, the torque the mechanism gives.
+    """
     where = f"{top.path}: move"
     if mechanism is None:
-        raise CalcError(f"{where}: moves need the mechanism that carries the load ([mechanism] with its type), found none")
+        raise CalcError(f"{where}: moves need the mechanism that carries the load ([mechanism] with its type), "
+                        f"found none")
     read_rows = [read_move(t, mechanism) for t in top.tables(MOVE.name, MOVE.keys)]
     if not read_rows:
         raise CalcError(f"{where}: expected one [[move]] table per move, found none")
@@ -272,6 +416,20 @@ def read_moves(top: Table, mechanism: Mechanism | None) -> Motion:
 
 
 def read_record(top: Table, mechanism: Mechanism | None) -> Motion:
+    """The motion of a ``[drive_record]``: its samples, with its torque or the mechanism's.
+
+    Parameters
+    ----------
+    top : calc.sections.case.Table
+        The case file's top-level table.
+    mechanism : calc.domain.mechanism.Mechanism or None
+        The mechanism; needed where the record has no torque column.
+
+    Returns
+    -------
+    Motion
+        The record sampled, its torque the mean of each pair of rows (else the mechanism's).
+    """
     t = top.table(RECORD.name, RECORD.keys)
     path = measurement_path(t.data.get("file"), top.path.parent, t.where("file"))
     m = read_measurement(path, RECORD_COLUMNS, optional=(RECORD_TORQUE,))
@@ -280,7 +438,8 @@ def read_record(top: Table, mechanism: Mechanism | None) -> Motion:
         raise CalcError(f"{path}: expected at least two rows (a record of a cycle), found one")
     torque = m.columns.get("torque")
     if torque is None and mechanism is None:
-        raise CalcError(f"{t.where('file')}: the record has no torque column, so the torque comes from a [mechanism], found none")
+        raise CalcError(f"{t.where('file')}: the record has no torque column, so the torque comes from a [mechanism], "
+                        f"found none")
     s = record_samples(time, speed)
     if torque is None:
         out = mechanism.torque(s.speed, s.acceleration)
@@ -295,7 +454,8 @@ def read_record(top: Table, mechanism: Mechanism | None) -> Motion:
 def _motion(mechanism, moves, distances, s: Samples, torque: np.ndarray, where: str) -> Motion:
     g = segments(s, torque)
     rows = [
-        (PHASES[p], Q_(t, "s"), None if PHASES[p] == "pause" else Q_(n, "rad/s"), None if PHASES[p] == "pause" else Q_(T, "N*m"))
+        (PHASES[p], Q_(t, "s"), None if PHASES[p] == "pause" else Q_(n, "rad/s"),
+         None if PHASES[p] == "pause" else Q_(T, "N*m"))
         for p, t, n, T in zip(g.phase, g.duration, g.speed, g.torque)
     ]
     profile = Profile.from_segments(rows, where=where)
@@ -305,7 +465,19 @@ def _motion(mechanism, moves, distances, s: Samples, torque: np.ndarray, where: 
 
 @dataclass(frozen=True)
 class Segment:
-    """A derived segment of the load cycle as the outputs print it."""
+    """A derived segment of the load cycle as the outputs print it.
+
+    Parameters
+    ----------
+    phase : str
+        accel, const, decel or pause.
+    duration : calc.core.units.Value
+        Its duration [s].
+    speed : calc.core.units.Value
+        Its mean output speed [rpm].
+    torque : calc.core.units.Value
+        Its output torque [N*m].
+    """
 
     phase: str
     duration: Value
@@ -317,21 +489,41 @@ class Segment:
 class MotionResult(Result):
     """The derived segments, the peaks and the load's inertia at the output, and the steps that
     derived them (the transmission radius, the load's inertia, each move's distance, peak speed
-    and acceleration, and the output torque of each of its phases)."""
+    and acceleration, and the output torque of each of its phases).
+
+    Parameters
+    ----------
+    motion : Motion
+        The case's motion form.
+    segments : list of Segment
+        The derived segments.
+    peak_speed : calc.core.units.Value
+        The highest output speed [rpm].
+    peak_acceleration : calc.core.units.Value
+        The highest output acceleration [rad/s**2].
+    J_L : calc.core.units.Value or None
+        The load's inertia at the output [kg*cm**2], where the mechanism gives it.
+    mechanism : str or None
+        The mechanism's type; None for a drive record with its torque.
+    source : str
+        "move" or "drive_record".
+    samples : int
+        How many samples the cycle has.
+    """
 
     motion: Motion
-    segments: list  # Segment
+    segments: list
     peak_speed: Value
     peak_acceleration: Value
     J_L: Value | None
     mechanism: str | None
-    source: str  # "move" or "drive_record"
+    source: str
     samples: int
 
     def to_json(self, candidates: int | None = None) -> dict:
         return {
-            "segments": [{"phase": g.phase, "duration": g.duration.to_json(), "speed": g.speed.to_json(), "torque": g.torque.to_json()}
-                         for g in self.segments],
+            "segments": [{"phase": g.phase, "duration": g.duration.to_json(), "speed": g.speed.to_json(),
+                          "torque": g.torque.to_json()} for g in self.segments],
             "peak_speed": self.peak_speed.to_json(),
             "peak_acceleration": self.peak_acceleration.to_json(),
             "J_L": json_of(self.J_L),
@@ -341,7 +533,8 @@ class MotionResult(Result):
         }
 
     def summary_lines(self, candidates: int | None = None) -> list[str]:
-        head = f"Motion ({self.mechanism or 'recorded torque'}, from {'the drive record' if self.source == 'drive_record' else 'the moves'}): "
+        source = "the drive record" if self.source == "drive_record" else "the moves"
+        head = f"Motion ({self.mechanism or 'recorded torque'}, from {source}): "
         head += f"peak speed {self.peak_speed}, peak acceleration {self.peak_acceleration}"
         if self.J_L is not None:
             head += f", J_L = {self.J_L}"
@@ -351,22 +544,41 @@ class MotionResult(Result):
         return lines
 
     def verdict(self):
-        """The motion has no checks of its own."""
+        """The motion has no checks of its own.
+
+        Returns
+        -------
+        None
+        """
         return None
 
     @cached_property
     def steps(self) -> list:
-        """(title, calc.core.formula.Step) of how the moves give the output's motion and torque, computed
-        here on first use (the review's changes need none of them)."""
+        """(title, calc.core.formula.Step) of how the moves give the output's motion and torque,
+        computed here on first use (the review's changes need none of them)."""
         return motion_steps(self.motion)
 
 
 def motion_steps(m: Motion) -> list:
-    """(title, step) of how the moves give the output's speed, acceleration and torque."""
+    """How the moves give the output's speed, acceleration and torque.
+
+    Parameters
+    ----------
+    m : Motion
+        The case's motion form.
+
+    Returns
+    -------
+    list of tuple
+        (title, :class:`calc.core.formula.Step`): the transmission radius and the load's inertia
+        (a linear mechanism), each body's inertia, and per move its distance at the output, peak
+        speed, acceleration and deceleration and the output torque of each of its phases.
+    """
     k = m.mechanism
     out = []
     if k is not None and k.linear:
-        out += [("Transmission radius", k.radius_step()), ("Load inertia at the gearbox output", k.load_inertia_step())]
+        out += [("Transmission radius", k.radius_step()),
+                ("Load inertia at the gearbox output", k.load_inertia_step())]
     for n, body in enumerate(() if k is None else k.bodies, start=1):
         out += [(f"Body {n} ({body.shape}): {step.formula.result.description}", step) for step in body.steps()]
     for n, (move, given) in enumerate(zip(m.moves, m.distances), start=1):
@@ -384,7 +596,9 @@ def motion_steps(m: Motion) -> list:
         if move.decel_time != move.accel_time:
             decel = alpha_2max.step(omega_2max=w.result, t_r=times["t_d"], t_j=Q_(move.jerk_time, "s"))
             out.append((f"Move {n}: peak output deceleration", decel))
-        for phase, a in (("acceleration", accel.result), ("constant speed", Q_(0.0, "rad/s**2")), ("deceleration", -decel.result)):
+        phases = (("acceleration", accel.result), ("constant speed", Q_(0.0, "rad/s**2")),
+                  ("deceleration", -decel.result))
+        for phase, a in phases:
             out += [(f"Move {n}, {phase}: {step.formula.result.description}", step) for step in k.steps(w.result, a)]
     return out
 
@@ -397,7 +611,19 @@ class MotionSection(Section):
 
     def read(self, top: Table, case: Case) -> None:
         """Derive the load cycle where the case gives moves or a drive record (after ``[load]``,
-        whose inertia the mechanism gives instead)."""
+        whose inertia the mechanism gives instead).
+
+        Parameters
+        ----------
+        top : calc.sections.case.Table
+            The case file's top-level table.
+        case : calc.sections.case.Case
+            The case being read.
+
+        Returns
+        -------
+        None
+        """
         derived = derive(top)
         if derived is not None:
             apply(case, derived)
@@ -423,12 +649,16 @@ def motion_result(m: Motion) -> MotionResult:
     Returns
     -------
     MotionResult
+        Its segments, peaks, load inertia, mechanism, source and number of samples.
     """
     g = m.segments
-    segments = [Segment(PHASES[p], Value.of(Q_(t, "s"), "s", "motion.segments.duration"), Value.of(Q_(n, "rad/s"), "rpm", "motion.segments.speed"),
+    segments = [Segment(PHASES[p], Value.of(Q_(t, "s"), "s", "motion.segments.duration"),
+                        Value.of(Q_(n, "rad/s"), "rpm", "motion.segments.speed"),
                         Value.of(Q_(T, "N*m"), "N*m", "motion.segments.torque"))
                 for p, t, n, T in zip(g.phase, g.duration, g.speed, g.torque)]
     return MotionResult(
-        m, segments, Value.of(m.peak_speed, "rpm", "motion.peak_speed"), Value.of(m.peak_acceleration, "rad/s**2", "motion.peak_acceleration"),
-        None if m.J_L is None else Value.of(m.J_L, "kg*cm**2", "motion.J_L"), None if m.mechanism is None else m.mechanism.type,
+        m, segments, Value.of(m.peak_speed, "rpm", "motion.peak_speed"),
+        Value.of(m.peak_acceleration, "rad/s**2", "motion.peak_acceleration"),
+        None if m.J_L is None else Value.of(m.J_L, "kg*cm**2", "motion.J_L"),
+        None if m.mechanism is None else m.mechanism.type,
         "drive_record" if m.record is not None else "move", int(len(m.cycle.dt)))

@@ -130,6 +130,10 @@ class Section(ABC):
             The case file's top-level table.
         case : calc.sections.case.Case
             The case being read, the sections before this one read into it.
+
+        Returns
+        -------
+        None
         """
         if self.keeps_table and top.has(self.NAME):
             case.sections[self.NAME] = top.data[self.NAME]

@@ -55,7 +55,19 @@ def _table(heading: str, description: str, keys: tuple) -> list[str]:
 
 def reference(tables: tuple[Declared, ...] | None = None) -> str:
     """The key reference in Markdown: the kinds that are not quantities, then one table per
-    declared table of a case file (default: every section's, in their order)."""
+    declared table of a case file.
+
+    Parameters
+    ----------
+    tables : tuple of calc.sections.case.Declared, optional
+        The declared tables to write; None: every section's, in their order
+        (:func:`calc.sections.case.declared_tables`).
+
+    Returns
+    -------
+    str
+        The reference, between the markers :data:`BEGIN` and :data:`END`.
+    """
     tables = declared_tables() if tables is None else tables
     out = [BEGIN, "", "| kind | a case file writes |", "|---|---|"]
     out += [f"| {name} | {what} |" for name, what in OTHER_KINDS.items()]

@@ -126,7 +126,8 @@ def test_the_schema_refuses_what_the_contract_fixes():
     from ..conftest import RESULTS_SCHEMA
 
     example = ROOT / "cases" / "indexing-table.toml"  # a case with a gearbox, whose candidates the schema fixes
-    proc = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(example), "--json"], capture_output=True, text=True, cwd=ROOT, check=True)
+    proc = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(example), "--json"], capture_output=True,
+                          text=True, cwd=ROOT, check=True)
     good = json.loads(proc.stdout)
     for change in (
         lambda r: r["duty"]["t_on"].update(value="0.5 s"),

@@ -46,7 +46,8 @@ def test_a_failing_case_says_which_check_and_by_how_much(capsys, write_case):
 def test_s5_without_peak_torque_evaluates_every_section(capsys, write_case):
     # Partial case: no motor.peak_torque. Duty, S1, S5 values, candidates, coupling and accuracy still come;
     # the check T_2max <= T_2B is not made, nothing is selected and the verdict is null, naming the key.
-    accuracy = '\n[accuracy]\napplied_torque = "8 N*m"\nnominal_torque = "100 N*m"\n[[accuracy.component]]\nname = "shaft"\nside = "output"\nstiffness = "20 N*m/arcmin"\nbacklash = "1 arcmin"\n'
+    accuracy = ('\n[accuracy]\napplied_torque = "8 N*m"\nnominal_torque = "100 N*m"\n[[accuracy.component]]\n'
+                'name = "shaft"\nside = "output"\nstiffness = "20 N*m/arcmin"\nbacklash = "1 arcmin"\n')
     case = write_case(HEAD_TOML.replace('peak_torque = "12 N*m"\n', "") + PROFILE_TOML
                       + COUPLING_TOML.replace("[coupling]", '[coupling]\naccel_torque = "12 N*m"') + accuracy)
     r = results(capsys, case)
@@ -85,7 +86,8 @@ def test_an_input_side_coupling_without_the_motors_peak_torque(capsys, write_cas
     assert checks["f_e"]["passes"] is True and checks["n_max"]["passes"] is True
     assert best["passes"] is None and "T_KN" in " ".join(best["reasons"])
     assert r["verdict"]["passes"] is None
-    assert "No coupling can be chosen: M_N · K_ϑ <= T_KN: not checked, needs motor.peak_torque (or coupling.accel_torque)" in r["verdict"]["reasons"]
+    assert ("No coupling can be chosen: M_N · K_ϑ <= T_KN: not checked, needs motor.peak_torque "
+            "(or coupling.accel_torque)") in r["verdict"]["reasons"]
     code, out, _ = run(capsys, case)
     assert code == 0 and "Selected coupling: none: M_N · K_ϑ <= T_KN: not checked, needs motor.peak_torque" in out
 
@@ -106,17 +108,20 @@ def test_the_motor_and_coupling_without_the_gearboxs_J_1(capsys, write_case, tmp
     with (folder / "no-j1.csv").open("w", encoding="utf-8", newline="") as f:
         csv.writer(f, lineterminator="\n").writerows(rows)
     text = derived_with_typed_motor().replace('catalog = "gearboxes"\n', 'catalog = "no-j1.csv"\n')
-    text = text.replace('shaft = "19 mm k6" ', 'max_speed = "6000 rpm" ').replace('peak_torque = "12 N*m"', 'peak_torque = "12 N*m"\nrated_torque = "4 N*m"')
+    text = text.replace('shaft = "19 mm k6" ', 'max_speed = "6000 rpm" ').replace(
+        'peak_torque = "12 N*m"', 'peak_torque = "12 N*m"\nrated_torque = "4 N*m"')
     case = write_case(text, "cases/no-j1.toml")
     r = results(capsys, case)
     motor = {k["name"]: k for k in r["motor"]["checks"]}
     for name in ("T_1B", "T_1N"):
         assert motor[name]["passes"] is None and motor[name]["required"] is None
-        assert motor[name]["not_made"] == "the rotor term (J_motor + J_1) · α_1 needs J_1, which the catalog does not give for NPT035-10"
+        assert motor[name]["not_made"] == ("the rotor term (J_motor + J_1) · α_1 needs J_1, "
+                                           "which the catalog does not give for NPT035-10")
     assert motor["n_max"]["passes"] is True and motor["n_max"]["required"]["value"] == pytest.approx(428.57, abs=0.01)
     assert r["motor"]["peak_torque_required"] is None
     f_e = next(k for k in r["coupling"]["candidates"][0]["checks"] if k["name"] == "f_e")
-    assert f_e["passes"] is None and "the gearbox's J_1, which" in f_e["not_made"] and "for NPT035-10" in f_e["not_made"]
+    assert f_e["passes"] is None
+    assert "the gearbox's J_1, which" in f_e["not_made"] and "for NPT035-10" in f_e["not_made"]
     assert r["gearbox"]["selected"] == "NPT035-10" and r["accuracy"]["positioning_accuracy"]["value"] is not None
     assert r["verdict"]["passes"] is None
 
@@ -138,7 +143,8 @@ def test_a_chain_that_follows_a_selection_choosing_no_part(capsys, write_case, t
     assert f"the gearbox selection chooses no part ({best_gearbox}, its best-ranked, stands in)" in check["not_made"]
     assert f"the coupling selection chooses no part ({best_coupling}, its best-ranked, stands in)" in check["not_made"]
     assert a["passes"] is None and r["verdict"]["passes"] is None
-    assert any(reason.startswith("The accuracy requirement is not decided: positioning_accuracy") for reason in r["verdict"]["reasons"])
+    assert any(reason.startswith("The accuracy requirement is not decided: positioning_accuracy")
+               for reason in r["verdict"]["reasons"])
 
 
 def test_exit_status(capsys, write_case):
@@ -158,8 +164,10 @@ def test_exit_status(capsys, write_case):
     [
         (('"1500 kg*cm**2"', '"1e999 kg*cm**2"'), "load.inertia: expected a finite number"),
         (('"12 N*m"', '"inf N*m"'), "motor.peak_torque: expected a number followed by a unit"),
-        (('torque = "60 N*m"', 'torque = "1e103 N*m"'), "profile[1].torque: expected a magnitude between 1e-12 and 1e+12"),
-        (('duration = "0.2 s"', 'duration = "1e-308 s"'), "profile[1].duration: expected a magnitude between 1e-12 and 1e+12"),
+        (('torque = "60 N*m"', 'torque = "1e103 N*m"'),
+         "profile[1].torque: expected a magnitude between 1e-12 and 1e+12"),
+        (('duration = "0.2 s"', 'duration = "1e-308 s"'),
+         "profile[1].duration: expected a magnitude between 1e-12 and 1e+12"),
         (("ratio = 10", "ratio = inf"), "gearbox.ratio: expected a finite number"),
         (("ratio = 10", "ratio = nan"), "gearbox.ratio: expected a finite number"),
     ],
@@ -226,22 +234,28 @@ def test_chain_follows_the_selection(capsys, write_case):
     names = [c["name"] for c in r["accuracy"]["components"]]
     assert names == ["AKD-30", "NPT035-10"]
     assert [c["side"] for c in r["accuracy"]["components"]] == ["input", "output"]
-    assert r["accuracy"]["C_total"]["value"] == pytest.approx(1 / (1 / (25000 * 3.141592653589793 / 10800 * 100) + 1 / 22), rel=1e-4)
+    assert r["accuracy"]["C_total"]["value"] == pytest.approx(
+        1 / (1 / (25000 * 3.141592653589793 / 10800 * 100) + 1 / 22), rel=1e-4)
     # Ratio 8: the gearbox selection moves (NPT035-8: 22 N·m/arcmin, 8 arcmin, ratio 8) and the
     # chain follows it: the coupling is referred through i² = 64, C = 7.272 · 64 = 465.4 N·m/arcmin.
     r8 = results(capsys, write_case((head + SELECTED_CHAIN).replace("ratio = 10", "ratio = 8"), "eight.toml"))
     assert r8["gearbox"]["selected"] == r8["accuracy"]["components"][1]["name"]
     assert r8["accuracy"]["ratio"] == 8
-    assert r8["accuracy"]["components"][0]["stiffness_at_output"]["value"] == pytest.approx(25000 * 3.141592653589793 / 10800 * 64, rel=1e-4)
+    assert r8["accuracy"]["components"][0]["stiffness_at_output"]["value"] == pytest.approx(
+        25000 * 3.141592653589793 / 10800 * 64, rel=1e-4)
 
 
 @pytest.mark.parametrize(
     "chain, fragment",
     [
-        (SELECTED_CHAIN.replace('kind = "coupling"\n', 'kind = "motor"\n'), "accuracy.component[1].kind: expected one of gearbox, coupling, found 'motor'"),
-        (SELECTED_CHAIN.replace('kind = "coupling"\npart = "selected"\n', 'kind = "coupling"\nname = "x"\nside = "input"\nstiffness = "1 N*m/arcmin"\nbacklash = "0 arcmin"\n'),
+        (SELECTED_CHAIN.replace('kind = "coupling"\n', 'kind = "motor"\n'),
+         "accuracy.component[1].kind: expected one of gearbox, coupling, found 'motor'"),
+        (SELECTED_CHAIN.replace('kind = "coupling"\npart = "selected"\n',
+                                'kind = "coupling"\nname = "x"\nside = "input"\n'
+                                'stiffness = "1 N*m/arcmin"\nbacklash = "0 arcmin"\n'),
          "accuracy.component[1].kind: kind says which catalog a part comes from; give part as well"),
-        (SELECTED_CHAIN + 'catalog = "gearboxes"\n', "accuracy.component[2].catalog: part = \"selected\" takes the gearbox selection's catalog"),
+        (SELECTED_CHAIN + 'catalog = "gearboxes"\n',
+         "accuracy.component[2].catalog: part = \"selected\" takes the gearbox selection's catalog"),
     ],
 )
 def test_selected_part_errors(capsys, write_case, chain, fragment):
@@ -255,10 +269,17 @@ TRACE = 'transmission_trace = "{trace}"\n'
 @pytest.mark.parametrize(
     "chain, fragment",
     [
-        (SELECTED_CHAIN + TRACE, "accuracy.component[2].transmission_trace: a measurement belongs to the part it was made on, but part = \"selected\" follows the selection; name that part with measured_part"),
-        (SELECTED_CHAIN + 'measured_part = "NPT035-10"\n', "accuracy.component[2].measured_part: measured_part names the part a measurement was made on; give hysteresis or transmission_trace as well"),
-        (SELECTED_CHAIN.replace('[[accuracy.component]]\npart = "selected"\n', '[[accuracy.component]]\npart = "NPT035-10"\n') + TRACE + 'measured_part = "NPT035-10"\n',
-         "accuracy.component[2].measured_part: measured_part names the part a measurement was made on when part = \"selected\"; found part = 'NPT035-10', whose measurements are its own"),
+        (SELECTED_CHAIN + TRACE,
+         "accuracy.component[2].transmission_trace: a measurement belongs to the part it was made on, "
+         "but part = \"selected\" follows the selection; name that part with measured_part"),
+        (SELECTED_CHAIN + 'measured_part = "NPT035-10"\n',
+         "accuracy.component[2].measured_part: measured_part names the part a measurement was made on; "
+         "give hysteresis or transmission_trace as well"),
+        (SELECTED_CHAIN.replace('[[accuracy.component]]\npart = "selected"\n',
+                                '[[accuracy.component]]\npart = "NPT035-10"\n')
+         + TRACE + 'measured_part = "NPT035-10"\n',
+         "accuracy.component[2].measured_part: measured_part names the part a measurement was made on when "
+         "part = \"selected\"; found part = 'NPT035-10', whose measurements are its own"),
     ],
 )
 def test_measured_part_errors(capsys, write_case, chain, fragment):
@@ -279,13 +300,16 @@ def test_a_measurement_applies_while_the_selection_chooses_its_part(capsys, writ
     at_8 = results(capsys, write_case((head + chain).replace("ratio = 10", "ratio = 8"), "eight.toml"))["accuracy"]
     gearbox = at_8["components"][1]
     assert "measured_trace" not in gearbox and at_8["transmission_accuracy"]["value"] == 0
-    assert gearbox["source"].endswith(f"the transmission_trace of NPT035-10 not used: the selection chose {gearbox['name']}")
+    assert gearbox["source"].endswith(
+        f"the transmission_trace of NPT035-10 not used: the selection chose {gearbox['name']}")
 
 
 def test_selected_needs_the_section_it_follows(capsys, write_case):
     code, _, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + SELECTED_CHAIN))
-    assert code == 2 and "accuracy.component[1].part: part = \"selected\" with kind = \"coupling\" follows the coupling selection, but the case has no [coupling]" in err
-    no_gearbox = (HEAD_TOML.replace("[gearbox]\nratio = 10\n", "") + PROFILE_TOML + SELECTED_CHAIN.split("[[accuracy.component]]\nkind")[0]
+    assert code == 2 and ("accuracy.component[1].part: part = \"selected\" with kind = \"coupling\" follows the "
+                          "coupling selection, but the case has no [coupling]") in err
+    no_gearbox = (HEAD_TOML.replace("[gearbox]\nratio = 10\n", "") + PROFILE_TOML
+                  + SELECTED_CHAIN.split("[[accuracy.component]]\nkind")[0]
                   + '[[accuracy.component]]\npart = "selected"\n')
     code, _, err = run(capsys, write_case(no_gearbox, "nogear.toml"))
     assert code == 2 and "follows the gearbox selection, but the case names no gearbox ratio or part" in err
@@ -297,9 +321,11 @@ def test_selected_needs_the_section_it_follows(capsys, write_case):
         (SELECTED_CHAIN.replace('part = "selected"\n', 'part = "selected"\ncatalog = "couplings"\n', 1),
          "accuracy.component[1].catalog: part = \"selected\" takes the coupling selection's catalog; give no catalog"),
         (SELECTED_CHAIN.replace('part = "selected"\n', 'part = "AX2090-EC05"\nside = "input"\n', 1),
-         "(AX2090-EC05): the twist of a coupling of type elastomer is not one catalog stiffness; give its stiffness and backlash"),
+         "(AX2090-EC05): the twist of a coupling of type elastomer is not one catalog stiffness; "
+         "give its stiffness and backlash"),
         (SELECTED_CHAIN.replace('part = "selected"\n', 'part = "selected"\nside = "output"\n', 1),
-         "accuracy.component[1].side: the coupling selection's coupling sits on the input side (coupling.side), found 'output'"),
+         "accuracy.component[1].side: the coupling selection's coupling sits on the input side (coupling.side), "
+         "found 'output'"),
     ],
 )
 def test_coupling_part_errors(capsys, write_case, chain, fragment):
@@ -310,7 +336,8 @@ def test_coupling_part_errors(capsys, write_case, chain, fragment):
 def test_a_coupling_part_without_stiffness(capsys, write_case, tmp_path):
     from ..conftest import ROOT
 
-    text = (ROOT / "catalogs" / "couplings.csv").read_text().replace("AKD-30,AKD,30,bellows,36,,25000,", "AKD-30,AKD,30,bellows,36,,,")
+    text = (ROOT / "catalogs" / "couplings.csv").read_text().replace("AKD-30,AKD,30,bellows,36,,25000,",
+                                                                     "AKD-30,AKD,30,bellows,36,,,")
     (tmp_path / "mine.csv").write_text(text)
     chain = SELECTED_CHAIN.replace('part = "selected"\n', 'part = "AKD-30"\nside = "input"\ncatalog = "mine.csv"\n', 1)
     code, out, err = run(capsys, write_case(HEAD_TOML + PROFILE_TOML + COUPLING_TOML + chain))

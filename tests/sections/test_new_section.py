@@ -82,7 +82,8 @@ def test_the_brake_is_in_the_json_and_the_text_summary(package):
     assert check["utilization"] == pytest.approx(0.75) and check["passes"] is True
     assert r["verdict"] == {"passes": True, "reasons": []}  # the brake is the case's only check
     text = run(package, "-m", "calc", "evaluate", "slips.toml")
-    assert "Verdict: FAIL" in text and "Brake BR-10: |T_2k| <= T_br: required 60 N·m > rated 40 N·m, 50 % over" in text
+    assert "Verdict: FAIL" in text
+    assert "Brake BR-10: |T_2k| <= T_br: required 60 N·m > rated 40 N·m, 50 % over" in text
     assert "\nBrake BR-10:\n" in text and "utilization  1.50  FAIL" in text
 
 

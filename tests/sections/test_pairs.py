@@ -41,7 +41,8 @@ def test_the_pick_is_the_pair_the_evaluation_chooses_and_its_torques_are_exact(c
                       Q_(0.97, ""), Q_(m.cycle.acceleration, "rad/s**2"), J, J_1)
     assert p.peak_torque == pytest.approx(load.peak.m_as("N*m"), rel=1e-9)
     assert p.rms_torque == pytest.approx(load.rms.m_as("N*m"), rel=1e-9)
-    assert found.result.feasible[g].any() and "the motor-side coupling's inertia is not counted here (evaluate counts it)" in found.notes
+    assert found.result.feasible[g].any()
+    assert "the motor-side coupling's inertia is not counted here (evaluate counts it)" in found.notes
 
 
 def test_the_command_prints_the_pick_and_draws_the_figure(catalog_case, tmp_path, capsys):
@@ -50,7 +51,8 @@ def test_the_command_prints_the_pick_and_draws_the_figure(catalog_case, tmp_path
     figure = tmp_path / "pairs.png"
     assert main(["combinations", str(catalog_case), "--json", "--figure", str(figure)]) == 0
     r = json.loads(capsys.readouterr().out)
-    assert r["pick"]["motor"] and r["feasible"] <= r["pairs"] == r["motors"] * r["gearboxes"] and r["verdict"]["passes"] is True
+    assert r["pick"]["motor"] and r["feasible"] <= r["pairs"] == r["motors"] * r["gearboxes"]
+    assert r["verdict"]["passes"] is True
     assert figure.stat().st_size > 10_000
 
 
@@ -59,7 +61,8 @@ def test_the_search_needs_a_motor_catalog(capsys):
 
     assert main(["combinations", str(EXAMPLE)]) == 2
     err = capsys.readouterr().err
-    assert "motor.catalog: the search of motors and gearboxes needs a motor catalog ([motor] catalog = \"motors\"), found none" in err
+    assert ("motor.catalog: the search of motors and gearboxes needs a motor catalog ([motor] catalog = \"motors\"), "
+            "found none") in err
 
 
 def test_the_search_needs_a_gearbox_catalog(write_case, capsys):
@@ -68,4 +71,5 @@ def test_the_search_needs_a_gearbox_catalog(write_case, capsys):
     from ..domain.test_motor_ratings import DIRECT_DRIVE
 
     assert main(["combinations", str(write_case(DIRECT_DRIVE.format(motor=""), "dd.toml"))]) == 2
-    assert "gearbox: the search of motors and gearboxes needs a [gearbox] table (its catalog gives the gearboxes), found none" in capsys.readouterr().err
+    assert ("gearbox: the search of motors and gearboxes needs a [gearbox] table (its catalog gives the gearboxes), "
+            "found none") in capsys.readouterr().err

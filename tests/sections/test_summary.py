@@ -52,7 +52,8 @@ def expected_worst(results: dict):
             continue
         checks = s["candidates"][0]["checks"] if s.get("candidates") else s.get("checks", [])
         where = f"{name} {s['candidates'][0]['part']}" if s.get("candidates") else name
-        found += [(k["utilization"], k["criterion"], where) for k in checks if k.get("governs", True) and k["utilization"] is not None]
+        found += [(k["utilization"], k["criterion"], where) for k in checks
+                  if k.get("governs", True) and k["utilization"] is not None]
     return max(found) if found else None
 
 
@@ -97,7 +98,8 @@ def test_worst_check_takes_governing_checks_with_a_utilization():
     # Hand-built governing checks: a check not made has no utilization; accuracy's own checks
     # count; the closest gearbox counts where none is chosen.
     def check(name, criterion, utilization):
-        return Check(name, criterion, Q_(1.0, "N*m"), Q_(1.0, "N*m"), "N*m", utilization, utilization is not None and utilization <= 1)
+        return Check(name, criterion, Q_(1.0, "N*m"), Q_(1.0, "N*m"), "N*m", utilization,
+                     utilization is not None and utilization <= 1)
 
     class Evaluated:
         def __init__(self, *governing):
@@ -105,13 +107,14 @@ def test_worst_check_takes_governing_checks_with_a_utilization():
 
     gearbox = Governing("gearbox", "A", False, [check("T_2B", "T_2max <= T_2B", 0.5)])
     motor = Governing("motor", None, True, [check("rms", "rms <= rated", None)])
-    accuracy = Governing("accuracy", None, True, [check("positioning_accuracy", "positioning_accuracy <= required", 0.7)])
+    accuracy = Governing("accuracy", None, True,
+                         [check("positioning_accuracy", "positioning_accuracy <= required", 0.7)])
     assert worst_check(Evaluated(gearbox, motor, accuracy)) == {
         "utilization": 0.7, "check": "positioning_accuracy <= required", "section": "accuracy", "part": None,
         "passes": True}
     lower = Governing("accuracy", None, True, [check("positioning_accuracy", "positioning_accuracy <= required", 0.3)])
-    assert worst_check(Evaluated(gearbox, motor, lower)) == {"utilization": 0.5, "check": "T_2max <= T_2B", "section": "gearbox",
-                                                             "part": "A", "passes": True}
+    assert worst_check(Evaluated(gearbox, motor, lower)) == {
+        "utilization": 0.5, "check": "T_2max <= T_2B", "section": "gearbox", "part": "A", "passes": True}
     assert worst_check(Evaluated()) is None
     assert worst_check(Evaluated(motor)) is None
 
@@ -126,7 +129,8 @@ def test_summary_rows_are_plain_data_one_per_case(capsys, tmp_path):
     assert example["chosen"] == {"gearbox": "NPT035-10", "coupling": "AKD-30"}
     assert example["worst"]["check"] == "2 f_er <= f_1" and example["worst"]["part"] == "AKD-30"
     assert example["worst"]["utilization"] == pytest.approx(200 / 207.963, rel=1e-5)
-    assert example["report"] == "indexing-table-profile.pdf" and example["report_path"] == str(tmp_path / "out" / "indexing-table-profile.pdf")
+    assert example["report"] == "indexing-table-profile.pdf"
+    assert example["report_path"] == str(tmp_path / "out" / "indexing-table-profile.pdf")
     assert example["error"] is None and example["reason"] is None
     # Failing: no gearbox passes; its worst check is over 1 (4940 / 4000 = 1.235 for TP500-10, η 0.95).
     assert failing["chosen"] == {"gearbox": None} and failing["worst"]["utilization"] > 1
@@ -146,7 +150,8 @@ def test_summary_rows_are_plain_data_one_per_case(capsys, tmp_path):
 def test_summary_needs_a_folder(capsys, tmp_path):
     code, err = report_here(capsys, EXAMPLE, "--summary", "-o", tmp_path / "all.pdf")
     assert code == 2
-    assert err.strip() == f"error: -o {tmp_path / 'all.pdf'}: with --summary, expected a folder for the reports and summary.pdf, found a file name"
+    assert err.strip() == (f"error: -o {tmp_path / 'all.pdf'}: with --summary, expected a folder for the reports "
+                           "and summary.pdf, found a file name")
     assert list(tmp_path.iterdir()) == []
 
 
@@ -154,8 +159,8 @@ def test_a_case_named_summary_would_lose_its_report(capsys, tmp_path):
     (case,) = write_cases(tmp_path / "cases", summary=FAILING)
     code, err = report_here(capsys, EXAMPLE, case, "--summary", "-o", tmp_path / "out")
     assert code == 2
-    assert err.strip() == (f"error: {case}: its report {tmp_path / 'out' / 'summary.pdf'} would be overwritten by the summary; "
-                           "rename the case file")
+    assert err.strip() == (f"error: {case}: its report {tmp_path / 'out' / 'summary.pdf'} would be overwritten "
+                           "by the summary; rename the case file")
     assert not (tmp_path / "out").exists()
 
 
@@ -180,7 +185,8 @@ def test_summary_of_four_cases(capsys, report_run):
     cases, out, proc = report_run
     # A case that cannot be read exits 2 (spec, "Exit status"); every report and the summary are written.
     assert proc.returncode == 2, proc.stderr
-    assert proc.stdout.strip().splitlines()[-1] == f"2 PASS, 2 FAIL, 0 NOT DECIDED  ->  {out / 'summary.pdf'}  {out / 'summary.csv'}"
+    assert proc.stdout.strip().splitlines()[-1] == (f"2 PASS, 2 FAIL, 0 NOT DECIDED  ->  {out / 'summary.pdf'}  "
+                                                    f"{out / 'summary.csv'}")
     rows = read_csv(out / "summary.csv")
     assert [r["report"] for r in rows] == ["indexing-table-profile.pdf", "escape.pdf", "failing.pdf", "unreadable.pdf"]
     for row, case in zip(rows, cases):
@@ -193,15 +199,18 @@ def test_summary_of_four_cases(capsys, report_run):
     for title, verdict in (("Rotary indexing table, axis 3", "PASS"), ("test axis", "FAIL")):
         assert re.search(rf"{re.escape(title)}\s+{verdict}", text), title
     assert re.search(r"Rotary indexing table, axis 3\s+PASS\s+NPT035-10\s+AKD-30\s+0\.96", text)
-    assert re.search(r"test axis\s+FAIL\s+none\s+–\s+1\.24", text)  # 400 · 10 · 1.3 · 0.95 = 4940 N·m / 4000 (TP500-10, the closest)
+    # 400 · 10 · 1.3 · 0.95 = 4940 N·m / 4000 (TP500-10, the closest)
+    assert re.search(r"test axis\s+FAIL\s+none\s+–\s+1\.24", text)
     assert "has ratio 13" in flat
     # Title block: each data file the cases rest on (case files, catalogs, tables, measurements)
     # once, with its SHA-256.
     files = {(path, digest) for case in cases for _, path, digest in build_report(case).files}
     assert all(digest in text for _, digest in files)
-    assert text.count("catalogs/gearboxes.csv\n") >= 1 and len(re.findall(r"SHA-256\s+[0-9a-f]{64}", text)) == len(files)
+    assert text.count("catalogs/gearboxes.csv\n") >= 1
+    assert len(re.findall(r"SHA-256\s+[0-9a-f]{64}", text)) == len(files)
     # Each report's file name links to it, relative to the summary.
-    assert set(links(out / "summary.pdf")) == {"indexing-table-profile.pdf", "escape.pdf", "failing.pdf", "unreadable.pdf"}
+    assert set(links(out / "summary.pdf")) == {"indexing-table-profile.pdf", "escape.pdf", "failing.pdf",
+                                               "unreadable.pdf"}
 
 
 @needs_tex
