@@ -31,7 +31,9 @@ COVERED = ("core", "data", "domain", "figures")
 COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "calc.review.figures",
                    "calc.review.inputs", "calc.review.keep", "calc.review.page", "calc.review.panel",
                    "calc.review.serve", "calc.review.state", "calc.review.variants",
-                   "calc", "calc.__main__", "calc.report", "calc.report.common")
+                   "calc", "calc.__main__", "calc.report", "calc.report.common", "calc.report.coupling",
+                   "calc.report.drive", "calc.report.gearbox", "calc.report.motion", "calc.report.motor",
+                   "calc.report.ratios")
 #: Every layer, for the report of shares.
 LAYERS = ("core", "data", "domain", "figures", "sections", "report", "review")
 #: Generated code, not written by hand.

@@ -22,10 +22,11 @@ def _torsion(r) -> list[str]:
     if t is None:
         return []
     out = [rf"\subsection{{Torsional modes of the drive train, with {latex_escape(t.part)}}}",
-           prose("The two-mass f_e takes the coupling as the only spring. The drive train has more: it is lumped as a chain, "
-                 f"every member referred to {t.shaft}: the motor with half the coupling, the other half with the gearbox's J_1, "
-                 "the load J_L / i²; springs: the coupling's C_T and the gearbox's C_t21 / i². Its natural frequencies are "
-                 "the roots of the eigenproblem (K − ω² J) φ = 0, the rigid-body mode left out.")]
+           prose("The two-mass f_e takes the coupling as the only spring. The drive train has more: it is lumped "
+                 f"as a chain, every member referred to {t.shaft}: the motor with half the coupling, the other half "
+                 "with the gearbox's J_1, the load J_L / i²; springs: the coupling's C_T and the gearbox's C_t21 / "
+                 "i². Its natural frequencies are the roots of the eigenproblem (K − ω² J) φ = 0, the rigid-body "
+                 "mode left out.")]
     out += [step_block(title, step) for title, step in r.inputs.drive_steps]
     rows = [[str(k + 1), prose(members), q(J), prose(spring[0]) if spring else "", q(spring[1]) if spring else ""]
             for k, ((members, J), spring) in enumerate(zip(t.masses, [*t.springs, None]))]
@@ -33,8 +34,8 @@ def _torsion(r) -> list[str]:
                      caption=f"The drive train as masses and springs, referred to {latex_escape(t.shaft)}"))
     out.append(prose("Natural frequencies, lowest first: ") + ", ".join(q(f) for f in t.natural_frequencies) + ".")
     if not t.complete:
-        out.append(prose("The chain is incomplete, so its first mode is reported for information: the case does not give "
-                         + "; ".join(t.missing) + "."))
+        out.append(prose("The chain is incomplete, so its first mode is reported for information: the case does "
+                         "not give " + "; ".join(t.missing) + "."))
     return out
 
 
@@ -66,7 +67,20 @@ class CouplingRenderer(TableRenderer):
     COMPARED_PART = True
 
     def derived_inputs(self, report, raw: dict) -> dict:
-        """A motor-side coupling's M_a, J_drive, J_load and speed, where the table leaves them out."""
+        """A motor-side coupling's M_a, J_drive, J_load and speed, where the table leaves them out.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+        raw : dict
+            The coupling's table as written.
+
+        Returns
+        -------
+        dict
+            Key -> the value as the case would write it (``"12.5 N*m"``).
+        """
         r = self.result(report)
         if r is None:
             return {}
@@ -77,7 +91,18 @@ class CouplingRenderer(TableRenderer):
     def steps(self, report) -> list[str]:
         """The coupling's calculations as the section computed them: the inputs taken from the rest
         of the case, M_N with its factors, 2 f_er, the best-ranked row's natural frequency and the
-        drive train's modes."""
+        drive train's modes.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        list of str
+            The calculation steps, LaTeX.
+        """
         r = self.result(report)
         if r is None:
             return []
@@ -95,7 +120,18 @@ class CouplingRenderer(TableRenderer):
         return out + _torsion(r)
 
     def results(self, report) -> list[str]:
-        """What the coupling gives besides its checks: M_N, T_op, K_ϑ, f_e,min, the shafts, notes."""
+        """What the coupling gives besides its checks: M_N, T_op, K_ϑ, f_e,min, the shafts, notes.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        list of str
+            The results' heading and tables, LaTeX.
+        """
         r = self.result(report)
         if r is None:
             return []
@@ -124,7 +160,18 @@ class CouplingRenderer(TableRenderer):
 
     def candidates(self, report) -> list[str]:
         """Every candidate's utilization of each check, the doubtful figures and sources of the rows,
-        and why the closest rejected ones fail."""
+        and why the closest rejected ones fail.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        list of str
+            LaTeX.
+        """
         r = self.result(report)
         if r is None:
             return []
@@ -163,8 +210,20 @@ class CouplingRenderer(TableRenderer):
         return out
 
     def page(self, s, view) -> str:
-        """The coupling candidates (of ``s``, a :class:`calc.sections.coupling.CouplingResult`; None:
-        the case has no coupling), best first, and the drive train's modes."""
+        """The coupling candidates, best first, and the drive train's modes.
+
+        Parameters
+        ----------
+        s : calc.sections.coupling.CouplingResult or None
+            The coupling's result; None: the case has no coupling.
+        view : calc.report.page.View
+            What the page asks: the candidates to list, the ratio search, a cycle typed by hand.
+
+        Returns
+        -------
+        str
+            HTML.
+        """
         if s is None:
             return ""
 

@@ -32,7 +32,18 @@ class GearboxRenderer(Renderer):
         return common.sources(self.NAME)
 
     def readings(self, report) -> set[str]:
-        """Every gearbox reading; the inertia match (E6) only where the report gives the ratio."""
+        """Every gearbox reading; the inertia match (E6) only where the report gives the ratio.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        set of str
+            The readings' keys.
+        """
         out = common.readings(self.NAME)
         r = self.result(report)
         return out if r is not None and r.selection.inertia_ratio is not None else out - {"E6"}
@@ -56,7 +67,18 @@ class GearboxRenderer(Renderer):
         return rows
 
     def steps(self, report) -> list[str]:
-        """The best-ranked row's checks as the gearbox section computed them."""
+        """The best-ranked row's checks as the gearbox section computed them.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        list of str
+            The calculation steps, LaTeX.
+        """
         r = self.result(report)
         if r is None:
             return []
@@ -74,7 +96,18 @@ class GearboxRenderer(Renderer):
         return [checks_table(best.checks, f"Checks of gearbox {best.part}{which}")]
 
     def candidates(self, report) -> list[str]:
-        """Every candidate at the ratio: its catalog ratings, and the utilization of each check."""
+        """Every candidate at the ratio: its catalog ratings, and the utilization of each check.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        list of str
+            LaTeX.
+        """
         r = self.result(report)
         if r is None:
             return []
@@ -159,8 +192,20 @@ class GearboxRenderer(Renderer):
                 rf" (series {latex_escape(str(sel.catalog.text['series'][row]))})"]
 
     def page(self, g, view) -> str:
-        """The gearbox candidates (of ``g``, a :class:`calc.sections.gearbox.GearboxResult`; None:
-        the case has no gearbox), best first, then the ratio search where it is asked for."""
+        """The gearbox candidates, best first, then the ratio search where it is asked for.
+
+        Parameters
+        ----------
+        g : calc.sections.gearbox.GearboxResult or None
+            The gearbox's result; None: the case has no gearbox.
+        view : calc.report.page.View
+            What the page asks: the candidates to list, the ratio search, a cycle typed by hand.
+
+        Returns
+        -------
+        str
+            HTML.
+        """
         search = "" if view.ratios is None else RATIOS.page_block(view.ratios)
         if g is None:
             return search

@@ -15,8 +15,8 @@ from .page import value
 from .symbols import html as typeset
 
 #: The field of :class:`calc.domain.mechanism.Mechanism` of each of its quantities' keys, where it differs.
-FIELDS = {"inertia": "given_inertia", "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia",
-          "pitch_diameter": "diameter", "pulley_diameter": "diameter"}
+FIELDS = {"inertia": "given_inertia", "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia",
+          "pulley_inertia": "own_inertia", "pitch_diameter": "diameter", "pulley_diameter": "diameter"}
 
 
 def _motion(report):
@@ -93,9 +93,21 @@ class MotionRenderer(Renderer):
         return [(fig, "Output speed and torque over one cycle, sampled, with the derived segments (dashed).")]
 
     def page(self, m, view) -> str:
-        """Where the load cycle comes from: the motion's peak values (``m``, a
-        :class:`calc.sections.motion.MotionResult`, None without one), or that its segments were
-        changed by hand (then the moves and mechanism no longer derive it)."""
+        """Where the load cycle comes from: the motion's peak values, or that its segments were
+        changed by hand (then the moves and mechanism no longer derive it).
+
+        Parameters
+        ----------
+        m : calc.sections.motion.MotionResult or None
+            The motion's result; None without one.
+        view : calc.report.page.View
+            What the page asks: the candidates to list, the ratio search, a cycle typed by hand.
+
+        Returns
+        -------
+        str
+            HTML.
+        """
         if view.typed_by_hand:
             return ('<div class="values">Load cycle: the segments as changed here (the case derives them from its '
                     'motion; reset to derive them again)</div>')

@@ -72,7 +72,18 @@ class MotorRenderer(Renderer):
 
     def candidates(self, report) -> list[str]:
         """The catalog motors: each one's ratings and characteristic, the utilization of each check,
-        and why the closest rejected ones fail."""
+        and why the closest rejected ones fail.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+
+        Returns
+        -------
+        list of str
+            LaTeX; nothing for a motor the case types, or none.
+        """
         m = self.result(report)
         if m is None or m.selection is None:
             return []
@@ -128,8 +139,20 @@ class MotorRenderer(Renderer):
         return [rf"Motor \textbf{{{latex_escape(sel.selected)}}}" + latex_escape(maker)]
 
     def page(self, m, view) -> str:
-        """The catalog motors (of ``m``, a :class:`calc.sections.motor.MotorResult`), best first;
-        nothing for a motor the case types, or none."""
+        """The catalog motors, best first; nothing for a motor the case types, or none.
+
+        Parameters
+        ----------
+        m : calc.sections.motor.MotorResult or None
+            The motor's result; None: the case has no motor.
+        view : calc.report.page.View
+            What the page asks: the candidates to list, the ratio search, a cycle typed by hand.
+
+        Returns
+        -------
+        str
+            HTML.
+        """
         if m is None or m.selection is None:
             return ""
         sel = m.selection
