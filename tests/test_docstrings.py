@@ -33,7 +33,8 @@ COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "cal
                    "calc.review.serve", "calc.review.state", "calc.review.variants",
                    "calc", "calc.__main__", "calc.report", "calc.report.common", "calc.report.coupling",
                    "calc.report.drive", "calc.report.gearbox", "calc.report.motion", "calc.report.motor",
-                   "calc.report.ratios")
+                   "calc.report.ratios", "calc.report.latex", "calc.report.page", "calc.report.provenance",
+                   "calc.report.symbols")
 #: Every layer, for the report of shares.
 LAYERS = ("core", "data", "domain", "figures", "sections", "report", "review")
 #: Generated code, not written by hand.
