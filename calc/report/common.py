@@ -148,9 +148,9 @@ def result_of(name: str, report):
     return report.evaluated.sections.get(name) if report.evaluated is not None else None
 
 
-def _block(summary: str, returns: str):
-    """The numpydoc docstring of a block method of :class:`Renderer`: its summary, the report it
-    takes and what it returns (every block takes the same report).
+def block_doc(summary: str, returns: str, description: str = ""):
+    """The numpydoc docstring of a block method of :class:`Renderer` or of a section's renderer: its
+    summary, the report it takes and what it returns (every block takes the same report).
 
     Parameters
     ----------
@@ -158,6 +158,36 @@ def _block(summary: str, returns: str):
         What the section gives to the block.
     returns : str
         The type of the block's part.
+    description : str, optional
+        What the part holds, said under its type.
+
+    Returns
+    -------
+    callable
+        A decorator that sets the method's docstring.
+    """
+    said = f"    {description}\n" if description else ""
+
+    def document(method):
+        method.__doc__ = (f"{summary}\n\nParameters\n----------\nreport : calc.report.Report\n"
+                          "    The report being built (its case, and its results where the case could be\n"
+                          f"    evaluated).\n\nReturns\n-------\n{returns}\n{said}")
+        return method
+
+    return document
+
+
+def page_doc(summary: str, name: str, kind: str):
+    """The numpydoc docstring of a section renderer's part of the review's page (:meth:`Renderer.page`).
+
+    Parameters
+    ----------
+    summary : str
+        What the part shows.
+    name : str
+        The name the method gives the section's result.
+    kind : str
+        The result's type.
 
     Returns
     -------
@@ -165,9 +195,11 @@ def _block(summary: str, returns: str):
         A decorator that sets the method's docstring.
     """
     def document(method):
-        method.__doc__ = (f"{summary}\n\nParameters\n----------\nreport : calc.report.Report\n"
-                          "    The report being built (its case, and its results where the case could be\n"
-                          f"    evaluated).\n\nReturns\n-------\n{returns}\n")
+        method.__doc__ = (f"{summary}\n\nParameters\n----------\n{name} : {kind} or None\n"
+                          "    The section's result; None: the case has none.\n"
+                          "view : calc.report.page.View\n"
+                          "    What the page asks: the candidates to list, the ratio search, a cycle typed by hand.\n"
+                          "\nReturns\n-------\nstr\n    HTML.\n")
         return method
 
     return document
@@ -203,47 +235,47 @@ class Renderer:
 
     # -- the calc report's blocks (:class:`calc.report.Report`) ---------------------------------
 
-    @_block("The source's sections the section is computed from (method).", "list of str")
+    @block_doc("The source's sections the section is computed from (method).", "list of str")
     def sources(self, report) -> list[str]:
         return []
 
-    @_block("The keys of the errata readings that apply (method).", "set of str")
+    @block_doc("The keys of the errata readings that apply (method).", "set of str")
     def readings(self, report) -> set[str]:
         return set()
 
-    @_block("Rows of the inputs table (:func:`input_row`).", "list of list of str")
+    @block_doc("Rows of the inputs table (:func:`input_row`).", "list of list of str")
     def input_rows(self, report) -> list[list[str]]:
         return []
 
-    @_block("Tables of inputs after the inputs table.", "list of str")
+    @block_doc("Tables of inputs after the inputs table.", "list of str")
     def inputs(self, report) -> list[str]:
         return []
 
-    @_block("The calculations, ``symbol = formula = values = result``.", "list of str")
+    @block_doc("The calculations, ``symbol = formula = values = result``.", "list of str")
     def steps(self, report) -> list[str]:
         return []
 
-    @_block("What the section gives besides its checks.", "list of str")
+    @block_doc("What the section gives besides its checks.", "list of str")
     def results(self, report) -> list[str]:
         return []
 
-    @_block("The checks of the part chosen (or the closest), or of the section's own values.", "list of str")
+    @block_doc("The checks of the part chosen (or the closest), or of the section's own values.", "list of str")
     def checks(self, report) -> list[str]:
         return []
 
-    @_block("The candidates ranked.", "list of str")
+    @block_doc("The candidates ranked.", "list of str")
     def candidates(self, report) -> list[str]:
         return []
 
-    @_block("(figure, caption) pairs; the caption is LaTeX.", "list")
+    @block_doc("(figure, caption) pairs; the caption is LaTeX.", "list")
     def figures(self, report) -> list:
         return []
 
-    @_block("(what, part, detail) of the part chosen; part None where none passes.", "list of tuple")
+    @block_doc("(what, part, detail) of the part chosen; part None where none passes.", "list of tuple")
     def chosen(self, report) -> list[tuple]:
         return []
 
-    @_block("What to order.", "list of str")
+    @block_doc("What to order.", "list of str")
     def order_lines(self, report) -> list[str]:
         return []
 
@@ -522,19 +554,9 @@ class TableRenderer(Renderer):
         raw = report.case.sections[self.NAME]
         return [raw_section_tables(self.NAME, raw, self.derived_inputs(report, raw))]
 
+    @block_doc("The checks of the best-ranked candidate, or the checks against the case's requirements.",
+               "list of str", "The checks' table (LaTeX), none where there is nothing to check.")
     def checks(self, report) -> list[str]:
-        """The checks of the best-ranked candidate, or the checks against the case's requirements.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built.
-
-        Returns
-        -------
-        list of str
-            The checks' table (LaTeX), none where there is nothing to check.
-        """
         r = self.result(report)
         if r is not None and r.ranked() is not None:
             best = r.ranked().best

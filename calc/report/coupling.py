@@ -9,7 +9,7 @@ from html import escape
 
 from ..core.units import sig
 from ..sections.coupling import NAME
-from .common import TableRenderer, candidates_table, rejected
+from .common import TableRenderer, block_doc, candidates_table, page_doc, rejected
 from .latex import breakable, itemize, latex_escape, plain, prose, q, sources_list, step_block, symbol_math, table
 from .page import candidates_shown, notes, table as html_table, utilization, value, verdict_cell
 from .symbols import html as typeset
@@ -88,21 +88,11 @@ class CouplingRenderer(TableRenderer):
         x = r.inputs.inputs
         return {k: f"{sig(x[k].m_as(u))} {u}" for k, u in units.items() if k not in raw and x.get(k) is not None}
 
+    @block_doc("The coupling's calculations as the section computed them: the inputs taken from the rest of the "
+               "case, M_N with its factors, 2 f_er, the best-ranked row's natural frequency and the drive train's "
+               "modes.",
+               "list of str", "The calculation steps, LaTeX.")
     def steps(self, report) -> list[str]:
-        """The coupling's calculations as the section computed them: the inputs taken from the rest
-        of the case, M_N with its factors, 2 f_er, the best-ranked row's natural frequency and the
-        drive train's modes.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built.
-
-        Returns
-        -------
-        list of str
-            The calculation steps, LaTeX.
-        """
         r = self.result(report)
         if r is None:
             return []
@@ -119,19 +109,9 @@ class CouplingRenderer(TableRenderer):
             out += [step_block(*s) for s in r.resonance_steps]
         return out + _torsion(r)
 
+    @block_doc("What the coupling gives besides its checks: M_N, T_op, K_ϑ, f_e,min, the shafts, notes.",
+               "list of str", "The results' heading and tables, LaTeX.")
     def results(self, report) -> list[str]:
-        """What the coupling gives besides its checks: M_N, T_op, K_ϑ, f_e,min, the shafts, notes.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built.
-
-        Returns
-        -------
-        list of str
-            The results' heading and tables, LaTeX.
-        """
         r = self.result(report)
         if r is None:
             return []
@@ -158,20 +138,10 @@ class CouplingRenderer(TableRenderer):
             out.append(r"\paragraph{Notes.}" + itemize(prose(n) for n in r.notes))
         return out
 
+    @block_doc("Every candidate's utilization of each check, the doubtful figures and sources of the rows, and why "
+               "the closest rejected ones fail.",
+               "list of str", "LaTeX.")
     def candidates(self, report) -> list[str]:
-        """Every candidate's utilization of each check, the doubtful figures and sources of the rows,
-        and why the closest rejected ones fail.
-
-        Parameters
-        ----------
-        report : calc.report.Report
-            The report being built.
-
-        Returns
-        -------
-        list of str
-            LaTeX.
-        """
         r = self.result(report)
         if r is None:
             return []
@@ -209,21 +179,9 @@ class CouplingRenderer(TableRenderer):
                         prose(f"Temperature factor of elastomer couplings ({factors.source}).")))
         return out
 
+    @page_doc("The coupling candidates, best first, and the drive train's modes.",
+              "s", "calc.sections.coupling.CouplingResult")
     def page(self, s, view) -> str:
-        """The coupling candidates, best first, and the drive train's modes.
-
-        Parameters
-        ----------
-        s : calc.sections.coupling.CouplingResult or None
-            The coupling's result; None: the case has no coupling.
-        view : calc.report.page.View
-            What the page asks: the candidates to list, the ratio search, a cycle typed by hand.
-
-        Returns
-        -------
-        str
-            HTML.
-        """
         if s is None:
             return ""
 

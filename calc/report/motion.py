@@ -9,7 +9,7 @@ from html import escape
 
 from ..sections.motion import NAME, keys_of
 from ..core.units import Q_, sig
-from .common import Renderer, input_row
+from .common import Renderer, input_row, page_doc
 from .latex import latex_escape, signed, step_block, symbol_math, table
 from .page import value
 from .symbols import html as typeset
@@ -92,22 +92,10 @@ class MotionRenderer(Renderer):
                             linear=k is not None and k.linear, rows=("speed", "torque"))
         return [(fig, "Output speed and torque over one cycle, sampled, with the derived segments (dashed).")]
 
+    @page_doc("Where the load cycle comes from: the motion's peak values, or that its segments were changed by hand "
+              "(then the moves and mechanism no longer derive it).",
+              "m", "calc.sections.motion.MotionResult")
     def page(self, m, view) -> str:
-        """Where the load cycle comes from: the motion's peak values, or that its segments were
-        changed by hand (then the moves and mechanism no longer derive it).
-
-        Parameters
-        ----------
-        m : calc.sections.motion.MotionResult or None
-            The motion's result; None without one.
-        view : calc.report.page.View
-            What the page asks: the candidates to list, the ratio search, a cycle typed by hand.
-
-        Returns
-        -------
-        str
-            HTML.
-        """
         if view.typed_by_hand:
             return ('<div class="values">Load cycle: the segments as changed here (the case derives them from its '
                     'motion; reset to derive them again)</div>')
