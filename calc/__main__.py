@@ -22,26 +22,46 @@ from .core.errors import CalcError
 
 
 def main(argv=None) -> int:
+    """Run one command of the command line.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments after ``python -m calc`` (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit status: 0 when results were produced, 1 with ``--strict`` when a verdict is not PASS,
+        2 on input errors.
+    """
     parser = argparse.ArgumentParser(prog="python -m calc", description="Servo drive-train sizing workbook.")
     sub = parser.add_subparsers(dest="command", required=True)
     ev = sub.add_parser("evaluate", help="evaluate a design case and print its results")
     ev.add_argument("case", help="the design-case TOML file")
-    ev.add_argument("--json", action="store_true", help="print the results as JSON (the contract of docs/case-format.md)")
-    ev.add_argument("--all-candidates", action="store_true", help="list every candidate (default: the best 20 and the count)")
+    ev.add_argument("--json", action="store_true",
+                    help="print the results as JSON (the contract of docs/case-format.md)")
+    ev.add_argument("--all-candidates", action="store_true",
+                    help="list every candidate (default: the best 20 and the count)")
     ra = sub.add_parser("ratios", help="evaluate a design case at every ratio of its gearbox catalog and pick one")
     ra.add_argument("case", help="the design-case TOML file")
     ra.add_argument("--json", action="store_true", help="print the results as JSON")
-    co = sub.add_parser("combinations", help="every motor of the case's motor catalog with every gearbox at every ratio: the feasible pairs and the pick")
+    co = sub.add_parser("combinations", help="every motor of the case's motor catalog with every gearbox at every "
+                                             "ratio: the feasible pairs and the pick")
     co.add_argument("case", help="the design-case TOML file (with [motor] catalog and [gearbox] catalog)")
     co.add_argument("--json", action="store_true", help="print the results as JSON")
-    co.add_argument("--figure", metavar="FILE", help="also draw the motors against the ratios (PDF, PNG or SVG, by the file's suffix)")
+    co.add_argument("--figure", metavar="FILE",
+                    help="also draw the motors against the ratios (PDF, PNG or SVG, by the file's suffix)")
     rp = sub.add_parser("report", help="build the PDF calc report of one or more design cases")
     rp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one PDF each")
-    rp.add_argument("-o", "--output", help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
+    rp.add_argument("-o", "--output",
+                    help="the PDF file (one case) or the folder (several); default reports/<case name>.pdf")
     rp.add_argument("--summary", action="store_true",
                     help="also write summary.pdf and summary.csv in the output folder: one row per case")
-    rp.add_argument("-j", "--jobs", type=int, metavar="N", help="build N reports at a time (default: the number of cores)")
-    cp = sub.add_parser("compare", help="compare design cases side by side (verdict, chosen parts, utilizations, key results)")
+    rp.add_argument("-j", "--jobs", type=int, metavar="N",
+                    help="build N reports at a time (default: the number of cores)")
+    cp = sub.add_parser("compare",
+                        help="compare design cases side by side (verdict, chosen parts, utilizations, key results)")
     cp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one column each")
     cp.add_argument("--json", action="store_true", help="print the table as JSON")
     cp.add_argument("--pdf", help="also write the table and a comparison figure as a PDF file")
@@ -74,7 +94,7 @@ def _run(args) -> int:
             from .sections.pairs import search_pairs
 
             results = search_pairs(read_case(args.case))
-            text = json.dumps(results.to_json(), indent=2, ensure_ascii=False, allow_nan=False) if args.json else results.summary()
+            text = _json(results.to_json()) if args.json else results.summary()
             passes = results.verdict().passes
             if args.figure:
                 results.figure().savefig(args.figure)
@@ -82,12 +102,12 @@ def _run(args) -> int:
             from .sections.ratios import search
 
             results = search(read_case(args.case))
-            text = json.dumps(results.to_json(), indent=2, ensure_ascii=False, allow_nan=False) if args.json else results.summary()
+            text = _json(results.to_json()) if args.json else results.summary()
             passes = results.verdict().passes
         else:
             candidates = None if args.all_candidates else SHOWN_CANDIDATES
             results = evaluate(read_case(args.case))
-            text = json.dumps(results.to_json(candidates), indent=2, ensure_ascii=False, allow_nan=False) if args.json else results.summary(candidates)
+            text = _json(results.to_json(candidates)) if args.json else results.summary(candidates)
             passes = results.verdict.passes
     except CalcError as exc:
         print(f"error: {exc}", file=sys.stderr)
@@ -96,13 +116,30 @@ def _run(args) -> int:
     return 1 if args.strict and passes is not True else 0
 
 
+def _json(results: dict) -> str:
+    # NaN or infinity in the results is a defect, not valid JSON to print.
+    return json.dumps(results, indent=2, ensure_ascii=False, allow_nan=False)
+
+
 def run_quietly_into_a_closed_pipe(argv=None) -> int:
-    """:func:`main`, ending quietly when the reader of standard output goes away
+    """Run :func:`main`, ending quietly when the reader of standard output goes away
     (``python -m calc evaluate case.toml | head -1``).
 
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments after ``python -m calc`` (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        :func:`main`'s exit status, or 1 when standard output was closed (as the Python docs use).
+
+    Notes
+    -----
     Python ignores SIGPIPE, so a write to a closed pipe raises BrokenPipeError, and again at exit
     when it flushes standard output; as the Python docs' note on SIGPIPE advises, standard output
-    then points at devnull. Exit code 1, as the docs use.
+    then points at devnull.
     """
     try:
         code = main(argv)

@@ -12,7 +12,8 @@ ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = ROOT / "tests" / "cases" / "indexing-table-profile.toml"  # the typed load cycle the tests work by hand
 DERIVED_EXAMPLE = ROOT / "cases" / "indexing-table.toml"  # the example: its cycle derived from the motion
 GEARBOXES = ROOT / "catalogs" / "gearboxes.csv"
-# The example's motor as ratings typed into the case (the motor the tests work by hand), in place of the catalog's choice.
+# The example's motor as ratings typed into the case (the motor the tests work by hand), in place of the catalog's
+# choice.
 TYPED_MOTOR = 'peak_torque = "12 N*m"\ninertia = "4.2 kg*cm**2"\n'
 
 
@@ -129,8 +130,12 @@ def report_run(tmp_path_factory):
         (folder / f"{name}.toml").write_text(text, encoding="utf-8")
         cases.append(folder / f"{name}.toml")
     out = folder / "out"
-    proc = subprocess.run([sys.executable, "-m", "calc", "report", *map(str, cases), "--summary", "--strict", "-o", str(out)],
-                          capture_output=True, text=True, cwd=ROOT)
+    proc = subprocess.run(
+        [sys.executable, "-m", "calc", "report", *map(str, cases), "--summary", "--strict", "-o", str(out)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
     return cases, out, proc
 
 

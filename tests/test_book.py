@@ -51,7 +51,9 @@ def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(boo
     out, pages = book
     problems = []
     with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
-        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True, args=CHROMIUM_ARGS)
+        browser = pw.chromium.launch_persistent_context(
+            profile, executable_path=str(CHROMIUM), headless=True, args=CHROMIUM_ARGS
+        )
         try:
             page = browser.new_page()
             asked, failed, typeset = [], [], 0
@@ -62,23 +64,36 @@ def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(boo
                 asked.clear(), failed.clear()
                 page.goto(path.as_uri(), wait_until="load")
                 if page.locator("script[src*='mathjax']").count():  # Sphinx adds MathJax to the pages with math
-                    page.wait_for_function("() => window.MathJax && MathJax.startup && MathJax.startup.promise", timeout=30_000)
+                    page.wait_for_function(
+                        "() => window.MathJax && MathJax.startup && MathJax.startup.promise", timeout=30_000
+                    )
                     page.evaluate("() => MathJax.startup.promise")
                     typeset += page.evaluate("() => document.querySelectorAll('mjx-container').length")
                 problems += [f"{name}: asks the network for {u}" for u in asked if not u.startswith("file:")]
                 problems += [f"{name}: {u} is missing" for u in failed]
-                broken = page.evaluate("() => [...document.images].filter(i => !i.complete || i.naturalWidth === 0).map(i => i.src)")
+                broken = page.evaluate(
+                    "() => [...document.images].filter(i => !i.complete || i.naturalWidth === 0).map(i => i.src)"
+                )
                 problems += [f"{name}: image {u} does not show" for u in broken]
                 for href in page.evaluate("() => [...document.querySelectorAll('a[href]')].map(a => a.href)"):
                     target = urlparse(href)
                     if target.scheme == "file" and not Path(unquote(target.path)).exists():
                         problems += [f"{name}: link to {href} leads nowhere"]
-                errors = page.evaluate("() => [...document.querySelectorAll('mjx-merror')].map(e => e.getAttribute('data-mjx-error') || e.textContent)")
+                errors = page.evaluate(
+                    "() => [...document.querySelectorAll('mjx-merror')]"
+                    ".map(e => e.getAttribute('data-mjx-error') || e.textContent)"
+                )
                 problems += [f"{name}: math error {e!r}" for e in errors]
-                prose = page.evaluate("() => { const b = document.body.cloneNode(true); b.querySelectorAll('pre, code, script').forEach(e => e.remove()); return b.textContent; }")
+                prose = page.evaluate(
+                    "() => { const b = document.body.cloneNode(true); "
+                    "b.querySelectorAll('pre, code, script').forEach(e => e.remove()); return b.textContent; }"
+                )
                 raw = RAW_TEX.findall(prose)  # code shows its $...$ as written
                 problems += [f"{name}: shows raw TeX {raw[:3]}"] if raw else []
-                left = page.evaluate("() => [...document.querySelectorAll('.math')].filter(m => !m.querySelector('mjx-container')).length")
+                left = page.evaluate(
+                    "() => [...document.querySelectorAll('.math')]"
+                    ".filter(m => !m.querySelector('mjx-container')).length"
+                )
                 problems += [f"{name}: {left} formulas left untypeset"] if left else []
                 if path.parent.name == "notebooks" and "Self-check" in page.inner_text("body"):
                     answer = page.locator("details").first

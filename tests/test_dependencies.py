@@ -38,7 +38,9 @@ def modules_used(folders) -> dict:
                 elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
                     names.add(node.module.split(".")[0])
             # pip comes with every virtual environment (python -m venv), the others are the project's own.
-            for name in names - set(sys.stdlib_module_names) - {"calc", "tests", "bench", "review_browser", "__future__", "pip"}:
+            for name in (
+                names - set(sys.stdlib_module_names) - {"calc", "tests", "bench", "review_browser", "__future__", "pip"}
+            ):
                 used.setdefault(name, path.relative_to(ROOT))
     return used
 
@@ -62,7 +64,11 @@ def test_what_the_package_uses_is_declared():
 
 
 def test_what_the_tests_and_benchmark_use_is_declared():
-    declared = {requirement_name(r) for reqs in [PYPROJECT["dependencies"], *PYPROJECT["optional-dependencies"].values()] for r in reqs}
+    declared = {
+        requirement_name(r)
+        for reqs in [PYPROJECT["dependencies"], *PYPROJECT["optional-dependencies"].values()]
+        for r in reqs
+    }
     assert undeclared(modules_used(["tests", "bench"]), declared) == []
 
 
@@ -79,5 +85,9 @@ def test_environment_txt_pins_exactly_what_is_installed():
         for d in importlib.metadata.distributions()
         if normalized(d.metadata["Name"]) not in {"pip", normalized(PYPROJECT["name"])}
     }
-    assert {k: v for k, v in installed.items() if pinned.get(k) != v} == {}, "installed but not pinned (or at another version)"
-    assert {k: v for k, v in pinned.items() if installed.get(k) != v} == {}, "pinned but not installed (or at another version)"
+    assert {k: v for k, v in installed.items() if pinned.get(k) != v} == {}, (
+        "installed but not pinned (or at another version)"
+    )
+    assert {k: v for k, v in pinned.items() if installed.get(k) != v} == {}, (
+        "pinned but not installed (or at another version)"
+    )

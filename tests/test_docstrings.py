@@ -42,7 +42,11 @@ COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "cal
                    "calc.sections.motor",
                    "calc.sections.pairs",
                    "calc.sections.protocol",
-                   "calc.sections.reference")
+                   "calc.sections.reference",
+                   "calc", "calc.__main__", "calc.report", "calc.report.common", "calc.report.coupling",
+                   "calc.report.drive", "calc.report.gearbox", "calc.report.motion", "calc.report.motor",
+                   "calc.report.ratios", "calc.report.latex", "calc.report.page", "calc.report.provenance",
+                   "calc.report.symbols", "calc.report.publish")
 #: Every layer, for the report of shares.
 LAYERS = ("core", "data", "domain", "figures", "sections", "report", "review")
 #: Generated code, not written by hand.

@@ -8,7 +8,9 @@ import pytest
 
 from .conftest import ROOT
 
-NOTEBOOKS = sorted(p for p in ROOT.rglob("*.ipynb") if not {".venv", "build", ".ipynb_checkpoints"} & set(p.relative_to(ROOT).parts))
+NOTEBOOKS = sorted(
+    p for p in ROOT.rglob("*.ipynb") if not {".venv", "build", ".ipynb_checkpoints"} & set(p.relative_to(ROOT).parts)
+)
 WARNING = re.compile(r"\b\w*Warning\b|^WARNING\b", re.MULTILINE)
 # An asterisk between word characters, outside code spans and math: markdown takes it for emphasis.
 EATEN = re.compile(r"\w\*\w")
@@ -27,8 +29,12 @@ def problems(notebook: dict) -> list[str]:
         for out in cell.get("outputs", []):
             if out["output_type"] == "stream" and out["name"] == "stderr":
                 found.append(f"cell {k}: standard-error output: {text(out['text'])[:200]!r}")
-            shown = [text(out.get("text", ""))] + [text(v) for m, v in out.get("data", {}).items() if m.startswith("text/")]
-            found += [f"cell {k}: a warning in the output: {m.group(0)!r}" for s in shown for m in [WARNING.search(s)] if m]
+            shown = [text(out.get("text", ""))] + [
+                text(v) for m, v in out.get("data", {}).items() if m.startswith("text/")
+            ]
+            found += [
+                f"cell {k}: a warning in the output: {m.group(0)!r}" for s in shown for m in [WARNING.search(s)] if m
+            ]
             markdown += [text(out.get("data", {}).get("text/markdown", ""))]
         for s in markdown:
             m = EATEN.search(CODE_OR_MATH.sub("", s))
@@ -52,5 +58,11 @@ def test_the_check_finds_what_it_looks_for():
         ]},
     ]}
     found = problems(notebook)
-    assert len(found) == 4 and "'N*m'" in found[0] and "standard-error" in found[1] and "UserWarning" in found[2] and "'N*m'" in found[3]
+    assert (
+        len(found) == 4
+        and "'N*m'" in found[0]
+        and "standard-error" in found[1]
+        and "UserWarning" in found[2]
+        and "'N*m'" in found[3]
+    )
     assert problems({"cells": [{"cell_type": "markdown", "source": "a `N*m` b, **bold** and *italic*"}]}) == []

@@ -32,14 +32,22 @@ QUOTED = {
     ("04-couplings.ipynb", "0.012"): "ISO 286-2: k6 over 10 up to 18 mm (calc.domain.fits, tests/domain/test_fits.py)",
     ("04-couplings.ipynb", "0.015"): "ISO 286-2: k6 over 18 up to 30 mm (calc.domain.fits, tests/domain/test_fits.py)",
     ("04-couplings.ipynb", "0.018"): "ISO 286-2: k6 over 30 up to 50 mm (calc.domain.fits, tests/domain/test_fits.py)",
-    ("05-stiffness-backlash-lost-motion.ipynb", "50"): "the band of the loop the stiffness is read in, 50 % to 100 % of T_N (calc.domain.hysteresis)",
-    ("06-transmission-and-positioning-accuracy.ipynb", "31"): "the generated trace's tooth mesh, 31 per input turn (data/transmission-NPT035-10-generated.csv)",
+    (
+        "05-stiffness-backlash-lost-motion.ipynb",
+        "50",
+    ): "the band of the loop the stiffness is read in, 50 % to 100 % of T_N (calc.domain.hysteresis)",
+    (
+        "06-transmission-and-positioning-accuracy.ipynb",
+        "31",
+    ): "the generated trace's tooth mesh, 31 per input turn (data/transmission-NPT035-10-generated.csv)",
     ("06-transmission-and-positioning-accuracy.ipynb", "310"): "the same mesh per output turn, 31 · 10",
 }
 NAMES = re.compile(r"\b(?:ISO|IEC|DIN)\s[\d-]+|[\w/.-]+\.(?:ipynb|toml|csv|py|png)\b")  # standards and files
 POSED = re.compile(r"^## (?:Exercises|Self-check)", re.MULTILINE)  # questions: hypothetical values
 NUMBER = re.compile(r"(?<![\w.])(?<!\w-)\d+(?:[ ,]\d{3})*(?:\.\d+)?")
-NOT_PROSE = re.compile(r"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s", re.MULTILINE)  # headings, link targets, errata, "02 · "
+NOT_PROSE = re.compile(
+    r"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s", re.MULTILINE
+)  # headings, link targets, errata, "02 · "
 
 
 def text(value) -> str:
@@ -56,7 +64,9 @@ def stated(cell: dict) -> list[float]:
     """The numbers a code cell prints or displays, and those written in its code (comments left out)."""
     code = "\n".join(line.split("#")[0] for line in text(cell["source"]).splitlines())
     shown = [text(out.get("text", "")) for out in cell.get("outputs", [])]
-    shown += [text(v) for out in cell.get("outputs", []) for m, v in out.get("data", {}).items() if m.startswith("text/")]
+    shown += [
+        text(v) for out in cell.get("outputs", []) for m, v in out.get("data", {}).items() if m.startswith("text/")
+    ]
     return [float(m.group(0).replace(" ", "").replace(",", "")) for m in NUMBER.finditer("\n".join([code, *shown]))]
 
 
@@ -76,7 +86,11 @@ def unfounded(notebook: dict) -> list[str]:
         while j < len(cells) and cells[j]["cell_type"] == "code":
             beside += stated(cells[j])
             j += 1
-        found += [f"cell {k}: {n} is quoted but not printed beside it" for n in quoted(text(cell["source"])) if not matches(n, beside)]
+        found += [
+            f"cell {k}: {n} is quoted but not printed beside it"
+            for n in quoted(text(cell["source"]))
+            if not matches(n, beside)
+        ]
     return found
 
 
@@ -101,11 +115,25 @@ def test_every_number_the_course_quotes_is_printed(path):
 
 
 def test_the_course_check_finds_a_stale_figure():
-    code = {"cell_type": "code", "source": "i = 10", "outputs": [{"output_type": "stream", "name": "stdout", "text": "C = 20.1 N·m/arcmin, the gearbox 91 % of the twist"}]}
-    notebook = {"cells": [code, {"cell_type": "markdown", "source": "See ISO 286 and 05-x.ipynb: 91 % of the twist, C = 20.1 N·m/arcmin"}]}
+    code = {
+        "cell_type": "code",
+        "source": "i = 10",
+        "outputs": [
+            {"output_type": "stream", "name": "stdout", "text": "C = 20.1 N·m/arcmin, the gearbox 91 % of the twist"}
+        ],
+    }
+    notebook = {
+        "cells": [
+            code,
+            {"cell_type": "markdown", "source": "See ISO 286 and 05-x.ipynb: 91 % of the twist, C = 20.1 N·m/arcmin"},
+        ]
+    }
     assert unfounded_anywhere(notebook, "05-x.ipynb") == []
     notebook["cells"][1]["source"] = "97 % of the twist, C = 21.35 N·m/arcmin"
-    assert unfounded_anywhere(notebook, "05-x.ipynb") == ["cell 1: 97 is quoted but printed nowhere", "cell 1: 21.35 is quoted but printed nowhere"]
+    assert unfounded_anywhere(notebook, "05-x.ipynb") == [
+        "cell 1: 97 is quoted but printed nowhere",
+        "cell 1: 21.35 is quoted but printed nowhere",
+    ]
     notebook["cells"][1]["source"] = "## Exercises\n\nTry 97 % and 21.35 N·m/arcmin."
     assert unfounded_anywhere(notebook, "05-x.ipynb") == []
 
@@ -117,10 +145,25 @@ def test_every_number_quoted_is_printed_beside_it(path):
 
 
 def test_the_check_finds_a_number_that_drifted():
-    code = {"cell_type": "code", "source": "x = 2300  # by hand: 2300", "outputs": [{"output_type": "stream", "name": "stdout", "text": "n_1N = 2200 rpm, T = 35.41 N·m"}]}
-    notebook = {"cells": [{"cell_type": "markdown", "source": "## 02 · S1\n\nn_1N of 2200 rpm and T_2m = 35.4 N·m; see [E2](02-x.ipynb), 3 checks"}, code]}
+    code = {
+        "cell_type": "code",
+        "source": "x = 2300  # by hand: 2300",
+        "outputs": [{"output_type": "stream", "name": "stdout", "text": "n_1N = 2200 rpm, T = 35.41 N·m"}],
+    }
+    notebook = {
+        "cells": [
+            {
+                "cell_type": "markdown",
+                "source": "## 02 · S1\n\nn_1N of 2200 rpm and T_2m = 35.4 N·m; see [E2](02-x.ipynb), 3 checks",
+            },
+            code,
+        ]
+    }
     assert unfounded(notebook) == []
     notebook["cells"][0]["source"] = "n_1N of 2300 rpm and T_2m = 35.5 N·m, T = 35.41 N·m"
     assert unfounded(notebook) == ["cell 0: 35.5 is quoted but not printed beside it"]
     code["source"] = "x = 1  # by hand: 2300"
-    assert unfounded(notebook) == ["cell 0: 2300 is quoted but not printed beside it", "cell 0: 35.5 is quoted but not printed beside it"]
+    assert unfounded(notebook) == [
+        "cell 0: 2300 is quoted but not printed beside it",
+        "cell 0: 35.5 is quoted but not printed beside it",
+    ]

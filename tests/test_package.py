@@ -21,7 +21,16 @@ from calc.sections import evaluate
 
 from .conftest import DERIVED_EXAMPLE as EXAMPLE, ROOT  # the example case as shipped
 
-PIP = ["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "--no-index", "--no-deps", "--no-build-isolation"]
+PIP = [
+    "-m",
+    "pip",
+    "install",
+    "--quiet",
+    "--disable-pip-version-check",
+    "--no-index",
+    "--no-deps",
+    "--no-build-isolation",
+]
 
 
 @pytest.fixture
@@ -72,7 +81,12 @@ def test_pip_install_runs_the_example_case_from_package_data(source, tmp_path):
     target = tmp_path / "site"
     run([sys.executable, *PIP, "--target", str(target), str(source)], env=child_env())
     installed = target / "calc"
-    assert sorted(p.name for p in (installed / "catalogs").glob("*.csv")) == ["couplings.csv", "gearbox-hubs.csv", "gearboxes.csv", "motors.csv"]
+    assert sorted(p.name for p in (installed / "catalogs").glob("*.csv")) == [
+        "couplings.csv",
+        "gearbox-hubs.csv",
+        "gearboxes.csv",
+        "motors.csv",
+    ]
     assert not list(installed.rglob("*.pdf"))  # generated reports stay out of the package
     # The licences travel with it: MIT for the code, CC BY 4.0 for the catalogs' compilation (LICENSE).
     (info,) = target.glob("drivetrain_calc-*.dist-info")
@@ -105,7 +119,9 @@ def test_pip_install_runs_the_example_case_from_package_data(source, tmp_path):
     assert results["coupling"]["catalog"] == "catalogs/couplings.csv"
     # The user's files, outside any checkout, show absolute; else the installed copy gives the checkout's results.
     assert results["case"] == str(work.resolve() / "cases" / "indexing-table.toml")
-    assert json.loads(out.replace(f"{work.resolve()}/", "")) == json.loads(json.dumps(evaluate(read_case(EXAMPLE)).to_json()))
+    assert json.loads(out.replace(f"{work.resolve()}/", "")) == json.loads(
+        json.dumps(evaluate(read_case(EXAMPLE)).to_json())
+    )
 
 
 def test_editable_install_maps_the_top_level_folders(source, tmp_path):

@@ -35,33 +35,91 @@ ERRATA: dict = _METHOD["errata"]
 
 
 def sources(name: str) -> list[str]:
-    """The source's sections a described section is computed from."""
+    """The source's sections a described section is computed from.
+
+    Parameters
+    ----------
+    name : str
+        The section's name (``"coupling"``).
+
+    Returns
+    -------
+    list of str
+        The sections of the source document (``errata.toml``'s ``sources``), empty for none.
+    """
     return list(SOURCE_SECTIONS.get(name, ()))
 
 
 def readings(name: str) -> set[str]:
-    """The keys of the errata readings of a section."""
+    """The keys of the errata readings of a section.
+
+    Parameters
+    ----------
+    name : str
+        The section's name.
+
+    Returns
+    -------
+    set of str
+        The readings' keys (``E8``) whose ``section`` is the section.
+    """
     return {k for k, e in ERRATA.items() if e.get("section") == name}
 
 
-#: The columns of an inputs table: symbol, value, unit, description, case key (which may break after a dot or underscore).
+#: The columns of an inputs table: symbol, value, unit, description, case key (which may break after a dot
+#: or underscore).
 INPUT_COLUMNS = r"@{}l r l p{0.36\linewidth} p{0.27\linewidth}@{}"
 
 
 def case_key(key: str) -> str:
-    """A case key in an inputs table: code, breakable."""
+    """A case key in an inputs table: code, breakable.
+
+    Parameters
+    ----------
+    key : str
+        The dotted case key (``coupling.shaft_1``).
+
+    Returns
+    -------
+    str
+        LaTeX.
+    """
     return rf"\texttt{{\footnotesize {breakable(key)}}}"
 
 
 def symbol_latex(name: str) -> str:
-    """A symbol's LaTeX by its name in code (:func:`calc.core.glossary.latex`); empty for none."""
+    """A symbol's LaTeX by its name in code (:func:`calc.core.glossary.latex`).
+
+    Parameters
+    ----------
+    name : str
+        The symbol's name in code (``T_2max``), or empty for none.
+
+    Returns
+    -------
+    str
+        Its LaTeX; empty for none.
+    """
     return symbols.symbol_latex(name) if name else ""
 
 
 def input_row(path: str, value, derived: bool = False) -> list[str]:
-    """A row of the inputs table as the key at ``path`` is declared (:func:`calc.sections.declared`):
-    symbol, value (a quantity in the unit the declaration shows, or a text as written), unit,
-    description, case key (marked where the package took the value from the rest of the case)."""
+    """A row of the inputs table as the key at ``path`` is declared (:func:`calc.sections.declared`).
+
+    Parameters
+    ----------
+    path : str
+        The dotted case key.
+    value : pint.Quantity [the declared unit] or str or list
+        A quantity (shown in the unit the declaration shows), or a text as written.
+    derived : bool, optional
+        The package took the value from the rest of the case (the key is marked).
+
+    Returns
+    -------
+    list of str
+        Symbol, value, unit, description, case key (LaTeX).
+    """
     key = declared(path)
     latex = symbol_latex(key.symbol)
     if hasattr(value, "m_as"):
@@ -73,13 +131,26 @@ def input_row(path: str, value, derived: bool = False) -> list[str]:
 
 
 def result_of(name: str, report):
-    """A section's result (:mod:`calc.sections`); None where the case has none or cannot be evaluated."""
+    """A section's result (:mod:`calc.sections`).
+
+    Parameters
+    ----------
+    name : str
+        The section's name, its key in the results.
+    report : calc.report.Report
+        The report being built.
+
+    Returns
+    -------
+    calc.sections.protocol.Result or None
+        None where the case has none or cannot be evaluated.
+    """
     return report.evaluated.sections.get(name) if report.evaluated is not None else None
 
 
-def _block(summary: str, returns: str):
-    """The numpydoc docstring of a block method of :class:`Renderer`: its summary, the report it
-    takes and what it returns (every block takes the same report).
+def block_doc(summary: str, returns: str, description: str = ""):
+    """The numpydoc docstring of a block method of :class:`Renderer` or of a section's renderer: its
+    summary, the report it takes and what it returns (every block takes the same report).
 
     Parameters
     ----------
@@ -87,6 +158,36 @@ def _block(summary: str, returns: str):
         What the section gives to the block.
     returns : str
         The type of the block's part.
+    description : str, optional
+        What the part holds, said under its type.
+
+    Returns
+    -------
+    callable
+        A decorator that sets the method's docstring.
+    """
+    said = f"    {description}\n" if description else ""
+
+    def document(method):
+        method.__doc__ = (f"{summary}\n\nParameters\n----------\nreport : calc.report.Report\n"
+                          "    The report being built (its case, and its results where the case could be\n"
+                          f"    evaluated).\n\nReturns\n-------\n{returns}\n{said}")
+        return method
+
+    return document
+
+
+def page_doc(summary: str, name: str, kind: str):
+    """The numpydoc docstring of a section renderer's part of the review's page (:meth:`Renderer.page`).
+
+    Parameters
+    ----------
+    summary : str
+        What the part shows.
+    name : str
+        The name the method gives the section's result.
+    kind : str
+        The result's type.
 
     Returns
     -------
@@ -94,9 +195,11 @@ def _block(summary: str, returns: str):
         A decorator that sets the method's docstring.
     """
     def document(method):
-        method.__doc__ = (f"{summary}\n\nParameters\n----------\nreport : calc.report.Report\n"
-                          "    The report being built (its case, and its results where the case could be\n"
-                          f"    evaluated).\n\nReturns\n-------\n{returns}\n")
+        method.__doc__ = (f"{summary}\n\nParameters\n----------\n{name} : {kind} or None\n"
+                          "    The section's result; None: the case has none.\n"
+                          "view : calc.report.page.View\n"
+                          "    What the page asks: the candidates to list, the ratio search, a cycle typed by hand.\n"
+                          "\nReturns\n-------\nstr\n    HTML.\n")
         return method
 
     return document
@@ -132,47 +235,47 @@ class Renderer:
 
     # -- the calc report's blocks (:class:`calc.report.Report`) ---------------------------------
 
-    @_block("The source's sections the section is computed from (method).", "list of str")
+    @block_doc("The source's sections the section is computed from (method).", "list of str")
     def sources(self, report) -> list[str]:
         return []
 
-    @_block("The keys of the errata readings that apply (method).", "set of str")
+    @block_doc("The keys of the errata readings that apply (method).", "set of str")
     def readings(self, report) -> set[str]:
         return set()
 
-    @_block("Rows of the inputs table (:func:`input_row`).", "list of list of str")
+    @block_doc("Rows of the inputs table (:func:`input_row`).", "list of list of str")
     def input_rows(self, report) -> list[list[str]]:
         return []
 
-    @_block("Tables of inputs after the inputs table.", "list of str")
+    @block_doc("Tables of inputs after the inputs table.", "list of str")
     def inputs(self, report) -> list[str]:
         return []
 
-    @_block("The calculations, ``symbol = formula = values = result``.", "list of str")
+    @block_doc("The calculations, ``symbol = formula = values = result``.", "list of str")
     def steps(self, report) -> list[str]:
         return []
 
-    @_block("What the section gives besides its checks.", "list of str")
+    @block_doc("What the section gives besides its checks.", "list of str")
     def results(self, report) -> list[str]:
         return []
 
-    @_block("The checks of the part chosen (or the closest), or of the section's own values.", "list of str")
+    @block_doc("The checks of the part chosen (or the closest), or of the section's own values.", "list of str")
     def checks(self, report) -> list[str]:
         return []
 
-    @_block("The candidates ranked.", "list of str")
+    @block_doc("The candidates ranked.", "list of str")
     def candidates(self, report) -> list[str]:
         return []
 
-    @_block("(figure, caption) pairs; the caption is LaTeX.", "list")
+    @block_doc("(figure, caption) pairs; the caption is LaTeX.", "list")
     def figures(self, report) -> list:
         return []
 
-    @_block("(what, part, detail) of the part chosen; part None where none passes.", "list of tuple")
+    @block_doc("(what, part, detail) of the part chosen; part None where none passes.", "list of tuple")
     def chosen(self, report) -> list[tuple]:
         return []
 
-    @_block("What to order.", "list of str")
+    @block_doc("What to order.", "list of str")
     def order_lines(self, report) -> list[str]:
         return []
 
@@ -207,52 +310,99 @@ class Renderer:
 
 
 def checks_table(checks: list, caption: str) -> str:
-    """Required, rated, utilization and verdict of each check (:class:`calc.core.checks.Check`) of one
-    candidate; checks of the other operating mode (gearboxes) in grey, for information."""
+    """Required, rated, utilization and verdict of each check of one candidate; checks of the other
+    operating mode (gearboxes) in grey, for information.
+
+    Parameters
+    ----------
+    checks : list of calc.core.checks.Check
+        The candidate's checks.
+    caption : str
+        The table's caption, plain text.
+
+    Returns
+    -------
+    str
+        The table, LaTeX.
+    """
     modes = any(k.mode for k in checks)
     rows = []
     for k in checks:
         grey = "" if k.governs else r"\color{infogrey}"
-        cells = [grey + (prose(k.criterion) if k.criterion else latex_escape(k.name))] + ([grey + latex_escape(k.mode or "")] if modes else [])
+        cells = [grey + (prose(k.criterion) if k.criterion else latex_escape(k.name))]
+        cells += [grey + latex_escape(k.mode or "")] if modes else []
+        note = "" if k.governs else r"{} \footnotesize(for information)"
         cells += [grey + q(k.required_value), grey + q(k.rated_value), grey + util(k.utilization),
-                  grey + verdict_mark(k.passes, k.not_made) + ("" if k.governs else r"{} \footnotesize(for information)")]
+                  grey + verdict_mark(k.passes, k.not_made) + note]
         rows.append(cells)
     header = ["Criterion"] + (["Mode"] if modes else []) + ["Required", "Rated", "Utilization", "Verdict"]
-    return table("@{}l " + ("l " if modes else "") + r"r r r >{\raggedright\arraybackslash}p{0.24\linewidth}@{}", header, rows,
-                 caption=latex_escape(caption), small=True,
+    columns = "@{}l " + ("l " if modes else "") + r"r r r >{\raggedright\arraybackslash}p{0.24\linewidth}@{}"
+    return table(columns, header, rows, caption=latex_escape(caption), small=True,
                  note="Utilization = required / rated; a check passes at 1.00 or below.")
 
 
 def requirement_table(checks: list, caption: str) -> str:
-    """Checks (:class:`calc.core.checks.Check`) of a value reached (its required side) against a limit
-    the case requires (its rated side): ``value <= required``."""
+    """Checks of a value reached (its required side) against a limit the case requires (its rated
+    side): ``value <= required``.
+
+    Parameters
+    ----------
+    checks : list of calc.core.checks.Check
+        The checks.
+    caption : str
+        The table's caption, plain text.
+
+    Returns
+    -------
+    str
+        The table, LaTeX.
+    """
     at_least = lambda k: r"$\geq$ " if k.at_least else ""  # noqa: E731 (a lower bound: a term of it unknown)
-    rows = [[prose(k.criterion), at_least(k) + q(k.required_value), q(k.rated_value), at_least(k) + util(k.utilization),
-             verdict_mark(k.passes, k.not_made)] for k in checks]
+    rows = [[prose(k.criterion), at_least(k) + q(k.required_value), q(k.rated_value),
+             at_least(k) + util(k.utilization), verdict_mark(k.passes, k.not_made)] for k in checks]
     # The verdict is a paragraph: a check not made gives its reason, which may be long.
-    return table(r"@{}p{0.2\linewidth} r r r p{0.3\linewidth}@{}", ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
+    return table(r"@{}p{0.2\linewidth} r r r p{0.3\linewidth}@{}",
+                 ["Criterion", "Value", "Required", "Utilization", "Verdict"], rows,
                  caption=latex_escape(caption), note="Utilization = value / required; a check passes at 1.00 or below.")
 
 
 def candidates_table(candidates: list, selected: str | None, caption: str, inertia: bool = False) -> str:
-    """The utilization of each check of each candidate (:class:`calc.core.selection.Candidate`), best
-    first (and its inertia ratio); ``selected``: the chosen part."""
+    """The utilization of each check of each candidate, best first (and its inertia ratio).
+
+    Parameters
+    ----------
+    candidates : list of calc.core.selection.Candidate
+        The candidates, best first.
+    selected : str or None
+        The chosen part (marked), None for none.
+    caption : str
+        The table's caption, LaTeX.
+    inertia : bool, optional
+        Show each candidate's load to motor inertia ratio.
+
+    Returns
+    -------
+    str
+        The table, LaTeX, with a note naming the checks.
+    """
     checks = [k for c in candidates for k in c.checks]
     names = list(dict.fromkeys(k.name for k in checks))  # every check any candidate has, in order
     governs = {k.name: k.governs for k in checks}
     criteria = {k.name: k.criterion for k in checks}
-    header = ["Part"] + [(r"\color{infogrey}" if not governs[n] else "") + prose(n) for n in names] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
+    grey = {n: "" if governs[n] else r"\color{infogrey}" for n in names}
+    header = ["Part"] + [grey[n] + prose(n) for n in names] + ([r"$\lambda$"] if inertia else []) + ["Verdict"]
     rows = []
     for c in candidates:
         by = {k.name: k for k in c.checks}
         cells = [latex_escape(c.part)]
-        cells += [(r"\color{infogrey}" if not governs[n] else "") + util(by[n].utilization, missing="n/r") if n in by else "–" for n in names]
+        cells += [grey[n] + util(by[n].utilization, missing="n/r") if n in by else "–" for n in names]
         if inertia:
             cells.append("–" if c.inertia_ratio is None else f"{c.inertia_ratio:.2f}")
         cells.append(verdict_mark(c.passes) + (r"{} \footnotesize(chosen)" if c.part == selected else ""))
         rows.append(cells)
     cols = "@{}l " + "r " * (len(names) + (1 if inertia else 0)) + "l@{}"
-    note = "Checks: " + "; ".join(prose(criteria[n]) if criteria[n] else latex_escape(n) for n in names) + ". n/r: the catalog gives no rating."
+    note = ("Checks: " + "; ".join(prose(criteria[n]) if criteria[n] else latex_escape(n) for n in names)
+            + ". n/r: the catalog gives no rating.")
     if inertia:
         note += rf" ${inertia_ratio.latex()}$, load to motor inertia ratio (E6)."
     return table(cols, header, rows, caption=caption, note=note, small=True, narrow=True)
@@ -268,30 +418,70 @@ def _rejections(candidates: list) -> list[str]:
 
 
 def rejected(candidates: list) -> list[str]:
-    """Why the closest rejected candidates fail, one item each, and how many more the appendix
-    lists; nothing when none is rejected."""
+    """Why the closest rejected candidates fail, one item each, and how many more the appendix lists.
+
+    Parameters
+    ----------
+    candidates : list of calc.core.selection.Candidate
+        The candidates, closest first.
+
+    Returns
+    -------
+    list of str
+        One LaTeX paragraph with the list; nothing when none is rejected.
+    """
     items = _rejections(candidates)
     if not items:
         return []
     more = len(items) - SHOWN_REJECTIONS
     tail = [rf"\emph{{and {more} more, each with its reasons in the appendix}}"] if more > 0 else []
-    return [r"\paragraph{Why the others are rejected (the closest first).}" + itemize(items[:SHOWN_REJECTIONS] + tail)]
+    return [r"\paragraph{Why the others are rejected (the closest first).}"
+            + itemize(items[:SHOWN_REJECTIONS] + tail)]
 
 
 def rejected_in_full(name: str, candidates: list) -> list[str]:
     """Every rejected candidate of a section with its reasons, where the report shows only the
-    closest (:data:`SHOWN_REJECTIONS`)."""
+    closest (:data:`SHOWN_REJECTIONS`).
+
+    Parameters
+    ----------
+    name : str
+        The section's name.
+    candidates : list of calc.core.selection.Candidate
+        Its candidates, closest first.
+
+    Returns
+    -------
+    list of str
+        A heading and the list (LaTeX); nothing when the report shows every rejection already.
+    """
     items = _rejections(candidates)
     if len(items) <= SHOWN_REJECTIONS:
         return []
-    return [rf"\subsection*{{Every rejected {latex_escape(name)} candidate, closest first}}", r"{\small" + itemize(items) + "}"]
+    return [rf"\subsection*{{Every rejected {latex_escape(name)} candidate, closest first}}",
+            r"{\small" + itemize(items) + "}"]
 
 
 def raw_section_tables(name: str, raw: dict, derived: dict) -> str:
     """A further section of the case as its inputs, each row as its key is declared: symbol,
     value and unit as written, description, key; its arrays of tables (the members of an accuracy
-    chain) as one row each, figures as written. ``derived`` are the inputs the case left out and
-    the package took from the rest of the case."""
+    chain) as one row each, figures as written.
+
+    Parameters
+    ----------
+    name : str
+        The section's name, its table in the case.
+    raw : dict
+        The table as written.
+    derived : dict
+        The inputs the case left out and the package took from the rest of the case, as the case
+        would write them.
+
+    Returns
+    -------
+    str
+        The section's heading and tables, LaTeX.
+    """
     rows, members = [], []
     for key, v in {**raw, **derived}.items():
         if isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
@@ -307,7 +497,8 @@ def raw_section_tables(name: str, raw: dict, derived: dict) -> str:
         body = []
         for key, k, x in members:
             what = ", ".join(f"{f} = {x[f]}" for f in x if f not in ("name", "side", "part"))
-            body.append([rf"\texttt{{\footnotesize {latex_escape(f'{name}.{key}[{k}]')}}}", latex_escape(x.get("name") or x.get("part", "")),
+            body.append([rf"\texttt{{\footnotesize {latex_escape(f'{name}.{key}[{k}]')}}}",
+                         latex_escape(x.get("name") or x.get("part", "")),
                          latex_escape(x.get("side", "output" if "part" in x else "")), latex_escape(what)])
         out.append(table(r"@{}l l l p{0.42\linewidth}@{}", ["Case key", "Member", "Side", "Figures as written"], body,
                          caption=latex_escape(f"Members of the {name} chain, drive to load")))
@@ -363,8 +554,9 @@ class TableRenderer(Renderer):
         raw = report.case.sections[self.NAME]
         return [raw_section_tables(self.NAME, raw, self.derived_inputs(report, raw))]
 
+    @block_doc("The checks of the best-ranked candidate, or the checks against the case's requirements.",
+               "list of str", "The checks' table (LaTeX), none where there is nothing to check.")
     def checks(self, report) -> list[str]:
-        """The checks of the best-ranked candidate, or the checks against the case's requirements."""
         r = self.result(report)
         if r is not None and r.ranked() is not None:
             best = r.ranked().best

@@ -9,7 +9,7 @@ from html import escape
 
 from ..core.units import sig
 from ..sections.coupling import NAME
-from .common import TableRenderer, candidates_table, rejected
+from .common import TableRenderer, block_doc, candidates_table, page_doc, rejected
 from .latex import breakable, itemize, latex_escape, plain, prose, q, sources_list, step_block, symbol_math, table
 from .page import candidates_shown, notes, table as html_table, utilization, value, verdict_cell
 from .symbols import html as typeset
@@ -22,10 +22,11 @@ def _torsion(r) -> list[str]:
     if t is None:
         return []
     out = [rf"\subsection{{Torsional modes of the drive train, with {latex_escape(t.part)}}}",
-           prose("The two-mass f_e takes the coupling as the only spring. The drive train has more: it is lumped as a chain, "
-                 f"every member referred to {t.shaft}: the motor with half the coupling, the other half with the gearbox's J_1, "
-                 "the load J_L / i²; springs: the coupling's C_T and the gearbox's C_t21 / i². Its natural frequencies are "
-                 "the roots of the eigenproblem (K − ω² J) φ = 0, the rigid-body mode left out.")]
+           prose("The two-mass f_e takes the coupling as the only spring. The drive train has more: it is lumped "
+                 f"as a chain, every member referred to {t.shaft}: the motor with half the coupling, the other half "
+                 "with the gearbox's J_1, the load J_L / i²; springs: the coupling's C_T and the gearbox's C_t21 / "
+                 "i². Its natural frequencies are the roots of the eigenproblem (K − ω² J) φ = 0, the rigid-body "
+                 "mode left out.")]
     out += [step_block(title, step) for title, step in r.inputs.drive_steps]
     rows = [[str(k + 1), prose(members), q(J), prose(spring[0]) if spring else "", q(spring[1]) if spring else ""]
             for k, ((members, J), spring) in enumerate(zip(t.masses, [*t.springs, None]))]
@@ -33,8 +34,8 @@ def _torsion(r) -> list[str]:
                      caption=f"The drive train as masses and springs, referred to {latex_escape(t.shaft)}"))
     out.append(prose("Natural frequencies, lowest first: ") + ", ".join(q(f) for f in t.natural_frequencies) + ".")
     if not t.complete:
-        out.append(prose("The chain is incomplete, so its first mode is reported for information: the case does not give "
-                         + "; ".join(t.missing) + "."))
+        out.append(prose("The chain is incomplete, so its first mode is reported for information: the case does "
+                         "not give " + "; ".join(t.missing) + "."))
     return out
 
 
@@ -66,7 +67,20 @@ class CouplingRenderer(TableRenderer):
     COMPARED_PART = True
 
     def derived_inputs(self, report, raw: dict) -> dict:
-        """A motor-side coupling's M_a, J_drive, J_load and speed, where the table leaves them out."""
+        """A motor-side coupling's M_a, J_drive, J_load and speed, where the table leaves them out.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The report being built.
+        raw : dict
+            The coupling's table as written.
+
+        Returns
+        -------
+        dict
+            Key -> the value as the case would write it (``"12.5 N*m"``).
+        """
         r = self.result(report)
         if r is None:
             return {}
@@ -74,10 +88,11 @@ class CouplingRenderer(TableRenderer):
         x = r.inputs.inputs
         return {k: f"{sig(x[k].m_as(u))} {u}" for k, u in units.items() if k not in raw and x.get(k) is not None}
 
+    @block_doc("The coupling's calculations as the section computed them: the inputs taken from the rest of the "
+               "case, M_N with its factors, 2 f_er, the best-ranked row's natural frequency and the drive train's "
+               "modes.",
+               "list of str", "The calculation steps, LaTeX.")
     def steps(self, report) -> list[str]:
-        """The coupling's calculations as the section computed them: the inputs taken from the rest
-        of the case, M_N with its factors, 2 f_er, the best-ranked row's natural frequency and the
-        drive train's modes."""
         r = self.result(report)
         if r is None:
             return []
@@ -94,8 +109,9 @@ class CouplingRenderer(TableRenderer):
             out += [step_block(*s) for s in r.resonance_steps]
         return out + _torsion(r)
 
+    @block_doc("What the coupling gives besides its checks: M_N, T_op, K_ϑ, f_e,min, the shafts, notes.",
+               "list of str", "The results' heading and tables, LaTeX.")
     def results(self, report) -> list[str]:
-        """What the coupling gives besides its checks: M_N, T_op, K_ϑ, f_e,min, the shafts, notes."""
         r = self.result(report)
         if r is None:
             return []
@@ -122,9 +138,10 @@ class CouplingRenderer(TableRenderer):
             out.append(r"\paragraph{Notes.}" + itemize(prose(n) for n in r.notes))
         return out
 
+    @block_doc("Every candidate's utilization of each check, the doubtful figures and sources of the rows, and why "
+               "the closest rejected ones fail.",
+               "list of str", "LaTeX.")
     def candidates(self, report) -> list[str]:
-        """Every candidate's utilization of each check, the doubtful figures and sources of the rows,
-        and why the closest rejected ones fail."""
         r = self.result(report)
         if r is None:
             return []
@@ -162,9 +179,9 @@ class CouplingRenderer(TableRenderer):
                         prose(f"Temperature factor of elastomer couplings ({factors.source}).")))
         return out
 
+    @page_doc("The coupling candidates, best first, and the drive train's modes.",
+              "s", "calc.sections.coupling.CouplingResult")
     def page(self, s, view) -> str:
-        """The coupling candidates (of ``s``, a :class:`calc.sections.coupling.CouplingResult`; None:
-        the case has no coupling), best first, and the drive train's modes."""
         if s is None:
             return ""
 

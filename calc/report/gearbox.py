@@ -13,7 +13,7 @@ from html import escape
 from ..core.units import sig
 from ..sections import gearbox as sections_gearbox
 from . import common
-from .common import Renderer, candidates_table, checks_table, input_row, rejected
+from .common import Renderer, block_doc, candidates_table, checks_table, input_row, page_doc, rejected
 from .latex import breakable, latex_escape, num, sources_list, stacked, step_block, symbol_math, table
 from .page import FORCING, candidates_shown, table as html_table, utilization, value, verdict_cell
 from .ratios import RENDERER as RATIOS
@@ -31,8 +31,9 @@ class GearboxRenderer(Renderer):
     def sources(self, report) -> list[str]:
         return common.sources(self.NAME)
 
+    @block_doc("Every gearbox reading; the inertia match (E6) only where the report gives the ratio.",
+               "set of str", "The readings' keys.")
     def readings(self, report) -> set[str]:
-        """Every gearbox reading; the inertia match (E6) only where the report gives the ratio."""
         out = common.readings(self.NAME)
         r = self.result(report)
         return out if r is not None and r.selection.inertia_ratio is not None else out - {"E6"}
@@ -55,8 +56,9 @@ class GearboxRenderer(Renderer):
             rows += [input_row(f"load.{key}", q) for key, q in given if q is not None]
         return rows
 
+    @block_doc("The best-ranked row's checks as the gearbox section computed them.",
+               "list of str", "The calculation steps, LaTeX.")
     def steps(self, report) -> list[str]:
-        """The best-ranked row's checks as the gearbox section computed them."""
         r = self.result(report)
         if r is None:
             return []
@@ -73,8 +75,9 @@ class GearboxRenderer(Renderer):
         which = " (chosen)" if r.selection.selected else " (the closest candidate; none passes)"
         return [checks_table(best.checks, f"Checks of gearbox {best.part}{which}")]
 
+    @block_doc("Every candidate at the ratio: its catalog ratings, and the utilization of each check.",
+               "list of str", "LaTeX.")
     def candidates(self, report) -> list[str]:
-        """Every candidate at the ratio: its catalog ratings, and the utilization of each check."""
         r = self.result(report)
         if r is None:
             return []
@@ -158,9 +161,9 @@ class GearboxRenderer(Renderer):
         return [rf"Gearbox \textbf{{{latex_escape(sel.selected)}}}, ratio $i = {sig(sel.best.ratio)}$"
                 rf" (series {latex_escape(str(sel.catalog.text['series'][row]))})"]
 
+    @page_doc("The gearbox candidates, best first, then the ratio search where it is asked for.",
+              "g", "calc.sections.gearbox.GearboxResult")
     def page(self, g, view) -> str:
-        """The gearbox candidates (of ``g``, a :class:`calc.sections.gearbox.GearboxResult`; None:
-        the case has no gearbox), best first, then the ratio search where it is asked for."""
         search = "" if view.ratios is None else RATIOS.page_block(view.ratios)
         if g is None:
             return search

@@ -1,6 +1,7 @@
 """LaTeX for the calc report: escaping, our own prose with its symbols in math, numbers, and the
 tables and calculation steps every section lays out (their skeletons are the Jinja2 templates in
-``templates/``, with nbconvert's LaTeX-friendly delimiters ``((* *))``, ``((( )))``, ``((= =))``)."""
+``templates/``, with nbconvert's LaTeX-friendly delimiters ``((* *))``, ``((( )))``, ``((= =))``).
+"""
 
 from __future__ import annotations
 
@@ -15,7 +16,8 @@ from ..core.formula import Step
 from ..core.units import NUMBER, Value, pretty_unit, sig
 from .symbols import latex as prose
 from ..core.glossary import math as symbol_math  # noqa: F401 (the report's sections take it from here)
-from .symbols import latex_escape, symbol_latex  # noqa: F401 (symbol_latex: the report's sections take it from here)
+# symbol_latex: the report's sections take it from here
+from .symbols import latex_escape, symbol_latex  # noqa: F401
 
 
 class Latex(str):
@@ -36,36 +38,107 @@ _TEMPLATES.filters.update(escape_latex=latex_escape, prose=prose)
 
 
 def render(template: str, **values) -> str:
-    """A template of ``templates/`` filled in; values are LaTeX already (the templates escape
-    what they take as text with the ``escape_latex`` and ``prose`` filters)."""
+    """A template of ``templates/`` filled in.
+
+    Parameters
+    ----------
+    template : str
+        The template's file name (``"table.tex.j2"``).
+    **values
+        The template's variables, LaTeX already (the templates escape what they take as text with
+        the ``escape_latex`` and ``prose`` filters).
+
+    Returns
+    -------
+    str
+        LaTeX.
+    """
     return _TEMPLATES.get_template(template).render(**values)
 
 
 def signed(text: str) -> str:
-    """A number's minus as a minus sign, not a hyphen."""
+    """A number's minus as a minus sign, not a hyphen.
+
+    Parameters
+    ----------
+    text : str
+        A number as text.
+
+    Returns
+    -------
+    str
+        The text, a leading hyphen written ``−``.
+    """
     return text.replace("-", "−", 1) if text.startswith("-") else text
 
 
 def plain(v: Value | None) -> str:
-    """A result value as plain text (``151.3 N·m``, a minus sign where negative)."""
+    """A result value as plain text (``151.3 N·m``, a minus sign where negative).
+
+    Parameters
+    ----------
+    v : calc.core.units.Value or None
+        The value.
+
+    Returns
+    -------
+    str
+        Its significant figures and unit; ``n/a`` for none.
+    """
     if v is None or v.value is None:
         return "n/a"
     return f"{signed(sig(v.value))} {pretty_unit(v.unit)}".rstrip()
 
 
 def q(d) -> str:
-    """A result quantity as LaTeX text."""
+    """A result quantity as LaTeX text.
+
+    Parameters
+    ----------
+    d : calc.core.units.Value or None
+        The value.
+
+    Returns
+    -------
+    str
+        :func:`plain`, escaped.
+    """
     return latex_escape(plain(d))
 
 
 def num(quantity, unit: str) -> str:
-    """A quantity's number in ``unit``."""
+    """A quantity's number in ``unit``.
+
+    Parameters
+    ----------
+    quantity : pint.Quantity [any]
+        The quantity.
+    unit : str
+        The unit to show it in, of its dimension.
+
+    Returns
+    -------
+    str
+        Its significant figures, a minus sign where negative.
+    """
     return signed(sig(quantity.m_as(unit)))
 
 
 def util(u, missing: str = "no rating") -> str:
-    """A utilization, in bold red where it fails the one pass rule (:func:`calc.core.checks.within_rating`);
-    ``missing`` where there is none (a table of many columns says it shorter)."""
+    """A utilization, in bold red where it fails the one pass rule (:func:`calc.core.checks.within_rating`).
+
+    Parameters
+    ----------
+    u : float or None
+        The utilization [1]; None or NaN for none.
+    missing : str, optional
+        What to show where there is none (a table of many columns says it shorter).
+
+    Returns
+    -------
+    str
+        LaTeX, two decimals.
+    """
     if u is None or (isinstance(u, float) and np.isnan(u)):
         return missing
     text = f"{u:.2f}"
@@ -73,20 +146,57 @@ def util(u, missing: str = "no rating") -> str:
 
 
 def verdict_mark(passes: bool | None, not_made: str | None = None) -> str:
-    """PASS or FAIL; a check not made (``passes`` None) as not checked, with its reason."""
+    """PASS or FAIL; a check not made as not checked, with its reason.
+
+    Parameters
+    ----------
+    passes : bool or None
+        The verdict; None for a check not made.
+    not_made : str, optional
+        Why the check is not made.
+
+    Returns
+    -------
+    str
+        LaTeX (the template's ``\\pass``, ``\\fail`` or ``\\notchecked``).
+    """
     if passes is None:
         return r"\notchecked" + (rf"{{}} {{\footnotesize {prose(not_made)}}}" if not_made else "")
     return r"\pass" if passes else r"\fail"
 
 
 def listed(value) -> str:
-    """A list as ``a, b``; anything else as its text."""
+    """A list as ``a, b``; anything else as its text.
+
+    Parameters
+    ----------
+    value : object
+        A list, a tuple or anything else.
+
+    Returns
+    -------
+    str
+        The text.
+    """
     return ", ".join(map(str, value)) if isinstance(value, (list, tuple)) else str(value)
 
 
 def breakable(text: str, escape=latex_escape) -> str:
-    """Text as LaTeX (``escape``) that may break after a slash, an underscore or an ampersand
-    (paths, addresses and case keys in narrow columns and notes)."""
+    """Text as LaTeX that may break after a slash, an underscore or an ampersand (paths,
+    addresses and case keys in narrow columns and notes).
+
+    Parameters
+    ----------
+    text : str
+        The text.
+    escape : callable, optional
+        How it becomes LaTeX (default :func:`latex_escape`).
+
+    Returns
+    -------
+    str
+        LaTeX.
+    """
     out = escape(text)
     for c in ("/", r"\&", r"\_"):
         out = out.replace(c, c + r"\allowbreak{}")
@@ -94,24 +204,70 @@ def breakable(text: str, escape=latex_escape) -> str:
 
 
 def stacked(*lines: str) -> str:
-    """Lines set one above the other in one table cell (a column's symbol over its unit)."""
-    return r"\begin{tabular}[b]{@{}c@{}}" + r" \\ \relax ".join(lines) + r"\end{tabular}"  # \relax: a line may start with [
+    """Lines set one above the other in one table cell (a column's symbol over its unit).
+
+    Parameters
+    ----------
+    *lines : str
+        The lines, LaTeX.
+
+    Returns
+    -------
+    str
+        A one-column tabular.
+    """
+    # \relax: a line may start with [
+    return r"\begin{tabular}[b]{@{}c@{}}" + r" \\ \relax ".join(lines) + r"\end{tabular}"
 
 
 def sources_list(sources) -> tuple[dict, str]:
-    """Each source once, numbered in the order given: the number of each, and the list as LaTeX."""
+    """Each source once, numbered in the order given.
+
+    Parameters
+    ----------
+    sources : iterable of str
+        The sources, repeated or not.
+
+    Returns
+    -------
+    tuple
+        The number of each source (dict), and the list as LaTeX (empty for none).
+    """
     numbers = {s: k for k, s in enumerate(dict.fromkeys(sources), start=1)}
     items = "".join(rf"\item[{{[{k}]}}] {breakable(s)}" for s, k in numbers.items())
-    return numbers, (r"{\footnotesize\begin{description}\setlength{\itemsep}{0pt}" + items + r"\end{description}}") if numbers else ""
+    listing = r"{\footnotesize\begin{description}\setlength{\itemsep}{0pt}" + items + r"\end{description}}"
+    return numbers, listing if numbers else ""
 
 
 def itemize(items) -> str:
-    """Items (LaTeX already) as a list."""
+    """Items as a list.
+
+    Parameters
+    ----------
+    items : iterable of str
+        The items, LaTeX already.
+
+    Returns
+    -------
+    str
+        An itemize environment.
+    """
     return r"\begin{itemize}" + "".join(rf"\item {x}" for x in items) + r"\end{itemize}"
 
 
 def value_unit(value) -> tuple[str, str]:
-    """A value as written in the case, split into number and unit where it is a quantity."""
+    """A value as written in the case, split into number and unit where it is a quantity.
+
+    Parameters
+    ----------
+    value : str or int or float
+        The value as written.
+
+    Returns
+    -------
+    tuple of str
+        (number, unit) as LaTeX; the unit ``–`` where there is none.
+    """
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         return f"{value:g}", "–"
     m = NUMBER.match(value) if isinstance(value, str) else None
@@ -120,13 +276,33 @@ def value_unit(value) -> tuple[str, str]:
     return latex_escape(value), "–"
 
 
-def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "", small: bool = False,
-          narrow: bool = False) -> str:
+def table(columns: str, header: list[str], rows: list[list[str]], caption: str = "", note: str = "",
+          small: bool = False, narrow: bool = False) -> str:
     """A booktabs longtable: a long one breaks across pages with its header repeated, a short one
-    (up to 15 rows) stays on one page. Cells are LaTeX already; the note goes below the table.
-    Only captioned tables are numbered (longtable counts every one). ``small`` sets it in a
-    smaller type, ``narrow`` with less space between columns (tables of many columns, to fit the
-    text width)."""
+    (up to 15 rows) stays on one page.
+
+    Parameters
+    ----------
+    columns : str
+        The column specification (a ``p{...}`` column is set ragged right).
+    header : list of str
+        The columns' headings, LaTeX (set in bold).
+    rows : list of list of str
+        The cells, LaTeX already.
+    caption : str, optional
+        The caption, LaTeX; only captioned tables are numbered (longtable counts every one).
+    note : str, optional
+        A note below the table, LaTeX.
+    small : bool, optional
+        Set it in a smaller type.
+    narrow : bool, optional
+        Less space between columns (tables of many columns, to fit the text width).
+
+    Returns
+    -------
+    str
+        LaTeX.
+    """
     end = r" \\*" if len(rows) <= 15 else r" \\"
     return render(
         "table.tex.j2",
@@ -139,8 +315,23 @@ def table(columns: str, header: list[str], rows: list[list[str]], caption: str =
 
 def step_block(title: str, step: Step, note: str = "") -> str:
     """One calculation: a heading, ``symbol = formula = values = result`` aligned on the equals
-    signs (scaled down only if wider than the page), and its reference."""
+    signs (scaled down only if wider than the page), and its reference.
+
+    Parameters
+    ----------
+    title : str
+        The heading, plain text.
+    step : calc.core.formula.Step
+        The formula with its values and result.
+    note : str, optional
+        Said after the formula's reference, prose.
+
+    Returns
+    -------
+    str
+        LaTeX.
+    """
     lhs, expr, values, result = step.parts()
     f = step.formula
-    return render("step.tex.j2", title=latex_escape(title), symbol=f.result.latex, lhs=lhs, expr=expr, values=values,
-                  result=result, ref=prose(f.reference + (f"; {note}" if note else "")))
+    return render("step.tex.j2", title=latex_escape(title), symbol=f.result.latex, lhs=lhs, expr=expr,
+                  values=values, result=result, ref=prose(f.reference + (f"; {note}" if note else "")))

@@ -9,14 +9,14 @@ from html import escape
 
 from ..sections.motion import NAME, keys_of
 from ..core.units import Q_, sig
-from .common import Renderer, input_row
+from .common import Renderer, input_row, page_doc
 from .latex import latex_escape, signed, step_block, symbol_math, table
 from .page import value
 from .symbols import html as typeset
 
 #: The field of :class:`calc.domain.mechanism.Mechanism` of each of its quantities' keys, where it differs.
-FIELDS = {"inertia": "given_inertia", "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia", "pulley_inertia": "own_inertia",
-          "pitch_diameter": "diameter", "pulley_diameter": "diameter"}
+FIELDS = {"inertia": "given_inertia", "screw_inertia": "own_inertia", "pinion_inertia": "own_inertia",
+          "pulley_inertia": "own_inertia", "pitch_diameter": "diameter", "pulley_diameter": "diameter"}
 
 
 def _motion(report):
@@ -92,10 +92,10 @@ class MotionRenderer(Renderer):
                             linear=k is not None and k.linear, rows=("speed", "torque"))
         return [(fig, "Output speed and torque over one cycle, sampled, with the derived segments (dashed).")]
 
+    @page_doc("Where the load cycle comes from: the motion's peak values, or that its segments were changed by hand "
+              "(then the moves and mechanism no longer derive it).",
+              "m", "calc.sections.motion.MotionResult")
     def page(self, m, view) -> str:
-        """Where the load cycle comes from: the motion's peak values (``m``, a
-        :class:`calc.sections.motion.MotionResult`, None without one), or that its segments were
-        changed by hand (then the moves and mechanism no longer derive it)."""
         if view.typed_by_hand:
             return ('<div class="values">Load cycle: the segments as changed here (the case derives them from its '
                     'motion; reset to derive them again)</div>')

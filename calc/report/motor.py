@@ -10,7 +10,7 @@ from html import escape
 from ..domain.motor import T_1rms
 from ..core.units import latex_unit, sig
 from ..sections.motor import NAME
-from .common import Renderer, candidates_table, checks_table, input_row, rejected
+from .common import Renderer, block_doc, candidates_table, checks_table, input_row, page_doc, rejected
 from .latex import itemize, latex_escape, prose, q, step_block, symbol_math, table
 from .page import FORCING, candidates_shown, table as html_table, utilization, value, verdict_cell
 from .symbols import html as typeset
@@ -70,9 +70,10 @@ class MotorRenderer(Renderer):
         out = [checks_table(m.row_checks, f"{motor} through {m.through}")] if m.row_checks else []
         return out + ([itemize([latex_escape(n) for n in m.notes])] if m.notes else [])
 
+    @block_doc("The catalog motors: each one's ratings and characteristic, the utilization of each check, and why "
+               "the closest rejected ones fail.",
+               "list of str", "LaTeX; nothing for a motor the case types, or none.")
     def candidates(self, report) -> list[str]:
-        """The catalog motors: each one's ratings and characteristic, the utilization of each check,
-        and why the closest rejected ones fail."""
         m = self.result(report)
         if m is None or m.selection is None:
             return []
@@ -127,9 +128,9 @@ class MotorRenderer(Renderer):
         maker = f" ({sel.catalog.text['maker'][row]}" + (f", {family}" if family else "") + ")"
         return [rf"Motor \textbf{{{latex_escape(sel.selected)}}}" + latex_escape(maker)]
 
+    @page_doc("The catalog motors, best first; nothing for a motor the case types, or none.",
+              "m", "calc.sections.motor.MotorResult")
     def page(self, m, view) -> str:
-        """The catalog motors (of ``m``, a :class:`calc.sections.motor.MotorResult`), best first;
-        nothing for a motor the case types, or none."""
         if m is None or m.selection is None:
             return ""
         sel = m.selection

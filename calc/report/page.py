@@ -31,9 +31,17 @@ FORCING = "on the served page, a click on a row forces that part"
 
 @dataclass(frozen=True)
 class View:
-    """What the page asks of the sections' parts: ``shown``, the candidates listed in each table,
-    best first (all for None); ``ratios``, the ratio search's JSON or why it cannot be made (None:
-    not asked for); ``typed_by_hand``, the case's derived load cycle was changed segment by segment."""
+    """What the page asks of the sections' parts.
+
+    Attributes
+    ----------
+    shown : int or None
+        The candidates listed in each table, best first (all for None).
+    ratios : dict or str or None
+        The ratio search's JSON or why it cannot be made (None: not asked for).
+    typed_by_hand : bool
+        The case's derived load cycle was changed segment by segment.
+    """
 
     shown: int | None = None
     ratios: object = None

@@ -16,20 +16,47 @@ PACKAGE = f"calc {__version__}"
 
 
 def build_date() -> str:
-    """Now, in UTC, to the minute."""
+    """Now, in UTC, to the minute.
+
+    Returns
+    -------
+    str
+        ``2025-01-31 14:05 UTC``.
+    """
     return datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
 
 
 def sha256(path: Path) -> str:
+    """The SHA-256 of a file read.
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The file.
+
+    Returns
+    -------
+    str
+        Its digest, hexadecimal.
+    """
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
 def git_commit(folder: Path | None = PROJECT_DIR) -> str:
     """The commit the package was built from, marked when calc/ or catalogs/ differ from it.
 
-    An installed calc (``folder`` None) has no git tree; a checkout that is not the top of its own
-    git tree (an unpacked source archive inside another repository) is not under version control:
-    the enclosing repository's commit would name the wrong source.
+    Parameters
+    ----------
+    folder : pathlib.Path or None, optional
+        The project's top folder (default :data:`calc.data.catalog.PROJECT_DIR`); None for an
+        installed calc, which has no git tree.
+
+    Returns
+    -------
+    str
+        The commit's hash, or why there is none: a checkout that is not the top of its own git tree
+        (an unpacked source archive inside another repository) is not under version control, as the
+        enclosing repository's commit would name the wrong source.
     """
     if folder is None:
         return "none: an installed package, not a git checkout"

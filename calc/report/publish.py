@@ -1,10 +1,11 @@
-"""Calc reports as PDF: ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--summary]``.
+"""Calc reports as PDF: ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf]
+[--summary]``.
 
 For each case the report's blocks (:meth:`calc.report.Report.blocks`, what the report notebook
 ``reports/calc-report.ipynb`` shows when run) become a notebook in this process, with no kernel,
 which nbconvert exports through xelatex with our LaTeX template (``reports/template/calc-report``).
-Several cases are built at a time (``-j``, default the number of cores). A progress bar runs over the cases; at the end
-one line per case gives its verdict and its PDF. A case that fails its checks, or cannot be
+Several cases are built at a time (``-j``, default the number of cores). A progress bar runs over
+the cases; at the end one line per case gives its verdict and its PDF. A case that fails its checks, or cannot be
 evaluated, still gets its PDF (saying FAIL and why); only a PDF that cannot be built is an error.
 With ``--summary`` the output folder also gets ``summary.pdf`` and ``summary.csv``: one row per
 case (:mod:`calc.report.summary`), the rows :func:`summary_rows` gives the design review.
@@ -32,18 +33,46 @@ SUMMARY = "summary"
 
 
 def check_tools() -> None:
-    """Raise :class:`CalcError` naming each missing program and what to install."""
+    """Check that the programs the PDF needs (:data:`TOOLS`) are installed.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    CalcError
+        Naming each missing program and what to install.
+    """
     missing = [f"{tool} ({package})" for tool, package in TOOLS.items() if shutil.which(tool) is None]
     if missing:
         raise CalcError(
-            f"the PDF report needs {', '.join(missing)}, not found on this machine; on Debian run `make report` as root "
-            "(it installs them), elsewhere install a TeX distribution with XeLaTeX, pandoc and the DejaVu fonts"
+            f"the PDF report needs {', '.join(missing)}, not found on this machine; on Debian run `make report` "
+            "as root (it installs them), elsewhere install a TeX distribution with XeLaTeX, pandoc and the DejaVu "
+            "fonts"
         )
 
 
 def output_paths(cases: list[Path], output: str | None) -> list[Path]:
-    """Where each case's PDF goes: ``reports/<case name>.pdf``, or ``output`` (a file for one case,
-    a folder for several)."""
+    """Where each case's PDF goes.
+
+    Parameters
+    ----------
+    cases : list of pathlib.Path
+        The case files.
+    output : str or None
+        The ``-o`` argument: a file for one case, a folder for several; None for ``reports/``.
+
+    Returns
+    -------
+    list of pathlib.Path
+        One PDF per case, ``reports/<case name>.pdf`` by default.
+
+    Raises
+    ------
+    CalcError
+        For a file name with several cases, or two cases whose reports would take the same name.
+    """
     if output is None:
         paths = [Path("reports") / f"{c.stem}.pdf" for c in cases]
     elif len(cases) == 1 and output.endswith(".pdf"):
@@ -55,16 +84,35 @@ def output_paths(cases: list[Path], output: str | None) -> list[Path]:
     seen = {}
     for case, pdf in zip(cases, paths):
         if pdf in seen:
-            raise CalcError(f"{case}: its report {pdf} would overwrite the report of {seen[pdf]}; give the case files distinct names")
+            raise CalcError(f"{case}: its report {pdf} would overwrite the report of {seen[pdf]}; "
+                            "give the case files distinct names")
         seen[pdf] = case
     return paths
 
 
 def summary_folder(cases: list[Path], output: str | None) -> Path:
-    """The folder of the reports and the summary (``--summary``): ``output``, default ``reports/``;
-    no case's report may take the summary's name."""
+    """The folder of the reports and the summary (``--summary``).
+
+    Parameters
+    ----------
+    cases : list of pathlib.Path
+        The case files.
+    output : str or None
+        The ``-o`` argument, a folder; None for ``reports/``.
+
+    Returns
+    -------
+    pathlib.Path
+        The folder.
+
+    Raises
+    ------
+    CalcError
+        For a file name, or a case whose report would take the summary's name.
+    """
     if output is not None and output.endswith(".pdf"):
-        raise CalcError(f"-o {output}: with --summary, expected a folder for the reports and {SUMMARY}.pdf, found a file name")
+        raise CalcError(f"-o {output}: with --summary, expected a folder for the reports and {SUMMARY}.pdf, "
+                        "found a file name")
     folder = Path("reports" if output is None else output)
     for case in cases:
         if case.stem == SUMMARY:
@@ -74,14 +122,28 @@ def summary_folder(cases: list[Path], output: str | None) -> Path:
 
 
 def summary_rows(cases, output: str | None = None) -> list[dict]:
-    """The summary's rows of ``cases`` (paths of case files), plain data (:func:`calc.report.summary.summary_row`),
-    each with the path its report has (or would have) in ``output`` (a folder, default ``reports/``);
-    no PDF is built. A case that cannot be read gets a row saying why."""
+    """The summary's rows of several cases, plain data (:func:`calc.report.summary.summary_row`); no
+    PDF is built.
+
+    Parameters
+    ----------
+    cases : iterable of str or pathlib.Path
+        The case files.
+    output : str, optional
+        The folder of the reports (default ``reports/``).
+
+    Returns
+    -------
+    list of dict
+        One row per case, each with the path its report has (or would have) in ``output``; a case
+        that cannot be read gets a row saying why.
+    """
     from . import build_report
     from .summary import summary_row
 
     paths = [Path(c) for c in cases]
-    return [summary_row(build_report(c), pdf) for c, pdf in zip(paths, output_paths(paths, str(summary_folder(paths, output))))]
+    pdfs = output_paths(paths, str(summary_folder(paths, output)))
+    return [summary_row(build_report(c), pdf) for c, pdf in zip(paths, pdfs)]
 
 
 def _without_iri_grammars() -> None:
@@ -89,7 +151,8 @@ def _without_iri_grammars() -> None:
     grammars of rfc3987_syntax, when that is installed: some 40 of them, 2 s of CPU at every
     import, for a format check that no notebook's schema uses. Done once, as this module is
     imported, before any import of nbconvert; a process that imported jsonschema already keeps
-    what it has."""
+    what it has.
+    """
     if "jsonschema" not in sys.modules:
         sys.modules.setdefault("rfc3987_syntax", None)
 
@@ -109,12 +172,23 @@ END_OF_DUMP = r"\csname endofdump\endcsname"
 
 
 def compiled_preamble(tex: Path) -> Path | None:
-    """The xelatex format of the preamble of ``tex`` (before :data:`END_OF_DUMP`), compiled on
-    first use into the Python environment (beside pint's cache), one per preamble and TeX
-    installation; it saves loading every package on every pass (about a third of each). None
-    (xelatex reads the preamble itself) where the file has no such mark, the folder is not
-    writable or the format cannot be made (then a marker beside it says so, and no later report
-    tries again with this preamble and TeX)."""
+    """The xelatex format of a file's preamble (before :data:`END_OF_DUMP`), compiled on first use
+    into the Python environment (beside pint's cache), one per preamble and TeX installation; it
+    saves loading every package on every pass (about a third of each).
+
+    Parameters
+    ----------
+    tex : pathlib.Path
+        The LaTeX file nbconvert writes.
+
+    Returns
+    -------
+    pathlib.Path or None
+        The format, without its suffix (as ``-fmt`` takes it). None (xelatex reads the preamble
+        itself) where the file has no such mark, the folder is not writable or the format cannot be
+        made (then a marker beside it says so, and no later report tries again with this preamble
+        and TeX).
+    """
     import hashlib
     import os
     import subprocess
@@ -137,13 +211,15 @@ def compiled_preamble(tex: Path) -> Path | None:
         return None
     folder.mkdir(exist_ok=True)
     with tempfile.TemporaryDirectory(dir=folder) as work:
-        subprocess.run(["xelatex", "-ini", "-interaction=batchmode", f"-jobname={fmt.stem}", "&xelatex", "mylatexformat.ltx", str(tex.resolve())],
-                       cwd=work, capture_output=True)
+        subprocess.run(["xelatex", "-ini", "-interaction=batchmode", f"-jobname={fmt.stem}", "&xelatex",
+                        "mylatexformat.ltx", str(tex.resolve())], cwd=work, capture_output=True)
         made, log = Path(work) / fmt.name, (Path(work) / fmt.stem).with_suffix(".log")
-        errors = [line for line in log.read_text(errors="replace").splitlines() if line.startswith("! ")] if log.is_file() else ["no log"]
+        errors = ([line for line in log.read_text(errors="replace").splitlines() if line.startswith("! ")]
+                  if log.is_file() else ["no log"])
         # The only errors allowed: the kernel's own Latin Modern fonts, which a format cannot keep
         # (XeTeX loads fonts natively); the report sets its fonts after the format, so never uses them.
-        if not made.is_file() or any(e != r"! Can't \dump a format with native fonts or font-mappings." for e in errors):
+        fonts = r"! Can't \dump a format with native fonts or font-mappings."
+        if not made.is_file() or any(e != fonts for e in errors):
             failed.write_text("\n".join(errors[:20]) + "\n", encoding="utf-8")  # what xelatex said, for whoever looks
             return None
         made.replace(fmt)  # atomic: reports built side by side may make it at once
@@ -153,7 +229,13 @@ def compiled_preamble(tex: Path) -> Path | None:
 def exporter():
     """nbconvert's PDF exporter with our template, code and prompts hidden; xelatex runs until its
     log asks for no further pass (two for most reports, where nbconvert always runs three), and
-    no bibtex (a report cites no bibliography)."""
+    no bibtex (a report cites no bibliography).
+
+    Returns
+    -------
+    nbconvert.PDFExporter
+        The exporter, configured.
+    """
     from nbconvert import PDFExporter
     from nbconvert.exporters.pdf import LatexFailed
     from traitlets.config import Config
@@ -164,11 +246,13 @@ def exporter():
                 self.log.critical("%s failed: %s\n%s", command[0], command, out)
 
             fmt = compiled_preamble(Path(filename))
-            command = self.latex_command if fmt is None else [self.latex_command[0], f"-fmt={fmt}", *self.latex_command[1:]]
+            command = (self.latex_command if fmt is None
+                       else [self.latex_command[0], f"-fmt={fmt}", *self.latex_command[1:]])
             log = Path(filename).with_suffix(".log")
             for _ in range(self.latex_count):
                 self.run_command(command, filename, 1, log_error, raise_on_failure)
-                self.latex_log = log.read_text(encoding="utf-8", errors="replace")  # of the last pass: the tests read its overfull boxes
+                # The last pass's log: the tests read its overfull boxes.
+                self.latex_log = log.read_text(encoding="utf-8", errors="replace")
                 if not any(line in self.latex_log for line in RERUN):
                     break
             return True
@@ -188,8 +272,19 @@ def exporter():
 
 
 def figure_pdf(figure) -> str:
-    """A matplotlib figure as vector PDF, base64 as a notebook output holds it (the figures lay
-    themselves out, so no tight bounding box: that would draw each one twice)."""
+    """A matplotlib figure as vector PDF (the figures lay themselves out, so no tight bounding box:
+    that would draw each one twice).
+
+    Parameters
+    ----------
+    figure : matplotlib.figure.Figure
+        The figure.
+
+    Returns
+    -------
+    str
+        The PDF, base64 as a notebook output holds it.
+    """
     import base64
     import io
 
@@ -203,7 +298,9 @@ _MAKING = None
 
 
 def _block_figures(k: int) -> list[tuple[str, str]]:
-    """The figures of the ``k``-th renderer (:data:`calc.report.RENDERERS`) of :data:`_MAKING`, as (PDF, caption)."""
+    """The figures of the ``k``-th renderer (:data:`calc.report.RENDERERS`) of :data:`_MAKING`, as
+    (PDF, caption).
+    """
     from . import RENDERERS
 
     return [(figure_pdf(figure), caption) for figure, caption in RENDERERS[k].figures(_MAKING)]
@@ -211,10 +308,23 @@ def _block_figures(k: int) -> list[tuple[str, str]]:
 
 @contextlib.contextmanager
 def figures_made(report, jobs: int = 1):
-    """A function giving the report's figures (:meth:`calc.report.Report.figures`) as (vector
-    PDF, caption), in their order. With ``jobs`` > 1 they are made from the moment the context
-    opens, ``jobs`` renderers at a time in processes forked from this one, while this one goes on
-    (making and writing the figures is most of a report's time)."""
+    """The report's figures, made while the rest of the report is set.
+
+    Parameters
+    ----------
+    report : calc.report.Report
+        The report.
+    jobs : int, optional
+        With more than 1, the figures are made from the moment the context opens, ``jobs``
+        renderers at a time in processes forked from this one, while this one goes on (making and
+        writing the figures is most of a report's time).
+
+    Yields
+    ------
+    callable
+        A function giving the report's figures (:meth:`calc.report.Report.figures`) as (vector PDF,
+        caption), in their order.
+    """
     if jobs <= 1 or report.case is None:
         yield lambda: [(figure_pdf(figure), caption) for figure, caption in report.figures()]
         return
@@ -238,9 +348,21 @@ def figures_made(report, jobs: int = 1):
 
 def report_notebook(report, figures=None):
     """The report's blocks (:meth:`calc.report.Report.blocks`) as the outputs of a notebook, the
-    notebook ``reports/calc-report.ipynb`` gives when run, built here without a kernel;
-    ``figures``: a function giving them as (vector PDF, caption), as :func:`figures_made` does
-    (default: made here, one after the other)."""
+    notebook ``reports/calc-report.ipynb`` gives when run, built here without a kernel.
+
+    Parameters
+    ----------
+    report : calc.report.Report
+        The report.
+    figures : callable, optional
+        A function giving the figures as (vector PDF, caption), as :func:`figures_made` does
+        (default: made here, one after the other).
+
+    Returns
+    -------
+    nbformat.NotebookNode
+        A notebook of one code cell with the blocks as its outputs.
+    """
     import nbformat
 
     from . import Latex
@@ -254,14 +376,33 @@ def report_notebook(report, figures=None):
             if shown:
                 outputs.append(nbformat.v4.new_output("display_data", data={"text/latex": str(shown)}))
         else:
-            outputs.append(nbformat.v4.new_output("display_data", data={"application/pdf": shown, "text/plain": "figure"},
+            outputs.append(nbformat.v4.new_output("display_data",
+                                                  data={"application/pdf": shown, "text/plain": "figure"},
                                                   metadata=metadata))
     return nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(outputs=outputs)])
 
 
 def render_pdf(report, pdf: Path, jobs: int = 1) -> None:
-    """Write the PDF of ``report`` (a :class:`calc.report.Report`) to ``pdf``, its figures made
-    ``jobs`` at a time."""
+    """Write the PDF of a report.
+
+    Parameters
+    ----------
+    report : calc.report.Report
+        The report.
+    pdf : pathlib.Path
+        The PDF file to write (its folder is made).
+    jobs : int, optional
+        The figures made this many at a time.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    CalcError
+        Where xelatex cannot typeset the report, with the end of its output.
+    """
     with figures_made(report, jobs) as figures:
         export = exporter()  # importing nbconvert goes on beside the figures
         notebook = report_notebook(report, figures)
@@ -277,9 +418,28 @@ def render_pdf(report, pdf: Path, jobs: int = 1) -> None:
 
 
 def render_summary(rows: list[dict], files: list, folder: Path) -> tuple[Path, Path]:
-    """Write ``summary.pdf`` and ``summary.csv`` of ``rows`` into ``folder`` (``files``: the files
-    each row's report rests on, for the title block); the PDF goes through
-    the reports' own template (a notebook of one output, nothing executed)."""
+    """Write ``summary.pdf`` and ``summary.csv`` of the rows; the PDF goes through the reports' own
+    template (a notebook of one output, nothing executed).
+
+    Parameters
+    ----------
+    rows : list of dict
+        The summary's rows (:func:`calc.report.summary.summary_row`).
+    files : list
+        The files each row's report rests on, for the title block.
+    folder : pathlib.Path
+        The output folder.
+
+    Returns
+    -------
+    tuple of pathlib.Path
+        The PDF and the CSV written.
+
+    Raises
+    ------
+    CalcError
+        Where xelatex cannot typeset the summary, with the end of its output.
+    """
     import nbformat
     from nbconvert.exporters.pdf import LatexFailed
 
@@ -301,9 +461,23 @@ def render_summary(rows: list[dict], files: list, folder: Path) -> tuple[Path, P
 
 
 def build_one(case: Path, pdf: Path, jobs: int = 1) -> dict:
-    """Read, evaluate and typeset one case, its figures made ``jobs`` at a time: its line for the
-    terminal, its summary row, the files its results rest on, and whether it is an input error or
-    does not pass (plain data, so that a worker process can hand it back)."""
+    """Read, evaluate and typeset one case.
+
+    Parameters
+    ----------
+    case : pathlib.Path
+        The case file.
+    pdf : pathlib.Path
+        Its PDF.
+    jobs : int, optional
+        Its figures made this many at a time.
+
+    Returns
+    -------
+    dict
+        Its line for the terminal, its summary row, the files its results rest on, and whether it is
+        an input error or does not pass (plain data, so that a worker process can hand it back).
+    """
     from . import build_report
     from .summary import summary_row
 
@@ -311,16 +485,30 @@ def build_one(case: Path, pdf: Path, jobs: int = 1) -> dict:
     try:
         render_pdf(report, pdf, jobs)
     except CalcError as exc:
-        return {"line": f"ERROR {display_path(case)}: no PDF: {exc}", "row": summary_row(report, None), "files": report.files,
-                "input_error": True, "not_passing": False}
+        return {"line": f"ERROR {display_path(case)}: no PDF: {exc}", "row": summary_row(report, None),
+                "files": report.files, "input_error": True, "not_passing": False}
     return {"line": f"{report.summary_line()}  ->  {pdf}", "row": summary_row(report, pdf), "files": report.files,
             "input_error": report.error is not None, "not_passing": report.verdict.passes is not True}
 
 
 def built(paths: list[Path], pdfs: list[Path], jobs: int):
-    """:func:`build_one` of each case, in the order of the cases, ``jobs`` at a time (worker
-    processes forked from this one, which has the package imported already); one case makes its
-    figures ``jobs`` at a time instead."""
+    """Build the cases, ``jobs`` at a time (worker processes forked from this one, which has the
+    package imported already); one case makes its figures ``jobs`` at a time instead.
+
+    Parameters
+    ----------
+    paths : list of pathlib.Path
+        The case files.
+    pdfs : list of pathlib.Path
+        Their PDFs.
+    jobs : int
+        The builds at a time.
+
+    Yields
+    ------
+    dict
+        :func:`build_one` of each case, in the order of the cases.
+    """
     if jobs <= 1 or len(paths) <= 1:
         yield from (build_one(path, pdf, jobs) for path, pdf in zip(paths, pdfs))
         return
@@ -331,13 +519,30 @@ def built(paths: list[Path], pdfs: list[Path], jobs: int):
         yield from pool.map(build_one, paths, pdfs)
 
 
-def main(cases: list[str], output: str | None = None, strict: bool = False, summary: bool = False, jobs: int | None = None) -> int:
-    """Build one PDF per case, ``jobs`` at a time (default: the number of cores), with a progress
-    bar; print one line per case; with ``summary``, also the summary's PDF and CSV in the output folder.
+def main(cases: list[str], output: str | None = None, strict: bool = False, summary: bool = False,
+         jobs: int | None = None) -> int:
+    """Build one PDF per case, with a progress bar; print one line per case.
 
-    Exit status (``docs/case-format.md``): 2 when a case could not be read or a PDF could not be
-    built (a report of an unreadable case is still written, saying why), else 1 with ``strict``
-    when a verdict is not PASS, else 0."""
+    Parameters
+    ----------
+    cases : list of str
+        The case files.
+    output : str, optional
+        The PDF file (one case) or the folder (several); default ``reports/<case name>.pdf``.
+    strict : bool, optional
+        Exit 1 when a verdict is not PASS.
+    summary : bool, optional
+        Also write the summary's PDF and CSV in the output folder.
+    jobs : int, optional
+        The reports built at a time (default: the number of cores).
+
+    Returns
+    -------
+    int
+        The exit status (``docs/case-format.md``): 2 when a case could not be read or a PDF could
+        not be built (a report of an unreadable case is still written, saying why), else 1 with
+        ``strict`` when a verdict is not PASS, else 0.
+    """
     import os
 
     from tqdm import tqdm
@@ -358,7 +563,8 @@ def main(cases: list[str], output: str | None = None, strict: bool = False, summ
     except CalcError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    done = list(tqdm(built(paths, pdfs, jobs or os.cpu_count() or 1), total=len(paths), desc="calc reports", unit="case", file=sys.stderr))
+    done = list(tqdm(built(paths, pdfs, jobs or os.cpu_count() or 1), total=len(paths), desc="calc reports",
+                     unit="case", file=sys.stderr))
     lines = [d["line"] for d in done]
     rows = [d["row"] for d in done]
     input_errors = sum(d["input_error"] for d in done)

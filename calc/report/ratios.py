@@ -53,9 +53,21 @@ class RatiosRenderer(Renderer):
                  "feasible ratios shaded.")]
 
     def page_block(self, found) -> str:
-        """The ratio search (its JSON, :func:`calc.sections.ratios.search`), or why it cannot be made
-        (a sentence): each ratio's best gearbox, whether it is feasible, λ and the motor's torques, the
-        pick and why, and the bars of :func:`calc.review.figures.ratio_search_svg`."""
+        """The ratio search on the review's page: each ratio's best gearbox, whether it is feasible, λ
+        and the motor's torques, the pick and why, and the bars of
+        :func:`calc.review.figures.ratio_search_svg`.
+
+        Parameters
+        ----------
+        found : dict or str
+            The ratio search's JSON (:func:`calc.sections.ratios.search`), or why it cannot be made
+            (a sentence).
+
+        Returns
+        -------
+        str
+            HTML.
+        """
         from ..review.figures import ratio_search_svg
 
         if isinstance(found, str):

@@ -31,6 +31,18 @@ def latex_escape(text) -> str:
     The ten special characters are escaped, line breaks become spaces, and ``{}`` is put between
     characters that TeX would join (``--`` into a dash, ``''`` into a quote).
 
+    Parameters
+    ----------
+    text : object
+        The text (anything else as its ``str``).
+
+    Returns
+    -------
+    str
+        LaTeX.
+
+    Examples
+    --------
     >>> print(latex_escape("Axis #3 — 50% load & T_2 {v2} \\ 100$"))
     Axis \#3 — 50\% load \& T\_2 \{v2\} \textbackslash{} 100\$
     >>> print(latex_escape("a--b"))
@@ -41,8 +53,9 @@ def latex_escape(text) -> str:
 
 
 _GREEK_NAMES = "|".join(name for name in GREEK if name != "Delta")  # Δ alone is no symbol of the prose
-# A case key, ``motor.peak_torque`` or ``coupling.shaft_1``, or a name in the package (code, set as code).
-_TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])  # and the package's own names, calc.domain.gearbox.x
+# A case key, ``motor.peak_torque`` or ``coupling.shaft_1``, or a name in the package (code, set as code):
+# the case's tables, and the package's own names, calc.domain.gearbox.x.
+_TABLES = "|".join(["calc", *(k for k in TOP_KEYS if k != "title")])
 _KEY = rf"(?P<key>(?<![\w.])(?:{_TABLES})(?:\[\d+\])?(?:\.[a-z][a-z0-9_]*(?:\[\d+\])?)+)"
 # A symbol as written in code: a letter (or a Greek name) and its subscript, ``d_hub,max`` whole.
 _SYMBOL = rf"(?P<sym>(?<![\w.])(?P<base>{_GREEK_NAMES}|[^\W\d_])_(?P<sub>[^\W_]+(?:,[^\W_]+)*)(?![\w]))"
@@ -50,14 +63,27 @@ _SYMBOL = rf"(?P<sym>(?<![\w.])(?P<base>{_GREEK_NAMES}|[^\W\d_])_(?P<sub>[^\W_]+
 _WORDS = r"(?P<words>(?<![\w.])[a-z]{2,}(?:_[a-z]{2,})+\b)"
 # A lone letter or Greek name next to an operator, ``i`` of ``n_2m · i`` and ``J_L / i²`` (not
 # a unit after its number, ``0.3 s + 0.3 s``).
-_LONE = rf"(?P<lone>(?<![\w.])(?<!\d )(?:(?<=[·/=≤≥+] )(?:{_GREEK_NAMES}|[A-Za-zα-ωϑ])(?=[\s²)]|$)|(?:{_GREEK_NAMES}|[A-Za-zα-ωϑ])(?= [·/=≤≥+] )))"
+_LETTER = rf"(?:{_GREEK_NAMES}|[A-Za-zα-ωϑ])"
+_LONE = rf"(?P<lone>(?<![\w.])(?<!\d )(?:(?<=[·/=≤≥+] ){_LETTER}(?=[\s²)]|$)|{_LETTER}(?= [·/=≤≥+] )))"
 _TOKEN = re.compile("|".join((_KEY, _SYMBOL, _WORDS, _LONE)))
 
 
 def tokens(text: str) -> list[tuple[str, ...]]:
-    """The text as tokens: ``("text", s)``, ``("symbol", base, subscript)`` (subscript empty for a
-    lone letter), ``("code", s)``.
+    """The text as tokens, each symbol, case key and name in code found once for every output.
 
+    Parameters
+    ----------
+    text : str
+        The package's text (a criterion, reason, note or reading).
+
+    Returns
+    -------
+    list of tuple
+        ``("text", s)``, ``("symbol", base, subscript)`` (subscript empty for a lone letter),
+        ``("code", s)``.
+
+    Examples
+    --------
     >>> tokens("d_motor <= d_hub,max")
     [('symbol', 'd', 'motor'), ('text', ' ≤ '), ('symbol', 'd', 'hub,max')]
     >>> tokens("n_2m · i <= n_1N")
@@ -91,6 +117,18 @@ def tokens(text: str) -> list[tuple[str, ...]]:
 def latex(text: str) -> str:
     r"""The text as LaTeX: escaped, each symbol in math.
 
+    Parameters
+    ----------
+    text : str
+        The package's text.
+
+    Returns
+    -------
+    str
+        LaTeX.
+
+    Examples
+    --------
     >>> print(latex("M_N · K_ϑ <= T_KN"))
     $M_{\mathrm{N}}$ · $K_{\vartheta}$ ≤ $T_{\mathrm{KN}}$
     >>> print(latex("d_motor <= d_hub,max, 100%"))
@@ -127,6 +165,8 @@ def symbol_latex(name: str) -> str:
     str
         LaTeX math.
 
+    Examples
+    --------
     >>> print(symbol_latex("T_1N"), symbol_latex("vartheta"), symbol_latex("phi_B"), symbol_latex("t_k"))
     T_{\mathrm{1N}} \vartheta \varphi_{\mathrm{B}} t_{k}
     """
@@ -137,6 +177,18 @@ def symbol_text(name: str) -> str:
     """A symbol by its name in code as plain text, its Greek letter written as the letter
     (``vartheta`` as ϑ, ``T_1B`` as is).
 
+    Parameters
+    ----------
+    name : str
+        The symbol as code writes it.
+
+    Returns
+    -------
+    str
+        Plain text.
+
+    Examples
+    --------
     >>> symbol_text("vartheta"), symbol_text("T_1B"), symbol_text("mu")
     ('ϑ', 'T_1B', 'μ')
     """
@@ -148,6 +200,18 @@ def html(text: str) -> str:
     """The text as HTML: escaped, each symbol in italics with its subscript (a case key as written:
     HTML has no underscore to escape).
 
+    Parameters
+    ----------
+    text : str
+        The package's text.
+
+    Returns
+    -------
+    str
+        HTML.
+
+    Examples
+    --------
     >>> html("T_2max <= T_2B: required 189.1 N·m > rated 126 N·m")
     '<i>T</i><sub>2max</sub> ≤ <i>T</i><sub>2B</sub>: required 189.1 N·m &gt; rated 126 N·m'
     >>> html("positioning_accuracy 9 arcmin")

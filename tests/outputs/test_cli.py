@@ -12,7 +12,9 @@ from ..conftest import EXAMPLE, GEARBOXES, HEAD_TOML, PROFILE_TOML, run
 
 def test_example_json_follows_the_contract():
     # A real subprocess, as a user runs it.
-    proc = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(EXAMPLE), "--json"], capture_output=True, text=True)
+    proc = subprocess.run(
+        [sys.executable, "-m", "calc", "evaluate", str(EXAMPLE), "--json"], capture_output=True, text=True
+    )
     assert proc.returncode == 0, proc.stderr
     r = json.loads(proc.stdout)
     assert r["title"] == "Rotary indexing table, axis 3"
@@ -46,7 +48,9 @@ def test_example_json_follows_the_contract():
     assert "9197685643" in first["source"] and first["unclear"] is None
     # J_1 of NPT035-10 is for its 19 mm clamping hub, the smallest listed (catalogs/gearbox-hubs.csv).
     assert first["J_1"] == {"value": 0.93, "unit": "kg*cm**2"} and first["J_1_hub"] == {"value": 19.0, "unit": "mm"}
-    assert g["candidates"][5]["part"] == "NPT045-10" and g["candidates"][5]["unclear"].startswith("n_1max/eta/L_PA/m/backlash")
+    assert g["candidates"][5]["part"] == "NPT045-10" and g["candidates"][5]["unclear"].startswith(
+        "n_1max/eta/L_PA/m/backlash"
+    )
     # Every unit in the results parses back with the registry.
     from calc import ureg
 
@@ -85,13 +89,20 @@ def test_named_part_is_checked_alone(capsys, write_case):
 def test_metric_and_inch_case_give_the_same_answer(capsys, write_case):
     metric = write_case(HEAD_TOML + PROFILE_TOML, "metric.toml")
     lbf_in, lb_in2 = 0.1129848290276167, 0.45359237 * 2.54**2  # N·m per lbf·in, kg·cm² per lb·in²
-    inch = HEAD_TOML.replace('"12 N*m"', f'"{12 / lbf_in!r} lbf*in"').replace('"1500 kg*cm**2"', f'"{1500 / lb_in2!r} lb*in**2"')
-    inch = write_case(inch + PROFILE_TOML.replace('"60 N*m"', f'"{60 / lbf_in!r} lbf*in"').replace('"300 rpm"', '"5 rev/s"'), "inch.toml")
+    inch = HEAD_TOML.replace('"12 N*m"', f'"{12 / lbf_in!r} lbf*in"').replace(
+        '"1500 kg*cm**2"', f'"{1500 / lb_in2!r} lb*in**2"'
+    )
+    inch = write_case(
+        inch + PROFILE_TOML.replace('"60 N*m"', f'"{60 / lbf_in!r} lbf*in"').replace('"300 rpm"', '"5 rev/s"'),
+        "inch.toml",
+    )
     a = json.loads(run(capsys, metric, "--json")[1])
     b = json.loads(run(capsys, inch, "--json")[1])
     assert b["continuous"]["T2m"]["value"] == pytest.approx(a["continuous"]["T2m"]["value"], rel=1e-12)
     assert b["cyclic"]["T2max"]["value"] == pytest.approx(a["cyclic"]["T2max"]["value"], rel=1e-5)
-    assert b["gearbox"]["candidates"][0]["inertia_ratio"] == pytest.approx(a["gearbox"]["candidates"][0]["inertia_ratio"], rel=1e-4)
+    assert b["gearbox"]["candidates"][0]["inertia_ratio"] == pytest.approx(
+        a["gearbox"]["candidates"][0]["inertia_ratio"], rel=1e-4
+    )
 
 
 def catalog_case(write_case, tmp_path, csv_text):
@@ -107,33 +118,77 @@ GOOD_CSV = GEARBOXES.read_text()
     [
         (HEAD_TOML, "profile: expected one [[profile]] table per segment, found none"),
         (HEAD_TOML + PROFILE_TOML.replace('"0.6 s"', '"0 s"'), "profile[2].duration: expected a duration above zero"),
-        (HEAD_TOML + PROFILE_TOML.replace('"0.6 s"', '"-0.6 s"'), "profile[2].duration: expected a duration above zero"),
-        (HEAD_TOML + PROFILE_TOML.replace('duration = "1.0 s"', 'duration = "1.0 s"\nspeed = "10 rpm"'), "profile[4]: a pause takes only a duration"),
-        (HEAD_TOML + PROFILE_TOML.replace('"const"', '"cruise"'), "profile[2].phase: expected one of accel, const, decel, pause, found 'cruise'"),
+        (
+            HEAD_TOML + PROFILE_TOML.replace('"0.6 s"', '"-0.6 s"'),
+            "profile[2].duration: expected a duration above zero",
+        ),
+        (
+            HEAD_TOML + PROFILE_TOML.replace('duration = "1.0 s"', 'duration = "1.0 s"\nspeed = "10 rpm"'),
+            "profile[4]: a pause takes only a duration",
+        ),
+        (
+            HEAD_TOML + PROFILE_TOML.replace('"const"', '"cruise"'),
+            "profile[2].phase: expected one of accel, const, decel, pause, found 'cruise'",
+        ),
         (HEAD_TOML + PROFILE_TOML.replace('"20 N*m"', '"20 N"'), "profile[2].torque: expected a torque"),
         (HEAD_TOML + PROFILE_TOML.replace('"300 rpm"', '"3 arcmin"'), "profile[2].speed: expected a speed"),
         (HEAD_TOML + PROFILE_TOML.replace('"300 rpm"', '"300 rpmm"'), "profile[2].speed: the unit 'rpmm'"),
         (HEAD_TOML + PROFILE_TOML.replace('"0.6 s"', "0.6"), "profile[2].duration: expected a time with its unit"),
         (HEAD_TOML.replace("ratio = 10", "ratio = 0") + PROFILE_TOML, "gearbox.ratio: expected a ratio above zero"),
         (HEAD_TOML.replace("ratio = 10", "ratio = -5") + PROFILE_TOML, "gearbox.ratio: expected a ratio above zero"),
-        (HEAD_TOML.replace("ratio = 10", "ratio = 10\npart = \"XP-1\"") + PROFILE_TOML, "gearbox.part: no part 'XP-1' in catalog"),
-        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = "nosuch"') + PROFILE_TOML, "gearbox.catalog: the catalog 'nosuch' does not exist"),
+        (
+            HEAD_TOML.replace("ratio = 10", "ratio = 10\npart = \"XP-1\"") + PROFILE_TOML,
+            "gearbox.part: no part 'XP-1' in catalog",
+        ),
+        (
+            HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = "nosuch"') + PROFILE_TOML,
+            "gearbox.catalog: the catalog 'nosuch' does not exist",
+        ),
         (HEAD_TOML.replace("[motor]", "[motor]\ncolour = 1") + PROFILE_TOML, "motor.colour: unknown key"),
         (HEAD_TOML.replace('"4.2 kg*cm**2"', '"4.2 kg"') + PROFILE_TOML, "motor.inertia: expected an inertia"),
-        (HEAD_TOML.replace('"4.2 kg*cm**2"', '"-4.2 kg*cm**2"') + PROFILE_TOML, "motor.inertia: expected an inertia above zero"),
+        (
+            HEAD_TOML.replace('"4.2 kg*cm**2"', '"-4.2 kg*cm**2"') + PROFILE_TOML,
+            "motor.inertia: expected an inertia above zero",
+        ),
         ('title = "x"\n[gearbox\nratio = 10\n', "TOML syntax error"),
-        (HEAD_TOML.replace('[motor]\npeak_torque = "12 N*m"\ninertia = "4.2 kg*cm**2"', 'motor = "12 N*m"') + PROFILE_TOML, "motor: expected a table of keys, found str"),
-        (HEAD_TOML.replace('title = "test axis"', "title = 3") + PROFILE_TOML, "title: expected a text in quotes, found 3"),
-        (HEAD_TOML.replace('title = "test axis"', 'title = "x"\nprofile = "fast"'), "profile: expected an array of tables ([[profile]]), found str"),
-        (HEAD_TOML.replace('"12 N*m"', '"0 N*m"') + PROFILE_TOML, "motor.peak_torque: expected a torque above zero, found '0 N*m'"),
-        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = ""') + PROFILE_TOML, "gearbox.catalog: expected a catalog name or a path to a CSV file, found ''"),
+        (
+            HEAD_TOML.replace('[motor]\npeak_torque = "12 N*m"\ninertia = "4.2 kg*cm**2"', 'motor = "12 N*m"')
+            + PROFILE_TOML,
+            "motor: expected a table of keys, found str",
+        ),
+        (
+            HEAD_TOML.replace('title = "test axis"', "title = 3") + PROFILE_TOML,
+            "title: expected a text in quotes, found 3",
+        ),
+        (
+            HEAD_TOML.replace('title = "test axis"', 'title = "x"\nprofile = "fast"'),
+            "profile: expected an array of tables ([[profile]]), found str",
+        ),
+        (
+            HEAD_TOML.replace('"12 N*m"', '"0 N*m"') + PROFILE_TOML,
+            "motor.peak_torque: expected a torque above zero, found '0 N*m'",
+        ),
+        (
+            HEAD_TOML.replace("ratio = 10", 'ratio = 10\ncatalog = ""') + PROFILE_TOML,
+            "gearbox.catalog: expected a catalog name or a path to a CSV file, found ''",
+        ),
         # TP010-5 is the 5:1 gearbox of the shipped catalog (row 3).
-        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\npart = "TP010-5"') + PROFILE_TOML, "gearbox.part: TP010-5 has ratio 5, but gearbox.ratio is 10"),
-        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "XP"') + PROFILE_TOML,
-         "gearbox.family: the catalog catalogs/gearboxes.csv has no gearbox of family 'XP'; its families are "),
-        (HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "NPT"\npart = "TP010-10"') + PROFILE_TOML,
-         "gearbox.part: TP010-10 is of family 'TP+', but gearbox.family is 'NPT'"),
-        (HEAD_TOML.replace("ratio = 10", "ratio = 10\nfamily = 3") + PROFILE_TOML, "gearbox.family: expected a text in quotes, or a list of them, found 3"),
+        (
+            HEAD_TOML.replace("ratio = 10", 'ratio = 10\npart = "TP010-5"') + PROFILE_TOML,
+            "gearbox.part: TP010-5 has ratio 5, but gearbox.ratio is 10",
+        ),
+        (
+            HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "XP"') + PROFILE_TOML,
+            "gearbox.family: the catalog catalogs/gearboxes.csv has no gearbox of family 'XP'; its families are ",
+        ),
+        (
+            HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "NPT"\npart = "TP010-10"') + PROFILE_TOML,
+            "gearbox.part: TP010-10 is of family 'TP+', but gearbox.family is 'NPT'",
+        ),
+        (
+            HEAD_TOML.replace("ratio = 10", "ratio = 10\nfamily = 3") + PROFILE_TOML,
+            "gearbox.family: expected a text in quotes, or a list of them, found 3",
+        ),
     ],
 )
 def test_bad_case_files_give_one_line_naming_file_and_key(capsys, write_case, text, fragment):
@@ -160,14 +215,23 @@ def test_missing_case_file(capsys, tmp_path):
     "edit, fragment",
     [
         (lambda s: s.replace("T_2B [N*m],", "").replace(",172,250,", ",250,", 1), "expected a column 'T_2B [unit]'"),
-        (lambda s: s.replace("TP010-10,TP010,10,81,", "TP010-10,TP010,10,8l,"), "row 11 (TP010-10), column T_2N: expected a number, found '8l'"),
+        (
+            lambda s: s.replace("TP010-10,TP010,10,81,", "TP010-10,TP010,10,8l,"),
+            "row 11 (TP010-10), column T_2N: expected a number, found '8l'",
+        ),
         (lambda s: s.replace("TP010-8,", "TP010-10,"), "the part 'TP010-10' already stands in row 10"),
         (lambda s: s.replace("10,81,126,", "10,81,26,"), "column T_2B: impossible value, expected T_2B >= T_2N"),
         (lambda s: s.replace("7500,97,3,23,0.4,", "7500,107,3,23,0.4,"), "column eta: impossible value"),
-        (lambda s: s.replace("7500,97,3,23,0.4,", "7500,97,-3,23,0.4,"), "row 11 (TP010-10), column backlash: expected a value of zero or more, found -3"),
+        (
+            lambda s: s.replace("7500,97,3,23,0.4,", "7500,97,-3,23,0.4,"),
+            "row 11 (TP010-10), column backlash: expected a value of zero or more, found -3",
+        ),
         (lambda s: "", ": expected a header row, found an empty file"),
         (lambda s: s.splitlines()[0] + "\n", ": expected at least one row of data, found none"),
-        (lambda s: s.replace("T_2N [N*m]", "T_2N in N*m"), ": header column 4 'T_2N in N*m' is not of the form 'name [unit]'"),
+        (
+            lambda s: s.replace("T_2N [N*m]", "T_2N in N*m"),
+            ": header column 4 'T_2N in N*m' is not of the form 'name [unit]'",
+        ),
         (lambda s: s.replace("T_2Not [N*m]", "T_2N [N*m]"), ": the column 'T_2N' appears twice in the header"),
         (lambda s: s.replace("part,", "name,", 1), ": expected a column 'part', found columns name, series, ratio,"),
         (lambda s: s.replace("TP010-8,", ",", 1), ", row 10, column part: expected a value, found an empty cell"),
@@ -205,10 +269,22 @@ def test_no_value_is_evaluated_as_code(capsys, write_case, tmp_path):
 def test_a_gearbox_family_narrows_the_candidates_and_says_so(capsys, write_case):
     # HEAD_TOML's 10:1 rows span the families TP+, NPT, NPS (and others); family keeps to the named ones.
     every = json.loads(run(capsys, write_case(HEAD_TOML + PROFILE_TOML), "--json", "--all-candidates")[1])["gearbox"]
-    npt = json.loads(run(capsys, write_case(HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "NPT"') + PROFILE_TOML),
-                         "--json", "--all-candidates")[1])["gearbox"]
-    both = json.loads(run(capsys, write_case(HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = ["NPT", "TP+"]') + PROFILE_TOML),
-                          "--json", "--all-candidates")[1])["gearbox"]
+    npt = json.loads(
+        run(
+            capsys,
+            write_case(HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = "NPT"') + PROFILE_TOML),
+            "--json",
+            "--all-candidates",
+        )[1]
+    )["gearbox"]
+    both = json.loads(
+        run(
+            capsys,
+            write_case(HEAD_TOML.replace("ratio = 10", 'ratio = 10\nfamily = ["NPT", "TP+"]') + PROFILE_TOML),
+            "--json",
+            "--all-candidates",
+        )[1]
+    )["gearbox"]
     parts = {c["part"] for c in every["candidates"]}
     assert {c["part"] for c in npt["candidates"]} == {p for p in parts if p.startswith("NPT")}
     assert {c["part"] for c in both["candidates"]} == {p for p in parts if p.startswith(("NPT", "TP"))}

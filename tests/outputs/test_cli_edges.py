@@ -39,11 +39,15 @@ def test_a_folder_given_as_the_case(capsys, tmp_path):
     one_line_error(capsys, tmp_path, f"{tmp_path}: expected a case file, found a directory")
 
 
-@pytest.mark.parametrize("title, code_point", [("axis \\u001b[31m3", "U+001B"), ("axis\\n3", "U+000A"), ("axis \\u009b3", "U+009B")])
+@pytest.mark.parametrize(
+    "title, code_point", [("axis \\u001b[31m3", "U+001B"), ("axis\\n3", "U+000A"), ("axis \\u009b3", "U+009B")]
+)
 def test_control_characters_in_the_title_are_refused(capsys, write_case, title, code_point):
     # An escape sequence (ESC [31m turns a terminal red), a line break, a C1 control (CSI): none reaches the terminal.
     path = write_case(HEAD_TOML.replace('title = "test axis"', f'title = "{title}"') + PROFILE_TOML)
-    err = one_line_error(capsys, path, f"{path}: title: expected one line of printable text, found the control character {code_point}")
+    err = one_line_error(
+        capsys, path, f"{path}: title: expected one line of printable text, found the control character {code_point}"
+    )
     assert "\x1b" not in err and "\x9b" not in err
 
 
@@ -97,8 +101,12 @@ def test_a_trace_shuffled_in_time_names_the_file_row_and_column(capsys, write_ca
     # The transmission trace is read the same way. Data rows 5 and 6 exchanged: 60 ms, then 50 ms in data
     # row 6; three comment lines and the header come first: line 5 + 6 = 11.
     record = with_time_column(TRACE, tmp_path / "trace.csv", swap=(5, 6))
-    one_line_error(capsys, accuracy_case(write_case, "transmission_trace", record, 'stiffness = "22 N*m/arcmin"\nbacklash = "8 arcmin"'),
-                   f"{record}, row 11, column time: expected times that increase", "found 50 ms after 60 ms")
+    one_line_error(
+        capsys,
+        accuracy_case(write_case, "transmission_trace", record, 'stiffness = "22 N*m/arcmin"\nbacklash = "8 arcmin"'),
+        f"{record}, row 11, column time: expected times that increase",
+        "found 50 ms after 60 ms",
+    )
 
 
 def test_evaluate_into_a_pipe_closed_early_exits_quietly():
@@ -117,7 +125,10 @@ def test_evaluate_into_a_pipe_closed_early_exits_quietly():
     "cells, message",
     [
         ({"C_t21 [N*m/arcmin]": "1e-320"}, "column C_t21: expected a magnitude between 1e-12 and 1e+12 in SI units"),
-        ({"T_2N [N*m]": "1e-308", "T_2B [N*m]": "1e-308"}, "column T_2N: expected a magnitude between 1e-12 and 1e+12 in SI units"),
+        (
+            {"T_2N [N*m]": "1e-308", "T_2B [N*m]": "1e-308"},
+            "column T_2N: expected a magnitude between 1e-12 and 1e+12 in SI units",
+        ),
     ],
 )
 def test_a_hostile_catalog_gives_one_line_on_standard_error(tmp_path, cells, message):
@@ -138,7 +149,12 @@ def test_a_hostile_catalog_gives_one_line_on_standard_error(tmp_path, cells, mes
     assert text.count('catalog = "gearboxes"\n') == 1
     case = folder / "case.toml"
     case.write_text(text.replace('catalog = "gearboxes"\n', 'catalog = "hostile.csv"\n'), encoding="utf-8")
-    done = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(case), "--json"], capture_output=True, text=True, cwd=ROOT)
+    done = subprocess.run(
+        [sys.executable, "-m", "calc", "evaluate", str(case), "--json"], capture_output=True, text=True, cwd=ROOT
+    )
     assert (done.returncode, done.stdout) == (2, "")
     assert done.stderr.count("\n") == 1, done.stderr
-    assert done.stderr.startswith(f"error: {folder / 'hostile.csv'}, row {chosen + 1} (NPT035-10), ") and message in done.stderr
+    assert (
+        done.stderr.startswith(f"error: {folder / 'hostile.csv'}, row {chosen + 1} (NPT035-10), ")
+        and message in done.stderr
+    )

@@ -27,7 +27,9 @@ def case_with(write_case, coupling: str):
 
 
 def test_example_gets_a_coupling_with_its_order_line():
-    proc = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(EXAMPLE), "--json"], capture_output=True, text=True)
+    proc = subprocess.run(
+        [sys.executable, "-m", "calc", "evaluate", str(EXAMPLE), "--json"], capture_output=True, text=True
+    )
     assert proc.returncode == 0, proc.stderr
     c = json.loads(proc.stdout)["coupling"]
     assert set(c) >= {"M_N", "temperature_factor", "candidates", "selected", "order"}
@@ -40,7 +42,16 @@ def test_example_gets_a_coupling_with_its_order_line():
     assert first["part"] == "AKD-30" and first["passes"] is True
     assert first["f_e"] == {"value": pytest.approx(1316.35, abs=0.01), "unit": "Hz"}
     assert set(first["checks"][0]) >= {"name", "required", "rated", "utilization", "passes"}
-    assert [k["name"] for k in first["checks"]] == ["T_KN", "f_e", "f_1", "n_max", "d_1min", "d_1max", "d_2min", "d_2max"]
+    assert [k["name"] for k in first["checks"]] == [
+        "T_KN",
+        "f_e",
+        "f_1",
+        "n_max",
+        "d_1min",
+        "d_1max",
+        "d_2min",
+        "d_2max",
+    ]
     assert c["bores"][0]["lower"] == {"value": pytest.approx(19.002), "unit": "mm"}
 
 
@@ -108,23 +119,63 @@ def test_a_bore_outside_every_hub_is_a_failing_check(capsys, write_case):
         ('"15.93 kg*cm**2"', '"0 kg*cm**2"', "coupling.load_inertia: expected an inertia above zero"),
         ('"15.93 kg*cm**2"', '"15.93 kg"', "coupling.load_inertia: expected an inertia such as"),
         ('"150 Hz"', '"150 Hz"\ntemperature = "60 C"', "coupling.temperature: expected a temperature such as"),
-        ('"bellows"', '"rubber"', "coupling.type: unknown coupling type 'rubber'; expected one of bellows, elastomer, safety, line-shaft"),
+        (
+            '"bellows"',
+            '"rubber"',
+            "coupling.type: unknown coupling type 'rubber'; expected one of bellows, elastomer, safety, line-shaft",
+        ),
         ('"19 mm k6"', '"14 mm q99"', "coupling.shaft_1 ('14 mm q99'): unknown ISO 286 tolerance class 'q99'"),
         ('"19 mm k6"', '"14 mm k"', "coupling.shaft_1: expected a shaft size with its tolerance such as"),
-        ('"150 Hz"', '"150 Hz"\ndisengagement_torque = "25 N*m"', "coupling.disengagement_torque: a disengagement torque T_A (E10) is for safety couplings only"),
-        ('"bellows"', '"safety"', "coupling.disengagement_torque: safety couplings need a disengagement torque T_A (E10), found none"),
-        ('"bellows"', '"line-shaft"', "coupling.shaft_distance: line-shaft couplings need a distance between shafts, found none"),
-        ('type = "bellows"', 'type = "line-shaft"\nshaft_distance = "120 mm"', "coupling.shaft_distance: 120 mm is shorter than the two hubs of every line shaft"),
-        ('"150 Hz"', '"150 Hz"\nshaft_distance = "915 mm"', "coupling.shaft_distance: a distance between shafts is for line-shaft couplings only"),
+        (
+            '"150 Hz"',
+            '"150 Hz"\ndisengagement_torque = "25 N*m"',
+            "coupling.disengagement_torque: a disengagement torque T_A (E10) is for safety couplings only",
+        ),
+        (
+            '"bellows"',
+            '"safety"',
+            "coupling.disengagement_torque: safety couplings need a disengagement torque T_A (E10), found none",
+        ),
+        (
+            '"bellows"',
+            '"line-shaft"',
+            "coupling.shaft_distance: line-shaft couplings need a distance between shafts, found none",
+        ),
+        (
+            'type = "bellows"',
+            'type = "line-shaft"\nshaft_distance = "120 mm"',
+            "coupling.shaft_distance: 120 mm is shorter than the two hubs of every line shaft",
+        ),
+        (
+            '"150 Hz"',
+            '"150 Hz"\nshaft_distance = "915 mm"',
+            "coupling.shaft_distance: a distance between shafts is for line-shaft couplings only",
+        ),
         ('"150 Hz"', '"3000 rpm"', "coupling.excitation_frequency: expected a frequency such as"),
         ('excitation_frequency = "150 Hz"\n', "", "coupling.excitation_frequency: expected a value, found none"),
         ('shaft_2 = "16 mm h7"\n', "", "coupling.shaft_2: expected a value, found none"),
-        ('type = "bellows"', 'type = "bellows"\nservice_factor = 0.5', "coupling.service_factor: expected a load factor S_A of 1 or more (E8), found 0.5"),
+        (
+            'type = "bellows"',
+            'type = "bellows"\nservice_factor = 0.5',
+            "coupling.service_factor: expected a load factor S_A of 1 or more (E8), found 0.5",
+        ),
         ('type = "bellows"', 'type = "bellows"\ncolour = "red"', "coupling.colour: unknown key"),
         ('type = "bellows"', 'part = "XK-1"', "coupling.part: no part 'XK-1' in catalog"),
-        ('type = "bellows"', 'type = "bellows"\npart = "SKB-30"', "coupling.part: SKB-30 is a safety coupling, but coupling.type is 'bellows'"),
-        ('type = "bellows"', 'type = "bellows"\ncatalog = "nosuch"', "coupling.catalog: the catalog 'nosuch' does not exist"),
-        ('type = "bellows"', 'type = "elastomer"', "coupling.temperature: elastomer couplings need the operating temperature"),
+        (
+            'type = "bellows"',
+            'type = "bellows"\npart = "SKB-30"',
+            "coupling.part: SKB-30 is a safety coupling, but coupling.type is 'bellows'",
+        ),
+        (
+            'type = "bellows"',
+            'type = "bellows"\ncatalog = "nosuch"',
+            "coupling.catalog: the catalog 'nosuch' does not exist",
+        ),
+        (
+            'type = "bellows"',
+            'type = "elastomer"',
+            "coupling.temperature: elastomer couplings need the operating temperature",
+        ),
     ],
 )
 def test_bad_coupling_input_gives_one_line_naming_file_and_key(capsys, write_case, old, new, fragment):
@@ -183,7 +234,9 @@ def test_a_motor_side_coupling_takes_its_inputs_from_the_case(capsys, write_case
     assert c["M_N"]["value"] == pytest.approx(e["M_N"]["value"], rel=1e-12)
     assert c["M_N"]["value"] == pytest.approx(12 * 15.93 / (15.93 + 4.2) * 2.5, rel=1e-12)
     f_e = {k["part"]: k["f_e"]["value"] for k in e["candidates"]}
-    assert [k["f_e"]["value"] for k in c["candidates"]] == pytest.approx([f_e[k["part"]] for k in c["candidates"]], rel=1e-12)
+    assert [k["f_e"]["value"] for k in c["candidates"]] == pytest.approx(
+        [f_e[k["part"]] for k in c["candidates"]], rel=1e-12
+    )
     # The ranking may differ: only the derived case places the gearbox in the chain (side = "input"),
     # where its first mode governs; without a side it is reported for information.
     assert c["torsion"]["complete"] and not e["torsion"]["complete"]
@@ -216,9 +269,15 @@ def test_keys_given_are_used_as_given(capsys, write_case):
 @pytest.mark.parametrize(
     "text, fragment",
     [
-        (HEAD_TOML + PROFILE_TOML + INPUT_SIDE.replace('"input"', '"motor"'), "coupling.side: expected one of input, output, found 'motor'"),
-        (HEAD_TOML + PROFILE_TOML + INPUT_SIDE.replace('excitation_frequency = "100 Hz"\n', ""),
-         "coupling.excitation_frequency: expected a value (with side = \"input\" it comes from [motor], [load] and the gearbox when they give it), found none"),
+        (
+            HEAD_TOML + PROFILE_TOML + INPUT_SIDE.replace('"input"', '"motor"'),
+            "coupling.side: expected one of input, output, found 'motor'",
+        ),
+        (
+            HEAD_TOML + PROFILE_TOML + INPUT_SIDE.replace('excitation_frequency = "100 Hz"\n', ""),
+            "coupling.excitation_frequency: expected a value (with side = \"input\" it comes from [motor], [load] "
+            "and the gearbox when they give it), found none",
+        ),
     ],
 )
 def test_bad_side(capsys, write_case, text, fragment):

@@ -54,19 +54,30 @@ def test_a_table_indexing_a_quarter_turn_by_hand(capsys, write_case):
     assert m["J_L"] == {"value": pytest.approx(1500.0), "unit": "kg*cm**2"}
     # T_2 = J_L·α + T_f: 0.15 kg·m² · 39.2699 + 2 = 7.89049 N·m; const 2 N·m; decel −5.89049 + 2 = −3.89049 N·m.
     phases = [(s["phase"], s["duration"]["value"], s["speed"]["value"], s["torque"]["value"]) for s in m["segments"]]
-    expected = [("accel", 0.1, 18.75, 7.890486225), ("const", 0.3, 37.5, 2.0), ("decel", 0.1, 18.75, -3.890486225), ("pause", 0.5, 0.0, 0.0)]
+    expected = [
+        ("accel", 0.1, 18.75, 7.890486225),
+        ("const", 0.3, 37.5, 2.0),
+        ("decel", 0.1, 18.75, -3.890486225),
+        ("pause", 0.5, 0.0, 0.0),
+    ]
     for got, want in zip(phases, expected, strict=True):
         assert got[0] == want[0]
         assert got[1:] == pytest.approx(want[1:], rel=1e-9, abs=1e-12)
-    # The duty section uses them as typed: ED = 0.5 / 1.0 = 50 %, n_2m = (18.75·0.1 + 37.5·0.3 + 18.75·0.1) / 0.5 = 30 rpm.
+    # The duty section uses them as typed: ED = 0.5 / 1.0 = 50 %,
+    # n_2m = (18.75·0.1 + 37.5·0.3 + 18.75·0.1) / 0.5 = 30 rpm.
     assert r["duty"]["ED"]["value"] == pytest.approx(50.0)
     assert r["continuous"]["n2m"]["value"] == pytest.approx(30.0, rel=1e-12)
-    # T_2m = ∛((18.75·0.1·7.890486³ + 37.5·0.3·2³ + 18.75·0.1·3.890486³) / 15) = ∛((921.11 + 90 + 110.41) / 15) = ∛74.768 = 4.21281 N·m
+    # T_2m = ∛((18.75·0.1·7.890486³ + 37.5·0.3·2³ + 18.75·0.1·3.890486³) / 15)
+    #      = ∛((921.11 + 90 + 110.41) / 15) = ∛74.768 = 4.21281 N·m
     assert r["continuous"]["T2m"]["value"] == pytest.approx(4.21281, abs=1e-5)
 
 
 def test_the_load_inertia_comes_from_the_mechanism(capsys, write_case):
-    r = evaluated(capsys, write_case, HEAD + SCREW + MOVE.format(distance="100 mm") + '[motor]\ninertia = "4.2 kg*cm**2"\npeak_torque = "12 N*m"\n')
+    r = evaluated(
+        capsys,
+        write_case,
+        HEAD + SCREW + MOVE.format(distance="100 mm") + '[motor]\ninertia = "4.2 kg*cm**2"\npeak_torque = "12 N*m"\n',
+    )
     # By hand: r = 20 mm / 2π = 3.18310 mm; J_L = 50 kg · (3.18310 mm)² = 5.06606 kg·cm².
     assert r["motion"]["J_L"]["value"] == pytest.approx(5.06606, abs=1e-5)
     ratio = r["gearbox"]["candidates"][0]["inertia_ratio"]
@@ -112,41 +123,131 @@ def test_a_drive_record_without_torque_takes_the_mechanisms(capsys, write_case, 
 
 
 ERRORS = [
-    (HEAD + '[mechanism]\ntype = "crank"\ninertia = "1 kg*m**2"\n' + MOVE.format(distance="90 deg"), "mechanism.type", "crank"),
-    (HEAD + TABLE + 'lead = "20 mm"\n' + MOVE.format(distance="90 deg"), "mechanism.lead", "a key of a ball-screw mechanism"),
-    (HEAD + SCREW + 'inertia = "1 kg*m**2"\n' + MOVE.format(distance="1 mm"), "mechanism.inertia", "a key of a rotary mechanism"),
+    (
+        HEAD + '[mechanism]\ntype = "crank"\ninertia = "1 kg*m**2"\n' + MOVE.format(distance="90 deg"),
+        "mechanism.type",
+        "crank",
+    ),
+    (
+        HEAD + TABLE + 'lead = "20 mm"\n' + MOVE.format(distance="90 deg"),
+        "mechanism.lead",
+        "a key of a ball-screw mechanism",
+    ),
+    (
+        HEAD + SCREW + 'inertia = "1 kg*m**2"\n' + MOVE.format(distance="1 mm"),
+        "mechanism.inertia",
+        "a key of a rotary mechanism",
+    ),
     (HEAD + TABLE + 'colour = "red"\n' + MOVE.format(distance="90 deg"), "mechanism.colour", "unknown key"),
     (HEAD + TABLE + "holding_brake = 1\n" + MOVE.format(distance="90 deg"), "mechanism.holding_brake", "true or false"),
-    (HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.3 s"\n', "move[1].accel_time", "fit in the move"),
-    (HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.2 s"\ndecel_time = "0.31 s"\n', "move[1].accel_time", "0.2 s + 0.31 s > 0.5 s"),
-    (HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.1 s"\njerk_time = "0.06 s"\n', "move[1].jerk_time", "at most half"),
-    (HEAD + TABLE + MOVE.format(distance="100 mm"), "move[1].distance", "a rotary mechanism moves its load by an angle"),
-    (HEAD + SCREW + MOVE.format(distance="90 deg"), "move[1].distance", "a ball-screw mechanism moves its load by a length"),
+    (
+        HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.3 s"\n',
+        "move[1].accel_time",
+        "fit in the move",
+    ),
+    (
+        HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.2 s"\ndecel_time = "0.31 s"\n',
+        "move[1].accel_time",
+        "0.2 s + 0.31 s > 0.5 s",
+    ),
+    (
+        HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.1 s"\njerk_time = "0.06 s"\n',
+        "move[1].jerk_time",
+        "at most half",
+    ),
+    (
+        HEAD + TABLE + MOVE.format(distance="100 mm"),
+        "move[1].distance",
+        "a rotary mechanism moves its load by an angle",
+    ),
+    (
+        HEAD + SCREW + MOVE.format(distance="90 deg"),
+        "move[1].distance",
+        "a ball-screw mechanism moves its load by a length",
+    ),
     (HEAD + SCREW + MOVE.format(distance="2 s"), "move[1].distance", "which is a time"),
     (HEAD + TABLE + MOVE.format(distance="0 deg"), "move[1].distance", "other than zero"),
-    (HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0 s"\naccel_time = "0.1 s"\n', "move[1].time", "above zero"),
-    (HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "-0.1 s"\n', "move[1].accel_time", "above zero"),
-    (HEAD + TABLE + '[[move]]\ndwell = "-1 s"\n[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.1 s"\n', "move[1].dwell", "above zero"),
-    (HEAD + SCREW.replace('lead = "20 mm"', 'lead = "0 mm"') + MOVE.format(distance="1 mm"), "mechanism.lead", "above zero"),
-    (HEAD + SCREW.replace("mass = \"50 kg\"", "mass = \"-5 kg\"") + MOVE.format(distance="1 mm"), "mechanism.mass", "above zero"),
-    (HEAD + SCREW.replace("eta = 0.9", "eta = 0") + MOVE.format(distance="1 mm"), "mechanism.eta", "an efficiency above zero"),
+    (
+        HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0 s"\naccel_time = "0.1 s"\n',
+        "move[1].time",
+        "above zero",
+    ),
+    (
+        HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "-0.1 s"\n',
+        "move[1].accel_time",
+        "above zero",
+    ),
+    (
+        HEAD
+        + TABLE
+        + '[[move]]\ndwell = "-1 s"\n[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.1 s"\n',
+        "move[1].dwell",
+        "above zero",
+    ),
+    (
+        HEAD + SCREW.replace('lead = "20 mm"', 'lead = "0 mm"') + MOVE.format(distance="1 mm"),
+        "mechanism.lead",
+        "above zero",
+    ),
+    (
+        HEAD + SCREW.replace("mass = \"50 kg\"", "mass = \"-5 kg\"") + MOVE.format(distance="1 mm"),
+        "mechanism.mass",
+        "above zero",
+    ),
+    (
+        HEAD + SCREW.replace("eta = 0.9", "eta = 0") + MOVE.format(distance="1 mm"),
+        "mechanism.eta",
+        "an efficiency above zero",
+    ),
     (HEAD + SCREW.replace("eta = 0.9", "eta = 1.2") + MOVE.format(distance="1 mm"), "mechanism.eta", "at most 1"),
-    (HEAD + SCREW.replace('type = "ball-screw"', 'type = "belt"').replace('lead = "20 mm"', 'pulley_diameter = "-60 mm"') + MOVE.format(distance="1 mm"),
-     "mechanism.pulley_diameter", "above zero"),
-    (HEAD + SCREW.replace('type = "ball-screw"', 'type = "rack-pinion"').replace('lead = "20 mm"', 'pitch_diameter = "0 mm"') + MOVE.format(distance="1 mm"),
-     "mechanism.pitch_diameter", "above zero"),
-    (HEAD + SCREW + "friction_coefficient = -0.1\n" + MOVE.format(distance="1 mm"), "mechanism.friction_coefficient", "zero or more"),
-    (HEAD + TABLE + 'friction_torque = "-1 N*m"\n'.replace("friction", "process") + MOVE.format(distance="90 deg"), "mechanism.process_torque", "zero or more"),
-    (HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ndwell = "0.5 s"\n', "move[1].distance", "a dwell takes only its time"),
+    (
+        HEAD
+        + SCREW.replace('type = "ball-screw"', 'type = "belt"').replace('lead = "20 mm"', 'pulley_diameter = "-60 mm"')
+        + MOVE.format(distance="1 mm"),
+        "mechanism.pulley_diameter",
+        "above zero",
+    ),
+    (
+        HEAD
+        + SCREW.replace('type = "ball-screw"', 'type = "rack-pinion"').replace(
+            'lead = "20 mm"', 'pitch_diameter = "0 mm"'
+        )
+        + MOVE.format(distance="1 mm"),
+        "mechanism.pitch_diameter",
+        "above zero",
+    ),
+    (
+        HEAD + SCREW + "friction_coefficient = -0.1\n" + MOVE.format(distance="1 mm"),
+        "mechanism.friction_coefficient",
+        "zero or more",
+    ),
+    (
+        HEAD + TABLE + 'friction_torque = "-1 N*m"\n'.replace("friction", "process") + MOVE.format(distance="90 deg"),
+        "mechanism.process_torque",
+        "zero or more",
+    ),
+    (
+        HEAD + TABLE + '[[move]]\ndistance = "90 deg"\ndwell = "0.5 s"\n',
+        "move[1].distance",
+        "a dwell takes only its time",
+    ),
     (HEAD + TABLE + '[[move]]\ntime = "0.5 s"\n', "move[1].distance", "found neither"),
     (HEAD + TABLE + '[[move]]\ndwell = "0.5 s"\n', "move", "only dwells"),
     ("move = []\n" + HEAD + TABLE, "move", "found none"),
     (HEAD + PROFILE_TOML + TABLE + MOVE.format(distance="90 deg"), "move", "given as profile already"),
-    (HEAD + TABLE + MOVE.format(distance="90 deg") + '[drive_record]\nfile = "rec.csv"\n', "drive_record", "given as move already"),
+    (
+        HEAD + TABLE + MOVE.format(distance="90 deg") + '[drive_record]\nfile = "rec.csv"\n',
+        "drive_record",
+        "given as move already",
+    ),
     (HEAD + MOVE.format(distance="90 deg"), "move", "need the mechanism"),
     (HEAD + TABLE + PROFILE_TOML, "mechanism", "found [[profile]]"),
     (HEAD + TABLE, "mechanism", "found neither"),
-    (HEAD + '[load]\ninertia = "1 kg*m**2"\n' + TABLE + MOVE.format(distance="90 deg"), "load.inertia", "the mechanism gives"),
+    (
+        HEAD + '[load]\ninertia = "1 kg*m**2"\n' + TABLE + MOVE.format(distance="90 deg"),
+        "load.inertia",
+        "the mechanism gives",
+    ),
 ]
 
 

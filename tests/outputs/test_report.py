@@ -211,11 +211,16 @@ def test_a_derived_load_cycle_shows_its_motion_and_mechanism():
     # The mechanism's inputs and the moves; the duty's table says the cycle is derived.
     assert case_key("mechanism.friction_torque") in inputs
     assert "Moves of the load, repeated" in inputs and "derived from the motion" in inputs
-    # Each formula with its values: ω_2max = 90° / (0.5 − 0.15/2 − 0.15/2) s = 42.86 rpm; α = 4.488 / 0.12 = 37.4 rad/s²;
+    # Each formula with its values: ω_2max = 90° / (0.5 − 0.15/2 − 0.15/2) s = 42.86 rpm;
+    # α = 4.488 / 0.12 = 37.4 rad/s²;
     # at the peak acceleration T_2 = 0.15 · 37.4 + 3 = 8.61 N·m.
     assert (r"\omega_{\mathrm{2max}} &= \frac{\varphi_{2}}{t_{\mathrm{m}} - \frac{t_{\mathrm{a}}}{2} - "
             r"\frac{t_{\mathrm{d}}}{2}}") in steps
-    assert r"&= 42.86\,\mathrm{rpm}" in steps and r"&= 37.4\,\mathrm{rad/s^{2}}" in steps and r"&= 8.61\,\mathrm{N\,m}" in steps
+    assert (
+        r"&= 42.86\,\mathrm{rpm}" in steps
+        and r"&= 37.4\,\mathrm{rad/s^{2}}" in steps
+        and r"&= 8.61\,\mathrm{N\,m}" in steps
+    )
     assert "Segments derived from the sampled cycle" in steps
     assert steps.index("Motion and mechanism") < steps.index("Duty cycle and operating mode")
     assert any("derived segments" in caption for _, caption in r.figures())
@@ -248,7 +253,10 @@ def test_front_page_lists_every_governing_check_and_what_is_not_checked():
                                 for name in ("Gearbox NPT035-10", "Motor SGMUH-10DA", "Accuracy"))
     assert (r"$F_{\mathrm{2r}}$ ≤ $F_{\mathrm{2R}}$: \notchecked{} {\footnotesize the catalog gives no "
             r"$F_{\mathrm{2R}}$}") in gearbox and r"$d_{\mathrm{hub,max}}$" in gearbox
-    assert r"at every sample: 1.006 N·m against 6.5 N·m" in motor and r"$T_{\mathrm{1rms}}$ ≤ $M_{\mathrm{N}}$: 0.3199 N·m against 1.59 N·m" in motor
+    assert (
+        r"at every sample: 1.006 N·m against 6.5 N·m" in motor
+        and r"$T_{\mathrm{1rms}}$ ≤ $M_{\mathrm{N}}$: 0.3199 N·m against 1.59 N·m" in motor
+    )
     assert motor.count(r"\item ") == 5
     assert r"positioning accuracy ≤ required: 1.447" in accuracy
     assert r"\textbf{Coupling AKN-18}" in page

@@ -34,7 +34,9 @@ stiffness_curve = {T1 = "29 N*m", T2 = "108 N*m", K1 = "6.7e4 N*m/rad", K2 = "1.
 
 
 def test_report_blocks_show_the_makers_checks(write_case, tmp_path):
-    (tmp_path / "shock.csv").write_text("from [1/h],to [1/h],factor [1],at_boundary,source\n0,,1.5,higher,a test table\n")
+    (tmp_path / "shock.csv").write_text(
+        "from [1/h],to [1/h],factor [1],at_boundary,source\n0,,1.5,higher,a test table\n"
+    )
     head = HEAD_TOML.replace("ratio = 10", 'ratio = 10\nshock_factors = "shock.csv"')
     report = build_report(write_case(head + PROFILE_TOML + CASE))
     assert report.error is None, report.error

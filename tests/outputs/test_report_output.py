@@ -22,7 +22,9 @@ from ..conftest import DERIVED_EXAMPLE, ROOT
 
 needs_tex = pytest.mark.skipif(shutil.which("xelatex") is None, reason="needs xelatex")
 
-SHOCK_TABLE = "from [1/h],to [1/h],factor [1],at_boundary,source\n0,,1.5,higher,a table of one band for every cycle rate\n"
+SHOCK_TABLE = (
+    "from [1/h],to [1/h],factor [1],at_boundary,source\n0,,1.5,higher,a table of one band for every cycle rate\n"
+)
 
 
 @pytest.fixture(scope="module")
@@ -39,7 +41,11 @@ def cases(tmp_path_factory):
     (root / "cases" / "shaft-24.toml").write_text(shaft, encoding="utf-8")
     (root / "cases" / "shock-1.5.toml").write_text(shock, encoding="utf-8")
     (root / "cases" / "shock-1.5.csv").write_text(SHOCK_TABLE, encoding="utf-8")
-    return {"example": DERIVED_EXAMPLE, "shaft-24": root / "cases" / "shaft-24.toml", "shock-1.5": root / "cases" / "shock-1.5.toml"}
+    return {
+        "example": DERIVED_EXAMPLE,
+        "shaft-24": root / "cases" / "shaft-24.toml",
+        "shock-1.5": root / "cases" / "shock-1.5.toml",
+    }
 
 
 @pytest.fixture(scope="module")
@@ -50,12 +56,16 @@ def reports(cases):
     return built
 
 
-STEP = re.compile(r"\\calcstep\{(?P<title>[^}]*)\}(?:(?!\\calcstep).)*?\\begin\{aligned\}(?P<body>.*?)\\end\{aligned\}", re.S)
+STEP = re.compile(
+    r"\\calcstep\{(?P<title>[^}]*)\}(?:(?!\\calcstep).)*?\\begin\{aligned\}(?P<body>.*?)\\end\{aligned\}", re.S
+)
 
 
 def steps_of(report) -> dict:
     """Each calculation step of the report by its title: its sides as LaTeX (symbol, formula, values, result)."""
-    return {m["title"]: [side.strip() for side in m["body"].split("&=")] for m in STEP.finditer(str(report.calculations()))}
+    return {
+        m["title"]: [side.strip() for side in m["body"].split("&=")] for m in STEP.finditer(str(report.calculations()))
+    }
 
 
 def json_of(report) -> dict:
@@ -91,9 +101,17 @@ def test_every_gearbox_step_is_the_required_value_of_its_check_in_the_json(repor
     r = reports[name]
     g, steps = json_of(r)["gearbox"], steps_of(r)
     checks = {k["name"]: k for k in g["candidates"][0]["checks"]}
-    for title, check in (("Input speed at the mean output speed (S1)", "n_1N"), ("Input speed at the highest output speed (S5)", "n_1max"),
-                         ("Maximum output torque", "T_2B"), ("Tilting moment on the output bearing", "M_2K")):
-        assert steps[title][-1].startswith(number(checks[check]["required"])), (title, steps[title][-1], checks[check]["required"])
+    for title, check in (
+        ("Input speed at the mean output speed (S1)", "n_1N"),
+        ("Input speed at the highest output speed (S5)", "n_1max"),
+        ("Maximum output torque", "T_2B"),
+        ("Tilting moment on the output bearing", "M_2K"),
+    ):
+        assert steps[title][-1].startswith(number(checks[check]["required"])), (
+            title,
+            steps[title][-1],
+            checks[check]["required"],
+        )
     assert steps["Load to motor inertia ratio"][-1] == sig(g["candidates"][0]["inertia_ratio"])
     # The shock factor of T_2max is the case's: 1.5 in the variant, 1.6 (the source's, Z_h = 2400 /h) otherwise.
     assert rf"\cdot {json_of(r)['cyclic']['fs']:g} \cdot" in steps["Maximum output torque"][2]
@@ -101,7 +119,9 @@ def test_every_gearbox_step_is_the_required_value_of_its_check_in_the_json(repor
 
 def test_the_24_mm_hub_is_the_j1_of_every_step(reports):
     # catalogs/gearbox-hubs.csv: NPT035-10's 24 mm hub has J_1 = 1.7 kg·cm²; 1500 / 10² + 1.7 = 16.7.
-    load = next(v for t, v in steps_of(reports["shaft-24"]).items() if t.startswith("Load inertia seen by the coupling"))
+    load = next(
+        v for t, v in steps_of(reports["shaft-24"]).items() if t.startswith("Load inertia seen by the coupling")
+    )
     assert r"+ 1.7\," in load[2] and load[3].startswith("16.7")
     assert "24 mm clamping hub" in next(t for t in steps_of(reports["shaft-24"]) if t.startswith("Load inertia seen"))
 
@@ -220,9 +240,15 @@ def test_the_report_notebook_shows_the_blocks_the_pdf_typesets(reports):
     from calc.report import Latex
 
     notebook = nbformat.read(publish.NOTEBOOK, as_version=4)
-    NotebookClient(notebook, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(publish.NOTEBOOK.parent)}}).execute()
-    shown = [(o["data"].get("text/latex"), o.get("metadata", {}).get("caption")) for c in notebook.cells for o in c.get("outputs", [])
-             if o["output_type"] == "display_data"]
+    NotebookClient(
+        notebook, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(publish.NOTEBOOK.parent)}}
+    ).execute()
+    shown = [
+        (o["data"].get("text/latex"), o.get("metadata", {}).get("caption"))
+        for c in notebook.cells
+        for o in c.get("outputs", [])
+        if o["output_type"] == "display_data"
+    ]
     blocks = [(str(b), None) if isinstance(b, Latex) else (None, m["caption"]) for b, m in reports["example"].blocks()]
     built = re.compile(r"\d{4}-\d\d-\d\d \d\d:\d\d UTC")  # the build date, to the minute
     assert [(built.sub("", t or ""), c) for t, c in shown] == [(built.sub("", t or ""), c) for t, c in blocks]
@@ -236,7 +262,9 @@ def test_the_signature_lines_are_on_the_front_page(pdfs, name):
     import subprocess
 
     pdf, _ = pdfs[name]
-    first = subprocess.run(["pdftotext", "-f", "1", "-l", "1", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
+    first = subprocess.run(
+        ["pdftotext", "-f", "1", "-l", "1", str(pdf), "-"], capture_output=True, text=True, check=True
+    ).stdout
     assert "Title block" in first and "Approved by" in first
     assert "generated.csv" in first  # the last file listed (the path breaks in its column)
 
@@ -254,7 +282,9 @@ def test_the_compiled_preamble_typesets_what_xelatex_alone_does(reports, pdfs, m
     assert "preloaded format=report-" in log.splitlines()[0] and "Missing character" not in log
     monkeypatch.setattr(publish, "compiled_preamble", lambda tex: None)
     exporter = publish.exporter()
-    body, _ = exporter.from_notebook_node(publish.report_notebook(reports["example"]), resources={"metadata": {"name": "example"}})
+    body, _ = exporter.from_notebook_node(
+        publish.report_notebook(reports["example"]), resources={"metadata": {"name": "example"}}
+    )
     (tmp_path / "alone.pdf").write_bytes(body)
     assert "preloaded format=xelatex" in exporter.latex_log.splitlines()[0]
     assert text(tmp_path / "alone.pdf") == text(pdf)
