@@ -34,6 +34,7 @@ COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "cal
                    "calc.sections",
                    "calc.sections.case",
                    "calc.sections.common",
+                   "calc.sections.coupling",
                    "calc.sections.drive",
                    "calc.sections.duty",
                    "calc.sections.evaluation",

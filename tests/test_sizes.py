@@ -22,6 +22,7 @@ COVERED_MODULES = ("review/__init__.py", "review/client.py", "review/edit.py", "
                    "sections/__init__.py",
                    "sections/case.py",
                    "sections/common.py",
+                   "sections/coupling.py",
                    "sections/drive.py",
                    "sections/duty.py",
                    "sections/evaluation.py",

@@ -1,6 +1,6 @@
 """The coupling of a case (``[coupling]``): its inputs, given or taken from the rest of the case
-(``side = "input"``, E8), the candidates checked and ranked (:mod:`calc.domain.coupling`, E7 to E10) and
-the ordering text of the one chosen."""
+(``side = "input"``, E8), the candidates checked and ranked (:mod:`calc.domain.coupling`, E7 to E10)
+and the ordering text of the one chosen."""
 
 from __future__ import annotations
 
@@ -14,8 +14,8 @@ from ..data.bands import factor_table
 from .case import Case, Declared, Key, Table
 from ..data.catalog import Catalog, load_catalogs
 from ..domain.coupling import (
-    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input, check_types, f_e_min,
-    order_lines, select_coupling,
+    DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input,
+    check_types, f_e_min, order_lines, select_coupling,
 )
 from ..core.errors import CalcError
 from ..domain.fits import parse_bore
@@ -23,31 +23,41 @@ from ..domain.gearbox import n_1
 from ..domain.profile import Z_h
 from ..domain.torsion import CouplingSpan, TrainMember, gearbox_at_input, inertia_at_output, load_at_input
 from ..core.units import Q_, Value, fmt, sig
-from .common import SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json, selection_governing, selection_verdict
+from .common import (SHOWN_CANDIDATES, Governing, Verdict, check_json, check_line, json_of, row_json,
+                     selection_governing, selection_verdict)
 from .protocol import Result, Section
 
 NAME = "coupling"
 ORDER = 50
 _FROM_CASE = " (with side = \"input\": from the rest of the case)"
 TABLES = (Declared(NAME, (
-    Key("catalog", "catalog", "the coupling catalog(s): a name in catalogs/ or a path to a CSV file", default="couplings"),
+    Key("catalog", "catalog", "the coupling catalog(s): a name in catalogs/ or a path to a CSV file",
+        default="couplings"),
     Key("type", "choice", "check only couplings of this type: bellows | elastomer | safety | line-shaft"),
     Key("part", "text", "check this one part instead of ranking the catalog"),
     Key("side", "choice", "where the coupling sits: input (between motor and gearbox) | output"),
     Key("accel_torque", "torque", "acceleration torque of the motor" + _FROM_CASE, "M_a", unit="N*m"),
-    Key("drive_inertia", "inertia", "drive-side inertia, without the coupling" + _FROM_CASE, "J_drive", unit="kg*cm**2"),
-    Key("load_inertia", "inertia", "load-side inertia as the coupling sees it, without the coupling (E8)" + _FROM_CASE, "J_load", unit="kg*cm**2"),
+    Key("drive_inertia", "inertia", "drive-side inertia, without the coupling" + _FROM_CASE, "J_drive",
+        unit="kg*cm**2"),
+    Key("load_inertia", "inertia", "load-side inertia as the coupling sees it, without the coupling (E8)" + _FROM_CASE,
+        "J_load", unit="kg*cm**2"),
     Key("service_factor", "dimensionless", "load (shock) factor (E8)", "S_A", DEFAULT_SERVICE_FACTOR),
-    Key("temperature", "temperature", "operating temperature, needed by elastomer couplings (E9)", "vartheta", unit="degC"),
-    Key("excitation_frequency", "frequency", "excitation frequency of the drive: f_e >= 2 f_er (E7)", "f_er", unit="Hz"),
+    Key("temperature", "temperature", "operating temperature, needed by elastomer couplings (E9)", "vartheta",
+        unit="degC"),
+    Key("excitation_frequency", "frequency", "excitation frequency of the drive: f_e >= 2 f_er (E7)", "f_er",
+        unit="Hz"),
     Key("speed", "speed", "speed of the coupling" + _FROM_CASE, "n", unit="rpm"),
     Key("shaft_1", "bore", "bore 1 with its fit"),
     Key("shaft_2", "bore", "bore 2 with its fit"),
-    Key("disengagement_torque", "torque", "disengagement torque of a safety coupling (E10)", "T_A", unit="N*m"),
+    Key("disengagement_torque", "torque", "disengagement torque of a safety coupling (E10)", "T_A",
+        unit="N*m"),
     Key("shaft_distance", "length", "distance between the shafts of a line shaft", "A", unit="mm"),
-    Key("temperature_factors", "factor table", "the table of the temperature factor K_ϑ (E9): source | roba-es | comintec | a path", default="source"),
-    Key("start_factors", "factor table", "the table of the start factor S_z: roba-es | a path; the peak-torque check T_S · S_z · K_ϑ <= T_Kmax"),
-    Key("starts_per_hour", "per_hour", "starts per hour for the start factor (default: Z_h of the load cycle)", "Z_h", unit="1/hour"),
+    Key("temperature_factors", "factor table",
+        "the table of the temperature factor K_ϑ (E9): source | roba-es | comintec | a path", default="source"),
+    Key("start_factors", "factor table",
+        "the table of the start factor S_z: roba-es | a path; the peak-torque check T_S · S_z · K_ϑ <= T_Kmax"),
+    Key("starts_per_hour", "per_hour", "starts per hour for the start factor (default: Z_h of the load cycle)", "Z_h",
+        unit="1/hour"),
 ), "the coupling: its inputs, the candidates checked and ranked, and the order line of the one chosen"),)
 
 
@@ -55,18 +65,52 @@ TABLES = (Declared(NAME, (
 class CouplingInputs:
     """The ``[coupling]`` table as read with the case: the candidates (the catalog narrowed to
     the part or type asked for), where the coupling sits, its shafts, each quantity the table
-    gives (or its declared default; None where neither) and the factor tables."""
+    gives (or its declared default; None where neither) and the factor tables.
 
-    table: dict  # as written
+    Parameters
+    ----------
+    table : dict
+        The ``[coupling]`` table as written.
+    catalog : calc.data.catalog.Catalog
+        The candidates: the catalog narrowed to the part or type asked for.
+    type : str or None
+        The coupling type asked for (:data:`calc.domain.coupling.TYPES`); None: any.
+    side : str or None
+        Where the coupling sits: ``"input"`` between motor and gearbox, ``"output"`` between
+        gearbox and load; None where the table does not say.
+    bores : tuple of calc.domain.fits.Bore
+        ``shaft_1`` and ``shaft_2`` with their fits.
+    given : dict
+        Key of :data:`QUANTITIES` to the quantity the table gives (or its declared default; None
+        where neither).
+    temperature_factors : calc.data.bands.BandTable
+        The table of the temperature factor K_ϑ (E9).
+    start_factors : calc.data.bands.BandTable or None, optional
+        The table of the start factor S_z, where the table names one.
+    """
+
+    table: dict
     catalog: Catalog
     type: str | None
-    side: str | None  # input: between motor and gearbox; output: between gearbox and load
+    side: str | None
     bores: tuple
-    given: dict  # key -> quantity
-    temperature_factors: object  # calc.data.bands.BandTable
-    start_factors: object = None  # BandTable, where the table names one
+    given: dict
+    temperature_factors: object
+    start_factors: object = None
 
     def has(self, key: str) -> bool:
+        """Whether the table gives a key (a declared default does not count).
+
+        Parameters
+        ----------
+        key : str
+            A key of ``[coupling]`` (``"load_inertia"``).
+
+        Returns
+        -------
+        bool
+            True where the table as written holds it.
+        """
         return key in self.table
 
 
@@ -80,18 +124,45 @@ FROM_THE_CASE = ("accel_torque", "drive_inertia", "load_inertia", "speed", "star
 @dataclass
 class CouplingCase:
     """The ``[coupling]`` section as evaluated: the candidates and the arguments of
-    :func:`select_coupling`, with what it takes from the rest of the case."""
+    :func:`select_coupling`, with what it takes from the rest of the case.
+
+    Parameters
+    ----------
+    catalog : calc.data.catalog.Catalog
+        The candidates.
+    type : str or None
+        The coupling type asked for; None: any.
+    side : str or None
+        Where the coupling sits: ``"input"`` between motor and gearbox, ``"output"`` between
+        gearbox and load; None where the table does not say.
+    inputs : dict
+        The keyword arguments of :func:`select_coupling`: each key of :data:`QUANTITIES` to its
+        quantity (None where neither the table nor the case gives it), and the factor tables.
+    bores : tuple of calc.domain.fits.Bore
+        ``shaft_1`` and ``shaft_2`` with their fits.
+    derived : list of str
+        What was taken from the rest of the case (``side = "input"``), as sentences.
+    missing : dict, optional
+        Key to what the case lacks for it (``side = "input"``); its checks are not made.
+    drive_train : calc.domain.coupling.DriveTrain or None, optional
+        The members around the coupling (:mod:`calc.domain.torsion`); None without the inertias
+        of its two sides.
+    drive_steps : tuple, optional
+        (title, :class:`calc.core.formula.Step`) of each member referred to the coupling's shaft.
+    steps : list, optional
+        (title, :class:`calc.core.formula.Step`) of each input computed from the rest of the case,
+        as computed.
+    """
 
     catalog: Catalog
     type: str | None
-    side: str | None  # input: between motor and gearbox; output: between gearbox and load
+    side: str | None
     inputs: dict
     bores: tuple
-    derived: list  # what was taken from the rest of the case (side = "input"), as sentences
-    missing: dict = field(default_factory=dict)  # key -> what the case lacks for it (side = "input"); its checks are not made
-    drive_train: DriveTrain | None = None  # the members around the coupling (calc.domain.torsion)
-    drive_steps: tuple = ()  # (title, Step) of each member referred to the coupling's shaft
-    #: (title, calc.core.formula.Step) of each input computed from the rest of the case, as computed
+    derived: list
+    missing: dict = field(default_factory=dict)
+    drive_train: DriveTrain | None = None
+    drive_steps: tuple = ()
     steps: list = field(default_factory=list)
 
 
@@ -106,6 +177,7 @@ def read_inputs(case: Case) -> CouplingInputs:
     Returns
     -------
     CouplingInputs
+        The candidates, the side, the shafts, the quantities and the factor tables.
     """
     s = Table(case.path, NAME, case.sections[NAME], TABLES[0].keys)
     catalog, wanted = _candidates(case, s)
@@ -115,7 +187,8 @@ def read_inputs(case: Case) -> CouplingInputs:
     derivable = FROM_THE_CASE[:3] if side == "input" else ()  # speed only with a gearbox: not among the keys needed
     for key in ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "shaft_1", "shaft_2"):
         if not s.has(key) and key not in derivable:
-            hint = " (with side = \"input\" it comes from [motor], [load] and the gearbox when they give it)" if side == "input" else ""
+            hint = (" (with side = \"input\" it comes from [motor], [load] and the gearbox when they give it)"
+                    if side == "input" else "")
             raise CalcError(f"{s.where(key)}: expected a value{hint}, found none")
     bores = tuple(parse_bore(s.data[key], s.where(key)) for key in ("shaft_1", "shaft_2"))
     given = {key: s.quantity(key) for key in QUANTITIES}
@@ -143,6 +216,8 @@ def coupling_case(case: Case, given: CouplingInputs, gearbox) -> CouplingCase:
     Returns
     -------
     CouplingCase
+        The arguments of :func:`select_coupling`, what was taken from the case and what it lacks,
+        and the drive train with the steps that referred its members to the coupling's shaft.
     """
     derived, derived_steps = _from_the_case(case, gearbox) if given.side == "input" else ({}, {})
     if given.start_factors is not None and not given.has("starts_per_hour"):
@@ -163,7 +238,20 @@ def coupling_case(case: Case, given: CouplingInputs, gearbox) -> CouplingCase:
 
 
 def _candidates(case: Case, s: Table) -> tuple[Catalog, str | None]:
-    """The section's coupling catalog narrowed to its ``part`` or ``type``, and the type asked for."""
+    """The section's coupling catalog narrowed to its ``part`` or ``type``, and the type asked for.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case being read (its folder, where catalogs given as paths are found).
+    s : calc.sections.case.Table
+        The ``[coupling]`` table.
+
+    Returns
+    -------
+    tuple
+        (:class:`calc.data.catalog.Catalog` of the candidates, the type asked for or None).
+    """
     catalog = load_catalogs(s.catalogs("catalog"), case.folder, s.where("catalog"), SCHEMA)
     check_types(catalog)
     wanted = s.text("type")
@@ -173,7 +261,8 @@ def _candidates(case: Case, s: Table) -> tuple[Catalog, str | None]:
     if part is not None:
         row = catalog.usable_index(part, s.where("part"))
         if wanted is not None and catalog.text["type"][row] != wanted:
-            raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, but coupling.type is {wanted!r}")
+            raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, "
+                            f"but coupling.type is {wanted!r}")
         return catalog.rows([row]), wanted
     if wanted is not None:
         mask = catalog.text["type"] == wanted
@@ -186,9 +275,7 @@ def _candidates(case: Case, s: Table) -> tuple[Catalog, str | None]:
 def coupling_span(case: Case) -> CouplingSpan | None:
     """The couplings the case may fit between motor and gearbox, with the motor's and the load's
     inertia and ``2 f_er``: what the gearbox selection bounds each row's drive train with
-    (:func:`calc.domain.gearbox.select_gearbox`). None where the case has no coupling there, or gives no
-    motor inertia, load inertia or excitation frequency, or no candidate has a stiffness and an
-    inertia (a line shaft's stiffness needs its length: line shafts are left out).
+    (:func:`calc.domain.gearbox.select_gearbox`).
 
     Parameters
     ----------
@@ -198,6 +285,10 @@ def coupling_span(case: Case) -> CouplingSpan | None:
     Returns
     -------
     calc.domain.torsion.CouplingSpan or None
+        The candidates' stiffnesses and inertias with the drive's and the load's inertia and
+        ``2 f_er``. None where the case has no coupling there, or gives no motor inertia, load
+        inertia or excitation frequency, or no candidate has a stiffness and an inertia (a line
+        shaft's stiffness needs its length: line shafts are left out).
     """
     given = SECTION.inputs(case)
     if given is None:
@@ -206,7 +297,8 @@ def coupling_span(case: Case) -> CouplingSpan | None:
     if given.side != "input" or not given.has("excitation_frequency") or drive is None or case.load_inertia is None:
         return None
     catalog, wanted = given.catalog, given.type
-    known = ~np.isnan(catalog["C_T"].magnitude) & ~np.isnan(catalog["J"].magnitude) & (catalog.text["type"] != "line-shaft")
+    known = (~np.isnan(catalog["C_T"].magnitude) & ~np.isnan(catalog["J"].magnitude)
+             & (catalog.text["type"] != "line-shaft"))
     if not known.any():
         return None
     rows = catalog.rows(known)
@@ -227,14 +319,33 @@ def _drive_train(case: Case, side: str | None, inputs: dict, gearbox) -> tuple[D
     gearbox's ``C_t21``, the coupling, the load as the section gives it. A member the case does not
     give is named in ``missing`` and left out (the gearbox then counts as rigid), so the chain
     still has the coupling's two sides. Without the inertias of the coupling's two sides (a partial
-    case) there is no chain: the resonance checks are then not made (:func:`select_coupling`)."""
+    case) there is no chain: the resonance checks are then not made (:func:`select_coupling`).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    side : str or None
+        Where the coupling sits (``coupling.side``).
+    inputs : dict
+        The coupling's inputs as evaluated (:attr:`CouplingCase.inputs`).
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None where the case has no gearbox.
+
+    Returns
+    -------
+    tuple
+        (:class:`calc.domain.coupling.DriveTrain` or None, (title, :class:`calc.core.formula.Step`)
+        of each member referred to the coupling's shaft).
+    """
     if inputs["drive_inertia"] is None or inputs["load_inertia"] is None:
         return None, ()
     two_mass = (TrainMember("motor", inputs["drive_inertia"]),), (TrainMember("load", inputs["load_inertia"]),)
     if gearbox is None:
         return DriveTrain(*two_mass), ()
     if side is None:
-        return DriveTrain(*two_mass, missing=("coupling.side (where the coupling sits: input or output of the gearbox)",)), ()
+        side_missing = ("coupling.side (where the coupling sits: input or output of the gearbox)",)
+        return DriveTrain(*two_mass, missing=side_missing), ()
     selection = gearbox.selection
     row = selection.order[0]
     part = str(selection.catalog.parts[row])
@@ -251,7 +362,8 @@ def _drive_train(case: Case, side: str | None, inputs: dict, gearbox) -> tuple[D
     if missing:
         return DriveTrain(*two_mass, missing=tuple(missing), shaft=shaft), ()
     # A gearbox that is not selected stands in for the one the case will get: its modes inform.
-    stand_in = () if selection.selected == part else (f"a selected gearbox ({part}, the best-ranked, stands in: none is selected)",)
+    stand_in = (() if selection.selected == part
+                else (f"a selected gearbox ({part}, the best-ranked, stands in: none is selected)",))
     if side == "input":
         j_l = load_at_input.step(J_L=given, i=i)
         c_g = gearbox_at_input.step(C_t21=C_t21, i=i)
@@ -267,14 +379,28 @@ def _drive_train(case: Case, side: str | None, inputs: dict, gearbox) -> tuple[D
 
 
 def _from_the_case(case: Case, gearbox) -> tuple[dict, dict]:
-    """What a coupling between motor and gearbox can take from the rest of the case (and its
-    ``gearbox`` result, None without one), by key:
-    ``(quantity, sentence)``, and the calculations among them, by key: ``(title, Step)``. ``load_inertia`` is the load reflected to the input plus the gearbox's
-    J_1 (E8), ``speed`` the highest input speed ``n_2max · i``, ``accel_torque`` the motor's peak
-    torque and ``drive_inertia`` the motor's inertia. A key given in the section is used as given.
-    Where the case does not give what ``accel_torque``, ``drive_inertia`` or ``load_inertia`` needs,
-    the key holds ``(None, what is missing)``: the checks that need it are not made, naming it
-    (the contract's partial cases)."""
+    """What a coupling between motor and gearbox can take from the rest of the case.
+
+    ``load_inertia`` is the load reflected to the input plus the gearbox's J_1 (E8), ``speed`` the
+    highest input speed ``n_2max · i``, ``accel_torque`` the motor's peak torque and
+    ``drive_inertia`` the motor's inertia. A key given in the section is used as given. Where the
+    case does not give what ``accel_torque``, ``drive_inertia`` or ``load_inertia`` needs, the key
+    holds ``(None, what is missing)``: the checks that need it are not made, naming it (the
+    contract's partial cases).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with the motor it is checked with.
+    gearbox : calc.sections.gearbox.GearboxResult or None
+        The gearbox section's result; None without one.
+
+    Returns
+    -------
+    tuple of dict
+        By key ``(quantity, sentence)``, and the calculations among them, by key
+        ``(title, Step)``.
+    """
     out = {
         "accel_torque": (None, "motor.peak_torque (or coupling.accel_torque)"),
         "drive_inertia": (None, "motor.inertia (or coupling.drive_inertia)"),
@@ -282,9 +408,11 @@ def _from_the_case(case: Case, gearbox) -> tuple[dict, dict]:
     }
     steps = {}
     if case.motor_peak_torque is not None:
-        out["accel_torque"] = (case.motor_peak_torque, f"accel_torque M_a = motor.peak_torque = {fmt(case.motor_peak_torque, 'N*m')}")
+        out["accel_torque"] = (case.motor_peak_torque,
+                               f"accel_torque M_a = motor.peak_torque = {fmt(case.motor_peak_torque, 'N*m')}")
     if case.motor_inertia is not None:
-        out["drive_inertia"] = (case.motor_inertia, f"drive_inertia J_drive = motor.inertia = {fmt(case.motor_inertia, 'kg*cm**2')}")
+        out["drive_inertia"] = (case.motor_inertia,
+                                f"drive_inertia J_drive = motor.inertia = {fmt(case.motor_inertia, 'kg*cm**2')}")
     if gearbox is None:
         return out, steps
     selection = gearbox.selection
@@ -292,12 +420,14 @@ def _from_the_case(case: Case, gearbox) -> tuple[dict, dict]:
     part = str(selection.catalog.parts[row])
     i = selection.catalog["ratio"][row]
     speed = n_1(n_2=case.profile.n_2max, i=i)
-    out["speed"] = (speed, f"speed = n_2max · i = {fmt(case.profile.n_2max, 'rpm')} · {sig(i.m_as(''))} = {fmt(speed, 'rpm')}")
+    out["speed"] = (speed, f"speed = n_2max · i = {fmt(case.profile.n_2max, 'rpm')} · {sig(i.m_as(''))} = "
+                           f"{fmt(speed, 'rpm')}")
     J_1, hub = selection.J_1[row], selection.J_1_hub[row]
     if case.load_inertia is None:
         out["load_inertia"] = (None, "load.inertia (or the mechanism's), or coupling.load_inertia")
     elif np.isnan(J_1.magnitude):
-        out["load_inertia"] = (None, f"the gearbox's J_1, which {selection.catalog.catalog_of(row)} does not give for {part} (or coupling.load_inertia)")
+        out["load_inertia"] = (None, f"the gearbox's J_1, which {selection.catalog.catalog_of(row)} does not give "
+                                     f"for {part} (or coupling.load_inertia)")
     else:
         step = J_load_at_input.step(J_L=case.load_inertia, i=i, J_1=J_1)
         J = step.result
@@ -325,6 +455,7 @@ def coupling_selection(cc: CouplingCase, where: str) -> CouplingSelection:
     Returns
     -------
     calc.domain.coupling.CouplingSelection
+        The candidates checked and ranked, with the drive train's modes.
     """
     return select_coupling(cc.catalog, shaft_1=cc.bores[0], shaft_2=cc.bores[1], drive_train=cc.drive_train,
                            where=where, sources=cc.missing, **cc.inputs)
@@ -332,20 +463,49 @@ def coupling_selection(cc: CouplingCase, where: str) -> CouplingSelection:
 
 @dataclass(frozen=True)
 class Torsion:
-    """The drive train's torsional modes (:mod:`calc.domain.torsion`) with the best-ranked coupling: its
-    masses and springs referred to ``shaft``, drive to load, the natural frequencies lowest first
-    without the rigid-body mode, and the check of the first against 2 f_er."""
+    """The drive train's torsional modes (:mod:`calc.domain.torsion`) with the best-ranked coupling:
+    its masses and springs referred to ``shaft``, drive to load, the natural frequencies lowest
+    first without the rigid-body mode, and the check of the first against 2 f_er.
+
+    Parameters
+    ----------
+    part : str
+        The best-ranked coupling.
+    shaft : str
+        The shaft the members are referred to (``"the gearbox input"``).
+    complete : bool
+        Whether the chain holds every member (else some are named in ``missing``).
+    missing : list of str
+        The members the case does not give, left out.
+    masses : list of tuple
+        (members, J: :class:`calc.core.units.Value` [kg*cm**2]) of each mass, drive to load.
+    springs : list of tuple
+        (member, C: :class:`calc.core.units.Value` [N*m/rad]) of each spring, one fewer than the
+        masses.
+    natural_frequencies : list of calc.core.units.Value
+        The natural frequencies [Hz], lowest first, the rigid-body mode left out.
+    checks : list of calc.core.checks.Check
+        The check of the first natural frequency against 2 f_er.
+    """
 
     part: str
     shaft: str
     complete: bool
     missing: list
-    masses: list  # (members, J: Value)
-    springs: list  # (member, C: Value), one fewer than the masses
-    natural_frequencies: list  # Value
-    checks: list  # calc.core.checks.Check
+    masses: list
+    springs: list
+    natural_frequencies: list
+    checks: list
 
     def to_json(self) -> dict:
+        """The drive train as the JSON contract writes it (``coupling.torsion``).
+
+        Returns
+        -------
+        dict
+            Part, shaft, completeness, the members missing, masses, springs, natural frequencies
+            and checks.
+        """
         return {
             "part": self.part,
             "shaft": self.shaft,
@@ -358,9 +518,16 @@ class Torsion:
         }
 
     def lines(self) -> list[str]:
-        """The chain and its modes as lines of the text summary."""
+        """The chain and its modes as lines of the text summary.
+
+        Returns
+        -------
+        list of str
+            The chain, drive to load; its natural frequencies; the check of the first.
+        """
         chain = " | ".join([f"{name} {J}" for name, J in self.masses[:1]]
-                           + [f"{spring} {C} | {name} {J}" for (spring, C), (name, J) in zip(self.springs, self.masses[1:])])
+                           + [f"{spring} {C} | {name} {J}"
+                              for (spring, C), (name, J) in zip(self.springs, self.masses[1:])])
         return [
             f"Drive train with {self.part}, at {self.shaft}{'' if self.complete else ' (incomplete)'}: {chain}",
             f"  natural frequencies {', '.join(map(str, self.natural_frequencies))} (rigid-body mode left out)",
@@ -370,7 +537,25 @@ class Torsion:
 
 @dataclass(frozen=True)
 class BoreResult:
-    """A shaft of the coupling as written and as its fit gives it (ISO 286)."""
+    """A shaft of the coupling as written and as its fit gives it (ISO 286).
+
+    Parameters
+    ----------
+    key : str
+        Its key in ``[coupling]`` (``"shaft_1"``).
+    text : str
+        As written.
+    nominal : calc.core.units.Value
+        The nominal diameter [mm].
+    tolerance : str or None
+        The ISO 286 class (``"k6"``) or the limits as written; None where the text gives none.
+    limits : str
+        The limits of size as text.
+    lower, upper : calc.core.units.Value or None
+        The lower and upper limits of size [mm]; None without a tolerance.
+    keyway : calc.core.units.Value or None
+        The keyway's width [mm]; None without one.
+    """
 
     key: str
     text: str
@@ -382,18 +567,35 @@ class BoreResult:
     keyway: Value | None
 
     def to_json(self) -> dict:
-        return {"key": self.key, "text": self.text, "nominal": self.nominal.to_json(), "tolerance": self.tolerance, "limits": self.limits,
-                "lower": json_of(self.lower), "upper": json_of(self.upper), "keyway": json_of(self.keyway)}
+        """The shaft as the JSON contract writes it (an entry of ``coupling.bores``).
+
+        Returns
+        -------
+        dict
+            Key, text, nominal diameter, tolerance, limits and keyway.
+        """
+        return {"key": self.key, "text": self.text, "nominal": self.nominal.to_json(), "tolerance": self.tolerance,
+                "limits": self.limits, "lower": json_of(self.lower), "upper": json_of(self.upper),
+                "keyway": json_of(self.keyway)}
 
 
 #: How the coupling candidates are ranked (:func:`calc.core.checks.rank`).
-RANKING = "passing first; published rows before illustrative ones; then smallest rated torque T_KN; then lowest worst utilization"
+RANKING = ("passing first; published rows before illustrative ones; then smallest rated torque T_KN; "
+           "then lowest worst utilization")
 
 
 @dataclass
 class CouplingResult(Result):
     """The coupling section as read, its candidates checked and ranked, and the part chosen; the
-    figures every output prints are computed once here."""
+    figures every output prints are computed once here.
+
+    Parameters
+    ----------
+    inputs : CouplingCase
+        The ``[coupling]`` section as evaluated.
+    selection : calc.domain.coupling.CouplingSelection
+        Its candidates checked and ranked (:func:`coupling_selection`).
+    """
 
     inputs: CouplingCase
     selection: CouplingSelection
@@ -401,10 +603,11 @@ class CouplingResult(Result):
 
     @functools.cached_property
     def notes(self) -> list[str]:
-        """What the case left to the package, and what it does not give."""
+        """What the case left to the package, and what it does not give (a shaft's tolerance)."""
         cc = self.inputs
         out = [f"taken from the case: {text}" for text in cc.derived] + list(self.selection.notes)
-        return out + [f"coupling.shaft_{k} gives no tolerance; state one when ordering (the source asks for shaft sizes and tolerances)"
+        return out + [f"coupling.shaft_{k} gives no tolerance; state one when ordering "
+                      "(the source asks for shaft sizes and tolerances)"
                       for k, bore in enumerate(cc.bores, start=1) if bore.tolerance is None]
 
     @functools.cached_property
@@ -414,23 +617,28 @@ class CouplingResult(Result):
         if sel.selected is None:
             return None
         t = sel.row_type(int(sel.order[0]))
-        return "; ".join(order_lines(sel.selected, t, cc.bores, cc.inputs["disengagement_torque"] if t == "safety" else None,
+        return "; ".join(order_lines(sel.selected, t, cc.bores,
+                                     cc.inputs["disengagement_torque"] if t == "safety" else None,
                                      cc.inputs["shaft_distance"] if t == "line-shaft" else None))
 
     @property
     def M_N(self) -> Value:
+        """The nominal torque the coupling must carry [N*m] (E8)."""
         return Value.of(self.selection.M_N, "N*m")
 
     @property
     def T_op(self) -> Value:
+        """The operating torque [N*m]."""
         return Value.of(self.selection.T_op, "N*m")
 
     @property
     def service_factor(self) -> float:
+        """The load (shock) factor S_A [1] (E8)."""
         return float(self.inputs.inputs["service_factor"].m_as(""))
 
     @property
     def temperature(self) -> Value | None:
+        """The operating temperature [degC]; None where the case gives none."""
         t = self.inputs.inputs["temperature"]
         return None if t is None else Value.of(t, "degC")
 
@@ -443,28 +651,34 @@ class CouplingResult(Result):
 
     @property
     def temperature_factors(self) -> str:
+        """The source of the table of K_ϑ (E9)."""
         return self.inputs.inputs["temperature_factors"].source
 
     @property
     def start_factors(self) -> str | None:
+        """The source of the table of S_z; None where the case names none."""
         return None if "start_factors" not in self.inputs.inputs else self.inputs.inputs["start_factors"].source
 
     @property
     def starts_per_hour(self) -> Value | None:
+        """The starts per hour the start factor is read at [1/hour]; None without a table of S_z."""
         z = self.inputs.inputs["starts_per_hour"]
         return None if z is None else Value.of(z, "1/hour")
 
     @property
     def f_e_min(self) -> Value:
+        """The lowest natural frequency allowed, 2 f_er [Hz] (E7)."""
         return Value.of(f_e_min(f_er=self.inputs.inputs["excitation_frequency"]), "Hz")
 
     @property
     def bores(self) -> list[BoreResult]:
+        """The coupling's two shafts as written and as their fits give them."""
         def length(q):
             return None if q is None else Value.of(q, "mm")
 
-        return [BoreResult(f"shaft_{k}", b.text, Value.of(b.nominal, "mm"), b.tolerance, b.limits_text(), length(b.lower), length(b.upper),
-                     length(b.keyway)) for k, b in enumerate(self.inputs.bores, start=1)]
+        return [BoreResult(f"shaft_{k}", b.text, Value.of(b.nominal, "mm"), b.tolerance, b.limits_text(),
+                           length(b.lower), length(b.upper), length(b.keyway))
+                for k, b in enumerate(self.inputs.bores, start=1)]
 
     @functools.cached_property
     def torsion(self) -> Torsion | None:
@@ -491,7 +705,8 @@ class CouplingResult(Result):
             return []
         row = int(sel.order[0])
         part = str(sel.catalog.parts[row])
-        m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"], S_A=x["service_factor"])
+        m_n = cp.M_N.step(M_a=x["accel_torque"], J_load=x["load_inertia"], J_drive=x["drive_inertia"],
+                          S_A=x["service_factor"])
         out = [("Nominal torque of the coupling", m_n, "compared with T_KN")]
         if sel.row_type(row) == "elastomer":
             bands = x["temperature_factors"]
@@ -521,13 +736,25 @@ class CouplingResult(Result):
                ("Load side with half the coupling", cp.J_L.step(J_load=x["load_inertia"], J_K=J), "")]
         if sel.row_type(row) == "line-shaft" and x["shaft_distance"] is not None:
             z = cp.Z.step(A=x["shaft_distance"], H=cat["H"][row])
-            out += [("Tube length", z, ""),
-                    ("Stiffness of the line shaft", cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row]), "")]
+            c_t = cp.C_T_line.step(C_B=cat["C_T"][row], Z=z.result, C_tube=cat["C_tube"][row])
+            out += [("Tube length", z, ""), ("Stiffness of the line shaft", c_t, "")]
         natural = cp.f_e.step(C_T=sel.C_T[row], J_A=sel.J_A[row], J_L_coupling=sel.J_L[row])
         return out + [("Natural frequency", natural, "compared with 2 f_er")]
 
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
-        """The ``coupling`` results of the JSON contract."""
+        """The ``coupling`` results of the JSON contract.
+
+        Parameters
+        ----------
+        candidates : int or None
+            The most candidates listed, best first (all for None).
+
+        Returns
+        -------
+        dict
+            The catalog's provenance, the torques and factors, the bores, the ranked candidates,
+            the part selected, its order line, the drive train and the notes.
+        """
         cc, sel = self.inputs, self.selection
         listed = [
             {
@@ -570,13 +797,25 @@ class CouplingResult(Result):
         }
 
     def summary_lines(self, candidates: int | None = SHOWN_CANDIDATES) -> list[str]:
-        """The coupling results as lines of the terminal summary."""
+        """The coupling results as lines of the terminal summary.
+
+        Parameters
+        ----------
+        candidates : int or None
+            The most candidates listed, best first (all for None).
+
+        Returns
+        -------
+        list of str
+            The torques and factors, the bores, each candidate listed with its checks, the part
+            selected, the drive train, the order line and the notes.
+        """
         cc, sel = self.inputs, self.selection
         table = "E9" if self.temperature_factors == TEMPERATURE_FACTORS.source else self.temperature_factors
         lines = [
             f"Coupling candidates (catalog {cc.catalog.shown_name}{', type ' + cc.type if cc.type else ''}):",
-            f"  M_N = {self.M_N} (S_A = {self.service_factor:g}, E8); temperature factor {self.temperature_factor:g} ({table}); "
-            f"2 f_er = {self.f_e_min} (E7)",
+            f"  M_N = {self.M_N} (S_A = {self.service_factor:g}, E8); "
+            f"temperature factor {self.temperature_factor:g} ({table}); 2 f_er = {self.f_e_min} (E7)",
         ]
         if sel.start_factor is not None:
             lines.append(f"  start factor S_z = {sel.start_factor:g} at {self.starts_per_hour} ({self.start_factors})")
@@ -586,7 +825,8 @@ class CouplingResult(Result):
         for c in listed:
             verdict = {True: "PASS", False: "FAIL", None: "OPEN"}[c.passes]
             where = f" [{c.catalog}]" if several else ""
-            lines.append(f"  {verdict}  {c.part}{where} ({c.type}{', illustrative' if c.illustrative else ''}), f_e = {c.f_e}")
+            illustrative = ", illustrative" if c.illustrative else ""
+            lines.append(f"  {verdict}  {c.part}{where} ({c.type}{illustrative}), f_e = {c.f_e}")
             lines += [f"        {check_line(k, 20)}" for k in c.checks]
             if c.unclear:
                 lines.append(f"        doubtful figures: {c.unclear}")
@@ -609,12 +849,35 @@ class CouplingResult(Result):
         return "none passes"
 
     def governing(self) -> Governing:
+        """The governing checks of the best-ranked coupling.
+
+        Returns
+        -------
+        calc.sections.common.Governing
+            Its governing checks, chosen where a coupling is chosen
+            (:func:`calc.sections.common.selection_governing`).
+        """
         return selection_governing(NAME, self.selection)
 
     def ranked(self) -> CouplingSelection:
+        """The candidates as ranked.
+
+        Returns
+        -------
+        calc.domain.coupling.CouplingSelection
+            The selection itself.
+        """
         return self.selection
 
     def verdict(self) -> Verdict:
+        """The verdict of the coupling selection.
+
+        Returns
+        -------
+        calc.sections.common.Verdict
+            Passes where a coupling is chosen; else why not
+            (:func:`calc.sections.common.selection_verdict`).
+        """
         return selection_verdict(self.selection, "coupling", "its checks")
 
 
@@ -627,9 +890,36 @@ class CouplingSection(Section):
     REQUIRES = ("drive", "gearbox")
 
     def read_inputs(self, case: Case) -> CouplingInputs:
+        """Read ``[coupling]`` with the case (:func:`read_inputs`).
+
+        Parameters
+        ----------
+        case : calc.sections.case.Case
+            The case being read.
+
+        Returns
+        -------
+        CouplingInputs
+            The table as read.
+        """
         return read_inputs(case)
 
     def evaluate(self, case: Case, earlier) -> CouplingResult:
+        """Check and rank the candidates with the motor the case is checked with and the gearbox.
+
+        Parameters
+        ----------
+        case : calc.sections.case.Case
+            The case as read (the drive's case, with its motor, is the one checked).
+        earlier : dict
+            The results of the sections evaluated before, by name: ``drive`` and, where the case
+            has one, ``gearbox``.
+
+        Returns
+        -------
+        CouplingResult
+            The candidates checked and ranked, and the part chosen.
+        """
         case = earlier["drive"].case
         cc = coupling_case(case, self.inputs(case), earlier.get("gearbox"))
         return CouplingResult(cc, coupling_selection(cc, f"{case.path}: coupling"))
