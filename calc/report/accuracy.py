@@ -115,7 +115,7 @@ class AccuracyRenderer(TableRenderer):
         out = []
         spec = None if r is None else r.inputs
         if spec is not None:
-            out.append((stiffness_chain_figure(spec.chain, spec.applied_torque),
+            out.append((stiffness_chain_figure(r.shown),
                         "Stiffness chain referred to the output (E11): each member's share of the twist."))
             for name, (path, analysis) in spec.loops.items():
                 # a relative display path lies in the checkout (an installed calc shows measurements absolute)

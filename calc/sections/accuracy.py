@@ -16,7 +16,7 @@ from .case import Case, Declared, Key, Table
 from ..data.catalog import display_path, load_catalog, load_catalogs, resolve
 from ..core.checks import CheckArray
 from ..core.errors import CalcError
-from ..core.units import Q_, Value, fmt, parse_quantity, sig
+from ..core.units import Q_, Value, as_kind, fmt, parse_quantity, sig
 from ..data.measurement import measurement_path
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
 from ..domain.coupling import SCHEMA as COUPLING_SCHEMA
@@ -716,7 +716,67 @@ class AccuracyValues:
     positioning: MeasuredPositioning | None
 
 
-def _member(spec: AccuracyCase, c: Chain, k: int, share: float, twist) -> Member:
+@dataclass(frozen=True)
+class ChainValues:
+    """The chain referred to the output as the outputs print it: what the stiffness-chain figures draw
+    (:func:`calc.figures.accuracy_plots.stiffness_chain_bars`).
+
+    Parameters
+    ----------
+    applied_torque : Value
+        The torque at the output [N·m].
+    ratio : float or None
+        The gearbox ratio the input side is referred through; None without one.
+    C_total : Value
+        The chain's stiffness at the output [N·m/arcmin]; no value where every member's is unknown.
+    members : list of Member
+        The members, drive to load.
+    """
+
+    applied_torque: Value
+    ratio: float | None
+    C_total: Value
+    members: list
+
+
+def chain_values(chain: Chain, applied_torque, loops: dict | None = None, traces: dict | None = None) -> ChainValues:
+    """The chain's members referred to the output at ``applied_torque`` (E11), as the accuracy result
+    records them; a member of unknown stiffness (infinite: reckoned rigid) has no stiffness or twist.
+
+    Parameters
+    ----------
+    chain : calc.domain.stiffness.Chain
+        The members, drive to load; a member with a stiffness curve stands in with its secant at the torque.
+    applied_torque : pint.Quantity [N·m]
+        The torque at the output.
+    loops : dict, optional
+        Member name -> (file, :class:`calc.domain.hysteresis.LoopAnalysis`) of its measured loop.
+    traces : dict, optional
+        Member name -> (file, :class:`calc.domain.transmission.TransmissionAnalysis`) of its measured trace.
+
+    Returns
+    -------
+    ChainValues
+        Applied torque, ratio, ``C_total`` and the members.
+
+    Examples
+    --------
+    >>> from calc.domain.stiffness import Component
+    >>> c = Chain((Component("coupling", "output", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin")),
+    ...            Component("gearbox", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"))))
+    >>> v = chain_values(c, Q_(20, "N*m"))
+    >>> str(v.C_total), [str(m.twist_at_applied_torque) for m in v.members]
+    ('0.2026 N·m/arcmin', ['83.33 arcmin', '15.38 arcmin'])
+    """
+    c = chain.at_torque(as_kind(applied_torque, "torque", "applied_torque"))
+    twist = c.twist(applied_torque)
+    members = [_member(c, k, share, twist[k], loops or {}, traces or {}) for k, share in enumerate(c.compliance_shares)]
+    return ChainValues(Value.of(applied_torque, "N*m"), None if c.ratio is None else number(c.ratio.m_as("")),
+                       _known(c.stiffness, "N*m/arcmin", np.isinf(c.stiffness.magnitude)), members)
+
+
+def _member(c: Chain, k: int, share: float, twist, loops: dict, traces: dict) -> Member:
+    """Member ``k`` of the chain ``c`` at the output, with its measured loop and trace as analysed."""
     comp = c.components[k]
     ta = c.transmission_accuracy_at_output[k]
     curve = loop = trace = None
@@ -724,12 +784,12 @@ def _member(spec: AccuracyCase, c: Chain, k: int, share: float, twist) -> Member
         sc = comp.stiffness_curve
         curve = {"T1": Value.of(sc.T_1, "N*m"), "T2": Value.of(sc.T_2, "N*m"),
                  **{key: Value.of(getattr(sc, f"K_{key[1]}"), "N*m/rad") for key in ("K1", "K2", "K3")}}
-    if comp.name in spec.loops:
-        path, m = spec.loops[comp.name]
+    if comp.name in loops:
+        path, m = loops[comp.name]
         loop = MeasuredLoop(path, Value.of(m.stiffness_positive, "N*m/arcmin"), Value.of(m.stiffness_negative, "N*m/arcmin"),
                             Value.of(m.backlash, "arcmin"), Value.of(m.lost_motion, "arcmin"))
-    if comp.name in spec.traces:
-        path, t = spec.traces[comp.name]
+    if comp.name in traces:
+        path, t = traces[comp.name]
         trace = MeasuredTrace(path, Value.of(t.accuracy, "arcsec"), t.governing)
     rigid = np.isinf(comp.stiffness.magnitude)  # its stiffness unknown (spec.unknown_chain): no stiffness, no twist to show
     return Member(comp.name, comp.side, comp.source, _known(c.stiffness_at_output[k], "N*m/arcmin", rigid), Value.of(c.backlash_at_output[k], "arcmin"),
@@ -744,8 +804,7 @@ def _known(q, unit: str, unknown: bool) -> Value:
 def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
     """The values of the chain's accuracy in the units every output shows them in."""
     c = a.chain
-    twist = c.twist(a.applied_torque)
-    members = [_member(spec, c, k, share, twist[k]) for k, share in enumerate(c.compliance_shares)]
+    chain = chain_values(c, a.applied_torque, spec.loops, spec.traces)
     arcs, check_arcs = {}, {}
     if spec.radius is not None:
         r = spec.radius
@@ -759,14 +818,14 @@ def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
     positioning = None if p is None else MeasuredPositioning(display_path(p.source), p.targets, len(p.error.magnitude),
                                                              Value.of(p.accuracy, "arcmin"), Value.of(p.repeatability, "arcmin"))
     return AccuracyValues(
-        applied_torque=Value.of(a.applied_torque, "N*m"), ratio=None if c.ratio is None else number(c.ratio.m_as("")),
+        applied_torque=chain.applied_torque, ratio=chain.ratio,
         nominal_torque=None if a.nominal_torque is None else Value.of(a.nominal_torque, "N*m"),
         nominal_torque_from="accuracy.nominal_torque" if spec.nominal_torque is not None else c.nominal_torque_from,
-        C_total=_known(c.stiffness, "N*m/arcmin", np.isinf(c.stiffness.magnitude)), C_total_is_secant=c.has_curves, backlash=Value.of(c.backlash, "arcmin"),
+        C_total=chain.C_total, C_total_is_secant=c.has_curves, backlash=Value.of(c.backlash, "arcmin"),
         transmission_accuracy=Value.of(c.transmission_accuracy, "arcsec"), transmission_accuracy_from=c.transmission_accuracy_from,
         lost_motion=Value.of(a.lost_motion, "arcmin"), positioning_rule=a.rule.text, positioning_accuracy=Value.of(a.positioning_accuracy, "arcmin"),
         unknown=list(spec.unknown), unknown_chain=list(spec.unknown_chain), repeatability=Value.of(a.repeatability, "arcmin"), repeatability_is_bound=a.repeatability_is_bound,
-        members=members, radius=None if spec.radius is None else Value.of(spec.radius, "mm"), arcs=arcs, check_arcs=check_arcs,
+        members=chain.members, radius=None if spec.radius is None else Value.of(spec.radius, "mm"), arcs=arcs, check_arcs=check_arcs,
         positioning=positioning,
     )
 
