@@ -30,7 +30,14 @@ COVERED = ("core", "data", "domain", "figures")
 #: the package's ``__init__``).
 COVERED_MODULES = ("calc.review", "calc.review.client", "calc.review.edit", "calc.review.figures",
                    "calc.review.inputs", "calc.review.keep", "calc.review.page", "calc.review.panel",
-                   "calc.review.serve", "calc.review.state", "calc.review.variants")
+                   "calc.review.serve", "calc.review.state", "calc.review.variants",
+                   "calc.review.view",
+                   "calc.report.accuracy",
+                   "calc.report.duty",
+                   "calc.report.summary",
+                   "calc.sections.accuracy",
+                   "calc.sections.ratios",
+                   )
 #: Every layer, for the report of shares.
 LAYERS = ("core", "data", "domain", "figures", "sections", "report", "review")
 #: Generated code, not written by hand.

@@ -18,7 +18,14 @@ COVERED = ("core", "data", "domain", "figures")
 #: The modules held to the sizes on their own, their layer not yet whole (paths under calc).
 COVERED_MODULES = ("review/__init__.py", "review/client.py", "review/edit.py", "review/figures.py", "review/inputs.py",
                    "review/keep.py", "review/page.py", "review/panel.py", "review/serve.py", "review/state.py",
-                   "review/variants.py")
+                   "review/variants.py",
+                   "review/view.py",
+                   "report/accuracy.py",
+                   "report/duty.py",
+                   "report/summary.py",
+                   "sections/accuracy.py",
+                   "sections/ratios.py",
+                   )
 #: Generated code, not written by hand.
 SKIPPED = {"core/formula_numeric.py"}
 MAX_FUNCTION_LINES = 80
