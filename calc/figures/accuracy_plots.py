@@ -267,10 +267,10 @@ def stiffness_chain_figure(accuracy):
     >>> from calc import Q_
     >>> from calc.domain.stiffness import Chain, Component
     >>> from calc.sections.accuracy import chain_values
-    >>> c = Chain((Component("coupling", "output", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin")),
-    ...            Component("gearbox", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"))))
-    >>> stiffness_chain_figure(chain_values(c, Q_(20, "N*m"))).axes[0].get_xlabel()
-    'share of the twist at the output [%]'
+    >>> gearbox = Chain((Component("gearbox", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin")),))
+    >>> ax = stiffness_chain_figure(chain_values(gearbox, Q_(20, "N*m"))).axes[0]
+    >>> ax.get_xlabel(), [t.get_text() for t in ax.texts]
+    ('share of the twist at the output [%]', ['100 %: 15.4 arcmin, C = 1.3 N·m/arcmin'])
     """
     from matplotlib.figure import Figure
     from matplotlib.patches import Patch
