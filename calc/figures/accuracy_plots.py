@@ -9,6 +9,8 @@ inside, and is deterministic (fixed sizes and colours; random pictures take a se
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from ..domain.accuracy import PositioningScatter, low_torque_limit, lost_motion, positioning_accuracy
@@ -135,19 +137,125 @@ def hysteresis_figure(loop: Loop, analysis: LoopAnalysis):
     return fig
 
 
-def stiffness_chain_figure(chain: Chain, applied_torque):
-    """Each component's share of the twist at the output, as horizontal bars (E11).
+@dataclass(frozen=True)
+class ChainBar:
+    """One member's bar of the stiffness chain.
 
-    Every component carries the same torque, so its share of the twist is its share of the
-    compliance ``1/C``; each bar is labelled with its twist under ``applied_torque`` and its
+    Parameters
+    ----------
+    name : str
+        The member's name.
+    side : str
+        ``input`` or ``output`` side of the gearbox.
+    share : float
+        Its share of the chain's twist at the output [%].
+    label : str
+        What the bar says: share, twist and stiffness at the output, or that its stiffness is unknown.
+    """
+
+    name: str
+    side: str
+    share: float
+    label: str
+
+
+@dataclass(frozen=True)
+class ChainBars:
+    """The stiffness-chain figure's data, as the PDF's figure and the review's SVG both draw it.
+
+    Parameters
+    ----------
+    torque : str
+        The applied torque at the output, with its unit.
+    relation : str
+        ``≤`` where a member's stiffness is unknown (reckoned rigid: the chain's is an upper bound), else ``=``.
+    stiffness : str
+        ``C_total`` at the output, with its unit.
+    twist : str
+        The chain's twist at the applied torque [arcmin], without its unit.
+    ratio : str or None
+        The gearbox ratio the input side is referred through; None without one.
+    bars : tuple of ChainBar
+        The members, drive to load.
+    """
+
+    torque: str
+    relation: str
+    stiffness: str
+    twist: str
+    ratio: str | None
+    bars: tuple
+
+    def title(self, c_total: str, ratio: bool = True) -> str:
+        """The figure's title.
+
+        Parameters
+        ----------
+        c_total : str
+            The symbol of the chain's stiffness as the drawing writes it (mathtext or plain).
+        ratio : bool
+            Whether to say how the input side is referred to the output.
+
+        Returns
+        -------
+        str
+            ``Stiffness chain at …: C_total = …, twist … arcmin (E11…)``.
+        """
+        referred = f", input side × i² with i = {self.ratio}" if ratio and self.ratio is not None else ""
+        return (f"Stiffness chain at {self.torque}: {c_total} {self.relation} {self.stiffness}, "
+                f"twist {self.twist} arcmin (E11{referred})")
+
+
+def stiffness_chain_bars(accuracy) -> ChainBars:
+    """The stiffness-chain figure's data from the chain's recorded values (E11): each member's share
+    of the compliance ``1/C`` (every member carries the same torque, so its share of the twist), its
+    twist and its stiffness referred to the output.
+
+    Parameters
+    ----------
+    accuracy : calc.sections.accuracy.AccuracyValues or calc.sections.accuracy.ChainValues
+        The chain's values as recorded: ``applied_torque`` [N·m], ``ratio``, ``C_total``
+        [N·m/arcmin] and the ``members`` with their ``share_of_compliance``,
+        ``twist_at_applied_torque`` [arcmin] and ``stiffness_at_output`` [N·m/arcmin] (no value
+        where unknown).
+
+    Returns
+    -------
+    ChainBars
+        The bars, their labels and the title's values.
+
+    Examples
+    --------
+    >>> from calc import Q_
+    >>> from calc.domain.stiffness import Chain, Component
+    >>> from calc.sections.accuracy import chain_values
+    >>> c = Chain((Component("coupling", "output", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin")),
+    ...            Component("gearbox", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"))))
+    >>> [b.label for b in stiffness_chain_bars(chain_values(c, Q_(20, "N*m"))).bars]
+    ['84.4 %: 83.3 arcmin, C = 0.24 N·m/arcmin', '15.6 %: 15.4 arcmin, C = 1.3 N·m/arcmin']
+    """
+    members = accuracy.members
+    twist = np.array([m.twist_at_applied_torque.quantity.m_as("arcmin") for m in members])
+    bars = tuple(
+        ChainBar(m.name, m.side, 100 * m.share_of_compliance,
+                 f"{sig(100 * m.share_of_compliance, 3)} %: {sig(t, 3)} arcmin, C = {m.stiffness_at_output}"
+                 if m.stiffness_at_output.value is not None else "C unknown: reckoned rigid, so the twist is more")
+        for m, t in zip(members, twist))
+    unknown = any(m.stiffness_at_output.value is None for m in members)
+    return ChainBars(str(accuracy.applied_torque), "≤" if unknown else "=", str(accuracy.C_total),
+                     sig(np.nansum(twist), 3), None if accuracy.ratio is None else sig(accuracy.ratio), bars)
+
+
+def stiffness_chain_figure(accuracy):
+    """Each member's share of the twist at the output, as horizontal bars (E11), drawn from
+    :func:`stiffness_chain_bars`: each bar labelled with its twist under the applied torque and its
     stiffness referred to the output.
 
     Parameters
     ----------
-    chain : Chain
-        The members, drive to load.
-    applied_torque : pint.Quantity [N·m]
-        The torque at the output.
+    accuracy : calc.sections.accuracy.AccuracyValues or calc.sections.accuracy.ChainValues
+        The chain's values as recorded (a case's :attr:`calc.sections.accuracy.AccuracyResult.shown`,
+        or :func:`calc.sections.accuracy.chain_values` of a chain).
 
     Returns
     -------
@@ -157,45 +265,30 @@ def stiffness_chain_figure(chain: Chain, applied_torque):
     Examples
     --------
     >>> from calc import Q_
-    >>> from calc.domain.stiffness import Component
-    >>> c = Chain((Component("coupling", "output", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin")),
-    ...            Component("gearbox", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin"))))
-    >>> stiffness_chain_figure(c, Q_(20, "N*m")).axes[0].get_xlabel()
-    'share of the twist at the output [%]'
+    >>> from calc.domain.stiffness import Chain, Component
+    >>> from calc.sections.accuracy import chain_values
+    >>> gearbox = Chain((Component("gearbox", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin")),))
+    >>> ax = stiffness_chain_figure(chain_values(gearbox, Q_(20, "N*m"))).axes[0]
+    >>> ax.get_xlabel(), [t.get_text() for t in ax.texts]
+    ('share of the twist at the output [%]', ['100 %: 15.4 arcmin, C = 1.3 N·m/arcmin'])
     """
     from matplotlib.figure import Figure
     from matplotlib.patches import Patch
 
-    torque = as_kind(applied_torque, "torque", "applied_torque")
-    chain = chain.at_torque(torque)  # a member with a stiffness curve at its secant (calc.domain.stiffness)
-    shares = 100 * chain.compliance_shares
-    twist = chain.twist(torque).m_as("arcmin")
-    c_out = chain.stiffness_at_output
-    names = chain.names
-    y = np.arange(len(names))[::-1]
-    fig = Figure(figsize=(8.0, 1.6 + 0.55 * len(names)), layout="constrained")
+    data = stiffness_chain_bars(accuracy)
+    bars = data.bars
+    y = np.arange(len(bars))[::-1]
+    fig = Figure(figsize=(8.0, 1.6 + 0.55 * len(bars)), layout="constrained")
     ax = fig.subplots()
-    colors = [SIDE_COLORS[c.side] for c in chain.components]
-    ax.barh(y, shares, color=colors, height=0.6, zorder=2)
-    for k in range(len(names)):
-        ax.annotate(
-            f"{sig(shares[k], 3)} %: {sig(twist[k], 3)} arcmin, C = {fmt(c_out[k], 'N*m/arcmin', 4)}"
-            if np.isfinite(c_out[k].magnitude)
-            else "C unknown: reckoned rigid, so the twist is more",
-            (shares[k], y[k]), xytext=(4, 0), textcoords="offset points", va="center", fontsize=8,
-        )
-    ax.set_yticks(y, [f"{n}\n({c.side} side)" for n, c in zip(names, chain.components)], fontsize=8)
+    ax.barh(y, [b.share for b in bars], color=[SIDE_COLORS[b.side] for b in bars], height=0.6, zorder=2)
+    for b, at in zip(bars, y):
+        ax.annotate(b.label, (b.share, at), xytext=(4, 0), textcoords="offset points", va="center", fontsize=8)
+    ax.set_yticks(y, [f"{b.name}\n({b.side} side)" for b in bars], fontsize=8)
     ax.set_xlim(0, 160)
     ax.set_xticks(np.arange(0, 101, 20))
     ax.set_xlabel("share of the twist at the output [%]")
     ax.grid(True, axis="x", color="#dddddd", linewidth=0.6, zorder=0)
-    ratio = "" if chain.ratio is None else f", input side × i² with i = {sig(chain.ratio.m_as(''))}"
-    ax.set_title(
-        f"Stiffness chain at {fmt(torque, 'N*m')}: {symbol('C_total')} "
-        f"{'≤' if np.isinf(c_out.magnitude).any() else '='} {fmt(chain.stiffness, 'N*m/arcmin', 4)}, "
-        f"twist {sig(twist.sum(), 3)} arcmin (E11{ratio})",
-        fontsize=9,
-    )
+    ax.set_title(data.title(symbol("C_total")), fontsize=9)
     fig.legend(handles=[Patch(color=v, label=f"{k} side of the gearbox") for k, v in SIDE_COLORS.items()],
                loc="outside lower center", ncols=2, fontsize=8, frameon=False)
     return fig

@@ -55,7 +55,18 @@ class AccuracyRenderer(TableRenderer):
 
     def results(self, report) -> list[str]:
         """The chain's stiffness, backlash, transmission accuracy, lost motion, positioning accuracy
-        and repeatability, and each member referred to the output."""
+        and repeatability, and each member referred to the output.
+
+        Parameters
+        ----------
+        report : calc.report.Report
+            The case's report.
+
+        Returns
+        -------
+        list of str
+            LaTeX: the results' table and the members' table; none without ``[accuracy]``.
+        """
         r = self.result(report)
         if r is None:
             return []
@@ -115,7 +126,7 @@ class AccuracyRenderer(TableRenderer):
         out = []
         spec = None if r is None else r.inputs
         if spec is not None:
-            out.append((stiffness_chain_figure(spec.chain, spec.applied_torque),
+            out.append((stiffness_chain_figure(r.shown),
                         "Stiffness chain referred to the output (E11): each member's share of the twist."))
             for name, (path, analysis) in spec.loops.items():
                 # a relative display path lies in the checkout (an installed calc shows measurements absolute)
@@ -138,7 +149,21 @@ class AccuracyRenderer(TableRenderer):
         return out
 
     def page(self, r, view) -> str:
-        """The chain's accuracy (of ``r``, an :class:`calc.sections.accuracy.AccuracyResult`; None: none)."""
+        """The chain's accuracy on the review's page: its stiffness, lost motion, positioning accuracy
+        and repeatability, each bound marked.
+
+        Parameters
+        ----------
+        r : calc.sections.accuracy.AccuracyResult or None
+            The accuracy result; None where the case has none.
+        view : calc.report.page.View
+            What the page asks (the chain's rows do not depend on it).
+
+        Returns
+        -------
+        str
+            HTML: a heading and the table; empty without a result.
+        """
         if r is None:
             return ""
         a = r.shown

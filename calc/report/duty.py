@@ -18,8 +18,22 @@ from .symbols import html as typeset
 
 
 def shock_factor_block(zh, table=SHOCK_FACTORS) -> str:
-    """The shock factor of ``Z_h`` (a quantity) with its band, the one calc.domain.gearbox.shock_factor
-    chooses from ``table`` (E4, with its boundary tolerance; the case's ``[gearbox] shock_factors``)."""
+    """The shock factor of ``Z_h`` with its band, the one :func:`calc.domain.gearbox.shock_factor`
+    chooses from ``table`` (E4, with its boundary tolerance).
+
+    Parameters
+    ----------
+    zh : pint.Quantity [1/h]
+        The cycles per hour ``Z_h``.
+    table : calc.data.bands.BandTable
+        The shock factors by band of ``Z_h``: the case's ``[gearbox] shock_factors``, else the
+        package's.
+
+    Returns
+    -------
+    str
+        LaTeX: the factor, its band and the table's source.
+    """
     k = int(table.band(zh, "Z_h"))
     return render(
         "shock-factor.tex.j2", fs=f"{table.factors[k]:g}", band=table.text(k, latex=True),
@@ -86,8 +100,20 @@ class DutyRenderer(Renderer):
         ]
 
     def page(self, d, view) -> str:
-        """The duty values (of ``d``, :class:`calc.sections.duty.DutyResult`) in one line: mode, ED,
-        the S5 and S1 values."""
+        """The duty values in one line of the review's page: mode, ED, the S5 and S1 values.
+
+        Parameters
+        ----------
+        d : calc.sections.duty.DutyResult
+            The duty result.
+        view : calc.report.page.View
+            What the page asks (the line does not depend on it).
+
+        Returns
+        -------
+        str
+            HTML: one ``div``.
+        """
         v = d.shown
         parts = [f"<b>{escape(v.mode)}</b>", f"ED {value(v.ED)}", f"cycle {value(v.t_cycle)}",
                  f"{typeset('Z_h')} {value(v.Z_h)}", f"{typeset('f_s')} {sig(v.f_s)}",

@@ -22,8 +22,8 @@ from . import RENDERERS
 from .latex import Latex, breakable, latex_escape, prose, render, table, util
 from .provenance import PACKAGE
 
-#: The renderers of the sections whose chosen part a row names (:attr:`calc.report.common.Renderer.SUMMARY_COLUMN`),
-#: in the order of the columns.
+#: The renderers of the sections whose chosen part a row names
+#: (:attr:`calc.report.common.Renderer.SUMMARY_COLUMN`), in the order of the columns.
 PART_COLUMNS = tuple(r for r in RENDERERS if r.SUMMARY_COLUMN is not None)
 #: The columns of the CSV, units in brackets (a utilization is a fraction: 1 is the rating).
 CSV_COLUMNS = ("case file", "title", "verdict", *(r.NAME for r in PART_COLUMNS), "worst utilization [1]", "worst check",
@@ -78,6 +78,7 @@ def summary_row(report, pdf: Path | None) -> dict:
     Returns
     -------
     dict
+        The row's fields above.
     """
     sections = report.evaluated.sections if report.evaluated is not None else {}
     verdict = report.verdict
@@ -97,13 +98,40 @@ def summary_row(report, pdf: Path | None) -> dict:
 
 
 def counts(rows: list[dict]) -> dict:
-    """How many rows have each verdict, PASS, FAIL, NOT DECIDED (every word, zero counts too)."""
+    """How many rows have each verdict, PASS, FAIL, NOT DECIDED (every word, zero counts too).
+
+    Parameters
+    ----------
+    rows : list of dict
+        The cases' rows (:func:`summary_row`).
+
+    Returns
+    -------
+    dict
+        Verdict word -> how many rows have it.
+
+    Examples
+    --------
+    >>> counts([{"verdict": "PASS"}, {"verdict": "FAIL"}, {"verdict": "PASS"}])
+    {'PASS': 2, 'FAIL': 1, 'NOT DECIDED': 0}
+    """
     words = [Verdict(p).word for p in (True, False, None)]
     return {w: sum(r["verdict"] == w for r in rows) for w in words}
 
 
 def counts_text(rows: list[dict]) -> str:
-    """``2 PASS, 1 FAIL, 0 NOT DECIDED``."""
+    """The count of each verdict in words.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The cases' rows (:func:`summary_row`).
+
+    Returns
+    -------
+    str
+        ``2 PASS, 1 FAIL, 0 NOT DECIDED``.
+    """
     return ", ".join(f"{n} {w}" for w, n in counts(rows).items())
 
 
@@ -115,7 +143,19 @@ def _chosen_text(row: dict, name: str) -> str:
 
 def write_csv(rows: list[dict], path: Path) -> None:
     """The rows as CSV: a header of :data:`CSV_COLUMNS`, one line per case; the utilization a
-    number, an empty cell where there is none."""
+    number, an empty cell where there is none.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The cases' rows (:func:`summary_row`).
+    path : pathlib.Path
+        The CSV file to write (its folder is made where missing).
+
+    Returns
+    -------
+    None
+    """
     path.parent.mkdir(parents=True, exist_ok=True)
     with path.open("w", newline="", encoding="utf-8") as f:
         out = csv.writer(f)
@@ -143,14 +183,33 @@ def _verdict_cell(row: dict) -> str:
 
 def shown_path(path: str, folder: Path) -> str:
     """A path as the summary prints it: relative to the summary's folder where it lies outside
-    the project (a summary never prints where on the building machine its files were)."""
+    the project (a summary never prints where on the building machine its files were).
+
+    Parameters
+    ----------
+    path : str
+        The path as the results show it: relative to the project, or absolute outside it.
+    folder : pathlib.Path
+        The folder the summary is written to.
+
+    Returns
+    -------
+    str
+        ``path`` itself where relative, else from ``folder``.
+
+    Examples
+    --------
+    >>> shown_path("cases/a.toml", Path("/tmp/out")), shown_path("/tmp/cases/a.toml", Path("/tmp/out"))
+    ('cases/a.toml', '../cases/a.toml')
+    """
     return os.path.relpath(path, folder) if os.path.isabs(path) else path
 
 
 def _case_cell(row: dict, folder: Path) -> str:
     out = rf"{latex_escape(row['title'])}\newline\texttt{{\footnotesize {breakable(shown_path(row['case'], folder))}}}"
     worst = row["worst"]
-    if row["reason"] and (row["error"] or worst is None or worst["passes"] is not False):  # else the worst check says why
+    # the reason, unless the worst check (failing) already says why
+    if row["reason"] and (row["error"] or worst is None or worst["passes"] is not False):
         colour = "failred" if row["passes"] is False else "infogrey"
         text = row["reason"]
         if os.path.isabs(row["case"]):
@@ -179,8 +238,26 @@ def _worst_cell(row: dict) -> str:
 def summary_latex(rows: list[dict], files_read: list, built: str, commit: str, folder: Path) -> Latex:
     """The summary PDF's content: heading, the count of each verdict, the table of cases and the
     title block (each case file and catalog read, with its SHA-256; build date, package, commit).
-    ``files_read`` are the files each row's report rests on (:attr:`calc.report.Report.files`);
-    ``folder`` is where the summary is written (paths outside the project are shown from there)."""
+
+    Parameters
+    ----------
+    rows : list of dict
+        The cases' rows (:func:`summary_row`).
+    files_read : list
+        The files each row's report rests on (:attr:`calc.report.Report.files`): for each report,
+        its ``(label, path, sha256)`` triples.
+    built : str
+        When the summary is built, as its title block writes it.
+    commit : str
+        The commit of the package it is built with.
+    folder : pathlib.Path
+        Where the summary is written (paths outside the project are shown from there).
+
+    Returns
+    -------
+    calc.report.latex.Latex
+        The LaTeX of the summary's page.
+    """
     # Rows of several lines set apart.
     body = [[(r"\addlinespace[5pt]" if k else "") + _case_cell(r, folder), _verdict_cell(r),
              *(_part_cell(r, p.NAME) for p in PART_COLUMNS), _worst_cell(r), _report_link(r["report"])]
@@ -200,7 +277,8 @@ def summary_latex(rows: list[dict], files_read: list, built: str, commit: str, f
             files.setdefault(path, (label, digest))
     block = []
     for path, (label, digest) in files.items():
-        block += [[latex_escape(label), rf"\texttt{{{breakable(shown_path(path, folder))}}}"], ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
+        block += [[latex_escape(label), rf"\texttt{{{breakable(shown_path(path, folder))}}}"],
+                  ["SHA-256", rf"\texttt{{\footnotesize {digest}}}"]]
     block += [["Built", latex_escape(built)], ["Package", latex_escape(PACKAGE)],
               ["Commit", rf"\texttt{{\footnotesize {latex_escape(commit)}}}"]]
     n = counts(rows)

@@ -8,7 +8,7 @@ or applied torque), and rendering such a figure to a PNG takes 0.2 to 0.4 s, mos
 time. Here the kernel writes SVG (some 2 KB, under a millisecond) and the browser draws it: the
 same data (each segment's mean output speed and torque against time, the pauses shaded, ED and the
 mode in the title; each member's share of the twist, its twist and stiffness at the output, from
-the results), without the report figures' finer annotations.
+the results, prepared once for both drawings), without the report figures' finer annotations.
 """
 
 from __future__ import annotations
@@ -140,8 +140,9 @@ def load_cycle_svg(profile, duty=None, torque_unit: str = "N*m") -> str:
 
 def stiffness_chain_svg(accuracy) -> str:
     """Each member's share of the chain's twist at the output, as horizontal bars labelled with its
-    twist and stiffness at the output: the data of
-    :func:`calc.figures.accuracy_plots.stiffness_chain_figure`, drawn by the browser.
+    twist and stiffness at the output: the bars and labels of
+    :func:`calc.figures.accuracy_plots.stiffness_chain_figure` (both from
+    :func:`calc.figures.accuracy_plots.stiffness_chain_bars`), drawn by the browser.
 
     Parameters
     ----------
@@ -163,34 +164,28 @@ def stiffness_chain_svg(accuracy) -> str:
     >>> svg.count("<rect"), [m.name for m in a.members]
     (2, ['AKN-18', 'NPT035-10'])
     """
-    from ..figures.accuracy_plots import SIDE_COLORS  # the report figure's colours
+    from ..figures.accuracy_plots import SIDE_COLORS, stiffness_chain_bars  # the report figure's colours and data
 
-    members = accuracy.members
+    data = stiffness_chain_bars(accuracy)
     row, left, top = 30, 130, 24
-    height = top + row * len(members) + 34
+    height = top + row * len(data.bars) + 34
     scale = (WIDTH - left - 10) / 110  # 0 to 110 %
-    # a member of unknown C: none
-    twist = np.nansum([m.twist_at_applied_torque.quantity.m_as("arcmin") for m in members])
-    title = (f"Stiffness chain at {accuracy.applied_torque}: "
-             f"C_total {'≤' if accuracy.unknown_chain else '='} {accuracy.C_total}, twist {twist:.3g} arcmin (E11)")
+    title = data.title("C_total", ratio=False)
     body = [f'<text x="0" y="14" font-weight="600">{escape(title)}</text>']
     for share in range(0, 101, 20):
         x = left + scale * share
         body.append(f'<line x1="{x:.1f}" x2="{x:.1f}" y1="{top}" y2="{height - 30}" stroke="#e2e2e2"/>')
         body.append(f'<text x="{x:.1f}" y="{height - 18}" text-anchor="middle">{share}</text>')
-    for k, m in enumerate(members):
-        y = top + row * k + 5
-        share = 100 * m.share_of_compliance
-        label = (f"{share:.3g} %: {m.twist_at_applied_torque}, C = {m.stiffness_at_output}"
-                 if m.stiffness_at_output.value is not None else "C unknown: reckoned rigid, so the twist is more")
-        body += [f'<rect x="{left}" y="{y}" width="{scale * share:.1f}" height="{row - 10}" '
-                 f'fill="{SIDE_COLORS.get(m.side, "#888")}"/>',
-                 f'<text x="{left - 6}" y="{y + 9}" text-anchor="end">{escape(m.name)}</text>',
-                 f'<text x="{left - 6}" y="{y + 20}" text-anchor="end" fill="#666">({escape(m.side)} side)</text>',
+    for k, b in enumerate(data.bars):
+        y, end = top + row * k + 5, left + scale * b.share
+        body += [f'<rect x="{left}" y="{y}" width="{scale * b.share:.1f}" height="{row - 10}" '
+                 f'fill="{SIDE_COLORS.get(b.side, "#888")}"/>',
+                 f'<text x="{left - 6}" y="{y + 9}" text-anchor="end">{escape(b.name)}</text>',
+                 f'<text x="{left - 6}" y="{y + 20}" text-anchor="end" fill="#666">({escape(b.side)} side)</text>',
                  # beside a short bar, inside a long one (so it stays in the figure)
-                 f'<text x="{left + scale * share + 4:.1f}" y="{y + 14}">{escape(label)}</text>' if share < 50 else
-                 f'<text x="{left + scale * share - 4:.1f}" y="{y + 14}" text-anchor="end" '
-                 f'fill="#fff">{escape(label)}</text>']
+                 f'<text x="{end + 4:.1f}" y="{y + 14}">{escape(b.label)}</text>' if b.share < 50 else
+                 f'<text x="{end - 4:.1f}" y="{y + 14}" text-anchor="end" '
+                 f'fill="#fff">{escape(b.label)}</text>']
     body.append(f'<text x="{left}" y="{height - 4}">'
                 "share of the twist at the output [%]; input side purple, output side blue</text>")
     return _svg("dr-chain", height, title, body)

@@ -20,6 +20,7 @@ from ..data.catalog import display_path
 from ..report import RENDERERS, Report, report_of
 from ..report.page import FAIL_COLOR, PASS_COLOR, SYSTEM, View, table, utilization, value, verdict_cell
 from ..report.symbols import html as typeset
+
 STYLE = f"""<style>
 .dr {{ font-size: 13px; line-height: 1.35; color: #1a1a1a; }}
 .dr h3 {{ font-size: 14px; margin: 12px 0 4px; }}
@@ -31,13 +32,16 @@ STYLE = f"""<style>
 .dr .word.open {{ background: #8a6d00; color: #fff; }}
 .dr .parts {{ font-size: 15px; }} .dr ul.reasons {{ margin: 2px 0 4px 18px; padding: 0; color: {FAIL_COLOR}; }}
 .dr table {{ border-collapse: collapse; margin: 2px 0 6px; }}
-.dr th {{ text-align: left; font-weight: 600; border-bottom: 1px solid #999; padding: 2px 8px 2px 0; white-space: nowrap; }}
+.dr th {{ text-align: left; font-weight: 600; border-bottom: 1px solid #999; padding: 2px 8px 2px 0;
+  white-space: nowrap; }}
 .dr td {{ padding: 2px 8px 2px 0; border-bottom: 1px solid #e4e4e4; vertical-align: top; white-space: nowrap; }}
 .dr td.n {{ text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }}
 .dr td.why {{ color: #555; white-space: normal; }} .dr tr.chosen td {{ background: #eef6ee; }}
-.dr .bar {{ display: inline-block; height: 8px; vertical-align: middle; margin-left: 4px; background: #ccc; width: 50px; }}
+.dr .bar {{ display: inline-block; height: 8px; vertical-align: middle; margin-left: 4px; background: #ccc;
+  width: 50px; }}
 .dr .bar > span {{ display: block; height: 8px; }}
-.dr details.notmade {{ display: inline-block; font-size: 13px; color: #6d4c00; }} .dr details.notmade summary {{ cursor: pointer; }}
+.dr details.notmade {{ display: inline-block; font-size: 13px; color: #6d4c00; }}
+.dr details.notmade summary {{ cursor: pointer; }}
 .dr details.notmade ul {{ margin: 2px 0 4px 18px; padding: 0; color: #333; }}
 .dr .refused {{ background: #fff0f0; border: 1px solid {FAIL_COLOR}; padding: 3px 6px; margin: 2px 0 6px; }}
 .dr td.differs {{ background: #fff4d6; font-weight: 600; }}
@@ -49,7 +53,20 @@ def evaluated(case: Case) -> tuple[Report, list[str]]:
     """The case's report, and what had to be left out of it: when the changed inputs make one
     further section impossible to evaluate (the accuracy chain names a 10:1 gearbox and the ratio
     is now 8), the report of the rest, and that section's reason as one sentence, so the review
-    still shows the gearbox and the other sections. The verdict with a section left out is FAIL."""
+    still shows the gearbox and the other sections. The verdict with a section left out is FAIL.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case with the review's inputs.
+
+    Returns
+    -------
+    tuple
+        The report (:class:`calc.report.Report`) and the sentences of what was left out (none where
+        the whole case is evaluated, or where leaving out one section does not help: the report's
+        error says why).
+    """
     r = report_of(case)
     if r.error is None:
         return r, []
@@ -82,18 +99,39 @@ def _not_made_html(results) -> str:
     if not missing:
         return ""
     items = "".join(f"<li>{typeset(x)}</li>" for x in missing)
-    return f'<details class="notmade"><summary>{len(missing)} check{"s" if len(missing) > 1 else ""} not made</summary><ul>{items}</ul></details>'
+    checks = f'{len(missing)} check{"s" if len(missing) > 1 else ""} not made'
+    return f'<details class="notmade"><summary>{checks}</summary><ul>{items}</ul></details>'
 
 
 def results_html(report: Report, left_out: list[str], report_link: str | None = None, typed_by_hand: bool = False,
                  shown: int | None = None, refused: list[str] = (), system: str = "SI", ratios=None) -> str:
-    """The review of an evaluated case as one HTML text (see the module's docstring);
-    ``report_link``, where given, is the address of the case's report, linked beside the verdict;
-    ``typed_by_hand``: the case's derived load cycle was changed segment by segment; ``shown``:
-    the candidates listed in each table, best first (all for None); ``refused``: the values typed
-    and refused (the results are those of the values before them), each with why; ``system``:
-    the unit system of the values shown, "SI" or "inch-pound" (:data:`calc.report.page.INCH_POUND`); ``ratios``: the
-    ratio search's JSON, or why it cannot be made, shown after the gearbox (None: not asked for)."""
+    """The review of an evaluated case as one HTML text (see the module's docstring).
+
+    Parameters
+    ----------
+    report : calc.report.Report
+        The case's report (:func:`evaluated`).
+    left_out : list of str
+        What had to be left out of it, one sentence each: the verdict is then FAIL.
+    report_link : str, optional
+        The address of the case's report, linked beside the verdict.
+    typed_by_hand : bool
+        Whether the case's derived load cycle was changed segment by segment.
+    shown : int, optional
+        The candidates listed in each table, best first; all for None.
+    refused : list of str
+        The values typed and refused (the results are those of the values before them), each with why.
+    system : str
+        The unit system of the values shown, "SI" or "inch-pound" (:data:`calc.report.page.INCH_POUND`).
+    ratios : dict or str, optional
+        The ratio search's JSON, or why it cannot be made, shown after the gearbox; None: not asked for.
+
+    Returns
+    -------
+    str
+        HTML: the page's style, the verdict with the chosen parts, the governing checks and each
+        section's part.
+    """
     token = SYSTEM.set(system)
     try:
         return _results_html(report, left_out, report_link, typed_by_hand, shown, refused, ratios)
@@ -105,9 +143,11 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused, 
     word = "FAIL" if left_out else report.verdict.word
     passes = word == "PASS"
     cls = {"PASS": "pass", "FAIL": "fail"}.get(word, "open")  # NOT DECIDED: a check could not be made
-    chosen = " · ".join(f"{escape(w)} <b>{escape(p)}</b>" if p else f"{escape(w)} <span class=fail>none passes</span>" for w, p, _ in report.chosen)
+    chosen = " · ".join(f"{escape(w)} <b>{escape(p)}</b>" if p else f"{escape(w)} <span class=fail>none passes</span>"
+                        for w, p, _ in report.chosen)
     link = f' <a href="{escape(report_link)}" target="_blank">calc report</a>' if report_link else ""
-    out = [STYLE, '<div class="dr">', f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}'
+    out = [STYLE, '<div class="dr">',
+           f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}'
            f"{_not_made_html(report.evaluated)}</div>"]
     if refused:
         out.append('<div class="refused"><b>Not applied</b> (the results are those of the values before): '
@@ -186,20 +226,36 @@ def comparison_rows(variants: list[tuple[str, Report]], system: str = "SI") -> l
 
 
 def comparison_html(variants: list[tuple[str, Report]], system: str = "SI") -> str:
-    """The variants kept in the review side by side (:func:`comparison_rows`), in the unit system
-    ``system``; a value that differs from the first variant's is highlighted."""
+    """The variants kept in the review side by side (:func:`comparison_rows`); a value that differs
+    from the first variant's is highlighted.
+
+    Parameters
+    ----------
+    variants : list of tuple
+        ``(name, calc.report.Report)`` of each variant.
+    system : str
+        The unit system of the values, "SI" or "inch-pound" (:data:`calc.report.page.INCH_POUND`).
+
+    Returns
+    -------
+    str
+        HTML: the page's style, the table and the figure of the worst utilizations.
+    """
     from .figures import comparison_svg
 
     rows = comparison_rows(variants, system)
 
     head = "".join(f"<th>{escape(n)}</th>" for n, _ in variants)
     body = "".join(
-        f"<tr><td>{typeset(name)}</td>" + "".join(f'<td class="{"differs" if k and v != values[0] else ""}">{escape(v)}</td>' for k, v in enumerate(values)) + "</tr>"
+        f"<tr><td>{typeset(name)}</td>"
+        + "".join(f'<td class="{"differs" if k and v != values[0] else ""}">{escape(v)}</td>'
+                  for k, v in enumerate(values)) + "</tr>"
         for name, values in rows
     )
     figure = comparison_svg([str(k) for k in range(1, len(variants) + 1)], worst_utilizations(variants))
-    return (f'{STYLE}<div class="dr dr-variants"><h3>Variants compared</h3><table><thead><tr><th></th>{head}</tr></thead>'
-            f"<tbody>{body}</tbody></table><div class=note>A value that differs from the first variant's is marked.</div>{figure}</div>")
+    return (f'{STYLE}<div class="dr dr-variants"><h3>Variants compared</h3>'
+            f"<table><thead><tr><th></th>{head}</tr></thead><tbody>{body}</tbody></table>"
+            f"<div class=note>A value that differs from the first variant's is marked.</div>{figure}</div>")
 
 
 def worst_utilizations(designs: list[tuple[str, Report]]) -> dict:
@@ -222,19 +278,60 @@ def worst_utilizations(designs: list[tuple[str, Report]]) -> dict:
 
 def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
     """:func:`comparison_rows` as a plain text table, a column per design; a value that differs
-    from the first design's is marked ``*``."""
-    cells = [["", *names]] + [[name, *(v + (" *" if k and v != values[0] else "") for k, v in enumerate(values))] for name, values in rows]
+    from the first design's is marked ``*``.
+
+    Parameters
+    ----------
+    names : list of str
+        The designs' names, a column each.
+    rows : list of tuple
+        ``(row name, [text of each design])`` (:func:`comparison_rows`).
+
+    Returns
+    -------
+    str
+        The table, its header ruled, with the mark's key last.
+
+    Examples
+    --------
+    >>> print(comparison_text(["a", "b"], [("verdict", ["PASS", "FAIL"])]))
+             a     b
+    -------  ----  ------
+    verdict  PASS  FAIL *
+    * differs from the first design
+    """
+    cells = [["", *names]] + [[name, *(v + (" *" if k and v != values[0] else "") for k, v in enumerate(values))]
+                              for name, values in rows]
     widths = [max(len(r[j]) for r in cells) for j in range(len(cells[0]))]
     lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in cells]
     return "\n".join([lines[0], "  ".join("-" * w for w in widths), *lines[1:], "* differs from the first design"])
 
 
-def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: dict, path, legend: list[str] = ()) -> None:
+def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: dict, path,
+                   legend: list[str] = ()) -> None:
     """:func:`comparison_rows` as a one-page PDF (A4 landscape): the table, a value that differs
     from the first design's shaded, and a comparison figure of the worst governing utilization of
-    each design's gearbox, coupling and motor (``worst``, :func:`worst_utilizations`; matplotlib, no
-    TeX needed). ``legend``: what each
-    design is, where its name is short (the review's variants by number), printed under the title."""
+    each design's gearbox, coupling and motor (matplotlib, no TeX needed).
+
+    Parameters
+    ----------
+    names : list of str
+        The designs' names, a column each.
+    rows : list of tuple
+        ``(row name, [text of each design])`` (:func:`comparison_rows`).
+    worst : dict
+        Section name -> each design's worst governing utilization [%], None where it has none
+        (:func:`worst_utilizations`).
+    path : str or pathlib.Path or file
+        Where to write the PDF.
+    legend : list of str
+        What each design is, where its name is short (the review's variants by number), printed
+        under the title.
+
+    Returns
+    -------
+    None
+    """
     import textwrap
 
     from matplotlib.figure import Figure
@@ -267,9 +364,28 @@ def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: d
 
 def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
     """``python -m calc compare A.toml B.toml ... [--json] [--pdf FILE]``: the designs side by side,
-    as the review's *Keep as variant* table has them (:func:`comparison_rows`), as text or as JSON
-    (``{"designs": [file, ...], "rows": [{"name", "values": [...], "differs": [...]}]}``); with
-    ``pdf``, also written there as a PDF (:func:`comparison_pdf`)."""
+    as the review's *Keep as variant* table has them (:func:`comparison_rows`).
+
+    Parameters
+    ----------
+    paths : list of str
+        The case files, a design each.
+    as_json : bool
+        JSON instead of text.
+    pdf : str or pathlib.Path, optional
+        Where to write the comparison as a PDF as well (:func:`comparison_pdf`); None: no PDF.
+
+    Returns
+    -------
+    str
+        The text table (:func:`comparison_text`), or the JSON
+        ``{"designs": [file, ...], "rows": [{"name", "values": [...], "differs": [...]}]}``.
+
+    Raises
+    ------
+    calc.core.errors.CalcError
+        A case that cannot be evaluated, with its report's error.
+    """
     import json
     from pathlib import Path
 
@@ -286,6 +402,7 @@ def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
         comparison_pdf(names, rows, worst_utilizations(designs), pdf)
     if as_json:
         return json.dumps({"designs": [str(p) for p in paths],
-                           "rows": [{"name": name, "values": values, "differs": [k > 0 and v != values[0] for k, v in enumerate(values)]}
+                           "rows": [{"name": name, "values": values,
+                                     "differs": [k > 0 and v != values[0] for k, v in enumerate(values)]}
                                     for name, values in rows]}, indent=2, ensure_ascii=False)
     return comparison_text(names, rows)

@@ -26,39 +26,91 @@ ORDER = 70
 
 @dataclass(frozen=True)
 class RatioRow:
-    """The case at one ratio, with its best gearbox, as the outputs print it."""
+    """The case at one ratio, with its best gearbox, as the outputs print it.
+
+    Parameters
+    ----------
+    ratio : float
+        The gearbox ratio ``i`` [1].
+    part : str
+        The best gearbox of the catalog at this ratio.
+    passes : bool
+        Whether the gearbox and the motor pass at this ratio.
+    gearbox_passes : bool
+        Whether the gearbox passes.
+    utilization : float or None
+        The best gearbox's highest governing utilization [1]; None where it has none.
+    inertia_ratio : float or None
+        The inertia ratio ``λ`` [1]; None where it is not known.
+    inertia_within : bool or None
+        Whether ``λ`` is within its limit, as the search decides; None where ``λ`` is not known.
+    peak_torque_required : Value or None
+        The motor's peak torque [N·m]; None where the case has no motor side.
+    rms_torque_required : Value or None
+        The motor's RMS torque [N·m]; None where the case has no motor side.
+    max_speed_required : Value
+        The motor's highest speed [rpm].
+    checks : list of calc.core.checks.Check
+        The motor's checks at this ratio.
+    reasons : list of str
+        Why the gearbox or the motor fails here.
+    pick : bool
+        Whether this is the ratio to pick.
+    """
 
     ratio: float
     part: str
-    passes: bool  # the gearbox and the motor at this ratio
+    passes: bool
     gearbox_passes: bool
-    utilization: float | None  # the best gearbox's highest governing utilization
+    utilization: float | None
     inertia_ratio: float | None
-    inertia_within: bool | None  # λ within its limit, as the search decides; None where λ is not known
-    peak_torque_required: Value | None  # of the motor; None where the case has no motor side
+    inertia_within: bool | None
+    peak_torque_required: Value | None
     rms_torque_required: Value | None
     max_speed_required: Value
-    checks: list  # the motor's (calc.core.checks.Check)
+    checks: list
     reasons: list
     pick: bool
 
 
 @dataclass
 class RatioResult:
-    """The ratio search of a case, as the ``ratios`` command writes it."""
+    """The ratio search of a case, as the ``ratios`` command writes it.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case, its motor as the search kept it.
+    search : calc.domain.ratios.RatioSearch
+        Every ratio of the gearbox catalog, evaluated, and the pick.
+    notes : list of str
+        What the search kept to or left out (the motor kept at every ratio, a part not kept to).
+    """
 
     case: Case
     search: RatioSearch
     notes: list
 
     def verdict(self) -> Verdict:
-        """True when a ratio can be picked, else False with the reason."""
+        """True when a ratio can be picked, else False with the reason.
+
+        Returns
+        -------
+        Verdict
+            PASS with a pick, else FAIL with the search's reason.
+        """
         s = self.search
         return Verdict(True) if s.pick is not None else Verdict(False, [s.reason])
 
     @cached_property
     def rows(self) -> list:
-        """Each ratio of the catalog (:class:`RatioRow`), in ascending order."""
+        """Each ratio of the catalog (:class:`RatioRow`), in ascending order.
+
+        Returns
+        -------
+        list of RatioRow
+            One row per ratio.
+        """
         s = self.search
         load = s.load
         out = []
@@ -66,7 +118,8 @@ class RatioResult:
             where = f"ratio {ratio:g}"
             out.append(RatioRow(
                 float(ratio), str(s.parts[k]), bool(s.feasible[k]), bool(s.gearbox_passes[k]),
-                number(s.utilization[k], f"{where}: utilization"), number(s.inertia_ratio[k], f"{where}: inertia_ratio"),
+                number(s.utilization[k], f"{where}: utilization"),
+                number(s.inertia_ratio[k], f"{where}: inertia_ratio"),
                 None if np.isnan(s.inertia_ratio[k]) else bool(s.inertia_within[k]),
                 None if load is None else Value.of(load.peak[k], "N*m", f"{where}: peak torque"),
                 None if load is None else Value.of(load.rms[k], "N*m", f"{where}: RMS torque"),
@@ -76,12 +129,22 @@ class RatioResult:
         return out
 
     def to_json(self) -> dict:
+        """The search as ``python -m calc ratios --json`` writes it (``docs/case-format.md``).
+
+        Returns
+        -------
+        dict
+            The case, its catalog's provenance, the mode, the rule, the inertia ratio's limit, each
+            ratio's row (quantities as ``{"value", "unit"}``), the pick, notes and verdict.
+        """
         s = self.search
         rows = [{
-            "ratio": r.ratio, "part": r.part, "passes": r.passes, "gearbox_passes": r.gearbox_passes, "utilization": r.utilization,
+            "ratio": r.ratio, "part": r.part, "passes": r.passes, "gearbox_passes": r.gearbox_passes,
+            "utilization": r.utilization,
             "inertia_ratio": r.inertia_ratio, "inertia_ratio_within_limit": r.inertia_within,
             "peak_torque_required": json_of(r.peak_torque_required),
-            "rms_torque_required": json_of(r.rms_torque_required), "max_speed_required": r.max_speed_required.to_json(),
+            "rms_torque_required": json_of(r.rms_torque_required),
+            "max_speed_required": r.max_speed_required.to_json(),
             "checks": [check_json(c) for c in r.checks], "reasons": r.reasons,
         } for r in self.rows]
         return {
@@ -93,25 +156,37 @@ class RatioResult:
             "inertia_ratio_limit": s.inertia_limit,
             "rotor_term": bool(s.load is not None and s.load.rotor_term),
             "ratios": rows,
-            "pick": None if s.pick is None else {"ratio": float(s.ratios[s.pick]), "part": str(s.parts[s.pick]), "reason": s.reason},
+            "pick": None if s.pick is None else {"ratio": float(s.ratios[s.pick]), "part": str(s.parts[s.pick]),
+                                                 "reason": s.reason},
             "reason": s.reason,
             "notes": list(self.notes),
             "verdict": self.verdict().to_json(),
         }
 
     def summary(self) -> str:
+        """The search as ``python -m calc ratios`` prints it: the reason of the pick, the rule and a
+        line per ratio with the reasons it fails.
+
+        Returns
+        -------
+        str
+            The text, notes last.
+        """
         title = f"{self.case.title}: the ratio"
         lines = [title, "=" * len(title), self.search.reason, f"Rule: {self.search.rule}.", "",
-                 f"{'ratio':>6}  {'gearbox':<14} {'verdict':<7} {'util.':>6} {'λ':>7} {'T_1peak':>10} {'T_1rms':>10} {'n_1':>9}"]
-        for r in self.rows:
-            def val(v):
-                return "n/a" if v is None or v.value is None else f"{sig(v.value, 4)} {pretty_unit(v.unit)}"
+                 f"{'ratio':>6}  {'gearbox':<14} {'verdict':<7} {'util.':>6} {'λ':>7} {'T_1peak':>10} "
+                 f"{'T_1rms':>10} {'n_1':>9}"]
 
+        def val(v):
+            return "n/a" if v is None or v.value is None else f"{sig(v.value, 4)} {pretty_unit(v.unit)}"
+
+        for r in self.rows:
             lam = "n/a" if r.inertia_ratio is None else f"{r.inertia_ratio:.2f}"
             util = "n/a" if r.utilization is None else f"{r.utilization:.2f}"
             lines.append(
                 f"{r.ratio:>6g}  {r.part:<14} {'PASS' if r.passes else 'FAIL':<7} {util:>6} {lam:>7} "
-                f"{val(r.peak_torque_required):>10} {val(r.rms_torque_required):>10} {val(r.max_speed_required):>9}{'  <- pick' if r.pick else ''}"
+                f"{val(r.peak_torque_required):>10} {val(r.rms_torque_required):>10} "
+                f"{val(r.max_speed_required):>9}{'  <- pick' if r.pick else ''}"
             )
             lines += [f"          {reason}" for reason in r.reasons]
         return "\n".join(lines + [f"Note: {n}" for n in self.notes])
@@ -132,15 +207,18 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
     Returns
     -------
     RatioResult
+        The search, its pick and notes.
     """
     if case.gearbox_catalog is None:
-        raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the ratios to try), found none")
+        raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the "
+                        "ratios to try), found none")
     notes = []
     evaluated = results_of(case, ("drive", "coupling")) if evaluated is None else evaluated
     drive = evaluated["drive"]
-    if drive.chosen is not None:  # a motor from the catalog: the one the case chooses at its ratio, kept at every ratio
+    if drive.chosen is not None:  # a motor from the catalog: the one the case chooses at its ratio
         notes.append(f"the motor is {drive.chosen}, the motor catalog's choice at the case's ratio "
-                     f"{sig(case.ratio.m_as(''))}, kept at every ratio (python -m calc combinations chooses motor and gearbox together)")
+                     f"{sig(case.ratio.m_as(''))}, kept at every ratio (python -m calc combinations chooses motor "
+                     "and gearbox together)")
     case = drive.case
     catalog, hubs = catalogs(case)
     load = output_load(case)

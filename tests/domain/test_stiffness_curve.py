@@ -176,6 +176,7 @@ def test_case_errors_name_the_key(capsys, write_case, section, message):
 
 def test_figures_follow_the_curve():
     from calc.figures.accuracy_plots import positioning_rule_figure, stiffness_chain_figure
+    from calc.sections.accuracy import chain_values
 
     curve = hfuc_32_100()
     chain = Chain((Component("HFUC-32-100", "output", curve.K_1, Q_(0, "arcmin"), Q_(1, "arcmin"), Q_(178, "N*m"),
@@ -184,7 +185,7 @@ def test_figures_follow_the_curve():
     c = chain.stiffness_at(Q_([0, 60], "N*m")).m_as("N*m/rad")
     assert c[0] == pytest.approx(6.7e4) and c[1] == pytest.approx(60 / 7.1466e-4, rel=1e-4)
     assert "secant" in positioning_rule_figure(chain, applied_torque=Q_(60, "N*m")).axes[0].get_title()
-    assert stiffness_chain_figure(chain, Q_(60, "N*m")).axes[0].get_title()
+    assert stiffness_chain_figure(chain_values(chain, Q_(60, "N*m"))).axes[0].get_title()
     plain = Chain((Component("g", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin")),))
     assert plain.stiffness_at(Q_([1, 2], "N*m")) is plain.stiffness
 

@@ -21,6 +21,7 @@ from calc.figures.accuracy_plots import (
 from calc.domain.hysteresis import analyze_loop, read_loop
 from calc.domain.stiffness import Chain, Component
 from calc.domain.transmission import analyze_trace, read_trace
+from calc.sections.accuracy import chain_values
 
 from ..conftest import ROOT
 
@@ -50,10 +51,23 @@ def test_stiffness_chain_figure_shows_each_share():
         Component("EKM-15", "input", Q_(0.24, "N*m/arcmin"), Q_(0, "arcmin")),
         Component("EPL-W-064 10:1", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin")),
     ), ratio=Q_(10, ""))
-    fig = stiffness_chain_figure(chain, Q_(20, "N*m"))
-    # Shares 1/24 : 1/1.3 -> 5.14 % and 94.9 %; C_total 1.233 N·m/arcmin.
+    fig = stiffness_chain_figure(chain_values(chain, Q_(20, "N*m")))
+    # Shares 1/24 : 1/1.3 -> 5.14 % and 94.9 %; C_total 1.233 N·m/arcmin; twists 20 / 24 and 20 / 1.3 arcmin.
     assert [round(b.get_width(), 2) for b in fig.axes[0].patches] == [5.14, 94.86]
     assert "1.233 N·m/arcmin" in fig.axes[0].get_title()
+    assert texts(fig)[:2] == ["5.14 %: 0.833 arcmin, C = 24 N·m/arcmin", "94.9 %: 15.4 arcmin, C = 1.3 N·m/arcmin"]
+
+
+def test_stiffness_chain_figure_bounds_the_chain_of_an_unknown_member():
+    # A member of unknown stiffness is reckoned rigid: no bar of its own, and C_total an upper bound.
+    chain = Chain((
+        Component("NPT035-10", "output", Q_(np.inf, "N*m/arcmin"), Q_(3, "arcmin")),
+        Component("EPL-W-064 10:1", "output", Q_(1.3, "N*m/arcmin"), Q_(3, "arcmin")),
+    ))
+    fig = stiffness_chain_figure(chain_values(chain, Q_(20, "N*m")))
+    assert [b.get_width() for b in fig.axes[0].patches] == pytest.approx([0.0, 100.0])
+    assert texts(fig)[0] == "C unknown: reckoned rigid, so the twist is more"
+    assert "≤ 1.3 N·m/arcmin, twist 15.4 arcmin" in fig.axes[0].get_title()
 
 
 def test_transmission_error_figure_marks_the_range():

@@ -977,3 +977,24 @@ def test_the_variants_as_a_pdf(tmp_path):
         text = subprocess.run(["pdftotext", "-layout", str(first), "-"], capture_output=True, text=True).stdout
         assert "variant 1" in text and "variant 2" in text and "378.3 N·m" in text and "NPS045-10" in text
         assert "2: axis.toml with motor peak torque" in text and "worst governing utilization" in text
+
+
+def test_the_page_and_the_report_draw_the_same_stiffness_chain():
+    # Both drawings take their bars and labels from the example's accuracy record (stiffness_chain_bars).
+    import re
+
+    from calc.figures.accuracy_plots import stiffness_chain_figure
+    from calc.review.figures import WIDTH, stiffness_chain_svg
+
+    shown = evaluate_case(read_case(DERIVED_EXAMPLE))["accuracy"].shown
+    ax = stiffness_chain_figure(shown).axes[0]
+    svg = stiffness_chain_svg(shown)
+    bars = [float(w) for w in re.findall(r'<rect x="130" y="\d+" width="([\d.]+)"', svg)]
+    scale = (WIDTH - 130 - 10) / 110  # the SVG's 110 % across its plot
+    assert [b.get_width() for b in ax.patches] == pytest.approx([w / scale for w in bars], abs=0.1 / scale)
+    labels = [t.get_text() for t in ax.texts]
+    # AKN-18 232.7 and NPT035-10 22 N·m/arcmin at the output: shares 1/232.7 : 1/22 = 8.64 % : 91.4 %, and
+    # 8 N·m twists them by 8 / 232.7 = 0.0344 and 8 / 22 = 0.364 arcmin.
+    assert labels == ["8.64 %: 0.0344 arcmin, C = 232.7 N·m/arcmin", "91.4 %: 0.364 arcmin, C = 22 N·m/arcmin"]
+    assert all(f">{label}</text>" in svg for label in labels)
+    assert "C_total = 20.1 N·m/arcmin, twist 0.398 arcmin" in svg and "= 20.1 N·m/arcmin, twist 0.398" in ax.get_title()
