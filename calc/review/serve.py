@@ -5,7 +5,7 @@ runs Voilà on ``design-review.ipynb`` beside this file: the panel and nothing e
 other notebook is served). The page opens the case ``NAME`` of the folder ``DIR`` (default
 ``cases/``, the example); the panel offers the folder's other case files, and no other path. A
 kernel whose page was closed is shut down after ``M`` minutes (:data:`IDLE_MINUTES`). The address
-is this machine's only (127.0.0.1) unless ``--ip`` says otherwise (README, "Design review":
+is this machine's only (127.0.0.1) unless ``--ip`` says otherwise (docs/user-guide.md, "Design review":
 sharing it on a network).
 
 The calc reports built in ``--reports`` (default ``reports/``: ``python -m calc report

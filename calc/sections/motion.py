@@ -330,8 +330,8 @@ def read_move(t: Table, mechanism: Mechanism):
 
 def derive(top: Table) -> Motion | None:
     """The motion form of a case from its raw top-level tables: the mechanism and its moves, or a
-    drive record. A case file is read through here, and so is a copy of a case whose mechanism or
-    moves were changed (the design review, :func:`calc.review.inputs.with_inputs`).
+    drive record. A case file is read through here, and so is every edit of a case's text (the
+    design review's, :mod:`calc.review.edit`), read again by the same reader.
 
     Parameters
     ----------
