@@ -373,6 +373,26 @@ def model_for_part(part: str, catalog: str = "gearboxes", **shape) -> LoopModel:
         if np.isnan(rows[column][row].magnitude):
             raise CalcError(f"{rows.path}, row {rows.lines[row]} ({part}), column {column}: expected a value for the "
                             "loop model, found an empty cell")
+    return model_for_row(rows, row, **shape)
+
+
+def model_for_row(rows, row: int, **shape) -> LoopModel:
+    """The loop model of a gearbox catalog row: its ``C_t21``, backlash and ``T_2N``.
+
+    Parameters
+    ----------
+    rows : calc.data.catalog.Catalog
+        A gearbox catalog (:data:`calc.domain.gearbox.SCHEMA`).
+    row : int
+        The row, whose ``C_t21`` and backlash are given.
+    **shape
+        The shape factors of :class:`LoopModel` (its defaults where left out).
+
+    Returns
+    -------
+    LoopModel
+        The model of that gearbox's loop.
+    """
     return LoopModel(rows["C_t21"][row], rows["backlash"][row], rows["T_2N"][row], **shape)
 
 

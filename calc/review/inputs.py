@@ -70,6 +70,22 @@ class InputSpec:
     options: tuple = ()
     exact: float | None = None
 
+    def shown_text(self, value) -> str:
+        """The value as the input's field shows it: a choice by its option's text, a number by
+        :meth:`field_text`.
+
+        Parameters
+        ----------
+        value : float or str
+            The value [``unit``], or a choice.
+
+        Returns
+        -------
+        str
+            The field's text.
+        """
+        return option_text(value) if self.options else self.field_text(value)
+
     def field_text(self, v: float) -> str:
         """A slider's value as its number field shows it: the case's own value where the slider
         stands at its rounding of it (so a field never shows 15000 for the 14804.4 kg used).

@@ -17,7 +17,7 @@ from html import escape
 from ..core.units import pretty_unit
 from ..report.page import FAIL_COLOR
 from ..report.symbols import html as typeset
-from .inputs import InputSpec, option_text
+from .inputs import InputSpec
 from .state import ReviewState, Screen
 from .variants import Variants
 from .view import results_html
@@ -44,7 +44,7 @@ def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
         HTML.
     """
     unit = pretty_unit(spec.unit) if spec.unit else ""
-    file_value = spec.field_text(spec.value) if not spec.options else option_text(spec.value)
+    file_value = spec.shown_text(spec.value)
     file_value += f" {unit}" if unit else ""
     was = f" ({added})" if added else f" (changed; the file: {file_value})" if changed else ""
     marked = " class=dr-changed" if changed or added else ""

@@ -386,7 +386,7 @@ class DesignReview:
         if self.variants.kept and self.variants_html.value != compared:
             self.variants_html.value = compared
         self.generation += 1
-        link = self.files.report_address(state.path) if not state.modified() else None
+        link = self.files.report_address(state.path) if not (screen.changes or screen.moves) else None
         self.results.value = results_text(state, screen, link, self.generation, self.variants)
 
     def _show_history(self) -> None:

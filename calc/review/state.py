@@ -316,7 +316,7 @@ class ReviewState:
             raise CalcError(without_folder(str(exc), self.path)) from None
         self.case, self.moves, self.specs, self.refused = case, moves, specs, {}
         self.values = {s.key: values.get(s.key, s.value) for s in specs}
-        self.texts = {s.key: _field_text(s, self.values[s.key]) for s in specs}
+        self.texts = {s.key: s.shown_text(self.values[s.key]) for s in specs}
 
     def spec(self, key: str) -> InputSpec:
         """The input of a key path.
@@ -352,7 +352,7 @@ class ReviewState:
             return False
         self.values[key] = value
         if key not in self.refused:  # a refused text stays in its field until typed again
-            self.texts[key] = _field_text(self.spec(key), value)
+            self.texts[key] = self.spec(key).shown_text(value)
         self.history.push(self.snapshot())
         return True
 
@@ -558,7 +558,7 @@ class ReviewState:
         for key, v in values.items():
             self.values[key] = v
             if key not in self.refused:
-                self.texts[key] = _field_text(self.spec(key), v)
+                self.texts[key] = self.spec(key).shown_text(v)
 
     # -- the moves edited: entries added and removed, the mechanism's type changed -----------------
 
@@ -732,8 +732,10 @@ class ReviewState:
         report, left_out = evaluated(case)
         ratios = None
         if self.ratio_search:  # asked for: its own command's result, the case at every ratio
+            # The drive and coupling as the whole case evaluated them, not a second time.
+            every = report.evaluated.every if report.evaluated is not None and not left_out else None
             try:
-                ratios = search_ratios(case).to_json()
+                ratios = search_ratios(case, every).to_json()
             except CalcError as exc:
                 ratios = self.in_words(str(exc))
         typed = self.case.motion is not None and case.motion is None
@@ -784,11 +786,6 @@ def mechanism_edit(case: Case, type_: str, size, inch: bool) -> list:
     said += "" if size is None else f" of {value_text(size.magnitude, f'{size.units:~}')}"
     said += " (equivalent at the gearbox output" + (f"; left out: {'; '.join(left)})" if left else ")")
     return ["mechanism", keys, distances, said]
-
-
-def _field_text(spec: InputSpec, value) -> str:
-    """An input's value as its field shows it (a choice: its option's text)."""
-    return option_text(value) if spec.options else spec.field_text(value)
 
 
 #: An input of an entry of the moves: ``move[2].time``.

@@ -22,7 +22,7 @@ from ..data.measurement import measurement_path
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
 from ..domain.coupling import SCHEMA as COUPLING_SCHEMA
 from ..domain.gearbox import SCHEMA as GEARBOX_SCHEMA, same_ratio
-from ..domain.hysteresis import LoopModel, analyze_loop
+from ..domain.hysteresis import analyze_loop, model_for_row
 from .common import Governing, Verdict, json_of, number, quantity
 from .protocol import Result, Section
 
@@ -833,7 +833,7 @@ def modelled_loop(gearbox) -> ModelledLoop | None:
     cat, row = gearbox.selection.catalog, int(gearbox.selection.order[0])
     if np.isnan(cat["C_t21"][row].magnitude) or np.isnan(cat["backlash"][row].magnitude):
         return None
-    model = LoopModel(cat["C_t21"][row], cat["backlash"][row], cat["T_2N"][row])
+    model = model_for_row(cat, row)
     loop = model.loop(MODEL_SAMPLES)
     return ModelledLoop(str(cat.parts[row]), cat.catalog_of(row), model, loop, analyze_loop(loop, model.nominal_torque))
 

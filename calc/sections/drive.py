@@ -175,30 +175,6 @@ def motor_ratings(cat, row: int) -> dict:
             "motor_max_speed": cat["n_max"][row], "motor_inertia": cat["J"][row]}
 
 
-def with_motor_part(case: Case, part: str | None, where: str) -> Case:
-    """A copy of a case checking one motor of its catalog.
-
-    Parameters
-    ----------
-    case : calc.sections.case.Case
-        The case, with a motor catalog.
-    part : str or None
-        The motor; None: the catalog's choice (the ratings left for it to give).
-    where : str
-        Where the part is named, for the error on one the catalog does not hold.
-
-    Returns
-    -------
-    calc.sections.case.Case
-        The copy, with the motor's ratings and inertia.
-    """
-    if part is None:
-        ratings = ("motor_peak_torque", "motor_rated_torque", "motor_max_speed", "motor_inertia")
-        return dataclasses.replace(case, motor_part=None, **dict.fromkeys(ratings))
-    cat = motor_catalog(case)
-    return dataclasses.replace(case, motor_part=part, **motor_ratings(cat, cat.usable_index(part, where)))
-
-
 def motor_catalog(case: Case):
     """The case's motor catalog.
 
