@@ -368,7 +368,7 @@ def measure_rank(size: Size, workdir: Path) -> list[str]:
     from calc.data.catalog import load_catalog
     from calc.domain.gearbox import SCHEMA
 
-    case = evaluate(read_case(EXAMPLE), "drive").case  # the motor the evaluation chooses from the motor catalog
+    case = evaluate(read_case(EXAMPLE), "axis").case  # the motor the evaluation chooses from the motor catalog
     path = workdir / "synthetic-gearboxes.csv"
     write_synthetic_catalog(path, size.rows, case.ratio.m_as(""))
     load_time, catalog = timed(lambda: load_catalog(path, SCHEMA))

@@ -24,7 +24,7 @@ import numpy as np
 from ..core.errors import CalcError
 from ..core.units import NUMBER, Q_, parse_quantity, pretty_unit
 from ..report.symbols import symbol_text
-from ..sections import OWN_TABLES, declared, drive
+from ..sections import OWN_TABLES, axis, declared
 from ..sections import motion as motion_section
 from ..sections.case import Case, Key
 from ..sections.gearbox import catalogs as gearbox_catalogs
@@ -478,7 +478,7 @@ def forced_spec(case: Case, key: str) -> InputSpec:
         catalog, given = gearbox_catalogs(case)[0], case.gearbox_part
         offered = (catalog["ratio"].m_as("") == float(case.ratio.m_as(""))) & ~catalog.partial
     else:
-        catalog, given = drive.motor_catalog(case), case.motor_part
+        catalog, given = axis.motor_catalog(case), case.motor_part
         offered = ~catalog.partial
     value = given or SELECTION
     parts = [str(p) for p, shown in zip(catalog.parts, offered) if shown]

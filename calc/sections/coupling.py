@@ -887,7 +887,7 @@ class CouplingSection(Section):
 
     NAME = NAME
     TABLES = TABLES
-    REQUIRES = ("drive", "gearbox")
+    REQUIRES = ("axis", "gearbox")
 
     def read_inputs(self, case: Case) -> CouplingInputs:
         """Read ``[coupling]`` with the case (:func:`read_inputs`).
@@ -910,9 +910,9 @@ class CouplingSection(Section):
         Parameters
         ----------
         case : calc.sections.case.Case
-            The case as read (the drive's case, with its motor, is the one checked).
+            The case as read (the axis's case, with its motor, is the one checked).
         earlier : dict
-            The results of the sections evaluated before, by name: ``drive`` and, where the case
+            The results of the sections evaluated before, by name: ``axis`` and, where the case
             has one, ``gearbox``.
 
         Returns
@@ -920,7 +920,7 @@ class CouplingSection(Section):
         CouplingResult
             The candidates checked and ranked, and the part chosen.
         """
-        case = earlier["drive"].case
+        case = earlier["axis"].case
         cc = coupling_case(case, self.inputs(case), earlier.get("gearbox"))
         return CouplingResult(cc, coupling_selection(cc, f"{case.path}: coupling"))
 

@@ -137,7 +137,7 @@ def gearbox_selection(case: Case) -> GearboxSelection:
     ----------
     case : calc.sections.case.Case
         The case as checked, with the motor it is checked with
-        (:class:`calc.sections.drive.DriveResult`).
+        (:class:`calc.sections.axis.AxisResult`).
 
     Returns
     -------
@@ -303,7 +303,7 @@ class GearboxSection(Section):
 
     NAME = NAME
     TABLES = TABLES
-    REQUIRES = ("drive",)
+    REQUIRES = ("axis",)
 
     def read(self, top: Table, case: Case) -> None:
         read(top, case)
@@ -312,7 +312,7 @@ class GearboxSection(Section):
         return case.ratio is not None or case.gearbox_part is not None
 
     def evaluate(self, case: Case, earlier) -> GearboxResult:
-        case = earlier["drive"].case
+        case = earlier["axis"].case
         selection = gearbox_selection(case)
         return GearboxResult(selection, check_steps(case, selection))
 

@@ -21,7 +21,7 @@ from ..domain.motor import (
 )
 from ..domain.motor_ratings import RANKING, Cycle, MotorSelection, read_curves, select_motors
 from ..core.units import Q_, fmt
-from . import drive
+from . import axis
 from .common import (Governing, Verdict, check_json, check_line, quantity, quantity_text, row_json, selection_governing,
                      selection_verdict)
 from .protocol import Result, Section
@@ -409,7 +409,7 @@ class MotorSection(Section):
     every motor of its catalog."""
 
     NAME = NAME
-    REQUIRES = ("drive", "gearbox", "coupling")
+    REQUIRES = ("axis", "gearbox", "coupling")
 
     def applies(self, case: Case) -> bool:
         """With a catalog motor, or any of the motor's figures; through the gearbox, or directly.
@@ -429,7 +429,7 @@ class MotorSection(Section):
         return any(q is not None for q in given)
 
     def evaluate(self, case: Case, earlier) -> MotorResult:
-        return motor_result(earlier["drive"].case, transmission(earlier.get("gearbox")), earlier.get("coupling"))
+        return motor_result(earlier["axis"].case, transmission(earlier.get("gearbox")), earlier.get("coupling"))
 
 
 SECTION = MotorSection()
@@ -487,7 +487,7 @@ def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
 
 def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missing, speed, notes) -> MotorResult:
     """Every motor of the case's catalog (or its part alone) against the cycle through ``t``."""
-    cat = drive.motor_catalog(case)
+    cat = axis.motor_catalog(case)
     if case.motor_part is not None:
         cat = cat.rows(cat.parts == case.motor_part)
     elif cat.partial.any():  # never ranked: not computed either
@@ -508,7 +508,7 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     cycle = Cycle(T_1.m_as("N*m"), (few.speed * t.i).m_as("rad/s"), few.dt.m_as("s"), rms.m_as("N*m"), lam,
                   None if J_L is not None else no_ratio)
     limit, where = case.motor_max_inertia_ratio
-    curves = None if case.motor_curves is None else read_curves(case.motor_curves, drive.motor_catalog(case).parts)
+    curves = None if case.motor_curves is None else read_curves(case.motor_curves, axis.motor_catalog(case).parts)
     sel = select_motors(cat, cycle, case.motor_dc_link, curves, limit, where, float(case.profile.t_cycle.m_as("s")))
     best = int(sel.order[0])
     # Every sample, in time.

@@ -26,7 +26,7 @@ from ..core.errors import CalcError
 from ..domain.gearbox import T_2max, select_gearbox, shock_factor
 from ..domain.profile import Z_h
 from ..core.units import sig
-from . import drive
+from . import axis
 from .common import Verdict
 from .gearbox import catalogs, selection_inputs
 from .motor import output_load
@@ -227,7 +227,7 @@ def search_pairs(case: Case) -> PairSearch:
     else:
         peak_limit = np.full(len(gear), np.inf)
     J_L = case.load_inertia
-    motors = drive.motor_catalog(case)
+    motors = axis.motor_catalog(case)
     motors = motors.rows(~motors.partial)
     out = output_load(case)
     alpha = np.zeros(len(out.dt)) if out.alpha_2 is None else out.alpha_2.m_as("rad/s**2")

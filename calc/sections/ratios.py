@@ -201,7 +201,7 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
     case : calc.sections.case.Case
         The case as read.
     evaluated : dict, optional
-        The results of the case's drive and coupling sections where the case was evaluated
+        The results of the case's axis and coupling sections where the case was evaluated
         (:attr:`calc.sections.Results.every`); else they are evaluated here.
 
     Returns
@@ -213,13 +213,13 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
         raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the "
                         "ratios to try), found none")
     notes = []
-    evaluated = results_of(case, ("drive", "coupling")) if evaluated is None else evaluated
-    drive = evaluated["drive"]
-    if drive.chosen is not None:  # a motor from the catalog: the one the case chooses at its ratio
-        notes.append(f"the motor is {drive.chosen}, the motor catalog's choice at the case's ratio "
+    evaluated = results_of(case, ("axis", "coupling")) if evaluated is None else evaluated
+    axis = evaluated["axis"]
+    if axis.chosen is not None:  # a motor from the catalog: the one the case chooses at its ratio
+        notes.append(f"the motor is {axis.chosen}, the motor catalog's choice at the case's ratio "
                      f"{sig(case.ratio.m_as(''))}, kept at every ratio (python -m calc combinations chooses motor "
                      "and gearbox together)")
-    case = drive.case
+    case = axis.case
     catalog, hubs = catalogs(case)
     load = output_load(case)
     if case.gearbox_part is not None:

@@ -236,11 +236,11 @@ def test_the_json_names_the_fixed_keys(write_case, capsys):
 
 def test_a_motor_and_gearbox_that_do_not_settle_are_an_error(write_case, capsys, monkeypatch):
     from calc.__main__ import main
-    from calc.sections import drive
+    from calc.sections import axis
 
     # One round only: the motor ranked without the motor's ratings in the gearbox's checks is not yet
     # the one ranked with them, so the choice has not been seen to settle.
-    monkeypatch.setattr(drive, "ROUNDS", 1)
+    monkeypatch.setattr(axis, "ROUNDS", 1)
     path = write_case(DIRECT_DRIVE.format(motor=""), "dd.toml")
     assert main(["evaluate", str(path)]) == 2
     assert (

@@ -42,33 +42,33 @@ def test_sections_that_require_each_other_are_an_error_naming_the_cycle():
 
 
 def test_a_section_reads_only_the_results_it_requires():
-    earlier = Earlier(section("coupling"), {"drive": "the drive", "accuracy": "the chain"})
-    assert earlier["drive"] == "the drive" and earlier.get("gearbox") is None  # required; no gearbox in this case
+    earlier = Earlier(section("coupling"), {"axis": "the axis", "accuracy": "the chain"})
+    assert earlier["axis"] == "the axis" and earlier.get("gearbox") is None  # required; no gearbox in this case
     with pytest.raises(LookupError, match="section coupling reads the results of accuracy but does not require it"):
         earlier.get("accuracy")
 
 
 def test_a_section_is_evaluated_with_what_it_requires_only():
-    # The gearbox needs the motor the case is checked with (the drive) and nothing else.
-    assert set(results_of(read_case(EXAMPLE), ("gearbox",))) == {"drive", "gearbox"}
+    # The gearbox needs the motor the case is checked with (the axis) and nothing else.
+    assert set(results_of(read_case(EXAMPLE), ("gearbox",))) == {"axis", "gearbox"}
     # A coupling needs the gearbox; the accuracy chain both; the motor's side the three.
-    assert set(results_of(read_case(EXAMPLE), ("accuracy",))) == {"drive", "gearbox", "coupling", "accuracy"}
+    assert set(results_of(read_case(EXAMPLE), ("accuracy",))) == {"axis", "gearbox", "coupling", "accuracy"}
     assert list(evaluate(read_case(EXAMPLE), "motor").sections) == ["gearbox", "coupling", "motor"]
 
 
-def test_the_motor_chosen_from_the_catalog_is_the_drives_result():
+def test_the_motor_chosen_from_the_catalog_is_the_axis_result():
     # The example chooses its motor from catalogs/motors.csv: the case as checked has its ratings,
-    # and every section that requires the drive sees them.
+    # and every section that requires the axis sees them.
     case = read_case(DERIVED_EXAMPLE)
     assert case.motor_peak_torque is None
     results = evaluate(case)
-    drive = results.every["drive"]
-    assert drive.chosen == results["motor"].selection.selected and results.case is drive.case
+    axis = results.every["axis"]
+    assert axis.chosen == results["motor"].selection.selected and results.case is axis.case
     motors = results["motor"].selection
     assert results.case.motor_peak_torque == motors.catalog["M_max"][motors.order[0]]
     # The round that settled the choice evaluated the gearbox, coupling and motor with that motor:
     # the evaluation takes those results, it does not make them again.
-    assert all(results.every[name] is drive.evaluated[name] for name in ("gearbox", "coupling", "motor"))
+    assert all(results.every[name] is axis.evaluated[name] for name in ("gearbox", "coupling", "motor"))
 
 
 def test_a_bad_key_of_a_sections_own_table_is_an_error_when_the_case_is_read(write_case):

@@ -18,7 +18,7 @@ from calc import Q_
 from calc.domain.motor import MotorLoad
 from calc.domain.ratios import pick_ratio
 from calc.sections.case import read_case
-from calc.sections.drive import motor_catalog
+from calc.sections.axis import motor_catalog
 from calc.sections.pairs import search_pairs
 
 from ..conftest import DERIVED_EXAMPLE, RESULTS_SCHEMA, ROOT

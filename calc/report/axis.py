@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from ..sections.drive import SECTION
+from ..sections.axis import SECTION
 from .common import Renderer, input_row
 
 
-class DriveRenderer(Renderer):
+class AxisRenderer(Renderer):
     """The motor's peak torque and inertia, and the load's inertia where no mechanism gives it."""
 
     NAME = SECTION.NAME
@@ -19,4 +19,4 @@ class DriveRenderer(Renderer):
         return [input_row(key, q) for key, q in given if q is not None]
 
 
-RENDERER = DriveRenderer()
+RENDERER = AxisRenderer()

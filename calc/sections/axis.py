@@ -1,7 +1,7 @@
 """The motor and the load of a case (``[motor]``, ``[load]``): inputs that the gearbox, coupling
 and motor sections share, and the motor the case is checked with: its typed ratings, the part it
 names, or the motor its catalog chooses (:func:`chosen_motor`). The section writes no output of
-its own; the sections after it read the case with that motor (:class:`DriveResult`)."""
+its own; the sections after it read the case with that motor (:class:`AxisResult`)."""
 
 from __future__ import annotations
 
@@ -205,7 +205,7 @@ ROUNDS = 4
 
 
 @dataclass(frozen=True)
-class DriveResult:
+class AxisResult:
     """The case with the ratings and inertia of the motor it is checked with, and that motor where
     the catalog chose it.
 
@@ -224,7 +224,7 @@ class DriveResult:
     evaluated: dict = field(default_factory=dict, repr=False, compare=False)
 
 
-def chosen_motor(case: Case) -> DriveResult:
+def chosen_motor(case: Case) -> AxisResult:
     """The motor a catalog gives (``[motor] catalog`` without a ``part``), so that every section
     checks with that motor: the motor is ranked through the gearbox (the motor section of a
     variant of the case, :func:`calc.sections.evaluation.results_of`), the gearbox chosen with
@@ -238,7 +238,7 @@ def chosen_motor(case: Case) -> DriveResult:
 
     Returns
     -------
-    DriveResult
+    AxisResult
         The case with the chosen motor's ratings and inertia, and that motor.
 
     Raises
@@ -247,15 +247,15 @@ def chosen_motor(case: Case) -> DriveResult:
         Where the motor and the gearbox chosen in turn do not settle within :data:`ROUNDS`.
     """
     if case.motor_catalog is None or case.motor_part is not None:
-        return DriveResult(case)
+        return AxisResult(case)
     chosen, seen, trial = None, [], case
     for _ in range(ROUNDS):
-        given = {SECTION.NAME: DriveResult(trial)}
+        given = {SECTION.NAME: AxisResult(trial)}
         evaluated = results_of(trial, ("motor",), given)
         sel = evaluated["motor"].selection
         pick = str(sel.catalog.parts[sel.order[0]])
         if pick == chosen:
-            return DriveResult(trial, pick, {k: v for k, v in evaluated.items() if k not in given})
+            return AxisResult(trial, pick, {k: v for k, v in evaluated.items() if k not in given})
         chosen = pick
         seen.append(pick)
         trial = dataclasses.replace(case, **motor_ratings(sel.catalog, int(sel.order[0])))
@@ -267,7 +267,7 @@ class DriveSection(Section):
     """The motor and the load: read into the case's fields; evaluated, the motor the case is
     checked with."""
 
-    NAME = "drive"
+    NAME = "axis"
     TABLES = TABLES
     SHOWN = False
 
@@ -277,13 +277,13 @@ class DriveSection(Section):
     def applies(self, case: Case) -> bool:
         return True
 
-    def evaluate(self, case: Case, earlier) -> DriveResult:
+    def evaluate(self, case: Case, earlier) -> AxisResult:
         return chosen_motor(case)
 
-    def checked(self, case: Case, result: DriveResult) -> Case:
+    def checked(self, case: Case, result: AxisResult) -> Case:
         return result.case
 
-    def evaluated_with(self, result: DriveResult) -> dict:
+    def evaluated_with(self, result: AxisResult) -> dict:
         return result.evaluated
 
 
