@@ -67,7 +67,8 @@ def main(argv=None) -> int:
     cp.add_argument("--pdf", help="also write the table and a comparison figure as a PDF file")
     ex = sub.add_parser("export", help="write a case and its results as an IDTA 02021 submodel (AAS JSON or AASX)")
     ex.add_argument("case", help="the design-case TOML file")
-    ex.add_argument("--aas", metavar="OUT.json", help="write AAS JSON (metamodel V3.0), the motion pattern's CSV beside it")
+    ex.add_argument("--aas", metavar="OUT.json",
+                    help="write AAS JSON (metamodel V3.0), the motion pattern's CSV beside it")
     ex.add_argument("--aasx", metavar="OUT.aasx", help="write an AASX package with the case file and the CSV inside")
     ex.add_argument("--report", metavar="PDF", help="a calc report built of the case, carried in the AASX")
     im = sub.add_parser("import", help="write a case file from an IDTA 02021 submodel (AAS JSON or AASX)")

@@ -94,7 +94,8 @@ def export_environment(results, report_pdf: Path | None = None, in_package: bool
                           "application/pdf", sha256=hashlib.sha256(pdf).hexdigest()))
     data = results.to_json(None)
     motion = results.sections.get("motion")
-    requirements = [motion_pattern(results.case.title, motion, results.case.output_load, f"{stem}-motion-pattern.csv", prefix, files),
+    requirements = [motion_pattern(results.case.title, motion, results.case.output_load,
+                                   f"{stem}-motion-pattern.csv", prefix, files),
                     overall_requirements(motion)]
     elements = [
         project_information(results.case.title, case_path.stem, numbered(links)),

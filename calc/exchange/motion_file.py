@@ -80,21 +80,24 @@ def read_motion_csv(data: bytes, where: str) -> dict:
     for h in header:
         name, _, unit = h.partition(" [")
         if name not in units or unit != units[name] + "]":
-            raise CalcError(f"{where}: expected a header of 'idShort [unit]' from "
-                            f"{', '.join(f'{n} [{u}]' for n, u in ROTATIVE_COLUMNS)}; found '{h[:40]}'")
+            raise CalcError(f"{where}: expected a header of the template's 'idShort [unit]' (Time [s], "
+                            f"AngularVelocity [rad/s] ...), found '{h[:40]}'")
         names.append(name)
     missing = [n for n in NEEDED if n not in names]
     if missing:
         raise CalcError(f"{where}: expected the columns {' and '.join(NEEDED)}, found no {missing[0]}")
-    rows = [line for line in lines[1:] if line.strip()]
+    rows = [line.split(";") for line in lines[1:] if line.strip()]
+    short = next((k for k, row in enumerate(rows, start=2) if len(row) != len(names)), None)
+    if len(rows) < 2 or short is not None:
+        raise CalcError(f"{where}: expected at least two rows of {len(names)} cells each, found "
+                        f"{f'row {short} with another count' if short else f'{len(rows)} rows'}")
     try:
-        table = np.array([[float(c) for c in line.split(";")] for line in rows], dtype=float)
+        table = np.array([[float(c) for c in row] for row in rows], dtype=float)
     except ValueError:
         raise CalcError(f"{where}: expected numbers with '.' as the decimal point, found a cell that is not "
                         f"one") from None
-    if table.ndim != 2 or table.shape[0] < 2 or table.shape[1] != len(names) or not np.isfinite(table).all():
-        raise CalcError(f"{where}: expected at least two rows of {len(names)} finite numbers each, found "
-                        f"{len(rows)} rows that are not")
+    if not np.isfinite(table).all():
+        raise CalcError(f"{where}: expected finite numbers, found a cell that is not")
     if np.any(np.diff(table[:, names.index("Time")]) <= 0):
         raise CalcError(f"{where}: expected the column Time [s] to increase from row to row, found it does not")
     return {n: table[:, k] for k, n in enumerate(names)}

@@ -153,7 +153,7 @@ def import_case(opened: Opened, record_name: str) -> Imported:
     if not isinstance(file_el, aas.File) or not file_el.value:
         raise CalcError(f"{where}: the case needs {sec}.MotionSectionFile, a file with the time series; found none")
     columns = read_motion_csv(opened.read(file_el.value, f"{sec}.MotionSectionFile"),
-                              f"{opened.path}: {sec}.MotionSectionFile")
+                              f"{opened.path.name}: {sec}.MotionSectionFile")
     used |= {sec + ".MotionSectionFile"} | {p for p in flat if p.startswith(sec + ".MetadataRotativeMotionFile.")}
     record = _record(columns)
 

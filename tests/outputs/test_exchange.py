@@ -156,3 +156,162 @@ def test_the_motors_thermal_utilization_is_the_winding_models_where_given():
     del motor["thermal"]
     values = {s.id_short: s.value for s in component("motor", motor).statements}
     assert float(values["MaxThermalUtilizationPercentage"]) == pytest.approx(40.0)
+
+
+# Hostile files: one sentence naming the file and element, exit status 2, and nothing written.
+
+SHORT_CSV = "Time [s];AngularVelocity [rad/s];LoadTorque [Nm]\n0;0;1\n0.5;2;1\n1;0;1\n"
+
+
+@pytest.fixture(scope="module")
+def exported(results):
+    """The indexing table's environment as JSON, its motion file replaced by a short one."""
+    ex = export_environment(results["indexing-table"])
+    return json.loads(package.verified_json(ex.environment))
+
+
+def _element(env: dict, path: str) -> dict:
+    elements = env["submodels"][0]["submodelElements"]
+    node = None
+    for name in path.split("."):
+        node = next(e for e in elements if e["idShort"] == name)
+        elements = node.get("statements") or node.get("value") or []
+    return node
+
+
+def _write(tmp_path, env: dict, csv: str = SHORT_CSV, csv_name: str = "indexing-table-motion-pattern.csv"):
+    (tmp_path / csv_name).write_text(csv, encoding="utf-8")
+    (tmp_path / "in.json").write_text(json.dumps(env), encoding="utf-8")
+    return tmp_path / "in.json"
+
+
+def _refused(tmp_path, source, capsys, match: str):
+    out = tmp_path / "case.toml"
+    assert main(["import", str(source), "-o", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and len(err) <= 300 + len("error: "), err
+    assert match in err, err
+    assert not out.exists() and not (tmp_path / "case.record.csv").exists()
+
+
+def _mutated(exported, path, **changes):
+    env = copy.deepcopy(exported)
+    _element(env, path).update(changes)
+    return env
+
+
+HOSTILE_ENV = {
+    "a number that is not one": (f"{SECTION}.MomentOfInertiaOfLoad", {"value": "heavy"}, "expected a number"),
+    "a number not finite": (f"{SECTION}.MomentOfInertiaOfLoad", {"value": "INF"}, "expected a finite number"),
+    "a file leaving the folder": (f"{SECTION}.MotionSectionFile", {"value": "../../etc/passwd"},
+                                  "expected a file beside the AAS file"),
+    "a second section": ("ApplicationRequirements.MotionPattern.MotionPatternSections",
+                         {"value": []}, "needs one"),
+}
+
+
+@pytest.mark.parametrize("case", HOSTILE_ENV, ids=list(HOSTILE_ENV))
+def test_a_hostile_value_gets_one_sentence_and_nothing_written(exported, case, tmp_path, capsys):
+    path, change, match = HOSTILE_ENV[case]
+    _refused(tmp_path, _write(tmp_path, _mutated(exported, path, **change)), capsys, match)
+
+
+def test_a_missing_file_element_and_a_missing_inertia_are_named(exported, tmp_path, capsys):
+    env = copy.deepcopy(exported)
+    section = _element(env, SECTION)
+    section["value"] = [e for e in section["value"] if e["idShort"] != "MotionSectionFile"]
+    _refused(tmp_path, _write(tmp_path, env), capsys, "needs " + SECTION + ".MotionSectionFile")
+    env = copy.deepcopy(exported)
+    section = _element(env, SECTION)
+    section["value"] = [e for e in section["value"] if e["idShort"] != "MomentOfInertiaOfLoad"]
+    _refused(tmp_path, _write(tmp_path, env, "Time [s];AngularVelocity [rad/s]\n0;0\n1;1\n"), capsys,
+             "MomentOfInertiaOfLoad or a LoadTorque column")
+
+
+def test_wrong_types_and_a_missing_submodel_are_named(exported, tmp_path, capsys):
+    env = copy.deepcopy(exported)
+    env["submodels"][0]["submodelElements"] = "not a list"
+    _refused(tmp_path, _write(tmp_path, env), capsys, "expected an AAS environment")
+    env = copy.deepcopy(exported)
+    env["submodels"][0]["semanticId"]["keys"][0]["value"] = "https://example.org/other"
+    _refused(tmp_path, _write(tmp_path, env), capsys, "expected a submodel with semanticId")
+    (tmp_path / "in.json").write_text("{not json", encoding="utf-8")
+    _refused(tmp_path, tmp_path / "in.json", capsys, "text that is not JSON")
+    _refused(tmp_path, tmp_path / "none.json", capsys, "found no file")
+
+
+BAD_CSV = {
+    "a wrong header": ("Zeit [s];AngularVelocity [rad/s]\n0;0\n1;1\n", "expected a header"),
+    "a wrong unit": ("Time [ms];AngularVelocity [rad/s]\n0;0\n1;1\n", "expected a header"),
+    "no speed": ("Time [s];LoadTorque [Nm]\n0;0\n1;1\n", "found no AngularVelocity"),
+    "a comma as decimal point": ("Time [s];AngularVelocity [rad/s]\n0;0\n1;1,5\n", "decimal point"),
+    "a short row": ("Time [s];AngularVelocity [rad/s]\n0;0\n1\n", "at least two rows"),
+    "times going back": ("Time [s];AngularVelocity [rad/s]\n0;0\n1;1\n0.5;0\n", "to increase"),
+    "bytes not UTF-8": (b"Time [s];AngularVelocity [rad/s]\n0;\xff\n", "not UTF-8"),
+    "a cell not finite": ("Time [s];AngularVelocity [rad/s]\n0;0\n1;nan\n", "finite numbers"),
+    "10^6 rows": ("Time [s];AngularVelocity [rad/s]\n" + "1;0\n" * 1_000_000, "at most 200000 rows"),
+}
+
+
+@pytest.mark.parametrize("case", BAD_CSV, ids=list(BAD_CSV))
+def test_a_hostile_motion_file_gets_one_sentence_and_nothing_written(exported, case, tmp_path, capsys):
+    csv, match = BAD_CSV[case]
+    source = _write(tmp_path, exported, "")
+    (tmp_path / "indexing-table-motion-pattern.csv").write_bytes(csv if isinstance(csv, bytes) else csv.encode())
+    _refused(tmp_path, source, capsys, match)
+
+
+def test_a_motion_file_too_large_is_refused_before_it_is_read(exported, tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr("calc.exchange.motion_file.MAX_BYTES", 10)
+    _refused(tmp_path, _write(tmp_path, exported), capsys, "found a file of")
+
+
+def _aasx(tmp_path, results, edit):
+    """The indexing table's AASX with its parts edited: ``edit(parts)`` changes the dict in place."""
+    write_aasx(export_environment(results["indexing-table"], in_package=True), tmp_path / "x.aasx")
+    with zipfile.ZipFile(tmp_path / "x.aasx") as z:
+        parts = {i.filename: z.read(i) for i in z.infolist()}
+    edit(parts)
+    with zipfile.ZipFile(tmp_path / "x.aasx", "w") as z:
+        for name, data in parts.items():
+            z.writestr(name, data)
+    return tmp_path / "x.aasx"
+
+
+def _leave_package(parts):
+    spec = json.loads(parts["aasx/sizing/sizing.aas.json"])
+    _element(spec, f"{SECTION}.MotionSectionFile")["value"] = "/aasx/files/../../../secret.csv"
+    parts["aasx/sizing/sizing.aas.json"] = json.dumps(spec).encode()
+
+
+def test_a_hostile_package_gets_one_sentence_and_nothing_written(results, tmp_path, capsys, monkeypatch):
+    _refused(tmp_path, _aasx(tmp_path, results, _leave_package), capsys, "expected a file inside the package")
+    _refused(tmp_path, _aasx(tmp_path, results, lambda p: p.pop("aasx/_rels/aasx-origin.rels")), capsys,
+             "origin names an AAS JSON part")
+    (tmp_path / "x.aasx").write_bytes(b"not a zip")
+    _refused(tmp_path, tmp_path / "x.aasx", capsys, "not one")
+    monkeypatch.setattr(package, "MAX_BYTES", 1000)
+    _refused(tmp_path, _aasx(tmp_path, results, lambda p: None), capsys, "unpacked")
+    _refused(tmp_path, _write(tmp_path, {"submodels": [], "padding": "x" * 1000}), capsys, "at most 1000 bytes")
+
+
+def test_export_names_a_missing_option_and_a_missing_report(tmp_path, capsys):
+    case = str(ROOT / "cases" / "indexing-table.toml")
+    assert main(["export", case]) == 2
+    assert "expected --aas OUT.json or --aasx OUT.aasx" in capsys.readouterr().err
+    assert main(["export", case, "--aasx", str(tmp_path / "x.aasx"), "--report", str(tmp_path / "no.pdf")]) == 2
+    assert "expected a calc report PDF" in capsys.readouterr().err
+    assert not (tmp_path / "x.aasx").exists()
+
+
+def test_export_writes_the_aasx_with_case_and_report(tmp_path, capsys):
+    pdf = tmp_path / "indexing-table.pdf"
+    pdf.write_bytes(b"%PDF-1.4 a report stands here")
+    case = str(ROOT / "cases" / "indexing-table.toml")
+    assert main(["export", case, "--aasx", str(tmp_path / "x.aasx"), "--report", str(pdf)]) == 0
+    with zipfile.ZipFile(tmp_path / "x.aasx") as z:
+        names = set(z.namelist())
+    assert {"aasx/files/indexing-table.toml", "aasx/files/indexing-table.pdf",
+            "aasx/files/indexing-table-motion-pattern.csv"} <= names
+    flat = flatten(sizing_submodel(open_aas(tmp_path / "x.aasx")).submodel_elements)
+    assert flat["SizingProjectInformation.SizingProjectLink02"].value == "/aasx/files/indexing-table.pdf"
