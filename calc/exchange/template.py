@@ -10,8 +10,8 @@ from functools import lru_cache
 
 from ..data.catalog import CATALOG_DIR
 
-#: The template file stored, version 1.0.1 (metamodel V3.0 JSON); 1.0.2 changes only the
-#: qualifiers' kind (readings I11).
+#: The template file stored, version 1.0.1 (metamodel V3.0 JSON); 1.0.2 changes the qualifiers'
+#: kind, which an instance does not carry (readings I11).
 TEMPLATE_FILE = CATALOG_DIR / "idta-02021" / "IDTA 02021-1-0-1_Template_Sizing of Power Drive Trains.json"
 #: The submodel's semanticId as the template gives it.
 SUBMODEL_SEMANTIC_ID = "https://admin-shell.io/idta/PowerDriveTrainSizing/1/0"
