@@ -13,6 +13,32 @@ from .package import open_aas, write_aasx, write_json
 from .reader import import_case
 
 
+def export_beside(case: Path) -> Path:
+    """The case's IDTA 02021 AASX written beside the case file (``case.aasx``), for the review page.
+
+    Parameters
+    ----------
+    case : pathlib.Path
+        The case file.
+
+    Returns
+    -------
+    pathlib.Path
+        The AASX written.
+
+    Raises
+    ------
+    CalcError
+        For a case that cannot be read or evaluated, or a file that cannot be written.
+    """
+    case = Path(case)
+    exported = export_environment(evaluate(read_case(case)), in_package=True)
+    try:
+        return write_aasx(exported, case.with_suffix(".aasx"))
+    except OSError as exc:
+        raise CalcError(f"{case.with_suffix('.aasx')}: the AASX cannot be written ({exc.strerror})") from None
+
+
 def run_exchange(args) -> str:
     """Run ``export`` or ``import`` with the parsed command line.
 

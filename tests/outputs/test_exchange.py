@@ -315,3 +315,22 @@ def test_export_writes_the_aasx_with_case_and_report(tmp_path, capsys):
             "aasx/files/indexing-table-motion-pattern.csv"} <= names
     flat = flatten(sizing_submodel(open_aas(tmp_path / "x.aasx")).submodel_elements)
     assert flat["SizingProjectInformation.SizingProjectLink02"].value == "/aasx/files/indexing-table.pdf"
+
+
+def test_the_review_page_saves_the_aasx_beside_the_case(tmp_path):
+    import shutil
+
+    from calc.review import DesignReview
+    from calc.review.panel import save_aasx
+
+    (tmp_path / "cases").mkdir()
+    shutil.copy(ROOT / "cases" / "indexing-table.toml", tmp_path / "cases")
+    shutil.copytree(ROOT / "data", tmp_path / "data")
+    panel = DesignReview(tmp_path / "cases" / "indexing-table.toml")
+    (tmp_path / "cases" / "indexing-table.aasx").mkdir()  # a folder in the way: said, not raised
+    assert save_aasx(panel) is None and "no AASX" in panel.kept.value
+    (tmp_path / "cases" / "indexing-table.aasx").rmdir()
+    out = save_aasx(panel)
+    assert out == tmp_path / "cases" / "indexing-table.aasx" and "saved indexing-table.aasx" in panel.kept.value
+    flat = flatten(sizing_submodel(open_aas(out)).submodel_elements)
+    assert flat["SizingProjectInformation.SizingProjectLink"].value == "/aasx/files/indexing-table.toml"
