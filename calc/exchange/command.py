@@ -8,6 +8,7 @@ from pathlib import Path
 from ..core.errors import CalcError
 from ..sections import evaluate
 from ..sections.case import read_case
+from . import aasx_beside
 from .build import export_environment
 from .package import open_aas, write_aasx, write_json
 from .reader import import_case
@@ -31,12 +32,12 @@ def export_beside(case: Path) -> Path:
     CalcError
         For a case that cannot be read or evaluated, or a file that cannot be written.
     """
-    case = Path(case)
+    out = aasx_beside(case)
     exported = export_environment(evaluate(read_case(case)), in_package=True)
     try:
-        return write_aasx(exported, case.with_suffix(".aasx"))
+        return write_aasx(exported, out)
     except OSError as exc:
-        raise CalcError(f"{case.with_suffix('.aasx')}: the AASX cannot be written ({exc.strerror})") from None
+        raise CalcError(f"{out}: the AASX cannot be written ({exc.strerror})") from None
 
 
 def run_exchange(args) -> str:

@@ -334,3 +334,20 @@ def test_the_review_page_saves_the_aasx_beside_the_case(tmp_path):
     assert out == tmp_path / "cases" / "indexing-table.aasx" and "saved indexing-table.aasx" in panel.kept.value
     flat = flatten(sizing_submodel(open_aas(out)).submodel_elements)
     assert flat["SizingProjectInformation.SizingProjectLink"].value == "/aasx/files/indexing-table.toml"
+
+
+def test_the_reports_title_block_names_the_aasx_beside_the_case_with_its_hash(tmp_path):
+    import hashlib
+    import shutil
+
+    from calc.exchange.command import export_beside
+    from calc.report import build_report
+
+    (tmp_path / "cases").mkdir()
+    shutil.copy(ROOT / "cases" / "ball-screw-direct.toml", tmp_path / "cases")
+    case = tmp_path / "cases" / "ball-screw-direct.toml"
+    assert "IDTA 02021 export" not in [what for what, _, _ in build_report(case).files]
+    out = export_beside(case)
+    files = {what: (shown, digest) for what, shown, digest in build_report(case).files}
+    assert files["IDTA 02021 export"][1] == hashlib.sha256(out.read_bytes()).hexdigest()
+    assert files["IDTA 02021 export"][0].endswith("ball-screw-direct.aasx")
