@@ -17,7 +17,7 @@ from calc.core.errors import CalcError
 from calc.exchange import package
 from calc.exchange.build import export_environment
 from calc.exchange.package import open_aas, write_aasx, write_json
-from calc.exchange.reader import flatten, import_case, sizing_submodel
+from calc.exchange.reader import flatten, import_case, sizing_submodel, value_of
 from calc.exchange.sizing import component
 from calc.exchange.template import TEMPLATE_FILE
 from calc.sections import evaluate
@@ -125,6 +125,10 @@ def test_the_published_template_reads_and_names_what_the_case_needs():
     flat = flatten(sizing_submodel(opened).submodel_elements)
     assert f"{SECTION}.MetadataRotativeMotionFile.AngularVelocity" in flat
     assert "TransformationMechanism.RotraryTable" in flat  # the template's spelling, kept
+    # Every value the template holds reads (its examples: "230 VAC", "IP67", "5001xxxx-xx-x"), and the
+    # importer lists them at the head of the case it would write.
+    shown = {p: value_of(e, p) for p, e in flat.items()}
+    assert shown["ApplicationRequirements.OverallSystemRequirements.ProtectionType"] == "IP67"
     with pytest.raises(CalcError, match="needs .*MotionSectionFile"):
         import_case(opened, "record.csv")
 
