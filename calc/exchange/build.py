@@ -237,7 +237,8 @@ def mechanism(motion, stem: str):
 
     statements = [number(p + "Efficiency", q(mech.eta, "")), number(p + "InertiaMotorSide", q(mech.own_inertia,
                                                                                              "kg*m**2")),
-                  number(p + "NoLoadTorque", q(mech.friction_torque, "N*m")),
+                  number(p + "NoLoadTorque", q(mech.friction_torque if mech.type == "rotary" else mech.drag_torque,
+                                                   "N*m")),
                   number(p + "InclinationAngle", q(mech.incline, "rad"))]
     if name != "RotraryTable":
         statements += [number(p + "FrictionCoefficient", q(mech.friction_coefficient, "")),
