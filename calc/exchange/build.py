@@ -235,11 +235,10 @@ def mechanism(motion, stem: str):
     def q(x, unit):
         return None if x is None else Q_(x).m_as(unit)
 
-    statements = [number(p + "Efficiency", q(mech.eta, "")), number(p + "InertiaMotorSide", q(mech.own_inertia,
-                                                                                             "kg*m**2")),
-                  number(p + "NoLoadTorque", q(mech.friction_torque if mech.type == "rotary" else mech.drag_torque,
-                                                   "N*m")),
-                  number(p + "InclinationAngle", q(mech.incline, "rad"))]
+    own = q(mech.own_inertia, "kg*m**2")
+    no_load = q(mech.friction_torque if mech.type == "rotary" else mech.drag_torque, "N*m")
+    statements = [number(p + "Efficiency", q(mech.eta, "")), number(p + "InertiaMotorSide", own),
+                  number(p + "NoLoadTorque", no_load), number(p + "InclinationAngle", q(mech.incline, "rad"))]
     if name != "RotraryTable":
         statements += [number(p + "FrictionCoefficient", q(mech.friction_coefficient, "")),
                        number(p + "FeedConstant", q(mech.lead, "m"))]
