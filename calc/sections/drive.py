@@ -56,7 +56,25 @@ SATURATION = "I = T / k_T: saturation near the peak current not modelled (the pe
 
 @dataclass
 class DriveInputs:
-    """``[drive]`` as read with the case."""
+    """``[drive]`` as read with the case.
+
+    Parameters
+    ----------
+    table : dict
+        The table as written.
+    catalog : str or list of str or None
+        The drive catalog; None for a typed drive.
+    part : str or None
+        The drive named.
+    typed : dict
+        A typed drive's ratings by key (pint quantities).
+    chopper_voltage : pint.Quantity [V] or None
+        The brake chopper's switch-on voltage.
+    resistor : dict
+        ``[drive.brake_resistor]``'s values by key (pint quantities); empty without one.
+    where : str
+        The file and the table, for errors.
+    """
 
     table: dict
     catalog: object
@@ -608,7 +626,7 @@ def drive_catalog(case: Case, given: DriveInputs, m: MotorElectrical):
     if given.typed:
         cat = typed_catalog(case, given.typed)
         U = given.typed.get("dc_link_voltage")
-        if U is not None and case.motor_dc_link is not None and abs(U.m_as("V") - case.motor_dc_link.m_as("V")) > 1e-6:
+        if U is not None and case.motor_dc_link is not None and not np.isclose(U.m_as("V"), case.motor_dc_link.m_as("V")):
             raise CalcError(f"{given.where}.dc_link_voltage: expected the DC link of motor.dc_link_voltage "
                             f"{case.sections[NAME]['dc_link_voltage']!r} as well, found another")
         where = f"{given.where}.dc_link_voltage"
