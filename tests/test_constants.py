@@ -46,7 +46,8 @@ APART = {
 #: Module-level names holding a standard's table as printed (ISO 286-1 in calc/domain/fits.py; the AC
 #: supply classes of drives in calc/domain/drive.py):
 #: their entries are data, not the constants of a rule.
-TABLES = {"VOLTAGE_CLASSES", "SIZE_BANDS_MM", "STANDARD_TOLERANCES_UM", "SHAFT_DEVIATIONS_UM", "GRADES", "_K_GRADES", "EXCEPTIONS_UM"}
+TABLES = {"VOLTAGE_CLASSES", "SIZE_BANDS_MM", "STANDARD_TOLERANCES_UM", "SHAFT_DEVIATIONS_UM", "GRADES", "_K_GRADES",
+          "EXCEPTIONS_UM"}
 
 
 def literals(source: str) -> list[tuple[float, int]]:

@@ -585,6 +585,7 @@ class DriveSection(Section):
         I_peak = None if I is None else float(I.max())
         U_motor = m.U_DC if m.U_DC is not None else _value(cat, "U_DC", 0, "V") if cat.name == "typed" else None
         sel = select_drives(cat, I_rms, I_peak, dt, I, U_motor, no_current)
+        _resistor_above_minimum(given, sel.catalog)
         segment, names = motor.segments
         phase_of = [names[s] for s in segment]
         braking = braking_of(given, sel.catalog, int(sel.order[0]), dt, T_1 * speed, phase_of, float(dt.sum()))
@@ -598,6 +599,14 @@ class DriveSection(Section):
         catalog = "typed" if cat.name == "typed" else ([display_path(p) for p, _ in cat.members] if len(cat.members) > 1
                                                         else display_path(cat.path))
         return DriveResult(sel, m, I_rms, I_peak, braking, winding, catalog, notes)
+
+
+def _resistor_above_minimum(given: DriveInputs, cat) -> None:
+    """A resistor the case gives for a drive it names: at least the drive's ``R_min``."""
+    R_min = _value(cat, "R_min", 0, "ohm") if given.part is not None else None
+    if R_min is not None and given.resistor and given.resistor["resistance"].m_as("ohm") < R_min:
+        raise CalcError(f"{given.where}.brake_resistor.resistance: expected at least the R_min of {given.part}, "
+                        f"{R_min:g} ohm, found {given.table['brake_resistor']['resistance']!r}")
 
 
 def drive_catalog(case: Case, given: DriveInputs, m: MotorElectrical):
@@ -626,9 +635,10 @@ def drive_catalog(case: Case, given: DriveInputs, m: MotorElectrical):
     if given.typed:
         cat = typed_catalog(case, given.typed)
         U = given.typed.get("dc_link_voltage")
-        if U is not None and case.motor_dc_link is not None and not np.isclose(U.m_as("V"), case.motor_dc_link.m_as("V")):
-            raise CalcError(f"{given.where}.dc_link_voltage: expected the DC link of motor.dc_link_voltage "
-                            f"{case.sections[NAME]['dc_link_voltage']!r} as well, found another")
+        motor_U = case.motor_dc_link
+        if U is not None and motor_U is not None and not np.isclose(U.m_as("V"), motor_U.m_as("V")):
+            raise CalcError(f"{given.where}.dc_link_voltage: expected the DC link of motor.dc_link_voltage, "
+                            f"{motor_U.m_as('V'):g} V, found {given.table['dc_link_voltage']!r}")
         where = f"{given.where}.dc_link_voltage"
     else:
         cat = load_catalogs(given.catalog, case.folder, f"{given.where}.catalog", SCHEMA)
