@@ -72,3 +72,32 @@ def power_figure(times, powers: dict, title: str):
     ax.grid(True, color="#dddddd", linewidth=0.6)
     ax.legend(fontsize=8, loc="best")
     return fig
+
+
+def machine_pdf(summary: str, times, powers: dict, path) -> None:
+    """A machine's PDF: its summary as text on the first page, the DC bus's power on the second.
+
+    Parameters
+    ----------
+    summary : str
+        The machine's text summary.
+    times : numpy.ndarray [s]
+        The time base's edges.
+    powers : dict
+        Each axis's power and their sum [W] over the steps.
+    path : str or pathlib.Path
+        The PDF file.
+
+    Returns
+    -------
+    None
+    """
+    from matplotlib.backends.backend_pdf import PdfPages
+    from matplotlib.figure import Figure
+
+    text = Figure(figsize=(8.27, 11.69))
+    text.text(0.05, 0.97, summary, family="monospace", fontsize=6.5, va="top", wrap=True)
+    with PdfPages(path) as pdf:
+        pdf.savefig(text)
+        pdf.savefig(power_figure(times, powers, "Power of each axis at the shared DC bus and their sum "
+                                                "(negative: braking)"))
