@@ -97,7 +97,7 @@ def test_the_sum_from_the_edges_is_the_sum_of_the_rows():
 
 def test_the_shipped_machine(capsys, tmp_path):
     pdf = tmp_path / "machine.pdf"
-    code = main(["machine", str(ROOT / "cases" / "machine-two-axes.toml"), "--json", "--pdf", str(pdf)])
+    code = main(["machine", str(ROOT / "cases" / "machines" / "two-axes.toml"), "--json", "--pdf", str(pdf)])
     out = json.loads(capsys.readouterr().out)
     assert code == 0 and pdf.stat().st_size > 0
     assert [a["case"] for a in out["axes"]] == ["cases/ball-screw-direct.toml", "cases/indexing-table.toml"]
