@@ -57,7 +57,7 @@ class DriveRenderer(Renderer):
                 + f" of each ({b.dc_link_from}); {b.energy_per_cycle:.4g} J per cycle are left for a resistor, "
                 f"{b.average_power:.4g} W over the cycle; the peak braking power is {b.peak_power:.4g} W.")
         return [r"\subsection{The servo drive}",
-                step_block(f"Motor current at the peak torque, k_T {r.motor.k_T_from}", peak, ""),
+                step_block(f"Motor current at the peak torque (k_T: {r.motor.k_T_from})", peak, ""),
                 prose(f"RMS current over the cycle: {r.current_rms:.4g} A. " + text)]
 
     def checks(self, report) -> list[str]:
