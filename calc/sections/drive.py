@@ -516,7 +516,7 @@ class DriveResult(Result):
             lines.append(f"  {k:>3}. {c.part:<28} {verdict:<11}" + (f"  {'; '.join(c.reasons)}" if c.reasons else ""))
         b = self.braking
         link = "n/a" if b.dc_link_energy is None else f"{b.dc_link_energy:.4g} J"
-        lines.append(f"  Braking: {len(b.events)} events, DC link absorbs {link} each; left for a resistor "
+        lines.append(f"  Braking: {len(b.events)} event{'s' if len(b.events) != 1 else ''}, DC link absorbs {link} each; left for a resistor "
                      f"{b.energy_per_cycle:.4g} J per cycle, {b.average_power:.4g} W average, "
                      f"peak braking {b.peak_power:.4g} W")
         lines += [f"    {e.phase or 'braking'} at {e.start:.4g} s for {e.duration:.4g} s: {e.energy:.4g} J"
@@ -583,8 +583,7 @@ class DriveSection(Section):
         I = None if no_current else np.abs(I_ph.si(T_1=T_1, k_T=m.k_T))
         I_rms = None if I is None else float(np.sqrt((I**2 * dt).sum() / dt.sum()))
         I_peak = None if I is None else float(I.max())
-        U_motor = m.U_DC if m.U_DC is not None else _value(cat, "U_DC", 0, "V") if cat.name == "typed" else None
-        sel = select_drives(cat, I_rms, I_peak, dt, I, U_motor, no_current)
+        sel = select_drives(cat, I_rms, I_peak, dt, I, m.U_DC, no_current)
         _resistor_above_minimum(given, sel.catalog)
         segment, names = motor.segments
         phase_of = [names[s] for s in segment]
