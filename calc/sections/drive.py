@@ -573,8 +573,7 @@ class DriveSection(Section):
         given = self.inputs(case)
         motor, checked = earlier.get("motor"), earlier["axis"].case
         if motor is None or motor.load is None:
-            raise CalcError(f"{given.where}: the drive is checked against the motor's torques over the cycle, but the "
-                            f"case gives no motor whose torques are known ([motor] with its inertia or a catalog)")
+            return unknown_torques(case, given, motor)
         m = motor_electrical(checked, motor)
         cat = drive_catalog(case, given, m)
         dt, speed, T_1 = motor._at_motor
@@ -598,6 +597,36 @@ class DriveSection(Section):
         catalog = "typed" if cat.name == "typed" else ([display_path(p) for p, _ in cat.members] if len(cat.members) > 1
                                                         else display_path(cat.path))
         return DriveResult(sel, m, I_rms, I_peak, braking, winding, catalog, notes)
+
+
+def unknown_torques(case: Case, given: DriveInputs, motor) -> DriveResult:
+    """The drive's result where the motor's torques over the cycle are not known (no motor, or one
+    whose rotor term lacks an inertia): every check not made, saying why.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    given : DriveInputs
+        ``[drive]`` as read.
+    motor : calc.sections.motor.MotorResult or None
+        The motor section's result; None where the case has no motor.
+
+    Returns
+    -------
+    DriveResult
+        The drives listed, none chosen; the braking not checked.
+    """
+    why = ("the case gives no motor" if motor is None
+           else "; ".join(n for n in motor.notes if "needs" in n) or "the motor's torques are not known")
+    reason = f"the drive needs the motor's torques over the cycle: {why}"
+    m = MotorElectrical("no motor" if motor is None else "the case's motor", None, "", None)
+    cat = drive_catalog(case, given, m)
+    sel = select_drives(cat, None, None, np.ones(1), None, None, reason)
+    t_cycle = float(case.profile.t_cycle.m_as("s"))
+    braking = Braking([], None, "not known", np.zeros(0), t_cycle, {},
+                      [scalar_check("E_C", "braking energy against the DC link", None, None, "J", reason)], [], [])
+    return DriveResult(sel, m, None, None, braking, None, "typed" if cat.name == "typed" else given.catalog, [reason])
 
 
 def _resistor_above_minimum(given: DriveInputs, cat) -> None:

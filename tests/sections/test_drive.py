@@ -14,6 +14,8 @@ from calc.sections import evaluate, read_case
 from ..conftest import DERIVED_EXAMPLE, ROOT, run
 
 DIRECT = ROOT / "cases" / "ball-screw-direct.toml"
+#: The direct-drive example without its own [drive] table.
+DIRECT_TEXT = DIRECT.read_text().split("\n# The servo drive")[0]
 RESISTOR = '\n[drive.brake_resistor]\nresistance = "100 ohm"\ncontinuous_power = "30 W"\npeak_power = "1.5 kW"\n'
 
 # A typed cycle driven directly (ratio and efficiency 1, no rotor term): the motor torque is the
@@ -64,7 +66,7 @@ def every_check_made_or_named(checks) -> None:
 
 
 def test_the_direct_drive_case_sizes_its_drive(capsys, write_case):
-    path = write_case(DIRECT.read_text() + '\n[drive]\ncatalog = "drives"\n' + RESISTOR)
+    path = write_case(DIRECT_TEXT + '\n[drive]\ncatalog = "drives"\n' + RESISTOR)
     d = drive_json(capsys, path)["drive"]
     # SGM7J-02A (k_T 0.444 N·m/A, 200 V class): 1.061 N·m peak / 0.444 = 2.39 A; the smallest 230 V drive
     # with published currents is Moog G394-030 (3 A continuous, 9 A peak)
@@ -148,7 +150,7 @@ def test_the_winding_against_its_closed_form_for_a_square_cycle(write_case):
                                                                        "resistor needs its resistance"),
 ])
 def test_bad_drive_tables_are_one_sentence(write_case, extra, fragment):
-    path = write_case(DIRECT.read_text() + extra)
+    path = write_case(DIRECT_TEXT + extra)
     with pytest.raises(CalcError) as err:
         read_case(path)
     assert str(path) in str(err.value) and fragment in str(err.value)
@@ -156,33 +158,36 @@ def test_bad_drive_tables_are_one_sentence(write_case, extra, fragment):
 
 
 def test_a_drive_and_a_motor_of_different_voltage_classes_forced_together(write_case):
-    path = write_case(DIRECT.read_text() + '\n[drive]\npart = "TGZ-S-400-3/9"\n')
+    path = write_case(DIRECT_TEXT + '\n[drive]\npart = "TGZ-S-400-3/9"\n')
     with pytest.raises(CalcError, match=r"drive.part: a drive of the 380-480 V AC class \(U_DC = 565 V\) and motor "
                                         r"SGM7J-02A of the 200-240 V AC class \(U_DC = 283 V\) forced together"):
         evaluate(read_case(path))
 
 
 def test_typed_dc_link_voltages_must_agree(write_case):
-    text = DIRECT.read_text().replace("max_inertia_ratio = 10", 'max_inertia_ratio = 10\ndc_link_voltage = "283 V"')
+    text = DIRECT_TEXT.replace("max_inertia_ratio = 10", 'max_inertia_ratio = 10\ndc_link_voltage = "283 V"')
     path = write_case(text + '\n[drive]\nrated_current = "5 A"\npeak_current = "9 A"\ndc_link_voltage = "325 V"\n')
     with pytest.raises(CalcError, match=r"drive.dc_link_voltage: expected the DC link of motor.dc_link_voltage, "
                                         r"283 V, found '325 V'"):
         evaluate(read_case(path))
 
 
-def test_a_drive_without_a_motor_is_named(write_case):
+def test_a_drive_without_the_motors_torques_makes_no_check(write_case):
     path = write_case(TYPED.replace("[motor]", "[gearbox]\nratio = 5\n[motor_removed]", 1).split("[motor_removed]")[0]
                       + "[[profile]]" + TYPED.split("[[profile]]", 1)[1])
-    with pytest.raises(CalcError, match=r"drive: the drive is checked against the motor's torques over the cycle, "
-                                        r"but the case gives no motor"):
-        evaluate(read_case(path))
+    results = evaluate(read_case(path))
+    d = results["drive"].to_json()
+    assert d["selected"] is None and d["current_rms"] is None
+    assert all(k["passes"] is None and "the drive needs the motor's torques over the cycle: the case gives no motor"
+               in k["not_made"] for k in d["checks"])
+    assert results["drive"].verdict().passes is None
 
 
 def test_a_named_resistor_below_the_drives_minimum(write_case, tmp_path):
     head = (ROOT / "catalogs" / "drives.csv").read_text(encoding="utf-8").splitlines()[0]
     (tmp_path / "mine.csv").write_text(f"{head}\nD-1,Maker,F,230 V AC,325,5,15,5,,,,,,40,,,a datasheet\n",
                                        encoding="utf-8")
-    path = write_case(DIRECT.read_text() + '\n[drive]\ncatalog = "mine.csv"\npart = "D-1"\n' + RESISTOR.replace(
+    path = write_case(DIRECT_TEXT + '\n[drive]\ncatalog = "mine.csv"\npart = "D-1"\n' + RESISTOR.replace(
         '"100 ohm"', '"33 ohm"'))
     with pytest.raises(CalcError, match=r"drive.brake_resistor.resistance: expected at least the R_min of D-1, "
                                         r"40 ohm, found '33 ohm'"):
