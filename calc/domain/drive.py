@@ -286,7 +286,7 @@ def select_drives(cat, I_rms, I_peak, dt, I_samples, U_motor, no_current: str | 
     if U_motor is None:
         notes.append("the voltage class is not checked: the motor's DC-link voltage is not known")
     checks = drive_checks(cat, I_rms, I_peak, t_above, U_motor, no_current)
-    passes = np.logical_and.reduce([c.passes for c in checks])
+    passes = np.logical_and.reduce([c.passes for c in checks if c.made] or [np.ones(len(cat), bool)])
     if no_current:
         worst = np.full(len(cat), np.nan)
     else:  # the margin of the current's checks
