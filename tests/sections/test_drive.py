@@ -192,3 +192,21 @@ def test_a_named_resistor_below_the_drives_minimum(write_case, tmp_path):
     with pytest.raises(CalcError, match=r"drive.brake_resistor.resistance: expected at least the R_min of D-1, "
                                         r"40 ohm, found '33 ohm'"):
         evaluate(read_case(path))
+
+
+def test_a_catalog_drive_with_its_capacitance_and_internal_resistor(write_case, tmp_path):
+    # A drive row with its DC link's capacitance and an internal resistor (as Kollmorgen's AKD rows give
+    # them): 940 µF from 325 V to the chopper's 390 V absorb ½ · 940e-6 · (390² − 325²) = 21.84 J, more
+    # than each of the slide's stops (15.4 J): nothing reaches the internal 33 Ω, 50 W resistor, whose peak
+    # at the chopper voltage is 390² / 33 = 4609 W.
+    head = (ROOT / "catalogs" / "drives.csv").read_text(encoding="utf-8").splitlines()[0]
+    (tmp_path / "mine.csv").write_text(f"{head}\nD-2,Maker,F,230 V AC,325,5,15,5,,940,,33,50,,,,a datasheet\n",
+                                       encoding="utf-8")
+    path = write_case(DIRECT_TEXT + '\n[drive]\ncatalog = "mine.csv"\nchopper_voltage = "390 V"\n')
+    b = evaluate(read_case(path))["drive"].to_json()["braking"]
+    assert b["dc_link_energy"]["value"] == pytest.approx(0.5 * 940e-6 * (390**2 - 325**2), rel=1e-12)
+    assert b["dc_link_energy_from"].startswith("½ C_DC (U_on² − U_DC²)")
+    assert b["resistor_energy_per_cycle"]["value"] == 0.0
+    assert b["resistor"]["part"] == "the internal resistor of D-2"
+    avg, peak = b["checks"]
+    assert avg["passes"] is True and peak["rated"]["value"] == pytest.approx(390**2 / 33, rel=1e-12)
