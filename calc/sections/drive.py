@@ -516,7 +516,8 @@ class DriveResult(Result):
             lines.append(f"  {k:>3}. {c.part:<28} {verdict:<11}" + (f"  {'; '.join(c.reasons)}" if c.reasons else ""))
         b = self.braking
         link = "n/a" if b.dc_link_energy is None else f"{b.dc_link_energy:.4g} J"
-        lines.append(f"  Braking: {len(b.events)} event{'s' if len(b.events) != 1 else ''}, DC link absorbs {link} each; left for a resistor "
+        events = f"{len(b.events)} event{'s' if len(b.events) != 1 else ''}"
+        lines.append(f"  Braking: {events}, DC link absorbs {link} each; left for a resistor "
                      f"{b.energy_per_cycle:.4g} J per cycle, {b.average_power:.4g} W average, "
                      f"peak braking {b.peak_power:.4g} W")
         lines += [f"    {e.phase or 'braking'} at {e.start:.4g} s for {e.duration:.4g} s: {e.energy:.4g} J"
