@@ -251,8 +251,8 @@ class MachineResult:
         b = j["dc_bus"]
         lines = [self.title, "=" * len(self.title), f"Verdict: {v.word}", *[f"  {r}" for r in v.reasons], "",
                  f"Machine cycle {self.cycle:g} s, {len(self.axes)} axes on one DC bus:"]
-        lines += [f"  {a['axis']:<10} {a['case']:<40} start {a['start']['value']:g} s  {a['verdict']['passes']}"
-                  for a in j["axes"]]
+        lines += [f"  {a['axis']:<10} {a['case']:<40} start {a['start']['value']:g} s  {x.results.verdict.word}"
+                  for a, x in zip(j["axes"], self.axes)]
         lines.append(f"DC bus: peak {b['peak_power']['value']:.4g} W, average {b['average_power']['value']:.4g} W; "
                      f"{b['braking_energy_per_cycle']['value']:.4g} J given back per cycle that no axis takes; "
                      f"{b['resistor_energy_per_cycle']['value']:.4g} J to the resistor "
