@@ -312,8 +312,11 @@ class GearboxSection(Section):
         return case.ratio is not None or case.gearbox_part is not None
 
     def evaluate(self, case: Case, earlier) -> GearboxResult:
-        case = earlier["axis"].case
+        axis = earlier["axis"]
+        case = axis.case
         selection = gearbox_selection(case)
+        if axis.gearbox is not None:  # chosen with the motor (calc.sections.axis)
+            selection.put_first(axis.gearbox)
         return GearboxResult(selection, check_steps(case, selection))
 
 
