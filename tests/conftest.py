@@ -156,6 +156,7 @@ class ErrorRecord:
     and whether this session selected the whole tests/ folder (if not, ``reason`` says why)."""
 
     built: set[tuple[str, int]] = set()
+    longest: dict[tuple[str, int], str] = {}  # the longest message each site built
     deselected: int = 0
     whole_folder: bool = False
     reason: str = ""
@@ -173,7 +174,11 @@ def pytest_configure(config):
             frame = sys._getframe(1)  # the frame that called CalcError(...)
             path = Path(frame.f_code.co_filename).resolve()
             if path.is_relative_to(ROOT / "calc"):
-                ErrorRecord.built.add((path.relative_to(ROOT).as_posix(), frame.f_lineno))
+                site = (path.relative_to(ROOT).as_posix(), frame.f_lineno)
+                ErrorRecord.built.add(site)
+                message = str(args[0]) if args else ""
+                if len(message) > len(ErrorRecord.longest.get(site, "")):
+                    ErrorRecord.longest[site] = message
         inherited(self, *args, **kwargs)
 
     CalcError.__init__ = __init__

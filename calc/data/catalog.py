@@ -23,7 +23,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found, SHOWN, clipped
 from ..core.units import Q_, SI_SCALE, describe_units, kind, pretty_unit, ureg
 
 
@@ -328,7 +328,8 @@ class Catalog:
         """
         hits = np.flatnonzero(self.parts == part)
         if not len(hits):
-            raise CalcError(f"{where}: no part {part!r} in catalog {self.shown_name}; it has {some_parts(self.parts)}")
+            raise CalcError(f"{where}: no part {as_found(part)} in catalog {self.shown_name}; it has "
+                            f"{listing(self.parts, limit=6)}")
         return int(hits[0])
 
     def usable_index(self, part: str, where: str) -> int:
@@ -352,7 +353,7 @@ class Catalog:
             raise CalcError(
                 f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), kept for "
                 "reference "
-                f"but never checked: {reason}"
+                f"but never checked: {clipped(reason, 2 * SHOWN)}"
             )
         return row
 
@@ -377,23 +378,6 @@ def _read_only(a: np.ndarray) -> np.ndarray:
     """``a``, which no caller may change: it is shared by every caller of the catalog."""
     a.flags.writeable = False
     return a
-
-
-def some_parts(parts) -> str:
-    """Up to six part names for a message, and how many more there are.
-
-    Parameters
-    ----------
-    parts : numpy.ndarray of str
-        The names.
-
-    Returns
-    -------
-    str
-        ``"A, B, C and 4 more"``.
-    """
-    shown = ", ".join(map(str, parts[:6]))
-    return shown + (f" and {len(parts) - 6} more" if len(parts) > 6 else "")
 
 
 def display_path(path: Path) -> str:
@@ -462,10 +446,10 @@ def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
         The file, which exists.
     """
     if not isinstance(name_or_path, str) or not name_or_path.strip():
-        raise CalcError(f"{where}: expected a catalog name or a path to a CSV file, found {name_or_path!r}")
+        raise CalcError(f"{where}: expected a catalog name or a path to a CSV file, found {as_found(name_or_path)}")
     path = given_path(name_or_path, base) or CATALOG_DIR / f"{name_or_path}.csv"
     if not path.is_file():
-        raise CalcError(f"{where}: the catalog {name_or_path!r} does not exist (looked for {path})")
+        raise CalcError(f"{where}: the catalog {as_found(name_or_path)} does not exist (looked for {path})")
     return path
 
 
@@ -583,7 +567,8 @@ def load_catalogs(names, base: Path | None, where: str, schema: Schema) -> Catal
     if isinstance(names, str):
         return load_catalog(resolve(names, base, where), schema)
     if not isinstance(names, list) or not names:
-        raise CalcError(f"{where}: expected a catalog name, a path to a CSV file or a list of them, found {names!r}")
+        raise CalcError(f"{where}: expected a catalog name, a path to a CSV file or a list of them, found "
+                        f"{as_found(names)}")
     paths = [resolve(name, base, f"{where}[{k}]") for k, name in enumerate(names, start=1)]
     return combine([load_catalog(path, schema) for path in paths], where)
 
@@ -615,7 +600,8 @@ def combine(catalogs: list, where: str) -> Catalog:
             if part in seen and seen[part][0] != k:
                 other, other_line = seen[part]
                 raise CalcError(
-                    f"{where}: the part {part!r} stands in {display_path(catalogs[other].path)} (row {other_line}) and "
+                    f"{where}: the part {as_found(part)} stands in {display_path(catalogs[other].path)} (row "
+                    f"{other_line}) and "
                     "in "
                     f"{display_path(cat.path)} (row {line}); rename one, as candidates are named by part"
                 )
@@ -703,13 +689,13 @@ def _header(path: Path, raw: bytes, schema: Schema):
     for i, cell in enumerate(header):
         m = _HEADER.match(cell)
         if not m:
-            raise CalcError(f"{path}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
+            raise CalcError(f"{path}: header column {i + 1} {as_found(cell)} is not of the form 'name [unit]'")
         if m.group(1) in columns:
-            raise CalcError(f"{path}: the column {m.group(1)!r} appears twice in the header")
+            raise CalcError(f"{path}: the column {as_found(m.group(1))} appears twice in the header")
         columns[m.group(1)] = (i, m.group(2))
     for name in schema.text_columns:
         if name not in columns:
-            raise CalcError(f"{path}: expected a column {name!r}, found columns {', '.join(columns)}")
+            raise CalcError(f"{path}: expected a column {as_found(name)}, found columns {listing(columns)}")
     units = {}
     for c in schema.columns:
         if c.name not in columns and c.may_be_absent:
@@ -717,7 +703,7 @@ def _header(path: Path, raw: bytes, schema: Schema):
             continue
         if c.name not in columns:
             raise CalcError(
-                f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}"
+                f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {listing(columns)}"
             )
         unit_text = columns[c.name][1]
         units[c.name] = _header_unit(path, c, unit_text)
@@ -754,7 +740,7 @@ def _no_repeated_part(path: Path, parts: np.ndarray, lines: np.ndarray) -> None:
     repeats = np.flatnonzero(first != np.arange(len(parts)))
     if len(repeats):
         j = repeats[0]
-        raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row "
+        raise CalcError(f"{path}, row {lines[j]}, column part: the part {as_found(parts[j])} already stands in row "
                         f"{lines[first[j]]}")
 
 
@@ -857,10 +843,10 @@ def _header_unit(path: Path, c: Column, unit_text):
         units = ureg.parse_units(text) if text not in ("", "1", "-") else ureg.dimensionless
     except Exception as exc:  # pint raises several types for unknown or malformed units
         raise CalcError(
-            f"{where}: the unit {text!r} is not one the unit registry knows ({type(exc).__name__})"
+            f"{where}: the unit {as_found(text)} is not one the unit registry knows ({type(exc).__name__})"
         ) from None
     if not k.accepts(units):
-        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {text!r}, which is "
+        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {as_found(text)}, which is "
                         f"{describe_units(units)}")
     return units
 

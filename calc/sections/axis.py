@@ -13,7 +13,7 @@ import numpy as np
 from .case import Case, Declared, Key, Table
 from . import pairs
 from .protocol import Section
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..domain.fits import parse_bore
 from ..data.measurement import measurement_path
 from ..domain.gearbox import INERTIA_RATIO_LIMIT, OutputForces
@@ -87,8 +87,9 @@ def read(top: Table, case: Case) -> None:
         if peak is not None and rated is not None and rated.m_as("N*m") > peak.m_as("N*m"):
             raise CalcError(
                 f"{motor.where('rated_torque')}: expected a continuous torque at most the peak torque "
-                f"motor.peak_torque = {motor.data['peak_torque']!r} (a motor's peak is above its continuous rating), "
-                f"found {motor.data['rated_torque']!r}"
+                f"motor.peak_torque = {as_found(motor.data['peak_torque'])} (a motor's peak is above its "
+                "continuous rating), "
+                f"found {as_found(motor.data['rated_torque'])}"
             )
         if motor.has("shaft"):
             case.motor_shaft = parse_bore(motor.data["shaft"], motor.where("shaft"))
@@ -152,14 +153,14 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
         if case.motor_dc_link is not None and missing:
             raise CalcError(f"{motor.where('dc_link_voltage')}: the voltage limit needs the electrical data of "
                             f"{case.motor_part}, but {cat.catalog_of(row)} (row {cat.lines[row]}) "
-                            f"gives no {', '.join(missing)}")
+                            f"gives no {listing(missing)}")
 
 
 def _distance(load: Table, key: str):
     """A distance of a force on the output: zero or more."""
     q = load.quantity(key)
     if q is not None and not q.magnitude >= 0:
-        raise CalcError(f"{load.where(key)}: expected a distance of zero or more, found {load.data[key]!r}")
+        raise CalcError(f"{load.where(key)}: expected a distance of zero or more, found {as_found(load.data[key])}")
     return q
 
 
