@@ -13,12 +13,11 @@ shows its input error, and the calc report linked beside the verdict answers as 
 
 import subprocess
 
-import pytest
 
-from bench.review_browser import CHROMIUM, review_in_browser, served
+from bench.review_browser import review_in_browser, served
 from calc.review import serve
 
-from ..conftest import DERIVED_EXAMPLE, EXAMPLE, ROOT
+from ..conftest import DERIVED_EXAMPLE, EXAMPLE, ROOT, needs_tools
 
 RESULTS_SELECTOR = ".design-review .dr[data-generation]"
 
@@ -40,7 +39,7 @@ CHANGES = [
     ("profile[1].torque", "60"),
 ]
 
-pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason=f"no Chromium at {CHROMIUM} (make browser installs it)")
+pytestmark = needs_tools("chromium")
 
 
 def print_times(server, visit):
