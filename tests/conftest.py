@@ -6,6 +6,7 @@ import json
 import os
 import shutil
 import sys
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -151,6 +152,7 @@ def report_run(tmp_path_factory):
 TESTS = Path(__file__).resolve().parent
 FINAL = TESTS / "test_error_sites.py"
 _OWN_INIT = pytest.StashKey()
+_OWN_CACHE = pytest.StashKey()
 
 
 class ErrorRecord:
@@ -228,6 +230,9 @@ def pytest_terminal_summary(terminalreporter):
 
 
 def pytest_configure(config):
+    # Parsed catalogs (calc.data.parsed) kept for this session only, not in the user's cache.
+    if "CALC_CACHE_DIR" not in os.environ:
+        config.stash[_OWN_CACHE] = os.environ["CALC_CACHE_DIR"] = tempfile.mkdtemp(prefix="calc-cache-")
     config.addinivalue_line("markers", "needs_tools(*names): the test needs these tools on PATH (TOOLS)")
     from calc.core.errors import CalcError
 
@@ -250,6 +255,9 @@ def pytest_configure(config):
 
 
 def pytest_unconfigure(config):
+    if _OWN_CACHE in config.stash:
+        shutil.rmtree(config.stash[_OWN_CACHE], ignore_errors=True)
+        del os.environ["CALC_CACHE_DIR"]
     from calc.core.errors import CalcError
 
     if _OWN_INIT not in config.stash:

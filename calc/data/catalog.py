@@ -24,6 +24,7 @@ from typing import Callable
 import numpy as np
 
 from ..core.errors import CalcError, listing, as_found, SHOWN, clipped
+from .parsed import SMALLEST, cache_key, keep_parsed, load_parsed
 from ..core.units import Q_, SI_SCALE, describe_units, kind, pretty_unit, ureg
 
 
@@ -631,6 +632,12 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     """Read and validate a catalog file, column by column over all rows at once; see
     :func:`load_catalog`."""
     raw = path.read_bytes()
+    key = cache_key(raw, schema) if len(raw) >= SMALLEST else None
+    kept = None if key is None else load_parsed(key)
+    if kept is not None:
+        return _catalog(path, raw, schema, kept["parts"], kept["lines"],
+                        {name: Q_(m, unit) for name, (m, unit) in kept["values"].items()}, kept["text"],
+                        kept["header_units"])
     reader, width, columns, units = _header(path, raw, schema)
     cells, lines, misfit = _rows(path, reader, width)
 
@@ -657,20 +664,21 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
             raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected "
                             f"{rule.text}")
     text_arrays = {k: np.array(v, dtype=object) for k, v in texts.items()}
-    for a in (parts, lines, *text_arrays.values(), *(q.magnitude for q in values.values())):
+    header_units = {c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name])
+                    for c in schema.columns}
+    if key is not None:  # read without an error: kept for the next run (calc.data.parsed)
+        keep_parsed(key, parts, lines, {n: (q.magnitude, str(q.units)) for n, q in values.items()}, text_arrays,
+                    header_units)
+    return _catalog(path, raw, schema, parts, lines, values, text_arrays, header_units)
+
+
+def _catalog(path: Path, raw: bytes, schema: Schema, parts, lines, values: dict, text: dict,
+             header_units: dict) -> Catalog:
+    """The catalog of a file's rows as read (or as kept, :mod:`calc.data.parsed`), its arrays read-only."""
+    for a in (parts, lines, *text.values(), *(q.magnitude for q in values.values())):
         a.flags.writeable = False  # shared by every caller of the run (load_catalog)
-    return Catalog(
-        name=path.stem,
-        path=path,
-        sha256=hashlib.sha256(raw).hexdigest(),
-        schema=schema,
-        parts=parts,
-        values=values,
-        text=text_arrays,
-        lines=lines,
-        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name])
-                      for c in schema.columns},
-    )
+    return Catalog(name=path.stem, path=path, sha256=hashlib.sha256(raw).hexdigest(), schema=schema, parts=parts,
+                   values=values, text=text, lines=lines, header_units=header_units)
 
 
 def _header(path: Path, raw: bytes, schema: Schema):

@@ -275,8 +275,9 @@ def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, 
         The highest ``λ`` a pair may have: the case's ``[motor] max_inertia_ratio``.
     examine : callable, optional
         ``examine(motor, rows)`` -> ``(utilization, passes, rank)`` over those gearbox rows: the motor's
-        peak utilization against its speed-torque characteristic [1], whether the gearbox passes its
-        checks with that motor, and its place in the gearbox ranking with it (None: ``rank`` holds).
+        peak utilization against its speed-torque characteristic [1] (NaN where not examined: it may
+        stop at the first row of its ranking that passes), whether the gearbox passes its checks with
+        that motor, and its place in the gearbox ranking with it (None: ``rank`` holds).
     first : bool
         Screen the motors one at a time in the rule's order and stop at the first that has a pair
         that passes (the pick alone is wanted: a case's evaluation); default False, every pair.
@@ -354,8 +355,10 @@ def _pick(feasible, utilization, rms_share, g, mo, examine) -> tuple[int, int] |
             u, passes, found = examine(int(m), rows)
             u = np.asarray(u, float)
             utilization[rows, m] = np.fmax(utilization[rows, m], u)
-            ok = within_rating(u) & np.asarray(passes, bool)
-            feasible[rows[~ok], m] = False
+            examined = ~np.isnan(u)
+            fails = ~np.asarray(passes, bool) | (examined & ~within_rating(u))
+            feasible[rows[fails], m] = False
+            ok = examined & ~fails
             rows, rank = rows[ok], (rank if found is None else np.asarray(found, float))[ok]
         if len(rows):
             best = np.lexsort((g["i"][rows, 0], rms_share[rows, m], rank))[0]

@@ -28,6 +28,7 @@ import numpy as np
 
 from .case import Case
 from ..data.catalog import display_path
+from ..core.checks import within_rating
 from ..domain.combinations import RULE, CycleMoments, search
 from ..core.errors import CalcError
 from ..domain.gearbox import T_2max, T_2stop, rows_at_ratio, select_gearbox, shock_factor
@@ -364,28 +365,35 @@ def _examine(case: Case, out, motors, rows: dict, gear, hubs):
     i, eta, J_1 = (np.asarray(rows[k], float) for k in ("i", "eta", "J_1"))
     w = np.abs(few.speed.m_as("rad/s"))
 
-    def examine(m: int, at: np.ndarray) -> tuple:
+    def peak_share(m: int, at: np.ndarray) -> np.ndarray:
+        """The highest motor torque over the peak torque at its speed, for motor m through rows at."""
         one = motors.rows([m])
-        found = []
-        for chunk in np.array_split(at, max(1, len(at) * len(w) // CHUNK)):
-            T_1 = motor_torque(few.torque, few.speed, Q_(i[chunk, None], ""), Q_(eta[chunk, None], ""), few.alpha_2,
-                               one["J"][0], Q_(J_1[chunk, None], "kg*m**2")).m_as("N*m")
-            T_1 = np.broadcast_to(T_1, (len(chunk), len(w)))
-            limit, _ = peak_limit(one, (w[None, :] * i[chunk, None]).ravel(), case.motor_dc_link, curves)
-            with np.errstate(invalid="ignore", divide="ignore"):
-                u = np.abs(T_1) / limit.reshape(len(chunk), len(w))
-            found.append(np.where(np.isnan(u), np.inf, u).max(axis=1, initial=0.0))
-        u = np.concatenate(found) if found else np.zeros(0)
+        T_1 = motor_torque(few.torque, few.speed, Q_(i[at, None], ""), Q_(eta[at, None], ""), few.alpha_2,
+                           one["J"][0], Q_(J_1[at, None], "kg*m**2")).m_as("N*m")
+        T_1 = np.broadcast_to(T_1, (len(at), len(w)))
+        limit, _ = peak_limit(one, (w[None, :] * i[at, None]).ravel(), case.motor_dc_link, curves)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            u = np.abs(T_1) / limit.reshape(len(at), len(w))
+        return np.where(np.isnan(u), np.inf, u).max(axis=1, initial=0.0)
+
+    def examine(m: int, at: np.ndarray) -> tuple:
         if gear is None:
-            return u, np.ones(len(at), bool), None
+            return peak_share(m, at), np.ones(len(at), bool), None
         trial = dataclasses.replace(case, **motor_ratings(motors, m))
         sel = select_gearbox(trial.profile, gear.rows(at), hubs=hubs, **selection_inputs(trial))
         rank = np.empty(len(at))
         rank[sel.order] = np.arange(len(sel.order))
+        u = np.full(len(at), np.nan)  # the rows in the gearbox ranking's order, until one passes
+        order = sel.order[sel.passes[sel.order]]
+        for start in range(0, len(order), BATCH):
+            batch = order[start:start + BATCH]
+            u[batch] = peak_share(m, at[batch])
+            if within_rating(u[batch]).any():
+                break
         return u, sel.passes, rank
 
     return examine
 
 
-#: Pairs × samples evaluated at once where the characteristic is checked: bounds the memory.
-CHUNK = 2_000_000
+#: Gearbox rows checked against a motor's characteristic at once, in the ranking's order.
+BATCH = 64
