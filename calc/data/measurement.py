@@ -83,7 +83,8 @@ def measurement_path(text, base: Path | None, where: str) -> Path:
     if not path.is_absolute() and base is not None:
         path = base / path
     if not path.is_file():
-        raise CalcError(f"{where}: the measurement file {as_found(text)} does not exist (looked for {path})")
+        raise CalcError(f"{where}: the measurement file {as_found(text)} does not exist (looked for "
+                        f"{path.resolve()})")
     return path
 
 

@@ -242,8 +242,9 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
 
 def test_a_click_on_a_candidate_forces_it(tmp_path):
     """Clicking NPT025-10's row in the gearbox table sets *gearbox part forced* to it, as choosing it
-    there would: the page shows the design checked with NPT025-10 alone, which fails on the motor's
-    peak through it (T_2max = 6.5 · 10 · 1.6 · 0.97 = 100.9 N·m against its T_2B of 90 N·m)."""
+    there would: the page shows the design checked with NPT025-10 alone. No motor passes with it; the
+    pair closest to passing is SGM7G-03A, which fails on its peak through it (T_2max = 5.88 · 10 · 1.6
+    · 0.97 = 91.26 N·m against its T_2B of 90 N·m)."""
     from bench.review_browser import browser_page, row, wait_for_results
 
     shots = SHOTS / "force"
@@ -259,7 +260,7 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
         page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
         shown = page.inner_text(RESULTS_SELECTOR)
         assert shown.startswith("FAIL")
-        assert "NPT025-10: T2max ≤ T2B: required 100.9 N·m > rated 90 N·m" in shown.replace("\n", "")
+        assert "NPT025-10: T2max ≤ T2B: required 91.26 N·m > rated 90 N·m" in shown.replace("\n", "")
         choice = row(page, "gearbox.part").locator("select")
         assert choice.evaluate("s => s.options[s.selectedIndex].text") == "NPT025-10"
         page.screenshot(path=str(shots / "forced.png"))
