@@ -348,3 +348,29 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
         text = (tmp_path / "axis-variant-1.toml").read_text()
         assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3\n")
         assert text.count("\n[[move]]\n") == 3
+
+
+def test_five_reviewers_at_once_each_see_their_own_results():
+    """Five pages of the served review, each with its own kernel, change the index time at the same
+    moment to five different values, twice over; each page shows the peak speed of its own value
+    (as evaluating the case with that value gives it) and none of the others'."""
+    from bench.review_browser import reviewers_at_once
+    from calc import Q_
+    from calc.review.inputs import with_inputs
+    from calc.sections import evaluate
+    from calc.sections.case import read_case
+
+    rounds = [["0.6", "0.7", "0.8", "0.9", "1"], ["1.1", "1.2", "1.3", "1.4", "1.5"]]
+    case = read_case(DERIVED_EXAMPLE)
+    peak = {v: evaluate(with_inputs(case, {"move[1].time": Q_(float(v), "s")})).to_json()["motion"]["peak_speed"]
+            for v in rounds[-1]}
+    shown = {v: f"{p['value']:.4g} rpm" for v, p in peak.items()}
+    assert all(p["unit"] == "rpm" for p in peak.values()) and len(set(shown.values())) == 5
+    with served(DERIVED_EXAMPLE) as server:
+        crowd = reviewers_at_once(server, "move[1].time", rounds)
+    print(f"5 reviewers: median {crowd.median:.3f} s, slowest {max(crowd.times):.3f} s, "
+          f"{crowd.memory:.0f} MB per page")
+    assert len(crowd.times) == 10
+    for value, text in zip(rounds[-1], crowd.texts):
+        assert shown[value] in text, (value, text[:300])
+        assert not any(other in text for v, other in shown.items() if v != value), (value, text[:300])
