@@ -268,8 +268,9 @@ def _search(case: Case, gear, hubs, first: bool = False) -> PairSearch:
     motors = motor_catalog(case)
     motors = motors.rows(~motors.partial)
     out = output_load(case)
-    alpha = np.zeros(len(out.dt)) if out.alpha_2 is None else out.alpha_2.m_as("rad/s**2")
-    moments = CycleMoments.of(out.dt.m_as("s"), out.torque.m_as("N*m"), out.speed.m_as("rad/s"), alpha)
+    few = out.distinct()  # the same sums and envelopes over each distinct sample once
+    alpha = np.zeros(len(few.dt)) if few.alpha_2 is None else few.alpha_2.m_as("rad/s**2")
+    moments = CycleMoments.of(few.dt.m_as("s"), few.torque.m_as("N*m"), few.speed.m_as("rad/s"), alpha)
     J_c, notes = _coupling_inertia(case)
     notes = ([] if out.sampled else ["the load cycle is typed: its accelerations are not known, "
                                      "so the rotor term is left out"]) + notes
@@ -286,11 +287,11 @@ def _search(case: Case, gear, hubs, first: bool = False) -> PairSearch:
                   "peak_torque": motors["M_max"].m_as("N*m"), "max_speed": motors["n_max"].m_as("rad/s")}
     if case.motor_curves is None:  # an S1 curve lets a motor run past n_N (calc.domain.motor_ratings)
         motor_rows["rated_speed"] = motors["n_N"].m_as("rad/s")
-    w = np.abs(out.speed.m_as("rad/s"))
-    speeds = (float(out.n_2max.m_as("rad/s")), float(n_2m.si(n_2k=w, t_k=out.dt.m_as("s"))))
+    w = np.abs(few.speed.m_as("rad/s"))
+    speeds = (float(out.n_2max.m_as("rad/s")), float(n_2m.si(n_2k=w, t_k=few.dt.m_as("s"))))
     rows["J_L"] = 0.0 if J_L is None else float(J_L.m_as("kg*m**2"))
     result = search(moments, speeds, rows, motor_rows, case.motor_max_inertia_ratio[0],
-                    examine=_examine(case, out, motors, rows, gear, hubs), first=first)
+                    examine=_examine(case, few, motors, rows, gear, hubs), first=first)
     shown = slice(None) if result.motors is None else result.motors
     return PairSearch(case, parts, np.asarray(rows["i"], float), motors.parts[shown], motors["M_N"].m_as("N*m")[shown],
                       result, notes + more)
@@ -355,12 +356,11 @@ def _coupling_inertia(case: Case) -> tuple[float, list]:
                  f"{sig(J_c * 1e4)} kg·cm² is added to J_1"]
 
 
-def _examine(case: Case, out, motors, rows: dict, gear, hubs):
+def _examine(case: Case, few, motors, rows: dict, gear, hubs):
     """``examine(motor, rows)`` of :func:`calc.domain.combinations.search`: the highest motor torque
     over the peak torque the motor gives at each sample's speed
     (:func:`calc.domain.motor_ratings.peak_limit`, with the case's DC link and curves), and the
     gearbox rows checked and ranked with that motor as the gearbox section checks them."""
-    few = out.distinct()
     curves = None if case.motor_curves is None else read_curves(case.motor_curves, motor_catalog(case).parts)
     i, eta, J_1 = (np.asarray(rows[k], float) for k in ("i", "eta", "J_1"))
     w = np.abs(few.speed.m_as("rad/s"))
