@@ -25,7 +25,7 @@ import numpy as np
 
 from .catalog import _FLOAT, _HEADER, CATALOG_DIR, Column, _header_unit, display_path, given_path, note_file_read
 from ..core.checks import BOUNDARY_RTOL
-from ..core.errors import CalcError, listing, as_found, clipped
+from ..core.errors import SHOWN, CalcError, as_found, clipped, listing
 from ..core.glossary import latex as symbol_latex
 from ..core.units import Q_, as_kind, pretty_unit, sig  # noqa: F401 (Q_: the doctests)
 
@@ -135,7 +135,7 @@ class BandTable:
         outside = (up < self.bounds[0]) | (down > self.top)
         if np.any(outside):
             bad = np.asarray(x)[outside] if np.ndim(x) else x
-            raise CalcError(f"{where}: expected {self.range_text()} ({clipped(self.source)}), "
+            raise CalcError(f"{where}: expected {self.range_text()} ({clipped(self.source, 2 * SHOWN)}), "
                             f"found {sig(np.ravel(bad)[0])} "
                             f"{pretty_unit(self.unit)}")
         if self.at_boundary == "higher":

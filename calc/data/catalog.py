@@ -23,7 +23,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..core.errors import CalcError, listing, as_found, SHOWN, clipped
+from ..core.errors import CalcError, as_found, clipped, listing
 from .parsed import SMALLEST, cache_key, keep_parsed, load_parsed
 from ..core.units import Q_, SI_SCALE, describe_units, kind, pretty_unit, ureg
 
@@ -352,9 +352,8 @@ class Catalog:
         if self.partial[row]:
             reason = self.text[self.schema.partial][row]
             raise CalcError(
-                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), kept for "
-                "reference "
-                f"but never checked: {clipped(reason, 2 * SHOWN)}"
+                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), never "
+                f"checked: {clipped(reason, 100)}"
             )
         return row
 
