@@ -352,7 +352,7 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
 
 def test_five_reviewers_at_once_each_see_their_own_results():
     """Five pages of the served review, each with its own kernel, change the index time at the same
-    moment to five different values, twice over; each page shows the peak speed of its own value
+    moment to five different values; each page shows the peak speed of its own value
     (as evaluating the case with that value gives it) and none of the others'."""
     from bench.review_browser import reviewers_at_once
     from calc import Q_
@@ -360,7 +360,7 @@ def test_five_reviewers_at_once_each_see_their_own_results():
     from calc.sections import evaluate
     from calc.sections.case import read_case
 
-    rounds = [["0.6", "0.7", "0.8", "0.9", "1"], ["1.1", "1.2", "1.3", "1.4", "1.5"]]
+    rounds = [["0.6", "0.7", "0.8", "0.9", "1"]]
     case = read_case(DERIVED_EXAMPLE)
     peak = {v: evaluate(with_inputs(case, {"move[1].time": Q_(float(v), "s")})).to_json()["motion"]["peak_speed"]
             for v in rounds[-1]}
@@ -370,7 +370,7 @@ def test_five_reviewers_at_once_each_see_their_own_results():
         crowd = reviewers_at_once(server, "move[1].time", rounds)
     print(f"5 reviewers: median {crowd.median:.3f} s, slowest {max(crowd.times):.3f} s, "
           f"{crowd.memory:.0f} MB per page")
-    assert len(crowd.times) == 10
+    assert len(crowd.times) == 5
     for value, text in zip(rounds[-1], crowd.texts):
         assert shown[value] in text, (value, text[:300])
         assert not any(other in text for v, other in shown.items() if v != value), (value, text[:300])
