@@ -126,7 +126,9 @@ def keep_parsed(key: str, parts, lines, values: dict, text: dict, header_units: 
     arrays = {"meta": np.array(json.dumps(meta)), "parts": np.asarray(parts, dtype=str), "lines": np.asarray(lines)}
     arrays |= {f"value:{name}": np.asarray(m, float) for name, (m, _) in values.items()}
     for name, v in text.items():  # each distinct text once: a source or family repeats over the rows
-        arrays[f"text:{name}"], arrays[f"code:{name}"] = np.unique(np.asarray(v, dtype=str), return_inverse=True)
+        codes: dict = {}
+        arrays[f"code:{name}"] = np.fromiter((codes.setdefault(x, len(codes)) for x in v), dtype=np.int64, count=len(v))
+        arrays[f"text:{name}"] = np.array(list(codes), dtype=str)
     try:
         folder.mkdir(parents=True, exist_ok=True)
         partial = folder / f"{key}.{os.getpid()}.tmp.npz"
