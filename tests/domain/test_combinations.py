@@ -164,3 +164,32 @@ def test_the_figure_shows_the_lowest_working_utilization_of_each_motor_and_ratio
     fig = combinations_figure(u, u <= 1, [5.0, 10.0], ["A", "B"], pick=(1, 0), ratio_of_rows=np.array([5.0, 5.0, 10.0]))
     shown = np.ma.filled(fig.axes[0].images[0].get_array().astype(float), np.nan)
     assert np.allclose(shown, [[0.4, np.nan], [np.nan, 0.9]], equal_nan=True)  # rows: motors; columns: ratios
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.integers(1, 12), st.integers(1, 9), st.booleans())
+def test_the_first_motor_screened_is_the_pick_of_the_whole_table(seed, rows, motors, examined):
+    # One rule, two ways to reach it: screening every pair at once, or the motors one at a time in
+    # the rule's order until one has a passing pair (a case's evaluation). Both pick the same pair,
+    # with or without an examination that refuses some pairs; where none passes, the first way names
+    # the pair closest to passing and the second, having screened every motor, the same.
+    rng = np.random.default_rng(seed)
+    m = CycleMoments.of([0.1, 0.1, 0.3], [50.0, -30.0, 10.0], [10.0, 10.0, 0.0], [100.0, -100.0, 0.0])
+    gearboxes = {"i": rng.choice([3.0, 5.0, 10.0], rows), "eta": rng.uniform(0.9, 0.98, rows),
+                 "J_1": rng.uniform(0, 2e-5, rows), "passes": rng.random(rows) > 0.2,
+                 "peak_limit": rng.uniform(5, 40, rows), "rank": rng.permutation(rows).astype(float), "J_L": 1e-3}
+    motors = {"J": rng.uniform(2e-5, 4e-4, motors), "rated_torque": rng.choice([1.0, 2.0, 4.0, 8.0], motors),
+              "peak_torque": rng.uniform(4, 30, motors), "max_speed": rng.uniform(50, 300, motors)}
+    refused = rng.random((rows, len(motors["J"]))) < 0.3
+
+    def examine(motor, at):
+        return np.where(refused[at, motor], 1.5, 0.5), np.ones(len(at), bool), None
+
+    kw = {"examine": examine} if examined else {}
+    whole = search(m, (10.0, 4.0), gearboxes, motors, INERTIA_RATIO_LIMIT, **kw)
+    first = search(m, (10.0, 4.0), gearboxes, motors, INERTIA_RATIO_LIMIT, first=True, **kw)
+    as_whole = None if first.pick is None else (first.pick[0], int(first.motors[first.pick[1]]))
+    assert as_whole == whole.pick
+    if whole.pick is None:
+        _, k = first.closest
+        assert whole.utilization[first.closest[0], first.motors[k]] == pytest.approx(whole.utilization[whole.closest])
