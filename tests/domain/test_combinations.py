@@ -193,3 +193,15 @@ def test_the_first_motor_screened_is_the_pick_of_the_whole_table(seed, rows, mot
     if whole.pick is None:
         _, k = first.closest
         assert whole.utilization[first.closest[0], first.motors[k]] == pytest.approx(whole.utilization[whole.closest])
+
+
+def test_rows_an_examination_leaves_out_stay_as_screened():
+    # B's examination stops at the first row of its ranking that passes (i = 5, ranked first): the
+    # other row (i = 10) is not examined (NaN), keeps its screened utilization and stays feasible.
+    m, gearboxes, motors = hand_pairs()
+    only_b = {k: v[1:] for k, v in motors.items()}
+    screened = search(m, SPEEDS, gearboxes, only_b, INERTIA_RATIO_LIMIT)
+    found = search(m, SPEEDS, gearboxes, only_b, INERTIA_RATIO_LIMIT,
+                   examine=lambda motor, rows: (np.where(rows == 1, 0.5, np.nan), np.ones(len(rows), bool), None))
+    assert found.pick == (1, 0) and found.feasible[0, 0]
+    assert found.utilization[0, 0] == screened.utilization[0, 0]
