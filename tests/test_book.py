@@ -32,6 +32,7 @@ def book(tmp_path_factory):
                          cwd=ROOT, capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     pages = sorted(out.glob("notebooks/*.html")) + [out / "book" / "index.html"]
+    pages += sorted(out.glob("book/course/*.html"))  # the course frame, the primer, the licence
     print(f"\nbook: built in {time.perf_counter() - start:.1f} s, {len(pages)} pages")
     return out, pages
 
@@ -39,7 +40,8 @@ def book(tmp_path_factory):
 def test_every_students_notebook_is_a_page_and_the_lecturers_is_not(book):
     out, pages = book
     assert sorted(p.stem for p in pages if p.parent.name == "notebooks") == NOTEBOOKS
-    assert not list(out.rglob("*99-answers*"))
+    assert not list(out.rglob("*99-answers*")) and not list(out.rglob("*lecturer*"))
+    assert {p.stem for p in pages if p.parent.name == "course"} == {"frame", "primer", "licence"}
     front = (out / "book" / "index.html").read_text()
     assert all(f"{name}.html" in front for name in NOTEBOOKS)  # the table of contents links each
     assert 'url=book/index.html' in (out / "index.html").read_text()  # the address make book names leads there
