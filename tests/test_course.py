@@ -33,7 +33,7 @@ def test_each_self_check_has_four_options_whose_distractors_name_misconceptions(
         assert [o.letter for o in item.options] == list("abcd"), f"{name} item {item.number}"
         assert item.key, f"{name} item {item.number}: exactly one option is right"
         wrong = [o for o in item.options if not o.right]
-        assert all(o.misconception for o in wrong), f"{name} item {item.number}: each distractor names its misconception"
+        assert all(o.misconception for o in wrong), f"{name} item {item.number}: a distractor names no misconception"
     assert len({i.key for i in choices}) == len(choices), f"{name}: no letter is right twice (a guess scores once)"
     source = (ROOT / "notebooks" / f"{name}.ipynb").read_text()
     assert f'score(\\"{name}.ipynb\\"' in source, f"{name}: a cell scores the self-check"
@@ -72,7 +72,7 @@ def test_a_self_check_is_scored_on_letters_and_a_number_within_its_tolerance():
 
 
 def test_each_student_has_a_brief_of_their_own_drawn_again_the_same():
-    drawn = [variants.variant(s, SEED) for s in STUDENTS]
+    drawn = variants.briefs(STUDENTS, SEED)
     assert drawn == [variants.variant(s, SEED) for s in STUDENTS]
     assert len({(v.table_inertia, v.stations, v.move_time, v.dwell) for v in drawn}) == len(drawn)
     assert drawn != [variants.variant(s, SEED + 1) for s in STUDENTS]
@@ -81,6 +81,8 @@ def test_each_student_has_a_brief_of_their_own_drawn_again_the_same():
         assert f"{v.table_inertia:g} kg·cm²" in variants.brief_markdown(v)
     with pytest.raises(CalcError, match="empty"):
         variants.variant(" ", SEED)
+    with pytest.raises(CalcError, match="student-01 and student-01 draw the same brief"):
+        variants.briefs(["student-01", "student-01"], SEED)
 
 
 def _right(v):
@@ -166,7 +168,8 @@ def test_the_students_material_holds_no_answer(tmp_path):
     assert "notebooks/14-capstone.ipynb" in names and "calc/course/variants.py" in names
     assert not [n for n in names if not material.handed_out(n)]
     for student in STUDENTS[:3]:
-        assert (out / "briefs" / student / "brief.md").is_file() and (out / "briefs" / student / "checkpoint.ipynb").is_file()
+        folder = out / "briefs" / student
+        assert (folder / "brief.md").is_file() and (folder / "checkpoint.ipynb").is_file()
     text = {p: p.read_text(errors="ignore") for p in files if p.suffix in {".ipynb", ".md", ".html", ".toml", ".py",
                                                                            ".csv", ".txt", ".js", ".json"}}
     lecturers = [ROOT / p for p in material.repository_files() if not material.handed_out(p)

@@ -21,7 +21,7 @@ import nbformat
 
 from ..core.errors import CalcError
 from .checkpoint import ITEMS, expected
-from .variants import brief_markdown, case_text, variant
+from .variants import brief_markdown, briefs, case_text
 
 ROOT = Path(__file__).resolve().parents[2]
 #: The lecturer's files: never in what students receive.
@@ -186,11 +186,11 @@ def build_student(into: Path, students: list[str], seed: int, book: bool = True,
     """
     shutil.rmtree(into, ignore_errors=True)
     _copy(root, [f for f in repository_files(root) if handed_out(f)], into / "workbook")
-    for student in students:
-        folder = into / "briefs" / student
+    for v in briefs(students, seed):
+        folder = into / "briefs" / v.student
         folder.mkdir(parents=True)
-        (folder / "brief.md").write_text(brief_markdown(variant(student, seed)), encoding="utf-8")
-        nbformat.write(checkpoint_notebook(student), folder / "checkpoint.ipynb")
+        (folder / "brief.md").write_text(brief_markdown(v), encoding="utf-8")
+        nbformat.write(checkpoint_notebook(v.student), folder / "checkpoint.ipynb")
     if book:
         build_book(into / "book", lecturer=False, root=root)
     return into
@@ -249,11 +249,10 @@ def build_lecturer(into: Path, students: list[str], seed: int, book: bool = True
     with open(into / "grading" / "keys.csv", "w", newline="", encoding="utf-8") as f:
         out = csv.writer(f)
         out.writerow(["student", *(i.name for i in ITEMS)])
-        for student in students:
-            v = variant(student, seed)
+        for v in briefs(students, seed):
             key = expected(v)
-            out.writerow([student, *(key[i.name] for i in ITEMS)])
-            (into / "cases" / f"{student}.toml").write_text(case_text(v), encoding="utf-8")
+            out.writerow([v.student, *(key[i.name] for i in ITEMS)])
+            (into / "cases" / f"{v.student}.toml").write_text(case_text(v), encoding="utf-8")
     _copy(root, [f for f in repository_files(root) if fnmatch.fnmatch(f, "course/capstone-solution*")], into)
     if book:
         build_book(into / "book", lecturer=True, root=root)

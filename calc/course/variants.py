@@ -14,9 +14,9 @@ import numpy as np
 from ..core.errors import CalcError
 
 #: The ranges the variants are drawn from, each as (lowest, highest, step).
-TABLE_INERTIA = (1000, 2000, 50)   # kg·cm², at the gearbox output: lambda from about 6 to 12 at i = 10
-MOVE_TIME = (0.40, 0.80, 0.05)     # s, one index
-DWELL = (0.30, 2.00, 0.10)         # s: ED from about 17 % to 73 %, S5 or S1 (E3)
+TABLE_INERTIA = (1000, 2000, 10)   # kg·cm², at the gearbox output: lambda from about 6 to 12 at i = 10
+MOVE_TIME = (0.40, 0.80, 0.01)     # s, one index
+DWELL = (0.30, 2.00, 0.05)         # s: ED from about 17 % to 73 %, S5 or S1 (E3)
 STATIONS = (3, 4, 5, 6)            # an index is a whole turn over the stations
 RAMP_SHARE = 0.3                   # of the move's time, each speed ramp (as the example's 0.15 s of 0.5 s)
 JERK_SHARE = 0.2                   # of a ramp, its jerk time (as the example's 0.03 s of 0.15 s)
@@ -100,6 +100,32 @@ def variant(student: str, seed: int) -> Variant:
     )
 
 
+def briefs(students: list[str], seed: int) -> list[Variant]:
+    """The briefs of a roster, each student's own.
+
+    Parameters
+    ----------
+    students : list of str
+        The roster.
+    seed : int
+        The course's seed.
+
+    Returns
+    -------
+    list of Variant
+        One per student, in the roster's order; two students never share a brief.
+    """
+    drawn = [variant(s, seed) for s in students]
+    seen = {}
+    for v in drawn:
+        brief = (v.table_inertia, v.stations, v.move_time, v.dwell)
+        if brief in seen:
+            raise CalcError(f"course roster: {seen[brief]} and {v.student} draw the same brief with seed {seed}; "
+                            f"expected each student's own: choose another seed")
+        seen[brief] = v.student
+    return drawn
+
+
 def case_text(v: Variant) -> str:
     """The case file of a variant: the example's axis with the student's table, index and times
     (the motor chosen from the catalog, an NPT gearbox of ratio 10, no coupling or accuracy chain).
@@ -170,8 +196,10 @@ format), evaluate it, and enter the checkpoint's numbers in `checkpoint.ipynb`.
 | | |
 |---|---|
 | the table | {v.table_inertia:g} kg·cm² at the gearbox output, friction torque 3 N·m while it turns |
-| the index | {v.stations} stations: {v.index_angle:g}° in {v.move_time:g} s, S-curve ramps of {v.ramp_time:g} s with {v.jerk_time:g} s of jerk |
+| the index | {v.stations} stations: {v.index_angle:g}° in {v.move_time:g} s, S-curve ramps of \
+{v.ramp_time:g} s with {v.jerk_time:g} s of jerk |
 | the dwell | {v.dwell:g} s while the station works |
 | the loads on the output | axial 150 N on the axis, radial 300 N at 60 mm from the flange |
-| the drive | a motor of the workbook's catalog (`catalog = "motors"`, shaft 19 mm k6), a gearbox of family NPT, ratio 10 |
+| the drive | a motor of the workbook's catalog (`catalog = "motors"`, shaft 19 mm k6), a gearbox of family NPT, \
+ratio 10 |
 """
