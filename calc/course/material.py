@@ -160,6 +160,9 @@ def build_book(into: Path, lecturer: bool, root: Path = ROOT) -> None:
                           str(into)], cwd=root, capture_output=True, text=True)
     if run.returncode:
         raise CalcError(f"book/conf.py: expected the book to build, found errors: {run.stderr.strip()[:200]}")
+    # MyST-NB's copies of the notebooks beside the book and Sphinx's pickled pages in it: not for reading.
+    shutil.rmtree(into.parent / "jupyter_execute", ignore_errors=True)
+    shutil.rmtree(into / ".doctrees", ignore_errors=True)
 
 
 def build_student(into: Path, students: list[str], seed: int, book: bool = True, root: Path = ROOT) -> Path:
