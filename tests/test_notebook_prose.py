@@ -147,7 +147,8 @@ def test_every_number_code_quotes_from_another_notebook_is_printed_there(path):
 
 
 def test_the_check_finds_a_figure_code_quotes_from_an_older_notebook():
-    there = {"cells": [{"cell_type": "code", "source": "n_2m", "outputs": [{"text": "n_2m = 30 rpm, f_e = 1069.4 Hz"}]}]}
+    printed = [{"text": "n_2m = 30 rpm, f_e = 1069.4 Hz"}]
+    there = {"cells": [{"cell_type": "code", "source": "n_2m", "outputs": printed}]}
     code = {"cell_type": "code", "source": 'n_2m = Q_(30, "rpm")  # notebook 06\'s mean output speed',
             "outputs": [{"text": "as read, f_e = 1069.4 Hz (notebook 06)\nat {n:.1f} rpm"}]}
     assert quoted_across({"cells": [code]}, {"06": there}) == []
