@@ -15,7 +15,7 @@ from calc.course import checkpoint, material, selfcheck, variants
 
 from .conftest import ROOT
 
-COURSE = sorted(p for p in (ROOT / "notebooks").glob("*.ipynb") if p.stem != "00-index")
+COURSE = sorted(p for p in (ROOT / "notebooks").glob("[0-9][0-9]-*.ipynb") if p.stem != "00-index")
 CHECKS = {p.stem: selfcheck.items(selfcheck.self_check_of(json.loads(p.read_text()))) for p in COURSE}
 SEED = 2026
 STUDENTS = material.roster(ROOT / "course" / "roster.csv")

@@ -45,14 +45,17 @@ QUOTED = {
         "31",
     ): "the generated trace's tooth mesh, 31 per input turn (data/transmission-NPT035-10-generated.csv)",
     ("11-transmission-and-positioning-accuracy.ipynb", "310"): "the same mesh per output turn, 31 · 10",
+    ("00-index.ipynb", "12"): "how a reader types a quantity, Q_(12, 'N*m'), an example of input",
+    ("00-index.ipynb", "106"): "how a reader types a torque in inch-pound units, an example of input",
+    ("00-index.ipynb", "300"): "the trap of angles (E15): 300 rpm, an example of input",
 }
 NAMES = re.compile(r"\b(?:ISO|IEC|DIN)\s[\d-]+|[\w/.-]+\.(?:ipynb|toml|csv|py|png)\b")  # standards and files
 POSED = re.compile(r"^## (?:Exercises|Self-check)", re.MULTILINE)  # questions: hypothetical values
 NUMBER = re.compile(r"(?<![\w.])(?<!\w-)\d+(?:[ ,]\d{3})*(?:\.\d+)?")
 NOTEBOOKS_NAMED = r"\b[Nn]otebooks?\s+\d\d(?:(?:,\s*|\s+(?:and|to|or)\s+)\d\d)*\b"  # "notebooks 01 to 12"
 NOT_PROSE = re.compile(
-    rf"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s|{NOTEBOOKS_NAMED}", re.MULTILINE
-)  # headings, link targets, errata, "02 · ", notebooks named by number
+    rf"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s|{NOTEBOOKS_NAMED}|^\|\s*\d\d\s*\|", re.MULTILINE
+)  # headings, link targets, errata, "02 · ", notebooks named by number, a table's row of a notebook
 
 
 def text(value) -> str:
@@ -135,7 +138,7 @@ def quoted_across(notebook: dict, notebooks: dict) -> list[str]:
                     continue
                 there = [v for c in notebooks[number]["cells"] if c["cell_type"] == "code" for v in stated(c)]
                 found += [f"cell {k}: {n} is quoted from notebook {number}, which prints it nowhere"
-                          for n in quoted(NAMED.sub(" ", FORMAT.sub(" ", line))) if not matches(n, there)]
+                          for n in quoted(re.sub(NOTEBOOKS_NAMED, " ", FORMAT.sub(" ", line))) if not matches(n, there)]
     return found
 
 
