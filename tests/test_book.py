@@ -45,6 +45,11 @@ def test_every_students_notebook_is_a_page_and_the_lecturers_is_not(book):
     front = (out / "book" / "index.html").read_text()
     assert all(f"{name}.html" in front for name in NOTEBOOKS)  # the table of contents links each
     assert 'url=book/index.html' in (out / "index.html").read_text()  # the address make book names leads there
+    # Every figure says what it shows to a reader who cannot see it (the cells' mystnb alt text), not its file name.
+    for page in pages:
+        for img in re.findall(r"<img\b[^>]*>", page.read_text()):
+            alt = re.search(r'\balt="([^"]*)"', img)
+            assert alt and len(alt.group(1).split()) >= 8 and not alt.group(1).endswith(".png"), (page.name, img[:200])
 
 
 def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(book):
