@@ -191,9 +191,36 @@ def test_the_students_material_holds_no_answer(tmp_path):
                 f"{solved['motor']['rms_torque_required']['value']:.4g}"}
     answers = {a for a in answers if _significant(a) >= 4 and a not in set(NUMBER.findall(given))}
     assert len(answers) > 50
-    leaks = sorted(f"{p.relative_to(out)}: {a}" for p, t in text.items() for a in answers if re.search(
-        rf"(?<![\w.]){re.escape(a)}(?!\d)", t))
+    any_answer = re.compile(rf"(?<![\w.])({'|'.join(map(re.escape, sorted(answers, key=len, reverse=True)))})(?!\d)")
+    leaks = sorted({f"{p.relative_to(out)}: {a}" for p, t in text.items() for a in any_answer.findall(t)})
     assert leaks == []
+    planted = sorted(answers)[0]  # the search finds an answer pasted into the students' material
+    assert any_answer.findall(f"as the lecturer's notebook prints: {planted} N·m") == [planted]
     for p, t in text.items():
         if p.suffix in {".ipynb", ".html"} and "notebooks" in p.parts:
             assert "99-answers" not in t and "instructor/" not in t, p
+
+
+# -- bad input ------------------------------------------------------------------------------------
+
+
+def test_bad_input_gets_one_sentence_naming_it(tmp_path):
+    bad = tmp_path / "roster.csv"
+    with pytest.raises(CalcError, match="expected a roster file"):
+        material.roster(tmp_path / "none.csv")
+    bad.write_text("name\nAda\n")
+    with pytest.raises(CalcError, match=r"expected a CSV with a column student, found columns \['name'\]"):
+        material.roster(bad)
+    bad.write_text("student\nAda\nAda\n")
+    with pytest.raises(CalcError, match=r"expected each student once and none empty, found \['Ada'\]"):
+        material.roster(bad)
+    with pytest.raises(CalcError, match="expected a git checkout"):
+        material.repository_files(tmp_path)
+    with pytest.raises(CalcError, match="expected the book to build"):
+        material.build_book(tmp_path / "book", lecturer=False, root=tmp_path)
+    with pytest.raises(CalcError, match="expected otter to build the autograder"):
+        material.autograder(tmp_path / "no-tests", tmp_path / "autograder.zip")
+    with pytest.raises(CalcError, match="STUDENT: expected your name"):
+        checkpoint.student_of({"STUDENT": " "})
+    with pytest.raises(CalcError, match="expected a notebook with a self-check"):
+        selfcheck.score(tmp_path / "none.ipynb", {})

@@ -218,6 +218,29 @@ def grading_test_file(seed: int, root: Path = ROOT) -> str:
     return template.replace("SEED = 0  # set by the lecturer's build", f"SEED = {int(seed)}")
 
 
+def autograder(tests: Path, zipped: Path) -> Path:
+    """The autograder Otter-Grader builds from a folder of test files (``otter generate``).
+
+    Parameters
+    ----------
+    tests : pathlib.Path
+        The folder of the test files.
+    zipped : pathlib.Path
+        The zip file to write.
+
+    Returns
+    -------
+    pathlib.Path
+        ``zipped``.
+    """
+    run = subprocess.run([sys.executable, "-m", "otter", "generate", "-t", str(tests), "-o", str(zipped)],
+                         cwd=zipped.parent, capture_output=True, text=True)
+    if run.returncode or not zipped.is_file():
+        raise CalcError(f"{tests}: expected otter to build the autograder from its test files, found: "
+                        f"{run.stderr.strip()[-160:]}")
+    return zipped
+
+
 def build_lecturer(into: Path, students: list[str], seed: int, book: bool = True, root: Path = ROOT) -> Path:
     """What the lecturer keeps: the autograder, each student's key and case file, the capstone's
     solution and the lecturer's book.
@@ -244,10 +267,7 @@ def build_lecturer(into: Path, students: list[str], seed: int, book: bool = True
     tests = into / "grading" / "tests"
     tests.mkdir(parents=True)
     (tests / "checkpoint.py").write_text(grading_test_file(seed, root), encoding="utf-8")
-    run = subprocess.run([sys.executable, "-m", "otter", "generate", "-t", str(tests), "-o",
-                          str(into / "grading" / "autograder.zip")], cwd=into, capture_output=True, text=True)
-    if run.returncode:
-        raise CalcError(f"course/grading: expected otter to build the autograder, found: {run.stderr.strip()[-200:]}")
+    autograder(tests, into / "grading" / "autograder.zip")
     (into / "cases").mkdir()
     with open(into / "grading" / "keys.csv", "w", newline="", encoding="utf-8") as f:
         out = csv.writer(f)
