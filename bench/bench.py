@@ -910,6 +910,34 @@ def measure_combinations(size: Size) -> list[str]:
     ]
 
 
+#: The axes of the machine benchmark: the two shipped cases in turn on one DC bus (their cycles, 2 s and
+#: 1.5 s, divide the machine's 6 s).
+MACHINE_AXES, MACHINE_AXES_QUICK = 50, 4
+
+
+def measure_machine(size: Size, workdir: Path) -> list[str]:
+    from calc.sections import evaluate, read_case
+    from calc.sections.machine import machine
+
+    axes = MACHINE_AXES if size.judged else MACHINE_AXES_QUICK
+    shipped = [ROOT / "cases" / "ball-screw-direct.toml", EXAMPLE]
+    files = [shipped[k % 2] for k in range(axes)]
+    text = 'title = "bench machine"\ncycle = "6 s"\n' + "".join(
+        f'[[axis]]\ncase = "{f}"\nstart = "{0.1 * k:.1f} s"\n' for k, f in enumerate(files))
+    path = workdir / "machine.toml"
+    path.write_text(text + '[dc_bus.brake_resistor]\nresistance = "50 ohm"\ncontinuous_power = "200 W"\n',
+                    encoding="utf-8")
+    one_by_one, _ = timed(lambda: [evaluate(read_case(f)) for f in files])
+    together, result = timed(lambda: machine(path))
+    return [
+        line(f"machine_{MACHINE_AXES}_axes", together, "s", ("<=", 3),
+             note=f"calc.sections.machine.machine: {axes} axes of 2 case files on one DC bus, "
+                  f"{len(result.times) - 1} steps of the common time base"),
+        line(f"cases_{MACHINE_AXES}_one_by_one", one_by_one, "s",
+             note=f"the same {axes} case files read and evaluated one by one"),
+    ]
+
+
 def measure_cold(size: Size) -> list[str]:
     py = sys.executable
     numpy_time = median_run([py, "-c", "import numpy"], size.runs)
@@ -1010,6 +1038,7 @@ def main(argv=None) -> int:
             lambda: measure_hysteresis(size),
             lambda: measure_motion(size),
             lambda: measure_combinations(size),
+            lambda: measure_machine(size, Path(tmp)),
             lambda: measure_cold(size),
             lambda: measure_notebooks(size, args.quick),
             lambda: measure_report(size, args.quick, Path(tmp)),

@@ -183,6 +183,7 @@ KINDS: dict[str, Kind] = declared_once((
     Kind("voltage", "[mass]*[length]**2/[time]**3/[current]", 0, "V", '"565 V"'),
     Kind("current", "[current]", 0, "A", '"5.7 A"'),
     Kind("resistance", "[mass]*[length]**2/[time]**3/[current]**2", 0, "ohm", '"0.61 ohm"'),
+    Kind("capacitance", "[current]**2*[time]**4/[mass]/[length]**2", 0, "F", '"940 uF"'),
     Kind("inductance", "[mass]*[length]**2/[time]**2/[current]**2", 0, "H", '"4.2 mH"'),
     Kind("torque_constant", "[mass]*[length]**2/[time]**2/[current]", 0, "N*m/A", '"0.88 N*m/A"'),
     Kind("voltage_constant", "[mass]*[length]**2/[time]**2/[current]", -1, "V*s/rad", '"57 V/krpm"'),

@@ -207,6 +207,9 @@ SCALARS = (
     ("load.inertia", "load inertia", _scaled),
     ("coupling.temperature", "coupling temperature", _temperature),
     ("accuracy.applied_torque", "applied torque", lambda t: (0.0, max(5 * t, 10.0))),
+    ("drive.brake_resistor.resistance", "brake resistor", _scaled),
+    ("drive.brake_resistor.continuous_power", "brake resistor's continuous power", _scaled),
+    ("drive.brake_resistor.peak_power", "brake resistor's peak power", _scaled),
 )
 
 
@@ -428,8 +431,11 @@ def input_specs(case: Case, ratios=()) -> list[InputSpec]:
     tables = file_tables(case)
     for path, name, reach in SCALARS:
         key = declared(path)
-        section, entry = path.split(".")
-        text = tables[section].get(entry, DEFAULTS.get(path)) if isinstance(tables.get(section), dict) else None
+        *tables_in, entry = path.split(".")
+        table = tables
+        for name_in in tables_in:  # a key of an inline table: drive.brake_resistor.resistance
+            table = table.get(name_in) if isinstance(table, dict) else None
+        text = table.get(entry, DEFAULTS.get(path)) if isinstance(table, dict) else None
         if text is not None:
             unit = _unit_of(text) if is_inch_pound(_unit_of(text)) else key.unit
             v = float(parse_quantity(text, key.kind, f"{case.path}: {path}").m_as(unit))

@@ -39,6 +39,10 @@ MOTOR = Declared("motor", (
         "limit", "U_DC", unit="V"),
     Key("curves", "file", "the catalog motors' peak and S1 curves read from the makers' charts: part, curve, "
         "speed [unit], torque [unit], source"),
+    Key("torque_constant", "torque_constant", "torque constant of a typed motor, per A rms: its current I = T / k_T "
+        "for the servo drive (a catalog motor takes its row's, or M_0 / I_0)", "k_T", unit="N*m/A"),
+    Key("thermal_time_constant", "time", "thermal time constant of a typed motor's winding: the winding's "
+        "temperature model (a catalog motor takes its row's)", "T_th", unit="min"),
 ), "the motor driving the gearbox")
 LOAD = Declared("load", (
     Key("inertia", "inertia", "load inertia at the output of the gearbox (left out where a [mechanism] gives it)",
@@ -83,6 +87,8 @@ def read(top: Table, case: Case) -> None:
         case.motor_inertia = motor.positive("inertia")
         case.motor_rated_torque = motor.positive("rated_torque")
         case.motor_max_speed = motor.positive("max_speed")
+        case.motor_torque_constant = motor.positive("torque_constant")
+        case.motor_thermal_time_constant = motor.positive("thermal_time_constant")
         peak, rated = case.motor_peak_torque, case.motor_rated_torque
         if peak is not None and rated is not None and rated.m_as("N*m") > peak.m_as("N*m"):
             raise CalcError(
@@ -129,7 +135,8 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
     -------
     None
     """
-    typed = [k for k in ("peak_torque", "inertia", "rated_torque", "max_speed") if motor.has(k)]
+    typed = [k for k in ("peak_torque", "inertia", "rated_torque", "max_speed", "torque_constant",
+                         "thermal_time_constant") if motor.has(k)]
     if typed:
         raise CalcError(f"{motor.where(typed[0])}: a catalog motor's ratings come from its catalog row; "
                         f"give either motor.catalog / motor.part or the typed ratings, found both")

@@ -428,6 +428,10 @@ class Case:
         ``[motor] dc_link_voltage``, U_DC.
     motor_curves : pathlib.Path, optional
         The motors' curves file.
+    motor_torque_constant : pint.Quantity [N*m/A], optional
+        A typed motor's torque constant.
+    motor_thermal_time_constant : pint.Quantity [s], optional
+        A typed motor's thermal time constant.
     output_load : calc.domain.gearbox.OutputForces, optional
         The forces on the gearbox output.
     sections : dict, optional
@@ -461,6 +465,8 @@ class Case:
     motor_max_inertia_ratio: tuple = (INERTIA_RATIO_LIMIT, "the default")
     motor_dc_link: object = None
     motor_curves: object = None
+    motor_torque_constant: object = None
+    motor_thermal_time_constant: object = None
     output_load: object = None
     sections: dict = field(default_factory=dict)
     inputs: dict = field(default_factory=dict)
