@@ -82,6 +82,22 @@ def coupling__phi(T, C_T):
     return T/C_T
 
 
+def dynamics__f_r(C_s, rad, J_motor, J_Lm):
+    return (1/2)*sqrt(C_s*rad*(J_motor**(-1.0) + J_Lm**(-1.0)))/pi
+
+
+def dynamics__f_ar(C_s, rad, J_Lm):
+    return (1/2)*sqrt(C_s*rad/J_Lm)/pi
+
+
+def dynamics__q_r(Dummy_35):
+    return sqrt(Dummy_35 + 1)
+
+
+def dynamics__J_Lm(J_K, J_1, J_L, i):
+    return J_1 + J_K + J_L/i**2
+
+
 def gearbox__n_1(n_2, i):
     return i*n_2
 
@@ -250,6 +266,10 @@ def profile__Z_h(t_cycle):
     return t_cycle**(-1.0)
 
 
+def ratios__i_opt(J_L, J_in):
+    return sqrt(J_L/J_in)
+
+
 def stiffness__C_total(C_k):
     return SegmentSum(C_k**(-1.0))**(-1.0)
 
@@ -324,6 +344,10 @@ FUNCTIONS = {
     "calc.domain.coupling.Z": ("86f9df9f99fa206b", coupling__Z),
     "calc.domain.coupling.C_T": ("7c965898ba154eb1", coupling__C_T),
     "calc.domain.coupling.phi": ("f227044abb00fd02", coupling__phi),
+    "calc.domain.dynamics.f_r": ("1bec6585898b822b", dynamics__f_r),
+    "calc.domain.dynamics.f_ar": ("98f992996b02382f", dynamics__f_ar),
+    "calc.domain.dynamics.q_r": ("2a2fb0d4528416a5", dynamics__q_r),
+    "calc.domain.dynamics.J_Lm": ("691c25f60bc8c344", dynamics__J_Lm),
     "calc.domain.gearbox.n_1": ("8f9f168890758267", gearbox__n_1),
     "calc.domain.gearbox.T_2max": ("d455c85b2c71de92", gearbox__T_2max),
     "calc.domain.gearbox.T_2stop": ("233cb8f5f3a997b8", gearbox__T_2stop),
@@ -366,6 +390,7 @@ FUNCTIONS = {
     "calc.domain.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
     "calc.domain.profile.T_2m": ("7f4431ae67c9b21f", profile__T_2m),
     "calc.domain.profile.Z_h": ("4a7f4f91d571390e", profile__Z_h),
+    "calc.domain.ratios.i_opt": ("a6c6227b3bab3ae6", ratios__i_opt),
     "calc.domain.stiffness.C_total": ("bedc76ed0d6bb298", stiffness__C_total),
     "calc.domain.stiffness.C_2": ("5c713f3fa45cd595", stiffness__C_2),
     "calc.domain.stiffness.phi_2": ("678c7938c9b7d54c", stiffness__phi_2),

@@ -305,6 +305,14 @@ SYMBOLS: dict[str, Symbol] = declared_once((
             "the spring between the first and the middle mass of a chain of three masses, referred to the same shaft"),
     _symbol("C_bc", "stiffness", "N*m/rad",
             "the spring between the middle and the last mass of a chain of three masses, referred to the same shaft"),
+    # The drive train's dynamics: the two-mass model, resonance and anti-resonance, the best ratio.
+    _symbol("f_r", "frequency", "Hz", "resonance of the two-mass model: the rotor against everything it drives"),
+    _symbol("f_ar", "frequency", "Hz", "anti-resonance of the two-mass model: the load swinging with the motor held"),
+    _symbol("q_r", "dimensionless", "", "resonance ratio f_r / f_ar of the two-mass model"),
+    _symbol("C_s", "stiffness", "N*m/rad", "the drive train's springs in series, referred to the motor shaft"),
+    _symbol("J_Lm", "inertia", "kg*cm**2",
+            "everything the motor drives (coupling, gearbox J_1, load), referred to the motor shaft"),
+    _symbol("i_opt", "dimensionless", "", "inertia-matching ratio of an inertial load"),
     # The inertia of a body (rigid-body mechanics).
     _symbol("rho", "density", "kg/m**3", "density of the material"),
     _symbol("m", "mass", "kg", "mass (of a body, of the load a mechanism moves)"),

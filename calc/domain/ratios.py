@@ -18,6 +18,12 @@ the one of lowest RMS motor torque (the motor's thermal load, which decides the 
 axis; at a given motor, the lowest RMS utilization); a tie goes to the lower ratio (lower speeds).
 If no feasible ratio keeps ``λ`` within the limit, the feasible ratio of lowest ``λ``; where ``λ``
 is not known (no inertias), the RMS rule alone. No feasible ratio: no pick.
+
+Beside the pick, the textbook's **inertia-matching ratio** ``i_opt = √(J_L / J_in)``
+(:data:`optimal_ratio`): for a load that is inertia alone, the motor torque ``(J_in · i + J_L / i) · α_2``
+that accelerates it is least there (``J_in`` the motor's rotor with what turns at its speed, the
+coupling and the gearbox's ``J_1``; ``J_L`` the load at the output). With friction and process
+torque the ratio of least RMS motor torque, which the search finds, moves from it.
 """
 
 from __future__ import annotations
@@ -26,12 +32,23 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..data.catalog import Catalog
 from ..core.checks import within_rating
+from ..core.citation import Source, Validity
+from ..core.formula import Formula
+from ..data.catalog import Catalog
+from .documents import MECHANICS
 from .gearbox import GearboxSelection, n_1, select_gearbox
 from .motor import MotorLoad, OutputLoad, motor_checks, motor_load
 from .profile import Profile
 from ..core.units import fmt, sig
+
+optimal_ratio = Formula(
+    "i_opt",
+    ("J_L", "J_in"),
+    lambda sp, J_L, J_in: sp.sqrt(J_L / J_in),
+    Source(MECHANICS.at(label="inertia matching", says="the motor torque (J_in · i + J_L / i) · α_2 is least where "
+                        "d/di = 0: i² = J_L / J_in", validity=Validity("a load that is inertia alone"))),
+)
 
 
 def rule(inertia_limit: float) -> str:
