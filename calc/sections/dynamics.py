@@ -43,9 +43,9 @@ RESPONSE_POINTS = 600
 RESPONSE_SPAN = (0.1, 3.0)
 #: What λ's limit means, in one sentence (the two-mass model).
 LAMBDA_MEANING = ("λ = J_Lm / J_motor, everything the motor drives over its rotor; in the two-mass model the "
-                  "resonance lies √(1 + λ) above the anti-resonance, so λ <= {limit:g} keeps the anti-resonance, "
-                  "where the motor barely moves and the speed loop loses its grip on the load, within a factor "
-                  "{factor:.3g} below the resonance")
+                  "resonance lies a factor √(1 + λ) above the anti-resonance, so λ <= {limit:g} keeps the "
+                  "anti-resonance, where the motor barely moves and the speed loop loses its grip on the load, "
+                  "within a factor {factor:.3g} below the resonance")
 
 
 @dataclass(frozen=True)
@@ -537,9 +537,12 @@ def evaluate_dynamics(case: Case, gearbox, coupling, accuracy) -> DynamicsResult
     if train is None:
         reason = ("the case gives no spring: a coupling, or a gearbox with C_t21 and J_1, and the motor's and "
                   "the load's inertia")
-    elif train.inertias is None or unknown:
+    elif train.inertias is None or unknown or np.isnan(train.inertias.magnitude).any():
+        no_j = [] if train.inertias is None else [f"the inertia of {name} (the catalog leaves a member's J empty)"
+                                                  for name, J in zip(train.masses, train.inertias)
+                                                  if np.isnan(J.magnitude)]
         reason = "; ".join(train.missing + [f"the {s.name}'s stiffness ({s.part}: the catalog gives none)"
-                                            for s in unknown])
+                                            for s in unknown] + no_j)
     if reason is not None:
         not_made = f"the chain's first mode needs {reason}"
         checks = [_check("f_1", "2 f_er <= f_1", None, None, "Hz", False, not_made)]
