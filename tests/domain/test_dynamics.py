@@ -144,3 +144,27 @@ def test_bad_chains_are_one_sentence():
         frequency_response(Q_([2, 8], KG_CM2), Q_([1000], "N*m/rad"), Q_([1.0], "Hz"), damping=1.5)
     with pytest.raises(CalcError, match="frequencies above zero"):
         frequency_response(Q_([2, 8], KG_CM2), Q_([1000], "N*m/rad"), Q_([0.0], "Hz"))
+
+
+def test_optimal_ratio_of_an_inertial_load():
+    # The example's table, 1500 kg·cm², behind the rotor 1.74, the coupling 0.5 and NPT035-10's J_1 0.93:
+    # J_in = 3.17 kg·cm², i_opt = √(1500 / 3.17) = √473.19 = 21.753.
+    from calc.domain.ratios import optimal_ratio
+
+    i = optimal_ratio(J_L=Q_(1500, KG_CM2), J_in=Q_(3.17, KG_CM2)).m_as("")
+    assert i == pytest.approx(21.753, abs=1e-3)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(1e-2, 1e4), st.floats(0.1, 100))
+def test_optimal_ratio_needs_the_least_torque(J_L, J_in):
+    # T = (J_in · i + J_L / i) · α_2 for an inertial load: least at i_opt, more on either side.
+    from calc.domain.ratios import optimal_ratio
+
+    i = optimal_ratio(J_L=Q_(J_L, KG_CM2), J_in=Q_(J_in, KG_CM2)).m_as("")
+
+    def torque(x):
+        return J_in * x + J_L / x
+
+    assert torque(i) <= min(torque(0.9 * i), torque(1.1 * i))
+    assert torque(i) == pytest.approx(2 * math.sqrt(J_L * J_in), rel=1e-9)

@@ -102,3 +102,14 @@ def test_a_coupling_row_without_its_stiffness_is_not_checked(write_case):
     d = results["dynamics"].to_json()
     assert d["complete"] is False and d["natural_frequencies"] == []
     assert d["checks"][0]["passes"] is None and d["checks"][0]["not_made"]
+
+
+def test_the_ratio_search_names_the_inertia_matching_ratio():
+    from calc.sections.ratios import search
+
+    r = search(read_case(DERIVED_EXAMPLE))
+    best = r.to_json()["optimal_ratio"]
+    # √(1500 / (1.74 + 0.5 + 0.93)) = 21.753; the search picks 10, the least RMS motor torque within λ <= 10.
+    assert best["value"] == pytest.approx(math.sqrt(1500 / 3.17), rel=1e-9)
+    assert best["J_in"]["value"] == pytest.approx(3.17) and best["pick"] == 10
+    assert "coupling AKN-18" in best["inertias"] and "i_opt = 21.75" in r.summary()
