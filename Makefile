@@ -81,7 +81,7 @@ book: setup
 
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
 # No execution times are recorded, so a re-run changes only what the calculation changed; no widget
-# state is stored either (notebook 07's panel: some 170 KB of it, new on every run, and a live kernel
+# state is stored either (notebook 12's panel: some 170 KB of it, new on every run, and a live kernel
 # rebuilds it anyway).
 notebooks: setup
 	for nb in notebooks/*.ipynb notebooks/instructor/*.ipynb; do \
