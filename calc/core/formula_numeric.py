@@ -14,6 +14,14 @@ from numpy import sin
 from numpy import sqrt
 
 
+def accuracy__Delta_phi_wc(phi_e_k):
+    return SegmentSum(phi_e_k)
+
+
+def accuracy__Delta_phi_rss(phi_e_k):
+    return sqrt(SegmentSum(phi_e_k**2))
+
+
 def accuracy__phi_LM(j_t, T, C):
     return j_t + abs(T)/C
 
@@ -327,6 +335,8 @@ def transmission__phi_TA(Delta_phi_max, Delta_phi_min):
 
 
 FUNCTIONS = {
+    "calc.domain.accuracy.Delta_phi_wc": ("98d2fcef327bc2b0", accuracy__Delta_phi_wc),
+    "calc.domain.accuracy.Delta_phi_rss": ("b92b1d4b7f6ba1dd", accuracy__Delta_phi_rss),
     "calc.domain.accuracy.phi_LM": ("13bfeefac1470fe1", accuracy__phi_LM),
     "calc.domain.accuracy.Delta_phi_P_low": ("6a9a3ead10619a1f", accuracy__Delta_phi_P_low),
     "calc.domain.accuracy.Delta_phi_P_high": ("8ffa9959b4ff0f2d", accuracy__Delta_phi_P_high),

@@ -51,9 +51,9 @@ class RatiosRenderer(Renderer):
         c = report.case
         i_opt = None if r.optimal is None else r.optimal.value
         return [(ratio_figure(r.search, c.motor_peak_torque, c.motor_rated_torque, i_opt),
-                 "The case against the ratio: motor torques, governing utilization and inertia ratio; "
-                 "feasible ratios shaded; the inertia-matching ratio i_opt named (dashed where the catalog "
-                 "reaches it).")]
+                 prose("The case against the ratio: motor torques, governing utilization and inertia ratio; "
+                       "feasible ratios shaded; the inertia-matching ratio i_opt named (dashed where the catalog "
+                       "reaches it)."))]
 
     def page_block(self, found) -> str:
         """The ratio search on the review's page: each ratio's best gearbox, whether it is feasible, λ

@@ -171,6 +171,8 @@ class RatioResult:
         Every ratio of the gearbox catalog, evaluated, and the pick.
     notes : list of str
         What the search kept to or left out (the motor kept at every ratio, a part not kept to).
+    optimal : OptimalRatio or None, optional
+        The inertia-matching ratio beside the pick.
     """
 
     case: Case
