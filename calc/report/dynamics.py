@@ -154,7 +154,8 @@ class DynamicsRenderer(Renderer):
         m, tm = r.modes, r.two_mass
         rows = [[str(k + 1), value(Value.of(f, "Hz")), value(Value.of(z, "Hz"))]
                 for k, (f, z) in enumerate(zip(m.natural_frequencies, m.anti_resonances))]
-        springs = [[escape(f"{s.name} {s.part}"), value(s.C), typeset(s.basis), escape(_band(s))] for s in r.springs]
+        springs = [[escape(f"{s.name} {s.part}"), value(s.C), typeset(s.basis),
+                    "any torque" if s.band is None else f"{value(s.band[0])} to {value(s.band[1])}"] for s in r.springs]
         checks = "".join(f"<div class=note>{typeset(k.criterion)}: {value(k.rated_value)}"
                          f"{'' if k.utilization is None else f', utilization {k.utilization:.2f}'}"
                          f"{'' if k.governs else ' (for information)'}</div>" for k in r.checks)
