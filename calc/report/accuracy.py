@@ -211,7 +211,8 @@ def _budget_blocks(r) -> list[str]:
             for c, share in zip(b.contributions, b.shares)]
     note = prose(f"Random ones alone (the systematic mapped out): {Value.of(b.rss_random, 'arcmin')}"
                  + (f"; not known: {'; '.join(b.unknown)}" if b.unknown else "") + ".")
-    return [table(r"@{}l l r r p{0.45\linewidth}@{}", ["Contribution", "Kind", "Value", r"Share [\%]", "Why"], rows,
+    header = ["Contribution", "Kind", "Value", r"Share [\%]", "Why"]
+    return [table(r"@{}p{0.2\linewidth} l r r p{0.3\linewidth}@{}", header, rows,
                   caption="Error budget of the positioning accuracy", note=note, small=True),
             step_block("Worst case: every contribution added", b.worst_case),
             step_block("Root-sum-square of the independent contributions", b.rss)]

@@ -88,8 +88,9 @@ class DynamicsRenderer(Renderer):
             return [r"\subsection*{The drive train's dynamics}", prose(f"No modes: {r.reason}.")]
         t, m = r.train, r.modes
         mass_rows = [[latex_escape(name), q(Value.of(J, "kg*cm**2"))] for name, J in zip(t.masses, t.inertias)]
-        spring_rows = [[latex_escape(f"{s.name} {s.part}"), q(s.C), prose(s.basis), latex_escape(_band(s)),
-                        "yes" if s.outside else "no"] for s in r.springs]
+        spring_rows = [[latex_escape(f"{s.name} {s.part}"), q(s.C),
+                        prose(s.basis + ("; the working torques lie outside it" if s.outside else "")),
+                        latex_escape(_band(s))] for s in r.springs]
         mode_rows = [[str(k + 1), q(Value.of(f, "Hz")), q(Value.of(z, "Hz")),
                       latex_escape(", ".join(f"{v:+.3f}" for v in m.shapes[k]))]
                      for k, (f, z) in enumerate(zip(m.natural_frequencies, m.anti_resonances))]
@@ -105,7 +106,8 @@ class DynamicsRenderer(Renderer):
         return [
             r"\subsection*{The drive train's dynamics}",
             table(r"@{}l r@{}", ["Mass", "Inertia"], mass_rows, caption=latex_escape(f"Masses at {t.shaft}")),
-            table(r"@{}l r p{0.42\linewidth} l l@{}", ["Spring", "C", "Basis", "Holds at", "Outside"], spring_rows,
+            table(r"@{}p{0.16\linewidth} r p{0.4\linewidth} p{0.14\linewidth}@{}", ["Spring", "C", "Basis", "Holds at"],
+                  spring_rows,
                   caption="The springs and the stiffness each stands on", small=True),
             table(r"@{}r r r l@{}", ["Mode", "Natural frequency", "Anti-resonance", "Mode shape (drive to load)"],
                   mode_rows, caption="Natural frequencies, anti-resonances (motor held) and mode shapes"),
