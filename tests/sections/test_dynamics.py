@@ -113,3 +113,15 @@ def test_the_ratio_search_names_the_inertia_matching_ratio():
     assert best["value"] == pytest.approx(math.sqrt(1500 / 3.17), rel=1e-9)
     assert best["J_in"]["value"] == pytest.approx(3.17) and best["pick"] == 10
     assert "coupling AKN-18" in best["inertias"] and "i_opt = 21.75" in r.summary()
+
+
+def test_the_results_fit_the_schema(capsys, write_case):
+    # The example's evaluate --json against docs/results.schema.json, which now describes dynamics and the budget.
+    from calc.__main__ import main
+
+    from ..conftest import check_results
+
+    main(["evaluate", str(DERIVED_EXAMPLE), "--json"])
+    results = check_results(capsys.readouterr().out)
+    assert results["dynamics"]["torque_reversals"]["per_cycle"] == 2
+    assert results["accuracy"]["budget"]["contributions"][0]["kind"] == "systematic"
