@@ -999,3 +999,14 @@ def test_the_page_and_the_report_draw_the_same_stiffness_chain():
     assert labels == ["8.64 %: 0.0344 arcmin, C = 232.7 N·m/arcmin", "91.4 %: 0.364 arcmin, C = 22 N·m/arcmin"]
     assert all(f">{label}</text>" in svg for label in labels)
     assert "C_total = 20.1 N·m/arcmin, twist 0.398 arcmin" in svg and "= 20.1 N·m/arcmin, twist 0.398" in ax.get_title()
+
+
+def test_the_frequency_response_is_redrawn_on_a_change():
+    # The dynamics' part of the page: modes, springs, λ and the response as SVG, drawn again from the
+    # changed case's results (another ratio, another gearbox and load at its input: another curve).
+    case = read_case(DERIVED_EXAMPLE)
+    before = results_html(*evaluated(case))
+    after = results_html(*evaluated(with_changes(case, ratio=Q_(8, ""))))
+    assert "<h3>Drive-train dynamics</h3>" in before and "anti-resonance (motor held)" in before
+    curve = [re.search(r'<svg class=dynamics.*?</svg>', t, re.DOTALL).group(0) for t in (before, after)]
+    assert curve[0] != curve[1] and "resonance 265.5 Hz" in curve[0]
