@@ -27,7 +27,8 @@ def _band(s) -> str:
 
 def response_svg(r) -> str:
     """The frequency response as an inline SVG polyline (dB over log frequency), resonances red,
-    anti-resonances blue dashed: cheap enough to redraw on every change of the page.
+    anti-resonances blue dashed, the speed loop's f_er green dotted: cheap enough to redraw on every
+    change of the page.
 
     Parameters
     ----------
@@ -54,6 +55,11 @@ def response_svg(r) -> str:
         return 10 + (h - 30) * (hi - v) / (hi - lo)
 
     points = " ".join(f"{x(a):.1f},{y(b):.1f}" for a, b in zip(lf, db))
+    k = next((k for k in r.checks if k.name == "f_1" and k.required is not None), None)
+    f_er = "" if k is None else (
+        f'<line x1="{x(np.log10(k.required.m_as("Hz") / 2)):.1f}" x2="{x(np.log10(k.required.m_as("Hz") / 2)):.1f}" '
+        f'y1="10" y2="{h - 20}" stroke="#5a9e3a" stroke-width="2" stroke-dasharray="1 3"><title>f_er '
+        f'{sig(k.required.m_as("Hz") / 2, 4)} Hz</title></line>')
     marks = "".join(
         f'<line x1="{x(np.log10(f)):.1f}" x2="{x(np.log10(f)):.1f}" y1="10" y2="{h - 20}" stroke="{color}"'
         f'{dash}><title>{title} {sig(f, 4)} Hz</title></line>'
@@ -62,7 +68,7 @@ def response_svg(r) -> str:
                                         "anti-resonance"))
         for f in fs.m_as("Hz"))
     return (f'<svg class=dynamics width="{w}" height="{h}" role="img" aria-label="frequency response">'
-            f'<polyline fill="none" stroke="black" points="{points}"/>{marks}'
+            f'<polyline fill="none" stroke="black" points="{points}"/>{marks}{f_er}'
             f'<text x="40" y="{h - 4}" font-size="10">{sig(10 ** lf[0], 3)} Hz</text>'
             f'<text x="{w - 60}" y="{h - 4}" font-size="10">{sig(10 ** lf[-1], 3)} Hz</text>'
             f'<text x="2" y="12" font-size="10">{sig(hi, 3)} dB</text></svg>')
@@ -156,16 +162,18 @@ class DynamicsRenderer(Renderer):
         m, tm = r.modes, r.two_mass
         rows = [[str(k + 1), value(Value.of(f, "Hz")), value(Value.of(z, "Hz"))]
                 for k, (f, z) in enumerate(zip(m.natural_frequencies, m.anti_resonances))]
-        springs = [[escape(f"{s.name} {s.part}"), value(s.C), typeset(s.basis),
-                    "any torque" if s.band is None else f"{value(s.band[0])} to {value(s.band[1])}"] for s in r.springs]
+        springs = "".join(
+            f"<div class=note>{escape(f'{s.name} {s.part}')}: C = {value(s.C)}, {typeset(s.basis)}"
+            + ("" if s.band is None else f"; holds at {value(s.band[0])} to {value(s.band[1])}")
+            + ("; <b>the working torques lie outside it</b>" if s.outside else "") + "</div>" for s in r.springs)
         checks = "".join(f"<div class=note>{typeset(k.criterion)}: {value(k.rated_value)}"
                          f"{'' if k.utilization is None else f', utilization {k.utilization:.2f}'}"
                          f"{'' if k.governs else ' (for information)'}</div>" for k in r.checks)
         return ("<h3>Drive-train dynamics</h3>"
                 + html_table(["mode", "natural frequency", "anti-resonance (motor held)"], rows, numeric={1, 2})
-                + html_table(["spring", "C", "basis", "holds at"], springs, numeric={1})
+                + springs
                 + f"<div class=note>{typeset(f'λ = {tm.inertia_ratio:.4g}: f_r / f_ar = {tm.ratio:.4g} = √(1 + λ)')}"
-                + f"; {escape(r.lam_meaning)}</div>" + checks + notes(r.notes) + response_svg(r))
+                + f"; {typeset(r.lam_meaning)}</div>" + checks + notes(r.notes) + response_svg(r))
 
     def compared(self) -> tuple:
         def first(r):
