@@ -2,7 +2,8 @@
 ``python -m calc ratios CASE.toml [--json] [--strict]`` (the case at every ratio of its gearbox
 catalog, and the ratio to pick) and
 ``python -m calc report CASE.toml [CASE2.toml ...] [-o reports/NAME.pdf] [--strict] [--summary]`` and
-``python -m calc compare A.toml B.toml [...] [--json] [--pdf FILE]`` (the designs side by side).
+``python -m calc compare A.toml B.toml [...] [--json] [--pdf FILE]`` (the designs side by side) and
+``python -m calc machine MACHINE.toml [--json] [--pdf FILE] [--strict]`` (several axes on one DC bus).
 
 Exit status (``docs/case-format.md``): 0 when results were produced, whatever the verdict; with
 ``--strict``, 1 when the verdict is not PASS (for ``ratios``: when no ratio can be picked); 2 on
@@ -65,7 +66,21 @@ def main(argv=None) -> int:
     cp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one column each")
     cp.add_argument("--json", action="store_true", help="print the table as JSON")
     cp.add_argument("--pdf", help="also write the table and a comparison figure as a PDF file")
-    for p in (ev, ra, co, rp):
+    ex = sub.add_parser("export", help="write a case and its results as an IDTA 02021 submodel (AAS JSON or AASX)")
+    ex.add_argument("case", help="the design-case TOML file")
+    ex.add_argument("--aas", metavar="OUT.json",
+                    help="write AAS JSON (metamodel V3.0), the motion pattern's CSV beside it")
+    ex.add_argument("--aasx", metavar="OUT.aasx", help="write an AASX package with the case file and the CSV inside")
+    ex.add_argument("--report", metavar="PDF", help="a calc report built of the case, carried in the AASX")
+    im = sub.add_parser("import", help="write a case file from an IDTA 02021 submodel (AAS JSON or AASX)")
+    im.add_argument("file", help="the .json or .aasx file")
+    im.add_argument("-o", "--output", required=True, metavar="CASE.toml",
+                    help="the case file to write; its drive record is written beside it")
+    ma = sub.add_parser("machine", help="evaluate a machine of several axes on one DC bus")
+    ma.add_argument("machine", help="the machine's TOML file ([[axis]] case and start, cycle, [dc_bus])")
+    ma.add_argument("--json", action="store_true", help="print the results as JSON")
+    ma.add_argument("--pdf", help="also write the summary and the DC bus's power over the cycle as a PDF file")
+    for p in (ev, ra, co, rp, ma):
         p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
     # Nothing but the results and the one-line error reach the terminal: numpy's floating-point
@@ -90,6 +105,11 @@ def _run(args) -> int:
 
             print(compare_cases(args.cases, args.json, args.pdf))
             return 0
+        if args.command in ("export", "import"):
+            from .exchange.command import run_exchange
+
+            print(run_exchange(args))
+            return 0
         if args.command == "combinations":
             from .sections.pairs import search_pairs
 
@@ -98,6 +118,16 @@ def _run(args) -> int:
             passes = results.verdict().passes
             if args.figure:
                 results.figure().savefig(args.figure)
+        elif args.command == "machine":
+            from .sections.machine import machine
+
+            results = machine(args.machine)
+            text = _json(results.to_json()) if args.json else results.summary()
+            passes = results.verdict().passes
+            if args.pdf:
+                from .figures.drive_plots import machine_pdf
+
+                machine_pdf(results.summary(), *results.power_rows(), args.pdf)
         elif args.command == "ratios":
             from .sections.ratios import search
 

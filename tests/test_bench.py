@@ -14,9 +14,10 @@ LINES = (
     "sweep", "sweep_numpy", "sweep_vs_numpy", "sweep_1M", "sweep_1M_numpy", "sweep_1M_vs_numpy", "hysteresis_1M",
     "motion_1M", "motion_numpy_1M", "motion_loop_1M", "motion_vs_numpy", "motion_loop_vs_motion",
     "combinations", "combinations_numpy", "combinations_loop", "combinations_numpy_vs_ours",
-    "combinations_loop_vs_ours",
+    "combinations_loop_vs_ours", "machine_50_axes", "cases_50_one_by_one",
     "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report", "report_20_cases",
     "review_start", "review_page_ready", "review_change_median", "review_change_max",
+    "review_5_reviewers_median", "review_5_reviewers_memory",
 )
 
 

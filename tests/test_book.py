@@ -16,9 +16,9 @@ import pytest
 
 from bench.review_browser import CHROMIUM, CHROMIUM_ARGS
 
-from .conftest import ROOT
+from .conftest import ROOT, needs_tools
 
-pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason=f"no Chromium at {CHROMIUM} (make browser installs it)")
+pytestmark = needs_tools("chromium")
 
 RAW_TEX = re.compile(r"\$\\?[A-Za-z][^$\n]*\$")  # $T_{2m}$ or $\\mathrm{ED}$ left as typed
 NOTEBOOKS = sorted(p.stem for p in (ROOT / "notebooks").glob("*.ipynb"))

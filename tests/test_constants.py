@@ -45,9 +45,11 @@ APART = {
          "the fewest samples of a loop and of a trace; S5's on-time of 20 min (E3); the candidates an output lists"),
 }
 
-#: Module-level names holding a standard's table as printed (ISO 286-1 in calc/domain/fits.py):
+#: Module-level names holding a standard's table as printed (ISO 286-1 in calc/domain/fits.py; the AC
+#: supply classes of drives in calc/domain/drive.py):
 #: their entries are data, not the constants of a rule.
-TABLES = {"SIZE_BANDS_MM", "STANDARD_TOLERANCES_UM", "SHAFT_DEVIATIONS_UM", "GRADES", "_K_GRADES", "EXCEPTIONS_UM"}
+TABLES = {"VOLTAGE_CLASSES", "SIZE_BANDS_MM", "STANDARD_TOLERANCES_UM", "SHAFT_DEVIATIONS_UM", "GRADES", "_K_GRADES",
+          "EXCEPTIONS_UM"}
 
 
 def literals(source: str) -> list[tuple[float, int]]:

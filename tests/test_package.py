@@ -83,6 +83,7 @@ def test_pip_install_runs_the_example_case_from_package_data(source, tmp_path):
     installed = target / "calc"
     assert sorted(p.name for p in (installed / "catalogs").glob("*.csv")) == [
         "couplings.csv",
+        "drives.csv",
         "gearbox-hubs.csv",
         "gearboxes.csv",
         "motors.csv",

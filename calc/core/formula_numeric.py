@@ -9,6 +9,7 @@ the function only while the fingerprint is the formula's own.
 from .segment_sum import sum_last_axis as SegmentSum
 from numpy import absolute as abs
 from numpy import cos
+from numpy import exp
 from numpy import pi
 from numpy import sin
 from numpy import sqrt
@@ -88,6 +89,34 @@ def coupling__C_T(C_B, Z, C_tube):
 
 def coupling__phi(T, C_T):
     return T/C_T
+
+
+def drive__I_ph(T_1, k_T):
+    return T_1/k_T
+
+
+def drive__k_T_derived(M_0, I_0):
+    return M_0/I_0
+
+
+def drive__E_C(C_DC, U_on, U_DC):
+    return (1/2)*C_DC*(-U_DC**2 + U_on**2)
+
+
+def drive__P_R_peak(U_on, R_br):
+    return U_on**2/R_br
+
+
+def drive__P_R_avg(E_R, t_cycle):
+    return E_R/t_cycle
+
+
+def drive__u_th(T_1, M_0):
+    return T_1**2/M_0**2
+
+
+def drive__theta_max(u_th, t_1, t_cycle, T_th):
+    return u_th*(1 - exp(-t_1/T_th))/(1 - exp(-t_cycle/T_th))
 
 
 def dynamics__f_r(C_s, rad, J_motor, J_Lm):
@@ -354,6 +383,13 @@ FUNCTIONS = {
     "calc.domain.coupling.Z": ("86f9df9f99fa206b", coupling__Z),
     "calc.domain.coupling.C_T": ("7c965898ba154eb1", coupling__C_T),
     "calc.domain.coupling.phi": ("f227044abb00fd02", coupling__phi),
+    "calc.domain.drive.I_ph": ("5de72b6626ff454e", drive__I_ph),
+    "calc.domain.drive.k_T_derived": ("857d0e29e2f62044", drive__k_T_derived),
+    "calc.domain.drive.E_C": ("c38b4d4f04d8d50e", drive__E_C),
+    "calc.domain.drive.P_R_peak": ("ba9f2f758c5036d6", drive__P_R_peak),
+    "calc.domain.drive.P_R_avg": ("fb34114d00e6517e", drive__P_R_avg),
+    "calc.domain.drive.u_th": ("a571ba88019f4ffd", drive__u_th),
+    "calc.domain.drive.theta_max": ("491f673413de41a0", drive__theta_max),
     "calc.domain.dynamics.f_r": ("1bec6585898b822b", dynamics__f_r),
     "calc.domain.dynamics.f_ar": ("98f992996b02382f", dynamics__f_ar),
     "calc.domain.dynamics.q_r": ("2a2fb0d4528416a5", dynamics__q_r),

@@ -61,10 +61,17 @@ HARMONIC_DRIVE = Document(
     "engineering data of the HFUC, CSF and CSG strain wave gears",
     "Harmonic Drive",
 )
+#: The drive makers' sizing chapters the servo drive's methods follow.
+DRIVE_SIZING = Document(
+    "drive makers' sizing chapters",
+    "sizing of servo drives, brake resistors and multi-axis DC buses (installation and selection manuals)",
+    "Kollmorgen (AKD, S700), Yaskawa (Σ-7), Mitsubishi Electric (MR-J4), Schneider Electric (Motion Sizer), Beckhoff",
+    held="catalogs/drives.csv, its source column for each row",
+)
 
 #: The registry: every document a formula may cite.
 DOCUMENTS = (SOURCE, ERRATA, CASE_FORMAT, MECHANICS, DUBBEL, RW_ZA, RW_EK, KTR_ROTEX, MAYR_ROBA_ES, WITTENSTEIN,
-             HARMONIC_DRIVE)
+             HARMONIC_DRIVE, DRIVE_SIZING)
 
 
 def motion_reading(says: str = "") -> Citation:

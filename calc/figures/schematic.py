@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing
 from ..core.glossary import math as symbol
 
 
@@ -58,7 +58,7 @@ def drive_train_figure(focus: tuple[str, ...] = ()):
     keys = [key for key, _, _ in MEMBERS]
     unknown = [f for f in focus if f not in keys]
     if unknown:
-        raise CalcError(f"focus: expected members among {', '.join(keys)}; found {', '.join(repr(f) for f in unknown)}")
+        raise CalcError(f"focus: expected members among {listing(keys)}; found {listing(repr(f) for f in unknown)}")
     fig = Figure(figsize=(8.0, 2.5), layout="constrained")
     ax = fig.subplots()
     width, gap, height = 1.6, 0.7, 1.5

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found
 from ..core.units import NUMBER, Q_, parse_quantity, pretty_unit
 from ..report.symbols import symbol_text
 from ..sections import OWN_TABLES, axis, declared
@@ -207,6 +207,9 @@ SCALARS = (
     ("load.inertia", "load inertia", _scaled),
     ("coupling.temperature", "coupling temperature", _temperature),
     ("accuracy.applied_torque", "applied torque", lambda t: (0.0, max(5 * t, 10.0))),
+    ("drive.brake_resistor.resistance", "brake resistor", _scaled),
+    ("drive.brake_resistor.continuous_power", "brake resistor's continuous power", _scaled),
+    ("drive.brake_resistor.peak_power", "brake resistor's peak power", _scaled),
 )
 
 
@@ -428,8 +431,11 @@ def input_specs(case: Case, ratios=()) -> list[InputSpec]:
     tables = file_tables(case)
     for path, name, reach in SCALARS:
         key = declared(path)
-        section, entry = path.split(".")
-        text = tables[section].get(entry, DEFAULTS.get(path)) if isinstance(tables.get(section), dict) else None
+        *tables_in, entry = path.split(".")
+        table = tables
+        for name_in in tables_in:  # a key of an inline table: drive.brake_resistor.resistance
+            table = table.get(name_in) if isinstance(table, dict) else None
+        text = table.get(entry, DEFAULTS.get(path)) if isinstance(table, dict) else None
         if text is not None:
             unit = _unit_of(text) if is_inch_pound(_unit_of(text)) else key.unit
             v = float(parse_quantity(text, key.kind, f"{case.path}: {path}").m_as(unit))
@@ -540,7 +546,8 @@ def read_typed(text: str, spec: InputSpec) -> float:
     t = text.strip()
     unit = f" {pretty_unit(spec.unit)}" if spec.unit else ""
     if not TYPED.match(t):
-        raise CalcError(f"{t!r} is not a number: expected a number such as {spec.value:g} (in{unit or ' no unit'}), "
+        raise CalcError(f"{as_found(t)} is not a number: expected a number such as {spec.value:g} "
+                        f"(in{unit or ' no unit'}), "
                         "a decimal point or comma; not applied")
     v = float(t.replace(",", "."))
     if not math.isfinite(v) or not spec.low <= v <= spec.high:

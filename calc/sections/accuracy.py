@@ -16,7 +16,7 @@ from ..domain.accuracy import (POSITIONING_CONVENTION, Budget, ChainAccuracy, Po
 from .case import Case, Declared, Key, Table
 from ..data.catalog import display_path, load_catalog, load_catalogs, resolve
 from ..core.checks import CheckArray
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..core.units import Q_, Value, as_kind, fmt, parse_quantity, sig
 from ..data.measurement import measurement_path
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
@@ -272,7 +272,7 @@ def accuracy_case(case: Case, given: AccuracyInputs, gearbox, coupling) -> Accur
     for k, name in enumerate(names):
         if name in names[:k]:
             first = tables[names.index(name)].key("name")
-            raise CalcError(f"{tables[k].where('name')}: the name {name!r} is already used by {first}")
+            raise CalcError(f"{tables[k].where('name')}: the name {as_found(name)} is already used by {first}")
     input_side = [t for t, c in zip(tables, components) if c.side == "input"]
     if input_side and ratio is None:
         raise CalcError(
@@ -293,7 +293,8 @@ def _requirement(sec: Table, key: str, out: AccuracyInputs):
         return _positive(sec, key, "angle")
     arc = sec.positive(key, "length", what="a length")
     if out.radius is None:
-        raise CalcError(f"{sec.where(key)}: a requirement given as a length ({sec.data[key]!r}) is an arc at a radius; "
+        raise CalcError(f"{sec.where(key)}: a requirement given as a length ({as_found(sec.data[key])}) is an "
+                        "arc at a radius; "
                         "give accuracy.radius as well")
     out.required_arcs[key.removeprefix("required_")] = arc
     return angle_of_arc(s=arc, r=out.radius)
@@ -312,14 +313,14 @@ def _positive(sec: Table, key: str, kind: str):
     q = sec.quantity(key, kind)
     if q is not None and not q.magnitude > 0:
         raise CalcError(f"{sec.where(key)}: expected {'an' if kind == 'angle' else 'a'} {kind} above zero, found "
-                        f"{sec.data[key]!r}")
+                        f"{as_found(sec.data[key])}")
     return q
 
 
 def _nonnegative_angle(t: Table, key: str):
     q = t.quantity(key, "angle")
     if q is not None and not q.magnitude >= 0:
-        raise CalcError(f"{t.where(key)}: expected an angle of zero or more, found {t.data[key]!r}")
+        raise CalcError(f"{t.where(key)}: expected an angle of zero or more, found {as_found(t.data[key])}")
     return q
 
 
@@ -413,7 +414,7 @@ def _check_measured_part(t: Table, part: str | None) -> None:
     if measured_on is not None and part != SELECTED:
         raise CalcError(f"{t.where('measured_part')}: measured_part names the part a measurement was made on when part "
                         "= \"selected\"; found "
-                        f"{'no part' if part is None else f'part = {part!r}, whose measurements are its own'}")
+                        f"{'no part' if part is None else f'part = {as_found(part)}, whose measurements are its own'}")
     if measured_on is not None and not measured:
         raise CalcError(f"{t.where('measured_part')}: measured_part names the part a measurement was made on; give "
                         "hysteresis or transmission_trace as well")
@@ -448,13 +449,13 @@ def read_component(t: Table) -> ComponentInputs:
     part = t.text("part")
     kind = t.text("kind")
     if kind not in PART_KINDS:
-        raise CalcError(f"{t.where('kind')}: expected one of {', '.join(PART_KINDS)}, found {kind!r}")
+        raise CalcError(f"{t.where('kind')}: expected one of {listing(PART_KINDS)}, found {as_found(kind)}")
     if t.has("kind") and part is None:
         raise CalcError(f"{t.where('kind')}: kind says which catalog a part comes from; give part as well")
     name = t.text("name", required=part is None)
     side = t.text("side", required=part is None)
     if side not in SIDES:
-        raise CalcError(f"{t.where('side')}: expected input or output, found {side!r}")
+        raise CalcError(f"{t.where('side')}: expected input or output, found {as_found(side)}")
     stiffness, curve = _positive(t, "stiffness", "stiffness"), None
     if t.has("stiffness_curve"):
         for key in ("stiffness", "part", "hysteresis"):
@@ -470,11 +471,12 @@ def read_component(t: Table) -> ComponentInputs:
     if part is not None:
         for key in ("stiffness", "backlash", "nominal_torque"):
             if t.has(key):
-                raise CalcError(f"{t.where(key)}: the part {part!r} gives its {key} from the catalog; give either part "
+                raise CalcError(f"{t.where(key)}: the part {as_found(part)} gives its {key} from the catalog; "
+                                "give either part "
                                 f"or {key}")
         if kind == "gearbox" and side != "output":
             raise CalcError(f"{t.where('side')}: a gearbox's catalog figures are referred to its output, so the part "
-                            f"{part!r} sits on the output side, found {side!r}")
+                            f"{as_found(part)} sits on the output side, found {as_found(side)}")
         if part == SELECTED and t.has("catalog"):
             raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the {kind} selection's catalog; "
                             "give no catalog")
@@ -559,7 +561,7 @@ def _coupling_figures(case: Case, c: ComponentInputs, f: Figures, coupling) -> s
     chosen, f.stiffness, coupling_side, source, stand_in = _coupling_part(case, t, c.part, coupling)
     if coupling_side is not None and t.has("side") and f.side != coupling_side:
         raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side "
-                        f"(coupling.side), found {f.side!r}")
+                        f"(coupling.side), found {as_found(f.side)}")
     f.side = coupling_side or f.side
     f.backlash = Q_(0.0, "arcmin")
     f.chosen = chosen

@@ -17,7 +17,7 @@ from ..domain.coupling import (
     DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input,
     check_types, f_e_min, order_lines, select_coupling,
 )
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..domain.fits import parse_bore
 from ..domain.gearbox import n_1
 from ..domain.profile import Z_h
@@ -183,7 +183,7 @@ def read_inputs(case: Case) -> CouplingInputs:
     catalog, wanted = _candidates(case, s)
     side = s.text("side")
     if side is not None and side not in SIDES:
-        raise CalcError(f"{s.where('side')}: expected one of {', '.join(SIDES)}, found {side!r}")
+        raise CalcError(f"{s.where('side')}: expected one of {listing(SIDES)}, found {as_found(side)}")
     derivable = FROM_THE_CASE[:3] if side == "input" else ()  # speed only with a gearbox: not among the keys needed
     for key in ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "shaft_1", "shaft_2"):
         if not s.has(key) and key not in derivable:
@@ -256,13 +256,14 @@ def _candidates(case: Case, s: Table) -> tuple[Catalog, str | None]:
     check_types(catalog)
     wanted = s.text("type")
     if wanted is not None and wanted not in TYPES:
-        raise CalcError(f"{s.where('type')}: unknown coupling type {wanted!r}; expected one of {', '.join(TYPES)}")
+        raise CalcError(f"{s.where('type')}: unknown coupling type {as_found(wanted)}; expected one of "
+                        f"{listing(TYPES)}")
     part = s.text("part")
     if part is not None:
         row = catalog.usable_index(part, s.where("part"))
         if wanted is not None and catalog.text["type"][row] != wanted:
             raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, "
-                            f"but coupling.type is {wanted!r}")
+                            f"but coupling.type is {as_found(wanted)}")
         return catalog.rows([row]), wanted
     if wanted is not None:
         mask = catalog.text["type"] == wanted

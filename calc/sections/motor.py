@@ -20,14 +20,19 @@ from ..domain.motor import (
     motor_torque, phases,
 )
 from ..domain.motor_ratings import RANKING, Cycle, MotorSelection, read_curves, select_motors
-from ..core.units import Q_, fmt
-from . import axis
+from ..core.units import Q_, fmt, number
+from ..domain.drive import Winding, winding
+from .motor_catalog import motor_catalog
 from .common import (Governing, Verdict, check_json, check_line, quantity, quantity_text, row_json, selection_governing,
                      selection_verdict)
 from .protocol import Result, Section
 
 NAME = "motor"
 ORDER = 60
+
+#: The winding's model as the results name it.
+THERMAL_MODEL = ("first order: dθ/dt = ((T_1 / M_0)² − θ) / T_th, the cycle repeated until periodic; θ = 1 at the "
+                 "winding's rise under M_0 held (M_N where the motor gives no M_0)")
 
 TYPED = (
     "the load cycle is typed ([[profile]]): its accelerations are not known, so the rotor term "
@@ -155,6 +160,9 @@ class MotorResult(Result):
     segments : tuple, optional
         Each sample's segment number and each segment's phase name (the motion's segments, or
         the typed ones).
+    thermal_rating : tuple, optional
+        The winding's reference torque's symbol (``M_0``, or ``M_N``), its value [N·m] and the
+        thermal time constant [s], where the motor gives ``T_th``: the winding's model is made.
     """
 
     part: str | None
@@ -171,6 +179,7 @@ class MotorResult(Result):
     J_motor: object = None
     selection: MotorSelection | None = None
     segments: tuple | None = None
+    thermal_rating: tuple | None = None
 
     @property
     def row_checks(self) -> list:
@@ -194,6 +203,15 @@ class MotorResult(Result):
     def energy(self) -> Energy | None:
         """Its power and the energy it gives back per cycle (:func:`calc.domain.motor.energy`)."""
         return None if self.load is None else energy(*self._at_motor)
+
+    @functools.cached_property
+    def thermal(self) -> Winding | None:
+        """The winding's first-order model over the cycle (:func:`calc.domain.drive.winding`), where
+        the motor gives its thermal time constant and the torques are known; else None."""
+        if self.thermal_rating is None or self.load is None:
+            return None
+        dt, _, T_1 = self._at_motor
+        return winding(dt, T_1, *self.thermal_rating)
 
     @property
     def _at_motor(self) -> tuple:
@@ -243,6 +261,12 @@ class MotorResult(Result):
                              "peak_power": quantity(Q_(e.peak_power, "W"), "W", "motor.peak_power"),
                              "peak_braking_power": quantity(Q_(e.peak_braking_power, "W"), "W",
                                                             "motor.peak_braking_power")}
+        w = self.thermal
+        if w is not None:
+            out["thermal"] = {"model": THERMAL_MODEL, "utilization": number(w.utilization),
+                              "reference": w.reference,
+                              "reference_torque": quantity(Q_(w.reference_torque, "N*m"), "N*m", "motor.thermal"),
+                              "thermal_time_constant": quantity(Q_(w.T_th, "s"), "min", "motor.thermal")}
         sel = self.selection
         if sel is not None:
             one = len(sel.catalog.members) == 1
@@ -276,6 +300,10 @@ class MotorResult(Result):
             lines.append(f"  Power at the motor: peak {Q_(e.peak_power, 'W'):.4g~P} driving, "
                          f"{Q_(e.peak_braking_power, 'W'):.4g~P} braking; "
                          f"{Q_(e.regenerated_per_cycle, 'J'):.4g~P} given back per cycle")
+        w = self.thermal
+        if w is not None:
+            lines.append(f"  Winding (first-order model, T_th = {Q_(w.T_th, 's').to('min'):.4g~P}): "
+                         f"θ_max = {w.utilization:.3g} of its rise under {w.reference} held")
         sel = self.selection
         if sel is None:
             lines += [f"        {check_line(c.at(0))}" for c in self.checks]
@@ -429,13 +457,14 @@ class MotorSection(Section):
         return any(q is not None for q in given)
 
     def evaluate(self, case: Case, earlier) -> MotorResult:
-        return motor_result(earlier["axis"].case, transmission(earlier.get("gearbox")), earlier.get("coupling"))
+        axis = earlier["axis"]
+        return motor_result(axis.case, transmission(earlier.get("gearbox")), earlier.get("coupling"), axis.chosen)
 
 
 SECTION = MotorSection()
 
 
-def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
+def motor_result(case: Case, t: Transmission, coupling, chosen: str | None = None) -> MotorResult:
     """The motor's torques through a transmission and its checks.
 
     Parameters
@@ -446,6 +475,9 @@ def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
         What the motor drives through.
     coupling : calc.sections.coupling.CouplingResult or None
         The coupling section's result; None where the case has no coupling.
+    chosen : str, optional
+        The catalog motor chosen with the gearbox (:class:`calc.sections.axis.AxisResult`): ranked
+        first where it passes.
 
     Returns
     -------
@@ -469,7 +501,7 @@ def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
     speed = n_1(n_2=out.n_2max, i=t.i * np.ones(1))
     J_1 = None if missing or J_1 is None else J_1[0]
     if case.motor_catalog is not None:
-        return _catalog_motor(case, t, out, J_1, J_c, missing, speed, notes)
+        return _catalog_motor(case, t, out, J_1, J_c, missing, speed, notes, chosen)
     load = None if missing else motor_load(out.dt, out.torque, out.speed, t.i, t.eta, out.alpha_2, case.motor_inertia,
                                            J_1)
     if load is not None:
@@ -481,13 +513,17 @@ def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
     for key, what in (("peak_torque", "peak"), ("rated_torque", "RMS"), ("max_speed", "speed")):
         if getattr(case, f"motor_{key}") is None:
             notes.append(f"the motor's {what} is not checked: the case gives no motor.{key}")
+    thermal = None
+    if case.motor_thermal_time_constant is not None and case.motor_rated_torque is not None:
+        thermal = ("M_N", case.motor_rated_torque.m_as("N*m"), case.motor_thermal_time_constant.m_as("s"))
     return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, checks, notes, output=out,
-                       J_motor=case.motor_inertia, segments=segments_of(case))
+                       J_motor=case.motor_inertia, segments=segments_of(case), thermal_rating=thermal)
 
 
-def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missing, speed, notes) -> MotorResult:
+def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missing, speed, notes,
+                   chosen: str | None) -> MotorResult:
     """Every motor of the case's catalog (or its part alone) against the cycle through ``t``."""
-    cat = axis.motor_catalog(case)
+    cat = motor_catalog(case)
     if case.motor_part is not None:
         cat = cat.rows(cat.parts == case.motor_part)
     elif cat.partial.any():  # never ranked: not computed either
@@ -508,8 +544,10 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     cycle = Cycle(T_1.m_as("N*m"), (few.speed * t.i).m_as("rad/s"), few.dt.m_as("s"), rms.m_as("N*m"), lam,
                   None if J_L is not None else no_ratio)
     limit, where = case.motor_max_inertia_ratio
-    curves = None if case.motor_curves is None else read_curves(case.motor_curves, axis.motor_catalog(case).parts)
+    curves = None if case.motor_curves is None else read_curves(case.motor_curves, motor_catalog(case).parts)
     sel = select_motors(cat, cycle, case.motor_dc_link, curves, limit, where, float(case.profile.t_cycle.m_as("s")))
+    if chosen is not None:
+        sel.put_first(chosen)
     best = int(sel.order[0])
     # Every sample, in time.
     T_best = motor_torque(out.torque, out.speed, t.i, t.eta, out.alpha_2, J[best:best + 1, None], J_1q)
@@ -517,7 +555,30 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     T_best = Q_(np.atleast_2d(T_best.m_as("N*m")), "N*m")
     load = MotorLoad(T_best, np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
     return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out,
-                       J_motor=J[best], selection=sel, segments=segments_of(case))
+                       J_motor=J[best], selection=sel, segments=segments_of(case),
+                       thermal_rating=thermal_rating(cat, best))
+
+
+def thermal_rating(cat, row: int) -> tuple | None:
+    """What the winding's model needs of a catalog motor: ``(M_0 or M_N, its torque [N·m], T_th [s])``.
+
+    Parameters
+    ----------
+    cat : calc.data.catalog.Catalog
+        A motor catalog.
+    row : int
+        The motor's row.
+
+    Returns
+    -------
+    tuple or None
+        None where the row gives no thermal time constant.
+    """
+    T_th = float(cat["T_th"][row].m_as("s"))
+    if np.isnan(T_th):
+        return None
+    M_0 = float(cat["M_0"][row].m_as("N*m"))
+    return ("M_N", float(cat["M_N"][row].m_as("N*m")), T_th) if np.isnan(M_0) else ("M_0", M_0, T_th)
 
 
 def segments_of(case: Case) -> tuple:

@@ -17,7 +17,7 @@ from calc.sections import evaluate as evaluate_case
 from calc.review import DesignReview, evaluated, input_specs, results_html, with_changes, with_inputs
 from calc.review.inputs import nice_step
 
-from ..conftest import DERIVED_EXAMPLE, EXAMPLE
+from ..conftest import DERIVED_EXAMPLE, EXAMPLE, has_tool
 
 
 def evaluate(case) -> dict:
@@ -602,9 +602,8 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
                           capture_output=True, text=True).stdout
     assert "NPS045-10 *" in text and text.splitlines()[-1] == "* differs from the first design"
     assert pdf.read_bytes()[:5] == b"%PDF-"
-    import shutil
 
-    if shutil.which("pdftotext"):
+    if has_tool("pdftotext"):
         printed = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True).stdout
         assert "NPS045-10" in printed and "378.3 N·m" in printed and "worst governing utilization" in printed
 
@@ -959,7 +958,6 @@ def test_a_link_variant_that_no_longer_reads_is_left_out_saying_why():
 def test_the_variants_as_a_pdf(tmp_path):
     """*Variants as PDF* writes the comparison with its figure beside the case (no reports'
     folder given), never over a file, the variants named in full under the title."""
-    import shutil
     import subprocess
 
     case = tmp_path / "axis.toml"
@@ -974,7 +972,7 @@ def test_the_variants_as_a_pdf(tmp_path):
     first, second = panel.variants_pdf(), panel.variants_pdf()
     assert (first.name, second.name) == ("axis-variants-1.pdf", "axis-variants-2.pdf")
     assert first.read_bytes()[:5] == b"%PDF-" and "the variants compared, as a PDF" in panel.kept.value
-    if shutil.which("pdftotext"):
+    if has_tool("pdftotext"):
         text = subprocess.run(["pdftotext", "-layout", str(first), "-"], capture_output=True, text=True).stdout
         assert "variant 1" in text and "variant 2" in text and "378.3 N·m" in text and "NPS045-10" in text
         assert "2: axis.toml with motor peak torque" in text and "worst governing utilization" in text

@@ -85,14 +85,14 @@ def in_order(names, known):
 
 
 def test_the_lists_of_sections_follow_from_the_modules():
-    shared = ["motion", "profile", "gearbox", "coupling", "motor", "accuracy"]
+    shared = ["motion", "profile", "gearbox", "coupling", "motor", "drive", "accuracy"]
     assert in_order([s.NAME for s in SECTIONS], shared) == shared
     # The sections that read a table of their own keep it typed once the case is read.
     example = read_case(ROOT / "cases" / "indexing-table.toml")
     assert list(example.inputs) == list(example.sections) == ["coupling", "accuracy"]
     assert all(example.inputs[name].table is example.sections[name] for name in example.inputs)
     assert TOP_KEYS == ("title", *(t.name for t in DECLARED))
-    top = ["motor", "load", "mechanism", "move", "drive_record", "profile", "gearbox", "coupling", "accuracy"]
+    top = ["motor", "load", "mechanism", "move", "drive_record", "profile", "gearbox", "coupling", "drive", "accuracy"]
     assert in_order(TOP_KEYS, top) == top
     # The renderers are the sections' modules' namesakes', in their order.
     renderers = [type(r).__module__.rpartition(".")[2] for r in RENDERERS]
