@@ -329,8 +329,8 @@ class CouplingCheck(CheckArray):
         return True if self.applies is None else bool(self.applies[row])
 
     def at(self, row: int, governs: bool = True):
-        """This check for one row; a row an optional check cannot be made for says why, and
-        decides nothing.
+        """This check for one row; a row it cannot be made for (no rated value) is not made and
+        says why, and an optional check's then decides nothing.
 
         Parameters
         ----------
@@ -351,9 +351,11 @@ class CouplingCheck(CheckArray):
             missing = self.missing if isinstance(self.missing, str) else self.missing[row]
             return dataclasses.replace(check, passes=bool(within_rating(self.utilization[row])) if made else None,
                                        not_made=None if made else missing)
-        if self.optional and check.utilization is None:
+        if check.utilization is None and self.made and check.not_made is None:
+            # A row without the value checked (a C_T the catalog leaves empty): not made, with why.
             missing = self.missing if isinstance(self.missing, str) else self.missing[row]
-            return dataclasses.replace(check, passes=None, governs=False, not_made=missing)
+            return dataclasses.replace(check, passes=None, governs=check.governs and not self.optional,
+                                       not_made=missing)
         return check
 
     def reason(self, row: int) -> str:

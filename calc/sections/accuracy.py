@@ -11,8 +11,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..domain.accuracy import (ChainAccuracy, PositioningScatter, angle_of_arc, arc_length, chain_accuracy,
-                               read_positions)
+from ..domain.accuracy import (POSITIONING_CONVENTION, Budget, ChainAccuracy, PositioningScatter, angle_of_arc,
+                               arc_length, chain_accuracy, error_budget, read_positions)
 from .case import Case, Declared, Key, Table
 from ..data.catalog import display_path, load_catalog, load_catalogs, resolve
 from ..core.checks import CheckArray
@@ -717,7 +717,9 @@ def requirement_checks(spec: AccuracyCase, a: ChainAccuracy) -> list[CheckArray]
     list of calc.core.checks.CheckArray
         One check per required value [arcmin], the chain's value as the required side.
     """
-    values = {"positioning_accuracy": a.positioning_accuracy, "repeatability": a.repeatability}
+    # A term of the positioning accuracy unknown: it bounds nothing, the repeatability keeps the lost motion.
+    values = {"positioning_accuracy": a.positioning_accuracy,
+              "repeatability": a.repeatability if spec.unknown else a.repeatability_bound}
     return [
         CheckArray(name, "", f"{name} <= required", values[name].reshape(1), limit.reshape(1), "arcmin")
         for name, limit in spec.required.items()
@@ -1107,11 +1109,12 @@ def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
     """
     c = a.chain
     chain = chain_values(c, a.applied_torque, spec.loops, spec.traces)
+    repeatability = a.repeatability if spec.unknown else a.repeatability_bound
     arcs, check_arcs = {}, {}
     if spec.radius is not None:
         r = spec.radius
         for key in ("backlash", "lost_motion", "positioning_accuracy", "repeatability"):
-            angle = c.backlash if key == "backlash" else getattr(a, key)
+            angle = {"backlash": c.backlash, "repeatability": repeatability}.get(key, getattr(a, key, None))
             arcs[key] = Value.of(arc_length(r=r, phi=angle), "mm", f"accuracy.{key}_arc")
         for k in (k.at(0) for k in requirement_checks(spec, a)):
             check_arcs[k.name] = (Value.of(arc_length(r=r, phi=k.required), "mm", f"accuracy.{k.name}"),
@@ -1129,7 +1132,7 @@ def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
         transmission_accuracy_from=c.transmission_accuracy_from, lost_motion=Value.of(a.lost_motion, "arcmin"),
         positioning_rule=a.rule.text, positioning_accuracy=Value.of(a.positioning_accuracy, "arcmin"),
         unknown=list(spec.unknown), unknown_chain=list(spec.unknown_chain),
-        repeatability=Value.of(a.repeatability, "arcmin"), repeatability_is_bound=a.repeatability_is_bound,
+        repeatability=Value.of(repeatability, "arcmin"), repeatability_is_bound=a.repeatability_is_bound,
         members=chain.members, radius=None if spec.radius is None else Value.of(spec.radius, "mm"), arcs=arcs,
         check_arcs=check_arcs,
         positioning=positioning,
@@ -1173,6 +1176,57 @@ class AccuracyResult(Result):
     @functools.cached_property
     def shown(self) -> AccuracyValues:
         return accuracy_values(self.inputs, self.accuracy)
+
+    @functools.cached_property
+    def budget(self) -> Budget:
+        """The positioning accuracy's error budget (:func:`calc.domain.accuracy.error_budget`)."""
+        return error_budget(self.accuracy)
+
+    @property
+    def repeatability_basis(self) -> str:
+        """What the repeatability stated rests on, in words."""
+        a = self.accuracy
+        if not a.repeatability_is_bound:
+            return "the backlash at T = 0"
+        if self.shown.repeatability.value < a.repeatability.m_as("arcmin"):
+            return (f"the positioning accuracy, a full width, tighter than the lost motion "
+                    f"{fmt(a.repeatability, 'arcmin')}")
+        return "bounded by the lost motion under torque"
+
+    def budget_json(self) -> dict:
+        """``accuracy.budget``: the contributions with their kind and share, worst case and RSS.
+
+        Returns
+        -------
+        dict
+            convention, worst_case, rss, rss_random, contributions (name, kind, value, share, why), unknown.
+        """
+        b = self.budget
+        return {
+            "convention": POSITIONING_CONVENTION,
+            "worst_case": Value.of(b.worst_case.result, "arcmin").to_json(),
+            "rss": Value.of(b.rss.result, "arcmin").to_json(),
+            "rss_random": Value.of(b.rss_random, "arcmin").to_json(),
+            "contributions": [{"name": c.name, "kind": c.kind, "value": Value.of(c.value, "arcmin").to_json(),
+                               "share": share, "why": c.why} for c, share in zip(b.contributions, b.shares)],
+            "unknown": list(b.unknown),
+        }
+
+    def budget_lines(self) -> list[str]:
+        """The error budget as lines of the text summary.
+
+        Returns
+        -------
+        list of str
+        """
+        b = self.budget
+        lines = [f"  Error budget of the positioning accuracy ({POSITIONING_CONVENTION}):"]
+        lines += [f"    {c.name:<24} {c.kind:<10} {fmt(c.value, 'arcmin'):>14}  {100 * share:5.1f} %"
+                  for c, share in zip(b.contributions, b.shares)]
+        lines.append(f"    worst case {fmt(b.worst_case.result, 'arcmin')}; root-sum-square "
+                     f"{fmt(b.rss.result, 'arcmin')}; the random ones alone (the systematic mapped out) "
+                     f"{fmt(b.rss_random, 'arcmin')}")
+        return lines + [f"    not known: {u}" for u in b.unknown]
 
     @functools.cached_property
     def arc_steps(self) -> list:
@@ -1224,6 +1278,9 @@ class AccuracyResult(Result):
             "lost_motion_is_lower_bound": bool(v.unknown_chain), "repeatability_is_lower_bound": bool(v.unknown_chain),
             "C_total_is_upper_bound": bool(v.unknown_chain),
             "repeatability": v.repeatability.to_json(), "repeatability_is_bound": v.repeatability_is_bound,
+            "repeatability_basis": self.repeatability_basis,
+            "positioning_convention": POSITIONING_CONVENTION,
+            "budget": self.budget_json(),
             "components": [_member_json(m) for m in v.members],
         }
         if v.radius is not None:
@@ -1293,8 +1350,7 @@ class AccuracyResult(Result):
             f"{v.positioning_accuracy} (E13)"
             + (f"; a lower bound: unknown {'; '.join(v.unknown)}" if v.unknown else ""),
             f"  Repeatability {'<=' if v.repeatability_is_bound else '='} {v.repeatability} "
-            f"({'bounded by the lost motion under torque' if v.repeatability_is_bound else 'the backlash at T = 0'}"
-            ", E13)"
+            f"({self.repeatability_basis}, E13)"
             + (f"; not known: unknown {'; '.join(v.unknown_chain)}" if v.unknown_chain else ""),
         ]
         if v.radius is not None:
@@ -1316,6 +1372,7 @@ class AccuracyResult(Result):
                              f"{t.transmission_accuracy} ({t.direction})")
         if self.modelled_loop is not None:
             lines.append(self.modelled_loop.summary_line())
+        lines += self.budget_lines()
         if v.positioning is not None:
             p = v.positioning
             lines.append(

@@ -689,8 +689,13 @@ class CouplingResult(Result):
             return None
         row = int(sel.order[0])
         chain, train = sel.chain, sel.drive_train
+        part = str(sel.catalog.parts[row])
+        empty = [f"the {name}'s stiffness ({part if name == 'coupling' else name}: the catalog leaves it empty)"
+                 for name, C in zip(chain.springs, chain.stiffnesses[row]) if np.isnan(C.magnitude)]
+        empty += [f"the inertia of {name} ({part}: the catalog leaves the coupling's J empty)"
+                  for name, J in zip(chain.masses, chain.inertias[row]) if np.isnan(J.magnitude)]
         return Torsion(
-            part=str(sel.catalog.parts[row]), shaft=train.shaft, complete=train.complete, missing=list(train.missing),
+            part=part, shaft=train.shaft, complete=train.complete and not empty, missing=list(train.missing) + empty,
             masses=[(name, Value.of(chain.inertias[row, k], "kg*cm**2")) for k, name in enumerate(chain.masses)],
             springs=[(name, Value.of(chain.stiffnesses[row, k], "N*m/rad")) for k, name in enumerate(chain.springs)],
             natural_frequencies=[Value.of(f, "Hz") for f in sel.modes[row]],

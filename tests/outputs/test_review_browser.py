@@ -270,7 +270,8 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
 def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
     """Ticking *ratio search* adds the case at every ratio of the catalog to the page, as
     ``python -m calc ratios`` gives it: the example's pick is 10 (NPT035-10), the only ratio that
-    keeps λ ≤ 10 with SGMUH-10DA ((0.93 + 15) / 1.74 = 9.16), drawn as bars with the pick outlined."""
+    keeps λ ≤ 10 with SGMUH-10DA ((0.93 + 0.5 + 15) / 1.74 = 9.44, the coupling AKN-18 counted as the motor's
+    check counts it), drawn as bars with the pick outlined."""
     from bench.review_browser import browser_page, wait_for_results
 
     shots = SHOTS / "ratios"
@@ -283,7 +284,8 @@ def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
         page.locator(".design-review label", has_text="ratio search").click()
         wait_for_results(page, g)
         shown = page.inner_text(RESULTS_SELECTOR)
-        assert "Ratio 10 (NPT035-10): 6 of 6 ratios are feasible, and only this one keeps λ ≤ 10 (λ = 9.16)." in shown
+        assert "Ratio 10 (NPT035-10): 6 of 6 ratios are feasible, and only this one keeps λ ≤ 10 (λ = 9.44)." in shown
+        assert "inertia matching: iopt = √(JL / Jin) = 21.75" in shown  # i_opt beside the pick (sub- and italics lost)
         assert "the motor is SGMUH-10DA" in shown
         figure = page.locator(".design-review svg.dr-ratios")
         assert figure.count() == 1 and figure.locator("rect").count() == 6
