@@ -123,21 +123,23 @@ class Selection:
         """Part of the best passing row, or None (also when a governing check could not be made)."""
         return None if self.not_made else selected_part(self.catalog.parts, self.passes, self.order)
 
-    def put_first(self, part: str) -> None:
-        """Rank ``part`` first where it passes (the pair a case's motor and gearbox are chosen
-        together by); else leave the ranking as it is.
+    def put_first(self, part: str, failing: bool = False) -> None:
+        """Rank ``part`` first where it passes, or with ``failing`` whether or not it passes (the
+        pair a case's motor and gearbox are chosen together by); else leave the ranking as it is.
 
         Parameters
         ----------
         part : str
             A part of the selection's catalog.
+        failing : bool
+            Put it first even where it fails (the motor a case is checked with); default False.
 
         Returns
         -------
         None
         """
         rows = np.flatnonzero(np.asarray(self.catalog.parts) == part)
-        if len(rows) and self.passes[rows[0]]:
+        if len(rows) and (failing or self.passes[rows[0]]):
             self.order = np.concatenate((rows[:1], self.order[self.order != rows[0]]))
 
     def decided(self, row: int) -> bool | None:

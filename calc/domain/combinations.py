@@ -244,7 +244,7 @@ class Combinations:
 
 
 def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, inertia_limit: float,
-           examine=None, first: bool = False) -> Combinations:
+           examine=None, first: bool = False, confirm=None) -> Combinations:
     """Check every pair of a gearbox row and a motor against the cycle, and pick one (:data:`RULE`).
 
     A pair is feasible where the gearbox passes, its ratings take the motor's peak torque, the motor's
@@ -254,7 +254,9 @@ def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, 
     against the motor's ``M_max``; with ``examine``, the pairs of the motors in the rule's order are then
     examined in full (the peak torque the motor gives at each sample's speed, the gearbox's checks with
     that motor and its ranking), until a motor has a pair that passes (the pairs found failing are
-    marked so, the motors after it are left screened).
+    marked so, the motors after it are left screened). With ``confirm``, each pair that passes is then
+    confirmed in the rule's order, and the first confirmed is the pick: a finite walk down one ordered
+    list (a pair refused is marked failing; where none is confirmed, none is picked).
 
     Parameters
     ----------
@@ -281,6 +283,9 @@ def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, 
     first : bool
         Screen the motors one at a time in the rule's order and stop at the first that has a pair
         that passes (the pick alone is wanted: a case's evaluation); default False, every pair.
+    confirm : callable, optional
+        ``confirm(gearbox row, motor)`` -> bool: whether the pair, evaluated in full, passes (a case's
+        evaluation: the coupling chosen with that motor counted); None: every pair that passes is taken.
 
     Returns
     -------
@@ -291,9 +296,9 @@ def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, 
     g["J_L"] = float(gearboxes["J_L"])
     mo = {k: np.asarray(v, float)[None, :] for k, v in motors.items()}
     if first:
-        return _first(moments, speeds, g, mo, inertia_limit, examine)
+        return _first(moments, speeds, g, mo, inertia_limit, examine, confirm)
     columns = _screen(moments, speeds, g, mo, inertia_limit)
-    pick = _pick(columns.feasible, columns.utilization, columns.rms / mo["rated_torque"], g, mo, examine)
+    pick = _pick(columns.feasible, columns.utilization, columns.rms / mo["rated_torque"], g, mo, examine, confirm)
     columns.pick, columns.closest = pick, None if pick is not None else _closest(columns.utilization)
     return columns
 
@@ -313,7 +318,8 @@ def _screen(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_lim
     return Combinations(peak, rms, utilization, feasible, None)
 
 
-def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limit: float, examine) -> Combinations:
+def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limit: float, examine,
+           confirm) -> Combinations:
     """:func:`search` with ``first``: the motors screened one at a time in the rule's order, until
     one has a pair that passes; the arrays hold the motors screened (:attr:`Combinations.motors`)."""
     order = np.lexsort((mo["J"][0], mo["rated_torque"][0]))
@@ -323,7 +329,8 @@ def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limi
         col = done[-1]
         one = {k: v[:, [m]] for k, v in mo.items()}
         found = _pick(col.feasible, col.utilization, col.rms / one["rated_torque"], g, one,
-                      None if examine is None else lambda _, rows, m=int(m): examine(m, rows))
+                      None if examine is None else lambda _, rows, m=int(m): examine(m, rows),
+                      None if confirm is None else lambda row, _, m=int(m): confirm(row, m))
         if found is not None:
             break
     motors = order[:len(done)]
@@ -344,9 +351,9 @@ def _closest(utilization) -> tuple[int, int] | None:
                                                   utilization.shape))
 
 
-def _pick(feasible, utilization, rms_share, g, mo, examine) -> tuple[int, int] | None:
-    """The pair :data:`RULE` picks among the feasible ones, ``examine`` asked motor by motor in the
-    rule's order (``feasible`` and ``utilization`` updated where it is)."""
+def _pick(feasible, utilization, rms_share, g, mo, examine, confirm=None) -> tuple[int, int] | None:
+    """The pair :data:`RULE` picks among the feasible ones, ``examine`` asked motor by motor and
+    ``confirm`` pair by pair in the rule's order (``feasible`` and ``utilization`` updated where they are)."""
     motors = np.flatnonzero(feasible.any(axis=0))
     for m in motors[np.lexsort((mo["J"][0, motors], mo["rated_torque"][0, motors]))]:
         rows = np.flatnonzero(feasible[:, m])
@@ -360,7 +367,8 @@ def _pick(feasible, utilization, rms_share, g, mo, examine) -> tuple[int, int] |
             feasible[rows[fails], m] = False
             ok = examined & ~fails
             rows, rank = rows[ok], (rank if found is None else np.asarray(found, float))[ok]
-        if len(rows):
-            best = np.lexsort((g["i"][rows, 0], rms_share[rows, m], rank))[0]
-            return int(rows[best]), int(m)
+        for k in np.lexsort((g["i"][rows, 0], rms_share[rows, m], rank)):
+            if confirm is None or confirm(int(rows[k]), int(m)):
+                return int(rows[k]), int(m)
+            feasible[rows[k], m] = False
     return None

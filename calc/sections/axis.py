@@ -6,12 +6,12 @@ its own; the sections after it read the case with that motor (:class:`AxisResult
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from .case import Case, Declared, Key, Table
-from . import pairs
+from . import evaluation, pairs
 from .protocol import Section
 from ..core.errors import CalcError, listing, as_found
 from ..domain.fits import parse_bore
@@ -20,6 +20,7 @@ from ..domain.gearbox import INERTIA_RATIO_LIMIT, OutputForces
 from ..domain.motor_ratings import ELECTRICAL
 from .motor_catalog import motor_catalog, motor_ratings
 
+NAME = "axis"
 ORDER = 10
 MOTOR = Declared("motor", (
     Key("peak_torque", "torque", "maximum torque of the motor (S5)", "T_1B", unit="N*m"),
@@ -185,19 +186,24 @@ class AxisResult:
     gearbox : str, optional
         The gearbox chosen with it (the gearbox section puts it first where it passes); None for a
         direct drive, or where the case names or types its motor.
+    evaluated : dict
+        The results of the sections after this one that confirmed the pair (the gearbox, the
+        coupling and the motor evaluated with it), by section name; empty where none did.
     """
 
     case: Case
     chosen: str | None = None
     gearbox: str | None = None
+    evaluated: dict = field(default_factory=dict, repr=False, compare=False)
 
 
 def chosen_motor(case: Case) -> AxisResult:
     """The motor and the gearbox a case with a motor catalog (``[motor] catalog`` without a
-    ``part``) is checked with: the pair the motor x gearbox search of its rows picks
-    (:func:`calc.sections.pairs.case_pairs`, by :data:`calc.domain.combinations.RULE`: the
-    smallest adequate motor, for it the gearbox the gearbox ranking puts first), or the pair
-    closest to passing where none passes; the case itself where it names its motor or types it.
+    ``part``) is checked with: the first pair of the motor x gearbox search of its rows
+    (:func:`calc.sections.pairs.case_pairs`, in the order of :data:`calc.domain.combinations.RULE`:
+    the smallest adequate motor, for it the gearbox the gearbox ranking puts first) that the full
+    evaluation confirms (:func:`confirmed`: the coupling chosen with that motor counted), or the pair
+    closest to passing where none is confirmed; the case itself where it names its motor or types it.
 
     Parameters
     ----------
@@ -207,25 +213,69 @@ def chosen_motor(case: Case) -> AxisResult:
     Returns
     -------
     AxisResult
-        The case with the chosen motor's ratings and inertia, that motor and its gearbox.
+        The case with the chosen motor's ratings and inertia, that motor and its gearbox, and the
+        results that confirmed them.
     """
     if case.motor_catalog is None or case.motor_part is not None:
         return AxisResult(case)
-    found = pairs.case_pairs(case)
+    cat = motor_catalog(case)
+    tried = {}
+
+    def with_pair(motor: str, gearbox: str | None) -> AxisResult:
+        row = cat.index(motor, f"{case.path}: motor.catalog")
+        return AxisResult(dataclasses.replace(case, **motor_ratings(cat, row)), motor, gearbox)
+
+    def confirm(motor: str, gearbox: str | None) -> bool:
+        axis = with_pair(motor, gearbox)
+        tried[motor, gearbox] = axis
+        return confirmed(axis)
+
+    found = pairs.case_pairs(case, confirm)
     if found.chosen is None:  # no motor or no gearbox row to pair: the motor section says so
         return AxisResult(case)
     g, m = found.chosen
-    cat = motor_catalog(case)
-    row = cat.index(str(found.motor_parts[m]), f"{case.path}: motor.catalog")
     gearbox = None if case.ratio is None and case.gearbox_part is None else str(found.gearbox_parts[g])
-    return AxisResult(dataclasses.replace(case, **motor_ratings(cat, row)), str(found.motor_parts[m]), gearbox)
+    pair = (str(found.motor_parts[m]), gearbox)
+    return tried[pair] if found.result.pick is not None else with_pair(*pair)
+
+
+def confirmed(axis: AxisResult) -> bool:
+    """Whether a pair of the search passes evaluated in full: the gearbox, the coupling and the motor
+    evaluated with that motor and gearbox (:func:`calc.sections.evaluation.results_of`), the motor's
+    checks (λ with the coupling chosen with it among them) passed and the gearbox passing with it.
+    The results are kept in ``axis.evaluated``: the evaluation takes them as they are.
+
+    Parameters
+    ----------
+    axis : AxisResult
+        The case with the pair's motor, the motor and the gearbox (None: a direct drive).
+
+    Returns
+    -------
+    bool
+        True where the motor and the gearbox pass.
+    """
+    results = evaluation.results_of(axis.case, ("motor",), given={NAME: axis})
+    axis.evaluated.update((k, v) for k, v in results.items() if k != NAME)
+    motor, gearbox = results.get("motor"), results.get("gearbox")
+    if motor is None or motor.selection is None:
+        return False
+    if axis.gearbox is not None and (gearbox is None or not _passes(gearbox.selection, axis.gearbox)):
+        return False
+    return _passes(motor.selection, axis.chosen)
+
+
+def _passes(selection, part: str) -> bool:
+    """Whether a selection's row of that part passes its checks."""
+    rows = np.flatnonzero(np.asarray(selection.catalog.parts) == part)
+    return bool(len(rows) and selection.passes[rows[0]])
 
 
 class DriveSection(Section):
     """The motor and the load: read into the case's fields; evaluated, the motor the case is
     checked with."""
 
-    NAME = "axis"
+    NAME = NAME
     TABLES = TABLES
     SHOWN = False
 
@@ -240,6 +290,9 @@ class DriveSection(Section):
 
     def checked(self, case: Case, result: AxisResult) -> Case:
         return result.case
+
+    def evaluated_with(self, result: AxisResult) -> dict:
+        return dict(result.evaluated)
 
 
 SECTION = DriveSection()

@@ -477,7 +477,7 @@ def motor_result(case: Case, t: Transmission, coupling, chosen: str | None = Non
         The coupling section's result; None where the case has no coupling.
     chosen : str, optional
         The catalog motor chosen with the gearbox (:class:`calc.sections.axis.AxisResult`): ranked
-        first where it passes.
+        first, failing or not (the case is checked with its ratings).
 
     Returns
     -------
@@ -546,8 +546,8 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     limit, where = case.motor_max_inertia_ratio
     curves = None if case.motor_curves is None else read_curves(case.motor_curves, motor_catalog(case).parts)
     sel = select_motors(cat, cycle, case.motor_dc_link, curves, limit, where, float(case.profile.t_cycle.m_as("s")))
-    if chosen is not None:
-        sel.put_first(chosen)
+    if chosen is not None:  # the motor the case is checked with is the one every output names
+        sel.put_first(chosen, failing=True)
     best = int(sel.order[0])
     # Every sample, in time.
     T_best = motor_torque(out.torque, out.speed, t.i, t.eta, out.alpha_2, J[best:best + 1, None], J_1q)

@@ -241,7 +241,7 @@ def search_pairs(case: Case) -> PairSearch:
     return _search(case, gear.rows(~gear.partial), hubs)
 
 
-def case_pairs(case: Case) -> PairSearch:
+def case_pairs(case: Case, confirm=None) -> PairSearch:
     """The pairs the case's evaluation chooses from: every motor of its catalog with every gearbox row
     at its ratio (or its named part), or driving the load directly where it has no gearbox.
 
@@ -249,6 +249,10 @@ def case_pairs(case: Case) -> PairSearch:
     ----------
     case : calc.sections.case.Case
         The case as read, with a motor catalog.
+    confirm : callable, optional
+        ``confirm(motor part, gearbox part or None)`` -> bool: whether the pair passes evaluated in
+        full; the pairs that pass the screen are confirmed in the rule's order, and the first
+        confirmed is the pick (:func:`calc.domain.combinations.search`). None: none is asked.
 
     Returns
     -------
@@ -257,14 +261,15 @@ def case_pairs(case: Case) -> PairSearch:
         drive, one gearbox row: none, ``i = 1``).
     """
     if case.ratio is None and case.gearbox_part is None:
-        return _search(case, None, None, first=True)
-    return _search(case, case_rows(case), case.gearbox_hubs, first=True)
+        return _search(case, None, None, first=True, confirm=confirm)
+    return _search(case, case_rows(case), case.gearbox_hubs, first=True, confirm=confirm)
 
 
-def _search(case: Case, gear, hubs, first: bool = False) -> PairSearch:
+def _search(case: Case, gear, hubs, first: bool = False, confirm=None) -> PairSearch:
     """The pairs of the motor catalog with the rows ``gear`` (None: a direct drive) by
     :func:`calc.domain.combinations.search`, each motor's pairs examined in full in the rule's order
-    until one passes (with ``first``, the motors after it are not screened either)."""
+    until one passes (with ``first``, the motors after it are not screened either) and, with
+    ``confirm`` (:func:`case_pairs`), is confirmed."""
     motors = motor_catalog(case)
     motors = motors.rows(~motors.partial)
     out = output_load(case)
@@ -290,8 +295,10 @@ def _search(case: Case, gear, hubs, first: bool = False) -> PairSearch:
     w = np.abs(few.speed.m_as("rad/s"))
     speeds = (float(out.n_2max.m_as("rad/s")), float(n_2m.si(n_2k=w, t_k=few.dt.m_as("s"))))
     rows["J_L"] = 0.0 if J_L is None else float(J_L.m_as("kg*m**2"))
+    asked = None if confirm is None else (
+        lambda g, m: confirm(str(motors.parts[m]), None if gear is None else str(parts[g])))
     result = search(moments, speeds, rows, motor_rows, case.motor_max_inertia_ratio[0],
-                    examine=_examine(case, few, motors, rows, gear, hubs), first=first)
+                    examine=_examine(case, few, motors, rows, gear, hubs), first=first, confirm=asked)
     shown = slice(None) if result.motors is None else result.motors
     return PairSearch(case, parts, np.asarray(rows["i"], float), motors.parts[shown], motors["M_N"].m_as("N*m")[shown],
                       result, notes + more)
