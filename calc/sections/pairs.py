@@ -16,6 +16,8 @@ its RMS torque against ``M_N``, its rated and top speed, and the inertia ratio (
 ``[motor] max_inertia_ratio``), with a motor-side coupling's inertia turning with the motor (the
 lightest candidate's where the case names none). The peak is screened against ``M_max`` for every
 pair and checked against the characteristic for the motors in the rule's order until one passes.
+The evaluation then confirms the pair in full (:func:`calc.sections.axis.confirmed`: the coupling
+chosen with its motor counted), taking the next in the rule's order where it is refused.
 """
 
 from __future__ import annotations
