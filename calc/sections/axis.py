@@ -236,7 +236,7 @@ def chosen_motor(case: Case) -> AxisResult:
     g, m = found.chosen
     gearbox = None if case.ratio is None and case.gearbox_part is None else str(found.gearbox_parts[g])
     pair = (str(found.motor_parts[m]), gearbox)
-    return tried[pair] if found.result.pick is not None else with_pair(*pair)
+    return tried[pair] if pair in tried else with_pair(*pair)  # the results evaluated with it are kept
 
 
 def confirmed(axis: AxisResult) -> bool:

@@ -132,6 +132,28 @@ def test_the_characteristic_refuses_a_motor_and_the_next_one_is_picked():
     assert found.utilization[0, 0] == pytest.approx(5.6556 / 5.0, abs=1e-4)
 
 
+@pytest.mark.parametrize("first", [False, True])
+def test_a_pair_the_full_evaluation_refuses_gives_way_to_the_next_in_the_rule_order(first):
+    # The hand pairs: A passes through i = 10 only; B through i = 5 (ranked first) and i = 10. The
+    # rule's order is (i=10, A), then B's (i=5, B), (i=10, B). Refusing (i=10, A) takes (i=5, B);
+    # refusing that too takes (i=10, B); refusing all picks none, and the closest pair is named.
+    m, gearboxes, motors = hand_pairs()
+    for refused, pick in (({(0, 0)}, (1, 1)), ({(0, 0), (1, 1)}, (0, 1)), ({(0, 0), (1, 1), (0, 1)}, None)):
+        asked = []
+
+        def confirm(row, motor):
+            asked.append((row, motor))
+            return (row, motor) not in refused
+
+        found = search(m, SPEEDS, gearboxes, motors, INERTIA_RATIO_LIMIT, first=first, confirm=confirm)
+        # a finite walk down one ordered list: each pair asked once, in the rule's order, up to the pick
+        assert asked == [(0, 0), (1, 1), (0, 1)][:len(refused) + (pick is not None)]
+        columns = list(range(2)) if found.motors is None else found.motors.tolist()  # first: the motors screened
+        got = None if found.pick is None else (found.pick[0], columns[found.pick[1]])
+        assert got == pick
+        assert (found.closest is None) == (pick is not None)
+
+
 def test_the_gearbox_ranking_with_the_motor_decides_among_its_gearboxes():
     # B passes through i = 10 and i = 5; the ranking with B puts i = 10 first (say a coupling lifts
     # only its drive train above 2 f_er): the pick follows it. A gearbox that fails with the motor
