@@ -258,7 +258,8 @@ def duty_result(case: Case, gearbox) -> DutyResult:
     seg = p.moving_values()
     steps = [("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle)),
              ("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),
-             ("Cubic mean output torque", T_2m.step(**seg)), ("Cycles per hour", Z_h.step(t_cycle=p.t_cycle))]
+             ("Cubic mean output torque", T_2m.step(**seg)),
+             ("Load cycles per hour", Z_h.step(**p.cycles_per_hour_inputs()))]
     _, n2m, t2m, zh = (step.result for _, step in steps)
     table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors
     out = DutyResult(p, duty(p), n2m, t2m, zh, float(shock_factor(zh, table)),
