@@ -25,7 +25,7 @@ from .view import results_html
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
 
 
-def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
+def label_html(spec: InputSpec, changed: bool, added: str | None = None, follows: str | None = None) -> str:
     """An input's label with its unit (the whole of it, and what became of the file's value, as
     its tooltip; its key path as ``data-key``), marked where changed or made by an edit of the moves.
 
@@ -37,6 +37,9 @@ def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
         Whether its value differs from the file's.
     added : str, optional
         What an edit of the moves made of it, in words.
+    follows : str, optional
+        What its value follows where the file leaves it out, in words
+        (:meth:`calc.review.state.ReviewState.following`): shown under the label.
 
     Returns
     -------
@@ -48,8 +51,10 @@ def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
     file_value += f" {unit}" if unit else ""
     was = f" ({added})" if added else f" (changed; the file: {file_value})" if changed else ""
     marked = " class=dr-changed" if changed or added else ""
+    was += f" ({follows})" if follows and not was else ""
+    note = f"<br><small class=dr-follows>{typeset(follows)}</small>" if follows else ""
     return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{marked}>'
-            f"{typeset(spec.label)}{f' [{unit}]' if unit else ''}</span>")
+            f"{typeset(spec.label)}{f' [{unit}]' if unit else ''}{note}</span>")
 
 
 def message_html(refused: str | None, idle: str | None = None) -> str:

@@ -127,13 +127,13 @@ class DesignReview:
     def _slid(self, key: str, value) -> None:
         """A slider moved or a choice made."""
         if self.state.set_value(key, value):
-            self.rows.show(self.state, [key])
+            self.rows.show(self.state)  # and the inputs that follow it
             self.drawing.changed()
 
     def _typed(self, key: str, text: str) -> None:
         """A value typed into a field: applied, or refused at the field."""
         redraw = self.state.type_text(key, text)
-        self.rows.show(self.state, [key])
+        self.rows.show(self.state)  # and the inputs that follow it
         if redraw:
             self.drawing.changed()
 
@@ -560,7 +560,7 @@ class InputRows:
         import ipywidgets as w
 
         value = state.values[spec.key]
-        label = w.HTML(label_html(spec, False, state.from_edits(spec.key)),
+        label = w.HTML(label_html(spec, False, state.from_edits(spec.key), state.following(spec.key)),
                        layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
         label.add_class("dr-label")
         self.labels[spec.key], self.messages[spec.key] = label, w.HTML()
@@ -635,7 +635,7 @@ class InputRows:
         None
         """
         for spec in state.specs:
-            label = label_html(spec, spec.key in changes, state.from_edits(spec.key))
+            label = label_html(spec, spec.key in changes, state.from_edits(spec.key), state.following(spec.key))
             if self.labels[spec.key].value != label:  # each value set is a message to the page
                 self.labels[spec.key].value = label
             self._show_message(state, spec.key)

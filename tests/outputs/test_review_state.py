@@ -261,3 +261,26 @@ def test_a_save_the_folder_refuses_says_why_without_the_folder(example):
 def test_an_entry_of_a_table_that_is_no_list_of_tables_says_so():
     with pytest.raises(CalcError, match=r"^a.toml: load\[1\].inertia: the file has no \[\[load\]\] tables$"):
         edited_text('[load]\ninertia = "1 kg*cm**2"\n', [Edit("load[1].inertia", "2 kg*cm**2")], "a.toml")
+
+
+def test_a_field_left_out_of_the_file_shows_the_value_computed(example):
+    # The example leaves the decel time out, so reading it takes the accel time. Accel 0.3 s in a move
+    # of 0.7 s: peak speed φ / (t − t_a) = 0.25 rev / (0.7 − 0.3) s = 0.625 rev/s = 37.5 rpm (with the
+    # decel field's 0.15 s, as the page used to show it, 0.25 / (0.7 − 0.225) s · 60 = 31.58 rpm).
+    assert example.following("move[1].decel_time") == "left out of the file: follows the accel time t_a"
+    assert example.following("move[1].jerk_time") is None  # the file writes it
+    example.type_text("move[1].time", "0.7")
+    example.type_text("move[1].accel_time", "0.3")
+    assert example.values["move[1].decel_time"] == 0.3 and example.texts["move[1].decel_time"] == "0.3"
+    assert "move[1].decel_time" not in example.changes()  # still left out: the file follows as the screen
+    assert results(example)["motion"]["peak_speed"]["value"] == pytest.approx(37.5)
+    # Set by the reviewer, it no longer follows, and the file writes it.
+    example.type_text("move[1].decel_time", "0.15")
+    assert example.changes()["move[1].decel_time"] == (0.15, "s") and example.following("move[1].decel_time") is None
+    assert 'decel_time = "0.15 s"' in example.case_text()
+    example.type_text("move[1].accel_time", "0.2")
+    assert example.values["move[1].decel_time"] == 0.15
+    # Undone twice: it follows again.
+    example.undo()
+    example.undo()
+    assert example.values["move[1].decel_time"] == 0.3 and "move[1].decel_time" not in example.changes()
