@@ -64,7 +64,9 @@ SCRIPT = r"""<script>
   const results = () => document.querySelector('.design-review .dr[data-generation]');
   // An option's text as written (the widgets write its spaces as no-break spaces).
   const optionText = o => o.text.replace(/\u00a0/g, ' ').trim();
-  const loadedAt = Date.now();
+  // When the page loaded, or a link's case was asked for: what a link carries is waited for that long.
+  let loadedAt = Date.now();
+  const PATIENCE = 60000;
   let askedAfter = null, askedAt = 0, restoring = null;  // the results' generation when a value was last asked for
   // The text each control shows, by key path: a field's text, a choice's option.
   function shown() {
@@ -150,12 +152,12 @@ SCRIPT = r"""<script>
   function ask() { const r = results(); askedAfter = r ? Number(r.dataset.generation) : 0; askedAt = Date.now(); }
   // Hand what a link carries (``wanted``) to the kernel through its hidden field, unless the
   // results already carry it (``has``) or say it was asked for (``asked``: the kernel says why
-  // what it could not take was left out); true once so. Not forever: 20 s after the page loaded.
+  // what it could not take was left out); true once so. Not forever: PATIENCE after the page loaded.
   function handOver(what, selector, wanted, has, asked) {
     const same = text => JSON.stringify(wanted) === JSON.stringify(JSON.parse(text || '[]'));
     if (same(has) || (asked !== undefined && same(asked))) return true;
     const field = document.querySelector('.design-review ' + selector);
-    if (Date.now() - loadedAt > 20000) { restoring = false; return false; }
+    if (Date.now() - loadedAt > PATIENCE) { restoring = false; return false; }
     if (restoring === what || !field) return false;  // asked for and not drawn yet, or the field not drawn yet
     restoring = what; field.value = JSON.stringify(wanted); field.dispatchEvent(new Event('change', {bubbles: true}));
     return false;
@@ -172,8 +174,10 @@ SCRIPT = r"""<script>
       if (restoring === 'case') return;  // the case asked for is being loaded
       const choice = document.querySelector('.design-review .dr-case select');
       const k = choice ? [...choice.options].findIndex(o => optionText(o).split(' · ')[0] === wanted.case) : -1;
-      if (k < 0) { restoring = false; return; }
-      restoring = 'case'; choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
+      // The chooser is drawn after the results at times: wait for it (not forever); a case not offered is dropped.
+      if (k < 0) { if (!choice && Date.now() - loadedAt < PATIENCE) return; restoring = false; return; }
+      restoring = 'case'; loadedAt = Date.now();
+      choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
       return;  // the values follow once the case is loaded
     }
     // The variants first (the kernel evaluates each from its case file), then the moves' edits
@@ -182,7 +186,7 @@ SCRIPT = r"""<script>
     if (!handOver('variants', '.dr-variants-asked input', variants, r.dataset.variants, asked)) return;
     if (!handOver('edits', '.dr-edits input', wanted.edits || [], r.dataset.edits)) return;
     // The controls are drawn after the results at times: wait for every row asked for (not forever).
-    if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < 20000) return;
+    if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < PATIENCE) return;
     restoring = false;
     for (const [key, text] of Object.entries(wanted.values)) type(key, text);
     if (wanted.units && wanted.units !== r.dataset.units) {  // the unit system the link was shown in

@@ -34,7 +34,7 @@ from ..report.symbols import html as typeset
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import InputSpec, option_text
-from .keep import CaseFiles, free_name
+from .keep import CaseFiles, Written, free_name
 from .page import (SHOWN_CANDIDATES, failed_html, label_html, link_html, message_html, results_text,
                    with_variants)
 from .state import ReviewState, without_folder
@@ -263,6 +263,7 @@ class DesignReview:
         self._relabel(sorted([*self.case_file.options, (path.name, path)], key=lambda o: o[1]))
         self.kept.value = f"saved as {escape(path.name)} beside {escape(self.state.path.name)} (in the case chooser)"
         self.save_name.value = free_name(self.state.path)
+        self._show_written()
         return path
 
     def report_of_screen(self, wait: bool = False):
@@ -286,6 +287,11 @@ class DesignReview:
         if path is None:
             return None
         pdf = self.files.pdf_folder(path) / f"{path.stem}.pdf"
+        try:
+            Written(pdf.parent).check_room(pdf.name)
+        except CalcError as exc:
+            self.kept.value = failed_html("no calc report", str(exc), whole=True)
+            return None
         self.kept.value = f"building the calc report of {escape(path.name)} (some 15 s) …"
 
         def build():
@@ -296,6 +302,9 @@ class DesignReview:
                 self.kept.value = failed_html(f"no calc report of {escape(path.name)}", said, whole=True)
                 return
             self.files.reports[path] = pdf
+            if path != self.state.path:  # the screen's own report, removable from the page
+                Written(pdf.parent).add(pdf.name)
+                self._show_written()
             link = link_html(self.files.link(pdf), pdf)
             self.kept.value = f"calc report of {escape(path.name)}, the screen's design: {link}"
 
@@ -332,9 +341,50 @@ class DesignReview:
         """
         if not self.variants.kept:
             return None
-        pdf = self.variants.pdf(self.files.pdf_folder(self.state.path), self.state.path.stem, self.state.units)
+        try:
+            pdf = self.variants.pdf(self.files.pdf_folder(self.state.path), self.state.path.stem, self.state.units)
+        except CalcError as exc:
+            self.kept.value = failed_html("no PDF", str(exc), whole=True)
+            return None
         self.kept.value = f"the variants compared, as a PDF: {link_html(self.files.link(pdf), pdf)}"
+        self._show_written()
         return pdf
+
+    def _show_written(self) -> None:
+        """The files the page wrote (case files and PDFs, :class:`calc.review.keep.Written`), to remove."""
+        folders = dict.fromkeys([self.state.path.parent, self.files.pdf_folder(self.state.path)])
+        options = [(f"{folder.name}/{name}", str(folder / name)) for folder in folders
+                   for name in Written(folder).names()]
+        self.written.options = options
+        self.written.value = options[-1][1] if options else None  # the newest
+        self.written_box.layout.display = None if options else "none"
+
+    def remove_written(self, path: str | None = None) -> None:
+        """Remove a file the page wrote (by default the one chosen); never another file.
+
+        Parameters
+        ----------
+        path : str, optional
+            The file's path, as the chooser of written files gives it.
+
+        Returns
+        -------
+        None
+        """
+        path = Path(path or self.written.value or ".")
+        try:
+            if path == self.state.path:
+                raise CalcError(f"{path.name} is the case shown: choose another case first")
+            Written(path.parent).remove(path.name)
+        except CalcError as exc:
+            self.kept.value = failed_html("not removed", str(exc), whole=True)
+            return
+        self.files.reports = {k: v for k, v in self.files.reports.items() if v != path}
+        if any(o[1] == path for o in self.case_file.options):
+            self._relabel([o for o in self.case_file.options if o[1] != path])
+        self.kept.value = f"removed {escape(path.name)}"
+        self.save_name.value = free_name(self.state.path)
+        self._show_written()
 
     def _variants_asked(self, text: str) -> None:
         """The variants a link carries (the page's script writes their states here), each
@@ -780,9 +830,15 @@ def _keep(p: DesignReview, w):
     p.variants_field = w.Text(continuous_update=False, layout=w.Layout(display="none"))
     p.variants_field.add_class("dr-variants-asked")
     p.variants_field.observe(lambda change: p._variants_asked(change["new"]), names="value")
+    p.written = w.Dropdown(description="written", tooltip="a file this page's review wrote: a case file or a PDF",
+                           style={"description_width": "4.5em"}, layout=_grows(w))
+    remove = _button(w, "remove file", "remove the chosen file written from the review (never another)", "8em",
+                     p.remove_written)
+    p.written_box = w.HBox([p.written, remove], layout=w.Layout(width="100%", display="none"))
+    p.written_box.add_class("dr-written")
     keep = w.VBox([w.HBox([p.save_name, save], layout=w.Layout(width="100%")),
                    w.HBox([variant, p.variants_pdf_button, report], layout=w.Layout(flex_flow="row wrap")),
-                   p.download, p.kept, p.variants_field])
+                   p.download, p.kept, p.written_box, p.variants_field])
     keep.add_class("dr-keep")
     return keep
 

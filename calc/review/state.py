@@ -29,7 +29,7 @@ from ..sections.ratios import search as search_ratios
 from .edit import changed_text, edited_case, moves_edits, value_text
 from .inputs import (MECHANISM, MOVE_TIMES, SELECTION, TYPED, InputSpec, input_edits, is_inch_pound, option_text,
                      read_typed, review_specs)
-from .keep import save_path
+from .keep import save_path, write_case
 from .view import evaluated
 
 #: The attribute of :class:`calc.domain.mechanism.Mechanism` of each of its keys that is named otherwise.
@@ -554,10 +554,12 @@ class ReviewState:
         """
         if self.refused:
             raise CalcError("a refused value is in a field: correct it (or undo) before saving")
+        if not self.modified():
+            raise CalcError(f"nothing changed: the screen is {self.path.name} as it is; nothing written")
         path = save_path(self.path, name.strip())
         try:
-            path.write_text(self.case_text(), encoding="utf-8")
-        except OSError as exc:
+            write_case(path, self.case_text(), self.file_text)
+        except CalcError as exc:
             raise CalcError(without_folder(str(exc), self.path)) from None
         return path
 

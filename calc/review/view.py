@@ -384,7 +384,7 @@ def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
     Raises
     ------
     calc.core.errors.CalcError
-        A case that cannot be evaluated, with its report's error.
+        A case that cannot be evaluated, with its report's error; a ``pdf`` that exists.
     """
     import json
     from pathlib import Path
@@ -392,6 +392,8 @@ def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
     from ..sections.case import read_case
     from ..core.errors import CalcError
 
+    if pdf is not None and Path(pdf).exists():
+        raise CalcError(f"--pdf {pdf}: the file exists; name a new one (a comparison is never written over a file)")
     designs = [(Path(p).name, report_of(read_case(p))) for p in paths]
     for _, r in designs:
         if r.error is not None:

@@ -88,3 +88,91 @@ def test_the_same_motion_written_twice_gives_the_same_verdict_in_the_page(tmp_pa
         assert twice.startswith("PASS") and "100.9 N·m" in twice and "2400" in twice and "Gearbox NPT035-10" in twice
         assert "69.36 N·m" not in twice and "1200" not in twice
         page.screenshot(path=str(SHOTS / "motion-twice.png"))
+
+
+def _open(page, url: str, case: str | None = None) -> None:
+    page.goto(url)
+    page.wait_for_selector(RESULTS, timeout=60_000)
+    if case is not None:
+        page.wait_for_function(f"() => document.querySelector('{RESULTS}')?.dataset.case === '{case}'",
+                               timeout=90_000)
+    _current(page)
+
+
+def test_a_link_keeps_any_case_of_the_chooser_with_its_changes(tmp_path):
+    # Finding 3: linear-axis-inch.toml chosen, its mass set to 70 lb; the address, opened again (a reload, a new
+    # tab), opens that case with that mass, and keeps the address.
+    import shutil
+
+    for name in ("indexing-table.toml", "linear-axis-inch.toml"):
+        shutil.copy(DERIVED_EXAMPLE.parent / name, tmp_path / name)
+    (tmp_path / "indexing-table.toml").write_text(_copy(tmp_path, "x.toml").read_text())
+    (tmp_path / "x.toml").unlink()
+    with served(tmp_path / "indexing-table.toml") as server, browser_page() as page:
+        _open(page, server.url)
+        g = int(page.get_attribute(RESULTS, "data-generation"))
+        page.locator(".design-review .dr-case select").select_option(label="linear-axis-inch.toml · PASS")
+        wait_for_results(page, g)
+        page.wait_for_function(f"() => document.querySelector('{RESULTS}')?.dataset.case === 'linear-axis-inch.toml'")
+        shown = _changed(page, "mechanism.mass", "70")
+        page.wait_for_function("() => decodeURIComponent(location.hash).includes('linear-axis-inch.toml')")
+        address = page.url
+        for attempt in range(2):  # a new tab, then a reload
+            page.goto("about:blank")
+            _open(page, address, "linear-axis-inch.toml")
+            page.wait_for_function("() => document.querySelector('.dr-row [data-key=\"mechanism.mass\"]')"
+                                   "?.closest('.dr-row').querySelector('input[type=text]').value === '70'",
+                                   timeout=60_000)
+            _current(page)
+            assert page.inner_text(RESULTS) == shown, attempt
+            page.wait_for_timeout(1000)
+            assert "linear-axis-inch.toml" in page.evaluate("decodeURIComponent(location.hash)")
+        page.screenshot(path=str(SHOTS / "link-other-case.png"))
+
+
+FORGED_SAID = 'rotary\n[drive_record]\nfile = "/etc/hostname"\n# '
+
+
+def test_a_forged_link_cannot_write_toml_into_a_saved_file(tmp_path):
+    # Finding 5: a link's mechanism edit carries its description in words, which Save writes into the
+    # first comment line. A crafted one with newlines: Save writes it on one line, and what it wrote
+    # reads back as a case with no table the file has not.
+    import json
+    import tomllib
+    from urllib.parse import quote
+
+    from calc.sections import evaluate
+    from calc.sections.case import read_case
+
+    case = _copy(tmp_path)
+    edit = ["mechanism", {"type": "rotary", "inertia": "1500 kg*cm**2", "friction_torque": "4 N*m"}, {}, FORGED_SAID]
+    state = {"case": "axis.toml", "edits": [edit], "values": {}}
+    with served(case) as server, browser_page() as page:
+        _open(page, server.url + "#" + quote(json.dumps(state)))
+        page.wait_for_function(f"() => document.querySelector('{RESULTS}')?.dataset.edits?.includes('drive_record')",
+                               timeout=60_000)
+        _current(page)
+        page.locator(".design-review button", has_text="Save as case file").click()
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('saved as')"
+                               " || document.querySelector('.design-review').innerText.includes('not saved')")
+        saved = tmp_path / "axis-variant-1.toml"
+        text = saved.read_text()
+        first, rest = text.split("\n", 1)
+        assert first.startswith("# Changed in the design review from axis.toml: rotary [drive_record] file =")
+        assert "[drive_record]" not in rest and "drive_record" not in tomllib.loads(text)
+        assert 'friction_torque = "4 N*m"' in rest
+        assert evaluate(read_case(saved)).to_json()["verdict"]["passes"] is True
+        # The file the page wrote is listed, and removable from the page.
+        written = page.locator(".design-review .dr-written select")
+        assert "axis-variant-1.toml" in written.inner_text()
+        page.locator(".design-review button", has_text="remove file").click()
+        page.wait_for_function("() => document.querySelector('.design-review').innerText"
+                               ".includes('removed axis-variant-1')")
+        assert not saved.exists() and case.exists()
+        page.screenshot(path=str(SHOTS / "forged-link-saved-one-line.png"))
+        # Saving with nothing changed writes nothing.
+        page.locator(".design-review button", has_text="reset").click()
+        _current(page)
+        page.locator(".design-review button", has_text="Save as case file").click()
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('nothing changed')")
+        assert sorted(p.name for p in tmp_path.glob("*.toml")) == ["axis.toml"]
