@@ -87,23 +87,41 @@ SCRIPT = r"""<script>
     const stamp = JSON.parse(r.dataset.inputs), now = shown();
     return Object.keys(now).every(k => stamp[k] === undefined || stamp[k] === now[k]);
   }
-  function connection() {
+  // A kernel restarted (killed, then started again by the server) holds none of the page's controls:
+  // what it computed is lost for good, and only a reload gives a working page.
+  let restarted = false, watched = null;
+  function kernelOf() {
     const app = window.jupyterapp, manager = app && (app.widgetManager || app._widgetManager);
-    const kernel = manager && (manager.kernel || manager._kernel);
+    return manager && (manager.kernel || manager._kernel);
+  }
+  function connection() {
+    const kernel = kernelOf();
+    if (kernel && watched !== kernel && kernel.statusChanged) {
+      watched = kernel;
+      kernel.statusChanged.connect((_, status) => {
+        if (['restarting', 'autorestarting', 'dead'].includes(status)) { restarted = true; show(); }
+      });
+    }
+    if (kernel && ['restarting', 'autorestarting', 'dead'].includes(kernel.status)) restarted = true;
     return kernel ? kernel.connectionStatus : null;  // null: not in a served page (JupyterLab)
   }
   function show() {
     const p = panel(), r = results();
     if (!p || !r) return;
     if (restoring !== false && restoring !== 'case') restore();
-    const state = p.querySelector('.dr-state'), link = connection(), lost = link !== null && link !== 'connected';
+    const state = p.querySelector('.dr-state'), link = connection();
+    const lost = restarted || (link !== null && link !== 'connected');
     const same = current();
     const waiting = askedAfter !== null && Number(r.dataset.generation) <= askedAfter && Date.now() - askedAt < 3000;
     const stale = !same || waiting || p.classList.contains('dr-busy');  // dr-busy: the kernel computing a change
     p.classList.toggle('dr-lost', lost);
     p.classList.toggle('dr-stale', stale && !lost);
     if (state) {
-      const text = lost
+      const text = restarted
+        ? 'The server restarted this page’s computation (its kernel): the results shown are not those of the fields, '
+          + 'and no change is computed any more. Reload the page; the changed values, typed ones too, are kept in '
+          + 'its address.'
+        : lost
         ? 'Connection to the server lost: the results shown are not those of the fields. '
           + 'Start the server again (make review) and reload the page; the changed values are kept in its address.'
         : stale ? 'Out of date: computing the results of the values changed '
@@ -112,24 +130,30 @@ SCRIPT = r"""<script>
           + (modified(r) ? ' (changed values marked)' : ' (the case file’s values)') + '.';
       // Written only when it changes: the observer below sees every write.
       if (state.textContent !== text) state.textContent = text;
-      const word = lost ? 'lost' : stale ? 'stale' : 'current';
+      const word = restarted ? 'restarted' : lost ? 'lost' : stale ? 'stale' : 'current';
       if (state.dataset.state !== word) state.dataset.state = word;
     }
-    if (same && !lost && restoring === false) keepInAddress(r);  // not before the address was read
+    if (restoring === false && (lost || same)) keepInAddress(r, lost);  // not before the address was read
   }
   // Whether the screen differs from the case file: a value changed, or the moves edited.
   const edited = r => r.dataset.edits && r.dataset.edits !== '[]';
   const modified = r => (r.dataset.changed && r.dataset.changed !== '{}') || edited(r);
   // The changed values (and the moves' edits) in the page's address, so that a reload or a link types them in again.
-  function keepInAddress(r) {
+  // Lost (``typed``): the values typed since, which no kernel took, are kept as well.
+  function keepInAddress(r, typed) {
     const changed = JSON.parse(r.dataset.changed || '{}'), name = r.dataset.case || '';
+    if (typed && r.dataset.inputs) {
+      const stamp = JSON.parse(r.dataset.inputs), now = shown();
+      for (const k of Object.keys(now)) if (stamp[k] !== undefined && stamp[k] !== now[k]) changed[k] = now[k];
+    }
     const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed}
                             : {case: name, values: changed};
     const units = r.dataset.units !== r.dataset.fileUnits;  // the other unit system than the file's
     if (units) state.units = r.dataset.units;
     const variants = JSON.parse(r.dataset.variants || '[]');  // the variants kept, each as its edits and values
     if (variants.length) state.variants = variants;
-    const hash = modified(r) || units || variants.length ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
+    const some = modified(r) || Object.keys(changed).length || units || variants.length;
+    const hash = some ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
     if (location.hash !== hash) history.replaceState(null, '', location.pathname + location.search + hash);
   }
   function rowOf(key) {

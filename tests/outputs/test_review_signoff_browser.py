@@ -176,3 +176,46 @@ def test_a_forged_link_cannot_write_toml_into_a_saved_file(tmp_path):
         page.locator(".design-review button", has_text="Save as case file").click()
         page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('nothing changed')")
         assert sorted(p.name for p in tmp_path.glob("*.toml")) == ["axis.toml"]
+
+
+def _kill_kernel(page) -> None:
+    """Kill the page's kernel process (started by this test's server), as a crash or the system would."""
+    import os
+    import signal
+    from pathlib import Path
+
+    kernel = page.evaluate("() => { const a = window.jupyterapp, m = a && (a.widgetManager || a._widgetManager);"
+                           " const k = m && (m.kernel || m._kernel); return k ? k.id : null; }")
+    assert kernel
+    pids = [int(p.name) for p in Path("/proc").iterdir() if p.name.isdigit()
+            and f"kernel-{kernel}.json".encode() in (p / "cmdline").read_bytes()]
+    assert len(pids) == 1, pids
+    os.kill(pids[0], signal.SIGKILL)
+
+
+def test_a_restarted_kernel_is_said_with_what_to_do_and_typed_values_survive(tmp_path):
+    # Finding 4: the page's kernel killed while a change is computed; the server starts another, which holds none of
+    # the page's controls. The page says so and to reload; a value typed then is kept in the address, and a reload
+    # computes it.
+    with served(_copy(tmp_path)) as server, browser_page() as page:
+        _open(page, server.url)
+        _changed(page, "mechanism.inertia", "1600")
+        _kill_kernel(page)
+        row(page, "mechanism.inertia").locator("input[type=text]").fill("1700")
+        row(page, "mechanism.inertia").locator("input[type=text]").press("Enter")
+        page.wait_for_function("() => ['restarted', 'lost'].includes("
+                               "document.querySelector('.design-review .dr-state').dataset.state)", timeout=60_000)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'restarted'",
+                               timeout=60_000)
+        said = page.inner_text(".design-review .dr-state")
+        assert "Reload the page" in said and "kept in its address" in said
+        page.wait_for_function("() => decodeURIComponent(location.hash).includes('\"mechanism.inertia\":\"1700\"')")
+        page.screenshot(path=str(SHOTS / "kernel-restarted.png"))
+        address = page.url
+        page.goto("about:blank")
+        _open(page, address)
+        page.wait_for_function("() => document.querySelector('.dr-row [data-key=\"mechanism.inertia\"]')"
+                               "?.closest('.dr-row').querySelector('input[type=text]').value === '1700'",
+                               timeout=60_000)
+        _current(page)
+        assert "1700 kg·cm²" in page.inner_text(RESULTS)
