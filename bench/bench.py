@@ -57,6 +57,9 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   ``review_start``: from starting the server (``python -m calc.review.serve``, as ``make review``
   does) to its first kernel waiting, plus ``review_page_ready``: a reviewer's wait from the command
   to a verdict (their browser already open).
+* ``review_page_transfer``, ``review_kernel_memory``: the page opened once more in a fresh browser
+  (nothing cached, :func:`review_browser.first_load`): the bytes it receives (bodies as sent and
+  headers; target 2 MB: 5.2 MB uncompressed), and its kernel's resident memory (target 150 MB).
 
 In-process timings are the best of several repeats (the least disturbed by the other work of a
 shared machine); ratios are taken between figures of this one run.
@@ -81,7 +84,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from review_browser import CHROMIUM, new_values, review_in_browser, served  # beside this file
+from review_browser import CHROMIUM, first_load, new_values, review_in_browser, served  # beside this file
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = ROOT / "cases" / "indexing-table.toml"
@@ -979,11 +982,15 @@ REVIEW_CHANGES, REVIEW_CHANGES_QUICK = 20, 3
 def measure_review(quick: bool, workdir: Path) -> list[str]:
     names = ("review_start", "review_page_ready", "review_change_median", "review_change_max")
     if not CHROMIUM.exists():
-        return [line(name, None, "s", note=f"no Chromium at {CHROMIUM}: make browser") for name in names]
+        return [line(name, None, "s", note=f"no Chromium at {CHROMIUM}: make browser") for name in names] + [
+            line(name, None, "MB", note=f"no Chromium at {CHROMIUM}: make browser")
+            for name in ("review_page_transfer", "review_kernel_memory")]
     changes = new_values(EXAMPLE, REVIEW_CHANGES_QUICK if quick else REVIEW_CHANGES)
     with served() as server:
         visit = review_in_browser(server.url, workdir / "screenshots", changes, settle=1.0 if quick else 3.0)
+        first = first_load(server.url)  # a second reviewer, nothing cached
     note = f"{len(visit.times)} changes to new values in headless Chromium"
+    memory = first.kernel_mb
     return [
         line("review_start", server.started + visit.ready, "s", ("<=", 3),
              note=f"the server's first kernel waiting after {server.started:.2f} s, then the page"),
@@ -991,6 +998,10 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
         line("review_change_median", visit.median, "s", ("<=", 0.15), note=note),
         line("review_change_max", max(visit.times), "s", ("<=", 0.3),
              note=f"{max(visit.changes, key=lambda c: c[1])[0]}"),
+        line("review_page_transfer", first.transfer / 1e6, "MB", ("<=", 2),
+             note=f"{first.requests} requests, nothing cached, responses compressed"),
+        line("review_kernel_memory", memory, "MB", ("<=", 150),
+             note="resident memory of a page's kernel" if memory is not None else "its kernel not found (Linux only)"),
     ]
 
 

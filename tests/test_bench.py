@@ -16,7 +16,8 @@ LINES = (
     "combinations", "combinations_numpy", "combinations_loop", "combinations_numpy_vs_ours",
     "combinations_loop_vs_ours",
     "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report", "report_20_cases",
-    "review_start", "review_page_ready", "review_change_median", "review_change_max",
+    "review_start", "review_page_ready", "review_change_median", "review_change_max", "review_page_transfer",
+    "review_kernel_memory",
 )
 
 
