@@ -16,7 +16,9 @@ setup: $(STAMP)
 
 $(STAMP): environment.txt pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
-	$(PY) -m pip install --quiet --disable-pip-version-check -r environment.txt
+	# --no-deps: environment.txt pins the whole set (tests/test_dependencies.py), so nothing is resolved again;
+	# basyx-python-sdk declares python-dateutil<3 and runs (its tests pass) with the pinned 4.0.0.
+	$(PY) -m pip install --quiet --disable-pip-version-check --no-deps -r environment.txt
 	$(PY) -m pip install --quiet --disable-pip-version-check --no-deps -e .
 	$(PY) -m ipykernel install --sys-prefix --name python3 >/dev/null
 	@rm -f $(VENV)/.installed-* && touch $@
@@ -81,7 +83,7 @@ book: setup
 
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
 # No execution times are recorded, so a re-run changes only what the calculation changed; no widget
-# state is stored either (notebook 07's panel: some 170 KB of it, new on every run, and a live kernel
+# state is stored either (notebook 12's panel: some 170 KB of it, new on every run, and a live kernel
 # rebuilds it anyway).
 notebooks: setup
 	for nb in notebooks/*.ipynb notebooks/instructor/*.ipynb; do \

@@ -1,4 +1,4 @@
-"""Regenerate ``notebooks/figures/07-design-review.png``, the picture notebook 07 shows of its
+"""Regenerate ``notebooks/figures/12-design-review.png``, the picture notebook 12 shows of its
 panel (a static page, the book among them, cannot run the live panel): the served design review
 of the example as a reviewer first sees it, in headless Chromium.
 
@@ -15,7 +15,7 @@ sys.path.insert(0, str(ROOT))
 
 from bench.review_browser import review_in_browser, served  # noqa: E402
 
-TARGET = ROOT / "notebooks" / "figures" / "07-design-review.png"
+TARGET = ROOT / "notebooks" / "figures" / "12-design-review.png"
 
 if __name__ == "__main__":
     with tempfile.TemporaryDirectory() as shots, served(ROOT / "cases" / "indexing-table.toml") as server:

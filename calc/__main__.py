@@ -65,6 +65,16 @@ def main(argv=None) -> int:
     cp.add_argument("cases", nargs="+", metavar="case", help="design-case TOML files, one column each")
     cp.add_argument("--json", action="store_true", help="print the table as JSON")
     cp.add_argument("--pdf", help="also write the table and a comparison figure as a PDF file")
+    ex = sub.add_parser("export", help="write a case and its results as an IDTA 02021 submodel (AAS JSON or AASX)")
+    ex.add_argument("case", help="the design-case TOML file")
+    ex.add_argument("--aas", metavar="OUT.json",
+                    help="write AAS JSON (metamodel V3.0), the motion pattern's CSV beside it")
+    ex.add_argument("--aasx", metavar="OUT.aasx", help="write an AASX package with the case file and the CSV inside")
+    ex.add_argument("--report", metavar="PDF", help="a calc report built of the case, carried in the AASX")
+    im = sub.add_parser("import", help="write a case file from an IDTA 02021 submodel (AAS JSON or AASX)")
+    im.add_argument("file", help="the .json or .aasx file")
+    im.add_argument("-o", "--output", required=True, metavar="CASE.toml",
+                    help="the case file to write; its drive record is written beside it")
     for p in (ev, ra, co, rp):
         p.add_argument("--strict", action="store_true", help="exit 1 when a verdict is not PASS")
     args = parser.parse_args(argv)
@@ -89,6 +99,11 @@ def _run(args) -> int:
             from .review.view import compare_cases
 
             print(compare_cases(args.cases, args.json, args.pdf))
+            return 0
+        if args.command in ("export", "import"):
+            from .exchange.command import run_exchange
+
+            print(run_exchange(args))
             return 0
         if args.command == "combinations":
             from .sections.pairs import search_pairs

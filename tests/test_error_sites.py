@@ -20,6 +20,9 @@ from .error_sites import error_sites, site_at
 NOT_FROM_INPUT = {
     ("calc/report/publish.py", "render_pdf", "{display_path(report.path)}: xelatex could not typeset the report"),
     ("calc/report/publish.py", "render_summary", "{pdf}: xelatex could not typeset the summary"),
+    # The export is verified before it is written: a failure is a defect of calc.exchange.build, which
+    # tests/outputs/test_exchange.py holds to zero errors on every shipped case.
+    ("calc/exchange/package.py", "verified_json", "the AAS export does not pass the meta-model's verification"),
     # A backstop of the results: inputs are held to calc.core.units.SI_SCALE, within which no formula overflows.
     ("calc/core/units.py", "number", "{key}: the calculation overflows"),
 }

@@ -25,29 +25,30 @@ CHECKED = ("notebooks/instructor/99-answers.ipynb",)
 COURSE = tuple(sorted(str(p.relative_to(ROOT)) for p in (ROOT / "notebooks").glob("*.ipynb")))
 # Figures the course quotes from a source rather than computing: (notebook, number): the source.
 QUOTED = {
-    ("02-s1-selection.ipynb", "6.6"): "ISO 6336-2's life factor for flank pitting, as a torque exponent",
-    ("03-s5-selection.ipynb", "3600"): "seconds per hour, in the source's Z_h = 3600 / t_cycle",
-    ("03a-motion-and-mechanism.ipynb", "60"): "the inch case file's load, 60 lb (cases/linear-axis-inch.toml)",
-    ("03a-motion-and-mechanism.ipynb", "200"): "the pinion's travel per revolution, pi · 63.66 mm",
-    ("04-couplings.ipynb", "0.012"): "ISO 286-2: k6 over 10 up to 18 mm (calc.domain.fits, tests/domain/test_fits.py)",
-    ("04-couplings.ipynb", "0.015"): "ISO 286-2: k6 over 18 up to 30 mm (calc.domain.fits, tests/domain/test_fits.py)",
-    ("04-couplings.ipynb", "0.018"): "ISO 286-2: k6 over 30 up to 50 mm (calc.domain.fits, tests/domain/test_fits.py)",
+    ("06-s1-selection.ipynb", "6.6"): "ISO 6336-2's life factor for flank pitting, as a torque exponent",
+    ("07-s5-selection.ipynb", "3600"): "seconds per hour, in the source's Z_h = 3600 / t_cycle",
+    ("01-motion-and-mechanism.ipynb", "60"): "the inch case file's load, 60 lb (cases/linear-axis-inch.toml)",
+    ("01-motion-and-mechanism.ipynb", "200"): "the pinion's travel per revolution, pi · 63.66 mm",
+    ("08-couplings.ipynb", "0.012"): "ISO 286-2: k6 over 10 up to 18 mm (calc.domain.fits, tests/domain/test_fits.py)",
+    ("08-couplings.ipynb", "0.015"): "ISO 286-2: k6 over 18 up to 30 mm (calc.domain.fits, tests/domain/test_fits.py)",
+    ("08-couplings.ipynb", "0.018"): "ISO 286-2: k6 over 30 up to 50 mm (calc.domain.fits, tests/domain/test_fits.py)",
     (
-        "05-stiffness-backlash-lost-motion.ipynb",
+        "10-stiffness-backlash-lost-motion.ipynb",
         "50",
     ): "the band of the loop the stiffness is read in, 50 % to 100 % of T_N (calc.domain.hysteresis)",
     (
-        "06-transmission-and-positioning-accuracy.ipynb",
+        "11-transmission-and-positioning-accuracy.ipynb",
         "31",
     ): "the generated trace's tooth mesh, 31 per input turn (data/transmission-NPT035-10-generated.csv)",
-    ("06-transmission-and-positioning-accuracy.ipynb", "310"): "the same mesh per output turn, 31 · 10",
+    ("11-transmission-and-positioning-accuracy.ipynb", "310"): "the same mesh per output turn, 31 · 10",
 }
 NAMES = re.compile(r"\b(?:ISO|IEC|DIN)\s[\d-]+|[\w/.-]+\.(?:ipynb|toml|csv|py|png)\b")  # standards and files
 POSED = re.compile(r"^## (?:Exercises|Self-check)", re.MULTILINE)  # questions: hypothetical values
 NUMBER = re.compile(r"(?<![\w.])(?<!\w-)\d+(?:[ ,]\d{3})*(?:\.\d+)?")
+NOTEBOOKS_NAMED = r"\b[Nn]otebooks?\s+\d\d(?:(?:,\s*|\s+(?:and|to|or)\s+)\d\d)*\b"  # "notebooks 01 to 12"
 NOT_PROSE = re.compile(
-    r"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s", re.MULTILINE
-)  # headings, link targets, errata, "02 · "
+    rf"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s|{NOTEBOOKS_NAMED}", re.MULTILINE
+)  # headings, link targets, errata, "02 · ", notebooks named by number
 
 
 def text(value) -> str:

@@ -17,7 +17,7 @@ SOURCE = Document(
     "and Selecting for Couplings and Safety Couplings; Accuracy in Gearboxes and Couplings: Definitions",
     "a gearbox distributor, not named in the text",
     edition="the text as received, its figures lost to the conversion (only their captions remain)",
-    held="its words beside each reading: notebook 08-source-and-errata",
+    held="its words beside each reading: notebook 13-source-and-errata",
 )
 #: Where the source is garbled or silent, the reading the project takes (E1 to E16).
 ERRATA = Document(
@@ -25,7 +25,7 @@ ERRATA = Document(
     "Errata and readings of the source document",
     "drivetrain-calc (this project)",
     edition="E1 to E16",
-    held="calc/report/errata.toml, one line per reading, as the calc report lists them; notebook 08-source-and-errata",
+    held="calc/report/errata.toml, one line per reading, as the calc report lists them; notebook 13-source-and-errata",
     joiner=" ",
 )
 #: The project's case file and results, with the readings of the motion, the motor's side and its ratings.

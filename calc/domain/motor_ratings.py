@@ -24,7 +24,7 @@ errata are; ``docs/case-format.md``, "The motor chosen from a catalog"):
   the zone falls from about ``n_N`` and ends above ``M_N``), but above it for a motor whose rated
   speed lies past the knee of its voltage limit: 1FT7044-AK7's voltage limit on a 600 V DC link
   allows about 13 N·m at its rated 6000 rpm where this reading allows its ``M_max`` of 23 N·m
-  (notebook 03c). Give the DC link where the catalog has the electrical data.
+  (notebook 04). Give the DC link where the catalog has the electrical data.
 
 The checks of a cycle (motor torque ``T_1`` and speed ``n_1`` per sample, durations ``t_k``): every
 sample under the peak characteristic at its speed; the RMS torque within the rated torque,

@@ -31,6 +31,7 @@ from pathlib import Path
 
 from ..sections.case import Case, read_case
 from ..data.catalog import display_path, recording_files_read
+from ..exchange import aasx_beside
 from ..core.errors import CalcError
 from ..sections import Results, Verdict, evaluate, places
 from ..sections.ratios import search as ratio_search
@@ -428,6 +429,8 @@ def build_report(case_path) -> Report:
 
     if path.is_file():
         report.files.append(("Case file", shown(path), sha256(path)))
+    if aasx_beside(path).is_file():  # the case's IDTA 02021 export, where one was written beside it
+        report.files.append(("IDTA 02021 export", shown(aasx_beside(path)), sha256(aasx_beside(path))))
     with recording_files_read() as read:
         try:
             case = read_case(path)

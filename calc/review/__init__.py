@@ -10,7 +10,7 @@
   :mod:`.variants` the variants kept and compared;
 * :mod:`.view`: what a reviewer reads of an evaluated case, as one HTML text (verdict, chosen
   parts, governing checks, candidate tables, accuracy); :mod:`.page` the panel's other texts;
-* :mod:`.panel`: :class:`DesignReview`, the ipywidgets panel of notebook 07 and of the served
+* :mod:`.panel`: :class:`DesignReview`, the ipywidgets panel of notebook 12 and of the served
   page (``make review``, :mod:`.serve`), which draws the state.
 
 ipywidgets and matplotlib are imported inside, so ``import calc`` stays light.

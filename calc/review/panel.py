@@ -822,6 +822,8 @@ def _keep(p: DesignReview, w):
     report = _button(w, "Calc report of this screen",
                      "save the changed values as a case file (Save as case file) and build its calc report (PDF)",
                      "15em", p.report_of_screen)
+    aasx = _button(w, "Save as AASX", "save the changed values as a case file (Save as case file) and its "
+                   "IDTA 02021 digital twin beside it (AASX, the case file inside)", "11em", lambda: save_aasx(p))
     p.variants_pdf_button = _button(w, "Variants as PDF",
                                     "the variants kept, side by side with their figure, as a PDF (A4)", "11em",
                                     p.variants_pdf, disabled=True)
@@ -836,11 +838,40 @@ def _keep(p: DesignReview, w):
                      p.remove_written)
     p.written_box = w.HBox([p.written, remove], layout=w.Layout(width="100%", display="none"))
     p.written_box.add_class("dr-written")
-    keep = w.VBox([w.HBox([p.save_name, save], layout=w.Layout(width="100%")),
+    keep = w.VBox([w.HBox([p.save_name, save, aasx], layout=w.Layout(width="100%")),
                    w.HBox([variant, p.variants_pdf_button, report], layout=w.Layout(flex_flow="row wrap")),
                    p.download, p.kept, p.written_box, p.variants_field])
     keep.add_class("dr-keep")
     return keep
+
+
+def save_aasx(p: DesignReview) -> Path | None:
+    """The case on the screen as an IDTA 02021 AASX beside its case file: the changes saved first
+    (:meth:`DesignReview.save`), so the AASX carries the file it was built from. Says what it did,
+    or why not, under the buttons.
+
+    Parameters
+    ----------
+    p : DesignReview
+        The panel.
+
+    Returns
+    -------
+    pathlib.Path or None
+        The AASX written; None where the changes or the AASX could not be saved.
+    """
+    from ..exchange.command import export_beside
+
+    path = p.state.path if not p.state.modified() else p.save()
+    if path is None:
+        return None
+    try:
+        out = export_beside(path)
+    except CalcError as exc:
+        p.kept.value = failed_html("no AASX", str(exc), whole=True)
+        return None
+    p.kept.value = f"saved {escape(out.name)} beside {escape(path.name)} (IDTA 02021, the case file inside)"
+    return out
 
 
 def _build_report(case: Path, pdf: Path):

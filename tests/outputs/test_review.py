@@ -852,7 +852,7 @@ def test_moves_added_and_removed_follow_and_are_kept(tmp_path):
 
 def test_the_results_are_marked_out_of_date_while_a_change_is_computed():
     """The kernel marks the results out of date as a change arrives and current once they are
-    drawn: in JupyterLab (notebook 07), where the page's script does not run, that is the mark."""
+    drawn: in JupyterLab (notebook 12), where the page's script does not run, that is the mark."""
     import threading
 
     panel = DesignReview(EXAMPLE)
