@@ -870,6 +870,9 @@ def save_aasx(p: DesignReview) -> Path | None:
     except CalcError as exc:
         p.kept.value = failed_html("no AASX", str(exc), whole=True)
         return None
+    if path != p.state.path:  # beside a case file the page saved: written by the page, removable there
+        Written(out.parent).add(out.name)
+        p._show_written()
     p.kept.value = f"saved {escape(out.name)} beside {escape(path.name)} (IDTA 02021, the case file inside)"
     return out
 

@@ -280,9 +280,11 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     argv = serve.command(8866)
     # Voilà's own main, one slow import kept out of the server (the browser tests run it).
     assert argv[argv.index("-c") + 1] == serve.LAUNCH and serve.LAUNCH.endswith("from voila.app import main; main()")
+    assert "'compress_response': True" in serve.LAUNCH  # every response compressed
     assert str(serve.PAGE) in argv and serve.PAGE.is_file()
     assert "--Voila.ip=127.0.0.1" in argv and "--strip_sources=True" in argv and "--preheat_kernel=True" in argv
-    assert "--MappingKernelManager.cull_idle_timeout=600" in argv
+    # Culled within a minute of the page closing: idle 45 s, looked at every 15 s.
+    assert "--MappingKernelManager.cull_idle_timeout=45" in argv and "--MappingKernelManager.cull_interval=15" in argv
     assert "--MappingKernelManager.cull_connected=False" in argv
     # Checked by hand in a browser with idle_seconds=6: two pages opened and closed, their two
     # kernels culled some 8 s later, the waiting kernel kept.

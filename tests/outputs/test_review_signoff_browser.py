@@ -219,3 +219,36 @@ def test_a_restarted_kernel_is_said_with_what_to_do_and_typed_values_survive(tmp
                                timeout=60_000)
         _current(page)
         assert "1700 kg·cm²" in page.inner_text(RESULTS)
+
+
+def test_a_closed_pages_kernel_is_culled_within_a_minute_and_the_page_is_compressed(tmp_path):
+    # Finding 11: each page's kernel (some 100 MB) stayed 10 minutes after its page closed, and a load sent 5.2 MB.
+    import os
+    import time
+
+    from bench.review_browser import first_load, kernel_memory
+
+    with served(_copy(tmp_path)) as server:
+        with browser_page() as page:
+            _open(page, server.url)
+            kernel = page.evaluate("() => { const a = window.jupyterapp, m = a && (a.widgetManager || a._widgetManager);"
+                                   " const k = m && (m.kernel || m._kernel); return k ? k.id : null; }")
+            assert kernel_memory(page) < 150
+        closed = time.perf_counter()
+        alive = [p for p in os.listdir("/proc") if p.isdigit() and _holds(p, f"kernel-{kernel}.json")]
+        while alive and time.perf_counter() - closed < 75:
+            time.sleep(2)
+            alive = [p for p in alive if os.path.exists(f"/proc/{p}") and _holds(p, f"kernel-{kernel}.json")]
+        gone = time.perf_counter() - closed
+        print(f"\nthe closed page's kernel gone after {gone:.1f} s")
+        assert not alive and gone < 62
+        load = first_load(server.url)  # the next page, nothing cached: compressed, and ready
+        print(f"next page: ready {load.ready:.2f} s, {load.transfer / 1e6:.2f} MB in {load.requests} requests")
+        assert load.transfer < 2e6
+
+
+def _holds(pid: str, text: str) -> bool:
+    try:
+        return text.encode() in open(f"/proc/{pid}/cmdline", "rb").read()
+    except OSError:
+        return False
