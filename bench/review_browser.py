@@ -179,10 +179,15 @@ def browser_page(viewport: dict = SCREEN):
             browser.close()
 
 
+def kernel_id(page) -> str | None:
+    """The id of the page's kernel (its connection file is ``kernel-<id>.json``), None outside a served page."""
+    return page.evaluate("() => { const a = window.jupyterapp, m = a && (a.widgetManager || a._widgetManager);"
+                         " const k = m && (m.kernel || m._kernel); return k ? k.id : null; }")
+
+
 def kernel_memory(page) -> float | None:
     """The resident memory of the page's kernel process [MB] (Linux), None where not found."""
-    kernel = page.evaluate("() => { const a = window.jupyterapp, m = a && (a.widgetManager || a._widgetManager);"
-                           " const k = m && (m.kernel || m._kernel); return k ? k.id : null; }")
+    kernel = kernel_id(page)
     for proc in Path("/proc").iterdir():
         try:
             if proc.name.isdigit() and f"kernel-{kernel}.json".encode() in (proc / "cmdline").read_bytes():

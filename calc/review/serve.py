@@ -106,7 +106,7 @@ LAUNCH = ("import sys; sys.modules['rfc3987_syntax'] = None\n"
           "from voila.app import main; main()")
 
 
-def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = 60 * IDLE_MINUTES,
+def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = round(60 * IDLE_MINUTES),
             reports: Path = Path("reports")) -> list[str]:
     """The Voilà command line of the review page.
 

@@ -184,8 +184,9 @@ def _kill_kernel(page) -> None:
     import signal
     from pathlib import Path
 
-    kernel = page.evaluate("() => { const a = window.jupyterapp, m = a && (a.widgetManager || a._widgetManager);"
-                           " const k = m && (m.kernel || m._kernel); return k ? k.id : null; }")
+    from bench.review_browser import kernel_id
+
+    kernel = kernel_id(page)
     assert kernel
     pids = [int(p.name) for p in Path("/proc").iterdir() if p.name.isdigit()
             and f"kernel-{kernel}.json".encode() in (p / "cmdline").read_bytes()]
@@ -226,13 +227,12 @@ def test_a_closed_pages_kernel_is_culled_within_a_minute_and_the_page_is_compres
     import os
     import time
 
-    from bench.review_browser import first_load, kernel_memory
+    from bench.review_browser import first_load, kernel_id, kernel_memory
 
     with served(_copy(tmp_path)) as server:
         with browser_page() as page:
             _open(page, server.url)
-            kernel = page.evaluate("() => { const a = window.jupyterapp, m = a && (a.widgetManager || a._widgetManager);"
-                                   " const k = m && (m.kernel || m._kernel); return k ? k.id : null; }")
+            kernel = kernel_id(page)
             assert kernel_memory(page) < 150
         closed = time.perf_counter()
         alive = [p for p in os.listdir("/proc") if p.isdigit() and _holds(p, f"kernel-{kernel}.json")]
