@@ -40,6 +40,11 @@ STYLE = """<style>
   .design-review .dr-label { flex: 0 0 12em !important; width: 12em !important; }
   .design-review .dr-message, .design-review .dr-idle { margin-left: 12em; }
   .design-review > .widget-vbox:last-child { min-width: 420px !important; flex: 1 1 420px !important; }
+  /* the tables wrap their words, not their numbers, so that the verdict column stays on the screen */
+  .design-review .dr { font-size: 12px; }
+  .design-review .dr td, .design-review .dr th { white-space: normal; padding-right: 5px; }
+  .design-review .dr td.n { white-space: nowrap; }
+  .design-review .dr .bar { width: 28px; }
 }
 @media print {
   @page { size: A4; margin: 12mm; }
@@ -105,9 +110,36 @@ SCRIPT = r"""<script>
     if (kernel && ['restarting', 'autorestarting', 'dead'].includes(kernel.status)) restarted = true;
     return kernel ? kernel.connectionStatus : null;  // null: not in a served page (JupyterLab)
   }
+  // Each control named for assistive technology by its row's label; the state line a live region; a candidate's
+  // row reachable and forced by the keyboard (Enter or Space), as a click forces it.
+  function accessible(p) {
+    for (const row of p.querySelectorAll('.dr-row')) {
+      const label = row.querySelector('[data-key]');
+      if (!label) continue;
+      const name = label.textContent.replace(/\s+/g, ' ').trim();
+      const kinds = [['input[type=text]', ': value typed'], ['select', ''], ['[role=slider]', ': slider']];
+      for (const [sel, what] of kinds) {
+        for (const c of row.querySelectorAll(sel)) if (c.getAttribute('aria-label') !== name + what) {
+          c.setAttribute('aria-label', name + what);
+        }
+      }
+    }
+    for (const c of p.querySelectorAll('.dr-case select, .dr-moves select, .dr-written select')) {
+      if (!c.getAttribute('aria-label')) c.setAttribute('aria-label', c.closest('.widget-dropdown')?.textContent.trim()
+                                                          .split('\n')[0] || 'choice');
+    }
+    const state = p.querySelector('.dr-state');
+    if (state && state.getAttribute('role') !== 'status') { state.setAttribute('role', 'status');
+                                                             state.setAttribute('aria-live', 'polite'); }
+    for (const tr of p.querySelectorAll('tr[data-force]:not([tabindex])')) {
+      tr.setAttribute('tabindex', '0'); tr.setAttribute('role', 'button');
+      tr.setAttribute('aria-label', 'force ' + tr.dataset.part);
+    }
+  }
   function show() {
     const p = panel(), r = results();
     if (!p || !r) return;
+    accessible(p);
     if (restoring !== false && restoring !== 'case') restore();
     const state = p.querySelector('.dr-state'), link = connection();
     const lost = restarted || (link !== null && link !== 'connected');
@@ -225,6 +257,10 @@ SCRIPT = r"""<script>
   }, true);
   document.addEventListener('input', e => {
     if (e.target.closest && e.target.closest('.design-review')) show();
+  }, true);
+  document.addEventListener('keydown', e => {
+    const tr = e.target.closest && e.target.closest('.design-review tr[data-force]');
+    if (tr && (e.key === 'Enter' || e.key === ' ')) { e.preventDefault(); type(tr.dataset.force, tr.dataset.part); }
   }, true);
   // A click on a candidate's row forces that part: its control is set as a reviewer would set it.
   document.addEventListener('click', e => {

@@ -24,6 +24,7 @@ from ..report.symbols import html as typeset
 STYLE = f"""<style>
 .dr {{ font-size: 13px; line-height: 1.35; color: #1a1a1a; }}
 .dr h3 {{ font-size: 14px; margin: 12px 0 4px; }}
+.dr .decides {{ font-size: 13px; margin: 0 0 6px; }}
 .dr .verdict {{ display: flex; align-items: baseline; gap: 12px; flex-wrap: wrap; margin-bottom: 4px; }}
 .dr .word {{ font-size: 22px; font-weight: 700; color: #fff; padding: 1px 12px; border-radius: 4px; }}
 .dr .pass {{ color: {PASS_COLOR}; font-weight: 600; }} .dr .fail {{ color: {FAIL_COLOR}; font-weight: 600; }}
@@ -93,6 +94,16 @@ def _governing(results) -> str:
     return "<h3>Governing checks</h3>" + table(header, rows, numeric={2, 3, 4})
 
 
+def _deciding_html(results) -> str:
+    """Under the verdict, in words: what decides the design, the most utilized governing check of each part
+    (:meth:`calc.sections.evaluation.Results.deciding`)."""
+    parts = []
+    for g, k in results.deciding() if results is not None else []:
+        who = g.section + (f" {escape(g.part)}" if g.part else "") + ("" if g.chosen else " (closest)")
+        parts.append(f"{who} by {typeset(k.criterion or k.name)} at {100 * k.utilization:.0f} %")
+    return f'<div class="decides">What decides the design: {"; ".join(parts)}.</div>' if parts else ""
+
+
 def _not_made_html(results) -> str:
     """Beside the verdict: how many checks were not made, and (a click away) which and why."""
     missing = results.not_made() if results is not None else []
@@ -148,7 +159,7 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused, 
     link = f' <a href="{escape(report_link)}" target="_blank">calc report</a>' if report_link else ""
     out = [STYLE, '<div class="dr">',
            f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}'
-           f"{_not_made_html(report.evaluated)}</div>"]
+           f"{_not_made_html(report.evaluated)}</div>", _deciding_html(report.evaluated)]
     if refused:
         out.append('<div class="refused"><b>Not applied</b> (the results are those of the values before): '
                    + "; ".join(typeset(x) for x in refused) + "</div>")

@@ -252,3 +252,49 @@ def _holds(pid: str, text: str) -> bool:
         return text.encode() in open(f"/proc/{pid}/cmdline", "rb").read()
     except OSError:
         return False
+
+
+def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(tmp_path):
+    # Finding 7: the line under the verdict names the most utilized governing check of each part: on the example the
+    # motor by λ = 9.443 of 10 (94 %), the coupling AKN-18 by its first mode (200 / 265.5 Hz, 75 %), the gearbox
+    # NPT035-10 by its hub (19 of 38 mm, 50 %); η (0.97) stands beside T_2max = 6.5 · 10 · 1.6 · 0.97 = 100.9 N·m.
+    # Finding 8: at 1024 px every verdict of the governing checks is on the screen.
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    with served(_copy(tmp_path)) as server, browser_page({"width": 1024, "height": 768}) as page:
+        _open(page, server.url)
+        decides = page.inner_text(f"{RESULTS} .decides")
+        assert decides.startswith("What decides the design: motor SGMUH-10DA by λ ≤ λmax at 94 %; coupling AKN-18 by")
+        assert "gearbox NPT035-10 by dmotor ≤ dhub,max at 50 %" in decides
+        assert "T2max 100.9 N·m (with η 0.97)" in page.inner_text(RESULTS)
+        cells = page.locator(f"{RESULTS} table").first.locator("tr td:last-child")
+        assert cells.count() >= 10
+        for k in range(cells.count()):
+            box = cells.nth(k).bounding_box()
+            assert box["x"] + box["width"] <= 1024, (k, box)
+        page.screenshot(path=str(SHOTS / "decides-1024.png"))
+
+
+def test_controls_have_accessible_names_a_live_state_and_keyboard_forcing(tmp_path):
+    # Finding 10: every field, slider and chooser named by its row's label; the state line a live region; a
+    # candidate's row forced from the keyboard: NPT025-10 (T_2B 90 N·m < T_2max 100.9 N·m) fails, as a click gives.
+    with served(_copy(tmp_path)) as server, browser_page() as page:
+        _open(page, server.url)
+        page.wait_for_timeout(700)
+        unnamed = page.evaluate("() => [...document.querySelectorAll('.design-review .dr-row input[type=text],"
+                                " .design-review .dr-row select, .design-review .dr-row [role=slider]')]"
+                                ".filter(c => !c.getAttribute('aria-label')).length")
+        assert unnamed == 0
+        assert row(page, "move[1].time").locator("input[type=text]").get_attribute("aria-label") == \
+            "1 move: time t [s]: value typed"
+        state = page.locator(".design-review .dr-state")
+        assert state.get_attribute("role") == "status" and state.get_attribute("aria-live") == "polite"
+        g = int(page.get_attribute(RESULTS, "data-generation"))
+        candidate = page.locator('.design-review tr[data-part="NPT025-10"]').first
+        assert candidate.get_attribute("tabindex") == "0"
+        candidate.focus()
+        page.keyboard.press("Enter")
+        wait_for_results(page, g)
+        _current(page)
+        assert page.inner_text(RESULTS).startswith("FAIL")
+        assert row(page, "gearbox.part").locator("select").evaluate("s => s.options[s.selectedIndex].text") == \
+            "NPT025-10"
