@@ -32,6 +32,7 @@ STYLE = """<style>
 .design-review .dr-idle { color: #666; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
 .design-review > .widget-vbox:last-child { overflow-x: auto; }  /* a wide table scrolls in its column, never cut */
 .design-review tr[data-force] { cursor: pointer; }
+.design-review .dr-print-head { display: none; }
 .design-review tr[data-force]:hover td { background: #eef3fb; }
 .design-review .dr-changed { color: #1f5fbf; border-left: 4px solid #1f5fbf; padding-left: 4px; margin-left: -8px; }
 @media (max-width: 1180px) {
@@ -58,6 +59,8 @@ STYLE = """<style>
   .design-review .dr table { font-size: 9px; } .design-review .dr td, .design-review .dr th { white-space: normal; }
   .design-review img { max-width: 100% !important; }
   .design-review .dr-keep, .design-review button { display: none !important; }
+  /* the title block: which case, when, by which version */
+  .design-review .dr-print-head { display: block !important; font-size: 9px; color: #333; margin: 0 0 4px; }
 }
 </style>"""
 

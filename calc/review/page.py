@@ -10,12 +10,15 @@ compares with the fields and writes into the page's address: ``data-inputs`` (ea
 
 from __future__ import annotations
 
+import functools
+
 import json
 import re
 from html import escape
 
 from ..core.units import pretty_unit
 from ..report.page import FAIL_COLOR
+from ..report.provenance import PACKAGE, build_date, git_commit, sha256
 from ..report.symbols import html as typeset
 from .inputs import InputSpec
 from .state import ReviewState, Screen
@@ -153,6 +156,36 @@ def with_variants(results: str, variants: Variants) -> str:
     return re.sub(r'data-variants="[^"]*" data-variants-asked="[^"]*"', variants_attribute(variants), results, count=1)
 
 
+@functools.cache
+def _commit() -> str:
+    """The package's commit, looked up once (a git call costs some 10 ms, too much for every change)."""
+    return git_commit()
+
+
+def print_head(state: ReviewState) -> str:
+    """The title block a printed page starts with (shown in print only): the case file and its
+    SHA-256, whether the screen changed it, when the results were computed, the package's version
+    and commit.
+
+    Parameters
+    ----------
+    state : calc.review.state.ReviewState
+        The state evaluated.
+
+    Returns
+    -------
+    str
+        HTML: one ``div`` of class ``dr-print-head``.
+    """
+    try:
+        digest = f" (sha256 {sha256(state.path)[:16]})"
+    except OSError:
+        digest = ""
+    changed = " with the changes marked on the page" if state.modified() else ""
+    return (f'<div class="dr-print-head">Design review of {escape(state.path.name)}{digest}{changed} · computed '
+            f"{build_date()} · {escape(PACKAGE)} · commit {escape(_commit())}</div>")
+
+
 def results_text(state: ReviewState, screen: Screen, link: str | None, generation: int, variants: Variants) -> str:
     """The results of ``screen`` (:func:`calc.review.view.results_html`: verdict and chosen parts
     first, then the governing checks), or its input error, with the state they were computed for
@@ -183,6 +216,7 @@ def results_text(state: ReviewState, screen: Screen, link: str | None, generatio
         text = results_html(screen.report, screen.left_out, link, typed_by_hand=screen.typed_by_hand,
                             shown=None if state.all_candidates else SHOWN_CANDIDATES, refused=refused,
                             system=state.units, ratios=screen.ratios)
+    text = text.replace('<div class="dr">', '<div class="dr">' + print_head(state), 1)
     attributes = (f'data-generation="{generation}" data-case="{escape(state.path.name)}" '
                   f'data-inputs="{escape(json.dumps(screen.texts))}" data-edits="{escape(json.dumps(screen.moves))}" '
                   f'data-units="{escape(state.units)}" data-file-units="{escape(state.file_units)}" '

@@ -190,6 +190,6 @@ class Variants:
         written.check_room(pdf.name)
         rows = comparison_rows(self.kept, units)
         comparison_pdf([f"variant {k}" for k in range(1, len(self.kept) + 1)], rows, worst_utilizations(self.kept), pdf,
-                       legend=[name for name, _ in self.kept])
+                       legend=[name for name, _ in self.kept], files=[r.path for _, r in self.kept])
         written.add(pdf.name)
         return pdf

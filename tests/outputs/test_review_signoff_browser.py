@@ -298,3 +298,36 @@ def test_controls_have_accessible_names_a_live_state_and_keyboard_forcing(tmp_pa
         assert page.inner_text(RESULTS).startswith("FAIL")
         assert row(page, "gearbox.part").locator("select").evaluate("s => s.options[s.selectedIndex].text") == \
             "NPT025-10"
+
+
+def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
+    # Finding 9: printed, the page starts with the case file (and its SHA-256), the date, the version and the commit;
+    # the variants PDF has the same title block, and its symbols typeset.
+    import hashlib
+    import subprocess
+
+    from calc import __version__
+
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    case = _copy(tmp_path)
+    digest = hashlib.sha256(case.read_bytes()).hexdigest()[:16]
+    with served(case, reports=tmp_path) as server, browser_page() as page:
+        _open(page, server.url)
+        page.emulate_media(media="print")
+        page.pdf(path=str(tmp_path / "printed.pdf"), format="A4", print_background=True)
+        page.emulate_media(media="screen")
+        printed = subprocess.run(["pdftotext", "-layout", str(tmp_path / "printed.pdf"), "-"], capture_output=True,
+                                 text=True).stdout
+        assert f"Design review of axis.toml (sha256 {digest})" in printed and f"calc {__version__}" in printed
+        assert "commit" in printed and "Governing checks" in printed
+        assert "Design review of axis.toml" not in page.inner_text(RESULTS)  # on the screen, not shown
+        page.locator(".design-review button", has_text="Keep as variant").click()
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('kept variant 1')")
+        page.locator(".design-review button", has_text="Variants as PDF").click()
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('as a PDF')")
+        pdf = tmp_path / "axis-variants-1.pdf"
+        text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True).stdout
+        assert f"calc {__version__}" in text and f"axis.toml sha256 {digest}" in text and "commit" in text
+        assert "T_2max" not in text and "2max" in text  # typeset: T with the subscript 2max
+        subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "1", str(pdf), str(SHOTS / "variants-pdf")],
+                       check=True)
