@@ -231,7 +231,8 @@ class CaseFiles:
         from ..report.publish import summary_rows
 
         path = Path(path)
-        self.choices = sorted({*Path(folder or path.parent).glob("*.toml"), path})
+        self.cases = Path(folder or path.parent)
+        self.choices = sorted({*self.cases.glob("*.toml"), path})
         self.labels = {p: p.name for p in self.choices}
         self.reports: dict = {}  # case file -> the path of its report
         self.folder, self.report_link = reports, report_link
@@ -274,6 +275,28 @@ class CaseFiles:
         None
         """
         self.labels[path] = path.name
+
+    def look_again(self, shown: Path) -> bool:
+        """The folder's case files as they are now: one saved since (from another page) offered,
+        one removed no longer offered (the case shown stays).
+
+        Parameters
+        ----------
+        shown : pathlib.Path
+            The case shown.
+
+        Returns
+        -------
+        bool
+            Whether the files offered changed.
+        """
+        now = {*self.cases.glob("*.toml"), shown}
+        new, gone = now - set(self.labels), set(self.labels) - now
+        for p in new:
+            self.labels[p] = p.name
+        for p in gone:
+            del self.labels[p]
+        return bool(new or gone)
 
     def options(self, shown: Path | None = None, label: str | None = None) -> list[tuple]:
         """The chooser's options: the case files with their labels.

@@ -70,9 +70,12 @@ class DesignReview:
     reports : str or pathlib.Path, optional
         The folder of the calc reports (:class:`calc.review.keep.CaseFiles`): the case chooser
         shows each case's verdict as its file reads, and the screen's once an input is changed.
+    watch : float, optional
+        Every this many seconds, the chooser looks at the folder again (:meth:`look_again`), so an
+        open page offers the case files saved since (from another page too); None: only at each change.
     """
 
-    def __init__(self, case_path, report_link=None, cases=None, reports=None):
+    def __init__(self, case_path, report_link=None, cases=None, reports=None, watch: float | None = None):
         import ipywidgets as w
 
         self.files = CaseFiles(case_path, cases, reports, report_link)
@@ -84,6 +87,14 @@ class DesignReview:
         self.generation = 0  # counts the updates drawn (the page carries it, for tests and timing)
         _build_widgets(self, w, Path(case_path))
         self.load()
+        if watch:
+            threading.Thread(target=self._watch, args=(watch,), daemon=True).start()
+
+    def _watch(self, seconds: float) -> None:
+        """Look at the folder again every ``seconds``, for as long as the kernel runs."""
+        stop = threading.Event()
+        while not stop.wait(seconds):
+            self.look_again()
 
     @property
     def controls(self) -> dict:
@@ -453,11 +464,24 @@ class DesignReview:
         """The chooser's entry of the case shown gives the screen's verdict, not the file's, once
         an input is changed."""
         path = self.state.path
+        self.files.look_again(path)  # case files saved since, from another page too
         if path in self.files.labels:
             options = [(self.files.label(path, word, changed) if p == path else self.files.labels[p], p)
-                       for _, p in self.case_file.options]
+                       for p in sorted(self.files.labels)]
             if options != list(self.case_file.options):
                 self._relabel(options)
+
+    def look_again(self) -> None:
+        """The chooser offers the case files of the folder as they are now
+        (:meth:`calc.review.keep.CaseFiles.look_again`), the case shown keeping its label.
+
+        Returns
+        -------
+        None
+        """
+        if self.files.look_again(self.state.path):
+            shown = dict((p, label) for label, p in self.case_file.options)
+            self._relabel([(shown.get(p, self.files.labels[p]), p) for p in sorted(self.files.labels)])
 
     def _relabel(self, options: list) -> None:
         """New options for the chooser, the case shown staying chosen (and not read again)."""

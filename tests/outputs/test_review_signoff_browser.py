@@ -331,3 +331,15 @@ def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
         assert "T_2max" not in text and "2max" in text  # typeset: T with the subscript 2max
         subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "1", str(pdf), str(SHOTS / "variants-pdf")],
                        check=True)
+
+
+def test_an_open_page_offers_the_case_files_saved_since(tmp_path):
+    # Finding 11: a case file saved from another page (or put in the folder) is offered by a page already open.
+    case = _copy(tmp_path)
+    with served(case) as server, browser_page() as first:
+        _open(first, server.url)
+        chooser = first.locator(".design-review .dr-case select")
+        assert "axis-variant-1.toml" not in chooser.inner_text()
+        (tmp_path / "axis-variant-1.toml").write_text(case.read_text().replace('"1500 kg*cm**2"', '"1600 kg*cm**2"'))
+        first.wait_for_function("() => document.querySelector('.design-review .dr-case select')"
+                                ".innerText.includes('axis-variant-1.toml')", timeout=30_000)
