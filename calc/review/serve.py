@@ -5,7 +5,8 @@ runs Voilà on ``design-review.ipynb`` beside this file: the panel and nothing e
 other notebook is served). The page opens the case ``NAME`` of the folder ``DIR`` (default
 ``cases/``, the example); the panel offers the folder's other case files, and no other path. A
 kernel whose page was closed is shut down within ``M`` minutes and 15 s (:data:`IDLE_MINUTES`, 45 s: within
-a minute; the kernel waiting for the next page is started again as often, some 3 s of one core). The address
+a minute; the kernel waiting for the next page is culled and started again as often while no page is
+open). The address
 is this machine's only (127.0.0.1) unless ``--ip`` says otherwise (docs/user-guide.md, "Design review":
 sharing it on a network).
 
