@@ -85,6 +85,7 @@ class DesignReview:
         self._relabelling = False  # the chooser's options being rewritten, not a case chosen
         self.drawing = Drawing(lambda: self.refresh(), self._busy)  # refresh looked up at each drawing
         self.generation = 0  # counts the updates drawn (the page carries it, for tests and timing)
+        self._download_text: str | None = None  # the changed case file the download link offers
         _build_widgets(self, w, Path(case_path))
         self.load()
         if watch:
@@ -455,7 +456,9 @@ class DesignReview:
         self.undo_button.disabled, self.redo_button.disabled = not history.can_undo, not history.can_redo
 
     def _offer_download(self, text: str | None) -> None:
-        """The case file as changed (``text``, as *Save as case file* writes it), as a link to download."""
+        """The case file as changed (``text``, as *Save as case file* writes it), as a link to download
+        under the name in the save field (drawn again when that name changes)."""
+        self._download_text = text
         self.download.value = "" if text is None or self.state.refused else (
             f'<a download="{escape(self.save_name.value)}" href="data:application/toml;charset=utf-8,{quote(text)}">'
             "Download the case file</a>")
@@ -840,6 +843,7 @@ def _keep(p: DesignReview, w):
     variants compared, the calc report of the screen."""
     p.save_name = w.Text(placeholder="new-case.toml", tooltip="the new case file's name, in the folder of the case",
                          layout=_grows(w))
+    p.save_name.observe(lambda _: p._offer_download(p._download_text), names="value")  # the download's name follows
     save = _button(w, "Save as case file", "write the changed values into a new case file beside this one", "11em",
                    p.save)
     variant = _button(w, "Keep as variant", "pin the design on the screen beside the others", "11em", p.keep_variant)

@@ -537,6 +537,8 @@ def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_pa
     assert evaluate(read_case(saved))["cyclic"] == evaluate(panel.state.shown.case)["cyclic"]
     assert saved in [p for _, p in panel.case_file.options]
     assert 'download="indexing-table-variant-1.toml"' in panel.download.value
+    panel.save_name.value = "axis-3-reviewed.toml"  # the download's name follows the save field at once
+    assert 'download="axis-3-reviewed.toml"' in panel.download.value
 
 
 def test_undo_and_redo_step_through_the_changes():
