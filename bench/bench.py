@@ -91,7 +91,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from review_browser import CHROMIUM, first_load, new_values, review_in_browser, reviewers_at_once, served  # beside this file
+from review_browser import (  # beside this file
+    CHROMIUM, first_load, new_values, review_in_browser, reviewers_at_once, served,
+)
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = ROOT / "cases" / "indexing-table.toml"
@@ -657,7 +659,7 @@ def sweep_api(q: dict):
     from calc.domain.profile import ED, Z_h
 
     ed = ED(t_on=q["t_on"], t_cycle=q["t_cycle"])
-    f_s = shock_factor(Z_h(t_cycle=q["t_cycle"]))
+    f_s = shock_factor(Z_h(z_c=Q_(1, ""), t_cycle=q["t_cycle"]))  # one move per cycle (E16)
     t_2max = T_2max(T_1B=q["T_1B"], i=q["i"], f_s=Q_(f_s, ""), eta=q["eta"])
     n_1max = n_1(n_2=q["n_2max"], i=q["i"])
     torque = CheckArray("T_2B", "S5", "T_2max <= T_2B", t_2max, q["T_2B"], "N*m")
