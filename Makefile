@@ -3,6 +3,9 @@
 # make bench   set up what is missing, then print the benchmark
 # make review  set up what is missing, then serve the design review on http://localhost:8866/
 # make book    set up what is missing, then build the course as a static website in build/book/
+# make student   what students receive (build/student/): the workbook without the answers, the book, each
+#                student's brief and checkpoint notebook (ROSTER=course/roster.csv SEED=2026)
+# make lecturer  what the lecturer keeps (build/lecturer/): the book with the answers, the autograder, the keys
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
@@ -10,7 +13,7 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed-$(shell cat environment.txt pyproject.toml | sha256sum | cut -c1-12)
 EXAMPLE := cases/indexing-table.toml
 
-.PHONY: setup tex browser test report bench review notebooks book clean
+.PHONY: setup tex browser test report bench review notebooks book student lecturer clean
 
 setup: $(STAMP)
 
@@ -80,6 +83,16 @@ review: setup
 book: setup
 	$(PY) -m sphinx -q -W --keep-going -c book . build/book
 	@echo "the book: build/book/index.html"
+
+# The course handed out and kept apart: each student's brief is drawn from the roster's name and the
+# course's seed, which the lecturer's autograder draws again (docs/course.md, "Handing out the course").
+ROSTER ?= course/roster.csv
+SEED ?= 2026
+student: setup
+	$(PY) -m calc.course student --roster $(ROSTER) --seed $(SEED) -o build/student
+
+lecturer: setup
+	$(PY) -m calc.course lecturer --roster $(ROSTER) --seed $(SEED) -o build/lecturer
 
 # Re-execute every notebook in place (after a change to calc/), so nbval has true outputs to compare.
 # No execution times are recorded, so a re-run changes only what the calculation changed; no widget

@@ -248,3 +248,66 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
             return visit
         finally:
             browser.close()
+
+
+@dataclass
+class Crowd:
+    """What several reviewers at once measured and saw."""
+
+    times: list = field(default_factory=list)  # s from each page's input to its new results, every round
+    texts: list = field(default_factory=list)  # each page's results after the last round
+    memory: float = 0.0  # MB resident per page: the server's kernels over the pages
+
+    @property
+    def median(self) -> float:
+        return statistics.median(self.times)
+
+
+def kernels_memory(server: Server) -> float:
+    """The resident memory of the server's kernels together [MB]."""
+    import psutil
+
+    children = psutil.Process(server.process.pid).children(recursive=True)
+    return sum(p.memory_info().rss for p in children if "ipykernel" in " ".join(p.cmdline())) / 2**20
+
+
+def reviewers_at_once(server: Server, key: str, rounds: list[list[str]], settle: float = 3.0) -> Crowd:
+    """One page per value of a round, opened together; in each round every page gets its own value of
+    ``key`` at the same time (typed into each page in turn, a few milliseconds apart), and each page
+    is timed from its own input until its results follow (all pages watched together)."""
+    from playwright.sync_api import sync_playwright
+
+    crowd = Crowd()
+    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
+        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
+                                                        args=CHROMIUM_ARGS, viewport=SCREEN)
+        try:
+            pages = [browser.new_page() for _ in rounds[0]]
+            for page in pages:
+                page.goto(server.url)
+            for page in pages:
+                page.wait_for_selector(RESULTS, timeout=180_000)
+            pages[0].wait_for_timeout(settle * 1000)
+            for values in rounds:
+                before = [_generation(page) for page in pages]
+                started = []
+                for page, value in zip(pages, values):
+                    started.append(time.perf_counter())
+                    change(page, key, value)
+                waiting = set(range(len(pages)))
+                deadline = time.perf_counter() + 120
+                while waiting and time.perf_counter() < deadline:
+                    for k in sorted(waiting):
+                        if _generation(pages[k]) > before[k]:
+                            crowd.times.append(time.perf_counter() - started[k])
+                            waiting.discard(k)
+                if waiting:
+                    raise RuntimeError(f"no results within 120 s on pages {sorted(waiting)}")
+            for page in pages:
+                page.wait_for_function("() => document.querySelector('.design-review .dr-state')?.dataset.state"
+                                       " === 'current'", timeout=60_000)
+            crowd.texts = [page.inner_text(RESULTS) for page in pages]
+            crowd.memory = kernels_memory(server) / len(pages)
+            return crowd
+        finally:
+            browser.close()

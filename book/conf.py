@@ -7,9 +7,12 @@ Build: ``make book`` (``sphinx-build -c book . build/book``); open ``build/book/
 project = "Servo drive-train workbook"
 author = "the workbook's authors"
 extensions = ["myst_nb", "sphinx-mathjax-offline"]  # the second copies MathJax into _static/
-root_doc = "book/index"
-# The students' notebooks and the book's front page; the lecturer's notebook (notebooks/instructor/) stays out.
-include_patterns = ["book/index.md", "notebooks/*.ipynb", "notebooks/figures/*"]
+# The students' book: its pages and the notebooks. The lecturer's (``-t lecturer``, make lecturer) adds
+# the worked answers (notebooks/instructor/) and the grading notes under a front page of its own.
+LECTURER = tags.has("lecturer")  # noqa: F821 (Sphinx gives conf.py its tags)
+root_doc = "book/lecturer" if LECTURER else "book/index"
+include_patterns = ["book/index.md", "book/course/*.md", "notebooks/*.ipynb", "notebooks/figures/*"]
+include_patterns += ["book/lecturer*.md", "notebooks/instructor/*.ipynb"] if LECTURER else []
 exclude_patterns = ["**/.ipynb_checkpoints", ".venv", "build"]
 nb_execution_mode = "off"  # the stored outputs, which nbval keeps true
 myst_enable_extensions = ["dollarmath", "amsmath"]

@@ -3,7 +3,10 @@ and the record of which error messages of the package the tests trigger."""
 
 import fnmatch
 import json
+import os
+import shutil
 import sys
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -149,6 +152,7 @@ def report_run(tmp_path_factory):
 TESTS = Path(__file__).resolve().parent
 FINAL = TESTS / "test_error_sites.py"
 _OWN_INIT = pytest.StashKey()
+_OWN_CACHE = pytest.StashKey()
 
 
 class ErrorRecord:
@@ -156,13 +160,80 @@ class ErrorRecord:
     and whether this session selected the whole tests/ folder (if not, ``reason`` says why)."""
 
     built: set[tuple[str, int]] = set()
+    longest: dict[tuple[str, int], str] = {}  # the longest message each site built
     deselected: int = 0
     whole_folder: bool = False
     reason: str = ""
     item = None  # the test under tests/ being run, or None
 
 
+#: Set by .ci/run: a test that needs a tool this machine lacks fails instead of being skipped, so a
+#: CI machine without XeLaTeX or Chromium cannot pass by skipping.
+REQUIRE_TOOLS = "CALC_REQUIRE_TOOLS"
+
+#: The tools tests need beside Python, each looked up on PATH, and how to get them.
+TOOLS = {"xelatex": "make tex", "pandoc": "make tex", "pdftotext": "make tex", "pdftoppm": "make tex",
+         "chromium": "make browser"}
+
+
+def missing_tools(*names: str) -> list[str]:
+    """Those of ``names`` (keys of :data:`TOOLS`) that are not on PATH."""
+    return [n for n in names if shutil.which(n) is None]
+
+
+def tools_required() -> bool:
+    """Whether a missing tool fails a test (``CALC_REQUIRE_TOOLS=1``, as ``.ci/run`` sets it)."""
+    return os.environ.get(REQUIRE_TOOLS) == "1"
+
+
+def needs_tools(*names: str):
+    """The mark of a test that needs these tools: skipped where one is missing, failed instead under
+    ``CALC_REQUIRE_TOOLS=1`` (:func:`pytest_runtest_setup`)."""
+    unknown = [n for n in names if n not in TOOLS]
+    assert not unknown, f"no such tool in TOOLS: {unknown}"
+    return pytest.mark.needs_tools(*names)
+
+
+def has_tool(name: str) -> bool:
+    """Whether a tool a part of a test uses is on PATH; under ``CALC_REQUIRE_TOOLS=1`` a missing one
+    fails the test."""
+    if missing_tools(name) and tools_required():
+        pytest.fail(f"{name} is not on PATH ({TOOLS[name]} installs it), and {REQUIRE_TOOLS}=1 refuses the skip",
+                    pytrace=False)
+    return not missing_tools(name)
+
+
+class ToolSkips:
+    """The tests skipped for want of a tool in this session, by tool."""
+
+    by_tool: dict[str, int] = {}
+
+
+def pytest_runtest_setup(item):
+    names = [n for mark in item.iter_markers("needs_tools") for n in mark.args]
+    missing = missing_tools(*names)
+    if not missing:
+        return
+    what = f"needs {', '.join(missing)}, not on PATH ({', '.join(sorted({TOOLS[n] for n in missing}))} installs it)"
+    if tools_required():
+        pytest.fail(f"{what}; {REQUIRE_TOOLS}=1 refuses the skip", pytrace=False)
+    for n in missing:
+        ToolSkips.by_tool[n] = ToolSkips.by_tool.get(n, 0) + 1
+    pytest.skip(what)
+
+
+def pytest_terminal_summary(terminalreporter):
+    if ToolSkips.by_tool:
+        counts = ", ".join(f"{n} {k} tests" for n, k in sorted(ToolSkips.by_tool.items()))
+        terminalreporter.write_line(f"skipped for want of a tool: {counts}; .ci/run ({REQUIRE_TOOLS}=1) fails on them",
+                                    yellow=True)
+
+
 def pytest_configure(config):
+    # Parsed catalogs (calc.data.parsed) kept for this session only, not in the user's cache.
+    if "CALC_CACHE_DIR" not in os.environ:
+        config.stash[_OWN_CACHE] = os.environ["CALC_CACHE_DIR"] = tempfile.mkdtemp(prefix="calc-cache-")
+    config.addinivalue_line("markers", "needs_tools(*names): the test needs these tools on PATH (TOOLS)")
     from calc.core.errors import CalcError
 
     config.stash[_OWN_INIT] = CalcError.__dict__.get("__init__")
@@ -173,13 +244,20 @@ def pytest_configure(config):
             frame = sys._getframe(1)  # the frame that called CalcError(...)
             path = Path(frame.f_code.co_filename).resolve()
             if path.is_relative_to(ROOT / "calc"):
-                ErrorRecord.built.add((path.relative_to(ROOT).as_posix(), frame.f_lineno))
+                site = (path.relative_to(ROOT).as_posix(), frame.f_lineno)
+                ErrorRecord.built.add(site)
+                message = str(args[0]) if args else ""
+                if len(message) > len(ErrorRecord.longest.get(site, "")):
+                    ErrorRecord.longest[site] = message
         inherited(self, *args, **kwargs)
 
     CalcError.__init__ = __init__
 
 
 def pytest_unconfigure(config):
+    if _OWN_CACHE in config.stash:
+        shutil.rmtree(config.stash[_OWN_CACHE], ignore_errors=True)
+        del os.environ["CALC_CACHE_DIR"]
     from calc.core.errors import CalcError
 
     if _OWN_INIT not in config.stash:

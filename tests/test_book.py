@@ -16,33 +16,48 @@ import pytest
 
 from bench.review_browser import CHROMIUM, CHROMIUM_ARGS
 
-from .conftest import ROOT
+from .conftest import ROOT, needs_tools
 
-pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason=f"no Chromium at {CHROMIUM} (make browser installs it)")
+pytestmark = needs_tools("chromium")
 
 RAW_TEX = re.compile(r"\$\\?[A-Za-z][^$\n]*\$")  # $T_{2m}$ or $\\mathrm{ED}$ left as typed
 NOTEBOOKS = sorted(p.stem for p in (ROOT / "notebooks").glob("*.ipynb"))
 
 
-@pytest.fixture(scope="module")
-def book(tmp_path_factory):
-    out = tmp_path_factory.mktemp("book")
+@pytest.fixture(scope="module", params=["students", "lecturer"])
+def book(request, tmp_path_factory):
+    """The students' book (make book, make student) or the lecturer's (make lecturer: ``-t lecturer``)."""
+    out = tmp_path_factory.mktemp(request.param)
+    tags = ["-t", "lecturer"] if request.param == "lecturer" else []
     start = time.perf_counter()
-    run = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-W", "--keep-going", "-c", "book", ".", str(out)],
-                         cwd=ROOT, capture_output=True, text=True)
+    run = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-W", "--keep-going", *tags, "-c", "book", ".",
+                          str(out)], cwd=ROOT, capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     pages = sorted(out.glob("notebooks/*.html")) + [out / "book" / "index.html"]
-    print(f"\nbook: built in {time.perf_counter() - start:.1f} s, {len(pages)} pages")
+    pages += sorted(out.glob("book/course/*.html"))  # the course frame, the primer, the licence
+    pages += sorted(out.glob("notebooks/instructor/*.html")) + sorted(out.glob("book/lecturer*.html"))
+    print(f"\n{request.param}' book: built in {time.perf_counter() - start:.1f} s, {len(pages)} pages")
     return out, pages
 
 
-def test_every_students_notebook_is_a_page_and_the_lecturers_is_not(book):
+def test_every_students_notebook_is_a_page_and_the_lecturers_only_in_the_lecturers_book(book):
     out, pages = book
     assert sorted(p.stem for p in pages if p.parent.name == "notebooks") == NOTEBOOKS
-    assert not list(out.rglob("*99-answers*"))
+    lecturers = {p.relative_to(out).as_posix() for p in pages} & {
+        "notebooks/instructor/99-answers.html", "book/lecturer.html", "book/lecturer-grading.html"}
+    if out.name.startswith("students"):
+        assert not list(out.rglob("*99-answers*")) and not list(out.rglob("*lecturer*"))
+    else:
+        assert len(lecturers) == 3
+    assert {p.stem for p in pages if p.parent.name == "course"} == {"frame", "primer", "licence"}
     front = (out / "book" / "index.html").read_text()
     assert all(f"{name}.html" in front for name in NOTEBOOKS)  # the table of contents links each
     assert 'url=book/index.html' in (out / "index.html").read_text()  # the address make book names leads there
+    # Every figure says what it shows to a reader who cannot see it (the cells' mystnb alt text), not its file name.
+    for page in pages:
+        for img in re.findall(r"<img\b[^>]*>", page.read_text()):
+            alt = re.search(r'\balt="([^"]*)"', img)
+            assert alt and len(alt.group(1).split()) >= 8 and not alt.group(1).endswith(".png"), (page.name, img[:200])
 
 
 def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(book):

@@ -31,10 +31,12 @@ OBVIOUS = {
 #: Values that stand in two modules as different quantities that happen to agree: each module owns
 #: its own, and another module writing the value must say which it means.
 APART = {
-    0.02: ({"domain/hysteresis", "domain/motion"},
-           "a model loop's friction, 2 % of T_N; the shortest run of a motion, 2 % of its samples"),
-    0.1: ({"domain/motion", "domain/motor_ratings"},
-          "a speed ramp's share of a move; the share of the thermal time constant a cycle may take"),
+    0.02: ({"domain/dynamics", "domain/hysteresis", "domain/motion"},
+           "the damping ratio of a drive train's first mode in its frequency response; a model loop's friction, "
+           "2 % of T_N; the shortest run of a motion, 2 % of its samples"),
+    0.1: ({"domain/motion", "domain/motor_ratings", "sections/dynamics"},
+          "a speed ramp's share of a move; the share of the thermal time constant a cycle may take; where the "
+          "frequency response's figure starts, as a share of the lowest anti-resonance"),
     0.25: ({"domain/hysteresis", "domain/transmission"},
            "the largest shape factor of a model loop; a harmonic of a generated trace"),
     10: ({"domain/gearbox", "domain/hysteresis", "domain/transmission"},

@@ -9,7 +9,9 @@ import textwrap
 
 import pytest
 
-from .conftest import ErrorRecord
+from calc.core.errors import LISTED, MAX_LENGTH, CalcError, listing
+
+from .conftest import DERIVED_EXAMPLE, ROOT, ErrorRecord
 from .error_sites import error_sites, site_at
 
 #: Sites that no input reaches, by file, function and message start (so that moved lines keep
@@ -55,6 +57,63 @@ def test_every_error_site_is_triggered():
             f"{len(untested)} of {len(sites)} error messages no test under tests/ triggers:\n" + "\n".join(untested),
             pytrace=False,
         )
+
+
+def test_every_error_is_one_short_sentence():
+    # Every message that the whole tests/ folder made the package build, at its longest: at most
+    # MAX_LENGTH characters (the temporary folders of the tests' files included).
+    if not ErrorRecord.whole_folder:
+        pytest.skip(f"needs the whole tests/ folder: {ErrorRecord.reason}")
+    sites = error_sites()
+    exempt = {site for site in sites for entry in NOT_FROM_INPUT if _is(site, entry)}
+    long = [f"{file}:{line} ({len(message)} characters): {message[:120]}…"
+            for (file, line), message in sorted(ErrorRecord.longest.items())
+            if len(message) > MAX_LENGTH and site_at(sites, file, line) not in exempt]
+    if long:
+        pytest.fail(f"{len(long)} error messages are longer than {MAX_LENGTH} characters:\n" + "\n".join(long),
+                    pytrace=False)
+
+
+def test_a_list_in_an_error_names_ten_items_and_counts_the_rest(write_case, tmp_path):
+    from calc.sections.case import read_case
+    from calc.sections import evaluate
+
+    # A gearbox catalog of 500 families (one row each, the shipped NPT035-10's figures), and a case
+    # that keeps to a family it lacks: the message names ten families and the count of the other 490.
+    shipped = (ROOT / "catalogs" / "gearboxes.csv").read_text(encoding="utf-8").splitlines()
+    header, row = shipped[0], next(line for line in shipped if line.startswith("NPT035-10,"))
+    family = header.split(",").index("family")
+    rows = []
+    for k in range(500):
+        cells = row.split(",")
+        cells[0], cells[family] = f"G{k:03d}-10", f"F{k:03d}"
+        rows.append(",".join(cells))
+    (tmp_path / "many.csv").write_text("\n".join([header, *rows]) + "\n", encoding="utf-8")
+    text = DERIVED_EXAMPLE.read_text(encoding="utf-8").replace('"../data/', f'"{ROOT / "data"}/')
+    text = text.replace('catalog = "gearboxes"', f'catalog = "{tmp_path / "many.csv"}"').replace(
+        'family = "NPT"', 'family = "XYZ"')
+    with pytest.raises(CalcError) as raised:
+        evaluate(read_case(write_case(text, "many.toml")))
+    message = str(raised.value)
+    assert "has no gearbox of family 'XYZ'; its families are F000, F001, F002" in message
+    assert message.endswith(f"F009 and {500 - LISTED} more") and len(message) <= MAX_LENGTH
+
+
+def test_a_value_as_found_is_shown_clipped(write_case):
+    from calc.sections.case import read_case
+
+    # A ratio typed as 5,000 characters of text: the message shows its start and counts the rest.
+    text = DERIVED_EXAMPLE.read_text(encoding="utf-8").replace("\nratio = 10\n", f'\nratio = "{"1" * 5000}"\n')
+    with pytest.raises(CalcError, match=r"gearbox\.ratio: .*'1111.*… \(4946 more characters\)") as raised:
+        read_case(write_case(text, "long.toml"))
+    assert len(str(raised.value)) <= MAX_LENGTH
+
+
+def test_a_list_of_ten_or_fewer_is_named_whole():
+    assert listing(["a", "b"]) == "a, b" and listing([]) == ""
+    assert listing(range(LISTED)) == ", ".join(map(str, range(LISTED)))
+    assert listing(range(LISTED + 1)) == ", ".join(map(str, range(LISTED))) + " and 1 more"
+    assert listing(["x", "y", "z"], " -> ", limit=2) == "x -> y and 1 more"
 
 
 def test_the_scan_finds_every_construction(tmp_path):

@@ -13,7 +13,7 @@ CALC = Path(__file__).resolve().parent.parent / "calc"
 #: The layers, lowest first: the subpackages of calc (the outputs are the report, the review and
 #: the command line).
 LAYERS = ("core", "data", "domain", "figures", "sections", "outputs")
-OUTPUTS = ("report", "review", "exchange", "__main__", "__init__")
+OUTPUTS = ("report", "review", "exchange", "course", "__main__", "__init__")
 RANK = {layer: k for k, layer in enumerate(LAYERS)}
 
 

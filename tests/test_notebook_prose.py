@@ -9,7 +9,11 @@ In the course's notebooks, whose prose explains a figure or a table above or bel
 must appear among the outputs or code literals of any code cell of the notebook; the names of
 standards (ISO 286) and of files are not numbers, and the exercises and self-checks pose
 hypothetical values (their answers are checked above). A figure quoted from a source, not computed,
-is listed in ``QUOTED`` with where it comes from."""
+is listed in ``QUOTED`` with where it comes from.
+
+Code quotes other notebooks too: a code line whose comment or text names a notebook ("notebook 06's
+mean output speed"), and an output line that names one, may state only numbers that notebook prints
+or states, so a figure copied from an earlier version of another notebook cannot stay behind."""
 
 import json
 import re
@@ -41,14 +45,17 @@ QUOTED = {
         "31",
     ): "the generated trace's tooth mesh, 31 per input turn (data/transmission-NPT035-10-generated.csv)",
     ("11-transmission-and-positioning-accuracy.ipynb", "310"): "the same mesh per output turn, 31 · 10",
+    ("00-index.ipynb", "12"): "how a reader types a quantity, Q_(12, 'N*m'), an example of input",
+    ("00-index.ipynb", "106"): "how a reader types a torque in inch-pound units, an example of input",
+    ("00-index.ipynb", "300"): "the trap of angles (E15): 300 rpm, an example of input",
 }
 NAMES = re.compile(r"\b(?:ISO|IEC|DIN)\s[\d-]+|[\w/.-]+\.(?:ipynb|toml|csv|py|png)\b")  # standards and files
 POSED = re.compile(r"^## (?:Exercises|Self-check)", re.MULTILINE)  # questions: hypothetical values
 NUMBER = re.compile(r"(?<![\w.])(?<!\w-)\d+(?:[ ,]\d{3})*(?:\.\d+)?")
 NOTEBOOKS_NAMED = r"\b[Nn]otebooks?\s+\d\d(?:(?:,\s*|\s+(?:and|to|or)\s+)\d\d)*\b"  # "notebooks 01 to 12"
 NOT_PROSE = re.compile(
-    rf"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s|{NOTEBOOKS_NAMED}", re.MULTILINE
-)  # headings, link targets, errata, "02 · ", notebooks named by number
+    rf"^#.*$|\]\([^)]*\)|\bE\d+\b|\b\d+[a-z]?\s*·\s|{NOTEBOOKS_NAMED}|^\|\s*\d\d\s*\|", re.MULTILINE
+)  # headings, link targets, errata, "02 · ", notebooks named by number, a table's row of a notebook
 
 
 def text(value) -> str:
@@ -107,6 +114,53 @@ def unfounded_anywhere(notebook: dict, name: str) -> list[str]:
         found += [f"cell {k}: {n} is quoted but printed nowhere" for n in quoted(NAMES.sub(" ", source))
                   if not matches(n, everywhere) and (name, n) not in QUOTED]
     return found
+
+
+NAMED = re.compile(r"\bnotebooks?\s+(\d\d)\b")  # a notebook named in a comment, a text or an output
+FORMAT = re.compile(r"\{[^{}]*\}")  # an f-string's replacement field: an expression, not a quoted number
+
+
+def quoted_across(notebook: dict, notebooks: dict) -> list[str]:
+    """Each number of a code line or an output line that names another notebook which that notebook
+    neither prints nor states.
+
+    ``notebooks`` maps a notebook's number (``"06"``) to the notebook, as read from its JSON."""
+    found = []
+    for k, cell in enumerate(notebook["cells"]):
+        if cell["cell_type"] != "code":
+            continue
+        shown = [text(out.get("text", "")) for out in cell.get("outputs", [])]
+        shown += [text(v) for out in cell.get("outputs", []) for m, v in out.get("data", {}).items()
+                  if m == "text/plain"]
+        for line in [*text(cell["source"]).splitlines(), *"\n".join(shown).splitlines()]:
+            for number in sorted(set(NAMED.findall(line))):
+                if number not in notebooks:
+                    continue
+                there = [v for c in notebooks[number]["cells"] if c["cell_type"] == "code" for v in stated(c)]
+                found += [f"cell {k}: {n} is quoted from notebook {number}, which prints it nowhere"
+                          for n in quoted(re.sub(NOTEBOOKS_NAMED, " ", FORMAT.sub(" ", line))) if not matches(n, there)]
+    return found
+
+
+@pytest.mark.parametrize("path", COURSE + CHECKED)
+def test_every_number_code_quotes_from_another_notebook_is_printed_there(path):
+    notebooks = {p.name[:2]: json.loads(p.read_text()) for p in (ROOT / "notebooks").glob("[0-9][0-9]-*.ipynb")}
+    problems = quoted_across(json.loads((ROOT / path).read_text()), notebooks)
+    assert not problems, problems
+
+
+def test_the_check_finds_a_figure_code_quotes_from_an_older_notebook():
+    printed = [{"text": "n_2m = 30 rpm, f_e = 1069.4 Hz"}]
+    there = {"cells": [{"cell_type": "code", "source": "n_2m", "outputs": printed}]}
+    code = {"cell_type": "code", "source": 'n_2m = Q_(30, "rpm")  # notebook 06\'s mean output speed',
+            "outputs": [{"text": "as read, f_e = 1069.4 Hz (notebook 06)\nat {n:.1f} rpm"}]}
+    assert quoted_across({"cells": [code]}, {"06": there}) == []
+    code["source"] = 'n_2m = Q_(240, "rpm")  # notebook 06\'s mean output speed'
+    code["outputs"][0]["text"] = "as read, f_e = 1316.4 Hz (notebook 06)"
+    assert quoted_across({"cells": [code]}, {"06": there}) == [
+        "cell 0: 240 is quoted from notebook 06, which prints it nowhere",
+        "cell 0: 1316.4 is quoted from notebook 06, which prints it nowhere",
+    ]
 
 
 @pytest.mark.parametrize("path", COURSE)

@@ -18,7 +18,7 @@ import re
 from dataclasses import dataclass
 from typing import Iterator
 
-from .errors import CalcError
+from .errors import CalcError, listing, as_found
 from .glossary import SYMBOLS
 
 #: Where a validity stands in its citation's sentence: after the place, as the condition that selects
@@ -70,9 +70,9 @@ class Document:
     def __post_init__(self):
         for key in ("name", "title", "publisher"):
             if not getattr(self, key).strip():
-                raise CalcError(f"document {self.name or self.title!r}: expected a {key}, found none")
+                raise CalcError(f"document {as_found(self.name or self.title)}: expected a {key}, found none")
         if self.url and not _URL.fullmatch(self.url):
-            raise CalcError(f"document {self.name!r}: expected an https address, found {self.url!r}")
+            raise CalcError(f"document {as_found(self.name)}: expected an https address, found {as_found(self.url)}")
 
     def at(self, place: str | tuple[str, ...] = "", **parts) -> Citation:
         """A citation of this document.
@@ -137,7 +137,7 @@ class Band:
         names = [self.quantity] + [end[1] for end in self.ends]
         for name in names:
             if name not in SYMBOLS:
-                raise CalcError(f"band of {self.quantity}: no symbol {name!r} is declared")
+                raise CalcError(f"band of {self.quantity}: no symbol {as_found(name)} is declared")
         kind = SYMBOLS[self.quantity].kind
         for name in names[1:]:
             if SYMBOLS[name].kind != kind:
@@ -176,8 +176,8 @@ class Validity:
         if not self.text.strip():
             raise CalcError("validity: expected the condition in words, found an empty text")
         if self.stands not in STANDS:
-            raise CalcError(f"validity {self.text!r}: expected stands to be one of {', '.join(STANDS)}, "
-                            f"found {self.stands!r}")
+            raise CalcError(f"validity {as_found(self.text)}: expected stands to be one of {listing(STANDS)}, "
+                            f"found {as_found(self.stands)}")
 
 
 @dataclass(frozen=True)
@@ -215,7 +215,7 @@ class Citation:
 
     def __post_init__(self):
         if self.note and self.validity is not None and self.validity.stands == "aside":
-            raise CalcError(f"citation of {self.document.name!r}: a note and a validity aside would share "
+            raise CalcError(f"citation of {as_found(self.document.name)}: a note and a validity aside would share "
                             "the parentheses; give one")
 
     @property
@@ -277,7 +277,7 @@ class Source:
         self.joined = joined
         stated = [c.validity for c in self.all() if c.validity is not None]
         if len(stated) > 1:
-            raise CalcError(f"source {self.text!r}: expected one validity, found {len(stated)}")
+            raise CalcError(f"source {as_found(self.text)}: expected one validity, found {len(stated)}")
         self.validity: Validity | None = stated[0] if stated else None
 
     def __repr__(self):

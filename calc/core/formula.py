@@ -36,7 +36,7 @@ from typing import Callable
 import numpy as np
 
 from .citation import Source
-from .errors import CalcError
+from .errors import CalcError, listing, as_found
 from .glossary import Symbol, symbol
 from .segment_sum import sum_last_axis
 from .units import Q_, as_kind, fmt, from_si, kind, latex_unit, pretty_unit, sig, to_si, unit
@@ -120,7 +120,7 @@ class Formula:
         self.result = _declared(result)
         if not isinstance(source, Source):
             raise CalcError(f"{self.result.name}: expected the formula's source as a Source of citations, found "
-                            f"{type(source).__name__} {source!r}")
+                            f"{type(source).__name__} {as_found(source)}")
         self.inputs = tuple(_declared(s) for s in inputs)
         self._build = build
         self.source = source
@@ -235,19 +235,21 @@ class Formula:
     def _si_args(self, values: dict) -> list:
         if not values.keys() <= set(self._takes):
             unknown = sorted(set(values) - set(self._takes))
-            raise CalcError(f"{self.name}: unknown argument {unknown[0]!r}; the formula takes {', '.join(self._takes)}")
+            raise CalcError(f"{self.name}: unknown argument {as_found(unknown[0])}; the formula takes "
+                            f"{listing(self._takes)}")
         args = []
         for s, constant in self._arguments:
             if constant is not None:
                 args.append(constant)
                 continue
             if s.name not in values:
-                raise CalcError(f"{self.name}: missing argument {s.name!r} ({s.description}, {kind(s.kind).name})")
+                raise CalcError(f"{self.name}: missing argument {as_found(s.name)} ({s.description}, "
+                                f"{kind(s.kind).name})")
             args.append(to_si(values[s.name], s.kind, f"{self.name}: argument {s.name!r}"))
         if self._per_segment:
             lengths = {self.inputs[k].name: np.shape(args[k])[-1] for k in self._per_segment if np.ndim(args[k])}
             if len(set(lengths.values())) > 1:
-                found = ", ".join(f"{name} {n}" for name, n in lengths.items())
+                found = listing(f"{name} {n}" for name, n in lengths.items())
                 raise CalcError(f"{self.name}: expected one value per segment in each per-segment argument, found "
                                 f"lengths {found}")
         return args

@@ -15,6 +15,14 @@ from numpy import sin
 from numpy import sqrt
 
 
+def accuracy__Delta_phi_wc(phi_e_k):
+    return SegmentSum(phi_e_k)
+
+
+def accuracy__Delta_phi_rss(phi_e_k):
+    return sqrt(SegmentSum(phi_e_k**2))
+
+
 def accuracy__phi_LM(j_t, T, C):
     return j_t + abs(T)/C
 
@@ -109,6 +117,22 @@ def drive__u_th(T_1, M_0):
 
 def drive__theta_max(u_th, t_1, t_cycle, T_th):
     return u_th*(1 - exp(-t_1/T_th))/(1 - exp(-t_cycle/T_th))
+
+
+def dynamics__f_r(C_s, rad, J_motor, J_Lm):
+    return (1/2)*sqrt(C_s*rad*(J_motor**(-1.0) + J_Lm**(-1.0)))/pi
+
+
+def dynamics__f_ar(C_s, rad, J_Lm):
+    return (1/2)*sqrt(C_s*rad/J_Lm)/pi
+
+
+def dynamics__q_r(Dummy_35):
+    return sqrt(Dummy_35 + 1)
+
+
+def dynamics__J_Lm(J_K, J_1, J_L, i):
+    return J_1 + J_K + J_L/i**2
 
 
 def gearbox__n_1(n_2, i):
@@ -279,6 +303,10 @@ def profile__Z_h(t_cycle):
     return t_cycle**(-1.0)
 
 
+def ratios__i_opt(J_L, J_in):
+    return sqrt(J_L/J_in)
+
+
 def stiffness__C_total(C_k):
     return SegmentSum(C_k**(-1.0))**(-1.0)
 
@@ -336,6 +364,8 @@ def transmission__phi_TA(Delta_phi_max, Delta_phi_min):
 
 
 FUNCTIONS = {
+    "calc.domain.accuracy.Delta_phi_wc": ("98d2fcef327bc2b0", accuracy__Delta_phi_wc),
+    "calc.domain.accuracy.Delta_phi_rss": ("b92b1d4b7f6ba1dd", accuracy__Delta_phi_rss),
     "calc.domain.accuracy.phi_LM": ("13bfeefac1470fe1", accuracy__phi_LM),
     "calc.domain.accuracy.Delta_phi_P_low": ("6a9a3ead10619a1f", accuracy__Delta_phi_P_low),
     "calc.domain.accuracy.Delta_phi_P_high": ("8ffa9959b4ff0f2d", accuracy__Delta_phi_P_high),
@@ -360,6 +390,10 @@ FUNCTIONS = {
     "calc.domain.drive.P_R_avg": ("fb34114d00e6517e", drive__P_R_avg),
     "calc.domain.drive.u_th": ("a571ba88019f4ffd", drive__u_th),
     "calc.domain.drive.theta_max": ("491f673413de41a0", drive__theta_max),
+    "calc.domain.dynamics.f_r": ("1bec6585898b822b", dynamics__f_r),
+    "calc.domain.dynamics.f_ar": ("98f992996b02382f", dynamics__f_ar),
+    "calc.domain.dynamics.q_r": ("2a2fb0d4528416a5", dynamics__q_r),
+    "calc.domain.dynamics.J_Lm": ("691c25f60bc8c344", dynamics__J_Lm),
     "calc.domain.gearbox.n_1": ("8f9f168890758267", gearbox__n_1),
     "calc.domain.gearbox.T_2max": ("d455c85b2c71de92", gearbox__T_2max),
     "calc.domain.gearbox.T_2stop": ("233cb8f5f3a997b8", gearbox__T_2stop),
@@ -402,6 +436,7 @@ FUNCTIONS = {
     "calc.domain.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
     "calc.domain.profile.T_2m": ("7f4431ae67c9b21f", profile__T_2m),
     "calc.domain.profile.Z_h": ("4a7f4f91d571390e", profile__Z_h),
+    "calc.domain.ratios.i_opt": ("a6c6227b3bab3ae6", ratios__i_opt),
     "calc.domain.stiffness.C_total": ("bedc76ed0d6bb298", stiffness__C_total),
     "calc.domain.stiffness.C_2": ("5c713f3fa45cd595", stiffness__C_2),
     "calc.domain.stiffness.phi_2": ("678c7938c9b7d54c", stiffness__phi_2),

@@ -14,6 +14,8 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 
+import numpy as np
+
 from .checks import selected_part, worst_governing
 
 
@@ -123,6 +125,23 @@ class Selection:
     def selected(self) -> str | None:
         """Part of the best passing row, or None (also when a governing check could not be made)."""
         return None if self.not_made else selected_part(self.catalog.parts, self.passes, self.order)
+
+    def put_first(self, part: str) -> None:
+        """Rank ``part`` first where it passes (the pair a case's motor and gearbox are chosen
+        together by); else leave the ranking as it is.
+
+        Parameters
+        ----------
+        part : str
+            A part of the selection's catalog.
+
+        Returns
+        -------
+        None
+        """
+        rows = np.flatnonzero(np.asarray(self.catalog.parts) == part)
+        if len(rows) and self.passes[rows[0]]:
+            self.order = np.concatenate((rows[:1], self.order[self.order != rows[0]]))
 
     def decided(self, row: int) -> bool | None:
         """Whether a row passes: None where every check made passes but one could not be made.

@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 import pint
 
-from .errors import CalcError
+from .errors import CalcError, as_found
 
 
 def _cache_folder():
@@ -261,12 +261,12 @@ def _in_scale(quantity: pint.Quantity, where: str, found) -> pint.Quantity:
     value = quantity.magnitude
     si = abs(quantity.to_base_units().magnitude) if math.isfinite(value) else math.inf
     if not math.isfinite(si):
-        raise CalcError(f"{where}: expected a finite number, found {found!r}")
+        raise CalcError(f"{where}: expected a finite number, found {as_found(found)}")
     if si != 0 and not low <= si <= high:
         raise CalcError(
             f"{where}: expected a magnitude between {low:g} and {high:g} in SI units "
             f"({quantity.to_base_units().units:~P}), "
-            f"found {found!r}, which is {si:.3g}"
+            f"found {as_found(found)}, which is {si:.3g}"
         )
     return quantity
 
@@ -300,24 +300,25 @@ def parse_quantity(text, expected: str | Kind, where: str) -> pint.Quantity:
     """
     k = kind(expected)
     if isinstance(text, bool):
-        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {text!r}")
+        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {as_found(text)}")
     if isinstance(text, (int, float)):
         if k.name == "dimensionless":
             return _in_scale(ureg.Quantity(float(text), ""), where, text)
         raise CalcError(
             f"{where}: expected {_article(k.name)} {k.name} with its unit such as {k.example}, found the bare number "
-            f"{text!r}"
+            f"{as_found(text)}"
         )
     if not isinstance(text, str):
-        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {text!r}")
+        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {as_found(text)}")
     match = NUMBER.match(text)
     if not match:
-        raise CalcError(f"{where}: expected a number followed by a unit such as {k.example}, found {text!r}")
+        raise CalcError(f"{where}: expected a number followed by a unit such as {k.example}, found {as_found(text)}")
     number, unit_text = match.groups()
     try:
         units = ureg.parse_units(unit_text) if unit_text else ureg.dimensionless
     except Exception as exc:  # pint's parser raises many types for malformed text, AssertionError among them
-        raise CalcError(f"{where}: the unit {unit_text!r} in {text!r} is not one the unit registry knows "
+        raise CalcError(f"{where}: the unit {as_found(unit_text)} in {as_found(text)} is not one the unit "
+                        "registry knows "
                         f"({type(exc).__name__})") from None
     quantity = ureg.Quantity(float(number), units)
     return _in_scale(as_kind(quantity, k, where, found=text), where, text)
@@ -352,7 +353,7 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
             return ureg.Quantity(np.asarray(value, dtype=float) if isinstance(value, np.ndarray) else float(value), "")
         raise CalcError(
             f"{where}: expected {_article(k.name)} {k.name} as a quantity with a unit such as {k.example}, found "
-            f"{type(value).__name__} {value!r}"
+            f"{type(value).__name__} {as_found(value)}"
         )
     if value._REGISTRY is not ureg:
         raise CalcError(f"{where}: the quantity {value} was made with another unit registry; use calc.ureg or calc.Q_")
@@ -363,7 +364,8 @@ def as_kind(value, expected: str | Kind, where: str, found: str | None = None) -
         same_dimension = value.dimensionality == ureg.Quantity(1, k.si_unit).dimensionality
         if k.angle and angle_power(value.units) != k.angle and same_dimension:
             hint = " (its unit must carry the angle, errata E15)"
-        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found {shown!r}, which is "
+        raise CalcError(f"{where}: expected {_article(k.name)} {k.name} such as {k.example}, found "
+                        f"{as_found(shown)}, which is "
                         f"{what}{hint}")
     return value
 

@@ -25,7 +25,7 @@ import numpy as np
 
 from .catalog import _FLOAT, _HEADER, CATALOG_DIR, Column, _header_unit, display_path, given_path, note_file_read
 from ..core.checks import BOUNDARY_RTOL
-from ..core.errors import CalcError
+from ..core.errors import SHOWN, CalcError, as_found, clipped, listing
 from ..core.glossary import latex as symbol_latex
 from ..core.units import Q_, as_kind, pretty_unit, sig  # noqa: F401 (Q_: the doctests)
 
@@ -86,14 +86,14 @@ class BandTable:
 
     def __post_init__(self):
         if self.at_boundary not in AT_BOUNDARY:
-            raise CalcError(f"{self.source}: expected at_boundary to be one of {', '.join(AT_BOUNDARY)}, found "
-                            f"{self.at_boundary!r}")
+            raise CalcError(f"{self.source}: expected at_boundary to be one of {listing(AT_BOUNDARY)}, found "
+                            f"{as_found(self.at_boundary)}")
         lower = np.asarray(self.lower, dtype=float)
         if lower.ndim != 1 or len(lower) == 0 or len(self.values) != len(lower):
             raise CalcError(f"{self.source}: expected one factor per band, found {len(self.values)} factors for "
                             f"{len(lower)} bands")
         if not (np.all(np.diff(lower) > 0) and self.top > lower[-1]):
-            raise CalcError(f"{self.source}: expected band bounds that rise, found {', '.join(map(sig, lower))} up to "
+            raise CalcError(f"{self.source}: expected band bounds that rise, found {listing(map(sig, lower))} up to "
                             f"{sig(self.top)}")
 
     def __len__(self) -> int:
@@ -135,7 +135,8 @@ class BandTable:
         outside = (up < self.bounds[0]) | (down > self.top)
         if np.any(outside):
             bad = np.asarray(x)[outside] if np.ndim(x) else x
-            raise CalcError(f"{where}: expected {self.range_text()} ({self.source}), found {sig(np.ravel(bad)[0])} "
+            raise CalcError(f"{where}: expected {self.range_text()} ({clipped(self.source, 2 * SHOWN)}), "
+                            f"found {sig(np.ravel(bad)[0])} "
                             f"{pretty_unit(self.unit)}")
         if self.at_boundary == "higher":
             return np.searchsorted(self.bounds, up, side="right") - 1  # just below a boundary is on it
@@ -296,16 +297,16 @@ def factor_table(role: str, name_or_path: str | None = None, base: Path | None =
     r = ROLES[role]
     name = r.default if name_or_path is None else name_or_path
     if not isinstance(name, str) or not name.strip():
-        raise CalcError(f"{where}: expected a table name ({', '.join(table_names(role))}) or a path to a CSV file, "
-                        f"found {name!r}")
+        raise CalcError(f"{where}: expected a table name ({listing(table_names(role))}) or a path to a CSV file, "
+                        f"found {as_found(name)}")
     path = given_path(name, base)
     if path is None:
         path = FACTOR_DIR / f"{role}-{name}.csv"
         if not path.is_file():
-            raise CalcError(f"{where}: unknown {role}-factor table {name!r}; expected one of "
-                            f"{', '.join(table_names(role))} or a path to a CSV file")
+            raise CalcError(f"{where}: unknown {role}-factor table {as_found(name)}; expected one of "
+                            f"{listing(table_names(role))} or a path to a CSV file")
     elif not path.is_file():
-        raise CalcError(f"{where}: the factor table {name!r} does not exist (looked for {path})")
+        raise CalcError(f"{where}: the factor table {as_found(name)} does not exist (looked for {path})")
     return load_factor_table(path, r.symbol, r.kind)
 
 
@@ -355,16 +356,17 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
     for i, cell in enumerate(rows[0]):
         m = _HEADER.match(cell)
         if not m:
-            raise CalcError(f"{path}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
+            raise CalcError(f"{path}: header column {i + 1} {as_found(cell)} is not of the form 'name [unit]'")
         header[m.group(1)] = (i, m.group(2))
     missing = [c for c in _COLUMNS if c not in header]
     if missing:
-        raise CalcError(f"{path}: expected the columns {', '.join(_COLUMNS)}, found no column {missing[0]!r}")
+        raise CalcError(f"{path}: expected the columns {listing(_COLUMNS)}, found no column {as_found(missing[0])}")
     units = {c: _header_unit(path, Column(c, k, c), header[c][1])
              for c, k in (("from", kind), ("to", kind), ("factor", "dimensionless"))}
     if units["from"] != units["to"]:
-        raise CalcError(f"{path}, header: expected the columns from and to in one unit, found {header['from'][1]!r} "
-                        f"and {header['to'][1]!r}")
+        raise CalcError(f"{path}, header: expected the columns from and to in one unit, found "
+                        f"{as_found(header['from'][1])} "
+                        f"and {as_found(header['to'][1])}")
     body = rows[1:]
     if not body:
         raise CalcError(f"{path}: expected one row per band, found none")
@@ -382,7 +384,7 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
         if not text and empty is not None:
             return empty
         if not _FLOAT.match(text):
-            raise CalcError(f"{where(k, column)}: expected a number, found {text!r}" if text
+            raise CalcError(f"{where(k, column)}: expected a number, found {as_found(text)}" if text
                             else f"{where(k, column)}: expected a number, found an empty cell")
         return float(text)
 
@@ -392,14 +394,14 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
     factor = [number(k, "factor") for k in range(n)]
     for k in range(n):
         if not factor[k] > 0:
-            raise CalcError(f"{where(k, 'factor')}: expected a factor above zero, found {cell(k, 'factor')!r}")
+            raise CalcError(f"{where(k, 'factor')}: expected a factor above zero, found {as_found(cell(k, 'factor'))}")
         if not high[k] > low[k]:
             raise CalcError(f"{where(k, 'to')}: expected a band that rises, to above from, found from "
                             f"{cell(k, 'from') or 'open'} and to {cell(k, 'to') or 'open'}")
         if k and low[k] != high[k - 1]:
             what = "a gap" if low[k] > high[k - 1] else "an overlap"
             raise CalcError(f"{where(k, 'from')}: expected the band to start where the row before ends "
-                            f"({cell(k - 1, 'to')}), found {cell(k, 'from')!r}, {what}")
+                            f"({cell(k - 1, 'to')}), found {as_found(cell(k, 'from'))}, {what}")
         if k and factor[k] < factor[k - 1]:
             raise CalcError(
                 f"{where(k, 'factor')}: expected factors that never fall as {symbol} rises, found {cell(k, 'factor')} "
@@ -410,9 +412,9 @@ def load_factor_table(path, symbol: str, kind: str) -> BandTable:
                None)
     if bad is not None:
         found = cell(bad, "at_boundary")
-        expected = (f"one of {', '.join(AT_BOUNDARY)}" if found not in AT_BOUNDARY
+        expected = (f"one of {listing(AT_BOUNDARY)}" if found not in AT_BOUNDARY
                     else f"the same rule in every row ({rule!r} in the first)")
-        raise CalcError(f"{where(bad, 'at_boundary')}: expected {expected}, found {found!r}")
+        raise CalcError(f"{where(bad, 'at_boundary')}: expected {expected}, found {as_found(found)}")
     sources = list(dict.fromkeys(cell(k, "source") for k in range(n) if cell(k, "source")))
     if not sources:
         raise CalcError(f"{where(0, 'source')}: expected where the factors come from, found an empty cell")

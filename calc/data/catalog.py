@@ -23,7 +23,8 @@ from typing import Callable
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found, clipped, listing
+from .parsed import SMALLEST, cache_key, keep_parsed, load_parsed
 from ..core.units import Q_, SI_SCALE, describe_units, kind, pretty_unit, ureg
 
 
@@ -328,7 +329,8 @@ class Catalog:
         """
         hits = np.flatnonzero(self.parts == part)
         if not len(hits):
-            raise CalcError(f"{where}: no part {part!r} in catalog {self.shown_name}; it has {some_parts(self.parts)}")
+            raise CalcError(f"{where}: no part {as_found(part)} in catalog {self.shown_name}; it has "
+                            f"{listing(self.parts, limit=6)}")
         return int(hits[0])
 
     def usable_index(self, part: str, where: str) -> int:
@@ -350,9 +352,8 @@ class Catalog:
         if self.partial[row]:
             reason = self.text[self.schema.partial][row]
             raise CalcError(
-                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), kept for "
-                "reference "
-                f"but never checked: {reason}"
+                f"{where}: {part} is a partial row of {self.catalog_of(row)} (row {self.lines[row]}), never "
+                f"checked: {clipped(reason, 100)}"
             )
         return row
 
@@ -377,23 +378,6 @@ def _read_only(a: np.ndarray) -> np.ndarray:
     """``a``, which no caller may change: it is shared by every caller of the catalog."""
     a.flags.writeable = False
     return a
-
-
-def some_parts(parts) -> str:
-    """Up to six part names for a message, and how many more there are.
-
-    Parameters
-    ----------
-    parts : numpy.ndarray of str
-        The names.
-
-    Returns
-    -------
-    str
-        ``"A, B, C and 4 more"``.
-    """
-    shown = ", ".join(map(str, parts[:6]))
-    return shown + (f" and {len(parts) - 6} more" if len(parts) > 6 else "")
 
 
 def display_path(path: Path) -> str:
@@ -462,10 +446,10 @@ def resolve(name_or_path: str, base: Path | None, where: str) -> Path:
         The file, which exists.
     """
     if not isinstance(name_or_path, str) or not name_or_path.strip():
-        raise CalcError(f"{where}: expected a catalog name or a path to a CSV file, found {name_or_path!r}")
+        raise CalcError(f"{where}: expected a catalog name or a path to a CSV file, found {as_found(name_or_path)}")
     path = given_path(name_or_path, base) or CATALOG_DIR / f"{name_or_path}.csv"
     if not path.is_file():
-        raise CalcError(f"{where}: the catalog {name_or_path!r} does not exist (looked for {path})")
+        raise CalcError(f"{where}: the catalog {as_found(name_or_path)} does not exist (looked for {path})")
     return path
 
 
@@ -583,7 +567,8 @@ def load_catalogs(names, base: Path | None, where: str, schema: Schema) -> Catal
     if isinstance(names, str):
         return load_catalog(resolve(names, base, where), schema)
     if not isinstance(names, list) or not names:
-        raise CalcError(f"{where}: expected a catalog name, a path to a CSV file or a list of them, found {names!r}")
+        raise CalcError(f"{where}: expected a catalog name, a path to a CSV file or a list of them, found "
+                        f"{as_found(names)}")
     paths = [resolve(name, base, f"{where}[{k}]") for k, name in enumerate(names, start=1)]
     return combine([load_catalog(path, schema) for path in paths], where)
 
@@ -615,7 +600,8 @@ def combine(catalogs: list, where: str) -> Catalog:
             if part in seen and seen[part][0] != k:
                 other, other_line = seen[part]
                 raise CalcError(
-                    f"{where}: the part {part!r} stands in {display_path(catalogs[other].path)} (row {other_line}) and "
+                    f"{where}: the part {as_found(part)} stands in {display_path(catalogs[other].path)} (row "
+                    f"{other_line}) and "
                     "in "
                     f"{display_path(cat.path)} (row {line}); rename one, as candidates are named by part"
                 )
@@ -645,6 +631,12 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     """Read and validate a catalog file, column by column over all rows at once; see
     :func:`load_catalog`."""
     raw = path.read_bytes()
+    key = cache_key(raw, schema) if len(raw) >= SMALLEST else None
+    kept = None if key is None else load_parsed(key)
+    if kept is not None:
+        return _catalog(path, raw, schema, kept["parts"], kept["lines"],
+                        {name: Q_(m, unit) for name, (m, unit) in kept["values"].items()}, kept["text"],
+                        kept["header_units"])
     reader, width, columns, units = _header(path, raw, schema)
     cells, lines, misfit = _rows(path, reader, width)
 
@@ -671,20 +663,21 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
             raise CalcError(f"{path}, row {lines[j]} ({parts[j]}), column {rule.column}: impossible value, expected "
                             f"{rule.text}")
     text_arrays = {k: np.array(v, dtype=object) for k, v in texts.items()}
-    for a in (parts, lines, *text_arrays.values(), *(q.magnitude for q in values.values())):
+    header_units = {c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name])
+                    for c in schema.columns}
+    if key is not None:  # read without an error: kept for the next run (calc.data.parsed)
+        keep_parsed(key, parts, lines, {n: (q.magnitude, str(q.units)) for n, q in values.items()}, text_arrays,
+                    header_units)
+    return _catalog(path, raw, schema, parts, lines, values, text_arrays, header_units)
+
+
+def _catalog(path: Path, raw: bytes, schema: Schema, parts, lines, values: dict, text: dict,
+             header_units: dict) -> Catalog:
+    """The catalog of a file's rows as read (or as kept, :mod:`calc.data.parsed`), its arrays read-only."""
+    for a in (parts, lines, *text.values(), *(q.magnitude for q in values.values())):
         a.flags.writeable = False  # shared by every caller of the run (load_catalog)
-    return Catalog(
-        name=path.stem,
-        path=path,
-        sha256=hashlib.sha256(raw).hexdigest(),
-        schema=schema,
-        parts=parts,
-        values=values,
-        text=text_arrays,
-        lines=lines,
-        header_units={c.name: columns[c.name][1].strip() if c.name in columns else str(units[c.name])
-                      for c in schema.columns},
-    )
+    return Catalog(name=path.stem, path=path, sha256=hashlib.sha256(raw).hexdigest(), schema=schema, parts=parts,
+                   values=values, text=text, lines=lines, header_units=header_units)
 
 
 def _header(path: Path, raw: bytes, schema: Schema):
@@ -703,13 +696,13 @@ def _header(path: Path, raw: bytes, schema: Schema):
     for i, cell in enumerate(header):
         m = _HEADER.match(cell)
         if not m:
-            raise CalcError(f"{path}: header column {i + 1} {cell!r} is not of the form 'name [unit]'")
+            raise CalcError(f"{path}: header column {i + 1} {as_found(cell)} is not of the form 'name [unit]'")
         if m.group(1) in columns:
-            raise CalcError(f"{path}: the column {m.group(1)!r} appears twice in the header")
+            raise CalcError(f"{path}: the column {as_found(m.group(1))} appears twice in the header")
         columns[m.group(1)] = (i, m.group(2))
     for name in schema.text_columns:
         if name not in columns:
-            raise CalcError(f"{path}: expected a column {name!r}, found columns {', '.join(columns)}")
+            raise CalcError(f"{path}: expected a column {as_found(name)}, found columns {listing(columns)}")
     units = {}
     for c in schema.columns:
         if c.name not in columns and c.may_be_absent:
@@ -717,7 +710,7 @@ def _header(path: Path, raw: bytes, schema: Schema):
             continue
         if c.name not in columns:
             raise CalcError(
-                f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {', '.join(columns)}"
+                f"{path}: expected a column '{c.name} [unit]' ({c.description}), found columns {listing(columns)}"
             )
         unit_text = columns[c.name][1]
         units[c.name] = _header_unit(path, c, unit_text)
@@ -754,7 +747,7 @@ def _no_repeated_part(path: Path, parts: np.ndarray, lines: np.ndarray) -> None:
     repeats = np.flatnonzero(first != np.arange(len(parts)))
     if len(repeats):
         j = repeats[0]
-        raise CalcError(f"{path}, row {lines[j]}, column part: the part {parts[j]!r} already stands in row "
+        raise CalcError(f"{path}, row {lines[j]}, column part: the part {as_found(parts[j])} already stands in row "
                         f"{lines[first[j]]}")
 
 
@@ -857,10 +850,10 @@ def _header_unit(path: Path, c: Column, unit_text):
         units = ureg.parse_units(text) if text not in ("", "1", "-") else ureg.dimensionless
     except Exception as exc:  # pint raises several types for unknown or malformed units
         raise CalcError(
-            f"{where}: the unit {text!r} is not one the unit registry knows ({type(exc).__name__})"
+            f"{where}: the unit {as_found(text)} is not one the unit registry knows ({type(exc).__name__})"
         ) from None
     if not k.accepts(units):
-        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {text!r}, which is "
+        raise CalcError(f"{where}: expected a unit of {k.name} such as {k.example}, found {as_found(text)}, which is "
                         f"{describe_units(units)}")
     return units
 

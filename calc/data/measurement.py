@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from .catalog import _HEADER, Column, _header_unit, note_file_read
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..core.units import Q_, as_kind
 
 _COMMENT = "#"
@@ -78,12 +78,13 @@ def measurement_path(text, base: Path | None, where: str) -> Path:
         The file.
     """
     if not isinstance(text, str) or not text.strip():
-        raise CalcError(f"{where}: expected the path of a CSV file in quotes, found {text!r}")
+        raise CalcError(f"{where}: expected the path of a CSV file in quotes, found {as_found(text)}")
     path = Path(text)
     if not path.is_absolute() and base is not None:
         path = base / path
     if not path.is_file():
-        raise CalcError(f"{where}: the measurement file {text!r} does not exist (looked for {path})")
+        raise CalcError(f"{where}: the measurement file {as_found(text)} does not exist (looked for "
+                        f"{path.resolve()})")
     return path
 
 
@@ -136,7 +137,8 @@ def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, 
     for i, cell in enumerate(header.strip().split(",")):
         m = _HEADER.match(cell)
         if not m:
-            raise CalcError(f"{path}, row {header_line}: header column {i + 1} {cell!r} is not of the form 'name "
+            raise CalcError(f"{path}, row {header_line}: header column {i + 1} {as_found(cell)} is not of the "
+                            "form 'name "
                             "[unit]'")
         names[m.group(1)] = (i, m.group(2))
     columns = (*columns, *(c for c in optional if c.name in names))
@@ -147,7 +149,7 @@ def read_measurement(path, columns: tuple[Column, ...], optional: tuple[Column, 
         if c.name not in names:
             raise CalcError(
                 f"{path}, row {header_line}: expected a column '{c.name} [unit]' ({c.description}), found columns "
-                f"{', '.join(names)}"
+                f"{listing(names)}"
             )
         units[c.name] = _header_unit(path, c, names[c.name][1])
 

@@ -17,6 +17,16 @@ to E15. Everything is referred to the output shaft (E11, :mod:`calc.domain.stiff
 * A measured positioning record (a target and the actual position, each target approached
   several times) gives the measured accuracy, the largest error, and repeatability, the largest
   spread at one target (:func:`analyze_positions`).
+* The positioning accuracy is a **full width** (:data:`POSITIONING_CONVENTION`): the range of the
+  position error, as E13 sums a range (``φ_TA``, E14) and a full play (``j_t``); positioned
+  "within ±a" means a full width of 2a. Repeatability is a full width too (the spread at one
+  target), so under torque it is bounded by the tighter of the lost motion and the positioning
+  accuracy (:attr:`ChainAccuracy.repeatability_bound`).
+* The error budget (:func:`error_budget`) splits the positioning accuracy into its contributions,
+  each **systematic** (a load-independent transmission error, the same at every approach of an
+  angle, which a controller can map out) or **random** (backlash, the twist under a process torque
+  that scatters), with the worst case (every contribution added, the package's positioning
+  accuracy) and the root-sum-square of the independent contributions.
 
 The case's ``[accuracy]`` table (``docs/case-format.md``) is read by :func:`read_accuracy` and
 evaluated by :func:`section_results` (the JSON contract) and :func:`summary_lines`.
@@ -32,12 +42,37 @@ from ..core.checks import BOUNDARY_RTOL
 from ..core.citation import Band, Source, Validity
 from ..data.catalog import Column
 from ..core.errors import CalcError
-from ..core.formula import Formula
+from ..core.formula import Formula, segment_sum
 from ..data.measurement import check_pair, read_measurement
 from .documents import ERRATA, MECHANICS, SOURCE
 from .hysteresis import LOW_TORQUE_SHARE
 from .stiffness import Chain, Component, angle_at_output, series_stiffness, stiffness_at_output  # noqa: F401 (Component: the doctests)
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
+
+#: The one convention of the positioning accuracy, said once: package, notebooks and report follow it.
+POSITIONING_CONVENTION = ("full width: the range of the position error, peak to peak (E13 sums the range φ_TA and "
+                          "the full backlash); ± half of it about its middle")
+
+#: The kinds of a contribution to the error budget, and what each means.
+BUDGET_KINDS = {
+    "systematic": "load-independent and the same at every approach of an angle: a controller can map it out",
+    "random": "scatters from approach to approach (which flank carries, a process torque that varies)",
+}
+
+budget_worst_case = Formula(
+    "Delta_phi_wc",
+    ("phi_e_k",),
+    lambda sp, phi: segment_sum(phi),
+    Source(SOURCE.at("Positioning Accuracy", says="the terms added: transmission accuracy + backlash, or + applied "
+                     "torque / stiffness"), ERRATA.at("E13")),
+)
+
+budget_rss = Formula(
+    "Delta_phi_rss",
+    ("phi_e_k",),
+    lambda sp, phi: sp.sqrt(segment_sum(phi**2)),
+    Source(MECHANICS.at(label="error budget", says="independent errors add in quadrature: the root-sum-square")),
+)
 
 lost_motion = Formula(
     "phi_LM",
@@ -338,6 +373,22 @@ class ChainAccuracy:
         """Whether the backlash form of positioning accuracy applies (E13)."""
         return bool(self.rule.low_torque)
 
+    @property
+    def repeatability_bound(self):
+        """Repeatability as the package states it: under torque the tighter of the source's bound,
+        the lost motion (E13), and the positioning accuracy, both full widths
+        (:data:`POSITIONING_CONVENTION`: positions within a band cannot spread wider than the band);
+        at rest the backlash itself. Where no member gives its transmission accuracy, the lost motion.
+
+        Returns
+        -------
+        pint.Quantity [arcmin]
+        """
+        if not self.repeatability_is_bound or not self.chain.transmission_accuracy_from:
+            return self.repeatability  # no φ_TA given: the positioning accuracy is a lower bound, not a bound
+        return Q_(float(np.fmin(self.repeatability.m_as("arcmin"), self.positioning_accuracy.m_as("arcmin"))),
+                  "arcmin")
+
     def steps(self) -> list:
         """Each formula with the chain's numbers, in the order a reviewer reads them.
 
@@ -419,6 +470,109 @@ def chain_accuracy(chain: Chain, applied_torque, nominal_torque=None) -> ChainAc
         repeatability=rep,
         repeatability_is_bound=bool(bound),
     )
+
+
+@dataclass(frozen=True)
+class Contribution:
+    """One contribution to the error budget of the positioning accuracy.
+
+    Parameters
+    ----------
+    name : str
+        What it is (``"transmission error"``).
+    value : pint.Quantity [arcmin]
+        Its full width.
+    kind : str
+        ``"systematic"`` or ``"random"`` (:data:`BUDGET_KINDS`).
+    why : str
+        Why it is of that kind, and where it comes from.
+    """
+
+    name: str
+    value: object
+    kind: str
+    why: str
+
+
+@dataclass(frozen=True)
+class Budget:
+    """The error budget of the positioning accuracy (:func:`error_budget`).
+
+    Parameters
+    ----------
+    contributions : tuple of Contribution
+        Each known contribution.
+    worst_case : Step
+        Every contribution added: the positioning accuracy.
+    rss : Step
+        The root-sum-square of the contributions (independent sources).
+    rss_random : pint.Quantity [arcmin]
+        The root-sum-square of the random ones alone: what is left once the systematic ones are mapped out.
+    unknown : list of str
+        The contributions not known (the budget is then a lower bound).
+    """
+
+    contributions: tuple
+    worst_case: object
+    rss: object
+    rss_random: object
+    unknown: list
+
+    @property
+    def shares(self) -> list[float]:
+        """Each contribution's share of the worst case [1]."""
+        total = self.worst_case.result.m_as("arcmin")
+        return [float(c.value.m_as("arcmin") / total) if total > 0 else 0.0 for c in self.contributions]
+
+
+def error_budget(a: ChainAccuracy) -> Budget:
+    """The positioning accuracy of ``a`` as a budget: the transmission error (systematic), and
+    either the backlash (random: at rest or under a torque up to 3 % of T_N, either flank may carry)
+    or the twist under the applied torque (random: the process torque scatters), each a full width
+    (:data:`POSITIONING_CONVENTION`). Its worst case is the positioning accuracy itself.
+
+    Parameters
+    ----------
+    a : ChainAccuracy
+        The chain at its applied torque.
+
+    Returns
+    -------
+    Budget
+        The contributions, worst case, root-sum-square, and that of the random ones alone.
+
+    Examples
+    --------
+    The example's table at 8 N·m: NPT035-10's 62.95 arcsec of transmission error and the twist
+    8 N·m / 20.1 N·m/arcmin; worst case 1.049 + 0.398 = 1.447 arcmin, RSS √(1.049² + 0.398²):
+
+    >>> from calc.domain.stiffness import Component
+    >>> g = Component("NPT035-10", "output", Q_(20.1, "N*m/arcmin"), Q_(8, "arcmin"), Q_(62.95, "arcsec"),
+    ...               Q_(110, "N*m"))
+    >>> b = error_budget(chain_accuracy(Chain((g,)), Q_(8, "N*m")))
+    >>> [c.kind for c in b.contributions], fmt(b.worst_case.result, "arcmin"), fmt(b.rss.result, "arcmin")
+    (['systematic', 'random'], '1.447 arcmin', '1.122 arcmin')
+    """
+    c = a.chain
+    out, unknown = [], []
+    ta = c.transmission_accuracy
+    if not c.transmission_accuracy_from:
+        unknown.append("the transmission error (no member gives its transmission accuracy)")
+    else:
+        out.append(Contribution("transmission error φ_TA", ta.to("arcmin"), "systematic",
+                                "load-independent, repeats with the output angle (E14): a controller can map it out"))
+    if a.low_torque:
+        out.append(Contribution("backlash j_t", c.backlash.to("arcmin"), "random",
+                                "at rest or within 3 % of T_N either flank may carry (E13)"))
+    else:
+        twist = (abs(a.applied_torque) / c.stiffness).to("arcmin")
+        out.append(Contribution("twist |T| / C", twist, "random",
+                                "the process torque scatters from part to part; one for the chain, its members "
+                                "twist under the same torque (not independent)"))
+    values = Q_([x.value.m_as("arcmin") for x in out], "arcmin")
+    random = [x.value.m_as("arcmin") for x in out if x.kind == "random"]
+    return Budget(tuple(out), budget_worst_case.step(phi_e_k=values), budget_rss.step(phi_e_k=values),
+                  Q_(float(np.sqrt(np.sum(np.square(random)))), "arcmin"), unknown)
 
 
 # --- measured positioning -------------------------------------------------------------------

@@ -22,7 +22,7 @@ from types import ModuleType
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found
 from ..core.formula import REGISTRY, Formula, global_names
 from ..core.segment_sum import sum_last_axis
 
@@ -84,7 +84,8 @@ def _import_line(name: str, value) -> str | None:
     for candidate in (getattr(value, "__name__", None), name):
         if candidate and getattr(np, candidate, None) is value:
             return f"from numpy import {candidate}" + ("" if candidate == name else f" as {name}")
-    raise CalcError(f"the generated numeric form uses {name!r} = {value!r}, which calc.domain.codegen cannot import")
+    raise CalcError(f"the generated numeric form uses {as_found(name)} = {as_found(value)}, which "
+                    "calc.domain.codegen cannot import")
 
 
 def module_text(formulas: list[Formula] | None = None) -> str:

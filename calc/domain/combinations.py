@@ -35,11 +35,11 @@ import numpy as np
 from ..core.checks import within_rating
 from .gearbox import inertia_ratio
 
-#: How :func:`search` picks a pair among the feasible ones.
-RULE = ("the smallest adequate motor (lowest rated torque, a tie to the lower rotor inertia), then the smallest "
-        "adequate "
-        "gearbox for it (lowest rated torque of the gearbox), then the lowest RMS utilization of the motor, then the "
-        "lower ratio")
+#: How :func:`search` picks a pair: the one rule by which a case's evaluation takes its motor and gearbox.
+RULE = ("passing pairs first: the smallest adequate motor (lowest rated torque, a tie to the lower rotor inertia), "
+        "for it the adequate gearbox the gearbox ranking puts first (published rows, then the smallest governing "
+        "rating, then margin), then the lower RMS utilization of the motor and the lower ratio; where no pair "
+        "passes, the pair closest to passing")
 
 
 @dataclass(frozen=True)
@@ -227,41 +227,60 @@ class Combinations:
         The pair passes.
     pick : tuple of int or None
         ``(gearbox row, motor)`` by :data:`RULE`; None where no pair is feasible.
+    closest : tuple of int or None
+        The pair closest to passing (lowest highest utilization) where none passes; else None.
+    motors : numpy.ndarray of int or None
+        The motor of each column, where the search screened some only (``first``); None: every motor,
+        in their order.
     """
 
-    peak: np.ndarray  # max |T_1| [N·m]
-    rms: np.ndarray  # T_1rms [N·m]
-    utilization: np.ndarray  # the highest of the pair's utilizations (gearbox and motor)
+    peak: np.ndarray
+    rms: np.ndarray
+    utilization: np.ndarray
     feasible: np.ndarray
-    pick: tuple[int, int] | None  # (gearbox row, motor) by RULE; None where no pair is feasible
+    pick: tuple[int, int] | None
+    closest: tuple[int, int] | None = None
+    motors: np.ndarray | None = None
 
 
-def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dict,
-           inertia_limit: float) -> Combinations:
+def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, inertia_limit: float,
+           examine=None, first: bool = False) -> Combinations:
     """Check every pair of a gearbox row and a motor against the cycle, and pick one (:data:`RULE`).
 
-    A pair is feasible where the gearbox passes, its T_2B takes the motor's peak torque, the motor's
-    peak and RMS torque and its top speed ``n_2max · i`` are within the motor's ratings, and
-    ``λ = (J_1 + J_L / i²) / J_motor`` (:data:`calc.domain.gearbox.inertia_ratio`) is at most
-    ``inertia_limit`` (E6).
+    A pair is feasible where the gearbox passes, its ratings take the motor's peak torque, the motor's
+    peak and RMS torque and its top speed ``n_2max · i`` (and, where ``motors`` gives ``rated_speed``, its
+    mean speed ``n_2m · i``) are within the motor's ratings, and ``λ = (J_1 + J_L / i²) / J_motor``
+    (:data:`calc.domain.gearbox.inertia_ratio`) is at most ``inertia_limit`` (E6). The peak is screened
+    against the motor's ``M_max``; with ``examine``, the pairs of the motors in the rule's order are then
+    examined in full (the peak torque the motor gives at each sample's speed, the gearbox's checks with
+    that motor and its ranking), until a motor has a pair that passes (the pairs found failing are
+    marked so, the motors after it are left screened).
 
     Parameters
     ----------
     moments : CycleMoments
         The sampled cycle at the gearbox output.
-    top_speed : float [rad/s]
-        The highest output speed.
+    speeds : tuple of float [rad/s]
+        The highest output speed ``n_2max`` and the mean output speed ``n_2m``.
     gearboxes : dict
-        Arrays over the gearbox rows (each at its own ratio): ``i`` [1], ``eta`` [1], ``J_1`` [kg·m²],
-        ``passes`` (its governing checks that do not depend on the motor), ``peak_limit`` (the highest
-        motor peak torque its T_2B takes, ``T_2B / (i · f_s · η)`` (E2), inf where that check does not
-        govern) [N·m], ``size`` (its rated torque, for the rule) [N·m]; and ``J_L``, the load's inertia
-        at the output [kg·m²], a scalar.
+        Arrays over the gearbox rows (each at its own ratio): ``i`` [1], ``eta`` [1], ``J_1`` [kg·m²] (with
+        what else turns with the motor), ``passes`` (its governing checks that do not depend on the motor),
+        ``peak_limit`` (the highest motor peak torque its ratings take, ``T_2B / (i · f_s · η)`` (E2) or
+        ``T_2Not / i``, inf where no such check governs) [N·m], ``rank`` (its place in the gearbox ranking,
+        lower first); and ``J_L``, the load's inertia at the output [kg·m²], a scalar.
     motors : dict
         Arrays over the motors: ``J`` [kg·m²], ``rated_torque`` [N·m], ``peak_torque`` [N·m],
-        ``max_speed`` [rad/s].
+        ``max_speed`` [rad/s], optionally ``rated_speed`` [rad/s].
     inertia_limit : float [1]
         The highest ``λ`` a pair may have: the case's ``[motor] max_inertia_ratio``.
+    examine : callable, optional
+        ``examine(motor, rows)`` -> ``(utilization, passes, rank)`` over those gearbox rows: the motor's
+        peak utilization against its speed-torque characteristic [1] (NaN where not examined: it may
+        stop at the first row of its ranking that passes), whether the gearbox passes its checks with
+        that motor, and its place in the gearbox ranking with it (None: ``rank`` holds).
+    first : bool
+        Screen the motors one at a time in the rule's order and stop at the first that has a pair
+        that passes (the pick alone is wanted: a case's evaluation); default False, every pair.
 
     Returns
     -------
@@ -269,18 +288,79 @@ def search(moments: CycleMoments, top_speed: float, gearboxes: dict, motors: dic
         Every pair's motor torques, utilization and feasibility, and the pick.
     """
     g = {k: np.asarray(v, float)[:, None] for k, v in gearboxes.items() if k != "J_L"}
+    g["J_L"] = float(gearboxes["J_L"])
     mo = {k: np.asarray(v, float)[None, :] for k, v in motors.items()}
+    if first:
+        return _first(moments, speeds, g, mo, inertia_limit, examine)
+    columns = _screen(moments, speeds, g, mo, inertia_limit)
+    pick = _pick(columns.feasible, columns.utilization, columns.rms / mo["rated_torque"], g, mo, examine)
+    columns.pick, columns.closest = pick, None if pick is not None else _closest(columns.utilization)
+    return columns
+
+
+def _screen(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limit: float) -> Combinations:
+    """Every pair of the gearbox rows ``g`` (a column each) and the motors ``mo`` (a row each)
+    screened, nothing picked."""
     peak, rms = motor_torques(moments, g["i"], g["eta"], g["J_1"] + mo["J"])
-    lam = inertia_ratio.si(J_1=g["J_1"], J_L=float(gearboxes["J_L"]), i=g["i"], J_motor=mo["J"])
-    utilizations = (peak / mo["peak_torque"], rms / mo["rated_torque"], top_speed * g["i"] / mo["max_speed"],
-                    mo["peak_torque"] / g["peak_limit"], lam / inertia_limit)
+    lam = inertia_ratio.si(J_1=g["J_1"], J_L=g["J_L"], i=g["i"], J_motor=mo["J"])
+    top, mean = speeds
+    utilizations = [peak / mo["peak_torque"], rms / mo["rated_torque"], top * g["i"] / mo["max_speed"],
+                    mo["peak_torque"] / g["peak_limit"], lam / inertia_limit]
+    if "rated_speed" in mo:
+        utilizations.append(mean * g["i"] / mo["rated_speed"])
     utilization = np.maximum.reduce(utilizations)
     feasible = (g["passes"] > 0) & np.logical_and.reduce([within_rating(u) for u in utilizations])
-    rows, cols = np.nonzero(feasible)
-    pick = None
-    if len(rows):
-        keys = (g["i"][rows, 0], rms[rows, cols] / mo["rated_torque"][0, cols], g["size"][rows, 0], mo["J"][0, cols],
-                mo["rated_torque"][0, cols])
-        best = np.lexsort(keys)[0]
-        pick = (int(rows[best]), int(cols[best]))
-    return Combinations(peak, rms, utilization, feasible, pick)
+    return Combinations(peak, rms, utilization, feasible, None)
+
+
+def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limit: float, examine) -> Combinations:
+    """:func:`search` with ``first``: the motors screened one at a time in the rule's order, until
+    one has a pair that passes; the arrays hold the motors screened (:attr:`Combinations.motors`)."""
+    order = np.lexsort((mo["J"][0], mo["rated_torque"][0]))
+    done = []
+    for m in order:
+        done.append(_screen(moments, speeds, g, {k: v[:, [m]] for k, v in mo.items()}, inertia_limit))
+        col = done[-1]
+        one = {k: v[:, [m]] for k, v in mo.items()}
+        found = _pick(col.feasible, col.utilization, col.rms / one["rated_torque"], g, one,
+                      None if examine is None else lambda _, rows, m=int(m): examine(m, rows))
+        if found is not None:
+            break
+    motors = order[:len(done)]
+    out = Combinations(*(np.concatenate([getattr(c, k) for c in done], axis=1)
+                         for k in ("peak", "rms", "utilization", "feasible")), None, motors=motors)
+    if found is not None:
+        out.pick = (found[0], len(done) - 1)
+    else:
+        out.closest = _closest(out.utilization)
+    return out
+
+
+def _closest(utilization) -> tuple[int, int] | None:
+    """The pair of the lowest highest utilization; None where there is no pair."""
+    if not utilization.size:
+        return None
+    return tuple(int(k) for k in np.unravel_index(np.argmin(np.nan_to_num(utilization, nan=np.inf)),
+                                                  utilization.shape))
+
+
+def _pick(feasible, utilization, rms_share, g, mo, examine) -> tuple[int, int] | None:
+    """The pair :data:`RULE` picks among the feasible ones, ``examine`` asked motor by motor in the
+    rule's order (``feasible`` and ``utilization`` updated where it is)."""
+    motors = np.flatnonzero(feasible.any(axis=0))
+    for m in motors[np.lexsort((mo["J"][0, motors], mo["rated_torque"][0, motors]))]:
+        rows = np.flatnonzero(feasible[:, m])
+        rank = g["rank"][rows, 0]
+        if examine is not None:
+            u, passes, found = examine(int(m), rows)
+            u = np.asarray(u, float)
+            utilization[rows, m] = np.fmax(utilization[rows, m], u)
+            examined = ~np.isnan(u)
+            fails = ~np.asarray(passes, bool) | (examined & ~within_rating(u))
+            feasible[rows[fails], m] = False
+            ok = examined & ~fails
+            rows, rank = rows[ok], (rank if found is None else np.asarray(found, float))[ok]
+        if len(rows):
+            best = np.lexsort((g["i"][rows, 0], rms_share[rows, m], rank))[0]
+            return int(rows[best]), int(m)
+    return None

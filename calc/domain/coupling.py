@@ -33,7 +33,7 @@ import numpy as np
 
 from ..data.bands import factor_table
 from ..data.catalog import Catalog, Column, Rule, Schema, load_catalog, no_less, resolve  # noqa: F401 (load_catalog, resolve: the doctests)
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from .fits import Bore, parse_bore
 from ..core.formula import Formula
 from ..core.glossary import symbol
@@ -329,8 +329,8 @@ class CouplingCheck(CheckArray):
         return True if self.applies is None else bool(self.applies[row])
 
     def at(self, row: int, governs: bool = True):
-        """This check for one row; a row an optional check cannot be made for says why, and
-        decides nothing.
+        """This check for one row; a row it cannot be made for (no rated value) is not made and
+        says why, and an optional check's then decides nothing.
 
         Parameters
         ----------
@@ -351,9 +351,11 @@ class CouplingCheck(CheckArray):
             missing = self.missing if isinstance(self.missing, str) else self.missing[row]
             return dataclasses.replace(check, passes=bool(within_rating(self.utilization[row])) if made else None,
                                        not_made=None if made else missing)
-        if self.optional and check.utilization is None:
+        if check.utilization is None and self.made and check.not_made is None:
+            # A row without the value checked (a C_T the catalog leaves empty): not made, with why.
             missing = self.missing if isinstance(self.missing, str) else self.missing[row]
-            return dataclasses.replace(check, passes=None, governs=False, not_made=missing)
+            return dataclasses.replace(check, passes=None, governs=check.governs and not self.optional,
+                                       not_made=missing)
         return check
 
     def reason(self, row: int) -> str:
@@ -780,7 +782,7 @@ def _checked_case(catalog, kinds, given, excitation_frequency, shaft_1, shaft_2,
         if not np.any(A >= two_hubs):
             raise CalcError(
                 f"{where}.shaft_distance: {fmt(A, 'mm')} is shorter than the two hubs of every line shaft "
-                f"(2 H = {', '.join(fmt(h, 'mm') for h in two_hubs)}); expected A >= 2 H"
+                f"(2 H = {listing(fmt(h, 'mm') for h in two_hubs)}); expected A >= 2 H"
             )
     return _Case(M_a, J_drive, J_load, f_er, S_A, bore_1, bore_2, speed, T_A, A, no_torque, no_inertia)
 
@@ -961,7 +963,7 @@ def _only_for(value, rows_of_type, types, type_name: str, where: str, what: str)
     if value is not None and not rows_of_type.all():
         others = sorted(set(types[~rows_of_type]))
         raise CalcError(
-            f"{where}: {what} is for {type_name} couplings only, but the candidates include {', '.join(others)} "
+            f"{where}: {what} is for {type_name} couplings only, but the candidates include {listing(others)} "
             "couplings; "
             f"set type = \"{type_name}\" or remove the key"
         )
@@ -1001,7 +1003,7 @@ def order_lines(part: str, coupling_type: str, bores, disengagement_torque=None,
     ['Safety coupling SKB-30', 'D1 = 19 mm k6', 'T_A (disengagement torque) = 25 N·m']
     """
     if coupling_type not in TYPES:
-        raise CalcError(f"coupling type: expected one of {', '.join(TYPES)}, found {coupling_type!r}")
+        raise CalcError(f"coupling type: expected one of {listing(TYPES)}, found {as_found(coupling_type)}")
     if (disengagement_torque is not None) != (coupling_type == "safety"):
         raise CalcError(f"{part}: a disengagement torque T_A is given for safety couplings, and only for them (E10)")
     if (shaft_distance is not None) != (coupling_type == "line-shaft"):
@@ -1046,7 +1048,7 @@ def check_types(catalog: Catalog) -> None:
     unknown = np.flatnonzero(~np.isin(types, TYPES))
     if len(unknown):
         j = unknown[0]
-        raise CalcError(f"{where(j)}, column type: expected one of {', '.join(TYPES)}, found {types[j]!r}")
+        raise CalcError(f"{where(j)}, column type: expected one of {listing(TYPES)}, found {as_found(types[j])}")
     for t, columns in _TYPE_NEEDS.items():
         for column in columns:
             empty = np.flatnonzero((types == t) & np.isnan(catalog[column].magnitude))

@@ -25,7 +25,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..core.units import Q_, as_kind, sig, ureg
 
 #: Upper edge [mm] of each main size band of ISO 286-1 ("over the previous edge up to and
@@ -121,17 +121,19 @@ def split_class(tolerance_class: str, where: str = "tolerance class") -> tuple[s
     """
     m = _CLASS.match(tolerance_class.strip()) if isinstance(tolerance_class, str) else None
     if not m:
-        raise CalcError(f"{where}: expected an ISO 286 tolerance class such as 'k6' or 'H7', found {tolerance_class!r}")
+        raise CalcError(f"{where}: expected an ISO 286 tolerance class such as 'k6' or 'H7', found "
+                        f"{as_found(tolerance_class)}")
     letter, grade = m.group("letter"), int(m.group("grade"))
     if letter not in GRADES:
         raise CalcError(
-            f"{where}: unknown ISO 286 tolerance class {tolerance_class!r}; known are shafts "
-            f"{', '.join(k for k in GRADES if k.islower())} and holes {', '.join(k for k in GRADES if not k.islower())}"
+            f"{where}: unknown ISO 286 tolerance class {as_found(tolerance_class)}; known are shafts "
+            f"{listing(k for k in GRADES if k.islower())} and holes {listing(k for k in GRADES if not k.islower())}"
         )
     if grade not in GRADES[letter]:
         span = GRADES[letter]
         raise CalcError(
-            f"{where}: the tolerance class {tolerance_class!r} has grade IT{grade}; for {letter} the tables here "
+            f"{where}: the tolerance class {as_found(tolerance_class)} has grade IT{grade}; for {letter} the "
+            "tables here "
             f"cover IT{span.start} to IT{span.stop - 1}"
         )
     return letter, grade
@@ -270,9 +272,11 @@ def _length_unit(text: str, where: str, found: str):
     try:
         units = ureg.parse_units(text)
     except Exception:  # pint raises several types for an unknown unit
-        raise CalcError(f"{where}: the unit {text!r} in {found!r} is not one the unit registry knows") from None
+        raise CalcError(f"{where}: the unit {as_found(text)} in {as_found(found)} is not one the unit registry "
+                        "knows") from None
     if not ureg.Quantity(1, units).check("[length]"):
-        raise CalcError(f"{where}: expected a length unit such as mm or in, found {text!r} in {found!r}")
+        raise CalcError(f"{where}: expected a length unit such as mm or in, found {as_found(text)} in "
+                        f"{as_found(found)}")
     return units
 
 
@@ -283,7 +287,7 @@ def _number(text: str, where: str, found: str) -> float:
         return float(Fraction(text)) if "/" in text else float(text)
     except ZeroDivisionError:
         raise CalcError(
-            f"{where}: expected a fraction with a denominator above zero, found {text!r} in {found!r}"
+            f"{where}: expected a fraction with a denominator above zero, found {as_found(text)} in {as_found(found)}"
         ) from None
 
 
@@ -329,14 +333,15 @@ def parse_bore(text, where: str = "bore") -> Bore:
     """
     if not isinstance(text, str):
         raise CalcError(f"{where}: expected a shaft size with its tolerance as text, such as {_EXAMPLES}, found "
-                        f"{text!r}")
+                        f"{as_found(text)}")
     m = _BORE.match(text)
     if not m:
-        raise CalcError(f"{where}: expected a shaft size with its tolerance such as {_EXAMPLES}, found {text!r}")
+        raise CalcError(f"{where}: expected a shaft size with its tolerance such as {_EXAMPLES}, found "
+                        f"{as_found(text)}")
     unit = _length_unit(m.group("unit"), where, text)
     nominal = Q_(float(m.group("size")), unit)
     if not nominal.magnitude > 0:
-        raise CalcError(f"{where}: expected a shaft size above zero, found {text!r}")
+        raise CalcError(f"{where}: expected a shaft size above zero, found {as_found(text)}")
     size_text = _with_unit(m.group("size"), m.group("unit"))
     tolerance = member = lower = upper = None
     if m.group("cls"):
@@ -357,13 +362,14 @@ def parse_bore(text, where: str = "bore") -> Bore:
             )
         lower, upper = sorted((nominal + d).to(unit) for d in devs)
         if not upper > lower:
-            raise CalcError(f"{where}: the limits in {text!r} leave no tolerance; expected an upper limit above the "
+            raise CalcError(f"{where}: the limits in {as_found(text)} leave no tolerance; expected an upper "
+                            "limit above the "
                             "lower one")
     keyway = None
     order_text = size_text + (f" {tolerance}" if tolerance else "")
     if m.group("keyway"):
         keyway = Q_(_number(m.group("keyway"), where, text), _length_unit(m.group("keyway_unit"), where, text))
         if not keyway.magnitude > 0:
-            raise CalcError(f"{where}: expected a keyway width above zero, found {text!r}")
+            raise CalcError(f"{where}: expected a keyway width above zero, found {as_found(text)}")
         order_text += f", x {_with_unit(m.group('keyway'), m.group('keyway_unit'))} keyway"
     return Bore(order_text, nominal, tolerance, member, lower, upper, keyway)

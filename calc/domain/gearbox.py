@@ -28,8 +28,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data.bands import factor_table
-from ..data.catalog import Catalog, Column, Rule, Schema, some_parts, no_less
-from ..core.errors import CalcError
+from ..data.catalog import Catalog, Column, Rule, Schema, no_less
+from ..core.errors import CalcError, listing
 from ..core.formula import Formula
 from ..core import selection
 from ..core.checks import CheckArray, rank
@@ -524,8 +524,8 @@ def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
     mask = at_ratio & ~catalog.partial
     if not mask.any():
         usable = catalog["ratio"].m_as("")[~catalog.partial]
-        ratios = ", ".join(f"{r:g}" for r in sorted(set(usable.tolist())))
-        partial = (f" (only partial rows, never checked: {some_parts(catalog.parts[at_ratio])})" if at_ratio.any()
+        ratios = listing(f"{r:g}" for r in sorted(set(usable.tolist())))
+        partial = (f" (only partial rows, never checked: {listing(catalog.parts[at_ratio], limit=6)})" if at_ratio.any()
                    else "")
         raise CalcError(f"{where}: no gearbox in catalog {catalog.shown_name} has ratio {i:g}{partial}; its ratios are "
                         f"{ratios}")

@@ -35,7 +35,7 @@ import numpy as np
 
 from ..data.catalog import Column, load_catalog, resolve
 from ..core.citation import Band, Source, Validity
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found
 from ..core.formula import Formula
 from ..data.measurement import check_pair, read_measurement, travel_direction, write_measurement
 from ..core.units import Q_, as_kind, fmt  # noqa: F401 (fmt: the doctests print with it)
@@ -208,11 +208,11 @@ class LoopModel:
         for name in ("soft_share", "friction"):
             if not 0 <= getattr(self, name) < 1:
                 raise CalcError(f"loop model: {name}: expected a share from 0 to below 1, found "
-                                f"{getattr(self, name)!r}")
+                                f"{as_found(getattr(self, name))}")
         for name in ("soft_width", "gap_width"):
             if not 0 < getattr(self, name) < 0.25:
                 raise CalcError(f"loop model: {name}: expected a share above 0 and below 0.25, found "
-                                f"{getattr(self, name)!r}")
+                                f"{as_found(getattr(self, name))}")
         t_f = self.friction * t_n
         if t_f == 0:
             if j > 0:
@@ -321,7 +321,7 @@ class LoopModel:
             up to ±45 % of a step (a rig sampling in time while the torque rate varies).
         """
         if not isinstance(samples, (int, np.integer)) or samples < 2:
-            raise CalcError(f"loop model: samples: expected a whole number of 2 or more, found {samples!r}")
+            raise CalcError(f"loop model: samples: expected a whole number of 2 or more, found {as_found(samples)}")
         rng = np.random.default_rng(seed)
         t_n = self._si[1]
         corners = np.array([0.0, t_n, -t_n, t_n])

@@ -45,7 +45,7 @@ from pathlib import Path
 import numpy as np
 
 from ..data.catalog import _FLOAT, _HEADER, Catalog, Column, Rule, Schema, _header_unit, no_less, note_file_read
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..core.checks import CheckArray
 from ..core.citation import Source
 from ..core.formula import Formula
@@ -200,7 +200,7 @@ def read_curves(path: Path, parts) -> Curves:
             header[m.group(1)] = (len(header), m.group(2))
     for name in ("part", "curve", "source", "speed", "torque"):
         if name not in header:
-            raise CalcError(f"{path}, header: expected a column {name!r}, found {', '.join(header) or 'none'}")
+            raise CalcError(f"{path}, header: expected a column {as_found(name)}, found {listing(header) or 'none'}")
     factor = {c.name: Q_(1.0, _header_unit(path, c, header[c.name][1])).m_as("rad/s" if c.name == "speed" else "N*m")
               for c in CURVE_COLUMNS}
     known = set(str(p) for p in parts)
@@ -211,15 +211,17 @@ def read_curves(path: Path, parts) -> Curves:
         cell = {name: (row[k].strip() if k < len(row) else "") for name, (k, _) in header.items()}
         where = f"{path}, row {line}"
         if cell["part"] not in known:
-            raise CalcError(f"{where}, column part: {cell['part']!r} is no part of the motor catalog")
+            raise CalcError(f"{where}, column part: {as_found(cell['part'])} is no part of the motor catalog")
         if cell["curve"] not in CURVES:
-            raise CalcError(f"{where}, column curve: expected one of {', '.join(CURVES)}, found {cell['curve']!r}")
+            raise CalcError(f"{where}, column curve: expected one of {listing(CURVES)}, found "
+                            f"{as_found(cell['curve'])}")
         if not cell["source"]:
             raise CalcError(f"{where}, column source: expected the chart the points are read from, found an empty cell")
         values = []
         for name in ("speed", "torque"):
             if not _FLOAT.match(cell[name]) or float(cell[name]) < 0:
-                raise CalcError(f"{where}, column {name}: expected a number of zero or more, found {cell[name]!r}")
+                raise CalcError(f"{where}, column {name}: expected a number of zero or more, found "
+                                f"{as_found(cell[name])}")
             values.append(float(cell[name]) * factor[name])
         speeds, torques = points.setdefault((cell["part"], cell["curve"]), ([], []))
         if speeds and not values[0] > speeds[-1]:

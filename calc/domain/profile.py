@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..core.checks import BOUNDARY_RTOL
 from .cycle import PAUSE, PHASES
 from ..core.citation import Source
@@ -112,7 +112,7 @@ class Profile:
             phase, duration, speed, torque = seg
             at = f"{where}[{k}]"
             if phase not in PHASES:
-                raise CalcError(f"{at}.phase: expected one of {', '.join(PHASES)}, found {phase!r}")
+                raise CalcError(f"{at}.phase: expected one of {listing(PHASES)}, found {as_found(phase)}")
             d = as_kind(duration, "time", f"{at}.duration").m_as("s")
             if not d > 0:
                 raise CalcError(f"{at}.duration: expected a duration above zero, found {duration:~P}")

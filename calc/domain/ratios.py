@@ -12,12 +12,19 @@ each of its checks that the case gives a rating for.
 
 Rule for the ratio to pick (:func:`rule`): among the feasible ratios whose load to motor inertia
 ratio ``λ = (J_1 + J_L / i²) / J_motor`` (:data:`calc.domain.gearbox.inertia_ratio`, E6, the
-gearbox's own inertia counted, as the motor feels it) is at most the case's limit
+gearbox's own inertia counted, and a motor-side coupling's with it, as the motor's check counts it:
+one λ, :mod:`calc.domain.dynamics` says what its limit means) is at most the case's limit
 (``[motor] max_inertia_ratio``, :data:`calc.domain.gearbox.INERTIA_RATIO_LIMIT` where it gives none),
 the one of lowest RMS motor torque (the motor's thermal load, which decides the size of a motor on a cyclic
 axis; at a given motor, the lowest RMS utilization); a tie goes to the lower ratio (lower speeds).
 If no feasible ratio keeps ``λ`` within the limit, the feasible ratio of lowest ``λ``; where ``λ``
 is not known (no inertias), the RMS rule alone. No feasible ratio: no pick.
+
+Beside the pick, the textbook's **inertia-matching ratio** ``i_opt = √(J_L / J_in)``
+(:data:`optimal_ratio`): for a load that is inertia alone, the motor torque ``(J_in · i + J_L / i) · α_2``
+that accelerates it is least there (``J_in`` the motor's rotor with what turns at its speed, the
+coupling and the gearbox's ``J_1``; ``J_L`` the load at the output). With friction and process
+torque the ratio of least RMS motor torque, which the search finds, moves from it.
 """
 
 from __future__ import annotations
@@ -26,12 +33,23 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..data.catalog import Catalog
 from ..core.checks import within_rating
-from .gearbox import GearboxSelection, n_1, select_gearbox
+from ..core.citation import Source, Validity
+from ..core.formula import Formula
+from ..data.catalog import Catalog
+from .documents import MECHANICS
+from .gearbox import GearboxSelection, inertia_ratio, n_1, select_gearbox
 from .motor import MotorLoad, OutputLoad, motor_checks, motor_load
 from .profile import Profile
 from ..core.units import fmt, sig
+
+optimal_ratio = Formula(
+    "i_opt",
+    ("J_L", "J_in"),
+    lambda sp, J_L, J_in: sp.sqrt(J_L / J_in),
+    Source(MECHANICS.at(label="inertia matching", says="the motor torque (J_in · i + J_L / i) · α_2 is least where "
+                        "d/di = 0: i² = J_L / J_in", validity=Validity("a load that is inertia alone"))),
+)
 
 
 def rule(inertia_limit: float) -> str:
@@ -49,7 +67,8 @@ def rule(inertia_limit: float) -> str:
     """
     return (
         "among the feasible ratios (best gearbox and motor pass) whose inertia ratio "
-        f"λ = (J_1 + J_L / i²) / J_motor is at most {inertia_limit:g} (E6), the lowest RMS motor torque; a tie to "
+        f"λ = (J_1 + J_L / i²) / J_motor (J_1 with a motor-side coupling's J) is at most {inertia_limit:g} (E6), "
+        "the lowest RMS motor torque; a tie to "
         "the lower ratio; if none keeps λ within the limit, the feasible ratio of lowest λ"
     )
 
@@ -250,6 +269,9 @@ def search_ratios(
     # rows without T_2Not and a catalog's missing figures leave NaN: fmax ranks on the others
     utilization = np.fmax.reduce([sel.worst[rows], *[c.utilization for c in motor]], axis=0)
     lam = np.full(len(rows), np.nan) if sel.inertia_ratio is None else sel.inertia_ratio[rows]
+    if rotor_inertia is not None and J_1 is not None and sel.inertia_ratio is not None:
+        # λ as the motor's check counts it: J_1 with what turns at the motor's speed (a motor-side coupling)
+        lam = inertia_ratio(J_1=J_1, J_L=selection["load_inertia"], i=i, J_motor=motor_inertia).m_as("")
     not_made = [c.not_made for c in sel.not_made + motor if c.not_made]
     pick, reason = pick_ratio(ratios, sel.catalog.parts[rows], feasible, lam, torques, not_made, inertia_limit)
     return RatioSearch(sel, ratios, rows, torques, speed, motor, lam, inertia_limit,

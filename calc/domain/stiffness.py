@@ -38,7 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.citation import Band, Source, Validity
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found
 from ..core.formula import Formula, segment_sum
 from ..core.glossary import symbol
 from ..core.units import Q_, as_kind, fmt
@@ -286,7 +286,7 @@ class Component:
     def __post_init__(self):
         where = f"component {self.name!r}"
         if self.side not in SIDES:
-            raise CalcError(f"{where}: side: expected input or output, found {self.side!r}")
+            raise CalcError(f"{where}: side: expected input or output, found {as_found(self.side)}")
         c = as_kind(self.stiffness, "stiffness", f"{where}: stiffness")
         if not np.all(c.magnitude > 0):
             raise CalcError(f"{where}: stiffness: expected a stiffness above zero, found {c:~P}")
@@ -339,7 +339,8 @@ class Chain:
         elif any(c.side == "input" for c in self.components):
             first = next(c for c in self.components if c.side == "input")
             raise CalcError(
-                f"component {first.name!r}: sits on the input side, which is referred to the output through the "
+                f"component {as_found(first.name)}: sits on the input side, which is referred to the output "
+                "through the "
                 "gearbox ratio (E11), found no ratio"
             )
 

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..data.catalog import Column
 from ..core.citation import Source, Validity
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing
 from ..core.formula import Formula
 from ..core.glossary import symbol
 from ..data.measurement import check_pair, read_measurement, travel_direction, write_measurement
@@ -251,7 +251,7 @@ def analyze_trace(trace: Trace, ratio) -> TransmissionAnalysis:
         if covered[name] >= 360.0 * FULL_TURN:
             ranges[name] = Q_(np.array([error[mask].min(), error[mask].max()]), "arcsec")
     if not ranges:
-        found = ", ".join(f"{k} {v:.4g}°" for k, v in covered.items()) or "no direction with enough samples"
+        found = listing(f"{k} {v:.4g}°" for k, v in covered.items()) or "no direction with enough samples"
         raise CalcError(f"{where}: expected a full revolution of the output (360°) in at least one direction, found "
                         f"{found}")
     spans = {k: transmission_accuracy(Delta_phi_max=v[1], Delta_phi_min=v[0]) for k, v in ranges.items()}

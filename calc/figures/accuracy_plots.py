@@ -552,3 +552,43 @@ def positioning_rule_figure(chain: Chain, nominal_torque=None, applied_torque=No
         fontsize=9,
     )
     return fig
+
+
+def budget_figure(budget: dict):
+    """The error budget as horizontal bars: each contribution (systematic dark, random light), then
+    the worst case and the root-sum-square.
+
+    Parameters
+    ----------
+    budget : dict
+        ``accuracy.budget`` as the results write it (:meth:`calc.sections.accuracy.AccuracyResult.budget_json`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes.
+
+    Examples
+    --------
+    >>> b = {"contributions": [{"name": "φ_TA", "kind": "systematic", "value": {"value": 1.0}},
+    ...                        {"name": "twist", "kind": "random", "value": {"value": 0.4}}],
+    ...      "worst_case": {"value": 1.4}, "rss": {"value": 1.077}, "convention": "full width"}
+    >>> [round(p.get_width(), 3) for p in budget_figure(b).axes[0].patches]
+    [1.0, 0.4, 1.4, 1.077]
+    """
+    from matplotlib.figure import Figure
+
+    parts = budget["contributions"]
+    labels = [f"{c['name']} ({c['kind']})" for c in parts] + ["worst case", "root-sum-square"]
+    widths = [c["value"]["value"] for c in parts] + [budget["worst_case"]["value"], budget["rss"]["value"]]
+    colors = ["#1f5fa8" if c["kind"] == "systematic" else "#9ecae1" for c in parts] + ["#444444", "#888888"]
+    fig = Figure(figsize=(7.0, 0.5 + 0.45 * len(widths)), layout="constrained")
+    ax = fig.add_subplot()
+    y = np.arange(len(widths))[::-1]
+    ax.barh(y, widths, color=colors)
+    for k, w in zip(y, widths):
+        ax.annotate(f"{w:.3g} arcmin", (w, k), xytext=(3, 0), textcoords="offset points", va="center", fontsize=8)
+    ax.set_yticks(y, labels, fontsize=8)
+    ax.set_xlabel(f"arcmin ({budget['convention'].split(':')[0]})")
+    ax.set_xlim(0, 1.25 * max(widths))
+    return fig

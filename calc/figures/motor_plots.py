@@ -106,10 +106,11 @@ def torque_speed_figure(selection: MotorSelection, row: int):
     return fig
 
 
-def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
+def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None, optimal_ratio=None):
     """The case against the ratio: the motor's peak and RMS torque through each ratio's best
     gearbox (top), the governing utilization and the inertia ratio (bottom); feasible ratios
-    shaded, the picked one marked.
+    shaded, the picked one marked, the inertia-matching ratio dashed where it falls within the
+    catalog's ratios.
 
     Parameters
     ----------
@@ -119,6 +120,9 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
         The motor's ``T_1B``, drawn as a limit.
     rated_torque : pint.Quantity [N·m], optional
         The motor's ``T_1N``, drawn as a limit.
+    optimal_ratio : float, optional
+        ``i_opt = √(J_L / J_in)`` [1] (:data:`calc.domain.ratios.optimal_ratio`); named in the title,
+        drawn where it lies within the catalog's ratios.
 
     Returns
     -------
@@ -162,5 +166,11 @@ def ratio_figure(search: RatioSearch, peak_torque=None, rated_torque=None):
     bottom.set_xticks(x, [f"{r:g}\n{p}" for r, p in zip(x, search.parts)], fontsize=7)
     bottom.grid(True, color="#dddddd", linewidth=0.6)
     fig.legend(handles, labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
-    top.set_title("The case at every ratio of the catalog, each with its best gearbox", fontsize=10)
+    title = "The case at every ratio of the catalog, each with its best gearbox"
+    if optimal_ratio is not None:
+        title += f"; inertia matching: i_opt = {optimal_ratio:.3g}"
+        if x.min() <= optimal_ratio <= x.max():
+            for ax in (top, bottom):
+                ax.axvline(optimal_ratio, color="tab:gray", linestyle="--", linewidth=1.5)
+    top.set_title(title, fontsize=10)
     return fig

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing
 from ..core.glossary import math as symbol
 
 
@@ -58,7 +58,7 @@ def drive_train_figure(focus: tuple[str, ...] = ()):
     keys = [key for key, _, _ in MEMBERS]
     unknown = [f for f in focus if f not in keys]
     if unknown:
-        raise CalcError(f"focus: expected members among {', '.join(keys)}; found {', '.join(repr(f) for f in unknown)}")
+        raise CalcError(f"focus: expected members among {listing(keys)}; found {listing(repr(f) for f in unknown)}")
     fig = Figure(figsize=(8.0, 2.5), layout="constrained")
     ax = fig.subplots()
     width, gap, height = 1.6, 0.7, 1.5
@@ -101,11 +101,43 @@ def _label(ax, labels) -> None:
                     arrowprops={"arrowstyle": "-", "linewidth": 0.8, "color": "0.3"})
 
 
+#: The teeth of the planetary stage drawn: sun, each of the three planets, ring. It can be built:
+#: z_ring = z_sun + 2 z_planet; three equally spaced planets need (z_sun + z_ring) / 3 whole
+#: (108 / 3 = 36); the planets' tips clear each other (tip diameter 38 modules against a spacing of
+#: 27 · sqrt(3) = 46.8); a sun of 18 teeth is not undercut (at least 17 at 20°).
+PLANETARY_TEETH = {"sun": 18, "planet": 36, "ring": 90}
+
+
+def planetary_stage_ratio(teeth: dict = PLANETARY_TEETH) -> float:
+    """The ratio of a planetary stage with the ring fixed, the sun driving and the carrier driven.
+
+    .. math:: i = 1 + z_{ring} / z_{sun}
+
+    Parameters
+    ----------
+    teeth : dict
+        The teeth of ``"sun"`` and ``"ring"`` [1].
+
+    Returns
+    -------
+    float
+        i [1].
+
+    Examples
+    --------
+    >>> planetary_stage_ratio()  # 1 + 90 / 18
+    6.0
+    """
+    return 1 + teeth["ring"] / teeth["sun"]
+
+
 def planetary_gearbox_figure():
     """A one-stage planetary gearbox seen along its axis, as the catalogs' servo gearboxes are
     built: the sun on the input shaft (index 1), three planets on the carrier, which is the output
-    (index 2), and the ring gear fixed in the housing. Drawn to a ratio of 10: the ring's pitch
-    circle nine times the sun's (a 10:1 stage has a small sun and large planets).
+    (index 2), and the ring gear fixed in the housing. Drawn to scale with the teeth of
+    :data:`PLANETARY_TEETH`, a stage that can be built, of ratio 6. One stage stops near a ratio
+    of 10: the sun shrinks towards undercut and the planets grow until their tips touch (at
+    i = 10 with three planets, z_planet = 4 z_sun), so catalogs build higher ratios in two stages.
 
     Returns
     -------
@@ -123,31 +155,36 @@ def planetary_gearbox_figure():
 
     fig = Figure(figsize=(7.5, 4.2), layout="constrained")
     ax = fig.subplots()
-    sun, planet = 0.1, 0.4  # pitch radii: ring 0.9 = sun + 2 planets, ring / sun = 9, i = 10
-    ring = sun + 2 * planet
+    z = PLANETARY_TEETH
+    half_module = 0.9 / z["ring"]  # the ring's pitch radius 0.9: radius = z · module / 2
+    sun, planet, ring = (z[k] * half_module for k in ("sun", "planet", "ring"))
+    depth = 2.25 * 2 * half_module  # a tooth's whole depth, 2.25 modules
     ax.add_patch(Circle((0, 0), ring + 0.12, facecolor=OTHER_COLOR, edgecolor="black", linewidth=1.2))
-    ax.add_patch(Polygon(_gear((0, 0), ring, 72, 0.04, internal=True), facecolor="white", edgecolor="black",
+    ax.add_patch(Polygon(_gear((0, 0), ring, z["ring"], depth, internal=True), facecolor="white", edgecolor="black",
                          linewidth=0.8))
     centers = [(sun + planet) * np.array([np.cos(a), np.sin(a)]) for a in np.radians([90, 210, 330])]
     for c in centers:
-        ax.add_patch(Polygon(_gear(c, planet, 32, 0.04), facecolor="#cfe3f5", edgecolor="black", linewidth=0.8))
+        ax.add_patch(Polygon(_gear(c, planet, z["planet"], depth), facecolor="#cfe3f5", edgecolor="black",
+                             linewidth=0.8))
     # The carrier, a plate behind the planets, drawn over them: its arms join the planets' pins.
     ax.add_patch(Polygon(np.array(centers), closed=True, facecolor="none", edgecolor="#9a6b00", linewidth=2,
                          linestyle="--"))
     for c in centers:
         ax.add_patch(Circle(c, 0.035, facecolor="#9a6b00", edgecolor="black"))
-    ax.add_patch(Polygon(_gear((0, 0), sun, 8, 0.04), facecolor=FOCUS_COLOR, edgecolor="black", linewidth=0.8))
+    ax.add_patch(Polygon(_gear((0, 0), sun, z["sun"], depth), facecolor=FOCUS_COLOR, edgecolor="black",
+                         linewidth=0.8))
     ax.add_patch(Circle((0, 0), 0.03, facecolor="black"))
     labels = (
-        ((0, 0), (1.35, 0.55), "sun: on the input shaft (index 1: $n_1$, $T_1$)"),
-        (centers[1], (1.35, -0.05), "planets: roll between sun and ring"),
+        ((0, 0), (1.35, 0.55), f"sun: on the input shaft (index 1: $n_1$, $T_1$), {z['sun']} teeth"),
+        (centers[1], (1.35, -0.05), f"planets: roll between sun and ring, {z['planet']} teeth"),
         ((0.5 * (centers[0][0] + centers[2][0]), 0.5 * (centers[0][1] + centers[2][1])), (1.35, -0.45),
          "carrier (dashed): holds the planets, turns the output\n(index 2: $n_2 = n_1 / i$, $T_2$)"),
         ((ring * np.cos(np.radians(40)), ring * np.sin(np.radians(40))), (1.35, 0.95),
-         "ring gear: fixed in the housing"),
+         f"ring gear: fixed in the housing, {z['ring']} teeth"),
     )
     _label(ax, labels)
-    ax.text(0, -1.2, "the sun turns $i$ times while the carrier turns once (here $i$ = 10)", ha="center", fontsize=8.5)
+    ax.text(0, -1.2, f"the sun turns $i$ = 1 + {z['ring']} / {z['sun']} = {planetary_stage_ratio(z):g} times while "
+            "the carrier turns once", ha="center", fontsize=8.5)
     ax.set_xlim(-1.1, 3.3)
     ax.set_ylim(-1.3, 1.15)
     ax.set_aspect("equal")

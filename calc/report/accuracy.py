@@ -8,6 +8,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..sections import gearbox
+from ..core.units import Value
+from ..domain.accuracy import POSITIONING_CONVENTION
 from ..sections.accuracy import NAME, modelled_loop
 from .common import TableRenderer, result_of
 from .latex import latex_escape, listed, plain, prose, q, step_block, symbol_latex, symbol_math, table
@@ -93,11 +95,13 @@ class AccuracyRenderer(TableRenderer):
                  q(m.twist_at_applied_torque)] for m in a.members]
         return [
             r"\subsection{Accuracy: results}",
+            prose(f"Positioning accuracy and repeatability are stated as a {POSITIONING_CONVENTION}."),
             table(r"@{}l r p{0.6\linewidth}@{}", ["Symbol", "Value", "Description"], rows),
             table(r"@{}l l r r r r r@{}", ["Member", "Side", *map(symbol_math, ("C", "j_t", "phi_TA")),
                                            rf"$1/{symbol_latex('C')}$ [\%]", f"Twist at {symbol_math('T')}"], comp,
                   small=True,
                   caption=prose(f"Members of the chain referred to the output, at T = {plain(a.applied_torque)}")),
+            *_budget_blocks(r),
         ]
 
     def figures(self, report) -> list:
@@ -119,7 +123,8 @@ class AccuracyRenderer(TableRenderer):
         if r is None and g is None:
             return []
         from ..figures.accuracy_plots import (
-            hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure, transmission_error_figure,
+            budget_figure, hysteresis_figure, positioning_scatter_figure, stiffness_chain_figure,
+            transmission_error_figure,
         )
         from ..domain.hysteresis import read_loop
 
@@ -128,6 +133,9 @@ class AccuracyRenderer(TableRenderer):
         if spec is not None:
             out.append((stiffness_chain_figure(r.shown),
                         "Stiffness chain referred to the output (E11): each member's share of the twist."))
+            out.append((budget_figure(r.budget_json()),
+                        prose("Error budget of the positioning accuracy: each contribution (systematic or random), "
+                              "the worst case and the root-sum-square.")))
             for name, (path, analysis) in spec.loops.items():
                 # a relative display path lies in the checkout (an installed calc shows measurements absolute)
                 loop = read_loop(path if Path(path).is_absolute() else PROJECT_DIR / path)
@@ -182,11 +190,32 @@ class AccuracyRenderer(TableRenderer):
             ["", "repeatability" + (" (<b>not known</b>: a member's twist or backlash unknown)" if a.unknown_chain
                                     else " (upper bound)" if a.repeatability_is_bound else ""), value(a.repeatability)],
         ]
-        return "<h3>Accuracy of the chain</h3>" + html_table(["symbol", "quantity", "value"], rows, numeric={2})
+        b = r.budget_json()
+        budget = [[typeset(c["name"]), c["kind"], value(Value(c["value"]["value"], "arcmin")),
+                   f"{100 * c['share']:.0f} %"] for c in b["contributions"]]
+        budget += [["worst case", "", value(Value(b["worst_case"]["value"], "arcmin")), ""],
+                   ["root-sum-square", "", value(Value(b["rss"]["value"], "arcmin")), ""]]
+        return ("<h3>Accuracy of the chain</h3>" + html_table(["symbol", "quantity", "value"], rows, numeric={2})
+                + f"<h3>Error budget</h3><div class=note>{typeset(b['convention'])}</div>"
+                + html_table(["contribution", "kind", "value", "share"], budget, numeric={2, 3}))
 
     def compared(self) -> tuple:
         return (("positioning accuracy", lambda a: _shown(a, "positioning_accuracy", "unknown")),
                 ("lost motion", lambda a: _shown(a, "lost_motion", "unknown_chain")))
+
+
+def _budget_blocks(r) -> list[str]:
+    """The error budget in the report: its steps and its table (LaTeX)."""
+    b = r.budget
+    rows = [[prose(c.name), c.kind, q(Value.of(c.value, "arcmin")), f"{100 * share:.1f}", prose(c.why)]
+            for c, share in zip(b.contributions, b.shares)]
+    note = prose(f"Random ones alone (the systematic mapped out): {Value.of(b.rss_random, 'arcmin')}"
+                 + (f"; not known: {'; '.join(b.unknown)}" if b.unknown else "") + ".")
+    header = ["Contribution", "Kind", "Value", r"Share [\%]", "Why"]
+    return [table(r"@{}p{0.2\linewidth} l r r p{0.3\linewidth}@{}", header, rows,
+                  caption="Error budget of the positioning accuracy", note=note, small=True),
+            step_block("Worst case: every contribution added", b.worst_case),
+            step_block("Root-sum-square of the independent contributions", b.rss)]
 
 
 RENDERER = AccuracyRenderer()

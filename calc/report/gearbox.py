@@ -13,8 +13,8 @@ from html import escape
 from ..core.units import sig
 from ..sections import gearbox as sections_gearbox
 from . import common
-from .common import Renderer, block_doc, candidates_table, checks_table, input_row, page_doc, rejected
-from .latex import breakable, latex_escape, num, sources_list, stacked, step_block, symbol_math, table
+from .common import Renderer, block_doc, result_of, candidates_table, checks_table, input_row, page_doc, rejected
+from .latex import breakable, latex_escape, num, prose, sources_list, stacked, step_block, symbol_math, table
 from .page import FORCING, candidates_shown, table as html_table, utilization, value, verdict_cell
 from .ratios import RENDERER as RATIOS
 from .symbols import html as typeset
@@ -65,7 +65,8 @@ class GearboxRenderer(Renderer):
         sel = r.selection
         chosen = "the chosen gearbox" if sel.selected else "the closest candidate (none passes)"
         out = [rf"\subsection{{Checks of {chosen}, {latex_escape(str(sel.catalog.parts[int(sel.order[0])]))}}}"]
-        return out + [step_block(title, step, note) for title, step, note in r.steps]
+        out += [step_block(title, step, note) for title, step, note in r.steps]
+        return out + _one_lambda(report, r.steps)
 
     def checks(self, report) -> list[str]:
         r = self.result(report)
@@ -181,6 +182,21 @@ class GearboxRenderer(Renderer):
                 + html_table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None,
                              force=("gearbox.part", [c.part for c in shown]))
                 + more + search)
+
+
+def _one_lambda(report, steps) -> list[str]:
+    """Where the gearbox's λ leaves out a motor-side coupling (chosen after the gearbox), the one λ
+    the motor's check and the dynamics take, with its terms (LaTeX prose); else nothing."""
+    dynamics = result_of("dynamics", report)
+    lam = next((step.result.m_as("") for _, step, _ in steps if step.formula.name == "lambda"), None)
+    if dynamics is None or dynamics.two_mass is None or lam is None:
+        return []
+    tm = dynamics.two_mass
+    if abs(tm.inertia_ratio - float(lam)) <= 1e-9 * tm.inertia_ratio:
+        return []
+    return [prose(f"This λ leaves out the motor-side coupling, chosen after the gearbox. The one λ the motor's check "
+                  f"and the drive train's dynamics take counts it: λ = J_Lm / J_motor = {tm.J_Lm} / {tm.J_motor} = "
+                  f"{tm.inertia_ratio:.4g}.")]
 
 
 RENDERER = GearboxRenderer()

@@ -19,7 +19,7 @@ import sys
 from pathlib import Path
 
 from ..data.catalog import display_path, package_folder
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing
 
 #: The report notebook and template: package data ``calc.reports`` (the project's ``reports/``).
 REPORTS_DIR = package_folder("reports")
@@ -47,7 +47,7 @@ def check_tools() -> None:
     missing = [f"{tool} ({package})" for tool, package in TOOLS.items() if shutil.which(tool) is None]
     if missing:
         raise CalcError(
-            f"the PDF report needs {', '.join(missing)}, not found on this machine; on Debian run `make report` "
+            f"the PDF report needs {listing(missing)}, not found on this machine; on Debian run `make report` "
             "as root (it installs them), elsewhere install a TeX distribution with XeLaTeX, pandoc and the DejaVu "
             "fonts"
         )

@@ -33,6 +33,7 @@ class RatiosRenderer(Renderer):
         return [
             r"\subsection*{The ratio}",
             prose(r.search.reason),
+            *([] if r.optimal is None else [prose(r.optimal.line() + ".")]),
             table(r"@{}r l r r r r r l@{}",
                   [symbol_math("i"), "Best gearbox", "Utilization", *map(symbol_math, ("lambda", "T_1peak", "T_1rms")),
                    rf"${symbol_latex('n_2max')} \cdot i$", "Verdict"], rows,
@@ -48,9 +49,11 @@ class RatiosRenderer(Renderer):
         from ..figures.motor_plots import ratio_figure
 
         c = report.case
-        return [(ratio_figure(r.search, c.motor_peak_torque, c.motor_rated_torque),
-                 "The case against the ratio: motor torques, governing utilization and inertia ratio; "
-                 "feasible ratios shaded.")]
+        i_opt = None if r.optimal is None else r.optimal.value
+        return [(ratio_figure(r.search, c.motor_peak_torque, c.motor_rated_torque, i_opt),
+                 prose("The case against the ratio: motor torques, governing utilization and inertia ratio; "
+                       "feasible ratios shaded; the inertia-matching ratio i_opt named (dashed where the catalog "
+                       "reaches it)."))]
 
     def page_block(self, found) -> str:
         """The ratio search on the review's page: each ratio's best gearbox, whether it is feasible, λ
@@ -86,8 +89,13 @@ class RatiosRenderer(Renderer):
         header = ["ratio i", "best gearbox", "feasible", "utilization", "inertia ratio λ", typeset("T_1peak"),
                   typeset("T_1rms"), typeset("n_1max"), ""]
         marked = next((k for k, r in enumerate(found["ratios"]) if r["ratio"] == pick), None)
+        best = found.get("optimal_ratio")
+        matching = ""
+        if best and best["value"] is not None:
+            said = f"inertia matching: i_opt = √(J_L / J_in) = {sig(best['value'], 4)} ({best['inertias']})"
+            matching = f"<div class=note>{typeset(said)}; the pick minimizes the RMS motor torque</div>"
         return (f"<h3>Ratio search</h3><div class=note>{typeset(found['rule'])}</div>"
-                f"<div><b>{typeset(found['reason'])}</b></div>"
+                f"<div><b>{typeset(found['reason'])}</b></div>" + matching
                 + html_table(header, rows, numeric={0, 3, 4, 5, 6, 7}, marked=marked) + notes(found["notes"])
                 + ratio_search_svg(found))
 

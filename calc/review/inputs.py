@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found
 from ..core.units import NUMBER, Q_, parse_quantity, pretty_unit
 from ..report.symbols import symbol_text
 from ..sections import OWN_TABLES, axis, declared
@@ -546,7 +546,8 @@ def read_typed(text: str, spec: InputSpec) -> float:
     t = text.strip()
     unit = f" {pretty_unit(spec.unit)}" if spec.unit else ""
     if not TYPED.match(t):
-        raise CalcError(f"{t!r} is not a number: expected a number such as {spec.value:g} (in{unit or ' no unit'}), "
+        raise CalcError(f"{as_found(t)} is not a number: expected a number such as {spec.value:g} "
+                        f"(in{unit or ' no unit'}), "
                         "a decimal point or comma; not applied")
     v = float(t.replace(",", "."))
     if not math.isfinite(v) or not spec.low <= v <= spec.high:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found
 
 #: A new case file's name: letters, digits, ``-``, ``_`` and ``.``, ending in ``.toml``.
 _NAME = re.compile(r"^[\w][\w.-]*\.toml$")
@@ -33,7 +33,7 @@ def save_path(original: Path, name: str) -> Path:
         exists, raises :class:`calc.core.errors.CalcError` saying so.
     """
     if not _NAME.match(name) or name in (".", ".."):
-        raise CalcError(f"save as {name!r}: expected a file name such as {original.stem}-variant.toml "
+        raise CalcError(f"save as {as_found(name)}: expected a file name such as {original.stem}-variant.toml "
                         "(letters, digits, - _ .), no folder")
     path = original.parent / name
     if path.exists():

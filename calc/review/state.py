@@ -17,7 +17,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found
 from ..core.units import Q_
 from ..domain.mechanism import converted, converted_distance
 from ..sections import motion as motion_section
@@ -413,7 +413,7 @@ class ReviewState:
             else:
                 value = read_typed(text, spec)
             if value is None:
-                raise CalcError(f"{spec.label}: {text!r} is not one of its choices")
+                raise CalcError(f"{spec.label}: {as_found(text)} is not one of its choices")
             self.set_value(key, value)
 
     def changes(self) -> dict:
@@ -646,7 +646,7 @@ class ReviewState:
                 if not TYPED.match(t) or not float(t) > 0:
                     what = "lead" if type_ == "ball-screw" else "diameter"
                     raise CalcError(f"a {type_} needs its {what}: expected a number above zero "
-                                    f"(in {self.length_unit()}), found {size_text.strip()!r}")
+                                    f"(in {self.length_unit()}), found {as_found(size_text.strip())}")
                 size = Q_(float(t), self.length_unit())
             edit = mechanism_edit(self.changed_case(), type_, size, self.length_unit() == "in")
         except CalcError as exc:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, as_found
 from ..core.units import pretty_unit
 from .edit import edit_text, value_text
 from .keep import CaseFiles
@@ -136,7 +136,7 @@ class Variants:
         """(name, report) of a variant's state ``st``, from its case file as the review reads it."""
         path = files.named(st["case"])
         if path is None:
-            raise CalcError(f"no case file {st['case']!r} among the cases")
+            raise CalcError(f"no case file {as_found(st['case'])} among the cases")
         state = ReviewState(path)
         state.load()
         try:

@@ -11,12 +11,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..domain.accuracy import (ChainAccuracy, PositioningScatter, angle_of_arc, arc_length, chain_accuracy,
-                               read_positions)
+from ..domain.accuracy import (POSITIONING_CONVENTION, Budget, ChainAccuracy, PositioningScatter, angle_of_arc,
+                               arc_length, chain_accuracy, error_budget, read_positions)
 from .case import Case, Declared, Key, Table
 from ..data.catalog import display_path, load_catalog, load_catalogs, resolve
 from ..core.checks import CheckArray
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..core.units import Q_, Value, as_kind, fmt, parse_quantity, sig
 from ..data.measurement import measurement_path
 from ..domain.stiffness import SIDES, Chain, Component, StiffnessCurve
@@ -272,7 +272,7 @@ def accuracy_case(case: Case, given: AccuracyInputs, gearbox, coupling) -> Accur
     for k, name in enumerate(names):
         if name in names[:k]:
             first = tables[names.index(name)].key("name")
-            raise CalcError(f"{tables[k].where('name')}: the name {name!r} is already used by {first}")
+            raise CalcError(f"{tables[k].where('name')}: the name {as_found(name)} is already used by {first}")
     input_side = [t for t, c in zip(tables, components) if c.side == "input"]
     if input_side and ratio is None:
         raise CalcError(
@@ -293,7 +293,8 @@ def _requirement(sec: Table, key: str, out: AccuracyInputs):
         return _positive(sec, key, "angle")
     arc = sec.positive(key, "length", what="a length")
     if out.radius is None:
-        raise CalcError(f"{sec.where(key)}: a requirement given as a length ({sec.data[key]!r}) is an arc at a radius; "
+        raise CalcError(f"{sec.where(key)}: a requirement given as a length ({as_found(sec.data[key])}) is an "
+                        "arc at a radius; "
                         "give accuracy.radius as well")
     out.required_arcs[key.removeprefix("required_")] = arc
     return angle_of_arc(s=arc, r=out.radius)
@@ -312,14 +313,14 @@ def _positive(sec: Table, key: str, kind: str):
     q = sec.quantity(key, kind)
     if q is not None and not q.magnitude > 0:
         raise CalcError(f"{sec.where(key)}: expected {'an' if kind == 'angle' else 'a'} {kind} above zero, found "
-                        f"{sec.data[key]!r}")
+                        f"{as_found(sec.data[key])}")
     return q
 
 
 def _nonnegative_angle(t: Table, key: str):
     q = t.quantity(key, "angle")
     if q is not None and not q.magnitude >= 0:
-        raise CalcError(f"{t.where(key)}: expected an angle of zero or more, found {t.data[key]!r}")
+        raise CalcError(f"{t.where(key)}: expected an angle of zero or more, found {as_found(t.data[key])}")
     return q
 
 
@@ -413,7 +414,7 @@ def _check_measured_part(t: Table, part: str | None) -> None:
     if measured_on is not None and part != SELECTED:
         raise CalcError(f"{t.where('measured_part')}: measured_part names the part a measurement was made on when part "
                         "= \"selected\"; found "
-                        f"{'no part' if part is None else f'part = {part!r}, whose measurements are its own'}")
+                        f"{'no part' if part is None else f'part = {as_found(part)}, whose measurements are its own'}")
     if measured_on is not None and not measured:
         raise CalcError(f"{t.where('measured_part')}: measured_part names the part a measurement was made on; give "
                         "hysteresis or transmission_trace as well")
@@ -448,13 +449,13 @@ def read_component(t: Table) -> ComponentInputs:
     part = t.text("part")
     kind = t.text("kind")
     if kind not in PART_KINDS:
-        raise CalcError(f"{t.where('kind')}: expected one of {', '.join(PART_KINDS)}, found {kind!r}")
+        raise CalcError(f"{t.where('kind')}: expected one of {listing(PART_KINDS)}, found {as_found(kind)}")
     if t.has("kind") and part is None:
         raise CalcError(f"{t.where('kind')}: kind says which catalog a part comes from; give part as well")
     name = t.text("name", required=part is None)
     side = t.text("side", required=part is None)
     if side not in SIDES:
-        raise CalcError(f"{t.where('side')}: expected input or output, found {side!r}")
+        raise CalcError(f"{t.where('side')}: expected input or output, found {as_found(side)}")
     stiffness, curve = _positive(t, "stiffness", "stiffness"), None
     if t.has("stiffness_curve"):
         for key in ("stiffness", "part", "hysteresis"):
@@ -470,11 +471,12 @@ def read_component(t: Table) -> ComponentInputs:
     if part is not None:
         for key in ("stiffness", "backlash", "nominal_torque"):
             if t.has(key):
-                raise CalcError(f"{t.where(key)}: the part {part!r} gives its {key} from the catalog; give either part "
+                raise CalcError(f"{t.where(key)}: the part {as_found(part)} gives its {key} from the catalog; "
+                                "give either part "
                                 f"or {key}")
         if kind == "gearbox" and side != "output":
             raise CalcError(f"{t.where('side')}: a gearbox's catalog figures are referred to its output, so the part "
-                            f"{part!r} sits on the output side, found {side!r}")
+                            f"{as_found(part)} sits on the output side, found {as_found(side)}")
         if part == SELECTED and t.has("catalog"):
             raise CalcError(f"{t.where('catalog')}: part = \"selected\" takes the {kind} selection's catalog; "
                             "give no catalog")
@@ -559,7 +561,7 @@ def _coupling_figures(case: Case, c: ComponentInputs, f: Figures, coupling) -> s
     chosen, f.stiffness, coupling_side, source, stand_in = _coupling_part(case, t, c.part, coupling)
     if coupling_side is not None and t.has("side") and f.side != coupling_side:
         raise CalcError(f"{t.where('side')}: the coupling selection's coupling sits on the {coupling_side} side "
-                        f"(coupling.side), found {f.side!r}")
+                        f"(coupling.side), found {as_found(f.side)}")
     f.side = coupling_side or f.side
     f.backlash = Q_(0.0, "arcmin")
     f.chosen = chosen
@@ -715,7 +717,9 @@ def requirement_checks(spec: AccuracyCase, a: ChainAccuracy) -> list[CheckArray]
     list of calc.core.checks.CheckArray
         One check per required value [arcmin], the chain's value as the required side.
     """
-    values = {"positioning_accuracy": a.positioning_accuracy, "repeatability": a.repeatability}
+    # A term of the positioning accuracy unknown: it bounds nothing, the repeatability keeps the lost motion.
+    values = {"positioning_accuracy": a.positioning_accuracy,
+              "repeatability": a.repeatability if spec.unknown else a.repeatability_bound}
     return [
         CheckArray(name, "", f"{name} <= required", values[name].reshape(1), limit.reshape(1), "arcmin")
         for name, limit in spec.required.items()
@@ -1105,11 +1109,12 @@ def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
     """
     c = a.chain
     chain = chain_values(c, a.applied_torque, spec.loops, spec.traces)
+    repeatability = a.repeatability if spec.unknown else a.repeatability_bound
     arcs, check_arcs = {}, {}
     if spec.radius is not None:
         r = spec.radius
         for key in ("backlash", "lost_motion", "positioning_accuracy", "repeatability"):
-            angle = c.backlash if key == "backlash" else getattr(a, key)
+            angle = {"backlash": c.backlash, "repeatability": repeatability}.get(key, getattr(a, key, None))
             arcs[key] = Value.of(arc_length(r=r, phi=angle), "mm", f"accuracy.{key}_arc")
         for k in (k.at(0) for k in requirement_checks(spec, a)):
             check_arcs[k.name] = (Value.of(arc_length(r=r, phi=k.required), "mm", f"accuracy.{k.name}"),
@@ -1127,7 +1132,7 @@ def accuracy_values(spec: AccuracyCase, a: ChainAccuracy) -> AccuracyValues:
         transmission_accuracy_from=c.transmission_accuracy_from, lost_motion=Value.of(a.lost_motion, "arcmin"),
         positioning_rule=a.rule.text, positioning_accuracy=Value.of(a.positioning_accuracy, "arcmin"),
         unknown=list(spec.unknown), unknown_chain=list(spec.unknown_chain),
-        repeatability=Value.of(a.repeatability, "arcmin"), repeatability_is_bound=a.repeatability_is_bound,
+        repeatability=Value.of(repeatability, "arcmin"), repeatability_is_bound=a.repeatability_is_bound,
         members=chain.members, radius=None if spec.radius is None else Value.of(spec.radius, "mm"), arcs=arcs,
         check_arcs=check_arcs,
         positioning=positioning,
@@ -1171,6 +1176,57 @@ class AccuracyResult(Result):
     @functools.cached_property
     def shown(self) -> AccuracyValues:
         return accuracy_values(self.inputs, self.accuracy)
+
+    @functools.cached_property
+    def budget(self) -> Budget:
+        """The positioning accuracy's error budget (:func:`calc.domain.accuracy.error_budget`)."""
+        return error_budget(self.accuracy)
+
+    @property
+    def repeatability_basis(self) -> str:
+        """What the repeatability stated rests on, in words."""
+        a = self.accuracy
+        if not a.repeatability_is_bound:
+            return "the backlash at T = 0"
+        if self.shown.repeatability.value < a.repeatability.m_as("arcmin"):
+            return (f"the positioning accuracy, a full width, tighter than the lost motion "
+                    f"{fmt(a.repeatability, 'arcmin')}")
+        return "bounded by the lost motion under torque"
+
+    def budget_json(self) -> dict:
+        """``accuracy.budget``: the contributions with their kind and share, worst case and RSS.
+
+        Returns
+        -------
+        dict
+            convention, worst_case, rss, rss_random, contributions (name, kind, value, share, why), unknown.
+        """
+        b = self.budget
+        return {
+            "convention": POSITIONING_CONVENTION,
+            "worst_case": Value.of(b.worst_case.result, "arcmin").to_json(),
+            "rss": Value.of(b.rss.result, "arcmin").to_json(),
+            "rss_random": Value.of(b.rss_random, "arcmin").to_json(),
+            "contributions": [{"name": c.name, "kind": c.kind, "value": Value.of(c.value, "arcmin").to_json(),
+                               "share": share, "why": c.why} for c, share in zip(b.contributions, b.shares)],
+            "unknown": list(b.unknown),
+        }
+
+    def budget_lines(self) -> list[str]:
+        """The error budget as lines of the text summary.
+
+        Returns
+        -------
+        list of str
+        """
+        b = self.budget
+        lines = [f"  Error budget of the positioning accuracy ({POSITIONING_CONVENTION}):"]
+        lines += [f"    {c.name:<24} {c.kind:<10} {fmt(c.value, 'arcmin'):>14}  {100 * share:5.1f} %"
+                  for c, share in zip(b.contributions, b.shares)]
+        lines.append(f"    worst case {fmt(b.worst_case.result, 'arcmin')}; root-sum-square "
+                     f"{fmt(b.rss.result, 'arcmin')}; the random ones alone (the systematic mapped out) "
+                     f"{fmt(b.rss_random, 'arcmin')}")
+        return lines + [f"    not known: {u}" for u in b.unknown]
 
     @functools.cached_property
     def arc_steps(self) -> list:
@@ -1222,6 +1278,9 @@ class AccuracyResult(Result):
             "lost_motion_is_lower_bound": bool(v.unknown_chain), "repeatability_is_lower_bound": bool(v.unknown_chain),
             "C_total_is_upper_bound": bool(v.unknown_chain),
             "repeatability": v.repeatability.to_json(), "repeatability_is_bound": v.repeatability_is_bound,
+            "repeatability_basis": self.repeatability_basis,
+            "positioning_convention": POSITIONING_CONVENTION,
+            "budget": self.budget_json(),
             "components": [_member_json(m) for m in v.members],
         }
         if v.radius is not None:
@@ -1291,8 +1350,7 @@ class AccuracyResult(Result):
             f"{v.positioning_accuracy} (E13)"
             + (f"; a lower bound: unknown {'; '.join(v.unknown)}" if v.unknown else ""),
             f"  Repeatability {'<=' if v.repeatability_is_bound else '='} {v.repeatability} "
-            f"({'bounded by the lost motion under torque' if v.repeatability_is_bound else 'the backlash at T = 0'}"
-            ", E13)"
+            f"({self.repeatability_basis}, E13)"
             + (f"; not known: unknown {'; '.join(v.unknown_chain)}" if v.unknown_chain else ""),
         ]
         if v.radius is not None:
@@ -1314,6 +1372,7 @@ class AccuracyResult(Result):
                              f"{t.transmission_accuracy} ({t.direction})")
         if self.modelled_loop is not None:
             lines.append(self.modelled_loop.summary_line())
+        lines += self.budget_lines()
         if v.positioning is not None:
             p = v.positioning
             lines.append(

@@ -6,19 +6,19 @@ its own; the sections after it read the case with that motor (:class:`AxisResult
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from .case import Case, Declared, Key, Table
-from .evaluation import results_of
+from . import pairs
 from .protocol import Section
-from ..data.catalog import load_catalogs
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..domain.fits import parse_bore
 from ..data.measurement import measurement_path
 from ..domain.gearbox import INERTIA_RATIO_LIMIT, OutputForces
-from ..domain.motor_ratings import ELECTRICAL, SCHEMA
+from ..domain.motor_ratings import ELECTRICAL
+from .motor_catalog import motor_catalog, motor_ratings
 
 ORDER = 10
 MOTOR = Declared("motor", (
@@ -93,8 +93,9 @@ def read(top: Table, case: Case) -> None:
         if peak is not None and rated is not None and rated.m_as("N*m") > peak.m_as("N*m"):
             raise CalcError(
                 f"{motor.where('rated_torque')}: expected a continuous torque at most the peak torque "
-                f"motor.peak_torque = {motor.data['peak_torque']!r} (a motor's peak is above its continuous rating), "
-                f"found {motor.data['rated_torque']!r}"
+                f"motor.peak_torque = {as_found(motor.data['peak_torque'])} (a motor's peak is above its "
+                "continuous rating), "
+                f"found {as_found(motor.data['rated_torque'])}"
             )
         if motor.has("shaft"):
             case.motor_shaft = parse_bore(motor.data["shaft"], motor.where("shaft"))
@@ -159,62 +160,21 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
         if case.motor_dc_link is not None and missing:
             raise CalcError(f"{motor.where('dc_link_voltage')}: the voltage limit needs the electrical data of "
                             f"{case.motor_part}, but {cat.catalog_of(row)} (row {cat.lines[row]}) "
-                            f"gives no {', '.join(missing)}")
-
-
-def motor_ratings(cat, row: int) -> dict:
-    """The case's fields a catalog motor gives.
-
-    Parameters
-    ----------
-    cat : calc.data.catalog.Catalog
-        A motor catalog, of :data:`calc.domain.motor_ratings.SCHEMA`.
-    row : int
-        The motor's row.
-
-    Returns
-    -------
-    dict
-        Field of :class:`calc.sections.case.Case` -> value: its maximum torque as T_1B, its rated
-        torque, top speed and rotor inertia.
-    """
-    return {"motor_peak_torque": cat["M_max"][row], "motor_rated_torque": cat["M_N"][row],
-            "motor_max_speed": cat["n_max"][row], "motor_inertia": cat["J"][row]}
-
-
-def motor_catalog(case: Case):
-    """The case's motor catalog.
-
-    Parameters
-    ----------
-    case : calc.sections.case.Case
-        The case as read.
-
-    Returns
-    -------
-    calc.data.catalog.Catalog
-        Of :data:`calc.domain.motor_ratings.SCHEMA` (read once per run,
-        :func:`calc.data.catalog.load_catalog`).
-    """
-    return load_catalogs(case.motor_catalog, case.folder, f"{case.path}: motor.catalog", SCHEMA)
+                            f"gives no {listing(missing)}")
 
 
 def _distance(load: Table, key: str):
     """A distance of a force on the output: zero or more."""
     q = load.quantity(key)
     if q is not None and not q.magnitude >= 0:
-        raise CalcError(f"{load.where(key)}: expected a distance of zero or more, found {load.data[key]!r}")
+        raise CalcError(f"{load.where(key)}: expected a distance of zero or more, found {as_found(load.data[key])}")
     return q
-
-
-#: Rounds of choosing the motor and the gearbox in turn before the choice must have settled.
-ROUNDS = 4
 
 
 @dataclass(frozen=True)
 class AxisResult:
-    """The case with the ratings and inertia of the motor it is checked with, and that motor where
-    the catalog chose it.
+    """The case with the ratings and inertia of the motor it is checked with, and the motor and
+    gearbox where the catalog chose them.
 
     Parameters
     ----------
@@ -222,21 +182,22 @@ class AxisResult:
         The case with that motor's ratings and inertia.
     chosen : str, optional
         The motor the catalog chose; None where the case names or types its motor.
-    evaluated : dict, optional
-        The results of the sections the choice evaluated with that motor, by name.
+    gearbox : str, optional
+        The gearbox chosen with it (the gearbox section puts it first where it passes); None for a
+        direct drive, or where the case names or types its motor.
     """
 
     case: Case
     chosen: str | None = None
-    evaluated: dict = field(default_factory=dict, repr=False, compare=False)
+    gearbox: str | None = None
 
 
 def chosen_motor(case: Case) -> AxisResult:
-    """The motor a catalog gives (``[motor] catalog`` without a ``part``), so that every section
-    checks with that motor: the motor is ranked through the gearbox (the motor section of a
-    variant of the case, :func:`calc.sections.evaluation.results_of`), the gearbox chosen with
-    the motor's peak torque, and again, until the motor stays the same; the case itself where it
-    names its motor or types it.
+    """The motor and the gearbox a case with a motor catalog (``[motor] catalog`` without a
+    ``part``) is checked with: the pair the motor x gearbox search of its rows picks
+    (:func:`calc.sections.pairs.case_pairs`, by :data:`calc.domain.combinations.RULE`: the
+    smallest adequate motor, for it the gearbox the gearbox ranking puts first), or the pair
+    closest to passing where none passes; the case itself where it names its motor or types it.
 
     Parameters
     ----------
@@ -246,28 +207,18 @@ def chosen_motor(case: Case) -> AxisResult:
     Returns
     -------
     AxisResult
-        The case with the chosen motor's ratings and inertia, and that motor.
-
-    Raises
-    ------
-    CalcError
-        Where the motor and the gearbox chosen in turn do not settle within :data:`ROUNDS`.
+        The case with the chosen motor's ratings and inertia, that motor and its gearbox.
     """
     if case.motor_catalog is None or case.motor_part is not None:
         return AxisResult(case)
-    chosen, seen, trial = None, [], case
-    for _ in range(ROUNDS):
-        given = {SECTION.NAME: AxisResult(trial)}
-        evaluated = results_of(trial, ("motor",), given)
-        sel = evaluated["motor"].selection
-        pick = str(sel.catalog.parts[sel.order[0]])
-        if pick == chosen:
-            return AxisResult(trial, pick, {k: v for k, v in evaluated.items() if k not in given})
-        chosen = pick
-        seen.append(pick)
-        trial = dataclasses.replace(case, **motor_ratings(sel.catalog, int(sel.order[0])))
-    raise CalcError(f"{case.path}: motor.catalog: the motor and the gearbox chosen in turn do not settle "
-                    f"({' -> '.join(seen)}); name the motor with motor.part")
+    found = pairs.case_pairs(case)
+    if found.chosen is None:  # no motor or no gearbox row to pair: the motor section says so
+        return AxisResult(case)
+    g, m = found.chosen
+    cat = motor_catalog(case)
+    row = cat.index(str(found.motor_parts[m]), f"{case.path}: motor.catalog")
+    gearbox = None if case.ratio is None and case.gearbox_part is None else str(found.gearbox_parts[g])
+    return AxisResult(dataclasses.replace(case, **motor_ratings(cat, row)), str(found.motor_parts[m]), gearbox)
 
 
 class DriveSection(Section):
@@ -289,9 +240,6 @@ class DriveSection(Section):
 
     def checked(self, case: Case, result: AxisResult) -> Case:
         return result.case
-
-    def evaluated_with(self, result: AxisResult) -> dict:
-        return result.evaluated
 
 
 SECTION = DriveSection()

@@ -18,7 +18,7 @@ import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..domain.gearbox import INERTIA_RATIO_LIMIT
 from ..domain.profile import Profile
 from ..core.units import kind_phrase, parse_quantity
@@ -154,7 +154,7 @@ class Table:
         allowed = key_names(allowed)
         for key in data:
             if key not in allowed:
-                raise CalcError(f"{path}: {self.key(key)}: unknown key; {name} takes {', '.join(allowed)}")
+                raise CalcError(f"{path}: {self.key(key)}: unknown key; {name} takes {listing(allowed)}")
 
     def key(self, key: str) -> str:
         """A key's path from the file's top level.
@@ -267,7 +267,7 @@ class Table:
         q = self.quantity(key, kind, required)
         if q is not None and not q.magnitude > 0:
             raise CalcError(f"{self.where(key)}: expected {what or kind_phrase(kind)} above zero, "
-                            f"found {self.data[key]!r}")
+                            f"found {as_found(self.data[key])}")
         return q
 
     def text(self, key: str, required: bool = False, default=None):
@@ -293,14 +293,14 @@ class Table:
             return declared if default is None else default
         value = self.data[key]
         if not isinstance(value, str):
-            raise CalcError(f"{self.where(key)}: expected a text in quotes, found {value!r}")
+            raise CalcError(f"{self.where(key)}: expected a text in quotes, found {as_found(value)}")
         return value
 
     def _one_or_more(self, key: str, value, what: str):
         """``value`` where it is a text or a non-empty list of texts; else an error naming ``what``."""
         if isinstance(value, str) or (isinstance(value, list) and value and all(isinstance(v, str) for v in value)):
             return value
-        raise CalcError(f"{self.where(key)}: expected {what} in quotes, or a list of them, found {value!r}")
+        raise CalcError(f"{self.where(key)}: expected {what} in quotes, or a list of them, found {as_found(value)}")
 
     def texts(self, key: str) -> tuple:
         """A text or a list of texts at a key.

@@ -17,7 +17,7 @@ from ..domain.coupling import (
     DEFAULT_SERVICE_FACTOR, SCHEMA, SIDES, TEMPERATURE_FACTORS, TYPES, CouplingSelection, DriveTrain, J_load_at_input,
     check_types, f_e_min, order_lines, select_coupling,
 )
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..domain.fits import parse_bore
 from ..domain.gearbox import n_1
 from ..domain.profile import Z_h
@@ -183,7 +183,7 @@ def read_inputs(case: Case) -> CouplingInputs:
     catalog, wanted = _candidates(case, s)
     side = s.text("side")
     if side is not None and side not in SIDES:
-        raise CalcError(f"{s.where('side')}: expected one of {', '.join(SIDES)}, found {side!r}")
+        raise CalcError(f"{s.where('side')}: expected one of {listing(SIDES)}, found {as_found(side)}")
     derivable = FROM_THE_CASE[:3] if side == "input" else ()  # speed only with a gearbox: not among the keys needed
     for key in ("accel_torque", "drive_inertia", "load_inertia", "excitation_frequency", "shaft_1", "shaft_2"):
         if not s.has(key) and key not in derivable:
@@ -256,13 +256,14 @@ def _candidates(case: Case, s: Table) -> tuple[Catalog, str | None]:
     check_types(catalog)
     wanted = s.text("type")
     if wanted is not None and wanted not in TYPES:
-        raise CalcError(f"{s.where('type')}: unknown coupling type {wanted!r}; expected one of {', '.join(TYPES)}")
+        raise CalcError(f"{s.where('type')}: unknown coupling type {as_found(wanted)}; expected one of "
+                        f"{listing(TYPES)}")
     part = s.text("part")
     if part is not None:
         row = catalog.usable_index(part, s.where("part"))
         if wanted is not None and catalog.text["type"][row] != wanted:
             raise CalcError(f"{s.where('part')}: {part} is a {catalog.text['type'][row]} coupling, "
-                            f"but coupling.type is {wanted!r}")
+                            f"but coupling.type is {as_found(wanted)}")
         return catalog.rows([row]), wanted
     if wanted is not None:
         mask = catalog.text["type"] == wanted
@@ -688,8 +689,13 @@ class CouplingResult(Result):
             return None
         row = int(sel.order[0])
         chain, train = sel.chain, sel.drive_train
+        part = str(sel.catalog.parts[row])
+        empty = [f"the {name}'s stiffness ({part if name == 'coupling' else name}: the catalog leaves it empty)"
+                 for name, C in zip(chain.springs, chain.stiffnesses[row]) if np.isnan(C.magnitude)]
+        empty += [f"the inertia of {name} ({part}: the catalog leaves the coupling's J empty)"
+                  for name, J in zip(chain.masses, chain.inertias[row]) if np.isnan(J.magnitude)]
         return Torsion(
-            part=str(sel.catalog.parts[row]), shaft=train.shaft, complete=train.complete, missing=list(train.missing),
+            part=part, shaft=train.shaft, complete=train.complete and not empty, missing=list(train.missing) + empty,
             masses=[(name, Value.of(chain.inertias[row, k], "kg*cm**2")) for k, name in enumerate(chain.masses)],
             springs=[(name, Value.of(chain.stiffnesses[row, k], "N*m/rad")) for k, name in enumerate(chain.springs)],
             natural_frequencies=[Value.of(f, "Hz") for f in sel.modes[row]],

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..data.catalog import display_path
 from .common import SHOWN_CANDIDATES, Verdict
 from .protocol import Section
@@ -102,14 +102,14 @@ def requirement_order(found: tuple) -> tuple:
     for s in found:
         unknown = [r for r in s.REQUIRES if r not in names]
         if unknown:
-            raise CalcError(f"section {s.NAME} requires {unknown[0]!r}, which is no section; "
-                            f"the sections are {', '.join(sorted(names))}")
+            raise CalcError(f"section {s.NAME} requires {as_found(unknown[0])}, which is no section; "
+                            f"the sections are {listing(sorted(names))}")
     done, out = set(), []
     while len(out) < len(found):
         ready = next((s for s in found if s.NAME not in done and set(s.REQUIRES) <= done), None)
         if ready is None:
             cycle = _cycle([s for s in found if s.NAME not in done])
-            raise CalcError(f"the sections require each other in a cycle: {' -> '.join(cycle)}")
+            raise CalcError(f"the sections require each other in a cycle: {listing(cycle, ' -> ')}")
         done.add(ready.NAME)
         out.append(ready)
     return tuple(out)

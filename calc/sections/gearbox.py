@@ -10,7 +10,7 @@ import numpy as np
 from ..data.bands import factor_table
 from .case import Case, Declared, Key, Table
 from ..data.catalog import load_catalogs
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..domain.gearbox import (
     HUB_SCHEMA, SCHEMA, SHOCK_FACTORS, GearboxSelection, M_2k, T_2max, inertia_ratio, n_1, rows_at_ratio, same_ratio,
     select_gearbox, shock_factor,
@@ -93,14 +93,14 @@ def catalogs(case: Case) -> tuple:
     if case.gearbox_family:
         unknown = [f for f in case.gearbox_family if not (catalog.family == f).any()]
         if unknown:
-            known = ", ".join(sorted(set(catalog.family.tolist())))
+            known = listing(sorted(set(catalog.family.tolist())))
             raise CalcError(f"{where}.family: the catalog {catalog.shown_name} has no gearbox of family "
-                            f"{unknown[0]!r}; its families are {known}")
+                            f"{as_found(unknown[0])}; its families are {known}")
         if case.gearbox_part is not None:
             family = catalog.family[catalog.index(case.gearbox_part, f"{where}.part")]
             if family not in case.gearbox_family:
-                families = " or ".join(map(repr, case.gearbox_family))
-                raise CalcError(f"{where}.part: {case.gearbox_part} is of family {family!r}, "
+                families = listing(map(repr, case.gearbox_family), " or ")
+                raise CalcError(f"{where}.part: {case.gearbox_part} is of family {as_found(family)}, "
                                 f"but gearbox.family is {families}")
         catalog = catalog.rows(np.isin(catalog.family, case.gearbox_family))
     return catalog, case.gearbox_hubs
@@ -312,8 +312,11 @@ class GearboxSection(Section):
         return case.ratio is not None or case.gearbox_part is not None
 
     def evaluate(self, case: Case, earlier) -> GearboxResult:
-        case = earlier["axis"].case
+        axis = earlier["axis"]
+        case = axis.case
         selection = gearbox_selection(case)
+        if axis.gearbox is not None:  # chosen with the motor (calc.sections.axis)
+            selection.put_first(axis.gearbox)
         return GearboxResult(selection, check_steps(case, selection))
 
 

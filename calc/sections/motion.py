@@ -14,7 +14,7 @@ import numpy as np
 from .case import Case, Declared, Key, Table, key_names
 from ..data.catalog import Column
 from ..domain.cycle import PHASES, SampledCycle
-from ..core.errors import CalcError
+from ..core.errors import CalcError, listing, as_found
 from ..data.measurement import measurement_path, read_measurement
 from ..domain.inertia import FORMULAS, SHAPES, Body
 from ..domain.mechanism import TYPES, Mechanism, phi_2
@@ -184,7 +184,7 @@ def nonnegative(table: Table, key: str):
     q = table.quantity(key)
     if q.magnitude < 0:
         raise CalcError(f"{table.where(key)}: expected {kind_phrase(table.kind(key))} of zero or more, "
-                        f"found {table.data[key]!r}")
+                        f"found {as_found(table.data[key])}")
     return q
 
 
@@ -207,18 +207,18 @@ def read_mechanism(top: Table) -> Mechanism | None:
     any_keys = tuple(raw) if isinstance(raw, dict) else ()
     type_ = Table(top.path, MECHANISM.name, raw, any_keys).text("type", required=True)
     if type_ not in TYPES:
-        raise CalcError(f"{top.path}: mechanism.type: expected one of {', '.join(TYPES)}, found {type_!r}")
+        raise CalcError(f"{top.path}: mechanism.type: expected one of {listing(TYPES)}, found {as_found(type_)}")
     allowed = keys_of(type_)
     names = key_names(allowed)
     for key in raw:
         owner = next((t for t in TYPES if key in key_names(keys_of(t))), None)
         if key not in names and owner is not None:
             raise CalcError(f"{top.path}: mechanism.{key}: a key of a {owner} mechanism; "
-                            f"a {type_} mechanism takes {', '.join(names)}")
+                            f"a {type_} mechanism takes {listing(names)}")
     t = Table(top.path, MECHANISM.name, raw, allowed)
     brake = t.data.get("holding_brake", MECHANISM.key("holding_brake").default)
     if not isinstance(brake, bool):
-        raise CalcError(f"{t.where('holding_brake')}: expected true or false, found {brake!r}")
+        raise CalcError(f"{t.where('holding_brake')}: expected true or false, found {as_found(brake)}")
     if type_ == "rotary":
         bodies = tuple(read_body(b) for b in t.tables("body", BODY_KEYS))
         given = t.positive("inertia", required=not bodies)
@@ -229,7 +229,7 @@ def read_mechanism(top: Table) -> Mechanism | None:
         )
     eta = t.positive("eta", required=True, what="an efficiency")
     if eta.m_as("") > 1:
-        raise CalcError(f"{t.where('eta')}: expected an efficiency of at most 1, found {t.data['eta']!r}")
+        raise CalcError(f"{t.where('eta')}: expected an efficiency of at most 1, found {as_found(t.data['eta'])}")
     radius_key, own_key = OWN_KEYS[type_]
     size = t.positive(radius_key, required=True)
     return Mechanism(
@@ -257,18 +257,18 @@ def read_body(t: Table) -> Body:
     """
     shape = t.text("shape", required=True)
     if shape not in SHAPES:
-        raise CalcError(f"{t.where('shape')}: expected one of {', '.join(SHAPES)}, found {shape!r}")
+        raise CalcError(f"{t.where('shape')}: expected one of {listing(SHAPES)}, found {as_found(shape)}")
     needed = FORMULAS[shape][2]
     dimensions = {}
     for key, name in BODY_DIMENSIONS.items():
         if name in needed:
             dimensions[name] = t.positive(key, required=True)
         elif t.has(key):
-            takes = ", ".join(k for k, n in BODY_DIMENSIONS.items() if n in needed)
+            takes = listing(k for k, n in BODY_DIMENSIONS.items() if n in needed)
             raise CalcError(f"{t.where(key)}: a {shape} takes {takes}, not {key}")
     if shape == "hollow-cylinder" and not dimensions["d_i"] < dimensions["D"]:
         raise CalcError(f"{t.where('inner_diameter')}: expected an inner diameter below the outer "
-                        f"{t.data['diameter']!r}, found {t.data['inner_diameter']!r}")
+                        f"{as_found(t.data['diameter'])}, found {as_found(t.data['inner_diameter'])}")
     if t.has("mass") == t.has("density"):
         raise CalcError(f"{t.where('mass')}: give the body's mass or its material's density, one of them, "
                         f"found {'both' if t.has('mass') else 'neither'}")
@@ -307,7 +307,7 @@ def read_move(t: Table, mechanism: Mechanism):
         raise CalcError(f"{exc} ({how})") from None
     if distance.magnitude == 0:
         raise CalcError(f"{t.where('distance')}: expected a distance other than zero (a pause is a dwell), "
-                        f"found {t.data['distance']!r}")
+                        f"found {as_found(t.data['distance'])}")
     time = t.positive("time", required=True).m_as("s")
     accel = t.positive("accel_time", required=True).m_as("s")
     decel = t.positive("decel_time")

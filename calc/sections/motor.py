@@ -22,7 +22,7 @@ from ..domain.motor import (
 from ..domain.motor_ratings import RANKING, Cycle, MotorSelection, read_curves, select_motors
 from ..core.units import Q_, fmt, number
 from ..domain.drive import Winding, winding
-from . import axis
+from .motor_catalog import motor_catalog
 from .common import (Governing, Verdict, check_json, check_line, quantity, quantity_text, row_json, selection_governing,
                      selection_verdict)
 from .protocol import Result, Section
@@ -457,13 +457,14 @@ class MotorSection(Section):
         return any(q is not None for q in given)
 
     def evaluate(self, case: Case, earlier) -> MotorResult:
-        return motor_result(earlier["axis"].case, transmission(earlier.get("gearbox")), earlier.get("coupling"))
+        axis = earlier["axis"]
+        return motor_result(axis.case, transmission(earlier.get("gearbox")), earlier.get("coupling"), axis.chosen)
 
 
 SECTION = MotorSection()
 
 
-def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
+def motor_result(case: Case, t: Transmission, coupling, chosen: str | None = None) -> MotorResult:
     """The motor's torques through a transmission and its checks.
 
     Parameters
@@ -474,6 +475,9 @@ def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
         What the motor drives through.
     coupling : calc.sections.coupling.CouplingResult or None
         The coupling section's result; None where the case has no coupling.
+    chosen : str, optional
+        The catalog motor chosen with the gearbox (:class:`calc.sections.axis.AxisResult`): ranked
+        first where it passes.
 
     Returns
     -------
@@ -497,7 +501,7 @@ def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
     speed = n_1(n_2=out.n_2max, i=t.i * np.ones(1))
     J_1 = None if missing or J_1 is None else J_1[0]
     if case.motor_catalog is not None:
-        return _catalog_motor(case, t, out, J_1, J_c, missing, speed, notes)
+        return _catalog_motor(case, t, out, J_1, J_c, missing, speed, notes, chosen)
     load = None if missing else motor_load(out.dt, out.torque, out.speed, t.i, t.eta, out.alpha_2, case.motor_inertia,
                                            J_1)
     if load is not None:
@@ -516,9 +520,10 @@ def motor_result(case: Case, t: Transmission, coupling) -> MotorResult:
                        J_motor=case.motor_inertia, segments=segments_of(case), thermal_rating=thermal)
 
 
-def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missing, speed, notes) -> MotorResult:
+def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missing, speed, notes,
+                   chosen: str | None) -> MotorResult:
     """Every motor of the case's catalog (or its part alone) against the cycle through ``t``."""
-    cat = axis.motor_catalog(case)
+    cat = motor_catalog(case)
     if case.motor_part is not None:
         cat = cat.rows(cat.parts == case.motor_part)
     elif cat.partial.any():  # never ranked: not computed either
@@ -539,8 +544,10 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     cycle = Cycle(T_1.m_as("N*m"), (few.speed * t.i).m_as("rad/s"), few.dt.m_as("s"), rms.m_as("N*m"), lam,
                   None if J_L is not None else no_ratio)
     limit, where = case.motor_max_inertia_ratio
-    curves = None if case.motor_curves is None else read_curves(case.motor_curves, axis.motor_catalog(case).parts)
+    curves = None if case.motor_curves is None else read_curves(case.motor_curves, motor_catalog(case).parts)
     sel = select_motors(cat, cycle, case.motor_dc_link, curves, limit, where, float(case.profile.t_cycle.m_as("s")))
+    if chosen is not None:
+        sel.put_first(chosen)
     best = int(sel.order[0])
     # Every sample, in time.
     T_best = motor_torque(out.torque, out.speed, t.i, t.eta, out.alpha_2, J[best:best + 1, None], J_1q)

@@ -4,16 +4,23 @@
 with no pass over the samples per pair). Not a section of the evaluation: its own command, with the same
 exit status rules.
 
+The evaluation of a case with a motor catalog takes its motor and gearbox from the same search
+(:func:`case_pairs`: the rows at the case's ratio, or its named part, or a direct drive) by the same
+rule (:mod:`calc.sections.axis`).
+
 What a pair must pass: the gearbox's own governing checks at its ratio (all of
-:func:`calc.domain.gearbox.select_gearbox` but those that need the motor), its ``T_2B`` against the
-motor's peak through it (E4, in S5), the motor's peak torque ``M_max``, its RMS torque ``M_N``, its
-top speed and the inertia ratio (E6; ``[motor] max_inertia_ratio``). The motor's peak is screened
-against ``M_max`` at every speed: the speed-torque characteristic (:mod:`calc.domain.motor_ratings`)
-and the emergency stop are checked when the case is evaluated with the pair it picks.
+:func:`calc.domain.gearbox.select_gearbox` but those that need the motor), its ``T_2B`` (E4, in S5) and
+``T_2Not`` (the emergency stop ``T_1B · i``) against the motor's peak through it, the motor's peak
+torque at every sample's speed (its speed-torque characteristic, :mod:`calc.domain.motor_ratings`),
+its RMS torque against ``M_N``, its rated and top speed, and the inertia ratio (E6;
+``[motor] max_inertia_ratio``), with a motor-side coupling's inertia turning with the motor (the
+lightest candidate's where the case names none). The peak is screened against ``M_max`` for every
+pair and checked against the characteristic for the motors in the rule's order until one passes.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -21,15 +28,19 @@ import numpy as np
 
 from .case import Case
 from ..data.catalog import display_path
+from ..core.checks import within_rating
 from ..domain.combinations import RULE, CycleMoments, search
 from ..core.errors import CalcError
-from ..domain.gearbox import T_2max, select_gearbox, shock_factor
-from ..domain.profile import Z_h
-from ..core.units import sig
-from . import axis
+from ..domain.gearbox import T_2max, T_2stop, rows_at_ratio, select_gearbox, shock_factor
+from ..domain.motor import motor_torque
+from ..domain.motor_ratings import peak_limit, read_curves
+from ..domain.profile import Z_h, n_2m
+from ..core.units import Q_, sig
+from . import coupling
 from .common import Verdict
 from .gearbox import catalogs, selection_inputs
 from .motor import output_load
+from .motor_catalog import motor_catalog, motor_ratings
 
 
 @dataclass(frozen=True)
@@ -100,6 +111,18 @@ class PairSearch:
         g, m = r.pick
         return Pick(str(self.motor_parts[m]), str(self.gearbox_parts[g]), float(self.ratios[g]), float(r.peak[g, m]),
                     float(r.rms[g, m]), float(r.utilization[g, m]))
+
+    @property
+    def chosen(self) -> tuple[int, int] | None:
+        """The pair the evaluation takes: the pick, else the pair closest to passing (its checks then
+        fail where the case is evaluated); None where there is no pair at all.
+
+        Returns
+        -------
+        tuple of int or None
+            ``(gearbox row, motor)``, rows of :attr:`gearbox_parts` and :attr:`motor_parts`.
+        """
+        return self.result.pick if self.result.pick is not None else self.result.closest
 
     @property
     def feasible_count(self) -> int:
@@ -190,7 +213,8 @@ class PairSearch:
 
 
 def search_pairs(case: Case) -> PairSearch:
-    """Every (gearbox row, motor) pair of the case's catalogs against its cycle.
+    """Every (gearbox row, motor) pair of the case's catalogs, at every ratio of the gearbox catalog,
+    against its cycle (``python -m calc combinations``).
 
     Parameters
     ----------
@@ -214,40 +238,162 @@ def search_pairs(case: Case) -> PairSearch:
         raise CalcError(f"{case.path}: gearbox: the search of motors and gearboxes needs a [gearbox] table "
                         f"(its catalog gives the gearboxes), found none")
     gear, hubs = catalogs(case)
-    gear = gear.rows(~gear.partial)
-    # Per pair, not per case: the motor's peak and rotor (the drive train's bound needs the rotor; the
-    # case is evaluated with the pair it picks, where the coupling checks the train).
+    return _search(case, gear.rows(~gear.partial), hubs)
+
+
+def case_pairs(case: Case) -> PairSearch:
+    """The pairs the case's evaluation chooses from: every motor of its catalog with every gearbox row
+    at its ratio (or its named part), or driving the load directly where it has no gearbox.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read, with a motor catalog.
+
+    Returns
+    -------
+    PairSearch
+        The pick, and the pairs of the motors screened up to it, in the rule's order (for a direct
+        drive, one gearbox row: none, ``i = 1``).
+    """
+    if case.ratio is None and case.gearbox_part is None:
+        return _search(case, None, None, first=True)
+    return _search(case, case_rows(case), case.gearbox_hubs, first=True)
+
+
+def _search(case: Case, gear, hubs, first: bool = False) -> PairSearch:
+    """The pairs of the motor catalog with the rows ``gear`` (None: a direct drive) by
+    :func:`calc.domain.combinations.search`, each motor's pairs examined in full in the rule's order
+    until one passes (with ``first``, the motors after it are not screened either)."""
+    motors = motor_catalog(case)
+    motors = motors.rows(~motors.partial)
+    out = output_load(case)
+    few = out.distinct()  # the same sums and envelopes over each distinct sample once
+    alpha = np.zeros(len(few.dt)) if few.alpha_2 is None else few.alpha_2.m_as("rad/s**2")
+    moments = CycleMoments.of(few.dt.m_as("s"), few.torque.m_as("N*m"), few.speed.m_as("rad/s"), alpha)
+    J_c, notes = _coupling_inertia(case)
+    notes = ([] if out.sampled else ["the load cycle is typed: its accelerations are not known, "
+                                     "so the rotor term is left out"]) + notes
+    if gear is None:
+        rows = {"i": [1.0], "eta": [1.0], "J_1": [J_c], "passes": [1.0], "peak_limit": [np.inf], "rank": [0.0]}
+        parts, more = np.array(["none (direct drive)"]), []
+    else:
+        rows, more = _gear_rows(case, gear, hubs, J_c)
+        parts = gear.parts
+    J_L = case.load_inertia
+    if J_L is None:
+        notes.append("the case gives no load inertia: the inertia ratio is counted with none")
+    motor_rows = {"J": motors["J"].m_as("kg*m**2"), "rated_torque": motors["M_N"].m_as("N*m"),
+                  "peak_torque": motors["M_max"].m_as("N*m"), "max_speed": motors["n_max"].m_as("rad/s")}
+    if case.motor_curves is None:  # an S1 curve lets a motor run past n_N (calc.domain.motor_ratings)
+        motor_rows["rated_speed"] = motors["n_N"].m_as("rad/s")
+    w = np.abs(few.speed.m_as("rad/s"))
+    speeds = (float(out.n_2max.m_as("rad/s")), float(n_2m.si(n_2k=w, t_k=few.dt.m_as("s"))))
+    rows["J_L"] = 0.0 if J_L is None else float(J_L.m_as("kg*m**2"))
+    result = search(moments, speeds, rows, motor_rows, case.motor_max_inertia_ratio[0],
+                    examine=_examine(case, few, motors, rows, gear, hubs), first=first)
+    shown = slice(None) if result.motors is None else result.motors
+    return PairSearch(case, parts, np.asarray(rows["i"], float), motors.parts[shown], motors["M_N"].m_as("N*m")[shown],
+                      result, notes + more)
+
+
+def case_rows(case: Case):
+    """The case's gearbox rows the evaluation chooses from: its named part, or the rows at its ratio
+    (no partial row).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read, with a gearbox table.
+
+    Returns
+    -------
+    calc.data.catalog.Catalog
+        Those rows.
+    """
+    where = f"{case.path}: gearbox"
+    catalog, _ = catalogs(case)
+    if case.gearbox_part is not None:
+        return catalog.rows([catalog.usable_index(case.gearbox_part, f"{where}.part")])
+    rows = rows_at_ratio(catalog, case.ratio, f"{where}.ratio")
+    return rows.rows(~rows.partial)
+
+
+def _gear_rows(case: Case, gear, hubs, J_c: float) -> tuple[dict, list]:
+    """The arrays of :func:`calc.domain.combinations.search` over the gearbox rows, and the notes."""
+    # Per pair, not per case: the motor's peak and rotor.
     inputs = {**selection_inputs(case), "motor_peak_torque": None, "motor_inertia": None, "coupling_span": None}
     sel = select_gearbox(case.profile, gear, hubs=hubs, **inputs)
     f_s = float(shock_factor(Z_h(t_cycle=case.profile.t_cycle), inputs["shock_factors"]))
     i, eta = gear["ratio"].m_as(""), gear["eta"].m_as("")
     # T_2max <= T_2B (E4): the highest motor peak each row takes, in S5 (T_2max is T_1B times the rest)
+    peak_limit = np.full(len(gear), np.inf)
     if sel.mode == "S5":
         peak_limit = gear["T_2B"].m_as("N*m") / T_2max.si(T_1B=1.0, i=i, f_s=f_s, eta=eta)
-    else:
-        peak_limit = np.full(len(gear), np.inf)
-    J_L = case.load_inertia
-    motors = axis.motor_catalog(case)
-    motors = motors.rows(~motors.partial)
-    out = output_load(case)
-    alpha = np.zeros(len(out.dt)) if out.alpha_2 is None else out.alpha_2.m_as("rad/s**2")
-    moments = CycleMoments.of(out.dt.m_as("s"), out.torque.m_as("N*m"), out.speed.m_as("rad/s"), alpha)
-    J_1 = np.nan_to_num(sel.J_1.m_as("kg*m**2"))
-    typed = "the load cycle is typed: its accelerations are not known, so the rotor term is left out"
-    notes = [] if out.sampled else [typed]
-    if np.isnan(sel.J_1.magnitude).any():
-        notes.append("a gearbox row without J_1 is counted with none")
-    if J_L is None:
-        notes.append("the case gives no load inertia: the inertia ratio is counted with none")
-    if case.sections.get("coupling", {}).get("side") == "input":
-        notes.append("the motor-side coupling's inertia is not counted here (evaluate counts it)")
-    result = search(
-        moments, float(out.n_2max.m_as("rad/s")),
-        {"i": i, "eta": eta, "J_1": J_1, "passes": sel.passes.astype(float), "peak_limit": peak_limit,
-         "size": gear["T_2B" if sel.mode == "S5" else "T_2N"].m_as("N*m"),
-         "J_L": 0.0 if J_L is None else float(J_L.m_as("kg*m**2"))},
-        {"J": motors["J"].m_as("kg*m**2"), "rated_torque": motors["M_N"].m_as("N*m"),
-         "peak_torque": motors["M_max"].m_as("N*m"), "max_speed": motors["n_max"].m_as("rad/s")},
-        inertia_limit=case.motor_max_inertia_ratio[0],
-    )
-    return PairSearch(case, gear.parts, i, motors.parts, motors["M_N"].m_as("N*m"), result, notes + sel.notes)
+    if case.emergency_stop_torque is None:  # T_2stop = T_1B · i <= T_2Not where the row gives it
+        with np.errstate(invalid="ignore"):
+            peak_limit = np.fmin(peak_limit, gear["T_2Not"].m_as("N*m") / T_2stop.si(T_1B=1.0, i=i))
+    rank = np.full(len(gear), float(len(gear)))
+    rank[sel.order] = np.arange(len(sel.order))
+    notes = ["a gearbox row without J_1 is counted with none"] if np.isnan(sel.J_1.magnitude).any() else []
+    J_1 = np.nan_to_num(sel.J_1.m_as("kg*m**2")) + J_c
+    return {"i": i, "eta": eta, "J_1": J_1, "passes": sel.passes.astype(float), "peak_limit": peak_limit,
+            "rank": rank}, notes + sel.notes
+
+
+def _coupling_inertia(case: Case) -> tuple[float, list]:
+    """What a motor-side coupling adds to each pair's ``J_1`` [kg·m²]: the named part's whole inertia,
+    else the lightest candidate's (the one chosen turns with the motor when the case is evaluated)."""
+    given = coupling.SECTION.inputs(case)
+    if given is None or given.side != "input":
+        return 0.0, []
+    J = given.catalog["J"].m_as("kg*m**2")[~given.catalog.partial]
+    if np.isnan(J).all():
+        return 0.0, ["the motor-side coupling's catalog gives no inertia: the pairs count none"]
+    J_c = float(np.nanmin(J))
+    which = "its" if given.has("part") else "the lightest candidate's"
+    return J_c, [f"the motor-side coupling turns with the motor: {which} inertia "
+                 f"{sig(J_c * 1e4)} kg·cm² is added to J_1"]
+
+
+def _examine(case: Case, few, motors, rows: dict, gear, hubs):
+    """``examine(motor, rows)`` of :func:`calc.domain.combinations.search`: the highest motor torque
+    over the peak torque the motor gives at each sample's speed
+    (:func:`calc.domain.motor_ratings.peak_limit`, with the case's DC link and curves), and the
+    gearbox rows checked and ranked with that motor as the gearbox section checks them."""
+    curves = None if case.motor_curves is None else read_curves(case.motor_curves, motor_catalog(case).parts)
+    i, eta, J_1 = (np.asarray(rows[k], float) for k in ("i", "eta", "J_1"))
+    w = np.abs(few.speed.m_as("rad/s"))
+
+    def peak_share(m: int, at: np.ndarray) -> np.ndarray:
+        """The highest motor torque over the peak torque at its speed, for motor m through rows at."""
+        one = motors.rows([m])
+        T_1 = motor_torque(few.torque, few.speed, Q_(i[at, None], ""), Q_(eta[at, None], ""), few.alpha_2,
+                           one["J"][0], Q_(J_1[at, None], "kg*m**2")).m_as("N*m")
+        T_1 = np.broadcast_to(T_1, (len(at), len(w)))
+        limit, _ = peak_limit(one, (w[None, :] * i[at, None]).ravel(), case.motor_dc_link, curves)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            u = np.abs(T_1) / limit.reshape(len(at), len(w))
+        return np.where(np.isnan(u), np.inf, u).max(axis=1, initial=0.0)
+
+    def examine(m: int, at: np.ndarray) -> tuple:
+        if gear is None:
+            return peak_share(m, at), np.ones(len(at), bool), None
+        trial = dataclasses.replace(case, **motor_ratings(motors, m))
+        sel = select_gearbox(trial.profile, gear.rows(at), hubs=hubs, **selection_inputs(trial))
+        rank = np.empty(len(at))
+        rank[sel.order] = np.arange(len(sel.order))
+        u = np.full(len(at), np.nan)  # the rows in the gearbox ranking's order, until one passes
+        order = sel.order[sel.passes[sel.order]]
+        for start in range(0, len(order), BATCH):
+            batch = order[start:start + BATCH]
+            u[batch] = peak_share(m, at[batch])
+            if within_rating(u[batch]).any():
+                break
+        return u, sel.passes, rank
+
+    return examine
+
+
+#: Gearbox rows checked against a motor's characteristic at once, in the ranking's order.
+BATCH = 64

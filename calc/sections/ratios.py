@@ -12,12 +12,12 @@ import numpy as np
 from .case import Case
 from ..data.catalog import display_path
 from ..core.errors import CalcError
-from ..domain.ratios import RatioSearch, search_ratios
-from ..core.units import Value, pretty_unit, sig
+from ..domain.ratios import RatioSearch, optimal_ratio, search_ratios
+from ..core.units import Q_, Value, fmt, pretty_unit, sig
 from .gearbox import catalogs, selection_inputs
 from .common import Verdict, check_json, json_of, number
 from .evaluation import results_of
-from .motor import TYPED, output_load, rotor_inertia
+from .motor import TYPED, motor_side_coupling, output_load, rotor_inertia
 
 
 #: Not evaluated with the case (its own command, :func:`search`); its place in the report.
@@ -73,6 +73,92 @@ class RatioRow:
     pick: bool
 
 
+@dataclass(frozen=True)
+class OptimalRatio:
+    """The inertia-matching ratio ``i_opt = √(J_L / J_in)`` beside the search's pick.
+
+    Parameters
+    ----------
+    value : float or None
+        ``i_opt`` [1]; None where the case lacks an inertia.
+    step : calc.core.formula.Step or None
+        Its calculation, as computed.
+    inertias : str
+        Which inertias it counts, or what it lacks.
+    pick : float or None
+        The search's pick [1], least RMS motor torque.
+    """
+
+    value: float | None
+    step: object
+    inertias: str
+    pick: float | None
+
+    def to_json(self) -> dict:
+        """``ratios.optimal_ratio``.
+
+        Returns
+        -------
+        dict
+            value, J_L, J_in, which inertias, and the search's pick.
+        """
+        inputs = {} if self.step is None else {
+            "J_L": Value.of(self.step.values["J_L"], "kg*cm**2").to_json(),
+            "J_in": Value.of(self.step.values["J_in"], "kg*cm**2").to_json()}
+        return {"value": self.value, **inputs, "inertias": self.inertias, "pick": self.pick}
+
+    def line(self) -> str:
+        """The ratio in one sentence of the text summary.
+
+        Returns
+        -------
+        str
+        """
+        if self.value is None:
+            return f"Inertia-matching ratio i_opt = √(J_L / J_in): not computed, {self.inertias}"
+        pick = "" if self.pick is None else (f"; the search's pick (least RMS motor torque, friction and process "
+                                             f"torque counted) is {self.pick:g}")
+        return f"Inertia-matching ratio {self.step} ({self.inertias}){pick}"
+
+
+def optimal(case: Case, s: RatioSearch, coupling) -> OptimalRatio:
+    """The inertia-matching ratio of the case (:data:`calc.domain.ratios.optimal_ratio`): ``J_L`` the
+    load at the output, ``J_in`` the rotor with the motor-side coupling's whole inertia and the
+    ``J_1`` of the gearbox the search picks (or of the case's ratio's best gearbox without a pick).
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as checked, with its motor.
+    s : calc.domain.ratios.RatioSearch
+        The search.
+    coupling : calc.sections.coupling.CouplingResult or None
+        The coupling section's result.
+
+    Returns
+    -------
+    OptimalRatio
+        The ratio and the inertias it counts.
+    """
+    pick = None if s.pick is None else float(s.ratios[s.pick])
+    if case.load_inertia is None or case.motor_inertia is None:
+        return OptimalRatio(None, None, "it needs the load's and the motor's inertia", pick)
+    k = s.pick if s.pick is not None else int(np.argmin(np.abs(s.ratios - case.ratio.m_as(""))))
+    row = int(s.rows[k])
+    J_1 = s.selection.J_1[row]
+    J_c, part = motor_side_coupling(coupling)
+    terms = [("J_motor", case.motor_inertia)]
+    if J_c is not None and not np.isnan(J_c.magnitude):
+        terms.append((f"coupling {part}", J_c))
+    if not np.isnan(J_1.magnitude):
+        terms.append((f"J_1 of {s.parts[k]}", J_1))
+    J_in = sum((q for _, q in terms), Q_(0.0, "kg*cm**2"))
+    step = optimal_ratio.step(J_L=case.load_inertia, J_in=J_in)
+    which = ("J_L the load at the output; J_in = " + " + ".join(f"{name} {fmt(q, 'kg*cm**2')}" for name, q in terms)
+             + " at the input")
+    return OptimalRatio(float(step.result.m_as("")), step, which, pick)
+
+
 @dataclass
 class RatioResult:
     """The ratio search of a case, as the ``ratios`` command writes it.
@@ -85,11 +171,14 @@ class RatioResult:
         Every ratio of the gearbox catalog, evaluated, and the pick.
     notes : list of str
         What the search kept to or left out (the motor kept at every ratio, a part not kept to).
+    optimal : OptimalRatio or None, optional
+        The inertia-matching ratio beside the pick.
     """
 
     case: Case
     search: RatioSearch
     notes: list
+    optimal: OptimalRatio | None = None
 
     def verdict(self) -> Verdict:
         """True when a ratio can be picked, else False with the reason.
@@ -159,6 +248,7 @@ class RatioResult:
             "pick": None if s.pick is None else {"ratio": float(s.ratios[s.pick]), "part": str(s.parts[s.pick]),
                                                  "reason": s.reason},
             "reason": s.reason,
+            "optimal_ratio": None if self.optimal is None else self.optimal.to_json(),
             "notes": list(self.notes),
             "verdict": self.verdict().to_json(),
         }
@@ -173,7 +263,8 @@ class RatioResult:
             The text, notes last.
         """
         title = f"{self.case.title}: the ratio"
-        lines = [title, "=" * len(title), self.search.reason, f"Rule: {self.search.rule}.", "",
+        lines = [title, "=" * len(title), self.search.reason, f"Rule: {self.search.rule}.",
+                 *([] if self.optimal is None else [self.optimal.line()]), "",
                  f"{'ratio':>6}  {'gearbox':<14} {'verdict':<7} {'util.':>6} {'λ':>7} {'T_1peak':>10} "
                  f"{'T_1rms':>10} {'n_1':>9}"]
 
@@ -233,4 +324,4 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
         hubs=hubs, inertia_limit=case.motor_max_inertia_ratio[0], **selection_inputs(case),
     )
     notes += s.notes
-    return RatioResult(case, s, notes)
+    return RatioResult(case, s, notes, optimal(case, s, coupling))

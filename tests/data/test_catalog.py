@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from calc import CalcError
-from calc.data import catalog
+from calc.data import catalog, parsed
 from calc.sections.case import read_case
 from calc.data.catalog import load_catalog
 from calc.domain.coupling import SCHEMA as COUPLING_SCHEMA
@@ -285,3 +285,68 @@ def test_to_frame_has_units_in_column_names():
     frame = load_catalog(GEARBOXES, SCHEMA).to_frame()
     assert {"T_2N [N·m]", "J_1 [kg·cm²]", "C_t21 [N·m/arcmin]", "eta [%]"} <= set(frame.columns)
     assert frame.loc[frame.part == "TP010-10", "T_2B [N·m]"].item() == 126
+
+
+def large_catalog(tmp_path, rows: int = 12_000, bad: str | None = None) -> Path:
+    """The shipped gearbox catalog's rows repeated under new part names to over a megabyte
+    (calc.data.parsed.SMALLEST), optionally with the T_2N cell of file row 7001 replaced by ``bad``."""
+    header, *shipped = GEARBOXES.read_text(encoding="utf-8").splitlines()
+    lines = [header]
+    for k in range(rows):
+        row = shipped[k % len(shipped)]
+        lines.append(f"X{k:06d}-{row.split(',', 1)[0]},{row.split(',', 1)[1]}")
+    if bad is not None:
+        cells = lines[7000].split(",", 4)
+        cells[3] = bad
+        lines[7000] = ",".join(cells)
+    path = tmp_path / "large.csv"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    assert path.stat().st_size >= parsed.SMALLEST
+    return path
+
+
+def test_a_large_catalog_is_kept_parsed_by_its_content(tmp_path, monkeypatch):
+    monkeypatch.setenv("CALC_CACHE_DIR", str(tmp_path / "kept"))
+    path = large_catalog(tmp_path)
+    first = load_catalog(path, SCHEMA)
+    kept = list((tmp_path / "kept").glob("*.npz"))
+    assert len(kept) == 1 and kept[0].stem == parsed.cache_key(path.read_bytes(), SCHEMA)
+    # The next run (no catalog read in this process yet) loads the arrays kept: the same catalog.
+    monkeypatch.setattr(catalog, "_LOADED", {})
+    monkeypatch.setattr(catalog, "_rows", lambda *a: pytest.fail("the kept catalog was parsed again"))
+    again = load_catalog(path, SCHEMA)
+    assert again is not first and again.sha256 == first.sha256 and list(again.parts) == list(first.parts)
+    for c in SCHEMA.columns:
+        np.testing.assert_array_equal(again[c.name].magnitude, first[c.name].magnitude)
+        assert again[c.name].units == first[c.name].units
+    assert again.text.keys() == first.text.keys()
+    assert all(list(again.text[k]) == list(first.text[k]) for k in first.text)
+    assert list(again.lines) == list(first.lines) and again.header_units == first.header_units
+    assert not again["T_2N"].magnitude.flags.writeable and type(again.parts[0]) is str
+
+
+def test_a_bad_large_catalog_is_never_kept_and_its_error_is_the_same(tmp_path, monkeypatch):
+    monkeypatch.setenv("CALC_CACHE_DIR", str(tmp_path / "kept"))
+    path = large_catalog(tmp_path, bad="12x")
+    messages = []
+    for _ in range(2):
+        monkeypatch.setattr(catalog, "_LOADED", {})
+        with pytest.raises(CalcError) as raised:
+            load_catalog(path, SCHEMA)
+        messages.append(str(raised.value))
+    assert messages[0] == messages[1] and "row 7001" in messages[0] and "T_2N" in messages[0] and "12x" in messages[0]
+    assert not list((tmp_path / "kept").glob("*.npz"))
+
+
+def test_the_kept_catalogs_can_be_turned_off_and_a_damaged_one_is_read_again(tmp_path, monkeypatch):
+    path = large_catalog(tmp_path)
+    monkeypatch.setenv("CALC_CACHE_DIR", "off")
+    assert parsed.cache_folder() is None
+    load_catalog(path, SCHEMA)
+    monkeypatch.setenv("CALC_CACHE_DIR", str(tmp_path / "kept"))
+    (tmp_path / "kept").mkdir()
+    key = parsed.cache_key(path.read_bytes(), SCHEMA)
+    (tmp_path / "kept" / f"{key}.npz").write_bytes(b"not an archive")
+    assert parsed.load_parsed(key) is None
+    monkeypatch.setattr(catalog, "_LOADED", {})
+    assert len(load_catalog(path, SCHEMA)) == 12_000

@@ -3,7 +3,7 @@ Repeatability; errata E11 to E13), and a measured positioning record."""
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from calc import CalcError, Q_
@@ -153,3 +153,24 @@ def test_positions_file(tmp_path):
     path.write_text("target [deg],actual [1]\n0,0\n")
     with pytest.raises(CalcError, match="column actual: expected a unit of angle"):
         read_positions(path)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(0.5, 100), st.floats(0, 20), st.floats(0, 300), st.floats(-100, 100))
+def test_error_budget_adds_up_to_the_positioning_accuracy(stiffness, backlash, ta_arcsec, torque):
+    from calc.domain.accuracy import error_budget
+
+    g = Component("g", "output", Q_(stiffness, "N*m/arcmin"), Q_(backlash, "arcmin"), Q_(ta_arcsec, "arcsec"),
+                  Q_(110, "N*m"))
+    a = chain_accuracy(Chain((g,)), Q_(torque, "N*m"))
+    b = error_budget(a)
+    # The worst case is the positioning accuracy (E13), the RSS never more, the shares sum to one.
+    pa = a.positioning_accuracy.m_as("arcmin")
+    assert b.worst_case.result.m_as("arcmin") == pytest.approx(pa, rel=1e-9, abs=1e-12)
+    assert b.rss.result.m_as("arcmin") <= b.worst_case.result.m_as("arcmin") * (1 + 1e-12) + 1e-12
+    assert [c.kind for c in b.contributions] == ["systematic", "random"]
+    # Repeatability: never above the lost motion, nor above the positioning accuracy under torque.
+    r = a.repeatability_bound.m_as("arcmin")
+    assert r <= a.lost_motion.m_as("arcmin") * (1 + 1e-12)
+    if torque != 0:
+        assert r <= a.positioning_accuracy.m_as("arcmin") * (1 + 1e-12) + 1e-12

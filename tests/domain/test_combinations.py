@@ -69,29 +69,89 @@ def test_a_hand_cycle_through_two_gearboxes_and_two_motors():
     assert peak[0, 1] == pytest.approx(5.5556, abs=1e-4) and peak[1, 1] == pytest.approx(11.1111, abs=1e-4)
 
 
-def test_the_pick_is_the_smallest_adequate_motor_then_the_smallest_gearbox():
-    # The hand cycle above. Gearbox rows: i = 10 (size 100 N·m), i = 5 (size 60), i = 10 failing its
-    # own checks. Motors, J = 1e-4 kg·m² each: A 3 N·m rated / 12 N·m peak, B 6 N·m / 20 N·m.
+#: The hand cycle above; its top speed 10 rad/s, its mean speed (10 · 0.1 + 10 · 0.1) / 0.5 = 4 rad/s.
+SPEEDS = (10.0, 4.0)
+
+
+def hand_pairs():
+    """Gearbox rows: i = 10 (ranked second, size 100 N·m), i = 5 (ranked first, size 60), i = 10 failing
+    its own checks. Motors, J = 1e-4 kg·m² each: A 3 N·m rated / 12 N·m peak, B 6 N·m / 20 N·m."""
     m = CycleMoments.of([0.1, 0.1, 0.3], [50.0, -30.0, 10.0], [10.0, 10.0, 0.0], [100.0, -100.0, 0.0])
     gearboxes = {"i": [10.0, 5.0, 10.0], "eta": [0.9, 0.9, 0.9], "J_1": [0.0, 0.0, 0.0], "passes": [True, True, False],
-                 "peak_limit": [np.inf, np.inf, np.inf], "size": [100.0, 60.0, 50.0], "J_L": 1e-3}
+                 "peak_limit": [np.inf, np.inf, np.inf], "rank": [1.0, 0.0, 2.0], "J_L": 1e-3}
     motors = {"J": [1e-4, 1e-4], "rated_torque": [3.0, 6.0], "peak_torque": [12.0, 20.0], "max_speed": [300.0, 300.0]}
-    found = search(m, 10.0, gearboxes, motors, INERTIA_RATIO_LIMIT)
+    return m, gearboxes, motors
+
+
+def test_the_pick_is_the_smallest_adequate_motor_then_the_first_ranked_gearbox():
+    m, gearboxes, motors = hand_pairs()
+    found = search(m, SPEEDS, gearboxes, motors, INERTIA_RATIO_LIMIT)
     # At i = 5: driving 1e-4 · 5 · 100 + 50 / 4.5 = 11.161 N·m, driven back -0.05 - 30 · 0.9 / 5 = -5.45,
     # hold 10 / 4.5 = 2.222; RMS = √((11.161² · 0.1 + 5.45² · 0.1 + 2.222² · 0.3) / 0.5) = 5.815 N·m:
     # over A's 3 N·m, within B's 6. At i = 10 both pass (peak 5.66, RMS 2.95 N·m).
     assert found.rms[1, 0] == pytest.approx(5.815, abs=1e-3)
     assert found.feasible.tolist() == [[True, True], [False, True], [False, False]]
-    assert found.pick == (0, 0)  # the smaller motor A, through the only gearbox it can use
-    # Without A: B through the smaller gearbox (i = 5, size 60 N·m).
+    assert found.pick == (0, 0) and found.closest is None  # the smaller motor A, through the only gearbox it can use
+    # Without A: B through the gearbox the gearbox ranking puts first (i = 5, size 60 N·m).
     only_b = {k: v[1:] for k, v in motors.items()}
-    assert search(m, 10.0, gearboxes, only_b, INERTIA_RATIO_LIMIT).pick == (1, 0)
+    assert search(m, SPEEDS, gearboxes, only_b, INERTIA_RATIO_LIMIT).pick == (1, 0)
     # λ = (J_1 + J_L / i²) / J_motor = (0 + 1e-3 / 100) / 1e-4 = 0.1 at i = 10 (0.4 at i = 5): a limit
     # of 0.05 refuses every pair.
-    assert search(m, 10.0, gearboxes, motors, inertia_limit=0.05).pick is None
+    assert search(m, SPEEDS, gearboxes, motors, inertia_limit=0.05).pick is None
     # A gearbox whose T_2B takes a motor peak of at most 15 N·m (T_2B / (i · f_s · η)) refuses B there.
     limited = {**gearboxes, "peak_limit": [15.0, np.inf, np.inf]}
-    assert search(m, 10.0, limited, motors, INERTIA_RATIO_LIMIT).feasible[0].tolist() == [True, False]
+    assert search(m, SPEEDS, limited, motors, INERTIA_RATIO_LIMIT).feasible[0].tolist() == [True, False]
+
+
+def test_where_no_pair_passes_the_closest_is_named():
+    # A limit of 0.05 refuses every pair (λ above): the lowest highest utilization is B through
+    # i = 10: λ 0.1 / 0.05 = 2 against A's and B's at i = 5 (0.4 / 0.05 = 8); A and B at i = 10 both
+    # give λ / limit = 2, A's RMS 2.95 / 3 and B's 2.95 / 6 are under it: the first of the tie, A.
+    m, gearboxes, motors = hand_pairs()
+    found = search(m, SPEEDS, gearboxes, motors, inertia_limit=0.05)
+    assert found.pick is None and found.closest == (0, 0)
+    assert found.utilization[0, 0] == pytest.approx(2.0)
+
+
+def test_the_characteristic_refuses_a_motor_and_the_next_one_is_picked():
+    # A's peak torque falls off with speed: say it gives only 5 N·m at the cycle's speeds through any
+    # gearbox. Its peak through i = 10 is 5.6556 N·m: 5.6556 / 5 = 1.131 fails; B is taken, through
+    # the first-ranked gearbox it passes with (i = 5). Only A's pairs are examined: the motor after
+    # the one that passes is left as screened.
+    m, gearboxes, motors = hand_pairs()
+    asked = []
+
+    def examine(motor, rows):
+        asked.append((motor, rows.tolist()))
+        return peak[rows, motor] / (5.0 if motor == 0 else 20.0), np.ones(len(rows), bool), None
+
+    peak = search(m, SPEEDS, gearboxes, motors, INERTIA_RATIO_LIMIT).peak
+    found = search(m, SPEEDS, gearboxes, motors, INERTIA_RATIO_LIMIT, examine=examine)
+    assert asked == [(0, [0]), (1, [0, 1])]
+    assert found.pick == (1, 1) and not found.feasible[0, 0]
+    assert found.utilization[0, 0] == pytest.approx(5.6556 / 5.0, abs=1e-4)
+
+
+def test_the_gearbox_ranking_with_the_motor_decides_among_its_gearboxes():
+    # B passes through i = 10 and i = 5; the ranking with B puts i = 10 first (say a coupling lifts
+    # only its drive train above 2 f_er): the pick follows it. A gearbox that fails with the motor
+    # is not taken: with i = 10 failing, i = 5.
+    m, gearboxes, motors = hand_pairs()
+    only_b = {k: v[1:] for k, v in motors.items()}
+    ranked = search(m, SPEEDS, gearboxes, only_b, INERTIA_RATIO_LIMIT,
+                    examine=lambda motor, rows: (np.zeros(len(rows)), np.ones(len(rows), bool), [0.0, 1.0]))
+    assert ranked.pick == (0, 0)
+    failing = search(m, SPEEDS, gearboxes, only_b, INERTIA_RATIO_LIMIT,
+                     examine=lambda motor, rows: (np.zeros(len(rows)), rows != 0, [0.0, 1.0]))
+    assert failing.pick == (1, 0) and not failing.feasible[0, 0]
+
+
+def test_the_rated_speed_is_checked_against_the_mean_speed_where_given():
+    # A's n_N of 35 rad/s against the mean speed 4 · 10 = 40 rad/s through i = 10: fails (1.14);
+    # through i = 5, 20 rad/s passes it, but A's RMS there fails: B through i = 5 is taken.
+    m, gearboxes, motors = hand_pairs()
+    found = search(m, SPEEDS, gearboxes, {**motors, "rated_speed": [35.0, 300.0]}, INERTIA_RATIO_LIMIT)
+    assert found.feasible[:, 0].tolist() == [False, False, False] and found.pick == (1, 1)
 
 
 def test_the_figure_shows_the_lowest_working_utilization_of_each_motor_and_ratio():
@@ -104,3 +164,44 @@ def test_the_figure_shows_the_lowest_working_utilization_of_each_motor_and_ratio
     fig = combinations_figure(u, u <= 1, [5.0, 10.0], ["A", "B"], pick=(1, 0), ratio_of_rows=np.array([5.0, 5.0, 10.0]))
     shown = np.ma.filled(fig.axes[0].images[0].get_array().astype(float), np.nan)
     assert np.allclose(shown, [[0.4, np.nan], [np.nan, 0.9]], equal_nan=True)  # rows: motors; columns: ratios
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.integers(1, 12), st.integers(1, 9), st.booleans())
+def test_the_first_motor_screened_is_the_pick_of_the_whole_table(seed, rows, motors, examined):
+    # One rule, two ways to reach it: screening every pair at once, or the motors one at a time in
+    # the rule's order until one has a passing pair (a case's evaluation). Both pick the same pair,
+    # with or without an examination that refuses some pairs; where none passes, the first way names
+    # the pair closest to passing and the second, having screened every motor, the same.
+    rng = np.random.default_rng(seed)
+    m = CycleMoments.of([0.1, 0.1, 0.3], [50.0, -30.0, 10.0], [10.0, 10.0, 0.0], [100.0, -100.0, 0.0])
+    gearboxes = {"i": rng.choice([3.0, 5.0, 10.0], rows), "eta": rng.uniform(0.9, 0.98, rows),
+                 "J_1": rng.uniform(0, 2e-5, rows), "passes": rng.random(rows) > 0.2,
+                 "peak_limit": rng.uniform(5, 40, rows), "rank": rng.permutation(rows).astype(float), "J_L": 1e-3}
+    motors = {"J": rng.uniform(2e-5, 4e-4, motors), "rated_torque": rng.choice([1.0, 2.0, 4.0, 8.0], motors),
+              "peak_torque": rng.uniform(4, 30, motors), "max_speed": rng.uniform(50, 300, motors)}
+    refused = rng.random((rows, len(motors["J"]))) < 0.3
+
+    def examine(motor, at):
+        return np.where(refused[at, motor], 1.5, 0.5), np.ones(len(at), bool), None
+
+    kw = {"examine": examine} if examined else {}
+    whole = search(m, (10.0, 4.0), gearboxes, motors, INERTIA_RATIO_LIMIT, **kw)
+    first = search(m, (10.0, 4.0), gearboxes, motors, INERTIA_RATIO_LIMIT, first=True, **kw)
+    as_whole = None if first.pick is None else (first.pick[0], int(first.motors[first.pick[1]]))
+    assert as_whole == whole.pick
+    if whole.pick is None:
+        _, k = first.closest
+        assert whole.utilization[first.closest[0], first.motors[k]] == pytest.approx(whole.utilization[whole.closest])
+
+
+def test_rows_an_examination_leaves_out_stay_as_screened():
+    # B's examination stops at the first row of its ranking that passes (i = 5, ranked first): the
+    # other row (i = 10) is not examined (NaN), keeps its screened utilization and stays feasible.
+    m, gearboxes, motors = hand_pairs()
+    only_b = {k: v[1:] for k, v in motors.items()}
+    screened = search(m, SPEEDS, gearboxes, only_b, INERTIA_RATIO_LIMIT)
+    found = search(m, SPEEDS, gearboxes, only_b, INERTIA_RATIO_LIMIT,
+                   examine=lambda motor, rows: (np.where(rows == 1, 0.5, np.nan), np.ones(len(rows), bool), None))
+    assert found.pick == (1, 0) and found.feasible[0, 0]
+    assert found.utilization[0, 0] == screened.utilization[0, 0]

@@ -234,19 +234,17 @@ def test_the_json_names_the_fixed_keys(write_case, capsys):
     assert m["selected"] != "SGM7J-02A" and all(c["inertia_ratio"] <= 5 for c in m["candidates"] if c["passes"])
 
 
-def test_a_motor_and_gearbox_that_do_not_settle_are_an_error(write_case, capsys, monkeypatch):
-    from calc.__main__ import main
-    from calc.sections import axis
+def test_a_direct_drive_takes_the_smallest_adequate_motor_of_the_search(write_case):
+    from calc.sections.case import read_case
+    from calc.sections import evaluate
+    from calc.sections.pairs import case_pairs
 
-    # One round only: the motor ranked without the motor's ratings in the gearbox's checks is not yet
-    # the one ranked with them, so the choice has not been seen to settle.
-    monkeypatch.setattr(axis, "ROUNDS", 1)
-    path = write_case(DIRECT_DRIVE.format(motor=""), "dd.toml")
-    assert main(["evaluate", str(path)]) == 2
-    assert (
-        "motor.catalog: the motor and the gearbox chosen in turn do not settle (SGM7J-02A); name the motor with "
-        "motor.part"
-    ) in capsys.readouterr().err
+    # No gearbox: one row of the search, i = 1; the motor it picks is the one the motor section names.
+    case = read_case(write_case(DIRECT_DRIVE.format(motor=""), "dd.toml"))
+    found = case_pairs(case)
+    assert found.ratios.tolist() == [1.0] and found.pick is not None
+    results = evaluate(case)
+    assert results["motor"].selection.selected == found.pick.motor and results.every["axis"].gearbox is None
 
 
 def test_the_shipped_direct_drive_chooses_its_motor_with_every_check_made():

@@ -145,9 +145,10 @@ def test_the_pick_is_feasible_and_needs_the_least_rms_within_the_inertia_limit(p
 
 def test_a_catalog_motor_is_chosen_once_and_kept_at_every_ratio():
     # The shipped example names a motor catalog: the search takes the motor the case chooses at its
-    # ratio (SGMUH-10DA, 1.74 kg·cm²) and keeps it. By hand, λ = (J_1 + J_L / i²) / J_motor:
-    #   i = 10 (NPT035-10, J_1 0.93): (0.93 + 1500 / 100) / 1.74 = 9.155 <= 10;
-    #   i = 8 (NPT025-8, J_1 0.53): (0.53 + 1500 / 64) / 1.74 = 13.77 > 10;
+    # ratio (SGMUH-10DA, 1.74 kg·cm²) and keeps it. By hand, λ = (J_1 + J_L / i²) / J_motor with J_1
+    # counting the motor-side coupling AKN-18 (0.5 kg·cm²), as the motor's check does:
+    #   i = 10 (NPT035-10, J_1 0.93): (0.93 + 0.5 + 1500 / 100) / 1.74 = 9.443 <= 10;
+    #   i = 8 (NPT025-8, J_1 0.53): (0.53 + 0.5 + 1500 / 64) / 1.74 = 14.06 > 10;
     # every ratio is feasible, and 10 alone keeps λ within the limit: it is picked.
     from ..conftest import DERIVED_EXAMPLE
 
@@ -155,5 +156,6 @@ def test_a_catalog_motor_is_chosen_once_and_kept_at_every_ratio():
     s = r.search
     assert s.feasible.all() and s.ratios[s.pick] == 10 and str(s.parts[s.pick]) == "NPT035-10"
     lam = dict(zip(s.ratios.tolist(), s.inertia_ratio.tolist()))
-    assert lam[10] == pytest.approx((0.93 + 15) / 1.74) and lam[8] == pytest.approx((0.53 + 1500 / 64) / 1.74)
+    assert lam[10] == pytest.approx((0.93 + 0.5 + 15) / 1.74)
+    assert lam[8] == pytest.approx((0.53 + 0.5 + 1500 / 64) / 1.74)
     assert any("the motor is SGMUH-10DA, the motor catalog's choice at the case's ratio 10" in n for n in r.notes)

@@ -26,20 +26,27 @@ def test_an_unknown_member_is_named():
         drive_train_figure(("gearbox", "brake", "belt"))
 
 
-def test_the_planetary_gearbox_is_drawn_to_a_ratio_of_ten():
-    # Ring fixed, sun driving, carrier driven: i = 1 + r_ring / r_sun. The picture's pitch circles,
-    # sun 0.1, planets 0.4, ring 0.1 + 2 · 0.4 = 0.9, give i = 1 + 9 = 10, the example's ratio.
+def test_the_planetary_gearbox_drawn_can_be_built():
+    # Ring fixed, sun driving, carrier driven: i = 1 + z_ring / z_sun = 1 + 90 / 18 = 6. It can be
+    # built: 18 + 2 · 36 = 90 (the planets fill the gap); (18 + 90) / 3 = 36, whole, so three planets
+    # sit 120° apart; centre distance (18 + 36) / 2 = 27 modules, planets 27 · sqrt(3) = 46.77 apart,
+    # their tips 36 + 2 = 38 modules across: they clear. Pitch radii at a ring of 0.9: sun 0.18,
+    # planet 0.36, so the pins sit at 0.54.
     from matplotlib.patches import Circle
 
-    from calc.figures.schematic import planetary_gearbox_figure
+    from calc.figures.schematic import PLANETARY_TEETH, planetary_gearbox_figure, planetary_stage_ratio
 
+    z = PLANETARY_TEETH
+    assert planetary_stage_ratio() == 6
+    assert z["sun"] + 2 * z["planet"] == z["ring"] and (z["sun"] + z["ring"]) % 3 == 0
+    assert z["planet"] + 2 < (z["sun"] + z["planet"]) / 2 * np.sqrt(3) and z["sun"] >= 17
     (ax,) = planetary_gearbox_figure().axes
     texts = [t.get_text() for t in ax.texts]
-    assert any(t.startswith("sun: on the input shaft (index 1") for t in texts)
+    assert any(t.startswith("sun: on the input shaft (index 1") and "18 teeth" in t for t in texts)
     assert any(t.startswith("carrier (dashed): holds the planets, turns the output") and "index 2" in t for t in texts)
     pins = [p.center for p in ax.patches if isinstance(p, Circle) and p.radius == 0.035]
-    assert len(pins) == 3 and all(abs(np.hypot(*c) - 0.5) < 1e-12 for c in pins)  # sun + planet = 0.1 + 0.4
-    assert "here $i$ = 10" in texts[-1]
+    assert len(pins) == 3 and all(abs(np.hypot(*c) - 0.54) < 1e-12 for c in pins)
+    assert "$i$ = 1 + 90 / 18 = 6 times" in texts[-1]
 
 
 def test_the_bellows_coupling_joins_the_two_shafts():

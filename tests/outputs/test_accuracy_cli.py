@@ -62,7 +62,18 @@ def test_example_shows_its_chain_lost_motion_and_positioning_accuracy():
     # 8 N·m > 3 % of 110 N·m: ATA (62.9456 arcsec of the generated trace = 1.04909 arcmin) + 0.37464 (E13).
     assert a["transmission_accuracy"] == {"value": pytest.approx(62.9456, abs=1e-4), "unit": "arcsec"}
     assert a["positioning_accuracy"] == {"value": pytest.approx(1.42373, abs=1e-5), "unit": "arcmin"}
-    assert a["repeatability"]["value"] == pytest.approx(8.37464, abs=1e-5) and a["repeatability_is_bound"] is True
+    # Repeatability under torque: the tighter of the lost motion (E13) and the positioning accuracy, both full
+    # widths (calc.domain.accuracy.POSITIONING_CONVENTION): min(8.37464, 1.42373) = 1.42373 arcmin.
+    assert a["repeatability"]["value"] == pytest.approx(1.42373, abs=1e-5) and a["repeatability_is_bound"] is True
+    assert a["repeatability_basis"].startswith("the positioning accuracy, a full width")
+    # The budget: ATA 1.04909 arcmin (systematic) and the twist 0.37464 arcmin (random); worst case their sum,
+    # the positioning accuracy; RSS √(1.04909² + 0.37464²) = 1.11398 arcmin.
+    b = a["budget"]
+    assert [(c["kind"], c["value"]["value"]) for c in b["contributions"]] == [
+        ("systematic", pytest.approx(1.04909, abs=1e-5)), ("random", pytest.approx(0.37464, abs=1e-5))]
+    assert b["worst_case"]["value"] == pytest.approx(a["positioning_accuracy"]["value"], rel=1e-12)
+    assert b["rss"]["value"] == pytest.approx(1.11398, abs=1e-5)
+    assert sum(c["share"] for c in b["contributions"]) == pytest.approx(1.0)
     assert a["nominal_torque_from"] == "NPT035-10" and a["passes"] is True
     assert gearbox["measured_trace"]["file"] == "data/transmission-NPT035-10-generated.csv"
 
@@ -73,7 +84,8 @@ def test_summary_shows_the_chain(capsys):
     assert "Accuracy at the output (applied torque 8 N·m, ratio 10; E11 to E13):" in out
     assert "C_total = 21.35 N·m/arcmin; backlash = 8 arcmin" in out
     assert "Lost motion = j_t + |T| / C = 8.375 arcmin (E12)" in out
-    assert "Repeatability <= 8.375 arcmin" in out
+    assert "Repeatability <= 1.424 arcmin (the positioning accuracy, a full width, tighter than the lost motion" in out
+    assert "worst case 1.424 arcmin; root-sum-square 1.114 arcmin" in out
 
 
 @pytest.mark.parametrize("side, c_total", [("output", 0.202597), ("input", 1.233196)])

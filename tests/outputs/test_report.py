@@ -6,7 +6,6 @@ tests/outputs/test_cli.py: T_2max = 12 N·m · 10 · 1.3 · 0.97 = 151.32 N·m, 
 """
 
 import re
-import shutil
 import subprocess
 import sys
 
@@ -17,13 +16,10 @@ from calc.report.publish import output_paths
 from calc.report import build_report, latex_escape, prose
 from calc.report.common import case_key
 
-from ..conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT
+from ..conftest import DERIVED_EXAMPLE, EXAMPLE, HEAD_TOML, PROFILE_TOML, ROOT, needs_tools
 from ..conftest import REPORT_TITLE as TITLE
 
-needs_tex = pytest.mark.skipif(
-    any(shutil.which(t) is None for t in ("xelatex", "pandoc", "pdftotext")),
-    reason="the PDF report needs xelatex, pandoc and pdftotext: run `make tex` (Debian) or install them",
-)
+needs_tex = needs_tools("xelatex", "pandoc", "pdftotext")
 
 
 def pdf_text(path) -> str:

@@ -18,9 +18,9 @@ from calc.report.symbols import html, latex
 from calc.review.view import results_html
 from calc.core.units import sig
 
-from ..conftest import DERIVED_EXAMPLE, ROOT
+from ..conftest import DERIVED_EXAMPLE, ROOT, needs_tools
 
-needs_tex = pytest.mark.skipif(shutil.which("xelatex") is None, reason="needs xelatex")
+needs_tex = needs_tools("xelatex", "pandoc", "pdftotext")
 
 SHOCK_TABLE = (
     "from [1/h],to [1/h],factor [1],at_boundary,source\n0,,1.5,higher,a table of one band for every cycle rate\n"

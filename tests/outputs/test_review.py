@@ -6,6 +6,7 @@ T_2max = T_1B · i · f_s · η, with f_s = 1.3 at Z_h = 1800 /h and η = 0.97 (
 """
 
 import dataclasses
+import re
 
 import numpy as np
 import pytest
@@ -16,7 +17,7 @@ from calc.sections import evaluate as evaluate_case
 from calc.review import DesignReview, evaluated, input_specs, results_html, with_changes, with_inputs
 from calc.review.inputs import nice_step
 
-from ..conftest import DERIVED_EXAMPLE, EXAMPLE
+from ..conftest import DERIVED_EXAMPLE, EXAMPLE, has_tool
 
 
 def evaluate(case) -> dict:
@@ -111,7 +112,7 @@ def test_results_html_of_the_example(case):
     # Governing checks typeset as in the figures, no code spelling left.
     assert "<i>T</i><sub>2max</sub> ≤ <i>T</i><sub>2B</sub>" in text and "<i>K</i><sub>ϑ</sub>" in text
     assert "T_2B" not in text and "C_total" not in text and "N*m" not in text
-    assert "NaN" not in text and "nan" not in text
+    assert re.search(r"\b(?:NaN|nan)\b", text) is None  # a number, not the "nan" of "resonance"
     # Full reasons with the rated value and the excess (TP010-10: T_2max 151.3 N·m against T_2B 126 N·m).
     assert "rated 126 N·m, 20.1 % over" in text
     # No index column: the first column of each candidate table is the rank.
@@ -603,9 +604,8 @@ def test_variants_are_compared_side_by_side_and_by_the_command_line(tmp_path):
                           capture_output=True, text=True).stdout
     assert "NPS045-10 *" in text and text.splitlines()[-1] == "* differs from the first design"
     assert pdf.read_bytes()[:5] == b"%PDF-"
-    import shutil
 
-    if shutil.which("pdftotext"):
+    if has_tool("pdftotext"):
         printed = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True).stdout
         assert "NPS045-10" in printed and "378.3 N·m" in printed and "worst governing utilization" in printed
 
@@ -960,7 +960,6 @@ def test_a_link_variant_that_no_longer_reads_is_left_out_saying_why():
 def test_the_variants_as_a_pdf(tmp_path):
     """*Variants as PDF* writes the comparison with its figure beside the case (no reports'
     folder given), never over a file, the variants named in full under the title."""
-    import shutil
     import subprocess
 
     case = tmp_path / "axis.toml"
@@ -975,7 +974,7 @@ def test_the_variants_as_a_pdf(tmp_path):
     first, second = panel.variants_pdf(), panel.variants_pdf()
     assert (first.name, second.name) == ("axis-variants-1.pdf", "axis-variants-2.pdf")
     assert first.read_bytes()[:5] == b"%PDF-" and "the variants compared, as a PDF" in panel.kept.value
-    if shutil.which("pdftotext"):
+    if has_tool("pdftotext"):
         text = subprocess.run(["pdftotext", "-layout", str(first), "-"], capture_output=True, text=True).stdout
         assert "variant 1" in text and "variant 2" in text and "378.3 N·m" in text and "NPS045-10" in text
         assert "2: axis.toml with motor peak torque" in text and "worst governing utilization" in text
@@ -1000,3 +999,14 @@ def test_the_page_and_the_report_draw_the_same_stiffness_chain():
     assert labels == ["8.64 %: 0.0344 arcmin, C = 232.7 N·m/arcmin", "91.4 %: 0.364 arcmin, C = 22 N·m/arcmin"]
     assert all(f">{label}</text>" in svg for label in labels)
     assert "C_total = 20.1 N·m/arcmin, twist 0.398 arcmin" in svg and "= 20.1 N·m/arcmin, twist 0.398" in ax.get_title()
+
+
+def test_the_frequency_response_is_redrawn_on_a_change():
+    # The dynamics' part of the page: modes, springs, λ and the response as SVG, drawn again from the
+    # changed case's results (another ratio, another gearbox and load at its input: another curve).
+    case = read_case(DERIVED_EXAMPLE)
+    before = results_html(*evaluated(case))
+    after = results_html(*evaluated(with_changes(case, ratio=Q_(8, ""))))
+    assert "<h3>Drive-train dynamics</h3>" in before and "anti-resonance (motor held)" in before
+    curve = [re.search(r'<svg class=dynamics.*?</svg>', t, re.DOTALL).group(0) for t in (before, after)]
+    assert curve[0] != curve[1] and "resonance 265.5 Hz" in curve[0]

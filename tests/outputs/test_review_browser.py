@@ -13,12 +13,11 @@ shows its input error, and the calc report linked beside the verdict answers as 
 
 import subprocess
 
-import pytest
 
-from bench.review_browser import CHROMIUM, review_in_browser, served
+from bench.review_browser import review_in_browser, served
 from calc.review import serve
 
-from ..conftest import DERIVED_EXAMPLE, EXAMPLE, ROOT
+from ..conftest import DERIVED_EXAMPLE, EXAMPLE, ROOT, needs_tools
 
 RESULTS_SELECTOR = ".design-review .dr[data-generation]"
 
@@ -40,7 +39,7 @@ CHANGES = [
     ("profile[1].torque", "60"),
 ]
 
-pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason=f"no Chromium at {CHROMIUM} (make browser installs it)")
+pytestmark = needs_tools("chromium")
 
 
 def print_times(server, visit):
@@ -243,8 +242,9 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
 
 def test_a_click_on_a_candidate_forces_it(tmp_path):
     """Clicking NPT025-10's row in the gearbox table sets *gearbox part forced* to it, as choosing it
-    there would: the page shows the design checked with NPT025-10 alone, which fails on the motor's
-    peak through it (T_2max = 6.5 · 10 · 1.6 · 0.97 = 100.9 N·m against its T_2B of 90 N·m)."""
+    there would: the page shows the design checked with NPT025-10 alone. No motor passes with it; the
+    pair closest to passing is SGM7G-03A, which fails on its peak through it (T_2max = 5.88 · 10 · 1.6
+    · 0.97 = 91.26 N·m against its T_2B of 90 N·m)."""
     from bench.review_browser import browser_page, row, wait_for_results
 
     shots = SHOTS / "force"
@@ -260,7 +260,7 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
         page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'")
         shown = page.inner_text(RESULTS_SELECTOR)
         assert shown.startswith("FAIL")
-        assert "NPT025-10: T2max ≤ T2B: required 100.9 N·m > rated 90 N·m" in shown.replace("\n", "")
+        assert "NPT025-10: T2max ≤ T2B: required 91.26 N·m > rated 90 N·m" in shown.replace("\n", "")
         choice = row(page, "gearbox.part").locator("select")
         assert choice.evaluate("s => s.options[s.selectedIndex].text") == "NPT025-10"
         page.screenshot(path=str(shots / "forced.png"))
@@ -270,7 +270,8 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
 def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
     """Ticking *ratio search* adds the case at every ratio of the catalog to the page, as
     ``python -m calc ratios`` gives it: the example's pick is 10 (NPT035-10), the only ratio that
-    keeps λ ≤ 10 with SGMUH-10DA ((0.93 + 15) / 1.74 = 9.16), drawn as bars with the pick outlined."""
+    keeps λ ≤ 10 with SGMUH-10DA ((0.93 + 0.5 + 15) / 1.74 = 9.44, the coupling AKN-18 counted as the motor's
+    check counts it), drawn as bars with the pick outlined."""
     from bench.review_browser import browser_page, wait_for_results
 
     shots = SHOTS / "ratios"
@@ -283,7 +284,8 @@ def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
         page.locator(".design-review label", has_text="ratio search").click()
         wait_for_results(page, g)
         shown = page.inner_text(RESULTS_SELECTOR)
-        assert "Ratio 10 (NPT035-10): 6 of 6 ratios are feasible, and only this one keeps λ ≤ 10 (λ = 9.16)." in shown
+        assert "Ratio 10 (NPT035-10): 6 of 6 ratios are feasible, and only this one keeps λ ≤ 10 (λ = 9.44)." in shown
+        assert "inertia matching: iopt = √(JL / Jin) = 21.75" in shown  # i_opt beside the pick (sub- and italics lost)
         assert "the motor is SGMUH-10DA" in shown
         figure = page.locator(".design-review svg.dr-ratios")
         assert figure.count() == 1 and figure.locator("rect").count() == 6
@@ -348,3 +350,29 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
         text = (tmp_path / "axis-variant-1.toml").read_text()
         assert text.startswith("# Changed in the design review from axis.toml: dwell 1 s added as entry 3\n")
         assert text.count("\n[[move]]\n") == 3
+
+
+def test_five_reviewers_at_once_each_see_their_own_results():
+    """Five pages of the served review, each with its own kernel, change the index time at the same
+    moment to five different values; each page shows the peak speed of its own value
+    (as evaluating the case with that value gives it) and none of the others'."""
+    from bench.review_browser import reviewers_at_once
+    from calc import Q_
+    from calc.review.inputs import with_inputs
+    from calc.sections import evaluate
+    from calc.sections.case import read_case
+
+    rounds = [["0.6", "0.7", "0.8", "0.9", "1"]]
+    case = read_case(DERIVED_EXAMPLE)
+    peak = {v: evaluate(with_inputs(case, {"move[1].time": Q_(float(v), "s")})).to_json()["motion"]["peak_speed"]
+            for v in rounds[-1]}
+    shown = {v: f"{p['value']:.4g} rpm" for v, p in peak.items()}
+    assert all(p["unit"] == "rpm" for p in peak.values()) and len(set(shown.values())) == 5
+    with served(DERIVED_EXAMPLE) as server:
+        crowd = reviewers_at_once(server, "move[1].time", rounds)
+    print(f"5 reviewers: median {crowd.median:.3f} s, slowest {max(crowd.times):.3f} s, "
+          f"{crowd.memory:.0f} MB per page")
+    assert len(crowd.times) == 5
+    for value, text in zip(rounds[-1], crowd.texts):
+        assert shown[value] in text, (value, text[:300])
+        assert not any(other in text for v, other in shown.items() if v != value), (value, text[:300])

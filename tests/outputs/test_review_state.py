@@ -105,10 +105,12 @@ def test_a_refused_text_changes_no_value_and_a_decimal_comma_is_a_point(example)
 
 
 def test_a_forced_gearbox_part_is_a_key_of_the_file(example):
-    # NPT025-10 alone: T_2max = 6.5 · 10 · 1.6 · 0.97 = 100.9 N·m against its T_2B of 90 N·m: FAIL.
+    # NPT025-10 alone: no motor passes with it; the pair closest to passing, SGM7G-03A, fails on
+    # T_2max = 5.88 · 10 · 1.6 · 0.97 = 91.26 N·m against its T_2B of 90 N·m.
     example.set_value("gearbox.part", "NPT025-10")
     r = results(example)
     assert r["verdict"]["passes"] is False and r["gearbox"]["selected"] is None
+    assert r["motor"]["selected"] == "SGM7G-03A" and r["cyclic"]["T2max"]["value"] == pytest.approx(91.2576)
     assert 'part = "NPT025-10"' in example.case_text()
     assert "gearbox.part (not given) -> NPT025-10" in example.case_text()
     example.set_value("gearbox.part", SELECTION)

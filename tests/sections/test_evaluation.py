@@ -66,9 +66,8 @@ def test_the_motor_chosen_from_the_catalog_is_the_axis_result():
     assert axis.chosen == results["motor"].selection.selected and results.case is axis.case
     motors = results["motor"].selection
     assert results.case.motor_peak_torque == motors.catalog["M_max"][motors.order[0]]
-    # The round that settled the choice evaluated the gearbox, coupling and motor with that motor:
-    # the evaluation takes those results, it does not make them again.
-    assert all(results.every[name] is axis.evaluated[name] for name in ("gearbox", "coupling", "motor"))
+    # The gearbox was chosen with it, from the same pair (calc.sections.pairs.case_pairs).
+    assert axis.gearbox == results["gearbox"].selection.selected
 
 
 def test_a_bad_key_of_a_sections_own_table_is_an_error_when_the_case_is_read(write_case):

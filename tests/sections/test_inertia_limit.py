@@ -4,9 +4,10 @@ the motor section, not the default 10.
 
 By hand, from the λ column of ``python -m calc ratios cases/indexing-table.toml`` (the motor
 SGMUH-10DA, J_motor = 1.74 kg·cm², its catalog's choice at ratio 10, named here so that it stays
-the motor whatever the limit): λ = 96.14, 54.34, 34.87, 17.92, 13.77, 9.16 at the ratios 3, 4, 5,
-7, 8, 10; every ratio is feasible, and the motor's RMS torque falls as the ratio rises (0.9546 N·m at
-3 to 0.3199 N·m at 10).
+the motor whatever the limit): λ = 96.43, 54.63, 35.16, 18.20, 14.06, 9.44 at the ratios 3, 4, 5,
+7, 8, 10 (J_1 with the motor-side coupling AKN-18's 0.5 kg·cm², as the motor's check counts
+it: 0.5 / 1.74 = 0.287 above the gearbox's own); every ratio is feasible, and the motor's RMS
+torque falls as the ratio rises (0.9546 N·m at 3 to 0.3199 N·m at 10).
 """
 
 import json
@@ -25,7 +26,7 @@ from ..conftest import DERIVED_EXAMPLE, RESULTS_SCHEMA, ROOT
 
 #: The ratio search's JSON as docs/results.schema.json describes it (``$defs/ratio_search``).
 RATIO_SEARCH_SCHEMA = type(RESULTS_SCHEMA)({"$defs": RESULTS_SCHEMA.schema["$defs"], "$ref": "#/$defs/ratio_search"})
-LAMBDA = {3: 96.14, 4: 54.34, 5: 34.87, 7: 17.92, 8: 13.77, 10: 9.16}
+LAMBDA = {3: 96.43, 4: 54.63, 5: 35.16, 7: 18.20, 8: 14.06, 10: 9.44}
 
 
 def with_limit(tmp_path, limit, motor: str = ""):
@@ -55,14 +56,14 @@ LEAST_RMS = "of these it needs the lowest RMS motor torque, 0.3199 N·m"
 
 
 @pytest.mark.parametrize("limit, within, reason", [
-    # 17.92, 13.77 and 9.16 are at most 20: ratios 7, 8 and 10; of these 10 needs the least RMS torque.
+    # 18.20, 14.06 and 9.44 are at most 20: ratios 7, 8 and 10; of these 10 needs the least RMS torque.
     (20, [7, 8, 10], f"6 of 6 ratios are feasible, 3 of them with λ <= 20; {LEAST_RMS}"),
     # 34.87 is at most 40 as well: 5, 7, 8, 10.
     (40, [5, 7, 8, 10], f"6 of 6 ratios are feasible, 4 of them with λ <= 40; {LEAST_RMS}"),
-    # The default: 9.16 alone.
-    (10, [10], "6 of 6 ratios are feasible, and only this one keeps λ <= 10 (λ = 9.16)"),
-    # None is at most 9: the feasible ratio of lowest λ, 10 (9.16).
-    (9, [], "6 of 6 ratios are feasible, none with λ <= 9; it has the lowest, λ = 9.16"),
+    # The default: 9.44 alone.
+    (10, [10], "6 of 6 ratios are feasible, and only this one keeps λ <= 10 (λ = 9.44)"),
+    # None is at most 9: the feasible ratio of lowest λ, 10 (9.44).
+    (9, [], "6 of 6 ratios are feasible, none with λ <= 9; it has the lowest, λ = 9.44"),
 ])
 def test_the_ratio_search_keeps_to_the_cases_limit(tmp_path, capsys, limit, within, reason):
     code, out, err = command(capsys, "ratios", with_limit(tmp_path, limit, "SGMUH-10DA"), "--json")
@@ -74,14 +75,15 @@ def test_the_ratio_search_keeps_to_the_cases_limit(tmp_path, capsys, limit, with
     assert [r["ratio"] for r in j["ratios"] if r["inertia_ratio_within_limit"]] == within  # as the search records it
     assert not list(RATIO_SEARCH_SCHEMA.iter_errors(j))
     assert j["inertia_ratio_limit"] == limit
-    assert f"inertia ratio λ = (J_1 + J_L / i²) / J_motor is at most {limit} (E6)" in j["rule"]
+    rule = f"inertia ratio λ = (J_1 + J_L / i²) / J_motor (J_1 with a motor-side coupling's J) is at most {limit} (E6)"
+    assert rule in j["rule"]
     assert j["pick"]["ratio"] == 10 and j["reason"] == f"Ratio 10 (NPT035-10): {reason}."
     code, out, err = command(capsys, "ratios", with_limit(tmp_path, limit, "SGMUH-10DA"))
     assert f"is at most {limit} (E6)" in out and f"Ratio 10 (NPT035-10): {reason}." in out
 
 
 def test_the_ratio_search_and_the_motor_section_read_one_limit(tmp_path, capsys):
-    # With the motor chosen from the catalog a limit of 3 chooses another motor (SGMUH-10DA's 9.16 is
+    # With the motor chosen from the catalog a limit of 3 chooses another motor (SGMUH-10DA's 9.44 is
     # too high): the ratio search keeps to the same 3 the motor section says it keeps to.
     path = with_limit(tmp_path, 3)
     code, out, _ = command(capsys, "evaluate", path)
