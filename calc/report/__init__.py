@@ -230,8 +230,10 @@ class Report:
                           r"\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}"
                           + "".join(rf"\item {x}" for x in lines) + r"\end{itemize}")
         # Compact, in two columns under each part's name: the signature lines stay on the front page.
+        # No column break between a part's name and its first check (a list invites one where it begins).
         return (r" {\footnotesize ($u$: utilization, the required over the rated value)}"
-                r"{\footnotesize\raggedright\setlength{\multicolsep}{2pt}\begin{multicols}{2}"
+                r"{\footnotesize\raggedright\setlength{\multicolsep}{2pt}\csname @beginparpenalty\endcsname=10000"
+                r"\begin{multicols}{2}"
                 + "".join(groups) + r"\end{multicols}}") if groups else ""
 
     def method(self) -> Latex:
