@@ -63,6 +63,10 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   once, each with its own kernel, each changing the index time to its own values at the same
   moment, three rounds (bench/review_browser.py, ``reviewers_at_once``): the median time from a
   page's input to its new results, and the kernels' resident memory per page.
+  to a verdict (their browser already open).
+* ``review_page_transfer``, ``review_kernel_memory``: the page opened once more in a fresh browser
+  (nothing cached, :func:`review_browser.first_load`): the bytes it receives (bodies as sent and
+  headers; target 2 MB: 5.2 MB uncompressed), and its kernel's resident memory (target 150 MB).
 
 In-process timings are the best of several repeats (the least disturbed by the other work of a
 shared machine); ratios are taken between figures of this one run.
@@ -87,7 +91,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from review_browser import CHROMIUM, new_values, review_in_browser, reviewers_at_once, served  # beside this file
+from review_browser import CHROMIUM, first_load, new_values, review_in_browser, reviewers_at_once, served  # beside this file
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = ROOT / "cases" / "indexing-table.toml"
@@ -1031,15 +1035,20 @@ def spread(values: list[float], unit: str = "s") -> str:
 
 def measure_review(quick: bool, workdir: Path) -> list[str]:
     names = ("review_start", "review_page_ready", "review_change_median", "review_change_max",
-             "review_5_reviewers_median", "review_5_reviewers_memory")
+             "review_5_reviewers_median")
     if not CHROMIUM.exists():
-        return [line(name, None, "s", note=f"no Chromium at {CHROMIUM}: make browser") for name in names]
+        return [line(name, None, "s", note=f"no Chromium at {CHROMIUM}: make browser") for name in names] + [
+            line(name, None, "MB", note=f"no Chromium at {CHROMIUM}: make browser")
+            for name in ("review_page_transfer", "review_kernel_memory", "review_5_reviewers_memory")]
     changes = new_values(EXAMPLE, REVIEW_CHANGES_QUICK if quick else REVIEW_CHANGES)
     runs = []
     for _ in range(1 if quick else PAGE_RUNS):
         with served() as server:
             runs.append((server.started, review_in_browser(server.url, workdir / "screenshots", changes,
                                                            settle=1.0 if quick else 3.0)))
+            if len(runs) == 1:
+                first = first_load(server.url)  # a second reviewer, nothing cached
+    memory = first.kernel_mb
     start = [started + visit.ready for started, visit in runs]
     ready = [visit.ready for _, visit in runs]
     median = [visit.median for _, visit in runs]
@@ -1053,6 +1062,10 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
         line("review_page_ready", med(ready), "s", ("<=", 2.5), note=spread(ready)),
         line("review_change_median", med(median), "s", ("<=", 0.1), note=f"{note}; {spread(median)}"),
         line("review_change_max", med(worst), "s", ("<=", 0.2), note=f"slowest {slowest}; {spread(worst)}"),
+        line("review_page_transfer", first.transfer / 1e6, "MB", ("<=", 2),
+             note=f"{first.requests} requests, nothing cached, responses compressed"),
+        line("review_kernel_memory", memory, "MB", ("<=", 150),
+             note="resident memory of a page's kernel" if memory is not None else "its kernel not found (Linux only)"),
         *measure_crowd(quick),
     ]
 

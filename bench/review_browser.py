@@ -179,6 +179,58 @@ def browser_page(viewport: dict = SCREEN):
             browser.close()
 
 
+def kernel_id(page) -> str | None:
+    """The id of the page's kernel (its connection file is ``kernel-<id>.json``), None outside a served page."""
+    return page.evaluate("() => { const a = window.jupyterapp, m = a && (a.widgetManager || a._widgetManager);"
+                         " const k = m && (m.kernel || m._kernel); return k ? k.id : null; }")
+
+
+def kernel_memory(page) -> float | None:
+    """The resident memory of the page's kernel process [MB] (Linux), None where not found."""
+    kernel = kernel_id(page)
+    for proc in Path("/proc").iterdir():
+        try:
+            if proc.name.isdigit() and f"kernel-{kernel}.json".encode() in (proc / "cmdline").read_bytes():
+                rss = next(t for t in (proc / "status").read_text().splitlines() if t.startswith("VmRSS:"))
+                return int(rss.split()[1]) / 1024
+        except (OSError, StopIteration):
+            continue
+    return None
+
+
+@dataclass
+class FirstLoad:
+    """What opening the page once measured, in a browser with nothing cached."""
+
+    ready: float  # s from asking for the page to its results shown
+    transfer: int  # bytes the browser received for it (bodies as sent, headers included)
+    requests: int  # how many requests it made
+    kernel_mb: float | None  # the page's kernel's resident memory [MB]
+
+
+def first_load(url: str) -> FirstLoad:
+    """Open the page once in a fresh browser (nothing cached) and measure it (:class:`FirstLoad`)."""
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
+        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
+                                                        args=CHROMIUM_ARGS, viewport=SCREEN)
+        try:
+            page = browser.new_page()
+            done: list = []
+            page.on("requestfinished", lambda request: done.append(request))
+            start = time.perf_counter()
+            page.goto(url)
+            page.wait_for_selector(RESULTS, timeout=60_000)
+            ready = time.perf_counter() - start
+            page.wait_for_load_state("networkidle")
+            sizes = [r.sizes() for r in done]
+            transfer = sum(s["responseBodySize"] + s["responseHeadersSize"] for s in sizes)
+            return FirstLoad(ready, transfer, len(sizes), kernel_memory(page))
+        finally:
+            browser.close()
+
+
 def _generation(page) -> int:
     return int(page.get_attribute(RESULTS, "data-generation"))
 

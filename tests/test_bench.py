@@ -17,7 +17,8 @@ LINES = (
     "combinations_loop_vs_ours", "machine_50_axes", "cases_50_one_by_one",
     "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report", "report_20_cases",
     "review_start", "review_page_ready", "review_change_median", "review_change_max",
-    "review_5_reviewers_median", "review_5_reviewers_memory",
+    "review_5_reviewers_median", "review_5_reviewers_memory", "review_page_transfer",
+    "review_kernel_memory",
 )
 
 

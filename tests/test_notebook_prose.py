@@ -31,6 +31,7 @@ COURSE = tuple(sorted(str(p.relative_to(ROOT)) for p in (ROOT / "notebooks").glo
 QUOTED = {
     ("06-s1-selection.ipynb", "6.6"): "ISO 6336-2's life factor for flank pitting, as a torque exponent",
     ("07-s5-selection.ipynb", "3600"): "seconds per hour, in the source's Z_h = 3600 / t_cycle",
+    ("13-source-and-errata.ipynb", "3600"): "seconds per hour, in the source's Z_h = 3600 / t_cycle (E16)",
     ("01-motion-and-mechanism.ipynb", "60"): "the inch case file's load, 60 lb (cases/linear-axis-inch.toml)",
     ("01-motion-and-mechanism.ipynb", "200"): "the pinion's travel per revolution, pi · 63.66 mm",
     ("08-couplings.ipynb", "0.012"): "ISO 286-2: k6 over 10 up to 18 mm (calc.domain.fits, tests/domain/test_fits.py)",

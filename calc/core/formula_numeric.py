@@ -299,8 +299,8 @@ def profile__T_2m(n_2k, t_k, T_2k):
     return (SegmentSum(t_k*abs(T_2k)**3*abs(n_2k))/SegmentSum(t_k*abs(n_2k)))**(1/3)
 
 
-def profile__Z_h(t_cycle):
-    return t_cycle**(-1.0)
+def profile__Z_h(z_c, t_cycle):
+    return z_c/t_cycle
 
 
 def ratios__i_opt(J_L, J_in):
@@ -435,7 +435,7 @@ FUNCTIONS = {
     "calc.domain.profile.ED": ("2103e372a6f8efab", profile__ED),
     "calc.domain.profile.n_2m": ("f5aef89bcc9dad09", profile__n_2m),
     "calc.domain.profile.T_2m": ("7f4431ae67c9b21f", profile__T_2m),
-    "calc.domain.profile.Z_h": ("4a7f4f91d571390e", profile__Z_h),
+    "calc.domain.profile.Z_h": ("9e0e874ee4e90001", profile__Z_h),
     "calc.domain.ratios.i_opt": ("a6c6227b3bab3ae6", ratios__i_opt),
     "calc.domain.stiffness.C_total": ("bedc76ed0d6bb298", stiffness__C_total),
     "calc.domain.stiffness.C_2": ("5c713f3fa45cd595", stiffness__C_2),

@@ -163,7 +163,9 @@ SYMBOLS: dict[str, Symbol] = declared_once((
     _symbol("T_2k", "torque", "N*m", "output torque of moving segment k", "T_2,k", per_segment=True),
     _symbol("n_2m", "speed", "rpm", "mean output speed"),
     _symbol("T_2m", "torque", "N*m", "cubic mean output torque"),
-    _symbol("Z_h", "per_hour", "1/hour", "number of cycles per hour"),
+    _symbol("z_c", "dimensionless", "", "load cycles (moves) in the cycle: acceleration, constant speed, deceleration, "
+                                         "pause (E16)"),
+    _symbol("Z_h", "per_hour", "1/hour", "number of load cycles (moves) per hour (E16)"),
     # The gearbox (source, S1 and S5; errata E1 to E6) and its output bearing.
     _symbol("i", "dimensionless", "", "ratio of the gearbox"),
     _symbol("eta", "dimensionless", "", "efficiency (of the gearbox; of a mechanism, its own)"),

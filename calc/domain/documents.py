@@ -19,12 +19,12 @@ SOURCE = Document(
     edition="the text as received, its figures lost to the conversion (only their captions remain)",
     held="its words beside each reading: notebook 13-source-and-errata",
 )
-#: Where the source is garbled or silent, the reading the project takes (E1 to E15).
+#: Where the source is garbled or silent, the reading the project takes (E1 to E16).
 ERRATA = Document(
     "errata",
     "Errata and readings of the source document",
     "drivetrain-calc (this project)",
-    edition="E1 to E15",
+    edition="E1 to E16",
     held="calc/report/errata.toml, one line per reading, as the calc report lists them; notebook 13-source-and-errata",
     joiner=" ",
 )

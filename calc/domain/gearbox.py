@@ -325,7 +325,7 @@ def shock_factor(cycles_per_hour, table=SHOCK_FACTORS):
     --------
     >>> [float(shock_factor(Q_(z, "1/hour"))) for z in (999, 1000, 1499, 1500, 2000, 3000)]
     [1.0, 1.1, 1.1, 1.3, 1.6, 2.0]
-    >>> float(shock_factor(Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
+    >>> float(shock_factor(Z_h(z_c=Q_(1, ""), t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))))
     1.3
     """
     return table.lookup(cycles_per_hour, "cycles_per_hour")
@@ -659,7 +659,7 @@ def _duty_checks(profile: Profile, catalog: Catalog, motor_peak_torque, shock_fa
                              "rpm"))
     t2max = None
     if motor_peak_torque is not None:
-        f_s = shock_factor(Z_h(t_cycle=profile.t_cycle), shock_factors)
+        f_s = shock_factor(Z_h(**profile.cycles_per_hour_inputs()), shock_factors)
         t2max = T_2max(T_1B=motor_peak_torque, i=i, f_s=Q_(f_s, ""), eta=catalog["eta"])
         checks.append(CheckArray("T_2B", "S5", "T_2max <= T_2B", t2max, catalog["T_2B"], "N*m"))
     else:

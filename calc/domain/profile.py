@@ -51,9 +51,10 @@ T_2m = Formula(
 
 Z_h = Formula(
     "Z_h",
-    ("t_cycle",),
-    lambda sp, t_cycle: 1 / t_cycle,
-    Source(SOURCE.at("S5 calculation 1", note="Z_h = 3600 / t_cycle with t_cycle in s")),
+    ("z_c", "t_cycle"),
+    lambda sp, z_c, t_cycle: z_c / t_cycle,
+    Source(SOURCE.at("S5 calculation 1", note="Z_h = 3600 / t_cycle with t_cycle in s, for one load cycle per cycle"),
+           ERRATA.at("E16", note="load cycles (moves) per hour: z_c load cycles in the cycle of t_cycle")),
 )
 
 
@@ -159,6 +160,39 @@ class Profile:
         """Cycle time: every segment, pauses included (E3); summed as on-time plus pauses, so that
         the duty cycle never rounds above 1."""
         return self.t_on + self.durations[~self.moving].sum()
+
+    @property
+    def load_cycles(self):
+        """The load cycles (moves) in the cycle ``z_c`` (E16): as the gearbox makers count one,
+        acceleration, constant speed, deceleration and pause, each deceleration followed by a pause
+        or by the next acceleration (the cycle wraps round) ends one; a cycle with no such end (a
+        continuous run) is one load cycle.
+
+        Returns
+        -------
+        pint.Quantity [dimensionless]
+            The count, at least 1.
+
+        Examples
+        --------
+        >>> move = [("accel", Q_(0.1, "s"), Q_(50, "rpm"), Q_(10, "N*m")),
+        ...         ("decel", Q_(0.1, "s"), Q_(50, "rpm"), Q_(-10, "N*m")), ("pause", Q_(1, "s"), None, None)]
+        >>> int(Profile.from_segments(move).load_cycles.m), int(Profile.from_segments(move * 2).load_cycles.m)
+        (1, 2)
+        """
+        following = self.phases[1:] + self.phases[:1]
+        ends = sum(p == "decel" and q in ("pause", "accel") for p, q in zip(self.phases, following))
+        return Q_(float(max(ends, 1)), "")
+
+    def cycles_per_hour_inputs(self) -> dict:
+        """The inputs of :data:`Z_h` from this profile: ``z_c`` (:attr:`load_cycles`) and ``t_cycle``.
+
+        Returns
+        -------
+        dict
+            ``z_c`` [dimensionless] and ``t_cycle`` [s].
+        """
+        return {"z_c": self.load_cycles, "t_cycle": self.t_cycle}
 
     @property
     def n_2max(self):

@@ -38,7 +38,7 @@ SOURCE_SYMBOLS = (
      "a speed carries its angle: 300 rpm is 5 revolutions per second, not 31.4 Hz (E15)"),
     ("t", "s", "Time", "t", "s", ""),
     ("T", "Nm", "Torque", "T", "N·m", ""),
-    ("Zh", "-", "Number of Cycles", "Z_h", "1/h", "cycles per hour, Z_h = 3600 s / t_cycle"),
+    ("Zh", "-", "Number of Cycles", "Z_h", "1/h", "load cycles (moves) per hour, Z_h = 3600 s · z_c / t_cycle (E16)"),
     ("η", "%", "Efficiency", "η", "– (catalog: %)", "a fraction in the formulas; catalogs give it in %"),
 )
 

@@ -206,7 +206,7 @@ def shock_factor_figure(cycles_per_hour=None, table=SHOCK_FACTORS, f_s: float | 
     ax.set_xticks(bounds)
     ax.set_yticks(factors)
     ax.grid(True, color="#dddddd", linewidth=0.6, zorder=0)
-    ax.set_xlabel(f"cycles per hour {symbol('Z_h')} = 3600 s / {symbol('t_cycle')} [1/h]")
+    ax.set_xlabel(f"load cycles per hour {symbol('Z_h')} = 3600 s · {symbol('z_c')} / {symbol('t_cycle')} [1/h]")
     ax.set_ylabel(f"shock factor {symbol('f_s')} [–]")
     ax.set_title(textwrap.fill(f"Shock factor against cycles per hour: {table.source}", 90) + "\n"
                  f"makers rate {symbol('T_2B')} for up to 1000 cycles per hour; {symbol('f_s')} covers more",

@@ -118,7 +118,9 @@ class DutyRenderer(Renderer):
         parts = [f"<b>{escape(v.mode)}</b>", f"ED {value(v.ED)}", f"cycle {value(v.t_cycle)}",
                  f"{typeset('Z_h')} {value(v.Z_h)}", f"{typeset('f_s')} {sig(v.f_s)}",
                  f"{typeset('n_2max')} {value(v.n_2max)}",
-                 f"{typeset('T_2max')} {value(v.T_2max)}" if v.T_2max is not None else "",
+                 f"{typeset('T_2max')} {value(v.T_2max)}" + (f" (with {typeset('eta')} {sig(v.T_2max_eta)})"
+                                                            if v.T_2max_eta is not None else "")
+                 if v.T_2max is not None else "",
                  f"{typeset('n_2m')} {value(v.n_2m)}", f"{typeset('T_2m')} {value(v.T_2m)}"]
         return '<div class="values">Duty: ' + " · ".join(p for p in parts if p) + "</div>"
 

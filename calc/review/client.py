@@ -32,6 +32,7 @@ STYLE = """<style>
 .design-review .dr-idle { color: #666; font-size: 12px; margin: -2px 0 4px 15.5em; line-height: 1.2; }
 .design-review > .widget-vbox:last-child { overflow-x: auto; }  /* a wide table scrolls in its column, never cut */
 .design-review tr[data-force] { cursor: pointer; }
+.design-review .dr-print-head { display: none; }
 .design-review tr[data-force]:hover td { background: #eef3fb; }
 .design-review .dr-changed { color: #1f5fbf; border-left: 4px solid #1f5fbf; padding-left: 4px; margin-left: -8px; }
 @media (max-width: 1180px) {
@@ -40,6 +41,11 @@ STYLE = """<style>
   .design-review .dr-label { flex: 0 0 12em !important; width: 12em !important; }
   .design-review .dr-message, .design-review .dr-idle { margin-left: 12em; }
   .design-review > .widget-vbox:last-child { min-width: 420px !important; flex: 1 1 420px !important; }
+  /* the tables wrap their words, not their numbers, so that the verdict column stays on the screen */
+  .design-review .dr { font-size: 12px; }
+  .design-review .dr td, .design-review .dr th { white-space: normal; padding-right: 5px; }
+  .design-review .dr td.n { white-space: nowrap; }
+  .design-review .dr .bar { width: 28px; }
 }
 @media print {
   @page { size: A4; margin: 12mm; }
@@ -53,6 +59,8 @@ STYLE = """<style>
   .design-review .dr table { font-size: 9px; } .design-review .dr td, .design-review .dr th { white-space: normal; }
   .design-review img { max-width: 100% !important; }
   .design-review .dr-keep, .design-review button { display: none !important; }
+  /* the title block: which case, when, by which version */
+  .design-review .dr-print-head { display: block !important; font-size: 9px; color: #333; margin: 0 0 4px; }
 }
 </style>"""
 
@@ -64,7 +72,9 @@ SCRIPT = r"""<script>
   const results = () => document.querySelector('.design-review .dr[data-generation]');
   // An option's text as written (the widgets write its spaces as no-break spaces).
   const optionText = o => o.text.replace(/\u00a0/g, ' ').trim();
-  const loadedAt = Date.now();
+  // When the page loaded, or a link's case was asked for: what a link carries is waited for that long.
+  let loadedAt = Date.now();
+  const PATIENCE = 60000;
   let askedAfter = null, askedAt = 0, restoring = null;  // the results' generation when a value was last asked for
   // The text each control shows, by key path: a field's text, a choice's option.
   function shown() {
@@ -85,23 +95,68 @@ SCRIPT = r"""<script>
     const stamp = JSON.parse(r.dataset.inputs), now = shown();
     return Object.keys(now).every(k => stamp[k] === undefined || stamp[k] === now[k]);
   }
-  function connection() {
+  // A kernel restarted (killed, then started again by the server) holds none of the page's controls:
+  // what it computed is lost for good, and only a reload gives a working page.
+  let restarted = false, watched = null;
+  function kernelOf() {
     const app = window.jupyterapp, manager = app && (app.widgetManager || app._widgetManager);
-    const kernel = manager && (manager.kernel || manager._kernel);
+    return manager && (manager.kernel || manager._kernel);
+  }
+  function connection() {
+    const kernel = kernelOf();
+    if (kernel && watched !== kernel && kernel.statusChanged) {
+      watched = kernel;
+      kernel.statusChanged.connect((_, status) => {
+        if (['restarting', 'autorestarting', 'dead'].includes(status)) { restarted = true; show(); }
+      });
+    }
+    if (kernel && ['restarting', 'autorestarting', 'dead'].includes(kernel.status)) restarted = true;
     return kernel ? kernel.connectionStatus : null;  // null: not in a served page (JupyterLab)
+  }
+  // Each control named for assistive technology by its row's label; the state line a live region; a candidate's
+  // row reachable and forced by the keyboard (Enter or Space), as a click forces it.
+  function accessible(p) {
+    for (const row of p.querySelectorAll('.dr-row')) {
+      const label = row.querySelector('[data-key]');
+      if (!label) continue;
+      const name = label.textContent.replace(/\s+/g, ' ').trim();
+      const kinds = [['input[type=text]', ': value typed'], ['select', ''], ['[role=slider]', ': slider']];
+      for (const [sel, what] of kinds) {
+        for (const c of row.querySelectorAll(sel)) if (c.getAttribute('aria-label') !== name + what) {
+          c.setAttribute('aria-label', name + what);
+        }
+      }
+    }
+    for (const c of p.querySelectorAll('.dr-case select, .dr-moves select, .dr-written select')) {
+      if (!c.getAttribute('aria-label')) c.setAttribute('aria-label', c.closest('.widget-dropdown')?.textContent.trim()
+                                                          .split('\n')[0] || 'choice');
+    }
+    const state = p.querySelector('.dr-state');
+    if (state && state.getAttribute('role') !== 'status') { state.setAttribute('role', 'status');
+                                                             state.setAttribute('aria-live', 'polite'); }
+    for (const tr of p.querySelectorAll('tr[data-force]:not([tabindex])')) {
+      tr.setAttribute('tabindex', '0'); tr.setAttribute('role', 'button');
+      tr.setAttribute('aria-label', 'force ' + tr.dataset.part);
+    }
   }
   function show() {
     const p = panel(), r = results();
     if (!p || !r) return;
+    accessible(p);
     if (restoring !== false && restoring !== 'case') restore();
-    const state = p.querySelector('.dr-state'), link = connection(), lost = link !== null && link !== 'connected';
+    const state = p.querySelector('.dr-state'), link = connection();
+    const lost = restarted || (link !== null && link !== 'connected');
     const same = current();
     const waiting = askedAfter !== null && Number(r.dataset.generation) <= askedAfter && Date.now() - askedAt < 3000;
     const stale = !same || waiting || p.classList.contains('dr-busy');  // dr-busy: the kernel computing a change
     p.classList.toggle('dr-lost', lost);
     p.classList.toggle('dr-stale', stale && !lost);
     if (state) {
-      const text = lost
+      const text = restarted
+        ? 'The server restarted this page’s computation (its kernel): the results shown are not those of the fields, '
+          + 'and no change is computed any more. Reload the page; the changed values, typed ones too, are kept in '
+          + 'its address.'
+        : lost
         ? 'Connection to the server lost: the results shown are not those of the fields. '
           + 'Start the server again (make review) and reload the page; the changed values are kept in its address.'
         : stale ? 'Out of date: computing the results of the values changed '
@@ -110,24 +165,30 @@ SCRIPT = r"""<script>
           + (modified(r) ? ' (changed values marked)' : ' (the case file’s values)') + '.';
       // Written only when it changes: the observer below sees every write.
       if (state.textContent !== text) state.textContent = text;
-      const word = lost ? 'lost' : stale ? 'stale' : 'current';
+      const word = restarted ? 'restarted' : lost ? 'lost' : stale ? 'stale' : 'current';
       if (state.dataset.state !== word) state.dataset.state = word;
     }
-    if (same && !lost && restoring === false) keepInAddress(r);  // not before the address was read
+    if (restoring === false && (lost || same)) keepInAddress(r, lost);  // not before the address was read
   }
   // Whether the screen differs from the case file: a value changed, or the moves edited.
   const edited = r => r.dataset.edits && r.dataset.edits !== '[]';
   const modified = r => (r.dataset.changed && r.dataset.changed !== '{}') || edited(r);
   // The changed values (and the moves' edits) in the page's address, so that a reload or a link types them in again.
-  function keepInAddress(r) {
+  // Lost (``typed``): the values typed since, which no kernel took, are kept as well.
+  function keepInAddress(r, typed) {
     const changed = JSON.parse(r.dataset.changed || '{}'), name = r.dataset.case || '';
+    if (typed && r.dataset.inputs) {
+      const stamp = JSON.parse(r.dataset.inputs), now = shown();
+      for (const k of Object.keys(now)) if (stamp[k] !== undefined && stamp[k] !== now[k]) changed[k] = now[k];
+    }
     const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed}
                             : {case: name, values: changed};
     const units = r.dataset.units !== r.dataset.fileUnits;  // the other unit system than the file's
     if (units) state.units = r.dataset.units;
     const variants = JSON.parse(r.dataset.variants || '[]');  // the variants kept, each as its edits and values
     if (variants.length) state.variants = variants;
-    const hash = modified(r) || units || variants.length ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
+    const some = modified(r) || Object.keys(changed).length || units || variants.length;
+    const hash = some ? '#' + encodeURIComponent(JSON.stringify(state)) : '';
     if (location.hash !== hash) history.replaceState(null, '', location.pathname + location.search + hash);
   }
   function rowOf(key) {
@@ -150,12 +211,12 @@ SCRIPT = r"""<script>
   function ask() { const r = results(); askedAfter = r ? Number(r.dataset.generation) : 0; askedAt = Date.now(); }
   // Hand what a link carries (``wanted``) to the kernel through its hidden field, unless the
   // results already carry it (``has``) or say it was asked for (``asked``: the kernel says why
-  // what it could not take was left out); true once so. Not forever: 20 s after the page loaded.
+  // what it could not take was left out); true once so. Not forever: PATIENCE after the page loaded.
   function handOver(what, selector, wanted, has, asked) {
     const same = text => JSON.stringify(wanted) === JSON.stringify(JSON.parse(text || '[]'));
     if (same(has) || (asked !== undefined && same(asked))) return true;
     const field = document.querySelector('.design-review ' + selector);
-    if (Date.now() - loadedAt > 20000) { restoring = false; return false; }
+    if (Date.now() - loadedAt > PATIENCE) { restoring = false; return false; }
     if (restoring === what || !field) return false;  // asked for and not drawn yet, or the field not drawn yet
     restoring = what; field.value = JSON.stringify(wanted); field.dispatchEvent(new Event('change', {bubbles: true}));
     return false;
@@ -172,8 +233,10 @@ SCRIPT = r"""<script>
       if (restoring === 'case') return;  // the case asked for is being loaded
       const choice = document.querySelector('.design-review .dr-case select');
       const k = choice ? [...choice.options].findIndex(o => optionText(o).split(' · ')[0] === wanted.case) : -1;
-      if (k < 0) { restoring = false; return; }
-      restoring = 'case'; choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
+      // The chooser is drawn after the results at times: wait for it (not forever); a case not offered is dropped.
+      if (k < 0) { if (!choice && Date.now() - loadedAt < PATIENCE) return; restoring = false; return; }
+      restoring = 'case'; loadedAt = Date.now();
+      choice.selectedIndex = k; choice.dispatchEvent(new Event('change', {bubbles: true}));
       return;  // the values follow once the case is loaded
     }
     // The variants first (the kernel evaluates each from its case file), then the moves' edits
@@ -182,7 +245,7 @@ SCRIPT = r"""<script>
     if (!handOver('variants', '.dr-variants-asked input', variants, r.dataset.variants, asked)) return;
     if (!handOver('edits', '.dr-edits input', wanted.edits || [], r.dataset.edits)) return;
     // The controls are drawn after the results at times: wait for every row asked for (not forever).
-    if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < 20000) return;
+    if (Object.keys(wanted.values).some(k => !rowOf(k)) && Date.now() - loadedAt < PATIENCE) return;
     restoring = false;
     for (const [key, text] of Object.entries(wanted.values)) type(key, text);
     if (wanted.units && wanted.units !== r.dataset.units) {  // the unit system the link was shown in
@@ -197,6 +260,10 @@ SCRIPT = r"""<script>
   }, true);
   document.addEventListener('input', e => {
     if (e.target.closest && e.target.closest('.design-review')) show();
+  }, true);
+  document.addEventListener('keydown', e => {
+    const tr = e.target.closest && e.target.closest('.design-review tr[data-force]');
+    if (tr && (e.key === 'Enter' || e.key === ' ')) { e.preventDefault(); type(tr.dataset.force, tr.dataset.part); }
   }, true);
   // A click on a candidate's row forces that part: its control is set as a reviewer would set it.
   document.addEventListener('click', e => {

@@ -73,7 +73,8 @@ def value_text(number: float, unit: str) -> str:
 
 def edited_text(text: str, edits, source: str) -> str:
     """The TOML text ``text`` with each of ``edits`` applied in order; the other tables, comments
-    and layout are kept.
+    and layout are kept; the comment beside a value written over is marked as said of the file's
+    value, which the change may contradict.
 
     Parameters
     ----------
@@ -96,7 +97,7 @@ def edited_text(text: str, edits, source: str) -> str:
     >>> edits = [Edit("motor.peak_torque", "16 N*m"), Edit("move[2]", {"dwell": "0.5 s"}, insert=True)]
     >>> print(edited_text(text, edits, "a.toml"))
     [motor]
-    peak_torque = "16 N*m"  # T_1B
+    peak_torque = "16 N*m"  # (said of the file's value 12 N*m) T_1B
     [[move]]
     dwell = "1 s"
     [[move]]
@@ -153,7 +154,48 @@ def _apply(doc, edit: Edit, source: str):
         table[name] = _array_of_tables(edit.value)
     else:
         table[name] = _as_written(edit.value, before)
+        _mark_comment(table[name], before)
     return before
+
+
+def _mark_comment(item, before) -> None:
+    """The comment beside a value written over the file's: marked as said of the file's value,
+    which the change may contradict (``# T_1B, 12 N*m`` beside 16 N*m)."""
+    trivia = getattr(item, "trivia", None)
+    if before is None or trivia is None or not trivia.comment or _plain(before) == _plain(item):
+        return
+    said = trivia.comment.lstrip("#").strip()
+    if not said.startswith("(said of the file's value"):
+        trivia.comment = f"# (said of the file's value {comment_text(_plain(before))}) {said}"
+
+
+#: Characters that end a line or do not print: never written into a comment (a newline there would be TOML).
+_UNPRINTED = re.compile(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+
+
+def comment_text(text: str, limit: int = 300) -> str:
+    """A text as one line of a TOML comment: each line break or unprinted character a space, and
+    cut at ``limit`` characters, so that no text, a link's among them, becomes TOML.
+
+    Parameters
+    ----------
+    text : str
+        The text (a link's words, a value as the file wrote it).
+    limit : int
+        The most characters kept; default 300.
+
+    Returns
+    -------
+    str
+        One line.
+
+    Examples
+    --------
+    >>> comment_text('rotary\\n[drive_record]\\nfile = "/etc/x"')
+    'rotary [drive_record] file = "/etc/x"'
+    """
+    one = _UNPRINTED.sub(" ", str(text))
+    return one if len(one) <= limit else one[: limit - 1] + "…"
 
 
 def _entry(table, name: str, index, key: str, source: str):
@@ -296,7 +338,7 @@ def edit_text(edit) -> str:
     if edit[0] == "remove":
         return f"entry {edit[1]} of the moves removed"
     if edit[0] == "mechanism":
-        return edit[3]
+        return comment_text(edit[3])
     keys = edit[2]
     what = f"dwell {keys['dwell']}" if "dwell" in keys else f"move {keys.get('distance')} in {keys.get('time')}"
     return f"{what} added as entry {edit[1] + 1}"
@@ -330,7 +372,7 @@ def changed_text(original: str, moves, edits, source: str) -> str:
     # Changed in the design review from a.toml: motor.peak_torque 12 N*m -> 16 N*m
     # axis
     [motor]
-    peak_torque = "16 N*m"  # T_1B
+    peak_torque = "16 N*m"  # (said of the file's value 12 N*m) T_1B
     <BLANKLINE>
     """
     import tomlkit
@@ -348,7 +390,8 @@ def changed_text(original: str, moves, edits, source: str) -> str:
         elif not isinstance(edit.value, dict):
             now = "(not given)" if edit.value is None else _plain(_as_written(edit.value, before))
             said.append(f"{edit.key} {'(not given)' if before is None else _plain(before)} -> {now}")
-    return f"# Changed in the design review from {source}: " + "; ".join(said) + "\n" + tomlkit.dumps(doc)
+    header = comment_text(f"Changed in the design review from {source}: " + "; ".join(said), 4000)
+    return f"# {header}\n" + tomlkit.dumps(doc)
 
 
 def _plain(value) -> str:

@@ -58,6 +58,12 @@ class InputSpec:
         where given.
     exact : float, optional
         The case's value where the slider's (``value``, on its step) rounds it [``unit``].
+    default : str, optional
+        Where the file leaves the input out: what its value follows, in words (``follows the
+        accel time t_a``); None where the file writes it.
+    follows : str, optional
+        The key path of the input whose value it takes while the file leaves it out and the
+        reviewer has not set it (a move's decel time follows its accel time).
     """
 
     key: str
@@ -69,6 +75,8 @@ class InputSpec:
     value: float
     options: tuple = ()
     exact: float | None = None
+    default: str | None = None
+    follows: str | None = None
 
     def shown_text(self, value) -> str:
         """The value as the input's field shows it: a choice by its option's text, a number by
@@ -171,14 +179,15 @@ def nice_step(span: float, pixels: int = 200) -> float:
     return next(m * power for m in (1, 2, 5, 10) if m * power >= raw)
 
 
-def _spec(key, label, unit, value, low, high, options=(), positive=False) -> InputSpec:
+def _spec(key, label, unit, value, low, high, options=(), positive=False, default=None, follows=None) -> InputSpec:
     step = nice_step(high - low)
     low = max(low, step) if positive else low  # a segment lasts some time, a mass is some
     on_step = lambda x: round(round(x / step) * step, 12)  # noqa: E731 (no 0.30000000000000004 in a field)
     if options:
         return InputSpec(key, label, unit, on_step(low), on_step(high), step, value, options)
     exact = None if on_step(value) == value else value
-    return InputSpec(key, label, unit, on_step(low), on_step(high), step, on_step(value), options, exact)
+    return InputSpec(key, label, unit, on_step(low), on_step(high), step, on_step(value), options, exact, default,
+                     follows)
 
 
 def _torque_range(t: float) -> tuple[float, float]:
@@ -313,7 +322,8 @@ def motion_specs(case: Case) -> list[InputSpec]:
         else:
             unit, v = _as_written(text, key.kind, f"{where}.{key.name}")
         label = f"mechanism: {input_label(key, name)}"
-        specs.append(_spec(f"mechanism.{key.name}", label, unit, v, *reach(v), positive=positive))
+        default = None if text is not None else "left out of the file: none (0)"
+        specs.append(_spec(f"mechanism.{key.name}", label, unit, v, *reach(v), positive=positive, default=default))
     for k, move in enumerate(tables["move"], start=1):
         where = f"{case.path}: move[{k}]"
         if "dwell" in move:
@@ -325,17 +335,21 @@ def motion_specs(case: Case) -> list[InputSpec]:
         specs.append(_spec(f"move[{k}].distance", f"{k} move: distance s", unit, v, *_distance(v)))
         time = parse_quantity(move["time"], "time", f"{where}.time")
         for name, label in MOVE_TIMES:
+            default = follows = None
             if name in move:
                 unit, v = _as_written(move[name], "time", f"{where}.{name}")
             # A ramp the file leaves out, at the value reading the file takes: decel as accel, no jerk.
             elif name == "decel_time":
                 unit, v = _as_written(move["accel_time"], "time", f"{where}.accel_time")
+                default, follows = "left out of the file: follows the accel time t_a", f"move[{k}].accel_time"
             else:
                 unit, v = "s", 0.0
+                default = "left out of the file: 0 s, no jerk"
             # The move's time up to three times; a ramp up to the whole move (beyond half of it the move is impossible).
             high = 3 * v if name == "time" else float(time.m_as(unit))
             positive = name != "jerk_time" or v > 0
-            specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=positive))
+            specs.append(_spec(f"move[{k}].{name}", f"{k} move: {label}", unit, v, 0.0, high, positive=positive,
+                               default=default, follows=follows))
     return specs
 
 
@@ -435,11 +449,13 @@ def input_specs(case: Case, ratios=()) -> list[InputSpec]:
         table = tables
         for name_in in tables_in:  # a key of an inline table: drive.brake_resistor.resistance
             table = table.get(name_in) if isinstance(table, dict) else None
+        given = table.get(entry) if isinstance(table, dict) else None
         text = table.get(entry, DEFAULTS.get(path)) if isinstance(table, dict) else None
         if text is not None:
             unit = _unit_of(text) if is_inch_pound(_unit_of(text)) else key.unit
             v = float(parse_quantity(text, key.kind, f"{case.path}: {path}").m_as(unit))
-            specs.append(_spec(path, input_label(key, name), unit, v, *reach(v)))
+            default = None if given is not None else f"left out of the file: {text}, the default"
+            specs.append(_spec(path, input_label(key, name), unit, v, *reach(v), default=default))
     return specs
 
 

@@ -42,6 +42,153 @@ def save_path(original: Path, name: str) -> Path:
     return path
 
 
+#: The most files the page writes into one folder (case files, calc reports, variants PDFs), and the
+#: largest case file it writes [bytes]: anyone who reaches the port can save, and a report costs some 7 s.
+MAX_WRITTEN = 40
+MAX_CASE_BYTES = 256_000
+#: The list of the files the page wrote into a folder: only these are counted, listed and removable.
+WRITTEN_LIST = ".design-review-written.json"
+
+
+class Written:
+    """The files the design review wrote into ``folder`` (listed in :data:`WRITTEN_LIST` there):
+    at most :data:`MAX_WRITTEN`, each removable from the page; no other file is ever removed.
+
+    Parameters
+    ----------
+    folder : str or pathlib.Path
+        The folder written into.
+    """
+
+    def __init__(self, folder):
+        self.folder = Path(folder)
+
+    def names(self) -> list[str]:
+        """The files written here that still exist, oldest first.
+
+        Returns
+        -------
+        list of str
+            Their names (no folder).
+        """
+        import json
+
+        try:
+            listed = json.loads((self.folder / WRITTEN_LIST).read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return []
+        return [n for n in listed if isinstance(n, str) and _plain_name(n) and (self.folder / n).is_file()]
+
+    def check_room(self, what: str) -> None:
+        """Refuse a further file where the page has written :data:`MAX_WRITTEN` here.
+
+        Parameters
+        ----------
+        what : str
+            The file about to be written, in words (``"the case file x.toml"``).
+
+        Returns
+        -------
+        None
+        """
+        if len(self.names()) >= MAX_WRITTEN:
+            raise CalcError(f"{what}: the design review has written {MAX_WRITTEN} files into "
+                            f"{self.folder.name}/, its most; remove old ones from the page first")
+
+    def add(self, name: str) -> None:
+        """List a file just written.
+
+        Parameters
+        ----------
+        name : str
+            Its name (no folder).
+
+        Returns
+        -------
+        None
+        """
+        import json
+
+        names = [n for n in self.names() if n != name] + [name]
+        (self.folder / WRITTEN_LIST).write_text(json.dumps(names), encoding="utf-8")
+
+    def remove(self, name: str) -> None:
+        """Remove a file the page wrote (never another).
+
+        Parameters
+        ----------
+        name : str
+            Its name, as :meth:`names` gives it.
+
+        Returns
+        -------
+        None
+        """
+        import json
+
+        names = self.names()
+        if name not in names:
+            raise CalcError(f"remove {name!r}: not a file the design review wrote into {self.folder.name}/")
+        (self.folder / name).unlink(missing_ok=True)
+        (self.folder / WRITTEN_LIST).write_text(json.dumps([n for n in names if n != name]), encoding="utf-8")
+
+
+def write_case(path: Path, text: str, original: str | None) -> None:
+    """Write a new case file and read it back: at most :data:`MAX_CASE_BYTES`, only where the page
+    has room left in its folder (:class:`Written`), never over a file; then its text must be the one
+    written, the case reader must read it, and it may hold no table the original has not but the
+    mechanism's, the moves', the typed cycle's and its load's. Otherwise the file is removed and nothing saved.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The new file (:func:`save_path`).
+    text : str
+        Its text (:func:`calc.review.edit.changed_text`).
+    original : str or None
+        The text of the case file it was changed from.
+
+    Returns
+    -------
+    None
+        A file not written, or not reading back as written, raises :class:`calc.core.errors.CalcError`
+        saying why.
+    """
+    import tomllib
+
+    from ..sections.case import read_case
+
+    size = len(text.encode("utf-8"))
+    if size > MAX_CASE_BYTES:
+        raise CalcError(f"save as {path.name}: the case file would be {size} bytes, above the {MAX_CASE_BYTES} "
+                        "the design review writes")
+    written = Written(path.parent)
+    written.check_room(f"save as {path.name}")
+    try:
+        with path.open("x", encoding="utf-8") as f:  # never over a file made meanwhile
+            f.write(text)
+    except OSError as exc:
+        raise CalcError(f"save as {path.name}: {exc.strerror or exc}") from None
+    written.add(path.name)
+    try:
+        back = path.read_text(encoding="utf-8")
+        read_case(path, back)
+        tables = set(tomllib.loads(back)) - set(tomllib.loads(original or ""))
+    except (OSError, ValueError, CalcError) as exc:
+        written.remove(path.name)
+        raise CalcError(f"not saved: {path.name} read back does not read as a case ({str(exc)[:150]}); "
+                        "it was removed") from None
+    if back != text or tables - {"mechanism", "move", "profile", "load"}:
+        written.remove(path.name)
+        why = "differs from what was written" if back != text else f"has tables the file has not: {sorted(tables)}"
+        raise CalcError(f"not saved: {path.name} read back {why}; it was removed")
+
+
+def _plain_name(name: str) -> bool:
+    """Whether ``name`` is a plain file name (no folder, not hidden)."""
+    return bool(re.match(r"^[\w][\w.-]*$", name))
+
+
 def free_name(original: Path) -> str:
     """The first free name ``<stem>-variant-N.toml`` beside ``original``.
 
@@ -84,7 +231,8 @@ class CaseFiles:
         from ..report.publish import summary_rows
 
         path = Path(path)
-        self.choices = sorted({*Path(folder or path.parent).glob("*.toml"), path})
+        self.cases = Path(folder or path.parent)
+        self.choices = sorted({*self.cases.glob("*.toml"), path})
         self.labels = {p: p.name for p in self.choices}
         self.reports: dict = {}  # case file -> the path of its report
         self.folder, self.report_link = reports, report_link
@@ -127,6 +275,28 @@ class CaseFiles:
         None
         """
         self.labels[path] = path.name
+
+    def look_again(self, shown: Path) -> bool:
+        """The folder's case files as they are now: one saved since (from another page) offered,
+        one removed no longer offered (the case shown stays).
+
+        Parameters
+        ----------
+        shown : pathlib.Path
+            The case shown.
+
+        Returns
+        -------
+        bool
+            Whether the files offered changed.
+        """
+        now = {*self.cases.glob("*.toml"), shown}
+        new, gone = now - set(self.labels), set(self.labels) - now
+        for p in new:
+            self.labels[p] = p.name
+        for p in gone:
+            del self.labels[p]
+        return bool(new or gone)
 
     def options(self, shown: Path | None = None, label: str | None = None) -> list[tuple]:
         """The chooser's options: the case files with their labels.

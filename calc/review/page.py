@@ -10,12 +10,15 @@ compares with the fields and writes into the page's address: ``data-inputs`` (ea
 
 from __future__ import annotations
 
+import functools
+
 import json
 import re
 from html import escape
 
 from ..core.units import pretty_unit
 from ..report.page import FAIL_COLOR
+from ..report.provenance import PACKAGE, build_date, git_commit, sha256
 from ..report.symbols import html as typeset
 from .inputs import InputSpec
 from .state import ReviewState, Screen
@@ -25,7 +28,7 @@ from .view import results_html
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
 
 
-def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
+def label_html(spec: InputSpec, changed: bool, added: str | None = None, follows: str | None = None) -> str:
     """An input's label with its unit (the whole of it, and what became of the file's value, as
     its tooltip; its key path as ``data-key``), marked where changed or made by an edit of the moves.
 
@@ -37,6 +40,9 @@ def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
         Whether its value differs from the file's.
     added : str, optional
         What an edit of the moves made of it, in words.
+    follows : str, optional
+        What its value follows where the file leaves it out, in words
+        (:meth:`calc.review.state.ReviewState.following`): shown under the label.
 
     Returns
     -------
@@ -48,8 +54,10 @@ def label_html(spec: InputSpec, changed: bool, added: str | None = None) -> str:
     file_value += f" {unit}" if unit else ""
     was = f" ({added})" if added else f" (changed; the file: {file_value})" if changed else ""
     marked = " class=dr-changed" if changed or added else ""
+    was += f" ({follows})" if follows and not was else ""
+    note = f"<br><small class=dr-follows>{typeset(follows)}</small>" if follows else ""
     return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{marked}>'
-            f"{typeset(spec.label)}{f' [{unit}]' if unit else ''}</span>")
+            f"{typeset(spec.label)}{f' [{unit}]' if unit else ''}{note}</span>")
 
 
 def message_html(refused: str | None, idle: str | None = None) -> str:
@@ -148,6 +156,36 @@ def with_variants(results: str, variants: Variants) -> str:
     return re.sub(r'data-variants="[^"]*" data-variants-asked="[^"]*"', variants_attribute(variants), results, count=1)
 
 
+@functools.cache
+def _commit() -> str:
+    """The package's commit, looked up once (a git call costs some 10 ms, too much for every change)."""
+    return git_commit()
+
+
+def print_head(state: ReviewState) -> str:
+    """The title block a printed page starts with (shown in print only): the case file and its
+    SHA-256, whether the screen changed it, when the results were computed, the package's version
+    and commit.
+
+    Parameters
+    ----------
+    state : calc.review.state.ReviewState
+        The state evaluated.
+
+    Returns
+    -------
+    str
+        HTML: one ``div`` of class ``dr-print-head``.
+    """
+    try:
+        digest = f" (sha256 {sha256(state.path)[:16]})"
+    except OSError:
+        digest = ""
+    changed = " with the changes marked on the page" if state.modified() else ""
+    return (f'<div class="dr-print-head">Design review of {escape(state.path.name)}{digest}{changed} · computed '
+            f"{build_date()} · {escape(PACKAGE)} · commit {escape(_commit())}</div>")
+
+
 def results_text(state: ReviewState, screen: Screen, link: str | None, generation: int, variants: Variants) -> str:
     """The results of ``screen`` (:func:`calc.review.view.results_html`: verdict and chosen parts
     first, then the governing checks), or its input error, with the state they were computed for
@@ -178,6 +216,7 @@ def results_text(state: ReviewState, screen: Screen, link: str | None, generatio
         text = results_html(screen.report, screen.left_out, link, typed_by_hand=screen.typed_by_hand,
                             shown=None if state.all_candidates else SHOWN_CANDIDATES, refused=refused,
                             system=state.units, ratios=screen.ratios)
+    text = text.replace('<div class="dr">', '<div class="dr">' + print_head(state), 1)
     attributes = (f'data-generation="{generation}" data-case="{escape(state.path.name)}" '
                   f'data-inputs="{escape(json.dumps(screen.texts))}" data-edits="{escape(json.dumps(screen.moves))}" '
                   f'data-units="{escape(state.units)}" data-file-units="{escape(state.file_units)}" '

@@ -34,7 +34,7 @@ from ..report.symbols import html as typeset
 from .client import STYLE as PAGE_STYLE, state_html
 from .figures import load_cycle_svg, stiffness_chain_svg
 from .inputs import InputSpec, option_text
-from .keep import CaseFiles, free_name
+from .keep import CaseFiles, Written, free_name
 from .page import (SHOWN_CANDIDATES, failed_html, label_html, link_html, message_html, results_text,
                    with_variants)
 from .state import ReviewState, without_folder
@@ -70,9 +70,12 @@ class DesignReview:
     reports : str or pathlib.Path, optional
         The folder of the calc reports (:class:`calc.review.keep.CaseFiles`): the case chooser
         shows each case's verdict as its file reads, and the screen's once an input is changed.
+    watch : float, optional
+        Every this many seconds, the chooser looks at the folder again (:meth:`look_again`), so an
+        open page offers the case files saved since (from another page too); None: only at each change.
     """
 
-    def __init__(self, case_path, report_link=None, cases=None, reports=None):
+    def __init__(self, case_path, report_link=None, cases=None, reports=None, watch: float | None = None):
         import ipywidgets as w
 
         self.files = CaseFiles(case_path, cases, reports, report_link)
@@ -82,8 +85,17 @@ class DesignReview:
         self._relabelling = False  # the chooser's options being rewritten, not a case chosen
         self.drawing = Drawing(lambda: self.refresh(), self._busy)  # refresh looked up at each drawing
         self.generation = 0  # counts the updates drawn (the page carries it, for tests and timing)
+        self._download_text: str | None = None  # the changed case file the download link offers
         _build_widgets(self, w, Path(case_path))
         self.load()
+        if watch:
+            threading.Thread(target=self._watch, args=(watch,), daemon=True).start()
+
+    def _watch(self, seconds: float) -> None:
+        """Look at the folder again every ``seconds``, for as long as the kernel runs."""
+        stop = threading.Event()
+        while not stop.wait(seconds):
+            self.look_again()
 
     @property
     def controls(self) -> dict:
@@ -127,13 +139,13 @@ class DesignReview:
     def _slid(self, key: str, value) -> None:
         """A slider moved or a choice made."""
         if self.state.set_value(key, value):
-            self.rows.show(self.state, [key])
+            self.rows.show(self.state)  # and the inputs that follow it
             self.drawing.changed()
 
     def _typed(self, key: str, text: str) -> None:
         """A value typed into a field: applied, or refused at the field."""
         redraw = self.state.type_text(key, text)
-        self.rows.show(self.state, [key])
+        self.rows.show(self.state)  # and the inputs that follow it
         if redraw:
             self.drawing.changed()
 
@@ -263,6 +275,7 @@ class DesignReview:
         self._relabel(sorted([*self.case_file.options, (path.name, path)], key=lambda o: o[1]))
         self.kept.value = f"saved as {escape(path.name)} beside {escape(self.state.path.name)} (in the case chooser)"
         self.save_name.value = free_name(self.state.path)
+        self._show_written()
         return path
 
     def report_of_screen(self, wait: bool = False):
@@ -286,6 +299,11 @@ class DesignReview:
         if path is None:
             return None
         pdf = self.files.pdf_folder(path) / f"{path.stem}.pdf"
+        try:
+            Written(pdf.parent).check_room(pdf.name)
+        except CalcError as exc:
+            self.kept.value = failed_html("no calc report", str(exc), whole=True)
+            return None
         self.kept.value = f"building the calc report of {escape(path.name)} (some 15 s) …"
 
         def build():
@@ -296,6 +314,9 @@ class DesignReview:
                 self.kept.value = failed_html(f"no calc report of {escape(path.name)}", said, whole=True)
                 return
             self.files.reports[path] = pdf
+            if path != self.state.path:  # the screen's own report, removable from the page
+                Written(pdf.parent).add(pdf.name)
+                self._show_written()
             link = link_html(self.files.link(pdf), pdf)
             self.kept.value = f"calc report of {escape(path.name)}, the screen's design: {link}"
 
@@ -332,9 +353,50 @@ class DesignReview:
         """
         if not self.variants.kept:
             return None
-        pdf = self.variants.pdf(self.files.pdf_folder(self.state.path), self.state.path.stem, self.state.units)
+        try:
+            pdf = self.variants.pdf(self.files.pdf_folder(self.state.path), self.state.path.stem, self.state.units)
+        except CalcError as exc:
+            self.kept.value = failed_html("no PDF", str(exc), whole=True)
+            return None
         self.kept.value = f"the variants compared, as a PDF: {link_html(self.files.link(pdf), pdf)}"
+        self._show_written()
         return pdf
+
+    def _show_written(self) -> None:
+        """The files the page wrote (case files and PDFs, :class:`calc.review.keep.Written`), to remove."""
+        folders = dict.fromkeys([self.state.path.parent, self.files.pdf_folder(self.state.path)])
+        options = [(f"{folder.name}/{name}", str(folder / name)) for folder in folders
+                   for name in Written(folder).names()]
+        self.written.options = options
+        self.written.value = options[-1][1] if options else None  # the newest
+        self.written_box.layout.display = None if options else "none"
+
+    def remove_written(self, path: str | None = None) -> None:
+        """Remove a file the page wrote (by default the one chosen); never another file.
+
+        Parameters
+        ----------
+        path : str, optional
+            The file's path, as the chooser of written files gives it.
+
+        Returns
+        -------
+        None
+        """
+        path = Path(path or self.written.value or ".")
+        try:
+            if path == self.state.path:
+                raise CalcError(f"{path.name} is the case shown: choose another case first")
+            Written(path.parent).remove(path.name)
+        except CalcError as exc:
+            self.kept.value = failed_html("not removed", str(exc), whole=True)
+            return
+        self.files.reports = {k: v for k, v in self.files.reports.items() if v != path}
+        if any(o[1] == path for o in self.case_file.options):
+            self._relabel([o for o in self.case_file.options if o[1] != path])
+        self.kept.value = f"removed {escape(path.name)}"
+        self.save_name.value = free_name(self.state.path)
+        self._show_written()
 
     def _variants_asked(self, text: str) -> None:
         """The variants a link carries (the page's script writes their states here), each
@@ -394,7 +456,9 @@ class DesignReview:
         self.undo_button.disabled, self.redo_button.disabled = not history.can_undo, not history.can_redo
 
     def _offer_download(self, text: str | None) -> None:
-        """The case file as changed (``text``, as *Save as case file* writes it), as a link to download."""
+        """The case file as changed (``text``, as *Save as case file* writes it), as a link to download
+        under the name in the save field (drawn again when that name changes)."""
+        self._download_text = text
         self.download.value = "" if text is None or self.state.refused else (
             f'<a download="{escape(self.save_name.value)}" href="data:application/toml;charset=utf-8,{quote(text)}">'
             "Download the case file</a>")
@@ -403,11 +467,24 @@ class DesignReview:
         """The chooser's entry of the case shown gives the screen's verdict, not the file's, once
         an input is changed."""
         path = self.state.path
+        self.files.look_again(path)  # case files saved since, from another page too
         if path in self.files.labels:
             options = [(self.files.label(path, word, changed) if p == path else self.files.labels[p], p)
-                       for _, p in self.case_file.options]
+                       for p in sorted(self.files.labels)]
             if options != list(self.case_file.options):
                 self._relabel(options)
+
+    def look_again(self) -> None:
+        """The chooser offers the case files of the folder as they are now
+        (:meth:`calc.review.keep.CaseFiles.look_again`), the case shown keeping its label.
+
+        Returns
+        -------
+        None
+        """
+        if self.files.look_again(self.state.path):
+            shown = dict((p, label) for label, p in self.case_file.options)
+            self._relabel([(shown.get(p, self.files.labels[p]), p) for p in sorted(self.files.labels)])
 
     def _relabel(self, options: list) -> None:
         """New options for the chooser, the case shown staying chosen (and not read again)."""
@@ -560,7 +637,7 @@ class InputRows:
         import ipywidgets as w
 
         value = state.values[spec.key]
-        label = w.HTML(label_html(spec, False, state.from_edits(spec.key)),
+        label = w.HTML(label_html(spec, False, state.from_edits(spec.key), state.following(spec.key)),
                        layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
         label.add_class("dr-label")
         self.labels[spec.key], self.messages[spec.key] = label, w.HTML()
@@ -635,7 +712,7 @@ class InputRows:
         None
         """
         for spec in state.specs:
-            label = label_html(spec, spec.key in changes, state.from_edits(spec.key))
+            label = label_html(spec, spec.key in changes, state.from_edits(spec.key), state.following(spec.key))
             if self.labels[spec.key].value != label:  # each value set is a message to the page
                 self.labels[spec.key].value = label
             self._show_message(state, spec.key)
@@ -766,6 +843,7 @@ def _keep(p: DesignReview, w):
     variants compared, the calc report of the screen."""
     p.save_name = w.Text(placeholder="new-case.toml", tooltip="the new case file's name, in the folder of the case",
                          layout=_grows(w))
+    p.save_name.observe(lambda _: p._offer_download(p._download_text), names="value")  # the download's name follows
     save = _button(w, "Save as case file", "write the changed values into a new case file beside this one", "11em",
                    p.save)
     variant = _button(w, "Keep as variant", "pin the design on the screen beside the others", "11em", p.keep_variant)
@@ -782,9 +860,15 @@ def _keep(p: DesignReview, w):
     p.variants_field = w.Text(continuous_update=False, layout=w.Layout(display="none"))
     p.variants_field.add_class("dr-variants-asked")
     p.variants_field.observe(lambda change: p._variants_asked(change["new"]), names="value")
+    p.written = w.Dropdown(description="written", tooltip="a file this page's review wrote: a case file or a PDF",
+                           style={"description_width": "4.5em"}, layout=_grows(w))
+    remove = _button(w, "remove file", "remove the chosen file written from the review (never another)", "8em",
+                     p.remove_written)
+    p.written_box = w.HBox([p.written, remove], layout=w.Layout(width="100%", display="none"))
+    p.written_box.add_class("dr-written")
     keep = w.VBox([w.HBox([p.save_name, save, aasx], layout=w.Layout(width="100%")),
                    w.HBox([variant, p.variants_pdf_button, report], layout=w.Layout(flex_flow="row wrap")),
-                   p.download, p.kept, p.variants_field])
+                   p.download, p.kept, p.written_box, p.variants_field])
     keep.add_class("dr-keep")
     return keep
 
@@ -814,6 +898,9 @@ def save_aasx(p: DesignReview) -> Path | None:
     except CalcError as exc:
         p.kept.value = failed_html("no AASX", str(exc), whole=True)
         return None
+    if path != p.state.path:  # beside a case file the page saved: written by the page, removable there
+        Written(out.parent).add(out.name)
+        p._show_written()
     p.kept.value = f"saved {escape(out.name)} beside {escape(path.name)} (IDTA 02021, the case file inside)"
     return out
 

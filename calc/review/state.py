@@ -29,7 +29,7 @@ from ..sections.ratios import search as search_ratios
 from .edit import changed_text, edited_case, moves_edits, value_text
 from .inputs import (MECHANISM, MOVE_TIMES, SELECTION, TYPED, InputSpec, input_edits, is_inch_pound, option_text,
                      read_typed, review_specs)
-from .keep import save_path
+from .keep import save_path, write_case
 from .view import evaluated
 
 #: The attribute of :class:`calc.domain.mechanism.Mechanism` of each of its keys that is named otherwise.
@@ -237,6 +237,9 @@ class ReviewState:
         The text each input's field shows, by key path.
     refused : dict
         Key path -> (the text typed and refused, why).
+    pinned : set
+        The key paths of inputs that follow another while the file leaves them out
+        (:attr:`calc.review.inputs.InputSpec.follows`) and that the reviewer set: they no longer follow.
     moves : list
         The edits of the moves, in order (:mod:`calc.review.edit`).
     case : calc.sections.case.Case or None
@@ -267,6 +270,7 @@ class ReviewState:
         self.values: dict = {}
         self.texts: dict = {}
         self.refused: dict = {}
+        self.pinned: set = set()
         self.history = History(self.snapshot())
         self.shown: Screen | None = None
 
@@ -305,9 +309,10 @@ class ReviewState:
         self.units = self.file_units
         self.history = History(self.snapshot())
 
-    def _build(self, moves: list, values: dict) -> None:
+    def _build(self, moves: list, values: dict, pinned=()) -> None:
         """The inputs of the case file with the ``moves`` edited, at ``values`` (by key path) where
-        given, else at the case's; nothing changes where the edited case cannot be read."""
+        given, else at the case's, the inputs ``pinned`` set by the reviewer; nothing changes where
+        the edited case cannot be read."""
         moves = json.loads(json.dumps(moves))  # as the address and the history write them
         try:
             case = edited_case(self.path, self.file_text, [e for m in moves for e in moves_edits(m)])
@@ -315,8 +320,53 @@ class ReviewState:
         except CalcError as exc:
             raise CalcError(without_folder(str(exc), self.path)) from None
         self.case, self.moves, self.specs, self.refused = case, moves, specs, {}
+        self.pinned = {s.key for s in specs if s.follows and s.key in pinned}
         self.values = {s.key: values.get(s.key, s.value) for s in specs}
         self.texts = {s.key: s.shown_text(self.values[s.key]) for s in specs}
+        self._follow()
+
+    def _follow(self) -> list:
+        """Each input that follows another (the file leaves it out, the reviewer has not set it) at
+        that one's value, as reading the changed file takes it; the key paths it changed."""
+        moved = []
+        for spec in self.specs:
+            if spec.follows and spec.key not in self.pinned and spec.follows in self.values:
+                v = self.values[spec.follows]
+                if self.values[spec.key] != v:
+                    self.values[spec.key] = v
+                    moved.append(spec.key)
+                if spec.key not in self.refused:
+                    self.texts[spec.key] = spec.shown_text(v)
+        return moved
+
+    def _pin(self, key: str, value) -> None:
+        """An input that follows another set by the reviewer: it no longer follows, unless set to
+        the value it follows (then it follows again, and the file still leaves it out)."""
+        spec = self.spec(key)
+        if spec.follows:
+            if value == self.values.get(spec.follows):
+                self.pinned.discard(key)
+            else:
+                self.pinned.add(key)
+
+    def following(self, key: str) -> str | None:
+        """What an input's value follows, in words, while the file leaves it out.
+
+        Parameters
+        ----------
+        key : str
+            The input's key path.
+
+        Returns
+        -------
+        str or None
+            :attr:`calc.review.inputs.InputSpec.default` where the file leaves the input out and
+            it is not changed; None where its value is the file's or the reviewer's.
+        """
+        spec = self.spec(key)
+        if spec.default is None or key in self.changes():
+            return None
+        return spec.default
 
     def spec(self, key: str) -> InputSpec:
         """The input of a key path.
@@ -348,11 +398,14 @@ class ReviewState:
         bool
             Whether it changed.
         """
-        if self.values[key] == value:
+        pinned = set(self.pinned)
+        self._pin(key, value)
+        if self.values[key] == value and pinned == self.pinned:
             return False
         self.values[key] = value
         if key not in self.refused:  # a refused text stays in its field until typed again
             self.texts[key] = self.spec(key).shown_text(value)
+        self._follow()
         self.history.push(self.snapshot())
         return True
 
@@ -380,9 +433,12 @@ class ReviewState:
             self.texts[key] = text.strip()
             return True
         was_refused = self.refused.pop(key, None) is not None
-        changed = self.values[key] != v
+        pinned = set(self.pinned)
+        self._pin(key, v)
+        changed = self.values[key] != v or pinned != self.pinned
         self.values[key] = v
         self.texts[key] = spec.field_text(v) if changed else f"{v:g}"
+        self._follow()
         if changed:
             self.history.push(self.snapshot())
         return changed or was_refused
@@ -424,7 +480,13 @@ class ReviewState:
         dict
             Key path -> (number [unit] or part, unit).
         """
-        return {s.key: (v, s.unit) for s in self.specs if not s.is_case_value(v := self.values[s.key])}
+        out = {}
+        for s in self.specs:
+            v = self.values[s.key]
+            # An input that follows another is changed once set by the reviewer: the file then writes it.
+            if (s.key in self.pinned) if s.follows else not s.is_case_value(v):
+                out[s.key] = (v, s.unit)
+        return out
 
     def modified(self) -> bool:
         """Whether the screen differs from the case file.
@@ -492,10 +554,12 @@ class ReviewState:
         """
         if self.refused:
             raise CalcError("a refused value is in a field: correct it (or undo) before saving")
+        if not self.modified():
+            raise CalcError(f"nothing changed: the screen is {self.path.name} as it is; nothing written")
         path = save_path(self.path, name.strip())
         try:
-            path.write_text(self.case_text(), encoding="utf-8")
-        except OSError as exc:
+            write_case(path, self.case_text(), self.file_text)
+        except CalcError as exc:
             raise CalcError(without_folder(str(exc), self.path)) from None
         return path
 
@@ -526,9 +590,10 @@ class ReviewState:
         Returns
         -------
         tuple
-            (the moves' edits as JSON, the inputs' values by key path).
+            (the moves' edits as JSON, the inputs' values by key path, the inputs set that follow
+            another while the file leaves them out).
         """
-        return json.dumps(self.moves), dict(self.values)
+        return json.dumps(self.moves), dict(self.values), tuple(sorted(self.pinned))
 
     def undo(self) -> None:
         """Back to the state before the last change (none: nothing happens).
@@ -551,10 +616,11 @@ class ReviewState:
     def _step(self, snapshot) -> None:
         if snapshot is None:
             return
-        moves, values = snapshot
+        moves, values, pinned = snapshot
         if moves != json.dumps(self.moves):
-            self._build(json.loads(moves), values)
+            self._build(json.loads(moves), values, pinned)
             return
+        self.pinned = set(pinned)
         for key, v in values.items():
             self.values[key] = v
             if key not in self.refused:
@@ -687,7 +753,7 @@ class ReviewState:
     def _edit_moves(self, edit: list) -> None:
         """The inputs of the moves with ``edit`` as well, each value carried to its entry's new
         place (an entry removed takes its values with it)."""
-        self._build([*self.moves, edit], _moved(self.values, edit))
+        self._build([*self.moves, edit], _moved(self.values, edit), _moved(dict.fromkeys(self.pinned), edit))
         self.history.push(self.snapshot())
 
     def from_edits(self, key: str) -> str | None:

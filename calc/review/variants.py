@@ -13,7 +13,7 @@ from pathlib import Path
 from ..core.errors import CalcError, as_found
 from ..core.units import pretty_unit
 from .edit import edit_text, value_text
-from .keep import CaseFiles
+from .keep import CaseFiles, Written
 from .state import ReviewState
 from .view import comparison_html, comparison_pdf, comparison_rows, worst_utilizations
 
@@ -180,12 +180,16 @@ class Variants:
         Returns
         -------
         pathlib.Path
-            The PDF's path.
+            The PDF's path; where the page has written its most files there
+            (:class:`calc.review.keep.Written`), :class:`calc.core.errors.CalcError`.
         """
         n = 1
         while (pdf := folder / f"{stem}-variants-{n}.pdf").exists():
             n += 1
+        written = Written(folder)
+        written.check_room(pdf.name)
         rows = comparison_rows(self.kept, units)
         comparison_pdf([f"variant {k}" for k in range(1, len(self.kept) + 1)], rows, worst_utilizations(self.kept), pdf,
-                       legend=[name for name, _ in self.kept])
+                       legend=[name for name, _ in self.kept], files=[r.path for _, r in self.kept])
+        written.add(pdf.name)
         return pdf

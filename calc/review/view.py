@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 from html import escape
+from pathlib import Path
 
 import numpy as np
 
@@ -24,6 +25,7 @@ from ..report.symbols import html as typeset
 STYLE = f"""<style>
 .dr {{ font-size: 13px; line-height: 1.35; color: #1a1a1a; }}
 .dr h3 {{ font-size: 14px; margin: 12px 0 4px; }}
+.dr .decides {{ font-size: 13px; margin: 0 0 6px; }}
 .dr .verdict {{ display: flex; align-items: baseline; gap: 12px; flex-wrap: wrap; margin-bottom: 4px; }}
 .dr .word {{ font-size: 22px; font-weight: 700; color: #fff; padding: 1px 12px; border-radius: 4px; }}
 .dr .pass {{ color: {PASS_COLOR}; font-weight: 600; }} .dr .fail {{ color: {FAIL_COLOR}; font-weight: 600; }}
@@ -93,6 +95,16 @@ def _governing(results) -> str:
     return "<h3>Governing checks</h3>" + table(header, rows, numeric={2, 3, 4})
 
 
+def _deciding_html(results) -> str:
+    """Under the verdict, in words: what decides the design, the most utilized governing check of each part
+    (:meth:`calc.sections.evaluation.Results.deciding`)."""
+    parts = []
+    for g, k in results.deciding() if results is not None else []:
+        who = g.section + (f" {escape(g.part)}" if g.part else "") + ("" if g.chosen else " (closest)")
+        parts.append(f"{who} by {typeset(k.criterion or k.name)} at {100 * k.utilization:.0f} %")
+    return f'<div class="decides">What decides the design: {"; ".join(parts)}.</div>' if parts else ""
+
+
 def _not_made_html(results) -> str:
     """Beside the verdict: how many checks were not made, and (a click away) which and why."""
     missing = results.not_made() if results is not None else []
@@ -148,7 +160,7 @@ def _results_html(report, left_out, report_link, typed_by_hand, shown, refused, 
     link = f' <a href="{escape(report_link)}" target="_blank">calc report</a>' if report_link else ""
     out = [STYLE, '<div class="dr">',
            f'<div class="verdict"><span class="word {cls}">{word}</span><span class="parts">{chosen}</span>{link}'
-           f"{_not_made_html(report.evaluated)}</div>"]
+           f"{_not_made_html(report.evaluated)}</div>", _deciding_html(report.evaluated)]
     if refused:
         out.append('<div class="refused"><b>Not applied</b> (the results are those of the values before): '
                    + "; ".join(typeset(x) for x in refused) + "</div>")
@@ -308,7 +320,7 @@ def comparison_text(names: list[str], rows: list[tuple[str, list[str]]]) -> str:
 
 
 def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: dict, path,
-                   legend: list[str] = ()) -> None:
+                   legend: list[str] = (), files: list = ()) -> None:
     """:func:`comparison_rows` as a one-page PDF (A4 landscape): the table, a value that differs
     from the first design's shaded, and a comparison figure of the worst governing utilization of
     each design's gearbox, coupling and motor (matplotlib, no TeX needed).
@@ -327,6 +339,9 @@ def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: d
     legend : list of str
         What each design is, where its name is short (the review's variants by number), printed
         under the title.
+    files : list of pathlib.Path
+        The case files the designs were read from: the title block names each with its SHA-256,
+        beside the date, the package's version and commit (:mod:`calc.report.provenance`).
 
     Returns
     -------
@@ -336,13 +351,19 @@ def comparison_pdf(names: list[str], rows: list[tuple[str, list[str]]], worst: d
 
     from matplotlib.figure import Figure
 
+    from ..core.glossary import SYMBOLS, math
+    from ..report.provenance import PACKAGE, build_date, git_commit, sha256
+
     fig = Figure(figsize=(11.69, 8.27))
-    table_ax, bars = fig.add_axes((0.03, 0.36, 0.94, 0.52 if legend else 0.58)), fig.add_axes((0.1, 0.06, 0.85, 0.22))
+    table_ax, bars = fig.add_axes((0.03, 0.36, 0.94, 0.50 if legend else 0.54)), fig.add_axes((0.1, 0.06, 0.85, 0.22))
     table_ax.axis("off")
     fig.text(0.03, 0.965, "Designs compared (shaded: differs from the first design)", fontsize=11, va="top")
+    read = "; ".join(f"{Path(f).name} sha256 {sha256(f)[:16]}" for f in dict.fromkeys(files) if Path(f).is_file())
+    block = f"{build_date()} · {PACKAGE} · commit {git_commit()}" + (f" · {read}" if read else "")
+    fig.text(0.03, 0.94, "\n".join(textwrap.wrap(block, 200)[:2]), fontsize=6.5, va="top", color="#333")
     if legend:
-        fig.text(0.03, 0.935, "\n".join(textwrap.wrap("; ".join(legend), 190)[:4]), fontsize=7, va="top")
-    cells = [[name.replace("_", " "), *values] for name, values in rows]
+        fig.text(0.03, 0.905, "\n".join(textwrap.wrap("; ".join(legend), 190)[:4]), fontsize=7, va="top")
+    cells = [[math(name) if name in SYMBOLS else name, *values] for name, values in rows]
     shown = table_ax.table(cellText=cells, colLabels=["", *names], loc="upper left", cellLoc="left")
     shown.auto_set_font_size(False)
     shown.set_fontsize(8)
@@ -384,14 +405,15 @@ def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
     Raises
     ------
     calc.core.errors.CalcError
-        A case that cannot be evaluated, with its report's error.
+        A case that cannot be evaluated, with its report's error; a ``pdf`` that exists.
     """
     import json
-    from pathlib import Path
 
     from ..sections.case import read_case
     from ..core.errors import CalcError
 
+    if pdf is not None and Path(pdf).exists():
+        raise CalcError(f"--pdf {pdf}: the file exists; name a new one (a comparison is never written over a file)")
     designs = [(Path(p).name, report_of(read_case(p))) for p in paths]
     for _, r in designs:
         if r.error is not None:
@@ -399,7 +421,7 @@ def compare_cases(paths: list[str], as_json: bool = False, pdf=None) -> str:
     rows = comparison_rows(designs)
     names = [n for n, _ in designs]
     if pdf is not None:
-        comparison_pdf(names, rows, worst_utilizations(designs), pdf)
+        comparison_pdf(names, rows, worst_utilizations(designs), pdf, files=[Path(p) for p in paths])
     if as_json:
         return json.dumps({"designs": [str(p) for p in paths],
                            "rows": [{"name": name, "values": values,

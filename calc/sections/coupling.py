@@ -56,7 +56,8 @@ TABLES = (Declared(NAME, (
         "the table of the temperature factor K_ϑ (E9): source | roba-es | comintec | a path", default="source"),
     Key("start_factors", "factor table",
         "the table of the start factor S_z: roba-es | a path; the peak-torque check T_S · S_z · K_ϑ <= T_Kmax"),
-    Key("starts_per_hour", "per_hour", "starts per hour for the start factor (default: Z_h of the load cycle)", "Z_h",
+    Key("starts_per_hour", "per_hour", "starts per hour for the start factor (default: Z_h, load cycles per hour)",
+        "Z_h",
         unit="1/hour"),
 ), "the coupling: its inputs, the candidates checked and ranked, and the order line of the one chosen"),)
 
@@ -221,9 +222,9 @@ def coupling_case(case: Case, given: CouplingInputs, gearbox) -> CouplingCase:
     """
     derived, derived_steps = _from_the_case(case, gearbox) if given.side == "input" else ({}, {})
     if given.start_factors is not None and not given.has("starts_per_hour"):
-        # One start from rest per cycle of the load cycle.
-        z = Z_h(t_cycle=case.profile.t_cycle)
-        derived["starts_per_hour"] = (z, "starts_per_hour = Z_h of the load cycle (one start per cycle) = "
+        # One start from rest per load cycle (move), E16.
+        z = Z_h(**case.profile.cycles_per_hour_inputs())
+        derived["starts_per_hour"] = (z, "starts_per_hour = Z_h of the load cycle (one start per load cycle, E16) = "
                                          f"{fmt(z, '1/hour')}")
     inputs = {key: given.given[key] if given.has(key) or key not in FROM_THE_CASE else derived.get(key, (None, ""))[0]
               for key in QUANTITIES}

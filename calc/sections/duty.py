@@ -4,6 +4,7 @@ every other section builds on."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -91,6 +92,8 @@ class DutyValues:
         T_2max of the best-ranked gearbox [N*m], where the case has one.
     T_2max_part : str or None
         That gearbox.
+    T_2max_eta : float or None
+        That gearbox's efficiency η [1], which T_2max = T_1B · i · f_s · η credits; None where not known.
     """
 
     t_on: Value
@@ -105,6 +108,7 @@ class DutyValues:
     n_2max: Value
     T_2max: Value | None
     T_2max_part: str | None
+    T_2max_eta: float | None = None
 
 
 @dataclass
@@ -129,6 +133,8 @@ class DutyResult(Result):
         T_2max of the best-ranked gearbox, when the case has one and the motor's peak torque.
     T2max_part : str, optional
         That gearbox.
+    T2max_eta : float, optional
+        Its efficiency η [1], as T_2max took it.
     cycle : calc.domain.cycle.SampledCycle, optional
         The sampled cycle where the motion form derived it.
     shock_factors : calc.data.bands.BandTable, optional
@@ -148,6 +154,7 @@ class DutyResult(Result):
     fs: float
     T2max: object = None
     T2max_part: str | None = None
+    T2max_eta: float | None = None
     cycle: SampledCycle | None = None
     shock_factors: BandTable = SHOCK_FACTORS
     steps: list = field(default_factory=list)
@@ -168,7 +175,7 @@ class DutyResult(Result):
             Z_h=Value.of(self.Zh, "1/hour", "cyclic.Zh"), f_s=self.fs, f_s_table=self.fs_table,
             n_2max=Value.of(self.profile.n_2max, "rpm", "cyclic.n2max"),
             T_2max=None if self.T2max is None else Value.of(self.T2max, "N*m", "cyclic.T2max"),
-            T_2max_part=self.T2max_part,
+            T_2max_part=self.T2max_part, T_2max_eta=self.T2max_eta,
         )
 
     def to_json(self, candidates: int | None = None) -> dict:
@@ -258,7 +265,8 @@ def duty_result(case: Case, gearbox) -> DutyResult:
     seg = p.moving_values()
     steps = [("Duty cycle", ED.step(t_on=p.t_on, t_cycle=p.t_cycle)),
              ("Mean output speed", n_2m.step(n_2k=seg["n_2k"], t_k=seg["t_k"])),
-             ("Cubic mean output torque", T_2m.step(**seg)), ("Cycles per hour", Z_h.step(t_cycle=p.t_cycle))]
+             ("Cubic mean output torque", T_2m.step(**seg)),
+             ("Load cycles per hour", Z_h.step(**p.cycles_per_hour_inputs()))]
     _, n2m, t2m, zh = (step.result for _, step in steps)
     table = SHOCK_FACTORS if case.shock_factors is None else case.shock_factors
     out = DutyResult(p, duty(p), n2m, t2m, zh, float(shock_factor(zh, table)),
@@ -268,4 +276,6 @@ def duty_result(case: Case, gearbox) -> DutyResult:
         if selection.T_2max is not None:
             row = selection.order[0]
             out.T2max, out.T2max_part = selection.T_2max[row], str(selection.catalog.parts[row])
+            eta = float(selection.catalog["eta"][row].m_as(""))
+            out.T2max_eta = None if math.isnan(eta) else eta  # NaN: the catalog gives none
     return out

@@ -249,6 +249,22 @@ class Results:
         """
         return [g for r in self.sections.values() if (g := r.governing()) is not None]
 
+    def deciding(self) -> list:
+        """What decides the design: the most utilized governing check of each part, most utilized first.
+
+        Returns
+        -------
+        list of tuple
+            ``(governing, check)``: the :class:`calc.sections.common.Governing` and its check of the
+            highest utilization (checks not made left out; a part without a made check left out).
+        """
+        out = []
+        for g in self.governing():
+            made = [k for k in g.checks if k.utilization is not None]
+            if made:
+                out.append((g, max(made, key=lambda k: k.utilization)))
+        return sorted(out, key=lambda gk: -gk[1].utilization)
+
     def not_made(self) -> list[str]:
         """Every governing check not made, and every check left out for want of an input (the
         motor's without a rating).

@@ -274,7 +274,7 @@ def check_steps(case: Case, sel: GearboxSelection) -> list:
     out = [("Input speed at the mean output speed (S1)", n_1.step(n_2=n_2, i=i), "compared with n_1N"),
            ("Input speed at the highest output speed (S5)", n_1.step(n_2=p.n_2max, i=i), "compared with n_1max")]
     if case.motor_peak_torque is not None:
-        f_s = Q_(float(shock_factor(Z_h(t_cycle=p.t_cycle), table)), "")
+        f_s = Q_(float(shock_factor(Z_h(**p.cycles_per_hour_inputs()), table)), "")
         step = T_2max.step(T_1B=case.motor_peak_torque, i=i, f_s=f_s, eta=cat["eta"][row])
         out.append(("Maximum output torque", step, "compared with T_2B"))
     if sel.inertia_ratio is not None and not np.isnan(sel.J_1[row].magnitude):

@@ -324,7 +324,7 @@ def _gear_rows(case: Case, gear, hubs, J_c: float) -> tuple[dict, list]:
     # Per pair, not per case: the motor's peak and rotor.
     inputs = {**selection_inputs(case), "motor_peak_torque": None, "motor_inertia": None, "coupling_span": None}
     sel = select_gearbox(case.profile, gear, hubs=hubs, **inputs)
-    f_s = float(shock_factor(Z_h(t_cycle=case.profile.t_cycle), inputs["shock_factors"]))
+    f_s = float(shock_factor(Z_h(**case.profile.cycles_per_hour_inputs()), inputs["shock_factors"]))
     i, eta = gear["ratio"].m_as(""), gear["eta"].m_as("")
     # T_2max <= T_2B (E4): the highest motor peak each row takes, in S5 (T_2max is T_1B times the rest)
     peak_limit = np.full(len(gear), np.inf)

@@ -36,7 +36,7 @@ def test_on_time_of_exactly_20_min_is_s1_after_rounded_sums():
 )
 def test_shock_factor_boundary_after_rounded_sums(moving, pause, fs):
     p = _cycle(moving, pause)
-    assert shock_factor(Z_h(t_cycle=p.t_cycle)) == fs
+    assert shock_factor(Z_h(**p.cycles_per_hour_inputs())) == fs
 
 
 def test_just_below_a_boundary_stays_below():

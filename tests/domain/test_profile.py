@@ -42,8 +42,39 @@ def test_s1_means_of_the_example_by_hand():
 
 
 def test_cycles_per_hour():
-    # Source: Z_h = 3600 / t_cycle (t in s): 3600 / 2 = 1800 per hour.
-    assert Z_h(t_cycle=Q_(2, "s")).m_as("1/hour") == pytest.approx(1800)
+    # Source: Z_h = 3600 / t_cycle (t in s): 3600 / 2 = 1800 per hour, for one load cycle in the cycle.
+    assert Z_h(z_c=Q_(1, ""), t_cycle=Q_(2, "s")).m_as("1/hour") == pytest.approx(1800)
+    # E16: two load cycles (moves) in a 3.2 s cycle (the inch example): 2 · 3600 / 3.2 = 2250 per hour.
+    assert Z_h(z_c=Q_(2, ""), t_cycle=Q_(3.2, "s")).m_as("1/hour") == pytest.approx(2250)
+
+
+def _move(t_pause: float) -> list:
+    return [("accel", Q_(0.15, "s"), Q_(20, "rpm"), Q_(10, "N*m")),
+            ("const", Q_(0.2, "s"), Q_(40, "rpm"), Q_(3, "N*m")),
+            ("decel", Q_(0.15, "s"), Q_(20, "rpm"), Q_(-4, "N*m")),
+            ("pause", Q_(t_pause, "s"), None, None)]
+
+
+def test_load_cycles_count_the_moves_e16():
+    # E16: a load cycle is acceleration, constant speed, deceleration and pause, as the gearbox makers count it.
+    assert Profile.from_segments(_move(1.0)).load_cycles.m == 1
+    assert Profile.from_segments(_move(1.0) * 3).load_cycles.m == 3
+    # Two moves back to back (the second starts as the first stops) and a triangle move (no constant phase).
+    back_to_back = _move(1.0)[:3] + _move(1.0)
+    assert Profile.from_segments(back_to_back).load_cycles.m == 2
+    assert Profile.from_segments([_move(1.0)[0], _move(1.0)[2]]).load_cycles.m == 1
+    # A continuous run (no deceleration) is one load cycle, the cycle itself.
+    assert Profile.from_segments([("const", Q_(1, "s"), Q_(100, "rpm"), Q_(5, "N*m"))]).load_cycles.m == 1
+
+
+@settings(max_examples=30, deadline=None)
+@given(k=st.integers(1, 6), t_pause=st.floats(0.05, 10))
+def test_one_cycle_of_k_moves_gives_the_z_h_of_one_move_e16(k, t_pause):
+    # k copies of a move in one cycle of the file: k load cycles in k times the time, the same Z_h.
+    one, many = Profile.from_segments(_move(t_pause)), Profile.from_segments(_move(t_pause) * k)
+    assert many.load_cycles.m == k * one.load_cycles.m
+    z_one, z_many = Z_h(**one.cycles_per_hour_inputs()), Z_h(**many.cycles_per_hour_inputs())
+    assert z_many.m_as("1/hour") == pytest.approx(z_one.m_as("1/hour"), rel=1e-12)
 
 
 @pytest.mark.parametrize(

@@ -120,8 +120,8 @@ def test_shock_factor_figure_follows_a_table_that_takes_the_lower_factor(tmp_pat
 
 @pytest.mark.parametrize("t_cycle, z, fs", [(2.0, 1800, 1.3), (2.4, 1500, 1.3), (7.2, 500, 1.0), (0.5, 7200, 2.0)])
 def test_shock_factor_figure_marks_the_case(t_cycle, z, fs):
-    # Z_h = 3600 s / t_cycle; a point on a boundary (1500) takes the higher factor (E4).
-    fig = shock_factor_figure(Z_h(t_cycle=Q_(t_cycle, "s")))
+    # Z_h = 3600 s / t_cycle for one load cycle (E16); a point on a boundary (1500) takes the higher factor (E4).
+    fig = shock_factor_figure(Z_h(z_c=Q_(1, ""), t_cycle=Q_(t_cycle, "s")))
     (ax,) = fig.axes
     (case,) = [line for line in ax.lines if line.get_gid() == "case"]
     assert case.get_xdata()[0] == pytest.approx(z)

@@ -277,3 +277,28 @@ def test_a_bad_drive_record_is_one_line(capsys, write_case, tmp_path, csv, mecha
     code, out, err = run(capsys, write_case(HEAD + mechanism + '[drive_record]\nfile = "rec.csv"\n'), "--json")
     assert code == 2 and out == ""
     assert "\n" not in err.strip() and fragment in err, err
+
+
+def test_one_cycle_of_two_moves_gives_the_verdict_of_two_cycles_of_one_e16(capsys, tmp_path):
+    # The example's motion written twice in one cycle (index, 1 s, index, 1 s) is physically the example: E16 counts
+    # load cycles (moves) per hour, so Z_h = 2 · 3600 / 3 s = 3600 / 1.5 s = 2400 /h either way (f_s 1.6, E4), and
+    # T_2max, the gearbox and the verdict do not change.
+    from ..conftest import DERIVED_EXAMPLE
+
+    text = DERIVED_EXAMPLE.read_text()
+    moves = '[[move]]\ndistance = "90 deg"\ntime = "0.5 s"\naccel_time = "0.15 s"\njerk_time = "0.03 s"\n' \
+            '[[move]]\ndwell = "1.0 s"\n'
+    assert moves in text
+    twice = tmp_path / "indexing-table-twice.toml"
+    # Beside the example, its measurement files are found where the example finds them.
+    twice.write_text(text.replace(moves, moves + moves).replace('"../data/', f'"{DERIVED_EXAMPLE.parent.parent}/data/'))
+    (code1, out1, _), (code2, out2, err2) = run(capsys, DERIVED_EXAMPLE, "--json"), run(capsys, twice, "--json")
+    assert code1 == code2 == 0, err2
+    one, two = json.loads(out1), json.loads(out2)
+    assert one["duty"]["t_cycle"]["value"] == pytest.approx(1.5) and two["duty"]["t_cycle"]["value"] == pytest.approx(3)
+    assert one["cyclic"]["Zh"]["value"] == pytest.approx(2400) and two["cyclic"]["Zh"]["value"] == pytest.approx(2400)
+    assert two["cyclic"]["fs"] == one["cyclic"]["fs"] == 1.6
+    for key in ("T2max", "n2max"):
+        assert two["cyclic"][key]["value"] == pytest.approx(one["cyclic"][key]["value"], rel=1e-12), key
+    assert two["gearbox"]["selected"] == one["gearbox"]["selected"] == "NPT035-10"
+    assert two["verdict"] == one["verdict"]

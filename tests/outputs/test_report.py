@@ -194,7 +194,7 @@ def test_shock_factor_band_is_the_one_the_factor_came_from():
     from calc.domain.profile import Z_h
     from calc.report.duty import shock_factor_block
 
-    zh = Z_h(t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))
+    zh = Z_h(z_c=Q_(1, ""), t_cycle=Q_(0.1 + 0.1 + 0.1 + 2.1, "s"))
     block = shock_factor_block(zh)
     assert float(shock_factor(zh)) == 1.3
     assert r"1500 \le Z_{\mathrm{h}} < 2000" in block and r"f_{\mathrm{s}} = 1.3" in block

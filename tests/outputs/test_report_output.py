@@ -84,7 +84,8 @@ def test_every_number_of_the_duty_and_coupling_steps_is_the_json_number(reports,
     j, steps = json_of(r), steps_of(r)
     # The duty: ED in %, n_2m in rpm, T_2m in N·m, Z_h in 1/h, as the JSON writes them.
     for title, value in (("Duty cycle", j["duty"]["ED"]), ("Mean output speed", j["continuous"]["n2m"]),
-                         ("Cubic mean output torque", j["continuous"]["T2m"]), ("Cycles per hour", j["cyclic"]["Zh"])):
+                         ("Cubic mean output torque", j["continuous"]["T2m"]),
+                         ("Load cycles per hour", j["cyclic"]["Zh"])):
         assert steps[title][-1].startswith(number(value)), (title, steps[title][-1], value)
     shock = re.search(r"f_\{\\mathrm\{s\}\} = ([\d.]+)", str(r.calculations()))
     assert float(shock.group(1)) == j["cyclic"]["fs"]

@@ -281,9 +281,11 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     argv = serve.command(8866)
     # Voilà's own main, one slow import kept out of the server (the browser tests run it).
     assert argv[argv.index("-c") + 1] == serve.LAUNCH and serve.LAUNCH.endswith("from voila.app import main; main()")
+    assert "'compress_response': True" in serve.LAUNCH  # every response compressed
     assert str(serve.PAGE) in argv and serve.PAGE.is_file()
     assert "--Voila.ip=127.0.0.1" in argv and "--strip_sources=True" in argv and "--preheat_kernel=True" in argv
-    assert "--MappingKernelManager.cull_idle_timeout=600" in argv
+    # Culled within a minute of the page closing: idle 45 s, looked at every 15 s.
+    assert "--MappingKernelManager.cull_idle_timeout=45" in argv and "--MappingKernelManager.cull_interval=15" in argv
     assert "--MappingKernelManager.cull_connected=False" in argv
     # Checked by hand in a browser with idle_seconds=6: two pages opened and closed, their two
     # kernels culled some 8 s later, the waiting kernel kept.
@@ -528,14 +530,18 @@ def test_the_saved_case_file_reproduces_the_screen_and_keeps_the_comments(tmp_pa
     assert written.startswith("# Changed in the design review from indexing-table.toml: "
                               "mechanism.inertia 1500 kg*cm**2 -> 1600 kg*cm**2; "
                               "move[1].time 0.5 s -> 0.6 s; coupling.temperature 40 degC -> 60 degC\n")
-    # Only the changed values rewritten: every comment and every other line as it was.
+    # Only the changed values rewritten: every comment and every other line as it was, a comment beside a changed
+    # value marked as said of the file's.
     assert written.count("\n") == text.count("\n") + 1 and "# T_f, against the motion while the table turns" in written
-    assert 'inertia = "1600 kg*cm**2"      # J_L at the gearbox output' in written
+    assert ('inertia = "1600 kg*cm**2"      # (said of the file\'s value 1500 kg*cm**2) J_L at the gearbox output'
+            in written)
     # The file re-evaluates to the screen's results.
     assert evaluate(read_case(saved))["verdict"] == evaluate(panel.state.shown.case)["verdict"]
     assert evaluate(read_case(saved))["cyclic"] == evaluate(panel.state.shown.case)["cyclic"]
     assert saved in [p for _, p in panel.case_file.options]
     assert 'download="indexing-table-variant-1.toml"' in panel.download.value
+    panel.save_name.value = "axis-3-reviewed.toml"  # the download's name follows the save field at once
+    assert 'download="axis-3-reviewed.toml"' in panel.download.value
 
 
 def test_undo_and_redo_step_through_the_changes():
@@ -763,6 +769,18 @@ def test_compare_of_a_case_that_cannot_be_evaluated_names_it(tmp_path):
                    encoding="utf-8")
     with pytest.raises(CalcError, match="gearbox.catalog: the catalog 'nosuch' does not exist"):
         compare_cases([str(EXAMPLE), str(bad)])
+
+
+def test_compare_never_writes_over_a_pdf(tmp_path):
+    # python -m calc compare --pdf refuses a file that exists, and leaves it as it was.
+    from calc import CalcError
+    from calc.review.view import compare_cases
+
+    pdf = tmp_path / "kept.pdf"
+    pdf.write_bytes(b"%PDF- a report signed off")
+    with pytest.raises(CalcError, match=r"^--pdf .*kept.pdf: the file exists; name a new one"):
+        compare_cases([str(EXAMPLE), str(EXAMPLE)], pdf=pdf)
+    assert pdf.read_bytes() == b"%PDF- a report signed off"
 
 
 def test_a_forced_catalog_motor_is_checked_alone_and_saved_by_name():

@@ -232,7 +232,9 @@ def test_the_history_keeps_each_change_once():
 def test_every_edit_keeps_the_files_comments():
     text = '[motor]\npeak_torque = "12 N*m"  # T_1B\n[gearbox]\nratio = 10  # i\n'
     edited = edited_text(text, [Edit("motor.peak_torque", "16 N*m"), Edit("gearbox.ratio", 8.0)], "a.toml")
-    assert edited == '[motor]\npeak_torque = "16 N*m"  # T_1B\n[gearbox]\nratio = 8  # i\n'  # an integer stays one
+    # An integer stays one; a comment beside a value changed stays, marked as said of the file's value.
+    assert edited == ('[motor]\npeak_torque = "16 N*m"  # (said of the file\'s value 12 N*m) T_1B\n'
+                      '[gearbox]\nratio = 8  # (said of the file\'s value 10) i\n')
 
 
 def test_an_input_error_is_kept_as_no_variant_and_a_links_variant_says_it(example):
@@ -256,10 +258,94 @@ def test_a_save_the_folder_refuses_says_why_without_the_folder(example):
     for path in folder.iterdir():
         path.unlink()
     folder.rmdir()  # the cases' folder gone while the page was open
-    with pytest.raises(CalcError, match=r"^\[Errno 2\] No such file or directory: 'kept.toml'$"):
+    example.type_text("mechanism.inertia", "2000")
+    with pytest.raises(CalcError, match=r"^save as kept.toml: No such file or directory$"):
         example.save("kept.toml")
 
 
 def test_an_entry_of_a_table_that_is_no_list_of_tables_says_so():
     with pytest.raises(CalcError, match=r"^a.toml: load\[1\].inertia: the file has no \[\[load\]\] tables$"):
         edited_text('[load]\ninertia = "1 kg*cm**2"\n', [Edit("load[1].inertia", "2 kg*cm**2")], "a.toml")
+
+
+def test_a_field_left_out_of_the_file_shows_the_value_computed(example):
+    # The example leaves the decel time out, so reading it takes the accel time. Accel 0.3 s in a move
+    # of 0.7 s: peak speed φ / (t − t_a) = 0.25 rev / (0.7 − 0.3) s = 0.625 rev/s = 37.5 rpm (with the
+    # decel field's 0.15 s, as the page used to show it, 0.25 / (0.7 − 0.225) s · 60 = 31.58 rpm).
+    assert example.following("move[1].decel_time") == "left out of the file: follows the accel time t_a"
+    assert example.following("move[1].jerk_time") is None  # the file writes it
+    example.type_text("move[1].time", "0.7")
+    example.type_text("move[1].accel_time", "0.3")
+    assert example.values["move[1].decel_time"] == 0.3 and example.texts["move[1].decel_time"] == "0.3"
+    assert "move[1].decel_time" not in example.changes()  # still left out: the file follows as the screen
+    assert results(example)["motion"]["peak_speed"]["value"] == pytest.approx(37.5)
+    # Set by the reviewer, it no longer follows, and the file writes it.
+    example.type_text("move[1].decel_time", "0.15")
+    assert example.changes()["move[1].decel_time"] == (0.15, "s") and example.following("move[1].decel_time") is None
+    assert 'decel_time = "0.15 s"' in example.case_text()
+    example.type_text("move[1].accel_time", "0.2")
+    assert example.values["move[1].decel_time"] == 0.15
+    # Undone twice: it follows again.
+    example.undo()
+    example.undo()
+    assert example.values["move[1].decel_time"] == 0.3 and "move[1].decel_time" not in example.changes()
+
+
+def test_a_saved_file_cannot_be_forged_and_is_read_back(example, tmp_path):
+    # A link's mechanism edit carries its words, which the saved file's first comment line holds: newlines in them
+    # stay in that line (no TOML from a link), and the file saved reads back as the case on the screen.
+    import tomllib
+
+    from calc.review import keep
+
+    forged = 'rotary\n[drive_record]\nfile = "/etc/hostname"\r\n\u2028x'
+    example.follow_moves([["mechanism", {"type": "rotary", "inertia": "1500 kg*cm**2", "friction_torque": "4 N*m"},
+                           {}, forged]])
+    text = example.case_text()
+    first, rest = text.split("\n", 1)
+    assert first == ('# Changed in the design review from axis.toml: rotary [drive_record] file = "/etc/hostname"'
+                     '   x')
+    assert "drive_record" not in tomllib.loads(text)
+    saved = example.save("forged.toml")
+    assert saved.read_text() == text and keep.Written(tmp_path).names() == ["forged.toml"]
+    assert evaluate(read_case(saved)).to_json()["verdict"] == results(example)["verdict"]
+    # A comment beside a value changed is marked as said of the file's value.
+    example.type_text("mechanism.inertia", "3000")
+    assert '# (said of the file\'s value 1500 kg*cm**2) J_L at the gearbox output' in example.case_text()
+
+
+def test_save_refuses_no_change_a_file_too_large_and_more_than_its_count(example, tmp_path, monkeypatch):
+    from calc.review import keep
+
+    with pytest.raises(CalcError, match=r"^nothing changed: the screen is axis.toml as it is; nothing written$"):
+        example.save("same.toml")
+    assert not (tmp_path / "same.toml").exists()
+    example.type_text("mechanism.inertia", "2000")
+    monkeypatch.setattr(keep, "MAX_CASE_BYTES", 100)
+    with pytest.raises(CalcError, match=r"^save as big.toml: the case file would be \d+ bytes, above the 100"):
+        example.save("big.toml")
+    monkeypatch.setattr(keep, "MAX_CASE_BYTES", 256_000)
+    monkeypatch.setattr(keep, "MAX_WRITTEN", 2)
+    example.save("one.toml")
+    example.save("two.toml")
+    with pytest.raises(CalcError, match=r"^save as three.toml: the design review has written 2 files into"):
+        example.save("three.toml")
+    assert sorted(p.name for p in tmp_path.glob("*.toml")) == ["axis.toml", "one.toml", "two.toml"]
+    keep.Written(tmp_path).remove("one.toml")
+    example.save("three.toml")
+    with pytest.raises(CalcError, match="not a file the design review wrote"):
+        keep.Written(tmp_path).remove("axis.toml")
+    assert (tmp_path / "axis.toml").exists()
+
+
+def test_a_file_that_does_not_read_back_is_not_said_saved(example, tmp_path, monkeypatch):
+    # What is written is read back: a file whose text, read back, is not the one written is removed, and not saved.
+    from pathlib import Path
+
+    example.type_text("mechanism.inertia", "2000")
+    real = Path.read_text
+    monkeypatch.setattr(Path, "read_text", lambda self, *a, **k: real(self, *a, **k) + "\n[drive_record]\n"
+                        if self.name == "lost.toml" else real(self, *a, **k))
+    with pytest.raises(CalcError, match=r"^not saved: lost.toml read back"):
+        example.save("lost.toml")
+    assert not (tmp_path / "lost.toml").exists()
