@@ -45,6 +45,8 @@ class Candidate:
         Where its figures come from.
     unclear : str
         The row's doubtful figures, as its catalog says.
+    maker : str
+        The row's maker, where its catalog has the column (motors, drives); blank otherwise.
     """
 
     part: str
@@ -57,6 +59,7 @@ class Candidate:
     size: str = ""
     source: str = ""
     unclear: str = ""  # the row's doubtful figures, as its catalog says
+    maker: str = ""
 
     @property
     def governing(self) -> list:
@@ -191,7 +194,8 @@ class Selection:
 
     def _texts(self) -> tuple:
         cat = self.catalog
-        return cat.family, cat.text_or_blank("size"), cat.text_or_blank("source"), cat.text_or_blank("unclear")
+        return (cat.family, cat.text_or_blank("size"), cat.text_or_blank("source"), cat.text_or_blank("unclear"),
+                cat.text_or_blank("maker"))
 
     def candidate(self, row: int, texts: tuple | None = None) -> Candidate:
         """One row as its record.
@@ -201,14 +205,14 @@ class Selection:
         row : int
             The row of the catalog.
         texts : tuple, optional
-            The family, size, source and doubt columns, when at hand (read from the catalog otherwise).
+            The family, size, source, doubt and maker columns, when at hand (read from the catalog otherwise).
 
         Returns
         -------
         Candidate
             Of the selection type's :attr:`candidate_type`.
         """
-        family, size, source, unclear = texts or self._texts()
+        family, size, source, unclear, maker = texts or self._texts()
         return self.candidate_type(
             part=str(self.catalog.parts[row]),
             passes=self.decided(row),
@@ -220,6 +224,7 @@ class Selection:
             size=str(size[row]),
             source=str(source[row]),
             unclear=str(unclear[row]),
+            maker=str(maker[row]),
             **self.row_fields(row),
         )
 

@@ -1,8 +1,8 @@
 """A case file from an IDTA 02021 submodel (the workbook's or another tool's): the motion pattern's
 rotative section as a drive record at the gearbox output, the load's inertia and the output's forces
-where given, the chosen motor and gearbox as parts of the shipped catalogs; every other value of the
-submodel listed at the file's head as one the case cannot use; what the case needs and the submodel
-lacks an error naming it."""
+where given, the chosen motor and gearbox as parts of the shipped catalogs, the drive where it is a
+usable part of the shipped drive catalog; every other value of the submodel listed at the file's
+head as one the case cannot use; what the case needs and the submodel lacks an error naming it."""
 
 from __future__ import annotations
 
@@ -14,13 +14,15 @@ import numpy as np
 
 from .. import Q_
 from ..core.errors import CalcError
+from ..data.catalog import load_catalogs
+from ..domain.drive import SCHEMA as DRIVE_SCHEMA
 from .motion_file import read_motion_csv
 from .package import Opened
 from .template import SUBMODEL_SEMANTIC_ID, base_id_short
 
 _SECTIONS = "ApplicationRequirements.MotionPattern.MotionPatternSections"
 #: The main components a case takes, by type: the table and its catalog.
-PARTS = {"Motor": ("motor", "motors"), "Gearbox": ("gearbox", "gearboxes")}
+PARTS = {"Motor": ("motor", "motors"), "Gearbox": ("gearbox", "gearboxes"), "DriveController": ("drive", "drives")}
 
 
 @dataclass
@@ -197,9 +199,34 @@ def _parts(flat: dict, used: set, where: str) -> list[str]:
         part = value_of(flat.get(path + ".ManufacturerArticleNumber"), f"{where}: {path}.ManufacturerArticleNumber")
         if kind in PARTS and part:
             table, catalog = PARTS[kind]
-            lines += [f"[{table}]", f'catalog = "{catalog}"', f"part = {json.dumps(str(part))}", ""]
+            if table == "drive" and not drive_in_catalog(str(part)):
+                continue  # another tool's drive: listed at the file's head
+            lines += [f"[{table}]", f'catalog = "{catalog}"', f"part = {json.dumps(str(part))}"]
+            if table == "drive":
+                lines += ["# The submodel has no place for a brake resistor: add [drive.brake_resistor] where there is",
+                          "# one (without it, each braking event is checked against the DC link's energy)."]
+            lines.append("")
             used |= {path, path + ".MainComponentType", path + ".ManufacturerArticleNumber"}
     return lines
+
+
+def drive_in_catalog(part: str) -> bool:
+    """Whether a drive is a part of the shipped drive catalog that a case can name: a row with
+    both currents published (a partial row is never chosen).
+
+    Parameters
+    ----------
+    part : str
+        The DriveController's ``ManufacturerArticleNumber``.
+
+    Returns
+    -------
+    bool
+        True where ``[drive] catalog = "drives"`` with this ``part`` names a usable row.
+    """
+    catalog = load_catalogs("drives", None, "drive.catalog", DRIVE_SCHEMA)
+    rows = np.flatnonzero(catalog.parts == part)
+    return bool(rows.size) and not catalog.partial[rows[0]]
 
 
 def _head(opened: Opened, flat: dict, used: set) -> list[str]:

@@ -116,8 +116,9 @@ def component(name: str, section: dict) -> aas.Entity | None:
     family = row.get("family")
     statements = [
         text(_MC + "MainComponentType", COMPONENT_TYPES[name]),
+        # the catalog row's maker where its catalog has the column (motors, drives), else no value (readings I9)
         aas.Property(aas.DataTypeDefXSD.STRING, id_short="ManufacturerName",
-                     semantic_id=template_reference(_MC + "ManufacturerName")),  # readings I9
+                     semantic_id=template_reference(_MC + "ManufacturerName"), value=row.get("maker") or None),
         text(_MC + "ManufacturerArticleNumber", part),
         words(_MC + "ManufacturerProductDesignation", family) if family else None,
         text(_MC + "ManufacturerOrderCode", section.get("order") or part),

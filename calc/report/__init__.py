@@ -187,7 +187,8 @@ class Report:
         if self.chosen:
             rows = [[w, latex_escape(p) if p else r"\textcolor{failred}{none passes}", latex_escape(d)]
                     for w, p, d in self.chosen]
-            chosen = table(r"@{}l l p{0.55\linewidth}@{}", ["Part", "Chosen", "Basis"], rows)
+            # Small, under the table's own heading: the signature lines stay on the front page.
+            chosen = table(r"@{}l l p{0.6\linewidth}@{}", ["Part", "Chosen", "Basis"], rows, small=True)
         # One row per file, its SHA-256 beside it: the signature lines stay on the front page.
         def digest(text: str) -> str:
             return rf"\texttt{{\tiny {text}}}"
@@ -229,8 +230,10 @@ class Report:
                           r"\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}"
                           + "".join(rf"\item {x}" for x in lines) + r"\end{itemize}")
         # Compact, in two columns under each part's name: the signature lines stay on the front page.
+        # No column break between a part's name and its first check (a list invites one where it begins).
         return (r" {\footnotesize ($u$: utilization, the required over the rated value)}"
-                r"{\footnotesize\raggedright\begin{multicols}{2}"
+                r"{\footnotesize\raggedright\setlength{\multicolsep}{2pt}\csname @beginparpenalty\endcsname=10000"
+                r"\begin{multicols}{2}"
                 + "".join(groups) + r"\end{multicols}}") if groups else ""
 
     def method(self) -> Latex:

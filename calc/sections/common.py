@@ -165,10 +165,10 @@ def row_json(c) -> dict:
     Returns
     -------
     dict
-        Why it does not pass, and the row's file, family, size, source and doubts (null for none).
+        Why it does not pass, and the row's file, maker, family, size, source and doubts (null for none).
     """
-    return {"reasons": c.reasons, "catalog": c.catalog, "family": c.family, "size": c.size, "source": c.source,
-            "unclear": c.unclear or None}
+    return {"reasons": c.reasons, "catalog": c.catalog, "maker": c.maker or None, "family": c.family, "size": c.size,
+            "source": c.source, "unclear": c.unclear or None}
 
 
 @dataclass(frozen=True)

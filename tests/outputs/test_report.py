@@ -259,7 +259,7 @@ def test_front_page_lists_every_governing_check_and_what_is_not_checked():
 
 
 def test_title_block_lists_every_data_file_the_results_rest_on():
-    # The derived example reads, beside its case and the three catalogs it names, the clamping-hub
+    # The derived example reads, beside its case and the four catalogs it names, the clamping-hub
     # table (motor.shaft), the source's shock and temperature tables (E4, E9, the defaults) and
     # the generated transmission trace of its chain: each once, with its SHA-256.
     files = {label_path[1]: label_path[0] for label_path in build_report(DERIVED_EXAMPLE).files}
@@ -268,6 +268,7 @@ def test_title_block_lists_every_data_file_the_results_rest_on():
         "catalogs/gearboxes.csv": "Gearbox catalog",
         "catalogs/couplings.csv": "Coupling catalog",
         "catalogs/motors.csv": "Motor catalog",
+        "catalogs/drives.csv": "Drive catalog",
         "catalogs/gearbox-hubs.csv": "Catalog",
         "catalogs/factors/shock-source.csv": "Factor table",
         "catalogs/factors/temperature-source.csv": "Factor table",

@@ -301,7 +301,9 @@ def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     assert list(specs) == ["gearbox.ratio", "mechanism.inertia", "mechanism.friction_torque",
                            "mechanism.process_torque", "move[1].distance", "move[1].time", "move[1].accel_time",
                            "move[1].decel_time", "move[1].jerk_time", "move[2].dwell", "coupling.temperature",
-                           "accuracy.applied_torque", "gearbox.part", "motor.part"]
+                           "accuracy.applied_torque", "drive.brake_resistor.resistance",
+                           "drive.brake_resistor.continuous_power", "drive.brake_resistor.peak_power", "gearbox.part",
+                           "motor.part"]
     # The decel time the file leaves out is offered at the value reading the file takes: the accel time.
     assert (specs["move[1].decel_time"].unit, specs["move[1].decel_time"].value) == ("s", 0.15)
     # In the file's units: the index of 90 deg, the table's 1500 kg·cm²; the friction 3 N·m, the

@@ -89,7 +89,7 @@ def test_the_lists_of_sections_follow_from_the_modules():
     assert in_order([s.NAME for s in SECTIONS], shared) == shared
     # The sections that read a table of their own keep it typed once the case is read.
     example = read_case(ROOT / "cases" / "indexing-table.toml")
-    assert list(example.inputs) == list(example.sections) == ["coupling", "accuracy"]
+    assert list(example.inputs) == list(example.sections) == ["coupling", "drive", "accuracy"]
     assert all(example.inputs[name].table is example.sections[name] for name in example.inputs)
     assert TOP_KEYS == ("title", *(t.name for t in DECLARED))
     top = ["motor", "load", "mechanism", "move", "drive_record", "profile", "gearbox", "coupling", "drive", "accuracy"]

@@ -84,13 +84,23 @@ def test_the_direct_drive_case_sizes_its_drive(capsys, write_case):
     assert b["resistor_average_power"]["value"] == pytest.approx(30.81 / 2, rel=1e-3)
 
 
-def test_the_example_sizes_its_drive_or_names_why(capsys, write_case):
-    text = DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{ROOT / "data"}/')
-    path = write_case(text + '\n[drive]\ncatalog = "drives"\n' + RESISTOR)
-    d = drive_json(capsys, path)["drive"]
+def test_the_example_sizes_its_drive_or_names_why(capsys):
+    # cases/indexing-table.toml carries [drive] catalog = "drives" and the resistor of RESISTOR.
+    assert RESISTOR in DERIVED_EXAMPLE.read_text()
+    d = drive_json(capsys, DERIVED_EXAMPLE)["drive"]
     # SGMUH-10DA is a 400 V-class motor (565 V): the smallest 400 V drive, KEBA SA54.0075 (2.5 A, 7.5 A)
     assert d["selected"] == "SA54.0075" and d["voltage_class"] == "380-480 V AC"
+    assert d["candidates"][0]["maker"] == "KEBA"
     every_check_made_or_named(d["checks"])
+    # One stop a cycle; its energy, the DC link not known (0 J), goes to the resistor over the 1.5 s cycle.
+    (event,) = d["braking"]["events"]
+    # at most the train's kinetic energy at the top speed, ½ J ω² with J = 1.74 (rotor) + 0.5 (AKN-18)
+    # + 0.93 (J_1) + 1500 / 10² (table) = 18.17 kg·cm² and ω = 428.6 rpm = 44.88 rad/s: 1.830 J; the
+    # table's friction and the gearbox take the rest.
+    assert 0 < event["energy"]["value"] < 0.5 * 18.17e-4 * (428.57 * 2 * math.pi / 60) ** 2
+    b = d["braking"]
+    assert b["resistor_energy_per_cycle"]["value"] == pytest.approx(event["energy"]["value"], rel=1e-12)
+    assert b["resistor_average_power"]["value"] == pytest.approx(event["energy"]["value"] / 1.5, rel=1e-12)
 
 
 def test_a_typed_stop_whose_energy_exceeds_the_dc_link(write_case):
