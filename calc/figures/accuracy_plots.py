@@ -573,7 +573,7 @@ def budget_figure(budget: dict):
     >>> b = {"contributions": [{"name": "φ_TA", "kind": "systematic", "value": {"value": 1.0}},
     ...                        {"name": "twist", "kind": "random", "value": {"value": 0.4}}],
     ...      "worst_case": {"value": 1.4}, "rss": {"value": 1.077}, "convention": "full width"}
-    >>> [round(p.get_width(), 3) for p in budget_figure(b).axes[0].patches]
+    >>> [round(float(p.get_width()), 3) for p in budget_figure(b).axes[0].patches]
     [1.0, 0.4, 1.4, 1.077]
     """
     from matplotlib.figure import Figure

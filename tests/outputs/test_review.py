@@ -1028,3 +1028,28 @@ def test_the_frequency_response_is_redrawn_on_a_change():
     assert "<h3>Drive-train dynamics</h3>" in before and "anti-resonance (motor held)" in before
     curve = [re.search(r'<svg class=dynamics.*?</svg>', t, re.DOTALL).group(0) for t in (before, after)]
     assert curve[0] != curve[1] and "resonance 265.5 Hz" in curve[0]
+
+
+def test_a_saved_file_with_tables_its_original_has_not_is_removed_and_not_saved(tmp_path):
+    # Save only changes values, moves and the cycle: a file that reads as a case but gains a table
+    # (here every table of the example, against an empty original) is removed, and the save is refused.
+    from calc.core.errors import CalcError
+    from calc.review.keep import write_case
+
+    target = tmp_path / "gained-tables.toml"
+    with pytest.raises(CalcError, match=r"^not saved: gained-tables.toml read back has tables the file has not: "):
+        write_case(target, EXAMPLE.read_text(encoding="utf-8"), "")
+    assert not target.exists()
+
+
+def test_the_case_shown_is_never_removed_from_the_page(tmp_path):
+    import shutil
+
+    (tmp_path / "cases").mkdir()
+    shown = tmp_path / "cases" / "indexing-table.toml"
+    shutil.copy(EXAMPLE, shown)
+    shutil.copytree(EXAMPLE.parent.parent / "data", tmp_path / "data")
+    panel = DesignReview(shown)
+    panel.remove_written(str(shown))
+    assert "not removed" in panel.kept.value and "is the case shown: choose another case first" in panel.kept.value
+    assert shown.exists()

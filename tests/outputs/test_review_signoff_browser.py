@@ -233,7 +233,9 @@ def test_a_closed_pages_kernel_is_culled_within_a_minute_and_the_page_is_compres
         with browser_page() as page:
             _open(page, server.url)
             kernel = kernel_id(page)
-            assert kernel_memory(page) < 150
+            # About 100 MB before the page drew the drive train's frequency response; python-control and
+            # the SciPy it imports add some 90 MB (measured: import control, 91 MB).
+            assert kernel_memory(page) < 220
         closed = time.perf_counter()
         alive = [p for p in os.listdir("/proc") if p.isdigit() and _holds(p, f"kernel-{kernel}.json")]
         while alive and time.perf_counter() - closed < 75:
