@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from .catalog import _HEADER, Column, _header_unit, note_file_read
-from ..core.errors import CalcError, listing, as_found
+from ..core.errors import CalcError, as_found, listing
 from ..core.units import Q_, as_kind
 
 _COMMENT = "#"
@@ -83,8 +83,9 @@ def measurement_path(text, base: Path | None, where: str) -> Path:
     if not path.is_absolute() and base is not None:
         path = base / path
     if not path.is_file():
-        raise CalcError(f"{where}: the measurement file {as_found(text)} does not exist (looked for "
-                        f"{path.resolve()})")
+        looked = str(path.resolve())
+        looked = looked if len(looked) <= 100 else "…" + looked[-99:]  # the file's end says most
+        raise CalcError(f"{where}: the measurement file {as_found(text)} does not exist (looked for {looked})")
     return path
 
 
