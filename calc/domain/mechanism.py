@@ -73,9 +73,9 @@ F = Formula(
 eta_reverse = Formula(
     "eta_reverse", ("eta",),
     lambda sp, eta: 2 - 1 / eta,
-    Source(MECHANICS.at(label="", says="a screw's η = tan β / tan(β + ρ) and η' = tan(β − ρ) / tan β of its lead angle β "
-                        "and friction angle ρ, to first order in the angles; the ball-screw makers' catalogs quote "
-                        "this approximation",
+    Source(MECHANICS.at(label="", says="a screw's η = tan β / tan(β + ρ) and η' = tan(β − ρ) / tan β of its lead "
+                        "angle β and friction angle ρ, to first order in the angles; the ball-screw makers' catalogs "
+                        "quote this approximation",
                         validity=Validity("small lead and friction angles; η' ≤ 0 (η ≤ 0.5): self-locking"))),
 )
 T_2_linear = Formula(

@@ -233,7 +233,7 @@ def read_mechanism(top: Table) -> Mechanism | None:
     eta = t.positive("eta", required=True, what="an efficiency")
     if eta.m_as("") > 1:
         raise CalcError(f"{t.where('eta')}: expected an efficiency of at most 1, found {as_found(t.data['eta'])}")
-    reverse = t.positive("reverse_efficiency", what="an efficiency")
+    reverse = t.positive("reverse_efficiency", what="an efficiency") if type_ == "ball-screw" else None
     if reverse is not None and reverse.m_as("") > 1:
         raise CalcError(f"{t.where('reverse_efficiency')}: expected an efficiency of at most 1, "
                         f"found {as_found(t.data['reverse_efficiency'])}")
@@ -549,8 +549,8 @@ class MotionResult(Result):
         lines = [head]
         mech = self.motion.mechanism
         if mech is not None and mech.self_locking:
-            lines.append(f"  the screw is self-locking (η' = {mech.reverse.m_as(''):.4g} ≤ 0): the load cannot drive it "
-                         "back; the motor drives it where the load would, and it holds the load at rest")
+            lines.append(f"  the screw is self-locking (η' = {mech.reverse.m_as(''):.4g} ≤ 0): the load cannot drive "
+                         "it back; the motor drives it where the load would, and it holds the load at rest")
         for k, g in enumerate(self.segments, start=1):
             lines.append(f"  {k:>2} {g.phase:<6} {str(g.duration):>10}  {str(g.speed):>12}  {str(g.torque):>12}")
         return lines

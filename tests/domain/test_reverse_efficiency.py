@@ -135,6 +135,7 @@ def test_a_reverse_efficiency_outside_its_range_is_refused(write_case, value, fo
 
 
 def test_a_reverse_efficiency_is_a_key_of_screws_only(write_case):
-    text = LOCKING.replace('type = "ball-screw"', 'type = "belt"').replace('lead = "10 mm"', 'pulley_diameter = "40 mm"')
+    text = LOCKING.replace('type = "ball-screw"', 'type = "belt"')
+    text = text.replace('lead = "10 mm"', 'pulley_diameter = "40 mm"')
     with pytest.raises(CalcError, match="reverse_efficiency"):
         read_case(write_case(text.replace("eta = 0.4", "eta = 0.9\nreverse_efficiency = 0.8")))
