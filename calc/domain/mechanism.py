@@ -448,7 +448,13 @@ def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[s
     if type_ != "rotary":
         carriage = ("mass", "friction_coefficient", "incline", "force", "eta", "own_inertia", "counterweight",
                     "drag_torque", "holding_brake")
-        return Mechanism(type_, **{k: getattr(mech, k) for k in carriage}, **size_key), []
+        # a screw's given reverse efficiency stays with a screw; a rack or a belt is driven back through η
+        reverse = mech.reverse_efficiency if type_ == "ball-screw" else None
+        left = [] if reverse is not None or mech.reverse_efficiency is None else [
+            f"the screw's reverse efficiency {float(mech.reverse_efficiency.m_as('')):.4g}: a {type_} is driven back "
+            "through eta"]
+        return Mechanism(type_, **{k: getattr(mech, k) for k in carriage}, reverse_efficiency=reverse,
+                         **size_key), left
     mu_ = Q_(0.0, "") if mech.friction_coefficient is None else mech.friction_coefficient
     own = Q_(0.0, "kg*cm**2") if mech.own_inertia is None else mech.own_inertia
     table = Mechanism("rotary", holding_brake=mech.holding_brake,

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from calc.core.errors import CalcError
 from calc.core.units import Q_
-from calc.domain.mechanism import Mechanism, eta_reverse
+from calc.domain.mechanism import Mechanism, converted, eta_reverse
 from calc.domain.motor import motor_torque
 from calc.sections import evaluate
 from calc.sections.case import read_case
@@ -139,3 +139,14 @@ def test_a_reverse_efficiency_is_a_key_of_screws_only(write_case):
     text = text.replace('lead = "10 mm"', 'pulley_diameter = "40 mm"')
     with pytest.raises(CalcError, match="reverse_efficiency"):
         read_case(write_case(text.replace("eta = 0.4", "eta = 0.9\nreverse_efficiency = 0.8")))
+
+
+def test_a_given_reverse_efficiency_stays_with_a_screw_and_is_named_when_left():
+    screw = Mechanism("ball-screw", mass=Q_(20, "kg"), friction_coefficient=Q_(0, ""), incline=Q_(90, "deg"),
+                      force=Q_(0, "N"), eta=Q_(0.9, ""), reverse_efficiency=Q_(0.7, ""), lead=Q_(10, "mm"),
+                      own_inertia=Q_(0, "kg*cm**2"))
+    other, left = converted(screw, "ball-screw", Q_(20, "mm"))
+    assert other.reverse.m_as("") == 0.7 and left == []
+    belt, left = converted(screw, "belt", Q_(40, "mm"))
+    assert belt.reverse.m_as("") == 0.9 and left == ["the screw's reverse efficiency 0.7: a belt is driven back "
+                                                     "through eta"]
