@@ -215,8 +215,12 @@ def mechanism__F(m, m_c, a_load, g, theta, s_v, mu, F_p):
     return a_load*(m + m_c) + g*(m*sin(theta) - m_c) + s_v*(F_p + g*m*mu*cos(theta))
 
 
-def mechanism__T_2_linear(F, r, eta, d_P, J_M, alpha_2, rad, s_v, T_d):
-    return F*eta**(-d_P)*r + J_M*alpha_2/rad + T_d*s_v
+def mechanism__eta_reverse(eta):
+    return 2 - 1/eta
+
+
+def mechanism__T_2_linear(F, r, eta, eta_reverse, d_P, J_M, alpha_2, rad, s_v, T_d):
+    return F*r*((1/2)*eta_reverse*(1 - d_P) + (1/2)*(d_P + 1)/eta) + J_M*alpha_2/rad + T_d*s_v
 
 
 def mechanism__J_L_linear(m, m_c, r, J_M):
@@ -414,7 +418,8 @@ FUNCTIONS = {
     "calc.domain.mechanism.phi_2": ("1da2b6341980cde8", mechanism__phi_2),
     "calc.domain.mechanism.a_load": ("283188e31b440e36", mechanism__a_load),
     "calc.domain.mechanism.F": ("59dab0ab12d3e5d0", mechanism__F),
-    "calc.domain.mechanism.T_2_linear": ("4831b3baf9de2446", mechanism__T_2_linear),
+    "calc.domain.mechanism.eta_reverse": ("679a1401a534342b", mechanism__eta_reverse),
+    "calc.domain.mechanism.T_2_linear": ("6bcfb6a629e23ab1", mechanism__T_2_linear),
     "calc.domain.mechanism.J_L_linear": ("540adb6b4ce9c2ee", mechanism__J_L_linear),
     "calc.domain.mechanism.T_2_rotary": ("aafb091340bd4c90", mechanism__T_2_rotary),
     "calc.domain.mechanism.m_equivalent": ("8e9554e6f8565eb6", mechanism__m_equivalent),

@@ -14,10 +14,14 @@ lead ``p``, ``r = d / 2`` of a pinion's pitch diameter or a pulley's diameter. T
   counterweight ``m_c`` hangs on a rope over the same lead or radius and travels as far as the load,
   the other way and vertically (a reading): its mass accelerates with the load, its weight pulls
   against the load's (on a vertical axis ``(m − m_c)·g``);
-* the output torque ``T_2 = F·r·η^(−d) + J_M·α_2 / rad + s_v·T_d``: the efficiency divides the force
-  torque while the drive drives (``d = +1``, power into the load) and multiplies it while the load
-  drives back (``d = −1``, at rest too: the load held against gravity pulls back through the
-  mechanism); ``J_M`` is the screw's, pinion's or pulley's own inertia, outside the efficiency;
+* the output torque ``T_2 = F·r·((1 + d)/(2η) + (1 − d)·η'/2) + J_M·α_2 / rad + s_v·T_d``: the
+  efficiency divides the force torque while the drive drives (``d = +1``, power into the load) and
+  the reverse efficiency ``η'`` multiplies it while the load drives back (``d = −1``, at rest too:
+  the load held against gravity pulls back through the mechanism). A rack or a belt has ``η' = η``;
+  a screw has its own, given or ``η' = 2 − 1/η`` (:data:`eta_reverse`), below η. A screw with
+  ``η' ≤ 0`` is self-locking: the load cannot drive it back, the motor drives it (``F·r·η'`` turns
+  against the load's pull) and at rest it holds the load itself (``η'`` taken as 0 there);
+  ``J_M`` is the screw's, pinion's or pulley's own inertia, outside the efficiency;
   ``T_d`` a drag torque at that shaft (a ball screw's preload, seals), against the motion while it
   moves and outside the efficiency, none at rest;
 * the load's inertia at the output ``J_L = (m + m_c)·r² + J_M`` (no efficiency).
@@ -66,11 +70,22 @@ F = Formula(
     Source(motion_reading("inertia, gravity on the incline, a counterweight, friction of the guide and the process "
                           "force")),
 )
+eta_reverse = Formula(
+    "eta_reverse", ("eta",),
+    lambda sp, eta: 2 - 1 / eta,
+    Source(MECHANICS.at(label="", says="a screw's η = tan β / tan(β + ρ) and η' = tan(β − ρ) / tan β of its lead "
+                        "angle β and friction angle ρ, to first order in the angles; the ball-screw makers' catalogs "
+                        "quote this approximation",
+                        validity=Validity("small lead and friction angles; η' ≤ 0 (η ≤ 0.5): self-locking"))),
+)
 T_2_linear = Formula(
     "T_2_linear",
-    ("F", "r", "eta", "d_P", "J_M", "alpha_2", "rad", "s_v", "T_d"),
-    lambda sp, F, r, eta, d_P, J_M, alpha, rad, s_v, T_d: F * r * eta ** (-d_P) + J_M * alpha / rad + s_v * T_d,
-    Source(motion_reading("the efficiency divides while driving, multiplies while driven back; the drag outside it"),
+    ("F", "r", "eta", "eta_reverse", "d_P", "J_M", "alpha_2", "rad", "s_v", "T_d"),
+    lambda sp, F, r, eta, eta_r, d_P, J_M, alpha, rad, s_v, T_d: (
+        F * r * ((1 + d_P) / (2 * eta) + (1 - d_P) * eta_r / 2) + J_M * alpha / rad + s_v * T_d
+    ),
+    Source(motion_reading("the efficiency divides while driving, the reverse efficiency multiplies while driven back; "
+                          "the drag outside it"),
            ERRATA.at("E15", label="E15")),
 )
 J_L_linear = Formula(
@@ -115,6 +130,8 @@ class Mechanism:
         ``F_p``, the process force.
     eta : pint.Quantity [1], optional
         The mechanism's efficiency.
+    reverse_efficiency : pint.Quantity [1], optional
+        ``η'``, a screw's efficiency driven back, as the case gives it (None: from η).
     lead : pint.Quantity [mm], optional
         ``p``, a ball screw's lead.
     diameter : pint.Quantity [mm], optional
@@ -142,6 +159,7 @@ class Mechanism:
     incline: object = None
     force: object = None
     eta: object = None
+    reverse_efficiency: object = None
     lead: object = None
     diameter: object = None
     own_inertia: object = None
@@ -158,6 +176,37 @@ class Mechanism:
     @property
     def _drag(self):
         return Q_(0.0, "N*m") if self.drag_torque is None else self.drag_torque
+
+    def reverse_step(self):
+        """The step giving a screw's reverse efficiency from η, where the case gives none.
+
+        Returns
+        -------
+        Step or None
+            ``η' = 2 − 1/η`` (dimensionless); None for a rack, a belt or a given ``η'``.
+        """
+        if self.type != "ball-screw" or self.reverse_efficiency is not None:
+            return None
+        return eta_reverse.step(eta=self.eta)
+
+    @property
+    def reverse(self):
+        """``η'`` [1]: a screw's given or derived one, η of a rack or a belt."""
+        if self.type != "ball-screw":
+            return Q_(self.eta).to("")
+        if self.reverse_efficiency is not None:
+            return Q_(self.reverse_efficiency).to("")
+        return self.reverse_step().result.to("")
+
+    @property
+    def self_locking(self) -> bool:
+        """A screw the load cannot drive back (``η' ≤ 0``)."""
+        return self.linear and float(self.reverse.m_as("")) <= 0.0
+
+    def _reverse_at(self, speed) -> np.ndarray:
+        # A self-locking screw at rest holds the load itself: no torque from the load's pull there.
+        eta_r = float(self.reverse.m_as(""))
+        return np.where(np.asarray(speed) == 0, max(eta_r, 0.0), eta_r)
 
     @property
     def linear(self) -> bool:
@@ -250,7 +299,8 @@ class Mechanism:
                          a_load=a_load.si(alpha_2=acceleration, r=r), theta=self._si(self.incline, "rad"), s_v=s_v,
                          mu=self._si(self.friction_coefficient, ""), F_p=self._si(self.force, "N"))
             d_power = np.where(force * speed > 0, 1.0, -1.0)
-            out = T_2_linear.si(F=force, r=r, eta=self._si(self.eta, ""), d_P=d_power,
+            out = T_2_linear.si(F=force, r=r, eta=self._si(self.eta, ""), eta_reverse=self._reverse_at(speed),
+                                d_P=d_power,
                                 J_M=self._si(self.own_inertia, "kg*m**2"), alpha_2=acceleration,
                                 s_v=s_v, T_d=self._si(self._drag, "N*m"))
         else:
@@ -292,8 +342,8 @@ class Mechanism:
         f = F.step(m=self.mass, m_c=self._counterweight, a_load=acc.result, theta=self.incline, s_v=s_v,
                    mu=self.friction_coefficient, F_p=self.force)
         d_power = Q_(1.0 if f.result.m_as("N") * w > 0 else -1.0, "")
-        t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration,
-                            s_v=s_v, T_d=self._drag)
+        t = T_2_linear.step(F=f.result, r=r_q, eta=self.eta, eta_reverse=Q_(float(self._reverse_at(w)), ""),
+                            d_P=d_power, J_M=self.own_inertia, alpha_2=acceleration, s_v=s_v, T_d=self._drag)
         return [acc, f, t]
 
 
@@ -398,7 +448,13 @@ def converted(mech: Mechanism, type_: str, size=None) -> tuple[Mechanism, list[s
     if type_ != "rotary":
         carriage = ("mass", "friction_coefficient", "incline", "force", "eta", "own_inertia", "counterweight",
                     "drag_torque", "holding_brake")
-        return Mechanism(type_, **{k: getattr(mech, k) for k in carriage}, **size_key), []
+        # a screw's given reverse efficiency stays with a screw; a rack or a belt is driven back through η
+        reverse = mech.reverse_efficiency if type_ == "ball-screw" else None
+        left = [] if reverse is not None or mech.reverse_efficiency is None else [
+            f"the screw's reverse efficiency {float(mech.reverse_efficiency.m_as('')):.4g}: a {type_} is driven back "
+            "through eta"]
+        return Mechanism(type_, **{k: getattr(mech, k) for k in carriage}, reverse_efficiency=reverse,
+                         **size_key), left
     mu_ = Q_(0.0, "") if mech.friction_coefficient is None else mech.friction_coefficient
     own = Q_(0.0, "kg*cm**2") if mech.own_inertia is None else mech.own_inertia
     table = Mechanism("rotary", holding_brake=mech.holding_brake,

@@ -65,6 +65,9 @@ MECHANISM = Declared("mechanism", (
         "its mass accelerates with the load, its weight pulls against the load's", "m_c", "0 kg", "kg", _LINEAR),
     Key("drag_torque", "torque", "drag torque at the screw, pinion or pulley shaft (preload, seals), against the "
         "motion while it moves, outside the efficiency", "T_d", "0 N*m", "N*m", _LINEAR),
+    Key("reverse_efficiency", "dimensionless", "efficiency of the screw driven back by the load, above 0 and at "
+        "most 1 (default: 2 − 1/eta, at most 0 for eta at most 0.5: self-locking)", "eta_reverse",
+        only=("ball-screw",)),
     Key("lead", "length", "lead of the screw: travel per revolution", "p", unit="mm", only=("ball-screw",)),
     Key("screw_inertia", "inertia", "own inertia of the screw", "J_M", "0 kg*m**2", "kg*cm**2", ("ball-screw",)),
     Key("pitch_diameter", "length", "pitch diameter of the pinion", "d", unit="mm", only=("rack-pinion",)),
@@ -230,12 +233,17 @@ def read_mechanism(top: Table) -> Mechanism | None:
     eta = t.positive("eta", required=True, what="an efficiency")
     if eta.m_as("") > 1:
         raise CalcError(f"{t.where('eta')}: expected an efficiency of at most 1, found {as_found(t.data['eta'])}")
+    reverse = t.positive("reverse_efficiency", what="an efficiency") if type_ == "ball-screw" else None
+    if reverse is not None and reverse.m_as("") > 1:
+        raise CalcError(f"{t.where('reverse_efficiency')}: expected an efficiency of at most 1, "
+                        f"found {as_found(t.data['reverse_efficiency'])}")
     radius_key, own_key = OWN_KEYS[type_]
     size = t.positive(radius_key, required=True)
     return Mechanism(
         type_, holding_brake=brake, mass=t.positive("mass", required=True),
         friction_coefficient=nonnegative(t, "friction_coefficient"),
-        incline=t.quantity("incline"), force=t.quantity("force"), eta=eta, own_inertia=nonnegative(t, own_key),
+        incline=t.quantity("incline"), force=t.quantity("force"), eta=eta, reverse_efficiency=reverse,
+        own_inertia=nonnegative(t, own_key),
         counterweight=nonnegative(t, "counterweight"), drag_torque=nonnegative(t, "drag_torque"),
         **({"lead": size} if type_ == "ball-screw" else {"diameter": size}),
     )
@@ -539,6 +547,10 @@ class MotionResult(Result):
         if self.J_L is not None:
             head += f", J_L = {self.J_L}"
         lines = [head]
+        mech = self.motion.mechanism
+        if mech is not None and mech.self_locking:
+            lines.append(f"  the screw is self-locking (η' = {mech.reverse.m_as(''):.4g} ≤ 0): the load cannot drive "
+                         "it back; the motor drives it where the load would, and it holds the load at rest")
         for k, g in enumerate(self.segments, start=1):
             lines.append(f"  {k:>2} {g.phase:<6} {str(g.duration):>10}  {str(g.speed):>12}  {str(g.torque):>12}")
         return lines
@@ -579,6 +591,8 @@ def motion_steps(m: Motion) -> list:
     if k is not None and k.linear:
         out += [("Transmission radius", k.radius_step()),
                 ("Load inertia at the gearbox output", k.load_inertia_step())]
+        if k.reverse_step() is not None:
+            out.append(("Reverse efficiency of the screw", k.reverse_step()))
     for n, body in enumerate(() if k is None else k.bodies, start=1):
         out += [(f"Body {n} ({body.shape}): {step.formula.result.description}", step) for step in body.steps()]
     for n, (move, given) in enumerate(zip(m.moves, m.distances), start=1):

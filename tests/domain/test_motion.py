@@ -64,23 +64,26 @@ def test_the_torque_formulas_by_hand():
     # Table: 0.15 kg·m² · 40 rad/s² − (2 + 3) N·m moving back = 6 − 5 = 1 N·m.
     t = T_2_rotary(J_L=Q_(1500, "kg*cm**2"), alpha_2=Q_(40, "rad/s**2"), s_v=-1, T_f=Q_(2, "N*m"), T_p=Q_(3, "N*m"))
     assert t.m_as("N*m") == pytest.approx(1.0, rel=1e-12)
-    # Screw: 100 N · 5 mm / 0.8 = 0.625 N·m driving, 100 N · 5 mm · 0.8 = 0.4 N·m driven back; + 1e-4 kg·m² · 1000
-    # rad/s² = 0.1.
-    common = dict(F=Q_(100, "N"), r=Q_(5, "mm"), eta=0.8, J_M=Q_(1, "kg*cm**2"), alpha_2=Q_(1000, "rad/s**2"), s_v=1,
-                  T_d=Q_(0, "N*m"))
+    # Screw (η 0.8, η' 0.75): 100 N · 5 mm / 0.8 = 0.625 N·m driving, 100 N · 5 mm · 0.75 = 0.375 N·m driven back;
+    # + 1e-4 kg·m² · 1000 rad/s² = 0.1.
+    common = dict(F=Q_(100, "N"), r=Q_(5, "mm"), eta=0.8, eta_reverse=0.75, J_M=Q_(1, "kg*cm**2"),
+                  alpha_2=Q_(1000, "rad/s**2"), s_v=1, T_d=Q_(0, "N*m"))
     assert T_2_linear(d_P=1, **common).m_as("N*m") == pytest.approx(0.725, rel=1e-12)
-    assert T_2_linear(d_P=-1, **common).m_as("N*m") == pytest.approx(0.5, rel=1e-12)
+    assert T_2_linear(d_P=-1, **common).m_as("N*m") == pytest.approx(0.475, rel=1e-12)
+    # A rack or a belt (η' = η = 0.8): 100 N · 5 mm · 0.8 = 0.4 N·m driven back, + 0.1.
+    assert T_2_linear(d_P=-1, **{**common, "eta_reverse": 0.8}).m_as("N*m") == pytest.approx(0.5, rel=1e-12)
     # A drag torque of 0.2 N·m against the motion, outside the efficiency: + 0.2 moving forwards, − 0.2 back.
     assert T_2_linear(d_P=1, **{**common, "T_d": Q_(0.2, "N*m")}).m_as("N*m") == pytest.approx(0.925, rel=1e-12)
     assert T_2_linear(d_P=-1,
-                      **{**common, "s_v": -1, "T_d": Q_(0.2, "N*m")}).m_as("N*m") == pytest.approx(0.3, rel=1e-12)
+                      **{**common, "s_v": -1, "T_d": Q_(0.2, "N*m")}).m_as("N*m") == pytest.approx(0.275, rel=1e-12)
 
 
 def test_a_drag_torque_and_a_counterweight_on_a_vertical_screw_by_hand():
     # A 20 kg load on a vertical screw (lead 10 mm: r = 1.591549 mm, η 0.9, no friction), 15 kg
     # counterweight, 0.3 N·m drag. Lifting at constant speed: F = (20 − 15) kg · 9.80665 = 49.033 N;
     # T_2 = 49.033 · 1.591549e-3 / 0.9 + 0.3 = 0.086710 + 0.3 = 0.386710 N·m. Held at rest: the load
-    # pulls back through the screw, 49.033 · 1.591549e-3 · 0.9 = 0.070235 N·m, and no drag.
+    # pulls back through the screw, with η' = 2 − 1/0.9 = 0.888889: 49.033 · 1.591549e-3 · 0.888889 = 0.069368 N·m,
+    # and no drag.
     # Accelerating up at 100 rad/s² of the screw (a = 0.159155 m/s²): F = 35 kg · 0.159155 + 49.033
     # = 54.603 N; T_2 = 54.603 · 1.591549e-3 / 0.9 + 2e-4 · 100 + 0.3 = 0.096560 + 0.02 + 0.3 = 0.416560 N·m.
     screw = Mechanism("ball-screw", mass=Q_(20, "kg"), friction_coefficient=Q_(0, ""), incline=Q_(90, "deg"),
@@ -88,7 +91,7 @@ def test_a_drag_torque_and_a_counterweight_on_a_vertical_screw_by_hand():
                       eta=Q_(0.9, ""), lead=Q_(10, "mm"), own_inertia=Q_(2, "kg*cm**2"), counterweight=Q_(15, "kg"),
                       drag_torque=Q_(0.3, "N*m"))
     T = screw.torque(np.array([10.0, 0.0, 10.0]), np.array([0.0, 0.0, 100.0]))
-    assert T == pytest.approx([0.386709, 0.070235, 0.416561], rel=1e-5)
+    assert T == pytest.approx([0.386709, 0.069368, 0.416561], rel=1e-5)
     # J_L = 35 kg · r² + 2 kg·cm² = 35 · 2.533030e-6 m² = 0.886560 + 2 = 2.886560 kg·cm².
     assert screw.load_inertia.m_as("kg*cm**2") == pytest.approx(2.886560, rel=1e-6)
 
@@ -110,19 +113,20 @@ def test_a_vertical_ball_screw_up_down_and_held_by_hand():
     # 0.314159 N·m.
     # Gravity 20 · 9.80665 = 196.133 N (cos 90° = 0: no guide friction on a vertical axis).
     Ja = 2e-4 * 2.5 / r
+    eta_r = 2 - 1 / 0.9                                   # η' = 0.888889: driven back, the screw's reverse efficiency
     # driving: 246.133 N · r / 0.9 + 0.314159 = 0.435259 + 0.314159 = 0.749418 N·m
     up_accel = (20 * 2.5 + 196.133) * r / 0.9 + Ja
     up_const = 196.133 * r / 0.9                          # 0.346839 N·m
     # still driving (F = 146.133 N up): 0.258420 − 0.314159 = −0.055739 N·m
     up_decel = (196.133 - 50) * r / 0.9 - Ja
-    down_accel = (196.133 - 50) * r * 0.9 - Ja           # the load drives back: 0.209320 − 0.314159 = −0.104839 N·m
-    down_const = 196.133 * r * 0.9                        # 0.280940 N·m
-    # braking a falling load, still driven back: 0.352560 + 0.314159 = 0.666719
-    down_decel = (196.133 + 50) * r * 0.9 + Ja
-    held = 196.133 * r * 0.9                              # at rest the load pulls back through the screw: 0.280940 N·m
+    down_accel = (196.133 - 50) * r * eta_r - Ja         # the load drives back: 0.206736 − 0.314159 = −0.107423 N·m
+    down_const = 196.133 * r * eta_r                      # 0.277471 N·m
+    # braking a falling load, still driven back: 0.348207 + 0.314159 = 0.662366
+    down_decel = (196.133 + 50) * r * eta_r + Ja
+    held = 196.133 * r * eta_r                            # at rest the load pulls back through the screw: 0.277471 N·m
     assert g.torque.tolist() == pytest.approx([up_accel, up_const, up_decel, down_accel, down_const, down_decel, held],
                                               rel=1e-5)
-    assert up_accel == pytest.approx(0.749418, rel=1e-6) and down_decel == pytest.approx(0.666719, rel=1e-6)
+    assert up_accel == pytest.approx(0.749418, rel=1e-6) and down_decel == pytest.approx(0.662366, rel=1e-6)
     braked = Mechanism(**{**VERTICAL_SCREW.__dict__, "holding_brake": True})
     assert segments(s, braked.torque(s.speed, s.acceleration)).torque[-1] == 0.0
 

@@ -182,12 +182,12 @@ def test_the_exported_drive_of_the_direct_drive_case_is_its_drive_results(result
     assert value(drive, "ManufacturerArticleNumber") == d["selected"] == "G394-030 (1x230 V AC)"
     i_n = next(k for k in d["checks"] if k["name"] == "I_N")
     assert value(drive, "MaxCurrentUtilizationPercentage") == pytest.approx(100 * i_n["utilization"], rel=1e-12)
-    assert value(drive, "MaxCurrentUtilizationPercentage") == pytest.approx(100 * 0.9612 / 3, rel=1e-3)
+    assert value(drive, "MaxCurrentUtilizationPercentage") == pytest.approx(100 * 0.9596 / 3, rel=1e-3)
     assert value(drive, "MaxCurrentUtilization") == pytest.approx(d["current_peak"]["value"], rel=1e-12)
     assert value(drive, "MaxCurrentUtilization") == pytest.approx(2.389, rel=1e-3)
     braking = d["braking"]
     assert value(drive, "MaxRegenerativePowerDcLink") == pytest.approx(braking["peak_power"]["value"], rel=1e-12)
-    assert value(drive, "AverageRegenerativePowerDcLink") == pytest.approx(30.81 / 2, rel=1e-3)
+    assert value(drive, "AverageRegenerativePowerDcLink") == pytest.approx(30.66 / 2, rel=1e-3)
     assert value(drive, "AverageRegenerativePowerDcLink") == pytest.approx(
         braking["resistor_average_power"]["value"], rel=1e-12)
 
