@@ -148,6 +148,8 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
     where = "motor.max_inertia_ratio" if motor.has("max_inertia_ratio") else "the default"
     case.motor_max_inertia_ratio = (float(ratio.m_as("")), where)
     case.motor_dc_link = motor.positive("dc_link_voltage")
+    if case.motor_dc_link is not None:  # else the drive the case names may give it (calc.sections.drive)
+        case.voltage_limit_dc_link = (case.motor_dc_link, "motor.dc_link_voltage")
     if motor.has("curves"):
         case.motor_curves = measurement_path(motor.data["curves"], case.folder, motor.where("curves"))
     if motor.has("shaft"):
