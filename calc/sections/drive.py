@@ -39,7 +39,8 @@ TABLES = (Declared(NAME, (
     Key("peak_current", "current", "peak output current of a typed drive, at least its rated current", "I_max",
         unit="A"),
     Key("peak_time", "time", "how long a typed drive gives its peak current", "t_max", unit="s"),
-    Key("dc_link_voltage", "voltage", "DC-link voltage of a typed drive (with motor.dc_link_voltage: the same)",
+    Key("dc_link_voltage", "voltage", "DC-link voltage of a typed drive (with motor.dc_link_voltage: the same; "
+        "else the motor's voltage limit takes it)",
         "U_DC", unit="V"),
     Key("dc_link_energy", "energy", "energy a typed drive's DC link absorbs before its chopper switches on",
         "E_C", unit="J"),
