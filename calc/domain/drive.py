@@ -272,7 +272,7 @@ def characteristic_check(cat, U: float):
     calc.core.checks.CheckArray
         ``U_DC >= U``; a row without ``U_DC`` is not checked, saying so.
     """
-    return CheckArray("U_DC", None, f"U_DC >= {U:g} V (the motor's characteristic)", Q_(U * np.ones(len(cat)), "V"),
+    return CheckArray("U_DC", None, f"U_DC >= {U:g} V (motor's characteristic)", Q_(U * np.ones(len(cat)), "V"),
                       cat["U_DC"], "V", unrated="the catalog gives no DC-link voltage U_DC")
 
 

@@ -269,7 +269,7 @@ def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(tmp_
         _open(page, server.url)
         decides = page.inner_text(f"{RESULTS} .decides")
         assert decides.startswith("What decides the design: drive SA54.0075 by UDC ≥ 565 V "
-                                  "(the motor's characteristic) at 100 %; motor SGMUH-10DA by λ ≤ λmax at 94 %; ")
+                                  "(motor's characteristic) at 100 %; motor SGMUH-10DA by λ ≤ λmax at 94 %; ")
         assert "coupling AKN-18 by 2 fer ≤ f1 at 75 %" in decides
         assert "gearbox NPT035-10 by dmotor ≤ dhub,max at 50 %" in decides
         assert "T2max 100.9 N·m (with η 0.97)" in page.inner_text(RESULTS)

@@ -268,7 +268,7 @@ def test_a_typed_drive_lowers_the_motors_voltage_limit(write_case):
     limit, forms = peak_limit(sel.catalog, np.array([n_0 * 0.999, n_0 * 1.001]) * 2 * math.pi / 60, sel.dc_link)
     assert forms == ["voltage limit"] and limit[0][0] > 0 and limit[0][1] == 0
     d = results["drive"].to_json()
-    U_DC = next(k for k in d["checks"] if k["criterion"] == "U_DC >= 540 V (the motor's characteristic)")
+    U_DC = next(k for k in d["checks"] if k["criterion"] == "U_DC >= 540 V (motor's characteristic)")
     assert U_DC["passes"] is True and U_DC["utilization"] == 1.0
 
 
@@ -287,7 +287,7 @@ def test_a_drive_below_the_motors_dc_link_never_passes(write_case):
                                         drive='part = "SA54.0075"'))
     results = evaluate(read_case(path))
     assert results["motor"].characteristic_dc_link == (600.0, "motor.dc_link_voltage, the voltage limit of 1FT7044-AK7")
-    k = next(k for k in results["drive"].checks() if k.criterion == "U_DC >= 600 V (the motor's characteristic)")
+    k = next(k for k in results["drive"].checks() if k.criterion == "U_DC >= 600 V (motor's characteristic)")
     assert k.passes is False and k.utilization == pytest.approx(600 / 565, rel=1e-12)
     assert results["drive"].verdict().passes is False
     # Chosen from the catalog: no published drive with both currents has a DC link of 600 V or more (565 V
@@ -296,7 +296,7 @@ def test_a_drive_below_the_motors_dc_link_never_passes(write_case):
                                         drive='catalog = "drives"'))
     d = evaluate(read_case(path))["drive"]
     assert d.selection.selected is None and d.verdict().passes is False
-    k = next(c for c in d.selection.checks if c.text == "U_DC >= 600 V (the motor's characteristic)")
+    k = next(c for c in d.selection.checks if c.text == "U_DC >= 600 V (motor's characteristic)")
     assert not (k.passes & ~k.unrated_rows).any() and k.utilization[~k.unrated_rows].min() == pytest.approx(600 / 565)
     assert k.unrated_rows.sum() == np.isnan(d.selection.catalog["U_DC"].m_as("V")).sum() > 0
 
@@ -305,7 +305,7 @@ def test_the_example_checks_its_drive_at_the_motors_rated_dc_link():
     # SGMUH-10DA's row gives U_DC 565 V (its ratings are for it); KEBA SA54.0075 has 565 V: 100 %.
     m = evaluate(read_case(DERIVED_EXAMPLE))
     assert m["motor"].characteristic_dc_link == (565.0, "the U_DC of SGMUH-10DA's catalog row, for its ratings")
-    k = next(k for k in m["drive"].checks() if k.criterion == "U_DC >= 565 V (the motor's characteristic)")
+    k = next(k for k in m["drive"].checks() if k.criterion == "U_DC >= 565 V (motor's characteristic)")
     assert k.passes is True and k.utilization == 1.0
 
 
