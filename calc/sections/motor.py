@@ -333,6 +333,8 @@ class MotorResult(Result):
                              + (f"  {'; '.join(c.reasons)}" if c.reasons else ""))
             lines.append(f"  Checks of {sel.best.part}" + ("" if sel.selected else " (the closest; none passes)") + ":")
             lines += [f"        {check_line(k)}" for k in self.row_checks]
+            U = j["characteristic_dc_link"]
+            lines.append(f"  Its characteristic is for U_DC = {quantity_text(U['value'])} ({U['from']})")
         return lines + [f"  Note: {n}" for n in self.notes]
 
     def governing(self) -> Governing | None:

@@ -305,6 +305,8 @@ def test_the_example_checks_its_drive_at_the_motors_rated_dc_link():
     # SGMUH-10DA's row gives U_DC 565 V (its ratings are for it); KEBA SA54.0075 has 565 V: 100 %.
     m = evaluate(read_case(DERIVED_EXAMPLE))
     assert m["motor"].characteristic_dc_link == (565.0, "the U_DC of SGMUH-10DA's catalog row, for its ratings")
+    assert ("  Its characteristic is for U_DC = 565 V (the U_DC of SGMUH-10DA's catalog row, for its ratings)"
+            in m["motor"].summary_lines())
     k = next(k for k in m["drive"].checks() if k.criterion == "U_DC >= 565 V (motor's characteristic)")
     assert k.passes is True and k.utilization == 1.0
 
