@@ -204,7 +204,7 @@ class DriveSelection(Selection):
 
 
 def drive_checks(cat, I_rms: float | None, I_peak: float | None, t_above, U_motor: float | None,
-                 no_current: str | None = None) -> list:
+                 no_current: str | None = None, characteristic: tuple = (None, "not known")) -> list:
     """The checks of every drive of a catalog against the motor's current and voltage class.
 
     Parameters
@@ -221,12 +221,15 @@ def drive_checks(cat, I_rms: float | None, I_peak: float | None, t_above, U_moto
         The motor's DC-link voltage (its voltage class); None: the class is not checked.
     no_current : str, optional
         Why the current is not known (the checks of current are then not made).
+    characteristic : tuple, optional
+        The DC-link voltage the motor's speed-torque characteristic is for [V] (None: not known,
+        the check left out) and where it comes from, or why it is not known.
 
     Returns
     -------
     list of calc.core.checks.CheckArray
-        Continuous current, peak current, peak time, and the voltage class's bounds where the motor
-        has one.
+        Continuous current, peak current, peak time, the DC-link voltage against the
+        characteristic's, and the voltage class's bounds where the motor has one.
     """
     n = len(cat)
     ones = np.ones(n)
@@ -239,6 +242,8 @@ def drive_checks(cat, I_rms: float | None, I_peak: float | None, t_above, U_moto
         CheckArray("t_max", None, "t(I > I_N) <= t_max", None if no_current else Q_(t_above, "s"), cat["t_max"], "s",
                    not_made=no_current, unrated="the catalog gives no peak time t_max"),
     ]
+    if characteristic[0] is not None:
+        out.append(characteristic_check(cat, characteristic[0]))
     if U_motor is not None:
         low, high = class_bounds(U_motor)
         U = cat["U_DC"].m_as("V")
@@ -251,7 +256,28 @@ def drive_checks(cat, I_rms: float | None, I_peak: float | None, t_above, U_moto
     return out
 
 
-def select_drives(cat, I_rms, I_peak, dt, I_samples, U_motor, no_current: str | None = None) -> DriveSelection:
+def characteristic_check(cat, U: float):
+    """Each drive's DC-link voltage against the one the motor's speed-torque characteristic is
+    for: a lower DC link gives the motor less torque at speed than it was checked with.
+
+    Parameters
+    ----------
+    cat : calc.data.catalog.Catalog
+        The drives, of :data:`SCHEMA`.
+    U : float [V]
+        The DC-link voltage the motor's characteristic is for.
+
+    Returns
+    -------
+    calc.core.checks.CheckArray
+        ``U_DC >= U``; a row without ``U_DC`` is not checked, saying so.
+    """
+    return CheckArray("U_DC", None, f"U_DC >= {U:g} V (motor's characteristic)", Q_(U * np.ones(len(cat)), "V"),
+                      cat["U_DC"], "V", unrated="the catalog gives no DC-link voltage U_DC")
+
+
+def select_drives(cat, I_rms, I_peak, dt, I_samples, U_motor, no_current: str | None = None,
+                  characteristic: tuple = (None, "not known")) -> DriveSelection:
     """Every drive of a catalog against the motor's current, ranked as :data:`RANKING` says.
 
     Parameters
@@ -270,6 +296,8 @@ def select_drives(cat, I_rms, I_peak, dt, I_samples, U_motor, no_current: str | 
         The motor's DC-link voltage; None: the voltage class is not checked.
     no_current : str, optional
         Why the current is not known.
+    characteristic : tuple, optional
+        The DC-link voltage the motor's characteristic is for [V] (None: not known) and where from.
 
     Returns
     -------
@@ -285,7 +313,10 @@ def select_drives(cat, I_rms, I_peak, dt, I_samples, U_motor, no_current: str | 
     t_above = None if no_current else np.array([longest_run(dt, I_samples > x) for x in I_N])
     if U_motor is None:
         notes.append("the voltage class is not checked: the motor's DC-link voltage is not known")
-    checks = drive_checks(cat, I_rms, I_peak, t_above, U_motor, no_current)
+    if characteristic[0] is None:
+        notes.append(f"the DC link is not checked against the motor's characteristic, whose DC-link voltage is "
+                     f"{characteristic[1]}")
+    checks = drive_checks(cat, I_rms, I_peak, t_above, U_motor, no_current, characteristic)
     passes = np.logical_and.reduce([c.passes for c in checks if c.made] or [np.ones(len(cat), bool)])
     if no_current:
         worst = np.full(len(cat), np.nan)

@@ -37,7 +37,7 @@ MOTOR = Declared("motor", (
     Key("max_inertia_ratio", "dimensionless", "highest load-to-motor inertia ratio λ a catalog motor may have",
         "lambda_max", INERTIA_RATIO_LIMIT),
     Key("dc_link_voltage", "voltage", "DC-link voltage of the drive: with a catalog's electrical data, the voltage "
-        "limit", "U_DC", unit="V"),
+        "limit (without it: the drive the case names)", "U_DC", unit="V"),
     Key("curves", "file", "the catalog motors' peak and S1 curves read from the makers' charts: part, curve, "
         "speed [unit], torque [unit], source"),
     Key("torque_constant", "torque_constant", "torque constant of a typed motor, per A rms: its current I = T / k_T "
@@ -148,6 +148,8 @@ def read_catalog_motor(motor: Table, case: Case) -> None:
     where = "motor.max_inertia_ratio" if motor.has("max_inertia_ratio") else "the default"
     case.motor_max_inertia_ratio = (float(ratio.m_as("")), where)
     case.motor_dc_link = motor.positive("dc_link_voltage")
+    if case.motor_dc_link is not None:  # else the drive the case names may give it (calc.sections.drive)
+        case.voltage_limit_dc_link = (case.motor_dc_link, "motor.dc_link_voltage")
     if motor.has("curves"):
         case.motor_curves = measurement_path(motor.data["curves"], case.folder, motor.where("curves"))
     if motor.has("shaft"):

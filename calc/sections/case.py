@@ -426,6 +426,9 @@ class Case:
         The limit of λ [1] and where it comes from (a key path, or "the default").
     motor_dc_link : pint.Quantity [V], optional
         ``[motor] dc_link_voltage``, U_DC.
+    voltage_limit_dc_link : tuple, optional
+        The DC-link voltage the motors' voltage limit takes [V] and where it comes from (a key path,
+        or the row of the drive the case names); ``(None, None)`` where the case gives none.
     motor_curves : pathlib.Path, optional
         The motors' curves file.
     motor_torque_constant : pint.Quantity [N*m/A], optional
@@ -464,6 +467,7 @@ class Case:
     motor_part: str | None = None
     motor_max_inertia_ratio: tuple = (INERTIA_RATIO_LIMIT, "the default")
     motor_dc_link: object = None
+    voltage_limit_dc_link: tuple = (None, None)
     motor_curves: object = None
     motor_torque_constant: object = None
     motor_thermal_time_constant: object = None

@@ -39,7 +39,8 @@ TABLES = (Declared(NAME, (
     Key("peak_current", "current", "peak output current of a typed drive, at least its rated current", "I_max",
         unit="A"),
     Key("peak_time", "time", "how long a typed drive gives its peak current", "t_max", unit="s"),
-    Key("dc_link_voltage", "voltage", "DC-link voltage of a typed drive (with motor.dc_link_voltage: the same)",
+    Key("dc_link_voltage", "voltage", "DC-link voltage of a typed drive (with motor.dc_link_voltage: the same; "
+        "else the motor's voltage limit takes it)",
         "U_DC", unit="V"),
     Key("dc_link_energy", "energy", "energy a typed drive's DC link absorbs before its chopper switches on",
         "E_C", unit="J"),
@@ -569,7 +570,10 @@ class DriveSection(Section):
     REQUIRES = ("axis", "motor")
 
     def read_inputs(self, case: Case) -> DriveInputs:
-        return read_drive(case)
+        given = read_drive(case)
+        if case.motor_dc_link is None:  # the motor's voltage limit takes the DC link of the drive named
+            case.voltage_limit_dc_link = named_dc_link(case, given)
+        return given
 
     def evaluate(self, case: Case, earlier) -> DriveResult:
         given = self.inputs(case)
@@ -584,7 +588,7 @@ class DriveSection(Section):
         I = None if no_current else np.abs(I_ph.si(T_1=T_1, k_T=m.k_T))
         I_rms = None if I is None else float(np.sqrt((I**2 * dt).sum() / dt.sum()))
         I_peak = None if I is None else float(I.max())
-        sel = select_drives(cat, I_rms, I_peak, dt, I, m.U_DC, no_current)
+        sel = select_drives(cat, I_rms, I_peak, dt, I, m.U_DC, no_current, motor.characteristic_dc_link)
         _resistor_above_minimum(given, sel.catalog)
         segment, names = motor.segments
         phase_of = [names[s] for s in segment]
@@ -629,6 +633,33 @@ def unknown_torques(case: Case, given: DriveInputs, motor) -> DriveResult:
     braking = Braking([], None, "not known", np.zeros(0), t_cycle, {},
                       [scalar_check("E_C", "braking energy against the DC link", None, None, "J", reason)], [], [])
     return DriveResult(sel, m, None, None, braking, None, "typed" if cat.name == "typed" else given.catalog, [reason])
+
+
+def named_dc_link(case: Case, given: DriveInputs) -> tuple:
+    """The DC-link voltage of the drive the case names, which the motor's voltage limit takes
+    where ``motor.dc_link_voltage`` is not given.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    given : DriveInputs
+        ``[drive]`` as read.
+
+    Returns
+    -------
+    tuple
+        ``(U_DC [pint.Quantity, V], where from)``: the typed ``drive.dc_link_voltage``, or the
+        ``U_DC`` of the row of ``drive.part``; ``(None, None)`` where the drive is chosen from a
+        catalog, or its DC-link voltage is not given.
+    """
+    if "dc_link_voltage" in given.typed:
+        return given.typed["dc_link_voltage"], "drive.dc_link_voltage"
+    if given.typed or given.part is None:
+        return None, None
+    cat = load_catalogs(given.catalog, case.folder, f"{given.where}.catalog", SCHEMA)
+    U = _value(cat, "U_DC", cat.usable_index(given.part, f"{given.where}.part"), "V")
+    return (None, None) if U is None else (Q_(U, "V"), f"the U_DC of drive.part {given.part}")
 
 
 def _resistor_above_minimum(given: DriveInputs, cat) -> None:

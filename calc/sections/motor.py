@@ -123,6 +123,10 @@ def rotor_inertia(case: Case, J_1, coupling, catalog_rotors: bool = False) -> tu
     return (J_1 if J_c is None else J_1 + J_c), J_c, missing, notes
 
 
+#: Where a typed motor's characteristic comes from: no voltage.
+TYPED_CHARACTERISTIC = "not known: a typed motor's ratings name no DC-link voltage"
+
+
 @dataclass
 class MotorResult(Result):
     """The motor torque through one gearbox and the motor's checks. ``load`` and ``speed`` hold one
@@ -163,6 +167,9 @@ class MotorResult(Result):
     thermal_rating : tuple, optional
         The winding's reference torque's symbol (``M_0``, or ``M_N``), its value [N·m] and the
         thermal time constant [s], where the motor gives ``T_th``: the winding's model is made.
+    characteristic_dc_link : tuple, optional
+        The DC-link voltage the checked motor's speed-torque characteristic is for [V] (None where
+        not known) and where it comes from (:func:`characteristic_dc_link`).
     """
 
     part: str | None
@@ -180,6 +187,7 @@ class MotorResult(Result):
     selection: MotorSelection | None = None
     segments: tuple | None = None
     thermal_rating: tuple | None = None
+    characteristic_dc_link: tuple = (None, TYPED_CHARACTERISTIC)
 
     @property
     def row_checks(self) -> list:
@@ -247,6 +255,10 @@ class MotorResult(Result):
                                      else quantity(load.peak[0], "N*m", "motor.peak_torque_required")),
             "rms_torque_required": None if load is None else quantity(load.rms[0], "N*m", "motor.rms_torque_required"),
             "max_speed_required": quantity(self.speed[0], "rpm", "motor.max_speed_required"),
+            "characteristic_dc_link": {
+                "value": (None if self.characteristic_dc_link[0] is None
+                          else quantity(Q_(self.characteristic_dc_link[0], "V"), "V", "motor.characteristic_dc_link")),
+                "from": self.characteristic_dc_link[1]},
             "checks": [check_json(c) for c in self.row_checks],
             "notes": list(self.notes),
             "phases": [{"phase": p.phase, "duration": quantity(Q_(p.duration, "s"), "s"),
@@ -321,6 +333,8 @@ class MotorResult(Result):
                              + (f"  {'; '.join(c.reasons)}" if c.reasons else ""))
             lines.append(f"  Checks of {sel.best.part}" + ("" if sel.selected else " (the closest; none passes)") + ":")
             lines += [f"        {check_line(k)}" for k in self.row_checks]
+            U = j["characteristic_dc_link"]
+            lines.append(f"  Its characteristic is for U_DC = {quantity_text(U['value'])} ({U['from']})")
         return lines + [f"  Note: {n}" for n in self.notes]
 
     def governing(self) -> Governing | None:
@@ -545,7 +559,8 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
                   None if J_L is not None else no_ratio)
     limit, where = case.motor_max_inertia_ratio
     curves = None if case.motor_curves is None else read_curves(case.motor_curves, motor_catalog(case).parts)
-    sel = select_motors(cat, cycle, case.motor_dc_link, curves, limit, where, float(case.profile.t_cycle.m_as("s")))
+    sel = select_motors(cat, cycle, case.voltage_limit_dc_link[0], curves, limit, where,
+                        float(case.profile.t_cycle.m_as("s")))
     if chosen is not None:  # the motor the case is checked with is the one every output names
         sel.put_first(chosen, failing=True)
     best = int(sel.order[0])
@@ -556,7 +571,37 @@ def _catalog_motor(case: Case, t: Transmission, out: OutputLoad, J_1, J_c, missi
     load = MotorLoad(T_best, np.abs(T_1[best:best + 1]).max(axis=-1), rms[best:best + 1], out.sampled)
     return MotorResult(t.part, t.selected, t.i, t.eta, J_1, J_c, load, speed, [], notes + sel.notes, output=out,
                        J_motor=J[best], selection=sel, segments=segments_of(case),
-                       thermal_rating=thermal_rating(cat, best))
+                       thermal_rating=thermal_rating(cat, best),
+                       characteristic_dc_link=characteristic_dc_link(case, sel))
+
+
+def characteristic_dc_link(case: Case, sel: MotorSelection) -> tuple:
+    """The DC-link voltage the checked motor's speed-torque characteristic is for, and where it
+    comes from: the case's (``motor.dc_link_voltage``, or the drive the case names) where its
+    voltage limit is computed, else the ``U_DC`` its catalog row's ratings or curves are given for.
+
+    Parameters
+    ----------
+    case : calc.sections.case.Case
+        The case as read.
+    sel : calc.domain.motor_ratings.MotorSelection
+        The motors ranked, the checked one first.
+
+    Returns
+    -------
+    tuple
+        ``(U [V] or None, where from)``.
+    """
+    row = int(sel.order[0])
+    part, form = str(sel.catalog.parts[row]), sel.forms[row]
+    if form == "voltage limit":
+        U, where = case.voltage_limit_dc_link
+        return float(U.m_as("V")), f"{where}, the voltage limit of {part}"
+    what = "ratings" if form == "ratings" else "digitised curves"
+    rated = float(sel.catalog["U_DC"][row].m_as("V"))
+    if np.isnan(rated):
+        return None, f"not known: the {what} of {part}, whose catalog row gives no U_DC"
+    return rated, f"the U_DC of {part}'s catalog row, for its {what}"
 
 
 def thermal_rating(cat, row: int) -> tuple | None:

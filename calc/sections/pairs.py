@@ -380,7 +380,7 @@ def _examine(case: Case, few, motors, rows: dict, gear, hubs):
         T_1 = motor_torque(few.torque, few.speed, Q_(i[at, None], ""), Q_(eta[at, None], ""), few.alpha_2,
                            one["J"][0], Q_(J_1[at, None], "kg*m**2")).m_as("N*m")
         T_1 = np.broadcast_to(T_1, (len(at), len(w)))
-        limit, _ = peak_limit(one, (w[None, :] * i[at, None]).ravel(), case.motor_dc_link, curves)
+        limit, _ = peak_limit(one, (w[None, :] * i[at, None]).ravel(), case.voltage_limit_dc_link[0], curves)
         with np.errstate(invalid="ignore", divide="ignore"):
             u = np.abs(T_1) / limit.reshape(len(at), len(w))
         return np.where(np.isnan(u), np.inf, u).max(axis=1, initial=0.0)

@@ -259,7 +259,8 @@ def _holds(pid: str, text: str) -> bool:
 @pytest.mark.parametrize("width", [1024, 1093])  # 1093: a 1366 px laptop at 125 % scaling
 def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(tmp_path, width):
     # Finding 7: the line under the verdict names the most utilized governing check of each part: on the example the
-    # motor by λ = 9.443 of 10 (94 %), the drive SA54.0075 by its voltage band (450 V at least, 565 V: 80 %), the
+    # drive SA54.0075 by its DC link against the one the motor's ratings are for (565 V of 565 V: 100 %), the
+    # motor by λ = 9.443 of 10 (94 %), the
     # coupling AKN-18 by its first mode (200 / 265.5 Hz, 75 %), the gearbox
     # NPT035-10 by its hub (19 of 38 mm, 50 %); η (0.97) stands beside T_2max = 6.5 · 10 · 1.6 · 0.97 = 100.9 N·m.
     # Finding 8: at 1024 px every verdict of the governing checks is on the screen.
@@ -267,8 +268,9 @@ def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(tmp_
     with served(_copy(tmp_path)) as server, browser_page({"width": width, "height": 768}) as page:
         _open(page, server.url)
         decides = page.inner_text(f"{RESULTS} .decides")
-        assert decides.startswith("What decides the design: motor SGMUH-10DA by λ ≤ λmax at 94 %; drive SA54.0075 by ")
-        assert "(380-480 V AC) at 80 %; " in decides and "coupling AKN-18 by 2 fer ≤ f1 at 75 %" in decides
+        assert decides.startswith("What decides the design: drive SA54.0075 by UDC ≥ 565 V "
+                                  "(motor's characteristic) at 100 %; motor SGMUH-10DA by λ ≤ λmax at 94 %; ")
+        assert "coupling AKN-18 by 2 fer ≤ f1 at 75 %" in decides
         assert "gearbox NPT035-10 by dmotor ≤ dhub,max at 50 %" in decides
         assert "T2max 100.9 N·m (with η 0.97)" in page.inner_text(RESULTS)
         cells = page.locator(f"{RESULTS} table").first.locator("tr td:last-child")

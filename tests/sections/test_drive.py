@@ -6,9 +6,11 @@ named in one sentence."""
 import json
 import math
 
+import numpy as np
 import pytest
 
 from calc.core.errors import CalcError
+from calc.domain.motor_ratings import peak_limit
 from calc.sections import evaluate, read_case
 
 from ..conftest import DERIVED_EXAMPLE, ROOT, run
@@ -221,3 +223,97 @@ def test_a_catalog_drive_with_its_capacitance_and_internal_resistor(write_case, 
     assert b["resistor"]["part"] == "the internal resistor of D-2"
     avg, peak = b["checks"]
     assert avg["passes"] is True and peak["rated"]["value"] == pytest.approx(390**2 / 33, rel=1e-12)
+
+
+# -- the drive's DC link and the motor's voltage limit ------------------------------------------
+
+#: 1FT7044-AK7 (k_E 57 V/krpm, k_T 0.88 N·m/A, R_ph 0.61 Ω, L_ph 4.2 mH, 6 poles; its row gives no
+#: U_DC) driving a constant speed directly, with a typed drive of the DC link given.
+ON_A_DRIVE = """
+title = "1FT7044-AK7 on its drive"
+[motor]
+part = "1FT7044-AK7"
+{motor}
+[[profile]]
+phase = "const"
+duration = "1 s"
+speed = "{speed}"
+torque = "1 N*m"
+[drive]
+{drive}
+"""
+TYPED_DRIVE = 'rated_current = "10 A"\npeak_current = "30 A"\ndc_link_voltage = "{U}"'
+
+
+def test_a_typed_drive_lowers_the_motors_voltage_limit(write_case):
+    # The voltage limit (case format, "The motor chosen from a catalog") on a 540 V DC link at 6000 rpm:
+    # E = 57 · 6 / √3 = 197.45 V, U = 540 / √6 = 220.45 V (U² = 48 600 V²), X = 3 · 628.32 rad/s · 4.2 mH
+    # = 7.917 Ω, R² + X² = 63.05 Ω²; I = (√(48 600 · 63.05 − 62.68 · 38 987) − 0.61 · 197.45) / 63.05
+    # = (√620 500 − 120.4) / 63.05 = 10.58 A, T_V = 0.88 · 10.58 = 9.31 N·m, 90 % of it 8.38 N·m
+    # (on the 600 V the motor's test takes, 13.02 N·m).
+    R, X, E, U = 0.61, 3 * 6000 * 2 * math.pi / 60 * 4.2e-3, 57 * 6 / math.sqrt(3), 540 / math.sqrt(6)
+    by_hand = 0.9 * 0.88 * (math.sqrt(U**2 * (R**2 + X**2) - X**2 * E**2) - R * E) / (R**2 + X**2)
+    assert by_hand == pytest.approx(8.38, abs=0.01)
+    path = write_case(ON_A_DRIVE.format(motor="", speed="6000 rpm", drive=TYPED_DRIVE.format(U="540 V")))
+    results = evaluate(read_case(path))
+    m = results["motor"].to_json()
+    assert m["characteristic_dc_link"] == {"value": {"value": 540.0, "unit": "V"},
+                                           "from": "drive.dc_link_voltage, the voltage limit of 1FT7044-AK7"}
+    peak = next(k for k in m["checks"] if k["name"] == "peak")
+    assert peak["rated"]["value"] == pytest.approx(by_hand, rel=1e-9)
+    # The speed at which no current is left: T_V = 0 where U_DC / √6 = E = k_E · n / √3, so
+    # n_0 = U_DC / (√2 · k_E): 540 / (√2 · 57) krpm = 6699 rpm (7443 rpm on 600 V): it scales with U_DC.
+    sel = results["motor"].selection
+    n_0 = 540 / (math.sqrt(2) * 57) * 1000
+    assert n_0 == pytest.approx(6699, abs=1)
+    limit, forms = peak_limit(sel.catalog, np.array([n_0 * 0.999, n_0 * 1.001]) * 2 * math.pi / 60, sel.dc_link)
+    assert forms == ["voltage limit"] and limit[0][0] > 0 and limit[0][1] == 0
+    d = results["drive"].to_json()
+    U_DC = next(k for k in d["checks"] if k["criterion"] == "U_DC >= 540 V (motor's characteristic)")
+    assert U_DC["passes"] is True and U_DC["utilization"] == 1.0
+
+
+def test_a_named_drive_gives_the_motor_its_dc_link(write_case):
+    # Moog G394-030 (3x230 V AC): U_DC 325 V; at 3000 rpm E = 98.73 V, below U = 325 / √6 = 132.68 V.
+    path = write_case(ON_A_DRIVE.format(motor="", speed="3000 rpm", drive='part = "G394-030 (3x230 V AC)"'))
+    results = evaluate(read_case(path))
+    assert results["motor"].selection.dc_link.m_as("V") == 325.0
+    assert results["motor"].characteristic_dc_link == (325.0, "the U_DC of drive.part G394-030 (3x230 V AC), "
+                                                              "the voltage limit of 1FT7044-AK7")
+
+
+def test_a_drive_below_the_motors_dc_link_never_passes(write_case):
+    # The motor checked on 600 V (motor.dc_link_voltage); KEBA SA54.0075 has 565 V: 600 / 565 = 1.062.
+    path = write_case(ON_A_DRIVE.format(motor='dc_link_voltage = "600 V"', speed="3000 rpm",
+                                        drive='part = "SA54.0075"'))
+    results = evaluate(read_case(path))
+    assert results["motor"].characteristic_dc_link == (600.0, "motor.dc_link_voltage, the voltage limit of 1FT7044-AK7")
+    k = next(k for k in results["drive"].checks() if k.criterion == "U_DC >= 600 V (motor's characteristic)")
+    assert k.passes is False and k.utilization == pytest.approx(600 / 565, rel=1e-12)
+    assert results["drive"].verdict().passes is False
+    # Chosen from the catalog: no published drive with both currents has a DC link of 600 V or more (565 V
+    # at most), so none passes, and a row without U_DC is not checked (it fails the class check anyway).
+    path = write_case(ON_A_DRIVE.format(motor='dc_link_voltage = "600 V"', speed="3000 rpm",
+                                        drive='catalog = "drives"'))
+    d = evaluate(read_case(path))["drive"]
+    assert d.selection.selected is None and d.verdict().passes is False
+    k = next(c for c in d.selection.checks if c.text == "U_DC >= 600 V (motor's characteristic)")
+    assert not (k.passes & ~k.unrated_rows).any() and k.utilization[~k.unrated_rows].min() == pytest.approx(600 / 565)
+    assert k.unrated_rows.sum() == np.isnan(d.selection.catalog["U_DC"].m_as("V")).sum() > 0
+
+
+def test_the_example_checks_its_drive_at_the_motors_rated_dc_link():
+    # SGMUH-10DA's row gives U_DC 565 V (its ratings are for it); KEBA SA54.0075 has 565 V: 100 %.
+    m = evaluate(read_case(DERIVED_EXAMPLE))
+    assert m["motor"].characteristic_dc_link == (565.0, "the U_DC of SGMUH-10DA's catalog row, for its ratings")
+    assert ("  Its characteristic is for U_DC = 565 V (the U_DC of SGMUH-10DA's catalog row, for its ratings)"
+            in m["motor"].summary_lines())
+    k = next(k for k in m["drive"].checks() if k.criterion == "U_DC >= 565 V (motor's characteristic)")
+    assert k.passes is True and k.utilization == 1.0
+
+
+def test_a_typed_motor_leaves_the_check_out_and_says_why(write_case):
+    d = evaluate(read_case(write_case(TYPED)))["drive"]
+    assert not any("characteristic" in k.criterion for k in d.checks())
+    assert ("the DC link is not checked against the motor's characteristic, whose DC-link voltage is not known: "
+            "a typed motor's ratings name no DC-link voltage") in d.selection.notes
