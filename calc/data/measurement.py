@@ -84,7 +84,7 @@ def measurement_path(text, base: Path | None, where: str) -> Path:
         path = base / path
     if not path.is_file():
         looked = str(path.resolve())
-        looked = looked if len(looked) <= 100 else "…" + looked[-99:]  # the file's end says most
+        looked = looked if len(looked) <= 60 else "…" + looked[-59:]  # the file's end says most
         raise CalcError(f"{where}: the measurement file {as_found(text)} does not exist (looked for {looked})")
     return path
 
