@@ -231,7 +231,8 @@ def test_a_linear_axis_shows_its_radius_inertia_and_force():
     assert r"F &= a \cdot \left(m + m_{\mathrm{c}}\right)" in steps
     # Driven back (d_P = -1) the screw takes its reverse efficiency η' = 2 - 1/0.9 = 0.8889.
     assert (r"T_{2} &= T_{\mathrm{d}} \cdot s_{\mathrm{v}} + F \cdot r \cdot "
-            r"\left(\frac{\eta' \cdot \left(1 - d_{\mathrm{P}}\right)}{2} + \frac{1 + d_{\mathrm{P}}}{2 \cdot \eta}\right)") in steps
+            r"\left(\frac{\eta' \cdot \left(1 - d_{\mathrm{P}}\right)}{2} "
+            r"+ \frac{1 + d_{\mathrm{P}}}{2 \cdot \eta}\right)") in steps
     assert r"\left(\frac{0.8889 \cdot" in steps
 
 
