@@ -137,8 +137,10 @@ def new_values(case: Path, count: int) -> list[tuple[str, str]]:
             continue
         # 2 % further per turn (on the input's step), so each value is new and the design stays possible.
         d = max(spec.step, round(0.02 * turn * abs(spec.value) / spec.step) * spec.step) * turn
-        # down from the top
-        v = round(spec.value + d if spec.value + d <= spec.high else max(spec.value - d, spec.low), 12)
+        # down from the top; an input that follows another (a decel time its accel time, stepped up
+        # just before) steps down, or it would be typed at the value it already shows and change nothing
+        up = spec.follows is None and spec.value + d <= spec.high
+        v = round(spec.value + d if up else max(spec.value - d, spec.low), 12)
         out.append((spec.key, f"{v:g}"))
     return out
 
