@@ -3,6 +3,7 @@ checkpoint graded by the autograder, and what students receive kept apart from t
 
 Where a value is expected, it comes from a hand calculation written out here."""
 
+import contextlib
 import json
 import math
 import re
@@ -114,7 +115,9 @@ def test_every_students_checkpoint_grades_a_right_submission_full_and_a_wrong_on
 
 @pytest.fixture(scope="module")
 def lecturer(tmp_path_factory):
-    return material.build_lecturer(tmp_path_factory.mktemp("lecturer"), STUDENTS[:2], SEED, book=False)
+    # Built into a folder named relative to the working folder, as `make lecturer` names it.
+    with contextlib.chdir(tmp_path_factory.mktemp("work")):
+        return material.build_lecturer(Path("lecturer"), STUDENTS[:2], SEED, book=False).resolve()
 
 
 def _submission(folder: Path, student: str, answers: dict) -> Path:

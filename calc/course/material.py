@@ -233,6 +233,8 @@ def autograder(tests: Path, zipped: Path) -> Path:
     pathlib.Path
         ``zipped``.
     """
+    # Absolute paths: otter runs in the zip's folder, where a path relative to ours would not resolve.
+    tests, zipped = tests.resolve(), zipped.resolve()
     run = subprocess.run([sys.executable, "-m", "otter", "generate", "-t", str(tests), "-o", str(zipped)],
                          cwd=zipped.parent, capture_output=True, text=True)
     if run.returncode or not zipped.is_file():
