@@ -287,6 +287,8 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     # Culled within a minute of the page closing: idle 45 s, looked at every 15 s.
     assert "--MappingKernelManager.cull_idle_timeout=45" in argv and "--MappingKernelManager.cull_interval=15" in argv
     assert "--MappingKernelManager.cull_connected=False" in argv
+    # The page loads the widgets' scripts and no other JupyterLab extension of the environment.
+    assert f"--VoilaConfiguration.extension_allowlist={list(serve.PAGE_EXTENSIONS)!r}" in argv
     # Checked by hand in a browser with idle_seconds=6: two pages opened and closed, their two
     # kernels culled some 8 s later, the waiting kernel kept.
     assert "--MappingKernelManager.cull_idle_timeout=6" in serve.command(8866, idle_seconds=6)
