@@ -349,3 +349,14 @@ def test_a_file_that_does_not_read_back_is_not_said_saved(example, tmp_path, mon
     with pytest.raises(CalcError, match=r"^not saved: lost.toml read back"):
         example.save("lost.toml")
     assert not (tmp_path / "lost.toml").exists()
+
+
+def test_each_edit_starts_from_the_file_as_written():
+    # The file's parsed text is kept between changes: an edit must never reach the next change's text.
+    text = '[motor]\npeak_torque = "12 N*m"  # T_1B\n[load]\ninertia = "1500 kg*cm**2"\n'
+    first = edited_text(text, [Edit("motor.peak_torque", "16 N*m")], "a.toml")
+    other = edited_text(text, [Edit("load.inertia", "1600 kg*cm**2")], "a.toml")
+    assert first == '[motor]\npeak_torque = "16 N*m"  # (said of the file\'s value 12 N*m) T_1B\n[load]\n' \
+                    'inertia = "1500 kg*cm**2"\n'
+    assert 'peak_torque = "12 N*m"  # T_1B' in other and 'inertia = "1600 kg*cm**2"' in other
+    assert edited_text(text, [], "a.toml") == text
