@@ -53,12 +53,13 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   as many at a time as the machine has cores.
 * ``review_page_ready``, ``review_change_median``, ``review_change_max``: the served design review
   (``make review``) in headless Chromium (bench/review_browser.py): from asking for the page to
-  the panel's results shown (the server already up, its first kernel waiting), and each of
+  the panel's results shown (asked for as soon as the server has launched its first kernel, Voilà's
+  "pool is filled": the page's notebook still runs in it), and each of
   :data:`REVIEW_CHANGES` changes to values not seen before (each input the page offers for the
   example, found by its key path, in turn), typed into the page's number fields or chosen, until the results
   (text and figures) follow; every value is new, so each figure whose inputs change is drawn.
   ``review_start``: from starting the server (``python -m calc.review.serve``, as ``make review``
-  does) to its first kernel waiting, plus ``review_page_ready``: a reviewer's wait from the command
+  does) to its first kernel launched, plus ``review_page_ready``: a reviewer's wait from the command
   to a verdict (their browser already open). Each of these, and ``report``, is measured in
   :data:`PAGE_RUNS` runs: the line gives the median, which the target judges, with the minimum
   and maximum.
