@@ -1064,7 +1064,7 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
     med = statistics.median
     return [
         line("review_start", med(start), "s", ("<=", 2.5),
-             note=f"the server's first kernel waiting, then the page; {spread(start)}"),
+             note=f"the server's first kernel launched, then the page; {spread(start)}"),
         line("review_page_ready", med(ready), "s", ("<=", 2.5), note=spread(ready)),
         line("review_change_median", med(median), "s", ("<=", 0.1), note=f"{note}; {spread(median)}"),
         line("review_change_max", med(worst), "s", ("<=", 0.2), note=f"slowest {slowest}; {spread(worst)}"),

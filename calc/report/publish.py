@@ -256,6 +256,22 @@ def kept_passes(pdf: Path) -> Path | None:
     return folder / f"pass-{hashlib.sha256(str(pdf.resolve()).encode()).hexdigest()[:16]}"
 
 
+#: Kept pass files unused this long are removed as others are kept [s] (a report of a folder since deleted).
+PASS_FILES_KEPT = 30 * 86400
+
+
+def _forget_old_passes(folder: Path) -> None:
+    """Remove the kept pass files of ``folder`` not written for :data:`PASS_FILES_KEPT`."""
+    import time
+
+    for path in folder.glob("pass-*"):
+        try:
+            if time.time() - path.stat().st_mtime > PASS_FILES_KEPT:
+                path.unlink()
+        except OSError:  # removed meanwhile by a build beside this one
+            continue
+
+
 def _pass_files(source: Path, target: Path) -> None:
     """Copy the :data:`PASS_FILES` of stem ``source`` that exist to stem ``target``, each replaced at once."""
     import os
@@ -312,6 +328,7 @@ def exporter(kept: Path | None = None):
             if kept is not None:
                 kept.parent.mkdir(exist_ok=True)
                 _pass_files(stem, kept)
+                _forget_old_passes(kept.parent)
             return True
 
         def run_bib(self, filename, raise_on_failure=False):

@@ -340,3 +340,17 @@ def test_a_report_built_again_takes_one_pass_and_typesets_the_same(reports, tmp_
     # The files kept from another report: its labels and last page have moved, xelatex says so and passes again.
     other, text_other = built("shaft-24", kept)
     assert other == 2 and text_other == built("shaft-24", None)[1]
+
+
+def test_kept_pass_files_unused_for_a_month_are_removed(tmp_path):
+    import os
+    import time
+
+    old, recent = tmp_path / "pass-old.aux", tmp_path / "pass-recent.aux"
+    for path in (old, recent, tmp_path / "report-x.fmt"):
+        path.write_text("x", encoding="utf-8")
+    month_ago = time.time() - publish.PASS_FILES_KEPT - 60
+    os.utime(old, (month_ago, month_ago))
+    os.utime(tmp_path / "report-x.fmt", (month_ago, month_ago))  # a compiled preamble is not a pass file
+    publish._forget_old_passes(tmp_path)
+    assert not old.exists() and recent.exists() and (tmp_path / "report-x.fmt").exists()
