@@ -178,8 +178,13 @@ SCRIPT = r"""<script>
   function keepInAddress(r, typed) {
     const changed = JSON.parse(r.dataset.changed || '{}'), name = r.dataset.case || '';
     if (typed && r.dataset.inputs) {
-      const stamp = JSON.parse(r.dataset.inputs), now = shown();
-      for (const k of Object.keys(now)) if (stamp[k] !== undefined && stamp[k] !== now[k]) changed[k] = now[k];
+      const stamp = JSON.parse(r.dataset.inputs), now = shown(), factors = JSON.parse(r.dataset.factors || '{}');
+      for (const k of Object.keys(now)) if (stamp[k] !== undefined && stamp[k] !== now[k]) {
+        // the address carries the file's units: a number typed in a field shown in another unit goes back to it
+        const v = Number(now[k].replace(',', '.'));
+        changed[k] = factors[k] && now[k] !== '' && Number.isFinite(v) ? String(+(v / factors[k]).toPrecision(12))
+                                                                      : now[k];
+      }
     }
     const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed}
                             : {case: name, values: changed};

@@ -153,6 +153,8 @@ class DesignReview:
         """An option of the results (all candidates, the ratio search, the unit system) set."""
         if getattr(self.state, name) != value:
             setattr(self.state, name, value)
+            if name == "units":  # the fields in that system too
+                self.rows.show(self.state)
             if self.state.case is not None:  # else no case file was read: nothing to draw
                 self.drawing.changed()
 
@@ -637,7 +639,8 @@ class InputRows:
         import ipywidgets as w
 
         value = state.values[spec.key]
-        label = w.HTML(label_html(spec, False, state.from_edits(spec.key), state.following(spec.key)),
+        label = w.HTML(label_html(spec, False, state.from_edits(spec.key), state.following(spec.key),
+                                  state.shown_spec(spec.key)),
                        layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
         label.add_class("dr-label")
         self.labels[spec.key], self.messages[spec.key] = label, w.HTML()
@@ -712,7 +715,8 @@ class InputRows:
         None
         """
         for spec in state.specs:
-            label = label_html(spec, spec.key in changes, state.from_edits(spec.key), state.following(spec.key))
+            label = label_html(spec, spec.key in changes, state.from_edits(spec.key), state.following(spec.key),
+                               state.shown_spec(spec.key))
             if self.labels[spec.key].value != label:  # each value set is a message to the page
                 self.labels[spec.key].value = label
             self._show_message(state, spec.key)
@@ -831,7 +835,7 @@ def _options(p: DesignReview, w):
                                   tooltip=f"list every candidate in the tables, not the best {SHOWN_CANDIDATES}")
     p.ratio_search = w.Checkbox(description="ratio search", indent=False, layout=_grows(w),
                                 tooltip="the case at every ratio of the gearbox catalog, and the ratio to pick")
-    p.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the results",
+    p.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the inputs and the results",
                               style={"button_width": "7.5em"}, layout=w.Layout(width="auto", flex="0 0 auto"))
     for name, widget in (("all_candidates", p.all_candidates), ("ratio_search", p.ratio_search), ("units", p.units)):
         widget.observe(lambda change, name=name: p._option(name, change["new"]), names="value")

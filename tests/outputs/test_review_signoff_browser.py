@@ -354,3 +354,45 @@ def test_an_open_page_offers_the_case_files_saved_since(tmp_path):
         (tmp_path / "axis-variant-1.toml").write_text(case.read_text().replace('"1500 kg*cm**2"', '"1600 kg*cm**2"'))
         first.wait_for_function("() => document.querySelector('.design-review .dr-case select')"
                                 ".innerText.includes('axis-variant-1.toml')", timeout=30_000)
+
+
+def test_the_screens_report_shows_one_gearbox_at_the_cases_ratio(tmp_path):
+    # Finding 6: NPT025-10 forced from its candidate row; the catalog then pairs it with SGM7G-03A (M_max 5.88 N·m):
+    # T_2max = 5.88 · 10 · 1.6 · 0.97 = 91.26 N·m > T_2B 90 N·m, it fails. The ratio search showed NPT035-10 at ratio
+    # 10 and picked it, beside a chosen NPT025-10. On the page and in the screen's calc report, the search's row at
+    # 10 is NPT025-10, and the sentence under its pick says the case's gearbox and why another ratio is picked.
+    import subprocess
+
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    with served(_copy(tmp_path), reports=tmp_path) as server, browser_page() as page:
+        _open(page, server.url)
+        g = int(page.get_attribute(RESULTS, "data-generation"))
+        page.locator(".design-review label", has_text="ratio search").click()
+        wait_for_results(page, g)
+        _current(page)
+        g = int(page.get_attribute(RESULTS, "data-generation"))
+        candidate = page.locator('.design-review tr[data-part="NPT025-10"]').first
+        candidate.focus()
+        page.keyboard.press("Enter")
+        wait_for_results(page, g)
+        _current(page)
+        page.wait_for_function(f"() => document.querySelector('{RESULTS}').innerText.includes('Ratio search')"
+                               " && document.querySelector('.design-review .checked-at') !== null", timeout=60_000)
+        said = page.inner_text(".design-review .checked-at")
+        assert said.startswith("The case is checked at its ratio 10 with NPT025-10 (gearbox.part); the search picks "
+                               "ratio ")
+        assert "since at 10 NPT025-10 fails (T2max ≤ T2B: required 91.26 N·m > rated 90 N·m" in said
+        row10 = page.locator(f"{RESULTS} h3:text('Ratio search') ~ table tr", has_text="NPT0").filter(
+            has=page.locator("td:first-child", has_text="10"))
+        assert row10.count() == 1 and "NPT025-10" in row10.inner_text() and "NPT035-10" not in row10.inner_text()
+        page.locator(".design-review .checked-at").scroll_into_view_if_needed()
+        page.screenshot(path=str(SHOTS / "ratio-search-forced-part.png"))
+        page.locator(".design-review button", has_text="Calc report of this screen").click()
+        page.wait_for_function("() => /calc report of [^ ]+, the screen/.test(document.querySelector('.design-review')"
+                               ".innerText) || document.querySelector('.design-review').innerText.includes("
+                               "'no calc report')", timeout=180_000)
+        pdf = tmp_path / "axis-variant-1.pdf"
+        text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True).stdout
+        flat = " ".join(text.split())
+        assert "The case is checked at its ratio 10 with NPT025-10 (gearbox.part); the search picks ratio" in flat
+        assert "NPT035-10" not in flat.split("The ratio", 1)[1].split("Rule:", 1)[0]
