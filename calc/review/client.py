@@ -35,6 +35,12 @@ STYLE = """<style>
 .design-review .dr-print-head { display: none; }
 .design-review tr[data-force]:hover td { background: #eef3fb; }
 .design-review .dr-changed { color: #1f5fbf; border-left: 4px solid #1f5fbf; padding-left: 4px; margin-left: -8px; }
+.design-review .dr-top { flex-wrap: wrap; row-gap: 2px; } .design-review .dr-top .dr-case { min-width: 16em; }
+/* a table's words wrap, its numbers do not: no long text widens the results beyond their column (a note under it
+   would be as wide, and cut) */
+.design-review .dr td, .design-review .dr th { white-space: normal; } .design-review .dr td.n { white-space: nowrap; }
+.design-review .dr td:first-child { white-space: nowrap; } .design-review .dr.dr-variants td:first-child { white-space: normal; }
+.design-review .dr span.open { display: inline-block; max-width: 22em; }  /* a check not made: why, in a column */
 @media (max-width: 1180px) {
   /* a narrow screen: the controls' column narrows so that the verdict stays beside them */
   .design-review > .widget-vbox:first-child { flex: 0 0 430px !important; width: 430px !important; }
@@ -43,8 +49,8 @@ STYLE = """<style>
   .design-review > .widget-vbox:last-child { min-width: 420px !important; flex: 1 1 420px !important; }
   /* the tables wrap their words, not their numbers, so that the verdict column stays on the screen */
   .design-review .dr { font-size: 12px; }
-  .design-review .dr td, .design-review .dr th { white-space: normal; padding-right: 5px; }
-  .design-review .dr td.n { white-space: nowrap; }
+  .design-review .dr td, .design-review .dr th { padding-right: 5px; }
+  .design-review .dr td:first-child { white-space: normal; }
   .design-review .dr .bar { width: 28px; }
 }
 @media print {

@@ -813,6 +813,7 @@ def _build_widgets(p: DesignReview, w, path: Path) -> None:
     p.undo_button = _button(w, "undo", "the values before the last change", "4.2em", p.undo, fixed=True, disabled=True)
     p.redo_button = _button(w, "redo", "the change undone last", "4.2em", p.redo, fixed=True, disabled=True)
     top = w.HBox([p.case_file, p.reset, p.undo_button, p.redo_button], layout=w.Layout(width="100%"))
+    top.add_class("dr-top")  # its buttons go under the chooser where the column is too narrow, never cut
     p.status = w.HTML(state_html())
     p.results = w.HTML(layout=w.Layout(width="100%"))
     p.load_cycle = w.HTML(layout=w.Layout(width="100%", max_width="560px"))  # SVG, drawn by the browser

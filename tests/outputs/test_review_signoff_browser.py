@@ -396,3 +396,77 @@ def test_the_screens_report_shows_one_gearbox_at_the_cases_ratio(tmp_path):
         flat = " ".join(text.split())
         assert "The case is checked at its ratio 10 with NPT025-10 (gearbox.part); the search picks ratio" in flat
         assert "NPT035-10" not in flat.split("The ratio", 1)[1].split("Rule:", 1)[0]
+
+
+def test_the_unit_switch_converts_the_inputs_and_reads_typed_values_in_its_units(tmp_path):
+    # Finding 7: switched to inch-pound, the example's J_L 1500 kg·cm² shows as 0.15 kg·m² / (0.45359237 kg ·
+    # 0.0254² m²) = 512.576 lb·in²; 600 typed there is 600 lb·in² = 1755.84 kg·cm², which the address keeps in the
+    # file's kg·cm² (a reload shows it in inch-pound again) and a save writes in kg·cm².
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    with served(_copy(tmp_path)) as server, browser_page() as page:
+        _open(page, server.url)
+        g = int(page.get_attribute(RESULTS, "data-generation"))
+        page.locator(".design-review .widget-toggle-buttons button", has_text="inch-pound").click()
+        wait_for_results(page, g)
+        _current(page)
+        page.wait_for_function("() => document.querySelector('.dr-row [data-key=\"mechanism.inertia\"]')"
+                               "?.closest('.dr-row').querySelector('input[type=text]').value === '512.576'")
+        assert "[lb·in²]" in row(page, "mechanism.inertia").locator("[data-key]").inner_text()
+        assert _field(page, "move[1].time") == "0.5"
+        shown = _changed(page, "mechanism.inertia", "600")
+        assert _field(page, "mechanism.inertia") == "600" and "lbf·in" in shown
+        row(page, "mechanism.inertia").scroll_into_view_if_needed()
+        page.screenshot(path=str(SHOTS / "units-inputs-inch-pound.png"))
+        page.wait_for_function("() => decodeURIComponent(location.hash).includes('\"mechanism.inertia\":\"1755.83')")
+        address = page.url
+        page.goto("about:blank")
+        _open(page, address)
+        page.wait_for_function("() => document.querySelector('.dr-row [data-key=\"mechanism.inertia\"]')"
+                               "?.closest('.dr-row').querySelector('input[type=text]').value === '600'", timeout=60_000)
+        _current(page)
+        assert page.inner_text(RESULTS) == shown
+        page.locator(".design-review button", has_text="Save as case file").click()
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('saved as')")
+        saved = (tmp_path / "axis-variant-1.toml").read_text()
+        assert 'inertia = "1755.83792' in saved and 'kg*cm**2"' in saved.split('inertia = "1755.83792', 1)[1][:20]
+
+
+def _beyond(page, selector: str, width: int) -> list:
+    """The elements of ``selector`` whose right edge lies past the viewport's width (a box cut or off-screen)."""
+    return page.evaluate(f"""() => [...document.querySelectorAll({selector!r})]
+        .map(e => [e.textContent.trim().slice(0, 40), Math.round(e.getBoundingClientRect().right)])
+        .filter(([_, right]) => right > {width})""")
+
+
+def test_three_variants_the_history_buttons_and_long_notes_fit_from_1024_to_1920_px(tmp_path):
+    # Finding 8: three variants kept (J_L 1600, 1400 and 1300 kg·cm²): at 1366 px the third variant's column was
+    # off-screen (the column heads, the variants' names, did not wrap); at 1024, 1093 (a 1366 px laptop at 125 %),
+    # 1366 and 1920 px every variant's head and verdict, the reset, undo and redo buttons and every note are within
+    # the viewport's width.
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    with served(_copy(tmp_path)) as server, browser_page({"width": 1366, "height": 768}) as page:
+        _open(page, server.url)
+        for k, inertia in enumerate(("1600", "1400", "1300"), 1):
+            _changed(page, "mechanism.inertia", inertia)
+            page.locator(".design-review button", has_text="Keep as variant").click()
+            page.wait_for_function(f"() => document.querySelector('.design-review').innerText"
+                                   f".includes('kept variant {k}')")
+        page.wait_for_function("() => document.querySelectorAll('.design-review .dr-variants thead th').length === 4")
+        for width in (1024, 1093, 1366, 1920):
+            page.set_viewport_size({"width": width, "height": 768})
+            page.wait_for_timeout(500)
+            table = ".design-review .dr-variants table"
+            assert _beyond(page, f"{table} th, {table} tbody tr:first-child td", width) == [], width
+            assert page.locator(f"{table} tbody tr:first-child td").nth(3).inner_text() == "PASS"
+            assert _beyond(page, ".design-review button, .design-review .note, .design-review .decides", width) == [], \
+                width
+            for name in ("reset", "undo", "redo"):  # not cut by their row either
+                button = page.locator(".design-review button", has_text=name).first
+                clipped = button.evaluate("b => { const r = b.getBoundingClientRect(), p = b.parentElement"
+                                          ".getBoundingClientRect(); return r.right > p.right + 1 || r.width < 20; }")
+                assert not clipped, (width, name)
+            page.locator(f"{table}").scroll_into_view_if_needed()
+            page.screenshot(path=str(SHOTS / f"variants-{width}.png"))
+            page.evaluate("() => window.scrollTo(0, 0)")
+            page.locator(".design-review button", has_text="undo").first.scroll_into_view_if_needed()
+            page.screenshot(path=str(SHOTS / f"history-buttons-{width}.png"))
