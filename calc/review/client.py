@@ -39,7 +39,8 @@ STYLE = """<style>
 /* a table's words wrap, its numbers do not: no long text widens the results beyond their column (a note under it
    would be as wide, and cut) */
 .design-review .dr td, .design-review .dr th { white-space: normal; } .design-review .dr td.n { white-space: nowrap; }
-.design-review .dr td:first-child { white-space: nowrap; } .design-review .dr.dr-variants td:first-child { white-space: normal; }
+.design-review .dr td:first-child { white-space: nowrap; }
+.design-review .dr.dr-variants td:first-child { white-space: normal; }
 .design-review .dr span.open { display: inline-block; max-width: 22em; }  /* a check not made: why, in a column */
 @media (max-width: 1180px) {
   /* a narrow screen: the controls' column narrows so that the verdict stays beside them */
@@ -54,9 +55,18 @@ STYLE = """<style>
   .design-review .dr .bar { width: 28px; }
 }
 @media print {
-  @page { size: A4; margin: 12mm; }
+  @page { size: A4; margin: 14mm 12mm;
+          @bottom-right { content: "page " counter(page) " of " counter(pages); font: 8pt sans-serif; color: #333; } }
   /* Voilà's page scrolls inside fixed-height boxes: printed, every box takes its content's height */
   html, body, body * { overflow: visible !important; }
+  /* and is as wide as the screen was (Lumino sets its panels' widths): printed, as wide as the paper, so no text
+     runs past its right edge */
+  html, body, .jp-LabShell, .lm-BoxPanel, .lm-BoxPanel-child { width: auto !important; min-width: 0 !important; }
+  /* JupyterLab keeps an output on one page: the review, taller than a page, was pushed to the second (a blank
+     first page) */
+  .jp-OutputArea-child { break-inside: auto !important; }
+  /* the title block and the verdict first, then the inputs they were computed from */
+  .design-review > .widget-vbox:last-child { order: -1; }
   html, body, .lm-Widget, .jp-OutputArea, .jp-Cell {
     height: auto !important; max-height: none !important; contain: none !important; }
   .lm-Widget { position: relative !important; top: auto !important; left: auto !important; }

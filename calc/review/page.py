@@ -188,8 +188,36 @@ def print_head(state: ReviewState) -> str:
     except OSError:
         digest = ""
     changed = " with the changes marked on the page" if state.modified() else ""
-    return (f'<div class="dr-print-head">Design review of {escape(state.path.name)}{digest}{changed} · computed '
-            f"{build_date()} · {escape(PACKAGE)} · commit {escape(_commit())}</div>")
+    computed = build_date()
+    running = css_string(f"Design review of {state.path.name}{' (changed)' if changed else ''} · computed {computed} "
+                         f"· {PACKAGE}")
+    head = f"@page {{ @top-left {{ content: {running}; font: 8pt sans-serif; color: #333; }} }}"  # on every page
+    return (f"<style>@media print {{ {head} }}</style>"
+            f'<div class="dr-print-head">Design review of {escape(state.path.name)}{digest}{changed} · '
+            f"computed {computed} · {escape(PACKAGE)} · commit {escape(_commit())}</div>")
+
+
+def css_string(text: str) -> str:
+    """A text as a CSS string, in a style element of an HTML page: its quotes and backslashes escaped, a line
+    break a space, and ``<`` escaped, so no text (a case file's name) can end the style element.
+
+    Parameters
+    ----------
+    text : str
+        The text.
+
+    Returns
+    -------
+    str
+        The CSS string, quoted.
+
+    Examples
+    --------
+    >>> print(css_string('a "b" </style>'))
+    "a \\"b\\" \\3c /style>"
+    """
+    quoted = text.replace("\\", "\\\\").replace('"', '\\"').replace("<", "\\3c ")
+    return '"' + re.sub(r"[\x00-\x1f\x7f]", " ", quoted) + '"'
 
 
 def results_text(state: ReviewState, screen: Screen, link: str | None, generation: int, variants: Variants) -> str:

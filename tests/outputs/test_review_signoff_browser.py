@@ -331,6 +331,7 @@ def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
                                  text=True).stdout
         assert f"Design review of axis.toml (sha256 {digest})" in printed and f"calc {__version__}" in printed
         assert "commit" in printed and "Governing checks" in printed
+        _printed_pages_are_a_record(tmp_path / "printed.pdf", __version__)
         assert "Design review of axis.toml" not in page.inner_text(RESULTS)  # on the screen, not shown
         page.locator(".design-review button", has_text="Keep as variant").click()
         page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('kept variant 1')")
@@ -342,6 +343,30 @@ def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
         assert "T_2max" not in text and "2max" in text  # typeset: T with the subscript 2max
         subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "1", str(pdf), str(SHOTS / "variants-pdf")],
                        check=True)
+
+
+def _printed_pages_are_a_record(pdf, version: str) -> None:
+    """Finding 9: the printed page had a blank first page (JupyterLab keeps an output on one page, and the review is
+    taller than one) and text cut at the right (printed as wide as the screen). Each page carries the case, the date
+    and the version at its head; the first starts with the title block and the verdict; no word runs past the
+    paper's right margin (A4, 595.9 pt wide, 12 mm = 34 pt margins: 562 pt)."""
+    import re
+    import subprocess
+
+    pages = int(re.search(r"Pages:\s+(\d+)", subprocess.run(["pdfinfo", str(pdf)], capture_output=True,
+                                                             text=True).stdout).group(1))
+    assert 2 <= pages <= 12, pages
+    for k in range(1, pages + 1):
+        text = subprocess.run(["pdftotext", "-f", str(k), "-l", str(k), str(pdf), "-"], capture_output=True,
+                              text=True).stdout
+        assert text.startswith("Design review of axis.toml · computed ") and f"calc {version}" in text, k
+        assert f"page {k} of {pages}" in text, k
+    first = subprocess.run(["pdftotext", "-f", "1", "-l", "1", str(pdf), "-"], capture_output=True, text=True).stdout
+    assert "Design review of axis.toml (sha256" in first and "PASS" in first and "Governing checks" in first
+    boxes = subprocess.run(["pdftotext", "-bbox", str(pdf), "-"], capture_output=True, text=True).stdout
+    right = max(float(x) for x in re.findall(r'xMax="([\d.]+)"', boxes))
+    assert right <= 595.9 - 34 + 1, right
+    subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "2", str(pdf), str(SHOTS / "printed")], check=True)
 
 
 def test_an_open_page_offers_the_case_files_saved_since(tmp_path):
