@@ -265,9 +265,13 @@ def input_label(key: Key, name: str) -> str:
     Returns
     -------
     str
-        ``"motor peak torque T_1B"``; the name alone for a key without a symbol.
+        ``"motor peak torque T_1B"``; the name alone for a key without a symbol. A symbol of two subscripts is
+        written as the results write it, ``P_R,peak`` (so that it is typeset, not shown as a key).
     """
-    return f"{name} {symbol_text(key.symbol)}" if key.symbol else name
+    if not key.symbol:
+        return name
+    base, sep, sub = symbol_text(key.symbol).partition("_")
+    return f"{name} {base}{sep}{sub.replace('_', ',')}"
 
 
 def _signed(v: float, floor: float = 10.0) -> tuple[float, float]:
