@@ -273,6 +273,10 @@ def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(tmp_
         assert "coupling AKN-18 by 2 fer ≤ f1 at 75 %" in decides
         assert "gearbox NPT035-10 by dmotor ≤ dhub,max at 50 %" in decides
         assert "T2max 100.9 N·m (with η 0.97)" in page.inner_text(RESULTS)
+        # Finding 6: one λ, or a word where another is shown: the gearbox candidates' λ (NPT035-10: (0.93 + 15) / 1.74
+        # = 9.16) counts its J_1 alone, the motor's check (0.93 + 0.5 + 15) / 1.74 = 9.443 the coupling AKN-18 too.
+        shown = page.inner_text(RESULTS)
+        assert "λ, J1 alone" in shown and "the motor's check, the ratio search and the dynamics count its J too" in shown
         cells = page.locator(f"{RESULTS} table").first.locator("tr td:last-child")
         assert cells.count() >= 10
         for k in range(cells.count()):
