@@ -651,8 +651,7 @@ class InputRows:
         else:
             control = w.FloatSlider(value=value, min=spec.low, max=spec.high, step=spec.step, readout=False,
                                     continuous_update=False, tooltip=spec.text, layout=_grows(w))
-            tooltip = f"{spec.text}: {spec.low:g} to {spec.high:g}"
-            field = w.Text(value=state.texts[spec.key], continuous_update=False, tooltip=tooltip,
+            field = w.Text(value=state.texts[spec.key], continuous_update=False, tooltip=spec.text,
                            layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
             # The field is read by the state, not by the browser's number input, which clamps to
             # the range and drops a decimal comma without a word.
@@ -688,6 +687,10 @@ class InputRows:
                 if field is not None:
                     if field.value.strip() != state.texts[key]:
                         field.value = state.texts[key]
+                    shown = state.shown_spec(key)  # its range in the unit the field shows
+                    tooltip = f"{shown.text}: {shown.low:.6g} to {shown.high:.6g}"
+                    if field.tooltip != tooltip:
+                        field.tooltip = tooltip
                     (field.add_class if key in state.refused else field.remove_class)("dr-refused")
                 self._show_message(state, key)
         finally:

@@ -699,6 +699,7 @@ def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si
     # The fields switch too: 60 lb = 60 · 0.45359237 kg = 27.2155 kg, its label in kg; 30 kg typed there is
     # 30 / 0.45359237 = 66.1387 lb, which the file keeps in lb.
     assert panel.fields["mechanism.mass"].value == "27.2155" and "[kg]" in panel.rows.labels["mechanism.mass"].value
+    assert " [kg]: " in panel.fields["mechanism.mass"].tooltip  # its range too
     panel.fields["mechanism.mass"].value = "30"
     panel.settled()
     saved = panel.state.case_text()
