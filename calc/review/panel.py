@@ -155,6 +155,7 @@ class DesignReview:
             setattr(self.state, name, value)
             if name == "units":  # the fields in that system too
                 self.rows.show(self.state)
+                self.moves.show_size(self.state)
             if self.state.case is not None:  # else no case file was read: nothing to draw
                 self.drawing.changed()
 
@@ -784,11 +785,27 @@ class MovesEditor:
         self.entry.value = len(kinds) if kinds else None
         self.remove_button.disabled = len(kinds) < 2
         if kinds:
-            mechanism, unit = state.case.motion.mechanism, state.length_unit()
-            size = mechanism.lead if mechanism.type == "ball-screw" else mechanism.diameter
-            self.mechanism_type.value = mechanism.type
-            self.mechanism_size.value = "" if size is None else f"{size.m_as(unit):.6g}"
-            self.mechanism_size.placeholder = f"lead / diameter [{unit}]"
+            self.mechanism_type.value = state.case.motion.mechanism.type
+            self.show_size(state)
+
+    def show_size(self, state: ReviewState) -> None:
+        """The mechanism's lead or diameter in the unit system the fields show.
+
+        Parameters
+        ----------
+        state : calc.review.state.ReviewState
+            The review.
+
+        Returns
+        -------
+        None
+        """
+        if state.case is None or state.case.motion is None:
+            return
+        mechanism, unit = state.case.motion.mechanism, state.length_unit()
+        size = mechanism.lead if mechanism.type == "ball-screw" else mechanism.diameter
+        self.mechanism_size.value = "" if size is None else f"{size.m_as(unit):.6g}"
+        self.mechanism_size.placeholder = f"lead / diameter [{unit}]"
 
 
 def _grows(w):

@@ -727,21 +727,21 @@ class ReviewState(ShownUnits):
                     raise CalcError(f"a {type_} needs its {what}: expected a number above zero "
                                     f"(in {self.length_unit()}), found {as_found(size_text.strip())}")
                 size = Q_(float(t), self.length_unit())
-            edit = mechanism_edit(self.changed_case(), type_, size, self.length_unit() == "in")
+            edit = mechanism_edit(self.changed_case(), type_, size, self.file_units == "inch-pound")
         except CalcError as exc:
             raise CalcError(self.in_words(str(exc))) from None
         self._edit_moves(edit)
         return edit[3]
 
     def length_unit(self) -> str:
-        """The unit of a mechanism's lead or diameter.
+        """The unit of a mechanism's lead or diameter as its field shows it (the file keeps its own).
 
         Returns
         -------
         str
-            ``"in"`` where the case writes inch-pound, else ``"mm"``.
+            ``"in"`` where the inputs are shown in inch-pound, else ``"mm"``.
         """
-        return "in" if self.file_units == "inch-pound" else "mm"
+        return "in" if self.units == "inch-pound" else "mm"
 
     def follow_moves(self, moves: list) -> bool:
         """The edits of the moves a link carries: the case file's moves with those edits, at the

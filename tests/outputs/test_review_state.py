@@ -391,3 +391,11 @@ def test_an_inch_pound_file_shown_in_si_keeps_its_own_units():
     assert inch.type_text("mechanism.mass", "30")
     assert inch.values["mechanism.mass"] == pytest.approx(30 / 0.45359237)
     assert inch.changes()["mechanism.mass"][1] == "lb"
+
+
+def test_a_lead_typed_in_the_unit_shown_is_written_in_the_files(example):
+    # The example shown in inch-pound: a ball screw of 0.2 in typed is a lead of 0.2 · 25.4 = 5.08 mm, written in mm.
+    example.units = "inch-pound"
+    assert example.length_unit() == "in"
+    assert example.change_mechanism("ball-screw", "0.2").startswith("mechanism rotary -> ball-screw of 0.2 in")
+    assert 'lead = "5.08 mm"' in example.case_text()
