@@ -192,7 +192,7 @@ class CheckedAt:
         return {"ratio": self.ratio, "part": self.part, "same": self.same, "said": self.said}
 
 
-def checked_at(s: RatioSearch, part: str, named: bool) -> CheckedAt | None:
+def checked_at(s: RatioSearch, part: str, named: bool, fails: tuple = ()) -> CheckedAt | None:
     """The case's own gearbox and ratio against the search's pick, in words.
 
     Parameters
@@ -203,6 +203,9 @@ def checked_at(s: RatioSearch, part: str, named: bool) -> CheckedAt | None:
         The gearbox the case is checked with.
     named : bool
         Whether the case names it (``gearbox.part``) rather than its ratio's ranking choosing it.
+    fails : tuple of str, optional
+        Why the case's evaluation fails its gearbox or motor (empty where both pass): said where the search
+        picks the case's ratio all the same.
 
     Returns
     -------
@@ -216,7 +219,8 @@ def checked_at(s: RatioSearch, part: str, named: bool) -> CheckedAt | None:
     ratio, how = float(s.ratios[k]), "gearbox.part" if named else "chosen at gearbox.ratio"
     head = f"The case is checked at its ratio {ratio:g} with {part} ({how})"
     if s.pick == k:
-        return CheckedAt(ratio, part, True, f"{head}: the search picks the same.")
+        failing = "" if not fails else f", though the evaluation fails it there ({fails[0]})"
+        return CheckedAt(ratio, part, True, f"{head}: the search picks the same{failing}.")
     if s.pick is None:
         return CheckedAt(ratio, part, False, f"{head}; the search picks no ratio.")
     if not s.feasible[k]:
@@ -385,7 +389,7 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
         raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the "
                         "ratios to try), found none")
     notes = []
-    evaluated = results_of(case, ("axis", "gearbox", "coupling")) if evaluated is None else evaluated
+    evaluated = results_of(case, ("axis", "gearbox", "coupling", "motor")) if evaluated is None else evaluated
     axis, gearbox = evaluated["axis"], evaluated.get("gearbox")
     if axis.chosen is not None:  # a motor from the catalog: the one the case chooses at its ratio
         notes.append(f"the motor is {axis.chosen}, the motor catalog's choice at the case's ratio "
@@ -409,5 +413,18 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
         hubs=hubs, inertia_limit=case.motor_max_inertia_ratio[0], kept=kept, **selection_inputs(case),
     )
     notes += s.notes
-    checked = None if kept is None else checked_at(s, kept, case.gearbox_part is not None)
+    checked = None if kept is None else checked_at(s, kept, case.gearbox_part is not None, _fails(evaluated))
     return RatioResult(case, s, notes, optimal(case, s, coupling), checked)
+
+
+def _fails(evaluated: dict) -> tuple:
+    """Why the evaluation fails the case's gearbox or motor, one sentence each (a heading ending in a colon
+    with its first line)."""
+    out = []
+    for name in ("gearbox", "motor"):
+        result = evaluated.get(name)
+        verdict = None if result is None else result.verdict()
+        if verdict is not None and verdict.passes is False and verdict.reasons:
+            r = verdict.reasons
+            out.append(f"{r[0]} {r[1]}" if r[0].endswith(":") and len(r) > 1 else r[0])
+    return tuple(out)

@@ -216,3 +216,17 @@ def test_one_gearbox_at_the_cases_ratio_and_a_pick_that_differs_is_said(write_ca
         assert r.checked.said.endswith("the search picks the same.")
     else:
         assert f"the search picks ratio {s.ratios[s.pick]:g} ({s.parts[s.pick]}), since " in r.checked.said
+
+
+def test_a_pick_at_the_cases_ratio_that_the_evaluation_fails_is_said(write_case):
+    # SGMUH-10DA named (1.74 kg·cm²) under a table of 2500 kg·cm²: at ratio 10 with NPT035-10 (J_1 0.93) and the
+    # coupling AKN-18 (0.5), λ = (0.93 + 0.5 + 2500 / 10²) / 1.74 = 15.19 > 10, and lower ratios give more. No ratio
+    # keeps λ within the limit, so the search picks the lowest λ, the case's own ratio, which the motor's check
+    # fails: the sentence says so instead of a bare "the same".
+    case = _derived(write_case, lambda t: t.replace('catalog = "motors"\n', 'catalog = "motors"\npart = "SGMUH-10DA"\n')
+                    .replace('inertia = "1500 kg*cm**2"', 'inertia = "2500 kg*cm**2"'))
+    r = search(case)
+    assert r.checked.same and r.search.inertia_ratio[r.search.pick] == pytest.approx((0.93 + 0.5 + 25) / 1.74)
+    assert r.checked.said.startswith("The case is checked at its ratio 10 with NPT035-10 (chosen at gearbox.ratio): "
+                                     "the search picks the same, though the evaluation fails it there (")
+    assert "SGMUH-10DA: λ <= λ_max: required 15.19 > rated 10" in r.checked.said
