@@ -698,7 +698,18 @@ def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si
     t_si = float(re.search(r"<sub>2max</sub> ([\d.]+) N·m", si).group(1))
     t_in = float(re.search(r"<sub>2max</sub> ([\d.]+) lbf·in", inch).group(1))
     assert t_in * 0.112985 == pytest.approx(t_si, rel=2e-3)
+    # The fields switch too: 60 lb = 60 · 0.45359237 kg = 27.2155 kg, its label in kg; 30 kg typed there is
+    # 30 / 0.45359237 = 66.1387 lb, which the file keeps in lb.
+    assert panel.fields["mechanism.mass"].value == "27.2155" and "[kg]" in panel.rows.labels["mechanism.mass"].value
+    assert " [kg]: " in panel.fields["mechanism.mass"].tooltip  # its range too
+    panel.fields["mechanism.mass"].value = "30"
+    panel.settled()
+    saved = panel.state.case_text()
+    assert 'mass = "66.13867' in saved and saved.split('mass = "66.1', 1)[1].split("\n")[0].endswith(' lb"')
     # A changed inch value is saved as the file writes it.
+    panel.units.value = "inch-pound"
+    panel.settled()
+    assert panel.fields["mechanism.mass"].value == "66.1387"
     panel.fields["mechanism.mass"].value = "70"
     panel.settled()
     assert 'mass = "70 lb"' in panel.state.case_text()
