@@ -1060,7 +1060,7 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
     median = [visit.median for _, visit in runs]
     worst = [max(visit.times) for _, visit in runs]
     slowest = max((c for _, visit in runs for c in visit.changes), key=lambda c: c[1])[0]
-    note = f"{len(runs[0][1].times)} changes to new values in headless Chromium"
+    note = f"{len(runs[0][1].times)} changes to new values in headless Chromium, each ending in results"
     med = statistics.median
     return [
         line("review_start", med(start), "s", ("<=", 2.5),

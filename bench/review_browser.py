@@ -35,6 +35,7 @@ CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-backg
                  "--disable-component-update", "--disable-sync", "--no-first-run"]
 SCREEN = {"width": 1366, "height": 768}
 RESULTS = ".design-review .dr[data-generation]"
+FIGURES = ".design-review .dr-figures svg"  # the load cycle's and the stiffness chain's, hidden where no results
 
 
 def _free_port() -> int:
@@ -118,22 +119,38 @@ class Visit:
 def new_values(case: Path, count: int) -> list[tuple[str, str]]:
     """``count`` changes ``(key path, value as typed)`` to the inputs the page offers for ``case``
     (:func:`calc.review.input_specs`), in turn, each to a value not seen before: a few steps up
-    from the file's value, inside the input's range (the ratio: the next of the catalog's)."""
+    from the file's value, inside the input's range (the ratio: the next of the catalog's). Each
+    leaves a design that can be evaluated: the page offers the gearbox parts at the file's ratio,
+    so a part is forced first, while the ratio is the file's, and given back to the selection
+    just before the ratio changes (a forced part of another ratio is an error, not a result)."""
     from calc.sections.case import read_case
     from calc.review import input_specs
-    from calc.review.inputs import catalog_ratios, forced_spec
+    from calc.review.inputs import SELECTION, catalog_ratios, forced_spec
 
     c = read_case(case)
     specs = input_specs(c, catalog_ratios(c) if c.ratio is not None else [])
-    specs += [forced_spec(c, "gearbox.part")] if c.ratio is not None else []
-    out = []
-    for k in range(count):
+    if c.ratio is not None:  # the forced part first, the ratio last
+        specs = [forced_spec(c, "gearbox.part"), *(s for s in specs if s.key != "gearbox.ratio"), specs[0]]
+    out, forced, ratio_changed, k = [], None, False, 0
+    while len(out) < count:
         spec, turn = specs[k % len(specs)], k // len(specs) + 1
+        k += 1
+        if spec.key == "gearbox.part":
+            if ratio_changed:
+                continue  # the page offers none of the parts at the new ratio
+            others = [o for o in spec.options if o not in (spec.value, SELECTION, forced)]
+            forced = others[(turn - 1) % len(others)]
+            out.append((spec.key, forced))
+            continue
         if spec.options:
+            if forced is not None:  # the forced part given back before the ratio changes
+                out.append(("gearbox.part", SELECTION))
+                forced = None
             others = [o for o in spec.options if o != spec.value]
             if isinstance(spec.value, float):
                 others.sort(key=lambda o: abs(o - spec.value))  # the nearest ratios first
             choice = others[(turn - 1) % len(others)]
+            ratio_changed = True
             out.append((spec.key, choice if isinstance(choice, str) else f"{choice:g}"))
             continue
         # 2 % further per turn (on the input's step), so each value is new and the design stays possible.
@@ -143,7 +160,7 @@ def new_values(case: Path, count: int) -> list[tuple[str, str]]:
         up = spec.follows is None and spec.value + d <= spec.high
         v = round(spec.value + d if up else max(spec.value - d, spec.low), 12)
         out.append((spec.key, f"{v:g}"))
-    return out
+    return out[:count]
 
 
 def row(page, key: str):
@@ -238,6 +255,19 @@ def _generation(page) -> int:
     return int(page.get_attribute(RESULTS, "data-generation"))
 
 
+#: What the page shows where a change gives no results: the case cannot be evaluated, or a value refused.
+NO_RESULTS = ("cannot be evaluated", "Not applied")
+
+
+def _check_results(page, what: str, text: str) -> None:
+    """Stop with a sentence where the change ``what`` ended in an error on the page (text ``text``) or
+    drew no figure: such a change is not "text and figures follow" and must not be timed as one."""
+    said = next((t for t in NO_RESULTS if t in text), None)
+    if said is not None or not page.locator(f"{FIGURES}:visible").count():
+        reason = next((x for x in text.splitlines() if said and said in x), "no figure")[:200]
+        raise RuntimeError(f"review: the change {what} ended in no results on the page ({reason}); choose a valid value")
+
+
 def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1, settle: float = 3.0,
                       burst: tuple[str, list[str]] | None = None) -> Visit:
     """Open the page, wait ``settle`` seconds, then make each change ``(key path, value)`` in turn (a
@@ -277,6 +307,7 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
                     wait_for_results(page, generation)
                     visit.changes.append((f"{key} = {value}", time.perf_counter() - start))
                     visit.seen.append((f"{key} = {value}", page.inner_text(RESULTS)))
+                    _check_results(page, f"{key} = {value}", visit.seen[-1][1])
                     failed = visit.seen[-1][1].startswith("FAIL")
                     if failed and not any(p.name == "review-fail.png" for p in visit.shots):
                         visit.shots.append(shots / "review-fail.png")
