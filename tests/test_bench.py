@@ -15,7 +15,7 @@ LINES = (
     "motion_1M", "motion_numpy_1M", "motion_loop_1M", "motion_vs_numpy", "motion_loop_vs_motion",
     "combinations", "combinations_numpy", "combinations_loop", "combinations_numpy_vs_ours",
     "combinations_loop_vs_ours", "machine_50_axes", "cases_50_one_by_one",
-    "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report", "report_20_cases",
+    "import_numpy", "import_calc", "evaluate_cli", "notebooks", "report", "report_rebuilt", "report_20_cases",
     "review_start", "review_page_ready", "review_change_median", "review_change_max",
     "review_page_transfer", "review_kernel_memory", "review_5_reviewers_median", "review_5_reviewers_memory",
 )

@@ -14,6 +14,7 @@ case (:mod:`calc.report.summary`), the rows :func:`summary_rows` gives the desig
 from __future__ import annotations
 
 import contextlib
+import functools
 import shutil
 import sys
 from pathlib import Path
@@ -345,9 +346,32 @@ def exporter(kept: Path | None = None):
     return ReportPDF(config=c)
 
 
+@functools.cache
+def _shared_text_to_path():
+    """matplotlib's text-to-path class with one mathtext parser for every renderer of this process.
+
+    matplotlib gives each renderer its own parser, and a PDF is saved through three renderers
+    (two for the constrained layout, one drawing), so each ``$...$`` label was parsed three times:
+    a quarter of the figures' time. A parse depends only on the text, dpi and font, so sharing
+    it changes no byte of the PDF (a test compares them).
+    """
+    from matplotlib.mathtext import MathTextParser
+    from matplotlib.textpath import TextToPath
+
+    parser = MathTextParser("path")
+
+    class SharedTextToPath(TextToPath):
+        def __init__(self):
+            super().__init__()
+            self.mathtext_parser = parser
+
+    return SharedTextToPath
+
+
 def figure_pdf(figure) -> str:
     """A matplotlib figure as vector PDF (the figures lay themselves out, so no tight bounding box:
-    that would draw each one twice).
+    that would draw each one twice), its mathtext labels parsed once per process
+    (:func:`_shared_text_to_path`).
 
     Parameters
     ----------
@@ -362,8 +386,14 @@ def figure_pdf(figure) -> str:
     import base64
     import io
 
+    import matplotlib.text
+
     buffer = io.BytesIO()
-    figure.savefig(buffer, format="pdf")
+    own, matplotlib.text.TextToPath = matplotlib.text.TextToPath, _shared_text_to_path()
+    try:
+        figure.savefig(buffer, format="pdf")
+    finally:
+        matplotlib.text.TextToPath = own
     return base64.b64encode(buffer.getvalue()).decode("ascii")
 
 

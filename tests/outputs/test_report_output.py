@@ -354,3 +354,35 @@ def test_kept_pass_files_unused_for_a_month_are_removed(tmp_path):
     os.utime(tmp_path / "report-x.fmt", (month_ago, month_ago))  # a compiled preamble is not a pass file
     publish._forget_old_passes(tmp_path)
     assert not old.exists() and recent.exists() and (tmp_path / "report-x.fmt").exists()
+
+
+def test_a_figures_labels_are_parsed_once_and_its_pdf_is_matplotlibs(reports):
+    """The report's figures share one mathtext parser (a label was parsed by each of the three
+    renderers that save a PDF): the same bytes as matplotlib's own savefig, with fewer parses."""
+    import base64
+    import io
+
+    from matplotlib.mathtext import MathTextParser
+    from matplotlib.text import Text
+
+    from calc.report import RENDERERS
+
+    def undated(pdf: bytes) -> bytes:
+        return re.sub(rb"/CreationDate \(.*?\)", b"", pdf)
+
+    def misses(save) -> int:
+        before = MathTextParser._parse_cached.cache_info().misses
+        save()
+        return MathTextParser._parse_cached.cache_info().misses - before
+
+    figures = [figure for r in RENDERERS if r.NAME == "motor" for figure, _ in r.figures(reports["example"])]
+    assert figures
+    for figure in figures:
+        own = io.BytesIO()
+        own_parses = misses(lambda: figure.savefig(own, format="pdf"))
+        shared = []
+        shared_parses = misses(lambda: shared.append(publish.figure_pdf(figure)))
+        assert undated(base64.b64decode(shared[0])) == undated(own.getvalue())
+        labels = len({(t.get_text(), t.get_fontsize()) for t in figure.findobj(Text) if "$" in t.get_text()})
+        assert labels and own_parses >= 2 * labels  # each renderer its own parse
+        assert shared_parses <= labels  # once, or not at all where parsed for an earlier figure
