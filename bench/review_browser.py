@@ -265,7 +265,8 @@ def _check_results(page, what: str, text: str) -> None:
     said = next((t for t in NO_RESULTS if t in text), None)
     if said is not None or not page.locator(f"{FIGURES}:visible").count():
         reason = next((x for x in text.splitlines() if said and said in x), "no figure")[:200]
-        raise RuntimeError(f"review: the change {what} ended in no results on the page ({reason}); choose a valid value")
+        raise RuntimeError(f"review: the change {what} ended in no results on the page ({reason}); "
+                           "choose a valid value")
 
 
 def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1, settle: float = 3.0,
