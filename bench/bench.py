@@ -1069,7 +1069,7 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
     for _ in range(1 if quick else PAGE_RUNS):
         with served() as server:
             runs.append((server.started, review_in_browser(server.url, workdir / "screenshots", changes,
-                                                           settle=1.0 if quick else 3.0)))
+                                                           settle=1.0 if quick else 3.0, results_each=True)))
             if len(runs) == 1:
                 first = first_load(server.url)  # a second reviewer, nothing cached
     memory = first.kernel_mb

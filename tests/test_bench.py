@@ -31,3 +31,25 @@ def test_benchmark_runs_at_a_tiny_size_and_prints_every_line():
     for text in done.stdout.splitlines():
         name, rest = text.split(": ", 1)
         assert rest.split()[0] == "n/a" or float(rest.split()[0]) >= 0, text
+
+
+def test_every_timed_page_change_ends_in_results():
+    # The bench times each change until "text and figures follow": each must leave a design that is
+    # evaluated, never one that cannot be (a forced gearbox part of another ratio than the one chosen).
+    from bench.review_browser import new_values
+    from calc.review.state import ReviewState
+
+    example = ROOT / "cases" / "indexing-table.toml"
+    changes = new_values(example, 20)
+    state = ReviewState(example)
+    state.load()
+    assert len(changes) == 20 and len(set(changes)) == 20
+    assert {"gearbox.part", "gearbox.ratio"} <= {key for key, _ in changes}
+    for key, value in changes:
+        if key in ("gearbox.part", "gearbox.ratio"):  # a choice
+            assert state.set_value(key, float(value) if key == "gearbox.ratio" else value), (key, value)
+        else:
+            assert state.type_text(key, value), (key, value)
+        shown = state.evaluate()
+        assert shown.error is None and shown.report is not None and not shown.left_out, (key, value, shown.left_out)
+        assert shown.report.evaluated is not None and not state.refused, (key, value)
