@@ -50,7 +50,7 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   does for any user after the first report). ``report_rebuilt``, no target: the same PDF built
   again from its kept pass, one xelatex pass where its labels have not moved.
 * ``notebooks``: the nbval run of every notebook, ``pytest notebooks``.
-* ``report_20_cases``: ``python -m calc report`` of 20 cases (the project's two in turn) with ``--summary``,
+* ``report_20_cases``: ``python -m calc report`` of 20 cases (the project's shipped cases in turn) with ``--summary``,
   as many at a time as the machine has cores.
 * ``review_page_ready``, ``review_change_median``, ``review_change_max``: the served design review
   (``make review``) in headless Chromium (bench/review_browser.py): from asking for the page to
@@ -1021,7 +1021,7 @@ def measure_report(size: Size, quick: bool, workdir: Path) -> list[str]:
                     note=f"{about}, no earlier pass of it kept (two xelatex passes); {spread(times['cold'])}"),
                line("report_rebuilt", statistics.median(times["rebuilt"]), "s",
                     note=f"the same PDF built again from its last pass (one xelatex pass); {spread(times['rebuilt'])}")]
-    # 20 cases, the project's two in turn, laid out as the project is (a case names ../data/...).
+    # 20 cases, the project's shipped cases in turn, laid out as the project is (a case names ../data/...).
     (workdir / "cases20").mkdir()
     shutil.copytree(ROOT / "data", workdir / "data", dirs_exist_ok=True)
     shipped = sorted((ROOT / "cases").glob("*.toml"))
