@@ -63,8 +63,10 @@ browser:
 	  exit 1; \
 	fi
 
+# On every core (pytest-xdist): the tests that share a costly fixture, and each notebook's cells, stay on one
+# worker (--dist loadgroup, the groups set in tests/conftest.py); `pytest` alone runs in one process.
 test: setup tex browser
-	$(PY) -m pytest
+	$(PY) -m pytest -n auto --dist loadgroup
 
 report: setup tex
 	$(PY) -m calc report $(EXAMPLE) -o reports/indexing-table.pdf

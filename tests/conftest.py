@@ -164,6 +164,8 @@ class ErrorRecord:
     deselected: int = 0
     whole_folder: bool = False
     reason: str = ""
+    merged: int = 0  # on the controller: how many workers' records are merged in
+    session_checks: set[str] = set()  # under xdist: the checks of the whole session selected, made by the controller
     item = None  # the test under tests/ being run, or None
 
 
@@ -254,6 +256,128 @@ def pytest_configure(config):
     CalcError.__init__ = __init__
 
 
+# --- The tests on several processes (pytest-xdist, ``make test``) -----------------------------------
+#
+# Each worker records its own error sites and tool skips; the controller merges what the workers send
+# at their end (``workeroutput``), prints the skips and makes the session checks of
+# tests/test_error_sites.py over the whole session's record (:func:`pytest_runtestloop`). A worker
+# passes those checks by unrun (:func:`pytest_runtest_protocol`), where they would see only its part.
+
+#: The key of a worker's record in what it sends the controller.
+WORKER_RECORD = "calc_session_record"
+
+
+def is_worker(config) -> bool:
+    """Whether this process runs tests for a controller (an xdist worker)."""
+    return hasattr(config, "workerinput")
+
+
+def is_controller(config) -> bool:
+    """Whether this process hands the tests to workers (``-n`` above 0) and runs none itself."""
+    return config.pluginmanager.has_plugin("dsession")
+
+
+def worker_record() -> dict:
+    """What a worker sends the controller at its end: the error sites built, the longest message of
+    each, whether it ran the whole tests/ folder (and if not why), and its skips by tool."""
+    return {"built": sorted(ErrorRecord.built), "longest": sorted([*site, m] for site, m in ErrorRecord.longest.items()),
+            "whole_folder": ErrorRecord.whole_folder, "reason": ErrorRecord.reason, "tool_skips": ToolSkips.by_tool,
+            "session_checks": sorted(ErrorRecord.session_checks)}
+
+
+def merge_record(record: dict) -> None:
+    """Add a worker's :func:`worker_record` to this process's :class:`ErrorRecord` and :class:`ToolSkips`.
+    Every worker collects the same tests, so the first one's selection stands for all."""
+    if not ErrorRecord.merged:
+        ErrorRecord.whole_folder, ErrorRecord.reason = record["whole_folder"], record["reason"]
+    ErrorRecord.merged += 1
+    ErrorRecord.session_checks |= set(record["session_checks"])
+    ErrorRecord.built |= {(file, line) for file, line in record["built"]}
+    for file, line, message in record["longest"]:
+        if len(message) > len(ErrorRecord.longest.get((file, line), "")):
+            ErrorRecord.longest[(file, line)] = message
+    for tool, count in record["tool_skips"].items():
+        ToolSkips.by_tool[tool] = ToolSkips.by_tool.get(tool, 0) + count
+
+
+def is_session_check(item) -> bool:
+    """Whether the item is a check of tests/test_error_sites.py over the whole session's record."""
+    from .test_error_sites import SESSION_CHECKS
+
+    return item.path == FINAL and item.originalname in SESSION_CHECKS
+
+
+def pytest_itemcollected(item):
+    # On a worker: the tests that share a costly fixture of tests/ (a PDF build, a served page) run on one
+    # worker, built once; so do a notebook's cells, which run in order in one kernel (nbval).
+    if not is_worker(item.config):
+        return
+    group = None
+    if item.path.suffix == ".ipynb":
+        group = item.path.relative_to(ROOT).as_posix()
+    else:
+        for name in getattr(item, "fixturenames", ()):
+            defs = item._fixtureinfo.name2fixturedefs.get(name, ()) if hasattr(item, "_fixtureinfo") else ()
+            ours = [d for d in defs if d.baseid.startswith("tests") and d.scope != "function"]
+            if ours and ours[-1].scope == "session":
+                group = name
+                break
+            if ours:
+                group = group or item.path.relative_to(ROOT).as_posix()
+    if group:
+        item.add_marker(pytest.mark.xdist_group(group))
+
+
+def pytest_sessionfinish(session):
+    if is_worker(session.config):
+        session.config.workeroutput[WORKER_RECORD] = worker_record()
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error):
+    record = getattr(node, "workeroutput", {}).get(WORKER_RECORD)
+    if record is not None:
+        merge_record(record)
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtestloop(session):
+    finished = yield
+    if is_controller(session.config):
+        from .test_error_sites import SESSION_CHECKS
+
+        for name, check in SESSION_CHECKS.items():
+            if name in ErrorRecord.session_checks:
+                report_session_check(session, name, check)
+    return finished
+
+
+def report_session_check(session, name: str, check) -> None:
+    """Make one of :data:`tests.test_error_sites.SESSION_CHECKS` over the merged record and report it as
+    that test's outcome (passed, failed with the check's message, or skipped saying why)."""
+    from _pytest.reports import TestReport
+
+    from . import test_error_sites
+
+    path = FINAL.relative_to(ROOT).as_posix()
+    nodeid = f"{path}::{name}"
+    location = (path, getattr(test_error_sites, name).__code__.co_firstlineno - 1, name)
+    if not ErrorRecord.whole_folder:
+        outcome, longrepr = "skipped", (str(FINAL), location[1] + 1, f"Skipped: {whole_folder_needed()}")
+    else:
+        failure = check(ErrorRecord.built, ErrorRecord.longest)
+        outcome, longrepr = ("failed", failure) if failure else ("passed", None)
+    hook = session.config.hook
+    hook.pytest_runtest_logstart(nodeid=nodeid, location=location)
+    hook.pytest_runtest_logreport(report=TestReport(nodeid, location, {name: 1}, outcome, longrepr, "call"))
+    hook.pytest_runtest_logfinish(nodeid=nodeid, location=location)
+
+
+def whole_folder_needed() -> str:
+    """Why a session check is not made: it needs the whole tests/ folder."""
+    return f"needs the whole tests/ folder: {ErrorRecord.reason}"
+
+
 def pytest_unconfigure(config):
     if _OWN_CACHE in config.stash:
         shutil.rmtree(config.stash[_OWN_CACHE], ignore_errors=True)
@@ -275,7 +399,10 @@ def pytest_deselected(items):
 
 @pytest.hookimpl(trylast=True)
 def pytest_collection_modifyitems(session, config, items):
-    """Run the error-site check after every other test, whatever the collection order."""
+    """Run the error-site check after every other test, whatever the collection order; on a worker,
+    note which of the checks over the whole session are selected (the controller makes them)."""
+    if is_worker(config):
+        ErrorRecord.session_checks = {item.originalname for item in items if is_session_check(item)}
     final = [item for item in items if item.path == FINAL]
     items[:] = [item for item in items if item.path != FINAL] + final
 
@@ -294,10 +421,13 @@ def pytest_collection_finish(session):
     ErrorRecord.whole_folder = not ErrorRecord.reason
 
 
-@pytest.hookimpl(wrapper=True)
+@pytest.hookimpl(tryfirst=True)
 def pytest_runtest_protocol(item, nextitem):
+    if is_worker(item.config) and is_session_check(item):
+        return True  # made by the controller over the whole session's record (pytest_runtestloop)
     ErrorRecord.item = item if item.path.is_relative_to(TESTS) else None
-    try:
-        return (yield)
-    finally:
-        ErrorRecord.item = None
+    return None
+
+
+def pytest_runtest_logfinish(nodeid, location):
+    ErrorRecord.item = None
