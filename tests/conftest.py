@@ -280,7 +280,8 @@ def is_controller(config) -> bool:
 def worker_record() -> dict:
     """What a worker sends the controller at its end: the error sites built, the longest message of
     each, whether it ran the whole tests/ folder (and if not why), and its skips by tool."""
-    return {"built": sorted(ErrorRecord.built), "longest": sorted([*site, m] for site, m in ErrorRecord.longest.items()),
+    longest = sorted([*site, message] for site, message in ErrorRecord.longest.items())
+    return {"built": sorted(ErrorRecord.built), "longest": longest,
             "whole_folder": ErrorRecord.whole_folder, "reason": ErrorRecord.reason, "tool_skips": ToolSkips.by_tool,
             "session_checks": sorted(ErrorRecord.session_checks)}
 
