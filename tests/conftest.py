@@ -308,25 +308,19 @@ def is_session_check(item) -> bool:
     return item.path == FINAL and item.originalname in SESSION_CHECKS
 
 
-def pytest_itemcollected(item):
-    # On a worker: the tests that share a costly fixture of tests/ (a PDF build, a served page) run on one
-    # worker, built once; so do a notebook's cells, which run in order in one kernel (nbval).
-    if not is_worker(item.config):
-        return
-    group = None
+def worker_group(item) -> str | None:
+    """The xdist group of an item: a notebook's cells run in order in one kernel (nbval), and the tests
+    that share a costly fixture of tests/ (a PDF build, a module's evaluated cases) run on one worker,
+    where it is built once; ``None`` for a test that may run on any worker."""
     if item.path.suffix == ".ipynb":
-        group = item.path.relative_to(ROOT).as_posix()
-    else:
-        for name in getattr(item, "fixturenames", ()):
-            defs = item._fixtureinfo.name2fixturedefs.get(name, ()) if hasattr(item, "_fixtureinfo") else ()
-            ours = [d for d in defs if d.baseid.startswith("tests") and d.scope != "function"]
-            if ours and ours[-1].scope == "session":
-                group = name
-                break
-            if ours:
-                group = group or item.path.relative_to(ROOT).as_posix()
-    if group:
-        item.add_marker(pytest.mark.xdist_group(group))
+        return item.path.relative_to(ROOT).as_posix()
+    info = getattr(item, "_fixtureinfo", None)
+    shared = [d for defs in (info.name2fixturedefs.values() if info else ()) for d in defs
+              if d.scope != "function" and d.baseid.startswith("tests")]
+    session = sorted(d.argname for d in shared if d.scope == "session")
+    if session:
+        return session[0]
+    return item.path.relative_to(ROOT).as_posix() if shared else None
 
 
 def pytest_sessionfinish(session):
@@ -398,12 +392,18 @@ def pytest_deselected(items):
     ErrorRecord.deselected += len(items)
 
 
-@pytest.hookimpl(trylast=True)
+@pytest.hookimpl(wrapper=True)
 def pytest_collection_modifyitems(session, config, items):
-    """Run the error-site check after every other test, whatever the collection order; on a worker,
-    note which of the checks over the whole session are selected (the controller makes them)."""
+    """On a worker, first mark each item's :func:`worker_group` (before xdist reads the marks) and note
+    which of the checks over the whole session are selected (the controller makes them); last, run the
+    error-site check after every other test, whatever the collection order."""
     if is_worker(config):
+        for item in items:
+            group = worker_group(item)
+            if group:
+                item.add_marker(pytest.mark.xdist_group(group))
         ErrorRecord.session_checks = {item.originalname for item in items if is_session_check(item)}
+    yield
     final = [item for item in items if item.path == FINAL]
     items[:] = [item for item in items if item.path != FINAL] + final
 
