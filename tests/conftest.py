@@ -165,7 +165,7 @@ class ErrorRecord:
     whole_folder: bool = False
     reason: str = ""
     merged: int = 0  # on the controller: how many workers' records are merged in
-    session_checks: set[str] = set()  # under xdist: the checks of the whole session selected, made by the controller
+    session_checks: set[str] = set()  # on the controller: the checks of the whole session selected, which it makes
     item = None  # the test under tests/ being run, or None
 
 
@@ -282,8 +282,7 @@ def worker_record() -> dict:
     each, whether it ran the whole tests/ folder (and if not why), and its skips by tool."""
     longest = sorted([*site, message] for site, message in ErrorRecord.longest.items())
     return {"built": sorted(ErrorRecord.built), "longest": longest,
-            "whole_folder": ErrorRecord.whole_folder, "reason": ErrorRecord.reason, "tool_skips": ToolSkips.by_tool,
-            "session_checks": sorted(ErrorRecord.session_checks)}
+            "whole_folder": ErrorRecord.whole_folder, "reason": ErrorRecord.reason, "tool_skips": ToolSkips.by_tool}
 
 
 def merge_record(record: dict) -> None:
@@ -292,7 +291,6 @@ def merge_record(record: dict) -> None:
     if not ErrorRecord.merged:
         ErrorRecord.whole_folder, ErrorRecord.reason = record["whole_folder"], record["reason"]
     ErrorRecord.merged += 1
-    ErrorRecord.session_checks |= set(record["session_checks"])
     ErrorRecord.built |= {(file, line) for file, line in record["built"]}
     for file, line, message in record["longest"]:
         if len(message) > len(ErrorRecord.longest.get((file, line), "")):
@@ -329,6 +327,18 @@ def pytest_sessionfinish(session):
 
 
 @pytest.hookimpl(optionalhook=True)
+def pytest_xdist_node_collection_finished(node, ids):
+    # The controller's view of the selection: which checks of the whole session it is to make.
+    from .test_error_sites import SESSION_CHECKS
+
+    final = FINAL.relative_to(ROOT).as_posix()
+    for nodeid in ids:
+        path, _, name = nodeid.partition("::")
+        if path == final and name in SESSION_CHECKS:
+            ErrorRecord.session_checks.add(name)
+
+
+@pytest.hookimpl(optionalhook=True)
 def pytest_testnodedown(node, error):
     record = getattr(node, "workeroutput", {}).get(WORKER_RECORD)
     if record is not None:
@@ -357,7 +367,9 @@ def report_session_check(session, name: str, check) -> None:
     path = FINAL.relative_to(ROOT).as_posix()
     nodeid = f"{path}::{name}"
     location = (path, getattr(test_error_sites, name).__code__.co_firstlineno - 1, name)
-    if not ErrorRecord.whole_folder:
+    if not ErrorRecord.merged:
+        outcome, longrepr = "failed", "no worker sent its record of the error sites built (see the workers' errors)"
+    elif not ErrorRecord.whole_folder:
         outcome, longrepr = "skipped", (str(FINAL), location[1] + 1, f"Skipped: {whole_folder_needed()}")
     else:
         failure = check(ErrorRecord.built, ErrorRecord.longest)
@@ -394,15 +406,13 @@ def pytest_deselected(items):
 
 @pytest.hookimpl(wrapper=True)
 def pytest_collection_modifyitems(session, config, items):
-    """On a worker, first mark each item's :func:`worker_group` (before xdist reads the marks) and note
-    which of the checks over the whole session are selected (the controller makes them); last, run the
-    error-site check after every other test, whatever the collection order."""
+    """On a worker, first mark each item's :func:`worker_group` (before xdist reads the marks); last, run
+    the error-site check after every other test, whatever the collection order."""
     if is_worker(config):
         for item in items:
             group = worker_group(item)
             if group:
                 item.add_marker(pytest.mark.xdist_group(group))
-        ErrorRecord.session_checks = {item.originalname for item in items if is_session_check(item)}
     yield
     final = [item for item in items if item.path == FINAL]
     items[:] = [item for item in items if item.path != FINAL] + final
