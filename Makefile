@@ -64,9 +64,10 @@ browser:
 	fi
 
 # On every core (pytest-xdist): the tests that share a costly fixture, and each notebook's cells, stay on one
-# worker (--dist loadgroup, the groups set in tests/conftest.py); `pytest` alone runs in one process.
+# worker (--dist loadgroup), the long ones handed out first (--no-loadscope-reorder keeps that order), both set
+# in tests/conftest.py; `pytest` alone runs in one process.
 test: setup tex browser
-	$(PY) -m pytest -n auto --dist loadgroup
+	$(PY) -m pytest -n auto --dist loadgroup --no-loadscope-reorder
 
 report: setup tex
 	$(PY) -m calc report $(EXAMPLE) -o reports/indexing-table.pdf

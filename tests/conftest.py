@@ -321,6 +321,18 @@ def worker_group(item) -> str | None:
     return item.path.relative_to(ROOT).as_posix() if shared else None
 
 
+#: Files of tests that each take 10 to 60 s without a tool mark: the benchmark, pytest and pip run in a child.
+LONG_FILES = {TESTS / name for name in ("test_bench.py", "test_tool_skips.py", "test_package.py", "test_course.py")}
+
+
+def started_first(item) -> bool:
+    """Whether the workers start the item before the others: a test that drives XeLaTeX or Chromium
+    (``needs_tools``) or of :data:`LONG_FILES`. The longest first, the short ones fill in at the end,
+    so that no worker ends long after the other (``make test`` runs with ``--no-loadscope-reorder``,
+    which keeps this order)."""
+    return item.path in LONG_FILES or item.get_closest_marker("needs_tools") is not None
+
+
 def pytest_sessionfinish(session):
     if is_worker(session.config):
         session.config.workeroutput[WORKER_RECORD] = worker_record()
@@ -406,14 +418,17 @@ def pytest_deselected(items):
 
 @pytest.hookimpl(wrapper=True)
 def pytest_collection_modifyitems(session, config, items):
-    """On a worker, first mark each item's :func:`worker_group` (before xdist reads the marks); last, run
-    the error-site check after every other test, whatever the collection order."""
+    """On a worker, first mark each item's :func:`worker_group` (before xdist reads the marks), then hand
+    out the long tests first (:func:`started_first`); last, run the error-site check after every other
+    test, whatever the collection order."""
     if is_worker(config):
         for item in items:
             group = worker_group(item)
             if group:
                 item.add_marker(pytest.mark.xdist_group(group))
     yield
+    if is_worker(config):
+        items.sort(key=lambda item: not started_first(item))  # stable: the same order on every worker
     final = [item for item in items if item.path == FINAL]
     items[:] = [item for item in items if item.path != FINAL] + final
 
