@@ -321,6 +321,18 @@ def worker_group(item) -> str | None:
     return item.path.relative_to(ROOT).as_posix() if shared else None
 
 
+def carry_groups(items) -> None:
+    """Put each item's xdist group into the id the controller schedules by. pytest-xdist (3.8) appends
+    ``@group`` to an item's ``_nodeid``, which pytest 9 no longer reads (it keeps the id as a ``NodeId``),
+    so without this the controller would see no group and split a notebook's cells over the workers."""
+    from _pytest.nodeid import NodeId
+
+    for item in items:
+        grouped = getattr(item, "_nodeid", item.nodeid)
+        if grouped != item.nodeid:
+            item._id = NodeId.parse(grouped)
+
+
 #: Files of tests that each take 10 to 60 s without a tool mark: the benchmark, pytest and pip run in a child.
 LONG_FILES = {TESTS / name for name in ("test_bench.py", "test_tool_skips.py", "test_package.py", "test_course.py")}
 
@@ -428,6 +440,7 @@ def pytest_collection_modifyitems(session, config, items):
                 item.add_marker(pytest.mark.xdist_group(group))
     yield
     if is_worker(config):
+        carry_groups(items)
         items.sort(key=lambda item: not started_first(item))  # stable: the same order on every worker
     final = [item for item in items if item.path == FINAL]
     items[:] = [item for item in items if item.path != FINAL] + final
