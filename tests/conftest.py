@@ -167,6 +167,13 @@ class ErrorRecord:
     merged: int = 0  # on the controller: how many workers' records are merged in
     session_checks: set[str] = set()  # on the controller: the checks of the whole session selected, which it makes
     item = None  # the test under tests/ being run, or None
+    worker_folder: tuple[str, str] | None = None  # on a worker: its temporary folder, and the run's
+
+    @classmethod
+    def as_in_one_process(cls, message: str) -> str:
+        """A message as a run in one process would have built it: on a worker, its temporary folder
+        named as the run's (10 characters fewer), so that the length check gives the same verdict."""
+        return message.replace(*cls.worker_folder) if cls.worker_folder else message
 
 
 #: Set by .ci/run: a test that needs a tool this machine lacks fails instead of being skipped, so a
@@ -238,6 +245,10 @@ def pytest_configure(config):
     config.addinivalue_line("markers", "needs_tools(*names): the test needs these tools on PATH (TOOLS)")
     from calc.core.errors import CalcError
 
+    if is_worker(config) and config.option.basetemp:
+        # A worker's temporary folders are one level below the run's (pytest-xdist's popen-gwN).
+        worker = Path(config.option.basetemp).resolve()
+        ErrorRecord.worker_folder = (f"{worker}{os.sep}", f"{worker.parent}{os.sep}")
     config.stash[_OWN_INIT] = CalcError.__dict__.get("__init__")
     inherited = CalcError.__init__
 
@@ -248,7 +259,7 @@ def pytest_configure(config):
             if path.is_relative_to(ROOT / "calc"):
                 site = (path.relative_to(ROOT).as_posix(), frame.f_lineno)
                 ErrorRecord.built.add(site)
-                message = str(args[0]) if args else ""
+                message = ErrorRecord.as_in_one_process(str(args[0]) if args else "")
                 if len(message) > len(ErrorRecord.longest.get(site, "")):
                     ErrorRecord.longest[site] = message
         inherited(self, *args, **kwargs)

@@ -57,3 +57,14 @@ def test_the_skips_for_want_of_a_tool_are_summed(empty_record):
     merge_record(sent([], {}, {"chromium": 3}))
     merge_record(sent([], {}, {"chromium": 2, "xelatex": 1}))
     assert ToolSkips.by_tool == {"chromium": 5, "xelatex": 1}
+
+
+def test_a_message_is_measured_as_a_run_in_one_process_builds_it(monkeypatch, tmp_path):
+    # A worker's temporary folders lie one level deeper (popen-gw1/): the length check counts the message
+    # with the run's folder, as one process would have written it, so both give the same verdict.
+    run = tmp_path / "pytest-9"
+    monkeypatch.setattr(ErrorRecord, "worker_folder", (f"{run / 'popen-gw1'}/", f"{run}/"))
+    message = f"{run / 'popen-gw1' / 'test_x0' / 'case.toml'}: motor.part: no part 'X' in catalog motors.csv"
+    assert ErrorRecord.as_in_one_process(message) == f"{run / 'test_x0' / 'case.toml'}: motor.part: no part 'X' in " \
+        "catalog motors.csv"
+    assert len(ErrorRecord.as_in_one_process(message)) == len(message) - len("popen-gw1/")
