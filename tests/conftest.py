@@ -336,11 +336,11 @@ def carry_groups(items) -> None:
     """Put each item's xdist group into the id the controller schedules by. pytest-xdist (3.8) appends
     ``@group`` to an item's ``_nodeid``, which pytest 9 no longer reads (it keeps the id as a ``NodeId``),
     so without this the controller would see no group and split a notebook's cells over the workers."""
-    from _pytest.nodeid import NodeId
-
     for item in items:
         grouped = getattr(item, "_nodeid", item.nodeid)
         if grouped != item.nodeid:
+            from _pytest.nodeid import NodeId  # pytest 9's; where _nodeid is the id (pytest 8), none is needed
+
             item._id = NodeId.parse(grouped)
 
 
