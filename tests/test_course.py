@@ -4,9 +4,11 @@ checkpoint graded by the autograder, and what students receive kept apart from t
 Where a value is expected, it comes from a hand calculation written out here."""
 
 import contextlib
+import csv
 import json
 import math
 import re
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -94,20 +96,20 @@ def _right(v):
             "n_2max": 60 * (v.index_angle / 360) / (v.move_time - v.ramp_time)}
 
 
-def test_every_students_checkpoint_grades_a_right_submission_full_and_a_wrong_one_down():
+def test_every_students_key_is_the_hand_calculation_where_one_reaches_it(lecturer):
+    keys = {row[0]: row[1:] for row in csv.reader((lecturer / "grading" / "keys.csv").open(encoding="utf-8"))}
+    assert keys.pop("student") == [i.name for i in checkpoint.ITEMS] and list(keys) == STUDENTS
     for student in STUDENTS:
         v = variants.variant(student, SEED)
         key = checkpoint.expected(v)
+        assert keys[student] == [str(key[i.name]) for i in checkpoint.ITEMS], student  # the lecturer's keys.csv
         for name, value in _right(v).items():
             assert key[name] == pytest.approx(value), (student, name)
         assert key["mode"] == ("S5" if key["ED"] < 60 else "S1")
-        assert all(m.passes for m in checkpoint.graded(key, key)), student
-        wrong = {k: (x * 1.05 if isinstance(x, float) else "S1" if x == "S5" else "S5" if x == "S1" else "X-1")
-                 for k, x in key.items()}
-        assert not any(m.passes for m in checkpoint.graded(wrong, key)), student
-        marks = checkpoint.graded({**key, "T_2m": None, "ED": "a third"}, key)
-        assert [m.item.name for m in marks if not m.passes] == ["ED", "T_2m"]
-        assert all(str(round(key[k], 2)) not in m.message for m in marks for k in ("ED", "T_2m"))
+    marks = checkpoint.graded({**key, "T_2m": None, "ED": "a third"}, key)
+    assert [(m.item.name, m.message) for m in marks if not m.passes] == [
+        ("ED", "ED: expected a number (the duty cycle ED, in %), found 'a third'"),
+        ("T_2m", "T_2m: not answered (the cubic mean output torque T_2m, in N·m)")]
 
 
 # -- the autograder ------------------------------------------------------------------------------
@@ -117,32 +119,91 @@ def test_every_students_checkpoint_grades_a_right_submission_full_and_a_wrong_on
 def lecturer(tmp_path_factory):
     # Built into a folder named relative to the working folder, as `make lecturer` names it.
     with contextlib.chdir(tmp_path_factory.mktemp("work")):
-        return material.build_lecturer(Path("lecturer"), STUDENTS[:2], SEED, book=False).resolve()
+        return material.build_lecturer(Path("lecturer"), STUDENTS, SEED, book=False).resolve()
 
 
-def _submission(folder: Path, student: str, answers: dict) -> Path:
+def _submission(folder: Path, student: str, answers: dict, name: str) -> Path:
     import nbformat
 
     nb = material.checkpoint_notebook(student)
     nb.cells[-1].source = "\n".join(f"{k} = {v!r}" for k, v in answers.items())
-    path = folder / f"{student}.ipynb"
+    path = folder / f"{name}.ipynb"
     nbformat.write(nb, path)
     return path
 
 
-def test_the_autograder_grades_a_right_and_a_wrong_submission_of_each_student(lecturer, tmp_path):
+def _off(key: dict, share: float, sign: int, others: dict) -> dict:
+    """A submission whose every number is off the key by `share` of its item's tolerance (in the
+    direction `sign`); with share < 1 its names are the key's as a student types them, else another
+    part of the same kind that some student's brief gives and the other operating mode."""
+    answers = {}
+    for item in checkpoint.ITEMS:
+        right = key[item.name]
+        if item.tolerance:
+            answers[item.name] = right * (1 + sign * share * item.tolerance)
+        elif share < 1:
+            answers[item.name] = f" {right.lower()} "
+        else:
+            answers[item.name] = {"S1": "S5", "S5": "S1"}.get(right) or sorted(others[item.name] - {right})[0]
+    return answers
+
+
+def _graded_by_otter(test_file: Path, submission: Path):
+    """A submission graded as Otter's kernel grades it (otter.execute's export cell): its code cells
+    run in fresh globals, then the autograder's test file checked against them by Otter's Checker."""
+    import nbformat
+    from otter.execute import Checker
+    from otter.nbmeta_config import NBMetadataConfig
+    from otter.test_files import GradingResults
+
+    env = {}
+    for cell in nbformat.read(submission, as_version=4).cells:
+        if cell.cell_type == "code":
+            exec(compile(cell.source, str(submission), "exec"), env)  # the test's own submission
+    return GradingResults([Checker.check(str(test_file), NBMetadataConfig(), global_env=env)])
+
+
+def _passed(graded) -> dict:
+    """Item name -> whether it passed: Otter numbers a file's test cases in its order, which is ITEMS'."""
+    results = [r for tf in graded.results.values() for r in tf.test_case_results]
+    assert [r.test_case.name for r in results] == [f"checkpoint - {n}" for n in range(1, len(checkpoint.ITEMS) + 1)]
+    return {item.name: r.passed for item, r in zip(checkpoint.ITEMS, results)}
+
+
+def test_the_autograder_grades_a_right_and_a_wrong_submission_of_every_student(lecturer, tmp_path):
+    """Every student of the roster: a right submission (each number within half its tolerance, the
+    names as typed) scores 7 of 7, a wrong one (each number off by 1.5 times its tolerance, another
+    part, the other mode) 0 of 7, graded by the test file of the lecturer's autograder.zip through
+    Otter's Checker in this one process; one submission also goes through Otter's whole grading
+    (grade_submission: the zip unpacked, the notebook executed in a kernel) with the same marks."""
     from otter.api import grade_submission
 
-    keys = (lecturer / "grading" / "keys.csv").read_text().splitlines()
-    assert keys[0] == "student," + ",".join(i.name for i in checkpoint.ITEMS) and len(keys) == 3
-    for student in STUDENTS[:2]:
-        key = checkpoint.expected(variants.variant(student, SEED))
-        right = {k: round(x, 3) if isinstance(x, float) else x for k, x in key.items()}
-        wrong = {**right, "T_2m": right["T_2m"] * 1.1, "gearbox": "TP010-10"}
-        for answers, score in ((right, 7), (wrong, 5)):
-            graded = grade_submission(str(_submission(tmp_path, student, answers)),
-                                      str(lecturer / "grading" / "autograder.zip"), quiet=True)
-            assert (graded.total, graded.possible) == (score, 7), (student, graded.total)
+    with zipfile.ZipFile(lecturer / "grading" / "autograder.zip") as z:
+        z.extract("tests/checkpoint.py", tmp_path)
+    test_file = tmp_path / "tests" / "checkpoint.py"
+    assert f"SEED = {SEED}" in test_file.read_text()
+    assert re.findall(r"def (\w+)\(env\)", test_file.read_text()) == [i.name for i in checkpoint.ITEMS]
+    keys = {s: checkpoint.expected(variants.variant(s, SEED)) for s in STUDENTS}
+    others = {name: {k[name] for k in keys.values()} for name in ("motor", "gearbox")}
+    assert all(len(found) > 1 for found in others.values()), others
+    wrong_marks = set()
+    for n, student in enumerate(STUDENTS):
+        sign = 1 if n % 2 else -1
+        for share, score in ((0.5, 7), (1.5, 0)):
+            answers = _off(keys[student], share, sign, others)
+            graded = _graded_by_otter(test_file, _submission(tmp_path, student, answers, "submission"))
+            assert (graded.total, graded.possible) == (score, 7), (student, share, _passed(graded))
+            wrong_marks |= {r.message for tf in graded.results.values() for r in tf.test_case_results
+                            if not r.passed}
+    # A failed item says which and why, never the key's value.
+    assert wrong_marks and not [m for key in keys.values() for m in wrong_marks
+                                for k in ("n_2max", "T_peak", "ED", "T_2m") if str(round(key[k], 2)) in m]
+    right = _off(keys[STUDENTS[0]], 0.5, 1, others)
+    mixed = {**right, **{k: v for k, v in _off(keys[STUDENTS[0]], 1.5, 1, others).items() if k in ("T_2m", "gearbox")}}
+    path = _submission(tmp_path, STUDENTS[0], mixed, "mixed")
+    whole = grade_submission(str(path), str(lecturer / "grading" / "autograder.zip"), quiet=True)
+    assert _passed(whole) == _passed(_graded_by_otter(test_file, path))
+    assert [name for name, ok in _passed(whole).items() if not ok] == ["T_2m", "gearbox"]
 
 
 # -- what students receive -----------------------------------------------------------------------

@@ -37,6 +37,10 @@ ureg.formatter.default_format = "~P"
 ureg.formatter.default_sort_func = None  # units in the order written: "N·m", not pint's alphabetical "m·N"
 pint.set_application_registry(ureg)
 Q_ = ureg.Quantity
+# pint keeps a parsed unit text only where the text is one unit's name: "N*m" or "kg*cm**2" is parsed
+# again at every conversion (a fifth of a design review's change). The registry's units are fixed
+# once defined above, so each text's parse is kept (the same container pint would give).
+ureg._parse_units_as_container = functools.lru_cache(maxsize=4096)(ureg._parse_units_as_container)
 
 
 @functools.cache

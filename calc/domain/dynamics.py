@@ -16,11 +16,13 @@ whose ratio is ``f_r / f_ar = √(1 + J_Lm / J_motor) = √(1 + λ)`` (:data:`re
 inertia ratio λ says how far below the resonance the anti-resonance lies. ``λ <= 10`` keeps it
 within a factor √11 = 3.3; at λ = 1 (inertia matched) the two lie a factor √2 apart.
 
-The frequency response is python-control's (``control.ss``, ``control.frequency_response``) of the
-chain's state-space model with a light damping proportional to the stiffness
-(:data:`DAMPING_RATIO` at the first mode), for the figure only: every frequency the package states
-is the undamped one. SI magnitudes throughout (a stiffness in N·m/rad over an inertia gives 1/s²
-with the radian of E15).
+The frequency response is that of the chain's state-space model (python-control's ``control.ss``
+in :func:`state_space`) with a light damping proportional to the stiffness (:data:`DAMPING_RATIO`
+at the first mode), for the figure only: every frequency the package states is the undamped one.
+It is evaluated here in numpy, ``C (jω I - A)⁻¹ B`` for all frequencies in one stacked solve, the
+computation ``control.frequency_response`` makes (without Slycot): importing python-control and
+the SciPy it imports takes longer than the rest of a design review's first page. SI magnitudes
+throughout (a stiffness in N·m/rad over an inertia gives 1/s² with the radian of E15).
 """
 
 from __future__ import annotations
@@ -183,6 +185,23 @@ def modes(inertias, stiffnesses, where: str = "drive train") -> Modes:
                  from_si(np.sqrt(held) / (2 * np.pi), "frequency", "Hz"))
 
 
+def _state_matrices(inertias, stiffnesses, damping: float, where: str):
+    """The matrices ``A``, ``B``, ``C`` of :func:`state_space` (SI; ``D`` is zero)."""
+    J, C = _si_chain(inertias, stiffnesses, where)
+    if not 0 <= damping < 1:
+        raise CalcError(f"{where}: damping: expected a damping ratio from 0 to below 1, found {damping!r}")
+    n = len(J)
+    K = stiffness_matrix(C)
+    omega_1 = np.sqrt(_symmetric_roots(J, K)[0][1])
+    D = (2 * damping / omega_1) * K
+    A = np.block([[np.zeros((n, n)), np.eye(n)], [-K / J[:, None], -D / J[:, None]]])
+    B = np.zeros((2 * n, 1))
+    B[n, 0] = 1 / J[0]
+    out = np.zeros((1, 2 * n))
+    out[0, n] = 1.0
+    return A, B, out
+
+
 def state_space(inertias, stiffnesses, damping: float = DAMPING_RATIO, where: str = "drive train"):
     """The chain's state-space model, motor torque in, motor speed out (python-control).
 
@@ -205,21 +224,9 @@ def state_space(inertias, stiffnesses, damping: float = DAMPING_RATIO, where: st
     control.StateSpace
         Input the motor's torque [N·m], output the motor's speed [rad/s].
     """
-    import control  # the control systems library: imported where a response is asked for
+    import control  # the control systems library: imported where the model is asked for
 
-    J, C = _si_chain(inertias, stiffnesses, where)
-    if not 0 <= damping < 1:
-        raise CalcError(f"{where}: damping: expected a damping ratio from 0 to below 1, found {damping!r}")
-    n = len(J)
-    K = stiffness_matrix(C)
-    omega_1 = np.sqrt(_symmetric_roots(J, K)[0][1])
-    D = (2 * damping / omega_1) * K
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-K / J[:, None], -D / J[:, None]]])
-    B = np.zeros((2 * n, 1))
-    B[n, 0] = 1 / J[0]
-    out = np.zeros((1, 2 * n))
-    out[0, n] = 1.0
-    return control.ss(A, B, out, 0)
+    return control.ss(*_state_matrices(inertias, stiffnesses, damping, where), 0)
 
 
 @dataclass(frozen=True)
@@ -246,8 +253,8 @@ class FrequencyResponse:
 
 def frequency_response(inertias, stiffnesses, frequencies, damping: float = DAMPING_RATIO,
                        where: str = "drive train") -> FrequencyResponse:
-    """The frequency response of the motor's speed to its torque (:func:`state_space`, evaluated by
-    ``control.frequency_response``).
+    """The frequency response of the motor's speed to its torque: :func:`state_space`'s model
+    evaluated at ``s = j 2π f``, ``C (s I - A)⁻¹ B``, as ``control.frequency_response`` does.
 
     Parameters
     ----------
@@ -276,14 +283,25 @@ def frequency_response(inertias, stiffnesses, frequencies, damping: float = DAMP
     >>> round(float(r.magnitude[0]), 1), round(float(r.phase[0]))
     (159.2, -90)
     """
-    import control
-
     f = np.atleast_1d(as_kind(frequencies, "frequency", f"{where}: frequencies").m_as("Hz")).astype(float)
     if not np.all(f > 0):
         raise CalcError(f"{where}: frequencies: expected frequencies above zero, found {f.min():g} Hz")
-    response = control.frequency_response(state_space(inertias, stiffnesses, damping, where), 2 * np.pi * f)
-    return FrequencyResponse(Q_(f, "Hz"), np.asarray(response.magnitude, float).reshape(-1),
-                             np.degrees(np.asarray(response.phase, float).reshape(-1)), damping)
+    A, B, C = _state_matrices(inertias, stiffnesses, damping, where)
+    h = _transfer(A, B, C, 2j * np.pi * f)
+    return FrequencyResponse(Q_(f, "Hz"), np.abs(h), np.degrees(np.angle(h)), damping)
+
+
+def _transfer(A: np.ndarray, B: np.ndarray, C: np.ndarray, s) -> np.ndarray:
+    """``C (s I - A)⁻¹ B`` at each complex frequency ``s`` [1/s] (an array, or one); at a pole of an
+    undamped chain, infinite."""
+    s = np.asarray(s, complex)
+    try:
+        x = np.linalg.solve(s[..., None, None] * np.eye(len(A)) - A, np.broadcast_to(B, (*s.shape, *B.shape)))
+    except np.linalg.LinAlgError:  # a frequency on a pole: each apart, the pole's own infinite
+        if s.ndim:
+            return np.array([_transfer(A, B, C, x) for x in s])
+        return np.array(complex(np.inf, np.nan))
+    return (C @ x)[..., 0, 0]
 
 
 def band_slope(curve, torque):

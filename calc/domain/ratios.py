@@ -3,7 +3,8 @@
 Every row of the catalog is checked in one :func:`calc.domain.gearbox.select_gearbox` (each row at its
 own ratio: the formulas run over the rows); the best row of each ratio is the one the ranking of
 :mod:`calc.domain.gearbox` puts first among the rows of that ratio, so the one an evaluation of the case
-at that ratio would choose. The motor torque through each ratio's best gearbox over the whole
+at that ratio would choose, and at the case's own ratio the gearbox its evaluation checks (``kept``:
+one gearbox per ratio in every output). The motor torque through each ratio's best gearbox over the whole
 cycle is one array (ratios × samples, :func:`calc.domain.motor.motor_load`), and the motor's checks
 (:func:`calc.domain.motor.motor_checks`) run over the ratios.
 
@@ -200,6 +201,7 @@ def search_ratios(
     hubs: Catalog | None = None,
     *,
     inertia_limit: float,
+    kept: str | None = None,
     **selection,
 ) -> RatioSearch:
     """Evaluate the case at every ratio of ``catalog`` (its rankable rows, every ratio).
@@ -211,7 +213,9 @@ def search_ratios(
     what it lacks or None, notes)`` (a motor-side coupling's inertia added). ``hubs`` and the
     keyword arguments ``selection`` are those of :func:`calc.domain.gearbox.select_gearbox`;
     ``rated_torque`` and ``max_speed`` those of :func:`calc.domain.motor.motor_checks`;
-    ``inertia_limit`` the highest λ the pick keeps to (:func:`rule`). A ratio whose best gearbox
+    ``inertia_limit`` the highest λ the pick keeps to (:func:`rule`). ``kept``, the gearbox a case's
+    evaluation checks at its ratio, is the best row of its ratio whatever the ranking (a part the case
+    names, or the one chosen with the motor), so the search never shows another there. A ratio whose best gearbox
     gives no ``J_1`` has no motor torque on a sampled cycle, and is not feasible (a note says so).
 
     Parameters
@@ -232,6 +236,8 @@ def search_ratios(
         The clamping hubs.
     inertia_limit : float [1]
         The highest ``λ`` the pick keeps to: the case's ``[motor] max_inertia_ratio``.
+    kept : str, optional
+        The part the case is checked with at its ratio: the best row of that ratio.
     **selection
         Further arguments of :func:`calc.domain.gearbox.select_gearbox`.
 
@@ -244,6 +250,8 @@ def search_ratios(
     if catalog.partial.any():  # partial rows are never ranked (no copy of a catalog without them)
         catalog = catalog.rows(np.flatnonzero(~catalog.partial))
     sel = select_gearbox(profile, catalog, hubs=hubs, **selection)
+    if kept is not None:
+        sel.put_first(kept, failing=True)
     ratios, rows = best_rows(sel)
     i, eta = catalog["ratio"][rows], catalog["eta"][rows]
     missing, J_1, notes = None, None, []

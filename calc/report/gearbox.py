@@ -176,12 +176,13 @@ class GearboxRenderer(Renderer):
              "<br>".join(typeset(x) for x in c.reasons)]
             for k, c in enumerate(shown, start=1)
         ]
-        header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), "inertia ratio λ", "data",
-                  "reasons"]
+        lam = "inertia ratio λ" if g.inertia_note is None else "λ, J_1 alone"
+        header = ["rank", "part", "verdict", "worst utilization", typeset("T_2max"), typeset(lam), "data", "reasons"]
+        said = "" if g.inertia_note is None else f"<div class=note>{typeset(g.inertia_note)}</div>"
         return (f"<h3>Gearbox candidates</h3><div class=note>{typeset(g.ranking)}; {FORCING}</div>"
                 + html_table(header, rows, numeric={0, 3, 4, 5}, marked=0 if sel.selected else None,
                              force=("gearbox.part", [c.part for c in shown]))
-                + more + search)
+                + said + more + search)
 
 
 def _one_lambda(report, steps) -> list[str]:

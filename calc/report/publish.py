@@ -226,10 +226,75 @@ def compiled_preamble(tex: Path) -> Path | None:
     return fmt.with_suffix("")
 
 
-def exporter():
+#: The files of a pass that the next pass reads (labels, the last page, longtable's widths; the
+#: outline), kept from a report's last build (:func:`kept_passes`).
+PASS_FILES = (".aux", ".out")
+
+
+def kept_passes(pdf: Path) -> Path | None:
+    """Where the files of the last pass of the report ``pdf`` are kept (:data:`PASS_FILES`, beside
+    the compiled preambles), so that a report built again starts from them: where its labels and
+    widths have not moved, one xelatex pass sets it (xelatex says when they have, and passes again).
+
+    Parameters
+    ----------
+    pdf : pathlib.Path
+        The report's PDF file.
+
+    Returns
+    -------
+    pathlib.Path or None
+        The files' common stem (``<folder>/pass-<hash of the PDF's path>``); None where the folder
+        is not writable.
+    """
+    import hashlib
+    import os
+
+    folder = Path(sys.prefix) / "latex-formats"
+    if not os.access(folder if folder.exists() else sys.prefix, os.W_OK):
+        return None
+    return folder / f"pass-{hashlib.sha256(str(pdf.resolve()).encode()).hexdigest()[:16]}"
+
+
+#: Kept pass files unused this long are removed as others are kept [s] (a report of a folder since deleted).
+PASS_FILES_KEPT = 30 * 86400
+
+
+def _forget_old_passes(folder: Path) -> None:
+    """Remove the kept pass files of ``folder`` not written for :data:`PASS_FILES_KEPT`."""
+    import time
+
+    for path in folder.glob("pass-*"):
+        try:
+            if time.time() - path.stat().st_mtime > PASS_FILES_KEPT:
+                path.unlink()
+        except OSError:  # removed meanwhile by a build beside this one
+            continue
+
+
+def _pass_files(source: Path, target: Path) -> None:
+    """Copy the :data:`PASS_FILES` of stem ``source`` that exist to stem ``target``, each replaced at once."""
+    import os
+
+    for suffix in PASS_FILES:
+        made = source.with_name(source.name + suffix)
+        if made.is_file():
+            written = target.with_name(f"{target.name}{suffix}.{os.getpid()}")
+            shutil.copyfile(made, written)
+            written.replace(target.with_name(target.name + suffix))  # atomic: builds side by side
+
+
+def exporter(kept: Path | None = None):
     """nbconvert's PDF exporter with our template, code and prompts hidden; xelatex runs until its
-    log asks for no further pass (two for most reports, where nbconvert always runs three), and
-    no bibtex (a report cites no bibliography).
+    log asks for no further pass (two for most reports, where nbconvert always runs three; one where
+    the files of the last build's pass are ``kept`` and still hold), and no bibtex (a report cites
+    no bibliography).
+
+    Parameters
+    ----------
+    kept : pathlib.Path, optional
+        The stem of the files of the last pass of the report's previous build (:func:`kept_passes`):
+        read before the first pass, written after the last.
 
     Returns
     -------
@@ -248,13 +313,22 @@ def exporter():
             fmt = compiled_preamble(Path(filename))
             command = (self.latex_command if fmt is None
                        else [self.latex_command[0], f"-fmt={fmt}", *self.latex_command[1:]])
-            log = Path(filename).with_suffix(".log")
-            for _ in range(self.latex_count):
-                self.run_command(command, filename, 1, log_error, raise_on_failure)
+            log, stem = Path(filename).with_suffix(".log"), Path(filename).with_suffix("")
+            if kept is not None:
+                _pass_files(kept, stem)
+            # Without the labels of an earlier pass the first only writes them: no PDF made (xdvipdfmx's 0.1 s).
+            first = [] if stem.with_suffix(".aux").is_file() else ["-no-pdf"]
+            for k in range(self.latex_count):
+                self.run_command([command[0], *(first if k == 0 else []), *command[1:]], filename, 1, log_error,
+                                 raise_on_failure)
                 # The last pass's log: the tests read its overfull boxes.
                 self.latex_log = log.read_text(encoding="utf-8", errors="replace")
-                if not any(line in self.latex_log for line in RERUN):
+                if not any(line in self.latex_log for line in RERUN) and (k or not first):
                     break
+            if kept is not None:
+                kept.parent.mkdir(exist_ok=True)
+                _pass_files(stem, kept)
+                _forget_old_passes(kept.parent)
             return True
 
         def run_bib(self, filename, raise_on_failure=False):
@@ -404,7 +478,7 @@ def render_pdf(report, pdf: Path, jobs: int = 1) -> None:
         Where xelatex cannot typeset the report, with the end of its output.
     """
     with figures_made(report, jobs) as figures:
-        export = exporter()  # importing nbconvert goes on beside the figures
+        export = exporter(kept_passes(pdf))  # importing nbconvert goes on beside the figures
         notebook = report_notebook(report, figures)
     from nbconvert.exporters.pdf import LatexFailed
 

@@ -33,6 +33,7 @@ class RatiosRenderer(Renderer):
         return [
             r"\subsection*{The ratio}",
             prose(r.search.reason),
+            *([] if r.checked is None else [prose(r.checked.said)]),
             *([] if r.optimal is None else [prose(r.optimal.line() + ".")]),
             table(r"@{}r l r r r r r l@{}",
                   [symbol_math("i"), "Best gearbox", "Utilization", *map(symbol_math, ("lambda", "T_1peak", "T_1rms")),
@@ -94,8 +95,10 @@ class RatiosRenderer(Renderer):
         if best and best["value"] is not None:
             said = f"inertia matching: i_opt = √(J_L / J_in) = {sig(best['value'], 4)} ({best['inertias']})"
             matching = f"<div class=note>{typeset(said)}; the pick minimizes the RMS motor torque</div>"
+        checked = found.get("checked")
+        said = "" if checked is None else f"<div class=checked-at>{typeset(checked['said'])}</div>"
         return (f"<h3>Ratio search</h3><div class=note>{typeset(found['rule'])}</div>"
-                f"<div><b>{typeset(found['reason'])}</b></div>" + matching
+                f"<div><b>{typeset(found['reason'])}</b></div>" + said + matching
                 + html_table(header, rows, numeric={0, 3, 4, 5, 6, 7}, marked=marked) + notes(found["notes"])
                 + ratio_search_svg(found))
 

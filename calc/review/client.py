@@ -35,6 +35,13 @@ STYLE = """<style>
 .design-review .dr-print-head { display: none; }
 .design-review tr[data-force]:hover td { background: #eef3fb; }
 .design-review .dr-changed { color: #1f5fbf; border-left: 4px solid #1f5fbf; padding-left: 4px; margin-left: -8px; }
+.design-review .dr-top { flex-wrap: wrap; row-gap: 2px; } .design-review .dr-top .dr-case { min-width: 16em; }
+/* a table's words wrap, its numbers do not: no long text widens the results beyond their column (a note under it
+   would be as wide, and cut) */
+.design-review .dr td, .design-review .dr th { white-space: normal; } .design-review .dr td.n { white-space: nowrap; }
+.design-review .dr td:first-child { white-space: nowrap; }
+.design-review .dr.dr-variants td:first-child { white-space: normal; }
+.design-review .dr span.open { display: inline-block; max-width: 22em; }  /* a check not made: why, in a column */
 @media (max-width: 1180px) {
   /* a narrow screen: the controls' column narrows so that the verdict stays beside them */
   .design-review > .widget-vbox:first-child { flex: 0 0 430px !important; width: 430px !important; }
@@ -43,14 +50,23 @@ STYLE = """<style>
   .design-review > .widget-vbox:last-child { min-width: 420px !important; flex: 1 1 420px !important; }
   /* the tables wrap their words, not their numbers, so that the verdict column stays on the screen */
   .design-review .dr { font-size: 12px; }
-  .design-review .dr td, .design-review .dr th { white-space: normal; padding-right: 5px; }
-  .design-review .dr td.n { white-space: nowrap; }
+  .design-review .dr td, .design-review .dr th { padding-right: 5px; }
+  .design-review .dr td:first-child { white-space: normal; }
   .design-review .dr .bar { width: 28px; }
 }
 @media print {
-  @page { size: A4; margin: 12mm; }
+  @page { size: A4; margin: 14mm 12mm;
+          @bottom-right { content: "page " counter(page) " of " counter(pages); font: 8pt sans-serif; color: #333; } }
   /* Voilà's page scrolls inside fixed-height boxes: printed, every box takes its content's height */
   html, body, body * { overflow: visible !important; }
+  /* and is as wide as the screen was (Lumino sets its panels' widths): printed, as wide as the paper, so no text
+     runs past its right edge */
+  html, body, .jp-LabShell, .lm-BoxPanel, .lm-BoxPanel-child { width: auto !important; min-width: 0 !important; }
+  /* JupyterLab keeps an output on one page: the review, taller than a page, was pushed to the second (a blank
+     first page) */
+  .jp-OutputArea-child { break-inside: auto !important; }
+  /* the title block and the verdict first, then the inputs they were computed from */
+  .design-review > .widget-vbox:last-child { order: -1; }
   html, body, .lm-Widget, .jp-OutputArea, .jp-Cell {
     height: auto !important; max-height: none !important; contain: none !important; }
   .lm-Widget { position: relative !important; top: auto !important; left: auto !important; }
@@ -178,8 +194,13 @@ SCRIPT = r"""<script>
   function keepInAddress(r, typed) {
     const changed = JSON.parse(r.dataset.changed || '{}'), name = r.dataset.case || '';
     if (typed && r.dataset.inputs) {
-      const stamp = JSON.parse(r.dataset.inputs), now = shown();
-      for (const k of Object.keys(now)) if (stamp[k] !== undefined && stamp[k] !== now[k]) changed[k] = now[k];
+      const stamp = JSON.parse(r.dataset.inputs), now = shown(), factors = JSON.parse(r.dataset.factors || '{}');
+      for (const k of Object.keys(now)) if (stamp[k] !== undefined && stamp[k] !== now[k]) {
+        // the address carries the file's units: a number typed in a field shown in another unit goes back to it
+        const v = Number(now[k].replace(',', '.'));
+        changed[k] = factors[k] && now[k] !== '' && Number.isFinite(v) ? String(+(v / factors[k]).toPrecision(12))
+                                                                      : now[k];
+      }
     }
     const state = edited(r) ? {case: name, edits: JSON.parse(r.dataset.edits), values: changed}
                             : {case: name, values: changed};

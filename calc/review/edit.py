@@ -15,6 +15,8 @@ said)`` the mechanism of another type, with the moves' distances by entry.
 
 from __future__ import annotations
 
+import copy
+import functools
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -106,7 +108,7 @@ def edited_text(text: str, edits, source: str) -> str:
     """
     import tomlkit
 
-    doc = tomlkit.parse(text)
+    doc = _document(text)
     for edit in edits:
         _apply(doc, edit, source)
     return tomlkit.dumps(doc)
@@ -344,6 +346,20 @@ def edit_text(edit) -> str:
     return f"{what} added as entry {edit[1] + 1}"
 
 
+@functools.lru_cache(maxsize=8)
+def _parsed(text: str):
+    """The TOML text parsed by tomlkit, kept (never edited: :func:`_document` gives copies)."""
+    import tomlkit
+
+    return tomlkit.parse(text)
+
+
+def _document(text: str):
+    """A tomlkit document of ``text`` to edit: a copy of the one parsed (a review's every change edits
+    the same file's text; copying its document takes a tenth of parsing it again)."""
+    return copy.deepcopy(_parsed(text))
+
+
 def changed_text(original: str, moves, edits, source: str) -> str:
     """The TOML text ``original`` with the edits of the ``moves`` and then ``edits`` applied, and a
     first comment naming them and the file they were made to: each edit of the moves in words
@@ -377,7 +393,7 @@ def changed_text(original: str, moves, edits, source: str) -> str:
     """
     import tomlkit
 
-    doc = tomlkit.parse(original)
+    doc = _document(original)
     said = [edit_text(e) for e in moves]
     for edit in [e for m in moves for e in moves_edits(m)]:
         _apply(doc, edit, source)

@@ -14,6 +14,7 @@ file writes: a value the reader derives or takes from a catalog is not an input.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 import tomllib
@@ -23,6 +24,7 @@ import numpy as np
 
 from ..core.errors import CalcError, as_found
 from ..core.units import NUMBER, Q_, parse_quantity, pretty_unit
+from ..report.page import INCH_POUND
 from ..report.symbols import symbol_text
 from ..sections import OWN_TABLES, axis, declared
 from ..sections import motion as motion_section
@@ -131,6 +133,34 @@ class InputSpec:
         """
         return v == self.value or (self.exact is not None and v == self.exact)
 
+    def in_unit(self, unit: str) -> InputSpec:
+        """The input as its field shows it in another unit of its dimension (:func:`unit_shown`): its
+        range, step and value converted; the slider and the state keep the file's unit.
+
+        Parameters
+        ----------
+        unit : str
+            The unit shown.
+
+        Returns
+        -------
+        InputSpec
+            This input where the unit is its own or it is a choice; else a copy in ``unit``.
+
+        Examples
+        --------
+        >>> spec = InputSpec("mechanism.mass", "mechanism: moved mass m", "kg", 0.5, 100, 0.5, 45.36)
+        >>> shown = spec.in_unit("lb")
+        >>> shown.unit, round(shown.value, 3), round(shown.high, 2)
+        ('lb', 100.002, 220.46)
+        """
+        if unit == self.unit or self.options:
+            return self
+        f = float(Q_(1.0, self.unit).m_as(unit))  # no unit of an input offsets its zero (temperatures stay)
+        exact = self.value if self.exact is None else self.exact
+        return dataclasses.replace(self, unit=unit, low=self.low * f, high=self.high * f, step=self.step * f,
+                                   value=self.value * f, exact=exact * f)
+
     @property
     def text(self) -> str:
         """The label with its unit, as the panel shows it: ``motor peak torque T_1B [N·m]``."""
@@ -235,9 +265,13 @@ def input_label(key: Key, name: str) -> str:
     Returns
     -------
     str
-        ``"motor peak torque T_1B"``; the name alone for a key without a symbol.
+        ``"motor peak torque T_1B"``; the name alone for a key without a symbol. A symbol of two subscripts is
+        written as the results write it, ``P_R,peak`` (so that it is typeset, not shown as a key).
     """
-    return f"{name} {symbol_text(key.symbol)}" if key.symbol else name
+    if not key.symbol:
+        return name
+    base, sep, sub = symbol_text(key.symbol).partition("_")
+    return f"{name} {base}{sep}{sub.replace('_', ',')}"
 
 
 def _signed(v: float, floor: float = 10.0) -> tuple[float, float]:
@@ -355,6 +389,36 @@ def motion_specs(case: Case) -> list[InputSpec]:
 
 #: Values a section takes when its file leaves them out (the coupling's temperature, E9).
 DEFAULTS = {"coupling.temperature": "20 degC"}
+
+
+#: An inch-pound unit a case file writes its inputs in and its SI counterpart: what the fields of an inch-pound case
+#: show in SI (the results' units, :data:`calc.report.page.INCH_POUND`, the other way).
+SI_UNIT = {"lbf*in": "N*m", "lbf": "N", "in": "mm", "lb*in**2": "kg*cm**2", "lb": "kg", "in/s": "mm/s",
+           "in/s**2": "m/s**2", "lbf*in/arcmin": "N*m/arcmin", "lbf*in/rad": "N*m/rad"}
+
+
+def unit_shown(unit: str, system: str) -> str:
+    """The unit an input's field shows in a unit system: its SI or inch-pound counterpart, else its own
+    (seconds, degrees, a temperature, a bare number).
+
+    Parameters
+    ----------
+    unit : str
+        The input's unit as the case file writes it.
+    system : str
+        ``"SI"`` or ``"inch-pound"``.
+
+    Returns
+    -------
+    str
+        The unit shown.
+
+    Examples
+    --------
+    >>> unit_shown("kg*cm**2", "inch-pound"), unit_shown("lbf*in", "SI"), unit_shown("s", "inch-pound")
+    ('lb*in**2', 'N*m', 's')
+    """
+    return INCH_POUND.get(unit, unit) if system == "inch-pound" else SI_UNIT.get(unit, unit)
 
 
 def is_inch_pound(unit: str) -> bool:

@@ -4,7 +4,8 @@ input's label, the message under its row, and the results with the state they we
 The results carry that state as attributes, which the page's script (:mod:`calc.review.client`)
 compares with the fields and writes into the page's address: ``data-inputs`` (each field's text),
 ``data-changed`` (those of the changed inputs), ``data-edits`` (the moves' edits), ``data-case``,
-``data-units`` and ``data-file-units``, ``data-variants`` and ``data-variants-asked``
+``data-units`` and ``data-file-units`` (with ``data-factors``, what a value in the file's unit is multiplied by
+for each field shown in another unit), ``data-variants`` and ``data-variants-asked``
 (:func:`variants_attribute`), and ``data-generation`` (counting the results drawn).
 """
 
@@ -28,7 +29,8 @@ from .view import results_html
 SHOWN_CANDIDATES = 6  # rows of each candidate table, best first, unless all are asked for
 
 
-def label_html(spec: InputSpec, changed: bool, added: str | None = None, follows: str | None = None) -> str:
+def label_html(spec: InputSpec, changed: bool, added: str | None = None, follows: str | None = None,
+               shown: InputSpec | None = None) -> str:
     """An input's label with its unit (the whole of it, and what became of the file's value, as
     its tooltip; its key path as ``data-key``), marked where changed or made by an edit of the moves.
 
@@ -43,20 +45,24 @@ def label_html(spec: InputSpec, changed: bool, added: str | None = None, follows
     follows : str, optional
         What its value follows where the file leaves it out, in words
         (:meth:`calc.review.state.ReviewState.following`): shown under the label.
+    shown : InputSpec, optional
+        The input in the unit its field shows (:meth:`calc.review.state.ReviewState.shown_spec`); by default
+        ``spec``. The file's value is said in the file's unit.
 
     Returns
     -------
     str
         HTML.
     """
-    unit = pretty_unit(spec.unit) if spec.unit else ""
+    shown = spec if shown is None else shown
     file_value = spec.shown_text(spec.value)
-    file_value += f" {unit}" if unit else ""
+    file_value += f" {pretty_unit(spec.unit)}" if spec.unit else ""
+    unit = pretty_unit(shown.unit) if shown.unit else ""
     was = f" ({added})" if added else f" (changed; the file: {file_value})" if changed else ""
     marked = " class=dr-changed" if changed or added else ""
     was += f" ({follows})" if follows and not was else ""
     note = f"<br><small class=dr-follows>{typeset(follows)}</small>" if follows else ""
-    return (f'<span title="{escape(spec.text + was)}" data-key="{escape(spec.key)}"{marked}>'
+    return (f'<span title="{escape(shown.text + was)}" data-key="{escape(spec.key)}"{marked}>'
             f"{typeset(spec.label)}{f' [{unit}]' if unit else ''}{note}</span>")
 
 
@@ -182,8 +188,36 @@ def print_head(state: ReviewState) -> str:
     except OSError:
         digest = ""
     changed = " with the changes marked on the page" if state.modified() else ""
-    return (f'<div class="dr-print-head">Design review of {escape(state.path.name)}{digest}{changed} · computed '
-            f"{build_date()} · {escape(PACKAGE)} · commit {escape(_commit())}</div>")
+    computed = build_date()
+    running = css_string(f"Design review of {state.path.name}{' (changed)' if changed else ''} · computed {computed} "
+                         f"· {PACKAGE}")
+    head = f"@page {{ @top-left {{ content: {running}; font: 8pt sans-serif; color: #333; }} }}"  # on every page
+    return (f"<style>@media print {{ {head} }}</style>"
+            f'<div class="dr-print-head">Design review of {escape(state.path.name)}{digest}{changed} · '
+            f"computed {computed} · {escape(PACKAGE)} · commit {escape(_commit())}</div>")
+
+
+def css_string(text: str) -> str:
+    """A text as a CSS string, in a style element of an HTML page: its quotes and backslashes escaped, a line
+    break a space, and ``<`` escaped, so no text (a case file's name) can end the style element.
+
+    Parameters
+    ----------
+    text : str
+        The text.
+
+    Returns
+    -------
+    str
+        The CSS string, quoted.
+
+    Examples
+    --------
+    >>> print(css_string('a "b" </style>'))
+    "a \\"b\\" \\3c /style>"
+    """
+    quoted = text.replace("\\", "\\\\").replace('"', '\\"').replace("<", "\\3c ")
+    return '"' + re.sub(r"[\x00-\x1f\x7f]", " ", quoted) + '"'
 
 
 def results_text(state: ReviewState, screen: Screen, link: str | None, generation: int, variants: Variants) -> str:
@@ -220,6 +254,7 @@ def results_text(state: ReviewState, screen: Screen, link: str | None, generatio
     attributes = (f'data-generation="{generation}" data-case="{escape(state.path.name)}" '
                   f'data-inputs="{escape(json.dumps(screen.texts))}" data-edits="{escape(json.dumps(screen.moves))}" '
                   f'data-units="{escape(state.units)}" data-file-units="{escape(state.file_units)}" '
+                  f'data-factors="{escape(json.dumps(screen.factors))}" '
                   f'{variants_attribute(variants)} '
                   f'data-changed="{escape(json.dumps(screen.changed_texts))}"')
     return text.replace('<div class="dr">', f'<div class="dr" {attributes}>', 1)

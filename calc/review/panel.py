@@ -153,6 +153,9 @@ class DesignReview:
         """An option of the results (all candidates, the ratio search, the unit system) set."""
         if getattr(self.state, name) != value:
             setattr(self.state, name, value)
+            if name == "units":  # the fields in that system too
+                self.rows.show(self.state)
+                self.moves.show_size(self.state)
             if self.state.case is not None:  # else no case file was read: nothing to draw
                 self.drawing.changed()
 
@@ -637,7 +640,8 @@ class InputRows:
         import ipywidgets as w
 
         value = state.values[spec.key]
-        label = w.HTML(label_html(spec, False, state.from_edits(spec.key), state.following(spec.key)),
+        label = w.HTML(label_html(spec, False, state.from_edits(spec.key), state.following(spec.key),
+                                  state.shown_spec(spec.key)),
                        layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
         label.add_class("dr-label")
         self.labels[spec.key], self.messages[spec.key] = label, w.HTML()
@@ -648,8 +652,7 @@ class InputRows:
         else:
             control = w.FloatSlider(value=value, min=spec.low, max=spec.high, step=spec.step, readout=False,
                                     continuous_update=False, tooltip=spec.text, layout=_grows(w))
-            tooltip = f"{spec.text}: {spec.low:g} to {spec.high:g}"
-            field = w.Text(value=state.texts[spec.key], continuous_update=False, tooltip=tooltip,
+            field = w.Text(value=state.texts[spec.key], continuous_update=False, tooltip=spec.text,
                            layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
             # The field is read by the state, not by the browser's number input, which clamps to
             # the range and drops a decimal comma without a word.
@@ -685,6 +688,10 @@ class InputRows:
                 if field is not None:
                     if field.value.strip() != state.texts[key]:
                         field.value = state.texts[key]
+                    shown = state.shown_spec(key)  # its range in the unit the field shows
+                    tooltip = f"{shown.text}: {shown.low:.6g} to {shown.high:.6g}"
+                    if field.tooltip != tooltip:
+                        field.tooltip = tooltip
                     (field.add_class if key in state.refused else field.remove_class)("dr-refused")
                 self._show_message(state, key)
         finally:
@@ -712,7 +719,8 @@ class InputRows:
         None
         """
         for spec in state.specs:
-            label = label_html(spec, spec.key in changes, state.from_edits(spec.key), state.following(spec.key))
+            label = label_html(spec, spec.key in changes, state.from_edits(spec.key), state.following(spec.key),
+                               state.shown_spec(spec.key))
             if self.labels[spec.key].value != label:  # each value set is a message to the page
                 self.labels[spec.key].value = label
             self._show_message(state, spec.key)
@@ -777,11 +785,27 @@ class MovesEditor:
         self.entry.value = len(kinds) if kinds else None
         self.remove_button.disabled = len(kinds) < 2
         if kinds:
-            mechanism, unit = state.case.motion.mechanism, state.length_unit()
-            size = mechanism.lead if mechanism.type == "ball-screw" else mechanism.diameter
-            self.mechanism_type.value = mechanism.type
-            self.mechanism_size.value = "" if size is None else f"{size.m_as(unit):.6g}"
-            self.mechanism_size.placeholder = f"lead / diameter [{unit}]"
+            self.mechanism_type.value = state.case.motion.mechanism.type
+            self.show_size(state)
+
+    def show_size(self, state: ReviewState) -> None:
+        """The mechanism's lead or diameter in the unit system the fields show.
+
+        Parameters
+        ----------
+        state : calc.review.state.ReviewState
+            The review.
+
+        Returns
+        -------
+        None
+        """
+        if state.case is None or state.case.motion is None:
+            return
+        mechanism, unit = state.case.motion.mechanism, state.length_unit()
+        size = mechanism.lead if mechanism.type == "ball-screw" else mechanism.diameter
+        self.mechanism_size.value = "" if size is None else f"{size.m_as(unit):.6g}"
+        self.mechanism_size.placeholder = f"lead / diameter [{unit}]"
 
 
 def _grows(w):
@@ -809,6 +833,7 @@ def _build_widgets(p: DesignReview, w, path: Path) -> None:
     p.undo_button = _button(w, "undo", "the values before the last change", "4.2em", p.undo, fixed=True, disabled=True)
     p.redo_button = _button(w, "redo", "the change undone last", "4.2em", p.redo, fixed=True, disabled=True)
     top = w.HBox([p.case_file, p.reset, p.undo_button, p.redo_button], layout=w.Layout(width="100%"))
+    top.add_class("dr-top")  # its buttons go under the chooser where the column is too narrow, never cut
     p.status = w.HTML(state_html())
     p.results = w.HTML(layout=w.Layout(width="100%"))
     p.load_cycle = w.HTML(layout=w.Layout(width="100%", max_width="560px"))  # SVG, drawn by the browser
@@ -831,7 +856,7 @@ def _options(p: DesignReview, w):
                                   tooltip=f"list every candidate in the tables, not the best {SHOWN_CANDIDATES}")
     p.ratio_search = w.Checkbox(description="ratio search", indent=False, layout=_grows(w),
                                 tooltip="the case at every ratio of the gearbox catalog, and the ratio to pick")
-    p.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the results",
+    p.units = w.ToggleButtons(options=["SI", "inch-pound"], tooltip="the unit system of the inputs and the results",
                               style={"button_width": "7.5em"}, layout=w.Layout(width="auto", flex="0 0 auto"))
     for name, widget in (("all_candidates", p.all_candidates), ("ratio_search", p.ratio_search), ("units", p.units)):
         widget.observe(lambda change, name=name: p._option(name, change["new"]), names="value")

@@ -107,6 +107,10 @@ LAUNCH = ("import sys; sys.modules['rfc3987_syntax'] = None\n"
           "from voila.app import main; main()")
 
 
+#: The JupyterLab extensions the page loads: the widgets' manager (Voilà's own for ipywidgets 8).
+PAGE_EXTENSIONS = ("@jupyter-widgets/jupyterlab-manager", "@voila-dashboards/widgets-manager8")
+
+
 def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = round(60 * IDLE_MINUTES),
             reports: Path = Path("reports")) -> list[str]:
     """The Voilà command line of the review page.
@@ -131,6 +135,9 @@ def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = round(60 * IDL
         sys.executable, "-c", LAUNCH, str(PAGE), "--no-browser", f"--port={port}", f"--Voila.ip={ip}",
         f"--Voila.root_dir={served_root(reports)}", f"--VoilaConfiguration.file_allowlist={allowed(reports)!r}",
         "--strip_sources=True", "--show_tracebacks=False", "--theme=light",
+        # The page's scripts: the widgets' and nothing else of the environment's JupyterLab extensions
+        # (jupytext's, ipylab's, pygments' styles: some 250 kB the browser would load and run first).
+        f"--VoilaConfiguration.extension_allowlist={list(PAGE_EXTENSIONS)!r}",
         # One kernel waits with the panel already drawn, so a page is ready at once; its
         # successor starts when a page takes it.
         "--preheat_kernel=True", "--pool_size=1",

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 import re
+import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -29,6 +30,7 @@ from ..sections.ratios import search as search_ratios
 from .edit import changed_text, edited_case, moves_edits, value_text
 from .inputs import (MECHANISM, MOVE_TIMES, SELECTION, TYPED, InputSpec, input_edits, is_inch_pound, option_text,
                      read_typed, review_specs)
+from .units import ShownUnits
 from .keep import save_path, write_case
 from .view import evaluated
 
@@ -131,6 +133,12 @@ class Screen:
         Key path -> (number or part, unit) of each input changed (:meth:`ReviewState.changes`).
     text : str, optional
         The case file as changed, as saved (:meth:`ReviewState.case_text`); None: unchanged.
+    file_texts : dict, optional
+        Key path -> the changed inputs' texts in the file's units (:meth:`ReviewState.file_texts`); None: the
+        fields' texts are those.
+    factors : dict, optional
+        Key path -> what a value in the file's unit is multiplied by to show it, for each input shown in
+        another unit (:meth:`ReviewState.unit_factors`).
     """
 
     case: Case | None
@@ -143,11 +151,13 @@ class Screen:
     texts: dict
     changes: dict
     text: str | None = None
+    file_texts: dict | None = None
+    factors: dict = dataclasses.field(default_factory=dict)
 
     @property
     def changed_texts(self) -> dict:
-        """The field texts of the changed inputs (the page's address carries them)."""
-        return {key: self.texts[key] for key in self.changes}
+        """The texts of the changed inputs in the file's units (the page's address and the variants carry them)."""
+        return {key: (self.texts if self.file_texts is None else self.file_texts)[key] for key in self.changes}
 
     def _section(self, name: str):
         """The result of the section ``name`` (:class:`calc.sections.protocol.Result`), None
@@ -218,7 +228,7 @@ def without_folder(text: str, path: Path) -> str:
     return text.replace(str(path.parent) + "/", "")
 
 
-class ReviewState:
+class ReviewState(ShownUnits):
     """The review of the case file ``path``: the case, its inputs' values and their history.
 
     Nothing is read until :meth:`load`. An operation that cannot be made raises
@@ -261,7 +271,7 @@ class ReviewState:
         self.path = Path(path)
         self.file_text: str | None = None
         self.file_units = "SI"
-        self.units = "SI"
+        self._units = "SI"
         self.all_candidates = False
         self.ratio_search = False
         self.moves: list = []
@@ -322,7 +332,7 @@ class ReviewState:
         self.case, self.moves, self.specs, self.refused = case, moves, specs, {}
         self.pinned = {s.key for s in specs if s.follows and s.key in pinned}
         self.values = {s.key: values.get(s.key, s.value) for s in specs}
-        self.texts = {s.key: s.shown_text(self.values[s.key]) for s in specs}
+        self.texts = {s.key: self.field_text(s.key, self.values[s.key]) for s in specs}
         self._follow()
 
     def _follow(self) -> list:
@@ -336,7 +346,7 @@ class ReviewState:
                     self.values[spec.key] = v
                     moved.append(spec.key)
                 if spec.key not in self.refused:
-                    self.texts[spec.key] = spec.shown_text(v)
+                    self.texts[spec.key] = self.field_text(spec.key, v)
         return moved
 
     def _pin(self, key: str, value) -> None:
@@ -404,7 +414,7 @@ class ReviewState:
             return False
         self.values[key] = value
         if key not in self.refused:  # a refused text stays in its field until typed again
-            self.texts[key] = self.spec(key).shown_text(value)
+            self.texts[key] = self.field_text(key, value)
         self._follow()
         self.history.push(self.snapshot())
         return True
@@ -425,19 +435,22 @@ class ReviewState:
         bool
             Whether the results change: a value changed, or a refusal made or taken back.
         """
-        spec = self.spec(key)
+        if key not in self.refused and text.strip() == self.texts[key]:
+            return False  # the field's own text again: nothing typed (a converted value would move by its rounding)
+        spec, shown = self.spec(key), self.shown_spec(key)
         try:
-            v = read_typed(text, spec)
+            typed = read_typed(text, shown)  # in the unit the field shows
         except CalcError as exc:
             self.refused[key] = (text, str(exc))
             self.texts[key] = text.strip()
             return True
+        v = typed if shown is spec else float(Q_(typed, shown.unit).m_as(spec.unit))
         was_refused = self.refused.pop(key, None) is not None
         pinned = set(self.pinned)
         self._pin(key, v)
         changed = self.values[key] != v or pinned != self.pinned
         self.values[key] = v
-        self.texts[key] = spec.field_text(v) if changed else f"{v:g}"
+        self.texts[key] = shown.field_text(typed) if changed else f"{typed:g}"
         self._follow()
         if changed:
             self.history.push(self.snapshot())
@@ -624,7 +637,7 @@ class ReviewState:
         for key, v in values.items():
             self.values[key] = v
             if key not in self.refused:
-                self.texts[key] = self.spec(key).shown_text(v)
+                self.texts[key] = self.field_text(key, v)
 
     # -- the moves edited: entries added and removed, the mechanism's type changed -----------------
 
@@ -714,21 +727,21 @@ class ReviewState:
                     raise CalcError(f"a {type_} needs its {what}: expected a number above zero "
                                     f"(in {self.length_unit()}), found {as_found(size_text.strip())}")
                 size = Q_(float(t), self.length_unit())
-            edit = mechanism_edit(self.changed_case(), type_, size, self.length_unit() == "in")
+            edit = mechanism_edit(self.changed_case(), type_, size, self.file_units == "inch-pound")
         except CalcError as exc:
             raise CalcError(self.in_words(str(exc))) from None
         self._edit_moves(edit)
         return edit[3]
 
     def length_unit(self) -> str:
-        """The unit of a mechanism's lead or diameter.
+        """The unit of a mechanism's lead or diameter as its field shows it (the file keeps its own).
 
         Returns
         -------
         str
-            ``"in"`` where the case writes inch-pound, else ``"mm"``.
+            ``"in"`` where the inputs are shown in inch-pound, else ``"mm"``.
         """
-        return "in" if self.file_units == "inch-pound" else "mm"
+        return "in" if self.units == "inch-pound" else "mm"
 
     def follow_moves(self, moves: list) -> bool:
         """The edits of the moves a link carries: the case file's moves with those edits, at the
@@ -806,7 +819,8 @@ class ReviewState:
                 ratios = self.in_words(str(exc))
         typed = self.case.motion is not None and case.motion is None
         left_out = [self.in_words(x) for x in left_out]
-        self.shown = Screen(case, report, left_out, None, ratios, typed, moves, texts, changes, text)
+        self.shown = Screen(case, report, left_out, None, ratios, typed, moves, texts, changes, text, self.file_texts(),
+                            self.unit_factors())
         return self.shown
 
 

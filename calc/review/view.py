@@ -48,6 +48,11 @@ STYLE = f"""<style>
 .dr .refused {{ background: #fff0f0; border: 1px solid {FAIL_COLOR}; padding: 3px 6px; margin: 2px 0 6px; }}
 .dr td.differs {{ background: #fff4d6; font-weight: 600; }}
 .dr .values {{ color: #333; }} .dr .values b {{ font-weight: 600; }} .dr .note {{ color: #666; font-size: 12px; }}
+.dr .note, .dr .checked-at {{ white-space: normal; overflow-wrap: anywhere; }}
+/* the variants' names wrap in their column heads, so that every variant's column is on the screen */
+.dr.dr-variants table {{ width: 100%; }}
+.dr.dr-variants th {{ white-space: normal; overflow-wrap: anywhere; min-width: 6em; vertical-align: bottom; }}
+.dr.dr-variants td:first-child {{ white-space: normal; min-width: 7em; }}
 </style>"""
 
 

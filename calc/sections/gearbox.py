@@ -175,10 +175,14 @@ class GearboxResult(Result):
     steps : list, optional
         (title, :class:`calc.core.formula.Step`, what it is compared with) of the best-ranked
         row's checks (:func:`check_steps`).
+    inertia_note : str, optional
+        Where the case fits a coupling between motor and gearbox: that the candidates' λ counts their
+        ``J_1`` without it, which the motor's check counts (one λ, said where another is shown).
     """
 
     selection: GearboxSelection
     steps: list = field(default_factory=list)
+    inertia_note: str | None = None
     ranking = RANKING
 
     def to_json(self, candidates: int | None = SHOWN_CANDIDATES) -> dict:
@@ -317,7 +321,12 @@ class GearboxSection(Section):
         selection = gearbox_selection(case)
         if axis.gearbox is not None:  # chosen with the motor (calc.sections.axis)
             selection.put_first(axis.gearbox)
-        return GearboxResult(selection, check_steps(case, selection))
+        given = coupling.SECTION.inputs(case)
+        note = None
+        if selection.inertia_ratio is not None and given is not None and given.side == "input":
+            note = ("λ of the candidates counts each gearbox's J_1 alone: the coupling between motor and gearbox is "
+                    "chosen after the gearbox; the motor's check, the ratio search and the dynamics count its J too")
+        return GearboxResult(selection, check_steps(case, selection), note)
 
 
 SECTION = GearboxSection()

@@ -159,6 +159,86 @@ def optimal(case: Case, s: RatioSearch, coupling) -> OptimalRatio:
     return OptimalRatio(float(step.result.m_as("")), step, which, pick)
 
 
+@dataclass(frozen=True)
+class CheckedAt:
+    """The gearbox the case's evaluation checks, at its ratio, beside the search's pick: the same
+    row where the pick is that ratio, else a sentence that says why the search picks another.
+
+    Parameters
+    ----------
+    ratio : float
+        The case's ratio [1] (its gearbox's).
+    part : str
+        The gearbox the case is checked with (the gearbox section's first row).
+    same : bool
+        Whether the search picks that ratio (and so that gearbox).
+    said : str
+        In one sentence: which gearbox the case is checked with, and where and why the pick differs.
+    """
+
+    ratio: float
+    part: str
+    same: bool
+    said: str
+
+    def to_json(self) -> dict:
+        """``ratios.checked``.
+
+        Returns
+        -------
+        dict
+            ratio, part, same, said.
+        """
+        return {"ratio": self.ratio, "part": self.part, "same": self.same, "said": self.said}
+
+
+def checked_at(s: RatioSearch, part: str, named: bool, fails: tuple = ()) -> CheckedAt | None:
+    """The case's own gearbox and ratio against the search's pick, in words.
+
+    Parameters
+    ----------
+    s : calc.domain.ratios.RatioSearch
+        The search, run with ``kept=part``.
+    part : str
+        The gearbox the case is checked with.
+    named : bool
+        Whether the case names it (``gearbox.part``) rather than its ratio's ranking choosing it.
+    fails : tuple of str, optional
+        Why the case's evaluation fails its gearbox or motor (empty where both pass): said where the search
+        picks the case's ratio all the same.
+
+    Returns
+    -------
+    CheckedAt or None
+        None where the part is not among the search's rows (a partial row).
+    """
+    at = np.flatnonzero(s.parts == part)
+    if not len(at):
+        return None
+    k = int(at[0])
+    ratio, how = float(s.ratios[k]), "gearbox.part" if named else "chosen at gearbox.ratio"
+    head = f"The case is checked at its ratio {ratio:g} with {part} ({how})"
+    if s.pick == k:
+        failing = "" if not fails else f", though the evaluation fails it there ({fails[0]})"
+        return CheckedAt(ratio, part, True, f"{head}: the search picks the same{failing}.")
+    if s.pick is None:
+        return CheckedAt(ratio, part, False, f"{head}; the search picks no ratio.")
+    if not s.feasible[k]:
+        fails = s.gearbox_reasons(k)
+        why = f"at {ratio:g} {part} fails ({fails[0]})" if fails else \
+            f"at {ratio:g} the motor fails ({(s.motor_reasons(k) or ['a check not made'])[0]})"
+    elif not s.inertia_within[k] and s.inertia_within[s.pick]:
+        why = f"at {ratio:g} λ = {sig(s.inertia_ratio[k], 3)} exceeds {s.inertia_limit:g}"
+    elif s.load is not None:
+        why = (f"it needs the lower RMS motor torque, {fmt(s.load.rms[s.pick], 'N*m')} against "
+               f"{fmt(s.load.rms[k], 'N*m')} at {ratio:g}")
+    else:
+        why = "the rule puts it first"
+    pick = f"{s.ratios[s.pick]:g} ({s.parts[s.pick]})"
+    return CheckedAt(ratio, part, False, f"{head}; the search picks ratio {pick}, since {why}: set "
+                                         f"[gearbox] ratio = {s.ratios[s.pick]:g} to check that one in full.")
+
+
 @dataclass
 class RatioResult:
     """The ratio search of a case, as the ``ratios`` command writes it.
@@ -170,15 +250,18 @@ class RatioResult:
     search : calc.domain.ratios.RatioSearch
         Every ratio of the gearbox catalog, evaluated, and the pick.
     notes : list of str
-        What the search kept to or left out (the motor kept at every ratio, a part not kept to).
+        What the search kept to or left out (the motor kept at every ratio, the case's gearbox at its ratio).
     optimal : OptimalRatio or None, optional
         The inertia-matching ratio beside the pick.
+    checked : CheckedAt or None, optional
+        The gearbox the case is checked with, at its ratio, against the pick.
     """
 
     case: Case
     search: RatioSearch
     notes: list
     optimal: OptimalRatio | None = None
+    checked: CheckedAt | None = None
 
     def verdict(self) -> Verdict:
         """True when a ratio can be picked, else False with the reason.
@@ -249,6 +332,7 @@ class RatioResult:
                                                  "reason": s.reason},
             "reason": s.reason,
             "optimal_ratio": None if self.optimal is None else self.optimal.to_json(),
+            "checked": None if self.checked is None else self.checked.to_json(),
             "notes": list(self.notes),
             "verdict": self.verdict().to_json(),
         }
@@ -263,7 +347,8 @@ class RatioResult:
             The text, notes last.
         """
         title = f"{self.case.title}: the ratio"
-        lines = [title, "=" * len(title), self.search.reason, f"Rule: {self.search.rule}.",
+        lines = [title, "=" * len(title), self.search.reason,
+                 *([] if self.checked is None else [self.checked.said]), f"Rule: {self.search.rule}.",
                  *([] if self.optimal is None else [self.optimal.line()]), "",
                  f"{'ratio':>6}  {'gearbox':<14} {'verdict':<7} {'util.':>6} {'λ':>7} {'T_1peak':>10} "
                  f"{'T_1rms':>10} {'n_1':>9}"]
@@ -304,8 +389,8 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
         raise CalcError(f"{case.path}: gearbox: the ratio search needs a [gearbox] table (its catalog gives the "
                         "ratios to try), found none")
     notes = []
-    evaluated = results_of(case, ("axis", "coupling")) if evaluated is None else evaluated
-    axis = evaluated["axis"]
+    evaluated = results_of(case, ("axis", "gearbox", "coupling", "motor")) if evaluated is None else evaluated
+    axis, gearbox = evaluated["axis"], evaluated.get("gearbox")
     if axis.chosen is not None:  # a motor from the catalog: the one the case chooses at its ratio
         notes.append(f"the motor is {axis.chosen}, the motor catalog's choice at the case's ratio "
                      f"{sig(case.ratio.m_as(''))}, kept at every ratio (python -m calc combinations chooses motor "
@@ -313,15 +398,33 @@ def search(case: Case, evaluated: dict | None = None) -> RatioResult:
     case = axis.case
     catalog, hubs = catalogs(case)
     load = output_load(case)
+    kept = None
+    if gearbox is not None:  # the gearbox the case is checked with: its ratio's row, one gearbox per ratio
+        kept = str(gearbox.selection.catalog.parts[gearbox.selection.order[0]])
     if case.gearbox_part is not None:
-        notes.append(f"gearbox.part = {case.gearbox_part!r} is not kept to: every row of the catalog is tried")
+        notes.append(f"gearbox.part = {case.gearbox_part!r} is kept at its ratio; every other ratio takes its best "
+                     "row of the catalog")
     if not load.sampled:
         notes.append(TYPED)
     coupling = evaluated.get("coupling")
     s = search_ratios(
         catalog, case.profile, load, case.motor_rated_torque, case.motor_max_speed,
         lambda J_1: rotor_inertia(case, J_1, coupling),
-        hubs=hubs, inertia_limit=case.motor_max_inertia_ratio[0], **selection_inputs(case),
+        hubs=hubs, inertia_limit=case.motor_max_inertia_ratio[0], kept=kept, **selection_inputs(case),
     )
     notes += s.notes
-    return RatioResult(case, s, notes, optimal(case, s, coupling))
+    checked = None if kept is None else checked_at(s, kept, case.gearbox_part is not None, _fails(evaluated))
+    return RatioResult(case, s, notes, optimal(case, s, coupling), checked)
+
+
+def _fails(evaluated: dict) -> tuple:
+    """Why the evaluation fails the case's gearbox or motor, one sentence each (a heading ending in a colon
+    with its first line)."""
+    out = []
+    for name in ("gearbox", "motor"):
+        result = evaluated.get(name)
+        verdict = None if result is None else result.verdict()
+        if verdict is not None and verdict.passes is False and verdict.reasons:
+            r = verdict.reasons
+            out.append(f"{r[0]} {r[1]}" if r[0].endswith(":") and len(r) > 1 else r[0])
+    return tuple(out)

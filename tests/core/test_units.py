@@ -18,6 +18,21 @@ def test_one_application_registry():
     assert pint.get_application_registry().get() is ureg or pint.get_application_registry() is ureg
 
 
+def test_a_unit_text_is_parsed_once_to_what_pint_parses():
+    import pint
+
+    fresh = pint.UnitRegistry()  # pint's own parse, kept nowhere
+    parse = ureg._parse_units_as_container
+    for text in ("N*m", "kg*cm**2", "N*m/arcmin", "lbf*in", "rev/min"):
+        before = parse.cache_info().hits
+        first, again = parse(text), parse(text)
+        assert again is first and parse.cache_info().hits == before + 1
+        if text != "rev/min":  # the alias is the package's own
+            assert dict(first) == dict(fresh.parse_units_as_container(text))
+    # 1 lbf·in = 0.1129848290276167 N·m (4.4482216152605 N x 0.0254 m), every time it is converted
+    assert [Q_(1.0, "lbf*in").m_as("N*m") for _ in range(3)] == [pytest.approx(0.1129848290276167, rel=1e-15)] * 3
+
+
 @pytest.mark.parametrize(
     "text, kind, unit, value",
     [

@@ -1,6 +1,6 @@
 """Drive-train dynamics (calc.domain.dynamics): a two-mass chain's resonance and anti-resonance and
 their ratio against √(1 + λ), a three-mass chain's anti-resonances written out, a strain-wave gear's
-first mode at two working torques on its K1–K3 curve, the frequency response (python-control), and
+first mode at two working torques on its K1–K3 curve, the frequency response (against python-control's), and
 the laws: anti-resonances interlace the resonances, the response falls as 1 / (ΣJ ω) far below them."""
 
 import math
@@ -126,6 +126,46 @@ def test_frequency_response_marks_resonance_and_anti_resonance():
     # A notch at the anti-resonance, a peak at the resonance.
     assert r.magnitude[1] < 0.1 * rigid[1] and r.magnitude[2] > 10 * rigid[2]
     assert r.phase[0] == pytest.approx(-90, abs=0.1)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.floats(0.5, 500), min_size=2, max_size=5), st.floats(1e2, 1e5), st.floats(0, 0.3))
+def test_frequency_response_is_python_controls(inertias, spring, damping):
+    # The reference: python-control's control.frequency_response of the same model (control.ss of
+    # state_space), which the package evaluates itself in numpy to keep python-control out of a case.
+    import control
+
+    from calc.domain.dynamics import state_space
+
+    J, C = Q_(inertias, KG_CM2), Q_([spring] * (len(inertias) - 1), "N*m/rad")
+    f = np.geomspace(0.5, 5e3, 40)
+    mine = frequency_response(J, C, Q_(f, "Hz"), damping=max(damping, 1e-3))
+    theirs = control.frequency_response(state_space(J, C, max(damping, 1e-3)), 2 * np.pi * f)
+    np.testing.assert_allclose(mine.magnitude, np.asarray(theirs.magnitude).reshape(-1), rtol=1e-9)
+    np.testing.assert_allclose(mine.phase, np.degrees(np.asarray(theirs.phase).reshape(-1)), rtol=0, atol=1e-7)
+
+
+def test_an_undamped_chain_at_its_resonance_is_infinite():
+    # ζ = 0: the pole pair lies on the imaginary axis at f_r = 397.887 Hz (test_two_masses_by_hand).
+    J, C = Q_([2, 8], KG_CM2), Q_([1000], "N*m/rad")
+    f_r = modes(J, C).natural_frequencies.m_as("Hz")[0]
+    r = frequency_response(J, C, Q_([1.0, f_r], "Hz"), damping=0)
+    assert r.magnitude[0] == pytest.approx(1 / (2 * math.pi * 10e-4), rel=1e-4) and r.magnitude[1] > 1e12
+
+
+def test_a_case_and_its_frequency_response_need_no_python_control():
+    # python-control and the SciPy parts it imports (pint imports SciPy's top, 8 ms) take longer to
+    # import than the design review's first page takes to compute; the response is evaluated without
+    # them (a fresh interpreter: what a kernel imports).
+    import subprocess
+    import sys
+
+    code = ("import sys; from calc.sections import evaluate; from calc.sections.case import read_case;"
+            " r = evaluate(read_case('cases/indexing-table.toml'))['dynamics'].response;"
+            " assert r.magnitude.size > 100, r;"
+            " print(sorted(set(sys.modules) & {'control', 'scipy.signal', 'scipy.linalg'}))")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == "[]"
 
 
 def test_torque_reversals():

@@ -159,3 +159,74 @@ def test_a_catalog_motor_is_chosen_once_and_kept_at_every_ratio():
     assert lam[10] == pytest.approx((0.93 + 0.5 + 15) / 1.74)
     assert lam[8] == pytest.approx((0.53 + 0.5 + 1500 / 64) / 1.74)
     assert any("the motor is SGMUH-10DA, the motor catalog's choice at the case's ratio 10" in n for n in r.notes)
+
+
+def _derived(write_case, change=lambda text: text):
+    """The example (its motor from the catalog, its coupling and accuracy chain) written elsewhere, changed."""
+    from ..conftest import DERIVED_EXAMPLE, ROOT
+
+    return read_case(write_case(change(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{ROOT}/data/'))))
+
+
+def test_at_the_cases_ratio_the_search_shows_the_gearbox_the_case_is_checked_with(write_case):
+    # A part the case names is kept at its ratio: NPT025-10 named, the catalog chooses the smallest motor that
+    # pairs with it, SGM7G-03A (M_max 5.88 N·m), and the evaluation checks NPT025-10: T_2max = T_1B · i · f_s · η
+    # = 5.88 · 10 · 1.6 · 0.97 = 91.26 N·m > T_2B 90 N·m, it fails. The search showed NPT035-10 at ratio 10, the
+    # ranking's first, and picked it: two gearboxes at one ratio. It shows NPT025-10 failing there, and says that
+    # it picks another ratio and why.
+    case = _derived(write_case, lambda t: t.replace('family = "NPT"\n', 'family = "NPT"\npart = "NPT025-10"\n'))
+    results = evaluate(case)
+    gearbox = results["gearbox"].selection
+    assert str(gearbox.catalog.parts[gearbox.order[0]]) == "NPT025-10" and results.every["axis"].case.motor_part is None
+    assert results.every["axis"].chosen == "SGM7G-03A"
+    r = search(results.case, results.every)
+    s = r.search
+    at = int(np.flatnonzero(s.ratios == 10)[0])
+    assert str(s.parts[at]) == "NPT025-10" and not s.feasible[at]
+    assert "91.26 N·m > rated 90 N·m" in " ".join(s.gearbox_reasons(at))
+    assert s.ratios[s.pick] != 10
+    j = r.to_json()["checked"]
+    assert j["ratio"] == 10 and j["part"] == "NPT025-10" and j["same"] is False
+    assert j["said"].startswith("The case is checked at its ratio 10 with NPT025-10 (gearbox.part); the search picks "
+                                f"ratio {s.ratios[s.pick]:g} ({s.parts[s.pick]}), since at 10 NPT025-10 fails (T_2max")
+    assert j["said"].endswith(f"set [gearbox] ratio = {s.ratios[s.pick]:g} to check that one in full.")
+    assert any("gearbox.part = 'NPT025-10' is kept at its ratio" in n for n in r.notes)
+    assert j["said"] in r.summary()
+
+
+@pytest.mark.parametrize("inertia, family", [(300, True), (1500, True), (1600, True), (2500, False)])
+def test_one_gearbox_at_the_cases_ratio_and_a_pick_that_differs_is_said(write_case, inertia, family):
+    # Over load inertias where the catalog chooses another motor (300: MHD041A-144 with NPT025-10; 1600: none is
+    # confirmed and the closest pair is checked) and over every family of the catalog (2500 kg·cm²: the case is
+    # checked at its ratio 10, the rule's lowest RMS motor torque is at another ratio), the search's gearbox at the
+    # case's ratio is the one the evaluation checks, and a pick elsewhere is said with the case's own.
+    def change(text):
+        text = text.replace('inertia = "1500 kg*cm**2"', f'inertia = "{inertia} kg*cm**2"')
+        return text if family else text.replace('family = "NPT"\n', "")
+
+    results = evaluate(_derived(write_case, change))
+    gearbox = results["gearbox"].selection
+    checked_with = str(gearbox.catalog.parts[gearbox.order[0]])
+    r = search(results.case, results.every)
+    s = r.search
+    at = int(np.flatnonzero(s.ratios == 10)[0])
+    assert str(s.parts[at]) == checked_with
+    assert r.checked.part == checked_with and r.checked.same == (s.pick == at)
+    if s.pick == at:
+        assert r.checked.said.endswith("the search picks the same.")
+    else:
+        assert f"the search picks ratio {s.ratios[s.pick]:g} ({s.parts[s.pick]}), since " in r.checked.said
+
+
+def test_a_pick_at_the_cases_ratio_that_the_evaluation_fails_is_said(write_case):
+    # SGMUH-10DA named (1.74 kg·cm²) under a table of 2500 kg·cm²: at ratio 10 with NPT035-10 (J_1 0.93) and the
+    # coupling AKN-18 (0.5), λ = (0.93 + 0.5 + 2500 / 10²) / 1.74 = 15.19 > 10, and lower ratios give more. No ratio
+    # keeps λ within the limit, so the search picks the lowest λ, the case's own ratio, which the motor's check
+    # fails: the sentence says so instead of a bare "the same".
+    case = _derived(write_case, lambda t: t.replace('catalog = "motors"\n', 'catalog = "motors"\npart = "SGMUH-10DA"\n')
+                    .replace('inertia = "1500 kg*cm**2"', 'inertia = "2500 kg*cm**2"'))
+    r = search(case)
+    assert r.checked.same and r.search.inertia_ratio[r.search.pick] == pytest.approx((0.93 + 0.5 + 25) / 1.74)
+    assert r.checked.said.startswith("The case is checked at its ratio 10 with NPT035-10 (chosen at gearbox.ratio): "
+                                     "the search picks the same, though the evaluation fails it there (")
+    assert "SGMUH-10DA: λ <= λ_max: required 15.19 > rated 10" in r.checked.said

@@ -314,3 +314,43 @@ def test_a_preamble_that_cannot_be_compiled_is_tried_once(tmp_path, monkeypatch)
 
     monkeypatch.setattr(subprocess, "run", no_xelatex)
     assert publish.compiled_preamble(tex) is None
+
+
+@needs_tex
+def test_a_report_built_again_takes_one_pass_and_typesets_the_same(reports, tmp_path):
+    import subprocess
+
+    def built(name, kept):
+        exporter = publish.exporter(kept)
+        passes = []
+        run = exporter.run_command
+        exporter.run_command = lambda *args, **kwargs: passes.append(1) or run(*args, **kwargs)
+        body, _ = exporter.from_notebook_node(publish.report_notebook(reports[name]),
+                                              resources={"metadata": {"name": name}})
+        (tmp_path / f"{name}.pdf").write_bytes(body)
+        text = subprocess.run(["pdftotext", str(tmp_path / f"{name}.pdf"), "-"], capture_output=True, text=True,
+                              check=True).stdout
+        return len(passes), re.sub(r"Built .*UTC", "", text)
+
+    kept = tmp_path / "kept" / "pass-example"
+    first, text = built("example", kept)
+    assert first == 2 and kept.with_name("pass-example.aux").is_file()  # page X of Y: the second pass
+    again, text_again = built("example", kept)
+    assert again == 1 and text_again == text
+    # The files kept from another report: its labels and last page have moved, xelatex says so and passes again.
+    other, text_other = built("shaft-24", kept)
+    assert other == 2 and text_other == built("shaft-24", None)[1]
+
+
+def test_kept_pass_files_unused_for_a_month_are_removed(tmp_path):
+    import os
+    import time
+
+    old, recent = tmp_path / "pass-old.aux", tmp_path / "pass-recent.aux"
+    for path in (old, recent, tmp_path / "report-x.fmt"):
+        path.write_text("x", encoding="utf-8")
+    month_ago = time.time() - publish.PASS_FILES_KEPT - 60
+    os.utime(old, (month_ago, month_ago))
+    os.utime(tmp_path / "report-x.fmt", (month_ago, month_ago))  # a compiled preamble is not a pass file
+    publish._forget_old_passes(tmp_path)
+    assert not old.exists() and recent.exists() and (tmp_path / "report-x.fmt").exists()

@@ -287,6 +287,8 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     # Culled within a minute of the page closing: idle 45 s, looked at every 15 s.
     assert "--MappingKernelManager.cull_idle_timeout=45" in argv and "--MappingKernelManager.cull_interval=15" in argv
     assert "--MappingKernelManager.cull_connected=False" in argv
+    # The page loads the widgets' scripts and no other JupyterLab extension of the environment.
+    assert f"--VoilaConfiguration.extension_allowlist={list(serve.PAGE_EXTENSIONS)!r}" in argv
     # Checked by hand in a browser with idle_seconds=6: two pages opened and closed, their two
     # kernels culled some 8 s later, the waiting kernel kept.
     assert "--MappingKernelManager.cull_idle_timeout=6" in serve.command(8866, idle_seconds=6)
@@ -696,7 +698,18 @@ def test_the_inch_case_shows_inputs_and_results_in_inch_pound_and_switches_to_si
     t_si = float(re.search(r"<sub>2max</sub> ([\d.]+) N·m", si).group(1))
     t_in = float(re.search(r"<sub>2max</sub> ([\d.]+) lbf·in", inch).group(1))
     assert t_in * 0.112985 == pytest.approx(t_si, rel=2e-3)
+    # The fields switch too: 60 lb = 60 · 0.45359237 kg = 27.2155 kg, its label in kg; 30 kg typed there is
+    # 30 / 0.45359237 = 66.1387 lb, which the file keeps in lb.
+    assert panel.fields["mechanism.mass"].value == "27.2155" and "[kg]" in panel.rows.labels["mechanism.mass"].value
+    assert " [kg]: " in panel.fields["mechanism.mass"].tooltip  # its range too
+    panel.fields["mechanism.mass"].value = "30"
+    panel.settled()
+    saved = panel.state.case_text()
+    assert 'mass = "66.13867' in saved and saved.split('mass = "66.1', 1)[1].split("\n")[0].endswith(' lb"')
     # A changed inch value is saved as the file writes it.
+    panel.units.value = "inch-pound"
+    panel.settled()
+    assert panel.fields["mechanism.mass"].value == "66.1387"
     panel.fields["mechanism.mass"].value = "70"
     panel.settled()
     assert 'mass = "70 lb"' in panel.state.case_text()

@@ -273,6 +273,11 @@ def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(tmp_
         assert "coupling AKN-18 by 2 fer ≤ f1 at 75 %" in decides
         assert "gearbox NPT035-10 by dmotor ≤ dhub,max at 50 %" in decides
         assert "T2max 100.9 N·m (with η 0.97)" in page.inner_text(RESULTS)
+        # Finding 6: one λ, or a word where another is shown: the gearbox candidates' λ (NPT035-10: (0.93 + 15) / 1.74
+        # = 9.16) counts its J_1 alone, the motor's check (0.93 + 0.5 + 15) / 1.74 = 9.443 the coupling AKN-18 too.
+        shown = page.inner_text(RESULTS)
+        assert "λ, J1 alone" in shown
+        assert "the motor's check, the ratio search and the dynamics count its J too" in shown
         cells = page.locator(f"{RESULTS} table").first.locator("tr td:last-child")
         assert cells.count() >= 10
         for k in range(cells.count()):
@@ -331,6 +336,7 @@ def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
                                  text=True).stdout
         assert f"Design review of axis.toml (sha256 {digest})" in printed and f"calc {__version__}" in printed
         assert "commit" in printed and "Governing checks" in printed
+        _printed_pages_are_a_record(tmp_path / "printed.pdf", __version__)
         assert "Design review of axis.toml" not in page.inner_text(RESULTS)  # on the screen, not shown
         page.locator(".design-review button", has_text="Keep as variant").click()
         page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('kept variant 1')")
@@ -344,6 +350,30 @@ def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
                        check=True)
 
 
+def _printed_pages_are_a_record(pdf, version: str) -> None:
+    """Finding 9: the printed page had a blank first page (JupyterLab keeps an output on one page, and the review is
+    taller than one) and text cut at the right (printed as wide as the screen). Each page carries the case, the date
+    and the version at its head; the first starts with the title block and the verdict; no word runs past the
+    paper's right margin (A4, 595.9 pt wide, 12 mm = 34 pt margins: 562 pt)."""
+    import re
+    import subprocess
+
+    pages = int(re.search(r"Pages:\s+(\d+)", subprocess.run(["pdfinfo", str(pdf)], capture_output=True,
+                                                             text=True).stdout).group(1))
+    assert 2 <= pages <= 12, pages
+    for k in range(1, pages + 1):
+        text = subprocess.run(["pdftotext", "-f", str(k), "-l", str(k), str(pdf), "-"], capture_output=True,
+                              text=True).stdout
+        assert text.startswith("Design review of axis.toml · computed ") and f"calc {version}" in text, k
+        assert f"page {k} of {pages}" in text, k
+    first = subprocess.run(["pdftotext", "-f", "1", "-l", "1", str(pdf), "-"], capture_output=True, text=True).stdout
+    assert "Design review of axis.toml (sha256" in first and "PASS" in first and "Governing checks" in first
+    boxes = subprocess.run(["pdftotext", "-bbox", str(pdf), "-"], capture_output=True, text=True).stdout
+    right = max(float(x) for x in re.findall(r'xMax="([\d.]+)"', boxes))
+    assert right <= 595.9 - 34 + 1, right
+    subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "2", str(pdf), str(SHOTS / "printed")], check=True)
+
+
 def test_an_open_page_offers_the_case_files_saved_since(tmp_path):
     # Finding 11: a case file saved from another page (or put in the folder) is offered by a page already open.
     case = _copy(tmp_path)
@@ -354,3 +384,119 @@ def test_an_open_page_offers_the_case_files_saved_since(tmp_path):
         (tmp_path / "axis-variant-1.toml").write_text(case.read_text().replace('"1500 kg*cm**2"', '"1600 kg*cm**2"'))
         first.wait_for_function("() => document.querySelector('.design-review .dr-case select')"
                                 ".innerText.includes('axis-variant-1.toml')", timeout=30_000)
+
+
+def test_the_screens_report_shows_one_gearbox_at_the_cases_ratio(tmp_path):
+    # Finding 6: NPT025-10 forced from its candidate row; the catalog then pairs it with SGM7G-03A (M_max 5.88 N·m):
+    # T_2max = 5.88 · 10 · 1.6 · 0.97 = 91.26 N·m > T_2B 90 N·m, it fails. The ratio search showed NPT035-10 at ratio
+    # 10 and picked it, beside a chosen NPT025-10. On the page and in the screen's calc report, the search's row at
+    # 10 is NPT025-10, and the sentence under its pick says the case's gearbox and why another ratio is picked.
+    import subprocess
+
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    with served(_copy(tmp_path), reports=tmp_path) as server, browser_page() as page:
+        _open(page, server.url)
+        g = int(page.get_attribute(RESULTS, "data-generation"))
+        page.locator(".design-review label", has_text="ratio search").click()
+        wait_for_results(page, g)
+        _current(page)
+        g = int(page.get_attribute(RESULTS, "data-generation"))
+        candidate = page.locator('.design-review tr[data-part="NPT025-10"]').first
+        candidate.focus()
+        page.keyboard.press("Enter")
+        wait_for_results(page, g)
+        _current(page)
+        page.wait_for_function(f"() => document.querySelector('{RESULTS}').innerText.includes('Ratio search')"
+                               " && document.querySelector('.design-review .checked-at') !== null", timeout=60_000)
+        said = page.inner_text(".design-review .checked-at")
+        assert said.startswith("The case is checked at its ratio 10 with NPT025-10 (gearbox.part); the search picks "
+                               "ratio ")
+        assert "since at 10 NPT025-10 fails (T2max ≤ T2B: required 91.26 N·m > rated 90 N·m" in said
+        row10 = page.locator(f"{RESULTS} h3:text('Ratio search') ~ table tr", has_text="NPT0").filter(
+            has=page.locator("td:first-child", has_text="10"))
+        assert row10.count() == 1 and "NPT025-10" in row10.inner_text() and "NPT035-10" not in row10.inner_text()
+        page.locator(".design-review .checked-at").scroll_into_view_if_needed()
+        page.screenshot(path=str(SHOTS / "ratio-search-forced-part.png"))
+        page.locator(".design-review button", has_text="Calc report of this screen").click()
+        page.wait_for_function("() => /calc report of [^ ]+, the screen/.test(document.querySelector('.design-review')"
+                               ".innerText) || document.querySelector('.design-review').innerText.includes("
+                               "'no calc report')", timeout=180_000)
+        pdf = tmp_path / "axis-variant-1.pdf"
+        text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True).stdout
+        flat = " ".join(text.split())
+        assert "The case is checked at its ratio 10 with NPT025-10 (gearbox.part); the search picks ratio" in flat
+        assert "NPT035-10" not in flat.split("The ratio", 1)[1].split("Rule:", 1)[0]
+
+
+def test_the_unit_switch_converts_the_inputs_and_reads_typed_values_in_its_units(tmp_path):
+    # Finding 7: switched to inch-pound, the example's J_L 1500 kg·cm² shows as 0.15 kg·m² / (0.45359237 kg ·
+    # 0.0254² m²) = 512.576 lb·in²; 600 typed there is 600 lb·in² = 1755.84 kg·cm², which the address keeps in the
+    # file's kg·cm² (a reload shows it in inch-pound again) and a save writes in kg·cm².
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    with served(_copy(tmp_path)) as server, browser_page() as page:
+        _open(page, server.url)
+        g = int(page.get_attribute(RESULTS, "data-generation"))
+        page.locator(".design-review .widget-toggle-buttons button", has_text="inch-pound").click()
+        wait_for_results(page, g)
+        _current(page)
+        page.wait_for_function("() => document.querySelector('.dr-row [data-key=\"mechanism.inertia\"]')"
+                               "?.closest('.dr-row').querySelector('input[type=text]').value === '512.576'")
+        assert "[lb·in²]" in row(page, "mechanism.inertia").locator("[data-key]").inner_text()
+        assert _field(page, "move[1].time") == "0.5"
+        shown = _changed(page, "mechanism.inertia", "600")
+        assert _field(page, "mechanism.inertia") == "600" and "lbf·in" in shown
+        row(page, "mechanism.inertia").scroll_into_view_if_needed()
+        page.screenshot(path=str(SHOTS / "units-inputs-inch-pound.png"))
+        page.wait_for_function("() => decodeURIComponent(location.hash).includes('\"mechanism.inertia\":\"1755.83')")
+        address = page.url
+        page.goto("about:blank")
+        _open(page, address)
+        page.wait_for_function("() => document.querySelector('.dr-row [data-key=\"mechanism.inertia\"]')"
+                               "?.closest('.dr-row').querySelector('input[type=text]').value === '600'", timeout=60_000)
+        _current(page)
+        assert page.inner_text(RESULTS) == shown
+        page.locator(".design-review button", has_text="Save as case file").click()
+        page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('saved as')")
+        saved = (tmp_path / "axis-variant-1.toml").read_text()
+        assert 'inertia = "1755.83792' in saved and 'kg*cm**2"' in saved.split('inertia = "1755.83792', 1)[1][:20]
+
+
+def _beyond(page, selector: str, width: int) -> list:
+    """The elements of ``selector`` whose right edge lies past the viewport's width (a box cut or off-screen)."""
+    return page.evaluate(f"""() => [...document.querySelectorAll({selector!r})]
+        .map(e => [e.textContent.trim().slice(0, 40), Math.round(e.getBoundingClientRect().right)])
+        .filter(([_, right]) => right > {width})""")
+
+
+def test_three_variants_the_history_buttons_and_long_notes_fit_from_1024_to_1920_px(tmp_path):
+    # Finding 8: three variants kept (J_L 1600, 1400 and 1300 kg·cm²): at 1366 px the third variant's column was
+    # off-screen (the column heads, the variants' names, did not wrap); at 1024, 1093 (a 1366 px laptop at 125 %),
+    # 1366 and 1920 px every variant's head and verdict, the reset, undo and redo buttons and every note are within
+    # the viewport's width.
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    with served(_copy(tmp_path)) as server, browser_page({"width": 1366, "height": 768}) as page:
+        _open(page, server.url)
+        for k, inertia in enumerate(("1600", "1400", "1300"), 1):
+            _changed(page, "mechanism.inertia", inertia)
+            page.locator(".design-review button", has_text="Keep as variant").click()
+            page.wait_for_function(f"() => document.querySelector('.design-review').innerText"
+                                   f".includes('kept variant {k}')")
+        page.wait_for_function("() => document.querySelectorAll('.design-review .dr-variants thead th').length === 4")
+        for width in (1024, 1093, 1366, 1920):
+            page.set_viewport_size({"width": width, "height": 768})
+            page.wait_for_timeout(500)
+            table = ".design-review .dr-variants table"
+            assert _beyond(page, f"{table} th, {table} tbody tr:first-child td", width) == [], width
+            assert page.locator(f"{table} tbody tr:first-child td").nth(3).inner_text() == "PASS"
+            assert _beyond(page, ".design-review button, .design-review .note, .design-review .decides", width) == [], \
+                width
+            for name in ("reset", "undo", "redo"):  # not cut by their row either
+                button = page.locator(".design-review button", has_text=name).first
+                clipped = button.evaluate("b => { const r = b.getBoundingClientRect(), p = b.parentElement"
+                                          ".getBoundingClientRect(); return r.right > p.right + 1 || r.width < 20; }")
+                assert not clipped, (width, name)
+            page.locator(f"{table}").scroll_into_view_if_needed()
+            page.screenshot(path=str(SHOTS / f"variants-{width}.png"))
+            page.evaluate("() => window.scrollTo(0, 0)")
+            page.locator(".design-review button", has_text="undo").first.scroll_into_view_if_needed()
+            page.screenshot(path=str(SHOTS / f"history-buttons-{width}.png"))

@@ -349,3 +349,64 @@ def test_a_file_that_does_not_read_back_is_not_said_saved(example, tmp_path, mon
     with pytest.raises(CalcError, match=r"^not saved: lost.toml read back"):
         example.save("lost.toml")
     assert not (tmp_path / "lost.toml").exists()
+
+
+def test_the_unit_switch_shows_and_reads_the_inputs_in_its_system(example):
+    # 1 lb·in² = 0.45359237 kg · (0.0254 m)² = 2.9263965e-4 kg·m² (exact by definition of lb and in), so the
+    # example's J_L 1500 kg·cm² = 0.15 kg·m² shows as 0.15 / 2.9263965e-4 = 512.576 lb·in², and 600 lb·in² typed is
+    # 600 · 2.9263965e-4 = 0.17558379 kg·m² = 1755.8379 kg·cm², which the file keeps in its own unit.
+    example.units = "inch-pound"
+    assert example.texts["mechanism.inertia"] == "512.576"
+    assert example.shown_spec("mechanism.inertia").unit == "lb*in**2"
+    assert example.texts["move[1].time"] == "0.5"  # seconds in both systems
+    assert not example.type_text("mechanism.inertia", "512.576")  # its own text again: no change by rounding
+    assert example.changes() == {}
+    assert example.type_text("mechanism.inertia", "600")
+    assert example.values["mechanism.inertia"] == pytest.approx(1755.83792, rel=1e-8)
+    assert example.texts["mechanism.inertia"] == "600"
+    screen = example.evaluate()
+    assert screen.texts["mechanism.inertia"] == "600"  # what the field shows (the page compares its fields with it)
+    assert screen.changed_texts == {"mechanism.inertia": f"{example.values['mechanism.inertia']:.12g}"}
+    assert screen.factors["mechanism.inertia"] == pytest.approx(1 / 2.9263965e-4 / 1e4, rel=1e-7)
+    text = example.case_text()
+    assert 'inertia = "1755.83792' in text and "kg*cm**2" in text.split('inertia = "1755.83792', 1)[1].split("\n")[0]
+    # A value out of the range is refused in the unit shown; back in SI the field shows kg·cm².
+    assert example.type_text("mechanism.inertia", "1e9") and "lb·in²" in example.refused["mechanism.inertia"][1]
+    example.type_text("mechanism.inertia", "600")
+    example.units = "SI"
+    assert example.texts["mechanism.inertia"] == "1755.84"
+    # The address's values, in the file's unit, give the same screen in a page shown in either system.
+    other = ReviewState(example.path)
+    other.load()
+    other.follow_values(screen.changed_texts)
+    assert other.values["mechanism.inertia"] == pytest.approx(example.values["mechanism.inertia"], rel=1e-11)
+
+
+def test_an_inch_pound_file_shown_in_si_keeps_its_own_units():
+    # linear-axis-inch.toml writes its mass in lb: 60 lb = 27.2155 kg shown in SI; 30 kg typed = 66.1387 lb written.
+    inch = ReviewState(ROOT / "cases" / "linear-axis-inch.toml")
+    inch.load()
+    inch.units = "SI"
+    assert inch.texts["mechanism.mass"] == "27.2155" and inch.shown_spec("mechanism.mass").unit == "kg"
+    assert inch.type_text("mechanism.mass", "30")
+    assert inch.values["mechanism.mass"] == pytest.approx(30 / 0.45359237)
+    assert inch.changes()["mechanism.mass"][1] == "lb"
+
+
+def test_a_lead_typed_in_the_unit_shown_is_written_in_the_files(example):
+    # The example shown in inch-pound: a ball screw of 0.2 in typed is a lead of 0.2 · 25.4 = 5.08 mm, written in mm.
+    example.units = "inch-pound"
+    assert example.length_unit() == "in"
+    assert example.change_mechanism("ball-screw", "0.2").startswith("mechanism rotary -> ball-screw of 0.2 in")
+    assert 'lead = "5.08 mm"' in example.case_text()
+
+
+def test_each_edit_starts_from_the_file_as_written():
+    # The file's parsed text is kept between changes: an edit must never reach the next change's text.
+    text = '[motor]\npeak_torque = "12 N*m"  # T_1B\n[load]\ninertia = "1500 kg*cm**2"\n'
+    first = edited_text(text, [Edit("motor.peak_torque", "16 N*m")], "a.toml")
+    other = edited_text(text, [Edit("load.inertia", "1600 kg*cm**2")], "a.toml")
+    assert first == '[motor]\npeak_torque = "16 N*m"  # (said of the file\'s value 12 N*m) T_1B\n[load]\n' \
+                    'inertia = "1500 kg*cm**2"\n'
+    assert 'peak_torque = "12 N*m"  # T_1B' in other and 'inertia = "1600 kg*cm**2"' in other
+    assert edited_text(text, [], "a.toml") == text
