@@ -63,8 +63,14 @@ browser:
 	  exit 1; \
 	fi
 
+# On every core (pytest-xdist), one worker more than cores: the browser tests spend much of their time waiting
+# for a kernel or a page (one waits a minute for a closed page's kernel to go), which another worker fills.
+# The tests that share a costly fixture, and each notebook's cells, stay on one worker (--dist loadgroup), the
+# long ones handed out first (--no-loadscope-reorder keeps that order), both set in tests/conftest.py.
+# `pytest` alone runs in one process.
+WORKERS := $(shell $(PYTHON) -c "import os; print((os.cpu_count() or 1) + 1)")
 test: setup tex browser
-	$(PY) -m pytest
+	$(PY) -m pytest -n $(WORKERS) --dist loadgroup --no-loadscope-reorder
 
 report: setup tex
 	$(PY) -m calc report $(EXAMPLE) -o reports/indexing-table.pdf

@@ -164,7 +164,16 @@ class ErrorRecord:
     deselected: int = 0
     whole_folder: bool = False
     reason: str = ""
+    merged: int = 0  # on the controller: how many workers' records are merged in
+    session_checks: set[str] = set()  # on the controller: the checks of the whole session selected, which it makes
     item = None  # the test under tests/ being run, or None
+    worker_folder: tuple[str, str] | None = None  # on a worker: its temporary folder, and the run's
+
+    @classmethod
+    def as_in_one_process(cls, message: str) -> str:
+        """A message as a run in one process would have built it: on a worker, its temporary folder
+        named as the run's (10 characters fewer), so that the length check gives the same verdict."""
+        return message.replace(*cls.worker_folder) if cls.worker_folder else message
 
 
 #: Set by .ci/run: a test that needs a tool this machine lacks fails instead of being skipped, so a
@@ -236,6 +245,10 @@ def pytest_configure(config):
     config.addinivalue_line("markers", "needs_tools(*names): the test needs these tools on PATH (TOOLS)")
     from calc.core.errors import CalcError
 
+    if is_worker(config) and config.option.basetemp:
+        # A worker's temporary folders are one level below the run's (pytest-xdist's popen-gwN).
+        worker = Path(config.option.basetemp).resolve()
+        ErrorRecord.worker_folder = (f"{worker}{os.sep}", f"{worker.parent}{os.sep}")
     config.stash[_OWN_INIT] = CalcError.__dict__.get("__init__")
     inherited = CalcError.__init__
 
@@ -246,12 +259,165 @@ def pytest_configure(config):
             if path.is_relative_to(ROOT / "calc"):
                 site = (path.relative_to(ROOT).as_posix(), frame.f_lineno)
                 ErrorRecord.built.add(site)
-                message = str(args[0]) if args else ""
+                message = ErrorRecord.as_in_one_process(str(args[0]) if args else "")
                 if len(message) > len(ErrorRecord.longest.get(site, "")):
                     ErrorRecord.longest[site] = message
         inherited(self, *args, **kwargs)
 
     CalcError.__init__ = __init__
+
+
+# --- The tests on several processes (pytest-xdist, ``make test``) -----------------------------------
+#
+# Each worker records its own error sites and tool skips; the controller merges what the workers send
+# at their end (``workeroutput``), prints the skips and makes the session checks of
+# tests/test_error_sites.py over the whole session's record (:func:`pytest_runtestloop`). A worker
+# passes those checks by unrun (:func:`pytest_runtest_protocol`), where they would see only its part.
+
+#: The key of a worker's record in what it sends the controller.
+WORKER_RECORD = "calc_session_record"
+
+
+def is_worker(config) -> bool:
+    """Whether this process runs tests for a controller (an xdist worker)."""
+    return hasattr(config, "workerinput")
+
+
+def is_controller(config) -> bool:
+    """Whether this process hands the tests to workers (``-n`` above 0) and runs none itself."""
+    return config.pluginmanager.has_plugin("dsession")
+
+
+def worker_record() -> dict:
+    """What a worker sends the controller at its end: the error sites built, the longest message of
+    each, whether it ran the whole tests/ folder (and if not why), and its skips by tool."""
+    longest = sorted([*site, message] for site, message in ErrorRecord.longest.items())
+    return {"built": sorted(ErrorRecord.built), "longest": longest,
+            "whole_folder": ErrorRecord.whole_folder, "reason": ErrorRecord.reason, "tool_skips": ToolSkips.by_tool}
+
+
+def merge_record(record: dict) -> None:
+    """Add a worker's :func:`worker_record` to this process's :class:`ErrorRecord` and :class:`ToolSkips`.
+    Every worker collects the same tests, so the first one's selection stands for all."""
+    if not ErrorRecord.merged:
+        ErrorRecord.whole_folder, ErrorRecord.reason = record["whole_folder"], record["reason"]
+    ErrorRecord.merged += 1
+    ErrorRecord.built |= {(file, line) for file, line in record["built"]}
+    for file, line, message in record["longest"]:
+        if len(message) > len(ErrorRecord.longest.get((file, line), "")):
+            ErrorRecord.longest[(file, line)] = message
+    for tool, count in record["tool_skips"].items():
+        ToolSkips.by_tool[tool] = ToolSkips.by_tool.get(tool, 0) + count
+
+
+def is_session_check(item) -> bool:
+    """Whether the item is a check of tests/test_error_sites.py over the whole session's record."""
+    from .test_error_sites import SESSION_CHECKS
+
+    return item.path == FINAL and item.originalname in SESSION_CHECKS
+
+
+def worker_group(item) -> str | None:
+    """The xdist group of an item: a notebook's cells run in order in one kernel (nbval), and the tests
+    that share a costly fixture of tests/ (a PDF build, a module's evaluated cases) run on one worker,
+    where it is built once; ``None`` for a test that may run on any worker."""
+    if item.path.suffix == ".ipynb":
+        return item.path.relative_to(ROOT).as_posix()
+    info = getattr(item, "_fixtureinfo", None)
+    shared = [d for defs in (info.name2fixturedefs.values() if info else ()) for d in defs
+              if d.scope != "function" and d.baseid.startswith("tests")]
+    session = sorted(d.argname for d in shared if d.scope == "session")
+    if session:
+        return session[0]
+    return item.path.relative_to(ROOT).as_posix() if shared else None
+
+
+def carry_groups(items) -> None:
+    """Put each item's xdist group into the id the controller schedules by. pytest-xdist (3.8) appends
+    ``@group`` to an item's ``_nodeid``, which pytest 9 no longer reads (it keeps the id as a ``NodeId``),
+    so without this the controller would see no group and split a notebook's cells over the workers."""
+    for item in items:
+        grouped = getattr(item, "_nodeid", item.nodeid)
+        if grouped != item.nodeid:
+            from _pytest.nodeid import NodeId  # pytest 9's; where _nodeid is the id (pytest 8), none is needed
+
+            item._id = NodeId.parse(grouped)
+
+
+#: Files of tests that each take 10 to 60 s without a tool mark: the benchmark, pytest and pip run in a child.
+LONG_FILES = {TESTS / name for name in ("test_bench.py", "test_tool_skips.py", "test_package.py", "test_course.py")}
+
+
+def started_first(item) -> bool:
+    """Whether the workers start the item before the others: a test that drives XeLaTeX or Chromium
+    (``needs_tools``) or of :data:`LONG_FILES`. The longest first, the short ones fill in at the end,
+    so that no worker ends long after the other (``make test`` runs with ``--no-loadscope-reorder``,
+    which keeps this order)."""
+    return item.path in LONG_FILES or item.get_closest_marker("needs_tools") is not None
+
+
+def pytest_sessionfinish(session):
+    if is_worker(session.config):
+        session.config.workeroutput[WORKER_RECORD] = worker_record()
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_node_collection_finished(node, ids):
+    # The controller's view of the selection: which checks of the whole session it is to make.
+    from .test_error_sites import SESSION_CHECKS
+
+    final = FINAL.relative_to(ROOT).as_posix()
+    for nodeid in ids:
+        path, _, name = nodeid.partition("::")
+        if path == final and name in SESSION_CHECKS:
+            ErrorRecord.session_checks.add(name)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error):
+    record = getattr(node, "workeroutput", {}).get(WORKER_RECORD)
+    if record is not None:
+        merge_record(record)
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtestloop(session):
+    finished = yield
+    if is_controller(session.config):
+        from .test_error_sites import SESSION_CHECKS
+
+        for name, check in SESSION_CHECKS.items():
+            if name in ErrorRecord.session_checks:
+                report_session_check(session, name, check)
+    return finished
+
+
+def report_session_check(session, name: str, check) -> None:
+    """Make one of :data:`tests.test_error_sites.SESSION_CHECKS` over the merged record and report it as
+    that test's outcome (passed, failed with the check's message, or skipped saying why)."""
+    from _pytest.reports import TestReport
+
+    from . import test_error_sites
+
+    path = FINAL.relative_to(ROOT).as_posix()
+    nodeid = f"{path}::{name}"
+    location = (path, getattr(test_error_sites, name).__code__.co_firstlineno - 1, name)
+    if not ErrorRecord.merged:
+        outcome, longrepr = "failed", "no worker sent its record of the error sites built (see the workers' errors)"
+    elif not ErrorRecord.whole_folder:
+        outcome, longrepr = "skipped", (str(FINAL), location[1] + 1, f"Skipped: {whole_folder_needed()}")
+    else:
+        failure = check(ErrorRecord.built, ErrorRecord.longest)
+        outcome, longrepr = ("failed", failure) if failure else ("passed", None)
+    hook = session.config.hook
+    hook.pytest_runtest_logstart(nodeid=nodeid, location=location)
+    hook.pytest_runtest_logreport(report=TestReport(nodeid, location, {name: 1}, outcome, longrepr, "call"))
+    hook.pytest_runtest_logfinish(nodeid=nodeid, location=location)
+
+
+def whole_folder_needed() -> str:
+    """Why a session check is not made: it needs the whole tests/ folder."""
+    return f"needs the whole tests/ folder: {ErrorRecord.reason}"
 
 
 def pytest_unconfigure(config):
@@ -273,9 +439,20 @@ def pytest_deselected(items):
     ErrorRecord.deselected += len(items)
 
 
-@pytest.hookimpl(trylast=True)
+@pytest.hookimpl(wrapper=True)
 def pytest_collection_modifyitems(session, config, items):
-    """Run the error-site check after every other test, whatever the collection order."""
+    """On a worker, first mark each item's :func:`worker_group` (before xdist reads the marks), then hand
+    out the long tests first (:func:`started_first`); last, run the error-site check after every other
+    test, whatever the collection order."""
+    if is_worker(config):
+        for item in items:
+            group = worker_group(item)
+            if group:
+                item.add_marker(pytest.mark.xdist_group(group))
+    yield
+    if is_worker(config):
+        carry_groups(items)
+        items.sort(key=lambda item: not started_first(item))  # stable: the same order on every worker
     final = [item for item in items if item.path == FINAL]
     items[:] = [item for item in items if item.path != FINAL] + final
 
@@ -294,10 +471,13 @@ def pytest_collection_finish(session):
     ErrorRecord.whole_folder = not ErrorRecord.reason
 
 
-@pytest.hookimpl(wrapper=True)
+@pytest.hookimpl(tryfirst=True)
 def pytest_runtest_protocol(item, nextitem):
+    if is_worker(item.config) and is_session_check(item):
+        return True  # made by the controller over the whole session's record (pytest_runtestloop)
     ErrorRecord.item = item if item.path.is_relative_to(TESTS) else None
-    try:
-        return (yield)
-    finally:
-        ErrorRecord.item = None
+    return None
+
+
+def pytest_runtest_logfinish(nodeid, location):
+    ErrorRecord.item = None

@@ -9,6 +9,7 @@ call, so a message written over several lines counts as one site.
 """
 
 import ast
+import functools
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -87,7 +88,19 @@ class _Finder(ast.NodeVisitor):
 
 def error_sites(package: Path = PACKAGE, root: Path = ROOT) -> list[Site]:
     """Every ``CalcError(...)`` call under ``package``, in file and line order, files named
-    relative to ``root``."""
+    relative to ``root``. The package's own are read once a session (calc/ does not change while it
+    runs, and a scan takes seconds); any other folder each time it is asked for."""
+    if (package, root) == (PACKAGE, ROOT):
+        return list(_package_sites())
+    return _scan(package, root)
+
+
+@functools.cache
+def _package_sites() -> tuple[Site, ...]:
+    return tuple(_scan(PACKAGE, ROOT))
+
+
+def _scan(package: Path, root: Path) -> list[Site]:
     sites = []
     for path in sorted(package.rglob("*.py")):
         finder = _Finder(path.relative_to(root).as_posix())

@@ -11,7 +11,7 @@ import pytest
 
 from calc.core.errors import LISTED, MAX_LENGTH, CalcError, listing
 
-from .conftest import DERIVED_EXAMPLE, ROOT, ErrorRecord
+from .conftest import DERIVED_EXAMPLE, ROOT, ErrorRecord, whole_folder_needed
 from .error_sites import error_sites, site_at
 
 #: Sites that no input reaches, by file, function and message start (so that moved lines keep
@@ -35,49 +35,67 @@ def _is(site, entry) -> bool:
     return site.file == file and site.function == function and site.message.startswith(start)
 
 
-def test_every_error_site_is_triggered():
-    if not ErrorRecord.whole_folder:
-        pytest.skip(f"needs the whole tests/ folder: {ErrorRecord.reason}")
+def untriggered(built: set, longest: dict) -> str:
+    """The failure of the error-site check over a session's record (the (file, line) of every
+    ``CalcError`` built, and the longest message of each), or "" where every site is triggered."""
     sites = error_sites()
-    unseen = [f"{file}:{line}" for file, line in sorted(ErrorRecord.built) if site_at(sites, file, line) is None]
+    unseen = [f"{file}:{line}" for file, line in sorted(built) if site_at(sites, file, line) is None]
     if unseen:
-        pytest.fail(
-            "CalcError built where the source scan sees no `CalcError(...)` call (build it by that name): "
-            + ", ".join(unseen),
-            pytrace=False,
-        )
+        return ("CalcError built where the source scan sees no `CalcError(...)` call (build it by that name): "
+                + ", ".join(unseen))
     stale = [entry for entry in NOT_FROM_INPUT if not any(_is(site, entry) for site in sites)]
     if stale:
-        pytest.fail(f"NOT_FROM_INPUT names sites that no longer exist: {stale}", pytrace=False)
-    triggered = {site_at(sites, file, line) for file, line in ErrorRecord.built}
+        return f"NOT_FROM_INPUT names sites that no longer exist: {stale}"
+    triggered = {site_at(sites, file, line) for file, line in built}
     exempt = {site for site in sites for entry in NOT_FROM_INPUT if _is(site, entry)}
     untested = [site.describe() for site in sites if site not in triggered | exempt]
     if untested:
-        pytest.fail(
-            f"{len(untested)} of {len(sites)} error messages no test under tests/ triggers:\n" + "\n".join(untested),
-            pytrace=False,
-        )
+        return f"{len(untested)} of {len(sites)} error messages no test under tests/ triggers:\n" + "\n".join(untested)
+    return ""
 
 
-def test_every_error_is_one_short_sentence():
-    # Every message that the whole tests/ folder made the package build, at its longest: at most
-    # MAX_LENGTH characters (the temporary folders of the tests' files included).
-    if not ErrorRecord.whole_folder:
-        pytest.skip(f"needs the whole tests/ folder: {ErrorRecord.reason}")
+def too_long(built: set, longest: dict) -> str:
+    """The failure of the length check: every message the session made the package build, at its
+    longest, has at most MAX_LENGTH characters (the temporary folders of the tests' files included);
+    "" where it holds."""
     sites = error_sites()
     exempt = {site for site in sites for entry in NOT_FROM_INPUT if _is(site, entry)}
     long = [f"{file}:{line} ({len(message)} characters): {message[:120]}…"
-            for (file, line), message in sorted(ErrorRecord.longest.items())
+            for (file, line), message in sorted(longest.items())
             if len(message) > MAX_LENGTH and site_at(sites, file, line) not in exempt]
     if long:
-        pytest.fail(f"{len(long)} error messages are longer than {MAX_LENGTH} characters:\n" + "\n".join(long),
-                    pytrace=False)
+        return f"{len(long)} error messages are longer than {MAX_LENGTH} characters:\n" + "\n".join(long)
+    return ""
 
 
-def test_a_list_in_an_error_names_ten_items_and_counts_the_rest(write_case, tmp_path):
+#: The checks over the whole session's record, by the test that makes them. Under pytest-xdist the
+#: workers leave these tests out and the controller makes them over the merged record (tests/conftest.py).
+SESSION_CHECKS = {"test_every_error_site_is_triggered": untriggered, "test_every_error_is_one_short_sentence": too_long}
+
+
+def _session_check(name: str) -> None:
+    if not ErrorRecord.whole_folder:
+        pytest.skip(whole_folder_needed())
+    failure = SESSION_CHECKS[name](ErrorRecord.built, ErrorRecord.longest)
+    if failure:
+        pytest.fail(failure, pytrace=False)
+
+
+def test_every_error_site_is_triggered():
+    _session_check("test_every_error_site_is_triggered")
+
+
+def test_every_error_is_one_short_sentence():
+    _session_check("test_every_error_is_one_short_sentence")
+
+
+def test_a_list_in_an_error_names_ten_items_and_counts_the_rest(tmp_path_factory):
     from calc.sections.case import read_case
     from calc.sections import evaluate
 
+    # The message holds the paths of the case and the catalog: both in a folder of a short name, so that the
+    # message's length does not hang on the test's name or on pytest-xdist's folder of each worker.
+    tmp_path = tmp_path_factory.mktemp("many")
     # A gearbox catalog of 500 families (one row each, the shipped NPT035-10's figures), and a case
     # that keeps to a family it lacks: the message names ten families and the count of the other 490.
     shipped = (ROOT / "catalogs" / "gearboxes.csv").read_text(encoding="utf-8").splitlines()
@@ -92,8 +110,9 @@ def test_a_list_in_an_error_names_ten_items_and_counts_the_rest(write_case, tmp_
     text = DERIVED_EXAMPLE.read_text(encoding="utf-8").replace('"../data/', f'"{ROOT / "data"}/')
     text = text.replace('catalog = "gearboxes"', f'catalog = "{tmp_path / "many.csv"}"').replace(
         'family = "NPT"', 'family = "XYZ"')
+    (tmp_path / "many.toml").write_text(text, encoding="utf-8")
     with pytest.raises(CalcError) as raised:
-        evaluate(read_case(write_case(text, "many.toml")))
+        evaluate(read_case(tmp_path / "many.toml"))
     message = str(raised.value)
     assert "has no gearbox of family 'XYZ'; its families are F000, F001, F002" in message
     assert message.endswith(f"F009 and {500 - LISTED} more") and len(message) <= MAX_LENGTH

@@ -9,14 +9,14 @@ Numbers are worked by hand from the example (cases/indexing-table.toml): one ind
 
 import pytest
 
-from bench.review_browser import CHROMIUM, browser_page, change, row, served, wait_for_results
+from bench.review_browser import browser_page, change, row, served, wait_for_results
 
-from ..conftest import DERIVED_EXAMPLE, ROOT
+from ..conftest import DERIVED_EXAMPLE, ROOT, needs_tools
 
 RESULTS = ".design-review .dr[data-generation]"
 SHOTS = ROOT / "build" / "screenshots" / "sign-off"
 
-pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason=f"no Chromium at {CHROMIUM} (make browser installs it)")
+pytestmark = needs_tools("chromium")
 
 
 def _copy(tmp_path, name="axis.toml"):
