@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from calc import Q_
 from calc.sections.case import read_case
 from calc.domain.cycle import ACCEL, CONST, DECEL, PAUSE, SampledCycle
-from calc.domain.motor import OutputLoad, T_1_back, T_1_drive, T_1rms, alpha_1, motor_load, motor_torque
+from calc.domain.motor import OutputLoad, _equal_samples, T_1_back, T_1_drive, T_1rms, alpha_1, motor_load, motor_torque
 from calc.domain.motion import Samples
 from calc.domain.profile import segments
 from calc.sections import evaluate
@@ -149,6 +149,22 @@ def test_merging_equal_samples_keeps_every_peak_and_rms(samples, i, eta):
     merged = motor_load(few.dt, few.torque, few.speed, Q_(i, ""), Q_(eta, ""), few.alpha_2, J, J)
     assert merged.peak.m_as("N*m") == pytest.approx(whole.peak.m_as("N*m"), rel=1e-12, abs=1e-15)
     assert merged.rms.m_as("N*m") == pytest.approx(whole.rms.m_as("N*m"), rel=1e-9, abs=1e-15)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.integers(1, 3).flatmap(lambda m: st.lists(
+    st.lists(st.sampled_from([0.0, -0.0, 1.0, -2.5, np.inf, np.nan]), min_size=m, max_size=m), max_size=40)))
+def test_equal_samples_are_the_groups_numpy_unique_finds(columns):
+    # The merge's grouping against numpy's own (np.unique over the columns): the same first
+    # samples, each sample in the group of the same first; -0.0 equals 0.0, NaN equals nothing.
+    samples = np.array(columns, dtype=float).T.reshape(len(columns[0]) if columns else 1, len(columns))
+    first, inverse = _equal_samples(samples)
+    if not columns:
+        assert first.size == 0 and inverse.size == 0
+        return
+    _, first_np, inverse_np = np.unique(samples, axis=1, return_index=True, return_inverse=True)
+    np.testing.assert_array_equal(np.sort(first), np.sort(first_np))
+    np.testing.assert_array_equal(first[inverse], first_np[inverse_np.ravel()])
 
 
 # --- the section -----------------------------------------------------------------------------------
