@@ -169,6 +169,8 @@ def longest_run(dt: np.ndarray, above: np.ndarray) -> float:
     5.0
     """
     dt, above = np.asarray(dt, float), np.asarray(above, bool)
+    if not above.any():  # no run (most drives of a catalog are never exceeded)
+        return 0.0
     if above.all():
         return float(dt.sum())
     k = int(np.flatnonzero(~above)[0])  # start after a sample where it does not hold
@@ -276,6 +278,28 @@ def characteristic_check(cat, U: float):
                       cat["U_DC"], "V", unrated="the catalog gives no DC-link voltage U_DC")
 
 
+def _longest_runs_above(dt: np.ndarray, I_samples: np.ndarray, I_N: np.ndarray) -> np.ndarray:
+    """:func:`longest_run` of the current above each drive's rating, once per distinct rating (a
+    catalog's drives share a few ratings).
+
+    Parameters
+    ----------
+    dt : numpy.ndarray [s]
+        The duration of each sample of the cycle.
+    I_samples : numpy.ndarray [A]
+        The current of each sample.
+    I_N : numpy.ndarray [A]
+        Each drive's continuous current.
+
+    Returns
+    -------
+    numpy.ndarray [s]
+        Each drive's longest time above its continuous current.
+    """
+    ratings, each = np.unique(I_N, return_inverse=True)
+    return np.array([longest_run(dt, I_samples > x) for x in ratings])[each.ravel()]
+
+
 def select_drives(cat, I_rms, I_peak, dt, I_samples, U_motor, no_current: str | None = None,
                   characteristic: tuple = (None, "not known")) -> DriveSelection:
     """Every drive of a catalog against the motor's current, ranked as :data:`RANKING` says.
@@ -310,7 +334,7 @@ def select_drives(cat, I_rms, I_peak, dt, I_samples, U_motor, no_current: str | 
                      f"(no continuous or peak current published)")
         cat = cat.rows(~cat.partial)
     I_N = cat["I_N"].m_as("A")
-    t_above = None if no_current else np.array([longest_run(dt, I_samples > x) for x in I_N])
+    t_above = None if no_current else _longest_runs_above(dt, I_samples, I_N)
     if U_motor is None:
         notes.append("the voltage class is not checked: the motor's DC-link voltage is not known")
     if characteristic[0] is None:

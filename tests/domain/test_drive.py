@@ -13,6 +13,7 @@ from calc import Q_
 from calc.core.errors import CalcError
 from calc.data.catalog import CATALOG_DIR, load_catalog
 from calc.domain.drive import (
+    _longest_runs_above,
     E_C, P_R_avg, P_R_peak, SCHEMA, I_ph, braking_events, k_T_derived, longest_run, resistor_energies,
     select_drives, square_cycle_peak, voltage_class, winding_temperature,
 )
@@ -119,6 +120,18 @@ def test_longest_run_wraps_round_the_cycle():
     assert longest_run(np.array([1.0, 2.0, 3.0, 4.0]), np.array([True, False, False, True])) == 5.0
     assert longest_run(np.array([1.0, 2.0]), np.array([False, False])) == 0.0
     assert longest_run(np.array([1.0, 2.0]), np.array([True, True])) == 3.0
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.tuples(st.floats(1e-3, 10.0), st.sampled_from([0.0, 1.0, 2.5, 4.0])), min_size=1, max_size=20),
+       st.lists(st.sampled_from([0.5, 1.0, 2.5, 3.0, 9.0]), max_size=12))
+def test_runs_above_each_rating_are_each_drives_longest_run(samples, ratings):
+    # Computed once per distinct rating, then given to every drive of it: each drive's run is
+    # longest_run of its own rating, in the catalog's order.
+    dt, current = (np.array(x) for x in zip(*samples))
+    I_N = np.array(ratings, dtype=float)
+    expected = [longest_run(dt, current > x) for x in I_N]
+    np.testing.assert_array_equal(_longest_runs_above(dt, current, I_N), np.array(expected, dtype=float))
 
 
 def test_voltage_classes():
