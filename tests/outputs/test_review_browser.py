@@ -52,7 +52,8 @@ def print_times(server, visit):
 
 def test_a_reviewer_changes_the_ratio_and_a_torque_and_the_results_follow():
     with served(EXAMPLE) as server:
-        visit = review_in_browser(server.url, SHOTS, CHANGES, burst=(CHANGES[2][0], ["13", "14", "15", "16", "17"]))
+        visit = review_in_browser(server.url, SHOTS, CHANGES, burst=(CHANGES[2][0], ["13", "14", "15", "16", "17"]),
+                                  fresh=False)
     print_times(server, visit)
     typed, drawn, after = visit.burst
     print(f"{typed} values typed in a row: {drawn} updates drawn")
@@ -106,7 +107,7 @@ def tiny_pdf(path):
 def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
     tiny_pdf(tmp_path / "indexing-table.pdf")
     with served(DERIVED_EXAMPLE, reports=tmp_path) as server:
-        visit = review_in_browser(server.url, SHOTS / "derived", MOVE_CHANGES)
+        visit = review_in_browser(server.url, SHOTS / "derived", MOVE_CHANGES, fresh=False)
     print_times(server, visit)
     print(f"calc report: {visit.report}")
     seen = dict(visit.seen)
@@ -369,7 +370,7 @@ def test_five_reviewers_at_once_each_see_their_own_results():
     shown = {v: f"{p['value']:.4g} rpm" for v, p in peak.items()}
     assert all(p["unit"] == "rpm" for p in peak.values()) and len(set(shown.values())) == 5
     with served(DERIVED_EXAMPLE) as server:
-        crowd = reviewers_at_once(server, "move[1].time", rounds)
+        crowd = reviewers_at_once(server, "move[1].time", rounds, fresh=False)
     print(f"5 reviewers: median {crowd.median:.3f} s, slowest {max(crowd.times):.3f} s, "
           f"{crowd.memory:.0f} MB per page")
     assert len(crowd.times) == 5
