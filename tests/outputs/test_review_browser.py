@@ -13,6 +13,7 @@ shows its input error, and the calc report linked beside the verdict answers as 
 
 import subprocess
 
+import pytest
 
 from bench.review_browser import review_in_browser, served
 from calc.review import serve
@@ -40,6 +41,14 @@ CHANGES = [
 ]
 
 pytestmark = needs_tools("chromium")
+
+
+@pytest.fixture(scope="module")
+def derived_server():
+    """One served page of the derived example for the tests that open it and write nothing (each page its own
+    kernel): a server and its first kernel started once, not once per test."""
+    with served(DERIVED_EXAMPLE) as server:
+        yield server
 
 
 def print_times(server, visit):
@@ -241,7 +250,7 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         page.screenshot(path=str(shots / "connection-lost.png"))
 
 
-def test_a_click_on_a_candidate_forces_it(tmp_path):
+def test_a_click_on_a_candidate_forces_it(derived_server):
     """Clicking NPT025-10's row in the gearbox table sets *gearbox part forced* to it, as choosing it
     there would: the page shows the design checked with NPT025-10 alone. No motor passes with it; the
     pair closest to passing is SGM7G-03A, which fails on its peak through it (T_2max = 5.88 · 10 · 1.6
@@ -250,8 +259,8 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
 
     shots = SHOTS / "force"
     shots.mkdir(parents=True, exist_ok=True)
-    with served(DERIVED_EXAMPLE) as server, browser_page() as page:
-        page.goto(server.url)
+    with browser_page() as page:
+        page.goto(derived_server.url)
         page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
         first = page.inner_text(RESULTS_SELECTOR)
         assert first.startswith("PASS") and "Gearbox NPT035-10" in first
@@ -268,7 +277,7 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
 
 
 
-def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
+def test_the_ratio_search_is_shown_when_asked_for(derived_server):
     """Ticking *ratio search* adds the case at every ratio of the catalog to the page, as
     ``python -m calc ratios`` gives it: the example's pick is 10 (NPT035-10), the only ratio that
     keeps λ ≤ 10 with SGMUH-10DA ((0.93 + 0.5 + 15) / 1.74 = 9.44, the coupling AKN-18 counted as the motor's
@@ -277,8 +286,8 @@ def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
 
     shots = SHOTS / "ratios"
     shots.mkdir(parents=True, exist_ok=True)
-    with served(DERIVED_EXAMPLE) as server, browser_page() as page:
-        page.goto(server.url)
+    with browser_page() as page:
+        page.goto(derived_server.url)
         page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
         assert "Ratio search" not in page.inner_text(RESULTS_SELECTOR)
         g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
