@@ -9,7 +9,8 @@ changes inputs through the number fields and the ratio choice, each found by its
 case file (the label's ``data-key``), and measures each change from the input to the new results
 on the page (the results carry a generation count). It keeps a screenshot of the page as first
 shown and after the changes. :func:`new_values` gives changes to values not seen before for any
-case, from the inputs the page offers for it.
+case, from the inputs the page offers for it. The tests' pages are new contexts of one Chromium per
+process (:func:`browser_page`, ``fresh=False``); the benchmark's visits each launch a browser of their own.
 """
 
 from __future__ import annotations
