@@ -52,7 +52,15 @@ def _free_port() -> int:
 _SHARED: dict = {}
 
 
-def _playwright():
+def playwright_driver():
+    """This process's Playwright (sync API), started once: a second ``sync_playwright()`` in a process where
+    one runs fails, so every browser of the tests comes from this one.
+
+    Returns
+    -------
+    playwright.sync_api.Playwright
+        The running driver, stopped at exit.
+    """
     if "driver" not in _SHARED:
         from playwright.sync_api import sync_playwright
 
@@ -74,7 +82,7 @@ def _context(viewport: dict, fresh: bool):
     fresh profile (what a first visit measures), else a new context of this process's shared Chromium."""
     if fresh:
         with tempfile.TemporaryDirectory() as profile:
-            browser = _playwright().chromium.launch_persistent_context(
+            browser = playwright_driver().chromium.launch_persistent_context(
                 profile, executable_path=str(CHROMIUM), headless=True, args=CHROMIUM_ARGS, viewport=viewport)
             try:
                 yield browser
@@ -82,7 +90,7 @@ def _context(viewport: dict, fresh: bool):
                 browser.close()
         return
     if "browser" not in _SHARED:
-        _SHARED["browser"] = _playwright().chromium.launch(executable_path=str(CHROMIUM), headless=True,
+        _SHARED["browser"] = playwright_driver().chromium.launch(executable_path=str(CHROMIUM), headless=True,
                                                           args=CHROMIUM_ARGS)
     context = _SHARED["browser"].new_context(viewport=viewport)
     try:
