@@ -9,11 +9,13 @@ changes inputs through the number fields and the ratio choice, each found by its
 case file (the label's ``data-key``), and measures each change from the input to the new results
 on the page (the results carry a generation count). It keeps a screenshot of the page as first
 shown and after the changes. :func:`new_values` gives changes to values not seen before for any
-case, from the inputs the page offers for it.
+case, from the inputs the page offers for it. The tests' pages are new contexts of one Chromium per
+process (:func:`browser_page`, ``fresh=False``); the benchmark's visits each launch a browser of their own.
 """
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import os
 import signal
@@ -44,6 +46,59 @@ def _free_port() -> int:
         return s.getsockname()[1]
 
 
+#: This process's Playwright driver and its shared Chromium, started at the first page asked for and
+#: stopped at exit: a test opens a new context (its own cookies, storage and cache) in one browser, not a
+#: browser of its own (a launch costs about a second of CPU).
+_SHARED: dict = {}
+
+
+def playwright_driver():
+    """This process's Playwright (sync API), started once: a second ``sync_playwright()`` in a process where
+    one runs fails, so every browser of the tests comes from this one.
+
+    Returns
+    -------
+    playwright.sync_api.Playwright
+        The running driver, stopped at exit.
+    """
+    if "driver" not in _SHARED:
+        from playwright.sync_api import sync_playwright
+
+        _SHARED["driver"] = sync_playwright().start()
+        atexit.register(_stop_shared)
+    return _SHARED["driver"]
+
+
+def _stop_shared() -> None:
+    with contextlib.suppress(Exception):
+        if "browser" in _SHARED:
+            _SHARED.pop("browser").close()
+        _SHARED.pop("driver").stop()
+
+
+@contextlib.contextmanager
+def _context(viewport: dict, fresh: bool):
+    """A browser context ``viewport`` wide and high: with ``fresh``, in a Chromium launched for it with a
+    fresh profile (what a first visit measures), else a new context of this process's shared Chromium."""
+    if fresh:
+        with tempfile.TemporaryDirectory() as profile:
+            browser = playwright_driver().chromium.launch_persistent_context(
+                profile, executable_path=str(CHROMIUM), headless=True, args=CHROMIUM_ARGS, viewport=viewport)
+            try:
+                yield browser
+            finally:
+                browser.close()
+        return
+    if "browser" not in _SHARED:
+        _SHARED["browser"] = playwright_driver().chromium.launch(executable_path=str(CHROMIUM), headless=True,
+                                                          args=CHROMIUM_ARGS)
+    context = _SHARED["browser"].new_context(viewport=viewport)
+    try:
+        yield context
+    finally:
+        context.close()
+
+
 @dataclass
 class Server:
     url: str
@@ -62,15 +117,19 @@ class Server:
 
 
 @contextlib.contextmanager
-def served(case: Path | None = None, timeout: float = 90.0, reports: Path | None = None):
+def served(case: Path | None = None, timeout: float = 90.0, reports: Path | None = None,
+           idle_seconds: float | None = None):
     """The review page served on a free port of 127.0.0.1, opening ``case`` (by default what
     ``make review`` opens) and linking the reports of the folder ``reports`` (by default
     ``reports/``), once it has launched its first kernel (Voilà's "pool ... is filled", logged when the
     kernel is started and the page's notebook set running in it, not when that has run): a page asked
-    for then waits for the notebook's run, as a reviewer's who opens it at once after ``make review``."""
+    for then waits for the notebook's run, as a reviewer's who opens it at once after ``make review``.
+    ``idle_seconds``: a closed page's kernel is culled after this long (by default the command's own,
+    :data:`calc.review.serve.IDLE_MINUTES`)."""
     port = _free_port()
     chosen = [] if case is None else ["--cases", str(case.parent), "--case", case.name]
     chosen += [] if reports is None else ["--reports", str(reports)]
+    chosen += [] if idle_seconds is None else ["--idle-minutes", str(idle_seconds / 60)]
     env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
     start = time.perf_counter()
     server = subprocess.Popen([sys.executable, "-m", "calc.review.serve", "--port", str(port), *chosen], cwd=ROOT,
@@ -187,16 +246,10 @@ def wait_for_results(page, after: int, timeout: float = 30_000) -> None:
 
 @contextlib.contextmanager
 def browser_page(viewport: dict = SCREEN):
-    """A page of headless Chromium with a fresh profile, ``viewport`` wide and high."""
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
-        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
-                                                        args=CHROMIUM_ARGS, viewport=viewport)
-        try:
-            yield browser.new_page()
-        finally:
-            browser.close()
+    """A page ``viewport`` wide and high in a new context (nothing cached, no cookies) of this process's
+    shared headless Chromium."""
+    with _context(viewport, fresh=False) as browser:
+        yield browser.new_page()
 
 
 def kernel_id(page) -> str | None:
@@ -228,27 +281,21 @@ class FirstLoad:
     kernel_mb: float | None  # the page's kernel's resident memory [MB]
 
 
-def first_load(url: str) -> FirstLoad:
-    """Open the page once in a fresh browser (nothing cached) and measure it (:class:`FirstLoad`)."""
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
-        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
-                                                        args=CHROMIUM_ARGS, viewport=SCREEN)
-        try:
-            page = browser.new_page()
-            done: list = []
-            page.on("requestfinished", lambda request: done.append(request))
-            start = time.perf_counter()
-            page.goto(url)
-            page.wait_for_selector(RESULTS, timeout=60_000)
-            ready = time.perf_counter() - start
-            page.wait_for_load_state("networkidle")
-            sizes = [r.sizes() for r in done]
-            transfer = sum(s["responseBodySize"] + s["responseHeadersSize"] for s in sizes)
-            return FirstLoad(ready, transfer, len(sizes), kernel_memory(page))
-        finally:
-            browser.close()
+def first_load(url: str, fresh: bool = True) -> FirstLoad:
+    """Open the page once in a fresh browser (nothing cached) and measure it (:class:`FirstLoad`); without
+    ``fresh``, in a new context of the shared browser (nothing cached either, the browser already running)."""
+    with _context(SCREEN, fresh) as browser:
+        page = browser.new_page()
+        done: list = []
+        page.on("requestfinished", lambda request: done.append(request))
+        start = time.perf_counter()
+        page.goto(url)
+        page.wait_for_selector(RESULTS, timeout=60_000)
+        ready = time.perf_counter() - start
+        page.wait_for_load_state("networkidle")
+        sizes = [r.sizes() for r in done]
+        transfer = sum(s["responseBodySize"] + s["responseHeadersSize"] for s in sizes)
+        return FirstLoad(ready, transfer, len(sizes), kernel_memory(page))
 
 
 def _generation(page) -> int:
@@ -270,73 +317,68 @@ def _check_results(page, what: str, text: str) -> None:
 
 
 def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], repeat: int = 1, settle: float = 3.0,
-                      burst: tuple[str, list[str]] | None = None, results_each: bool = False) -> Visit:
+                      burst: tuple[str, list[str]] | None = None, results_each: bool = False,
+                      fresh: bool = True) -> Visit:
     """Open the page, wait ``settle`` seconds, then make each change ``(key path, value)`` in turn (a
     number field's value, or the option of a choice), ``repeat`` times over; each is timed until
     the results follow. Then ``burst``, ``(key path, values)``: the values typed into that field one
     after the other without waiting, as a reviewer trying values does; counted are the updates
     the page gets for them until it is still. With ``results_each`` (the benchmark's timed changes),
-    a change that ends in an error or without figures stops the visit (:func:`_check_results`)."""
-    from playwright.sync_api import sync_playwright
-
+    a change that ends in an error or without figures stops the visit (:func:`_check_results`). With
+    ``fresh`` (the benchmark's) in a browser launched for the visit, else in the shared one (:func:`_context`)."""
     shots.mkdir(parents=True, exist_ok=True)
-    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
-        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
-                                                        args=CHROMIUM_ARGS, viewport=SCREEN)
-        try:
-            page = browser.new_page()
-            start = time.perf_counter()
-            page.goto(url)
-            page.wait_for_selector(RESULTS, timeout=60_000)
-            visit = Visit(ready=time.perf_counter() - start)
-            # A reviewer reads the page before the first change; meanwhile the server prepares the
-            # next page's kernel, which is not what a change should be timed against.
-            page.wait_for_timeout(settle * 1000)
-            visit.shots.append(shots / "review-first.png")
-            page.screenshot(path=str(visit.shots[-1]))
-            visit.seen.append(("first", page.inner_text(RESULTS)))
-            visit.choices = page.locator(".design-review select").first.locator("option").all_inner_texts()
-            link = page.locator(f"{RESULTS} a", has_text="calc report")
-            if link.count():  # asked for as the browser would, from the page's address
-                href = link.first.get_attribute("href")
-                answer = page.request.get(urljoin(page.url, href))
-                visit.report = (href, answer.status, answer.headers.get("content-type"), answer.body()[:5])
-            for _ in range(repeat):
-                for key, value in changes:
-                    generation = _generation(page)
-                    start = time.perf_counter()
-                    change(page, key, value)
-                    wait_for_results(page, generation)
-                    visit.changes.append((f"{key} = {value}", time.perf_counter() - start))
-                    visit.seen.append((f"{key} = {value}", page.inner_text(RESULTS)))
-                    if results_each:
-                        _check_results(page, f"{key} = {value}", visit.seen[-1][1])
-                    failed = visit.seen[-1][1].startswith("FAIL")
-                    if failed and not any(p.name == "review-fail.png" for p in visit.shots):
-                        visit.shots.append(shots / "review-fail.png")
-                        page.screenshot(path=str(visit.shots[-1]))
-            if burst:
-                key, values = burst
-                first = _generation(page)
-                # Typed within a few milliseconds: each value committed as Enter or leaving the field does.
-                row(page, key).locator("input[type=text]").evaluate(
-                    "(field, values) => { for (const v of values) { field.value = v;"
-                    " field.dispatchEvent(new Event('change', {bubbles: true})); } }", values)
-                last = None
-                while last != _generation(page):  # still for a second
-                    last = _generation(page)
-                    page.wait_for_timeout(1000)
-                visit.burst = (len(values), last - first, page.inner_text(RESULTS))
-            page.wait_for_timeout(300)
-            visit.shots.append(shots / "review-changed.png")
-            page.screenshot(path=str(visit.shots[-1]))
-            visit.shots.append(shots / "review-whole-panel.png")  # on a screen tall enough for all of it
-            page.set_viewport_size({"width": SCREEN["width"], "height": 2400})
-            page.wait_for_timeout(300)
-            page.locator(".design-review").screenshot(path=str(visit.shots[-1]))
-            return visit
-        finally:
-            browser.close()
+    with _context(SCREEN, fresh) as browser:
+        page = browser.new_page()
+        start = time.perf_counter()
+        page.goto(url)
+        page.wait_for_selector(RESULTS, timeout=60_000)
+        visit = Visit(ready=time.perf_counter() - start)
+        # A reviewer reads the page before the first change; meanwhile the server prepares the
+        # next page's kernel, which is not what a change should be timed against.
+        page.wait_for_timeout(settle * 1000)
+        visit.shots.append(shots / "review-first.png")
+        page.screenshot(path=str(visit.shots[-1]))
+        visit.seen.append(("first", page.inner_text(RESULTS)))
+        visit.choices = page.locator(".design-review select").first.locator("option").all_inner_texts()
+        link = page.locator(f"{RESULTS} a", has_text="calc report")
+        if link.count():  # asked for as the browser would, from the page's address
+            href = link.first.get_attribute("href")
+            answer = page.request.get(urljoin(page.url, href))
+            visit.report = (href, answer.status, answer.headers.get("content-type"), answer.body()[:5])
+        for _ in range(repeat):
+            for key, value in changes:
+                generation = _generation(page)
+                start = time.perf_counter()
+                change(page, key, value)
+                wait_for_results(page, generation)
+                visit.changes.append((f"{key} = {value}", time.perf_counter() - start))
+                visit.seen.append((f"{key} = {value}", page.inner_text(RESULTS)))
+                if results_each:
+                    _check_results(page, f"{key} = {value}", visit.seen[-1][1])
+                failed = visit.seen[-1][1].startswith("FAIL")
+                if failed and not any(p.name == "review-fail.png" for p in visit.shots):
+                    visit.shots.append(shots / "review-fail.png")
+                    page.screenshot(path=str(visit.shots[-1]))
+        if burst:
+            key, values = burst
+            first = _generation(page)
+            # Typed within a few milliseconds: each value committed as Enter or leaving the field does.
+            row(page, key).locator("input[type=text]").evaluate(
+                "(field, values) => { for (const v of values) { field.value = v;"
+                " field.dispatchEvent(new Event('change', {bubbles: true})); } }", values)
+            last = None
+            while last != _generation(page):  # still for a second
+                last = _generation(page)
+                page.wait_for_timeout(1000)
+            visit.burst = (len(values), last - first, page.inner_text(RESULTS))
+        page.wait_for_timeout(300)
+        visit.shots.append(shots / "review-changed.png")
+        page.screenshot(path=str(visit.shots[-1]))
+        visit.shots.append(shots / "review-whole-panel.png")  # on a screen tall enough for all of it
+        page.set_viewport_size({"width": SCREEN["width"], "height": 2400})
+        page.wait_for_timeout(300)
+        page.locator(".design-review").screenshot(path=str(visit.shots[-1]))
+        return visit
 
 
 @dataclass
@@ -360,43 +402,39 @@ def kernels_memory(server: Server) -> float:
     return sum(p.memory_info().rss for p in children if "ipykernel" in " ".join(p.cmdline())) / 2**20
 
 
-def reviewers_at_once(server: Server, key: str, rounds: list[list[str]], settle: float = 3.0) -> Crowd:
+def reviewers_at_once(server: Server, key: str, rounds: list[list[str]], settle: float = 3.0,
+                      fresh: bool = True) -> Crowd:
     """One page per value of a round, opened together; in each round every page gets its own value of
     ``key`` at the same time (typed into each page in turn, a few milliseconds apart), and each page
-    is timed from its own input until its results follow (all pages watched together)."""
-    from playwright.sync_api import sync_playwright
+    is timed from its own input until its results follow (all pages watched together). ``fresh``: as in
+    :func:`review_in_browser`."""
 
     crowd = Crowd()
-    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
-        browser = pw.chromium.launch_persistent_context(profile, executable_path=str(CHROMIUM), headless=True,
-                                                        args=CHROMIUM_ARGS, viewport=SCREEN)
-        try:
-            pages = [browser.new_page() for _ in rounds[0]]
-            for page in pages:
-                page.goto(server.url)
-            for page in pages:
-                page.wait_for_selector(RESULTS, timeout=180_000)
-            pages[0].wait_for_timeout(settle * 1000)
-            for values in rounds:
-                before = [_generation(page) for page in pages]
-                started = []
-                for page, value in zip(pages, values):
-                    started.append(time.perf_counter())
-                    change(page, key, value)
-                waiting = set(range(len(pages)))
-                deadline = time.perf_counter() + 120
-                while waiting and time.perf_counter() < deadline:
-                    for k in sorted(waiting):
-                        if _generation(pages[k]) > before[k]:
-                            crowd.times.append(time.perf_counter() - started[k])
-                            waiting.discard(k)
-                if waiting:
-                    raise RuntimeError(f"no results within 120 s on pages {sorted(waiting)}")
-            for page in pages:
-                page.wait_for_function("() => document.querySelector('.design-review .dr-state')?.dataset.state"
-                                       " === 'current'", timeout=60_000)
-            crowd.texts = [page.inner_text(RESULTS) for page in pages]
-            crowd.memory = kernels_memory(server) / len(pages)
-            return crowd
-        finally:
-            browser.close()
+    with _context(SCREEN, fresh) as browser:
+        pages = [browser.new_page() for _ in rounds[0]]
+        for page in pages:
+            page.goto(server.url)
+        for page in pages:
+            page.wait_for_selector(RESULTS, timeout=180_000)
+        pages[0].wait_for_timeout(settle * 1000)
+        for values in rounds:
+            before = [_generation(page) for page in pages]
+            started = []
+            for page, value in zip(pages, values):
+                started.append(time.perf_counter())
+                change(page, key, value)
+            waiting = set(range(len(pages)))
+            deadline = time.perf_counter() + 120
+            while waiting and time.perf_counter() < deadline:
+                for k in sorted(waiting):
+                    if _generation(pages[k]) > before[k]:
+                        crowd.times.append(time.perf_counter() - started[k])
+                        waiting.discard(k)
+            if waiting:
+                raise RuntimeError(f"no results within 120 s on pages {sorted(waiting)}")
+        for page in pages:
+            page.wait_for_function("() => document.querySelector('.design-review .dr-state')?.dataset.state"
+                                   " === 'current'", timeout=60_000)
+        crowd.texts = [page.inner_text(RESULTS) for page in pages]
+        crowd.memory = kernels_memory(server) / len(pages)
+        return crowd

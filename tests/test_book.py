@@ -5,6 +5,7 @@ links reach a page of the book, MathJax (shipped in the build) typesets its math
 and the self-checks open to their feedback; no page is wider than the window. The build time and
 the page count are printed."""
 
+import contextlib
 import re
 import subprocess
 import sys
@@ -15,7 +16,7 @@ from urllib.parse import unquote, urlparse
 
 import pytest
 
-from bench.review_browser import CHROMIUM, CHROMIUM_ARGS
+from bench.review_browser import CHROMIUM, CHROMIUM_ARGS, playwright_driver
 
 from .conftest import ROOT, needs_tools
 
@@ -62,11 +63,9 @@ def test_every_students_notebook_is_a_page_and_the_lecturers_only_in_the_lecture
 
 
 def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(book):
-    from playwright.sync_api import sync_playwright
-
     out, pages = book
     problems = []
-    with sync_playwright() as pw, tempfile.TemporaryDirectory() as profile:
+    with contextlib.nullcontext(playwright_driver()) as pw, tempfile.TemporaryDirectory() as profile:
         browser = pw.chromium.launch_persistent_context(
             profile, executable_path=str(CHROMIUM), headless=True, args=CHROMIUM_ARGS
         )

@@ -7,7 +7,6 @@ tests/outputs/test_cli.py: T_2max = 12 N·m · 10 · 1.3 · 0.97 = 151.32 N·m, 
 
 import re
 import subprocess
-import sys
 
 import pytest
 
@@ -25,10 +24,6 @@ needs_tex = needs_tools("xelatex", "pandoc", "pdftotext")
 def pdf_text(path) -> str:
     out = subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True, check=True).stdout
     return out
-
-
-def report(*args):
-    return subprocess.run([sys.executable, "-m", "calc", "report", *map(str, args)], capture_output=True, text=True)
 
 
 # -- without TeX ------------------------------------------------------------------------------
@@ -171,11 +166,20 @@ def test_batch_builds_one_pdf_each_with_a_progress_bar_and_a_summary(report_run)
 
 
 @needs_tex
-def test_strict_exits_1_when_a_verdict_is_not_pass(report_run, tmp_path):
-    cases, _, _ = report_run
-    proc = report(cases[2], "--strict", "-o", tmp_path / "failing.pdf")  # failing: no gearbox passes
-    assert proc.returncode == 1, proc.stderr
-    assert proc.stdout.startswith("FAIL  ")
+def test_strict_exits_1_when_a_verdict_is_not_pass(report_run, tmp_path, monkeypatch, capsys):
+    # The command line as `python -m calc report`, in this process; the case's PDF is the one report_run
+    # built of it (read by test_failing_case_report_says_fail_and_why), so the exit status costs no second build.
+    import shutil
+
+    from calc.__main__ import main
+    from calc.report import publish
+
+    cases, out, _ = report_run
+    monkeypatch.setattr(publish, "render_pdf", lambda report, pdf, jobs=1: shutil.copy(out / "failing.pdf", pdf))
+    status = main(["report", str(cases[2]), "--strict", "-o", str(tmp_path / "failing.pdf")])  # no gearbox passes
+    shown = capsys.readouterr()
+    assert status == 1, shown.err
+    assert shown.out.startswith("FAIL  ") and (tmp_path / "failing.pdf").is_file()
 
 
 def test_inputs_describe_the_load_inertia_of_the_gearbox_section():

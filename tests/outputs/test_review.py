@@ -297,6 +297,21 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     assert "missing.toml: the case file does not exist" in capsys.readouterr().err
 
 
+def test_make_review_culls_within_a_minute_and_idle_minutes_sets_the_timeout(monkeypatch):
+    # What `python -m calc.review.serve` runs (its exec caught): by default a closed page's kernel is culled
+    # after 45 s, looked at every 15 s, so within 60 s; the browser test serves with --idle-minutes 5/60 (5 s).
+    from calc.review import serve
+
+    ran = []
+    monkeypatch.setattr(serve.os, "execve", lambda path, argv, env: ran.append(argv))
+    serve.main(["--cases", str(EXAMPLE.parent), "--case", EXAMPLE.name, "--port", "0"])
+    serve.main(["--cases", str(EXAMPLE.parent), "--case", EXAMPLE.name, "--port", "0", "--idle-minutes", str(5 / 60)])
+    timeouts = [[int(a.split("=")[1]) for a in argv if a.startswith(("--MappingKernelManager.cull_idle_timeout=",
+                                                                        "--MappingKernelManager.cull_interval="))]
+                for argv in ran]
+    assert timeouts == [[45, 15], [5, 5]] and sum(timeouts[0]) <= 60
+
+
 def test_a_derived_cycle_offers_its_mechanism_and_moves_not_its_segments():
     panel = DesignReview(DERIVED_EXAMPLE)
     specs = {s.key: s for s in panel.state.specs}

@@ -13,6 +13,7 @@ shows its input error, and the calc report linked beside the verdict answers as 
 
 import subprocess
 
+import pytest
 
 from bench.review_browser import review_in_browser, served
 from calc.review import serve
@@ -42,6 +43,14 @@ CHANGES = [
 pytestmark = needs_tools("chromium")
 
 
+@pytest.fixture(scope="module")
+def derived_server():
+    """One served page of the derived example for the tests that open it and write nothing (each page its own
+    kernel): a server and its first kernel started once, not once per test."""
+    with served(DERIVED_EXAMPLE) as server:
+        yield server
+
+
 def print_times(server, visit):
     """The measured figures of a visit (printed, not asserted: a shared machine's times vary)."""
     print(f"\nserver ready: {server.started:.2f} s; page ready: {visit.ready:.2f} s")
@@ -52,7 +61,8 @@ def print_times(server, visit):
 
 def test_a_reviewer_changes_the_ratio_and_a_torque_and_the_results_follow():
     with served(EXAMPLE) as server:
-        visit = review_in_browser(server.url, SHOTS, CHANGES, burst=(CHANGES[2][0], ["13", "14", "15", "16", "17"]))
+        visit = review_in_browser(server.url, SHOTS, CHANGES, burst=(CHANGES[2][0], ["13", "14", "15", "16", "17"]),
+                                  fresh=False)
     print_times(server, visit)
     typed, drawn, after = visit.burst
     print(f"{typed} values typed in a row: {drawn} updates drawn")
@@ -106,7 +116,7 @@ def tiny_pdf(path):
 def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
     tiny_pdf(tmp_path / "indexing-table.pdf")
     with served(DERIVED_EXAMPLE, reports=tmp_path) as server:
-        visit = review_in_browser(server.url, SHOTS / "derived", MOVE_CHANGES)
+        visit = review_in_browser(server.url, SHOTS / "derived", MOVE_CHANGES, fresh=False)
     print_times(server, visit)
     print(f"calc report: {visit.report}")
     seen = dict(visit.seen)
@@ -240,7 +250,7 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         page.screenshot(path=str(shots / "connection-lost.png"))
 
 
-def test_a_click_on_a_candidate_forces_it(tmp_path):
+def test_a_click_on_a_candidate_forces_it(derived_server):
     """Clicking NPT025-10's row in the gearbox table sets *gearbox part forced* to it, as choosing it
     there would: the page shows the design checked with NPT025-10 alone. No motor passes with it; the
     pair closest to passing is SGM7G-03A, which fails on its peak through it (T_2max = 5.88 · 10 · 1.6
@@ -249,8 +259,8 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
 
     shots = SHOTS / "force"
     shots.mkdir(parents=True, exist_ok=True)
-    with served(DERIVED_EXAMPLE) as server, browser_page() as page:
-        page.goto(server.url)
+    with browser_page() as page:
+        page.goto(derived_server.url)
         page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
         first = page.inner_text(RESULTS_SELECTOR)
         assert first.startswith("PASS") and "Gearbox NPT035-10" in first
@@ -267,7 +277,7 @@ def test_a_click_on_a_candidate_forces_it(tmp_path):
 
 
 
-def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
+def test_the_ratio_search_is_shown_when_asked_for(derived_server):
     """Ticking *ratio search* adds the case at every ratio of the catalog to the page, as
     ``python -m calc ratios`` gives it: the example's pick is 10 (NPT035-10), the only ratio that
     keeps λ ≤ 10 with SGMUH-10DA ((0.93 + 0.5 + 15) / 1.74 = 9.44, the coupling AKN-18 counted as the motor's
@@ -276,8 +286,8 @@ def test_the_ratio_search_is_shown_when_asked_for(tmp_path):
 
     shots = SHOTS / "ratios"
     shots.mkdir(parents=True, exist_ok=True)
-    with served(DERIVED_EXAMPLE) as server, browser_page() as page:
-        page.goto(server.url)
+    with browser_page() as page:
+        page.goto(derived_server.url)
         page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
         assert "Ratio search" not in page.inner_text(RESULTS_SELECTOR)
         g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
@@ -369,7 +379,7 @@ def test_five_reviewers_at_once_each_see_their_own_results():
     shown = {v: f"{p['value']:.4g} rpm" for v, p in peak.items()}
     assert all(p["unit"] == "rpm" for p in peak.values()) and len(set(shown.values())) == 5
     with served(DERIVED_EXAMPLE) as server:
-        crowd = reviewers_at_once(server, "move[1].time", rounds)
+        crowd = reviewers_at_once(server, "move[1].time", rounds, fresh=False)
     print(f"5 reviewers: median {crowd.median:.3f} s, slowest {max(crowd.times):.3f} s, "
           f"{crowd.memory:.0f} MB per page")
     assert len(crowd.times) == 5

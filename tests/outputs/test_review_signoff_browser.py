@@ -222,14 +222,18 @@ def test_a_restarted_kernel_is_said_with_what_to_do_and_typed_values_survive(tmp
         assert "1700 kg·cm²" in page.inner_text(RESULTS)
 
 
-def test_a_closed_pages_kernel_is_culled_within_a_minute_and_the_page_is_compressed(tmp_path):
+def test_a_closed_pages_kernel_is_culled_within_its_idle_timeout_and_the_page_is_compressed(tmp_path):
     # Finding 11: each page's kernel (some 100 MB) stayed 10 minutes after its page closed, and a load sent 5.2 MB.
+    # Served here with an idle timeout of 5 s (looked at every 5 s), so the closed page's kernel is gone within
+    # 5 + 5 s and a margin; that `make review` culls within a minute (45 s, looked at every 15 s) is held by
+    # test_review.py's test of the command line it runs.
     import os
     import time
 
     from bench.review_browser import first_load, kernel_id, kernel_memory
 
-    with served(_copy(tmp_path)) as server:
+    idle = 5
+    with served(_copy(tmp_path), idle_seconds=idle) as server:
         with browser_page() as page:
             _open(page, server.url)
             kernel = kernel_id(page)
@@ -238,13 +242,13 @@ def test_a_closed_pages_kernel_is_culled_within_a_minute_and_the_page_is_compres
             assert kernel_memory(page) < 220
         closed = time.perf_counter()
         alive = [p for p in os.listdir("/proc") if p.isdigit() and _holds(p, f"kernel-{kernel}.json")]
-        while alive and time.perf_counter() - closed < 75:
+        while alive and time.perf_counter() - closed < 30:
             time.sleep(2)
             alive = [p for p in alive if os.path.exists(f"/proc/{p}") and _holds(p, f"kernel-{kernel}.json")]
         gone = time.perf_counter() - closed
         print(f"\nthe closed page's kernel gone after {gone:.1f} s")
-        assert not alive and gone < 62
-        load = first_load(server.url)  # the next page, nothing cached: compressed, and ready
+        assert not alive and gone < 2 * idle + 4  # idle, then at most one interval, and 4 s for the shutdown
+        load = first_load(server.url, fresh=False)  # the next page, nothing cached: compressed, and ready
         print(f"next page: ready {load.ready:.2f} s, {load.transfer / 1e6:.2f} MB in {load.requests} requests")
         assert load.transfer < 2e6
 
