@@ -299,7 +299,7 @@ def _transfer(A: np.ndarray, B: np.ndarray, C: np.ndarray, s) -> np.ndarray:
         x = np.linalg.solve(s[..., None, None] * np.eye(len(A)) - A, np.broadcast_to(B, (*s.shape, *B.shape)))
     except np.linalg.LinAlgError:  # a frequency on a pole: each apart, the pole's own infinite
         if s.ndim:
-            return np.array([_transfer(A, B, C, x) for x in s])
+            return np.array([_transfer(A, B, C, one) for one in s])
         return np.array(complex(np.inf, np.nan))
     return (C @ x)[..., 0, 0]
 

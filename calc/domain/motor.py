@@ -190,7 +190,6 @@ def phases(segment, names, dt, speed_1, T_1) -> list[Phase]:
     return out
 
 
-
 def _equal_samples(samples: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The columns of ``samples`` that are equal, as ``np.unique(samples, axis=1, return_index=True,
     return_inverse=True)`` finds them (by value: -0.0 equals 0.0, NaN equals nothing), at a fifth
@@ -215,6 +214,7 @@ def _equal_samples(samples: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     inverse = np.empty(samples.shape[1], dtype=np.intp)
     inverse[order] = np.cumsum(new) - 1
     return order[new], inverse
+
 
 @dataclass(frozen=True)
 class OutputLoad:

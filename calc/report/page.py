@@ -23,8 +23,11 @@ PASS_COLOR, FAIL_COLOR = "#1b7837", "#b2222a"
 SYSTEM = contextvars.ContextVar("system", default="SI")
 #: A result's SI unit and its inch-pound counterpart (the units a US maker's sheet writes).
 INCH_POUND = {"N*m": "lbf*in", "N": "lbf", "mm": "in", "m": "in", "kg*cm**2": "lb*in**2", "kg*m**2": "lb*in**2",
-              "kg": "lb", "N*m/arcmin": "lbf*in/arcmin", "N*m/rad": "lbf*in/rad", "m/s": "in/s", "mm/s": "in/s",
+              "kg": "lb", "N*m/arcmin": "lbf*in/arcmin", "N*m/rad": "lbf*in/rad", "mm/s": "in/s", "m/s": "in/s",
               "m/s**2": "in/s**2"}
+#: The other way: the SI unit of each inch-pound one, the first that :data:`INCH_POUND` lists for it (what the
+#: review's fields of an inch-pound case show in SI).
+SI_UNIT = {ip: si for si, ip in reversed(INCH_POUND.items())}
 #: Under a table whose rows force their part (:func:`table`'s ``force``).
 FORCING = "on the served page, a click on a row forces that part"
 

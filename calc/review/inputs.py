@@ -24,7 +24,7 @@ import numpy as np
 
 from ..core.errors import CalcError, as_found
 from ..core.units import NUMBER, Q_, parse_quantity, pretty_unit
-from ..report.page import INCH_POUND
+from ..report.page import INCH_POUND, SI_UNIT
 from ..report.symbols import symbol_text
 from ..sections import OWN_TABLES, axis, declared
 from ..sections import motion as motion_section
@@ -389,12 +389,6 @@ def motion_specs(case: Case) -> list[InputSpec]:
 
 #: Values a section takes when its file leaves them out (the coupling's temperature, E9).
 DEFAULTS = {"coupling.temperature": "20 degC"}
-
-
-#: An inch-pound unit a case file writes its inputs in and its SI counterpart: what the fields of an inch-pound case
-#: show in SI (the results' units, :data:`calc.report.page.INCH_POUND`, the other way).
-SI_UNIT = {"lbf*in": "N*m", "lbf": "N", "in": "mm", "lb*in**2": "kg*cm**2", "lb": "kg", "in/s": "mm/s",
-           "in/s**2": "m/s**2", "lbf*in/arcmin": "N*m/arcmin", "lbf*in/rad": "N*m/rad"}
 
 
 def unit_shown(unit: str, system: str) -> str:
