@@ -182,14 +182,13 @@ def _kill_kernel(page) -> None:
     """Kill the page's kernel process (started by this test's server), as a crash or the system would."""
     import os
     import signal
-    from pathlib import Path
 
     from bench.review_browser import kernel_id
 
     kernel = kernel_id(page)
     assert kernel
-    pids = [int(p.name) for p in Path("/proc").iterdir() if p.name.isdigit()
-            and f"kernel-{kernel}.json".encode() in (p / "cmdline").read_bytes()]
+    # _holds: a process listed may have ended before its command line is read (other workers start and end many).
+    pids = [int(p) for p in os.listdir("/proc") if p.isdigit() and _holds(p, f"kernel-{kernel}.json")]
     assert len(pids) == 1, pids
     os.kill(pids[0], signal.SIGKILL)
 
