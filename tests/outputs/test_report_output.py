@@ -194,22 +194,41 @@ def test_a_rejection_list_shows_the_closest_few_and_the_appendix_all(reports):
 
 
 @pytest.fixture(scope="module")
-def pdfs(reports, tmp_path_factory):
-    """Each case's PDF, its text and xelatex's log of its last pass."""
+def notebooks(reports):
+    """Each case's report notebook (:func:`calc.report.publish.report_notebook`), its figures made once
+    for every PDF built from it (the exporter typesets a copy)."""
+    return {name: publish.report_notebook(r) for name, r in reports.items()}
+
+
+def built_pdf(notebook, pdf, kept=None) -> tuple[str, int]:
+    """Write the PDF of a report notebook as :func:`calc.report.publish.render_pdf` does, with the pass
+    files ``kept`` (:func:`calc.report.publish.kept_passes`, None: none): xelatex's log of the last pass,
+    and how many passes xelatex made."""
+    exporter = publish.exporter(kept)
+    passes = []
+    run = exporter.run_command
+    exporter.run_command = lambda *args, **kwargs: passes.append(1) or run(*args, **kwargs)
+    body, _ = exporter.from_notebook_node(notebook, resources={"metadata": {"name": pdf.stem}})
+    pdf.write_bytes(body)
+    return exporter.latex_log, len(passes)
+
+
+@pytest.fixture(scope="module")
+def pdfs(notebooks, tmp_path_factory):
+    """Each case's PDF, xelatex's log of its last pass and the number of passes. The example keeps the
+    files of its last pass (``kept``, the stem :func:`test_a_report_built_again_takes_one_pass_and_typesets_the_same`
+    builds again from); the variants keep none."""
     folder = tmp_path_factory.mktemp("pdfs")
-    out = {}
-    for name, r in reports.items():
-        exporter = publish.exporter()
-        body, _ = exporter.from_notebook_node(publish.report_notebook(r), resources={"metadata": {"name": name}})
-        (folder / f"{name}.pdf").write_bytes(body)
-        out[name] = (folder / f"{name}.pdf", exporter.latex_log)
-    return out
+    kept = folder / "kept" / "pass-example"
+    return {name: (folder / f"{name}.pdf", *built_pdf(notebook, folder / f"{name}.pdf",
+                                                        kept if name == "example" else None))
+            for name, notebook in notebooks.items()}
 
 
 @needs_tex
 @pytest.mark.parametrize("name", ["example", "shaft-24", "shock-1.5"])
 def test_no_table_is_wider_than_the_text(pdfs, name):
-    _, log = pdfs[name]
+    _, log, _ = pdfs[name]
     overfull = re.findall(r"Overfull \\hbox \(([\d.]+)pt too wide\) (in alignment|in paragraph)[^\n]*", log)
     assert not [o for o in overfull if float(o[0]) > 1.0], overfull
 
@@ -219,7 +238,7 @@ def test_no_table_is_wider_than_the_text(pdfs, name):
 def test_the_pdf_prints_no_absolute_path(pdfs, cases, name):
     import subprocess
 
-    pdf, _ = pdfs[name]
+    pdf, _, _ = pdfs[name]
     text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
     assert str(cases[name].parent.parent) not in text
     assert f"{name}.toml" in text and "../data/transmission-NPT035-10-generated.csv" in text
@@ -262,7 +281,7 @@ def test_the_signature_lines_are_on_the_front_page(pdfs, name):
     # with every file's SHA-256 and the signature lines below them, on one page.
     import subprocess
 
-    pdf, _ = pdfs[name]
+    pdf, _, _ = pdfs[name]
     first = subprocess.run(
         ["pdftotext", "-f", "1", "-l", "1", str(pdf), "-"], capture_output=True, text=True, check=True
     ).stdout
@@ -271,23 +290,19 @@ def test_the_signature_lines_are_on_the_front_page(pdfs, name):
 
 
 @needs_tex
-def test_the_compiled_preamble_typesets_what_xelatex_alone_does(reports, pdfs, monkeypatch, tmp_path):
+def test_the_compiled_preamble_typesets_what_xelatex_alone_does(notebooks, pdfs, monkeypatch, tmp_path):
     import subprocess
 
     def text(path):
         return subprocess.run(["pdftotext", str(path), "-"], capture_output=True, text=True, check=True).stdout
 
-    pdf, log = pdfs["example"]
+    pdf, log, _ = pdfs["example"]
     # The format drops the kernel's preloaded Latin Modern fonts (calc.report.publish.compiled_preamble):
     # a glyph set in one of them would be lost, and xelatex would say so.
     assert "preloaded format=report-" in log.splitlines()[0] and "Missing character" not in log
     monkeypatch.setattr(publish, "compiled_preamble", lambda tex: None)
-    exporter = publish.exporter()
-    body, _ = exporter.from_notebook_node(
-        publish.report_notebook(reports["example"]), resources={"metadata": {"name": "example"}}
-    )
-    (tmp_path / "alone.pdf").write_bytes(body)
-    assert "preloaded format=xelatex" in exporter.latex_log.splitlines()[0]
+    alone_log, _ = built_pdf(notebooks["example"], tmp_path / "alone.pdf")
+    assert "preloaded format=xelatex" in alone_log.splitlines()[0]
     assert text(tmp_path / "alone.pdf") == text(pdf)
 
 
@@ -317,29 +332,23 @@ def test_a_preamble_that_cannot_be_compiled_is_tried_once(tmp_path, monkeypatch)
 
 
 @needs_tex
-def test_a_report_built_again_takes_one_pass_and_typesets_the_same(reports, tmp_path):
+def test_a_report_built_again_takes_one_pass_and_typesets_the_same(notebooks, pdfs, tmp_path):
     import subprocess
 
-    def built(name, kept):
-        exporter = publish.exporter(kept)
-        passes = []
-        run = exporter.run_command
-        exporter.run_command = lambda *args, **kwargs: passes.append(1) or run(*args, **kwargs)
-        body, _ = exporter.from_notebook_node(publish.report_notebook(reports[name]),
-                                              resources={"metadata": {"name": name}})
-        (tmp_path / f"{name}.pdf").write_bytes(body)
-        text = subprocess.run(["pdftotext", str(tmp_path / f"{name}.pdf"), "-"], capture_output=True, text=True,
-                              check=True).stdout
-        return len(passes), re.sub(r"Built .*UTC", "", text)
+    def text(pdf):
+        out = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
+        return re.sub(r"Built .*UTC", "", out)
 
-    kept = tmp_path / "kept" / "pass-example"
-    first, text = built("example", kept)
+    # The example's first build (pdfs) kept the files of its last pass, from none.
+    pdf, _, first = pdfs["example"]
+    kept = pdf.parent / "kept" / "pass-example"
     assert first == 2 and kept.with_name("pass-example.aux").is_file()  # page X of Y: the second pass
-    again, text_again = built("example", kept)
-    assert again == 1 and text_again == text
-    # The files kept from another report: its labels and last page have moved, xelatex says so and passes again.
-    other, text_other = built("shaft-24", kept)
-    assert other == 2 and text_other == built("shaft-24", None)[1]
+    _, again = built_pdf(notebooks["example"], tmp_path / "example.pdf", kept)
+    assert again == 1 and text(tmp_path / "example.pdf") == text(pdf)
+    # The files kept from another report: its labels and last page have moved, xelatex says so and passes again,
+    # and typesets what a build from no kept files (pdfs) does.
+    _, other = built_pdf(notebooks["shaft-24"], tmp_path / "shaft-24.pdf", kept)
+    assert other == 2 and text(tmp_path / "shaft-24.pdf") == text(pdfs["shaft-24"][0])
 
 
 def test_kept_pass_files_unused_for_a_month_are_removed(tmp_path):
