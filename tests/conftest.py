@@ -2,6 +2,7 @@
 and the record of which error messages of the package the tests trigger."""
 
 import fnmatch
+import functools
 import json
 import os
 import shutil
@@ -81,20 +82,21 @@ def check_results(text: str) -> dict:
         raise AssertionError(f"the results hold {constant}, which JSON does not have")
 
     results = json.loads(text, parse_constant=refuse)
-    errors = sorted(RESULTS_SCHEMA.iter_errors(results), key=lambda e: list(e.absolute_path))
+    errors = sorted(results_schema().iter_errors(results), key=lambda e: list(e.absolute_path))
     assert not errors, "; ".join(f"{'/'.join(map(str, e.absolute_path))}: {e.message}" for e in errors[:5])
     return results
 
 
-def _results_schema():
+@functools.cache
+def results_schema():
+    """The validator of docs/results.schema.json (the schema checked first), made on first use: a pytest
+    run in a child process that imports this module for its hooks (tests/test_tool_skips.py) imports no
+    jsonschema, whose import costs seconds of CPU (calc.report.publish says why)."""
     import jsonschema
 
     schema = json.loads((ROOT / "docs" / "results.schema.json").read_text(encoding="utf-8"))
     jsonschema.Draft202012Validator.check_schema(schema)
     return jsonschema.Draft202012Validator(schema)
-
-
-RESULTS_SCHEMA = _results_schema()
 
 
 @pytest.fixture

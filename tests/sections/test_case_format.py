@@ -123,7 +123,7 @@ def test_the_schema_refuses_what_the_contract_fixes():
 
     import jsonschema
 
-    from ..conftest import RESULTS_SCHEMA
+    from ..conftest import results_schema
 
     example = ROOT / "cases" / "indexing-table.toml"  # a case with a gearbox, whose candidates the schema fixes
     proc = subprocess.run([sys.executable, "-m", "calc", "evaluate", str(example), "--json"], capture_output=True,
@@ -140,10 +140,10 @@ def test_the_schema_refuses_what_the_contract_fixes():
         bad = copy.deepcopy(good)
         change(bad)
         with pytest.raises(jsonschema.ValidationError):
-            RESULTS_SCHEMA.validate(bad)
+            results_schema().validate(bad)
     # Open where results may grow: a further key in a section, a check or a further section.
     grown = copy.deepcopy(good)
     grown["coupling"]["a_further_result"] = {"anything": 1}
     grown["gearbox"]["candidates"][0]["checks"][0]["reason"] = "not checked: the catalog gives no F_2R"
     grown["brake"] = {"selected": None}
-    RESULTS_SCHEMA.validate(grown)
+    results_schema().validate(grown)

@@ -22,9 +22,10 @@ from calc.sections.case import read_case
 from calc.sections.axis import motor_catalog
 from calc.sections.pairs import search_pairs
 
-from ..conftest import DERIVED_EXAMPLE, RESULTS_SCHEMA, ROOT
+from ..conftest import DERIVED_EXAMPLE, ROOT, results_schema
 
 #: The ratio search's JSON as docs/results.schema.json describes it (``$defs/ratio_search``).
+RESULTS_SCHEMA = results_schema()
 RATIO_SEARCH_SCHEMA = type(RESULTS_SCHEMA)({"$defs": RESULTS_SCHEMA.schema["$defs"], "$ref": "#/$defs/ratio_search"})
 LAMBDA = {3: 96.43, 4: 54.63, 5: 35.16, 7: 18.20, 8: 14.06, 10: 9.44}
 
