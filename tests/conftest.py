@@ -144,6 +144,28 @@ def report_run(tmp_path_factory):
     return cases, out, proc
 
 
+def sphinx_book(out: Path, lecturer: bool) -> Path:
+    """The course's book built as ``make book`` builds it (``-t lecturer``: as ``make lecturer`` does) into
+    ``out``, its build time printed; a failed build fails the test with Sphinx's errors."""
+    import subprocess
+    import time
+
+    start = time.perf_counter()
+    tags = ["-t", "lecturer"] if lecturer else []
+    run = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-W", "--keep-going", *tags, "-c", "book", ".",
+                          str(out)], cwd=ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    print(f"\n{'lecturer' if lecturer else 'students'}' book: built in {time.perf_counter() - start:.1f} s")
+    return out
+
+
+@pytest.fixture(scope="session")
+def students_book(tmp_path_factory):
+    """The students' book (``make book``), built once per run: tests/test_book.py opens its pages, and
+    tests/test_course.py hands it out with the students' material (a build takes 4 s of CPU)."""
+    return sphinx_book(tmp_path_factory.mktemp("students"), lecturer=False)
+
+
 # --- Which error messages the tests trigger (checked by tests/test_error_sites.py) -------------
 #
 # Only items under tests/ count: the check must give the same verdict under ``pytest tests`` as

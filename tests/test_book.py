@@ -7,10 +7,7 @@ the page count are printed."""
 
 import contextlib
 import re
-import subprocess
-import sys
 import tempfile
-import time
 from pathlib import Path
 from urllib.parse import unquote, urlparse
 
@@ -18,7 +15,7 @@ import pytest
 
 from bench.review_browser import CHROMIUM, CHROMIUM_ARGS, playwright_driver
 
-from .conftest import ROOT, needs_tools
+from .conftest import ROOT, needs_tools, sphinx_book
 
 pytestmark = needs_tools("chromium")
 
@@ -27,18 +24,14 @@ NOTEBOOKS = sorted(p.stem for p in (ROOT / "notebooks").glob("*.ipynb"))
 
 
 @pytest.fixture(scope="module", params=["students", "lecturer"])
-def book(request, tmp_path_factory):
-    """The students' book (make book, make student) or the lecturer's (make lecturer: ``-t lecturer``)."""
-    out = tmp_path_factory.mktemp(request.param)
-    tags = ["-t", "lecturer"] if request.param == "lecturer" else []
-    start = time.perf_counter()
-    run = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-W", "--keep-going", *tags, "-c", "book", ".",
-                          str(out)], cwd=ROOT, capture_output=True, text=True)
-    assert run.returncode == 0, run.stderr
+def book(request, students_book, tmp_path_factory):
+    """The students' book (make book, make student; shared with tests/test_course.py) or the lecturer's
+    (make lecturer: ``-t lecturer``)."""
+    out = students_book if request.param == "students" else sphinx_book(tmp_path_factory.mktemp("lecturer"), True)
     pages = sorted(out.glob("notebooks/*.html")) + [out / "book" / "index.html"]
     pages += sorted(out.glob("book/course/*.html"))  # the course frame, the primer, the licence
     pages += sorted(out.glob("notebooks/instructor/*.html")) + sorted(out.glob("book/lecturer*.html"))
-    print(f"\n{request.param}' book: built in {time.perf_counter() - start:.1f} s, {len(pages)} pages")
+    print(f"\n{request.param}' book: {len(pages)} pages")
     return out, pages
 
 
