@@ -213,7 +213,8 @@ def test_the_first_motor_screened_is_the_pick_of_the_whole_table(seed, rows, mot
     as_whole = None if first.pick is None else (first.pick[0], int(first.motors[first.pick[1]]))
     assert as_whole == whole.pick
     # the motors screened together give each pair's torques as the whole table does, to the last bit
-    assert np.array_equal(first.peak, whole.peak[:, first.motors]) and np.array_equal(first.rms, whole.rms[:, first.motors])
+    screened = first.motors
+    assert np.array_equal(first.peak, whole.peak[:, screened]) and np.array_equal(first.rms, whole.rms[:, screened])
     if whole.pick is None:
         _, k = first.closest
         assert whole.utilization[first.closest[0], first.motors[k]] == pytest.approx(whole.utilization[whole.closest])
