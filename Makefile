@@ -7,6 +7,11 @@
 #                student's brief and checkpoint notebook (ROSTER=course/roster.csv SEED=2026)
 # make lecturer  what the lecturer keeps (build/lecturer/): the book with the answers, the autograder, the keys
 SHELL := /bin/bash
+# Python keeps what it compiled (__pycache__/, ignored by git) even where the environment says not to
+# (PYTHONDONTWRITEBYTECODE, set in some containers): else every test process, notebook kernel and page
+# kernel compiles the package's source again, some 0.12 s of CPU each, and pytest rewrites every test
+# file again in each worker.
+unexport PYTHONDONTWRITEBYTECODE
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python

@@ -16,6 +16,7 @@ import functools
 import hashlib
 import importlib.resources
 import math
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -400,7 +401,14 @@ def display_path(path: Path) -> str:
     >>> display_path(CATALOG_DIR / "gearboxes.csv")
     'catalogs/gearboxes.csv'
     """
-    path = Path(path).resolve()
+    return _shown_path(os.path.abspath(path))
+
+
+@functools.lru_cache(maxsize=1024)
+def _shown_path(absolute: str) -> str:
+    """:func:`display_path` of an absolute path: resolved once (each path component is looked up on
+    disk, and a review's every change shows the same few paths)."""
+    path = Path(absolute).resolve()
     for base, shown in ((CATALOG_DIR, Path("catalogs")), (PROJECT_DIR, Path())):
         if base is not None and path.is_relative_to(base):
             return str(shown / path.relative_to(base))

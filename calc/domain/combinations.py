@@ -281,8 +281,9 @@ def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, 
         stop at the first row of its ranking that passes), whether the gearbox passes its checks with
         that motor, and its place in the gearbox ranking with it (None: ``rank`` holds).
     first : bool
-        Screen the motors one at a time in the rule's order and stop at the first that has a pair
-        that passes (the pick alone is wanted: a case's evaluation); default False, every pair.
+        Examine the motors one at a time in the rule's order and stop at the first that has a pair
+        that passes, the arrays holding the motors up to it (the pick alone is wanted: a case's
+        evaluation); default False, every pair.
     confirm : callable, optional
         ``confirm(gearbox row, motor)`` -> bool: whether the pair, evaluated in full, passes (a case's
         evaluation: the coupling chosen with that motor counted); None: every pair that passes is taken.
@@ -320,24 +321,29 @@ def _screen(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_lim
 
 def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limit: float, examine,
            confirm) -> Combinations:
-    """:func:`search` with ``first``: the motors screened one at a time in the rule's order, until
-    one has a pair that passes; the arrays hold the motors screened (:attr:`Combinations.motors`)."""
+    """:func:`search` with ``first``: every motor screened at once (one pass of numpy over the pairs),
+    then examined one at a time in the rule's order until one has a pair that passes; the arrays hold
+    the motors up to it (:attr:`Combinations.motors`)."""
     order = np.lexsort((mo["J"][0], mo["rated_torque"][0]))
-    done = []
-    for m in order:
-        done.append(_screen(moments, speeds, g, {k: v[:, [m]] for k, v in mo.items()}, inertia_limit))
-        col = done[-1]
-        one = {k: v[:, [m]] for k, v in mo.items()}
-        found = _pick(col.feasible, col.utilization, col.rms / one["rated_torque"], g, one,
-                      None if examine is None else lambda _, rows, m=int(m): examine(m, rows),
-                      None if confirm is None else lambda row, _, m=int(m): confirm(row, m))
+    ordered = {k: v[:, order] for k, v in mo.items()}
+    screened = _screen(moments, speeds, g, ordered, inertia_limit)
+    share = screened.rms / ordered["rated_torque"]
+    found, last = None, len(order) - 1
+    for j, m in enumerate(order.tolist()):
+        if not screened.feasible[:, j].any():
+            continue  # no pair of it passes the screen: nothing to examine
+        one = slice(j, j + 1)  # views: what examining it finds is marked in the arrays
+        found = _pick(screened.feasible[:, one], screened.utilization[:, one], share[:, one], g,
+                      {k: v[:, one] for k, v in ordered.items()},
+                      None if examine is None else lambda _, rows, m=m: examine(m, rows),
+                      None if confirm is None else lambda row, _, m=m: confirm(row, m))
         if found is not None:
+            last = j
             break
-    motors = order[:len(done)]
-    out = Combinations(*(np.concatenate([getattr(c, k) for c in done], axis=1)
-                         for k in ("peak", "rms", "utilization", "feasible")), None, motors=motors)
+    out = Combinations(*(getattr(screened, k)[:, :last + 1] for k in ("peak", "rms", "utilization", "feasible")),
+                       None, motors=order[:last + 1])
     if found is not None:
-        out.pick = (found[0], len(done) - 1)
+        out.pick = (found[0], last)
     else:
         out.closest = _closest(out.utilization)
     return out

@@ -19,6 +19,7 @@ rule ``ES = -ei + Δ`` holds. Classes outside it raise :class:`CalcError`.
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 from fractions import Fraction
@@ -334,6 +335,13 @@ def parse_bore(text, where: str = "bore") -> Bore:
     if not isinstance(text, str):
         raise CalcError(f"{where}: expected a shaft size with its tolerance as text, such as {_EXAMPLES}, found "
                         f"{as_found(text)}")
+    return _parsed_bore(text, where)
+
+
+@functools.lru_cache(maxsize=512)
+def _parsed_bore(text: str, where: str) -> Bore:
+    """:func:`parse_bore` of a text, kept (a :class:`Bore` is frozen; a review reads the same shafts
+    at every change)."""
     m = _BORE.match(text)
     if not m:
         raise CalcError(f"{where}: expected a shaft size with its tolerance such as {_EXAMPLES}, found "

@@ -23,6 +23,8 @@ against the samples of one cycle (shape ``(samples,)``) gives the torques of eve
 
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass
 
 import numpy as np
@@ -249,13 +251,18 @@ class OutputLoad:
     def distinct(self) -> "OutputLoad":
         """The same cycle with its equal samples merged, their durations summed, in the order each
         first appears: every peak, duration-weighted mean and RMS over it is the one over the cycle,
-        at a fraction of the cost where the cycle dwells or runs at constant speed.
+        at a fraction of the cost where the cycle dwells or runs at constant speed. Merged once (the
+        pair search and the motor's check both ask).
 
         Returns
         -------
         OutputLoad
             The merged cycle.
         """
+        return self._distinct
+
+    @functools.cached_property
+    def _distinct(self) -> "OutputLoad":
         columns = [self.torque.m_as("N*m"), self.speed.m_as("rad/s")]
         columns += [] if self.alpha_2 is None else [self.alpha_2.m_as("rad/s**2")]
         first, inverse = _equal_samples(np.stack(columns))

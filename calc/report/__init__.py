@@ -447,7 +447,7 @@ def build_report(case_path) -> Report:
     return report
 
 
-def report_of(case: Case, report: Report | None = None) -> Report:
+def report_of(case: Case, report: Report | None = None, ratios: bool = True) -> Report:
     """Evaluate a case already read (the design review passes changed copies) into a report.
 
     Parameters
@@ -456,6 +456,10 @@ def report_of(case: Case, report: Report | None = None) -> Report:
         The case, read.
     report : Report, optional
         The report to fill (a new one, without build date and commit, when not given).
+    ratios : bool
+        Whether to search every ratio of the gearbox catalog (:attr:`Report.ratios`, which only the
+        PDF shows); the review's page, which shows the search where asked for and runs it then,
+        leaves it out.
 
     Returns
     -------
@@ -468,12 +472,12 @@ def report_of(case: Case, report: Report | None = None) -> Report:
     report.case, report.title = case, case.title
     try:
         evaluated = evaluate(case)
-        ratios = ratio_search(evaluated.case, evaluated.every) if GEARBOX in evaluated.sections else None
+        searched = ratio_search(evaluated.case, evaluated.every) if ratios and GEARBOX in evaluated.sections else None
     except CalcError as exc:
         report.error = str(exc)
         return report
     # The case as evaluated: with a motor from a catalog, its ratings and inertia are the chosen motor's.
-    report.case, report.evaluated, report.ratios = evaluated.case, evaluated, ratios
+    report.case, report.evaluated, report.ratios = evaluated.case, evaluated, searched
     for name, r in report._ranked():
         report.files += [(f"{name.capitalize()} catalog", report_path(path, case.folder), sha)
                          for path, sha in r.ranked().catalog.members]

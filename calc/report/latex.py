@@ -5,10 +5,10 @@ tables and calculation steps every section lays out (their skeletons are the Jin
 
 from __future__ import annotations
 
+import functools
 import re
 from pathlib import Path
 
-import jinja2
 import numpy as np
 
 from ..core.checks import within_rating
@@ -27,14 +27,21 @@ class Latex(str):
         return str(self)
 
 
-_TEMPLATES = jinja2.Environment(
-    loader=jinja2.FileSystemLoader(Path(__file__).parent / "templates"),
-    block_start_string="((*", block_end_string="*))",
-    variable_start_string="(((", variable_end_string=")))",
-    comment_start_string="((=", comment_end_string="=))",
-    trim_blocks=True, autoescape=False, undefined=jinja2.StrictUndefined,
-)
-_TEMPLATES.filters.update(escape_latex=latex_escape, prose=prose)
+@functools.lru_cache(maxsize=1)
+def _templates():
+    """The templates' environment, made at the first LaTeX asked for: the review's page, which asks
+    for none, does without importing Jinja2."""
+    import jinja2
+
+    env = jinja2.Environment(
+        loader=jinja2.FileSystemLoader(Path(__file__).parent / "templates"),
+        block_start_string="((*", block_end_string="*))",
+        variable_start_string="(((", variable_end_string=")))",
+        comment_start_string="((=", comment_end_string="=))",
+        trim_blocks=True, autoescape=False, undefined=jinja2.StrictUndefined,
+    )
+    env.filters.update(escape_latex=latex_escape, prose=prose)
+    return env
 
 
 def render(template: str, **values) -> str:
@@ -53,7 +60,7 @@ def render(template: str, **values) -> str:
     str
         LaTeX.
     """
-    return _TEMPLATES.get_template(template).render(**values)
+    return _templates().get_template(template).render(**values)
 
 
 def signed(text: str) -> str:

@@ -11,6 +11,7 @@ print a symbol alike.
 
 from __future__ import annotations
 
+import functools
 import re
 from html import escape
 
@@ -217,6 +218,12 @@ def html(text: str) -> str:
     >>> html("positioning_accuracy 9 arcmin")
     'positioning accuracy 9 arcmin'
     """
+    return _html(str(text))
+
+
+@functools.lru_cache(maxsize=4096)
+def _html(text: str) -> str:
+    """:func:`html`, kept: the review page typesets the same criteria and reasons at every change."""
     out = []
     for kind, *rest in tokens(text):
         if kind == "text":

@@ -155,10 +155,21 @@ SCRIPT = r"""<script>
       tr.setAttribute('aria-label', 'force ' + tr.dataset.part);
     }
   }
+  // What can wait until the results are painted: the controls' names, and the address (history.replaceState
+  // waits on the browser's own process, at times 15 ms, while the new results stay unpainted). Run once after
+  // the next frame, with the latest page; a hidden page, which draws no frame, within 200 ms.
+  let later = null;
+  function afterPaint(work) {
+    const first = later === null;
+    later = work;
+    if (!first) return;
+    const run = () => { const w = later; later = null; if (w) w(); };
+    requestAnimationFrame(() => setTimeout(run, 0));
+    setTimeout(run, 200);
+  }
   function show() {
     const p = panel(), r = results();
     if (!p || !r) return;
-    accessible(p);
     if (restoring !== false && restoring !== 'case') restore();
     const state = p.querySelector('.dr-state'), link = connection();
     const lost = restarted || (link !== null && link !== 'connected');
@@ -184,7 +195,8 @@ SCRIPT = r"""<script>
       const word = restarted ? 'restarted' : lost ? 'lost' : stale ? 'stale' : 'current';
       if (state.dataset.state !== word) state.dataset.state = word;
     }
-    if (restoring === false && (lost || same)) keepInAddress(r, lost);  // not before the address was read
+    const keep = restoring === false && (lost || same);  // not before the address was read
+    afterPaint(() => { accessible(p); if (keep) keepInAddress(r, lost); });
   }
   // Whether the screen differs from the case file: a value changed, or the moves edited.
   const edited = r => r.dataset.edits && r.dataset.edits !== '[]';

@@ -602,6 +602,8 @@ class InputRows:
 
     def __init__(self, on_value, on_text):
         import ipywidgets as w
+        from ipywidgets.widgets.widget_description import DescriptionStyle
+        from ipywidgets.widgets.widget_string import HTMLStyle, TextStyle
 
         self.box = w.VBox(layout=w.Layout(overflow="hidden"))
         self.controls: dict = {}
@@ -612,6 +614,13 @@ class InputRows:
         self._specs = None  # the inputs the rows were built for
         self._quiet = False
         self._on_value, self._on_text = on_value, on_text
+        # One layout and one style model for the like parts of every row (none of them changes after):
+        # a row is six widget models, not thirteen, which the browser builds one by one as the page loads.
+        self._shared = {
+            "label": w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH), "grows": _grows(w),
+            "field": w.Layout(width="6.5em", flex="0 0 6.5em"), "full": w.Layout(width="100%"), "plain": w.Layout(),
+            "html": HTMLStyle(), "slider": w.SliderStyle(), "text": TextStyle(), "choice": DescriptionStyle(),
+        }
 
     def build(self, state: ReviewState) -> bool:
         """The rows of the state's inputs, built again where they are others.
@@ -639,29 +648,30 @@ class InputRows:
     def _row(self, spec: InputSpec, state: ReviewState):
         import ipywidgets as w
 
-        value = state.values[spec.key]
+        value, shared = state.values[spec.key], self._shared
         label = w.HTML(label_html(spec, False, state.from_edits(spec.key), state.following(spec.key),
-                                  state.shown_spec(spec.key)),
-                       layout=w.Layout(width=LABEL_WIDTH, flex="0 0 " + LABEL_WIDTH))
+                                  state.shown_spec(spec.key)), layout=shared["label"], style=shared["html"])
         label.add_class("dr-label")
-        self.labels[spec.key], self.messages[spec.key] = label, w.HTML()
+        self.labels[spec.key] = label
+        self.messages[spec.key] = w.HTML(layout=shared["plain"], style=shared["html"])
         if spec.options:
             control = w.Dropdown(options=[(option_text(r), r) for r in spec.options], value=value, tooltip=spec.text,
-                                 layout=_grows(w))  # the row's width: no choice cut short
-            line = w.HBox([label, control])
+                                 layout=shared["grows"], style=shared["choice"])  # the row's width: no choice cut short
+            line = w.HBox([label, control], layout=shared["plain"])
         else:
             control = w.FloatSlider(value=value, min=spec.low, max=spec.high, step=spec.step, readout=False,
-                                    continuous_update=False, tooltip=spec.text, layout=_grows(w))
+                                    continuous_update=False, tooltip=spec.text, layout=shared["grows"],
+                                    style=shared["slider"])
             field = w.Text(value=state.texts[spec.key], continuous_update=False, tooltip=spec.text,
-                           layout=w.Layout(width="6.5em", flex="0 0 6.5em"))
+                           layout=shared["field"], style=shared["text"])
             # The field is read by the state, not by the browser's number input, which clamps to
             # the range and drops a decimal comma without a word.
             field.observe(lambda change, key=spec.key: self._quiet or self._on_text(key, change["new"]), names="value")
             self.fields[spec.key] = field
-            line = w.HBox([label, control, field], layout=w.Layout(width="100%"))
+            line = w.HBox([label, control, field], layout=shared["full"])
         control.observe(lambda change, key=spec.key: self._quiet or self._on_value(key, change["new"]), names="value")
         self.controls[spec.key] = control
-        row = w.VBox([line, self.messages[spec.key]], layout=w.Layout(width="100%"))
+        row = w.VBox([line, self.messages[spec.key]], layout=shared["full"])
         row.add_class("dr-row")
         return row
 

@@ -71,14 +71,15 @@ def evaluated(case: Case) -> tuple[Report, list[str]]:
     -------
     tuple
         The report (:class:`calc.report.Report`) and the sentences of what was left out (none where
-        the whole case is evaluated, or where leaving out one section does not help: the report's
-        error says why).
+        error says why). Without the search of every ratio (:attr:`calc.report.Report.ratios`, the PDF's):
+        the page runs it where asked for.
     """
-    r = report_of(case)
+    r = report_of(case, ratios=False)
     if r.error is None:
         return r, []
     for name in case.sections:
-        rest = report_of(dataclasses.replace(case, sections={k: v for k, v in case.sections.items() if k != name}))
+        rest = report_of(dataclasses.replace(case, sections={k: v for k, v in case.sections.items() if k != name}),
+                         ratios=False)
         if rest.error is None:
             why = r.error.replace(str(case.path), display_path(case.path))  # the path as the results write it
             return rest, [f"The {name} section cannot be evaluated with these inputs: {why}"]

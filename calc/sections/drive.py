@@ -591,7 +591,7 @@ class DriveSection(Section):
         sel = select_drives(cat, I_rms, I_peak, dt, I, m.U_DC, no_current, motor.characteristic_dc_link)
         _resistor_above_minimum(given, sel.catalog)
         segment, names = motor.segments
-        phase_of = [names[s] for s in segment]
+        phase_of = np.asarray(names, dtype=object)[segment]  # the phase of each sample (thousands of them)
         braking = braking_of(given, sel.catalog, int(sel.order[0]), dt, T_1 * speed, phase_of, float(dt.sum()))
         w = motor.thermal
         winding = None if w is None else scalar_check("theta", "θ_max <= 1 (the winding's rise under "

@@ -234,9 +234,10 @@ class Results:
     sections: dict
     every: dict = field(default_factory=dict, repr=False)
 
-    @property
+    @functools.cached_property
     def verdict(self) -> Verdict:
-        """The one verdict of the case, from its sections' (:meth:`calc.sections.common.Verdict.combine`)."""
+        """The one verdict of the case, from its sections' (:meth:`calc.sections.common.Verdict.combine`);
+        combined once (the results do not change after the evaluation, and every output asks for it)."""
         return Verdict.combine([r.verdict() for r in self.sections.values()], NOTHING_CHECKED)
 
     def governing(self) -> list:

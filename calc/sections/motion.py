@@ -19,6 +19,7 @@ from ..data.measurement import measurement_path, read_measurement
 from ..domain.inertia import FORMULAS, SHAPES, Body
 from ..domain.mechanism import TYPES, Mechanism, phi_2
 from ..domain.motion import Move, Samples, alpha_2max, omega_2max, record_samples, sample
+from ..domain.motor import OutputLoad
 from ..domain.profile import Profile, segments
 from ..core.units import Q_, Value, kind_phrase, parse_quantity
 from .common import json_of
@@ -148,6 +149,12 @@ class Motion:
     profile: Profile
     record: str | None = None
     tables: dict = field(default_factory=dict)
+
+    @cached_property
+    def output_load(self) -> OutputLoad:
+        """The cycle as the motor's side reads it (:meth:`calc.domain.motor.OutputLoad.from_cycle`), made
+        once: the pair search and the motor's check of an evaluation both read it."""
+        return OutputLoad.from_cycle(self.cycle)
 
     @property
     def J_L(self):

@@ -57,7 +57,7 @@ def output_load(case: Case) -> OutputLoad:
     if case.motion is None:
         p = case.profile
         return OutputLoad(p.durations, p.torques, p.speeds, None, p.n_2max)
-    return OutputLoad.from_cycle(case.motion.cycle)
+    return case.motion.output_load
 
 
 def motor_side_coupling(coupling) -> tuple:

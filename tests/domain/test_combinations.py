@@ -212,6 +212,9 @@ def test_the_first_motor_screened_is_the_pick_of_the_whole_table(seed, rows, mot
     first = search(m, (10.0, 4.0), gearboxes, motors, INERTIA_RATIO_LIMIT, first=True, **kw)
     as_whole = None if first.pick is None else (first.pick[0], int(first.motors[first.pick[1]]))
     assert as_whole == whole.pick
+    # the motors screened together give each pair's torques as the whole table does, to the last bit
+    screened = first.motors
+    assert np.array_equal(first.peak, whole.peak[:, screened]) and np.array_equal(first.rms, whole.rms[:, screened])
     if whole.pick is None:
         _, k = first.closest
         assert whole.utilization[first.closest[0], first.motors[k]] == pytest.approx(whole.utilization[whole.closest])
