@@ -4,6 +4,10 @@ typeset by a MathJax copy shipped with the build, so the pages need no network.
 Build: ``make book`` (``sphinx-build -c book . build/book``); open ``build/book/book/index.html``.
 """
 
+# Imported before the extensions: nbformat's jsonschema would otherwise compile rfc3987_syntax's IRI
+# grammars, 2 s of CPU in every build (calc.report.publish says why it may go without them).
+import calc.report.publish  # noqa: F401
+
 project = "Servo drive-train workbook"
 author = "the drivetrain-calc contributors"
 copyright = "the drivetrain-calc contributors: text and notebooks CC BY 4.0, code MIT (see Licence and how to cite)"
