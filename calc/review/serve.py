@@ -34,6 +34,11 @@ PAGE = Path(__file__).with_name("design-review.ipynb")
 CASE_VARIABLE = "CALC_REVIEW_CASE"
 REPORTS_VARIABLE = "CALC_REVIEW_REPORTS"
 IDLE_MINUTES = 0.75
+#: Seconds from a page taking the waiting kernel to its successor's start (Voilà's default: 1 s). The
+#: successor's start (its imports and the panel drawn, some 0.6 s of CPU) then no longer competes with
+#: the browser drawing the page on a 2-core machine; a second page asked for within these seconds waits
+#: for it.
+FILL_DELAY = 3
 
 
 def served_root(reports: Path) -> Path:
@@ -139,8 +144,8 @@ def command(port: int, ip: str = "127.0.0.1", idle_seconds: int = round(60 * IDL
         # (jupytext's, ipylab's, pygments' styles: some 250 kB the browser would load and run first).
         f"--VoilaConfiguration.extension_allowlist={list(PAGE_EXTENSIONS)!r}",
         # One kernel waits with the panel already drawn, so a page is ready at once; its
-        # successor starts when a page takes it.
-        "--preheat_kernel=True", "--pool_size=1",
+        # successor starts FILL_DELAY after a page takes it, once that page is drawn.
+        "--preheat_kernel=True", "--pool_size=1", f"--VoilaKernelManager.fill_delay={FILL_DELAY}",
         # A kernel whose page was closed is culled; one with a page open stays, however idle.
         f"--MappingKernelManager.cull_idle_timeout={idle_seconds}",
         f"--MappingKernelManager.cull_interval={min(15, idle_seconds)}",

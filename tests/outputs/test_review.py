@@ -284,6 +284,8 @@ def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     assert "'compress_response': True" in serve.LAUNCH  # every response compressed
     assert str(serve.PAGE) in argv and serve.PAGE.is_file()
     assert "--Voila.ip=127.0.0.1" in argv and "--strip_sources=True" in argv and "--preheat_kernel=True" in argv
+    # The waiting kernel's successor starts 3 s after a page takes it, not during that page's drawing.
+    assert "--VoilaKernelManager.fill_delay=3" in argv and "--pool_size=1" in argv
     # Culled within a minute of the page closing: idle 45 s, looked at every 15 s.
     assert "--MappingKernelManager.cull_idle_timeout=45" in argv and "--MappingKernelManager.cull_interval=15" in argv
     assert "--MappingKernelManager.cull_connected=False" in argv
