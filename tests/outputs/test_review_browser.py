@@ -44,10 +44,14 @@ pytestmark = needs_tools("chromium")
 
 
 @pytest.fixture(scope="module")
-def derived_server():
+def derived_server(tmp_path_factory):
     """One served page of the derived example for the tests that open it and write nothing (each page its own
-    kernel): a server and its first kernel started once, not once per test."""
-    with served(DERIVED_EXAMPLE) as server:
+    kernel): a server and its first kernel started once, not once per test; each page takes the kernel waiting
+    for it, and the server prepares the next. Its reports' folder (``server.reports``) holds a stand-in for the
+    example's calc report (:func:`tiny_pdf`), which the page links."""
+    reports = tmp_path_factory.mktemp("reports")
+    tiny_pdf(reports / "indexing-table.pdf")
+    with served(DERIVED_EXAMPLE, reports=reports) as server:
         yield server
 
 
@@ -113,11 +117,9 @@ def tiny_pdf(path):
     Figure(figsize=(1, 1)).savefig(path, format="pdf")
 
 
-def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
-    tiny_pdf(tmp_path / "indexing-table.pdf")
-    with served(DERIVED_EXAMPLE, reports=tmp_path) as server:
-        visit = review_in_browser(server.url, SHOTS / "derived", MOVE_CHANGES, fresh=False)
-    print_times(server, visit)
+def test_a_reviewer_changes_a_move_and_opens_the_calc_report(derived_server):
+    visit = review_in_browser(derived_server.url, SHOTS / "derived", MOVE_CHANGES, fresh=False)
+    print_times(derived_server, visit)
     print(f"calc report: {visit.report}")
     seen = dict(visit.seen)
     first = seen["first"]
@@ -138,7 +140,8 @@ def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
     assert [c.replace("\xa0", " ") for c in visit.choices] == [
         "ball-screw-direct.toml · PASS", "indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
     href, status, content_type, head = visit.report
-    assert href == serve.report_address(tmp_path / "indexing-table.pdf", tmp_path)
+    reports = derived_server.reports
+    assert href == serve.report_address(reports / "indexing-table.pdf", reports)
     assert status == 200 and content_type == "application/pdf" and head == b"%PDF-"
 
 
@@ -191,11 +194,11 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         page.wait_for_timeout(300)
         assert row(page, "profile[4].duration").locator("input[type=text]").input_value() == "1.2"
         row(page, "profile[1].torque").locator("input[type=text]").fill("70")  # typed, not entered
-        page.wait_for_timeout(700)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state !== 'current'")
         assert state() == "stale" and "dr-stale" in page.get_attribute(".design-review", "class")
         page.screenshot(path=str(shots / "out-of-date.png"))
         row(page, "profile[1].torque").locator("input[type=text]").fill("60")
-        page.wait_for_timeout(700)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state !== 'stale'")
         assert state() == "current"
         g = generation()
         page.locator(".design-review button", has_text="undo").click()
