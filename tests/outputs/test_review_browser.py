@@ -13,8 +13,6 @@ shows its input error, and the calc report linked beside the verdict answers as 
 
 import subprocess
 
-import pytest
-
 from bench.review_browser import review_in_browser, served
 from calc.review import serve
 
@@ -41,18 +39,6 @@ CHANGES = [
 ]
 
 pytestmark = needs_tools("chromium")
-
-
-@pytest.fixture(scope="module")
-def derived_server(tmp_path_factory):
-    """One served page of the derived example for the tests that open it and write nothing (each page its own
-    kernel): a server and its first kernel started once, not once per test; each page takes the kernel waiting
-    for it, and the server prepares the next. Its reports' folder (``server.reports``) holds a stand-in for the
-    example's calc report (:func:`tiny_pdf`), which the page links."""
-    reports = tmp_path_factory.mktemp("reports")
-    tiny_pdf(reports / "indexing-table.pdf")
-    with served(DERIVED_EXAMPLE, reports=reports) as server:
-        yield server
 
 
 def print_times(server, visit):
@@ -106,15 +92,6 @@ MOVE_CHANGES = [
     ("move[1].accel_time", "0.3"),
     ("move[1].accel_time", "0.15"),
 ]
-
-
-def tiny_pdf(path):
-    """A one-page PDF (matplotlib's, in milliseconds) standing for a calc report: building a real
-    one runs the report notebook and xelatex (11 s on this machine, and only where TeX is
-    installed), which the report tests cover; here only its serving is tested."""
-    from matplotlib.figure import Figure
-
-    Figure(figsize=(1, 1)).savefig(path, format="pdf")
 
 
 def test_a_reviewer_changes_a_move_and_opens_the_calc_report(derived_server):

@@ -19,9 +19,9 @@ SHOTS = ROOT / "build" / "screenshots" / "sign-off"
 pytestmark = needs_tools("chromium")
 
 
-def _copy(tmp_path, name="axis.toml"):
-    """The example in a folder of its own (a saved file lands there)."""
-    path = tmp_path / name
+def _copy(tmp_path):
+    """The example in a folder of its own (a saved file lands there), as axis.toml."""
+    path = tmp_path / "axis.toml"
     path.write_text(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{ROOT}/data/'))
     return path
 
@@ -110,17 +110,11 @@ def _open(page, url: str, case: str | None = None) -> None:
     _current(page)
 
 
-def test_a_link_keeps_any_case_of_the_chooser_with_its_changes(tmp_path):
+def test_a_link_keeps_any_case_of_the_chooser_with_its_changes(derived_server):
     # Finding 3: linear-axis-inch.toml chosen, its mass set to 70 lb; the address, opened again (a reload, a new
-    # tab), opens that case with that mass, and keeps the address.
-    import shutil
-
-    for name in ("indexing-table.toml", "linear-axis-inch.toml"):
-        shutil.copy(DERIVED_EXAMPLE.parent / name, tmp_path / name)
-    (tmp_path / "indexing-table.toml").write_text(_copy(tmp_path, "x.toml").read_text())
-    (tmp_path / "x.toml").unlink()
-    with served(tmp_path / "indexing-table.toml") as server, browser_page() as page:
-        _open(page, server.url)
+    # tab), opens that case with that mass, and keeps the address. The examples' folder (cases/) as served.
+    with browser_page() as page:
+        _open(page, derived_server.url)
         g = int(page.get_attribute(RESULTS, "data-generation"))
         page.locator(".design-review .dr-case select").select_option(label="linear-axis-inch.toml · PASS")
         wait_for_results(page, g)
@@ -252,7 +246,7 @@ def test_a_closed_pages_kernel_is_culled_within_its_idle_timeout_and_the_page_is
         closed = time.perf_counter()
         alive = [p for p in os.listdir("/proc") if p.isdigit() and _holds(p, f"kernel-{kernel}.json")]
         while alive and time.perf_counter() - closed < 30:
-            time.sleep(2)
+            time.sleep(0.5)
             alive = [p for p in alive if os.path.exists(f"/proc/{p}") and _holds(p, f"kernel-{kernel}.json")]
         gone = time.perf_counter() - closed
         print(f"\nthe closed page's kernel gone after {gone:.1f} s")
