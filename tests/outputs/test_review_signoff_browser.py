@@ -507,8 +507,7 @@ def test_three_variants_the_history_buttons_and_long_notes_fit_from_1024_to_1920
                                    f".includes('kept variant {k}')")
         page.wait_for_function("() => document.querySelectorAll('.design-review .dr-variants thead th').length === 4")
         for width in (1024, 1093, 1366, 1920):
-            page.set_viewport_size({"width": width, "height": 768})
-            page.wait_for_timeout(500)
+            _at_width(page, width)
             table = ".design-review .dr-variants table"
             assert _beyond(page, f"{table} th, {table} tbody tr:first-child td", width) == [], width
             assert page.locator(f"{table} tbody tr:first-child td").nth(3).inner_text() == "PASS"
