@@ -190,6 +190,10 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')"
                                "?.dataset.changed?.includes('peak_torque')", timeout=60_000)
         assert row(page, "motor.peak_torque").locator("input[type=text]").input_value() == "16"
+        # Printed once the reloaded page's results are current: printed while it still computed, the page once gave
+        # its "Out of date: computing" line and no table (three workers on a loaded machine).
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'",
+                               timeout=60_000)
         # Printed on A4, nothing cut: the page's print style puts the results under the controls.
         page.emulate_media(media="print")
         page.pdf(path=str(shots / "printed.pdf"), format="A4", print_background=True)

@@ -12,6 +12,7 @@ import pytest
 from bench.review_browser import browser_page, change, row, served, wait_for_results
 
 from ..conftest import DERIVED_EXAMPLE, ROOT, needs_tools
+from .conftest import shared_server
 
 RESULTS = ".design-review .dr[data-generation]"
 SHOTS = ROOT / "build" / "screenshots" / "sign-off"
@@ -30,10 +31,11 @@ def _copy(tmp_path):
 def example_server(tmp_path_factory):
     """The example (:func:`_copy`, axis.toml, alone in its folder) served once for the tests that read its page and
     write nothing into its folder: each page takes the kernel waiting for it, and the server prepares the next (a
-    server and its kernels started once, not once per test). Its reports' folder (``server.reports``) is one of its
+    server and its kernels started once, not once per test; stopped once no test still to run asks for it,
+    :class:`tests.outputs.conftest.SharedServer`). Its reports' folder (``server.reports``) is one of its
     own: only the printed page's variants PDF goes there, and no page links or offers that."""
     case = _copy(tmp_path_factory.mktemp("example"))
-    with served(case, reports=tmp_path_factory.mktemp("example-reports")) as server:
+    with shared_server(case, tmp_path_factory.mktemp("example-reports"), "example_server") as server:
         yield server
 
 
