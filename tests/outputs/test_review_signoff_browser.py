@@ -253,8 +253,8 @@ def test_a_closed_pages_kernel_is_culled_within_its_idle_timeout_and_the_page_is
         gone = time.perf_counter() - closed
         print(f"\nthe closed page's kernel gone after {gone:.1f} s")
         assert not alive and gone < 2 * idle + 4  # idle, then at most one interval, and 4 s for the shutdown
-    # The next page from a server with `make review`'s timeout: under a 5 s one, the kernel waiting for the next
-    # page was once culled as the page took it, and the page never showed results.
+    # The next page from a server with `make review`'s timeout (the example's, shared): under a 5 s one, the kernel
+    # waiting for the next page was once culled as the page took it, and the page never showed results.
     load = first_load(example_server.url, fresh=False)  # the next page, nothing cached: compressed, and ready
     print(f"next page: ready {load.ready:.2f} s, {load.transfer / 1e6:.2f} MB in {load.requests} requests")
     assert load.transfer < 2e6
