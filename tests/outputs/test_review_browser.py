@@ -13,8 +13,6 @@ shows its input error, and the calc report linked beside the verdict answers as 
 
 import subprocess
 
-import pytest
-
 from bench.review_browser import review_in_browser, served
 from calc.review import serve
 
@@ -41,14 +39,6 @@ CHANGES = [
 ]
 
 pytestmark = needs_tools("chromium")
-
-
-@pytest.fixture(scope="module")
-def derived_server():
-    """One served page of the derived example for the tests that open it and write nothing (each page its own
-    kernel): a server and its first kernel started once, not once per test."""
-    with served(DERIVED_EXAMPLE) as server:
-        yield server
 
 
 def print_times(server, visit):
@@ -104,20 +94,9 @@ MOVE_CHANGES = [
 ]
 
 
-def tiny_pdf(path):
-    """A one-page PDF (matplotlib's, in milliseconds) standing for a calc report: building a real
-    one runs the report notebook and xelatex (11 s on this machine, and only where TeX is
-    installed), which the report tests cover; here only its serving is tested."""
-    from matplotlib.figure import Figure
-
-    Figure(figsize=(1, 1)).savefig(path, format="pdf")
-
-
-def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
-    tiny_pdf(tmp_path / "indexing-table.pdf")
-    with served(DERIVED_EXAMPLE, reports=tmp_path) as server:
-        visit = review_in_browser(server.url, SHOTS / "derived", MOVE_CHANGES, fresh=False)
-    print_times(server, visit)
+def test_a_reviewer_changes_a_move_and_opens_the_calc_report(derived_server):
+    visit = review_in_browser(derived_server.url, SHOTS / "derived", MOVE_CHANGES, fresh=False)
+    print_times(derived_server, visit)
     print(f"calc report: {visit.report}")
     seen = dict(visit.seen)
     first = seen["first"]
@@ -138,7 +117,8 @@ def test_a_reviewer_changes_a_move_and_opens_the_calc_report(tmp_path):
     assert [c.replace("\xa0", " ") for c in visit.choices] == [
         "ball-screw-direct.toml · PASS", "indexing-table.toml · PASS", "linear-axis-inch.toml · PASS"]
     href, status, content_type, head = visit.report
-    assert href == serve.report_address(tmp_path / "indexing-table.pdf", tmp_path)
+    reports = derived_server.reports
+    assert href == serve.report_address(reports / "indexing-table.pdf", reports)
     assert status == 200 and content_type == "application/pdf" and head == b"%PDF-"
 
 
@@ -191,11 +171,11 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         page.wait_for_timeout(300)
         assert row(page, "profile[4].duration").locator("input[type=text]").input_value() == "1.2"
         row(page, "profile[1].torque").locator("input[type=text]").fill("70")  # typed, not entered
-        page.wait_for_timeout(700)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state !== 'current'")
         assert state() == "stale" and "dr-stale" in page.get_attribute(".design-review", "class")
         page.screenshot(path=str(shots / "out-of-date.png"))
         row(page, "profile[1].torque").locator("input[type=text]").fill("60")
-        page.wait_for_timeout(700)
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state !== 'stale'")
         assert state() == "current"
         g = generation()
         page.locator(".design-review button", has_text="undo").click()
@@ -210,6 +190,10 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
         page.wait_for_function("() => document.querySelector('.design-review .dr[data-generation]')"
                                "?.dataset.changed?.includes('peak_torque')", timeout=60_000)
         assert row(page, "motor.peak_torque").locator("input[type=text]").input_value() == "16"
+        # Printed once the reloaded page's results are current: printed while it still computed, the page once gave
+        # its "Out of date: computing" line and no table (three workers on a loaded machine).
+        page.wait_for_function("() => document.querySelector('.design-review .dr-state').dataset.state === 'current'",
+                               timeout=60_000)
         # Printed on A4, nothing cut: the page's print style puts the results under the controls.
         page.emulate_media(media="print")
         page.pdf(path=str(shots / "printed.pdf"), format="A4", print_background=True)

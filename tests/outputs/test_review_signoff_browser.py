@@ -12,6 +12,7 @@ import pytest
 from bench.review_browser import browser_page, change, row, served, wait_for_results
 
 from ..conftest import DERIVED_EXAMPLE, ROOT, needs_tools
+from .conftest import shared_server
 
 RESULTS = ".design-review .dr[data-generation]"
 SHOTS = ROOT / "build" / "screenshots" / "sign-off"
@@ -19,11 +20,23 @@ SHOTS = ROOT / "build" / "screenshots" / "sign-off"
 pytestmark = needs_tools("chromium")
 
 
-def _copy(tmp_path, name="axis.toml"):
-    """The example in a folder of its own (a saved file lands there)."""
-    path = tmp_path / name
+def _copy(tmp_path):
+    """The example in a folder of its own (a saved file lands there), as axis.toml."""
+    path = tmp_path / "axis.toml"
     path.write_text(DERIVED_EXAMPLE.read_text().replace('"../data/', f'"{ROOT}/data/'))
     return path
+
+
+@pytest.fixture(scope="module")
+def example_server(tmp_path_factory):
+    """The example (:func:`_copy`, axis.toml, alone in its folder) served once for the tests that read its page and
+    write nothing into its folder: each page takes the kernel waiting for it, and the server prepares the next (a
+    server and its kernels started once, not once per test; stopped once no test still to run asks for it,
+    :class:`tests.outputs.conftest.SharedServer`). Its reports' folder (``server.reports``) is one of its
+    own: only the printed page's variants PDF goes there, and no page links or offers that."""
+    case = _copy(tmp_path_factory.mktemp("example"))
+    with shared_server(case, tmp_path_factory.mktemp("example-reports"), "example_server") as server:
+        yield server
 
 
 def _current(page) -> None:
@@ -44,13 +57,13 @@ def _field(page, key: str) -> str:
     return row(page, key).locator("input[type=text]").input_value()
 
 
-def test_a_field_the_file_leaves_out_shows_the_value_computed(tmp_path):
+def test_a_field_the_file_leaves_out_shows_the_value_computed(example_server):
     # Finding 1: the example leaves the decel time out, so it follows the accel time. Accel 0.3 s in
     # a move of 0.7 s: the field shows 0.3 s, and the peak speed is 0.25 rev / (0.7 − 0.3) s = 37.5 rpm
     # (the 0.15 s the field used to show would give 31.58 rpm).
     SHOTS.mkdir(parents=True, exist_ok=True)
-    with served(_copy(tmp_path)) as server, browser_page() as page:
-        page.goto(server.url)
+    with browser_page() as page:
+        page.goto(example_server.url)
         page.wait_for_selector(RESULTS, timeout=60_000)
         follows = row(page, "move[1].decel_time").locator(".dr-follows")
         assert follows.inner_text() == "left out of the file: follows the accel time ta"  # t_a typeset
@@ -69,11 +82,11 @@ def test_a_field_the_file_leaves_out_shows_the_value_computed(tmp_path):
         assert row(page, "move[1].decel_time").locator(".dr-changed").count() == 1
 
 
-def test_the_same_motion_written_twice_gives_the_same_verdict_in_the_page(tmp_path):
+def test_the_same_motion_written_twice_gives_the_same_verdict_in_the_page(example_server):
     # Finding 2 (E16): a copy of the move and of the dwell (index, 1 s, index, 1 s) is the example's motion
     # twice: Z_h = 2 · 3600 / 3 s = 2400 /h, as before, so f_s 1.6 and T_2max 100.9 N·m stay, and the verdict.
-    with served(_copy(tmp_path)) as server, browser_page() as page:
-        page.goto(server.url)
+    with browser_page() as page:
+        page.goto(example_server.url)
         page.wait_for_selector(RESULTS, timeout=60_000)
         first = page.inner_text(RESULTS)
         assert first.startswith("PASS") and "100.9 N·m" in first and "2400" in first
@@ -99,17 +112,11 @@ def _open(page, url: str, case: str | None = None) -> None:
     _current(page)
 
 
-def test_a_link_keeps_any_case_of_the_chooser_with_its_changes(tmp_path):
+def test_a_link_keeps_any_case_of_the_chooser_with_its_changes(derived_server):
     # Finding 3: linear-axis-inch.toml chosen, its mass set to 70 lb; the address, opened again (a reload, a new
-    # tab), opens that case with that mass, and keeps the address.
-    import shutil
-
-    for name in ("indexing-table.toml", "linear-axis-inch.toml"):
-        shutil.copy(DERIVED_EXAMPLE.parent / name, tmp_path / name)
-    (tmp_path / "indexing-table.toml").write_text(_copy(tmp_path, "x.toml").read_text())
-    (tmp_path / "x.toml").unlink()
-    with served(tmp_path / "indexing-table.toml") as server, browser_page() as page:
-        _open(page, server.url)
+    # tab), opens that case with that mass, and keeps the address. The examples' folder (cases/) as served.
+    with browser_page() as page:
+        _open(page, derived_server.url)
         g = int(page.get_attribute(RESULTS, "data-generation"))
         page.locator(".design-review .dr-case select").select_option(label="linear-axis-inch.toml · PASS")
         wait_for_results(page, g)
@@ -221,7 +228,7 @@ def test_a_restarted_kernel_is_said_with_what_to_do_and_typed_values_survive(tmp
         assert "1700 kg·cm²" in page.inner_text(RESULTS)
 
 
-def test_a_closed_pages_kernel_is_culled_within_its_idle_timeout_and_the_page_is_compressed(tmp_path):
+def test_a_closed_pages_kernel_is_culled_within_its_idle_timeout_and_the_page_is_compressed(tmp_path, example_server):
     # Finding 11: each page's kernel (some 100 MB) stayed 10 minutes after its page closed, and a load sent 5.2 MB.
     # Served here with an idle timeout of 5 s (looked at every 5 s), so the closed page's kernel is gone within
     # 5 + 5 s and a margin; that `make review` culls within a minute (45 s, looked at every 15 s) is held by
@@ -241,17 +248,16 @@ def test_a_closed_pages_kernel_is_culled_within_its_idle_timeout_and_the_page_is
         closed = time.perf_counter()
         alive = [p for p in os.listdir("/proc") if p.isdigit() and _holds(p, f"kernel-{kernel}.json")]
         while alive and time.perf_counter() - closed < 30:
-            time.sleep(2)
+            time.sleep(0.5)
             alive = [p for p in alive if os.path.exists(f"/proc/{p}") and _holds(p, f"kernel-{kernel}.json")]
         gone = time.perf_counter() - closed
         print(f"\nthe closed page's kernel gone after {gone:.1f} s")
         assert not alive and gone < 2 * idle + 4  # idle, then at most one interval, and 4 s for the shutdown
-    # The next page from a server with `make review`'s timeout: under a 5 s one, the kernel waiting for the next
-    # page was once culled as the page took it, and the page never showed results.
-    with served(_copy(tmp_path)) as server:
-        load = first_load(server.url, fresh=False)  # the next page, nothing cached: compressed, and ready
-        print(f"next page: ready {load.ready:.2f} s, {load.transfer / 1e6:.2f} MB in {load.requests} requests")
-        assert load.transfer < 2e6
+    # The next page from a server with `make review`'s timeout (the example's, shared): under a 5 s one, the kernel
+    # waiting for the next page was once culled as the page took it, and the page never showed results.
+    load = first_load(example_server.url, fresh=False)  # the next page, nothing cached: compressed, and ready
+    print(f"next page: ready {load.ready:.2f} s, {load.transfer / 1e6:.2f} MB in {load.requests} requests")
+    assert load.transfer < 2e6
 
 
 def _holds(pid: str, text: str) -> bool:
@@ -261,8 +267,24 @@ def _holds(pid: str, text: str) -> bool:
         return False
 
 
+@pytest.fixture(scope="module")
+def decides_page(example_server):
+    """One page of the example for the widths its verdicts are looked at: opened at the narrowest, each width then
+    set in turn (:func:`_at_width`), as the variants' test does, not a page and a kernel for each."""
+    with browser_page({"width": 1024, "height": 768}) as page:
+        _open(page, example_server.url)
+        yield page
+
+
+def _at_width(page, width: int) -> None:
+    """Set the page's viewport ``width`` wide (768 high), and wait until it is drawn at that width."""
+    page.set_viewport_size({"width": width, "height": 768})
+    page.wait_for_function(f"() => window.innerWidth === {width}")
+    page.evaluate("() => new Promise(done => requestAnimationFrame(() => requestAnimationFrame(done)))")
+
+
 @pytest.mark.parametrize("width", [1024, 1093])  # 1093: a 1366 px laptop at 125 % scaling
-def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(tmp_path, width):
+def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(decides_page, width):
     # Finding 7: the line under the verdict names the most utilized governing check of each part: on the example the
     # drive SA54.0075 by its DC link against the one the motor's ratings are for (565 V of 565 V: 100 %), the
     # motor by λ = 9.443 of 10 (94 %), the
@@ -270,36 +292,36 @@ def test_what_decides_the_design_is_said_and_every_verdict_shows_at_1024_px(tmp_
     # NPT035-10 by its hub (19 of 38 mm, 50 %); η (0.97) stands beside T_2max = 6.5 · 10 · 1.6 · 0.97 = 100.9 N·m.
     # Finding 8: at 1024 px every verdict of the governing checks is on the screen.
     SHOTS.mkdir(parents=True, exist_ok=True)
-    with served(_copy(tmp_path)) as server, browser_page({"width": width, "height": 768}) as page:
-        _open(page, server.url)
-        decides = page.inner_text(f"{RESULTS} .decides")
-        assert decides.startswith("What decides the design: drive SA54.0075 by UDC ≥ 565 V "
-                                  "(motor's characteristic) at 100 %; motor SGMUH-10DA by λ ≤ λmax at 94 %; ")
-        assert "coupling AKN-18 by 2 fer ≤ f1 at 75 %" in decides
-        assert "gearbox NPT035-10 by dmotor ≤ dhub,max at 50 %" in decides
-        assert "T2max 100.9 N·m (with η 0.97)" in page.inner_text(RESULTS)
-        # Finding 6: one λ, or a word where another is shown: the gearbox candidates' λ (NPT035-10: (0.93 + 15) / 1.74
-        # = 9.16) counts its J_1 alone, the motor's check (0.93 + 0.5 + 15) / 1.74 = 9.443 the coupling AKN-18 too.
-        shown = page.inner_text(RESULTS)
-        assert "λ, J1 alone" in shown
-        assert "the motor's check, the ratio search and the dynamics count its J too" in shown
-        cells = page.locator(f"{RESULTS} table").first.locator("tr td:last-child")
-        assert cells.count() >= 10
-        for k in range(cells.count()):
-            box = cells.nth(k).bounding_box()
-            assert box["x"] + box["width"] <= width, (k, box)
-        # The buttons of the case row (reset, undo, redo) are not cut either.
-        for name in ("reset", "undo", "redo"):
-            box = page.locator(".design-review button", has_text=name).first.bounding_box()
-            assert box["x"] + box["width"] <= width, name
-        page.screenshot(path=str(SHOTS / f"decides-{width}.png"))
+    page = decides_page
+    _at_width(page, width)
+    decides = page.inner_text(f"{RESULTS} .decides")
+    assert decides.startswith("What decides the design: drive SA54.0075 by UDC ≥ 565 V "
+                              "(motor's characteristic) at 100 %; motor SGMUH-10DA by λ ≤ λmax at 94 %; ")
+    assert "coupling AKN-18 by 2 fer ≤ f1 at 75 %" in decides
+    assert "gearbox NPT035-10 by dmotor ≤ dhub,max at 50 %" in decides
+    assert "T2max 100.9 N·m (with η 0.97)" in page.inner_text(RESULTS)
+    # Finding 6: one λ, or a word where another is shown: the gearbox candidates' λ (NPT035-10: (0.93 + 15) / 1.74
+    # = 9.16) counts its J_1 alone, the motor's check (0.93 + 0.5 + 15) / 1.74 = 9.443 the coupling AKN-18 too.
+    shown = page.inner_text(RESULTS)
+    assert "λ, J1 alone" in shown
+    assert "the motor's check, the ratio search and the dynamics count its J too" in shown
+    cells = page.locator(f"{RESULTS} table").first.locator("tr td:last-child")
+    assert cells.count() >= 10
+    for k in range(cells.count()):
+        box = cells.nth(k).bounding_box()
+        assert box["x"] + box["width"] <= width, (k, box)
+    # The buttons of the case row (reset, undo, redo) are not cut either.
+    for name in ("reset", "undo", "redo"):
+        box = page.locator(".design-review button", has_text=name).first.bounding_box()
+        assert box["x"] + box["width"] <= width, name
+    page.screenshot(path=str(SHOTS / f"decides-{width}.png"))
 
 
-def test_controls_have_accessible_names_a_live_state_and_keyboard_forcing(tmp_path):
+def test_controls_have_accessible_names_a_live_state_and_keyboard_forcing(example_server):
     # Finding 10: every field, slider and chooser named by its row's label; the state line a live region; a
     # candidate's row forced from the keyboard: NPT025-10 (T_2B 90 N·m < T_2max 100.9 N·m) fails, as a click gives.
-    with served(_copy(tmp_path)) as server, browser_page() as page:
-        _open(page, server.url)
+    with browser_page() as page:
+        _open(page, example_server.url)
         page.wait_for_timeout(700)
         unnamed = page.evaluate("() => [...document.querySelectorAll('.design-review .dr-row input[type=text],"
                                 " .design-review .dr-row select, .design-review .dr-row [role=slider]')]"
@@ -321,7 +343,7 @@ def test_controls_have_accessible_names_a_live_state_and_keyboard_forcing(tmp_pa
             "NPT025-10"
 
 
-def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
+def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path, example_server):
     # Finding 9: printed, the page starts with the case file (and its SHA-256), the date, the version and the commit;
     # the variants PDF has the same title block, and its symbols typeset.
     import hashlib
@@ -330,10 +352,9 @@ def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
     from calc import __version__
 
     SHOTS.mkdir(parents=True, exist_ok=True)
-    case = _copy(tmp_path)
-    digest = hashlib.sha256(case.read_bytes()).hexdigest()[:16]
-    with served(case, reports=tmp_path) as server, browser_page() as page:
-        _open(page, server.url)
+    digest = hashlib.sha256(example_server.case.read_bytes()).hexdigest()[:16]
+    with browser_page() as page:
+        _open(page, example_server.url)
         page.emulate_media(media="print")
         page.pdf(path=str(tmp_path / "printed.pdf"), format="A4", print_background=True)
         page.emulate_media(media="screen")
@@ -347,7 +368,7 @@ def test_a_printed_page_and_the_variants_pdf_carry_a_title_block(tmp_path):
         page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('kept variant 1')")
         page.locator(".design-review button", has_text="Variants as PDF").click()
         page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('as a PDF')")
-        pdf = tmp_path / "axis-variants-1.pdf"
+        pdf = example_server.reports / "axis-variants-1.pdf"  # the only file written there
         text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True).stdout
         assert f"calc {__version__}" in text and f"axis.toml sha256 {digest}" in text and "commit" in text
         assert "T_2max" not in text and "2max" in text  # typeset: T with the subscript 2max
@@ -473,14 +494,14 @@ def _beyond(page, selector: str, width: int) -> list:
         .filter(([_, right]) => right > {width})""")
 
 
-def test_three_variants_the_history_buttons_and_long_notes_fit_from_1024_to_1920_px(tmp_path):
+def test_three_variants_the_history_buttons_and_long_notes_fit_from_1024_to_1920_px(example_server):
     # Finding 8: three variants kept (J_L 1600, 1400 and 1300 kg·cm²): at 1366 px the third variant's column was
     # off-screen (the column heads, the variants' names, did not wrap); at 1024, 1093 (a 1366 px laptop at 125 %),
     # 1366 and 1920 px every variant's head and verdict, the reset, undo and redo buttons and every note are within
     # the viewport's width.
     SHOTS.mkdir(parents=True, exist_ok=True)
-    with served(_copy(tmp_path)) as server, browser_page({"width": 1366, "height": 768}) as page:
-        _open(page, server.url)
+    with browser_page({"width": 1366, "height": 768}) as page:
+        _open(page, example_server.url)
         for k, inertia in enumerate(("1600", "1400", "1300"), 1):
             _changed(page, "mechanism.inertia", inertia)
             page.locator(".design-review button", has_text="Keep as variant").click()
@@ -488,8 +509,7 @@ def test_three_variants_the_history_buttons_and_long_notes_fit_from_1024_to_1920
                                    f".includes('kept variant {k}')")
         page.wait_for_function("() => document.querySelectorAll('.design-review .dr-variants thead th').length === 4")
         for width in (1024, 1093, 1366, 1920):
-            page.set_viewport_size({"width": width, "height": 768})
-            page.wait_for_timeout(500)
+            _at_width(page, width)
             table = ".design-review .dr-variants table"
             assert _beyond(page, f"{table} th, {table} tbody tr:first-child td", width) == [], width
             assert page.locator(f"{table} tbody tr:first-child td").nth(3).inner_text() == "PASS"
