@@ -283,7 +283,7 @@ def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, 
     first : bool
         Examine the motors one at a time in the rule's order and stop at the first that has a pair
         that passes, the arrays holding the motors up to it (the pick alone is wanted: a case's
-        evaluation); default False, every pair.
+        evaluation; screened :data:`SCREEN_PAIRS` pairs at a time); default False, every pair.
     confirm : callable, optional
         ``confirm(gearbox row, motor)`` -> bool: whether the pair, evaluated in full, passes (a case's
         evaluation: the coupling chosen with that motor counted); None: every pair that passes is taken.
@@ -319,31 +319,43 @@ def _screen(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_lim
     return Combinations(peak, rms, utilization, feasible, None)
 
 
+#: The most pairs the evaluation's search screens in one numpy pass: every motor at once against the few
+#: rows a catalog has at a ratio, a few motors at a time against a large catalog's, so that its memory
+#: and time stay those of the rows (100,000 rows x 184 motors at once took 1.2 GB).
+SCREEN_PAIRS = 100_000
+
+
 def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limit: float, examine,
            confirm) -> Combinations:
-    """:func:`search` with ``first``: every motor screened at once (one pass of numpy over the pairs),
-    then examined one at a time in the rule's order until one has a pair that passes; the arrays hold
-    the motors up to it (:attr:`Combinations.motors`)."""
+    """:func:`search` with ``first``: the motors screened in the rule's order, as many at once as
+    :data:`SCREEN_PAIRS` allows (one pass of numpy over their pairs), each examined in turn until one has
+    a pair that passes; the arrays hold the motors up to it (:attr:`Combinations.motors`)."""
     order = np.lexsort((mo["J"][0], mo["rated_torque"][0]))
     ordered = {k: v[:, order] for k, v in mo.items()}
-    screened = _screen(moments, speeds, g, ordered, inertia_limit)
-    share = screened.rms / ordered["rated_torque"]
-    found, last = None, len(order) - 1
-    for j, m in enumerate(order.tolist()):
-        if not screened.feasible[:, j].any():
-            continue  # no pair of it passes the screen: nothing to examine
-        one = slice(j, j + 1)  # views: what examining it finds is marked in the arrays
-        found = _pick(screened.feasible[:, one], screened.utilization[:, one], share[:, one], g,
-                      {k: v[:, one] for k, v in ordered.items()},
-                      None if examine is None else lambda _, rows, m=m: examine(m, rows),
-                      None if confirm is None else lambda row, _, m=m: confirm(row, m))
+    step = max(1, SCREEN_PAIRS // max(len(g["i"]), 1))
+    done, found, count = [], None, len(order)
+    for start in range(0, len(order), step):
+        part = {k: v[:, start:start + step] for k, v in ordered.items()}
+        screened = _screen(moments, speeds, g, part, inertia_limit)
+        done.append(screened)
+        share = screened.rms / part["rated_torque"]
+        for j in range(screened.feasible.shape[1]):
+            if not screened.feasible[:, j].any():
+                continue  # no pair of it passes the screen: nothing to examine
+            one, m = slice(j, j + 1), int(order[start + j])  # views: what examining it finds is marked in the arrays
+            found = _pick(screened.feasible[:, one], screened.utilization[:, one], share[:, one], g,
+                          {k: v[:, one] for k, v in part.items()},
+                          None if examine is None else lambda _, rows, m=m: examine(m, rows),
+                          None if confirm is None else lambda row, _, m=m: confirm(row, m))
+            if found is not None:
+                count = start + j + 1
+                break
         if found is not None:
-            last = j
             break
-    out = Combinations(*(getattr(screened, k)[:, :last + 1] for k in ("peak", "rms", "utilization", "feasible")),
-                       None, motors=order[:last + 1])
+    out = Combinations(*(np.concatenate([getattr(c, k) for c in done], axis=1)[:, :count]
+                         for k in ("peak", "rms", "utilization", "feasible")), None, motors=order[:count])
     if found is not None:
-        out.pick = (found[0], last)
+        out.pick = (found[0], count - 1)
     else:
         out.closest = _closest(out.utilization)
     return out

@@ -7,6 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from calc import Q_
+from calc.domain import combinations
 from calc.domain.combinations import CycleMoments, Envelope, motor_torques, search
 from calc.domain.gearbox import INERTIA_RATIO_LIMIT
 from calc.domain.motor import motor_load
@@ -215,6 +216,14 @@ def test_the_first_motor_screened_is_the_pick_of_the_whole_table(seed, rows, mot
     # the motors screened together give each pair's torques as the whole table does, to the last bit
     screened = first.motors
     assert np.array_equal(first.peak, whole.peak[:, screened]) and np.array_equal(first.rms, whole.rms[:, screened])
+    # and so do the motors screened a few at a time (a large catalog's rows): the same pick and arrays
+    kept, combinations.SCREEN_PAIRS = combinations.SCREEN_PAIRS, rows + 1
+    try:
+        few = search(m, (10.0, 4.0), gearboxes, motors, INERTIA_RATIO_LIMIT, first=True, **kw)
+    finally:
+        combinations.SCREEN_PAIRS = kept
+    assert few.pick == first.pick and few.closest == first.closest and np.array_equal(few.motors, first.motors)
+    assert all(np.array_equal(getattr(few, k), getattr(first, k)) for k in ("peak", "rms", "utilization", "feasible"))
     if whole.pick is None:
         _, k = first.closest
         assert whole.utilization[first.closest[0], first.motors[k]] == pytest.approx(whole.utilization[whole.closest])
