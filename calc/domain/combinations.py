@@ -314,8 +314,9 @@ def _screen(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_lim
                     mo["peak_torque"] / g["peak_limit"], lam / inertia_limit]
     if "rated_speed" in mo:
         utilizations.append(mean * g["i"] / mo["rated_speed"])
-    utilization = np.maximum.reduce(utilizations)
-    feasible = (g["passes"] > 0) & np.logical_and.reduce([within_rating(u) for u in utilizations])
+    utilization = np.maximum.reduce(utilizations)  # NaN where any is: within no rating
+    # every utilization within its rating is the highest within it (one comparison, not one per check)
+    feasible = (g["passes"] > 0) & within_rating(utilization)
     return Combinations(peak, rms, utilization, feasible, None)
 
 

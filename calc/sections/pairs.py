@@ -324,8 +324,7 @@ def case_rows(case: Case):
     catalog, _ = catalogs(case)
     if case.gearbox_part is not None:
         return catalog.rows([catalog.usable_index(case.gearbox_part, f"{where}.part")])
-    rows = rows_at_ratio(catalog, case.ratio, f"{where}.ratio")
-    return rows.rows(~rows.partial)
+    return rows_at_ratio(catalog, case.ratio, f"{where}.ratio")  # its partial rows left out already
 
 
 def _gear_rows(case: Case, gear, hubs, J_c: float) -> tuple[dict, list]:
