@@ -1052,6 +1052,26 @@ PAGE_RUNS = 3
 CROWD, CROWD_ROUNDS = 5, 3
 
 
+def settle(quick: bool) -> float:
+    """How long a page is read before its first timed change [s]: the server starts the next page's
+    kernel ``FILL_DELAY`` after a page takes one (:mod:`calc.review.serve`), and its start (about a
+    second) is over before the changes are timed; at the quick size, a second.
+
+    Parameters
+    ----------
+    quick : bool
+        The quick size (``--quick``).
+
+    Returns
+    -------
+    float
+        The time [s].
+    """
+    from calc.review.serve import FILL_DELAY
+
+    return 1.0 if quick else FILL_DELAY + 1.0
+
+
 def spread(values: list[float], unit: str = "s") -> str:
     """``median of 3: min 0.1, max 0.2 s`` of several runs' figures."""
     if len(values) == 1:
@@ -1071,7 +1091,7 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
     for _ in range(1 if quick else PAGE_RUNS):
         with served() as server:
             runs.append((server.started, review_in_browser(server.url, workdir / "screenshots", changes,
-                                                           settle=1.0 if quick else 3.0, results_each=True)))
+                                                           settle=settle(quick), results_each=True)))
             if len(runs) == 1:
                 first = first_load(server.url)  # a second reviewer, nothing cached
     memory = first.kernel_mb
@@ -1101,7 +1121,7 @@ def measure_crowd(quick: bool) -> list[str]:
     pages = 2 if quick else CROWD
     rounds = [[f"{0.6 + 0.05 * (r * pages + k):g}" for k in range(pages)] for r in range(1 if quick else CROWD_ROUNDS)]
     with served() as server:
-        crowd = reviewers_at_once(server, "move[1].time", rounds, settle=1.0 if quick else 3.0)
+        crowd = reviewers_at_once(server, "move[1].time", rounds, settle=settle(quick))
     note = f"{pages} pages at once, {len(rounds)} rounds of changes"
     return [
         line(f"review_{CROWD}_reviewers_median", crowd.median, "s", ("<=", 0.5),

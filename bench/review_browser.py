@@ -104,8 +104,6 @@ class Server:
     url: str
     started: float  # s from the command to its first kernel launched (the page's notebook not yet run in it)
     process: subprocess.Popen | None = None
-    case: Path | None = None  # the case file the page opens (None: what ``make review`` opens)
-    reports: Path | None = None  # the folder of the reports the page links (None: ``reports/``)
 
     def stop(self) -> None:
         """Stop the server (and its kernels) now, as a dropped connection would leave the page."""
@@ -150,7 +148,7 @@ def served(case: Path | None = None, timeout: float = 90.0, reports: Path | None
     try:
         if not filled.wait(timeout):
             raise RuntimeError("the review server prepared no kernel: " + "".join(log)[-3000:])
-        up = Server(f"http://127.0.0.1:{port}/", time.perf_counter() - start, server, case, reports)
+        up = Server(f"http://127.0.0.1:{port}/", time.perf_counter() - start, server)
         yield up
     finally:
         Server("", 0.0, server).stop()

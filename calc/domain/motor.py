@@ -24,7 +24,6 @@ against the samples of one cycle (shape ``(samples,)``) gives the torques of eve
 from __future__ import annotations
 
 import functools
-
 from dataclasses import dataclass
 
 import numpy as np

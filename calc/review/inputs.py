@@ -156,7 +156,7 @@ class InputSpec:
         """
         if unit == self.unit or self.options:
             return self
-        f = float(Q_(1.0, self.unit).m_as(unit))  # no unit of an input offsets its zero (temperatures stay)
+        f = unit_factor(self.unit, unit)
         exact = self.value if self.exact is None else self.exact
         return dataclasses.replace(self, unit=unit, low=self.low * f, high=self.high * f, step=self.step * f,
                                    value=self.value * f, exact=exact * f)
@@ -413,6 +413,30 @@ def unit_shown(unit: str, system: str) -> str:
     ('lb*in**2', 'N*m', 's')
     """
     return INCH_POUND.get(unit, unit) if system == "inch-pound" else SI_UNIT.get(unit, unit)
+
+
+def unit_factor(unit: str, shown: str) -> float:
+    """What a value in ``unit`` is multiplied by to be in ``shown``: no unit of an input offsets its zero
+    (the temperatures an input takes are shown in their own unit in both systems).
+
+    Parameters
+    ----------
+    unit : str
+        The input's unit as the case file writes it.
+    shown : str
+        The unit its field shows (:func:`unit_shown`).
+
+    Returns
+    -------
+    float
+        The factor [shown / unit].
+
+    Examples
+    --------
+    >>> round(unit_factor("kg*cm**2", "lb*in**2"), 5)
+    0.34172
+    """
+    return float(Q_(1.0, unit).m_as(shown))
 
 
 def is_inch_pound(unit: str) -> bool:

@@ -14,8 +14,7 @@ from __future__ import annotations
 
 import json
 import re
-import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..core.errors import CalcError, as_found
@@ -152,7 +151,7 @@ class Screen:
     changes: dict
     text: str | None = None
     file_texts: dict | None = None
-    factors: dict = dataclasses.field(default_factory=dict)
+    factors: dict = field(default_factory=dict)
 
     @property
     def changed_texts(self) -> dict:

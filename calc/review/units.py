@@ -6,7 +6,7 @@ read in the unit its field shows and kept in the file's, and the page's address 
 from __future__ import annotations
 
 from ..core.units import Q_
-from .inputs import InputSpec, unit_shown
+from .inputs import InputSpec, unit_factor, unit_shown
 
 
 class ShownUnits:
@@ -90,5 +90,5 @@ class ShownUnits:
         for spec in self.specs:
             shown = self.shown_spec(spec.key)
             if shown is not spec:
-                out[spec.key] = float(Q_(1.0, spec.unit).m_as(shown.unit))
+                out[spec.key] = unit_factor(spec.unit, shown.unit)
         return out

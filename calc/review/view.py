@@ -71,6 +71,7 @@ def evaluated(case: Case) -> tuple[Report, list[str]]:
     -------
     tuple
         The report (:class:`calc.report.Report`) and the sentences of what was left out (none where
+        the whole case is evaluated, or where leaving out one section does not help: the report's
         error says why). Without the search of every ratio (:attr:`calc.report.Report.ratios`, the PDF's):
         the page runs it where asked for.
     """

@@ -224,8 +224,8 @@ def checked_at(s: RatioSearch, part: str, named: bool, fails: tuple = ()) -> Che
     if s.pick is None:
         return CheckedAt(ratio, part, False, f"{head}; the search picks no ratio.")
     if not s.feasible[k]:
-        fails = s.gearbox_reasons(k)
-        why = f"at {ratio:g} {part} fails ({fails[0]})" if fails else \
+        reasons = s.gearbox_reasons(k)
+        why = f"at {ratio:g} {part} fails ({reasons[0]})" if reasons else \
             f"at {ratio:g} the motor fails ({(s.motor_reasons(k) or ['a check not made'])[0]})"
     elif not s.inertia_within[k] and s.inertia_within[s.pick]:
         why = f"at {ratio:g} λ = {sig(s.inertia_ratio[k], 3)} exceeds {s.inertia_limit:g}"
