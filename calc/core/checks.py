@@ -302,16 +302,22 @@ def rank(passes, size, worst_utilization, parts, later=None) -> np.ndarray:
     worst = np.where(np.isnan(worst_utilization), np.inf, _significant(worst_utilization))
     size_key = np.where(passes, _significant(size), 0.0)
     shown_later = np.zeros(len(passes), bool) if later is None else passes & np.asarray(later, bool)
-    keys = (worst, size_key, shown_later, ~passes)
-    order = np.lexsort(keys)
-    # Rows tied on every key go by part name. Names are sorted within the tied runs only: sorting
-    # text costs more than all the numeric keys together, and a catalog has few ties.
-    tied = np.logical_and.reduce([k[order][1:] == k[order][:-1] for k in keys])
+    # The keys in one integer, (group, size, utilization) each as its rank among the distinct values:
+    # one sort of integers, a third of the time of a stable sort by each key in turn.
+    sizes, size_rank = np.unique(size_key, return_inverse=True)
+    worsts, worst_rank = np.unique(worst, return_inverse=True)
+    group = (~passes).astype(np.int64) * 2 + shown_later
+    key = (group * len(sizes) + size_rank.ravel()) * len(worsts) + worst_rank.ravel()
+    order = np.argsort(key)
+    # Rows tied on every key go by part name, then by row (a sort that is not stable leaves their
+    # order open). Names are sorted within the tied runs only: sorting text costs more than the
+    # numeric keys, and a catalog has few ties.
+    tied = key[order][1:] == key[order][:-1]
     if tied.any():
         run = np.cumsum(np.concatenate(([True], ~tied)))
         at = np.flatnonzero(np.concatenate(([False], tied)) | np.concatenate((tied, [False])))
         rows = order[at]
-        order[at] = rows[np.lexsort((np.asarray(parts)[rows].astype(str), run[at]))]
+        order[at] = rows[np.lexsort((rows, np.asarray(parts)[rows].astype(str), run[at]))]
     return order
 
 

@@ -204,7 +204,7 @@ class Formula:
             A function of the inputs' SI magnitudes, in the order of :attr:`inputs`.
         """
         s = _sympy()
-        return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": sum_last_axis}, "numpy"])
+        return s.sp.lambdify(self._symbols, self.expr, modules=[{"SegmentSum": sum_last_axis}, "numpy"], cse=True)
 
     def numeric_source(self, name: str) -> str:
         """The source of :meth:`lambdified` as a function called ``name``.

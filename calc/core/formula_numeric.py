@@ -116,7 +116,8 @@ def drive__u_th(T_1, M_0):
 
 
 def drive__theta_max(u_th, t_1, t_cycle, T_th):
-    return u_th*(1 - exp(-t_1/T_th))/(1 - exp(-t_cycle/T_th))
+    x0 = T_th**(-1.0)
+    return u_th*(1 - exp(-t_1*x0))/(1 - exp(-t_cycle*x0))
 
 
 def dynamics__f_r(C_s, rad, J_motor, J_Lm):
@@ -288,7 +289,9 @@ def motor_ratings__T_peak_line(M_max, M_N_motor, n, n_N, n_max):
 
 
 def motor_ratings__T_V(U_DC, k_E, k_T, R_ph, L_ph, poles, n, rad):
-    return k_T*(-1/3*sqrt(3)*R_ph*k_E*n + sqrt(-1/12*L_ph**2*k_E**2*n**4*poles**2/rad**2 + (1/6)*U_DC**2*((1/4)*L_ph**2*n**2*poles**2/rad**2 + R_ph**2)))/((1/4)*L_ph**2*n**2*poles**2/rad**2 + R_ph**2)
+    x0 = L_ph**2*poles**2/rad**2
+    x1 = R_ph**2 + (1/4)*n**2*x0
+    return k_T*(-1/3*sqrt(3)*R_ph*k_E*n + sqrt((1/6)*U_DC**2*x1 - 1/12*k_E**2*n**4*x0))/x1
 
 
 def profile__ED(t_on, t_cycle):
@@ -300,7 +303,8 @@ def profile__n_2m(n_2k, t_k):
 
 
 def profile__T_2m(n_2k, t_k, T_2k):
-    return (SegmentSum(t_k*abs(T_2k)**3*abs(n_2k))/SegmentSum(t_k*abs(n_2k)))**(1/3)
+    x0 = abs(n_2k)
+    return (SegmentSum(t_k*x0*abs(T_2k)**3)/SegmentSum(t_k*x0))**(1/3)
 
 
 def profile__Z_h(z_c, t_cycle):
@@ -336,7 +340,8 @@ def stiffness__phi_c2(T, T_L1, K_1, K_2):
 
 
 def stiffness__phi_c3(T, T_L1, T_L2, K_1, K_2, K_3):
-    return (T - T_L2)/K_3 + (-T_L1 + T_L2)/K_2 + T_L1/K_1
+    x0 = -T_L2
+    return (T + x0)/K_3 + (-T_L1 - x0)/K_2 + T_L1/K_1
 
 
 def stiffness__C_sec(T, phi):
@@ -356,7 +361,12 @@ def torsion__J_out(J_in, i):
 
 
 def torsion__f_1(J_a, J_b, J_c, C_ab, C_bc, rad):
-    return (1/2)*sqrt(2)*sqrt(C_ab*C_bc*rad**2*(J_a + J_b + J_c)/(J_a*J_b*J_c*(C_ab*rad*(J_b**(-1.0) + J_a**(-1.0)) + C_bc*rad*(J_c**(-1.0) + J_b**(-1.0)) + sqrt(-4*C_ab*C_bc*rad**2*(J_a + J_b + J_c)/(J_a*J_b*J_c) + (C_ab*rad*(J_b**(-1.0) + J_a**(-1.0)) + C_bc*rad*(J_c**(-1.0) + J_b**(-1.0)))**2))))/pi
+    x0 = J_a**(-1.0)
+    x1 = J_b**(-1.0)
+    x2 = J_c**(-1.0)
+    x3 = C_ab*C_bc*rad**2*x0*x1*x2*(J_a + J_b + J_c)
+    x4 = C_ab*rad*(x0 + x1) + C_bc*rad*(x1 + x2)
+    return (1/2)*sqrt(2)*sqrt(x3/(x4 + sqrt(-4*x3 + x4**2)))/pi
 
 
 def transmission__Delta_phi_2(phi_2, phi_1, i):

@@ -191,6 +191,8 @@ class Catalog:
     #: or several ranked together (:func:`combine`).
     members: tuple = ()
     member: np.ndarray = None
+    #: The cuts of :meth:`kept_rows` by key; a copy of the catalog (``dataclasses.replace``) starts without.
+    _kept: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         if not self.members:
@@ -308,6 +310,37 @@ class Catalog:
             setattr(out, name, getattr(self, name)[mask])
         return out
 
+    def kept_rows(self, key, mask) -> "Catalog":
+        """:meth:`rows`, cut once and kept under ``key``: the rows at a case's ratio are asked for by the pair
+        search and the gearbox section alike, and a cut of 10^5 rows copies every column.
+
+        Parameters
+        ----------
+        key : hashable
+            What decides ``mask`` (``("ratio", 10.0)``): the same key, the same rows.
+        mask : numpy.ndarray of bool or of int
+            The rows, as :meth:`rows` takes them.
+
+        Returns
+        -------
+        Catalog
+            The rows, the same catalog for the same key, its arrays read-only (every caller shares them).
+        """
+        cut = self._kept.get(key)
+        if cut is None:
+            if len(self._kept) >= KEPT_CUTS:
+                del self._kept[next(iter(self._kept))]  # the oldest
+            cut = self._kept[key] = self.rows(mask)
+            for a in (cut.parts, cut.lines, cut.member, *cut.text.values(), *(q.magnitude for q in cut.values.values()),
+                      cut.illustrative, cut.family, cut.partial):
+                _read_only(a)
+        return cut
+
+    @functools.cached_property
+    def row_of_part(self) -> dict:
+        """Each part's row: its last, where a part repeats (catalogs ranked together)."""
+        return dict(zip(self.parts.tolist(), range(len(self))))
+
     def index(self, part: str, where: str) -> int:
         """The row of a part.
 
@@ -373,6 +406,10 @@ class Catalog:
             data[f"{c.name} [{pretty_unit(self.header_units[c.name])}]"] = self.values[c.name].magnitude
         data.update({k: v for k, v in self.text.items() if k != "part"})
         return pd.DataFrame(data)
+
+
+#: The most cuts a catalog keeps (:meth:`Catalog.kept_rows`): a ratio search cuts one per ratio.
+KEPT_CUTS = 8
 
 
 def _read_only(a: np.ndarray) -> np.ndarray:

@@ -28,6 +28,7 @@ Values are plain floats in SI units (N·m, rad/s², kg·m², s, rad/s), as the c
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -108,6 +109,8 @@ class Envelope:
 
     def __call__(self, x):
         """``E`` at ``x`` (an array, each >= 0)."""
+        if not len(self.breaks):  # one line (every sample of one acceleration): nothing to search
+            return self.intercepts[0] + x * self.slopes[0]
         k = np.searchsorted(self.breaks, x, side="right")
         return self.intercepts[k] + x * self.slopes[k]
 
@@ -203,11 +206,22 @@ def motor_torques(m: CycleMoments, i, eta, J) -> tuple[np.ndarray, np.ndarray]:
     [6.1856, 2.647]
     """
     i, eta, J = np.broadcast_arrays(*(np.asarray(x, float) for x in (i, eta, J)))
-    square = ((J * i) ** 2 * m.A + 2 * J * (m.S_D / eta + m.S_B * eta)
-              + m.Q_D / (i * eta) ** 2 + m.Q_B * (eta / i) ** 2) / m.duration
+    return _torques(m, _through(m, i, eta), J)
+
+
+def _through(m: CycleMoments, i, eta) -> dict:
+    """The terms of :func:`motor_torques` of the gearboxes alone: taken once, then for every motor."""
+    return {"i": i, "eta": eta, "i_eta": i * eta, "S": m.S_D / eta + m.S_B * eta, "Q_D": m.Q_D / (i * eta) ** 2,
+            "Q_B": m.Q_B * (eta / i) ** 2}
+
+
+def _torques(m: CycleMoments, g: dict, J) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`motor_torques` from the gearboxes' terms ``g`` (:func:`_through`) and ``J`` [kg·m²]."""
+    i, eta, Ji = g["i"], g["eta"], J * g["i"]
+    square = (Ji ** 2 * m.A + 2 * J * g["S"] + g["Q_D"] + g["Q_B"]) / m.duration
     rms = np.sqrt(np.maximum(square, 0.0))  # rounding may leave a zero RMS a hair below zero
-    x = J * i * i
-    peak = np.maximum(m.drive(x * eta) / (i * eta), m.back(x / eta) * eta / i)
+    x = Ji * i
+    peak = np.maximum(m.drive(x * eta) / g["i_eta"], m.back(x / eta) * eta / i)
     return peak, rms
 
 
@@ -296,27 +310,35 @@ def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, 
     g = {k: np.asarray(v, float)[:, None] for k, v in gearboxes.items() if k != "J_L"}
     g["J_L"] = float(gearboxes["J_L"])
     mo = {k: np.asarray(v, float)[None, :] for k, v in motors.items()}
+    rows = _row_terms(moments, speeds, g)
     if first:
-        return _first(moments, speeds, g, mo, inertia_limit, examine, confirm)
-    columns = _screen(moments, speeds, g, mo, inertia_limit)
+        return _first(moments, rows, g, mo, inertia_limit, examine, confirm)
+    columns = _screen(moments, rows, mo, inertia_limit)
     pick = _pick(columns.feasible, columns.utilization, columns.rms / mo["rated_torque"], g, mo, examine, confirm)
     columns.pick, columns.closest = pick, None if pick is not None else _closest(columns.utilization)
     return columns
 
 
-def _screen(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limit: float) -> Combinations:
-    """Every pair of the gearbox rows ``g`` (a column each) and the motors ``mo`` (a row each)
-    screened, nothing picked."""
-    peak, rms = motor_torques(moments, g["i"], g["eta"], g["J_1"] + mo["J"])
-    lam = inertia_ratio.si(J_1=g["J_1"], J_L=g["J_L"], i=g["i"], J_motor=mo["J"])
+def _row_terms(moments: CycleMoments, speeds: tuple, g: dict) -> dict:
+    """What :func:`_screen` needs of the gearbox rows ``g`` alone, taken once for every motor."""
     top, mean = speeds
-    utilizations = [peak / mo["peak_torque"], rms / mo["rated_torque"], top * g["i"] / mo["max_speed"],
-                    mo["peak_torque"] / g["peak_limit"], lam / inertia_limit]
+    # λ is the rows' (J_1 + J_L / i²) over each motor's J_motor: the rows' part once (J_motor = 1)
+    return {**_through(moments, g["i"], g["eta"]), "J_1": g["J_1"], "peak_limit": g["peak_limit"],
+            "passes": g["passes"] > 0, "top": top * g["i"], "mean": mean * g["i"],
+            "lam": inertia_ratio.si(J_1=g["J_1"], J_L=g["J_L"], i=g["i"], J_motor=1.0)}
+
+
+def _screen(moments: CycleMoments, rows: dict, mo: dict, inertia_limit: float) -> Combinations:
+    """Every pair of the gearbox rows (a column each; :func:`_row_terms`) and the motors ``mo`` (a row
+    each) screened, nothing picked."""
+    peak, rms = _torques(moments, rows, rows["J_1"] + mo["J"])
+    utilizations = [peak / mo["peak_torque"], rms / mo["rated_torque"], rows["top"] / mo["max_speed"],
+                    mo["peak_torque"] / rows["peak_limit"], rows["lam"] / mo["J"] / inertia_limit]
     if "rated_speed" in mo:
-        utilizations.append(mean * g["i"] / mo["rated_speed"])
-    utilization = np.maximum.reduce(utilizations)  # NaN where any is: within no rating
+        utilizations.append(rows["mean"] / mo["rated_speed"])
+    utilization = functools.reduce(np.maximum, utilizations)  # NaN where any is: within no rating
     # every utilization within its rating is the highest within it (one comparison, not one per check)
-    feasible = (g["passes"] > 0) & within_rating(utilization)
+    feasible = rows["passes"] & within_rating(utilization)
     return Combinations(peak, rms, utilization, feasible, None)
 
 
@@ -326,7 +348,7 @@ def _screen(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_lim
 SCREEN_PAIRS = 100_000
 
 
-def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limit: float, examine,
+def _first(moments: CycleMoments, rows: dict, g: dict, mo: dict, inertia_limit: float, examine,
            confirm) -> Combinations:
     """:func:`search` with ``first``: the motors screened in the rule's order, as many at once as
     :data:`SCREEN_PAIRS` allows (one pass of numpy over their pairs), each examined in turn until one has
@@ -337,7 +359,7 @@ def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limi
     done, found, count = [], None, len(order)
     for start in range(0, len(order), step):
         part = {k: v[:, start:start + step] for k, v in ordered.items()}
-        screened = _screen(moments, speeds, g, part, inertia_limit)
+        screened = _screen(moments, rows, part, inertia_limit)
         done.append(screened)
         share = screened.rms / part["rated_torque"]
         for j in range(screened.feasible.shape[1]):
@@ -353,7 +375,8 @@ def _first(moments: CycleMoments, speeds: tuple, g: dict, mo: dict, inertia_limi
                 break
         if found is not None:
             break
-    out = Combinations(*(np.concatenate([getattr(c, k) for c in done], axis=1)[:, :count]
+    # joined motor by motor: a pass's columns of a large catalog's rows, transposed, are whole blocks of memory
+    out = Combinations(*(np.concatenate([getattr(c, k).T for c in done])[:count].T
                          for k in ("peak", "rms", "utilization", "feasible")), None, motors=order[:count])
     if found is not None:
         out.pick = (found[0], count - 1)

@@ -284,7 +284,7 @@ def clamping_hubs(catalog: Catalog, hubs: Catalog | None, motor_shaft=None):
     if hubs is None:
         return J_1, d_hub, d_max
     shaft = None if motor_shaft is None else as_kind(motor_shaft, "length", "motor.shaft").m_as("mm")
-    row_of = dict(zip(catalog.parts.tolist(), range(len(catalog))))  # a part's last row, as a comprehension would keep
+    row_of = catalog.row_of_part
     best = np.full(len(catalog), np.inf)
     best_J = np.full(len(catalog), np.nan)
     for gearbox, d, j in zip(hubs.text["gearbox"].tolist(), hubs["d_hub"].m_as("mm").tolist(),
@@ -529,7 +529,7 @@ def rows_at_ratio(catalog: Catalog, ratio, where: str = "ratio") -> Catalog:
                    else "")
         raise CalcError(f"{where}: no gearbox in catalog {catalog.shown_name} has ratio {i:g}{partial}; its ratios are "
                         f"{ratios}")
-    return catalog.rows(mask)
+    return catalog.kept_rows(("ratio", i), mask)
 
 
 def select_gearbox(
