@@ -324,8 +324,12 @@ class Catalog:
         Returns
         -------
         Catalog
-            The rows, the same catalog for the same key, its arrays read-only (every caller shares them).
+            The rows, the same catalog for the same key, its arrays read-only (every caller shares them);
+            the catalog itself where ``mask`` keeps every row (nothing to copy).
         """
+        mask = np.asarray(mask)
+        if mask.dtype == bool and len(mask) == len(self) and mask.all():
+            return self
         cut = self._kept.get(key)
         if cut is None:
             if len(self._kept) >= KEPT_CUTS:
@@ -676,10 +680,11 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     """Read and validate a catalog file, column by column over all rows at once; see
     :func:`load_catalog`."""
     raw = path.read_bytes()
-    key = cache_key(raw, schema) if len(raw) >= SMALLEST else None
+    digest = hashlib.sha256(raw).hexdigest()
+    key = cache_key(digest, schema) if len(raw) >= SMALLEST else None
     kept = None if key is None else load_parsed(key)
     if kept is not None:
-        return _catalog(path, raw, schema, kept["parts"], kept["lines"],
+        return _catalog(path, digest, schema, kept["parts"], kept["lines"],
                         {name: Q_(m, unit) for name, (m, unit) in kept["values"].items()}, kept["text"],
                         kept["header_units"])
     reader, width, columns, units = _header(path, raw, schema)
@@ -713,15 +718,15 @@ def _read_catalog(path: Path, schema: Schema) -> Catalog:
     if key is not None:  # read without an error: kept for the next run (calc.data.parsed)
         keep_parsed(key, parts, lines, {n: (q.magnitude, str(q.units)) for n, q in values.items()}, text_arrays,
                     header_units)
-    return _catalog(path, raw, schema, parts, lines, values, text_arrays, header_units)
+    return _catalog(path, digest, schema, parts, lines, values, text_arrays, header_units)
 
 
-def _catalog(path: Path, raw: bytes, schema: Schema, parts, lines, values: dict, text: dict,
+def _catalog(path: Path, digest: str, schema: Schema, parts, lines, values: dict, text: dict,
              header_units: dict) -> Catalog:
     """The catalog of a file's rows as read (or as kept, :mod:`calc.data.parsed`), its arrays read-only."""
     for a in (parts, lines, *text.values(), *(q.magnitude for q in values.values())):
         a.flags.writeable = False  # shared by every caller of the run (load_catalog)
-    return Catalog(name=path.stem, path=path, sha256=hashlib.sha256(raw).hexdigest(), schema=schema, parts=parts,
+    return Catalog(name=path.stem, path=path, sha256=digest, schema=schema, parts=parts,
                    values=values, text=text, lines=lines, header_units=header_units)
 
 

@@ -1,6 +1,7 @@
 """The catalog loader: every problem named by file, row and column."""
 
 import csv
+import hashlib
 import itertools
 import math
 import os
@@ -309,8 +310,8 @@ def test_a_large_catalog_is_kept_parsed_by_its_content(tmp_path, monkeypatch):
     monkeypatch.setenv("CALC_CACHE_DIR", str(tmp_path / "kept"))
     path = large_catalog(tmp_path)
     first = load_catalog(path, SCHEMA)
-    kept = list((tmp_path / "kept").glob("*.npz"))
-    assert len(kept) == 1 and kept[0].stem == parsed.cache_key(path.read_bytes(), SCHEMA)
+    kept = list((tmp_path / "kept").iterdir())
+    assert len(kept) == 1 and kept[0].name == parsed.cache_key(hashlib.sha256(path.read_bytes()).hexdigest(), SCHEMA)
     # The next run (no catalog read in this process yet) loads the arrays kept: the same catalog.
     monkeypatch.setattr(catalog, "_LOADED", {})
     monkeypatch.setattr(catalog, "_rows", lambda *a: pytest.fail("the kept catalog was parsed again"))
@@ -335,7 +336,7 @@ def test_a_bad_large_catalog_is_never_kept_and_its_error_is_the_same(tmp_path, m
             load_catalog(path, SCHEMA)
         messages.append(str(raised.value))
     assert messages[0] == messages[1] and "row 7001" in messages[0] and "T_2N" in messages[0] and "12x" in messages[0]
-    assert not list((tmp_path / "kept").glob("*.npz"))
+    assert not (tmp_path / "kept").exists() or not list((tmp_path / "kept").iterdir())
 
 
 def test_the_kept_catalogs_can_be_turned_off_and_a_damaged_one_is_read_again(tmp_path, monkeypatch):
@@ -345,8 +346,33 @@ def test_the_kept_catalogs_can_be_turned_off_and_a_damaged_one_is_read_again(tmp
     load_catalog(path, SCHEMA)
     monkeypatch.setenv("CALC_CACHE_DIR", str(tmp_path / "kept"))
     (tmp_path / "kept").mkdir()
-    key = parsed.cache_key(path.read_bytes(), SCHEMA)
-    (tmp_path / "kept" / f"{key}.npz").write_bytes(b"not an archive")
+    key = parsed.cache_key(hashlib.sha256(path.read_bytes()).hexdigest(), SCHEMA)
+    (tmp_path / "kept" / key).mkdir()
+    (tmp_path / "kept" / key / "meta.json").write_text("not json")
     assert parsed.load_parsed(key) is None
     monkeypatch.setattr(catalog, "_LOADED", {})
     assert len(load_catalog(path, SCHEMA)) == 12_000
+    # Read again and kept afresh; then a cut-short array is damage too.
+    assert parsed.load_parsed(key) is not None
+    values = tmp_path / "kept" / key / "value-0.npy"
+    values.write_bytes(values.read_bytes()[:1000])
+    assert parsed.load_parsed(key) is None and not (tmp_path / "kept" / key).exists()
+
+
+def test_the_kept_catalogs_are_the_last_few_and_nothing_else_in_the_folder_goes(tmp_path, monkeypatch):
+    monkeypatch.setenv("CALC_CACHE_DIR", str(tmp_path))
+    foreign, earlier = tmp_path / "notes.txt", tmp_path / f"{'e' * 64}.npz"  # a user's file; an earlier form's
+    foreign.write_text("mine")
+    earlier.write_bytes(b"an archive")
+    os.utime(foreign, ns=(0, 0))
+    os.utime(earlier, ns=(0, 0))
+    keys = [f"{k:064x}" for k in range(parsed.KEPT + 2)]
+    for k, key in enumerate(keys):
+        parsed.keep_parsed(key, np.array(["P1"], dtype=object), np.array([2]), {"T_2N": (np.array([1.0]), "N*m")},
+                           {"family": np.array(["TP"], dtype=object)}, {"T_2N": "Nm"})
+        os.utime(tmp_path / key, ns=(10**9 * (k + 1),) * 2)
+    kept = sorted(f.name for f in tmp_path.iterdir())
+    assert kept == sorted(keys[2:] + ["notes.txt"])
+    got = parsed.load_parsed(keys[-1])
+    assert list(got["parts"]) == ["P1"] and list(got["text"]["family"]) == ["TP"]
+    assert got["values"]["T_2N"][1] == "N*m" and not got["values"]["T_2N"][0].flags.writeable
