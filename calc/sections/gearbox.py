@@ -102,8 +102,8 @@ def catalogs(case: Case) -> tuple:
                 families = listing(map(repr, case.gearbox_family), " or ")
                 raise CalcError(f"{where}.part: {case.gearbox_part} is of family {as_found(family)}, "
                                 f"but gearbox.family is {families}")
-        families = tuple(case.gearbox_family)
-        catalog = catalog.kept_rows(("family", families), np.isin(catalog.family, families))
+        named = tuple(case.gearbox_family)
+        catalog = catalog.kept_rows(("family", named), np.isin(catalog.family, named))
     return catalog, case.gearbox_hubs
 
 
