@@ -79,8 +79,9 @@ In-process timings are the best of several repeats (the least disturbed by the o
 shared machine); ratios are taken between figures of this one run.
 
 ``--quick`` runs every measurement at a tiny size, once, to prove the script works (the test
-suite does so); its figures mean nothing. It leaves out the notebook run, the report and the
-browser, which the test suite covers itself.
+suite does so); its figures mean nothing. It leaves out the notebook run and the report, which the
+test suite covers itself, and visits the page with a few changes in one browser (not one launched
+for each visit).
 """
 
 from __future__ import annotations
@@ -1091,9 +1092,10 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
     for _ in range(1 if quick else PAGE_RUNS):
         with served() as server:
             runs.append((server.started, review_in_browser(server.url, workdir / "screenshots", changes,
-                                                           settle=settle(quick), results_each=True)))
+                                                           settle=settle(quick), results_each=True,
+                                                           fresh=not quick)))
             if len(runs) == 1:
-                first = first_load(server.url)  # a second reviewer, nothing cached
+                first = first_load(server.url, fresh=not quick)  # a second reviewer, nothing cached
     memory = first.kernel_mb
     start = [started + visit.ready for started, visit in runs]
     ready = [visit.ready for _, visit in runs]
@@ -1121,7 +1123,7 @@ def measure_crowd(quick: bool) -> list[str]:
     pages = 2 if quick else CROWD
     rounds = [[f"{0.6 + 0.05 * (r * pages + k):g}" for k in range(pages)] for r in range(1 if quick else CROWD_ROUNDS)]
     with served() as server:
-        crowd = reviewers_at_once(server, "move[1].time", rounds, settle=settle(quick))
+        crowd = reviewers_at_once(server, "move[1].time", rounds, settle=settle(quick), fresh=not quick)
     note = f"{pages} pages at once, {len(rounds)} rounds of changes"
     return [
         line(f"review_{CROWD}_reviewers_median", crowd.median, "s", ("<=", 0.5),
