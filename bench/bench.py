@@ -178,9 +178,11 @@ def measured_run(command: list[str]) -> tuple[float, float]:
     return float(seconds), int(max_rss_kib) / 1024
 
 
-def line(name: str, value: float | None, unit: str, target: tuple[str, float] | None = None, note: str = "") -> str:
+def line(name: str, value: float | None, unit: str, target: tuple[str, float] | None = None, note: str = "",
+         failed: bool = False) -> str:
     """``name: value unit`` with the target and whether it is met, or ``n/a`` and why. With
-    ``--quick`` no target is given (:data:`JUDGED`)."""
+    ``--quick`` no target is given (:data:`JUDGED`). A run that ``failed`` misses its target, however
+    quick it was."""
     if value is None:
         return f"{name}: n/a ({note})"
     text = f"{name}: {value:.3g} {unit}" if unit == "x" else f"{name}: {value:.4g} {unit}"
@@ -188,7 +190,7 @@ def line(name: str, value: float | None, unit: str, target: tuple[str, float] | 
         text += f" ({note})"
     if target is not None and JUDGED:
         op, bound = target
-        met = value <= bound if op == "<=" else value >= bound
+        met = not failed and (value <= bound if op == "<=" else value >= bound)
         text += f"  [target {op} {bound:g} {unit}: {'met' if met else 'MISSED'}]"
     return text
 
@@ -982,8 +984,8 @@ def measure_notebooks(size: Size, quick: bool) -> list[str]:
     done = subprocess.run([sys.executable, "-m", "pytest", "notebooks", "-q"], cwd=ROOT, capture_output=True, text=True)
     elapsed = time.perf_counter() - t0
     verdict = "passed" if done.returncode == 0 else f"FAILED, pytest exit {done.returncode}"
-    return [line("notebooks", elapsed, "s", ("<=", 60),
-                 note=f"pytest notebooks, {len(notebooks)} notebooks, {verdict}")]
+    return [line("notebooks", elapsed, "s", ("<=", 60), note=f"pytest notebooks, {len(notebooks)} notebooks, {verdict}",
+                 failed=done.returncode != 0)]
 
 
 def measure_report(size: Size, quick: bool, workdir: Path) -> list[str]:
