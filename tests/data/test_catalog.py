@@ -1,6 +1,7 @@
 """The catalog loader: every problem named by file, row and column."""
 
 import csv
+import dataclasses
 import hashlib
 import itertools
 import math
@@ -376,3 +377,31 @@ def test_the_kept_catalogs_are_the_last_few_and_nothing_else_in_the_folder_goes(
     got = parsed.load_parsed(keys[-1])
     assert list(got["parts"]) == ["P1"] and list(got["text"]["family"]) == ["TP"]
     assert got["values"]["T_2N"][1] == "N*m" and not got["values"]["T_2N"][0].flags.writeable
+
+
+def test_a_kept_cut_is_cut_once_shared_read_only_and_the_whole_catalog_is_not_copied():
+    cat = load_catalog(GEARBOXES, SCHEMA)
+    at_10 = np.isclose(cat["ratio"].m_as(""), 10.0)
+    cut = cat.kept_rows(("ratio", 10.0), at_10)
+    assert cat.kept_rows(("ratio", 10.0), at_10) is cut and list(cut.parts) == list(cat.parts[at_10])
+    for a in (cut.parts, cut["T_2N"].magnitude, cut.family, cut.partial, cut.illustrative):
+        with pytest.raises(ValueError, match="read-only"):
+            a[0] = a[1]
+    assert cat.kept_rows(("every row",), np.ones(len(cat), bool)) is cat
+    mine = cut.rows([0])  # a cut of one's own is one's own to change
+    mine["T_2N"].magnitude[0] = 0.0
+    assert cut["T_2N"].magnitude[0] != 0.0
+    # A copy of the catalog (another spelling of its path) keeps cuts of its own, named as it is.
+    renamed = dataclasses.replace(cat, name="other")
+    assert renamed.kept_rows(("ratio", 10.0), at_10).name == "other"
+    # The oldest goes first beyond KEPT_CUTS.
+    for k in range(catalog.KEPT_CUTS):
+        cat.kept_rows(("rows", k), [k])
+    assert cat.kept_rows(("ratio", 10.0), at_10) is not cut
+
+
+def test_each_part_has_its_row_and_a_repeated_part_its_last():
+    cat = load_catalog(GEARBOXES, SCHEMA)
+    assert all(cat.row_of_part[part] == k for k, part in enumerate(cat.parts))
+    repeated = cat.rows([0, 1, 0])
+    assert repeated.row_of_part == {cat.parts[0]: 2, cat.parts[1]: 1}

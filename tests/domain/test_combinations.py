@@ -37,6 +37,20 @@ def test_the_envelope_by_hand():
     assert e(np.array([0.0, 2.0, 7.0, 14.0, 20.0])).tolist() == pytest.approx([10.0, 6.0, 11.0, 18.0, 30.0])
 
 
+@given(st.lists(finite, min_size=0, max_size=20), st.floats(-50, 50, allow_nan=False))
+def test_an_envelope_of_one_acceleration_is_one_line_read_without_a_search(torques, accel):
+    # Every sample of one acceleration (a typed cycle: none): the lines ±(T_k + x α) of one slope keep
+    # the highest each, and the zero line; one of them holds for every x >= 0, read as it is.
+    T, alpha = np.array(torques, float), np.full(len(torques), accel)
+    e = Envelope.of(T, alpha)
+    x = np.array([[0.0], [0.5], [3.0], [1e3]])  # a column, as the screen reads it for each gearbox row
+    got = e(x)
+    assert got.shape == x.shape
+    assert got.ravel() == pytest.approx(brute_envelope(T, alpha, x.ravel()), rel=1e-9, abs=1e-9)
+    if accel == 0:
+        assert len(e.breaks) == 0 and (got == np.max(np.abs(T), initial=0.0)).all()
+
+
 cycles = st.integers(1, 60).flatmap(lambda n: st.tuples(
     st.lists(st.floats(1e-3, 1.0), min_size=n, max_size=n),
     st.lists(finite, min_size=n, max_size=n),
