@@ -307,7 +307,7 @@ def rank(passes, size, worst_utilization, parts, later=None) -> np.ndarray:
     sizes, size_rank = np.unique(size_key, return_inverse=True)
     worsts, worst_rank = np.unique(worst, return_inverse=True)
     group = (~passes).astype(np.int64) * 2 + shown_later
-    key = (group * len(sizes) + size_rank.ravel()) * len(worsts) + worst_rank.ravel()
+    key = (group * len(sizes) + size_rank) * len(worsts) + worst_rank
     order = np.argsort(key)
     # Rows tied on every key go by part name, then by row (a sort that is not stable leaves their
     # order open). Names are sorted within the tied runs only: sorting text costs more than the

@@ -149,10 +149,10 @@ def keep_parsed(key: str, parts, lines, values: dict, text: dict, header_units: 
             np.save(partial / f"{name}.npy", a, allow_pickle=False)
         (partial / "meta.json").write_text(json.dumps(meta))  # last: a folder without it is never read
         partial.rename(folder / key)
-    except OSError:  # a read-only home, or another run kept the same catalog first
+        # The oldest go, in this form or an earlier one (an archive); nothing else in the folder is touched.
+        entries = sorted((f for f in folder.iterdir() if _KEPT_NAME.fullmatch(f.name)),
+                         key=lambda f: f.stat().st_mtime_ns)
+        for old in entries[:-KEPT]:
+            shutil.rmtree(old, ignore_errors=True) if old.is_dir() else old.unlink(missing_ok=True)
+    except OSError:  # a read-only home, another run kept the same catalog first, or removed an entry meanwhile
         shutil.rmtree(partial, ignore_errors=True)
-        return
-    # The oldest go, in this form or an earlier one (an archive); nothing else in the folder is touched.
-    entries = sorted((f for f in folder.iterdir() if _KEPT_NAME.fullmatch(f.name)), key=lambda f: f.stat().st_mtime_ns)
-    for old in entries[:-KEPT]:
-        shutil.rmtree(old, ignore_errors=True) if old.is_dir() else old.unlink(missing_ok=True)

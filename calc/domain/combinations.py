@@ -310,10 +310,10 @@ def search(moments: CycleMoments, speeds: tuple, gearboxes: dict, motors: dict, 
     g = {k: np.asarray(v, float)[:, None] for k, v in gearboxes.items() if k != "J_L"}
     g["J_L"] = float(gearboxes["J_L"])
     mo = {k: np.asarray(v, float)[None, :] for k, v in motors.items()}
-    rows = _row_terms(moments, speeds, g)
+    terms = _row_terms(moments, speeds, g)
     if first:
-        return _first(moments, rows, g, mo, inertia_limit, examine, confirm)
-    columns = _screen(moments, rows, mo, inertia_limit)
+        return _first(moments, terms, g, mo, inertia_limit, examine, confirm)
+    columns = _screen(moments, terms, mo, inertia_limit)
     pick = _pick(columns.feasible, columns.utilization, columns.rms / mo["rated_torque"], g, mo, examine, confirm)
     columns.pick, columns.closest = pick, None if pick is not None else _closest(columns.utilization)
     return columns
@@ -328,17 +328,17 @@ def _row_terms(moments: CycleMoments, speeds: tuple, g: dict) -> dict:
             "lam": inertia_ratio.si(J_1=g["J_1"], J_L=g["J_L"], i=g["i"], J_motor=1.0)}
 
 
-def _screen(moments: CycleMoments, rows: dict, mo: dict, inertia_limit: float) -> Combinations:
-    """Every pair of the gearbox rows (a column each; :func:`_row_terms`) and the motors ``mo`` (a row
-    each) screened, nothing picked."""
-    peak, rms = _torques(moments, rows, rows["J_1"] + mo["J"])
-    utilizations = [peak / mo["peak_torque"], rms / mo["rated_torque"], rows["top"] / mo["max_speed"],
-                    mo["peak_torque"] / rows["peak_limit"], rows["lam"] / mo["J"] / inertia_limit]
+def _screen(moments: CycleMoments, terms: dict, mo: dict, inertia_limit: float) -> Combinations:
+    """Every pair of the gearbox rows (a column each; their ``terms``, :func:`_row_terms`) and the motors ``mo``
+    (a row each) screened, nothing picked."""
+    peak, rms = _torques(moments, terms, terms["J_1"] + mo["J"])
+    utilizations = [peak / mo["peak_torque"], rms / mo["rated_torque"], terms["top"] / mo["max_speed"],
+                    mo["peak_torque"] / terms["peak_limit"], terms["lam"] / mo["J"] / inertia_limit]
     if "rated_speed" in mo:
-        utilizations.append(rows["mean"] / mo["rated_speed"])
+        utilizations.append(terms["mean"] / mo["rated_speed"])
     utilization = functools.reduce(np.maximum, utilizations)  # NaN where any is: within no rating
     # every utilization within its rating is the highest within it (one comparison, not one per check)
-    feasible = rows["passes"] & within_rating(utilization)
+    feasible = terms["passes"] & within_rating(utilization)
     return Combinations(peak, rms, utilization, feasible, None)
 
 
@@ -348,7 +348,7 @@ def _screen(moments: CycleMoments, rows: dict, mo: dict, inertia_limit: float) -
 SCREEN_PAIRS = 100_000
 
 
-def _first(moments: CycleMoments, rows: dict, g: dict, mo: dict, inertia_limit: float, examine,
+def _first(moments: CycleMoments, terms: dict, g: dict, mo: dict, inertia_limit: float, examine,
            confirm) -> Combinations:
     """:func:`search` with ``first``: the motors screened in the rule's order, as many at once as
     :data:`SCREEN_PAIRS` allows (one pass of numpy over their pairs), each examined in turn until one has
@@ -359,7 +359,7 @@ def _first(moments: CycleMoments, rows: dict, g: dict, mo: dict, inertia_limit: 
     done, found, count = [], None, len(order)
     for start in range(0, len(order), step):
         part = {k: v[:, start:start + step] for k, v in ordered.items()}
-        screened = _screen(moments, rows, part, inertia_limit)
+        screened = _screen(moments, terms, part, inertia_limit)
         done.append(screened)
         share = screened.rms / part["rated_torque"]
         for j in range(screened.feasible.shape[1]):

@@ -119,13 +119,21 @@ def derived_server(tmp_path_factory):
         yield server
 
 
+#: In a run in one process, the position of the last test that asks for each shared fixture (found once, not by a
+#: scan of the tests still to run after every test).
+_LAST_ASKING: dict[str, int] = {}
+
+
 def _asked_for_later(item, nextitem, fixture: str) -> bool:
     """Whether a test still to run in this process asks for ``fixture``: in a run in one process, any test after
     ``item``; on a worker (pytest-xdist), the next one, all it knows (a group's tests are handed it in a row)."""
     if is_worker(item.config):
         return nextitem is not None and fixture in getattr(nextitem, "fixturenames", ())
     items = item.session.items
-    return any(fixture in getattr(later, "fixturenames", ()) for later in items[items.index(item) + 1:])
+    if fixture not in _LAST_ASKING:
+        asking = [k for k, later in enumerate(items) if fixture in getattr(later, "fixturenames", ())]
+        _LAST_ASKING[fixture] = max(asking, default=-1)
+    return items.index(item) < _LAST_ASKING[fixture]
 
 
 @pytest.hookimpl(trylast=True)

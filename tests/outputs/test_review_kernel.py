@@ -69,6 +69,7 @@ def test_a_change_gives_the_results_a_page_built_for_its_values_gives(key, value
     fresh = DesignReview(EXAMPLE).settled()
     fresh.state.follow_values({key: value})
     fresh.refresh()
+
     def body(html: str) -> str:  # from the verdict on (the head above it says when it was computed)
         return html[html.index('<div class="verdict">'):]
 
