@@ -227,15 +227,27 @@ def row(page, key: str):
     return page.locator(".dr-row", has=page.locator(f'[data-key="{key}"]')).last
 
 
-def change(page, key: str, value: str) -> None:
-    """Type ``value`` into the field of ``key`` and press Enter (or choose the option ``value``)."""
+def typed(page, key: str, value: str):
+    """Type ``value`` into the field of ``key``, not yet committed; returns the commit: pressing Enter
+    (for a choice, choosing the option ``value``), which is where a reviewer's wait for the results
+    starts."""
     r = row(page, key)
     if r.locator("select").count():
-        r.locator("select").select_option(label=value)
-    else:
-        field = r.locator("input[type=text]")
-        field.fill(value)
-        field.press("Enter")
+        return lambda: r.locator("select").select_option(label=value)
+    field = r.locator("input[type=text]")
+    field.fill(value)
+    return lambda: field.press("Enter")
+
+
+def change(page, key: str, value: str) -> None:
+    """Type ``value`` into the field of ``key`` and press Enter (or choose the option ``value``)."""
+    typed(page, key, value)()
+
+
+def wait_for_page(page, timeout: float = 60_000) -> None:
+    """Until the panel's results are on the page, seen at the frame they are drawn in (Playwright's
+    ``wait_for_selector`` looks at intervals that grow to half a second)."""
+    page.wait_for_function(f"() => document.querySelector('{RESULTS}') !== null", polling="raf", timeout=timeout)
 
 
 def wait_for_results(page, after: int, timeout: float = 30_000) -> None:
@@ -290,7 +302,7 @@ def first_load(url: str, fresh: bool = True) -> FirstLoad:
         page.on("requestfinished", lambda request: done.append(request))
         start = time.perf_counter()
         page.goto(url)
-        page.wait_for_selector(RESULTS, timeout=60_000)
+        wait_for_page(page)
         ready = time.perf_counter() - start
         page.wait_for_load_state("networkidle")
         sizes = [r.sizes() for r in done]
@@ -331,7 +343,7 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
         page = browser.new_page()
         start = time.perf_counter()
         page.goto(url)
-        page.wait_for_selector(RESULTS, timeout=60_000)
+        wait_for_page(page)
         visit = Visit(ready=time.perf_counter() - start)
         # A reviewer reads the page before the first change; meanwhile the server prepares the
         # next page's kernel, which is not what a change should be timed against.
@@ -348,8 +360,9 @@ def review_in_browser(url: str, shots: Path, changes: list[tuple[str, str]], rep
         for _ in range(repeat):
             for key, value in changes:
                 generation = _generation(page)
+                commit = typed(page, key, value)
                 start = time.perf_counter()
-                change(page, key, value)
+                commit()
                 wait_for_results(page, generation)
                 visit.changes.append((f"{key} = {value}", time.perf_counter() - start))
                 visit.seen.append((f"{key} = {value}", page.inner_text(RESULTS)))
@@ -415,7 +428,7 @@ def reviewers_at_once(server: Server, key: str, rounds: list[list[str]], settle:
         for page in pages:
             page.goto(server.url)
         for page in pages:
-            page.wait_for_selector(RESULTS, timeout=180_000)
+            wait_for_page(page, timeout=180_000)
         pages[0].wait_for_timeout(settle * 1000)
         for values in rounds:
             before = [_generation(page) for page in pages]

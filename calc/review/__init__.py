@@ -13,13 +13,21 @@
 * :mod:`.panel`: :class:`DesignReview`, the ipywidgets panel of notebook 12 and of the served
   page (``make review``, :mod:`.serve`), which draws the state.
 
-ipywidgets and matplotlib are imported inside, so ``import calc`` stays light.
+ipywidgets and matplotlib are imported inside, so ``import calc`` stays light. The names below are
+imported when first asked for, so the server (:mod:`.serve`, which starts Voilà) does not wait for them.
 """
 
-from .inputs import InputSpec, input_specs, with_changes, with_inputs
-from .panel import DesignReview
-from .state import ReviewState
-from .view import evaluated, results_html
+import importlib
+
+#: Each name the package offers, by the module that defines it.
+_HOMES = {"InputSpec": "inputs", "input_specs": "inputs", "with_changes": "inputs", "with_inputs": "inputs",
+          "DesignReview": "panel", "ReviewState": "state", "evaluated": "view", "results_html": "view"}
 
 __all__ = ["DesignReview", "InputSpec", "ReviewState", "evaluated", "input_specs", "results_html", "with_changes",
            "with_inputs"]
+
+
+def __getattr__(name: str):
+    if name in _HOMES:
+        return getattr(importlib.import_module(f".{_HOMES[name]}", __name__), name)
+    raise AttributeError(f"module 'calc.review' has no attribute {name!r}")
