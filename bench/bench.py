@@ -57,10 +57,12 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   the panel's results shown (asked for as soon as the server has launched its first kernel, Voilà's
   "pool is filled": the page's notebook still runs in it), and each of
   :data:`REVIEW_CHANGES` changes to values not seen before (each input the page offers for the
-  example, found by its key path, in turn), typed into the page's number fields or chosen, until the results
-  (text and figures) follow; every value is new, so each figure whose inputs change is drawn, and each
-  leaves a design that is evaluated (a gearbox part forced only while the ratio is the file's): a change
-  that ends in an error or without figures stops the run.
+  example, found by its key path, in turn), typed into the page's number fields or chosen, each timed
+  from its commit (Enter pressed, or the option chosen: the typing before it is the reviewer's) until
+  the results (text and figures) follow, seen at the frame they are drawn in; every value is new, so
+  each figure whose inputs change is drawn, and each leaves a design that is evaluated (a gearbox part
+  forced only while the ratio is the file's): a change that ends in an error or without figures stops
+  the run.
   ``review_start``: from starting the server (``python -m calc.review.serve``, as ``make review``
   does) to its first kernel launched, plus ``review_page_ready``: a reviewer's wait from the command
   to a verdict (their browser already open). Each of these, and ``report``, is measured in
