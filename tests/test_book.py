@@ -2,8 +2,10 @@
 stored, with Sphinx warnings as errors, then every page opened in headless Chromium from the files
 alone: it loads, asks for nothing on the network and nothing missing, its images show, its local
 links reach a page of the book, MathJax (shipped in the build) typesets its math with no error,
-and the self-checks open to their feedback; no page is wider than the window. The build time and
-the page count are printed."""
+and the self-checks open to their feedback; no page is wider than the window. In the lecturer's book,
+the pages whose content is the students' are opened in the students' book, and their links (their
+navigation lists the lecturer's pages) are read from the file. The build time and the page count are
+printed."""
 
 import contextlib
 import re
@@ -55,9 +57,30 @@ def test_every_students_notebook_is_a_page_and_the_lecturers_only_in_the_lecture
             assert alt and len(alt.group(1).split()) >= 8 and not alt.group(1).endswith(".png"), (page.name, img[:200])
 
 
-def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(book):
+def article(page: Path) -> str:
+    """A page's content: its main column, without the navigation, which lists the lecturer's pages in their book."""
+    text = page.read_text(encoding="utf-8")
+    return text[text.index('<div class="body" role="main">'):text.index('<div class="sphinxsidebar"')]
+
+
+def missing_links(page: Path) -> list[str]:
+    """The links of a page's file to files of the book that do not exist."""
+    targets = (unquote(href.split("#")[0].split("?")[0]) for href in re.findall(r'href="([^"]*)"', page.read_text()))
+    return [t for t in targets if t and ":" not in t and not (page.parent / t).exists()]
+
+
+def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(book, students_book):
     out, pages = book
     problems = []
+    if out != students_book:
+        # A lecturer's page with the students' page's content (all but the lecturer's own three) is opened in the
+        # students' book: here only its navigation differs, and its links are read from the file.
+        same = [p for p in pages if (students_book / p.relative_to(out)).exists()
+                and article(p) == article(students_book / p.relative_to(out))]
+        problems += [f"{p.relative_to(out)}: link to {t} leads nowhere" for p in same for t in missing_links(p)]
+        pages = [p for p in pages if p not in same]
+        assert {p.relative_to(out).as_posix() for p in pages} >= {
+            "notebooks/instructor/99-answers.html", "book/lecturer.html", "book/lecturer-grading.html"}
     with contextlib.nullcontext(playwright_driver()) as pw, tempfile.TemporaryDirectory() as profile:
         browser = pw.chromium.launch_persistent_context(
             profile, executable_path=str(CHROMIUM), headless=True, args=CHROMIUM_ARGS
@@ -114,4 +137,5 @@ def test_every_page_loads_offline_with_its_images_links_math_and_self_checks(boo
         finally:
             browser.close()
     assert not problems, problems
-    assert typeset > 300  # the formulas of every page, the glossary's included
+    assert typeset > (300 if out == students_book else 50)  # every page's formulas (the glossary's); the answers'
+
