@@ -81,8 +81,10 @@ In-process timings are the best of several repeats (the least disturbed by the o
 shared machine); ratios are taken between figures of this one run.
 
 ``--quick`` runs every measurement at a tiny size, once, to prove the script works (the test
-suite does so); its figures mean nothing. It leaves out the notebook run and the report, which the
-test suite covers itself, and visits the page with a few changes in one browser (not one launched
+suite does so); its figures mean nothing. It leaves out the notebook run, the report, the page's
+second load (transfer and kernel memory) and the reviewers at once, which the test suite covers
+itself (the last two through the same functions, tests/outputs/test_review_signoff_browser.py and
+test_review_browser.py), and visits the page with a few changes in one browser (not one launched
 for each visit).
 """
 
@@ -1092,15 +1094,14 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
             line(name, None, "MB", note=f"no Chromium at {CHROMIUM}: make browser")
             for name in ("review_page_transfer", "review_kernel_memory", "review_5_reviewers_memory")]
     changes = new_values(EXAMPLE, REVIEW_CHANGES_QUICK if quick else REVIEW_CHANGES)
-    runs = []
+    runs, first = [], None
     for _ in range(1 if quick else PAGE_RUNS):
         with served() as server:
             runs.append((server.started, review_in_browser(server.url, workdir / "screenshots", changes,
                                                            settle=settle(quick), results_each=True,
                                                            fresh=not quick)))
-            if len(runs) == 1:
-                first = first_load(server.url, fresh=not quick)  # a second reviewer, nothing cached
-    memory = first.kernel_mb
+            if len(runs) == 1 and not quick:
+                first = first_load(server.url)  # a second reviewer, nothing cached
     start = [started + visit.ready for started, visit in runs]
     ready = [visit.ready for _, visit in runs]
     median = [visit.median for _, visit in runs]
@@ -1114,21 +1115,35 @@ def measure_review(quick: bool, workdir: Path) -> list[str]:
         line("review_page_ready", med(ready), "s", ("<=", 2.5), note=spread(ready)),
         line("review_change_median", med(median), "s", ("<=", 0.1), note=f"{note}; {spread(median)}"),
         line("review_change_max", med(worst), "s", ("<=", 0.2), note=f"slowest {slowest}; {spread(worst)}"),
+        *measure_first(first),
+        *measure_crowd(quick),
+    ]
+
+
+def measure_first(first) -> list[str]:
+    """The page's second load, in a fresh browser (:func:`review_browser.first_load`): what it transfers, and
+    its kernel's memory; None: left out (``--quick``)."""
+    if first is None:
+        return [line(name, None, "MB", note="left out in --quick") for name in ("review_page_transfer",
+                                                                                 "review_kernel_memory")]
+    memory = first.kernel_mb
+    return [
         line("review_page_transfer", first.transfer / 1e6, "MB", ("<=", 2),
              note=f"{first.requests} requests, nothing cached, responses compressed"),
         line("review_kernel_memory", memory, "MB", ("<=", 220),
              note="resident memory of a page's kernel" if memory is not None else "its kernel not found (Linux only)"),
-        *measure_crowd(quick),
     ]
 
 
 def measure_crowd(quick: bool) -> list[str]:
     """:data:`CROWD` reviewers at once, each page changing the index time to its own values."""
-    pages = 2 if quick else CROWD
-    rounds = [[f"{0.6 + 0.05 * (r * pages + k):g}" for k in range(pages)] for r in range(1 if quick else CROWD_ROUNDS)]
+    if quick:
+        return [line(f"review_{CROWD}_reviewers_median", None, "s", note="left out in --quick"),
+                line(f"review_{CROWD}_reviewers_memory", None, "MB", note="left out in --quick")]
+    rounds = [[f"{0.6 + 0.05 * (r * CROWD + k):g}" for k in range(CROWD)] for r in range(CROWD_ROUNDS)]
     with served() as server:
-        crowd = reviewers_at_once(server, "move[1].time", rounds, settle=settle(quick), fresh=not quick)
-    note = f"{pages} pages at once, {len(rounds)} rounds of changes"
+        crowd = reviewers_at_once(server, "move[1].time", rounds, settle=settle(False))
+    note = f"{CROWD} pages at once, {len(rounds)} rounds of changes"
     return [
         line(f"review_{CROWD}_reviewers_median", crowd.median, "s", ("<=", 0.5),
              note=f"{note}; slowest {max(crowd.times):.3g} s"),
