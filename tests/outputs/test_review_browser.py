@@ -13,7 +13,7 @@ shows its input error, and the calc report linked beside the verdict answers as 
 
 import subprocess
 
-from bench.review_browser import review_in_browser, served
+from bench.review_browser import review_in_browser, served, wait_for_page
 from calc.review import serve
 
 from ..conftest import DERIVED_EXAMPLE, EXAMPLE, ROOT, needs_tools
@@ -139,7 +139,7 @@ def test_a_reviewer_sees_what_is_current_is_refused_kept_and_lost(tmp_path):
     shots.mkdir(parents=True, exist_ok=True)
     with served(case) as server, browser_page({"width": 1024, "height": 768}) as page:
         page.goto(server.url)
-        page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
+        wait_for_page(page)
         verdict = page.locator(f"{RESULTS_SELECTOR} .verdict").bounding_box()
         assert verdict["x"] + 100 < 1024 and verdict["y"] + verdict["height"] < 768  # beside the controls, in view
         page.screenshot(path=str(shots / "narrow-1024.png"))
@@ -245,7 +245,7 @@ def test_a_click_on_a_candidate_forces_it(derived_server):
     shots.mkdir(parents=True, exist_ok=True)
     with browser_page() as page:
         page.goto(derived_server.url)
-        page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
+        wait_for_page(page)
         first = page.inner_text(RESULTS_SELECTOR)
         assert first.startswith("PASS") and "Gearbox NPT035-10" in first
         g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
@@ -272,7 +272,7 @@ def test_the_ratio_search_is_shown_when_asked_for(derived_server):
     shots.mkdir(parents=True, exist_ok=True)
     with browser_page() as page:
         page.goto(derived_server.url)
-        page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
+        wait_for_page(page)
         assert "Ratio search" not in page.inner_text(RESULTS_SELECTOR)
         g = int(page.get_attribute(RESULTS_SELECTOR, "data-generation"))
         page.locator(".design-review label", has_text="ratio search").click()
@@ -301,7 +301,7 @@ def test_a_dwell_added_and_kept_in_the_address(tmp_path):
     shots.mkdir(parents=True, exist_ok=True)
     with served(case) as server, browser_page() as page:
         page.goto(server.url)
-        page.wait_for_selector(RESULTS_SELECTOR, timeout=60_000)
+        wait_for_page(page)
         assert "ED 33.33 %" in page.inner_text(RESULTS_SELECTOR)
         page.locator(".design-review button", has_text="Keep as variant").click()  # the file's design, kept
         page.wait_for_function("() => document.querySelector('.design-review').innerText.includes('kept variant 1')")

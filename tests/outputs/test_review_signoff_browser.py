@@ -9,7 +9,7 @@ Numbers are worked by hand from the example (cases/indexing-table.toml): one ind
 
 import pytest
 
-from bench.review_browser import browser_page, change, row, served, wait_for_results
+from bench.review_browser import browser_page, change, row, served, wait_for_page, wait_for_results
 
 from ..conftest import DERIVED_EXAMPLE, ROOT, needs_tools
 from .conftest import shared_server
@@ -64,7 +64,7 @@ def test_a_field_the_file_leaves_out_shows_the_value_computed(example_server):
     SHOTS.mkdir(parents=True, exist_ok=True)
     with browser_page() as page:
         page.goto(example_server.url)
-        page.wait_for_selector(RESULTS, timeout=60_000)
+        wait_for_page(page)
         follows = row(page, "move[1].decel_time").locator(".dr-follows")
         assert follows.inner_text() == "left out of the file: follows the accel time ta"  # t_a typeset
         _changed(page, "move[1].time", "0.7")
@@ -87,7 +87,7 @@ def test_the_same_motion_written_twice_gives_the_same_verdict_in_the_page(exampl
     # twice: Z_h = 2 · 3600 / 3 s = 2400 /h, as before, so f_s 1.6 and T_2max 100.9 N·m stay, and the verdict.
     with browser_page() as page:
         page.goto(example_server.url)
-        page.wait_for_selector(RESULTS, timeout=60_000)
+        wait_for_page(page)
         first = page.inner_text(RESULTS)
         assert first.startswith("PASS") and "100.9 N·m" in first and "2400" in first
         for after, kind in (("2 dwell", "move"), ("3 move", "dwell")):
@@ -105,7 +105,7 @@ def test_the_same_motion_written_twice_gives_the_same_verdict_in_the_page(exampl
 
 def _open(page, url: str, case: str | None = None) -> None:
     page.goto(url)
-    page.wait_for_selector(RESULTS, timeout=60_000)
+    wait_for_page(page)
     if case is not None:
         page.wait_for_function(f"() => document.querySelector('{RESULTS}')?.dataset.case === '{case}'",
                                timeout=90_000)
