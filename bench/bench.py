@@ -60,8 +60,9 @@ is followed by it, ``[target <= 2 x: met]``. What is measured:
   "pool is filled": the page's notebook still runs in it), and each of
   :data:`REVIEW_CHANGES` changes to values not seen before (each input the page offers for the
   example, found by its key path, in turn), typed into the page's number fields or chosen, each timed
-  from its commit (Enter pressed, or the option chosen: the typing before it is the reviewer's) until
-  the results (text and figures) follow, seen at the frame they are drawn in; every value is new, so
+  on the page's own clock (:func:`review_browser.timed_change`) from its commit (Enter pressed, or the
+  option chosen: the typing before it is the reviewer's) to the first frame drawn with the results
+  (text and figures), without the driver's messages to the page and back; every value is new, so
   each figure whose inputs change is drawn, and each leaves a design that is evaluated (a gearbox part
   forced only while the ratio is the file's): a change that ends in an error or without figures stops
   the run.
