@@ -275,6 +275,25 @@ def test_a_report_link_is_shown_beside_the_verdict():
     assert '<a href="reports/indexing-table-profile.pdf"' in panel.results.value
 
 
+def test_the_server_starts_voila_without_the_unit_registry_or_the_panel():
+    # python -m calc.review.serve replaces itself with Voila: what it imports first, a reviewer waits for (pint's
+    # registry and the panel were 0.2 s). The package's names still come when asked for.
+    import subprocess
+    import sys
+
+    probe = ("import sys, calc.review.serve; print(sorted(m for m in ('pint', 'ipywidgets', 'numpy', 'calc.core.units',"
+             " 'calc.review.panel') if m in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == "[]"
+    import calc
+    import calc.review
+
+    assert calc.ureg is Q_._REGISTRY and calc.review.DesignReview is DesignReview
+    for package, name in ((calc, "Q"), (calc.review, "Panel")):
+        with pytest.raises(AttributeError, match=f"has no attribute '{name}'"):
+            getattr(package, name)
+
+
 def test_the_served_page_offers_the_panel_alone_and_culls_idle_kernels(capsys):
     from calc.review import serve
 
