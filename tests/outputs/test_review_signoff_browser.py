@@ -103,8 +103,9 @@ def test_the_same_motion_written_twice_gives_the_same_verdict_in_the_page(exampl
         page.screenshot(path=str(SHOTS / "motion-twice.png"))
 
 
-def _open(page, url: str, case: str | None = None) -> None:
-    page.goto(url)
+def _open(page, url: str | None, case: str | None = None) -> None:
+    """Open ``url`` in the page (None: reload it) and wait for its results (of ``case``), current."""
+    page.reload() if url is None else page.goto(url)
     wait_for_page(page)
     if case is not None:
         page.wait_for_function(f"() => document.querySelector('{RESULTS}')?.dataset.case === '{case}'",
@@ -124,9 +125,10 @@ def test_a_link_keeps_any_case_of_the_chooser_with_its_changes(derived_server):
         shown = _changed(page, "mechanism.mass", "70")
         page.wait_for_function("() => decodeURIComponent(location.hash).includes('linear-axis-inch.toml')")
         address = page.url
-        for attempt in range(2):  # a new tab, then a reload
-            page.goto("about:blank")
-            _open(page, address, "linear-axis-inch.toml")
+        for attempt in ("a new tab", "a reload"):
+            if attempt == "a new tab":
+                page.goto("about:blank")
+            _open(page, address if attempt == "a new tab" else None, "linear-axis-inch.toml")
             page.wait_for_function("() => document.querySelector('.dr-row [data-key=\"mechanism.mass\"]')"
                                    "?.closest('.dr-row').querySelector('input[type=text]').value === '70'",
                                    timeout=60_000)
