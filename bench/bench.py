@@ -202,6 +202,28 @@ def line(name: str, value: float | None, unit: str, target: tuple[str, float] | 
     return text
 
 
+#: Why a line of ``--quick`` has no figure.
+QUICK_LEFT_OUT = "left out in --quick"
+
+
+def unmeasured(why: str, *named: tuple[str, str]) -> list[str]:
+    """The lines ``(name, unit)`` with no figure, each saying ``why``.
+
+    Parameters
+    ----------
+    why : str
+        Why they were not measured.
+    *named : tuple of str
+        Each line's name and unit.
+
+    Returns
+    -------
+    list of str
+        The lines, as :func:`line` prints them.
+    """
+    return [line(name, None, unit, note=why) for name, unit in named]
+
+
 # --- rank: a synthetic catalog -------------------------------------------------------------------
 
 HEADER = (
@@ -985,7 +1007,7 @@ def measure_cold(size: Size) -> list[str]:
 def measure_notebooks(size: Size, quick: bool) -> list[str]:
     notebooks = sorted((ROOT / "notebooks").glob("*.ipynb"))
     if quick:
-        return [line("notebooks", None, "s", note="left out in --quick")]
+        return unmeasured(QUICK_LEFT_OUT, ("notebooks", "s"))
     if not notebooks:
         return [line("notebooks", None, "s", note="no notebooks yet")]
     t0 = time.perf_counter()
@@ -998,8 +1020,7 @@ def measure_notebooks(size: Size, quick: bool) -> list[str]:
 
 def measure_report(size: Size, quick: bool, workdir: Path) -> list[str]:
     if quick:
-        return [line(name, None, "s", note="left out in --quick")
-                for name in ("report", "report_rebuilt", "report_20_cases")]
+        return unmeasured(QUICK_LEFT_OUT, ("report", "s"), ("report_rebuilt", "s"), ("report_20_cases", "s"))
     from calc.report.publish import PASS_FILES, kept_passes
 
     pdf = workdir / "indexing-table.pdf"
@@ -1091,12 +1112,11 @@ def spread(values: list[float], unit: str = "s") -> str:
 
 
 def measure_review(quick: bool, workdir: Path) -> list[str]:
-    names = ("review_start", "review_page_ready", "review_change_median", "review_change_max",
-             "review_5_reviewers_median")
-    if not CHROMIUM.exists():
-        return [line(name, None, "s", note=f"no Chromium at {CHROMIUM}: make browser") for name in names] + [
-            line(name, None, "MB", note=f"no Chromium at {CHROMIUM}: make browser")
-            for name in ("review_page_transfer", "review_kernel_memory", "review_5_reviewers_memory")]
+    if not CHROMIUM.exists():  # the lines in the order a run prints them
+        return unmeasured(f"no Chromium at {CHROMIUM}: make browser", *(
+            (name, "s") for name in ("review_start", "review_page_ready", "review_change_median", "review_change_max")),
+            ("review_page_transfer", "MB"), ("review_kernel_memory", "MB"), (f"review_{CROWD}_reviewers_median", "s"),
+            (f"review_{CROWD}_reviewers_memory", "MB"))
     changes = new_values(EXAMPLE, REVIEW_CHANGES_QUICK if quick else REVIEW_CHANGES)
     runs, first = [], None
     for _ in range(1 if quick else PAGE_RUNS):
@@ -1128,8 +1148,7 @@ def measure_first(first) -> list[str]:
     """The page's second load, in a fresh browser (:func:`review_browser.first_load`): what it transfers, and
     its kernel's memory; None: left out (``--quick``)."""
     if first is None:
-        return [line(name, None, "MB", note="left out in --quick") for name in ("review_page_transfer",
-                                                                                 "review_kernel_memory")]
+        return unmeasured(QUICK_LEFT_OUT, ("review_page_transfer", "MB"), ("review_kernel_memory", "MB"))
     memory = first.kernel_mb
     return [
         line("review_page_transfer", first.transfer / 1e6, "MB", ("<=", 2),
@@ -1142,8 +1161,8 @@ def measure_first(first) -> list[str]:
 def measure_crowd(quick: bool) -> list[str]:
     """:data:`CROWD` reviewers at once, each page changing the index time to its own values."""
     if quick:
-        return [line(f"review_{CROWD}_reviewers_median", None, "s", note="left out in --quick"),
-                line(f"review_{CROWD}_reviewers_memory", None, "MB", note="left out in --quick")]
+        return unmeasured(QUICK_LEFT_OUT, (f"review_{CROWD}_reviewers_median", "s"),
+                          (f"review_{CROWD}_reviewers_memory", "MB"))
     rounds = [[f"{0.6 + 0.05 * (r * CROWD + k):g}" for k in range(CROWD)] for r in range(CROWD_ROUNDS)]
     with served() as server:
         crowd = reviewers_at_once(server, "move[1].time", rounds, settle=settle(False))

@@ -119,9 +119,10 @@ def derived_server(tmp_path_factory):
         yield server
 
 
-#: In a run in one process, the position of the last test that asks for each shared fixture (found once, not by a
-#: scan of the tests still to run after every test).
+#: In a run in one process, the position of the last test that asks for each shared fixture, and of each test (by
+#: its id), found once: not by a scan of the tests for every test.
 _LAST_ASKING: dict[str, int] = {}
+_POSITION: dict[int, int] = {}
 
 
 def _asked_for_later(item, nextitem, fixture: str) -> bool:
@@ -133,7 +134,9 @@ def _asked_for_later(item, nextitem, fixture: str) -> bool:
     if fixture not in _LAST_ASKING:
         asking = [k for k, later in enumerate(items) if fixture in getattr(later, "fixturenames", ())]
         _LAST_ASKING[fixture] = max(asking, default=-1)
-    return items.index(item) < _LAST_ASKING[fixture]
+    if not _POSITION:
+        _POSITION.update((id(later), k) for k, later in enumerate(items))
+    return _POSITION[id(item)] < _LAST_ASKING[fixture]
 
 
 @pytest.hookimpl(trylast=True)

@@ -287,8 +287,9 @@ def test_the_server_starts_voila_without_the_unit_registry_or_the_panel():
     assert done.stdout.strip() == "[]"
     import calc
     import calc.review
+    from calc.core.units import ureg
 
-    assert calc.ureg is Q_._REGISTRY and calc.review.DesignReview is DesignReview
+    assert calc.ureg is ureg and calc.review.DesignReview is DesignReview
     for package, name in ((calc, "Q"), (calc.review, "Panel")):
         with pytest.raises(AttributeError, match=f"has no attribute '{name}'"):
             getattr(package, name)
